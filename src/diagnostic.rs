@@ -1,0 +1,120 @@
+//! Diagnostics: what the readers, the catalogue and `check` report about profiles.
+//!
+//! Every diagnostic has a stable code (see [`crate::diagnostic::codes`]), a severity, a message,
+//! the file and — where the input has one — the line and column, plus an optional hint.
+
+use crate::model::Pos;
+use serde::Serialize;
+
+/// How serious a diagnostic is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Error,
+    Warning,
+    Info,
+}
+
+impl std::fmt::Display for Severity {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info => "info",
+        })
+    }
+}
+
+/// One finding about one file.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Diagnostic {
+    pub severity: Severity,
+    /// Stable rule code, e.g. `RTC001`.
+    pub code: &'static str,
+    pub message: String,
+    /// The file as shown to the user (relative to the input directory where possible).
+    pub file: String,
+    /// Line and column (1-based) where the input has them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pos: Option<Pos>,
+    /// What to do about it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hint: Option<String>,
+}
+
+impl Diagnostic {
+    pub fn new(
+        severity: Severity,
+        code: &'static str,
+        file: &str,
+        message: impl Into<String>,
+    ) -> Self {
+        Diagnostic {
+            severity,
+            code,
+            message: message.into(),
+            file: file.to_string(),
+            pos: None,
+            hint: None,
+        }
+    }
+    pub fn error(code: &'static str, file: &str, message: impl Into<String>) -> Self {
+        Self::new(Severity::Error, code, file, message)
+    }
+    pub fn warning(code: &'static str, file: &str, message: impl Into<String>) -> Self {
+        Self::new(Severity::Warning, code, file, message)
+    }
+    pub fn info(code: &'static str, file: &str, message: impl Into<String>) -> Self {
+        Self::new(Severity::Info, code, file, message)
+    }
+    /// Sets the position (ignored when unknown, i.e. line 0).
+    pub fn at(mut self, pos: Pos) -> Self {
+        if !pos.is_unknown() {
+            self.pos = Some(pos);
+        }
+        self
+    }
+    pub fn with_hint(mut self, hint: impl Into<String>) -> Self {
+        self.hint = Some(hint.into());
+        self
+    }
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}
+
+impl std::fmt::Display for Diagnostic {
+    /// `file:line:col: severity[CODE]: message`, the compiler-style one-liner.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.file)?;
+        if let Some(p) = self.pos {
+            write!(f, ":{}:{}", p.line, p.column)?;
+        }
+        write!(f, ": {}[{}]: {}", self.severity, self.code, self.message)
+    }
+}
+
+/// Codes of the diagnostics produced while loading profiles (the `check` rules add their own).
+pub mod codes {
+    /// The file is not well-formed XML or YAML.
+    pub const MALFORMED: &str = "RTC001";
+    /// The file is larger than the configured limit.
+    pub const TOO_LARGE: &str = "RTC002";
+    /// Elements or YAML collections nest deeper than the configured limit.
+    pub const TOO_DEEP: &str = "RTC003";
+    /// A DOCTYPE with entity declarations, or an entity reference that is not predefined.
+    pub const ENTITY: &str = "RTC004";
+    /// Bytes that are not valid in the declared (or default UTF-8) encoding.
+    pub const ENCODING: &str = "RTC005";
+    /// A value the spec does not define; it is kept as an extra property.
+    pub const UNKNOWN: &str = "RTC006";
+    /// The file could not be read.
+    pub const IO: &str = "RTC007";
+    /// A YAML alias expands too much (alias bomb) or the YAML structure is not a profile.
+    pub const YAML_STRUCTURE: &str = "RTC008";
+    /// A value has the wrong shape for its place (e.g. a map where text is expected).
+    pub const SHAPE: &str = "RTC009";
+    /// Two profiles declare the same component id.
+    pub const DUPLICATE_ID: &str = "RTC010";
+}

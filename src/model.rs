@@ -1,0 +1,872 @@
+//! Typed model of an RTC Profile (spec v0.2, chapter 2; XSD chapter 6; YAML schema chapter 7).
+//!
+//! The model is plain data: no XML, no YAML, no I/O. Every value is kept as the profile wrote it
+//! (strings stay strings, empty attributes stay `Some("")`), so the JSON output shows exactly what
+//! the source said; typed views (`ActionKind`, `Direction`, `PortSide`, …) are offered as methods.
+//! Values the spec does not define are kept in an `extra` list on the nearest node.
+
+use serde::Serialize;
+
+/// A position in a source file: 1-based line and column (columns count characters).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+pub struct Pos {
+    pub line: u32,
+    pub column: u32,
+}
+
+impl Pos {
+    pub fn new(line: u32, column: u32) -> Self {
+        Pos { line, column }
+    }
+    /// True when no position is known (line 0).
+    pub fn is_unknown(&self) -> bool {
+        self.line == 0
+    }
+}
+
+impl std::fmt::Display for Pos {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}:{}", self.line, self.column)
+    }
+}
+
+/// A value the spec does not define: an unknown attribute, element (with its whole subtree) or
+/// YAML key. Kept so that nothing in a profile is lost, and shown as an extra property.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Extra {
+    /// `attribute`, `element` or `key` (YAML).
+    pub kind: ExtraKind,
+    /// Name as written, with its prefix when it had one (`rtc:library`, `"rtcExt::foo"`).
+    pub name: String,
+    /// Namespace URI for XML names that have one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub namespace: Option<String>,
+    /// The attribute value, the element's text, or the YAML scalar.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub value: Option<String>,
+    /// Attributes and child elements of an unknown element; entries of a YAML map or sequence.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub children: Vec<Extra>,
+    pub pos: Pos,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum ExtraKind {
+    Attribute,
+    Element,
+    Key,
+}
+
+/// `rtcExt:Properties` / `"rtcExt::properties"`: a free name/value pair.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Property {
+    pub name: Option<String>,
+    pub value: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// The whole profile (spec 2.2 `rtc_profile`).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Profile {
+    /// `RTC:<vendor>:<category>:<name>:<version>`.
+    pub id: Option<String>,
+    /// Version of the profile format (`0.2`, `0.3`, `1.0`).
+    pub version: Option<String>,
+    pub basic_info: BasicInfo,
+    /// The 14 lifecycle actions, in spec order, as far as the profile lists them.
+    pub actions: Vec<Action>,
+    /// Position of the `Actions` element / key, when present.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub actions_pos: Option<Pos>,
+    /// `ConfigurationSet`; `None` when the profile has none.
+    pub configuration_set: Option<ConfigurationSet>,
+    pub data_ports: Vec<DataPort>,
+    pub service_ports: Vec<ServicePort>,
+    /// System parameters (spec 5.4).
+    pub parameters: Vec<Parameter>,
+    pub language: Option<Language>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// Basic information (spec 2.3.2) with its Document (2.4.1) and Extended (2.5.1) parts.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct BasicInfo {
+    pub name: Option<String>,
+    pub component_type: Option<String>,
+    pub activity_type: Option<String>,
+    pub component_kind: Option<String>,
+    pub rtc_type: Option<String>,
+    pub category: Option<String>,
+    pub description: Option<String>,
+    pub execution_rate: Option<String>,
+    pub execution_type: Option<String>,
+    pub max_instances: Option<String>,
+    pub vendor: Option<String>,
+    pub version: Option<String>,
+    #[serde(rename = "abstract")]
+    pub abstract_: Option<String>,
+    pub hardware_profile: Option<String>,
+    /// As written in XML (`xsd:dateTime`); YAML date maps are turned into the same ISO form.
+    pub creation_date: Option<String>,
+    pub update_date: Option<String>,
+    pub doc: Option<BasicDoc>,
+    pub comment: Option<String>,
+    pub save_project: Option<String>,
+    pub version_up_logs: Vec<String>,
+    pub properties: Vec<Property>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// Document Profile of the component (spec 2.4.2).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct BasicDoc {
+    pub description: Option<String>,
+    pub inout: Option<String>,
+    pub algorithm: Option<String>,
+    pub creator: Option<String>,
+    pub license: Option<String>,
+    pub reference: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// The lifecycle callbacks (spec 2.3.3), in spec order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum ActionKind {
+    OnInitialize,
+    OnFinalize,
+    OnStartup,
+    OnShutdown,
+    OnActivated,
+    OnDeactivated,
+    OnAborting,
+    OnError,
+    OnReset,
+    OnExecute,
+    OnStateUpdate,
+    OnRateChanged,
+    OnAction,
+    OnModeChanged,
+}
+
+impl ActionKind {
+    pub const ALL: [ActionKind; 14] = [
+        ActionKind::OnInitialize,
+        ActionKind::OnFinalize,
+        ActionKind::OnStartup,
+        ActionKind::OnShutdown,
+        ActionKind::OnActivated,
+        ActionKind::OnDeactivated,
+        ActionKind::OnAborting,
+        ActionKind::OnError,
+        ActionKind::OnReset,
+        ActionKind::OnExecute,
+        ActionKind::OnStateUpdate,
+        ActionKind::OnRateChanged,
+        ActionKind::OnAction,
+        ActionKind::OnModeChanged,
+    ];
+
+    /// XML element name (`OnInitialize`).
+    pub fn xml_name(self) -> &'static str {
+        match self {
+            ActionKind::OnInitialize => "OnInitialize",
+            ActionKind::OnFinalize => "OnFinalize",
+            ActionKind::OnStartup => "OnStartup",
+            ActionKind::OnShutdown => "OnShutdown",
+            ActionKind::OnActivated => "OnActivated",
+            ActionKind::OnDeactivated => "OnDeactivated",
+            ActionKind::OnAborting => "OnAborting",
+            ActionKind::OnError => "OnError",
+            ActionKind::OnReset => "OnReset",
+            ActionKind::OnExecute => "OnExecute",
+            ActionKind::OnStateUpdate => "OnStateUpdate",
+            ActionKind::OnRateChanged => "OnRateChanged",
+            ActionKind::OnAction => "OnAction",
+            ActionKind::OnModeChanged => "OnModeChanged",
+        }
+    }
+
+    /// YAML key (`onInitialize`).
+    pub fn yaml_name(self) -> &'static str {
+        match self {
+            ActionKind::OnInitialize => "onInitialize",
+            ActionKind::OnFinalize => "onFinalize",
+            ActionKind::OnStartup => "onStartup",
+            ActionKind::OnShutdown => "onShutdown",
+            ActionKind::OnActivated => "onActivated",
+            ActionKind::OnDeactivated => "onDeactivated",
+            ActionKind::OnAborting => "onAborting",
+            ActionKind::OnError => "onError",
+            ActionKind::OnReset => "onReset",
+            ActionKind::OnExecute => "onExecute",
+            ActionKind::OnStateUpdate => "onStateUpdate",
+            ActionKind::OnRateChanged => "onRateChanged",
+            ActionKind::OnAction => "onAction",
+            ActionKind::OnModeChanged => "onModeChanged",
+        }
+    }
+
+    /// The C++ callback name users know (`on_initialize`).
+    pub fn callback_name(self) -> &'static str {
+        match self {
+            ActionKind::OnInitialize => "on_initialize",
+            ActionKind::OnFinalize => "on_finalize",
+            ActionKind::OnStartup => "on_startup",
+            ActionKind::OnShutdown => "on_shutdown",
+            ActionKind::OnActivated => "on_activated",
+            ActionKind::OnDeactivated => "on_deactivated",
+            ActionKind::OnAborting => "on_aborting",
+            ActionKind::OnError => "on_error",
+            ActionKind::OnReset => "on_reset",
+            ActionKind::OnExecute => "on_execute",
+            ActionKind::OnStateUpdate => "on_state_update",
+            ActionKind::OnRateChanged => "on_rate_changed",
+            ActionKind::OnAction => "on_action",
+            ActionKind::OnModeChanged => "on_mode_changed",
+        }
+    }
+
+    pub fn from_xml_name(name: &str) -> Option<ActionKind> {
+        ActionKind::ALL.into_iter().find(|k| k.xml_name() == name)
+    }
+
+    pub fn from_yaml_name(name: &str) -> Option<ActionKind> {
+        ActionKind::ALL.into_iter().find(|k| k.yaml_name() == name)
+    }
+}
+
+/// One lifecycle action (spec 2.3.4 `action_status`, 2.4.3 doc).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Action {
+    pub kind: ActionKind,
+    /// `implemented` as written (`true` / `false`).
+    pub implemented: Option<String>,
+    pub doc: Option<ActionDoc>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+impl Action {
+    /// Whether the profile marks this callback as implemented (absent or invalid = false).
+    pub fn is_implemented(&self) -> bool {
+        parse_bool(self.implemented.as_deref()).unwrap_or(false)
+    }
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ActionDoc {
+    pub description: Option<String>,
+    pub pre_condition: Option<String>,
+    pub post_condition: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// `ConfigurationSet` (spec 2.3.5).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ConfigurationSet {
+    pub configurations: Vec<Configuration>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// One configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Configuration {
+    pub name: Option<String>,
+    #[serde(rename = "type")]
+    pub type_: Option<String>,
+    pub default_value: Option<String>,
+    pub unit: Option<String>,
+    pub constraint: Option<Constraint>,
+    pub doc: Option<ConfigurationDoc>,
+    pub comment: Option<String>,
+    pub variable_name: Option<String>,
+    pub properties: Vec<Property>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+impl Configuration {
+    /// Value of the `__widget__` property (RTSystemEditor's editor widget: text, radio,
+    /// slider.N, spin, checkbox, ordered_list).
+    pub fn widget(&self) -> Option<&str> {
+        property_value(&self.properties, "__widget__")
+    }
+    /// Value of the `__step__` property (step of a slider or spin widget).
+    pub fn step(&self) -> Option<&str> {
+        property_value(&self.properties, "__step__")
+    }
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ConfigurationDoc {
+    pub dataname: Option<String>,
+    pub default_value: Option<String>,
+    pub description: Option<String>,
+    pub unit: Option<String>,
+    pub range: Option<String>,
+    pub constraint: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// A data port (spec 2.3.7, 2.4.5 doc, 2.5.3 ext); also FSM `EventPort`s with their events.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct DataPort {
+    /// `DataInPort`, `DataOutPort` or `EventPort` as written.
+    pub port_type: Option<String>,
+    pub name: Option<String>,
+    #[serde(rename = "type")]
+    pub type_: Option<String>,
+    pub idl_file: Option<String>,
+    pub interface_type: Option<String>,
+    pub dataflow_type: Option<String>,
+    pub subscription_type: Option<String>,
+    pub unit: Option<String>,
+    pub constraint: Option<Constraint>,
+    pub doc: Option<DataPortDoc>,
+    pub comment: Option<String>,
+    pub variable_name: Option<String>,
+    /// `rtcExt:position` as written (`LEFT`, `left`, …).
+    pub position: Option<String>,
+    pub properties: Vec<Property>,
+    /// FSM events carried by an `EventPort` (RTCBuilder 2.x).
+    pub events: Vec<Event>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// Direction of a data port.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum PortDirection {
+    In,
+    Out,
+    Event,
+}
+
+impl DataPort {
+    /// In, Out or Event, from `portType` (case-insensitive); `None` for anything else.
+    pub fn direction(&self) -> Option<PortDirection> {
+        let t = self.port_type.as_deref()?.trim().to_ascii_lowercase();
+        match t.as_str() {
+            "datainport" | "inport" | "in" => Some(PortDirection::In),
+            "dataoutport" | "outport" | "out" => Some(PortDirection::Out),
+            "eventport" => Some(PortDirection::Event),
+            _ => None,
+        }
+    }
+    /// The edge the port is drawn on: `rtcExt:position` or, without it, in-ports left and
+    /// out-ports right (spec chapter 4).
+    pub fn side(&self) -> PortSide {
+        PortSide::parse(self.position.as_deref()).unwrap_or(match self.direction() {
+            Some(PortDirection::Out) => PortSide::Right,
+            _ => PortSide::Left,
+        })
+    }
+}
+
+/// An FSM event of an `EventPort`.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Event {
+    pub name: Option<String>,
+    #[serde(rename = "type")]
+    pub type_: Option<String>,
+    pub source: Option<String>,
+    pub target: Option<String>,
+    pub condition: Option<String>,
+    pub doc: Option<DataPortDoc>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// Document Profile of a data port (spec 2.4.6). `occurrence` also accepts RTCBuilder's
+/// `occerrence` spelling.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct DataPortDoc {
+    pub description: Option<String>,
+    #[serde(rename = "type")]
+    pub type_: Option<String>,
+    pub number: Option<String>,
+    pub semantics: Option<String>,
+    pub unit: Option<String>,
+    pub occurrence: Option<String>,
+    pub operation: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// The edge of the component box a port is drawn on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum PortSide {
+    Left,
+    Right,
+    Top,
+    Bottom,
+}
+
+impl PortSide {
+    /// Parses `left/right/top/bottom` in any case.
+    pub fn parse(s: Option<&str>) -> Option<PortSide> {
+        match s?.trim().to_ascii_lowercase().as_str() {
+            "left" => Some(PortSide::Left),
+            "right" => Some(PortSide::Right),
+            "top" => Some(PortSide::Top),
+            "bottom" => Some(PortSide::Bottom),
+            _ => None,
+        }
+    }
+}
+
+/// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ServicePort {
+    pub name: Option<String>,
+    pub interfaces: Vec<ServiceInterface>,
+    pub trans_methods: Vec<TransMethod>,
+    pub doc: Option<ServicePortDoc>,
+    pub comment: Option<String>,
+    pub position: Option<String>,
+    pub properties: Vec<Property>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+impl ServicePort {
+    /// Edge from `rtcExt:position`; left when absent.
+    pub fn side(&self) -> PortSide {
+        PortSide::parse(self.position.as_deref()).unwrap_or(PortSide::Left)
+    }
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ServicePortDoc {
+    pub description: Option<String>,
+    pub ifdescription: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// `TransMethods` (spec 2.3.10).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct TransMethod {
+    pub kind: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// A service interface of a service port (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ServiceInterface {
+    pub name: Option<String>,
+    #[serde(rename = "type")]
+    pub type_: Option<String>,
+    /// `Provided` or `Required` as written.
+    pub direction: Option<String>,
+    pub instance_name: Option<String>,
+    pub idl_file: Option<String>,
+    pub path: Option<String>,
+    pub doc: Option<ServiceInterfaceDoc>,
+    pub comment: Option<String>,
+    pub variable_name: Option<String>,
+    pub properties: Vec<Property>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// Provided or required, for service interfaces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum Direction {
+    Provided,
+    Required,
+}
+
+impl ServiceInterface {
+    /// `Provided` / `Required` in any case; `None` for anything else.
+    pub fn direction_kind(&self) -> Option<Direction> {
+        match self
+            .direction
+            .as_deref()?
+            .trim()
+            .to_ascii_lowercase()
+            .as_str()
+        {
+            "provided" => Some(Direction::Provided),
+            "required" => Some(Direction::Required),
+            _ => None,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ServiceInterfaceDoc {
+    pub description: Option<String>,
+    pub doc_argument: Option<String>,
+    pub doc_return: Option<String>,
+    pub doc_exception: Option<String>,
+    pub doc_pre_condition: Option<String>,
+    pub doc_post_condition: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// A system parameter (spec 2.3.11, 5.4).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Parameter {
+    pub name: Option<String>,
+    pub default_value: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// Implementation language (spec 2.3.12) with target environments (2.5.6).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Language {
+    pub kind: Option<String>,
+    pub targets: Vec<Target>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// A target environment (spec 2.5.7).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Target {
+    pub lang_version: Option<String>,
+    pub os: Option<String>,
+    pub os_versions: Vec<String>,
+    pub other: Option<String>,
+    pub cpus: Vec<String>,
+    pub cpu_other: Option<String>,
+    pub libraries: Vec<Library>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// A library of a target environment (spec 2.5.8). `name` also accepts the PIM's `path`.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Library {
+    pub name: Option<String>,
+    pub version: Option<String>,
+    pub other: Option<String>,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+/// A constraint (spec 2.3.17): a unit, an ordered list, or a keyed hash of constraints.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Constraint {
+    pub kind: ConstraintKind,
+    pub pos: Pos,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub extra: Vec<Extra>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase", tag = "form")]
+pub enum ConstraintKind {
+    /// `ConstraintUnitType` (2.3.19): one condition, optionally keyed (inside a hash).
+    Unit {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        key: Option<String>,
+        condition: Box<Condition>,
+    },
+    /// `ConstraintListType` (2.3.20): element i of a vector value must satisfy item i.
+    List { items: Vec<Constraint> },
+    /// `ConstraintHashType` (2.3.21): the value under each key must satisfy that item.
+    Hash { items: Vec<Constraint> },
+    /// A constraint element with no recognised content (kept so the position is known).
+    Empty,
+}
+
+/// One condition of a constraint unit (spec 2.3.22–2.3.41).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase", tag = "op")]
+pub enum Condition {
+    Not {
+        operand: Constraint,
+    },
+    And {
+        operands: Vec<Constraint>,
+    },
+    Or {
+        operands: Vec<Constraint>,
+    },
+    /// `propertyIsNull`: the value must be empty.
+    IsNull {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        text: Option<String>,
+    },
+    /// `=`, `≠`, `<`, `>`, `≤`, `≥` against a literal.
+    Compare {
+        comparison: Comparison,
+        literal: Option<String>,
+        /// `matchCase` as written; absent means case-sensitive (spec 8.1).
+        match_case: Option<String>,
+    },
+    /// `propertyIsLike`: a pattern with wild-card, single-character and escape characters.
+    Like {
+        literal: Option<String>,
+        wild_card: Option<String>,
+        single_char: Option<String>,
+        escape_char: Option<String>,
+    },
+    /// `propertyIsBetween`: lower ≤ x ≤ upper (both inclusive).
+    Between {
+        lower: Option<String>,
+        upper: Option<String>,
+    },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum Comparison {
+    EqualTo,
+    NotEqualTo,
+    LessThan,
+    GreaterThan,
+    LessThanOrEqualTo,
+    GreaterThanOrEqualTo,
+}
+
+impl Comparison {
+    /// The mathematical symbol (`=`, `≠`, `<`, `>`, `≤`, `≥`).
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Comparison::EqualTo => "=",
+            Comparison::NotEqualTo => "≠",
+            Comparison::LessThan => "<",
+            Comparison::GreaterThan => ">",
+            Comparison::LessThanOrEqualTo => "≤",
+            Comparison::GreaterThanOrEqualTo => "≥",
+        }
+    }
+    /// Element / key local name without the `propertyIs` prefix (`EqualTo`).
+    pub fn from_suffix(s: &str) -> Option<Comparison> {
+        match s.to_ascii_lowercase().as_str() {
+            "equalto" => Some(Comparison::EqualTo),
+            "notequalto" => Some(Comparison::NotEqualTo),
+            "lessthan" => Some(Comparison::LessThan),
+            "greaterthan" => Some(Comparison::GreaterThan),
+            "lessthanorequalto" => Some(Comparison::LessThanOrEqualTo),
+            "greaterthanorequalto" => Some(Comparison::GreaterThanOrEqualTo),
+            _ => None,
+        }
+    }
+}
+
+/// Parses an `xsd:boolean` (`true`, `false`, `1`, `0`; surrounding space allowed).
+pub fn parse_bool(s: Option<&str>) -> Option<bool> {
+    match s?.trim() {
+        "true" | "1" | "True" | "TRUE" => Some(true),
+        "false" | "0" | "False" | "FALSE" => Some(false),
+        _ => None,
+    }
+}
+
+/// Value of the first property called `name`.
+pub fn property_value<'a>(props: &'a [Property], name: &str) -> Option<&'a str> {
+    props
+        .iter()
+        .find(|p| p.name.as_deref() == Some(name))
+        .and_then(|p| p.value.as_deref())
+}
+
+/// A non-empty, trimmed view of an optional string: empty attributes count as absent when
+/// rendering (NOTES: "treat empty as absent when rendering, but keep it in JSON as given").
+pub fn non_empty(s: &Option<String>) -> Option<&str> {
+    s.as_deref().map(str::trim).filter(|s| !s.is_empty())
+}
+
+impl Profile {
+    /// The component name, or a placeholder for a profile without one.
+    pub fn name(&self) -> &str {
+        non_empty(&self.basic_info.name).unwrap_or("(unnamed component)")
+    }
+
+    /// The action of `kind`, when the profile lists it.
+    pub fn action(&self, kind: ActionKind) -> Option<&Action> {
+        self.actions.iter().find(|a| a.kind == kind)
+    }
+
+    /// Configuration parameters (empty when there is no configuration set).
+    pub fn configurations(&self) -> &[Configuration] {
+        self.configuration_set
+            .as_ref()
+            .map(|c| c.configurations.as_slice())
+            .unwrap_or(&[])
+    }
+
+    /// Whether the profile marks itself as a finite-state-machine component (`FSM` property or
+    /// an `EventPort`).
+    pub fn is_fsm(&self) -> bool {
+        property_value(&self.basic_info.properties, "FSM")
+            .map(|v| v.eq_ignore_ascii_case("yes") || v.eq_ignore_ascii_case("true"))
+            .unwrap_or(false)
+            || self
+                .data_ports
+                .iter()
+                .any(|p| p.direction() == Some(PortDirection::Event))
+    }
+
+    /// Every `extra` entry anywhere in the profile, with a dotted path to its node, for
+    /// warnings and for the "extra properties" section of rendered pages.
+    pub fn all_extras(&self) -> Vec<(String, &Extra)> {
+        let mut out = Vec::new();
+        collect_extras(self, &mut out);
+        out
+    }
+}
+
+fn collect_extras<'a>(p: &'a Profile, out: &mut Vec<(String, &'a Extra)>) {
+    fn add<'a>(out: &mut Vec<(String, &'a Extra)>, path: &str, extras: &'a [Extra]) {
+        out.extend(extras.iter().map(|e| (path.to_string(), e)));
+    }
+    fn constraint<'a>(out: &mut Vec<(String, &'a Extra)>, path: &str, c: &'a Constraint) {
+        add(out, path, &c.extra);
+        match &c.kind {
+            ConstraintKind::Unit { condition, .. } => match condition.as_ref() {
+                Condition::Not { operand } => constraint(out, path, operand),
+                Condition::And { operands } | Condition::Or { operands } => {
+                    operands.iter().for_each(|o| constraint(out, path, o))
+                }
+                _ => {}
+            },
+            ConstraintKind::List { items } | ConstraintKind::Hash { items } => {
+                items.iter().for_each(|o| constraint(out, path, o))
+            }
+            ConstraintKind::Empty => {}
+        }
+    }
+    fn props<'a>(out: &mut Vec<(String, &'a Extra)>, path: &str, ps: &'a [Property]) {
+        ps.iter().for_each(|p| add(out, path, &p.extra));
+    }
+    add(out, "profile", &p.extra);
+    let b = &p.basic_info;
+    add(out, "basicInfo", &b.extra);
+    if let Some(d) = &b.doc {
+        add(out, "basicInfo.doc", &d.extra);
+    }
+    props(out, "basicInfo.properties", &b.properties);
+    for a in &p.actions {
+        let path = format!("actions.{}", a.kind.yaml_name());
+        add(out, &path, &a.extra);
+        if let Some(d) = &a.doc {
+            add(out, &path, &d.extra);
+        }
+    }
+    if let Some(cs) = &p.configuration_set {
+        add(out, "configurationSet", &cs.extra);
+        for c in &cs.configurations {
+            let path = format!("configuration {}", c.name.as_deref().unwrap_or(""));
+            add(out, &path, &c.extra);
+            if let Some(d) = &c.doc {
+                add(out, &path, &d.extra);
+            }
+            if let Some(k) = &c.constraint {
+                constraint(out, &path, k);
+            }
+            props(out, &path, &c.properties);
+        }
+    }
+    for d in &p.data_ports {
+        let path = format!("dataPort {}", d.name.as_deref().unwrap_or(""));
+        add(out, &path, &d.extra);
+        if let Some(doc) = &d.doc {
+            add(out, &path, &doc.extra);
+        }
+        if let Some(k) = &d.constraint {
+            constraint(out, &path, k);
+        }
+        props(out, &path, &d.properties);
+        for e in &d.events {
+            add(out, &path, &e.extra);
+            if let Some(doc) = &e.doc {
+                add(out, &path, &doc.extra);
+            }
+        }
+    }
+    for s in &p.service_ports {
+        let path = format!("servicePort {}", s.name.as_deref().unwrap_or(""));
+        add(out, &path, &s.extra);
+        if let Some(doc) = &s.doc {
+            add(out, &path, &doc.extra);
+        }
+        props(out, &path, &s.properties);
+        s.trans_methods
+            .iter()
+            .for_each(|t| add(out, &path, &t.extra));
+        for i in &s.interfaces {
+            let ipath = format!("{path} / interface {}", i.name.as_deref().unwrap_or(""));
+            add(out, &ipath, &i.extra);
+            if let Some(doc) = &i.doc {
+                add(out, &ipath, &doc.extra);
+            }
+            props(out, &ipath, &i.properties);
+        }
+    }
+    for par in &p.parameters {
+        add(out, "parameters", &par.extra);
+    }
+    if let Some(l) = &p.language {
+        add(out, "language", &l.extra);
+        for t in &l.targets {
+            add(out, "language.targets", &t.extra);
+            t.libraries
+                .iter()
+                .for_each(|lib| add(out, "language.targets.libraries", &lib.extra));
+        }
+    }
+}

@@ -1,0 +1,71 @@
+//! Readers: bytes of one profile file → [`Profile`] plus diagnostics.
+//!
+//! One module per input format. Readers never perform I/O; positions are captured here so that
+//! later stages can point at the source.
+
+pub mod xml;
+pub mod yaml;
+
+use crate::diagnostic::Diagnostic;
+use crate::model::Profile;
+
+/// Limits that protect against hostile input.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest file accepted, in bytes (default 16 MiB).
+    pub max_file_size: u64,
+    /// Deepest element / collection nesting accepted (default 64).
+    pub max_depth: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_file_size: 16 * 1024 * 1024,
+            max_depth: 64,
+        }
+    }
+}
+
+/// The input format of a profile file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SourceFormat {
+    Xml,
+    Yaml,
+}
+
+/// A successfully read profile and the warnings met while reading it.
+#[derive(Debug, Clone)]
+pub struct Parsed {
+    pub profile: Profile,
+    /// Warnings (unknown values kept as extras, dialect notes). Never errors.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Reads a profile in `format`. `file` is the name used in diagnostics.
+pub fn parse(
+    format: SourceFormat,
+    bytes: &[u8],
+    file: &str,
+    limits: &Limits,
+) -> Result<Parsed, Diagnostic> {
+    if bytes.len() as u64 > limits.max_file_size {
+        return Err(Diagnostic::error(
+            crate::diagnostic::codes::TOO_LARGE,
+            file,
+            format!(
+                "file is {} bytes, larger than the limit of {} bytes",
+                bytes.len(),
+                limits.max_file_size
+            ),
+        )
+        .with_hint(
+            "raise `max_file_size` in rtcdoc.toml or --max-file-size if the file is genuine",
+        ));
+    }
+    match format {
+        SourceFormat::Xml => xml::parse(bytes, file, limits),
+        SourceFormat::Yaml => yaml::parse(bytes, file, limits),
+    }
+}
