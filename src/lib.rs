@@ -1,8 +1,15 @@
 //! rtcdoc: documentation for OpenRTM RT-Component profiles.
 //!
-//! Pipeline (see `DESIGN` in the book): files → [`walk`] → [`parse`] → [`model::Profile`] →
-//! [`catalog::Catalog`] (cross-references) → renderers (HTML, Markdown, Doxygen, JSON).
+//! Pipeline: files → [`walk`] → [`parse`] → [`model::Profile`] → [`catalog::Catalog`]
+//! (cross-references) → [`render`]ers (HTML, Markdown, Doxygen, JSON), driven by [`build`].
 
+pub mod build;
+pub mod catalog;
+pub mod constraint;
 pub mod diagnostic;
 pub mod model;
+pub mod output;
 pub mod parse;
+pub mod render;
+pub mod types;
+pub mod walk;

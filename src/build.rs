@@ -1,0 +1,185 @@
+//! The pipeline behind `rtcdoc build`: walk → parse (in parallel) → catalogue → render → swap.
+
+use crate::catalog::{Catalog, LoadedProfile};
+use crate::diagnostic::Diagnostic;
+use crate::output::{absolute, Sink, Staging};
+use crate::parse::{self, Limits};
+use crate::render::{Format, Prefixed, RenderContext, SiteOptions};
+use crate::walk::{self, Skipped, WalkOptions};
+use anyhow::{bail, Context, Result};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// How to find and read profiles.
+#[derive(Debug, Clone, Default)]
+pub struct LoadOptions {
+    pub exclude: Vec<String>,
+    pub limits: Limits,
+    /// Directories the walk must not enter (the output directory).
+    pub skip_dirs: Vec<PathBuf>,
+}
+
+/// The result of loading a directory.
+pub struct Loaded {
+    pub catalog: Catalog,
+    /// Files looked at and not taken (for `--verbose`).
+    pub skipped: Vec<Skipped>,
+    /// Number of profile files found (loaded or not).
+    pub files: usize,
+}
+
+/// Finds and reads every profile below `input` (a directory or one file) and builds the
+/// catalogue. A file that cannot be read is reported and left out; the others still load.
+pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
+    let walked = walk::walk(
+        input,
+        &WalkOptions {
+            exclude: opts.exclude.clone(),
+            skip_dirs: opts.skip_dirs.clone(),
+            max_file_size: Some(opts.limits.max_file_size),
+        },
+    )?;
+    let files = walked.sources.len() + walked.errors.len();
+    let results: Vec<(Option<LoadedProfile>, Vec<Diagnostic>)> = walked
+        .sources
+        .par_iter()
+        .map(
+            |src| match parse::parse(src.format, &src.bytes, &src.rel, &opts.limits) {
+                Ok(parsed) => (
+                    Some(LoadedProfile {
+                        source: src.rel.clone(),
+                        format: src.format,
+                        profile: parsed.profile,
+                    }),
+                    parsed.diagnostics,
+                ),
+                Err(d) => (None, vec![d]),
+            },
+        )
+        .collect();
+    let mut diagnostics = walked.errors;
+    let mut profiles = Vec::with_capacity(results.len());
+    for (p, d) in results {
+        profiles.extend(p);
+        diagnostics.extend(d);
+    }
+    Ok(Loaded {
+        catalog: Catalog::build(profiles, diagnostics),
+        skipped: walked.skipped,
+        files,
+    })
+}
+
+/// Everything `rtcdoc build` needs.
+#[derive(Debug, Clone)]
+pub struct BuildOptions {
+    pub input: PathBuf,
+    pub output: PathBuf,
+    pub formats: Vec<Format>,
+    /// Fail (and write nothing) when any profile has an error.
+    pub strict: bool,
+    pub load: LoadOptions,
+    pub site: SiteOptions,
+}
+
+/// What a build did.
+#[derive(Debug, Clone, Default, serde::Serialize)]
+pub struct BuildReport {
+    pub profiles: usize,
+    pub files_found: usize,
+    pub files_written: usize,
+    pub errors: usize,
+    pub warnings: usize,
+    pub seconds: f64,
+}
+
+/// Refuses outputs that would destroy input: the input itself, a parent of it, or a directory
+/// that already holds profiles.
+fn check_output_location(input: &Path, output: &Path) -> Result<()> {
+    let input_abs = absolute(input)?;
+    let input_dir = if input_abs.is_file() {
+        input_abs
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or(input_abs.clone())
+    } else {
+        input_abs.clone()
+    };
+    let out_abs = absolute(output)?;
+    if out_abs == input_dir {
+        bail!(
+            "the output directory `{}` is the input directory; choose another one (e.g. `-o site`)",
+            output.display()
+        );
+    }
+    if input_dir.starts_with(&out_abs) {
+        bail!(
+            "the output directory `{}` contains the input `{}`; replacing it would delete your profiles",
+            output.display(),
+            input.display()
+        );
+    }
+    if out_abs.is_dir() {
+        let found = walk::walk(&out_abs, &WalkOptions::default())?;
+        if let Some(s) = found.sources.first() {
+            bail!(
+                "the output directory `{}` contains a profile (`{}`); refusing to replace it",
+                output.display(),
+                s.rel
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Runs a whole build and returns the loaded catalogue with the report. Nothing is written when
+/// a renderer fails or, with `strict`, when any profile has an error.
+pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
+    let start = Instant::now();
+    check_output_location(&opts.input, &opts.output)?;
+    let mut load_opts = opts.load.clone();
+    load_opts.skip_dirs.push(opts.output.clone());
+    let loaded = load(&opts.input, &load_opts)?;
+    let (errors, warnings, _) = loaded.catalog.counts();
+    if opts.strict && errors > 0 {
+        bail!("{errors} error(s) in the profiles (--strict); nothing was written");
+    }
+    let mut formats = opts.formats.clone();
+    formats.sort();
+    formats.dedup();
+    if formats.is_empty() {
+        formats.push(Format::Html);
+    }
+    let staging = Staging::new(&opts.output)?;
+    let ctx = RenderContext {
+        catalog: &loaded.catalog,
+        site: &opts.site,
+    };
+    let mut files = 0;
+    for f in &formats {
+        let renderer = f
+            .renderer()
+            .with_context(|| format!("the {} format is not available in this version", f.name()))?;
+        let written = if formats.len() == 1 {
+            renderer.render(&ctx, &staging)?
+        } else {
+            let sub = Prefixed {
+                inner: &staging as &dyn Sink,
+                prefix: f.name().to_string(),
+            };
+            renderer.render(&ctx, &sub)?
+        };
+        files += written;
+    }
+    staging.commit()?;
+    let report = BuildReport {
+        profiles: loaded.catalog.components.len(),
+        files_found: loaded.files,
+        files_written: files,
+        errors,
+        warnings,
+        seconds: start.elapsed().as_secs_f64(),
+    };
+    Ok((loaded, report))
+}

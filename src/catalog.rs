@@ -1,0 +1,550 @@
+//! The catalogue: every loaded profile plus the cross-references between them.
+//!
+//! Built once, in O(n) over the ports of all profiles: the data-type index (who produces and who
+//! consumes each type), the interface index (who provides and who requires each service
+//! interface type), category and vendor facets, and stable slugs and anchors for every page and
+//! row. Renderers only read it; all cross-linking logic lives here.
+
+use crate::diagnostic::{codes, Diagnostic, Severity};
+use crate::model::{Direction, PortDirection, Profile};
+use crate::parse::SourceFormat;
+use crate::types::canonical_type;
+use serde::Serialize;
+use std::collections::{BTreeMap, HashMap};
+
+/// One loaded profile and where it came from.
+#[derive(Debug, Clone, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Component {
+    /// Path of the profile relative to the input directory, forward slashes.
+    pub source: String,
+    pub format: SourceFormat,
+    /// File-name-safe, stable identifier of the component's pages.
+    pub slug: String,
+    /// Anchors of the rows of the component page (ports, interfaces, parameters).
+    pub anchors: Anchors,
+    #[serde(flatten)]
+    pub profile: Profile,
+}
+
+/// Stable fragment ids for the rows of a component page, unique within the page.
+#[derive(Debug, Clone, Default, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Anchors {
+    /// One per data port, in profile order.
+    pub data_ports: Vec<String>,
+    /// One per service port, in profile order.
+    pub service_ports: Vec<String>,
+    /// One per service interface, per service port.
+    pub interfaces: Vec<Vec<String>>,
+    /// One per configuration parameter.
+    pub configurations: Vec<String>,
+}
+
+/// A reference to a data port of a component.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct PortRef {
+    /// Index into [`Catalog::components`].
+    pub component: usize,
+    /// Index into the component's `data_ports`.
+    pub port: usize,
+}
+
+/// A reference to a service interface of a component.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct InterfaceRef {
+    pub component: usize,
+    /// Index into the component's `service_ports`.
+    pub port: usize,
+    /// Index into that port's `interfaces`.
+    pub interface: usize,
+}
+
+/// A data type used by some data port in the catalogue.
+#[derive(Debug, Clone, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct DataType {
+    /// Canonical name (`RTC::TimedLong`).
+    pub name: String,
+    pub slug: String,
+    /// Every spelling met in the profiles (`TimedLong`, `IDL:RTC/TimedLong:1.0`, …), sorted.
+    pub spellings: Vec<String>,
+    /// Every non-empty `idlFile` given for this type, sorted.
+    pub idl_files: Vec<String>,
+    /// Out ports carrying the type.
+    pub producers: Vec<PortRef>,
+    /// In ports carrying the type.
+    pub consumers: Vec<PortRef>,
+    /// Other ports carrying it (event ports, unknown port types).
+    pub others: Vec<PortRef>,
+}
+
+/// A service interface type used by some service port in the catalogue.
+#[derive(Debug, Clone, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct InterfaceType {
+    pub name: String,
+    pub slug: String,
+    pub spellings: Vec<String>,
+    pub idl_files: Vec<String>,
+    pub providers: Vec<InterfaceRef>,
+    /// Components requiring (consuming) the interface.
+    pub requirers: Vec<InterfaceRef>,
+    /// Interfaces of this type with a direction other than Provided/Required.
+    pub others: Vec<InterfaceRef>,
+}
+
+impl InterfaceType {
+    /// Required somewhere but provided nowhere in the catalogue.
+    pub fn is_unprovided(&self) -> bool {
+        self.providers.is_empty() && !self.requirers.is_empty()
+    }
+}
+
+/// A category or vendor and its components.
+#[derive(Debug, Clone, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Facet {
+    pub name: String,
+    pub slug: String,
+    pub components: Vec<usize>,
+}
+
+/// The whole catalogue.
+#[derive(Debug, Clone, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Catalog {
+    pub components: Vec<Component>,
+    pub data_types: Vec<DataType>,
+    pub interfaces: Vec<InterfaceType>,
+    pub categories: Vec<Facet>,
+    pub vendors: Vec<Facet>,
+    pub diagnostics: Vec<Diagnostic>,
+    #[serde(skip)]
+    type_index: HashMap<String, usize>,
+    #[serde(skip)]
+    interface_index: HashMap<String, usize>,
+}
+
+/// A profile read from one file, ready for the catalogue.
+#[derive(Debug, Clone)]
+pub struct LoadedProfile {
+    pub source: String,
+    pub format: SourceFormat,
+    pub profile: Profile,
+}
+
+/// Turns any text into a file-name-safe slug: lower-case ASCII letters, digits and `-`; never
+/// empty, never `.`/`..`, at most 64 characters.
+pub fn slugify(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut dash = false;
+    for ch in text.chars() {
+        if ch.is_ascii_alphanumeric() {
+            out.push(ch.to_ascii_lowercase());
+            dash = false;
+        } else if !dash && !out.is_empty() {
+            out.push('-');
+            dash = true;
+        }
+        if out.len() >= 64 {
+            break;
+        }
+    }
+    while out.ends_with('-') {
+        out.pop();
+    }
+    if out.is_empty() || !text.is_ascii() {
+        // Non-ASCII names (Japanese component names) get a stable hash so two of them never
+        // collide on the same ASCII remainder.
+        let h = format!("{:08x}", fnv1a(text.as_bytes()) as u32);
+        if out.is_empty() {
+            return format!("x-{h}");
+        }
+        out.push('-');
+        out.push_str(&h);
+    }
+    out
+}
+
+/// 64-bit FNV-1a: a tiny, stable hash for deterministic slugs (not for security).
+pub fn fnv1a(bytes: &[u8]) -> u64 {
+    let mut h: u64 = 0xcbf29ce484222325;
+    for b in bytes {
+        h ^= u64::from(*b);
+        h = h.wrapping_mul(0x100000001b3);
+    }
+    h
+}
+
+/// Assigns unique slugs: the plain slug when it is unique, else slug + hash of `disambiguator`
+/// (stable: adding another component never renames an existing page unless it collides).
+fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
+    let mut count: HashMap<String, usize> = HashMap::new();
+    let base: Vec<String> = items.iter().map(|(name, _)| slugify(name)).collect();
+    for b in &base {
+        *count.entry(b.clone()).or_default() += 1;
+    }
+    let mut used: HashMap<String, usize> = HashMap::new();
+    let mut out = Vec::with_capacity(items.len());
+    for (b, (_, dis)) in base.iter().zip(items) {
+        let mut s = if count[b] > 1 {
+            format!("{b}-{:06x}", fnv1a(dis.as_bytes()) as u32 & 0xff_ffff)
+        } else {
+            b.clone()
+        };
+        // A hash collision, or a plain slug equal to a disambiguated one: number it.
+        let n = used.entry(s.clone()).or_default();
+        *n += 1;
+        if *n > 1 {
+            s = format!("{s}-{n}");
+        }
+        out.push(s);
+    }
+    out
+}
+
+fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String> {
+    let mut seen: HashMap<String, usize> = HashMap::new();
+    names
+        .map(|n| {
+            let base = format!("{prefix}-{}", slugify(&n));
+            let c = seen.entry(base.clone()).or_default();
+            *c += 1;
+            if *c > 1 {
+                format!("{base}-{c}")
+            } else {
+                base
+            }
+        })
+        .collect()
+}
+
+fn anchors(profile: &Profile) -> Anchors {
+    let name = |s: &Option<String>| s.clone().unwrap_or_default();
+    let service_ports = anchors_for("sport", profile.service_ports.iter().map(|p| name(&p.name)));
+    let interfaces = profile
+        .service_ports
+        .iter()
+        .zip(&service_ports)
+        .map(|(p, pa)| {
+            anchors_for(
+                &format!("if-{}", &pa[6..]),
+                p.interfaces.iter().map(|i| name(&i.name)),
+            )
+        })
+        .collect();
+    Anchors {
+        data_ports: anchors_for("port", profile.data_ports.iter().map(|p| name(&p.name))),
+        service_ports,
+        interfaces,
+        configurations: anchors_for(
+            "conf",
+            profile.configurations().iter().map(|c| name(&c.name)),
+        ),
+    }
+}
+
+#[derive(Default)]
+struct TypeAcc {
+    spellings: Vec<String>,
+    idl_files: Vec<String>,
+    a: Vec<(usize, usize, usize)>,
+    b: Vec<(usize, usize, usize)>,
+    other: Vec<(usize, usize, usize)>,
+}
+
+fn sorted_unique(mut v: Vec<String>) -> Vec<String> {
+    v.sort();
+    v.dedup();
+    v
+}
+
+impl Catalog {
+    /// Builds the catalogue. Components are ordered by source path; `diagnostics` are the load
+    /// diagnostics (reader warnings and errors of files that could not be read).
+    pub fn build(mut loaded: Vec<LoadedProfile>, mut diagnostics: Vec<Diagnostic>) -> Catalog {
+        loaded.sort_by(|a, b| a.source.cmp(&b.source));
+
+        // Component slugs from names, disambiguated by source path.
+        let keys: Vec<(String, String)> = loaded
+            .iter()
+            .map(|l| (l.profile.name().to_string(), l.source.clone()))
+            .collect();
+        let slugs = unique_slugs(&keys);
+        let components: Vec<Component> = loaded
+            .into_iter()
+            .zip(slugs)
+            .map(|(l, slug)| Component {
+                anchors: anchors(&l.profile),
+                source: l.source,
+                format: l.format,
+                slug,
+                profile: l.profile,
+            })
+            .collect();
+
+        // Duplicate ids: kept apart (both rendered), warned about.
+        let mut by_id: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
+        for (i, c) in components.iter().enumerate() {
+            if let Some(id) = c
+                .profile
+                .id
+                .as_deref()
+                .map(str::trim)
+                .filter(|s| !s.is_empty())
+            {
+                by_id.entry(id).or_default().push(i);
+            }
+        }
+        for (id, idx) in &by_id {
+            if idx.len() > 1 {
+                for &i in idx {
+                    let others: Vec<&str> = idx
+                        .iter()
+                        .filter(|&&j| j != i)
+                        .map(|&j| components[j].source.as_str())
+                        .collect();
+                    diagnostics.push(
+                        Diagnostic::warning(
+                            codes::DUPLICATE_ID,
+                            &components[i].source,
+                            format!("component id `{id}` is also declared by {}", others.join(", ")),
+                        )
+                        .at(components[i].profile.pos)
+                        .with_hint("both profiles are rendered on separate pages; give each component its own id"),
+                    );
+                }
+            }
+        }
+
+        // Data-type and interface indexes, one pass over all ports.
+        let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
+        let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
+        for (ci, c) in components.iter().enumerate() {
+            for (pi, p) in c.profile.data_ports.iter().enumerate() {
+                let Some(t) = p.type_.as_deref().filter(|t| !t.trim().is_empty()) else {
+                    continue;
+                };
+                let acc = types.entry(canonical_type(t)).or_default();
+                acc.spellings.push(t.trim().to_string());
+                if let Some(f) = p.idl_file.as_deref().filter(|f| !f.trim().is_empty()) {
+                    acc.idl_files.push(f.trim().to_string());
+                }
+                match p.direction() {
+                    Some(PortDirection::Out) => acc.a.push((ci, pi, 0)),
+                    Some(PortDirection::In) => acc.b.push((ci, pi, 0)),
+                    _ => acc.other.push((ci, pi, 0)),
+                }
+            }
+            for (pi, p) in c.profile.service_ports.iter().enumerate() {
+                for (ii, i) in p.interfaces.iter().enumerate() {
+                    let Some(t) = i.type_.as_deref().filter(|t| !t.trim().is_empty()) else {
+                        continue;
+                    };
+                    let acc = ifaces.entry(canonical_type(t)).or_default();
+                    acc.spellings.push(t.trim().to_string());
+                    if let Some(f) = i.idl_file.as_deref().filter(|f| !f.trim().is_empty()) {
+                        acc.idl_files.push(f.trim().to_string());
+                    }
+                    match i.direction_kind() {
+                        Some(Direction::Provided) => acc.a.push((ci, pi, ii)),
+                        Some(Direction::Required) => acc.b.push((ci, pi, ii)),
+                        None => acc.other.push((ci, pi, ii)),
+                    }
+                }
+            }
+        }
+        let port = |v: Vec<(usize, usize, usize)>| {
+            v.into_iter()
+                .map(|(component, port, _)| PortRef { component, port })
+                .collect()
+        };
+        let iref = |v: Vec<(usize, usize, usize)>| {
+            v.into_iter()
+                .map(|(component, port, interface)| InterfaceRef {
+                    component,
+                    port,
+                    interface,
+                })
+                .collect()
+        };
+        let type_slugs = unique_slugs(
+            &types
+                .keys()
+                .map(|k| (k.clone(), k.clone()))
+                .collect::<Vec<_>>(),
+        );
+        let data_types: Vec<DataType> = types
+            .into_iter()
+            .zip(type_slugs)
+            .map(|((name, acc), slug)| DataType {
+                name,
+                slug,
+                spellings: sorted_unique(acc.spellings),
+                idl_files: sorted_unique(acc.idl_files),
+                producers: port(acc.a),
+                consumers: port(acc.b),
+                others: port(acc.other),
+            })
+            .collect();
+        let if_slugs = unique_slugs(
+            &ifaces
+                .keys()
+                .map(|k| (k.clone(), k.clone()))
+                .collect::<Vec<_>>(),
+        );
+        let interfaces: Vec<InterfaceType> = ifaces
+            .into_iter()
+            .zip(if_slugs)
+            .map(|((name, acc), slug)| InterfaceType {
+                name,
+                slug,
+                spellings: sorted_unique(acc.spellings),
+                idl_files: sorted_unique(acc.idl_files),
+                providers: iref(acc.a),
+                requirers: iref(acc.b),
+                others: iref(acc.other),
+            })
+            .collect();
+
+        let facet = |key: &dyn Fn(&Profile) -> Option<&str>| -> Vec<Facet> {
+            let mut m: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+            for (i, c) in components.iter().enumerate() {
+                let k = key(&c.profile)
+                    .map(str::trim)
+                    .filter(|s| !s.is_empty())
+                    .unwrap_or("");
+                m.entry(k.to_string()).or_default().push(i);
+            }
+            let names: Vec<(String, String)> = m.keys().map(|k| (k.clone(), k.clone())).collect();
+            m.into_iter()
+                .zip(unique_slugs(&names))
+                .map(|((name, components), slug)| Facet {
+                    name,
+                    slug,
+                    components,
+                })
+                .collect()
+        };
+        let categories = facet(&|p| p.basic_info.category.as_deref());
+        let vendors = facet(&|p| p.basic_info.vendor.as_deref());
+
+        diagnostics.sort_by(|a, b| {
+            (&a.file, a.pos, a.severity, a.code, &a.message)
+                .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
+        });
+        let type_index = data_types
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (t.name.clone(), i))
+            .collect();
+        let interface_index = interfaces
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (t.name.clone(), i))
+            .collect();
+        Catalog {
+            components,
+            data_types,
+            interfaces,
+            categories,
+            vendors,
+            diagnostics,
+            type_index,
+            interface_index,
+        }
+    }
+
+    /// The data type entry for any spelling of a type name.
+    pub fn data_type(&self, name: &str) -> Option<&DataType> {
+        self.type_index
+            .get(&canonical_type(name))
+            .map(|&i| &self.data_types[i])
+    }
+
+    /// The interface entry for any spelling of an interface type name.
+    pub fn interface(&self, name: &str) -> Option<&InterfaceType> {
+        self.interface_index
+            .get(&canonical_type(name))
+            .map(|&i| &self.interfaces[i])
+    }
+
+    /// Ports of other components that can connect to data port `port` of `component`:
+    /// out → in ports of the same type, in → out ports of the same type.
+    pub fn data_port_peers(&self, component: usize, port: usize) -> &[PortRef] {
+        let p = &self.components[component].profile.data_ports[port];
+        let Some(t) = p.type_.as_deref().and_then(|t| self.data_type(t)) else {
+            return &[];
+        };
+        match p.direction() {
+            Some(PortDirection::Out) => &t.consumers,
+            Some(PortDirection::In) => &t.producers,
+            _ => &[],
+        }
+    }
+
+    /// Interfaces matching interface `interface` of service port `port`: required ↔ provided of
+    /// the same type.
+    pub fn interface_peers(
+        &self,
+        component: usize,
+        port: usize,
+        interface: usize,
+    ) -> &[InterfaceRef] {
+        let i = &self.components[component].profile.service_ports[port].interfaces[interface];
+        let Some(t) = i.type_.as_deref().and_then(|t| self.interface(t)) else {
+            return &[];
+        };
+        match i.direction_kind() {
+            Some(Direction::Provided) => &t.requirers,
+            Some(Direction::Required) => &t.providers,
+            None => &[],
+        }
+    }
+
+    /// Counts of diagnostics by severity: (errors, warnings, infos).
+    pub fn counts(&self) -> (usize, usize, usize) {
+        let mut c = (0, 0, 0);
+        for d in &self.diagnostics {
+            match d.severity {
+                Severity::Error => c.0 += 1,
+                Severity::Warning => c.1 += 1,
+                Severity::Info => c.2 += 1,
+            }
+        }
+        c
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slugs_are_safe() {
+        assert_eq!(slugify("UsbCamera"), "usbcamera");
+        assert_eq!(slugify("../../etc/passwd"), "etc-passwd");
+        assert_eq!(slugify("RTC::TimedLong"), "rtc-timedlong");
+        assert!(slugify("カメラ").starts_with("x-"));
+        assert_ne!(slugify("カメラ"), slugify("レーザ"));
+        assert!(slugify("..").starts_with("x-"));
+        assert!(slugify(&"a".repeat(500)).len() <= 64);
+    }
+
+    #[test]
+    fn unique_slugs_disambiguate_deterministically() {
+        let items = vec![
+            ("Cam".to_string(), "a/RTC.xml".to_string()),
+            ("cam".to_string(), "b/RTC.xml".to_string()),
+            ("Other".to_string(), "c/RTC.xml".to_string()),
+        ];
+        let s = unique_slugs(&items);
+        assert_ne!(s[0], s[1]);
+        assert!(s[0].starts_with("cam-") && s[1].starts_with("cam-"));
+        assert_eq!(s[2], "other");
+        assert_eq!(s, unique_slugs(&items));
+    }
+}

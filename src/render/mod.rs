@@ -1,0 +1,89 @@
+//! Renderers: one module per output format behind the small [`Renderer`] trait.
+//!
+//! A renderer receives the finished [`Catalog`] and writes files through a [`Sink`]; it never
+//! re-parses and never knows which input format a profile came from.
+
+pub mod json;
+
+use crate::catalog::Catalog;
+use crate::output::Sink;
+use std::path::PathBuf;
+
+/// Site-wide settings every renderer can use.
+#[derive(Debug, Clone)]
+pub struct SiteOptions {
+    /// Title of the catalogue (index page, book title, Doxygen project name).
+    pub title: String,
+    /// Absolute URL the site is published at (sitemap, canonical links); optional.
+    pub base_url: Option<String>,
+    /// A theme directory whose files override the built-in theme file by file.
+    pub theme_dir: Option<PathBuf>,
+}
+
+impl Default for SiteOptions {
+    fn default() -> Self {
+        SiteOptions {
+            title: "RT-Component catalogue".into(),
+            base_url: None,
+            theme_dir: None,
+        }
+    }
+}
+
+/// What a renderer sees.
+pub struct RenderContext<'a> {
+    pub catalog: &'a Catalog,
+    pub site: &'a SiteOptions,
+}
+
+/// An output format.
+pub trait Renderer: Sync {
+    /// Short name (`html`, `markdown`, `doxygen`, `json`), also the sub-directory used when
+    /// several formats are built at once.
+    fn name(&self) -> &'static str;
+    /// Writes the whole output; returns the number of files written.
+    fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize>;
+}
+
+/// Output formats known to `rtcdoc build`.
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, clap::ValueEnum, serde::Serialize,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Format {
+    Html,
+    Markdown,
+    Doxygen,
+    Json,
+}
+
+impl Format {
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::Html => "html",
+            Format::Markdown => "markdown",
+            Format::Doxygen => "doxygen",
+            Format::Json => "json",
+        }
+    }
+
+    /// The renderer for this format, or `None` when this build of rtcdoc does not have it yet.
+    pub fn renderer(self) -> Option<Box<dyn Renderer>> {
+        match self {
+            Format::Json => Some(Box::new(json::JsonRenderer)),
+            _ => None,
+        }
+    }
+}
+
+/// A sink that writes below a sub-directory of another sink.
+pub struct Prefixed<'a> {
+    pub inner: &'a dyn Sink,
+    pub prefix: String,
+}
+
+impl Sink for Prefixed<'_> {
+    fn write(&self, rel: &str, bytes: &[u8]) -> anyhow::Result<()> {
+        self.inner.write(&format!("{}/{rel}", self.prefix), bytes)
+    }
+}

@@ -1,0 +1,227 @@
+//! Directory walk: finds profile files anywhere below the input.
+//!
+//! A file is a profile by its content, not its name (RTCBuilder leaves backups such as
+//! `RTC.xml20230831164412.xml`): `*.xml` whose root element is `RtcProfile`, and `*.yaml`/`*.yml`
+//! with a top-level `rtcProfile` key. Everything else is skipped quietly (reported as
+//! [`Skipped`] for `--verbose`). Symlinks are not followed, so cycles cannot loop; the output
+//! directory is skipped when it lies inside the input; the order is sorted and stable.
+
+use crate::parse::{self, SourceFormat};
+use globset::{Glob, GlobSet, GlobSetBuilder};
+use std::path::{Path, PathBuf};
+
+/// A profile file found by the walk, with its bytes.
+#[derive(Debug, Clone)]
+pub struct Source {
+    /// Absolute or input-relative path on disk.
+    pub path: PathBuf,
+    /// Path relative to the input directory, with forward slashes (used in output and JSON).
+    pub rel: String,
+    pub format: SourceFormat,
+    pub bytes: Vec<u8>,
+}
+
+/// A file the walk looked at and did not take, with the reason.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Skipped {
+    pub rel: String,
+    pub reason: String,
+}
+
+/// Options of a walk.
+#[derive(Debug, Clone, Default)]
+pub struct WalkOptions {
+    /// Glob patterns (matched against the input-relative path) to leave out.
+    pub exclude: Vec<String>,
+    /// Directories never to enter (e.g. the output directory).
+    pub skip_dirs: Vec<PathBuf>,
+    /// Files larger than this are still returned (the reader reports them), but are not read
+    /// beyond this many bytes + 1, so a huge file costs no memory.
+    pub max_file_size: Option<u64>,
+}
+
+/// What a walk found.
+#[derive(Debug, Default)]
+pub struct WalkResult {
+    pub sources: Vec<Source>,
+    pub skipped: Vec<Skipped>,
+    /// Files that looked like profiles but could not be read (I/O errors).
+    pub errors: Vec<crate::diagnostic::Diagnostic>,
+}
+
+/// Errors that stop a walk before it starts.
+#[derive(Debug, thiserror::Error)]
+pub enum WalkError {
+    #[error("input `{0}` does not exist")]
+    Missing(PathBuf),
+    #[error("invalid exclude pattern `{pattern}`: {message}")]
+    BadGlob { pattern: String, message: String },
+}
+
+/// Guesses the format of a file from its extension and content; `None` when it is not an RTC
+/// component profile.
+pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(|e| e.to_ascii_lowercase());
+    match ext.as_deref() {
+        Some("xml") if parse::xml::is_profile(bytes) => Some(SourceFormat::Xml),
+        Some("yaml") | Some("yml") if parse::yaml::is_profile(bytes) => Some(SourceFormat::Yaml),
+        _ => None,
+    }
+}
+
+fn build_globs(patterns: &[String]) -> Result<GlobSet, WalkError> {
+    let mut b = GlobSetBuilder::new();
+    for p in patterns {
+        let g = Glob::new(p).map_err(|e| WalkError::BadGlob {
+            pattern: p.clone(),
+            message: e.to_string(),
+        })?;
+        b.add(g);
+    }
+    b.build().map_err(|e| WalkError::BadGlob {
+        pattern: patterns.join(", "),
+        message: e.to_string(),
+    })
+}
+
+fn rel_path(root: &Path, path: &Path) -> String {
+    let rel = path.strip_prefix(root).unwrap_or(path);
+    let s: Vec<String> = rel
+        .components()
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect();
+    if s.is_empty() {
+        path.file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    } else {
+        s.join("/")
+    }
+}
+
+fn read_limited(path: &Path, limit: Option<u64>) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let f = std::fs::File::open(path)?;
+    let mut buf = Vec::new();
+    match limit {
+        Some(l) => {
+            f.take(l.saturating_add(1)).read_to_end(&mut buf)?;
+        }
+        None => {
+            let mut f = f;
+            f.read_to_end(&mut buf)?;
+        }
+    }
+    Ok(buf)
+}
+
+/// Walks `input` (a directory or a single file) and returns the profiles found, sorted by
+/// their relative path.
+pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
+    if !input.exists() {
+        return Err(WalkError::Missing(input.to_path_buf()));
+    }
+    let globs = build_globs(&opts.exclude)?;
+    let skip_dirs: Vec<PathBuf> = opts
+        .skip_dirs
+        .iter()
+        .filter_map(|d| d.canonicalize().ok())
+        .collect();
+    let mut result = WalkResult::default();
+    let root = if input.is_file() {
+        input.parent().unwrap_or(Path::new(".")).to_path_buf()
+    } else {
+        input.to_path_buf()
+    };
+    let walker = walkdir::WalkDir::new(input)
+        .follow_links(false)
+        .sort_by_file_name()
+        .into_iter()
+        .filter_entry(|e| {
+            if e.depth() > 0 && e.file_type().is_dir() {
+                if let Ok(c) = e.path().canonicalize() {
+                    if skip_dirs.contains(&c) {
+                        return false;
+                    }
+                }
+                // Hidden directories (.git, .svn, .cache) hold no profiles of interest.
+                if e.file_name().to_string_lossy().starts_with('.') {
+                    return false;
+                }
+            }
+            true
+        });
+    for entry in walker {
+        let entry = match entry {
+            Ok(e) => e,
+            Err(e) => {
+                let rel = e
+                    .path()
+                    .map(|p| rel_path(&root, p))
+                    .unwrap_or_else(|| input.display().to_string());
+                result.skipped.push(Skipped {
+                    rel,
+                    reason: format!("cannot be read: {e}"),
+                });
+                continue;
+            }
+        };
+        if !entry.file_type().is_file() {
+            if entry.file_type().is_symlink() {
+                result.skipped.push(Skipped {
+                    rel: rel_path(&root, entry.path()),
+                    reason: "symbolic link (not followed)".into(),
+                });
+            }
+            continue;
+        }
+        let path = entry.path();
+        let rel = rel_path(&root, path);
+        if globs.is_match(&rel) {
+            result.skipped.push(Skipped {
+                rel,
+                reason: "excluded by pattern".into(),
+            });
+            continue;
+        }
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase());
+        if !matches!(ext.as_deref(), Some("xml" | "yaml" | "yml")) {
+            result.skipped.push(Skipped {
+                rel,
+                reason: "not an .xml/.yaml/.yml file".into(),
+            });
+            continue;
+        }
+        let bytes = match read_limited(path, opts.max_file_size) {
+            Ok(b) => b,
+            Err(e) => {
+                result.errors.push(crate::diagnostic::Diagnostic::error(
+                    crate::diagnostic::codes::IO,
+                    &rel,
+                    format!("cannot read file: {e}"),
+                ));
+                continue;
+            }
+        };
+        match detect(path, &bytes) {
+            Some(format) => result.sources.push(Source {
+                path: path.to_path_buf(),
+                rel,
+                format,
+                bytes,
+            }),
+            None => result.skipped.push(Skipped {
+                rel,
+                reason: "not an RTC component profile (root is not RtcProfile / rtcProfile)".into(),
+            }),
+        }
+    }
+    result.sources.sort_by(|a, b| a.rel.cmp(&b.rel));
+    Ok(result)
+}
