@@ -7,6 +7,7 @@ pub mod build;
 pub mod catalog;
 pub mod constraint;
 pub mod diagnostic;
+pub mod i18n;
 pub mod model;
 pub mod output;
 pub mod parse;

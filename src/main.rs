@@ -82,6 +82,9 @@ struct BuildArgs {
     /// Theme directory overriding built-in templates and assets file by file.
     #[arg(long, value_name = "DIR")]
     theme: Option<PathBuf>,
+    /// Language of generated labels (profile text is shown as written).
+    #[arg(long, value_enum, default_value = "en")]
+    language: rtcdoc::i18n::Lang,
     #[command(flatten)]
     input_args: InputArgs,
 }
@@ -135,6 +138,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                     title: args.title.clone(),
                     base_url: args.base_url.clone(),
                     theme_dir: args.theme.clone(),
+                    language: args.language,
                 },
             };
             let (loaded, report) = build::build(&opts)?;

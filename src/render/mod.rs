@@ -18,6 +18,8 @@ pub struct SiteOptions {
     pub base_url: Option<String>,
     /// A theme directory whose files override the built-in theme file by file.
     pub theme_dir: Option<PathBuf>,
+    /// Language of generated labels.
+    pub language: crate::i18n::Lang,
 }
 
 impl Default for SiteOptions {
@@ -26,6 +28,7 @@ impl Default for SiteOptions {
             title: "RT-Component catalogue".into(),
             base_url: None,
             theme_dir: None,
+            language: crate::i18n::Lang::En,
         }
     }
 }
