@@ -448,6 +448,13 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                 .with_hint("raise `max_depth` if the file is genuine"));
         }
         let qname = String::from_utf8_lossy(e.name().as_ref()).into_owned();
+        if !is_name(&qname) {
+            return Err(b.err(
+                codes::MALFORMED,
+                before,
+                format!("`<{qname}` is not a valid element name"),
+            ));
+        }
         let local = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
         let pos = b.cursor.pos(before);
         let mut attrs = Vec::new();
@@ -645,6 +652,18 @@ fn add_text(
             "text outside the root element",
         )),
     }
+}
+
+/// A loose check of XML 1.0 `Name` (§2.3): quick-xml accepts anything up to whitespace or `>`.
+fn is_name(s: &str) -> bool {
+    let mut chars = s.chars();
+    let Some(first) = chars.next() else {
+        return false;
+    };
+    let bad = |c: char| {
+        c.is_whitespace() || c.is_control() || "<>&\"'=/!?;,()[]{}`^|\\*+$%@#~".contains(c)
+    };
+    !bad(first) && !first.is_ascii_digit() && !matches!(first, '-' | '.') && !chars.any(bad)
 }
 
 /// Byte offset of `part` inside `whole`, when `part` borrows from it.
