@@ -77,7 +77,10 @@ fn minimal_profile_fills_every_field() {
     assert_eq!(pr.pos, Pos::new(2, 1));
     let b = &pr.basic_info;
     assert_eq!(b.name.as_deref(), Some("Sample"));
-    assert_eq!(b.execution_type.as_deref(), Some("PeriodicExecutionContext"));
+    assert_eq!(
+        b.execution_type.as_deref(),
+        Some("PeriodicExecutionContext")
+    );
     assert_eq!(b.max_instances.as_deref(), Some("1"));
     assert_eq!(b.pos, Pos::new(3, 5));
     let doc = b.doc.as_ref().unwrap();
@@ -124,10 +127,7 @@ fn minimal_profile_fills_every_field() {
     let s = &pr.service_ports[0];
     assert_eq!(s.name.as_deref(), Some("svc"));
     assert_eq!(s.position.as_deref(), Some("RIGHT"));
-    assert_eq!(
-        s.doc.as_ref().unwrap().ifdescription.as_deref(),
-        Some("if")
-    );
+    assert_eq!(s.doc.as_ref().unwrap().ifdescription.as_deref(), Some("if"));
     let i = &s.interfaces[0];
     assert_eq!(i.direction_kind(), Some(Direction::Provided));
     assert_eq!(i.instance_name.as_deref(), Some("inst"));
@@ -307,10 +307,7 @@ fn position_any_case_any_rtc_namespace_or_unqualified() {
     assert_eq!(d[0].side(), PortSide::Left);
     assert_eq!(d[1].position.as_deref(), Some("BOTTOM"));
     assert_eq!(d[1].side(), PortSide::Bottom);
-    assert_eq!(
-        p.profile.service_ports[0].position.as_deref(),
-        Some("Top")
-    );
+    assert_eq!(p.profile.service_ports[0].position.as_deref(), Some("Top"));
 }
 
 #[test]
@@ -399,7 +396,10 @@ fn unknown_attribute_and_element_kept_with_warning() {
     assert_eq!(e.children[1].value.as_deref(), Some("with"));
 
     assert_eq!(p.diagnostics.len(), 3, "{:?}", p.diagnostics);
-    assert!(p.diagnostics.iter().all(|d| d.severity == Severity::Warning));
+    assert!(p
+        .diagnostics
+        .iter()
+        .all(|d| d.severity == Severity::Warning));
     assert!(p.diagnostics.iter().all(|d| d.code == codes::UNKNOWN));
     assert_eq!(
         p.diagnostics[1].message,
@@ -466,7 +466,10 @@ fn crlf_text_normalised_and_cdata() {
 fn error_unclosed_element_truncated_file() {
     let d = err("malformed_unclosed.xml");
     assert_err(&d, codes::MALFORMED, 3, 5);
-    assert!(d.message.contains("unclosed element `rtc:BasicInfo`"), "{d}");
+    assert!(
+        d.message.contains("unclosed element `rtc:BasicInfo`"),
+        "{d}"
+    );
 }
 
 #[test]
@@ -546,7 +549,8 @@ fn error_too_deep_fast() {
 
 #[test]
 fn error_invalid_utf8() {
-    let mut b = b"<?xml version=\"1.0\"?>\n<rtc:RtcProfile xmlns:rtc=\"x\">\n  <a>h\xC3\xA9".to_vec();
+    let mut b =
+        b"<?xml version=\"1.0\"?>\n<rtc:RtcProfile xmlns:rtc=\"x\">\n  <a>h\xC3\xA9".to_vec();
     b.extend_from_slice(b"\xFF</a></rtc:RtcProfile>");
     let d = err_bytes(&b);
     assert_err(&d, codes::ENCODING, 3, 8);
@@ -719,7 +723,11 @@ mod robustness {
         let t = Instant::now();
         let _ = is_profile(bytes);
         let _ = parse(bytes, "fuzz.xml", &Limits::default());
-        assert!(t.elapsed() < Duration::from_secs(1), "took {:?}", t.elapsed());
+        assert!(
+            t.elapsed() < Duration::from_secs(1),
+            "took {:?}",
+            t.elapsed()
+        );
     }
 
     proptest! {

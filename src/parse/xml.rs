@@ -239,7 +239,10 @@ impl<'a> LineIndex<'a> {
         }
         let line = self.starts.partition_point(|&s| s <= offset).max(1) - 1;
         let start = self.starts.get(line).copied().unwrap_or(0).min(offset);
-        let col = self.text.get(start..offset).map_or(0, |s| s.chars().count());
+        let col = self
+            .text
+            .get(start..offset)
+            .map_or(0, |s| s.chars().count());
         Pos::new(
             u32::try_from(line + 1).unwrap_or(u32::MAX),
             u32::try_from(col + 1).unwrap_or(u32::MAX),
@@ -266,7 +269,11 @@ impl<'a> PosCursor<'a> {
             while !self.index.text.is_char_boundary(off) {
                 off -= 1;
             }
-            let n = self.index.text.get(last_off..off).map_or(0, |s| s.chars().count());
+            let n = self
+                .index
+                .text
+                .get(last_off..off)
+                .map_or(0, |s| s.chars().count());
             Pos::new(last_pos.line, last_pos.column.saturating_add(n as u32))
         } else {
             self.index.pos(offset)
@@ -803,7 +810,10 @@ fn malformed(
         E::IllFormed(I::MissingEndTag(t)) => (codes::MALFORMED, format!("unclosed element `{t}`")),
         E::Escape(err) => (codes::ENTITY, format!("bad reference: {err}")),
         E::Namespace(err) => (codes::MALFORMED, format!("namespace error: {err}")),
-        E::InvalidAttr(err) => (codes::MALFORMED, format!("bad attribute: {}", attr_error(err))),
+        E::InvalidAttr(err) => (
+            codes::MALFORMED,
+            format!("bad attribute: {}", attr_error(err)),
+        ),
         other => (codes::MALFORMED, format!("malformed XML: {other}")),
     };
     let msg = match stack.last() {
@@ -1306,7 +1316,9 @@ fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
     }
     for c in &n.children {
         match c.key() {
-            Some("Doc") if d.doc.is_none() => d.doc = Some(map_data_port_doc(m, c, "data port doc")),
+            Some("Doc") if d.doc.is_none() => {
+                d.doc = Some(map_data_port_doc(m, c, "data port doc"))
+            }
             Some("Properties") => d.properties.push(map_property(m, c)),
             Some("Constraint") if d.constraint.is_none() => {
                 d.constraint = Some(map_constraint(m, c))
@@ -1758,7 +1770,10 @@ fn map_condition(m: &mut Mapper, n: &Node, k: &str, extra: &mut Vec<Extra>) -> O
             for more in ops {
                 m.warn(
                     more.pos,
-                    format!("`{}` takes one constraint; this extra one is kept as an extra property", n.qname),
+                    format!(
+                        "`{}` takes one constraint; this extra one is kept as an extra property",
+                        n.qname
+                    ),
                 );
                 extra.push(Extra {
                     kind: ExtraKind::Element,
@@ -1846,7 +1861,9 @@ fn map_condition(m: &mut Mapper, n: &Node, k: &str, extra: &mut Vec<Extra>) -> O
         }
         // spec 2.3.27–2.3.37 comparisons: `Literal` + `matchCase` (often absent).
         _ => {
-            let comparison = k.strip_prefix("propertyis").and_then(Comparison::from_suffix)?;
+            let comparison = k
+                .strip_prefix("propertyis")
+                .and_then(Comparison::from_suffix)?;
             let mut match_case = None;
             for a in &n.attrs {
                 match a.key().map(str::to_ascii_lowercase).as_deref() {
