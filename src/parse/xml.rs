@@ -1918,6 +1918,6 @@ mod tests {
     fn declared_encoding_found() {
         let (l, at) = declared_encoding(b"<?xml version='1.0' encoding = \"Shift_JIS\"?>").unwrap();
         assert_eq!(l, "Shift_JIS");
-        assert_eq!(at, 33);
+        assert_eq!(at, 32);
     }
 }
