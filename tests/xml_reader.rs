@@ -763,3 +763,19 @@ mod robustness {
         }
     }
 }
+
+#[test]
+fn stray_text_kept_as_extra() {
+    let p = parse(
+        b"<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\">\n<rtc:BasicInfo rtc:name=\"a\">  hello  </rtc:BasicInfo></rtc:RtcProfile>",
+        "t",
+        &Limits::default(),
+    )
+    .unwrap();
+    let e = &p.profile.basic_info.extra[0];
+    assert_eq!(e.name, "#text");
+    assert_eq!(e.value.as_deref(), Some("  hello  "));
+    assert_eq!(e.pos, Pos::new(2, 31));
+    assert_eq!(p.diagnostics[0].code, codes::UNKNOWN);
+    assert_eq!(p.diagnostics[0].pos, Some(Pos::new(2, 31)));
+}
