@@ -22,9 +22,11 @@ use serde::Deserialize;
 use serde_norway::{Mapping, Value};
 use std::fmt;
 
-/// Largest number of YAML nodes (after alias expansion) a document may have. A genuine profile
-/// has a few thousand; the limit only matters for alias bombs.
-pub const MAX_NODES: usize = 1_000_000;
+/// Upper bound of the number of YAML nodes (after alias expansion) a document may have. The
+/// actual limit is `min(MAX_NODES, 100_000 + file size)`: without aliases a document cannot have
+/// more nodes than bytes, so only alias expansion can reach it. A genuine profile has a few
+/// thousand nodes.
+pub const MAX_NODES: usize = 2_000_000;
 
 /// True when the bytes look like a YAML document with a top-level `rtcProfile` key: a line that
 /// starts (column 0) with `rtcProfile:`, `"rtcProfile":` or `'rtcProfile':`, or a flow mapping
@@ -80,12 +82,27 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         }
     };
 
+    if let Some((off, depth)) = flow_depth_exceeds(src, limits.max_depth) {
+        return Err(Diagnostic::error(
+            codes::TOO_DEEP,
+            file,
+            format!(
+                "YAML flow collections nest deeper than the limit of {} levels ({depth} `[`/`{{` \
+                 open here)",
+                limits.max_depth
+            ),
+        )
+        .at(Locator::new(src).pos(off))
+        .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile"));
+    }
+
     // Pass 1: count nodes and depth per document (cheap, aborts early on bombs) and find the
     // first document whose root mapping has `rtcProfile`.
     let mut chosen = None;
     for (index, doc) in serde_norway::Deserializer::from_slice(bytes).enumerate() {
         let mut state = CountState {
             nodes: 0,
+            max_nodes: MAX_NODES.min(100_000 + bytes.len()),
             max_depth: limits.max_depth,
         };
         let found = CountSeed {
@@ -143,6 +160,52 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
     })
 }
 
+/// Cheap pre-scan for deeply nested flow collections (`[[[[…`), which libyaml handles in
+/// quadratic time (stale simple keys) long before serde_norway's depth limit is reached.
+/// Counts `[`/`{` that start a token, skipping quoted scalars and comments; returns the offset
+/// and depth where `max_depth` is exceeded.
+fn flow_depth_exceeds(src: &str, max_depth: usize) -> Option<(usize, usize)> {
+    let b = src.as_bytes();
+    let mut depth = 0usize;
+    let mut i = 0;
+    // Whether the previous significant byte allows a token to start here.
+    let mut token_start = true;
+    while i < b.len() {
+        let c = b[i];
+        match c {
+            b'\n' => token_start = true,
+            b' ' | b'\t' | b'\r' => {}
+            b'#' if i == 0 || matches!(b[i - 1], b' ' | b'\t' | b'\n' | b'\r') => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+                continue;
+            }
+            b'"' | b'\'' if token_start => {
+                i += 1;
+                while i < b.len() && b[i] != c {
+                    i += if c == b'"' && b[i] == b'\\' { 2 } else { 1 };
+                }
+                token_start = false;
+            }
+            b'[' | b'{' if token_start => {
+                depth += 1;
+                if depth > max_depth {
+                    return Some((i, depth));
+                }
+            }
+            b']' | b'}' if depth > 0 => {
+                depth -= 1;
+                token_start = false;
+            }
+            b':' | b'-' | b',' | b'?' => token_start = true,
+            _ => token_start = false,
+        }
+        i += 1;
+    }
+    None
+}
+
 fn to_u32(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
@@ -168,7 +231,7 @@ fn yaml_error(e: serde_norway::Error, file: &str, limits: &Limits) -> Diagnostic
     let pos = e
         .location()
         .map(|l| Pos::new(to_u32(l.line()), to_u32(l.column())));
-    let d = if msg.starts_with(TOO_DEEP_MSG) || msg.contains("recursion limit exceeded") {
+    let d = if msg.contains(TOO_DEEP_MSG) || msg.contains("recursion limit exceeded") {
         Diagnostic::error(
             codes::TOO_DEEP,
             file,
@@ -178,13 +241,13 @@ fn yaml_error(e: serde_norway::Error, file: &str, limits: &Limits) -> Diagnostic
             ),
         )
         .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile")
-    } else if msg.starts_with(BOMB_MSG) || msg.contains("repetition limit exceeded") {
+    } else if msg.contains(BOMB_MSG) || msg.contains("repetition limit exceeded") {
         Diagnostic::error(
             codes::YAML_STRUCTURE,
             file,
             format!(
-                "YAML aliases expand too much (more than {MAX_NODES} nodes or too many alias \
-                 repetitions): rejected as a possible alias bomb"
+                "YAML aliases expand too much (too many nodes or alias repetitions): \
+                 rejected as a possible alias bomb"
             ),
         )
         .with_hint("RTC Profiles need no anchors or aliases; write the values out")
@@ -206,6 +269,7 @@ const BOMB_MSG: &str = "rtcdoc: alias expansion too large";
 
 struct CountState {
     nodes: usize,
+    max_nodes: usize,
     max_depth: usize,
 }
 
@@ -226,7 +290,7 @@ impl<'de> DeserializeSeed<'de> for CountSeed<'_> {
 impl CountSeed<'_> {
     fn bump<E: serde::de::Error>(&mut self) -> Result<(), E> {
         self.state.nodes += 1;
-        if self.state.nodes > MAX_NODES {
+        if self.state.nodes > self.state.max_nodes {
             return Err(E::custom(BOMB_MSG));
         }
         Ok(())
