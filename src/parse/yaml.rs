@@ -506,7 +506,7 @@ impl<'a> Locator<'a> {
     }
 
     /// Position of the next sequence item (the next `-`, or the next token in flow style);
-    /// moves the cursor past a `-`.
+    /// moves the cursor past a `-`, or onto the flow token.
     fn item(&mut self) -> Pos {
         let bytes = self.src.as_bytes();
         let mut i = self.cursor;
@@ -522,7 +522,10 @@ impl<'a> Locator<'a> {
                     self.cursor = i + 1;
                     return self.pos(i);
                 }
-                _ => break,
+                _ => {
+                    self.cursor = i;
+                    break;
+                }
             }
         }
         self.pos(i.min(bytes.len()))
@@ -541,16 +544,38 @@ impl<'a> Locator<'a> {
         if let Some(c) = text.find(" #") {
             text = &text[..c];
         }
-        Some((text.trim(), line_end))
+        let text = text.trim();
+        // In flow style the scalar ends at `,`, `}` or `]` (unless quoted).
+        let text = if text.starts_with(['"', '\'']) {
+            text
+        } else {
+            text.split([',', '}', ']'])
+                .next()
+                .unwrap_or(text)
+                .trim_end()
+        };
+        // End of the scalar text (text is a sub-slice of src).
+        let end = (text.as_ptr() as usize - src.as_ptr() as usize) + text.len();
+        Some((text, end.min(line_end)))
     }
 
-    /// The raw text of the next plain scalar sequence item (`- 2.10`), if any.
-    fn raw_item(&self) -> Option<&'a str> {
-        let rest = self.src.get(self.cursor..)?;
-        let line = rest.split('\n').next()?;
-        let line = line.split(" #").next()?.trim();
-        let end = line.find([',', ']', '}']).unwrap_or(line.len());
-        Some(line[..end].trim())
+    /// The raw text of the next scalar sequence item (`- 2.10`, `[2.4, 2.10]`), and the
+    /// offset of its end.
+    fn raw_item(&self) -> Option<(&'a str, usize)> {
+        let src = self.src;
+        let rest = src.get(self.cursor..)?;
+        let skipped = rest.len() - rest.trim_start_matches([' ', '\t']).len();
+        let start = self.cursor + skipped;
+        let line = src[start..].split('\n').next()?;
+        let len = match line.chars().next() {
+            Some(q @ ('"' | '\'')) => line[1..].find(q).map_or(line.len(), |n| n + 2),
+            _ => {
+                let l = line.split(" #").next().unwrap_or(line);
+                l.find([',', ']', '}']).unwrap_or(l.len())
+            }
+        };
+        let text = line[..len].trim_end();
+        Some((text, start + text.len()))
     }
 }
 
@@ -744,7 +769,7 @@ impl Reader<'_> {
         let raw = if after_key {
             self.loc.raw_after_key()
         } else {
-            self.loc.raw_item().map(|r| (r, 0))
+            self.loc.raw_item()
         };
         match untag_ref(v) {
             Value::Null => None,
@@ -754,14 +779,14 @@ impl Reader<'_> {
                     .map(|(r, _)| r)
                     .filter(|r| r.parse::<serde_norway::Number>().ok().as_ref() == Some(n))
                     .map(str::to_string);
-                if let (true, Some((_, end))) = (after_key, raw) {
+                if let Some((_, end)) = raw {
                     self.loc.cursor = end;
                 }
                 Some(text.unwrap_or_else(|| n.to_string()))
             }
             Value::String(s) => {
                 // Skip a one-line value so that its text is not mistaken for a later key.
-                if let (true, Some((r, end))) = (after_key, raw) {
+                if let Some((r, end)) = raw {
                     let unq = r
                         .strip_prefix('"')
                         .and_then(|r| r.strip_suffix('"'))
