@@ -245,10 +245,8 @@ fn yaml_error(e: serde_norway::Error, file: &str, limits: &Limits) -> Diagnostic
         Diagnostic::error(
             codes::YAML_STRUCTURE,
             file,
-            format!(
-                "YAML aliases expand too much (too many nodes or alias repetitions): \
-                 rejected as a possible alias bomb"
-            ),
+            "YAML aliases expand too much (too many nodes or alias repetitions): rejected as \
+             a possible alias bomb",
         )
         .with_hint("RTC Profiles need no anchors or aliases; write the values out")
     } else {
