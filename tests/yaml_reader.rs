@@ -273,6 +273,10 @@ fn full_profile_every_key() {
         Some("/usr/lib/libbar.so"),
         "PIM `path`"
     );
+    // Items are located in document order: each library at its own `-`.
+    assert_eq!(t.libraries[0].pos, Pos::new(135, 11));
+    assert_eq!(t.libraries[1].pos, Pos::new(138, 11));
+    assert_eq!(p.service_ports[0].interfaces[0].pos, Pos::new(106, 9));
 }
 
 #[test]

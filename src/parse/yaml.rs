@@ -862,24 +862,24 @@ impl Reader<'_> {
         out
     }
 
-    /// Items of a list of mappings, each with its position; non-mapping items are reported.
-    fn map_items<'v>(
+    /// One item of a list of mappings, with its position (located now, in document order);
+    /// null items are skipped, other non-mapping items reported as `SHAPE`.
+    fn map_item<'v>(
         &mut self,
-        v: &'v Value,
+        item: &'v Value,
         name: &str,
-        pos: Pos,
+        i: usize,
         sink: &mut Vec<Extra>,
-    ) -> Vec<(&'v Mapping, Pos)> {
-        let mut out = Vec::new();
-        for (i, item) in self.seq(v, name, pos, sink).iter().enumerate() {
-            let p = self.loc.item();
-            match untag_ref(item) {
-                Value::Mapping(m) => out.push((m, p)),
-                Value::Null => {}
-                _ => self.wrong_shape(&format!("{name}[{i}]"), item, p, "a mapping", sink),
+    ) -> Option<(&'v Mapping, Pos)> {
+        let p = self.loc.item();
+        match untag_ref(item) {
+            Value::Mapping(m) => Some((m, p)),
+            Value::Null => None,
+            _ => {
+                self.wrong_shape(&format!("{name}[{i}]"), item, p, "a mapping", sink);
+                None
             }
         }
-        out
     }
 
     /// `"rtcExt::property"` (chapter 7) / `"rtcExt::properties"` (RTCBuilder): `[{name, value}]`.
@@ -891,7 +891,10 @@ impl Reader<'_> {
         sink: &mut Vec<Extra>,
     ) -> Vec<Property> {
         let mut out = Vec::new();
-        for (m, p) in self.map_items(v, name, pos, sink) {
+        for (idx, it) in self.seq(v, name, pos, sink).iter().enumerate() {
+            let Some((m, p)) = self.map_item(it, name, idx, sink) else {
+                continue;
+            };
             let mut prop = Property {
                 pos: p,
                 ..Property::default()
@@ -933,19 +936,28 @@ impl Reader<'_> {
                     }
                 }
                 "dataPorts" => {
-                    for (m, ip) in self.map_items(v, &n, kp, &mut p.extra) {
+                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
+                            continue;
+                        };
                         let d = self.data_port(m, ip);
                         p.data_ports.push(d);
                     }
                 }
                 "servicePorts" => {
-                    for (m, ip) in self.map_items(v, &n, kp, &mut p.extra) {
+                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
+                            continue;
+                        };
                         let s = self.service_port(m, ip);
                         p.service_ports.push(s);
                     }
                 }
                 "parameters" => {
-                    for (m, ip) in self.map_items(v, &n, kp, &mut p.extra) {
+                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
+                            continue;
+                        };
                         let par = self.parameter(m, ip);
                         p.parameters.push(par);
                     }
@@ -1158,7 +1170,10 @@ impl Reader<'_> {
                 self.unknown(&n, v, kp, "configurationSet", &mut cs.extra);
                 continue;
             }
-            for (m, ip) in self.map_items(v, &n, kp, &mut cs.extra) {
+            for (idx, it) in self.seq(v, &n, kp, &mut cs.extra).iter().enumerate() {
+                let Some((m, ip)) = self.map_item(it, &n, idx, &mut cs.extra) else {
+                    continue;
+                };
                 let mut c = Configuration {
                     pos: ip,
                     ..Configuration::default()
@@ -1288,7 +1303,10 @@ impl Reader<'_> {
                     s.properties = self.properties(v, &n, kp, x)
                 }
                 "transMethod" | "transMethods" => {
-                    for (m, ip) in self.map_items(v, &n, kp, x) {
+                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
+                            continue;
+                        };
                         let mut t = TransMethod {
                             pos: ip,
                             ..TransMethod::default()
@@ -1304,7 +1322,10 @@ impl Reader<'_> {
                     }
                 }
                 "serviceInterface" | "serviceInterfaces" => {
-                    for (m, ip) in self.map_items(v, &n, kp, x) {
+                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
+                            continue;
+                        };
                         let i = self.service_interface(m, ip);
                         s.interfaces.push(i);
                     }
@@ -1415,7 +1436,10 @@ impl Reader<'_> {
             match n.as_str() {
                 "kind" => l.kind = self.text(v, &n, kp, &mut l.extra),
                 "rtcExt::targets" | "rtcExt::target" => {
-                    for (m, ip) in self.map_items(v, &n, kp, &mut l.extra) {
+                    for (idx, it) in self.seq(v, &n, kp, &mut l.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut l.extra) else {
+                            continue;
+                        };
                         let t = self.target(m, ip);
                         l.targets.push(t);
                     }
@@ -1442,7 +1466,10 @@ impl Reader<'_> {
                 "cpus" => t.cpus = self.texts(v, &n, kp, x),
                 "cpuOther" => t.cpu_other = self.text(v, &n, kp, x),
                 "libraries" => {
-                    for (m, ip) in self.map_items(v, &n, kp, x) {
+                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
+                            continue;
+                        };
                         let mut lib = Library {
                             pos: ip,
                             ..Library::default()
