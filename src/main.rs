@@ -37,6 +37,8 @@ enum Command {
     Build(BuildArgs),
     /// Validate profiles (for CI); exits 1 when a profile has an error.
     Check(CheckArgs),
+    /// Build into memory, serve on 127.0.0.1, rebuild on changes and live-reload browsers.
+    Serve(ServeArgs),
     /// Write an `rtcdoc.toml` with every setting commented out at its default.
     Init(InitArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
@@ -102,6 +104,18 @@ struct CheckArgs {
     paths: Vec<PathBuf>,
     #[command(flatten)]
     input_args: InputArgs,
+}
+
+#[derive(Args)]
+struct ServeArgs {
+    #[command(flatten)]
+    build: BuildArgs,
+    /// Port on 127.0.0.1 [default: 3000; 0 picks a free one].
+    #[arg(short, long)]
+    port: Option<u16>,
+    /// Open the site in the default browser.
+    #[arg(long)]
+    open: bool,
 }
 
 #[derive(Args)]
@@ -272,6 +286,54 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             } else {
                 ExitCode::SUCCESS
             })
+        }
+        Command::Serve(args) => {
+            let file = load_config(
+                args.build.input.as_deref(),
+                args.build.input_args.config.as_deref(),
+            )?;
+            let mut build = config::build_options(&file, &overrides(&args.build));
+            build.formats = vec![Format::Html];
+            let serve_cfg = file.config.serve.clone().unwrap_or_default();
+            let mut watch = Vec::new();
+            if let Some(t) = &build.site.theme_dir {
+                watch.push(t.clone());
+            }
+            if let Some(p) = &file.path {
+                watch.push(p.clone());
+            }
+            let quiet = cli.quiet;
+            let (input, explicit, cli_over) = (
+                args.build.input.clone(),
+                args.build.input_args.config.clone(),
+                overrides(&args.build),
+            );
+            let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
+                let file = load_config(input.as_deref(), explicit.as_deref())?;
+                let mut b = config::build_options(&file, &cli_over);
+                b.formats = vec![Format::Html];
+                Ok(b)
+            });
+            let handle = rtcdoc::serve::start(
+                rtcdoc::serve::ServeOptions {
+                    build,
+                    port: args.port.or(serve_cfg.port).unwrap_or(3000),
+                    watch,
+                    config_file: file.path.clone(),
+                    reconfigure: Some(reconfigure),
+                },
+                std::sync::Arc::new(move |line: &str| {
+                    if !quiet || line.starts_with("error") {
+                        eprintln!("{line}");
+                    }
+                }),
+            )?;
+            eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
+            if args.open || serve_cfg.open.unwrap_or(false) {
+                rtcdoc::serve::open_browser(&handle.url());
+            }
+            handle.wait();
+            Ok(ExitCode::SUCCESS)
         }
         Command::Init(args) => {
             let path = args.dir.join(config::FILE_NAME);
