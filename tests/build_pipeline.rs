@@ -28,7 +28,11 @@ fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
     write(d, "b/RTC.xml", &xml_profile("B", &[]));
     write(d, "a/RTC.xml20230831164412.xml", &xml_profile("A", &[]));
     write(d, "a/notes.xml", "<root/>");
-    write(d, "sys.xml", "<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\"/>");
+    write(
+        d,
+        "sys.xml",
+        "<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\"/>",
+    );
     write(d, "readme.md", "# hi");
     write(d, ".git/RTC.xml", &xml_profile("Hidden", &[]));
     write(d, "skip/me/RTC.xml", &xml_profile("Excluded", &[]));
@@ -65,20 +69,43 @@ fn walk_survives_symlink_cycles() {
 fn json_output_holds_components_sources_and_cross_links() {
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("in");
-    write(&input, "cam/RTC.xml", &xml_profile("Cam", &[("DataOutPort", "image", "RTC::CameraImage")]));
-    write(&input, "view/RTC.xml", &xml_profile("Viewer", &[("DataInPort", "in", "CameraImage")]));
-    write(&input, "broken/RTC.xml", "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\"><oops>");
+    write(
+        &input,
+        "cam/RTC.xml",
+        &xml_profile("Cam", &[("DataOutPort", "image", "RTC::CameraImage")]),
+    );
+    write(
+        &input,
+        "view/RTC.xml",
+        &xml_profile("Viewer", &[("DataInPort", "in", "CameraImage")]),
+    );
+    write(
+        &input,
+        "broken/RTC.xml",
+        "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\"><oops>",
+    );
     let out = dir.path().join("out");
     let (loaded, report) = build::build(&opts(&input, &out, Format::Json)).unwrap();
-    assert_eq!(report.profiles, 2, "the broken file is reported, the others load");
+    assert_eq!(
+        report.profiles, 2,
+        "the broken file is reported, the others load"
+    );
     assert_eq!(report.errors, 1);
-    let err = loaded.catalog.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    let err = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap();
     assert_eq!(err.file, "broken/RTC.xml");
     assert!(err.pos.is_some(), "errors carry a position");
 
     let v = json(&out.join("catalog.json"));
     let comps = v["components"].as_array().unwrap();
-    let sources: Vec<&str> = comps.iter().map(|c| c["source"].as_str().unwrap()).collect();
+    let sources: Vec<&str> = comps
+        .iter()
+        .map(|c| c["source"].as_str().unwrap())
+        .collect();
     assert_eq!(sources, ["cam/RTC.xml", "view/RTC.xml"]);
     assert_eq!(comps[0]["basicInfo"]["name"], "Cam");
     assert_eq!(comps[0]["dataPorts"][0]["type"], "RTC::CameraImage");
@@ -97,7 +124,11 @@ fn strict_mode_fails_and_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("in");
     write(&input, "ok/RTC.xml", &xml_profile("Ok", &[]));
-    write(&input, "bad/RTC.xml", "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\">");
+    write(
+        &input,
+        "bad/RTC.xml",
+        "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\">",
+    );
     let out = dir.path().join("out");
     let mut o = opts(&input, &out, Format::Json);
     o.strict = true;
@@ -116,7 +147,13 @@ fn output_is_deterministic() {
         write(
             &input,
             &format!("c{i}/RTC.xml"),
-            &xml_profile(&format!("C{}", i % 7), &[("DataOutPort", "o", "RTC::TimedLong"), ("DataInPort", "i", "TimedLong")]),
+            &xml_profile(
+                &format!("C{}", i % 7),
+                &[
+                    ("DataOutPort", "o", "RTC::TimedLong"),
+                    ("DataInPort", "i", "TimedLong"),
+                ],
+            ),
         );
     }
     let a = dir.path().join("a");
@@ -161,7 +198,11 @@ fn duplicate_ids_are_kept_apart_and_warned() {
     let c = &loaded.catalog;
     assert_eq!(c.components.len(), 2);
     assert_ne!(c.components[0].slug, c.components[1].slug);
-    let dups: Vec<_> = c.diagnostics.iter().filter(|d| d.code == "RTC010").collect();
+    let dups: Vec<_> = c
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "RTC010")
+        .collect();
     assert_eq!(dups.len(), 2);
 }
 
@@ -169,8 +210,15 @@ fn duplicate_ids_are_kept_apart_and_warned() {
 fn cli_builds_json_and_reports() {
     let dir = tempfile::tempdir().unwrap();
     write(dir.path(), "in/a/RTC.xml", &xml_profile("A", &[]));
-    let out = rtcdoc(&["build", "in", "--format", "json", "-o", "out"], dir.path());
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = rtcdoc(
+        &["build", "in", "--format", "json", "-o", "out"],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(dir.path().join("out/catalog.json").exists());
     let missing = rtcdoc(&["build", "nope", "-o", "out2"], dir.path());
     assert_eq!(missing.status.code(), Some(2));
@@ -188,7 +236,13 @@ fn corpus_json_loses_nothing() {
     let input = corpus.join("rtc-xml");
     let out = dir.path().join("out");
     let (loaded, _) = build::build(&opts(&input, &out, Format::Json)).unwrap();
-    let errors: Vec<String> = loaded.catalog.diagnostics.iter().filter(|d| d.is_error()).map(|d| d.to_string()).collect();
+    let errors: Vec<String> = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.to_string())
+        .collect();
     assert!(errors.is_empty(), "corpus errors: {errors:#?}");
     let run = std::process::Command::new("python3")
         .arg(&tool)
