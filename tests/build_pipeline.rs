@@ -255,3 +255,71 @@ fn corpus_json_loses_nothing() {
     assert!(run.status.success(), "nothing_lost.py failed:\n{stdout}");
     assert!(stdout.contains("lost: 0, profiles without component: 0"));
 }
+
+#[test]
+fn whole_corpus_loads_without_errors() {
+    let Some(corpus) = corpus() else { return };
+    let loaded = build::load(&corpus, &LoadOptions::default()).unwrap();
+    let errors: Vec<String> = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.to_string())
+        .collect();
+    assert!(errors.is_empty(), "corpus errors: {errors:#?}");
+    let xml = loaded
+        .catalog
+        .components
+        .iter()
+        .filter(|c| c.source.starts_with("rtc-xml/"))
+        .count();
+    let yaml = loaded
+        .catalog
+        .components
+        .iter()
+        .filter(|c| c.source.starts_with("rtc-yaml/"))
+        .count();
+    let rts = loaded
+        .catalog
+        .components
+        .iter()
+        .filter(|c| c.source.starts_with("rts-xml/"))
+        .count();
+    println!(
+        "corpus: {xml} XML and {yaml} YAML profiles, {} files skipped",
+        loaded.skipped.len()
+    );
+    assert_eq!(xml, 139);
+    assert_eq!(yaml, 14);
+    assert_eq!(rts, 0, "RT System profiles are skipped");
+    let mut by_code = std::collections::BTreeMap::new();
+    for d in &loaded.catalog.diagnostics {
+        *by_code.entry(d.code).or_insert(0) += 1;
+    }
+    println!("diagnostics by code: {by_code:?}");
+}
+
+#[test]
+fn oversized_files_are_refused_quickly_with_the_file_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let mut big = xml_profile("Big", &[]);
+    big.push_str(&format!("<!-- {} -->\n", "x".repeat(2_000_000)));
+    write(&input, "big/RTC.xml", &big);
+    write(&input, "ok/RTC.xml", &xml_profile("Ok", &[]));
+    let mut o = LoadOptions::default();
+    o.limits.max_file_size = 1_000_000;
+    let start = std::time::Instant::now();
+    let loaded = build::load(&input, &o).unwrap();
+    assert!(start.elapsed().as_secs_f64() < 1.0);
+    assert_eq!(loaded.catalog.components.len(), 1);
+    let d = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap();
+    assert_eq!((d.code, d.file.as_str()), ("RTC002", "big/RTC.xml"));
+    assert!(d.to_string().contains("larger than the limit"));
+}
