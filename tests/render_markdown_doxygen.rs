@@ -647,3 +647,31 @@ fn renders_are_deterministic() {
         assert_eq!(read_tree(&one), read_tree(&two), "{f:?} output is stable");
     }
 }
+
+#[test]
+fn doxygen_tag_file_lets_another_manual_link_entries() {
+    if !have("doxygen") {
+        return;
+    }
+    let (t, out) = render(&examples(), Format::Doxygen, Lang::En);
+    run_doxygen(&out);
+    let other = t.path().join("other");
+    std::fs::create_dir_all(&other).expect("mkdir");
+    std::fs::write(
+        other.join("m.dox"),
+        "/// \\mainpage Other manual\n/// See \\ref rtc_comp_objectdetector and \
+         \\ref rtc_comp_usbcamera__port_image \"UsbCamera.image\" of type \
+         \\ref rtc_type_rtc_cameraimage.\n",
+    )
+    .expect("write");
+    std::fs::write(
+        other.join("Doxyfile"),
+        "INPUT = m.dox\nTAGFILES = ../out/rtcdoc.tag=../../out/html\nGENERATE_LATEX = NO\n\
+         HAVE_DOT = NO\nQUIET = YES\nWARN_AS_ERROR = FAIL_ON_WARNINGS\n",
+    )
+    .expect("write");
+    run_doxygen(&other);
+    let index = std::fs::read_to_string(other.join("html/index.html")).expect("index");
+    assert!(index.contains("href=\"../../out/html/rtc_comp_objectdetector.html\""));
+    assert!(index.contains("rtc_comp_usbcamera.html#rtc_comp_usbcamera__port_image"));
+}

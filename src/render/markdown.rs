@@ -61,10 +61,14 @@ fn escape_char(ch: char) -> Option<&'static str> {
 /// Escapes one line; a leading list, heading-underline or ordered-list marker is neutralised.
 fn escape_line(line: &str, out: &mut String) {
     let line = line.trim_start();
-    let digits = line.chars().take_while(|c| c.is_ascii_digit()).count();
-    for (i, ch) in line.chars().enumerate() {
-        let at_marker = (i == 0 && matches!(ch, '-' | '+' | '='))
-            || (digits > 0 && i == digits && matches!(ch, '.' | ')'));
+    let chars: Vec<char> = line.chars().collect();
+    let digits = chars.iter().take_while(|c| c.is_ascii_digit()).count();
+    // `1.` / `1)` start an ordered list only when followed by white space or the end.
+    let ordered = (1..=9).contains(&digits)
+        && matches!(chars.get(digits), Some('.' | ')'))
+        && chars.get(digits + 1).is_none_or(|c| c.is_whitespace());
+    for (i, &ch) in chars.iter().enumerate() {
+        let at_marker = (i == 0 && matches!(ch, '-' | '+' | '=')) || (ordered && i == digits);
         if at_marker {
             out.push('\\');
             out.push(ch);
@@ -937,6 +941,8 @@ mod tests {
         assert_eq!(inline("> quote"), "&gt; quote");
         assert_eq!(inline("1. one"), "1\\. one");
         assert_eq!(inline("12) x"), "12\\) x");
+        assert_eq!(inline("0.5.0"), "0.5.0");
+        assert_eq!(inline("3."), "3\\.");
         assert_eq!(inline("==="), "\\===");
         assert_eq!(inline("a\\b"), "a\\\\b");
         assert_eq!(inline("~~s~~"), "\\~\\~s\\~\\~");
