@@ -5,6 +5,7 @@
 
 pub mod build;
 pub mod catalog;
+pub mod config;
 pub mod constraint;
 pub mod diagnostic;
 pub mod i18n;
