@@ -3,7 +3,10 @@
 //! A renderer receives the finished [`Catalog`] and writes files through a [`Sink`]; it never
 //! re-parses and never knows which input format a profile came from.
 
+pub mod doxygen;
+pub mod facts;
 pub mod json;
+pub mod markdown;
 
 use crate::catalog::Catalog;
 use crate::output::Sink;
@@ -84,6 +87,8 @@ impl Format {
     pub fn renderer(self) -> Option<Box<dyn Renderer>> {
         match self {
             Format::Json => Some(Box::new(json::JsonRenderer)),
+            Format::Markdown => Some(Box::new(markdown::MarkdownRenderer)),
+            Format::Doxygen => Some(Box::new(doxygen::DoxygenRenderer)),
             _ => None,
         }
     }
