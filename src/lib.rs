@@ -5,6 +5,7 @@
 
 pub mod build;
 pub mod catalog;
+pub mod check;
 pub mod constraint;
 pub mod diagnostic;
 pub mod i18n;
@@ -13,4 +14,5 @@ pub mod output;
 pub mod parse;
 pub mod render;
 pub mod types;
+pub mod value;
 pub mod walk;
