@@ -71,6 +71,17 @@ pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
     })
 }
 
+/// Runs the `rtcdoc check` rules ([`crate::check::run`]) and adds their diagnostics to the
+/// catalogue's, keeping them sorted by file and position.
+pub fn add_check_diagnostics(catalog: &mut Catalog) {
+    let found = crate::check::run(catalog);
+    catalog.diagnostics.extend(found);
+    catalog.diagnostics.sort_by(|a, b| {
+        (&a.file, a.pos, a.severity, a.code, &a.message)
+            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
+    });
+}
+
 /// Everything `rtcdoc build` needs.
 #[derive(Debug, Clone)]
 pub struct BuildOptions {
@@ -140,7 +151,10 @@ pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
     check_output_location(&opts.input, &opts.output)?;
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());
-    let loaded = load(&opts.input, &load_opts)?;
+    let mut loaded = load(&opts.input, &load_opts)?;
+    // The `rtcdoc check` rules run on every build; their findings join the catalogue's
+    // diagnostics so they appear in the JSON output and the diagnostics page.
+    add_check_diagnostics(&mut loaded.catalog);
     let (errors, warnings, _) = loaded.catalog.counts();
     if opts.strict && errors > 0 {
         bail!("{errors} error(s) in the profiles (--strict); nothing was written");

@@ -235,6 +235,7 @@ pub fn evaluate(c: &Constraint, value: &str, ty: ValueType) -> Verdict {
     let ev = Eval {
         raw: value,
         elem: ty.element(),
+        item_elem: item_type(ty),
     };
     match ev.constraint(c, &subject, 0) {
         Truth::True => Verdict::Satisfied,
@@ -258,6 +259,19 @@ enum Subject<'a> {
 struct Eval<'a> {
     raw: &'a str,
     elem: Option<ScalarType>,
+    /// Type of the elements of a list or hash constraint (see [`item_type`]).
+    item_elem: Option<ScalarType>,
+}
+
+/// The type list and hash items are evaluated with: the element type of a vector; for a plain
+/// value (a `string` holding `x:0,y:0`) the declared type describes the whole text, not its
+/// parts, so the parts are typed by what they look like (numeric when both sides parse as
+/// numbers).
+fn item_type(ty: ValueType) -> Option<ScalarType> {
+    match ty {
+        ValueType::Vector(s) => Some(s),
+        _ => None,
+    }
 }
 
 /// The special characters of a `propertyIsLike` pattern.
@@ -400,7 +414,8 @@ impl Eval<'_> {
     fn item(&self, item: &Constraint, element: &str, depth: usize) -> Truth {
         let sub = Eval {
             raw: element,
-            elem: self.elem,
+            elem: self.item_elem,
+            item_elem: self.item_elem,
         };
         let c = match &item.kind {
             // The key of a hash item has been used to pick the element.
@@ -633,13 +648,15 @@ pub enum Problem {
 /// Checks every literal of `c` against the element type of `ty` and every node's shape.
 pub fn problems(c: &Constraint, ty: ValueType) -> Vec<Problem> {
     let mut out = Vec::new();
-    walk_problems(c, ty.element(), false, c.pos, &mut out, 0);
+    walk_problems(c, ty.element(), item_type(ty), false, c.pos, &mut out, 0);
     out
 }
 
+#[allow(clippy::too_many_arguments)]
 fn walk_problems(
     c: &Constraint,
     elem: Option<ScalarType>,
+    item_elem: Option<ScalarType>,
     in_hash: bool,
     parent: Pos,
     out: &mut Vec<Problem>,
@@ -678,7 +695,7 @@ fn walk_problems(
                 structure(out, "the constraint list or hash has no items".into());
             }
             for i in items {
-                walk_problems(i, elem, hash, pos, out, depth + 1);
+                walk_problems(i, item_elem, item_elem, hash, pos, out, depth + 1);
             }
         }
         ConstraintKind::Unit { key, condition } => {
@@ -687,14 +704,14 @@ fn walk_problems(
             }
             match condition.as_ref() {
                 Condition::Not { operand } => {
-                    walk_problems(operand, elem, false, pos, out, depth + 1)
+                    walk_problems(operand, elem, item_elem, false, pos, out, depth + 1)
                 }
                 Condition::And { operands } | Condition::Or { operands } => {
                     if operands.is_empty() {
                         structure(out, "a logical operator has no operands".into());
                     }
                     for o in operands {
-                        walk_problems(o, elem, false, pos, out, depth + 1);
+                        walk_problems(o, elem, item_elem, false, pos, out, depth + 1);
                     }
                 }
                 Condition::IsNull { .. } => {}

@@ -306,7 +306,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
             a.pos,
         );
     }
-    boolean(s, "saveProject".into(), &b.save_project, b.pos);
+    // saveProject is a project name (xsd:string, spec 2.5.1.2), not a boolean.
     // matchCase is checked with the constraints (RTC305 reports it as malformed).
 }
 
