@@ -19,10 +19,14 @@
 //! - `ConstraintListType` applies item *i* to element *i* of the comma-separated value: a missing
 //!   element violates it, elements beyond the list are unconstrained;
 //! - `ConstraintHashType` reads the value as comma-separated `key:value` pairs (whatever the
-//!   declared type; a plain value without `:` cannot be checked and is reported as
-//!   unevaluable, never as a violation); the keyed item `k` applies to the value of pair `k`; a key
-//!   the value does not set violates it; pairs without an item are unconstrained. A keyed unit
-//!   outside a hash is read as a hash of one item.
+//!   declared type); the keyed item `k` applies to the value of pair `k`; a key the value does
+//!   not set violates it; pairs without an item are unconstrained; a value mixing pairs and
+//!   plain items is unevaluable. Over a *plain* value (no `:` at all) the keys label
+//!   alternatives, as real profiles use it (`twochar` = 2, `threechar` = 3): the value must
+//!   satisfy one of the items. A keyed unit outside a hash is read as a hash of one item.
+//! - list and hash items of a vector are typed by the vector's element type; those of a plain
+//!   value by what they look like (numeric when both sides parse as numbers), since the declared
+//!   type (`string`) describes the whole text.
 //!
 //! Evaluation is three-valued: a comparison that cannot be made (a literal or value that does not
 //! parse for a numeric type, a malformed node) is *unevaluable*; `not` keeps it unevaluable,
@@ -429,6 +433,9 @@ impl Eval<'_> {
     }
 
     fn hash(&self, items: &[Constraint], depth: usize) -> Truth {
+        if !self.raw.contains(':') {
+            return self.labelled_alternatives(items, depth);
+        }
         let mut pairs = Vec::new();
         for part in value::split_vector(self.raw) {
             match part.split_once(':') {
@@ -459,6 +466,34 @@ impl Eval<'_> {
             }
         }
         unknown.map_or(Truth::True, Truth::Unknown)
+    }
+
+    /// A hash constraint over a plain value (no `key:value` pair at all): the keys label
+    /// alternatives (UrgRTC's `encoding`: `twochar` = 2, `threechar` = 3) and the value must
+    /// satisfy one of the items.
+    fn labelled_alternatives(&self, items: &[Constraint], depth: usize) -> Truth {
+        let mut unknown = None;
+        let mut keys = Vec::new();
+        for item in items {
+            if let ConstraintKind::Unit { key: Some(k), .. } = &item.kind {
+                keys.push(k.trim());
+            }
+            match self.item(item, self.raw, depth) {
+                Truth::True => return Truth::True,
+                Truth::False(_) => {}
+                Truth::Unknown(w) => unknown = unknown.or(Some(w)),
+            }
+        }
+        unknown.map_or_else(
+            || {
+                Truth::False(format!(
+                    "`{}` satisfies none of the keyed alternatives ({})",
+                    self.raw.trim(),
+                    keys.join(", ")
+                ))
+            },
+            Truth::Unknown,
+        )
     }
 
     fn condition(&self, cond: &Condition, subject: &Subject, depth: usize) -> Truth {
