@@ -154,10 +154,10 @@ pub fn span_at(text: &str, line: u32, column: u32) -> Option<std::ops::Range<usi
         .map(|(i, _)| i)
         .unwrap_or(line_text.len());
     let rest = &line_text[col_off..];
-    let len = if rest.starts_with('<') {
-        1 + rest[1..]
+    let len = if let Some(tag) = rest.strip_prefix('<') {
+        1 + tag
             .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
-            .unwrap_or(rest.len() - 1)
+            .unwrap_or(tag.len())
     } else {
         rest.find(|c: char| c.is_whitespace() || c == ':' || c == '>')
             .unwrap_or(rest.len())
