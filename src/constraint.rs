@@ -14,8 +14,8 @@
 //!   any text, `singleChar` for exactly one character and `escapeChar` makes the next character
 //!   literal (each attribute: its first non-space character; absent = `*`, `?`, `\\`); no
 //!   regular expressions are built from profile text;
-//! - a unit constraint over a vector value applies to every element (`propertyIsNull`: to the
-//!   whole value);
+//! - a unit constraint over a vector value applies, as a whole, to every element
+//!   (`propertyIsNull` still looks at the whole value);
 //! - `ConstraintListType` applies item *i* to element *i* of the comma-separated value: a missing
 //!   element violates it, elements beyond the list are unconstrained;
 //! - `ConstraintHashType` reads the value as comma-separated `key:value` pairs (whatever the
@@ -383,10 +383,29 @@ impl Eval<'_> {
             return Truth::Unknown("the constraint nests too deeply".into());
         }
         match &c.kind {
+            // A unit over a non-empty vector: every element must satisfy the whole condition
+            // tree (`one of: a, b` means each element is a or b, not "all are a or all are b");
+            // `propertyIsNull` still looks at the whole value. An empty vector reaches the
+            // leaves with no elements, where comparisons hold vacuously.
             ConstraintKind::Unit {
                 key: None,
                 condition,
-            } => self.condition(condition, subject, depth + 1),
+            } => match subject {
+                Subject::Many(elements) if !elements.is_empty() => {
+                    let mut unknown = None;
+                    for (i, e) in elements.iter().enumerate() {
+                        match self.condition(condition, &Subject::One(e), depth + 1) {
+                            Truth::True => {}
+                            Truth::False(w) => {
+                                return Truth::False(format!("element {i} (`{e}`): {w}"))
+                            }
+                            Truth::Unknown(w) => unknown = unknown.or(Some(w)),
+                        }
+                    }
+                    unknown.map_or(Truth::True, Truth::Unknown)
+                }
+                _ => self.condition(condition, subject, depth + 1),
+            },
             ConstraintKind::Unit { key: Some(_), .. } => {
                 self.hash(std::slice::from_ref(c), depth + 1)
             }

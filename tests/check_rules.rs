@@ -357,6 +357,11 @@ fn list_and_hash_over_vectors() {
     // A unit over a vector applies to every element.
     assert!(ok(&between("0", "1"), "0.1,0.5,1", "vector<double>"));
     assert!(!ok(&between("0", "1"), "0.1,1.5", "vector<double>"));
+    assert!(ok(&between("0", "1"), "", "vector<double>"), "empty vector");
+    // An enumeration over a vector: each element is one of the values.
+    let one_of = or(vec![cmp(EqualTo, "raw"), cmp(EqualTo, "jpeg")]);
+    assert!(ok(&one_of, "raw,jpeg", "vector<string>"));
+    assert!(!ok(&one_of, "raw,png", "vector<string>"));
     let h = hash(vec![
         keyed("x", cmp(GreaterThanOrEqualTo, "0")),
         keyed("width", between("1", "1280")),
