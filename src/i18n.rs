@@ -1,10 +1,12 @@
 //! UI language: every generated label (headings, table headers, diagram labels, search UI) in
 //! English and Japanese. Renderers never hard-code label text; they ask [`Lang::t`].
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The language of generated labels (profile text is shown as written).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
+#[derive(
+    Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum,
+)]
 #[serde(rename_all = "lowercase")]
 pub enum Lang {
     #[default]

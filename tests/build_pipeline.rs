@@ -303,3 +303,27 @@ fn whole_corpus_loads_without_errors() {
     }
     println!("diagnostics by code: {by_code:?}");
 }
+
+#[test]
+fn oversized_files_are_refused_quickly_with_the_file_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let mut big = xml_profile("Big", &[]);
+    big.push_str(&format!("<!-- {} -->\n", "x".repeat(2_000_000)));
+    write(&input, "big/RTC.xml", &big);
+    write(&input, "ok/RTC.xml", &xml_profile("Ok", &[]));
+    let mut o = LoadOptions::default();
+    o.limits.max_file_size = 1_000_000;
+    let start = std::time::Instant::now();
+    let loaded = build::load(&input, &o).unwrap();
+    assert!(start.elapsed().as_secs_f64() < 1.0);
+    assert_eq!(loaded.catalog.components.len(), 1);
+    let d = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap();
+    assert_eq!((d.code, d.file.as_str()), ("RTC002", "big/RTC.xml"));
+    assert!(d.to_string().contains("larger than the limit"));
+}
