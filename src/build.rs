@@ -92,6 +92,17 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     })
 }
 
+/// Runs the `rtcdoc check` rules ([`crate::check::run`]) and adds their diagnostics to the
+/// catalogue's, keeping them sorted by file and position.
+pub fn add_check_diagnostics(catalog: &mut Catalog) {
+    let found = crate::check::run(catalog);
+    catalog.diagnostics.extend(found);
+    catalog.diagnostics.sort_by(|a, b| {
+        (&a.file, a.pos, a.severity, a.code, &a.message)
+            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
+    });
+}
+
 /// Everything `rtcdoc build` needs.
 #[derive(Debug, Clone)]
 pub struct BuildOptions {
@@ -166,7 +177,10 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     check_output_location(&opts.input, &opts.output)?;
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());
-    let loaded = load_with(&opts.input, &load_opts, progress)?;
+    let mut loaded = load_with(&opts.input, &load_opts, progress)?;
+    // The `rtcdoc check` rules run on every build; their findings join the catalogue's
+    // diagnostics so they appear in the JSON output and the diagnostics page.
+    add_check_diagnostics(&mut loaded.catalog);
     let (errors, warnings, _) = loaded.catalog.counts();
     if opts.strict && errors > 0 {
         bail!("{errors} error(s) in the profiles (--strict); nothing was written");

@@ -5,6 +5,7 @@
 
 pub mod build;
 pub mod catalog;
+pub mod check;
 pub mod config;
 pub mod constraint;
 pub mod diagnostic;
@@ -16,4 +17,5 @@ pub mod parse;
 pub mod render;
 pub mod serve;
 pub mod types;
+pub mod value;
 pub mod walk;

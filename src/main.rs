@@ -2,7 +2,8 @@
 //! library, report.
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use rtcdoc::build::{self, LoadOptions, Progress};
+use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
+use rtcdoc::build::{self, Progress};
 use rtcdoc::config::{self, Overrides};
 use rtcdoc::diagnostic::Severity;
 use rtcdoc::i18n::Lang;
@@ -102,8 +103,30 @@ struct BuildArgs {
 struct CheckArgs {
     /// Directories or files to check [default: `.`].
     paths: Vec<PathBuf>,
+    /// Output format: human (rustc-like, on stderr), json or sarif (on stdout).
+    #[arg(long, value_enum, default_value = "human")]
+    format: CheckFormat,
+    /// Treat a class of findings as errors for the exit status (`--deny warnings`).
+    #[arg(long, value_enum, value_name = "WHAT")]
+    deny: Vec<Deny>,
+    /// Print the rationale and spec section of a rule code (e.g. `--explain RTC303`) and exit.
+    #[arg(long, value_name = "CODE")]
+    explain: Option<String>,
     #[command(flatten)]
     input_args: InputArgs,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum CheckFormat {
+    Human,
+    Json,
+    Sarif,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Deny {
+    /// Warnings make the check fail (exit 1).
+    Warnings,
 }
 
 #[derive(Args)]
@@ -232,8 +255,24 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                     eprintln!("skipped {}: {}", s.rel, s.reason);
                 }
             }
-            print_diagnostics(&loaded.catalog.diagnostics, cli.verbose, cli.quiet);
+            // Loader diagnostics as before; the check rules' findings are summed up in one
+            // line (all of them with --verbose, and in the JSON output / diagnostics page).
+            let (loader, rules): (Vec<_>, Vec<_>) = loaded
+                .catalog
+                .diagnostics
+                .iter()
+                .cloned()
+                .partition(|d| d.code < "RTC100");
+            print_diagnostics(&loader, cli.verbose, cli.quiet);
+            if cli.verbose {
+                print_diagnostics(&rules, true, false);
+            }
             if !cli.quiet {
+                eprintln!(
+                    "{} (details: rtcdoc check {})",
+                    rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
+                    opts.input.display()
+                );
                 eprintln!(
                     "built {} profile(s) into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
                     report.profiles,
@@ -246,47 +285,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
-        Command::Check(args) => {
-            let paths = if args.paths.is_empty() {
-                vec![PathBuf::from(".")]
-            } else {
-                args.paths.clone()
-            };
-            let file = load_config(
-                paths.first().map(PathBuf::as_path),
-                args.input_args.config.as_deref(),
-            )?;
-            let mut opts = config::build_options(
-                &file,
-                &Overrides {
-                    include: args.input_args.include.clone(),
-                    exclude: args.input_args.exclude.clone(),
-                    max_file_size: args.input_args.max_file_size,
-                    max_depth: args.input_args.max_depth,
-                    ..Default::default()
-                },
-            )
-            .load;
-            opts.skip_dirs.clear();
-            let mut failed = false;
-            for p in &paths {
-                let loaded = build::load(p, &LoadOptions { ..opts.clone() })?;
-                print_diagnostics(&loaded.catalog.diagnostics, cli.verbose, cli.quiet);
-                let (e, w, _) = loaded.catalog.counts();
-                if !cli.quiet {
-                    eprintln!(
-                        "checked {} profile(s): {e} error(s), {w} warning(s)",
-                        loaded.catalog.components.len()
-                    );
-                }
-                failed |= e > 0;
-            }
-            Ok(if failed {
-                ExitCode::from(1)
-            } else {
-                ExitCode::SUCCESS
-            })
-        }
+        Command::Check(args) => check(cli, args),
         Command::Serve(args) => {
             let file = load_config(
                 args.build.input.as_deref(),
@@ -363,5 +362,148 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             clap_mangen::Man::new(Cli::command()).render(&mut std::io::stdout())?;
             Ok(ExitCode::SUCCESS)
         }
+    }
+}
+
+/// Where the files of an input live: the input directory, or the parent of an input file
+/// (diagnostics name files relative to it, like the walk does).
+fn input_root(input: &std::path::Path) -> PathBuf {
+    if input.is_file() {
+        input
+            .parent()
+            .map(std::path::Path::to_path_buf)
+            .unwrap_or_default()
+    } else {
+        input.to_path_buf()
+    }
+}
+
+/// `rtcdoc check`: exit 0 when clean, 1 on errors (or warnings with `--deny warnings`), 2 on
+/// usage or I/O problems.
+fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
+    use rtcdoc::check::{self, report};
+    if let Some(code) = &args.explain {
+        return Ok(match check::rule(code) {
+            Some(r) => {
+                print!("{}", check::explain(r));
+                ExitCode::SUCCESS
+            }
+            None => {
+                eprintln!("error: no rule has the code `{code}` (codes: RTC001–RTC010, RTC101…RTC505; see `rtcdoc check --help`)");
+                ExitCode::from(2)
+            }
+        });
+    }
+    let paths = if args.paths.is_empty() {
+        vec![PathBuf::from(".")]
+    } else {
+        args.paths.clone()
+    };
+    // Same input options as `build`: rtcdoc.toml, then the command line.
+    let file = load_config(
+        paths.first().map(PathBuf::as_path),
+        args.input_args.config.as_deref(),
+    )?;
+    let mut opts = config::build_options(
+        &file,
+        &Overrides {
+            include: args.input_args.include.clone(),
+            exclude: args.input_args.exclude.clone(),
+            max_file_size: args.input_args.max_file_size,
+            max_depth: args.input_args.max_depth,
+            ..Default::default()
+        },
+    )
+    .load;
+    opts.skip_dirs.clear();
+    let mut reports = Vec::new();
+    for p in &paths {
+        let loaded = build::load(p, &opts)?;
+        let mut r = check::check(&loaded.catalog);
+        // Name files as the user can open them: relative to the current directory.
+        let root = input_root(p);
+        for d in &mut r.diagnostics {
+            d.file = display_path(&root, &d.file);
+        }
+        for c in &mut r.coverage.components {
+            c.source = display_path(&root, &c.source);
+        }
+        if cli.verbose {
+            for s in &loaded.skipped {
+                eprintln!("skipped {}: {}", display_path(&root, &s.rel), s.reason);
+            }
+        }
+        reports.push(r);
+    }
+    let report = check::Report::merge(reports);
+    let deny_warnings = args.deny.contains(&Deny::Warnings);
+    match args.format {
+        CheckFormat::Json => {
+            print_stdout(&serde_json::to_string_pretty(&report::to_json(&report))?)?
+        }
+        CheckFormat::Sarif => {
+            print_stdout(&serde_json::to_string_pretty(&report::to_sarif(&report))?)?
+        }
+        CheckFormat::Human => {
+            use std::io::IsTerminal;
+            let colour = std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+                && std::io::stderr().is_terminal();
+            let choice = if colour {
+                ColorChoice::Auto
+            } else {
+                ColorChoice::Never
+            };
+            let stream = StandardStream::stderr(choice);
+            let verbosity = if cli.quiet {
+                report::Verbosity::Quiet
+            } else if cli.verbose {
+                report::Verbosity::Verbose
+            } else {
+                report::Verbosity::Normal
+            };
+            let mut lock = stream.lock();
+            report::write_human(&mut lock, &report.diagnostics, verbosity, &mut |f| {
+                let bytes = std::fs::read(f).ok()?;
+                String::from_utf8(bytes).ok()
+            })?;
+            drop(lock);
+            if !cli.quiet {
+                let s = &report.summary;
+                let hidden = if verbosity == report::Verbosity::Verbose || s.infos == 0 {
+                    String::new()
+                } else {
+                    " (infos shown with --verbose)".to_string()
+                };
+                eprintln!(
+                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{})",
+                    s.one_line(),
+                    report.coverage.components.len(),
+                    report.coverage.percent,
+                    report.coverage.documented,
+                    report.coverage.total
+                );
+            }
+        }
+    }
+    Ok(if report.failed(deny_warnings) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// `root/rel` with forward slashes and without a leading `./`.
+fn display_path(root: &std::path::Path, rel: &str) -> String {
+    let joined = root.join(rel).to_string_lossy().replace('\\', "/");
+    joined.strip_prefix("./").unwrap_or(&joined).to_string()
+}
+
+/// Prints a document on stdout; a closed pipe (`| head`) is not an error.
+fn print_stdout(text: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match writeln!(out, "{text}").and_then(|_| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        r => r,
     }
 }
