@@ -3,6 +3,7 @@
 //! A renderer receives the finished [`Catalog`] and writes files through a [`Sink`]; it never
 //! re-parses and never knows which input format a profile came from.
 
+pub mod html;
 pub mod json;
 
 use crate::catalog::Catalog;
@@ -73,6 +74,7 @@ impl Format {
     /// The renderer for this format, or `None` when this build of rtcdoc does not have it yet.
     pub fn renderer(self) -> Option<Box<dyn Renderer>> {
         match self {
+            Format::Html => Some(Box::new(html::HtmlRenderer)),
             Format::Json => Some(Box::new(json::JsonRenderer)),
             _ => None,
         }
