@@ -302,16 +302,27 @@ impl Catalog {
         for (id, idx) in &by_id {
             if idx.len() > 1 {
                 for &i in idx {
+                    // Name a few of the other files, not all: a copied profile can be
+                    // duplicated hundreds of times and the message must stay short.
                     let others: Vec<&str> = idx
                         .iter()
                         .filter(|&&j| j != i)
                         .map(|&j| components[j].source.as_str())
                         .collect();
+                    let mut list = others
+                        .iter()
+                        .take(3)
+                        .copied()
+                        .collect::<Vec<_>>()
+                        .join(", ");
+                    if others.len() > 3 {
+                        list.push_str(&format!(" and {} more", others.len() - 3));
+                    }
                     diagnostics.push(
                         Diagnostic::warning(
                             codes::DUPLICATE_ID,
                             &components[i].source,
-                            format!("component id `{id}` is also declared by {}", others.join(", ")),
+                            format!("component id `{id}` is also declared by {list}"),
                         )
                         .at(components[i].profile.pos)
                         .with_hint("both profiles are rendered on separate pages; give each component its own id"),

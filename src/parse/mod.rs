@@ -64,8 +64,12 @@ pub fn parse(
             "raise `max_file_size` in rtcdoc.toml or --max-file-size if the file is genuine",
         ));
     }
-    match format {
+    let mut parsed = match format {
         SourceFormat::Xml => xml::parse(bytes, file, limits),
         SourceFormat::Yaml => yaml::parse(bytes, file, limits),
-    }
+    }?;
+    // The model keeps actions in spec order whatever order the file used (RTCBuilder's YAML
+    // sorts keys alphabetically).
+    parsed.profile.actions.sort_by_key(|a| a.kind);
+    Ok(parsed)
 }

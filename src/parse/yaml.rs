@@ -1,20 +1,1804 @@
-//! YAML reader for the YAML form of RTC Profiles (spec chapter 3.2, schema chapter 7).
+//! YAML reader for the YAML form of RTC Profiles (spec chapter 3.2, schema chapter 7,
+//! constraint samples chapter 8.2), including the dialect RTCBuilder writes (see
+//! `spec/NOTES.md`: `"rtcExt::properties"`, `constraint*Type`, `occerrence`, date maps with
+//! `fractionalSecond` / `millisecond` / `timezone`, null actions, `transMethods`).
+//!
+//! The file is parsed with `serde_norway` into a [`Value`] tree which is then mapped onto the
+//! model. `Value` carries no source marks, so positions are recovered with a [`Locator`]: the
+//! tree is walked in document order (mappings keep their order) while a cursor moves forward
+//! through the source text looking for each key. This is exact for block-style YAML, which is
+//! what RTCBuilder writes, and a close approximation for flow style.
+//!
+//! Hostile input: before the `Value` is built, a counting pass over the same events rejects
+//! documents that nest deeper than [`Limits::max_depth`] or whose aliases expand to more than
+//! [`MAX_NODES`] nodes (alias bombs). `serde_norway` itself stops at a nesting of 128 and after
+//! `100 × events` alias jumps; both of its errors are reported with their own codes too.
 
 use super::{Limits, Parsed};
 use crate::diagnostic::{codes, Diagnostic};
+use crate::model::*;
+use serde::de::{DeserializeSeed, MapAccess, SeqAccess, Visitor};
+use serde::Deserialize;
+use serde_norway::{Mapping, Value};
+use std::fmt;
 
-/// True when the bytes look like an YAML document with a top-level `rtcProfile` key.
+/// Upper bound of the number of YAML nodes (after alias expansion) a document may have. The
+/// actual limit is `min(MAX_NODES, 100_000 + file size)`: without aliases a document cannot have
+/// more nodes than bytes, so only alias expansion can reach it. A genuine profile has a few
+/// thousand nodes.
+pub const MAX_NODES: usize = 2_000_000;
+
+/// True when the bytes look like a YAML document with a top-level `rtcProfile` key: a line that
+/// starts (column 0) with `rtcProfile:`, `"rtcProfile":` or `'rtcProfile':`, or a flow mapping
+/// `{rtcProfile: …`. Only the first 64 KiB are looked at; nothing is parsed.
 pub fn is_profile(bytes: &[u8]) -> bool {
-    let _ = bytes;
-    false
+    let head = &bytes[..bytes.len().min(64 * 1024)];
+    let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
+    head.split(|&b| b == b'\n').any(|line| {
+        let line = line.strip_prefix(b"{").unwrap_or(line);
+        let line = line.strip_prefix(b"--- ").unwrap_or(line);
+        [
+            &b"rtcProfile"[..],
+            &b"\"rtcProfile\""[..],
+            &b"'rtcProfile'"[..],
+        ]
+        .iter()
+        .any(|k| {
+            line.strip_prefix(*k).is_some_and(|rest| {
+                let rest = trim_start_blank(rest);
+                rest.first() == Some(&b':')
+            })
+        })
+    })
+}
+
+fn trim_start_blank(s: &[u8]) -> &[u8] {
+    let n = s.iter().take_while(|&&b| b == b' ' || b == b'\t').count();
+    &s[n..]
 }
 
 /// Reads an RTC Profile from YAML bytes.
+///
+/// Errors: `ENCODING` (not UTF-8), `MALFORMED` (YAML syntax, with serde_norway's line:column),
+/// `TOO_DEEP`, `YAML_STRUCTURE` (alias bomb), `SHAPE` (no document whose root mapping has
+/// `rtcProfile`). Everything else — unknown keys, values of the wrong shape — becomes a warning
+/// and is kept as an [`Extra`] on the nearest node.
 pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagnostic> {
-    let _ = (bytes, limits);
-    Err(Diagnostic::error(
-        codes::MALFORMED,
+    let src = match std::str::from_utf8(bytes) {
+        Ok(s) => s,
+        Err(e) => {
+            let valid = &bytes[..e.valid_up_to()];
+            // The prefix is valid UTF-8 by construction.
+            let prefix = std::str::from_utf8(valid).unwrap_or("");
+            let line = prefix.matches('\n').count() + 1;
+            let col = prefix.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            return Err(Diagnostic::error(
+                codes::ENCODING,
+                file,
+                format!("invalid UTF-8 byte sequence at byte {}", e.valid_up_to()),
+            )
+            .at(Pos::new(to_u32(line), to_u32(col)))
+            .with_hint("YAML profiles must be UTF-8; re-save the file as UTF-8"));
+        }
+    };
+
+    if let Some((off, depth)) = flow_depth_exceeds(src, limits.max_depth) {
+        return Err(Diagnostic::error(
+            codes::TOO_DEEP,
+            file,
+            format!(
+                "YAML flow collections nest deeper than the limit of {} levels ({depth} `[`/`{{` \
+                 open here)",
+                limits.max_depth
+            ),
+        )
+        .at(Locator::new(src).pos(off))
+        .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile"));
+    }
+
+    // Pass 1: count nodes and depth per document (cheap, aborts early on bombs) and find the
+    // first document whose root mapping has `rtcProfile`.
+    let mut chosen = None;
+    for (index, doc) in serde_norway::Deserializer::from_slice(bytes).enumerate() {
+        let mut state = CountState {
+            nodes: 0,
+            max_nodes: MAX_NODES.min(100_000 + bytes.len()),
+            max_depth: limits.max_depth,
+        };
+        let found = CountSeed {
+            state: &mut state,
+            depth: 0,
+            root: true,
+        }
+        .deserialize(doc)
+        .map_err(|e| yaml_error(e, file, limits))?;
+        if found {
+            chosen = Some(index);
+            break;
+        }
+    }
+    let Some(index) = chosen else {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            "not an RTC Profile: no YAML document has a top-level `rtcProfile` key",
+        )
+        .with_hint("a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)"));
+    };
+
+    // Pass 2: build the Value of that document.
+    let mut value = None;
+    if let Some(doc) = serde_norway::Deserializer::from_slice(bytes).nth(index) {
+        value = Some(Value::deserialize(doc).map_err(|e| yaml_error(e, file, limits))?);
+    }
+    let Some(Value::Mapping(root)) = value.map(untag) else {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            "not an RTC Profile: the root is not a mapping",
+        ));
+    };
+
+    let mut r = Reader {
         file,
-        "YAML reader not implemented yet",
-    ))
+        loc: Locator::new(src),
+        diags: Vec::new(),
+    };
+    let mut profile = Profile::default();
+    for (k, v) in &root {
+        let (name, pos) = r.key(k);
+        if name == "rtcProfile" {
+            profile.pos = pos;
+            r.profile(v, pos, &mut profile);
+        } else {
+            r.unknown(&name, v, pos, "the document root", &mut profile.extra);
+        }
+    }
+    Ok(Parsed {
+        profile,
+        diagnostics: r.diags,
+    })
+}
+
+/// Cheap pre-scan for deeply nested flow collections (`[[[[…`), which libyaml handles in
+/// quadratic time (stale simple keys) long before serde_norway's depth limit is reached.
+/// Counts `[`/`{` that start a token, skipping quoted scalars and comments; returns the offset
+/// and depth where `max_depth` is exceeded.
+fn flow_depth_exceeds(src: &str, max_depth: usize) -> Option<(usize, usize)> {
+    let b = src.as_bytes();
+    let mut depth = 0usize;
+    let mut i = 0;
+    // Whether the previous significant byte allows a token to start here.
+    let mut token_start = true;
+    while i < b.len() {
+        let c = b[i];
+        match c {
+            b'\n' => token_start = true,
+            b' ' | b'\t' | b'\r' => {}
+            b'#' if i == 0 || matches!(b[i - 1], b' ' | b'\t' | b'\n' | b'\r') => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+                continue;
+            }
+            b'"' | b'\'' if token_start => {
+                i += 1;
+                while i < b.len() && b[i] != c {
+                    i += if c == b'"' && b[i] == b'\\' { 2 } else { 1 };
+                }
+                token_start = false;
+            }
+            b'[' | b'{' if token_start => {
+                depth += 1;
+                if depth > max_depth {
+                    return Some((i, depth));
+                }
+            }
+            b']' | b'}' if depth > 0 => {
+                depth -= 1;
+                token_start = false;
+            }
+            b':' | b'-' | b',' | b'?' => token_start = true,
+            _ => token_start = false,
+        }
+        i += 1;
+    }
+    None
+}
+
+fn to_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+/// Returns the inner value of a tagged value (`!tag value`).
+fn untag(v: Value) -> Value {
+    match v {
+        Value::Tagged(t) => untag(t.value),
+        v => v,
+    }
+}
+
+fn untag_ref(v: &Value) -> &Value {
+    match v {
+        Value::Tagged(t) => untag_ref(&t.value),
+        v => v,
+    }
+}
+
+/// Maps a serde_norway error to a diagnostic with its position.
+fn yaml_error(e: serde_norway::Error, file: &str, limits: &Limits) -> Diagnostic {
+    let msg = e.to_string();
+    let pos = e
+        .location()
+        .map(|l| Pos::new(to_u32(l.line()), to_u32(l.column())));
+    let d = if msg.contains(TOO_DEEP_MSG) || msg.contains("recursion limit exceeded") {
+        Diagnostic::error(
+            codes::TOO_DEEP,
+            file,
+            format!(
+                "YAML collections nest deeper than the limit of {} levels",
+                limits.max_depth.min(127)
+            ),
+        )
+        .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile")
+    } else if msg.contains(BOMB_MSG) || msg.contains("repetition limit exceeded") {
+        Diagnostic::error(
+            codes::YAML_STRUCTURE,
+            file,
+            "YAML aliases expand too much (too many nodes or alias repetitions): rejected as \
+             a possible alias bomb",
+        )
+        .with_hint("RTC Profiles need no anchors or aliases; write the values out")
+    } else {
+        let text = msg.split(" at line ").next().unwrap_or(&msg).to_string();
+        Diagnostic::error(codes::MALFORMED, file, format!("invalid YAML: {text}"))
+    };
+    match pos {
+        Some(p) => d.at(p),
+        None => d,
+    }
+}
+
+const TOO_DEEP_MSG: &str = "rtcdoc: nesting too deep";
+const BOMB_MSG: &str = "rtcdoc: alias expansion too large";
+
+// ---------------------------------------------------------------------------------------------
+// Pass 1: a counting visitor (no allocation per node) that enforces depth and size limits.
+
+struct CountState {
+    nodes: usize,
+    max_nodes: usize,
+    max_depth: usize,
+}
+
+/// Counts the nodes of one document; returns whether the root is a mapping with `rtcProfile`.
+struct CountSeed<'s> {
+    state: &'s mut CountState,
+    depth: usize,
+    root: bool,
+}
+
+impl<'de> DeserializeSeed<'de> for CountSeed<'_> {
+    type Value = bool;
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl CountSeed<'_> {
+    fn bump<E: serde::de::Error>(&mut self) -> Result<(), E> {
+        self.state.nodes += 1;
+        if self.state.nodes > self.state.max_nodes {
+            return Err(E::custom(BOMB_MSG));
+        }
+        Ok(())
+    }
+    fn child(&mut self, root: bool) -> CountSeed<'_> {
+        CountSeed {
+            state: self.state,
+            depth: self.depth + 1,
+            root,
+        }
+    }
+    fn enter<E: serde::de::Error>(&mut self) -> Result<(), E> {
+        self.bump()?;
+        if self.depth + 1 > self.state.max_depth {
+            return Err(E::custom(TOO_DEEP_MSG));
+        }
+        Ok(())
+    }
+}
+
+impl<'de> Visitor<'de> for CountSeed<'_> {
+    type Value = bool;
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("any YAML value")
+    }
+    fn visit_bool<E: serde::de::Error>(mut self, _: bool) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_i64<E: serde::de::Error>(mut self, _: i64) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_u64<E: serde::de::Error>(mut self, _: u64) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_i128<E: serde::de::Error>(mut self, _: i128) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_u128<E: serde::de::Error>(mut self, _: u128) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_f64<E: serde::de::Error>(mut self, _: f64) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_str<E: serde::de::Error>(mut self, _: &str) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_unit<E: serde::de::Error>(mut self) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_none<E: serde::de::Error>(mut self) -> Result<bool, E> {
+        self.bump().map(|_| false)
+    }
+    fn visit_some<D: serde::Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
+        d.deserialize_any(self)
+    }
+    fn visit_newtype_struct<D: serde::Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
+        d.deserialize_any(self)
+    }
+    fn visit_enum<A: serde::de::EnumAccess<'de>>(mut self, data: A) -> Result<bool, A::Error> {
+        // `!tag value`: count the value.
+        use serde::de::VariantAccess;
+        self.enter()?;
+        let root = self.root;
+        let (_, variant): (serde::de::IgnoredAny, _) = data.variant()?;
+        variant.newtype_variant_seed(self.child(root))
+    }
+    fn visit_seq<A: SeqAccess<'de>>(mut self, mut seq: A) -> Result<bool, A::Error> {
+        self.enter()?;
+        while seq.next_element_seed(self.child(false))?.is_some() {}
+        Ok(false)
+    }
+    fn visit_map<A: MapAccess<'de>>(mut self, mut map: A) -> Result<bool, A::Error> {
+        self.enter()?;
+        let mut found = false;
+        while let Some(key) = map.next_key::<KeyProbe>()? {
+            self.bump()?;
+            if self.root && key.0 {
+                found = true;
+            }
+            map.next_value_seed(self.child(false))?;
+        }
+        Ok(found)
+    }
+}
+
+/// A mapping key of pass 1: only whether it is the string `rtcProfile` matters.
+struct KeyProbe(bool);
+
+impl<'de> Deserialize<'de> for KeyProbe {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = KeyProbe;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a mapping key")
+            }
+            fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<KeyProbe, E> {
+                Ok(KeyProbe(s == "rtcProfile"))
+            }
+            fn visit_bool<E>(self, _: bool) -> Result<KeyProbe, E> {
+                Ok(KeyProbe(false))
+            }
+            fn visit_i64<E>(self, _: i64) -> Result<KeyProbe, E> {
+                Ok(KeyProbe(false))
+            }
+            fn visit_u64<E>(self, _: u64) -> Result<KeyProbe, E> {
+                Ok(KeyProbe(false))
+            }
+            fn visit_f64<E>(self, _: f64) -> Result<KeyProbe, E> {
+                Ok(KeyProbe(false))
+            }
+            fn visit_unit<E>(self) -> Result<KeyProbe, E> {
+                Ok(KeyProbe(false))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<KeyProbe, A::Error> {
+                // Complex keys: bounded by serde_norway's own depth and repetition limits.
+                while seq.next_element::<serde::de::IgnoredAny>()?.is_some() {}
+                Ok(KeyProbe(false))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<KeyProbe, A::Error> {
+                while map
+                    .next_entry::<serde::de::IgnoredAny, serde::de::IgnoredAny>()?
+                    .is_some()
+                {}
+                Ok(KeyProbe(false))
+            }
+            fn visit_enum<A: serde::de::EnumAccess<'de>>(self, a: A) -> Result<KeyProbe, A::Error> {
+                use serde::de::VariantAccess;
+                let (_, v): (serde::de::IgnoredAny, _) = a.variant()?;
+                v.newtype_variant::<serde::de::IgnoredAny>()?;
+                Ok(KeyProbe(false))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Positions.
+
+/// Recovers line:column of keys by scanning the source forward in document order.
+struct Locator<'a> {
+    src: &'a str,
+    line_starts: Vec<usize>,
+    cursor: usize,
+    /// Bytes the key search may still scan; bounds the work for alias-expanded documents, whose
+    /// keys are not found again further on.
+    budget: usize,
+}
+
+impl<'a> Locator<'a> {
+    fn new(src: &'a str) -> Self {
+        let mut line_starts = vec![0];
+        line_starts.extend(src.match_indices('\n').map(|(i, _)| i + 1));
+        Locator {
+            src,
+            line_starts,
+            cursor: 0,
+            budget: src.len().saturating_mul(32).saturating_add(1 << 20),
+        }
+    }
+
+    /// Line and column (1-based, columns in characters) of a byte offset.
+    fn pos(&self, off: usize) -> Pos {
+        let off = off.min(self.src.len());
+        let line = self.line_starts.partition_point(|&s| s <= off);
+        let start = self.line_starts[line.saturating_sub(1)];
+        let col = self.src.get(start..off).map_or(0, |s| s.chars().count());
+        Pos::new(to_u32(line), to_u32(col + 1))
+    }
+
+    /// Position of the next key `key` at or after the cursor (plain, `"…"` or `'…'`, followed
+    /// by `:`); moves the cursor past the key. Falls back to the cursor position.
+    fn key(&mut self, key: &str) -> Pos {
+        if key.is_empty() {
+            return self.pos(self.cursor);
+        }
+        let src = self.src;
+        let step = key.chars().next().map_or(1, char::len_utf8);
+        let mut from = self.cursor;
+        while let Some(i) = src.get(from..).and_then(|s| s.find(key)) {
+            let at = from + i;
+            self.budget = self.budget.saturating_sub(i + 1);
+            if self.budget == 0 {
+                break;
+            }
+            let end = at + key.len();
+            let before = src[..at].chars().next_back();
+            let after = &src[end..];
+            match before {
+                Some(q @ ('"' | '\'')) => {
+                    if let Some(rest) = after.strip_prefix(q) {
+                        if rest.trim_start_matches([' ', '\t']).starts_with(':') {
+                            self.cursor = end + 1;
+                            return self.pos(at - 1);
+                        }
+                    }
+                }
+                None | Some(' ' | '\t' | '\n' | '\r' | '{' | ',' | '[' | '?') => {
+                    let rest = after.trim_start_matches([' ', '\t']);
+                    if let Some(r) = rest.strip_prefix(':') {
+                        if r.is_empty() || r.starts_with([' ', '\t', '\r', '\n', ',', '}', ']']) {
+                            self.cursor = end;
+                            return self.pos(at);
+                        }
+                    }
+                }
+                _ => {}
+            }
+            from = at + step;
+        }
+        self.pos(self.cursor)
+    }
+
+    /// Position of the next sequence item (the next `-`, or the next token in flow style);
+    /// moves the cursor past a `-`, or onto the flow token.
+    fn item(&mut self) -> Pos {
+        let bytes = self.src.as_bytes();
+        let mut i = self.cursor;
+        while i < bytes.len() {
+            match bytes[i] {
+                b' ' | b'\t' | b'\r' | b'\n' | b':' | b',' | b'[' => i += 1,
+                b'#' => {
+                    while i < bytes.len() && bytes[i] != b'\n' {
+                        i += 1;
+                    }
+                }
+                b'-' => {
+                    self.cursor = i + 1;
+                    return self.pos(i);
+                }
+                _ => {
+                    self.cursor = i;
+                    break;
+                }
+            }
+        }
+        self.pos(i.min(bytes.len()))
+    }
+
+    /// The scalar written after the key just found (`key: <text>`), up to the end of the line
+    /// (or `,`/`}`/`]` in flow style), without a trailing comment, and the offset of its end.
+    fn raw_after_key(&self) -> Option<(&'a str, usize)> {
+        let src = self.src;
+        let rest = src.get(self.cursor..)?;
+        let skipped = rest.len() - rest.trim_start_matches([' ', '\t']).len();
+        let rest = rest[skipped..].strip_prefix(':')?;
+        let start = self.cursor + skipped + 1;
+        let line_end = rest.find('\n').map_or(src.len(), |n| start + n);
+        let mut text = &src[start..line_end];
+        if let Some(c) = text.find(" #") {
+            text = &text[..c];
+        }
+        let text = text.trim();
+        // In flow style the scalar ends at `,`, `}` or `]` (unless quoted).
+        let text = if text.starts_with(['"', '\'']) {
+            text
+        } else {
+            text.split([',', '}', ']'])
+                .next()
+                .unwrap_or(text)
+                .trim_end()
+        };
+        // End of the scalar text (text is a sub-slice of src).
+        let end = (text.as_ptr() as usize - src.as_ptr() as usize) + text.len();
+        Some((text, end.min(line_end)))
+    }
+
+    /// The raw text of the next scalar sequence item (`- 2.10`, `[2.4, 2.10]`), and the
+    /// offset of its end.
+    fn raw_item(&self) -> Option<(&'a str, usize)> {
+        let src = self.src;
+        let rest = src.get(self.cursor..)?;
+        let skipped = rest.len() - rest.trim_start_matches([' ', '\t']).len();
+        let start = self.cursor + skipped;
+        let line = src[start..].split('\n').next()?;
+        let len = match line.chars().next() {
+            Some(q @ ('"' | '\'')) => line[1..].find(q).map_or(line.len(), |n| n + 2),
+            _ => {
+                let l = line.split(" #").next().unwrap_or(line);
+                l.find([',', ']', '}']).unwrap_or(l.len())
+            }
+        };
+        let text = line[..len].trim_end();
+        Some((text, start + text.len()))
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Pass 3: Value → model.
+
+struct Reader<'a> {
+    file: &'a str,
+    loc: Locator<'a>,
+    diags: Vec<Diagnostic>,
+}
+
+/// Text of a scalar key (keys are normally strings).
+fn key_text(k: &Value) -> String {
+    match untag_ref(k) {
+        Value::String(s) => s.clone(),
+        Value::Bool(b) => b.to_string(),
+        Value::Number(n) => n.to_string(),
+        Value::Null => "~".to_string(),
+        _ => "(complex key)".to_string(),
+    }
+}
+
+fn describe(v: &Value) -> &'static str {
+    match untag_ref(v) {
+        Value::Null => "nothing",
+        Value::Bool(_) | Value::Number(_) | Value::String(_) => "a scalar",
+        Value::Sequence(_) => "a list",
+        Value::Mapping(_) => "a mapping",
+        Value::Tagged(_) => "a tagged value",
+    }
+}
+
+/// A date map `{year, month, day, hour, minute, second}` (spec chapter 7 `dateType`) with
+/// RTCBuilder's optional `fractionalSecond`, `millisecond` and `timezone` (minutes east of UTC).
+#[derive(Default)]
+struct DateParts {
+    ymdhms: [Option<i64>; 6],
+    fraction: Option<String>,
+    millisecond: Option<i64>,
+    timezone: Option<i64>,
+}
+
+impl DateParts {
+    fn iso(&self) -> Option<String> {
+        let [Some(y), Some(mo), Some(d), Some(h), Some(mi), Some(s)] = self.ymdhms else {
+            return None;
+        };
+        let mut out = format!("{y:04}-{mo:02}-{d:02}T{h:02}:{mi:02}:{s:02}");
+        match (self.millisecond, &self.fraction) {
+            (Some(ms), _) if ms != 0 => out.push_str(&format!(".{ms:03}")),
+            (_, Some(f)) => {
+                let digits = f
+                    .split_once('.')
+                    .map_or("", |(_, d)| d)
+                    .trim_end_matches('0');
+                if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+                    out.push('.');
+                    out.push_str(digits);
+                }
+            }
+            _ => {}
+        }
+        if let Some(tz) = self.timezone {
+            let sign = if tz < 0 { '-' } else { '+' };
+            let a = tz.unsigned_abs();
+            out.push_str(&format!("{sign}{:02}:{:02}", a / 60, a % 60));
+        }
+        Some(out)
+    }
+}
+
+/// Condition operator names (spec 2.3.22–2.3.41, chapter 7 and 8.2), matched
+/// case-insensitively.
+enum Op {
+    Not,
+    And,
+    Or,
+    IsNull,
+    Compare(Comparison),
+    Like,
+    Between,
+}
+
+fn op_of(name: &str) -> Option<Op> {
+    let l = name.to_ascii_lowercase();
+    match l.as_str() {
+        "not" => Some(Op::Not),
+        "and" => Some(Op::And),
+        "or" => Some(Op::Or),
+        "propertyisnull" => Some(Op::IsNull),
+        "propertyislike" => Some(Op::Like),
+        "propertyisbetween" => Some(Op::Between),
+        _ => l
+            .strip_prefix("propertyis")
+            .and_then(Comparison::from_suffix)
+            .map(Op::Compare),
+    }
+}
+
+/// The three constraint forms (spec 2.3.18–2.3.21): chapter 7 `constraintUnit` /
+/// `constraintList` / `constraintHash`, RTCBuilder `…Type`.
+#[derive(Clone, Copy, PartialEq)]
+enum Form {
+    Unit,
+    List,
+    Hash,
+}
+
+fn form_of(name: &str) -> Option<Form> {
+    match name.to_ascii_lowercase().as_str() {
+        "constraintunit" | "constraintunittype" => Some(Form::Unit),
+        "constraintlist" | "constraintlisttype" => Some(Form::List),
+        "constrainthash" | "constrainthashtype" => Some(Form::Hash),
+        _ => None,
+    }
+}
+
+impl Reader<'_> {
+    /// Key text and its position; moves the locator.
+    fn key(&mut self, k: &Value) -> (String, Pos) {
+        let name = key_text(k);
+        let pos = self.loc.key(&name);
+        (name, pos)
+    }
+
+    fn warn(&mut self, code: &'static str, pos: Pos, msg: String) {
+        self.diags
+            .push(Diagnostic::warning(code, self.file, msg).at(pos));
+    }
+
+    /// An unknown key: kept as an extra, with an `UNKNOWN` warning.
+    fn unknown(&mut self, name: &str, v: &Value, pos: Pos, place: &str, sink: &mut Vec<Extra>) {
+        self.warn(
+            codes::UNKNOWN,
+            pos,
+            format!("unknown key `{name}` in {place}; kept as an extra property"),
+        );
+        let e = self.extra(name, v, pos);
+        sink.push(e);
+    }
+
+    /// A known key whose value has the wrong shape: kept as an extra, with a `SHAPE` warning.
+    fn wrong_shape(&mut self, name: &str, v: &Value, pos: Pos, want: &str, sink: &mut Vec<Extra>) {
+        self.warn(
+            codes::SHAPE,
+            pos,
+            format!(
+                "`{name}` should be {want} but is {}; kept as an extra property",
+                describe(v)
+            ),
+        );
+        let e = self.extra(name, v, pos);
+        sink.push(e);
+    }
+
+    /// Converts a subtree to an [`Extra`] (positions of nested keys included).
+    fn extra(&mut self, name: &str, v: &Value, pos: Pos) -> Extra {
+        let mut e = Extra {
+            kind: ExtraKind::Key,
+            name: name.to_string(),
+            namespace: None,
+            value: None,
+            children: Vec::new(),
+            pos,
+        };
+        match untag_ref(v) {
+            Value::Mapping(m) => {
+                for (k, cv) in m {
+                    let (n, p) = self.key(k);
+                    let c = self.extra(&n, cv, p);
+                    e.children.push(c);
+                }
+            }
+            Value::Sequence(s) => {
+                for (i, cv) in s.iter().enumerate() {
+                    let p = self.loc.item();
+                    let c = self.extra(&format!("[{i}]"), cv, p);
+                    e.children.push(c);
+                }
+            }
+            other => e.value = self.scalar_text(other, false),
+        }
+        e
+    }
+
+    /// Text of a scalar as written: numbers keep their source spelling (`1000.0`), booleans are
+    /// `true`/`false`, null is `None`. `after_key` says whether the locator sits just after the
+    /// key of this value (else after a sequence `-`).
+    fn scalar_text(&mut self, v: &Value, after_key: bool) -> Option<String> {
+        let raw = if after_key {
+            self.loc.raw_after_key()
+        } else {
+            self.loc.raw_item()
+        };
+        match untag_ref(v) {
+            Value::Null => None,
+            Value::Bool(b) => Some(b.to_string()),
+            Value::Number(n) => {
+                let text = raw
+                    .map(|(r, _)| r)
+                    .filter(|r| r.parse::<serde_norway::Number>().ok().as_ref() == Some(n))
+                    .map(str::to_string);
+                if let Some((_, end)) = raw {
+                    self.loc.cursor = end;
+                }
+                Some(text.unwrap_or_else(|| n.to_string()))
+            }
+            Value::String(s) => {
+                // Skip a one-line value so that its text is not mistaken for a later key.
+                if let Some((r, end)) = raw {
+                    let unq = r
+                        .strip_prefix('"')
+                        .and_then(|r| r.strip_suffix('"'))
+                        .or_else(|| r.strip_prefix('\'').and_then(|r| r.strip_suffix('\'')))
+                        .unwrap_or(r);
+                    if unq == s {
+                        self.loc.cursor = end;
+                    }
+                }
+                Some(s.clone())
+            }
+            _ => None,
+        }
+    }
+
+    /// A text value (chapter 7 `type: text|int|bool|number`).
+    fn text(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<String> {
+        match untag_ref(v) {
+            Value::Mapping(_) | Value::Sequence(_) => {
+                self.wrong_shape(name, v, pos, "a scalar", sink);
+                None
+            }
+            other => self.scalar_text(other, true),
+        }
+    }
+
+    /// A mapping value; `None` (with nothing reported) for null, a `SHAPE` warning otherwise.
+    fn map<'v>(
+        &mut self,
+        v: &'v Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Option<&'v Mapping> {
+        match untag_ref(v) {
+            Value::Mapping(m) => Some(m),
+            Value::Null => None,
+            _ => {
+                self.wrong_shape(name, v, pos, "a mapping", sink);
+                None
+            }
+        }
+    }
+
+    /// A sequence value; empty for null, a `SHAPE` warning otherwise.
+    fn seq<'v>(
+        &mut self,
+        v: &'v Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> &'v [Value] {
+        match untag_ref(v) {
+            Value::Sequence(s) => s,
+            Value::Null => &[],
+            _ => {
+                self.wrong_shape(name, v, pos, "a list", sink);
+                &[]
+            }
+        }
+    }
+
+    /// A list of texts (`osVersions`, `cpus`, `"rtcExt::versionUpLogs"`).
+    fn texts(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Vec<String> {
+        let mut out = Vec::new();
+        for (i, item) in self.seq(v, name, pos, sink).iter().enumerate() {
+            let p = self.loc.item();
+            match untag_ref(item) {
+                Value::Mapping(_) | Value::Sequence(_) => {
+                    self.wrong_shape(&format!("{name}[{i}]"), item, p, "a scalar", sink)
+                }
+                other => out.extend(self.scalar_text(other, false)),
+            }
+        }
+        out
+    }
+
+    /// One item of a list of mappings, with its position (located now, in document order);
+    /// null items are skipped, other non-mapping items reported as `SHAPE`.
+    fn map_item<'v>(
+        &mut self,
+        item: &'v Value,
+        name: &str,
+        i: usize,
+        sink: &mut Vec<Extra>,
+    ) -> Option<(&'v Mapping, Pos)> {
+        let p = self.loc.item();
+        match untag_ref(item) {
+            Value::Mapping(m) => Some((m, p)),
+            Value::Null => None,
+            _ => {
+                self.wrong_shape(&format!("{name}[{i}]"), item, p, "a mapping", sink);
+                None
+            }
+        }
+    }
+
+    /// `"rtcExt::property"` (chapter 7) / `"rtcExt::properties"` (RTCBuilder): `[{name, value}]`.
+    fn properties(
+        &mut self,
+        v: &Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Vec<Property> {
+        let mut out = Vec::new();
+        for (idx, it) in self.seq(v, name, pos, sink).iter().enumerate() {
+            let Some((m, p)) = self.map_item(it, name, idx, sink) else {
+                continue;
+            };
+            let mut prop = Property {
+                pos: p,
+                ..Property::default()
+            };
+            for (k, v) in m {
+                let (n, kp) = self.key(k);
+                match n.as_str() {
+                    "name" => prop.name = self.text(v, &n, kp, &mut prop.extra),
+                    "value" => prop.value = self.text(v, &n, kp, &mut prop.extra),
+                    _ => self.unknown(&n, v, kp, "a property", &mut prop.extra),
+                }
+            }
+            out.push(prop);
+        }
+        out
+    }
+
+    /// `rtcProfile` (spec 2.2, chapter 7 root).
+    fn profile(&mut self, v: &Value, pos: Pos, p: &mut Profile) {
+        let Some(m) = self.map(v, "rtcProfile", pos, &mut p.extra) else {
+            return;
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            match n.as_str() {
+                "id" => p.id = self.text(v, &n, kp, &mut p.extra),
+                "version" => p.version = self.text(v, &n, kp, &mut p.extra),
+                "basicInfo" => {
+                    p.basic_info.pos = kp;
+                    self.basic_info(v, kp, &mut p.basic_info, &mut p.extra);
+                }
+                "actions" => {
+                    p.actions_pos = Some(kp);
+                    self.actions(v, kp, p);
+                }
+                "configurationSet" => {
+                    if let Some(m) = self.map(v, &n, kp, &mut p.extra) {
+                        p.configuration_set = Some(self.configuration_set(m, kp));
+                    }
+                }
+                "dataPorts" => {
+                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
+                            continue;
+                        };
+                        let d = self.data_port(m, ip);
+                        p.data_ports.push(d);
+                    }
+                }
+                "servicePorts" => {
+                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
+                            continue;
+                        };
+                        let s = self.service_port(m, ip);
+                        p.service_ports.push(s);
+                    }
+                }
+                "parameters" => {
+                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
+                            continue;
+                        };
+                        let par = self.parameter(m, ip);
+                        p.parameters.push(par);
+                    }
+                }
+                "language" => {
+                    if let Some(m) = self.map(v, &n, kp, &mut p.extra) {
+                        p.language = Some(self.language(m, kp));
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "rtcProfile", &mut p.extra),
+            }
+        }
+    }
+
+    /// `basicInfo` (spec 2.3.2, 2.4.1/2.4.2 doc, 2.5.1 ext).
+    fn basic_info(&mut self, v: &Value, pos: Pos, b: &mut BasicInfo, outer: &mut Vec<Extra>) {
+        let Some(m) = self.map(v, "basicInfo", pos, outer) else {
+            return;
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let x = &mut b.extra;
+            match n.as_str() {
+                "name" => b.name = self.text(v, &n, kp, x),
+                "componentType" => b.component_type = self.text(v, &n, kp, x),
+                "activityType" => b.activity_type = self.text(v, &n, kp, x),
+                "componentKind" => b.component_kind = self.text(v, &n, kp, x),
+                "rtcType" => b.rtc_type = self.text(v, &n, kp, x),
+                "category" => b.category = self.text(v, &n, kp, x),
+                "description" => b.description = self.text(v, &n, kp, x),
+                "executionRate" => b.execution_rate = self.text(v, &n, kp, x),
+                "executionType" => b.execution_type = self.text(v, &n, kp, x),
+                "maxInstances" => b.max_instances = self.text(v, &n, kp, x),
+                "vendor" => b.vendor = self.text(v, &n, kp, x),
+                "version" => b.version = self.text(v, &n, kp, x),
+                "abstract" => b.abstract_ = self.text(v, &n, kp, x),
+                "hardwareProfile" => b.hardware_profile = self.text(v, &n, kp, x),
+                "creationDate" => b.creation_date = self.date(v, &n, kp, x),
+                "updateDate" => b.update_date = self.date(v, &n, kp, x),
+                "rtcExt::comment" => b.comment = self.text(v, &n, kp, x),
+                "rtcExt::saveProject" => b.save_project = self.text(v, &n, kp, x),
+                "rtcExt::versionUpLogs" | "rtcExt::versionUpLog" => {
+                    b.version_up_logs = self.texts(v, &n, kp, x)
+                }
+                "rtcExt::property" | "rtcExt::properties" => {
+                    b.properties = self.properties(v, &n, kp, x)
+                }
+                "rtcDoc::doc" => {
+                    if let Some(m) = self.map(v, &n, kp, x) {
+                        let mut d = BasicDoc {
+                            pos: kp,
+                            ..BasicDoc::default()
+                        };
+                        for (k, v) in m {
+                            let (n, kp) = self.key(k);
+                            let x = &mut d.extra;
+                            match n.as_str() {
+                                "description" => d.description = self.text(v, &n, kp, x),
+                                "inout" => d.inout = self.text(v, &n, kp, x),
+                                "algorithm" => d.algorithm = self.text(v, &n, kp, x),
+                                "creator" => d.creator = self.text(v, &n, kp, x),
+                                "license" => d.license = self.text(v, &n, kp, x),
+                                "reference" => d.reference = self.text(v, &n, kp, x),
+                                _ => self.unknown(&n, v, kp, "basicInfo rtcDoc::doc", x),
+                            }
+                        }
+                        b.doc = Some(d);
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "basicInfo", x),
+            }
+        }
+    }
+
+    /// A date: a chapter 7 `dateType` map (→ ISO 8601) or a plain string kept as written.
+    fn date(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<String> {
+        let m = match untag_ref(v) {
+            Value::Mapping(m) => m,
+            Value::Sequence(_) => {
+                self.wrong_shape(name, v, pos, "a date map or a date string", sink);
+                return None;
+            }
+            other => return self.scalar_text(other, true),
+        };
+        let mut parts = DateParts::default();
+        let mut bad = false;
+        for (k, cv) in m {
+            let (n, kp) = self.key(k);
+            let idx = ["year", "month", "day", "hour", "minute", "second"]
+                .iter()
+                .position(|f| *f == n);
+            let text = match untag_ref(cv) {
+                Value::Mapping(_) | Value::Sequence(_) => None,
+                other => self.scalar_text(other, true),
+            };
+            let int = text.as_deref().and_then(|t| t.trim().parse::<i64>().ok());
+            match (n.as_str(), idx) {
+                (_, Some(i)) => {
+                    parts.ymdhms[i] = int;
+                    bad |= int.is_none();
+                }
+                ("fractionalSecond", _) => parts.fraction = text,
+                ("millisecond", _) => parts.millisecond = int,
+                ("timezone", _) => parts.timezone = int,
+                _ => self.unknown(&format!("{name}.{n}"), cv, kp, name, sink),
+            }
+        }
+        match parts.iso() {
+            Some(iso) if !bad => Some(iso),
+            _ => {
+                self.warn(
+                    codes::SHAPE,
+                    pos,
+                    format!(
+                        "`{name}` is not a complete date (integer year, month, day, hour, \
+                         minute and second); kept as an extra property"
+                    ),
+                );
+                // The entries were located above; they share the date key's position here.
+                let e = Extra {
+                    kind: ExtraKind::Key,
+                    name: name.to_string(),
+                    namespace: None,
+                    value: None,
+                    children: m
+                        .iter()
+                        .map(|(k, cv)| Extra {
+                            kind: ExtraKind::Key,
+                            name: key_text(k),
+                            namespace: None,
+                            value: match untag_ref(cv) {
+                                Value::String(s) => Some(s.clone()),
+                                Value::Number(n) => Some(n.to_string()),
+                                Value::Bool(b) => Some(b.to_string()),
+                                _ => None,
+                            },
+                            children: Vec::new(),
+                            pos,
+                        })
+                        .collect(),
+                    pos,
+                };
+                sink.push(e);
+                None
+            }
+        }
+    }
+
+    /// `actions` (spec 2.3.3/2.3.4, 2.4.3): each `onX: {implemented, "rtcDoc::doc"}` or null.
+    fn actions(&mut self, v: &Value, pos: Pos, p: &mut Profile) {
+        let Some(m) = self.map(v, "actions", pos, &mut p.extra) else {
+            return;
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let Some(kind) = ActionKind::from_yaml_name(&n) else {
+                self.unknown(&n, v, kp, "actions", &mut p.extra);
+                continue;
+            };
+            let mut a = Action {
+                kind,
+                implemented: None,
+                doc: None,
+                pos: kp,
+                extra: Vec::new(),
+            };
+            if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
+                for (k, v) in m {
+                    let (n, kp) = self.key(k);
+                    match n.as_str() {
+                        "implemented" => a.implemented = self.text(v, &n, kp, &mut a.extra),
+                        "rtcDoc::doc" => {
+                            if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
+                                let mut d = ActionDoc {
+                                    pos: kp,
+                                    ..ActionDoc::default()
+                                };
+                                for (k, v) in m {
+                                    let (n, kp) = self.key(k);
+                                    let x = &mut d.extra;
+                                    match n.as_str() {
+                                        "description" => d.description = self.text(v, &n, kp, x),
+                                        "preCondition" => d.pre_condition = self.text(v, &n, kp, x),
+                                        "postCondition" => {
+                                            d.post_condition = self.text(v, &n, kp, x)
+                                        }
+                                        _ => self.unknown(&n, v, kp, "an action's rtcDoc::doc", x),
+                                    }
+                                }
+                                a.doc = Some(d);
+                            }
+                        }
+                        _ => self.unknown(&n, v, kp, "an action", &mut a.extra),
+                    }
+                }
+            }
+            p.actions.push(a);
+        }
+    }
+
+    /// `configurationSet` (spec 2.3.5) with its `configuration` list (2.3.6, 2.4.4, 2.5.2).
+    fn configuration_set(&mut self, m: &Mapping, pos: Pos) -> ConfigurationSet {
+        let mut cs = ConfigurationSet {
+            pos,
+            ..ConfigurationSet::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            if n != "configuration" {
+                self.unknown(&n, v, kp, "configurationSet", &mut cs.extra);
+                continue;
+            }
+            for (idx, it) in self.seq(v, &n, kp, &mut cs.extra).iter().enumerate() {
+                let Some((m, ip)) = self.map_item(it, &n, idx, &mut cs.extra) else {
+                    continue;
+                };
+                let mut c = Configuration {
+                    pos: ip,
+                    ..Configuration::default()
+                };
+                for (k, v) in m {
+                    let (n, kp) = self.key(k);
+                    let x = &mut c.extra;
+                    match n.as_str() {
+                        "name" => c.name = self.text(v, &n, kp, x),
+                        "type" => c.type_ = self.text(v, &n, kp, x),
+                        "defaultValue" => c.default_value = self.text(v, &n, kp, x),
+                        "unit" => c.unit = self.text(v, &n, kp, x),
+                        "constraint" => c.constraint = self.constraint_root(v, kp, x),
+                        "rtcExt::comment" => c.comment = self.text(v, &n, kp, x),
+                        "rtcExt::variableName" => c.variable_name = self.text(v, &n, kp, x),
+                        "rtcExt::property" | "rtcExt::properties" => {
+                            c.properties = self.properties(v, &n, kp, x)
+                        }
+                        "rtcDoc::doc" => {
+                            if let Some(m) = self.map(v, &n, kp, x) {
+                                let mut d = ConfigurationDoc {
+                                    pos: kp,
+                                    ..ConfigurationDoc::default()
+                                };
+                                for (k, v) in m {
+                                    let (n, kp) = self.key(k);
+                                    let x = &mut d.extra;
+                                    match n.as_str() {
+                                        "dataname" => d.dataname = self.text(v, &n, kp, x),
+                                        "defaultValue" => d.default_value = self.text(v, &n, kp, x),
+                                        "description" => d.description = self.text(v, &n, kp, x),
+                                        "unit" => d.unit = self.text(v, &n, kp, x),
+                                        "range" => d.range = self.text(v, &n, kp, x),
+                                        "constraint" => d.constraint = self.text(v, &n, kp, x),
+                                        _ => self.unknown(
+                                            &n,
+                                            v,
+                                            kp,
+                                            "a configuration's rtcDoc::doc",
+                                            x,
+                                        ),
+                                    }
+                                }
+                                c.doc = Some(d);
+                            }
+                        }
+                        _ => self.unknown(&n, v, kp, "a configuration", x),
+                    }
+                }
+                cs.configurations.push(c);
+            }
+        }
+        cs
+    }
+
+    /// A data port (spec 2.3.7, 2.4.5/2.4.6 doc, 2.5.3 ext).
+    fn data_port(&mut self, m: &Mapping, pos: Pos) -> DataPort {
+        let mut d = DataPort {
+            pos,
+            ..DataPort::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let x = &mut d.extra;
+            match n.as_str() {
+                "portType" => d.port_type = self.text(v, &n, kp, x),
+                "name" => d.name = self.text(v, &n, kp, x),
+                "type" => d.type_ = self.text(v, &n, kp, x),
+                "idlFile" => d.idl_file = self.text(v, &n, kp, x),
+                "interfaceType" => d.interface_type = self.text(v, &n, kp, x),
+                "dataflowType" => d.dataflow_type = self.text(v, &n, kp, x),
+                "subscriptionType" => d.subscription_type = self.text(v, &n, kp, x),
+                "unit" => d.unit = self.text(v, &n, kp, x),
+                "constraint" => d.constraint = self.constraint_root(v, kp, x),
+                "rtcExt::comment" => d.comment = self.text(v, &n, kp, x),
+                "rtcExt::variableName" => d.variable_name = self.text(v, &n, kp, x),
+                "rtcExt::position" => d.position = self.text(v, &n, kp, x),
+                "rtcExt::property" | "rtcExt::properties" => {
+                    d.properties = self.properties(v, &n, kp, x)
+                }
+                "rtcDoc::doc" => {
+                    if let Some(m) = self.map(v, &n, kp, x) {
+                        let mut doc = DataPortDoc {
+                            pos: kp,
+                            ..DataPortDoc::default()
+                        };
+                        for (k, v) in m {
+                            let (n, kp) = self.key(k);
+                            let x = &mut doc.extra;
+                            match n.as_str() {
+                                "description" => doc.description = self.text(v, &n, kp, x),
+                                "type" => doc.type_ = self.text(v, &n, kp, x),
+                                "number" => doc.number = self.text(v, &n, kp, x),
+                                "semantics" => doc.semantics = self.text(v, &n, kp, x),
+                                "unit" => doc.unit = self.text(v, &n, kp, x),
+                                // RTCBuilder spells it `occerrence`.
+                                "occurrence" | "occerrence" => {
+                                    doc.occurrence = self.text(v, &n, kp, x)
+                                }
+                                "operation" => doc.operation = self.text(v, &n, kp, x),
+                                _ => self.unknown(&n, v, kp, "a data port's rtcDoc::doc", x),
+                            }
+                        }
+                        d.doc = Some(doc);
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "a data port", x),
+            }
+        }
+        d
+    }
+
+    /// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
+    fn service_port(&mut self, m: &Mapping, pos: Pos) -> ServicePort {
+        let mut s = ServicePort {
+            pos,
+            ..ServicePort::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let x = &mut s.extra;
+            match n.as_str() {
+                "name" => s.name = self.text(v, &n, kp, x),
+                "rtcExt::comment" => s.comment = self.text(v, &n, kp, x),
+                "rtcExt::position" => s.position = self.text(v, &n, kp, x),
+                "rtcExt::property" | "rtcExt::properties" => {
+                    s.properties = self.properties(v, &n, kp, x)
+                }
+                "transMethod" | "transMethods" => {
+                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
+                            continue;
+                        };
+                        let mut t = TransMethod {
+                            pos: ip,
+                            ..TransMethod::default()
+                        };
+                        for (k, v) in m {
+                            let (n, kp) = self.key(k);
+                            match n.as_str() {
+                                "kind" => t.kind = self.text(v, &n, kp, &mut t.extra),
+                                _ => self.unknown(&n, v, kp, "a transMethod", &mut t.extra),
+                            }
+                        }
+                        s.trans_methods.push(t);
+                    }
+                }
+                "serviceInterface" | "serviceInterfaces" => {
+                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
+                            continue;
+                        };
+                        let i = self.service_interface(m, ip);
+                        s.interfaces.push(i);
+                    }
+                }
+                "rtcDoc::doc" => {
+                    if let Some(m) = self.map(v, &n, kp, x) {
+                        let mut d = ServicePortDoc {
+                            pos: kp,
+                            ..ServicePortDoc::default()
+                        };
+                        for (k, v) in m {
+                            let (n, kp) = self.key(k);
+                            let x = &mut d.extra;
+                            match n.as_str() {
+                                "description" => d.description = self.text(v, &n, kp, x),
+                                "ifdescription" => d.ifdescription = self.text(v, &n, kp, x),
+                                _ => self.unknown(&n, v, kp, "a service port's rtcDoc::doc", x),
+                            }
+                        }
+                        s.doc = Some(d);
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "a service port", x),
+            }
+        }
+        s
+    }
+
+    /// A service interface (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
+    fn service_interface(&mut self, m: &Mapping, pos: Pos) -> ServiceInterface {
+        let mut i = ServiceInterface {
+            pos,
+            ..ServiceInterface::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let x = &mut i.extra;
+            match n.as_str() {
+                "name" => i.name = self.text(v, &n, kp, x),
+                "type" => i.type_ = self.text(v, &n, kp, x),
+                "direction" => i.direction = self.text(v, &n, kp, x),
+                "instanceName" => i.instance_name = self.text(v, &n, kp, x),
+                "idlFile" => i.idl_file = self.text(v, &n, kp, x),
+                "path" => i.path = self.text(v, &n, kp, x),
+                "rtcExt::comment" => i.comment = self.text(v, &n, kp, x),
+                "rtcExt::variableName" => i.variable_name = self.text(v, &n, kp, x),
+                "rtcExt::property" | "rtcExt::properties" => {
+                    i.properties = self.properties(v, &n, kp, x)
+                }
+                "rtcDoc::doc" => {
+                    if let Some(m) = self.map(v, &n, kp, x) {
+                        let mut d = ServiceInterfaceDoc {
+                            pos: kp,
+                            ..ServiceInterfaceDoc::default()
+                        };
+                        for (k, v) in m {
+                            let (n, kp) = self.key(k);
+                            let x = &mut d.extra;
+                            match n.as_str() {
+                                "description" => d.description = self.text(v, &n, kp, x),
+                                "docArgument" => d.doc_argument = self.text(v, &n, kp, x),
+                                "docReturn" => d.doc_return = self.text(v, &n, kp, x),
+                                "docException" => d.doc_exception = self.text(v, &n, kp, x),
+                                "docPreCondition" => d.doc_pre_condition = self.text(v, &n, kp, x),
+                                "docPostCondition" => {
+                                    d.doc_post_condition = self.text(v, &n, kp, x)
+                                }
+                                _ => {
+                                    self.unknown(&n, v, kp, "a service interface's rtcDoc::doc", x)
+                                }
+                            }
+                        }
+                        i.doc = Some(d);
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "a service interface", x),
+            }
+        }
+        i
+    }
+
+    /// A system parameter (spec 2.3.11, 5.4).
+    fn parameter(&mut self, m: &Mapping, pos: Pos) -> Parameter {
+        let mut p = Parameter {
+            pos,
+            ..Parameter::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let x = &mut p.extra;
+            match n.as_str() {
+                "name" => p.name = self.text(v, &n, kp, x),
+                "defaultValue" => p.default_value = self.text(v, &n, kp, x),
+                _ => self.unknown(&n, v, kp, "a parameter", x),
+            }
+        }
+        p
+    }
+
+    /// `language` (spec 2.3.12) with `"rtcExt::targets"` (2.5.6–2.5.8).
+    fn language(&mut self, m: &Mapping, pos: Pos) -> Language {
+        let mut l = Language {
+            pos,
+            ..Language::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            match n.as_str() {
+                "kind" => l.kind = self.text(v, &n, kp, &mut l.extra),
+                "rtcExt::targets" | "rtcExt::target" => {
+                    for (idx, it) in self.seq(v, &n, kp, &mut l.extra).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut l.extra) else {
+                            continue;
+                        };
+                        let t = self.target(m, ip);
+                        l.targets.push(t);
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "language", &mut l.extra),
+            }
+        }
+        l
+    }
+
+    fn target(&mut self, m: &Mapping, pos: Pos) -> Target {
+        let mut t = Target {
+            pos,
+            ..Target::default()
+        };
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let x = &mut t.extra;
+            match n.as_str() {
+                "langVersion" => t.lang_version = self.text(v, &n, kp, x),
+                "os" => t.os = self.text(v, &n, kp, x),
+                "osVersions" => t.os_versions = self.texts(v, &n, kp, x),
+                "other" => t.other = self.text(v, &n, kp, x),
+                "cpus" => t.cpus = self.texts(v, &n, kp, x),
+                "cpuOther" => t.cpu_other = self.text(v, &n, kp, x),
+                "libraries" => {
+                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
+                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
+                            continue;
+                        };
+                        let mut lib = Library {
+                            pos: ip,
+                            ..Library::default()
+                        };
+                        for (k, v) in m {
+                            let (n, kp) = self.key(k);
+                            let x = &mut lib.extra;
+                            match n.as_str() {
+                                // The PIM calls the name `path` (NOTES).
+                                "name" | "path" => lib.name = self.text(v, &n, kp, x),
+                                "version" => lib.version = self.text(v, &n, kp, x),
+                                "other" => lib.other = self.text(v, &n, kp, x),
+                                _ => self.unknown(&n, v, kp, "a library", x),
+                            }
+                        }
+                        t.libraries.push(lib);
+                    }
+                }
+                _ => self.unknown(&n, v, kp, "a target", x),
+            }
+        }
+        t
+    }
+
+    // -- Constraints (spec 2.3.17–2.3.41, chapter 7 `constraintRoot`, samples 8.2) ----------
+
+    /// The value of a `constraint:` key.
+    fn constraint_root(
+        &mut self,
+        v: &Value,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Option<Constraint> {
+        match untag_ref(v) {
+            Value::Null => Some(Constraint {
+                kind: ConstraintKind::Empty,
+                pos,
+                extra: Vec::new(),
+            }),
+            Value::Mapping(m) => Some(self.constraint_node(m, pos)),
+            _ => {
+                self.wrong_shape("constraint", v, pos, "a mapping", sink);
+                None
+            }
+        }
+    }
+
+    /// One constraint: a map with one form key (`constraintUnit[Type]`, `constraintList[Type]`,
+    /// `constraintHash[Type]`), or directly a unit body (`key` + condition, as in the 8.2
+    /// `or` samples), or a wrapper `{constraint: …}`.
+    fn constraint_node(&mut self, m: &Mapping, pos: Pos) -> Constraint {
+        let mut c = Constraint {
+            kind: ConstraintKind::Empty,
+            pos,
+            extra: Vec::new(),
+        };
+        let keys: Vec<String> = m.keys().map(key_text).collect();
+        let has_form = keys.iter().any(|k| form_of(k).is_some());
+        let has_unit = keys.iter().any(|k| k == "key" || op_of(k).is_some());
+        if !has_form && !has_unit {
+            // `{constraint: …}` wrapper (e.g. inside `not`).
+            for (k, v) in m {
+                let (n, kp) = self.key(k);
+                match (n.as_str(), untag_ref(v)) {
+                    ("constraint", Value::Mapping(inner))
+                        if matches!(c.kind, ConstraintKind::Empty) =>
+                    {
+                        let mut inner = self.constraint_node(inner, kp);
+                        inner.extra.append(&mut c.extra);
+                        c = inner;
+                    }
+                    ("constraint", Value::Null) => {}
+                    _ => self.unknown(&n, v, kp, "a constraint", &mut c.extra),
+                }
+            }
+            return c;
+        }
+        if has_unit && !has_form {
+            c.kind = self.unit_body(m, &mut c.extra);
+            return c;
+        }
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            let form = form_of(&n);
+            match form {
+                Some(f) if matches!(c.kind, ConstraintKind::Empty) => match f {
+                    Form::Unit => match untag_ref(v) {
+                        Value::Mapping(um) => {
+                            c.pos = kp;
+                            c.kind = self.unit_body(um, &mut c.extra);
+                        }
+                        Value::Null => c.pos = kp,
+                        _ => self.wrong_shape(&n, v, kp, "a mapping", &mut c.extra),
+                    },
+                    Form::List | Form::Hash => {
+                        c.pos = kp;
+                        let items = self.constraint_items(v, &n, kp, &mut c.extra);
+                        c.kind = if f == Form::List {
+                            ConstraintKind::List { items }
+                        } else {
+                            ConstraintKind::Hash { items }
+                        };
+                    }
+                },
+                Some(_) => {
+                    self.warn(
+                        codes::SHAPE,
+                        kp,
+                        format!("a constraint has more than one form; `{n}` kept as an extra"),
+                    );
+                    let e = self.extra(&n, v, kp);
+                    c.extra.push(e);
+                }
+                None => self.unknown(&n, v, kp, "a constraint", &mut c.extra),
+            }
+        }
+        c
+    }
+
+    /// Children of a list / hash / `and` / `or`: a sequence of constraints, or a map with a
+    /// `constraint:` sequence (RTCBuilder, `Constraint/Hash2.yaml`).
+    fn constraint_items(
+        &mut self,
+        v: &Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Vec<Constraint> {
+        match untag_ref(v) {
+            Value::Sequence(s) => {
+                let mut out = Vec::new();
+                for (i, item) in s.iter().enumerate() {
+                    let p = self.loc.item();
+                    match untag_ref(item) {
+                        Value::Mapping(m) => out.push(self.constraint_node(m, p)),
+                        Value::Null => out.push(Constraint {
+                            kind: ConstraintKind::Empty,
+                            pos: p,
+                            extra: Vec::new(),
+                        }),
+                        _ => self.wrong_shape(&format!("{name}[{i}]"), item, p, "a mapping", sink),
+                    }
+                }
+                out
+            }
+            Value::Mapping(m) => {
+                let mut out = Vec::new();
+                for (k, cv) in m {
+                    let (n, kp) = self.key(k);
+                    if n == "constraint" {
+                        match untag_ref(cv) {
+                            Value::Mapping(one) => out.push(self.constraint_node(one, kp)),
+                            _ => out.extend(self.constraint_items(cv, &n, kp, sink)),
+                        }
+                    } else {
+                        self.unknown(&n, cv, kp, name, sink);
+                    }
+                }
+                out
+            }
+            Value::Null => Vec::new(),
+            _ => {
+                self.wrong_shape(name, v, pos, "a list of constraints", sink);
+                Vec::new()
+            }
+        }
+    }
+
+    /// The body of a constraint unit: optional `key` plus exactly one condition.
+    fn unit_body(&mut self, m: &Mapping, sink: &mut Vec<Extra>) -> ConstraintKind {
+        let mut key = None;
+        let mut condition: Option<Condition> = None;
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            if n == "key" {
+                key = self.text(v, &n, kp, sink);
+                continue;
+            }
+            let Some(op) = op_of(&n) else {
+                self.unknown(&n, v, kp, "a constraint unit", sink);
+                continue;
+            };
+            if condition.is_some() {
+                self.warn(
+                    codes::SHAPE,
+                    kp,
+                    format!(
+                        "a constraint unit has more than one condition; `{n}` kept as an extra"
+                    ),
+                );
+                let e = self.extra(&n, v, kp);
+                sink.push(e);
+                continue;
+            }
+            condition = self.condition(op, &n, v, kp, sink);
+        }
+        match condition {
+            Some(c) => ConstraintKind::Unit {
+                key,
+                condition: Box::new(c),
+            },
+            None => {
+                if let Some(k) = key {
+                    sink.push(Extra {
+                        kind: ExtraKind::Key,
+                        name: "key".into(),
+                        namespace: None,
+                        value: Some(k),
+                        children: Vec::new(),
+                        pos: Pos::default(),
+                    });
+                }
+                ConstraintKind::Empty
+            }
+        }
+    }
+
+    fn condition(
+        &mut self,
+        op: Op,
+        name: &str,
+        v: &Value,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Option<Condition> {
+        match op {
+            Op::Not => {
+                let operand = match untag_ref(v) {
+                    Value::Mapping(m) => self.constraint_node(m, pos),
+                    Value::Null => Constraint {
+                        kind: ConstraintKind::Empty,
+                        pos,
+                        extra: Vec::new(),
+                    },
+                    _ => {
+                        self.wrong_shape(name, v, pos, "a mapping", sink);
+                        return None;
+                    }
+                };
+                Some(Condition::Not { operand })
+            }
+            Op::And => Some(Condition::And {
+                operands: self.constraint_items(v, name, pos, sink),
+            }),
+            Op::Or => Some(Condition::Or {
+                operands: self.constraint_items(v, name, pos, sink),
+            }),
+            Op::IsNull => match untag_ref(v) {
+                Value::Mapping(m) if m.is_empty() => Some(Condition::IsNull { text: None }),
+                Value::Mapping(_) | Value::Sequence(_) => {
+                    self.wrong_shape(name, v, pos, "empty or a scalar", sink);
+                    Some(Condition::IsNull { text: None })
+                }
+                other => Some(Condition::IsNull {
+                    text: self.scalar_text(other, true),
+                }),
+            },
+            Op::Compare(comparison) => {
+                let m = self.op_map(v, name, pos, sink)?;
+                let (mut literal, mut match_case) = (None, None);
+                for (k, v) in m {
+                    let (n, kp) = self.key(k);
+                    match n.as_str() {
+                        "literal" => literal = self.text(v, &n, kp, sink),
+                        "matchCase" => match_case = self.text(v, &n, kp, sink),
+                        _ => self.unknown(&n, v, kp, name, sink),
+                    }
+                }
+                Some(Condition::Compare {
+                    comparison,
+                    literal,
+                    match_case,
+                })
+            }
+            Op::Like => {
+                let m = self.op_map(v, name, pos, sink)?;
+                let (mut literal, mut wild_card, mut single_char, mut escape_char) =
+                    (None, None, None, None);
+                for (k, v) in m {
+                    let (n, kp) = self.key(k);
+                    match n.as_str() {
+                        "literal" => literal = self.text(v, &n, kp, sink),
+                        // XSD `wildCard`, YAML 8.2 `wildcard`, PIM `wildChar` (NOTES).
+                        "wildCard" | "wildcard" | "wildChar" => {
+                            wild_card = self.text(v, &n, kp, sink)
+                        }
+                        "singleChar" => single_char = self.text(v, &n, kp, sink),
+                        "escapeChar" => escape_char = self.text(v, &n, kp, sink),
+                        _ => self.unknown(&n, v, kp, name, sink),
+                    }
+                }
+                Some(Condition::Like {
+                    literal,
+                    wild_card,
+                    single_char,
+                    escape_char,
+                })
+            }
+            Op::Between => {
+                let m = self.op_map(v, name, pos, sink)?;
+                let (mut lower, mut upper) = (None, None);
+                for (k, v) in m {
+                    let (n, kp) = self.key(k);
+                    match n.as_str() {
+                        "lowerBoundary" => lower = self.text(v, &n, kp, sink),
+                        "upperBoundary" => upper = self.text(v, &n, kp, sink),
+                        _ => self.unknown(&n, v, kp, name, sink),
+                    }
+                }
+                Some(Condition::Between { lower, upper })
+            }
+        }
+    }
+
+    fn op_map<'v>(
+        &mut self,
+        v: &'v Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Option<&'v Mapping> {
+        static EMPTY: std::sync::OnceLock<Mapping> = std::sync::OnceLock::new();
+        match untag_ref(v) {
+            Value::Mapping(m) => Some(m),
+            Value::Null => Some(EMPTY.get_or_init(Mapping::new)),
+            _ => {
+                self.wrong_shape(name, v, pos, "a mapping", sink);
+                None
+            }
+        }
+    }
 }

@@ -1,0 +1,325 @@
+//! The build pipeline end to end: walk, load, catalogue, JSON output and output safety.
+
+mod common;
+use common::*;
+use rtcdoc::build::{self, BuildOptions, LoadOptions};
+use rtcdoc::render::{Format, SiteOptions};
+use std::path::Path;
+
+fn opts(input: &Path, output: &Path, format: Format) -> BuildOptions {
+    BuildOptions {
+        input: input.to_path_buf(),
+        output: output.to_path_buf(),
+        formats: vec![format],
+        strict: false,
+        load: LoadOptions::default(),
+        site: SiteOptions::default(),
+    }
+}
+
+fn json(path: &Path) -> serde_json::Value {
+    serde_json::from_slice(&std::fs::read(path).expect("read json")).expect("valid json")
+}
+
+#[test]
+fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "b/RTC.xml", &xml_profile("B", &[]));
+    write(d, "a/RTC.xml20230831164412.xml", &xml_profile("A", &[]));
+    write(d, "a/notes.xml", "<root/>");
+    write(
+        d,
+        "sys.xml",
+        "<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\"/>",
+    );
+    write(d, "readme.md", "# hi");
+    write(d, ".git/RTC.xml", &xml_profile("Hidden", &[]));
+    write(d, "skip/me/RTC.xml", &xml_profile("Excluded", &[]));
+    let res = rtcdoc::walk::walk(
+        d,
+        &rtcdoc::walk::WalkOptions {
+            exclude: vec!["skip/**".into()],
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let rels: Vec<&str> = res.sources.iter().map(|s| s.rel.as_str()).collect();
+    assert_eq!(rels, ["a/RTC.xml20230831164412.xml", "b/RTC.xml"]);
+    let skipped: Vec<&str> = res.skipped.iter().map(|s| s.rel.as_str()).collect();
+    assert!(skipped.contains(&"a/notes.xml"));
+    assert!(skipped.contains(&"sys.xml"));
+    assert!(skipped.contains(&"readme.md"));
+    assert!(skipped.contains(&"skip/me/RTC.xml"));
+}
+
+#[cfg(unix)]
+#[test]
+fn walk_survives_symlink_cycles() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "x/RTC.xml", &xml_profile("X", &[]));
+    std::os::unix::fs::symlink(d, d.join("x/loop")).unwrap();
+    let res = rtcdoc::walk::walk(d, &Default::default()).unwrap();
+    assert_eq!(res.sources.len(), 1);
+    assert!(res.skipped.iter().any(|s| s.rel == "x/loop"));
+}
+
+#[test]
+fn json_output_holds_components_sources_and_cross_links() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write(
+        &input,
+        "cam/RTC.xml",
+        &xml_profile("Cam", &[("DataOutPort", "image", "RTC::CameraImage")]),
+    );
+    write(
+        &input,
+        "view/RTC.xml",
+        &xml_profile("Viewer", &[("DataInPort", "in", "CameraImage")]),
+    );
+    write(
+        &input,
+        "broken/RTC.xml",
+        "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\"><oops>",
+    );
+    let out = dir.path().join("out");
+    let (loaded, report) = build::build(&opts(&input, &out, Format::Json)).unwrap();
+    assert_eq!(
+        report.profiles, 2,
+        "the broken file is reported, the others load"
+    );
+    assert_eq!(report.errors, 1);
+    let err = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap();
+    assert_eq!(err.file, "broken/RTC.xml");
+    assert!(err.pos.is_some(), "errors carry a position");
+
+    let v = json(&out.join("catalog.json"));
+    let comps = v["components"].as_array().unwrap();
+    let sources: Vec<&str> = comps
+        .iter()
+        .map(|c| c["source"].as_str().unwrap())
+        .collect();
+    assert_eq!(sources, ["cam/RTC.xml", "view/RTC.xml"]);
+    assert_eq!(comps[0]["basicInfo"]["name"], "Cam");
+    assert_eq!(comps[0]["dataPorts"][0]["type"], "RTC::CameraImage");
+    // Both spellings are one type, produced by Cam and consumed by Viewer.
+    let types = v["dataTypes"].as_array().unwrap();
+    assert_eq!(types.len(), 1);
+    assert_eq!(types[0]["name"], "RTC::CameraImage");
+    assert_eq!(types[0]["producers"][0]["component"], 0);
+    assert_eq!(types[0]["consumers"][0]["component"], 1);
+    assert_eq!(v["diagnostics"][0]["file"], "broken/RTC.xml");
+    assert!(out.join(".rtcdoc-output").exists());
+}
+
+#[test]
+fn strict_mode_fails_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write(&input, "ok/RTC.xml", &xml_profile("Ok", &[]));
+    write(
+        &input,
+        "bad/RTC.xml",
+        "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\">",
+    );
+    let out = dir.path().join("out");
+    let mut o = opts(&input, &out, Format::Json);
+    o.strict = true;
+    let err = build::build(&o).err().expect("strict build fails");
+    assert!(format!("{err:#}").contains("--strict"));
+    assert!(!out.exists());
+    let entries: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(entries.len(), 1, "no temporary directory is left behind");
+}
+
+#[test]
+fn output_is_deterministic() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    for i in 0..20 {
+        write(
+            &input,
+            &format!("c{i}/RTC.xml"),
+            &xml_profile(
+                &format!("C{}", i % 7),
+                &[
+                    ("DataOutPort", "o", "RTC::TimedLong"),
+                    ("DataInPort", "i", "TimedLong"),
+                ],
+            ),
+        );
+    }
+    let a = dir.path().join("a");
+    let b = dir.path().join("b");
+    build::build(&opts(&input, &a, Format::Json)).unwrap();
+    build::build(&opts(&input, &b, Format::Json)).unwrap();
+    assert_eq!(tree(&a), tree(&b));
+}
+
+#[test]
+fn refuses_dangerous_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write(&input, "a/RTC.xml", &xml_profile("A", &[]));
+    // The input itself, and a parent of the input.
+    assert!(build::build(&opts(&input, &input, Format::Json)).is_err());
+    assert!(build::build(&opts(&input, dir.path(), Format::Json)).is_err());
+    // A directory holding profiles.
+    let other = dir.path().join("other");
+    write(&other, "RTC.xml", &xml_profile("B", &[]));
+    assert!(build::build(&opts(&input, &other, Format::Json)).is_err());
+    assert!(other.join("RTC.xml").exists());
+    // A foreign non-empty directory.
+    let foreign = dir.path().join("foreign");
+    write(&foreign, "precious.txt", "keep me");
+    assert!(build::build(&opts(&input, &foreign, Format::Json)).is_err());
+    assert!(foreign.join("precious.txt").exists());
+    // An output inside the input is skipped by the walk and can be rebuilt.
+    let inner = input.join("site");
+    build::build(&opts(&input, &inner, Format::Json)).unwrap();
+    let (_, report) = build::build(&opts(&input, &inner, Format::Json)).unwrap();
+    assert_eq!(report.profiles, 1);
+}
+
+#[test]
+fn duplicate_ids_are_kept_apart_and_warned() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write(&input, "a/RTC.xml", &xml_profile("Same", &[]));
+    write(&input, "b/RTC.xml", &xml_profile("Same", &[]));
+    let loaded = build::load(&input, &LoadOptions::default()).unwrap();
+    let c = &loaded.catalog;
+    assert_eq!(c.components.len(), 2);
+    assert_ne!(c.components[0].slug, c.components[1].slug);
+    let dups: Vec<_> = c
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "RTC010")
+        .collect();
+    assert_eq!(dups.len(), 2);
+}
+
+#[test]
+fn cli_builds_json_and_reports() {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "in/a/RTC.xml", &xml_profile("A", &[]));
+    let out = rtcdoc(
+        &["build", "in", "--format", "json", "-o", "out"],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(dir.path().join("out/catalog.json").exists());
+    let missing = rtcdoc(&["build", "nope", "-o", "out2"], dir.path());
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("does not exist"));
+}
+
+#[test]
+fn corpus_json_loses_nothing() {
+    let Some(corpus) = corpus() else { return };
+    let Some(tool) = shared_tool("nothing_lost.py") else {
+        println!("skipped: nothing_lost.py not present");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let input = corpus.join("rtc-xml");
+    let out = dir.path().join("out");
+    let (loaded, _) = build::build(&opts(&input, &out, Format::Json)).unwrap();
+    let errors: Vec<String> = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.to_string())
+        .collect();
+    assert!(errors.is_empty(), "corpus errors: {errors:#?}");
+    let run = std::process::Command::new("python3")
+        .arg(&tool)
+        .arg(&input)
+        .arg(out.join("catalog.json"))
+        .output()
+        .expect("python3");
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    println!("{stdout}");
+    assert!(run.status.success(), "nothing_lost.py failed:\n{stdout}");
+    assert!(stdout.contains("lost: 0, profiles without component: 0"));
+}
+
+#[test]
+fn whole_corpus_loads_without_errors() {
+    let Some(corpus) = corpus() else { return };
+    let loaded = build::load(&corpus, &LoadOptions::default()).unwrap();
+    let errors: Vec<String> = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.to_string())
+        .collect();
+    assert!(errors.is_empty(), "corpus errors: {errors:#?}");
+    let xml = loaded
+        .catalog
+        .components
+        .iter()
+        .filter(|c| c.source.starts_with("rtc-xml/"))
+        .count();
+    let yaml = loaded
+        .catalog
+        .components
+        .iter()
+        .filter(|c| c.source.starts_with("rtc-yaml/"))
+        .count();
+    let rts = loaded
+        .catalog
+        .components
+        .iter()
+        .filter(|c| c.source.starts_with("rts-xml/"))
+        .count();
+    println!(
+        "corpus: {xml} XML and {yaml} YAML profiles, {} files skipped",
+        loaded.skipped.len()
+    );
+    assert_eq!(xml, 139);
+    assert_eq!(yaml, 14);
+    assert_eq!(rts, 0, "RT System profiles are skipped");
+    let mut by_code = std::collections::BTreeMap::new();
+    for d in &loaded.catalog.diagnostics {
+        *by_code.entry(d.code).or_insert(0) += 1;
+    }
+    println!("diagnostics by code: {by_code:?}");
+}
+
+#[test]
+fn oversized_files_are_refused_quickly_with_the_file_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let mut big = xml_profile("Big", &[]);
+    big.push_str(&format!("<!-- {} -->\n", "x".repeat(2_000_000)));
+    write(&input, "big/RTC.xml", &big);
+    write(&input, "ok/RTC.xml", &xml_profile("Ok", &[]));
+    let mut o = LoadOptions::default();
+    o.limits.max_file_size = 1_000_000;
+    let start = std::time::Instant::now();
+    let loaded = build::load(&input, &o).unwrap();
+    assert!(start.elapsed().as_secs_f64() < 1.0);
+    assert_eq!(loaded.catalog.components.len(), 1);
+    let d = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap();
+    assert_eq!((d.code, d.file.as_str()), ("RTC002", "big/RTC.xml"));
+    assert!(d.to_string().contains("larger than the limit"));
+}

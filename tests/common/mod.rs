@@ -1,0 +1,85 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+
+/// The crate root.
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `../shared/corpus` when it exists (it does on the developers' machines and in CI, not in a
+/// plain clone); tests print a visible "skipped" line otherwise.
+pub fn corpus() -> Option<PathBuf> {
+    let p = root().join("../shared/corpus");
+    if p.is_dir() {
+        Some(p)
+    } else {
+        println!("skipped: ../shared/corpus not present");
+        None
+    }
+}
+
+/// `../shared/tools/NAME` when present.
+pub fn shared_tool(name: &str) -> Option<PathBuf> {
+    let p = root().join("../shared/tools").join(name);
+    p.is_file().then_some(p)
+}
+
+/// A minimal valid component profile in RTCBuilder's XML style.
+pub fn xml_profile(name: &str, ports: &[(&str, &str, &str)]) -> String {
+    let mut s = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcDoc="http://www.openrtp.org/namespaces/rtc_doc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:Test:Cat:{name}:1.0.0" rtc:version="0.2">
+  <rtc:BasicInfo xsi:type="rtcExt:basic_info_ext" rtc:name="{name}" rtc:vendor="Test" rtc:category="Cat" rtc:version="1.0.0" rtc:componentType="STATIC" rtc:activityType="PERIODIC" rtc:componentKind="DataFlowComponent" rtc:executionType="PeriodicExecutionContext" rtc:executionRate="1000.0" rtc:creationDate="2024-01-01T00:00:00+09:00" rtc:updateDate="2024-01-01T00:00:00+09:00"/>
+  <rtc:Actions>
+    <rtc:OnInitialize xsi:type="rtcDoc:action_status_doc" rtc:implemented="true"/>
+  </rtc:Actions>
+"#
+    );
+    for (dir, pname, ty) in ports {
+        s.push_str(&format!(
+            "  <rtc:DataPorts xsi:type=\"rtcExt:dataport_ext\" rtc:portType=\"{dir}\" rtc:name=\"{pname}\" rtc:type=\"{ty}\" rtcExt:position=\"LEFT\"/>\n"
+        ));
+    }
+    s.push_str("</rtc:RtcProfile>\n");
+    s
+}
+
+/// Writes `content` to `dir/rel`, creating parents.
+pub fn write(dir: &Path, rel: &str, content: &str) {
+    let p = dir.join(rel);
+    std::fs::create_dir_all(p.parent().expect("parent")).expect("mkdir");
+    std::fs::write(p, content).expect("write");
+}
+
+/// Runs the built `rtcdoc` binary.
+pub fn rtcdoc(args: &[&str], cwd: &Path) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(args)
+        .current_dir(cwd)
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("run rtcdoc")
+}
+
+/// Every file below `dir` with its bytes, sorted by relative path.
+pub fn tree(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out: Vec<(String, Vec<u8>)> = walkdir::WalkDir::new(dir)
+        .sort_by_file_name()
+        .into_iter()
+        .filter_map(Result::ok)
+        .filter(|e| e.file_type().is_file())
+        .map(|e| {
+            let rel = e
+                .path()
+                .strip_prefix(dir)
+                .expect("prefix")
+                .to_string_lossy()
+                .replace('\\', "/");
+            (rel, std::fs::read(e.path()).expect("read"))
+        })
+        .collect();
+    out.sort();
+    out
+}
