@@ -113,9 +113,15 @@ fn slot_lines(s: &Slot<'_>) -> (String, String) {
     }
 }
 
-fn slot_label_width(s: &Slot<'_>) -> f32 {
+fn slot_label_width(side: PortSide, s: &Slot<'_>) -> f32 {
     let (a, b) = slot_lines(s);
-    text_width(&a, 12.0).max(text_width(&b, 11.0))
+    match side {
+        // Top and bottom labels are one rotated line: `name : Type`.
+        PortSide::Top | PortSide::Bottom if !b.is_empty() => {
+            text_width(&a, 12.0) + text_width(" : ", 12.0) + text_width(&b, 12.0)
+        }
+        _ => text_width(&a, 12.0).max(text_width(&b, 11.0)),
+    }
 }
 
 /// Renders the component diagram: the `<<RTC>>` box, data ports as squares on their edge and
@@ -136,7 +142,8 @@ pub fn component_diagram(
     let slots: Vec<Vec<Slot<'_>>> = sides.iter().map(|&s| slots_on(s, data, service)).collect();
     let label_w: Vec<f32> = slots
         .iter()
-        .map(|v| v.iter().map(slot_label_width).fold(0.0, f32::max))
+        .zip(sides)
+        .map(|(v, side)| v.iter().map(|s| slot_label_width(side, s)).fold(0.0, f32::max))
         .collect();
     let has_service = |i: usize| slots[i].iter().any(|s| matches!(s, Slot::Service { .. }));
     let margin = |i: usize| {
@@ -359,7 +366,7 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
     let mut s = String::with_capacity(4096);
     let _ = write!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram lifecycle-diagram" viewBox="0 0 760 400" width="760" height="400" role="img" aria-label="{}"><title>{}</title>"#,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram lifecycle-diagram" viewBox="0 0 800 410" width="800" height="410" role="img" aria-label="{}"><title>{}</title>"#,
         esc(l.title),
         esc(l.title)
     );
