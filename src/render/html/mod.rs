@@ -323,6 +323,14 @@ fn dir_label(lang: Lang, d: Option<PortDirection>, raw: &Option<String>) -> (Str
     }
 }
 
+/// Number of entries of `refs` (sorted by component, as the catalogue builds them) that belong
+/// to components other than `ci`; a port never "connects to" its own component.
+fn others_than<T>(refs: &[T], ci: usize, component: impl Fn(&T) -> usize) -> usize {
+    let lo = refs.partition_point(|r| component(r) < ci);
+    let hi = refs.partition_point(|r| component(r) <= ci);
+    refs.len() - (hi - lo)
+}
+
 fn flatten_extras(path: &str, e: &Extra, out: &mut Vec<ExtraRow>) {
     out.push(ExtraRow {
         path: path.to_string(),
@@ -553,8 +561,10 @@ impl<'a> Site<'a> {
                 })
                 .collect();
             let all_peers = self.catalog.data_port_peers(ci, pi);
+            let others = others_than(all_peers, ci, |r| r.component);
             let peers = all_peers
                 .iter()
+                .filter(|r| r.component != ci)
                 .take(PEER_CAP)
                 .map(|r| {
                     let u = self.port_link(root, r);
@@ -564,12 +574,12 @@ impl<'a> Site<'a> {
                     }
                 })
                 .collect();
-            let peers_more = (all_peers.len() > PEER_CAP)
+            let peers_more = (others > PEER_CAP)
                 .then(|| {
                     type_ref.as_ref().and_then(|t| t.href.clone()).map(|href| Link {
                         text: format!(
                             "+{} — {}",
-                            all_peers.len() - PEER_CAP,
+                            others - PEER_CAP,
                             self.t("more_on_type_page")
                         ),
                         href,
@@ -647,8 +657,10 @@ impl<'a> Site<'a> {
                 }
                 f.md("comment", &i.comment).properties(&i.properties, &[]);
                 let all_peers = self.catalog.interface_peers(ci, si, ii);
+                let others = others_than(all_peers, ci, |r| r.component);
                 let peers = all_peers
                     .iter()
+                    .filter(|r| r.component != ci)
                     .take(PEER_CAP)
                     .map(|r| {
                         let u = self.iface_link(root, r);
@@ -658,12 +670,12 @@ impl<'a> Site<'a> {
                         }
                     })
                     .collect();
-                let peers_more = (all_peers.len() > PEER_CAP)
+                let peers_more = (others > PEER_CAP)
                     .then(|| {
                         type_ref.as_ref().and_then(|t| t.href.clone()).map(|href| Link {
                             text: format!(
                                 "+{} — {}",
-                                all_peers.len() - PEER_CAP,
+                                others - PEER_CAP,
                                 self.t("more_on_interface_page")
                             ),
                             href,
@@ -878,6 +890,17 @@ impl HtmlRenderer {
             theme_file(dir.as_deref(), name).map_err(|e| {
                 minijinja::Error::new(minijinja::ErrorKind::InvalidOperation, e.to_string())
             })
+        });
+        // HTML-escape strings ourselves: minijinja's default also escapes `/`, which makes
+        // every URL in the site longer and harder to read without adding safety.
+        env.set_formatter(|out, state, value| {
+            if state.auto_escape() == minijinja::AutoEscape::Html && !value.is_safe() {
+                if let Some(s) = value.as_str() {
+                    out.write_str(&svg::esc(s))?;
+                    return Ok(());
+                }
+            }
+            minijinja::escape_formatter(out, state, value)
         });
         let labels: BTreeMap<&str, &str> = opts.language.labels().collect();
         env.add_global("t", Value::from_serialize(&labels));
