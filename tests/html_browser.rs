@@ -63,7 +63,10 @@ fn search_finds_english_and_japanese_words_from_file_urls() {
     build_site(&examples(), &out, SiteOptions::default());
     let prof = dir.path().join("chromium");
     // The search page runs `?q=` on load.
-    let dom = dump_dom(&format!("{}?q=camera", file_url(&out.join("search.html"))), &prof);
+    let dom = dump_dom(
+        &format!("{}?q=camera", file_url(&out.join("search.html"))),
+        &prof,
+    );
     let names = result_names(&dom);
     assert!(names.iter().any(|n| n == "UsbCamera"), "camera → {names:?}");
     // The search box of the index page shows live results too; Japanese via bigrams.

@@ -110,7 +110,10 @@ fn section_links(html: &str, id: &str) -> BTreeSet<String> {
     let Some(a) = html.find(&open) else {
         return BTreeSet::new();
     };
-    let b = html[a..].find("</section>").map(|e| a + e).unwrap_or(html.len());
+    let b = html[a..]
+        .find("</section>")
+        .map(|e| a + e)
+        .unwrap_or(html.len());
     tags(&html[a..b])
         .into_iter()
         .filter(|t| t.name == "a")
@@ -160,7 +163,11 @@ fn examples_site_has_every_page_and_no_broken_link() {
     }
     for i in &cat.interfaces {
         let html = read(&out.join(format!("interfaces/{}.html", i.slug)));
-        assert!(title_of(&html).contains(&i.name), "interface title {}", i.name);
+        assert!(
+            title_of(&html).contains(&i.name),
+            "interface title {}",
+            i.name
+        );
     }
     let broken = broken_links(&out);
     assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
@@ -259,7 +266,11 @@ fn every_port_links_to_its_type_or_interface_page_and_peers() {
                     "../components/{}.html#{}",
                     pc.slug, pc.anchors.data_ports[peer.port]
                 );
-                assert!(row.contains(&href), "{}.{anchor} connects to {href}", c.slug);
+                assert!(
+                    row.contains(&href),
+                    "{}.{anchor} connects to {href}",
+                    c.slug
+                );
             }
             // The diagram links the port to its row.
             assert!(html.contains(&format!("<a href=\"#{anchor}\"")));
@@ -300,7 +311,10 @@ fn interface_pages_list_providers_and_flag_unprovided() {
             flagged += 1;
         }
     }
-    assert!(flagged >= 1, "the examples require an interface nobody provides");
+    assert!(
+        flagged >= 1,
+        "the examples require an interface nobody provides"
+    );
     assert_eq!(index.matches("class=\"unprovided\"").count(), flagged);
 }
 
@@ -312,18 +326,26 @@ fn big_components_grow_the_diagram_and_cap_peer_lists() {
     let out = dir.path().join("site");
     let mut big = component("Big", "Test");
     for i in 0..44 {
-        let dir = if i % 2 == 0 { "DataInPort" } else { "DataOutPort" };
+        let dir = if i % 2 == 0 {
+            "DataInPort"
+        } else {
+            "DataOutPort"
+        };
         big.data_ports
             .push(data_port(dir, &format!("port{i}"), "RTC::TimedLong"));
     }
     big.service_ports.push(service_port(
         "svc",
-        &[("need", "Required", "Nobody::Provides"), ("give", "Provided", "My::Service")],
+        &[
+            ("need", "Required", "Nobody::Provides"),
+            ("give", "Provided", "My::Service"),
+        ],
     ));
     let mut profiles = vec![big];
     for i in 0..30 {
         let mut c = component(&format!("Sink{i:02}"), "Sinks");
-        c.data_ports.push(data_port("DataInPort", "in", "TimedLong"));
+        c.data_ports
+            .push(data_port("DataInPort", "in", "TimedLong"));
         profiles.push(c);
     }
     let mut jp = component("地図サーバ", "ナビゲーション");
@@ -345,7 +367,9 @@ fn big_components_grow_the_diagram_and_cap_peer_lists() {
         assert!(html.contains(&format!("<a href=\"#{a}\"")));
     }
     // An out port with 30 consumers lists 20 and links to the type page for the rest.
-    let row_start = html.find(&format!("<tr id=\"{}\">", big.anchors.data_ports[1])).unwrap();
+    let row_start = html
+        .find(&format!("<tr id=\"{}\">", big.anchors.data_ports[1]))
+        .unwrap();
     let row = &html[row_start..row_start + html[row_start..].find("</tr>").unwrap()];
     assert_eq!(row.matches("<li><a href=\"../components/sink").count(), 20);
     assert!(row.contains("class=\"more\"") && row.contains("../types/rtc-timedlong.html"));
@@ -354,7 +378,11 @@ fn big_components_grow_the_diagram_and_cap_peer_lists() {
     // The unprovided interface is flagged; the Japanese component got a safe slug and page.
     let nobody = cat.interface("Nobody::Provides").unwrap();
     assert!(read(&out.join(format!("interfaces/{}.html", nobody.slug))).contains("warning flag"));
-    let jp = cat.components.iter().find(|c| c.profile.name() == "地図サーバ").unwrap();
+    let jp = cat
+        .components
+        .iter()
+        .find(|c| c.profile.name() == "地図サーバ")
+        .unwrap();
     assert!(jp.slug.is_ascii());
     let jhtml = read(&out.join(format!("components/{}.html", jp.slug)));
     assert!(title_of(&jhtml).starts_with("地図サーバ"));
@@ -369,7 +397,8 @@ fn labels_follow_the_site_language() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("site");
     let mut c = component("Cam", "Sensor");
-    c.data_ports.push(data_port("DataOutPort", "img", "RTC::CameraImage"));
+    c.data_ports
+        .push(data_port("DataOutPort", "img", "RTC::CameraImage"));
     let site = SiteOptions {
         language: rtcdoc::i18n::Lang::Ja,
         ..Default::default()
@@ -444,7 +473,9 @@ fn no_payload_of_the_xss_fixture_survives() {
                 assert!(k != "style", "{rel}: style attribute {t:?}");
                 let v = v.trim().to_ascii_lowercase();
                 assert!(
-                    !(v.starts_with("javascript:") || v.starts_with("data:") || v.starts_with("vbscript:")),
+                    !(v.starts_with("javascript:")
+                        || v.starts_with("data:")
+                        || v.starts_with("vbscript:")),
                     "{rel}: script URL {t:?}"
                 );
             }
@@ -490,7 +521,11 @@ fn builds_are_byte_identical() {
 fn a_theme_dir_overrides_single_files() {
     let dir = tempfile::tempdir().unwrap();
     let theme = dir.path().join("theme");
-    common::write(&theme, "style.css", "/* my lab's style */\nbody { color: teal; }\n");
+    common::write(
+        &theme,
+        "style.css",
+        "/* my lab's style */\nbody { color: teal; }\n",
+    );
     common::write(
         &theme,
         "404.html",
@@ -547,7 +582,9 @@ fn search_index_is_compact() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("site");
     let loaded = build_site(&examples(), &out, SiteOptions::default());
-    let bytes = std::fs::metadata(out.join("search-index.js")).unwrap().len();
+    let bytes = std::fs::metadata(out.join("search-index.js"))
+        .unwrap()
+        .len();
     let per = bytes as f64 / loaded.catalog.components.len() as f64;
     println!("search index: {bytes} bytes, {per:.0} bytes per component");
     assert!(per <= 1536.0, "{per} bytes per component");

@@ -38,7 +38,10 @@ pub const INDEX_FULL_LIST_MAX: usize = 2000;
 /// copied to the site root.
 pub const DEFAULT_THEME: &[(&str, &str)] = &[
     ("404.html", include_str!("../../../themes/default/404.html")),
-    ("base.html", include_str!("../../../themes/default/base.html")),
+    (
+        "base.html",
+        include_str!("../../../themes/default/base.html"),
+    ),
     (
         "component.html",
         include_str!("../../../themes/default/component.html"),
@@ -47,13 +50,22 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
         "diagnostics.html",
         include_str!("../../../themes/default/diagnostics.html"),
     ),
-    ("facet.html", include_str!("../../../themes/default/facet.html")),
+    (
+        "facet.html",
+        include_str!("../../../themes/default/facet.html"),
+    ),
     (
         "facets.html",
         include_str!("../../../themes/default/facets.html"),
     ),
-    ("filter.js", include_str!("../../../themes/default/filter.js")),
-    ("index.html", include_str!("../../../themes/default/index.html")),
+    (
+        "filter.js",
+        include_str!("../../../themes/default/filter.js"),
+    ),
+    (
+        "index.html",
+        include_str!("../../../themes/default/index.html"),
+    ),
     (
         "interface.html",
         include_str!("../../../themes/default/interface.html"),
@@ -66,11 +78,26 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
         "macros.html",
         include_str!("../../../themes/default/macros.html"),
     ),
-    ("search.html", include_str!("../../../themes/default/search.html")),
-    ("search.js", include_str!("../../../themes/default/search.js")),
-    ("style.css", include_str!("../../../themes/default/style.css")),
-    ("type.html", include_str!("../../../themes/default/type.html")),
-    ("types.html", include_str!("../../../themes/default/types.html")),
+    (
+        "search.html",
+        include_str!("../../../themes/default/search.html"),
+    ),
+    (
+        "search.js",
+        include_str!("../../../themes/default/search.js"),
+    ),
+    (
+        "style.css",
+        include_str!("../../../themes/default/style.css"),
+    ),
+    (
+        "type.html",
+        include_str!("../../../themes/default/type.html"),
+    ),
+    (
+        "types.html",
+        include_str!("../../../themes/default/types.html"),
+    ),
 ];
 
 /// Assets written to the site root (after theme overrides).
@@ -123,7 +150,10 @@ struct Fields {
 
 impl Fields {
     fn new(lang: Lang) -> Self {
-        Fields { lang, v: Vec::new() }
+        Fields {
+            lang,
+            v: Vec::new(),
+        }
     }
     fn text(&mut self, key: &str, value: &Option<String>) -> &mut Self {
         if let Some(s) = non_empty(value) {
@@ -576,14 +606,17 @@ impl<'a> Site<'a> {
                 .collect();
             let peers_more = (others > PEER_CAP)
                 .then(|| {
-                    type_ref.as_ref().and_then(|t| t.href.clone()).map(|href| Link {
-                        text: format!(
-                            "+{} — {}",
-                            others - PEER_CAP,
-                            self.t("more_on_type_page")
-                        ),
-                        href,
-                    })
+                    type_ref
+                        .as_ref()
+                        .and_then(|t| t.href.clone())
+                        .map(|href| Link {
+                            text: format!(
+                                "+{} — {}",
+                                others - PEER_CAP,
+                                self.t("more_on_type_page")
+                            ),
+                            href,
+                        })
                 })
                 .flatten();
             data_ports.push(DataPortRow {
@@ -672,14 +705,17 @@ impl<'a> Site<'a> {
                     .collect();
                 let peers_more = (others > PEER_CAP)
                     .then(|| {
-                        type_ref.as_ref().and_then(|t| t.href.clone()).map(|href| Link {
-                            text: format!(
-                                "+{} — {}",
-                                others - PEER_CAP,
-                                self.t("more_on_interface_page")
-                            ),
-                            href,
-                        })
+                        type_ref
+                            .as_ref()
+                            .and_then(|t| t.href.clone())
+                            .map(|href| Link {
+                                text: format!(
+                                    "+{} — {}",
+                                    others - PEER_CAP,
+                                    self.t("more_on_interface_page")
+                                ),
+                                href,
+                            })
                     })
                     .flatten();
                 interfaces.push(InterfaceRow {
@@ -907,10 +943,7 @@ impl HtmlRenderer {
         env.add_global("lang", opts.language.tag());
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
-        env.add_global(
-            "generator",
-            format!("rtcdoc {}", env!("CARGO_PKG_VERSION")),
-        );
+        env.add_global("generator", format!("rtcdoc {}", env!("CARGO_PKG_VERSION")));
         env
     }
 }
@@ -1064,7 +1097,12 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
 
     // Category and vendor pages.
     for (dir, facets, key, empty_key) in [
-        ("categories", &catalog.categories, "categories", "no_category"),
+        (
+            "categories",
+            &catalog.categories,
+            "categories",
+            "no_category",
+        ),
         ("vendors", &catalog.vendors, "vendors", "no_vendor"),
     ] {
         let root = "../";
@@ -1133,7 +1171,12 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
             .map(|t| TypeRow {
                 name: t.name.clone(),
                 href: format!("{}.html", t.slug),
-                spellings: t.spellings.iter().filter(|s| **s != t.name).cloned().collect(),
+                spellings: t
+                    .spellings
+                    .iter()
+                    .filter(|s| **s != t.name)
+                    .cloned()
+                    .collect(),
                 producers: t.producers.len(),
                 consumers: t.consumers.len(),
                 others: t.others.len(),

@@ -189,7 +189,15 @@ mod tests {
     fn latin_words_and_camel_case() {
         assert_eq!(
             toks("UsbCamera RTC::TimedLong"),
-            ["camera", "long", "rtc", "timed", "timedlong", "usb", "usbcamera"]
+            [
+                "camera",
+                "long",
+                "rtc",
+                "timed",
+                "timedlong",
+                "usb",
+                "usbcamera"
+            ]
         );
     }
 

@@ -143,7 +143,11 @@ pub fn component_diagram(
     let label_w: Vec<f32> = slots
         .iter()
         .zip(sides)
-        .map(|(v, side)| v.iter().map(|s| slot_label_width(side, s)).fold(0.0, f32::max))
+        .map(|(v, side)| {
+            v.iter()
+                .map(|s| slot_label_width(side, s))
+                .fold(0.0, f32::max)
+        })
         .collect();
     let has_service = |i: usize| slots[i].iter().any(|s| matches!(s, Slot::Service { .. }));
     let margin = |i: usize| {
@@ -238,14 +242,22 @@ pub fn component_diagram(
                                     s,
                                     r##"<a href="#{}" class="iface {}">"##,
                                     esc(&iface.anchor),
-                                    if iface.provided { "provided" } else { "required" }
+                                    if iface.provided {
+                                        "provided"
+                                    } else {
+                                        "required"
+                                    }
                                 );
                                 symbol(&mut s, *side, px, py, iface.provided);
                                 label(&mut s, *side, px, py, STEM + 14.0, &l1, &l2);
                                 s.push_str("</a>");
                             }
                             None => {
-                                let _ = write!(s, r##"<a href="#{}" class="port service">"##, esc(&port.anchor));
+                                let _ = write!(
+                                    s,
+                                    r##"<a href="#{}" class="port service">"##,
+                                    esc(&port.anchor)
+                                );
                                 label(&mut s, *side, px, py, 14.0, &l1, &l2);
                                 s.push_str("</a>");
                             }
@@ -284,7 +296,10 @@ fn symbol(s: &mut String, side: PortSide, x: f32, y: f32, provided: bool) {
     let r = 7.0;
     let (sx, sy) = (x + nx * 6.0, y + ny * 6.0);
     let (tx, ty) = (cx - nx * r, cy - ny * r);
-    let _ = write!(s, r#"<line class="stem" x1="{sx}" y1="{sy}" x2="{tx}" y2="{ty}"/>"#);
+    let _ = write!(
+        s,
+        r#"<line class="stem" x1="{sx}" y1="{sy}" x2="{tx}" y2="{ty}"/>"#
+    );
     if provided {
         let _ = write!(s, r#"<circle class="ball" cx="{cx}" cy="{cy}" r="{r}"/>"#);
     } else {
@@ -391,7 +406,10 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
         );
     };
     let arrow = |s: &mut String, d: &str| {
-        let _ = write!(s, r#"<path class="transition" d="{d}" marker-end="url(#lc-arrow)"/>"#);
+        let _ = write!(
+            s,
+            r#"<path class="transition" d="{d}" marker-end="url(#lc-arrow)"/>"#
+        );
     };
     // Initial pseudo-state and the states.
     s.push_str(r#"<circle class="initial" cx="20" cy="152" r="7"/>"#);
