@@ -14,6 +14,7 @@ use std::time::Instant;
 /// How to find and read profiles.
 #[derive(Debug, Clone, Default)]
 pub struct LoadOptions {
+    pub include: Vec<String>,
     pub exclude: Vec<String>,
     pub limits: Limits,
     /// Directories the walk must not enter (the output directory).
@@ -29,18 +30,38 @@ pub struct Loaded {
     pub files: usize,
 }
 
+/// Receives progress reports of a long build (the CLI draws a progress bar from them).
+pub trait Progress: Sync {
+    /// A new stage starts with `total` steps (0 = unknown).
+    fn stage(&self, _name: &str, _total: usize) {}
+    /// `n` more steps of the current stage are done.
+    fn advance(&self, _n: usize) {}
+}
+
+/// Reports nothing.
+pub struct Quiet;
+impl Progress for Quiet {}
+
 /// Finds and reads every profile below `input` (a directory or one file) and builds the
 /// catalogue. A file that cannot be read is reported and left out; the others still load.
 pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
+    load_with(input, opts, &Quiet)
+}
+
+/// [`load`] with progress reports.
+pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> Result<Loaded> {
+    progress.stage("finding profiles", 0);
     let walked = walk::walk(
         input,
         &WalkOptions {
+            include: opts.include.clone(),
             exclude: opts.exclude.clone(),
             skip_dirs: opts.skip_dirs.clone(),
             max_file_size: Some(opts.limits.max_file_size),
         },
     )?;
     let files = walked.sources.len() + walked.errors.len();
+    progress.stage("reading profiles", walked.sources.len());
     let results: Vec<(Option<LoadedProfile>, Vec<Diagnostic>)> = walked
         .sources
         .par_iter()
@@ -69,6 +90,17 @@ pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
         skipped: walked.skipped,
         files,
     })
+}
+
+/// Runs the `rtcdoc check` rules ([`crate::check::run`]) and adds their diagnostics to the
+/// catalogue's, keeping them sorted by file and position.
+pub fn add_check_diagnostics(catalog: &mut Catalog) {
+    let found = crate::check::run(catalog);
+    catalog.diagnostics.extend(found);
+    catalog.diagnostics.sort_by(|a, b| {
+        (&a.file, a.pos, a.severity, a.code, &a.message)
+            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
+    });
 }
 
 /// Everything `rtcdoc build` needs.
@@ -136,11 +168,19 @@ fn check_output_location(input: &Path, output: &Path) -> Result<()> {
 /// Runs a whole build and returns the loaded catalogue with the report. Nothing is written when
 /// a renderer fails or, with `strict`, when any profile has an error.
 pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
+    build_with(opts, &Quiet)
+}
+
+/// [`build`] with progress reports.
+pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loaded, BuildReport)> {
     let start = Instant::now();
     check_output_location(&opts.input, &opts.output)?;
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());
-    let loaded = load(&opts.input, &load_opts)?;
+    let mut loaded = load_with(&opts.input, &load_opts, progress)?;
+    // The `rtcdoc check` rules run on every build; their findings join the catalogue's
+    // diagnostics so they appear in the JSON output and the diagnostics page.
+    add_check_diagnostics(&mut loaded.catalog);
     let (errors, warnings, _) = loaded.catalog.counts();
     if opts.strict && errors > 0 {
         bail!("{errors} error(s) in the profiles (--strict); nothing was written");
@@ -157,6 +197,7 @@ pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
         site: &opts.site,
     };
     let mut files = 0;
+    progress.stage("rendering", formats.len());
     for f in &formats {
         let renderer = f
             .renderer()
@@ -171,6 +212,7 @@ pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
             renderer.render(&ctx, &sub)?
         };
         files += written;
+        progress.advance(1);
     }
     staging.commit()?;
     let report = BuildReport {

@@ -190,7 +190,8 @@ fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
     let mut used: HashMap<String, usize> = HashMap::new();
     let mut out = Vec::with_capacity(items.len());
     for (b, (_, dis)) in base.iter().zip(items) {
-        let mut s = if count[b] > 1 {
+        // `index` is reserved for the index page of each page folder.
+        let mut s = if count[b] > 1 || b == "index" {
             format!("{b}-{:06x}", fnv1a(dis.as_bytes()) as u32 & 0xff_ffff)
         } else {
             b.clone()
@@ -557,5 +558,7 @@ mod tests {
         assert!(s[0].starts_with("cam-") && s[1].starts_with("cam-"));
         assert_eq!(s[2], "other");
         assert_eq!(s, unique_slugs(&items));
+        let reserved = unique_slugs(&[("Index".to_string(), "x".to_string())]);
+        assert!(reserved[0].starts_with("index-"), "{reserved:?}");
     }
 }

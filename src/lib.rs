@@ -5,12 +5,17 @@
 
 pub mod build;
 pub mod catalog;
+pub mod check;
+pub mod config;
 pub mod constraint;
 pub mod diagnostic;
 pub mod i18n;
+pub mod incremental;
 pub mod model;
 pub mod output;
 pub mod parse;
 pub mod render;
+pub mod serve;
 pub mod types;
+pub mod value;
 pub mod walk;

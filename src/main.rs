@@ -1,23 +1,30 @@
-//! The `rtcdoc` command line: thin — parse arguments, call the library, report.
+//! The `rtcdoc` command line: thin — parse arguments, load the configuration, call the
+//! library, report.
 
-use clap::{Args, Parser, Subcommand};
-use rtcdoc::build::{self, BuildOptions, LoadOptions};
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
+use rtcdoc::build::{self, Progress};
+use rtcdoc::config::{self, Overrides};
 use rtcdoc::diagnostic::Severity;
-use rtcdoc::parse::Limits;
-use rtcdoc::render::{Format, SiteOptions};
-use std::path::PathBuf;
+use rtcdoc::i18n::Lang;
+use rtcdoc::render::Format;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(Parser)]
 #[command(
     name = "rtcdoc",
     version,
-    about = "Documentation for OpenRTM RT-Component profiles (RTC.xml / YAML)"
+    about = "Documentation for OpenRTM RT-Component profiles (RTC.xml / YAML)",
+    long_about = "rtcdoc turns a directory of RTC Profiles (RTC.xml as written by RTCBuilder, or the YAML \
+                  form) into an HTML site, Markdown, Doxygen input or JSON, with cross-links between \
+                  components that share data types and service interfaces, and validates profiles for CI."
 )]
 struct Cli {
     #[command(subcommand)]
     command: Command,
-    /// Print every file looked at and skipped, and every warning.
+    /// Print every file looked at and skipped, and every note.
     #[arg(short, long, global = true)]
     verbose: bool,
     /// Print only errors.
@@ -31,51 +38,54 @@ enum Command {
     Build(BuildArgs),
     /// Validate profiles (for CI); exits 1 when a profile has an error.
     Check(CheckArgs),
+    /// Build into memory, serve on 127.0.0.1, rebuild on changes and live-reload browsers.
+    Serve(ServeArgs),
+    /// Write an `rtcdoc.toml` with every setting commented out at its default.
+    Init(InitArgs),
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff) on standard output.
+    Man,
 }
 
-#[derive(Args, Clone)]
+#[derive(Args, Clone, Default)]
 struct InputArgs {
+    /// Glob of input-relative paths to take (repeatable); default: every file.
+    #[arg(long, value_name = "GLOB")]
+    include: Vec<String>,
     /// Glob of input-relative paths to leave out (repeatable), e.g. `--exclude '**/backup/**'`.
     #[arg(long, value_name = "GLOB")]
     exclude: Vec<String>,
-    /// Largest profile file accepted, in bytes.
-    #[arg(long, value_name = "BYTES", default_value_t = Limits::default().max_file_size)]
-    max_file_size: u64,
-    /// Deepest element / collection nesting accepted.
-    #[arg(long, value_name = "N", default_value_t = Limits::default().max_depth)]
-    max_depth: usize,
-}
-
-impl InputArgs {
-    fn load_options(&self) -> LoadOptions {
-        LoadOptions {
-            exclude: self.exclude.clone(),
-            limits: Limits {
-                max_file_size: self.max_file_size,
-                max_depth: self.max_depth,
-            },
-            skip_dirs: vec![],
-        }
-    }
+    /// Largest profile file accepted, in bytes [default: 16 MiB].
+    #[arg(long, value_name = "BYTES")]
+    max_file_size: Option<u64>,
+    /// Deepest element / collection nesting accepted [default: 64].
+    #[arg(long, value_name = "N")]
+    max_depth: Option<usize>,
+    /// Configuration file [default: rtcdoc.toml in the input directory or the current directory].
+    #[arg(long, value_name = "FILE")]
+    config: Option<PathBuf>,
 }
 
 #[derive(Args)]
 struct BuildArgs {
-    /// Directory (or single file) of profiles.
-    #[arg(default_value = ".")]
-    input: PathBuf,
-    /// Output directory; replaced on success.
-    #[arg(short, long, default_value = "site")]
-    output: PathBuf,
-    /// Output format(s); several at once go to OUT/<format>/.
-    #[arg(short, long, value_enum, value_delimiter = ',', default_value = "html")]
+    /// Directory (or single file) of profiles [default: the config's `input`, else `.`].
+    input: Option<PathBuf>,
+    /// Output directory, replaced on success [default: `site`].
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    /// Output format(s); several at once go to OUT/<format>/ [default: html].
+    #[arg(short, long, value_enum, value_delimiter = ',')]
     format: Vec<Format>,
     /// Fail without writing anything when any profile has an error.
     #[arg(long)]
     strict: bool,
     /// Title of the catalogue.
-    #[arg(long, default_value = "RT-Component catalogue")]
-    title: String,
+    #[arg(long)]
+    title: Option<String>,
     /// URL the site is published at (for sitemap.xml).
     #[arg(long, value_name = "URL")]
     base_url: Option<String>,
@@ -83,19 +93,62 @@ struct BuildArgs {
     #[arg(long, value_name = "DIR")]
     theme: Option<PathBuf>,
     /// Language of generated labels (profile text is shown as written).
-    #[arg(long, value_enum, default_value = "en")]
-    language: rtcdoc::i18n::Lang,
+    #[arg(long, value_enum)]
+    language: Option<Lang>,
     #[command(flatten)]
     input_args: InputArgs,
 }
 
 #[derive(Args)]
 struct CheckArgs {
-    /// Directories or files to check.
-    #[arg(default_value = ".")]
+    /// Directories or files to check [default: `.`].
     paths: Vec<PathBuf>,
+    /// Output format: human (rustc-like, on stderr), json or sarif (on stdout).
+    #[arg(long, value_enum, default_value = "human")]
+    format: CheckFormat,
+    /// Treat a class of findings as errors for the exit status (`--deny warnings`).
+    #[arg(long, value_enum, value_name = "WHAT")]
+    deny: Vec<Deny>,
+    /// Print the rationale and spec section of a rule code (e.g. `--explain RTC303`) and exit.
+    #[arg(long, value_name = "CODE")]
+    explain: Option<String>,
     #[command(flatten)]
     input_args: InputArgs,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum CheckFormat {
+    Human,
+    Json,
+    Sarif,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Deny {
+    /// Warnings make the check fail (exit 1).
+    Warnings,
+}
+
+#[derive(Args)]
+struct ServeArgs {
+    #[command(flatten)]
+    build: BuildArgs,
+    /// Port on 127.0.0.1 [default: 3000; 0 picks a free one].
+    #[arg(short, long)]
+    port: Option<u16>,
+    /// Open the site in the default browser.
+    #[arg(long)]
+    open: bool,
+}
+
+#[derive(Args)]
+struct InitArgs {
+    /// Directory to write `rtcdoc.toml` into.
+    #[arg(default_value = ".")]
+    dir: PathBuf,
+    /// Overwrite an existing `rtcdoc.toml`.
+    #[arg(long)]
+    force: bool,
 }
 
 fn main() -> ExitCode {
@@ -125,34 +178,105 @@ fn print_diagnostics(diags: &[rtcdoc::diagnostic::Diagnostic], verbose: bool, qu
     }
 }
 
+/// A progress bar on standard error, drawn only when it is a terminal.
+struct Bar(indicatif::ProgressBar);
+
+impl Bar {
+    fn new(enabled: bool) -> Bar {
+        if enabled && std::io::stderr().is_terminal() {
+            let b = indicatif::ProgressBar::new(0);
+            b.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{spinner} {msg:20} [{bar:30}] {pos}/{len}",
+                )
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+                .progress_chars("=> "),
+            );
+            Bar(b)
+        } else {
+            Bar(indicatif::ProgressBar::hidden())
+        }
+    }
+}
+
+impl Progress for Bar {
+    fn stage(&self, name: &str, total: usize) {
+        self.0.set_message(name.to_string());
+        self.0.set_length(total as u64);
+        self.0.set_position(0);
+    }
+    fn advance(&self, n: usize) {
+        self.0.inc(n as u64);
+    }
+}
+
+fn load_config(input: Option<&Path>, explicit: Option<&Path>) -> anyhow::Result<config::Loaded> {
+    let cwd = PathBuf::from(".");
+    let mut search: Vec<&Path> = Vec::new();
+    if let Some(i) = input {
+        search.push(i);
+    }
+    search.push(&cwd);
+    config::load(explicit, &search)
+}
+
+fn overrides(args: &BuildArgs) -> Overrides {
+    let i = &args.input_args;
+    Overrides {
+        input: args.input.clone(),
+        output: args.output.clone(),
+        formats: args.format.clone(),
+        strict: args.strict,
+        title: args.title.clone(),
+        base_url: args.base_url.clone(),
+        theme: args.theme.clone(),
+        language: args.language,
+        include: i.include.clone(),
+        exclude: i.exclude.clone(),
+        max_file_size: i.max_file_size,
+        max_depth: i.max_depth,
+    }
+}
+
 fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
         Command::Build(args) => {
-            let opts = BuildOptions {
-                input: args.input.clone(),
-                output: args.output.clone(),
-                formats: args.format.clone(),
-                strict: args.strict,
-                load: args.input_args.load_options(),
-                site: SiteOptions {
-                    title: args.title.clone(),
-                    base_url: args.base_url.clone(),
-                    theme_dir: args.theme.clone(),
-                    language: args.language,
-                },
-            };
-            let (loaded, report) = build::build(&opts)?;
+            let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
+            let opts = config::build_options(&file, &overrides(args));
+            let bar = Bar::new(!cli.quiet);
+            let result = build::build_with(&opts, &bar);
+            bar.0.finish_and_clear();
+            let (loaded, report) = result?;
             if cli.verbose {
+                if let Some(p) = &file.path {
+                    eprintln!("configuration: {}", p.display());
+                }
                 for s in &loaded.skipped {
                     eprintln!("skipped {}: {}", s.rel, s.reason);
                 }
             }
-            print_diagnostics(&loaded.catalog.diagnostics, cli.verbose, cli.quiet);
+            // Loader diagnostics as before; the check rules' findings are summed up in one
+            // line (all of them with --verbose, and in the JSON output / diagnostics page).
+            let (loader, rules): (Vec<_>, Vec<_>) = loaded
+                .catalog
+                .diagnostics
+                .iter()
+                .cloned()
+                .partition(|d| d.code < "RTC100");
+            print_diagnostics(&loader, cli.verbose, cli.quiet);
+            if cli.verbose {
+                print_diagnostics(&rules, true, false);
+            }
             if !cli.quiet {
                 eprintln!(
-                    "built {} profile(s) into {} ({} file(s)), {} error(s), {} warning(s) in {:.2}s",
+                    "{} (details: rtcdoc check {})",
+                    rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
+                    opts.input.display()
+                );
+                eprintln!(
+                    "built {} profile(s) into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
                     report.profiles,
-                    args.output.display(),
+                    opts.output.display(),
                     report.files_written,
                     report.errors,
                     report.warnings,
@@ -161,25 +285,225 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
-        Command::Check(args) => {
-            let mut failed = false;
-            for p in &args.paths {
-                let loaded = build::load(p, &args.input_args.load_options())?;
-                print_diagnostics(&loaded.catalog.diagnostics, cli.verbose, cli.quiet);
-                let (e, w, _) = loaded.catalog.counts();
-                if !cli.quiet {
-                    eprintln!(
-                        "checked {} profile(s): {e} error(s), {w} warning(s)",
-                        loaded.catalog.components.len()
-                    );
-                }
-                failed |= e > 0;
+        Command::Check(args) => check(cli, args),
+        Command::Serve(args) => {
+            let file = load_config(
+                args.build.input.as_deref(),
+                args.build.input_args.config.as_deref(),
+            )?;
+            let mut build = config::build_options(&file, &overrides(&args.build));
+            build.formats = vec![Format::Html];
+            let serve_cfg = file.config.serve.clone().unwrap_or_default();
+            let mut watch = Vec::new();
+            if let Some(t) = &build.site.theme_dir {
+                watch.push(t.clone());
             }
-            Ok(if failed {
-                ExitCode::from(1)
-            } else {
-                ExitCode::SUCCESS
-            })
+            if let Some(p) = &file.path {
+                watch.push(p.clone());
+            }
+            let quiet = cli.quiet;
+            let (input, explicit, cli_over) = (
+                args.build.input.clone(),
+                args.build.input_args.config.clone(),
+                overrides(&args.build),
+            );
+            let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
+                let file = load_config(input.as_deref(), explicit.as_deref())?;
+                let mut b = config::build_options(&file, &cli_over);
+                b.formats = vec![Format::Html];
+                Ok(b)
+            });
+            let handle = rtcdoc::serve::start(
+                rtcdoc::serve::ServeOptions {
+                    build,
+                    port: args.port.or(serve_cfg.port).unwrap_or(3000),
+                    watch,
+                    config_file: file.path.clone(),
+                    reconfigure: Some(reconfigure),
+                },
+                std::sync::Arc::new(move |line: &str| {
+                    if !quiet || line.starts_with("error") {
+                        eprintln!("{line}");
+                    }
+                }),
+            )?;
+            eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
+            if args.open || serve_cfg.open.unwrap_or(false) {
+                rtcdoc::serve::open_browser(&handle.url());
+            }
+            handle.wait();
+            Ok(ExitCode::SUCCESS)
         }
+        Command::Init(args) => {
+            let path = args.dir.join(config::FILE_NAME);
+            if path.exists() && !args.force {
+                anyhow::bail!(
+                    "`{}` already exists (use --force to overwrite it)",
+                    path.display()
+                );
+            }
+            std::fs::create_dir_all(&args.dir)?;
+            std::fs::write(&path, config::template())?;
+            if !cli.quiet {
+                eprintln!("wrote {}", path.display());
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Completions { shell } => {
+            clap_complete::generate(
+                *shell,
+                &mut Cli::command(),
+                "rtcdoc",
+                &mut std::io::stdout(),
+            );
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Man => {
+            clap_mangen::Man::new(Cli::command()).render(&mut std::io::stdout())?;
+            Ok(ExitCode::SUCCESS)
+        }
+    }
+}
+
+/// Where the files of an input live: the input directory, or the parent of an input file
+/// (diagnostics name files relative to it, like the walk does).
+fn input_root(input: &std::path::Path) -> PathBuf {
+    if input.is_file() {
+        input
+            .parent()
+            .map(std::path::Path::to_path_buf)
+            .unwrap_or_default()
+    } else {
+        input.to_path_buf()
+    }
+}
+
+/// `rtcdoc check`: exit 0 when clean, 1 on errors (or warnings with `--deny warnings`), 2 on
+/// usage or I/O problems.
+fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
+    use rtcdoc::check::{self, report};
+    if let Some(code) = &args.explain {
+        return Ok(match check::rule(code) {
+            Some(r) => {
+                print!("{}", check::explain(r));
+                ExitCode::SUCCESS
+            }
+            None => {
+                eprintln!("error: no rule has the code `{code}` (codes: RTC001–RTC010, RTC101…RTC505; see `rtcdoc check --help`)");
+                ExitCode::from(2)
+            }
+        });
+    }
+    let paths = if args.paths.is_empty() {
+        vec![PathBuf::from(".")]
+    } else {
+        args.paths.clone()
+    };
+    // Same input options as `build`: rtcdoc.toml, then the command line.
+    let file = load_config(
+        paths.first().map(PathBuf::as_path),
+        args.input_args.config.as_deref(),
+    )?;
+    let mut opts = config::build_options(
+        &file,
+        &Overrides {
+            include: args.input_args.include.clone(),
+            exclude: args.input_args.exclude.clone(),
+            max_file_size: args.input_args.max_file_size,
+            max_depth: args.input_args.max_depth,
+            ..Default::default()
+        },
+    )
+    .load;
+    opts.skip_dirs.clear();
+    let mut reports = Vec::new();
+    for p in &paths {
+        let loaded = build::load(p, &opts)?;
+        let mut r = check::check(&loaded.catalog);
+        // Name files as the user can open them: relative to the current directory.
+        let root = input_root(p);
+        for d in &mut r.diagnostics {
+            d.file = display_path(&root, &d.file);
+        }
+        for c in &mut r.coverage.components {
+            c.source = display_path(&root, &c.source);
+        }
+        if cli.verbose {
+            for s in &loaded.skipped {
+                eprintln!("skipped {}: {}", display_path(&root, &s.rel), s.reason);
+            }
+        }
+        reports.push(r);
+    }
+    let report = check::Report::merge(reports);
+    let deny_warnings = args.deny.contains(&Deny::Warnings);
+    match args.format {
+        CheckFormat::Json => {
+            print_stdout(&serde_json::to_string_pretty(&report::to_json(&report))?)?
+        }
+        CheckFormat::Sarif => {
+            print_stdout(&serde_json::to_string_pretty(&report::to_sarif(&report))?)?
+        }
+        CheckFormat::Human => {
+            use std::io::IsTerminal;
+            let colour = std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+                && std::io::stderr().is_terminal();
+            let choice = if colour {
+                ColorChoice::Auto
+            } else {
+                ColorChoice::Never
+            };
+            let stream = StandardStream::stderr(choice);
+            let verbosity = if cli.quiet {
+                report::Verbosity::Quiet
+            } else if cli.verbose {
+                report::Verbosity::Verbose
+            } else {
+                report::Verbosity::Normal
+            };
+            let mut lock = stream.lock();
+            report::write_human(&mut lock, &report.diagnostics, verbosity, &mut |f| {
+                let bytes = std::fs::read(f).ok()?;
+                String::from_utf8(bytes).ok()
+            })?;
+            drop(lock);
+            if !cli.quiet {
+                let s = &report.summary;
+                let hidden = if verbosity == report::Verbosity::Verbose || s.infos == 0 {
+                    String::new()
+                } else {
+                    " (infos shown with --verbose)".to_string()
+                };
+                eprintln!(
+                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{})",
+                    s.one_line(),
+                    report.coverage.components.len(),
+                    report.coverage.percent,
+                    report.coverage.documented,
+                    report.coverage.total
+                );
+            }
+        }
+    }
+    Ok(if report.failed(deny_warnings) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// `root/rel` with forward slashes and without a leading `./`.
+fn display_path(root: &std::path::Path, rel: &str) -> String {
+    let joined = root.join(rel).to_string_lossy().replace('\\', "/");
+    joined.strip_prefix("./").unwrap_or(&joined).to_string()
+}
+
+/// Prints a document on stdout; a closed pipe (`| head`) is not an error.
+fn print_stdout(text: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match writeln!(out, "{text}").and_then(|_| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        r => r,
     }
 }

@@ -31,6 +31,8 @@ pub struct Skipped {
 /// Options of a walk.
 #[derive(Debug, Clone, Default)]
 pub struct WalkOptions {
+    /// Glob patterns (matched against the input-relative path) to take; empty = every file.
+    pub include: Vec<String>,
     /// Glob patterns (matched against the input-relative path) to leave out.
     pub exclude: Vec<String>,
     /// Directories never to enter (e.g. the output directory).
@@ -125,6 +127,7 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
         return Err(WalkError::Missing(input.to_path_buf()));
     }
     let globs = build_globs(&opts.exclude)?;
+    let includes = build_globs(&opts.include)?;
     let skip_dirs: Vec<PathBuf> = opts
         .skip_dirs
         .iter()
@@ -184,6 +187,13 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
             result.skipped.push(Skipped {
                 rel,
                 reason: "excluded by pattern".into(),
+            });
+            continue;
+        }
+        if !opts.include.is_empty() && !includes.is_match(&rel) {
+            result.skipped.push(Skipped {
+                rel,
+                reason: "not matched by an include pattern".into(),
             });
             continue;
         }

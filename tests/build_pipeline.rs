@@ -240,7 +240,9 @@ fn corpus_json_loses_nothing() {
         .catalog
         .diagnostics
         .iter()
-        .filter(|d| d.is_error())
+        // Reader errors only: the `rtcdoc check` rules (RTC1xx…) rightly find real problems
+        // in real profiles (see tests/check_rules.rs).
+        .filter(|d| d.is_error() && d.code < "RTC100")
         .map(|d| d.to_string())
         .collect();
     assert!(errors.is_empty(), "corpus errors: {errors:#?}");
@@ -264,7 +266,9 @@ fn whole_corpus_loads_without_errors() {
         .catalog
         .diagnostics
         .iter()
-        .filter(|d| d.is_error())
+        // Reader errors only: the `rtcdoc check` rules (RTC1xx…) rightly find real problems
+        // in real profiles (see tests/check_rules.rs).
+        .filter(|d| d.is_error() && d.code < "RTC100")
         .map(|d| d.to_string())
         .collect();
     assert!(errors.is_empty(), "corpus errors: {errors:#?}");

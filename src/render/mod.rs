@@ -3,8 +3,11 @@
 //! A renderer receives the finished [`Catalog`] and writes files through a [`Sink`]; it never
 //! re-parses and never knows which input format a profile came from.
 
+pub mod doxygen;
+pub mod facts;
 pub mod html;
 pub mod json;
+pub mod markdown;
 
 use crate::catalog::Catalog;
 use crate::output::Sink;
@@ -51,7 +54,17 @@ pub trait Renderer: Sync {
 
 /// Output formats known to `rtcdoc build`.
 #[derive(
-    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, clap::ValueEnum, serde::Serialize,
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    Hash,
+    PartialOrd,
+    Ord,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
 )]
 #[serde(rename_all = "lowercase")]
 pub enum Format {
@@ -76,6 +89,8 @@ impl Format {
         match self {
             Format::Html => Some(Box::new(html::HtmlRenderer)),
             Format::Json => Some(Box::new(json::JsonRenderer)),
+            Format::Markdown => Some(Box::new(markdown::MarkdownRenderer)),
+            Format::Doxygen => Some(Box::new(doxygen::DoxygenRenderer)),
             _ => None,
         }
     }

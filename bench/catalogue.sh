@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Catalogue-scale benchmark: rtcdoc vs Hugo vs the file-creation floor (cp -r).
+#
+# usage: bench/catalogue.sh [N ...]        (default: 100 1000 10000)
+#
+# For each N it generates a synthetic catalogue (bench/gen_catalogue.py), then measures with
+# /usr/bin/time -v, for each output format: wall time, profiles/s, files/s and peak RSS;
+# `rtcdoc check`; Hugo rendering rtcdoc's own Markdown output with a minimal layout; and
+# `cp -r` of rtcdoc's HTML output (the floor of creating that many files on this disk).
+# Installs hugo and GNU time with apt-get when missing (root only). Prints a Markdown table.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sizes=("$@")
+[ ${#sizes[@]} -eq 0 ] && sizes=(100 1000 10000)
+work=${BENCH_DIR:-/tmp/rtcdoc-bench}
+mkdir -p "$work"
+
+if ! command -v hugo >/dev/null || [ ! -x /usr/bin/time ]; then
+  if [ "$(id -u)" = 0 ]; then
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq hugo time >/dev/null
+  fi
+fi
+cargo build --release --quiet
+bin=$PWD/target/release/rtcdoc
+
+# measure LABEL CMD...: runs CMD under /usr/bin/time, prints "seconds rss_mb"
+measure() {
+  local log="$work/time.log"
+  /usr/bin/time -v "$@" >"$work/cmd.out" 2>"$log" || { echo "failed: $*" >&2; tail -5 "$log" >&2; return 1; }
+  local wall rss
+  wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' "$log")
+  rss=$(awk -F': ' '/Maximum resident set size/ {print $2}' "$log")
+  python3 - "$wall" "$rss" <<'PY'
+import sys
+w, rss = sys.argv[1], int(sys.argv[2])
+parts = [float(p) for p in w.split(":")]
+s = parts[-1] + (parts[-2] * 60 if len(parts) > 1 else 0) + (parts[-3] * 3600 if len(parts) > 2 else 0)
+print(f"{s:.2f} {rss/1024:.0f}")
+PY
+}
+
+files_in() { find "$1" -type f | wc -l; }
+
+echo "| N | what | wall s | profiles/s | files | files/s | peak RSS MB |"
+echo "|---|---|---:|---:|---:|---:|---:|"
+declare -A html_time
+for n in "${sizes[@]}"; do
+  src="$work/cat-$n"
+  python3 bench/gen_catalogue.py "$n" "$src" >/dev/null
+  for fmt in html markdown doxygen json; do
+    out="$work/out-$n-$fmt"
+    rm -rf "$out"
+    read -r s rss < <(measure "$bin" build "$src" -f "$fmt" -o "$out" -q)
+    f=$(files_in "$out")
+    python3 -c "print(f'| $n | rtcdoc build --format $fmt | $s | {$n/max($s,0.001):.0f} | $f | {$f/max($s,0.001):.0f} | $rss |')"
+    [ "$fmt" = html ] && html_time[$n]=$s
+  done
+  read -r s rss < <(measure "$bin" check "$src" -q || true)
+  python3 -c "print(f'| $n | rtcdoc check | $s | {$n/max($s,0.001):.0f} | - | - | $rss |')"
+
+  # The floor: copying rtcdoc's own HTML tree.
+  rm -rf "$work/copy-$n"
+  read -r s rss < <(measure cp -r "$work/out-$n-html" "$work/copy-$n")
+  f=$(files_in "$work/copy-$n")
+  python3 -c "print(f'| $n | cp -r of the HTML output (floor) | $s | - | $f | {$f/max($s,0.001):.0f} | $rss |')"
+  floor=$s
+
+  # Hugo on rtcdoc's Markdown output, minimal layout.
+  if command -v hugo >/dev/null; then
+    site="$work/hugo-$n"
+    rm -rf "$site"
+    mkdir -p "$site/layouts/_default"
+    cp -r "$work/out-$n-markdown" "$site/content"
+    rm -f "$site/content/.rtcdoc-output"
+    printf 'baseURL = "http://localhost/"\ntitle = "bench"\ndisableKinds = ["taxonomy", "term", "RSS"]\n[markup.goldmark.renderer]\nunsafe = true\n' >"$site/hugo.toml"
+    printf '<!DOCTYPE html><html><head><title>{{ .Title }}</title></head><body>{{ .Content }}</body></html>\n' >"$site/layouts/_default/single.html"
+    printf '<!DOCTYPE html><html><head><title>{{ .Title }}</title></head><body>{{ .Content }}</body></html>\n' >"$site/layouts/_default/list.html"
+    read -r s rss < <(measure hugo --source "$site" --quiet --destination "$site/public")
+    f=$(find "$site/public" -name '*.html' | wc -l)
+    python3 -c "print(f'| $n | hugo on the Markdown output | $s | {$n/max($s,0.001):.0f} | $f | {$f/max($s,0.001):.0f} | $rss |')"
+    hugo_time=$s
+    hugo_pages=$f
+    rt_pages=$(find "$work/out-$n-html" -name '*.html' | wc -l)
+    python3 -c "h=$hugo_pages/max($hugo_time,0.001); r=$rt_pages/max(${html_time[$n]},0.001); print(f'|   | ratio: rtcdoc HTML pages/s ÷ hugo pages/s = {r/h:.1f}× ; rtcdoc HTML time ÷ cp -r floor = {${html_time[$n]}/max($floor,0.001):.2f} | | | | | |')"
+  fi
+done
+if [ ${#sizes[@]} -ge 2 ]; then
+  a=${sizes[-2]}; b=${sizes[-1]}
+  python3 -c "print(f'\nHTML time ratio N=$b / N=$a: {${html_time[$b]}/max(${html_time[$a]},0.001):.2f} (linear would be {$b/$a:.0f})')"
+fi

@@ -1,0 +1,189 @@
+//! `rtcdoc check`: validation rules over the loaded catalogue, for CI.
+//!
+//! Every rule has a stable code, a default severity, a short name, an explanation citing the
+//! spec section it comes from and a hint ([`registry::RULES`]). Codes: RTC001–RTC010 come from
+//! the loader and the catalogue; RTC1xx schema level (spec chapter 6), RTC2xx spec semantics
+//! (chapter 2), RTC3xx values and constraints, RTC4xx catalogue level, RTC5xx doc coverage.
+//!
+//! [`run`] returns the rule diagnostics (not the loader's); [`check`] returns a [`Report`] with
+//! the loader's and the rules' diagnostics together, counts and the documentation coverage.
+
+pub mod registry;
+pub mod report;
+mod rules;
+
+pub use registry::{explain, rule, Rule, RULES};
+pub use rules::check_date_time;
+
+use crate::catalog::Catalog;
+use crate::diagnostic::{Diagnostic, Severity};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// Runs every rule over every component and over the catalogue. The catalogue's own
+/// diagnostics (loader codes, RTC010 duplicate ids) are not repeated here.
+pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
+    let mut out: Vec<Diagnostic> = catalog
+        .components
+        .iter()
+        .flat_map(rules::component)
+        .collect();
+    out.extend(rules::catalogue(catalog));
+    sort(&mut out);
+    out
+}
+
+fn sort(d: &mut [Diagnostic]) {
+    d.sort_by(|a, b| {
+        (&a.file, a.pos, a.severity, a.code, &a.message)
+            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
+    });
+}
+
+/// Documentation coverage of one component.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct ComponentCoverage {
+    pub source: String,
+    pub name: String,
+    /// Items with a non-empty description (component, implemented actions, ports, interfaces,
+    /// configurations).
+    pub documented: usize,
+    pub total: usize,
+    /// `documented / total` in percent (100 when there is nothing to document).
+    pub percent: f64,
+}
+
+/// Documentation coverage of the catalogue.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Coverage {
+    pub documented: usize,
+    pub total: usize,
+    pub percent: f64,
+    pub components: Vec<ComponentCoverage>,
+}
+
+fn percent(documented: usize, total: usize) -> f64 {
+    if total == 0 {
+        100.0
+    } else {
+        // One decimal, so JSON output is stable and readable.
+        (documented as f64 * 1000.0 / total as f64).round() / 10.0
+    }
+}
+
+/// Computes the documentation coverage of every component and of the whole catalogue.
+pub fn coverage(catalog: &Catalog) -> Coverage {
+    let components: Vec<ComponentCoverage> = catalog
+        .components
+        .iter()
+        .map(|c| {
+            let (documented, total) = rules::doc_items(&c.profile, None);
+            ComponentCoverage {
+                source: c.source.clone(),
+                name: c.profile.name().to_string(),
+                documented,
+                total,
+                percent: percent(documented, total),
+            }
+        })
+        .collect();
+    let documented = components.iter().map(|c| c.documented).sum();
+    let total = components.iter().map(|c| c.total).sum();
+    Coverage {
+        documented,
+        total,
+        percent: percent(documented, total),
+        components,
+    }
+}
+
+/// Counts of a set of diagnostics.
+#[derive(Debug, Clone, Default, Serialize, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Summary {
+    pub errors: usize,
+    pub warnings: usize,
+    pub infos: usize,
+    /// Number of diagnostics per code.
+    pub by_code: BTreeMap<String, usize>,
+}
+
+impl Summary {
+    pub fn of(diagnostics: &[Diagnostic]) -> Summary {
+        let mut s = Summary::default();
+        for d in diagnostics {
+            match d.severity {
+                Severity::Error => s.errors += 1,
+                Severity::Warning => s.warnings += 1,
+                Severity::Info => s.infos += 1,
+            }
+            *s.by_code.entry(d.code.to_string()).or_default() += 1;
+        }
+        s
+    }
+
+    /// `check: 0 errors, 3 warnings, 12 infos`.
+    pub fn one_line(&self) -> String {
+        format!(
+            "check: {} error{}, {} warning{}, {} info{}",
+            self.errors,
+            if self.errors == 1 { "" } else { "s" },
+            self.warnings,
+            if self.warnings == 1 { "" } else { "s" },
+            self.infos,
+            if self.infos == 1 { "" } else { "s" }
+        )
+    }
+}
+
+/// Everything `rtcdoc check` reports about a catalogue.
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    /// Loader, catalogue and rule diagnostics, sorted by file and position.
+    pub diagnostics: Vec<Diagnostic>,
+    pub summary: Summary,
+    pub coverage: Coverage,
+}
+
+/// Runs the rules and gathers the catalogue's diagnostics, counts and coverage.
+pub fn check(catalog: &Catalog) -> Report {
+    let mut diagnostics = catalog.diagnostics.clone();
+    diagnostics.extend(run(catalog));
+    sort(&mut diagnostics);
+    Report {
+        summary: Summary::of(&diagnostics),
+        coverage: coverage(catalog),
+        diagnostics,
+    }
+}
+
+impl Report {
+    /// Merges the reports of several inputs (`rtcdoc check a b`).
+    pub fn merge(reports: Vec<Report>) -> Report {
+        let mut diagnostics = Vec::new();
+        let mut components = Vec::new();
+        for r in reports {
+            diagnostics.extend(r.diagnostics);
+            components.extend(r.coverage.components);
+        }
+        let documented = components.iter().map(|c| c.documented).sum();
+        let total = components.iter().map(|c| c.total).sum();
+        Report {
+            summary: Summary::of(&diagnostics),
+            coverage: Coverage {
+                documented,
+                total,
+                percent: percent(documented, total),
+                components,
+            },
+            diagnostics,
+        }
+    }
+
+    /// Whether the check fails: errors, or warnings too with `deny_warnings`.
+    pub fn failed(&self, deny_warnings: bool) -> bool {
+        self.summary.errors > 0 || (deny_warnings && self.summary.warnings > 0)
+    }
+}

@@ -1,0 +1,465 @@
+//! The rule registry: every diagnostic code with its default severity, short name, rationale
+//! (citing the spec section it comes from) and a generic hint. `rtcdoc check --explain CODE`
+//! prints an entry; the SARIF output lists them as `tool.driver.rules`.
+
+use crate::diagnostic::Severity;
+
+/// One rule (or loader diagnostic) and its documentation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Rule {
+    /// Stable code, e.g. `RTC101`. Codes are never reused.
+    pub code: &'static str,
+    pub severity: Severity,
+    /// Short kebab-case name (`missing-required`).
+    pub name: &'static str,
+    /// One-line summary.
+    pub summary: &'static str,
+    /// Why the rule exists and what it checks exactly.
+    pub explanation: &'static str,
+    /// The spec section(s) it comes from (spec v0.2 numbering).
+    pub spec: &'static str,
+    /// What to do about a finding.
+    pub hint: &'static str,
+}
+
+// Loader codes (RTC001–RTC010, produced by the readers, the walk and the catalogue).
+pub const MALFORMED: &str = "RTC001";
+// Schema level (spec chapter 6).
+pub const MISSING_REQUIRED: &str = "RTC101";
+pub const INVALID_ENUM: &str = "RTC102";
+pub const EXECUTION_RATE: &str = "RTC103";
+pub const MAX_INSTANCES: &str = "RTC104";
+pub const DATE_TIME: &str = "RTC105";
+pub const BOOLEAN: &str = "RTC106";
+// Spec semantics (chapter 2).
+pub const ID_FORMAT: &str = "RTC201";
+pub const ID_MISMATCH: &str = "RTC202";
+pub const VENDOR_VERSION_CHARS: &str = "RTC203";
+pub const NAME_WHITESPACE: &str = "RTC204";
+pub const DUPLICATE_PORT: &str = "RTC205";
+pub const DUPLICATE_INTERFACE: &str = "RTC206";
+pub const DUPLICATE_PARAMETER: &str = "RTC207";
+pub const COMPONENT_KIND: &str = "RTC208";
+pub const EXECUTION_TYPE: &str = "RTC209";
+pub const INTERFACE_TYPE: &str = "RTC210";
+pub const DATAFLOW_TYPE: &str = "RTC211";
+pub const SUBSCRIPTION_TYPE: &str = "RTC212";
+// Values and constraints.
+pub const DEFAULT_TYPE: &str = "RTC301";
+pub const UNKNOWN_TYPE: &str = "RTC302";
+pub const CONSTRAINT_VIOLATED: &str = "RTC303";
+pub const CONSTRAINT_LITERAL: &str = "RTC304";
+pub const CONSTRAINT_MALFORMED: &str = "RTC305";
+// Catalogue level.
+pub const UNPROVIDED_INTERFACE: &str = "RTC401";
+pub const IDL_CONFLICT: &str = "RTC402";
+// Document coverage.
+pub const DOC_COMPONENT: &str = "RTC501";
+pub const DOC_PORT: &str = "RTC502";
+pub const DOC_INTERFACE: &str = "RTC503";
+pub const DOC_CONFIGURATION: &str = "RTC504";
+pub const DOC_ACTION: &str = "RTC505";
+
+use Severity::{Error, Info, Warning};
+
+/// Every code, in order.
+pub static RULES: &[Rule] = &[
+    Rule {
+        code: "RTC001",
+        severity: Error,
+        name: "malformed",
+        summary: "the file is not well-formed XML or YAML",
+        explanation: "The reader could not parse the file at all, so no rule could run on it. The position points at the first syntax error the parser met.",
+        spec: "3.1 (UML-XML mapping), 3.2 (UML-YAML mapping)",
+        hint: "fix the syntax error at the position shown (an unclosed tag, a bad indentation, a stray character)",
+    },
+    Rule {
+        code: "RTC002",
+        severity: Error,
+        name: "too-large",
+        summary: "the file is larger than the configured limit",
+        explanation: "Profiles are small (a few kB). A file above the limit (16 MiB by default) is refused so that a hostile or mistaken input cannot exhaust memory.",
+        spec: "— (robustness limit of rtcdoc)",
+        hint: "raise --max-file-size if the file is genuine, or exclude it with --exclude",
+    },
+    Rule {
+        code: "RTC003",
+        severity: Error,
+        name: "too-deep",
+        summary: "elements or YAML collections nest deeper than the configured limit",
+        explanation: "Real profiles nest about ten levels deep (constraints add a few). A deeper file is refused so that parsing stays bounded.",
+        spec: "— (robustness limit of rtcdoc)",
+        hint: "raise --max-depth if the nesting is genuine",
+    },
+    Rule {
+        code: "RTC004",
+        severity: Error,
+        name: "entity",
+        summary: "a DOCTYPE with entity declarations, or an undefined entity reference",
+        explanation: "Entity declarations enable entity-expansion attacks (billion laughs) and external file reads; RTC profiles never need them (the XSD of chapter 6 declares no DTD).",
+        spec: "6 (XML schema)",
+        hint: "remove the DOCTYPE and write the text directly; use the predefined entities (&amp; &lt; &gt; &quot; &apos;) or numeric character references",
+    },
+    Rule {
+        code: "RTC005",
+        severity: Error,
+        name: "encoding",
+        summary: "bytes that are not valid in the declared (or default UTF-8) encoding",
+        explanation: "The file declares (or defaults to) an encoding its bytes do not follow, so text would be garbled.",
+        spec: "3.1.1 (XML basic types)",
+        hint: "save the file as UTF-8, or declare the encoding it is really in (e.g. encoding=\"Shift_JIS\")",
+    },
+    Rule {
+        code: "RTC006",
+        severity: Warning,
+        name: "unknown-value",
+        summary: "an attribute, element or key the spec does not define",
+        explanation: "The value is kept as an extra property and shown on the component page, but it is not part of the RTC Profile format, so other tools will ignore it. Often a typo of a known name.",
+        spec: "6 (XSD), 7 (YAML schema)",
+        hint: "check the spelling against the XSD / YAML schema; remove the value if it is not needed",
+    },
+    Rule {
+        code: "RTC007",
+        severity: Error,
+        name: "io",
+        summary: "the file could not be read",
+        explanation: "An operating-system error (permissions, a vanished file) stopped reading the file.",
+        spec: "—",
+        hint: "check the file's permissions",
+    },
+    Rule {
+        code: "RTC008",
+        severity: Error,
+        name: "yaml-structure",
+        summary: "a YAML alias expands too much, or the YAML structure is not a profile",
+        explanation: "Either aliases expand beyond the limit (an alias bomb) or the document does not have the `rtcProfile` structure of chapter 7.",
+        spec: "7 (YAML schema), 3.2",
+        hint: "write the profile with the keys of chapter 7 and without deeply nested aliases",
+    },
+    Rule {
+        code: "RTC009",
+        severity: Warning,
+        name: "shape",
+        summary: "a value has the wrong shape for its place",
+        explanation: "A map or list where text is expected (or the reverse). The value is kept as an extra property.",
+        spec: "6 (XSD), 7 (YAML schema)",
+        hint: "write a plain value where the schema expects one",
+    },
+    Rule {
+        code: "RTC010",
+        severity: Warning,
+        name: "duplicate-id",
+        summary: "two profiles declare the same component id",
+        explanation: "The id identifies a component uniquely (`RTC:<vendor>:<category>:<name>:<version>`). Two profiles with the same id are ambiguous for repositories and tools that look components up by id; rtcdoc renders both on separate pages. Reported by the catalogue for every profile involved.",
+        spec: "2.3.1.1 (id)",
+        hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy (e.g. an RTCBuilder backup RTC.xml2023…)",
+    },
+    Rule {
+        code: MISSING_REQUIRED,
+        severity: Error,
+        name: "missing-required",
+        summary: "a required attribute is missing or empty",
+        explanation: "The XSD marks these attributes `use=\"required\"`: rtc_profile id and version; BasicInfo name, componentType, activityType, componentKind, category, executionType, vendor, version, creationDate, updateDate; each listed action's implemented; Configuration name, type and defaultValue; DataPort portType, name, type; ServicePort name; ServiceInterface name, type, direction; Parameter name; Language kind. An empty value counts as missing, except for defaultValue (an empty string is a valid default) — so empty port, interface and parameter names are reported here. A profile without Actions is also reported (Actions has multiplicity 1).",
+        spec: "2.3.1–2.3.16 (multiplicities), 6.1 (RtcProfile_basic.xsd)",
+        hint: "add the attribute with a meaningful value (RTCBuilder writes all of them)",
+    },
+    Rule {
+        code: INVALID_ENUM,
+        severity: Error,
+        name: "invalid-enumeration",
+        summary: "a value outside its enumeration",
+        explanation: "componentType ∈ {STATIC, UNIQUE, COMMUTATIVE}; activityType ∈ {PERIODIC, SPORADIC, EVENTDRIVEN}; DataPort portType ∈ {DataInPort, DataOutPort} (EventPort is accepted for FSM components, as RTCBuilder 2.x writes); ServiceInterface direction ∈ {Provided, Required}; rtcExt:position ∈ {left, right, top, bottom}. direction and position are accepted in any case (real files write PROVIDED and LEFT); the others must be written exactly.",
+        spec: "2.3.3, 2.3.4, 2.3.10, 2.3.14, 2.5.6; 6.1, 6.3",
+        hint: "use one of the values listed in the message",
+    },
+    Rule {
+        code: EXECUTION_RATE,
+        severity: Error,
+        name: "execution-rate",
+        summary: "executionRate is not a number greater than 0",
+        explanation: "executionRate is the frequency (Hz) of the periodic execution context, an xsd:double. A rate of 0 or below cannot drive a periodic execution context, and text that is not a number cannot be read at all.",
+        spec: "2.3.2 (basic_info executionRate), 6.1",
+        hint: "write the rate in Hz as a positive number, e.g. executionRate=\"1000.0\"",
+    },
+    Rule {
+        code: MAX_INSTANCES,
+        severity: Error,
+        name: "max-instances",
+        summary: "maxInstances is not a non-negative integer",
+        explanation: "maxInstances (the largest number of instances the manager may create) is an xsd:integer; a negative count is meaningless.",
+        spec: "2.3.2 (basic_info maxInstances), 6.1",
+        hint: "write a whole number, e.g. maxInstances=\"1\"",
+    },
+    Rule {
+        code: DATE_TIME,
+        severity: Error,
+        name: "date-time",
+        summary: "creationDate or updateDate is not a valid xsd:dateTime",
+        explanation: "Dates are xsd:dateTime: YYYY-MM-DDThh:mm:ss with optional fractional seconds and an optional offset (Z or ±hh:mm). The date must exist (no 2023-02-30) and the time be in range. YAML date maps are converted to this form by the reader.",
+        spec: "2.3.2 (creationDate, updateDate), 6.1, 7",
+        hint: "write e.g. 2014-02-04T17:15:06+09:00",
+    },
+    Rule {
+        code: BOOLEAN,
+        severity: Error,
+        name: "boolean",
+        summary: "a boolean attribute is not true/false/1/0",
+        explanation: "implemented (actions), matchCase (comparisons) and saveProject are xsd:boolean, whose lexical forms are true, false, 1 and 0.",
+        spec: "2.3.6 (action_status implemented), 2.3.30 (matchCase), 6.1, 6.3",
+        hint: "write true or false",
+    },
+    Rule {
+        code: ID_FORMAT,
+        severity: Error,
+        name: "id-format",
+        summary: "the id is not RTC:<vendor>:<category>:<name>:<version>",
+        explanation: "The component id has the fixed form `RTC:[vendor]:[category]:[component name]:[version]`: five parts separated by `:`, the first being `RTC`.",
+        spec: "2.3.1.1 (id)",
+        hint: "write the id as RTC:<vendor>:<category>:<name>:<version> from the BasicInfo values",
+    },
+    Rule {
+        code: ID_MISMATCH,
+        severity: Warning,
+        name: "id-mismatch",
+        summary: "a part of the id disagrees with BasicInfo",
+        explanation: "The id is built from BasicInfo's vendor, category, name and version; when a part differs (often after renaming a component, or when the id was written without the spaces the vendor has), tools that look components up by id and tools that use BasicInfo disagree. Each differing part is reported with both values.",
+        spec: "2.3.1.1 (id), 2.3.2 (basic_info)",
+        hint: "make the id and BasicInfo agree (RTCBuilder regenerates the id from BasicInfo)",
+    },
+    Rule {
+        code: VENDOR_VERSION_CHARS,
+        severity: Warning,
+        name: "vendor-version-characters",
+        summary: "vendor or version contains whitespace or `:`",
+        explanation: "vendor and version are parts of the `:`-separated id; a `:` makes the id ambiguous and whitespace breaks naming-service paths and command lines that use the id.",
+        spec: "2.3.1.1 (id), 2.3.2 (vendor, version)",
+        hint: "remove the spaces (e.g. `AIST Lab` → `AISTLab`) or the `:`, in BasicInfo and in the id",
+    },
+    Rule {
+        code: NAME_WHITESPACE,
+        severity: Error,
+        name: "name-whitespace",
+        summary: "a port, interface, configuration or parameter name contains whitespace",
+        explanation: "Port, interface and configuration names become identifiers: port names in connector profiles (`comp.port`), configuration names in rtc.conf keys (`conf.default.name`), interface names in the naming service. Whitespace breaks all of them.",
+        spec: "2.3.8, 2.3.9, 2.3.11, 2.3.13, 2.3.15 (name)",
+        hint: "use an identifier without spaces, e.g. `target_velocity`",
+    },
+    Rule {
+        code: DUPLICATE_PORT,
+        severity: Error,
+        name: "duplicate-port",
+        summary: "two ports of the component have the same name",
+        explanation: "Port names identify ports within a component; OpenRTM registers data and service ports in one namespace, so a data port and a service port may not share a name either.",
+        spec: "2.3.9 (dataPort name), 2.3.11 (serviceport name)",
+        hint: "rename one of the ports",
+    },
+    Rule {
+        code: DUPLICATE_INTERFACE,
+        severity: Error,
+        name: "duplicate-interface",
+        summary: "two interfaces of one service port have the same name",
+        explanation: "Interface names identify the interfaces of a service port (`port.interface` in connector profiles).",
+        spec: "2.3.13 (serviceinterface name)",
+        hint: "rename one of the interfaces",
+    },
+    Rule {
+        code: DUPLICATE_PARAMETER,
+        severity: Error,
+        name: "duplicate-parameter",
+        summary: "two configuration parameters (or two system parameters) have the same name",
+        explanation: "Configuration names are keys of the configuration set (`conf.default.<name>`); system parameter names are rtc.conf keys. A duplicate makes one of them unreachable.",
+        spec: "2.3.8 (configuration name), 2.3.15 (parameter name)",
+        hint: "rename or remove one of them",
+    },
+    Rule {
+        code: COMPONENT_KIND,
+        severity: Warning,
+        name: "component-kind",
+        summary: "componentKind is not a known kind",
+        explanation: "Known kinds: the 5.1 names (DataFlowComponent, FiniteStateMachineComponent, DataFlowFiniteStateMachineComponent, FiniteStateMachineMultiModeComponent, DataFlowMultiModeComponent, DataFlowFiniteStateMachineMultiModeComponent, MultiModeComponent) and the DDC4RTC short forms (DataFlow, FiniteStateMachine, MultiMode, …); any case, comma-separated lists allowed.",
+        spec: "2.3.2 (componentKind), 5.1",
+        hint: "use one of the kinds of appendix 5.1, usually DataFlowComponent",
+    },
+    Rule {
+        code: EXECUTION_TYPE,
+        severity: Warning,
+        name: "execution-type",
+        summary: "executionType is not a known execution context",
+        explanation: "Known: the 5.2 values (PERIODIC, EVENTDRIVEN, OTHER) and OpenRTM's execution context class names (PeriodicExecutionContext, ExtTrigExecutionContext, EventDrivenExecutionContext, OpenHRPExecutionContext, SimulatorExecutionContext, RTPreemptEC, MultilayerCompositeEC, PeriodicECSharedComposite, ArtExecutionContext, OpenHRP, …); any case.",
+        spec: "2.3.2 (executionType), 5.2, 5.4",
+        hint: "use PeriodicExecutionContext (or another execution context class OpenRTM provides)",
+    },
+    Rule {
+        code: INTERFACE_TYPE,
+        severity: Warning,
+        name: "interface-type",
+        summary: "a data port's interfaceType is not a known transport",
+        explanation: "Known: corba_cdr, data_service, shared_memory, direct (and CorbaPort, which old RTCBuilder versions wrote); any case, comma-separated lists allowed, empty = unspecified.",
+        spec: "2.3.9 (interfaceType), OpenRTM glossary",
+        hint: "use corba_cdr unless the component needs another transport",
+    },
+    Rule {
+        code: DATAFLOW_TYPE,
+        severity: Warning,
+        name: "dataflow-type",
+        summary: "a data port's dataflowType is not push or pull",
+        explanation: "Known: push, pull; any case, comma-separated lists allowed (Push,Pull), empty = unspecified.",
+        spec: "2.3.9 (dataflowType), OpenRTM glossary",
+        hint: "use push, pull or push,pull",
+    },
+    Rule {
+        code: SUBSCRIPTION_TYPE,
+        severity: Warning,
+        name: "subscription-type",
+        summary: "a data port's subscriptionType is not flush, new or periodic",
+        explanation: "Known: flush, new, periodic; any case, comma-separated lists allowed (New,Periodic), empty = unspecified.",
+        spec: "2.3.9 (subscriptionType), OpenRTM glossary",
+        hint: "use flush, new or periodic",
+    },
+    Rule {
+        code: DEFAULT_TYPE,
+        severity: Error,
+        name: "default-value-type",
+        summary: "a configuration's defaultValue does not parse for its type",
+        explanation: "The default value is what the component starts with; OpenRTM converts it to the declared type at activation and fails (or silently uses 0) when it cannot. Types: short, long, int, long long and their unsigned variants (range-checked), octet, float, double, boolean (true/false, 1/0, yes/no, on/off), char (one character), string; vector<T>, std::vector<T>, sequence<T> and T[] take comma-separated elements.",
+        spec: "2.3.8 (configuration type, defaultValue)",
+        hint: "write a value of the declared type (or change the type)",
+    },
+    Rule {
+        code: UNKNOWN_TYPE,
+        severity: Info,
+        name: "unknown-configuration-type",
+        summary: "a configuration type rtcdoc cannot check",
+        explanation: "The type is not one of the basic C++/IDL types or a vector of one (a user struct, an enum, a typo), so its default value and constraint literals are not checked.",
+        spec: "2.3.8 (configuration type)",
+        hint: "nothing to do if the type is genuine; otherwise fix its spelling",
+    },
+    Rule {
+        code: CONSTRAINT_VIOLATED,
+        severity: Error,
+        name: "constraint-violated",
+        summary: "a configuration's defaultValue does not satisfy its constraint",
+        explanation: "The whole constraint tree is evaluated: comparisons (numeric when the type is numeric, string otherwise, matchCase absent = case-sensitive), like patterns with their wildCard/singleChar/escapeChar, between (inclusive), and/or/not, null (= empty), list constraints item by item over vector elements and hash constraints over key:value pairs. A default that its own constraint forbids is a contradiction tools such as RTSystemEditor will reject.",
+        spec: "2.3.17–2.3.41 (constraints), 8 (samples)",
+        hint: "change the default value or widen the constraint",
+    },
+    Rule {
+        code: CONSTRAINT_LITERAL,
+        severity: Error,
+        name: "constraint-literal",
+        summary: "a constraint literal does not parse for the configuration's type",
+        explanation: "A literal or boundary of a numeric or boolean configuration must be a value of that type, or the comparison is meaningless (`x < ten`).",
+        spec: "2.3.30 (binary comparison literal), 2.3.39 (between boundaries), 2.3.41 (literal)",
+        hint: "write the literal as a value of the configuration's type",
+    },
+    Rule {
+        code: CONSTRAINT_MALFORMED,
+        severity: Warning,
+        name: "constraint-malformed",
+        summary: "a constraint is malformed or cannot be evaluated",
+        explanation: "An empty constraint, an and/or without operands, a comparison without literal, a between without a boundary or with lower > upper, a hash item without key, or a hash constraint over a value that is not key:value pairs. The constraint cannot be (fully) checked.",
+        spec: "2.3.17–2.3.41, 6.1 (constraint_type)",
+        hint: "complete the constraint (RTCBuilder's constraint editor writes well-formed ones)",
+    },
+    Rule {
+        code: UNPROVIDED_INTERFACE,
+        severity: Info,
+        name: "unprovided-interface",
+        summary: "a required service interface that no component in the catalogue provides",
+        explanation: "A Required interface must be connected to a Provided one of the same type to work. Nothing in this catalogue provides it — fine if it comes from elsewhere, but worth knowing.",
+        spec: "2.3.13, 2.3.14 (interface_direction)",
+        hint: "add the providing component to the catalogue, or ignore if it is provided outside it",
+    },
+    Rule {
+        code: IDL_CONFLICT,
+        severity: Warning,
+        name: "idl-conflict",
+        summary: "one data type name is used with different IDL files",
+        explanation: "Data ports of the same type should come from the same IDL definition; two different IDL file names for one type usually mean two incompatible definitions under one name. File names are compared, not full paths (IDL paths are often absolute Windows paths).",
+        spec: "2.3.9 (dataPort type, idlFile)",
+        hint: "use one IDL file for the type, or rename one of the types",
+    },
+    Rule {
+        code: DOC_COMPONENT,
+        severity: Info,
+        name: "doc-component",
+        summary: "the component has no description",
+        explanation: "The Document Profile's description is the first thing readers of the catalogue see.",
+        spec: "2.4.1 (doc_basic description)",
+        hint: "describe what the component does in rtcDoc:Doc description",
+    },
+    Rule {
+        code: DOC_PORT,
+        severity: Info,
+        name: "doc-port",
+        summary: "a data or service port has no description",
+        explanation: "Port descriptions say what flows through a port; without them the catalogue shows only a type name.",
+        spec: "2.4.4 (doc_dataport), 2.4.5 (doc_serviceport)",
+        hint: "add rtcDoc:Doc description to the port",
+    },
+    Rule {
+        code: DOC_INTERFACE,
+        severity: Info,
+        name: "doc-interface",
+        summary: "a service interface has no description",
+        explanation: "Interface descriptions say what a service offers or needs.",
+        spec: "2.4.6 (doc_serviceinterface)",
+        hint: "add rtcDoc:Doc description to the interface",
+    },
+    Rule {
+        code: DOC_CONFIGURATION,
+        severity: Info,
+        name: "doc-configuration",
+        summary: "a configuration parameter has no description",
+        explanation: "Configuration descriptions tell operators what a parameter changes.",
+        spec: "2.4.3 (doc_configuration)",
+        hint: "add rtcDoc:Doc description to the configuration",
+    },
+    Rule {
+        code: DOC_ACTION,
+        severity: Info,
+        name: "doc-action",
+        summary: "an implemented action has no description",
+        explanation: "Implemented callbacks are the component's behaviour; their descriptions document what happens on activation, execution, error …",
+        spec: "2.4.2 (doc_action)",
+        hint: "add rtcDoc:Doc description to the action",
+    },
+];
+
+/// The registry entry of `code` (any case).
+pub fn rule(code: &str) -> Option<&'static Rule> {
+    RULES
+        .iter()
+        .find(|r| r.code.eq_ignore_ascii_case(code.trim()))
+}
+
+/// `--explain` text for a rule.
+pub fn explain(r: &Rule) -> String {
+    format!(
+        "{code} ({name}) — {summary}\n\nDefault severity: {sev}\nSpec: {spec}\n\n{expl}\n\nFix: {hint}\n",
+        code = r.code,
+        name = r.name,
+        summary = r.summary,
+        sev = r.severity,
+        spec = r.spec,
+        expl = r.explanation,
+        hint = r.hint
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_and_well_formed() {
+        let mut seen = std::collections::HashSet::new();
+        for r in RULES {
+            assert!(seen.insert(r.code), "duplicate {}", r.code);
+            assert!(r.code.len() == 6 && r.code.starts_with("RTC"));
+            assert!(!r.spec.is_empty() && !r.explanation.is_empty());
+        }
+        assert!(rule("rtc303").is_some());
+        let _ = MALFORMED;
+    }
+}

@@ -1,0 +1,267 @@
+//! Output of `rtcdoc check`: human (rustc-like, via `codespan-reporting`), JSON and SARIF.
+//!
+//! JSON schema (version 1, stable; documented in `book/src/check.md`):
+//! ```text
+//! {"version": 1,
+//!  "diagnostics": [{"code", "severity": "error|warning|info", "message", "file",
+//!                   "line": n|null, "column": n|null, "hint": s|null}],
+//!  "summary": {"errors", "warnings", "infos", "byCode": {"RTC101": n, …}},
+//!  "coverage": {"documented", "total", "percent",
+//!               "components": [{"source", "name", "documented", "total", "percent"}]}}
+//! ```
+//! SARIF: 2.1.0, one run, `tool.driver.rules` = the whole registry, one result per diagnostic.
+
+use super::{registry, Report};
+use crate::diagnostic::{Diagnostic, Severity};
+use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label, Severity as CsSeverity};
+use codespan_reporting::files::SimpleFiles;
+use codespan_reporting::term::{self, termcolor::WriteColor};
+use serde::Serialize;
+use serde_json::{json, Value};
+use std::collections::HashMap;
+
+/// Version of the JSON output shape; bumped on incompatible changes.
+pub const JSON_VERSION: u32 = 1;
+
+#[derive(Serialize)]
+struct JsonDiagnostic<'a> {
+    code: &'a str,
+    severity: Severity,
+    message: &'a str,
+    file: &'a str,
+    line: Option<u32>,
+    column: Option<u32>,
+    hint: Option<&'a str>,
+}
+
+/// The JSON document of a report.
+pub fn to_json(report: &Report) -> Value {
+    let diags: Vec<JsonDiagnostic> = report
+        .diagnostics
+        .iter()
+        .map(|d| JsonDiagnostic {
+            code: d.code,
+            severity: d.severity,
+            message: &d.message,
+            file: &d.file,
+            line: d.pos.map(|p| p.line),
+            column: d.pos.map(|p| p.column),
+            hint: d.hint.as_deref(),
+        })
+        .collect();
+    json!({
+        "version": JSON_VERSION,
+        "diagnostics": diags,
+        "summary": report.summary,
+        "coverage": report.coverage,
+    })
+}
+
+fn sarif_level(s: Severity) -> &'static str {
+    match s {
+        Severity::Error => "error",
+        Severity::Warning => "warning",
+        Severity::Info => "note",
+    }
+}
+
+/// Percent-encodes a relative path for a SARIF `uri` (keeps `/` and unreserved characters).
+pub fn path_to_uri(path: &str) -> String {
+    let path = path.replace('\\', "/");
+    let mut out = String::with_capacity(path.len());
+    for b in path.bytes() {
+        if b.is_ascii_alphanumeric() || b"-._~/".contains(&b) {
+            out.push(b as char);
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+/// The SARIF 2.1.0 log of a report (for GitHub code scanning).
+pub fn to_sarif(report: &Report) -> Value {
+    let rules: Vec<Value> = registry::RULES
+        .iter()
+        .map(|r| {
+            json!({
+                "id": r.code,
+                "name": r.name,
+                "shortDescription": {"text": r.summary},
+                "fullDescription": {"text": format!("{} (spec {})", r.explanation, r.spec)},
+                "help": {"text": r.hint},
+                "defaultConfiguration": {"level": sarif_level(r.severity)},
+            })
+        })
+        .collect();
+    let index: HashMap<&str, usize> = registry::RULES
+        .iter()
+        .enumerate()
+        .map(|(i, r)| (r.code, i))
+        .collect();
+    let results: Vec<Value> = report
+        .diagnostics
+        .iter()
+        .map(|d| {
+            let mut physical = json!({"artifactLocation": {"uri": path_to_uri(&d.file)}});
+            if let Some(p) = d.pos {
+                physical["region"] = json!({"startLine": p.line, "startColumn": p.column.max(1)});
+            }
+            let text = match &d.hint {
+                Some(h) => format!("{}\nhelp: {h}", d.message),
+                None => d.message.clone(),
+            };
+            let mut r = json!({
+                "ruleId": d.code,
+                "level": sarif_level(d.severity),
+                "message": {"text": text},
+                "locations": [{"physicalLocation": physical}],
+            });
+            if let Some(i) = index.get(d.code) {
+                r["ruleIndex"] = json!(i);
+            }
+            r
+        })
+        .collect();
+    json!({
+        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+        "version": "2.1.0",
+        "runs": [{
+            "tool": {"driver": {
+                "name": "rtcdoc",
+                "version": env!("CARGO_PKG_VERSION"),
+                "rules": rules,
+            }},
+            "results": results,
+        }],
+    })
+}
+
+/// Byte range to underline for a 1-based line/column (columns count characters): the XML tag
+/// name (`<rtc:DataPorts`) or the YAML key / word starting there. `None` when the position is
+/// outside the text.
+pub fn span_at(text: &str, line: u32, column: u32) -> Option<std::ops::Range<usize>> {
+    let mut start = 0usize;
+    for _ in 1..line {
+        start += text[start..].find('\n')? + 1;
+    }
+    let line_text = &text[start..];
+    let line_text = &line_text[..line_text.find('\n').unwrap_or(line_text.len())];
+    let line_text = line_text.strip_suffix('\r').unwrap_or(line_text);
+    let col_off = line_text
+        .char_indices()
+        .nth(column.saturating_sub(1) as usize)
+        .map(|(i, _)| i)
+        .unwrap_or(line_text.len());
+    let rest = &line_text[col_off..];
+    let len = if let Some(tag) = rest.strip_prefix('<') {
+        1 + tag
+            .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
+            .unwrap_or(tag.len())
+    } else {
+        rest.find(|c: char| c.is_whitespace() || c == ':' || c == '>')
+            .unwrap_or(rest.len())
+    };
+    let len = if len == 0 {
+        rest.chars().next().map_or(0, char::len_utf8)
+    } else {
+        len
+    };
+    Some(start + col_off..start + col_off + len)
+}
+
+/// Which diagnostics the human output prints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verbosity {
+    /// Errors only.
+    Quiet,
+    /// Errors and warnings.
+    Normal,
+    /// Everything, infos included.
+    Verbose,
+}
+
+impl Verbosity {
+    fn shows(self, s: Severity) -> bool {
+        match s {
+            Severity::Error => true,
+            Severity::Warning => self != Verbosity::Quiet,
+            Severity::Info => self == Verbosity::Verbose,
+        }
+    }
+}
+
+/// Writes diagnostics like rustc: `severity[CODE]: message`, ` ┌─ file:line:col`, the source
+/// line with a caret under the element, and `= help: hint`. `source` returns the text of a
+/// file (by the name in the diagnostic), or `None` when it cannot be shown (the diagnostic is
+/// then printed without a snippet).
+pub fn write_human(
+    out: &mut dyn WriteColor,
+    diagnostics: &[Diagnostic],
+    verbosity: Verbosity,
+    source: &mut dyn FnMut(&str) -> Option<String>,
+) -> std::io::Result<()> {
+    let mut files = SimpleFiles::new();
+    let mut ids: HashMap<String, Option<usize>> = HashMap::new();
+    let config = term::Config::default();
+    for d in diagnostics.iter().filter(|d| verbosity.shows(d.severity)) {
+        let sev = match d.severity {
+            Severity::Error => CsSeverity::Error,
+            Severity::Warning => CsSeverity::Warning,
+            Severity::Info => CsSeverity::Note,
+        };
+        let mut cs = CsDiagnostic::new(sev)
+            .with_code(d.code)
+            .with_message(&d.message);
+        let id = *ids
+            .entry(d.file.clone())
+            .or_insert_with(|| source(&d.file).map(|t| files.add(d.file.clone(), t)));
+        let mut labelled = false;
+        if let (Some(id), Some(p)) = (id, d.pos) {
+            if let Some(range) = files
+                .get(id)
+                .ok()
+                .and_then(|f| span_at(f.source(), p.line, p.column))
+            {
+                cs = cs.with_labels(vec![Label::primary(id, range)]);
+                labelled = true;
+            }
+        }
+        let mut notes = Vec::new();
+        if !labelled {
+            notes.push(match d.pos {
+                Some(p) => format!("in {}:{}:{}", d.file, p.line, p.column),
+                None => format!("in {}", d.file),
+            });
+        }
+        if let Some(h) = &d.hint {
+            notes.push(format!("help: {h}"));
+        }
+        cs = cs.with_notes(notes);
+        term::emit_to_write_style(out, &config, &files, &cs)
+            .map_err(|e| std::io::Error::other(e.to_string()))?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spans() {
+        let t = "<a>\n  <rtc:DataPorts rtc:name=\"x\"/>\nkey: value\n";
+        assert_eq!(&t[span_at(t, 2, 3).unwrap()], "<rtc:DataPorts");
+        assert_eq!(&t[span_at(t, 3, 1).unwrap()], "key");
+        assert_eq!(span_at(t, 9, 1), None);
+        assert!(span_at(t, 1, 99).is_some());
+        let j = "名前: 値\n";
+        assert_eq!(&j[span_at(j, 1, 1).unwrap()], "名前");
+    }
+
+    #[test]
+    fn uris() {
+        assert_eq!(path_to_uri("a b/RTC.xml"), "a%20b/RTC.xml");
+        assert_eq!(path_to_uri("x\\y.xml"), "x/y.xml");
+    }
+}

@@ -1,0 +1,991 @@
+//! The rules themselves: per component (schema level, spec semantics, values, doc coverage)
+//! and over the catalogue. Each rule emits diagnostics with the code, default severity and hint
+//! of its [`registry`](super::registry) entry.
+
+use super::registry::{self as r, rule};
+use crate::catalog::{Catalog, Component};
+use crate::constraint::{self, Problem, Verdict};
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::model::{non_empty, parse_bool, Pos, Profile};
+use crate::value::{self, ValueType};
+use std::collections::{BTreeMap, HashMap};
+
+/// Collects the diagnostics of one file.
+pub(crate) struct Sink<'a> {
+    pub file: &'a str,
+    pub out: Vec<Diagnostic>,
+}
+
+impl Sink<'_> {
+    /// Emits `code` at `pos` with the registry's severity and hint.
+    pub fn emit(&mut self, code: &'static str, pos: Pos, message: impl Into<String>) {
+        let (severity, hint) = rule(code).map_or((Severity::Warning, ""), |r| (r.severity, r.hint));
+        let mut d = Diagnostic::new(severity, code, self.file, message).at(pos);
+        if !hint.is_empty() {
+            d = d.with_hint(hint);
+        }
+        self.out.push(d);
+    }
+}
+
+fn blank(s: &Option<String>) -> bool {
+    non_empty(s).is_none()
+}
+
+/// Runs every per-component rule on `c`.
+pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
+    let mut s = Sink {
+        file: &c.source,
+        out: Vec::new(),
+    };
+    let p = &c.profile;
+    required(p, &mut s);
+    enumerations(p, &mut s);
+    numbers_dates_booleans(p, &mut s);
+    identity(p, &mut s);
+    names(p, &mut s);
+    known_values(p, &mut s);
+    configuration_values(p, &mut s);
+    documentation(p, &mut s);
+    s.out
+}
+
+/// RTC101: required attributes (XSD `use="required"`).
+fn required(p: &Profile, s: &mut Sink) {
+    let miss = |s: &mut Sink, what: &str, v: &Option<String>, pos: Pos| {
+        if blank(v) {
+            let how = if v.is_some() {
+                "is empty"
+            } else {
+                "is missing"
+            };
+            s.emit(r::MISSING_REQUIRED, pos, format!("required {what} {how}"));
+        }
+    };
+    miss(s, "rtc_profile attribute `id`", &p.id, p.pos);
+    miss(s, "rtc_profile attribute `version`", &p.version, p.pos);
+    let b = &p.basic_info;
+    let bpos = if b.pos.is_unknown() { p.pos } else { b.pos };
+    for (name, v) in [
+        ("name", &b.name),
+        ("componentType", &b.component_type),
+        ("activityType", &b.activity_type),
+        ("componentKind", &b.component_kind),
+        ("category", &b.category),
+        ("executionType", &b.execution_type),
+        ("vendor", &b.vendor),
+        ("version", &b.version),
+        ("creationDate", &b.creation_date),
+        ("updateDate", &b.update_date),
+    ] {
+        miss(s, &format!("BasicInfo attribute `{name}`"), v, bpos);
+    }
+    if p.actions.is_empty() && p.actions_pos.is_none() {
+        s.emit(
+            r::MISSING_REQUIRED,
+            p.pos,
+            "required element `Actions` is missing",
+        );
+    }
+    for a in &p.actions {
+        if a.implemented.is_none() {
+            s.emit(
+                r::MISSING_REQUIRED,
+                a.pos,
+                format!(
+                    "required attribute `implemented` of action {} is missing",
+                    a.kind.xml_name()
+                ),
+            );
+        }
+    }
+    for c in p.configurations() {
+        miss(s, "Configuration attribute `name`", &c.name, c.pos);
+        let label = c.name.as_deref().unwrap_or("");
+        miss(
+            s,
+            &format!("attribute `type` of configuration `{label}`"),
+            &c.type_,
+            c.pos,
+        );
+        if c.default_value.is_none() {
+            s.emit(
+                r::MISSING_REQUIRED,
+                c.pos,
+                format!("required attribute `defaultValue` of configuration `{label}` is missing"),
+            );
+        }
+    }
+    for d in &p.data_ports {
+        miss(s, "DataPort attribute `name`", &d.name, d.pos);
+        let label = d.name.as_deref().unwrap_or("");
+        miss(
+            s,
+            &format!("attribute `portType` of data port `{label}`"),
+            &d.port_type,
+            d.pos,
+        );
+        miss(
+            s,
+            &format!("attribute `type` of data port `{label}`"),
+            &d.type_,
+            d.pos,
+        );
+    }
+    for sp in &p.service_ports {
+        miss(s, "ServicePort attribute `name`", &sp.name, sp.pos);
+        for i in &sp.interfaces {
+            miss(s, "ServiceInterface attribute `name`", &i.name, i.pos);
+            let label = i.name.as_deref().unwrap_or("");
+            miss(
+                s,
+                &format!("attribute `type` of service interface `{label}`"),
+                &i.type_,
+                i.pos,
+            );
+            miss(
+                s,
+                &format!("attribute `direction` of service interface `{label}`"),
+                &i.direction,
+                i.pos,
+            );
+        }
+    }
+    for par in &p.parameters {
+        miss(s, "Parameter attribute `name`", &par.name, par.pos);
+    }
+    if let Some(l) = &p.language {
+        miss(s, "Language attribute `kind`", &l.kind, l.pos);
+    }
+}
+
+/// RTC102: enumerations of the XSD.
+fn enumerations(p: &Profile, s: &mut Sink) {
+    let b = &p.basic_info;
+    let exact = |s: &mut Sink, what: &str, v: &Option<String>, allowed: &[&str], pos: Pos| {
+        if let Some(v) = non_empty(v) {
+            if !allowed.contains(&v) {
+                let hint = allowed
+                    .iter()
+                    .find(|a| a.eq_ignore_ascii_case(v))
+                    .map(|a| format!(" (write `{a}`: the value is case-sensitive)"))
+                    .unwrap_or_default();
+                s.emit(
+                    r::INVALID_ENUM,
+                    pos,
+                    format!("{what} `{v}` is not one of {}{hint}", allowed.join(", ")),
+                );
+            }
+        }
+    };
+    exact(
+        s,
+        "componentType",
+        &b.component_type,
+        &["STATIC", "UNIQUE", "COMMUTATIVE"],
+        b.pos,
+    );
+    exact(
+        s,
+        "activityType",
+        &b.activity_type,
+        &["PERIODIC", "SPORADIC", "EVENTDRIVEN"],
+        b.pos,
+    );
+    for d in &p.data_ports {
+        exact(
+            s,
+            &format!(
+                "portType of data port `{}`",
+                d.name.as_deref().unwrap_or("")
+            ),
+            &d.port_type,
+            &["DataInPort", "DataOutPort", "EventPort"],
+            d.pos,
+        );
+        position(s, &d.position, d.name.as_deref(), d.pos);
+    }
+    for sp in &p.service_ports {
+        position(s, &sp.position, sp.name.as_deref(), sp.pos);
+        for i in &sp.interfaces {
+            if let Some(v) = non_empty(&i.direction) {
+                if i.direction_kind().is_none() {
+                    s.emit(
+                        r::INVALID_ENUM,
+                        i.pos,
+                        format!(
+                            "direction `{v}` of service interface `{}` is not Provided or Required",
+                            i.name.as_deref().unwrap_or("")
+                        ),
+                    );
+                }
+            }
+        }
+    }
+}
+
+fn position(s: &mut Sink, v: &Option<String>, port: Option<&str>, pos: Pos) {
+    if let Some(v) = non_empty(v) {
+        if crate::model::PortSide::parse(Some(v)).is_none() {
+            s.emit(
+                r::INVALID_ENUM,
+                pos,
+                format!(
+                    "position `{v}` of port `{}` is not left, right, top or bottom",
+                    port.unwrap_or("")
+                ),
+            );
+        }
+    }
+}
+
+/// RTC103–RTC106: executionRate, maxInstances, dates, booleans.
+fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
+    let b = &p.basic_info;
+    if let Some(rate) = b.execution_rate.as_deref().filter(|v| !v.trim().is_empty()) {
+        match value::parse_float(rate) {
+            Some(f) if f > 0.0 => {}
+            Some(_) => s.emit(
+                r::EXECUTION_RATE,
+                b.pos,
+                format!("executionRate `{}` is not greater than 0", rate.trim()),
+            ),
+            None => s.emit(
+                r::EXECUTION_RATE,
+                b.pos,
+                format!("executionRate `{}` is not a number", rate.trim()),
+            ),
+        }
+    }
+    if let Some(m) = b.max_instances.as_deref().filter(|v| !v.trim().is_empty()) {
+        let t = m.trim();
+        match t.strip_prefix('+').unwrap_or(t).parse::<i128>() {
+            Ok(n) if n >= 0 => {}
+            Ok(n) => s.emit(
+                r::MAX_INSTANCES,
+                b.pos,
+                format!("maxInstances `{n}` is negative"),
+            ),
+            Err(_) => s.emit(
+                r::MAX_INSTANCES,
+                b.pos,
+                format!("maxInstances `{t}` is not an integer"),
+            ),
+        }
+    }
+    for (name, v) in [
+        ("creationDate", &b.creation_date),
+        ("updateDate", &b.update_date),
+    ] {
+        if let Some(d) = non_empty(v) {
+            if let Err(why) = check_date_time(d) {
+                s.emit(
+                    r::DATE_TIME,
+                    b.pos,
+                    format!("{name} `{d}` is not a valid xsd:dateTime: {why}"),
+                );
+            }
+        }
+    }
+    let boolean = |s: &mut Sink, what: String, v: &Option<String>, pos: Pos| {
+        if let Some(t) = v {
+            if parse_bool(Some(t)).is_none() {
+                s.emit(
+                    r::BOOLEAN,
+                    pos,
+                    format!("{what} `{t}` is not a boolean (true, false, 1, 0)"),
+                );
+            }
+        }
+    };
+    for a in &p.actions {
+        boolean(
+            s,
+            format!("implemented of action {}", a.kind.xml_name()),
+            &a.implemented,
+            a.pos,
+        );
+    }
+    // saveProject is a project name (xsd:string, spec 2.5.1.2), not a boolean.
+    // matchCase is checked with the constraints (RTC305 reports it as malformed).
+}
+
+/// Validates an `xsd:dateTime`: `YYYY-MM-DDThh:mm:ss[.fff][Z|±hh:mm]`.
+pub fn check_date_time(s: &str) -> Result<(), String> {
+    let s = s.trim();
+    let (date, time) = s
+        .split_once('T')
+        .ok_or("expected a `T` between date and time")?;
+    let date = date.strip_prefix('-').unwrap_or(date);
+    let dp: Vec<&str> = date.split('-').collect();
+    let [y, mo, d] = dp.as_slice() else {
+        return Err("the date is not YYYY-MM-DD".into());
+    };
+    let num = |t: &str, len: usize, what: &str| -> Result<u32, String> {
+        if t.len() < len || !t.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(format!("the {what} `{t}` is not a {len}-digit number"));
+        }
+        t.parse::<u32>()
+            .map_err(|_| format!("the {what} `{t}` is too large"))
+    };
+    let year = num(y, 4, "year")?;
+    let month = num(mo, 2, "month")?;
+    let day = num(d, 2, "day")?;
+    if !(1..=12).contains(&month) {
+        return Err(format!("month {month} does not exist"));
+    }
+    let leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+    let days = match month {
+        2 if leap => 29,
+        2 => 28,
+        4 | 6 | 9 | 11 => 30,
+        _ => 31,
+    };
+    if day == 0 || day > days {
+        return Err(format!("day {day} does not exist in month {month}"));
+    }
+    // Split off the offset: `Z`, or the last `+`/`-`.
+    let (clock, offset) = if let Some(c) = time.strip_suffix('Z') {
+        (c, None)
+    } else if let Some(i) = time.rfind(['+', '-']) {
+        (&time[..i], Some(&time[i + 1..]))
+    } else {
+        (time, None)
+    };
+    let tp: Vec<&str> = clock.split(':').collect();
+    let [h, mi, sec] = tp.as_slice() else {
+        return Err("the time is not hh:mm:ss".into());
+    };
+    let hour = num(h, 2, "hour")?;
+    let minute = num(mi, 2, "minute")?;
+    let (whole, frac) = sec.split_once('.').unwrap_or((sec, "0"));
+    let second = num(whole, 2, "second")?;
+    if frac.is_empty() || !frac.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(format!("the fractional seconds `{frac}` are not digits"));
+    }
+    let midnight = hour == 24 && minute == 0 && second == 0;
+    if (hour > 23 && !midnight) || minute > 59 || second > 59 {
+        return Err(format!("{clock} is not a time of day"));
+    }
+    if let Some(o) = offset {
+        let (oh, om) = o.split_once(':').ok_or("the offset is not ±hh:mm")?;
+        let (oh, om) = (num(oh, 2, "offset hour")?, num(om, 2, "offset minute")?);
+        if oh > 14 || om > 59 || (oh == 14 && om > 0) {
+            return Err(format!("the offset {o} is out of range"));
+        }
+    }
+    Ok(())
+}
+
+/// RTC201–RTC203: the id and the parts it is built from.
+fn identity(p: &Profile, s: &mut Sink) {
+    let b = &p.basic_info;
+    let bpos = if b.pos.is_unknown() { p.pos } else { b.pos };
+    for (name, v) in [("vendor", &b.vendor), ("version", &b.version)] {
+        if let Some(t) = v.as_deref().filter(|t| !t.trim().is_empty()) {
+            let mut bad = Vec::new();
+            if t.chars().any(char::is_whitespace) {
+                bad.push("whitespace");
+            }
+            if t.contains(':') {
+                bad.push("`:`");
+            }
+            if !bad.is_empty() {
+                s.emit(
+                    r::VENDOR_VERSION_CHARS,
+                    bpos,
+                    format!("{name} `{t}` contains {}", bad.join(" and ")),
+                );
+            }
+        }
+    }
+    let Some(id) = non_empty(&p.id) else { return };
+    let parts: Vec<&str> = id.split(':').collect();
+    if parts.len() != 5 || parts[0] != "RTC" {
+        let why = if parts.first() != Some(&"RTC") {
+            "it does not start with `RTC:`".to_string()
+        } else {
+            format!("it has {} `:`-separated parts, not 5", parts.len())
+        };
+        s.emit(
+            r::ID_FORMAT,
+            p.pos,
+            format!("id `{id}` is not RTC:<vendor>:<category>:<name>:<version>: {why}"),
+        );
+        return;
+    }
+    for (i, (name, v)) in [
+        ("vendor", &b.vendor),
+        ("category", &b.category),
+        ("name", &b.name),
+        ("version", &b.version),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let Some(expected) = v.as_deref() else {
+            continue;
+        };
+        let got = parts[i + 1];
+        if got != expected {
+            let squash = |t: &str| t.split_whitespace().collect::<String>();
+            let note = if squash(got) == squash(expected) {
+                " (they differ only in whitespace)"
+            } else if got.eq_ignore_ascii_case(expected) {
+                " (they differ only in case)"
+            } else {
+                ""
+            };
+            s.emit(
+                r::ID_MISMATCH,
+                p.pos,
+                format!(
+                    "the {name} part of the id is `{got}` but BasicInfo {name} is `{expected}`{note}"
+                ),
+            );
+        }
+    }
+}
+
+/// RTC204–RTC207: names without whitespace, unique where they must be.
+fn names<'a>(p: &'a Profile, s: &mut Sink) {
+    let ws = |s: &mut Sink, what: &str, v: &Option<String>, pos: Pos| {
+        if let Some(n) = v.as_deref().filter(|n| !n.trim().is_empty()) {
+            if n.chars().any(char::is_whitespace) {
+                s.emit(
+                    r::NAME_WHITESPACE,
+                    pos,
+                    format!("{what} name `{n}` contains whitespace"),
+                );
+            }
+        }
+    };
+    // Ports: data and service ports share one namespace.
+    let mut ports: HashMap<&str, (Pos, &str)> = HashMap::new();
+    let mut port = |s: &mut Sink, kind: &'static str, v: &'a Option<String>, pos: Pos| {
+        let Some(n) = non_empty(v) else { return };
+        match ports.get(n) {
+            Some((first, first_kind)) => s.emit(
+                r::DUPLICATE_PORT,
+                pos,
+                format!(
+                    "{kind} `{n}` has the same name as the {first_kind} at line {}",
+                    first.line
+                ),
+            ),
+            None => {
+                ports.insert(n, (pos, kind));
+            }
+        }
+    };
+    for d in &p.data_ports {
+        ws(s, "data port", &d.name, d.pos);
+        port(s, "data port", &d.name, d.pos);
+    }
+    for sp in &p.service_ports {
+        ws(s, "service port", &sp.name, sp.pos);
+        port(s, "service port", &sp.name, sp.pos);
+        let mut seen: HashMap<&str, Pos> = HashMap::new();
+        for i in &sp.interfaces {
+            ws(s, "service interface", &i.name, i.pos);
+            if let Some(n) = non_empty(&i.name) {
+                if let Some(first) = seen.get(n) {
+                    s.emit(
+                        r::DUPLICATE_INTERFACE,
+                        i.pos,
+                        format!(
+                            "service port `{}` has two interfaces named `{n}` (the first at line {})",
+                            sp.name.as_deref().unwrap_or(""),
+                            first.line
+                        ),
+                    );
+                } else {
+                    seen.insert(n, i.pos);
+                }
+            }
+        }
+    }
+    let mut seen: HashMap<&str, Pos> = HashMap::new();
+    for c in p.configurations() {
+        ws(s, "configuration", &c.name, c.pos);
+        if let Some(n) = non_empty(&c.name) {
+            if let Some(first) = seen.get(n) {
+                s.emit(
+                    r::DUPLICATE_PARAMETER,
+                    c.pos,
+                    format!(
+                        "configuration `{n}` is declared twice (the first at line {})",
+                        first.line
+                    ),
+                );
+            } else {
+                seen.insert(n, c.pos);
+            }
+        }
+    }
+    let mut seen: HashMap<&str, Pos> = HashMap::new();
+    for par in &p.parameters {
+        ws(s, "parameter", &par.name, par.pos);
+        if let Some(n) = non_empty(&par.name) {
+            if let Some(first) = seen.get(n) {
+                s.emit(
+                    r::DUPLICATE_PARAMETER,
+                    par.pos,
+                    format!(
+                        "parameter `{n}` is declared twice (the first at line {})",
+                        first.line
+                    ),
+                );
+            } else {
+                seen.insert(n, par.pos);
+            }
+        }
+    }
+}
+
+const COMPONENT_KINDS: &[&str] = &[
+    "dataflowcomponent",
+    "finitestatemachinecomponent",
+    "dataflowfinitestatemachinecomponent",
+    "finitestatemachinemultimodecomponent",
+    "dataflowmultimodecomponent",
+    "dataflowfinitestatemachinemultimodecomponent",
+    "multimodecomponent",
+    // DDC4RTC short forms.
+    "dataflow",
+    "finitestatemachine",
+    "multimode",
+    "dataflowfinitestatemachine",
+    "finitestatemachinemultimode",
+    "dataflowmultimode",
+    "dataflowfinitestatemachinemultimode",
+    "fsm",
+];
+
+const EXECUTION_TYPES: &[&str] = &[
+    "periodic",
+    "eventdriven",
+    "other",
+    "periodicexecutioncontext",
+    "exttrigexecutioncontext",
+    "eventdrivenexecutioncontext",
+    "openhrpexecutioncontext",
+    "simulatorexecutioncontext",
+    "rtpreemptec",
+    "multilayercompositeec",
+    "periodicecsharedcomposite",
+    "artexecutioncontext",
+    "openhrp",
+];
+
+const INTERFACE_TYPES: &[&str] = &[
+    "corba_cdr",
+    "data_service",
+    "shared_memory",
+    "direct",
+    "corbaport",
+];
+const DATAFLOW_TYPES: &[&str] = &["push", "pull"];
+const SUBSCRIPTION_TYPES: &[&str] = &["flush", "new", "periodic"];
+
+/// The items of a comma-separated value that are not in `known` (compared without case and
+/// without a `_`/space difference).
+fn unknown_items<'a>(v: &'a str, known: &[&str]) -> Vec<&'a str> {
+    v.split(',')
+        .map(str::trim)
+        .filter(|i| !i.is_empty())
+        .filter(|i| {
+            let k = i.to_ascii_lowercase().replace(' ', "");
+            !known.contains(&k.as_str())
+        })
+        .collect()
+}
+
+/// RTC208–RTC212: componentKind, executionType and the data-port transport attributes.
+fn known_values(p: &Profile, s: &mut Sink) {
+    let b = &p.basic_info;
+    let check = |s: &mut Sink, code, what: &str, v: &Option<String>, known: &[&str], pos| {
+        let Some(t) = non_empty(v) else { return };
+        let bad = unknown_items(t, known);
+        if !bad.is_empty() {
+            s.emit(
+                code,
+                pos,
+                format!(
+                    "{what} `{}` is not a known value{}",
+                    bad.join("`, `"),
+                    if bad.len() == 1 && bad[0] == t {
+                        String::new()
+                    } else {
+                        format!(" (in `{t}`)")
+                    }
+                ),
+            );
+        }
+    };
+    check(
+        s,
+        r::COMPONENT_KIND,
+        "componentKind",
+        &b.component_kind,
+        COMPONENT_KINDS,
+        b.pos,
+    );
+    check(
+        s,
+        r::EXECUTION_TYPE,
+        "executionType",
+        &b.execution_type,
+        EXECUTION_TYPES,
+        b.pos,
+    );
+    for d in &p.data_ports {
+        let n = d.name.as_deref().unwrap_or("");
+        check(
+            s,
+            r::INTERFACE_TYPE,
+            &format!("interfaceType of data port `{n}`:"),
+            &d.interface_type,
+            INTERFACE_TYPES,
+            d.pos,
+        );
+        check(
+            s,
+            r::DATAFLOW_TYPE,
+            &format!("dataflowType of data port `{n}`:"),
+            &d.dataflow_type,
+            DATAFLOW_TYPES,
+            d.pos,
+        );
+        check(
+            s,
+            r::SUBSCRIPTION_TYPE,
+            &format!("subscriptionType of data port `{n}`:"),
+            &d.subscription_type,
+            SUBSCRIPTION_TYPES,
+            d.pos,
+        );
+    }
+}
+
+/// RTC301–RTC305: configuration default values against their types and constraints.
+fn configuration_values(p: &Profile, s: &mut Sink) {
+    for c in p.configurations() {
+        let name = c.name.as_deref().unwrap_or("");
+        let ty = match non_empty(&c.type_) {
+            Some(t) => {
+                let ty = ValueType::parse(t);
+                if ty == ValueType::Unknown {
+                    s.emit(
+                        r::UNKNOWN_TYPE,
+                        c.pos,
+                        format!("configuration `{name}` has type `{t}`, which rtcdoc cannot check"),
+                    );
+                }
+                ty
+            }
+            None => ValueType::Unknown,
+        };
+        let mut default_ok = true;
+        if let Some(v) = &c.default_value {
+            if let Err(why) = value::check_value(ty, v) {
+                default_ok = false;
+                s.emit(
+                    r::DEFAULT_TYPE,
+                    c.pos,
+                    format!(
+                        "default value `{v}` of configuration `{name}` is not a valid {}: {why}",
+                        c.type_.as_deref().unwrap_or("").trim()
+                    ),
+                );
+            }
+        }
+        let Some(k) = &c.constraint else { continue };
+        let problems = constraint::problems(k, ty);
+        for pr in &problems {
+            match pr {
+                Problem::Literal { pos, message } => s.emit(
+                    r::CONSTRAINT_LITERAL,
+                    *pos,
+                    format!("in the constraint of configuration `{name}`: {message}"),
+                ),
+                Problem::Structure { pos, message } => s.emit(
+                    r::CONSTRAINT_MALFORMED,
+                    *pos,
+                    format!("in the constraint of configuration `{name}`: {message}"),
+                ),
+            }
+        }
+        let Some(v) = &c.default_value else { continue };
+        if !default_ok || !problems.is_empty() {
+            continue;
+        }
+        // RTSystemEditor's checkbox and ordered_list widgets store the selected items as a
+        // comma-separated list: each item must satisfy the constraint (an enumeration).
+        let eval_ty = match (c.widget().map(str::trim), ty) {
+            (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
+            (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
+                ValueType::Vector(value::ScalarType::Text)
+            }
+            _ => ty,
+        };
+        match constraint::evaluate(k, v, eval_ty) {
+            Verdict::Satisfied => {}
+            Verdict::Violated(why) => s.emit(
+                r::CONSTRAINT_VIOLATED,
+                c.pos,
+                format!(
+                    "default value `{v}` of configuration `{name}` does not satisfy its constraint `{}`: {why}",
+                    constraint::describe(k)
+                ),
+            ),
+            Verdict::Unevaluable(why) => s.emit(
+                r::CONSTRAINT_MALFORMED,
+                k.pos,
+                format!(
+                    "the constraint of configuration `{name}` cannot be evaluated for `{v}`: {why}"
+                ),
+            ),
+        }
+    }
+    for d in &p.data_ports {
+        if let Some(k) = &d.constraint {
+            for pr in constraint::problems(k, ValueType::Unknown) {
+                if let Problem::Structure { pos, message } = pr {
+                    s.emit(
+                        r::CONSTRAINT_MALFORMED,
+                        pos,
+                        format!(
+                            "in the constraint of data port `{}`: {message}",
+                            d.name.as_deref().unwrap_or("")
+                        ),
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Document coverage of one component: (documented, total) items, emitting RTC501–RTC505 for
+/// the undocumented ones when `s` is given.
+pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Sink>) -> (usize, usize) {
+    let mut documented = 0;
+    let mut total = 0;
+    let mut item =
+        |s: &mut Option<&mut Sink>, desc: Option<&Option<String>>, code, pos, msg: String| {
+            total += 1;
+            if desc.is_some_and(|d| !blank(d)) {
+                documented += 1;
+            } else if let Some(s) = s.as_deref_mut() {
+                s.emit(code, pos, msg);
+            }
+        };
+    let b = &p.basic_info;
+    item(
+        &mut s,
+        b.doc.as_ref().map(|d| &d.description),
+        r::DOC_COMPONENT,
+        if b.pos.is_unknown() { p.pos } else { b.pos },
+        format!("component `{}` has no description", p.name()),
+    );
+    for a in p.actions.iter().filter(|a| a.is_implemented()) {
+        item(
+            &mut s,
+            a.doc.as_ref().map(|d| &d.description),
+            r::DOC_ACTION,
+            a.pos,
+            format!(
+                "implemented action {} has no description",
+                a.kind.xml_name()
+            ),
+        );
+    }
+    for d in &p.data_ports {
+        item(
+            &mut s,
+            d.doc.as_ref().map(|d| &d.description),
+            r::DOC_PORT,
+            d.pos,
+            format!(
+                "data port `{}` has no description",
+                d.name.as_deref().unwrap_or("")
+            ),
+        );
+    }
+    for sp in &p.service_ports {
+        item(
+            &mut s,
+            sp.doc.as_ref().map(|d| &d.description),
+            r::DOC_PORT,
+            sp.pos,
+            format!(
+                "service port `{}` has no description",
+                sp.name.as_deref().unwrap_or("")
+            ),
+        );
+        for i in &sp.interfaces {
+            item(
+                &mut s,
+                i.doc.as_ref().map(|d| &d.description),
+                r::DOC_INTERFACE,
+                i.pos,
+                format!(
+                    "service interface `{}` has no description",
+                    i.name.as_deref().unwrap_or("")
+                ),
+            );
+        }
+    }
+    for c in p.configurations() {
+        item(
+            &mut s,
+            c.doc.as_ref().map(|d| &d.description),
+            r::DOC_CONFIGURATION,
+            c.pos,
+            format!(
+                "configuration `{}` has no description",
+                c.name.as_deref().unwrap_or("")
+            ),
+        );
+    }
+    (documented, total)
+}
+
+fn documentation(p: &Profile, s: &mut Sink) {
+    doc_items(p, Some(s));
+}
+
+/// The file name of an IDL path, for comparison (`C:\…\BasicDataType.idl` → `basicdatatype.idl`).
+fn idl_file_name(path: &str) -> String {
+    path.trim()
+        .rsplit(['/', '\\'])
+        .next()
+        .unwrap_or("")
+        .to_ascii_lowercase()
+}
+
+/// RTC401, RTC402: rules over the whole catalogue.
+pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    for t in cat.interfaces.iter().filter(|t| t.is_unprovided()) {
+        for req in &t.requirers {
+            let Some(c) = cat.components.get(req.component) else {
+                continue;
+            };
+            let Some(i) = c
+                .profile
+                .service_ports
+                .get(req.port)
+                .and_then(|p| p.interfaces.get(req.interface))
+            else {
+                continue;
+            };
+            let mut s = Sink {
+                file: &c.source,
+                out: Vec::new(),
+            };
+            s.emit(
+                r::UNPROVIDED_INTERFACE,
+                i.pos,
+                format!(
+                    "required interface `{}` (type `{}`) is provided by no component in the catalogue",
+                    i.name.as_deref().unwrap_or(""),
+                    t.name
+                ),
+            );
+            out.extend(s.out);
+        }
+    }
+    for t in &cat.data_types {
+        // file name → ports using it
+        let mut by_file: BTreeMap<String, Vec<(usize, usize)>> = BTreeMap::new();
+        for pr in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+            let Some(port) = cat
+                .components
+                .get(pr.component)
+                .and_then(|c| c.profile.data_ports.get(pr.port))
+            else {
+                continue;
+            };
+            if let Some(f) = non_empty(&port.idl_file) {
+                by_file
+                    .entry(idl_file_name(f))
+                    .or_default()
+                    .push((pr.component, pr.port));
+            }
+        }
+        if by_file.len() < 2 {
+            continue;
+        }
+        for (file, ports) in &by_file {
+            let others: Vec<&str> = by_file
+                .keys()
+                .filter(|k| *k != file)
+                .map(String::as_str)
+                .collect();
+            for &(ci, pi) in ports {
+                let c = &cat.components[ci];
+                let port = &c.profile.data_ports[pi];
+                let mut s = Sink {
+                    file: &c.source,
+                    out: Vec::new(),
+                };
+                s.emit(
+                    r::IDL_CONFLICT,
+                    port.pos,
+                    format!(
+                        "data type `{}` of port `{}` comes from `{}` here, but from `{}` elsewhere in the catalogue",
+                        t.name,
+                        port.name.as_deref().unwrap_or(""),
+                        port.idl_file.as_deref().unwrap_or("").trim(),
+                        others.join("`, `")
+                    ),
+                );
+                out.extend(s.out);
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn date_times() {
+        for ok in [
+            "2014-02-04T17:15:06+09:00",
+            "2014-02-04T17:15:06",
+            "2014-02-04T17:15:06.123+09:00",
+            "2014-02-04T17:15:06Z",
+            "2024-02-29T00:00:00",
+        ] {
+            assert!(check_date_time(ok).is_ok(), "{ok}");
+        }
+        for bad in [
+            "2014-02-04",
+            "2023-02-29T00:00:00",
+            "2014-13-04T17:15:06",
+            "2014-02-04T25:15:06",
+            "2014/02/04T17:15:06",
+            "2014-02-04T17:15:06+9",
+            "yesterday",
+            "2014-02-04T17:15:06.+09:00",
+        ] {
+            assert!(check_date_time(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn idl_names() {
+        assert_eq!(
+            idl_file_name(r"C:\Program Files\OpenRTM-aist\1.1.2\rtm\idl\BasicDataType.idl"),
+            "basicdatatype.idl"
+        );
+        assert_eq!(
+            idl_file_name("/usr/include/idl/BasicDataType.idl"),
+            "basicdatatype.idl"
+        );
+    }
+}

@@ -1,0 +1,377 @@
+//! `rtcdoc.toml`: the project configuration.
+//!
+//! Every key is optional; command-line flags override the file, the file overrides the
+//! defaults. Unknown keys are an error that names the key and its line, so a typo never goes
+//! unnoticed. Paths in the file are relative to the file's directory.
+
+use crate::i18n::Lang;
+use crate::parse::Limits;
+use crate::render::Format;
+use anyhow::{Context, Result};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+
+/// File name looked for in the input directory and the current directory.
+pub const FILE_NAME: &str = "rtcdoc.toml";
+
+/// The contents of `rtcdoc.toml`, as written (all optional).
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct Config {
+    /// Title of the catalogue.
+    pub title: Option<String>,
+    /// URL the site is published at (used in sitemap.xml).
+    pub base_url: Option<String>,
+    /// Directory of profiles (default: the directory holding the config file).
+    pub input: Option<PathBuf>,
+    /// Output directory.
+    pub output: Option<PathBuf>,
+    /// Output formats.
+    pub formats: Option<Vec<Format>>,
+    /// Theme directory overriding the built-in theme file by file.
+    pub theme: Option<PathBuf>,
+    /// Language of generated labels: `en` or `ja`.
+    pub language: Option<Lang>,
+    /// Globs of input-relative paths to take (default: everything).
+    pub include: Option<Vec<String>>,
+    /// Globs of input-relative paths to leave out.
+    pub exclude: Option<Vec<String>>,
+    /// Fail the build on any profile error.
+    pub strict: Option<bool>,
+    /// Largest profile file accepted, in bytes.
+    pub max_file_size: Option<u64>,
+    /// Deepest nesting accepted.
+    pub max_depth: Option<usize>,
+    /// Settings of `rtcdoc serve`.
+    pub serve: Option<ServeConfig>,
+}
+
+/// `[serve]` settings.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct ServeConfig {
+    pub port: Option<u16>,
+    pub open: Option<bool>,
+}
+
+/// A configuration and the directory its relative paths are resolved against.
+#[derive(Debug, Clone, Default)]
+pub struct Loaded {
+    pub config: Config,
+    /// Directory of the file; `None` when no file was found.
+    pub dir: Option<PathBuf>,
+    /// The file read, if any.
+    pub path: Option<PathBuf>,
+}
+
+impl Loaded {
+    /// Resolves a path from the file against the file's directory.
+    pub fn resolve(&self, p: &Path) -> PathBuf {
+        match &self.dir {
+            Some(d) if p.is_relative() => d.join(p),
+            _ => p.to_path_buf(),
+        }
+    }
+
+    /// Limits with the file's values over the defaults.
+    pub fn limits(&self) -> Limits {
+        let d = Limits::default();
+        Limits {
+            max_file_size: self.config.max_file_size.unwrap_or(d.max_file_size),
+            max_depth: self.config.max_depth.unwrap_or(d.max_depth),
+        }
+    }
+}
+
+/// Parses configuration text. Errors name the file, the line and column, and the key.
+pub fn parse(text: &str, file: &Path) -> Result<Config> {
+    toml::from_str::<Config>(text).map_err(|e| {
+        let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((1, 1));
+        anyhow::anyhow!(
+            "{}:{line}:{col}: {}",
+            file.display(),
+            e.message().trim_end()
+        )
+    })
+}
+
+fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before
+        .rsplit('\n')
+        .next()
+        .map(|l| l.chars().count())
+        .unwrap_or(0)
+        + 1;
+    (line, col)
+}
+
+/// Reads `explicit` when given (it must exist), else the first `rtcdoc.toml` found in
+/// `search` (in order); no file at all is fine and gives the defaults.
+pub fn load(explicit: Option<&Path>, search: &[&Path]) -> Result<Loaded> {
+    let path = match explicit {
+        Some(p) => Some(p.to_path_buf()),
+        None => search
+            .iter()
+            .map(|d| {
+                if d.is_dir() {
+                    d.join(FILE_NAME)
+                } else {
+                    d.with_file_name(FILE_NAME)
+                }
+            })
+            .find(|p| p.is_file()),
+    };
+    let Some(path) = path else {
+        return Ok(Loaded::default());
+    };
+    let text = std::fs::read_to_string(&path)
+        .with_context(|| format!("cannot read configuration `{}`", path.display()))?;
+    let config = parse(&text, &path)?;
+    let dir = path.parent().map(|p| {
+        if p.as_os_str().is_empty() {
+            PathBuf::from(".")
+        } else {
+            p.to_path_buf()
+        }
+    });
+    Ok(Loaded {
+        config,
+        dir,
+        path: Some(path),
+    })
+}
+
+/// The text `rtcdoc init` writes: every key, commented out, with its default.
+pub fn template() -> String {
+    let d = Limits::default();
+    format!(
+        r#"# rtcdoc configuration. Every key is optional; command-line flags override this file.
+# Paths are relative to this file's directory.
+
+# Title of the catalogue (index page, book title, Doxygen project name).
+# title = "RT-Component catalogue"
+
+# URL the site is published at; used for absolute links in sitemap.xml.
+# base-url = "https://example.org/components/"
+
+# Directory searched for profiles (RTC.xml and the YAML form), recursively.
+# input = "."
+
+# Output directory. It is replaced on every successful build.
+# output = "site"
+
+# Output formats: "html", "markdown", "doxygen", "json". Several at once go to output/<format>/.
+# formats = ["html"]
+
+# A theme directory; any file in it replaces the built-in template or asset of the same name.
+# theme = "my-theme"
+
+# Language of generated labels: "en" or "ja". Profile text is always shown as written.
+# language = "en"
+
+# Globs (relative to input) of files to take, and to leave out.
+# include = ["**"]
+# exclude = ["**/backup/**", "**/*.xml2*"]
+
+# Fail without writing anything when a profile has an error.
+# strict = false
+
+# Limits against hostile input.
+# max-file-size = {size}
+# max-depth = {depth}
+
+# rtcdoc serve
+# [serve]
+# port = 3000
+# open = false
+"#,
+        size = d.max_file_size,
+        depth = d.max_depth
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn template_parses_to_defaults_and_uncommented_template_is_valid() {
+        let t = template();
+        assert_eq!(parse(&t, Path::new("x")).unwrap(), Config::default());
+        // Uncommenting every key gives a valid file too.
+        let on: String = t
+            .lines()
+            .map(|l| {
+                l.strip_prefix("# ")
+                    .filter(|r| r.contains(" = ") || r.starts_with('['))
+                    .unwrap_or(l)
+            })
+            .collect::<Vec<_>>()
+            .join("\n");
+        let c = parse(&on, Path::new("x")).unwrap();
+        assert_eq!(c.formats, Some(vec![Format::Html]));
+        assert_eq!(c.language, Some(Lang::En));
+        assert_eq!(c.serve.unwrap().port, Some(3000));
+    }
+
+    #[test]
+    fn unknown_keys_are_errors_with_their_line() {
+        let e = parse("title = \"x\"\n\ntitel = \"y\"\n", Path::new("rtcdoc.toml")).unwrap_err();
+        let msg = e.to_string();
+        assert!(msg.starts_with("rtcdoc.toml:3:1:"), "{msg}");
+        assert!(msg.contains("titel"), "{msg}");
+        let e = parse("[serve]\nprot = 1\n", Path::new("c.toml")).unwrap_err();
+        assert!(e.to_string().starts_with("c.toml:2:1:"), "{e}");
+    }
+
+    #[test]
+    fn bad_values_are_errors() {
+        assert!(parse("formats = [\"pdf\"]", Path::new("c")).is_err());
+        assert!(parse("language = \"fr\"", Path::new("c")).is_err());
+        assert!(parse("max-depth = -1", Path::new("c")).is_err());
+    }
+}
+
+/// Values given on the command line; each one that is set wins over the file.
+#[derive(Debug, Clone, Default)]
+pub struct Overrides {
+    pub input: Option<PathBuf>,
+    pub output: Option<PathBuf>,
+    pub formats: Vec<Format>,
+    pub strict: bool,
+    pub title: Option<String>,
+    pub base_url: Option<String>,
+    pub theme: Option<PathBuf>,
+    pub language: Option<Lang>,
+    pub include: Vec<String>,
+    pub exclude: Vec<String>,
+    pub max_file_size: Option<u64>,
+    pub max_depth: Option<usize>,
+}
+
+/// Combines defaults, the configuration file and command-line overrides (in rising order of
+/// precedence) into the options of a build.
+pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptions {
+    let c = &file.config;
+    let input = cli
+        .input
+        .clone()
+        .or_else(|| c.input.as_deref().map(|p| file.resolve(p)))
+        .or_else(|| file.dir.clone())
+        .unwrap_or_else(|| PathBuf::from("."));
+    let output = cli
+        .output
+        .clone()
+        .or_else(|| c.output.as_deref().map(|p| file.resolve(p)))
+        .unwrap_or_else(|| file.resolve(Path::new("site")));
+    let formats = if cli.formats.is_empty() {
+        c.formats.clone().unwrap_or_else(|| vec![Format::Html])
+    } else {
+        cli.formats.clone()
+    };
+    let pick = |cli: &Vec<String>, file: &Option<Vec<String>>| {
+        if cli.is_empty() {
+            file.clone().unwrap_or_default()
+        } else {
+            cli.clone()
+        }
+    };
+    let defaults = crate::render::SiteOptions::default();
+    let limits = file.limits();
+    crate::build::BuildOptions {
+        input,
+        output,
+        formats,
+        strict: cli.strict || c.strict.unwrap_or(false),
+        load: crate::build::LoadOptions {
+            include: pick(&cli.include, &c.include),
+            exclude: pick(&cli.exclude, &c.exclude),
+            limits: Limits {
+                max_file_size: cli.max_file_size.unwrap_or(limits.max_file_size),
+                max_depth: cli.max_depth.unwrap_or(limits.max_depth),
+            },
+            skip_dirs: vec![],
+        },
+        site: crate::render::SiteOptions {
+            title: cli
+                .title
+                .clone()
+                .or_else(|| c.title.clone())
+                .unwrap_or(defaults.title),
+            base_url: cli.base_url.clone().or_else(|| c.base_url.clone()),
+            theme_dir: cli
+                .theme
+                .clone()
+                .or_else(|| c.theme.as_deref().map(|p| file.resolve(p))),
+            language: cli.language.or(c.language).unwrap_or_default(),
+        },
+    }
+}
+
+#[cfg(test)]
+mod precedence_tests {
+    use super::*;
+
+    fn loaded(text: &str) -> Loaded {
+        Loaded {
+            config: parse(text, Path::new("rtcdoc.toml")).unwrap(),
+            dir: Some(PathBuf::from("/proj")),
+            path: Some(PathBuf::from("/proj/rtcdoc.toml")),
+        }
+    }
+
+    #[test]
+    fn defaults_without_file_or_flags() {
+        let o = build_options(&Loaded::default(), &Overrides::default());
+        assert_eq!(o.input, PathBuf::from("."));
+        assert_eq!(o.output, PathBuf::from("site"));
+        assert_eq!(o.formats, vec![Format::Html]);
+        assert!(!o.strict);
+        assert_eq!(o.site.language, Lang::En);
+        assert_eq!(o.load.limits, Limits::default());
+    }
+
+    #[test]
+    fn file_values_apply_relative_to_the_file() {
+        let f = loaded(
+            "title = \"Lab\"\noutput = \"public\"\ninput = \"profiles\"\nformats = [\"json\", \"markdown\"]\nlanguage = \"ja\"\nexclude = [\"old/**\"]\nstrict = true\nmax-depth = 10\ntheme = \"t\"\n",
+        );
+        let o = build_options(&f, &Overrides::default());
+        assert_eq!(o.site.title, "Lab");
+        assert_eq!(o.output, PathBuf::from("/proj/public"));
+        assert_eq!(o.input, PathBuf::from("/proj/profiles"));
+        assert_eq!(o.formats, vec![Format::Json, Format::Markdown]);
+        assert_eq!(o.site.language, Lang::Ja);
+        assert_eq!(o.load.exclude, vec!["old/**".to_string()]);
+        assert!(o.strict);
+        assert_eq!(o.load.limits.max_depth, 10);
+        assert_eq!(o.site.theme_dir, Some(PathBuf::from("/proj/t")));
+        // Without `input`, the file's directory is the input.
+        let o = build_options(&loaded(""), &Overrides::default());
+        assert_eq!(o.input, PathBuf::from("/proj"));
+        assert_eq!(o.output, PathBuf::from("/proj/site"));
+    }
+
+    #[test]
+    fn flags_override_the_file() {
+        let f = loaded("title = \"Lab\"\noutput = \"public\"\nformats = [\"json\"]\nlanguage = \"ja\"\nexclude = [\"old/**\"]\nmax-depth = 10\n");
+        let cli = Overrides {
+            title: Some("CLI".into()),
+            output: Some(PathBuf::from("out")),
+            formats: vec![Format::Html],
+            language: Some(Lang::En),
+            exclude: vec!["x/**".into()],
+            max_depth: Some(5),
+            ..Default::default()
+        };
+        let o = build_options(&f, &cli);
+        assert_eq!(o.site.title, "CLI");
+        assert_eq!(o.output, PathBuf::from("out"));
+        assert_eq!(o.formats, vec![Format::Html]);
+        assert_eq!(o.site.language, Lang::En);
+        assert_eq!(o.load.exclude, vec!["x/**".to_string()]);
+        assert_eq!(o.load.limits.max_depth, 5);
+    }
+}

@@ -1,0 +1,1020 @@
+//! Doxygen input: `.dox` pages plus a ready `Doxyfile` (spec 10.7: Doxygen is the route to
+//! HTML, LaTeX and man pages).
+//!
+//! Layout: `Doxyfile`, `mainpage.dox` (`\mainpage`), `categories/<slug>.dox`,
+//! `components/<slug>.dox`, `types.dox` + `types/<slug>.dox`, `interfaces.dox` +
+//! `interfaces/<slug>.dox`. Running `doxygen` in the folder writes `html/`, `latex/`, `man/` and
+//! the tag file `rtcdoc.tag`.
+//!
+//! Labels are globally unique, prefixed and `[a-z0-9_]` only: `rtc_comp_<slug>`,
+//! `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`, `rtc_types`, `rtc_interfaces`; section
+//! and row anchors are `<page label>__<anchor>` (a double underscore, which no slug contains, so
+//! a row anchor can never equal another page's label). The page tree is
+//! mainpage → category pages → component pages, mainpage → type index → type pages and
+//! mainpage → interface index → interface pages: every page is the target of exactly one
+//! `\subpage`; all other links are `\ref`.
+//!
+//! Escaping choices: pages are written as `///` comment blocks, so a `*/` in profile text cannot
+//! end the comment; the Doxyfile sets `MARKDOWN_SUPPORT = NO` (no Markdown syntax to neutralise;
+//! tables are Doxygen's HTML `<table>` commands) and `AUTOLINK_SUPPORT = NO`; profile text goes
+//! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
+//! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
+
+use super::facts::{self, Fact};
+use super::{RenderContext, Renderer};
+use crate::catalog::{Catalog, Component, InterfaceRef, PortRef};
+use crate::i18n::Lang;
+use crate::model::{self, ActionKind, Direction, PortDirection};
+use crate::output::Sink;
+use rayon::prelude::*;
+use std::fmt::Write as _;
+
+/// How many peers a "connects to" cell lists before pointing at the type page.
+pub const PEER_CAP: usize = 12;
+
+/// Writes the `.dox` pages and the `Doxyfile`.
+pub struct DoxygenRenderer;
+
+/// A `///` comment line into a `String` (cannot fail).
+macro_rules! d {
+    ($dst:expr) => { $dst.push_str("///\n") };
+    ($dst:expr, $($arg:tt)*) => {{
+        $dst.push_str("/// ");
+        let _ = writeln!($dst, $($arg)*);
+    }};
+}
+
+fn push_escaped(s: &str, out: &mut String, full: bool) {
+    let chars: Vec<char> = s.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        match ch {
+            '\\' | '@' | '<' | '>' | '&' | '%' | '$' | '"' => {
+                out.push('\\');
+                out.push(ch);
+            }
+            '#' if full => out.push_str("\\#"),
+            ':' if full && chars.get(i + 1) == Some(&':') => {
+                out.push_str("\\::");
+                i += 1;
+            }
+            '-' if chars.get(i + 1) == Some(&'-') => {
+                // `--` and `---` become dashes in Doxygen; `\--` / `\---` keep them literal.
+                let mut n = chars[i..].iter().take_while(|&&c| c == '-').count();
+                i += n - 1;
+                while n > 0 {
+                    match n {
+                        1 => {
+                            out.push('-');
+                            n = 0;
+                        }
+                        3 => {
+                            out.push_str("\\---");
+                            n = 0;
+                        }
+                        _ => {
+                            out.push_str("\\--");
+                            n -= 2;
+                        }
+                    }
+                }
+            }
+            '\t' => out.push(' '),
+            c if c.is_control() => {}
+            c => out.push(c),
+        }
+        i += 1;
+    }
+}
+
+/// Escapes profile text for Doxygen body text (table cells, paragraphs, `\ref` link text):
+/// `\ @ < > & % $ " #`, `::` and dash runs are escaped, line breaks become `<br>`; the result is
+/// one physical line.
+pub fn text(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 8);
+    for (i, line) in s.trim().lines().enumerate() {
+        if i > 0 {
+            out.push_str("<br>");
+        }
+        push_escaped(line.trim(), &mut out, true);
+    }
+    out
+}
+
+/// Escapes a page or section title: titles are not auto-linked, so `#` and `::` stay plain
+/// (they would otherwise show as `\#` in the HTML `<title>`, which Doxygen copies verbatim);
+/// everything Doxygen would interpret is escaped and line breaks become spaces.
+pub fn title(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 8);
+    let one_line = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    push_escaped(&one_line, &mut out, false);
+    if out.is_empty() {
+        out.push('?');
+    }
+    out
+}
+
+/// A Doxygen label from any slug or anchor: `[a-z0-9-]` → `[a-z0-9_]`.
+pub fn label(s: &str) -> String {
+    s.chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
+}
+
+fn comp_label(c: &Component) -> String {
+    format!("rtc_comp_{}", label(&c.slug))
+}
+
+fn anchor_label(c: &Component, anchor: &str) -> String {
+    format!("{}__{}", comp_label(c), label(anchor))
+}
+
+/// `\ref label "text"` with escaped text.
+fn refer(label: &str, text_: &str) -> String {
+    format!("\\ref {label} \"{}\"", text(text_))
+}
+
+fn opt(s: &Option<String>) -> String {
+    model::non_empty(s).map(text).unwrap_or_default()
+}
+
+fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
+    d!(out, "<table>");
+    let head: String = headers
+        .iter()
+        .map(|h| format!("<th>{}</th>", text(h)))
+        .collect();
+    d!(out, "<tr>{head}</tr>");
+    for r in rows {
+        let cells: String = r.iter().map(|c| format!("<td>{c}</td>")).collect();
+        d!(out, "<tr>{cells}</tr>");
+    }
+    d!(out, "</table>");
+    d!(out);
+}
+
+fn facts_table(out: &mut String, lang: Lang, facts: &[Fact]) {
+    let rows: Vec<Vec<String>> = facts
+        .iter()
+        .map(|f| vec![text(&f.label), text(&f.value)])
+        .collect();
+    table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
+}
+
+fn facts_cell(facts: &[Fact]) -> String {
+    facts
+        .iter()
+        .map(|f| format!("<b>{}</b>: {}", text(&f.label), text(&f.value)))
+        .collect::<Vec<_>>()
+        .join("<br>")
+}
+
+fn section(out: &mut String, page: &str, anchor: &str, heading: &str) {
+    d!(
+        out,
+        "\\section {page}__{} {}",
+        label(anchor),
+        title(heading)
+    );
+    d!(out);
+}
+
+/// Free text as `<p>` paragraphs (blank lines separate them).
+fn paragraphs(out: &mut String, s: &str) {
+    let norm = s.replace("\r\n", "\n").replace('\r', "\n");
+    for para in norm.split("\n\n").map(str::trim).filter(|p| !p.is_empty()) {
+        d!(out, "<p>{}</p>", text(para));
+    }
+    d!(out);
+}
+
+fn category_name(name: &str, lang: Lang) -> String {
+    if name.is_empty() {
+        lang.t("fact_uncategorized").to_string()
+    } else {
+        name.to_string()
+    }
+}
+
+fn peers_cell(items: Vec<(String, String)>, rest: Option<String>, lang: Lang) -> String {
+    let total = items.len();
+    let mut parts: Vec<String> = items
+        .into_iter()
+        .take(PEER_CAP)
+        .map(|(l, t)| refer(&l, &t))
+        .collect();
+    if total > PEER_CAP {
+        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
+        parts.push(match rest {
+            Some(l) => refer(&l, &more),
+            None => text(&more),
+        });
+    }
+    parts.join("<br>")
+}
+
+fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+    let pc = &cat.components[r.component];
+    let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
+    (
+        anchor_label(pc, &pc.anchors.data_ports[r.port]),
+        format!("{} / {pn}", pc.profile.name()),
+    )
+}
+
+fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+    let pc = &cat.components[r.component];
+    let sp = &pc.profile.service_ports[r.port];
+    let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
+    (
+        anchor_label(pc, &pc.anchors.interfaces[r.port][r.interface]),
+        format!(
+            "{} / {} / {iname}",
+            pc.profile.name(),
+            model::non_empty(&sp.name).unwrap_or("")
+        ),
+    )
+}
+
+fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> String {
+    let c = &cat.components[ci];
+    let p = &c.profile;
+    let page = comp_label(c);
+    let mut out = String::with_capacity(4096);
+    d!(out, "\\page {page} {}", title(p.name()));
+    d!(out);
+    d!(out, "<p>\\ref index › \\ref {cat_label}</p>");
+    d!(out);
+    if let Some(desc) = model::non_empty(&p.basic_info.description) {
+        paragraphs(&mut out, desc);
+    }
+
+    section(&mut out, &page, "sec-basic-info", lang.t("fact_basic_info"));
+    facts_table(&mut out, lang, &facts::basic_info(c, lang));
+
+    if let Some(doc) = &p.basic_info.doc {
+        let f = facts::document(doc, lang);
+        if !f.is_empty() {
+            section(&mut out, &page, "sec-document", lang.t("fact_document"));
+            facts_table(&mut out, lang, &f);
+        }
+    }
+
+    if !p.data_ports.is_empty() {
+        section(&mut out, &page, "sec-data-ports", lang.t("data_ports"));
+        let rows: Vec<Vec<String>> = p
+            .data_ports
+            .iter()
+            .enumerate()
+            .map(|(pi, port)| {
+                let dir = match port.direction() {
+                    Some(PortDirection::In) => text(lang.t("in")),
+                    Some(PortDirection::Out) => text(lang.t("out")),
+                    _ => opt(&port.port_type),
+                };
+                let dt = port.type_.as_deref().and_then(|t| cat.data_type(t));
+                let ty = match dt {
+                    Some(t) => format!("\\ref rtc_type_{}", label(&t.slug)),
+                    None => opt(&port.type_),
+                };
+                let desc = port
+                    .doc
+                    .as_ref()
+                    .map(|d| opt(&d.description))
+                    .unwrap_or_default();
+                let peers = cat
+                    .data_port_peers(ci, pi)
+                    .iter()
+                    .map(|r| port_peer(cat, r))
+                    .collect();
+                vec![
+                    format!(
+                        "\\anchor {} {}",
+                        anchor_label(c, &c.anchors.data_ports[pi]),
+                        opt(&port.name)
+                    ),
+                    dir,
+                    ty,
+                    desc,
+                    facts_cell(&facts::data_port(port, lang)),
+                    peers_cell(
+                        peers,
+                        dt.map(|t| format!("rtc_type_{}", label(&t.slug))),
+                        lang,
+                    ),
+                ]
+            })
+            .collect();
+        table(
+            &mut out,
+            &[
+                lang.t("name"),
+                lang.t("direction"),
+                lang.t("data_type"),
+                lang.t("description"),
+                lang.t("fact_details"),
+                lang.t("connects_to"),
+            ],
+            &rows,
+        );
+    }
+
+    if !p.service_ports.is_empty() {
+        section(
+            &mut out,
+            &page,
+            "sec-service-ports",
+            lang.t("service_ports"),
+        );
+        for (si, sp) in p.service_ports.iter().enumerate() {
+            d!(
+                out,
+                "\\subsection {} {}",
+                anchor_label(c, &c.anchors.service_ports[si]),
+                title(model::non_empty(&sp.name).unwrap_or("?"))
+            );
+            d!(out);
+            let pf = facts::service_port(sp, lang);
+            if !pf.is_empty() {
+                facts_table(&mut out, lang, &pf);
+            }
+            if sp.interfaces.is_empty() {
+                continue;
+            }
+            let rows: Vec<Vec<String>> = sp
+                .interfaces
+                .iter()
+                .enumerate()
+                .map(|(ii, i)| {
+                    let dir = match i.direction_kind() {
+                        Some(Direction::Provided) => text(lang.t("provided")),
+                        Some(Direction::Required) => text(lang.t("required")),
+                        None => opt(&i.direction),
+                    };
+                    let it = i.type_.as_deref().and_then(|t| cat.interface(t));
+                    let ty = match it {
+                        Some(t) => format!("\\ref rtc_if_{}", label(&t.slug)),
+                        None => opt(&i.type_),
+                    };
+                    let desc = i
+                        .doc
+                        .as_ref()
+                        .map(|d| opt(&d.description))
+                        .unwrap_or_default();
+                    let peers = cat
+                        .interface_peers(ci, si, ii)
+                        .iter()
+                        .map(|r| iface_peer(cat, r))
+                        .collect();
+                    vec![
+                        format!(
+                            "\\anchor {} {}",
+                            anchor_label(c, &c.anchors.interfaces[si][ii]),
+                            opt(&i.name)
+                        ),
+                        dir,
+                        ty,
+                        desc,
+                        facts_cell(&facts::service_interface(i, lang)),
+                        peers_cell(
+                            peers,
+                            it.map(|t| format!("rtc_if_{}", label(&t.slug))),
+                            lang,
+                        ),
+                    ]
+                })
+                .collect();
+            table(
+                &mut out,
+                &[
+                    lang.t("interface"),
+                    lang.t("direction"),
+                    lang.t("type"),
+                    lang.t("description"),
+                    lang.t("fact_details"),
+                    lang.t("connects_to"),
+                ],
+                &rows,
+            );
+        }
+    }
+
+    let confs = p.configurations();
+    if !confs.is_empty() {
+        section(
+            &mut out,
+            &page,
+            "sec-configuration",
+            lang.t("configuration"),
+        );
+        let rows: Vec<Vec<String>> = confs
+            .iter()
+            .enumerate()
+            .map(|(k, cf)| {
+                vec![
+                    format!(
+                        "\\anchor {} {}",
+                        anchor_label(c, &c.anchors.configurations[k]),
+                        opt(&cf.name)
+                    ),
+                    opt(&cf.type_),
+                    opt(&cf.default_value),
+                    opt(&cf.unit),
+                    facts::configuration_constraint(cf)
+                        .map(|s| text(&s))
+                        .unwrap_or_default(),
+                    cf.doc
+                        .as_ref()
+                        .map(|d| opt(&d.description))
+                        .unwrap_or_default(),
+                    facts_cell(&facts::configuration(cf, lang)),
+                ]
+            })
+            .collect();
+        table(
+            &mut out,
+            &[
+                lang.t("name"),
+                lang.t("type"),
+                lang.t("default_value"),
+                lang.t("unit"),
+                lang.t("constraint"),
+                lang.t("description"),
+                lang.t("fact_details"),
+            ],
+            &rows,
+        );
+    }
+
+    section(&mut out, &page, "sec-lifecycle", lang.t("actions"));
+    let rows: Vec<Vec<String>> = ActionKind::ALL
+        .iter()
+        .map(|&k| {
+            let a = p.action(k);
+            let (desc, pre, post) = facts::action_description(a);
+            let implemented = match a {
+                Some(a) if a.is_implemented() => lang.t("yes"),
+                _ => lang.t("no"),
+            };
+            vec![
+                format!("<tt>{}</tt>", k.callback_name()),
+                text(implemented),
+                desc.map(text).unwrap_or_default(),
+                pre.map(text).unwrap_or_default(),
+                post.map(text).unwrap_or_default(),
+            ]
+        })
+        .collect();
+    table(
+        &mut out,
+        &[
+            lang.t("fact_callback"),
+            lang.t("implemented"),
+            lang.t("description"),
+            lang.t("pre_condition"),
+            lang.t("post_condition"),
+        ],
+        &rows,
+    );
+
+    if !p.parameters.is_empty() {
+        section(
+            &mut out,
+            &page,
+            "sec-system-parameters",
+            lang.t("parameters"),
+        );
+        let rows: Vec<Vec<String>> = p
+            .parameters
+            .iter()
+            .map(|par| {
+                let (n, v) = facts::parameter(par);
+                vec![text(n), text(v)]
+            })
+            .collect();
+        table(&mut out, &[lang.t("name"), lang.t("default_value")], &rows);
+    }
+
+    if let Some(l) = &p.language {
+        let lf = facts::language(l, lang);
+        let targets: Vec<Vec<Fact>> = l
+            .targets
+            .iter()
+            .map(|t| facts::target(t, lang))
+            .filter(|f| !f.is_empty())
+            .collect();
+        if !lf.is_empty() || !targets.is_empty() {
+            section(&mut out, &page, "sec-language", lang.t("language"));
+            if !lf.is_empty() {
+                facts_table(&mut out, lang, &lf);
+            }
+            for (ti, tf) in targets.iter().enumerate() {
+                d!(
+                    out,
+                    "<p><b>{} {}</b></p>",
+                    text(lang.t("fact_target")),
+                    ti + 1
+                );
+                facts_table(&mut out, lang, tf);
+            }
+        }
+    }
+
+    let props = facts::component_properties(p, lang);
+    if !props.is_empty() {
+        section(&mut out, &page, "sec-properties", lang.t("properties"));
+        let rows: Vec<Vec<String>> = props
+            .iter()
+            .map(|f| vec![text(&f.label), text(&f.value)])
+            .collect();
+        table(&mut out, &[lang.t("name"), lang.t("fact_value")], &rows);
+    }
+
+    let logs = facts::version_up_logs(p);
+    if !logs.is_empty() {
+        section(
+            &mut out,
+            &page,
+            "sec-version-history",
+            lang.t("version_up_logs"),
+        );
+        d!(out, "<ul>");
+        for l in logs {
+            d!(out, "<li>{}</li>", text(l));
+        }
+        d!(out, "</ul>");
+        d!(out);
+    }
+
+    let extras = facts::extras(p);
+    if !extras.is_empty() {
+        section(&mut out, &page, "sec-extra", lang.t("extra"));
+        facts_table(&mut out, lang, &extras);
+    }
+    out
+}
+
+fn port_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
+    refs.iter()
+        .map(|r| {
+            let c = &cat.components[r.component];
+            let port = &c.profile.data_ports[r.port];
+            vec![
+                format!("\\ref {}", comp_label(c)),
+                refer(
+                    &anchor_label(c, &c.anchors.data_ports[r.port]),
+                    model::non_empty(&port.name).unwrap_or("?"),
+                ),
+                opt(&port.type_),
+            ]
+        })
+        .collect()
+}
+
+fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
+    refs.iter()
+        .map(|r| {
+            let c = &cat.components[r.component];
+            let sp = &c.profile.service_ports[r.port];
+            let i = &sp.interfaces[r.interface];
+            vec![
+                format!("\\ref {}", comp_label(c)),
+                refer(
+                    &anchor_label(c, &c.anchors.interfaces[r.port][r.interface]),
+                    &format!(
+                        "{} / {}",
+                        model::non_empty(&sp.name).unwrap_or("?"),
+                        model::non_empty(&i.name).unwrap_or("?")
+                    ),
+                ),
+                opt(&i.type_),
+            ]
+        })
+        .collect()
+}
+
+fn names_facts(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
+    let mut f = Vec::new();
+    if !spellings.is_empty() {
+        f.push(Fact {
+            label: lang.t("fact_spellings").into(),
+            value: spellings.join(", "),
+        });
+    }
+    if !idl.is_empty() {
+        f.push(Fact {
+            label: lang.t("fact_idl_files").into(),
+            value: idl.join("\n"),
+        });
+    }
+    if !f.is_empty() {
+        facts_table(out, lang, &f);
+    }
+}
+
+fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
+    let t = &cat.data_types[ti];
+    let page = format!("rtc_type_{}", label(&t.slug));
+    let mut out = String::new();
+    d!(out, "\\page {page} {}", title(&t.name));
+    d!(out);
+    d!(out, "<p>\\ref index › \\ref rtc_types</p>");
+    d!(out);
+    names_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
+    for (anchor, key, refs) in [
+        ("sec-producers", "producers", &t.producers),
+        ("sec-consumers", "consumers", &t.consumers),
+        ("sec-others", "fact_others", &t.others),
+    ] {
+        if !refs.is_empty() {
+            section(&mut out, &page, anchor, lang.t(key));
+            table(&mut out, &cols, &port_rows(cat, refs));
+        }
+    }
+    out
+}
+
+fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
+    let t = &cat.interfaces[ii];
+    let page = format!("rtc_if_{}", label(&t.slug));
+    let mut out = String::new();
+    d!(out, "\\page {page} {}", title(&t.name));
+    d!(out);
+    d!(out, "<p>\\ref index › \\ref rtc_interfaces</p>");
+    d!(out);
+    if t.is_unprovided() {
+        d!(out, "<p><b>{}</b></p>", text(lang.t("not_provided")));
+        d!(out);
+    }
+    names_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
+    for (anchor, key, refs) in [
+        ("sec-providers", "providers", &t.providers),
+        ("sec-requirers", "requirers", &t.requirers),
+        ("sec-others", "fact_others", &t.others),
+    ] {
+        if !refs.is_empty() {
+            section(&mut out, &page, anchor, lang.t(key));
+            table(&mut out, &cols, &iface_rows(cat, refs));
+        }
+    }
+    out
+}
+
+/// Component rows; the first cell is `\subpage` on category pages, `\ref` elsewhere.
+fn component_rows(cat: &Catalog, members: &[usize], command: &str) -> Vec<Vec<String>> {
+    members
+        .iter()
+        .map(|&ci| {
+            let c = &cat.components[ci];
+            let b = &c.profile.basic_info;
+            vec![
+                format!("\\{command} {}", comp_label(c)),
+                opt(&b.description),
+                opt(&b.vendor),
+                opt(&b.version),
+            ]
+        })
+        .collect()
+}
+
+fn component_cols(lang: Lang) -> [&'static str; 4] {
+    [
+        lang.t("name"),
+        lang.t("description"),
+        lang.t("vendor"),
+        lang.t("version"),
+    ]
+}
+
+fn cat_label(slug: &str) -> String {
+    format!("rtc_cat_{}", label(slug))
+}
+
+fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
+    let mut out = String::new();
+    d!(out, "\\mainpage {}", title(site_title));
+    d!(out);
+    d!(
+        out,
+        "<p>{}: {} · {}: {} · {}: {}</p>",
+        text(lang.t("components")),
+        cat.components.len(),
+        text(lang.t("data_types")),
+        cat.data_types.len(),
+        text(lang.t("interfaces")),
+        cat.interfaces.len()
+    );
+    d!(out);
+    d!(
+        out,
+        "\\section rtc_main__catalogue {}",
+        title(lang.t("fact_catalogue"))
+    );
+    d!(out);
+    d!(out, "<ul>");
+    for f in &cat.categories {
+        d!(
+            out,
+            "<li>\\subpage {} ({})</li>",
+            cat_label(&f.slug),
+            f.components.len()
+        );
+    }
+    d!(
+        out,
+        "<li>\\subpage rtc_types ({})</li>",
+        cat.data_types.len()
+    );
+    d!(
+        out,
+        "<li>\\subpage rtc_interfaces ({})</li>",
+        cat.interfaces.len()
+    );
+    d!(out, "</ul>");
+    d!(out);
+    d!(
+        out,
+        "\\section rtc_main__components {}",
+        title(lang.t("components"))
+    );
+    d!(out);
+    for f in &cat.categories {
+        d!(
+            out,
+            "\\subsection rtc_main__{} {}",
+            cat_label(&f.slug),
+            title(&category_name(&f.name, lang))
+        );
+        d!(out);
+        table(
+            &mut out,
+            &component_cols(lang),
+            &component_rows(cat, &f.components, "ref"),
+        );
+    }
+    out
+}
+
+fn category_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
+    let f = &cat.categories[fi];
+    let mut out = String::new();
+    d!(
+        out,
+        "\\page {} {}",
+        cat_label(&f.slug),
+        title(&category_name(&f.name, lang))
+    );
+    d!(out);
+    d!(out, "<p>\\ref index</p>");
+    d!(out);
+    table(
+        &mut out,
+        &component_cols(lang),
+        &component_rows(cat, &f.components, "subpage"),
+    );
+    out
+}
+
+fn type_index(cat: &Catalog, lang: Lang) -> String {
+    let mut out = String::new();
+    d!(out, "\\page rtc_types {}", title(lang.t("data_types")));
+    d!(out);
+    d!(out, "<p>\\ref index</p>");
+    d!(out);
+    let rows: Vec<Vec<String>> = cat
+        .data_types
+        .iter()
+        .map(|t| {
+            vec![
+                format!("\\subpage rtc_type_{}", label(&t.slug)),
+                t.producers.len().to_string(),
+                t.consumers.len().to_string(),
+                t.others.len().to_string(),
+            ]
+        })
+        .collect();
+    table(
+        &mut out,
+        &[
+            lang.t("data_type"),
+            lang.t("producers"),
+            lang.t("consumers"),
+            lang.t("fact_others"),
+        ],
+        &rows,
+    );
+    out
+}
+
+fn interface_index(cat: &Catalog, lang: Lang) -> String {
+    let mut out = String::new();
+    d!(out, "\\page rtc_interfaces {}", title(lang.t("interfaces")));
+    d!(out);
+    d!(out, "<p>\\ref index</p>");
+    d!(out);
+    let rows: Vec<Vec<String>> = cat
+        .interfaces
+        .iter()
+        .map(|t| {
+            let mut name = format!("\\subpage rtc_if_{}", label(&t.slug));
+            if t.is_unprovided() {
+                name.push_str(&format!(" ({})", text(lang.t("not_provided"))));
+            }
+            vec![
+                name,
+                t.providers.len().to_string(),
+                t.requirers.len().to_string(),
+                t.others.len().to_string(),
+            ]
+        })
+        .collect();
+    table(
+        &mut out,
+        &[
+            lang.t("interface"),
+            lang.t("providers"),
+            lang.t("requirers"),
+            lang.t("fact_others"),
+        ],
+        &rows,
+    );
+    out
+}
+
+/// A Doxyfile string value: quoted, with `\` and `"` escaped and no line breaks.
+fn doxyfile_string(s: &str) -> String {
+    let one = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    format!("\"{}\"", one.replace('\\', "\\\\").replace('"', "\\\""))
+}
+
+/// The `Doxyfile`: relative paths only, warnings are errors, HTML + LaTeX + man + tag file.
+pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "# Generated by rtcdoc {}. Run `doxygen` in this folder.",
+        env!("CARGO_PKG_VERSION")
+    );
+    let _ = writeln!(
+        s,
+        "# Writes html/, latex/ (run `make` there for a PDF), man/ and the tag file rtcdoc.tag."
+    );
+    let settings: Vec<(&str, String)> = vec![
+        ("PROJECT_NAME", doxyfile_string(site_title)),
+        (
+            "OUTPUT_LANGUAGE",
+            match lang {
+                Lang::En => "English",
+                Lang::Ja => "Japanese",
+            }
+            .into(),
+        ),
+        ("OUTPUT_DIRECTORY", String::new()),
+        ("INPUT_ENCODING", "UTF-8".into()),
+        ("FULL_PATH_NAMES", "NO".into()),
+        ("RECURSIVE", "NO".into()),
+        ("CASE_SENSE_NAMES", "YES".into()),
+        // Profile text is escaped for Doxygen's own syntax; Markdown would add a second set of
+        // metacharacters and autolinking would try to resolve `A::B` / `#x` as symbols.
+        ("MARKDOWN_SUPPORT", "NO".into()),
+        ("AUTOLINK_SUPPORT", "NO".into()),
+        ("ENABLE_PREPROCESSING", "NO".into()),
+        ("EXTRACT_ALL", "NO".into()),
+        ("SHOW_FILES", "NO".into()),
+        ("SHOW_NAMESPACES", "NO".into()),
+        ("QUIET", "YES".into()),
+        ("WARNINGS", "YES".into()),
+        ("WARN_IF_UNDOCUMENTED", "NO".into()),
+        ("WARN_IF_DOC_ERROR", "YES".into()),
+        ("WARN_NO_PARAMDOC", "NO".into()),
+        ("WARN_AS_ERROR", "FAIL_ON_WARNINGS".into()),
+        ("GENERATE_HTML", "YES".into()),
+        ("HTML_OUTPUT", "html".into()),
+        ("GENERATE_TREEVIEW", "YES".into()),
+        ("SEARCHENGINE", "YES".into()),
+        ("GENERATE_LATEX", "YES".into()),
+        ("LATEX_OUTPUT", "latex".into()),
+        ("GENERATE_MAN", "YES".into()),
+        ("MAN_OUTPUT", "man".into()),
+        ("GENERATE_RTF", "NO".into()),
+        ("GENERATE_XML", "NO".into()),
+        ("GENERATE_TAGFILE", "rtcdoc.tag".into()),
+        ("HAVE_DOT", "NO".into()),
+    ];
+    for (k, v) in settings {
+        let _ = writeln!(s, "{k:<22} = {v}");
+    }
+    let _ = write!(s, "{:<22} =", "INPUT");
+    for i in inputs {
+        let _ = write!(s, " \\\n                         {i}");
+    }
+    s.push('\n');
+    s
+}
+
+/// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
+pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
+    let mut of = vec![0; cat.components.len()];
+    for (fi, f) in cat.categories.iter().enumerate() {
+        for &ci in &f.components {
+            of[ci] = fi;
+        }
+    }
+    let mut out = vec![
+        ("mainpage.dox".to_string(), mainpage(cat, site_title, lang)),
+        ("types.dox".to_string(), type_index(cat, lang)),
+        ("interfaces.dox".to_string(), interface_index(cat, lang)),
+    ];
+    out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
+        (
+            format!("categories/{}.dox", cat.categories[fi].slug),
+            category_page(cat, fi, lang),
+        )
+    }));
+    out.par_extend((0..cat.components.len()).into_par_iter().map(|ci| {
+        (
+            format!("components/{}.dox", cat.components[ci].slug),
+            component_page(cat, ci, &cat_label(&cat.categories[of[ci]].slug), lang),
+        )
+    }));
+    out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
+        (
+            format!("types/{}.dox", cat.data_types[ti].slug),
+            type_page(cat, ti, lang),
+        )
+    }));
+    out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
+        (
+            format!("interfaces/{}.dox", cat.interfaces[ii].slug),
+            interface_page(cat, ii, lang),
+        )
+    }));
+    let inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
+    out.push(("Doxyfile".into(), doxyfile(site_title, lang, &inputs)));
+    out
+}
+
+impl Renderer for DoxygenRenderer {
+    fn name(&self) -> &'static str {
+        "doxygen"
+    }
+    fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
+        let pages = pages(ctx.catalog, &ctx.site.title, ctx.site.language);
+        pages
+            .par_iter()
+            .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
+        Ok(pages.len())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_escapes_every_metacharacter() {
+        assert_eq!(text(r"a\b"), r"a\\b");
+        assert_eq!(text("@param x"), r"\@param x");
+        assert_eq!(text(r"\ref foo"), r"\\ref foo");
+        assert_eq!(text("<b>&amp;"), r"\<b\>\&amp;");
+        assert_eq!(text("100% $HOME"), r"100\% \$HOME");
+        assert_eq!(text("say \"hi\" it's"), r#"say \"hi\" it's"#);
+        assert_eq!(text("#include x"), r"\#include x");
+        assert_eq!(text("RTC::TimedLong"), r"RTC\::TimedLong");
+        assert_eq!(text("a:b"), "a:b");
+        assert_eq!(
+            text("a--b---c----d-----e-f"),
+            r"a\--b\---c\--\--d\--\---e-f"
+        );
+        assert_eq!(text("l1\n- l2\r\n+ l3"), "l1<br>- l2<br>+ l3");
+        assert_eq!(text("*/ end"), "*/ end");
+        assert_eq!(text("a\u{0}b\tc"), "ab c");
+    }
+
+    #[test]
+    fn titles_are_one_line_and_keep_type_names() {
+        assert_eq!(title("RTC::TimedLong"), "RTC::TimedLong");
+        assert_eq!(title("a\nb <c>"), r"a b \<c\>");
+        assert_eq!(title(""), "?");
+    }
+
+    #[test]
+    fn labels_are_plain() {
+        assert_eq!(label("port-in-1"), "port_in_1");
+        assert!(label("x-ab12cd")
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_'));
+    }
+
+    #[test]
+    fn doxyfile_has_no_absolute_paths_and_quotes_the_title() {
+        let d = doxyfile("My \"cat\"", Lang::Ja, &["mainpage.dox".into()]);
+        assert!(d.contains(r#"PROJECT_NAME           = "My \"cat\"""#));
+        assert!(d.contains("OUTPUT_LANGUAGE        = Japanese"));
+        assert!(d.contains("WARN_AS_ERROR          = FAIL_ON_WARNINGS"));
+        assert!(!d.contains("= /"));
+    }
+}

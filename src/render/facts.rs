@@ -1,0 +1,404 @@
+//! What a page shows, independent of the output format.
+//!
+//! Every renderer (HTML, Markdown, Doxygen) lists the same values for a component, a port, an
+//! interface or a configuration parameter. This module turns the model into rows of
+//! ([`Fact::label`], [`Fact::value`]) — labels already translated through [`Lang::t`], values as
+//! the profile wrote them (trimmed; empty values left out, see [`model::non_empty`]). Both are
+//! *unescaped* plain text: each renderer escapes them for its own format.
+//!
+//! Values that a renderer shows in a dedicated column (a port's name, direction, type and
+//! description) are not repeated here; everything else the profile holds is.
+
+use crate::catalog::Component;
+use crate::constraint;
+use crate::i18n::Lang;
+use crate::model::{
+    self, Action, BasicDoc, Configuration, DataPort, Extra, Language, Parameter, Profile, Property,
+    ServiceInterface, ServicePort, Target,
+};
+use std::borrow::Cow;
+
+/// One labelled value of a page.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Fact {
+    /// A translated label, or a name taken from the profile (property names, extra paths).
+    pub label: Cow<'static, str>,
+    /// The value as the profile wrote it (plain text, may contain line breaks).
+    pub value: String,
+}
+
+impl Fact {
+    fn new(label: impl Into<Cow<'static, str>>, value: impl Into<String>) -> Fact {
+        Fact {
+            label: label.into(),
+            value: value.into(),
+        }
+    }
+}
+
+/// Collects facts, skipping absent and empty values.
+struct Facts {
+    lang: Lang,
+    out: Vec<Fact>,
+}
+
+impl Facts {
+    fn new(lang: Lang) -> Facts {
+        Facts {
+            lang,
+            out: Vec::new(),
+        }
+    }
+    fn opt(&mut self, key: &'static str, v: &Option<String>) -> &mut Self {
+        if let Some(s) = model::non_empty(v) {
+            self.out.push(Fact::new(self.lang.t(key), s));
+        }
+        self
+    }
+    fn text(&mut self, key: &'static str, v: &str) -> &mut Self {
+        let v = v.trim();
+        if !v.is_empty() {
+            self.out.push(Fact::new(self.lang.t(key), v));
+        }
+        self
+    }
+    fn list(&mut self, key: &'static str, v: &[String]) -> &mut Self {
+        let items: Vec<&str> = v
+            .iter()
+            .map(|s| s.trim())
+            .filter(|s| !s.is_empty())
+            .collect();
+        if !items.is_empty() {
+            self.out.push(Fact::new(self.lang.t(key), items.join(", ")));
+        }
+        self
+    }
+    fn properties(&mut self, props: &[Property], skip: &[&str]) -> &mut Self {
+        for p in props {
+            let name = p.name.as_deref().map(str::trim).unwrap_or("");
+            if skip.contains(&name) {
+                continue;
+            }
+            let value = model::non_empty(&p.value).unwrap_or("");
+            if name.is_empty() && value.is_empty() {
+                continue;
+            }
+            let label = if name.is_empty() {
+                Cow::Borrowed(self.lang.t("properties"))
+            } else {
+                Cow::Owned(name.to_string())
+            };
+            self.out.push(Fact::new(label, value));
+        }
+        self
+    }
+    fn done(&mut self) -> Vec<Fact> {
+        std::mem::take(&mut self.out)
+    }
+}
+
+/// Header fields of a component page (Basic Profile, spec 2.3.2, and its extended part), in a
+/// fixed order. Name and description are left out: pages show them as title and lead text.
+pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
+    let p = &c.profile;
+    let b = &p.basic_info;
+    Facts::new(lang)
+        .opt("fact_id", &p.id)
+        .opt("category", &b.category)
+        .opt("vendor", &b.vendor)
+        .opt("version", &b.version)
+        .opt("component_type", &b.component_type)
+        .opt("activity_type", &b.activity_type)
+        .opt("component_kind", &b.component_kind)
+        .opt("fact_rtc_type", &b.rtc_type)
+        .opt("execution_type", &b.execution_type)
+        .opt("execution_rate", &b.execution_rate)
+        .opt("max_instances", &b.max_instances)
+        .opt("fact_abstract", &b.abstract_)
+        .opt("fact_hardware_profile", &b.hardware_profile)
+        .opt("creation_date", &b.creation_date)
+        .opt("update_date", &b.update_date)
+        .opt("fact_comment", &b.comment)
+        .opt("fact_save_project", &b.save_project)
+        .opt("fact_profile_version", &p.version)
+        .text("source", &c.source)
+        .done()
+}
+
+/// The component's Document Profile (spec 2.4.2).
+pub fn document(d: &BasicDoc, lang: Lang) -> Vec<Fact> {
+    Facts::new(lang)
+        .opt("description", &d.description)
+        .opt("inout", &d.inout)
+        .opt("algorithm", &d.algorithm)
+        .opt("creator", &d.creator)
+        .opt("license", &d.license)
+        .opt("reference", &d.reference)
+        .done()
+}
+
+/// Everything about a data port except name, port type, data type and description (shown in
+/// their own columns): transport attributes, constraint, the rest of its Document Profile,
+/// extended attributes, properties and FSM events.
+pub fn data_port(p: &DataPort, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    f.opt("fact_idl_file", &p.idl_file)
+        .opt("fact_interface_type", &p.interface_type)
+        .opt("fact_dataflow_type", &p.dataflow_type)
+        .opt("fact_subscription_type", &p.subscription_type)
+        .opt("unit", &p.unit);
+    if let Some(c) = &p.constraint {
+        f.text("constraint", &constraint::describe(c));
+    }
+    if let Some(d) = &p.doc {
+        f.opt("fact_doc_type", &d.type_)
+            .opt("fact_number", &d.number)
+            .opt("fact_semantics", &d.semantics)
+            .opt("fact_doc_unit", &d.unit)
+            .opt("fact_occurrence", &d.occurrence)
+            .opt("fact_operation", &d.operation);
+    }
+    f.opt("fact_comment", &p.comment)
+        .opt("fact_variable_name", &p.variable_name)
+        .opt("fact_position", &p.position)
+        .properties(&p.properties, &[]);
+    for e in &p.events {
+        f.text("fact_event", &event_text(e));
+    }
+    f.done()
+}
+
+/// One FSM event as a line: `name: type (source → target) [condition] description`.
+fn event_text(e: &model::Event) -> String {
+    let mut s = model::non_empty(&e.name).unwrap_or("").to_string();
+    if let Some(t) = model::non_empty(&e.type_) {
+        s.push_str(&format!(": {t}"));
+    }
+    let src = model::non_empty(&e.source);
+    let dst = model::non_empty(&e.target);
+    if src.is_some() || dst.is_some() {
+        s.push_str(&format!(
+            " ({} → {})",
+            src.unwrap_or("?"),
+            dst.unwrap_or("?")
+        ));
+    }
+    if let Some(c) = model::non_empty(&e.condition) {
+        s.push_str(&format!(" [{c}]"));
+    }
+    if let Some(d) = e
+        .doc
+        .as_ref()
+        .and_then(|d| model::non_empty(&d.description))
+    {
+        s.push_str(&format!(" {d}"));
+    }
+    s
+}
+
+/// Port-level facts of a service port (its interfaces are listed separately).
+pub fn service_port(p: &ServicePort, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    if let Some(d) = &p.doc {
+        f.opt("description", &d.description)
+            .opt("fact_if_description", &d.ifdescription);
+    }
+    let kinds: Vec<String> = p
+        .trans_methods
+        .iter()
+        .filter_map(|t| model::non_empty(&t.kind).map(str::to_string))
+        .collect();
+    f.list("fact_trans_methods", &kinds)
+        .opt("fact_comment", &p.comment)
+        .opt("fact_position", &p.position)
+        .properties(&p.properties, &[])
+        .done()
+}
+
+/// Everything about a service interface except name, direction, type and description.
+pub fn service_interface(i: &ServiceInterface, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    f.opt("fact_instance_name", &i.instance_name)
+        .opt("fact_idl_file", &i.idl_file)
+        .opt("fact_path", &i.path);
+    if let Some(d) = &i.doc {
+        f.opt("fact_doc_argument", &d.doc_argument)
+            .opt("fact_doc_return", &d.doc_return)
+            .opt("fact_doc_exception", &d.doc_exception)
+            .opt("pre_condition", &d.doc_pre_condition)
+            .opt("post_condition", &d.doc_post_condition);
+    }
+    f.opt("fact_comment", &i.comment)
+        .opt("fact_variable_name", &i.variable_name)
+        .properties(&i.properties, &[])
+        .done()
+}
+
+/// The constraint of a configuration parameter for humans (shared [`constraint::describe`]).
+pub fn configuration_constraint(c: &Configuration) -> Option<String> {
+    c.constraint
+        .as_ref()
+        .map(constraint::describe)
+        .filter(|s| !s.trim().is_empty())
+}
+
+/// Everything about a configuration parameter except name, type, default value, unit,
+/// constraint and description: the rest of its Document Profile, the editor widget and step
+/// (`__widget__`, `__step__`, with their meaning), extended attributes and other properties.
+pub fn configuration(c: &Configuration, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    if let Some(d) = &c.doc {
+        f.opt("fact_dataname", &d.dataname)
+            .opt("fact_doc_default", &d.default_value)
+            .opt("fact_doc_unit", &d.unit)
+            .opt("fact_range", &d.range)
+            .opt("fact_doc_constraint", &d.constraint);
+    }
+    if let Some(w) = c.widget().map(str::trim).filter(|w| !w.is_empty()) {
+        f.text("fact_widget", &widget_text(w, lang));
+    }
+    if let Some(s) = c.step() {
+        f.text("fact_step", s);
+    }
+    f.opt("fact_comment", &c.comment)
+        .opt("fact_variable_name", &c.variable_name)
+        .properties(&c.properties, &["__widget__", "__step__"])
+        .done()
+}
+
+/// `slider.0.1` → `slider.0.1 (slider, step 0.1)`; `radio` → `radio (radio buttons)`.
+fn widget_text(w: &str, lang: Lang) -> String {
+    let (kind, rest) = match w.split_once('.') {
+        Some((k, r)) => (k, Some(r)),
+        None => (w, None),
+    };
+    let key = match kind.to_ascii_lowercase().as_str() {
+        "text" => "fact_w_text",
+        "radio" => "fact_w_radio",
+        "slider" => "fact_w_slider",
+        "spin" => "fact_w_spin",
+        "checkbox" => "fact_w_checkbox",
+        "ordered_list" => "fact_w_ordered_list",
+        _ => return w.to_string(),
+    };
+    match rest.filter(|r| !r.is_empty()) {
+        Some(step) => format!("{w} ({}, {} {step})", lang.t(key), lang.t("fact_step")),
+        None => format!("{w} ({})", lang.t(key)),
+    }
+}
+
+/// Facts of a lifecycle action beyond implemented/description/pre/post: nothing in the spec,
+/// so this is the place for future extended attributes. Kept for symmetry with the others.
+pub fn action_description(a: Option<&Action>) -> (Option<&str>, Option<&str>, Option<&str>) {
+    let d = a.and_then(|a| a.doc.as_ref());
+    (
+        d.and_then(|d| model::non_empty(&d.description)),
+        d.and_then(|d| model::non_empty(&d.pre_condition)),
+        d.and_then(|d| model::non_empty(&d.post_condition)),
+    )
+}
+
+/// A system parameter as (name, default value).
+pub fn parameter(p: &Parameter) -> (&str, &str) {
+    (
+        model::non_empty(&p.name).unwrap_or(""),
+        model::non_empty(&p.default_value).unwrap_or(""),
+    )
+}
+
+/// The implementation language (spec 2.3.12).
+pub fn language(l: &Language, lang: Lang) -> Vec<Fact> {
+    Facts::new(lang).opt("language", &l.kind).done()
+}
+
+/// One target environment (spec 2.5.7) with its libraries.
+pub fn target(t: &Target, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    f.opt("fact_lang_version", &t.lang_version)
+        .opt("fact_os", &t.os)
+        .list("fact_os_versions", &t.os_versions)
+        .opt("fact_other", &t.other)
+        .list("fact_cpus", &t.cpus)
+        .opt("fact_cpu_other", &t.cpu_other);
+    for l in &t.libraries {
+        let mut s = model::non_empty(&l.name).unwrap_or("").to_string();
+        for v in [&l.version, &l.other]
+            .into_iter()
+            .filter_map(model::non_empty)
+        {
+            if !s.is_empty() {
+                s.push(' ');
+            }
+            s.push_str(v);
+        }
+        f.text("fact_library", &s);
+    }
+    f.done()
+}
+
+/// Component-level properties (`rtcExt:Properties` of BasicInfo), including `FSM` and
+/// `__iso__*` keys.
+pub fn component_properties(p: &Profile, lang: Lang) -> Vec<Fact> {
+    Facts::new(lang)
+        .properties(&p.basic_info.properties, &[])
+        .done()
+}
+
+/// Non-empty version-up log entries.
+pub fn version_up_logs(p: &Profile) -> Vec<&str> {
+    p.basic_info
+        .version_up_logs
+        .iter()
+        .map(|s| s.trim())
+        .filter(|s| !s.is_empty())
+        .collect()
+}
+
+/// Every extra (unknown) value of the profile, flattened: label = `path: name/child/…`,
+/// value = the text (attributes of unknown elements become their own rows).
+pub fn extras(p: &Profile) -> Vec<Fact> {
+    fn walk(prefix: &str, e: &Extra, out: &mut Vec<Fact>) {
+        let name = format!("{prefix}{}", e.name);
+        let value = e.value.as_deref().map(str::trim).unwrap_or("");
+        if !value.is_empty() || e.children.is_empty() {
+            out.push(Fact::new(name.clone(), value));
+        }
+        for c in &e.children {
+            walk(&format!("{name}/"), c, out);
+        }
+    }
+    let mut out = Vec::new();
+    for (path, e) in p.all_extras() {
+        walk(&format!("{path}: "), e, &mut out);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn empty_values_are_left_out_and_widgets_explained() {
+        let mut c = Configuration {
+            comment: Some("  ".into()),
+            variable_name: Some("m_gain".into()),
+            ..Default::default()
+        };
+        c.properties.push(Property {
+            name: Some("__widget__".into()),
+            value: Some("slider.0.5".into()),
+            ..Default::default()
+        });
+        let f = configuration(&c, Lang::En);
+        assert!(f.iter().all(|f| f.label != "Comment"));
+        assert!(f.iter().any(|f| f.value == "m_gain"));
+        assert!(f
+            .iter()
+            .any(|f| f.label == "Widget" && f.value == "slider.0.5 (slider, Step 0.5)"));
+        assert!(
+            f.iter().all(|f| f.label != "__widget__"),
+            "widget is shown once"
+        );
+    }
+}

@@ -1,0 +1,603 @@
+//! `rtcdoc check`: one failing fixture and its fixed twin per rule (code and line:col),
+//! constraint evaluation for every operator, the CLI (exit codes, formats, --explain) and a run
+//! over the shared corpus.
+
+mod common;
+
+use rtcdoc::build::{self, LoadOptions};
+use rtcdoc::check::{self, Report};
+use rtcdoc::constraint::{evaluate, like_matches, LikeChars, Verdict};
+use rtcdoc::model::{Comparison, Condition, Constraint, ConstraintKind, Pos};
+use rtcdoc::value::ValueType;
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    common::root().join("tests/fixtures/check").join(name)
+}
+
+fn report(path: &Path) -> Report {
+    let loaded = build::load(path, &LoadOptions::default()).expect("load");
+    check::check(&loaded.catalog)
+}
+
+/// (code, fixture, file within a directory fixture, line, column)
+const CASES: &[(&str, &str, u32, u32)] = &[
+    ("RTC101", "", 3, 3),
+    ("RTC102", "", 3, 3),
+    ("RTC103", "", 3, 3),
+    ("RTC104", "", 3, 3),
+    ("RTC105", "", 3, 3),
+    ("RTC106", "", 7, 5),
+    ("RTC201", "", 2, 1),
+    ("RTC202", "", 2, 1),
+    ("RTC203", "", 3, 3),
+    ("RTC204", "", 9, 3),
+    ("RTC205", "", 10, 3),
+    ("RTC206", "", 12, 5),
+    ("RTC207", "", 13, 5),
+    ("RTC208", "", 3, 3),
+    ("RTC209", "", 3, 3),
+    ("RTC210", "", 9, 3),
+    ("RTC211", "", 9, 3),
+    ("RTC212", "", 9, 3),
+    ("RTC301", "", 10, 5),
+    ("RTC302", "", 10, 5),
+    ("RTC303", "", 10, 5),
+    ("RTC304", "", 11, 7),
+    ("RTC305", "", 11, 7),
+    ("RTC401", "", 11, 5),
+    ("RTC501", "", 3, 3),
+    ("RTC502", "", 9, 3),
+    ("RTC503", "", 11, 5),
+    ("RTC504", "", 10, 5),
+    ("RTC505", "", 7, 5),
+    ("RTC010", "A.xml", 2, 1),
+    ("RTC402", "A.xml", 9, 3),
+];
+
+#[test]
+fn every_rule_has_a_failing_fixture_and_a_fixed_twin() {
+    for &(code, file, line, column) in CASES {
+        let (bad, good) = if file.is_empty() {
+            (
+                fixture(&format!("{code}-bad.xml")),
+                fixture(&format!("{code}-good.xml")),
+            )
+        } else {
+            (
+                fixture(&format!("{code}-bad")),
+                fixture(&format!("{code}-good")),
+            )
+        };
+        let r = report(&bad);
+        let hit = r.diagnostics.iter().find(|d| d.code == code);
+        let d = hit.unwrap_or_else(|| panic!("{code}: not reported: {:#?}", r.diagnostics));
+        let p = d.pos.unwrap_or_else(|| panic!("{code}: no position"));
+        assert_eq!((p.line, p.column), (line, column), "{code}: {}", d.message);
+        if !file.is_empty() {
+            assert!(d.file.ends_with(file), "{code}: {}", d.file);
+        }
+        assert!(d.hint.is_some(), "{code} has no hint");
+        // The failing fixture shows exactly this one problem.
+        assert!(
+            r.diagnostics.iter().all(|d| d.code == code),
+            "{code}: other findings: {:#?}",
+            r.diagnostics
+        );
+        let r = report(&good);
+        assert!(
+            r.diagnostics.is_empty(),
+            "{code}: the fixed twin is not clean: {:#?}",
+            r.diagnostics
+        );
+    }
+}
+
+#[test]
+fn every_registered_rule_is_covered_or_a_loader_code() {
+    for r in check::RULES {
+        let covered = CASES.iter().any(|c| c.0 == r.code) || r.code < "RTC100";
+        assert!(covered, "{} has no fixture", r.code);
+    }
+}
+
+#[test]
+fn bundled_examples_satisfy_their_constraints() {
+    let r = report(&common::root().join("examples"));
+    let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code).collect();
+    for bad in ["RTC301", "RTC303", "RTC304", "RTC305"] {
+        assert!(
+            !codes.contains(&bad),
+            "{bad} in examples: {:#?}",
+            r.diagnostics
+        );
+    }
+    assert_eq!(r.summary.errors, 0, "{:#?}", r.diagnostics);
+    assert!(r.coverage.total > 0 && r.coverage.percent <= 100.0);
+}
+
+// ---- constraint evaluation -------------------------------------------------------------
+
+fn unit(cond: Condition) -> Constraint {
+    Constraint {
+        kind: ConstraintKind::Unit {
+            key: None,
+            condition: Box::new(cond),
+        },
+        pos: Pos::default(),
+        extra: vec![],
+    }
+}
+fn keyed(key: &str, c: Constraint) -> Constraint {
+    let ConstraintKind::Unit { condition, .. } = c.kind else {
+        panic!("unit expected")
+    };
+    Constraint {
+        kind: ConstraintKind::Unit {
+            key: Some(key.into()),
+            condition,
+        },
+        pos: Pos::default(),
+        extra: vec![],
+    }
+}
+fn cmp_case(c: Comparison, lit: &str, match_case: Option<&str>) -> Constraint {
+    unit(Condition::Compare {
+        comparison: c,
+        literal: Some(lit.into()),
+        match_case: match_case.map(Into::into),
+    })
+}
+fn cmp(c: Comparison, lit: &str) -> Constraint {
+    cmp_case(c, lit, None)
+}
+fn between(lo: &str, hi: &str) -> Constraint {
+    unit(Condition::Between {
+        lower: Some(lo.into()),
+        upper: Some(hi.into()),
+    })
+}
+fn like(lit: &str, w: Option<&str>, s: Option<&str>, e: Option<&str>) -> Constraint {
+    unit(Condition::Like {
+        literal: Some(lit.into()),
+        wild_card: w.map(Into::into),
+        single_char: s.map(Into::into),
+        escape_char: e.map(Into::into),
+    })
+}
+fn not(c: Constraint) -> Constraint {
+    unit(Condition::Not { operand: c })
+}
+fn and(v: Vec<Constraint>) -> Constraint {
+    unit(Condition::And { operands: v })
+}
+fn or(v: Vec<Constraint>) -> Constraint {
+    unit(Condition::Or { operands: v })
+}
+fn null() -> Constraint {
+    unit(Condition::IsNull { text: None })
+}
+fn list(items: Vec<Constraint>) -> Constraint {
+    Constraint {
+        kind: ConstraintKind::List { items },
+        pos: Pos::default(),
+        extra: vec![],
+    }
+}
+fn hash(items: Vec<Constraint>) -> Constraint {
+    Constraint {
+        kind: ConstraintKind::Hash { items },
+        pos: Pos::default(),
+        extra: vec![],
+    }
+}
+fn ok(c: &Constraint, v: &str, ty: &str) -> bool {
+    match evaluate(c, v, ValueType::parse(ty)) {
+        Verdict::Satisfied => true,
+        Verdict::Violated(_) => false,
+        Verdict::Unevaluable(w) => panic!("unevaluable: {w}"),
+    }
+}
+
+#[test]
+fn comparisons_numeric_and_string() {
+    use Comparison::*;
+    assert!(ok(&cmp(EqualTo, "100"), "100.0", "double"));
+    assert!(!ok(&cmp(EqualTo, "100"), "100.0", "string"));
+    assert!(ok(&cmp(NotEqualTo, "100"), "99", "int"));
+    assert!(!ok(&cmp(NotEqualTo, "100"), "100", "int"));
+    assert!(ok(&cmp(LessThan, "100"), "99", "int"));
+    assert!(!ok(&cmp(LessThan, "100"), "100", "int"));
+    // 9 < 10 numerically, but "9" > "10" as strings.
+    assert!(ok(&cmp(LessThan, "10"), "9", "short"));
+    assert!(!ok(&cmp(LessThan, "10"), "9", "string"));
+    assert!(ok(&cmp(GreaterThan, "-1.5"), "-1", "float"));
+    assert!(ok(&cmp(LessThanOrEqualTo, "100"), "100", "long"));
+    assert!(!ok(&cmp(LessThanOrEqualTo, "100"), "100.5", "double"));
+    assert!(ok(&cmp(GreaterThanOrEqualTo, "0"), "0", "unsigned int"));
+    assert!(ok(&cmp(LessThan, "b"), "a", "string"));
+    // Unknown types compare numerically when both sides are numbers.
+    assert!(ok(&cmp(LessThan, "10"), "9", "MyType"));
+    // Booleans compare by value.
+    assert!(ok(&cmp(EqualTo, "true"), "1", "bool"));
+    assert!(!ok(&cmp(EqualTo, "false"), "yes", "boolean"));
+}
+
+#[test]
+fn match_case() {
+    use Comparison::*;
+    assert!(
+        !ok(&cmp(EqualTo, "test"), "TEST", "string"),
+        "absent = sensitive"
+    );
+    assert!(!ok(
+        &cmp_case(EqualTo, "test", Some("true")),
+        "TEST",
+        "string"
+    ));
+    assert!(ok(
+        &cmp_case(EqualTo, "test", Some("false")),
+        "TEST",
+        "string"
+    ));
+    assert!(ok(
+        &cmp_case(NotEqualTo, "test", Some("true")),
+        "Test",
+        "string"
+    ));
+    assert!(!ok(
+        &cmp_case(NotEqualTo, "test", Some("false")),
+        "Test",
+        "string"
+    ));
+}
+
+#[test]
+fn between_edges_inclusive() {
+    let b = between("100", "200");
+    assert!(ok(&b, "100", "int"));
+    assert!(ok(&b, "200", "int"));
+    assert!(ok(&b, "150", "int"));
+    assert!(!ok(&b, "99", "int"));
+    assert!(!ok(&b, "200.0001", "double"));
+    assert!(ok(&between("b", "d"), "c", "string"));
+    assert!(!ok(&between("b", "d"), "e", "string"));
+}
+
+#[test]
+fn null_and_not() {
+    assert!(ok(&null(), "", "string"));
+    assert!(ok(&null(), "  ", "string"));
+    assert!(!ok(&null(), "x", "string"));
+    assert!(ok(&not(null()), "x", "string"));
+    assert!(!ok(&not(null()), "", "string"));
+    assert!(
+        !ok(&not(null()), "", "vector<int>"),
+        "null applies to the whole vector"
+    );
+    assert!(ok(&not(not(cmp(Comparison::EqualTo, "1"))), "1", "int"));
+}
+
+#[test]
+fn and_or_nesting() {
+    use Comparison::*;
+    let range = and(vec![cmp(GreaterThanOrEqualTo, "0"), cmp(LessThan, "10")]);
+    assert!(ok(&range, "0", "int"));
+    assert!(!ok(&range, "10", "int"));
+    let outside = or(vec![
+        cmp(LessThanOrEqualTo, "100"),
+        cmp(GreaterThanOrEqualTo, "200"),
+    ]);
+    assert!(ok(&outside, "100", "int"));
+    assert!(ok(&outside, "250", "int"));
+    assert!(!ok(&outside, "150", "int"));
+    let colours = or(vec![
+        cmp(EqualTo, "red"),
+        cmp(EqualTo, "blue"),
+        cmp(EqualTo, "green"),
+    ]);
+    assert!(ok(&colours, "blue", "string"));
+    assert!(!ok(&colours, "white", "string"));
+    // not (x in 5..=10 or x = 42) and x > 0, three operands under and.
+    let nested = and(vec![
+        not(or(vec![between("5", "10"), cmp(EqualTo, "42")])),
+        cmp(GreaterThan, "0"),
+        not(null()),
+    ]);
+    assert!(ok(&nested, "3", "int"));
+    assert!(!ok(&nested, "7", "int"));
+    assert!(!ok(&nested, "42", "int"));
+    assert!(!ok(&nested, "-1", "int"));
+}
+
+#[test]
+fn like_patterns() {
+    let d = LikeChars::from_attrs(&None, &None, &None);
+    assert!(like_matches("camera0", "camera?", d));
+    assert!(!like_matches("camera10", "camera?", d));
+    assert!(like_matches("camera10", "camera*", d));
+    assert!(like_matches("", "*", d));
+    assert!(like_matches("abcabd", "*abd", d));
+    assert!(!like_matches("abc", "a*d", d));
+    // Escapes: a literal star and question mark.
+    assert!(like_matches("a*b", "a\\*b", d));
+    assert!(!like_matches("axb", "a\\*b", d));
+    assert!(like_matches("why?", "why\\?", d));
+    // Custom characters, as in spec 8.1 (`singleChar=". "`, `escapeChar="\$"`).
+    let c = LikeChars::from_attrs(&Some("%".into()), &Some(". ".into()), &Some("!".into()));
+    assert!(like_matches("abcd : efg : anything", ".... : ... : %", c));
+    assert!(!like_matches("abc : efg : x", ".... : ... : %", c));
+    assert!(like_matches("50%", "50!%", c));
+    assert!(like_matches("a.b", "a!.b", c));
+    assert!(!like_matches("axb", "a!.b", c));
+    // Regex metacharacters are plain text.
+    assert!(like_matches("(a+)$", "(a+)$", d));
+    assert!(!like_matches("aa", "(a+)", d));
+    // Pathological pattern: quick, no exponential backtracking.
+    let text = "a".repeat(2000);
+    let pat = format!("{}b", "*a".repeat(50));
+    assert!(!like_matches(&text, &pat, d));
+    // Evaluated as a constraint.
+    assert!(ok(&like("cam*", None, None, None), "camera", "string"));
+    assert!(!ok(&like("cam*", None, None, None), "Camera", "string"));
+}
+
+#[test]
+fn list_and_hash_over_vectors() {
+    use Comparison::*;
+    let l = list(vec![between("0", "10"), cmp(GreaterThan, "100")]);
+    assert!(ok(&l, "5, 200", "vector<int>"));
+    assert!(
+        ok(&l, "5,200,7", "std::vector<int>"),
+        "extra elements are free"
+    );
+    assert!(!ok(&l, "11,200", "vector<int>"));
+    assert!(!ok(&l, "5,50", "vector<int>"));
+    assert!(!ok(&l, "5", "vector<int>"), "missing element");
+    // A unit over a vector applies to every element.
+    assert!(ok(&between("0", "1"), "0.1,0.5,1", "vector<double>"));
+    assert!(!ok(&between("0", "1"), "0.1,1.5", "vector<double>"));
+    assert!(ok(&between("0", "1"), "", "vector<double>"), "empty vector");
+    // An enumeration over a vector: each element is one of the values.
+    let one_of = or(vec![cmp(EqualTo, "raw"), cmp(EqualTo, "jpeg")]);
+    assert!(ok(&one_of, "raw,jpeg", "vector<string>"));
+    assert!(!ok(&one_of, "raw,png", "vector<string>"));
+    let h = hash(vec![
+        keyed("x", cmp(GreaterThanOrEqualTo, "0")),
+        keyed("width", between("1", "1280")),
+    ]);
+    assert!(
+        ok(&h, "x:0,y:5,width:640", "string"),
+        "numbers inside a string"
+    );
+    assert!(!ok(&h, "x:-1,width:640", "string"));
+    assert!(!ok(&h, "x:1", "string"), "missing key");
+    assert!(!ok(&h, "x:1,width:2000", "vector<int>"));
+    // Hash over a plain value: keyed alternatives.
+    let alt = hash(vec![
+        keyed("twochar", cmp(EqualTo, "2")),
+        keyed("threechar", cmp(EqualTo, "3")),
+    ]);
+    assert!(ok(&alt, "2", "int"));
+    assert!(!ok(&alt, "4", "int"));
+    // A mix of pairs and plain items cannot be evaluated.
+    assert!(matches!(
+        evaluate(&h, "x:1,7", ValueType::parse("string")),
+        Verdict::Unevaluable(_)
+    ));
+}
+
+#[test]
+fn evaluation_never_panics_on_odd_input() {
+    let odd = [
+        "",
+        ",",
+        ":",
+        ",,,:,:",
+        "\u{0}",
+        "ｘ：１",
+        "1e999",
+        "-",
+        "NaN",
+    ];
+    let cs = [
+        cmp(Comparison::LessThan, ""),
+        between("x", "1"),
+        like("", Some(""), Some(""), Some("")),
+        like("\\", None, None, None),
+        list(vec![]),
+        hash(vec![cmp(Comparison::EqualTo, "1")]),
+        and(vec![]),
+        or(vec![]),
+        Constraint {
+            kind: ConstraintKind::Empty,
+            pos: Pos::default(),
+            extra: vec![],
+        },
+    ];
+    for c in &cs {
+        for v in odd {
+            for ty in [
+                "int",
+                "double",
+                "bool",
+                "char",
+                "string",
+                "vector<int>",
+                "X",
+            ] {
+                let _ = evaluate(c, v, ValueType::parse(ty));
+                let _ = rtcdoc::constraint::problems(c, ValueType::parse(ty));
+            }
+        }
+    }
+    // Deep nesting is bounded.
+    let mut deep = null();
+    for _ in 0..2000 {
+        deep = not(deep);
+    }
+    let _ = evaluate(&deep, "x", ValueType::parse("string"));
+    std::mem::forget(deep); // dropping 2000 nested boxes recursively is fine, but not needed
+}
+
+// ---- CLI -------------------------------------------------------------------------------
+
+fn run(args: &[&str]) -> std::process::Output {
+    common::rtcdoc(args, &common::root())
+}
+
+#[test]
+fn cli_exit_codes() {
+    let good = "tests/fixtures/check/RTC303-good.xml";
+    let bad = "tests/fixtures/check/RTC303-bad.xml";
+    let warn = "tests/fixtures/check/RTC203-bad.xml";
+    assert_eq!(run(&["check", good]).status.code(), Some(0));
+    let out = run(&["check", bad]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("error[RTC303]"), "{err}");
+    assert!(
+        err.contains("tests/fixtures/check/RTC303-bad.xml:10:5"),
+        "{err}"
+    );
+    assert!(err.contains("^"), "caret under the source line: {err}");
+    assert!(err.contains("help:"), "{err}");
+    assert!(!err.contains("\u{1b}["), "NO_COLOR honoured: {err}");
+    assert_eq!(run(&["check", warn]).status.code(), Some(0));
+    assert_eq!(
+        run(&["check", "--deny", "warnings", warn]).status.code(),
+        Some(1)
+    );
+    assert_eq!(run(&["check", "does/not/exist"]).status.code(), Some(2));
+    assert_eq!(
+        run(&["check", "--format", "yaml", good]).status.code(),
+        Some(2)
+    );
+    assert_eq!(
+        run(&["check", "--explain", "RTC999"]).status.code(),
+        Some(2)
+    );
+}
+
+#[test]
+fn cli_json_schema() {
+    let out = run(&[
+        "check",
+        "--format",
+        "json",
+        "tests/fixtures/check/RTC303-bad.xml",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert_eq!(v["version"], 1);
+    let d = &v["diagnostics"][0];
+    for key in [
+        "code", "severity", "message", "file", "line", "column", "hint",
+    ] {
+        assert!(d.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(d["code"], "RTC303");
+    assert_eq!(d["severity"], "error");
+    assert_eq!(d["line"], 10);
+    assert_eq!(d["column"], 5);
+    assert_eq!(d["file"], "tests/fixtures/check/RTC303-bad.xml");
+    let s = &v["summary"];
+    assert_eq!(s["errors"], 1);
+    assert_eq!(s["warnings"], 0);
+    assert_eq!(s["infos"], 0);
+    assert_eq!(s["byCode"]["RTC303"], 1);
+    let c = &v["coverage"];
+    assert!(c["percent"].is_number() && c["components"].is_array());
+}
+
+#[test]
+fn cli_sarif() {
+    let out = run(&[
+        "check",
+        "--format",
+        "sarif",
+        "tests/fixtures/check/RTC203-bad.xml",
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("sarif json");
+    assert_eq!(v["version"], "2.1.0");
+    assert!(v["$schema"].as_str().is_some_and(|s| s.contains("sarif")));
+    let run0 = &v["runs"][0];
+    assert_eq!(run0["tool"]["driver"]["name"], "rtcdoc");
+    let rules = run0["tool"]["driver"]["rules"].as_array().expect("rules");
+    assert!(rules.iter().any(|r| r["id"] == "RTC203"));
+    assert!(rules
+        .iter()
+        .all(|r| r["shortDescription"]["text"].is_string() && r.get("helpUri").is_none()));
+    let res = &run0["results"][0];
+    assert_eq!(res["ruleId"], "RTC203");
+    assert_eq!(res["level"], "warning");
+    assert!(res["message"]["text"].is_string());
+    let loc = &res["locations"][0]["physicalLocation"];
+    assert_eq!(
+        loc["artifactLocation"]["uri"],
+        "tests/fixtures/check/RTC203-bad.xml"
+    );
+    assert_eq!(loc["region"]["startLine"], 3);
+    assert_eq!(loc["region"]["startColumn"], 3);
+}
+
+#[test]
+fn cli_explain() {
+    for code in ["RTC001", "RTC010", "RTC303", "rtc501"] {
+        let out = run(&["check", "--explain", code]);
+        assert_eq!(out.status.code(), Some(0), "{code}");
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains("Spec:"), "{text}");
+        assert!(text.to_uppercase().contains(&code.to_uppercase()));
+    }
+}
+
+#[test]
+fn build_prints_a_check_summary_and_keeps_rendering() {
+    let tmp = tempfile::tempdir().expect("tmp");
+    let out_dir = tmp.path().join("site");
+    let out = run(&[
+        "build",
+        "tests/fixtures/check/RTC303-bad.xml",
+        "-o",
+        out_dir.to_str().expect("utf8"),
+        "-f",
+        "json",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("check: 1 error, 0 warnings, 0 infos"), "{err}");
+    let json = std::fs::read_to_string(out_dir.join("catalog.json")).expect("catalog.json");
+    assert!(
+        json.contains("RTC303"),
+        "rule diagnostics in the JSON output"
+    );
+}
+
+// ---- corpus ----------------------------------------------------------------------------
+
+#[test]
+fn corpus_counts_by_code() {
+    let dir = common::root().join("../shared/corpus");
+    let dir = if dir.is_dir() {
+        dir
+    } else if Path::new("/work/shared/corpus").is_dir() {
+        PathBuf::from("/work/shared/corpus")
+    } else {
+        println!("skipped: ../shared/corpus not present");
+        return;
+    };
+    let r = report(&dir);
+    println!(
+        "corpus: {} profiles, {} errors, {} warnings, {} infos, doc coverage {:.1}%",
+        r.coverage.components.len(),
+        r.summary.errors,
+        r.summary.warnings,
+        r.summary.infos,
+        r.coverage.percent
+    );
+    for (code, n) in &r.summary.by_code {
+        println!("  {code}: {n}");
+    }
+    assert!(!r.coverage.components.is_empty());
+}

@@ -1,0 +1,92 @@
+//! The command line around the core: init, configuration, completions, man page.
+
+mod common;
+use common::*;
+
+#[test]
+fn init_writes_a_commented_config_and_refuses_to_overwrite() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = rtcdoc(&["init", "proj"], dir.path());
+    assert!(out.status.success());
+    let text = std::fs::read_to_string(dir.path().join("proj/rtcdoc.toml")).unwrap();
+    assert!(text.contains("# title = "));
+    assert!(text.contains("# max-file-size = "));
+    let again = rtcdoc(&["init", "proj"], dir.path());
+    assert_eq!(again.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&again.stderr).contains("already exists"));
+    assert!(rtcdoc(&["init", "proj", "--force"], dir.path())
+        .status
+        .success());
+}
+
+#[test]
+fn config_file_is_used_and_flags_override_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "cat/a/RTC.xml", &xml_profile("A", &[]));
+    write(
+        d,
+        "cat/rtcdoc.toml",
+        "formats = [\"json\"]\noutput = \"public\"\ntitle = \"Lab catalogue\"\n",
+    );
+    let out = rtcdoc(&["build", "cat"], d);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json = std::fs::read_to_string(d.join("cat/public/catalog.json")).unwrap();
+    assert!(json.contains("\"title\": \"Lab catalogue\""));
+    // A flag wins over the file.
+    let out = rtcdoc(&["build", "cat", "--title", "From flag", "-o", "other"], d);
+    assert!(out.status.success());
+    let json = std::fs::read_to_string(d.join("other/catalog.json")).unwrap();
+    assert!(json.contains("\"title\": \"From flag\""));
+}
+
+#[test]
+fn unknown_config_keys_fail_with_their_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "cat/a/RTC.xml", &xml_profile("A", &[]));
+    write(d, "cat/rtcdoc.toml", "title = \"x\"\nouptut = \"y\"\n");
+    let out = rtcdoc(&["build", "cat"], d);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("rtcdoc.toml:2:1"), "{err}");
+    assert!(err.contains("ouptut"), "{err}");
+}
+
+#[test]
+fn completions_and_man_page() {
+    let dir = tempfile::tempdir().unwrap();
+    for shell in ["bash", "zsh", "fish"] {
+        let out = rtcdoc(&["completions", shell], dir.path());
+        assert!(out.status.success());
+        assert!(String::from_utf8_lossy(&out.stdout).contains("rtcdoc"));
+    }
+    let man = rtcdoc(&["man"], dir.path());
+    assert!(man.status.success());
+    let text = String::from_utf8_lossy(&man.stdout);
+    assert!(text.contains(".TH rtcdoc 1"));
+    assert!(text.contains("build"));
+}
+
+#[test]
+fn quiet_and_verbose() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/a/RTC.xml", &xml_profile("A", &[]));
+    write(d, "in/notes.txt", "hello");
+    let v = rtcdoc(&["build", "in", "-f", "json", "-o", "o1", "--verbose"], d);
+    let err = String::from_utf8_lossy(&v.stderr);
+    assert!(err.contains("skipped notes.txt"), "{err}");
+    assert!(err.contains("built 1 profile(s)"));
+    let q = rtcdoc(&["build", "in", "-f", "json", "-o", "o2", "--quiet"], d);
+    assert!(q.status.success());
+    assert!(
+        q.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&q.stderr)
+    );
+}
