@@ -91,7 +91,6 @@ impl Format {
             Format::Json => Some(Box::new(json::JsonRenderer)),
             Format::Markdown => Some(Box::new(markdown::MarkdownRenderer)),
             Format::Doxygen => Some(Box::new(doxygen::DoxygenRenderer)),
-            _ => None,
         }
     }
 }
