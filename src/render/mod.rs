@@ -5,6 +5,7 @@
 
 pub mod doxygen;
 pub mod facts;
+pub mod html;
 pub mod json;
 pub mod markdown;
 
@@ -86,10 +87,10 @@ impl Format {
     /// The renderer for this format, or `None` when this build of rtcdoc does not have it yet.
     pub fn renderer(self) -> Option<Box<dyn Renderer>> {
         match self {
+            Format::Html => Some(Box::new(html::HtmlRenderer)),
             Format::Json => Some(Box::new(json::JsonRenderer)),
             Format::Markdown => Some(Box::new(markdown::MarkdownRenderer)),
             Format::Doxygen => Some(Box::new(doxygen::DoxygenRenderer)),
-            _ => None,
         }
     }
 }

@@ -1,0 +1,85 @@
+//! Free text of a profile (descriptions, doc fields, comments) → safe HTML.
+//!
+//! Text is read as Markdown (pulldown-cmark) with single line breaks kept (so plain text written
+//! over several lines stays readable), then sanitised with ammonia: no script, no event handler,
+//! no `javascript:` URL, no iframe, no style, no SVG and no image (the site makes no external
+//! requests). Relative URLs are dropped because they could not resolve inside the site; links
+//! get `rel="noopener noreferrer"`.
+
+use pulldown_cmark::{Event, Options, Parser};
+use std::sync::OnceLock;
+
+fn sanitizer() -> &'static ammonia::Builder<'static> {
+    static B: OnceLock<ammonia::Builder<'static>> = OnceLock::new();
+    B.get_or_init(|| {
+        let mut b = ammonia::Builder::default();
+        b.link_rel(Some("noopener noreferrer"))
+            .url_relative(ammonia::UrlRelative::Deny)
+            .rm_tags(["img"])
+            .url_schemes(["http", "https", "mailto"].into_iter().collect());
+        b
+    })
+}
+
+/// Renders Markdown `text` to sanitised HTML. Single newlines become `<br>`.
+pub fn to_html(text: &str) -> String {
+    let mut opts = Options::empty();
+    opts.insert(Options::ENABLE_TABLES);
+    opts.insert(Options::ENABLE_STRIKETHROUGH);
+    let parser = Parser::new_ext(text, opts).map(|e| match e {
+        Event::SoftBreak => Event::HardBreak,
+        other => other,
+    });
+    let mut raw = String::with_capacity(text.len() + text.len() / 2);
+    pulldown_cmark::html::push_html(&mut raw, parser);
+    sanitizer().clean(&raw).to_string()
+}
+
+/// The first line of `text`, trimmed and cut to at most `max` characters (with `…`), for
+/// one-line summaries. Plain text: the caller escapes it.
+pub fn first_line(text: &str, max: usize) -> String {
+    let line = text
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty())
+        .unwrap_or("");
+    if line.chars().count() <= max {
+        return line.to_string();
+    }
+    let mut s: String = line.chars().take(max.saturating_sub(1)).collect();
+    s.push('…');
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_breaks_are_kept() {
+        assert_eq!(to_html("a\nb"), "<p>a<br>\nb</p>\n");
+    }
+
+    #[test]
+    fn payloads_are_removed() {
+        let h = to_html(
+            "<script>alert(1)</script><img src=x onerror=alert(2)> [x](javascript:alert(3)) \
+             <iframe src=\"https://e.invalid\"></iframe><a href=\"https://e.org\" onclick=\"x()\">e</a>",
+        );
+        assert!(!h.contains("<script"), "{h}");
+        assert!(!h.contains("onerror"), "{h}");
+        assert!(!h.contains("href=\"javascript:"), "{h}");
+        let l = to_html("[x](javascript:alert(3)) and [y](https://e.org)");
+        assert!(!l.contains("href=\"javascript:"), "{l}");
+        assert!(l.contains("href=\"https://e.org\""), "{l}");
+        assert!(!h.contains("<iframe"), "{h}");
+        assert!(!h.contains("onclick"), "{h}");
+        assert!(h.contains("rel=\"noopener noreferrer\""), "{h}");
+    }
+
+    #[test]
+    fn first_lines() {
+        assert_eq!(first_line("\n  hello \nworld", 10), "hello");
+        assert_eq!(first_line("abcdef", 4), "abc…");
+    }
+}

@@ -1,0 +1,1342 @@
+//! The HTML catalogue site: index, component, data-type, interface, category and vendor pages,
+//! search, sitemap, 404 and diagnostics.
+//!
+//! Pages are views built in Rust (plain, serialisable structs: every value is still raw text)
+//! and rendered by minijinja templates from `themes/default`, compiled into the binary. Template
+//! auto-escaping escapes every value; the only pre-built HTML handed to templates is in fields
+//! whose names end in `_html` or `_svg`: Markdown sanitised by [`markdown::to_html`] or SVG built
+//! by [`svg`] with every profile string escaped. One minijinja environment serves all pages, and
+//! pages are rendered in parallel. Links are relative, so the site works from `file://`.
+
+pub mod markdown;
+pub mod search;
+pub mod svg;
+
+use super::{RenderContext, Renderer, SiteOptions};
+use crate::catalog::{Catalog, Component, Facet, InterfaceRef, PortRef};
+use crate::constraint;
+use crate::i18n::Lang;
+use crate::model::{non_empty, ActionKind, Direction, Extra, PortDirection, Property};
+use crate::output::Sink;
+use crate::types::{canonical_type, short_name};
+use anyhow::{Context, Result};
+use minijinja::{Environment, Value};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// At most this many "connects to" peers are listed inline per port; the rest are on the
+/// type or interface page (a common type can be used by hundreds of components).
+pub const PEER_CAP: usize = 20;
+
+/// Above this many components the index page lists categories with counts instead of every
+/// component (each category page still lists all of its components).
+pub const INDEX_FULL_LIST_MAX: usize = 2000;
+
+/// The built-in theme: (file name, contents). Templates end in `.html`; the rest are assets
+/// copied to the site root.
+pub const DEFAULT_THEME: &[(&str, &str)] = &[
+    ("404.html", include_str!("../../../themes/default/404.html")),
+    (
+        "base.html",
+        include_str!("../../../themes/default/base.html"),
+    ),
+    (
+        "component.html",
+        include_str!("../../../themes/default/component.html"),
+    ),
+    (
+        "diagnostics.html",
+        include_str!("../../../themes/default/diagnostics.html"),
+    ),
+    (
+        "facet.html",
+        include_str!("../../../themes/default/facet.html"),
+    ),
+    (
+        "facets.html",
+        include_str!("../../../themes/default/facets.html"),
+    ),
+    (
+        "filter.js",
+        include_str!("../../../themes/default/filter.js"),
+    ),
+    (
+        "index.html",
+        include_str!("../../../themes/default/index.html"),
+    ),
+    (
+        "interface.html",
+        include_str!("../../../themes/default/interface.html"),
+    ),
+    (
+        "interfaces.html",
+        include_str!("../../../themes/default/interfaces.html"),
+    ),
+    (
+        "macros.html",
+        include_str!("../../../themes/default/macros.html"),
+    ),
+    (
+        "search.html",
+        include_str!("../../../themes/default/search.html"),
+    ),
+    (
+        "search.js",
+        include_str!("../../../themes/default/search.js"),
+    ),
+    (
+        "style.css",
+        include_str!("../../../themes/default/style.css"),
+    ),
+    (
+        "type.html",
+        include_str!("../../../themes/default/type.html"),
+    ),
+    (
+        "types.html",
+        include_str!("../../../themes/default/types.html"),
+    ),
+];
+
+/// Assets written to the site root (after theme overrides).
+const ASSETS: &[&str] = &["style.css", "search.js", "filter.js"];
+
+/// Reads theme file `name`: the user's theme directory wins, else the built-in file.
+fn theme_file(dir: Option<&Path>, name: &str) -> Result<Option<String>> {
+    if name.contains('/') || name.contains('\\') || name.starts_with('.') {
+        return Ok(None);
+    }
+    if let Some(d) = dir {
+        let p = d.join(name);
+        if p.is_file() {
+            return std::fs::read_to_string(&p)
+                .map(Some)
+                .with_context(|| format!("cannot read theme file `{}`", p.display()));
+        }
+    }
+    Ok(DEFAULT_THEME
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, s)| s.to_string()))
+}
+
+/// Renders the HTML site.
+pub struct HtmlRenderer;
+
+/// A link: text and relative URL.
+#[derive(Debug, Clone, Serialize)]
+pub struct Link {
+    pub text: String,
+    pub href: String,
+}
+
+/// One labelled value; exactly one of `text` (escaped by the template) or `html` (sanitised).
+#[derive(Debug, Clone, Serialize)]
+pub struct Field {
+    pub label: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub text: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub html: Option<String>,
+}
+
+/// Collects the non-empty fields of a section.
+struct Fields {
+    lang: Lang,
+    v: Vec<Field>,
+}
+
+impl Fields {
+    fn new(lang: Lang) -> Self {
+        Fields {
+            lang,
+            v: Vec::new(),
+        }
+    }
+    fn text(&mut self, key: &str, value: &Option<String>) -> &mut Self {
+        if let Some(s) = non_empty(value) {
+            self.raw(key, s.to_string());
+        }
+        self
+    }
+    fn raw(&mut self, key: &str, value: String) -> &mut Self {
+        self.v.push(Field {
+            label: self.lang.t(key).to_string(),
+            text: Some(value),
+            html: None,
+        });
+        self
+    }
+    fn md(&mut self, key: &str, value: &Option<String>) -> &mut Self {
+        if let Some(s) = non_empty(value) {
+            self.v.push(Field {
+                label: self.lang.t(key).to_string(),
+                text: None,
+                html: Some(markdown::to_html(s)),
+            });
+        }
+        self
+    }
+    fn list(&mut self, key: &str, values: &[String]) -> &mut Self {
+        let v: Vec<&str> = values
+            .iter()
+            .map(|s| s.trim())
+            .filter(|s| !s.is_empty())
+            .collect();
+        if !v.is_empty() {
+            self.raw(key, v.join(", "));
+        }
+        self
+    }
+    fn properties(&mut self, props: &[Property], skip: &[&str]) -> &mut Self {
+        for p in props {
+            let name = p.name.as_deref().unwrap_or("");
+            if skip.contains(&name) {
+                continue;
+            }
+            if non_empty(&p.name).is_some() || non_empty(&p.value).is_some() {
+                self.v.push(Field {
+                    label: format!("{} {}", self.lang.t("properties"), name.trim()),
+                    text: Some(p.value.clone().unwrap_or_default()),
+                    html: None,
+                });
+            }
+        }
+        self
+    }
+    fn done(&mut self) -> Vec<Field> {
+        std::mem::take(&mut self.v)
+    }
+}
+
+/// A component in lists (index, category and vendor pages).
+#[derive(Debug, Clone, Serialize)]
+pub struct ComponentSummary {
+    pub name: String,
+    /// Path from the site root (`components/x.html`).
+    pub path: String,
+    pub version: String,
+    pub vendor: String,
+    pub vendor_slug: String,
+    pub category: String,
+    pub category_slug: String,
+    pub summary: String,
+    pub data_ports: usize,
+    pub service_ports: usize,
+    pub configurations: usize,
+}
+
+#[derive(Serialize)]
+struct PortTypeRef {
+    text: String,
+    href: Option<String>,
+}
+
+#[derive(Serialize)]
+struct DataPortRow {
+    anchor: String,
+    direction: String,
+    dir_class: &'static str,
+    name: String,
+    type_ref: Option<PortTypeRef>,
+    unit: String,
+    details: Vec<Field>,
+    events: Vec<EventRow>,
+    peers: Vec<Link>,
+    peers_more: Option<Link>,
+}
+
+#[derive(Serialize)]
+struct EventRow {
+    name: String,
+    fields: Vec<Field>,
+}
+
+#[derive(Serialize)]
+struct ServicePortRow {
+    anchor: String,
+    name: String,
+    details: Vec<Field>,
+    interfaces: Vec<InterfaceRow>,
+}
+
+#[derive(Serialize)]
+struct InterfaceRow {
+    anchor: String,
+    direction: String,
+    dir_class: &'static str,
+    name: String,
+    type_ref: Option<PortTypeRef>,
+    details: Vec<Field>,
+    peers: Vec<Link>,
+    peers_more: Option<Link>,
+}
+
+#[derive(Serialize)]
+struct ConfigurationRow {
+    anchor: String,
+    name: String,
+    type_: String,
+    default: String,
+    unit: String,
+    constraint: String,
+    widget: String,
+    step: String,
+    details: Vec<Field>,
+}
+
+#[derive(Serialize)]
+struct ActionRow {
+    name: &'static str,
+    implemented: bool,
+    details: Vec<Field>,
+}
+
+#[derive(Serialize)]
+struct KeyValue {
+    key: String,
+    value: String,
+}
+
+#[derive(Serialize)]
+struct ExtraRow {
+    path: String,
+    kind: &'static str,
+    name: String,
+    value: String,
+}
+
+#[derive(Serialize)]
+struct ComponentPage {
+    root: &'static str,
+    title: String,
+    crumbs: Vec<Link>,
+    name: String,
+    summary_html: Option<String>,
+    header: Vec<Field>,
+    document: Vec<Field>,
+    diagram_svg: String,
+    data_ports: Vec<DataPortRow>,
+    service_ports: Vec<ServicePortRow>,
+    configurations: Vec<ConfigurationRow>,
+    actions: Vec<ActionRow>,
+    lifecycle_svg: String,
+    parameters: Vec<KeyValue>,
+    language: Vec<Field>,
+    targets: Vec<Vec<Field>>,
+    properties: Vec<KeyValue>,
+    version_up_logs: Vec<String>,
+    extras: Vec<ExtraRow>,
+}
+
+#[derive(Serialize)]
+struct PortUse {
+    component: Link,
+    port: Link,
+}
+
+struct Site<'a> {
+    catalog: &'a Catalog,
+    opts: &'a SiteOptions,
+    lang: Lang,
+    summaries: Vec<ComponentSummary>,
+}
+
+fn dir_label(lang: Lang, d: Option<PortDirection>, raw: &Option<String>) -> (String, &'static str) {
+    match d {
+        Some(PortDirection::In) => (lang.t("in").to_string(), "in"),
+        Some(PortDirection::Out) => (lang.t("out").to_string(), "out"),
+        Some(PortDirection::Event) => (lang.t("event").to_string(), "event"),
+        None => (non_empty(raw).unwrap_or("").to_string(), "other"),
+    }
+}
+
+/// Number of entries of `refs` (sorted by component, as the catalogue builds them) that belong
+/// to components other than `ci`; a port never "connects to" its own component.
+fn others_than<T>(refs: &[T], ci: usize, component: impl Fn(&T) -> usize) -> usize {
+    let lo = refs.partition_point(|r| component(r) < ci);
+    let hi = refs.partition_point(|r| component(r) <= ci);
+    refs.len() - (hi - lo)
+}
+
+fn flatten_extras(path: &str, e: &Extra, out: &mut Vec<ExtraRow>) {
+    out.push(ExtraRow {
+        path: path.to_string(),
+        kind: match e.kind {
+            crate::model::ExtraKind::Attribute => "attribute",
+            crate::model::ExtraKind::Element => "element",
+            crate::model::ExtraKind::Key => "key",
+        },
+        name: e.name.clone(),
+        value: e.value.clone().unwrap_or_default(),
+    });
+    if !e.children.is_empty() {
+        let child_path = format!("{path} / {}", e.name);
+        for c in &e.children {
+            flatten_extras(&child_path, c, out);
+        }
+    }
+}
+
+impl<'a> Site<'a> {
+    fn t(&self, key: &str) -> &'static str {
+        self.lang.t(key)
+    }
+
+    fn component_path(&self, ci: usize) -> String {
+        format!("components/{}.html", self.catalog.components[ci].slug)
+    }
+
+    fn port_link(&self, root: &str, r: &PortRef) -> PortUse {
+        let c = &self.catalog.components[r.component];
+        let port = &c.profile.data_ports[r.port];
+        let href = format!("{root}{}", self.component_path(r.component));
+        PortUse {
+            component: Link {
+                text: c.profile.name().to_string(),
+                href: href.clone(),
+            },
+            port: Link {
+                text: port.name.clone().unwrap_or_default(),
+                href: format!("{href}#{}", c.anchors.data_ports[r.port]),
+            },
+        }
+    }
+
+    fn iface_link(&self, root: &str, r: &InterfaceRef) -> PortUse {
+        let c = &self.catalog.components[r.component];
+        let sp = &c.profile.service_ports[r.port];
+        let i = &sp.interfaces[r.interface];
+        let href = format!("{root}{}", self.component_path(r.component));
+        PortUse {
+            component: Link {
+                text: c.profile.name().to_string(),
+                href: href.clone(),
+            },
+            port: Link {
+                text: format!(
+                    "{}.{}",
+                    sp.name.as_deref().unwrap_or(""),
+                    i.name.as_deref().unwrap_or("")
+                ),
+                href: format!("{href}#{}", c.anchors.interfaces[r.port][r.interface]),
+            },
+        }
+    }
+
+    fn summary(&self, c: &Component) -> ComponentSummary {
+        let b = &c.profile.basic_info;
+        let facet_slug = |facets: &[Facet], v: &Option<String>| {
+            let name = non_empty(v).unwrap_or("");
+            facets
+                .iter()
+                .find(|f| f.name == name)
+                .map(|f| f.slug.clone())
+                .unwrap_or_default()
+        };
+        ComponentSummary {
+            name: c.profile.name().to_string(),
+            path: format!("components/{}.html", c.slug),
+            version: non_empty(&b.version).unwrap_or("").to_string(),
+            vendor: non_empty(&b.vendor).unwrap_or("").to_string(),
+            vendor_slug: facet_slug(&self.catalog.vendors, &b.vendor),
+            category: non_empty(&b.category).unwrap_or("").to_string(),
+            category_slug: facet_slug(&self.catalog.categories, &b.category),
+            summary: non_empty(&b.description)
+                .map(|d| markdown::first_line(d, 160))
+                .unwrap_or_default(),
+            data_ports: c.profile.data_ports.len(),
+            service_ports: c.profile.service_ports.len(),
+            configurations: c.profile.configurations().len(),
+        }
+    }
+
+    fn facet_name(&self, name: &str, empty_key: &str) -> String {
+        if name.is_empty() {
+            self.t(empty_key).to_string()
+        } else {
+            name.to_string()
+        }
+    }
+
+    fn component_page(&self, ci: usize) -> ComponentPage {
+        let lang = self.lang;
+        let root = "../";
+        let c = &self.catalog.components[ci];
+        let p = &c.profile;
+        let b = &p.basic_info;
+        let name = p.name().to_string();
+
+        let mut crumbs = vec![Link {
+            text: self.t("catalogue").to_string(),
+            href: format!("{root}index.html"),
+        }];
+        let sum = &self.summaries[ci];
+        crumbs.push(Link {
+            text: self.facet_name(&sum.category, "no_category"),
+            href: format!("{root}categories/{}.html", sum.category_slug),
+        });
+
+        let mut f = Fields::new(lang);
+        f.text("id_label", &p.id)
+            .text("version", &b.version)
+            .text("vendor", &b.vendor)
+            .text("category", &b.category)
+            .text("component_type", &b.component_type)
+            .text("component_kind", &b.component_kind)
+            .text("rtc_type", &b.rtc_type)
+            .text("activity_type", &b.activity_type)
+            .text("execution_type", &b.execution_type);
+        if let Some(r) = non_empty(&b.execution_rate) {
+            f.raw("execution_rate", format!("{r} Hz"));
+        }
+        f.text("max_instances", &b.max_instances);
+        if let Some(l) = &p.language {
+            f.text("language", &l.kind);
+        }
+        f.text("creation_date", &b.creation_date)
+            .text("update_date", &b.update_date);
+        if let Some(d) = &b.doc {
+            f.text("creator", &d.creator).text("license", &d.license);
+        }
+        f.md("abstract", &b.abstract_)
+            .text("hardware_profile", &b.hardware_profile)
+            .md("comment", &b.comment)
+            .text("save_project", &b.save_project)
+            .text("profile_version", &p.version)
+            .raw("source", c.source.clone());
+        let header = f.done();
+
+        let document = match &b.doc {
+            Some(d) => f
+                .md("description", &d.description)
+                .md("inout", &d.inout)
+                .md("algorithm", &d.algorithm)
+                .md("reference", &d.reference)
+                .done(),
+            None => Vec::new(),
+        };
+
+        // Data ports.
+        let mut diagram_data = Vec::new();
+        let mut data_ports = Vec::new();
+        for (pi, dp) in p.data_ports.iter().enumerate() {
+            let anchor = c.anchors.data_ports[pi].clone();
+            let (direction, dir_class) = dir_label(lang, dp.direction(), &dp.port_type);
+            let type_ref = non_empty(&dp.type_).map(|t| PortTypeRef {
+                text: t.to_string(),
+                href: self
+                    .catalog
+                    .data_type(t)
+                    .map(|dt| format!("{root}types/{}.html", dt.slug)),
+            });
+            diagram_data.push(svg::DiagramDataPort {
+                side: dp.side(),
+                name: dp.name.clone().unwrap_or_default(),
+                type_label: non_empty(&dp.type_)
+                    .map(|t| short_name(&canonical_type(t)).to_string())
+                    .unwrap_or_default(),
+                class: dir_class,
+                anchor: anchor.clone(),
+            });
+            f.text("interface_type", &dp.interface_type)
+                .text("dataflow_type", &dp.dataflow_type)
+                .text("subscription_type", &dp.subscription_type);
+            if let Some(k) = &dp.constraint {
+                let d = constraint::describe(k);
+                if !d.is_empty() {
+                    f.raw("constraint", d);
+                }
+            }
+            f.text("idl_file", &dp.idl_file);
+            if let Some(d) = &dp.doc {
+                f.md("description", &d.description)
+                    .md("doc_type", &d.type_)
+                    .md("number", &d.number)
+                    .md("semantics", &d.semantics)
+                    .md("unit", &d.unit)
+                    .md("occurrence", &d.occurrence)
+                    .md("operation", &d.operation);
+            }
+            f.md("comment", &dp.comment)
+                .text("variable_name", &dp.variable_name)
+                .text("position", &dp.position)
+                .properties(&dp.properties, &[]);
+            let details = f.done();
+            let events = dp
+                .events
+                .iter()
+                .map(|e| {
+                    f.text("type", &e.type_)
+                        .text("source", &e.source)
+                        .text("condition", &e.condition);
+                    if let Some(t) = non_empty(&e.target) {
+                        f.raw("event_target", t.to_string());
+                    }
+                    if let Some(d) = &e.doc {
+                        f.md("description", &d.description)
+                            .md("doc_type", &d.type_)
+                            .md("number", &d.number)
+                            .md("semantics", &d.semantics)
+                            .md("unit", &d.unit)
+                            .md("occurrence", &d.occurrence)
+                            .md("operation", &d.operation);
+                    }
+                    EventRow {
+                        name: e.name.clone().unwrap_or_default(),
+                        fields: f.done(),
+                    }
+                })
+                .collect();
+            let all_peers = self.catalog.data_port_peers(ci, pi);
+            let others = others_than(all_peers, ci, |r| r.component);
+            let peers = all_peers
+                .iter()
+                .filter(|r| r.component != ci)
+                .take(PEER_CAP)
+                .map(|r| {
+                    let u = self.port_link(root, r);
+                    Link {
+                        text: format!("{}.{}", u.component.text, u.port.text),
+                        href: u.port.href,
+                    }
+                })
+                .collect();
+            let peers_more = (others > PEER_CAP)
+                .then(|| {
+                    type_ref
+                        .as_ref()
+                        .and_then(|t| t.href.clone())
+                        .map(|href| Link {
+                            text: format!(
+                                "+{} — {}",
+                                others - PEER_CAP,
+                                self.t("more_on_type_page")
+                            ),
+                            href,
+                        })
+                })
+                .flatten();
+            data_ports.push(DataPortRow {
+                anchor,
+                direction,
+                dir_class,
+                name: dp.name.clone().unwrap_or_default(),
+                type_ref,
+                unit: non_empty(&dp.unit).unwrap_or("").to_string(),
+                details,
+                events,
+                peers,
+                peers_more,
+            });
+        }
+
+        // Service ports.
+        let mut diagram_service = Vec::new();
+        let mut service_ports = Vec::new();
+        for (si, sp) in p.service_ports.iter().enumerate() {
+            let anchor = c.anchors.service_ports[si].clone();
+            if let Some(d) = &sp.doc {
+                f.md("description", &d.description)
+                    .md("if_description", &d.ifdescription);
+            }
+            let methods: Vec<String> = sp
+                .trans_methods
+                .iter()
+                .filter_map(|m| m.kind.clone())
+                .collect();
+            f.md("comment", &sp.comment)
+                .text("position", &sp.position)
+                .list("trans_methods", &methods)
+                .properties(&sp.properties, &[]);
+            let details = f.done();
+            let mut interfaces = Vec::new();
+            let mut diagram_ifaces = Vec::new();
+            for (ii, i) in sp.interfaces.iter().enumerate() {
+                let ianchor = c.anchors.interfaces[si][ii].clone();
+                let (direction, dir_class) = match i.direction_kind() {
+                    Some(Direction::Provided) => (self.t("provided").to_string(), "provided"),
+                    Some(Direction::Required) => (self.t("required").to_string(), "required"),
+                    None => (non_empty(&i.direction).unwrap_or("").to_string(), "other"),
+                };
+                let type_ref = non_empty(&i.type_).map(|t| PortTypeRef {
+                    text: t.to_string(),
+                    href: self
+                        .catalog
+                        .interface(t)
+                        .map(|it| format!("{root}interfaces/{}.html", it.slug)),
+                });
+                diagram_ifaces.push(svg::DiagramInterface {
+                    provided: i.direction_kind() == Some(Direction::Provided),
+                    label: i.name.clone().unwrap_or_default(),
+                    type_label: non_empty(&i.type_)
+                        .map(|t| short_name(&canonical_type(t)).to_string())
+                        .unwrap_or_default(),
+                    anchor: ianchor.clone(),
+                });
+                f.text("instance_name", &i.instance_name)
+                    .text("idl_file", &i.idl_file)
+                    .text("idl_path", &i.path)
+                    .text("variable_name", &i.variable_name);
+                if let Some(d) = &i.doc {
+                    f.md("description", &d.description)
+                        .md("argument", &d.doc_argument)
+                        .md("return", &d.doc_return)
+                        .md("exception", &d.doc_exception)
+                        .md("pre_condition", &d.doc_pre_condition)
+                        .md("post_condition", &d.doc_post_condition);
+                }
+                f.md("comment", &i.comment).properties(&i.properties, &[]);
+                let all_peers = self.catalog.interface_peers(ci, si, ii);
+                let others = others_than(all_peers, ci, |r| r.component);
+                let peers = all_peers
+                    .iter()
+                    .filter(|r| r.component != ci)
+                    .take(PEER_CAP)
+                    .map(|r| {
+                        let u = self.iface_link(root, r);
+                        Link {
+                            text: format!("{}.{}", u.component.text, u.port.text),
+                            href: u.port.href,
+                        }
+                    })
+                    .collect();
+                let peers_more = (others > PEER_CAP)
+                    .then(|| {
+                        type_ref
+                            .as_ref()
+                            .and_then(|t| t.href.clone())
+                            .map(|href| Link {
+                                text: format!(
+                                    "+{} — {}",
+                                    others - PEER_CAP,
+                                    self.t("more_on_interface_page")
+                                ),
+                                href,
+                            })
+                    })
+                    .flatten();
+                interfaces.push(InterfaceRow {
+                    anchor: ianchor,
+                    direction,
+                    dir_class,
+                    name: i.name.clone().unwrap_or_default(),
+                    type_ref,
+                    details: f.done(),
+                    peers,
+                    peers_more,
+                });
+            }
+            diagram_service.push(svg::DiagramServicePort {
+                side: sp.side(),
+                name: sp.name.clone().unwrap_or_default(),
+                anchor: anchor.clone(),
+                interfaces: diagram_ifaces,
+            });
+            service_ports.push(ServicePortRow {
+                anchor,
+                name: sp.name.clone().unwrap_or_default(),
+                details,
+                interfaces,
+            });
+        }
+
+        // Configuration parameters.
+        let configurations = p
+            .configurations()
+            .iter()
+            .enumerate()
+            .map(|(k, conf)| {
+                if let Some(d) = &conf.doc {
+                    f.md("description", &d.description)
+                        .md("dataname", &d.dataname)
+                        .md("default_value", &d.default_value)
+                        .md("unit", &d.unit)
+                        .md("range", &d.range)
+                        .md("constraint", &d.constraint);
+                }
+                f.md("comment", &conf.comment)
+                    .text("variable_name", &conf.variable_name)
+                    .properties(&conf.properties, &["__widget__", "__step__"]);
+                ConfigurationRow {
+                    anchor: c.anchors.configurations[k].clone(),
+                    name: conf.name.clone().unwrap_or_default(),
+                    type_: non_empty(&conf.type_).unwrap_or("").to_string(),
+                    default: conf.default_value.clone().unwrap_or_default(),
+                    unit: non_empty(&conf.unit).unwrap_or("").to_string(),
+                    constraint: conf
+                        .constraint
+                        .as_ref()
+                        .map(constraint::describe)
+                        .unwrap_or_default(),
+                    widget: conf.widget().unwrap_or("").to_string(),
+                    step: conf.step().unwrap_or("").to_string(),
+                    details: f.done(),
+                }
+            })
+            .collect();
+
+        // Lifecycle.
+        let actions: Vec<ActionRow> = ActionKind::ALL
+            .iter()
+            .map(|&k| {
+                let a = p.action(k);
+                if let Some(d) = a.and_then(|a| a.doc.as_ref()) {
+                    f.md("description", &d.description)
+                        .md("pre_condition", &d.pre_condition)
+                        .md("post_condition", &d.post_condition);
+                }
+                ActionRow {
+                    name: k.callback_name(),
+                    implemented: a.map(|a| a.is_implemented()).unwrap_or(false),
+                    details: f.done(),
+                }
+            })
+            .collect();
+        let implemented = |name: &str| actions.iter().any(|a| a.name == name && a.implemented);
+        let lifecycle_svg = svg::lifecycle_diagram(
+            &svg::LifecycleLabels {
+                title: self.t("lifecycle_diagram"),
+                created: self.t("state_created"),
+                inactive: self.t("state_inactive"),
+                active: self.t("state_active"),
+                error: self.t("state_error"),
+                finalized: self.t("state_finalized"),
+                ec_events: self.t("ec_events"),
+                fsm: self.t("fsm_actions"),
+                implemented: self.t("legend_implemented"),
+                not_implemented: self.t("legend_not_implemented"),
+            },
+            &implemented,
+        );
+        let diagram_svg = svg::component_diagram(
+            &name,
+            &format!("{} — {}", self.t("component_diagram"), name),
+            &diagram_data,
+            &diagram_service,
+        );
+
+        let parameters = p
+            .parameters
+            .iter()
+            .map(|par| KeyValue {
+                key: par.name.clone().unwrap_or_default(),
+                value: par.default_value.clone().unwrap_or_default(),
+            })
+            .collect();
+        let (language, targets) = match &p.language {
+            Some(l) => {
+                let targets = l
+                    .targets
+                    .iter()
+                    .map(|t| {
+                        f.text("lang_version", &t.lang_version)
+                            .text("os", &t.os)
+                            .list("os_versions", &t.os_versions)
+                            .text("other", &t.other)
+                            .list("cpus", &t.cpus)
+                            .text("cpu_other", &t.cpu_other);
+                        for lib in &t.libraries {
+                            let parts: Vec<String> = [&lib.name, &lib.version, &lib.other]
+                                .iter()
+                                .filter_map(|v| non_empty(v).map(str::to_string))
+                                .collect();
+                            if !parts.is_empty() {
+                                f.raw("libraries", parts.join(" "));
+                            }
+                        }
+                        f.done()
+                    })
+                    .filter(|v: &Vec<Field>| !v.is_empty())
+                    .collect();
+                (f.text("language", &l.kind).done(), targets)
+            }
+            None => (Vec::new(), Vec::new()),
+        };
+        let properties = b
+            .properties
+            .iter()
+            .filter(|pr| non_empty(&pr.name).is_some() || non_empty(&pr.value).is_some())
+            .map(|pr| KeyValue {
+                key: pr.name.clone().unwrap_or_default(),
+                value: pr.value.clone().unwrap_or_default(),
+            })
+            .collect();
+        let version_up_logs = b
+            .version_up_logs
+            .iter()
+            .filter(|s| !s.trim().is_empty())
+            .cloned()
+            .collect();
+        let mut extras = Vec::new();
+        for (path, e) in p.all_extras() {
+            flatten_extras(&path, e, &mut extras);
+        }
+
+        ComponentPage {
+            root,
+            title: format!("{name} — {}", self.opts.title),
+            crumbs,
+            summary_html: non_empty(&b.description).map(markdown::to_html),
+            name,
+            header,
+            document,
+            diagram_svg,
+            data_ports,
+            service_ports,
+            configurations,
+            actions,
+            lifecycle_svg,
+            parameters,
+            language,
+            targets,
+            properties,
+            version_up_logs,
+            extras,
+        }
+    }
+}
+
+/// A page to render: output path, template and context.
+struct Page {
+    path: String,
+    template: &'static str,
+    context: Value,
+}
+
+fn crumbs_home(lang: Lang, root: &str) -> Vec<Link> {
+    vec![Link {
+        text: lang.t("catalogue").to_string(),
+        href: format!("{root}index.html"),
+    }]
+}
+
+/// Escapes text for XML (sitemap).
+fn xml_escape(s: &str) -> String {
+    svg::esc(s)
+}
+
+impl HtmlRenderer {
+    fn environment(opts: &SiteOptions, catalog: &Catalog) -> Environment<'static> {
+        let mut env = Environment::new();
+        let dir: Option<PathBuf> = opts.theme_dir.clone();
+        env.set_loader(move |name| {
+            theme_file(dir.as_deref(), name).map_err(|e| {
+                minijinja::Error::new(minijinja::ErrorKind::InvalidOperation, e.to_string())
+            })
+        });
+        // HTML-escape strings ourselves: minijinja's default also escapes `/`, which makes
+        // every URL in the site longer and harder to read without adding safety.
+        env.set_formatter(|out, state, value| {
+            if state.auto_escape() == minijinja::AutoEscape::Html && !value.is_safe() {
+                if let Some(s) = value.as_str() {
+                    out.write_str(&svg::esc(s))?;
+                    return Ok(());
+                }
+            }
+            minijinja::escape_formatter(out, state, value)
+        });
+        let labels: BTreeMap<&str, &str> = opts.language.labels().collect();
+        env.add_global("t", Value::from_serialize(&labels));
+        env.add_global("lang", opts.language.tag());
+        env.add_global("site_title", opts.title.clone());
+        env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
+        env.add_global("generator", format!("rtcdoc {}", env!("CARGO_PKG_VERSION")));
+        env
+    }
+}
+
+impl Renderer for HtmlRenderer {
+    fn name(&self) -> &'static str {
+        "html"
+    }
+
+    fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> Result<usize> {
+        let catalog = ctx.catalog;
+        let opts = ctx.site;
+        let lang = opts.language;
+        let env = Self::environment(opts, catalog);
+        let mut site = Site {
+            catalog,
+            opts,
+            lang,
+            summaries: Vec::new(),
+        };
+        site.summaries = catalog.components.iter().map(|c| site.summary(c)).collect();
+        let site = site;
+
+        // Compile every template once, up front (errors surface before any page is written).
+        for (name, _) in DEFAULT_THEME.iter().filter(|(n, _)| n.ends_with(".html")) {
+            env.get_template(name)
+                .with_context(|| format!("theme template `{name}`"))?;
+        }
+
+        let mut written = 0usize;
+        for asset in ASSETS {
+            let body = theme_file(opts.theme_dir.as_deref(), asset)?.unwrap_or_default();
+            out.write(asset, body.as_bytes())?;
+            written += 1;
+        }
+        out.write("search-index.js", search::index_js(catalog).as_bytes())?;
+        written += 1;
+
+        // Component pages: the bulk of the work, rendered and written in parallel.
+        let tmpl = env.get_template("component.html")?;
+        written += (0..catalog.components.len())
+            .into_par_iter()
+            .map(|ci| -> Result<usize> {
+                let page = site.component_page(ci);
+                let html = tmpl
+                    .render(&page)
+                    .with_context(|| format!("rendering component `{}`", page.name))?;
+                out.write(&site.component_path(ci), html.as_bytes())?;
+                Ok(1)
+            })
+            .try_reduce(|| 0, |a, b| Ok(a + b))?;
+
+        let pages = other_pages(&site);
+        written += pages
+            .par_iter()
+            .map(|pg| -> Result<usize> {
+                let html = env
+                    .get_template(pg.template)?
+                    .render(&pg.context)
+                    .with_context(|| format!("rendering `{}`", pg.path))?;
+                out.write(&pg.path, html.as_bytes())?;
+                Ok(1)
+            })
+            .try_reduce(|| 0, |a, b| Ok(a + b))?;
+
+        // Sitemap: every page but the 404.
+        let mut urls: Vec<String> = pages
+            .iter()
+            .map(|p| p.path.clone())
+            .filter(|p| p != "404.html")
+            .collect();
+        urls.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
+        urls.sort();
+        let base = opts
+            .base_url
+            .as_deref()
+            .map(|b| format!("{}/", b.trim_end_matches('/')))
+            .unwrap_or_default();
+        let mut sm = String::from(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<urlset xmlns=\"http://www.sitemaps.org/schemas/sitemap/0.9\">\n",
+        );
+        for u in urls {
+            sm.push_str("  <url><loc>");
+            sm.push_str(&xml_escape(&format!("{base}{u}")));
+            sm.push_str("</loc></url>\n");
+        }
+        sm.push_str("</urlset>\n");
+        out.write("sitemap.xml", sm.as_bytes())?;
+        written += 1;
+        Ok(written)
+    }
+}
+
+fn ctx<S: Serialize>(v: &S) -> Value {
+    Value::from_serialize(v)
+}
+
+/// Every page except component pages.
+fn other_pages(site: &Site<'_>) -> Vec<Page> {
+    let catalog = site.catalog;
+    let lang = site.lang;
+    let title = |s: &str| format!("{s} — {}", site.opts.title);
+    let mut pages = Vec::new();
+
+    // Index: components grouped by category.
+    #[derive(Serialize)]
+    struct Group<'a> {
+        name: String,
+        slug: &'a str,
+        components: Vec<&'a ComponentSummary>,
+        count: usize,
+    }
+    let full = catalog.components.len() <= INDEX_FULL_LIST_MAX;
+    let groups: Vec<Group<'_>> = catalog
+        .categories
+        .iter()
+        .map(|f| Group {
+            name: site.facet_name(&f.name, "no_category"),
+            slug: &f.slug,
+            components: if full {
+                f.components.iter().map(|&i| &site.summaries[i]).collect()
+            } else {
+                Vec::new()
+            },
+            count: f.components.len(),
+        })
+        .collect();
+    let vendors: Vec<Link> = catalog
+        .vendors
+        .iter()
+        .map(|f| Link {
+            text: site.facet_name(&f.name, "no_vendor"),
+            href: f.slug.clone(),
+        })
+        .collect();
+    pages.push(Page {
+        path: "index.html".into(),
+        template: "index.html",
+        context: minijinja::context! {
+            root => "",
+            title => site.opts.title.clone(),
+            is_home => true,
+            groups => ctx(&groups),
+            vendors => ctx(&vendors),
+            full_list => full,
+            component_count => catalog.components.len(),
+            type_count => catalog.data_types.len(),
+            interface_count => catalog.interfaces.len(),
+        },
+    });
+
+    // Category and vendor pages.
+    for (dir, facets, key, empty_key) in [
+        (
+            "categories",
+            &catalog.categories,
+            "categories",
+            "no_category",
+        ),
+        ("vendors", &catalog.vendors, "vendors", "no_vendor"),
+    ] {
+        let root = "../";
+        let list: Vec<(Link, usize)> = facets
+            .iter()
+            .map(|f| {
+                (
+                    Link {
+                        text: site.facet_name(&f.name, empty_key),
+                        href: format!("{}.html", f.slug),
+                    },
+                    f.components.len(),
+                )
+            })
+            .collect();
+        pages.push(Page {
+            path: format!("{dir}/index.html"),
+            template: "facets.html",
+            context: minijinja::context! {
+                root => root,
+                title => title(lang.t(key)),
+                heading => lang.t(key),
+                crumbs => ctx(&crumbs_home(lang, root)),
+                facets => ctx(&list),
+            },
+        });
+        for f in facets.iter() {
+            let name = site.facet_name(&f.name, empty_key);
+            let mut crumbs = crumbs_home(lang, root);
+            crumbs.push(Link {
+                text: lang.t(key).to_string(),
+                href: "index.html".into(),
+            });
+            let comps: Vec<&ComponentSummary> =
+                f.components.iter().map(|&i| &site.summaries[i]).collect();
+            pages.push(Page {
+                path: format!("{dir}/{}.html", f.slug),
+                template: "facet.html",
+                context: minijinja::context! {
+                    root => root,
+                    title => title(&name),
+                    heading => name,
+                    kind => lang.t(if dir == "categories" { "category" } else { "vendor" }),
+                    crumbs => ctx(&crumbs),
+                    components => ctx(&comps),
+                },
+            });
+        }
+    }
+
+    // Data types.
+    {
+        let root = "../";
+        #[derive(Serialize)]
+        struct TypeRow {
+            name: String,
+            href: String,
+            spellings: Vec<String>,
+            producers: usize,
+            consumers: usize,
+            others: usize,
+        }
+        let rows: Vec<TypeRow> = catalog
+            .data_types
+            .iter()
+            .map(|t| TypeRow {
+                name: t.name.clone(),
+                href: format!("{}.html", t.slug),
+                spellings: t
+                    .spellings
+                    .iter()
+                    .filter(|s| **s != t.name)
+                    .cloned()
+                    .collect(),
+                producers: t.producers.len(),
+                consumers: t.consumers.len(),
+                others: t.others.len(),
+            })
+            .collect();
+        pages.push(Page {
+            path: "types/index.html".into(),
+            template: "types.html",
+            context: minijinja::context! {
+                root => root,
+                title => title(lang.t("data_types")),
+                crumbs => ctx(&crumbs_home(lang, root)),
+                types => ctx(&rows),
+            },
+        });
+        for t in &catalog.data_types {
+            let mut crumbs = crumbs_home(lang, root);
+            crumbs.push(Link {
+                text: lang.t("data_types").to_string(),
+                href: "index.html".into(),
+            });
+            let uses = |v: &[PortRef]| -> Vec<PortUse> {
+                v.iter().map(|r| site.port_link(root, r)).collect()
+            };
+            pages.push(Page {
+                path: format!("types/{}.html", t.slug),
+                template: "type.html",
+                context: minijinja::context! {
+                    root => root,
+                    title => title(&format!("{} {}", t.name, lang.t("data_type"))),
+                    name => t.name.clone(),
+                    crumbs => ctx(&crumbs),
+                    spellings => ctx(&t.spellings),
+                    idl_files => ctx(&t.idl_files),
+                    producers => ctx(&uses(&t.producers)),
+                    consumers => ctx(&uses(&t.consumers)),
+                    others => ctx(&uses(&t.others)),
+                },
+            });
+        }
+    }
+
+    // Interfaces.
+    {
+        let root = "../";
+        #[derive(Serialize)]
+        struct IfRow {
+            name: String,
+            href: String,
+            providers: usize,
+            requirers: usize,
+            unprovided: bool,
+        }
+        let rows: Vec<IfRow> = catalog
+            .interfaces
+            .iter()
+            .map(|t| IfRow {
+                name: t.name.clone(),
+                href: format!("{}.html", t.slug),
+                providers: t.providers.len(),
+                requirers: t.requirers.len(),
+                unprovided: t.is_unprovided(),
+            })
+            .collect();
+        pages.push(Page {
+            path: "interfaces/index.html".into(),
+            template: "interfaces.html",
+            context: minijinja::context! {
+                root => root,
+                title => title(lang.t("interfaces")),
+                crumbs => ctx(&crumbs_home(lang, root)),
+                interfaces => ctx(&rows),
+            },
+        });
+        for t in &catalog.interfaces {
+            let mut crumbs = crumbs_home(lang, root);
+            crumbs.push(Link {
+                text: lang.t("interfaces").to_string(),
+                href: "index.html".into(),
+            });
+            let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
+                v.iter().map(|r| site.iface_link(root, r)).collect()
+            };
+            pages.push(Page {
+                path: format!("interfaces/{}.html", t.slug),
+                template: "interface.html",
+                context: minijinja::context! {
+                    root => root,
+                    title => title(&format!("{} {}", t.name, lang.t("interface"))),
+                    name => t.name.clone(),
+                    crumbs => ctx(&crumbs),
+                    spellings => ctx(&t.spellings),
+                    idl_files => ctx(&t.idl_files),
+                    unprovided => t.is_unprovided(),
+                    providers => ctx(&uses(&t.providers)),
+                    requirers => ctx(&uses(&t.requirers)),
+                    others => ctx(&uses(&t.others)),
+                },
+            });
+        }
+    }
+
+    // Search, 404 and diagnostics.
+    pages.push(Page {
+        path: "search.html".into(),
+        template: "search.html",
+        context: minijinja::context! {
+            root => "",
+            title => title(lang.t("search")),
+            crumbs => ctx(&crumbs_home(lang, "")),
+        },
+    });
+    // The 404 page may be served from any path: use absolute links when the base URL is known.
+    let root404 = site
+        .opts
+        .base_url
+        .as_deref()
+        .map(|b| format!("{}/", b.trim_end_matches('/')))
+        .unwrap_or_default();
+    pages.push(Page {
+        path: "404.html".into(),
+        template: "404.html",
+        context: minijinja::context! {
+            root => root404,
+            title => title(lang.t("not_found_title")),
+        },
+    });
+    if !catalog.diagnostics.is_empty() {
+        #[derive(Serialize)]
+        struct DiagRow<'a> {
+            location: String,
+            severity: String,
+            code: &'a str,
+            message: &'a str,
+            hint: &'a str,
+        }
+        let rows: Vec<DiagRow<'_>> = catalog
+            .diagnostics
+            .iter()
+            .map(|d| DiagRow {
+                location: match d.pos {
+                    Some(p) => format!("{}:{}:{}", d.file, p.line, p.column),
+                    None => d.file.clone(),
+                },
+                severity: d.severity.to_string(),
+                code: d.code,
+                message: &d.message,
+                hint: d.hint.as_deref().unwrap_or(""),
+            })
+            .collect();
+        pages.push(Page {
+            path: "diagnostics.html".into(),
+            template: "diagnostics.html",
+            context: minijinja::context! {
+                root => "",
+                title => title(lang.t("diagnostics")),
+                crumbs => ctx(&crumbs_home(lang, "")),
+                diagnostics => ctx(&rows),
+            },
+        });
+    }
+    pages
+}

@@ -1,0 +1,216 @@
+//! The client-side search index, built once at build time.
+//!
+//! `search-index.js` assigns one array to `window.RTCDOC_INDEX`; loading it with a `<script>`
+//! tag works from `file://` (where `fetch()` is forbidden). Each entry is
+//! `[name, slug, category, vendor, summary, tokens]`; `tokens` is a space-separated, de-duplicated
+//! list of lower-case words from the name, description, port, interface and parameter names,
+//! data and interface types, category and vendor. Latin words are also split at camelCase and
+//! `::` boundaries; runs of CJK characters become overlapping bigrams (a lone character stays a
+//! unigram), so Japanese text needs no dictionary. `search.js` tokenizes queries the same way
+//! and matches each query token as a prefix of some entry token.
+
+use crate::catalog::Catalog;
+use crate::model::non_empty;
+use crate::types::canonical_type;
+use std::collections::BTreeSet;
+
+/// Whether `c` is written without spaces between words (kana, CJK ideographs, full-width forms).
+pub fn is_cjk(c: char) -> bool {
+    matches!(c as u32,
+        0x3040..=0x30FF   // hiragana, katakana
+        | 0x3400..=0x4DBF // CJK extension A
+        | 0x4E00..=0x9FFF // CJK unified ideographs
+        | 0xF900..=0xFAFF // compatibility ideographs
+        | 0xFF66..=0xFF9F // half-width katakana
+        | 0xAC00..=0xD7AF // hangul syllables
+    )
+}
+
+/// Splits `text` into search tokens (see the module documentation); pushes them into `out`.
+pub fn tokenize(text: &str, out: &mut BTreeSet<String>) {
+    let mut word: Vec<char> = Vec::new();
+    let mut cjk: Vec<char> = Vec::new();
+    let flush_word = |word: &mut Vec<char>, out: &mut BTreeSet<String>| {
+        if word.is_empty() {
+            return;
+        }
+        let w: String = word.iter().collect();
+        out.insert(w.to_lowercase());
+        // camelCase / digit boundaries: UsbCamera → usb, camera.
+        let mut part = String::new();
+        let mut prev: Option<char> = None;
+        let mut parts = Vec::new();
+        for &c in word.iter() {
+            if let Some(p) = prev {
+                let boundary = (p.is_lowercase() && c.is_uppercase())
+                    || (p.is_alphabetic() && c.is_ascii_digit())
+                    || (p.is_ascii_digit() && c.is_alphabetic());
+                if boundary && !part.is_empty() {
+                    parts.push(std::mem::take(&mut part));
+                }
+            }
+            part.push(c);
+            prev = Some(c);
+        }
+        if !part.is_empty() {
+            parts.push(part);
+        }
+        if parts.len() > 1 {
+            for p in parts {
+                out.insert(p.to_lowercase());
+            }
+        }
+        word.clear();
+    };
+    let flush_cjk = |cjk: &mut Vec<char>, out: &mut BTreeSet<String>| {
+        match cjk.len() {
+            0 => {}
+            1 => {
+                out.insert(cjk[0].to_string());
+            }
+            _ => {
+                for w in cjk.windows(2) {
+                    out.insert(w.iter().collect());
+                }
+            }
+        }
+        cjk.clear();
+    };
+    for c in text.chars() {
+        if is_cjk(c) {
+            flush_word(&mut word, out);
+            cjk.push(c);
+        } else if c.is_alphanumeric() || c == '_' {
+            flush_cjk(&mut cjk, out);
+            word.push(c);
+        } else {
+            flush_word(&mut word, out);
+            flush_cjk(&mut cjk, out);
+        }
+    }
+    flush_word(&mut word, out);
+    flush_cjk(&mut cjk, out);
+}
+
+/// Longest description text indexed per component, in characters (keeps entries small).
+const MAX_DESCRIPTION: usize = 400;
+
+/// Builds the contents of `search-index.js`. The JSON is escaped so that no `<`, `>` or `&`
+/// appears literally (a `</script>` in a profile cannot end a script element).
+pub fn index_js(catalog: &Catalog) -> String {
+    let mut entries: Vec<serde_json::Value> = Vec::with_capacity(catalog.components.len());
+    for c in &catalog.components {
+        let p = &c.profile;
+        let b = &p.basic_info;
+        let mut tokens = BTreeSet::new();
+        let mut add = |s: Option<&str>| {
+            if let Some(s) = s {
+                let s: String = s.chars().take(MAX_DESCRIPTION).collect();
+                tokenize(&s, &mut tokens);
+            }
+        };
+        add(Some(p.name()));
+        add(non_empty(&b.category));
+        add(non_empty(&b.vendor));
+        add(non_empty(&b.description));
+        if let Some(d) = &b.doc {
+            add(non_empty(&d.description));
+        }
+        for d in &p.data_ports {
+            add(non_empty(&d.name));
+            if let Some(t) = non_empty(&d.type_) {
+                add(Some(&canonical_type(t)));
+            }
+            for e in &d.events {
+                add(non_empty(&e.name));
+            }
+        }
+        for s in &p.service_ports {
+            add(non_empty(&s.name));
+            for i in &s.interfaces {
+                add(non_empty(&i.name));
+                if let Some(t) = non_empty(&i.type_) {
+                    add(Some(&canonical_type(t)));
+                }
+            }
+        }
+        for conf in p.configurations() {
+            add(non_empty(&conf.name));
+        }
+        let summary = non_empty(&b.description)
+            .map(|d| super::markdown::first_line(d, 90))
+            .unwrap_or_default();
+        let tokens: Vec<String> = tokens.into_iter().collect();
+        entries.push(serde_json::json!([
+            p.name(),
+            c.slug,
+            non_empty(&b.category).unwrap_or(""),
+            non_empty(&b.vendor).unwrap_or(""),
+            summary,
+            tokens.join(" "),
+        ]));
+    }
+    let json = serde_json::to_string(&entries).unwrap_or_else(|_| "[]".into());
+    let mut out = String::with_capacity(json.len() + 64);
+    out.push_str("window.RTCDOC_INDEX=");
+    out.push_str(&js_safe_json(&json));
+    out.push_str(";\n");
+    out
+}
+
+/// Escapes characters that could end a script element or break a JS string literal. They only
+/// occur inside JSON strings, where `\uXXXX` means the same character.
+pub fn js_safe_json(json: &str) -> String {
+    let mut out = String::with_capacity(json.len());
+    for ch in json.chars() {
+        match ch {
+            '<' => out.push_str("\\u003c"),
+            '>' => out.push_str("\\u003e"),
+            '&' => out.push_str("\\u0026"),
+            '\u{2028}' => out.push_str("\\u2028"),
+            '\u{2029}' => out.push_str("\\u2029"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn toks(s: &str) -> Vec<String> {
+        let mut t = BTreeSet::new();
+        tokenize(s, &mut t);
+        t.into_iter().collect()
+    }
+
+    #[test]
+    fn latin_words_and_camel_case() {
+        assert_eq!(
+            toks("UsbCamera RTC::TimedLong"),
+            [
+                "camera",
+                "long",
+                "rtc",
+                "timed",
+                "timedlong",
+                "usb",
+                "usbcamera"
+            ]
+        );
+    }
+
+    #[test]
+    fn japanese_bigrams() {
+        assert_eq!(toks("画像処理"), ["像処", "処理", "画像"]);
+        assert_eq!(toks("地図 を"), ["を", "地図"]);
+        assert_eq!(toks("カメラ画像"), ["カメ", "メラ", "ラ画", "画像"]);
+    }
+
+    #[test]
+    fn script_cannot_break_out() {
+        let s = js_safe_json(r#"["</script><script>alert(1)</script>"]"#);
+        assert!(!s.contains('<') && !s.contains('>'));
+    }
+}

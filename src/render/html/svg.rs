@@ -1,0 +1,499 @@
+//! SVG diagrams built in Rust: the component diagram (spec chapter 4) and the lifecycle state
+//! diagram. Every profile string that lands in the SVG goes through [`esc`]; colours come from
+//! CSS classes in `style.css`, so the diagrams follow the light and dark themes.
+
+use crate::model::PortSide;
+use std::fmt::Write as _;
+
+/// Escapes text for SVG/HTML text and attribute values.
+pub fn esc(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for ch in s.chars() {
+        match ch {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c if (c as u32) < 0x20 && c != '\n' && c != '\t' => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// Approximate rendered width of `s` in pixels at 12 px sans-serif (CJK glyphs are square).
+fn text_width(s: &str, px: f32) -> f32 {
+    s.chars()
+        .map(|c| if (c as u32) >= 0x2E80 { px } else { px * 0.6 })
+        .sum()
+}
+
+/// Cuts a label to `max` characters so one absurd name cannot blow up the drawing.
+fn clip(s: &str, max: usize) -> String {
+    if s.chars().count() <= max {
+        s.to_string()
+    } else {
+        let mut c: String = s.chars().take(max - 1).collect();
+        c.push('…');
+        c
+    }
+}
+
+/// A data port as drawn on the component box.
+pub struct DiagramDataPort {
+    pub side: PortSide,
+    pub name: String,
+    /// Short type name shown under the port name.
+    pub type_label: String,
+    /// `in`, `out` or `event` (CSS class).
+    pub class: &'static str,
+    pub anchor: String,
+}
+
+/// A service interface of a service port, drawn as a lollipop (provided) or socket (required).
+pub struct DiagramInterface {
+    pub provided: bool,
+    pub label: String,
+    pub type_label: String,
+    pub anchor: String,
+}
+
+/// A service port with its interfaces.
+pub struct DiagramServicePort {
+    pub side: PortSide,
+    pub name: String,
+    pub anchor: String,
+    pub interfaces: Vec<DiagramInterface>,
+}
+
+enum Slot<'a> {
+    Data(&'a DiagramDataPort),
+    /// A service port spanning `span` slots; the interface (if any) drawn at this slot.
+    Service {
+        port: &'a DiagramServicePort,
+        index: usize,
+    },
+}
+
+const SLOT_V: f32 = 38.0; // slot height on the left and right edges
+const SLOT_H: f32 = 26.0; // slot width on the top and bottom edges
+const HEADER: f32 = 50.0;
+const STEM: f32 = 30.0; // distance from the edge to an interface symbol
+const MAX_LABEL: usize = 48;
+
+fn slots_on<'a>(
+    side: PortSide,
+    data: &'a [DiagramDataPort],
+    service: &'a [DiagramServicePort],
+) -> Vec<Slot<'a>> {
+    let mut v: Vec<Slot<'a>> = data
+        .iter()
+        .filter(|p| p.side == side)
+        .map(Slot::Data)
+        .collect();
+    for p in service.iter().filter(|p| p.side == side) {
+        for index in 0..p.interfaces.len().max(1) {
+            v.push(Slot::Service { port: p, index });
+        }
+    }
+    v
+}
+
+fn slot_lines(s: &Slot<'_>) -> (String, String) {
+    match s {
+        Slot::Data(p) => (clip(&p.name, MAX_LABEL), clip(&p.type_label, MAX_LABEL)),
+        Slot::Service { port, index } => match port.interfaces.get(*index) {
+            Some(i) => (
+                clip(&format!("{}.{}", port.name, i.label), MAX_LABEL),
+                clip(&i.type_label, MAX_LABEL),
+            ),
+            None => (clip(&port.name, MAX_LABEL), String::new()),
+        },
+    }
+}
+
+fn slot_label_width(side: PortSide, s: &Slot<'_>) -> f32 {
+    let (a, b) = slot_lines(s);
+    match side {
+        // Top and bottom labels are one rotated line: `name : Type`.
+        PortSide::Top | PortSide::Bottom if !b.is_empty() => {
+            text_width(&a, 12.0) + text_width(" : ", 12.0) + text_width(&b, 12.0)
+        }
+        _ => text_width(&a, 12.0).max(text_width(&b, 11.0)),
+    }
+}
+
+/// Renders the component diagram: the `<<RTC>>` box, data ports as squares on their edge and
+/// service interfaces as lollipops (provided) or sockets (required). Each port links to the
+/// table row with its anchor. The box grows with the number of ports.
+pub fn component_diagram(
+    name: &str,
+    title: &str,
+    data: &[DiagramDataPort],
+    service: &[DiagramServicePort],
+) -> String {
+    let sides = [
+        PortSide::Left,
+        PortSide::Right,
+        PortSide::Top,
+        PortSide::Bottom,
+    ];
+    let slots: Vec<Vec<Slot<'_>>> = sides.iter().map(|&s| slots_on(s, data, service)).collect();
+    let label_w: Vec<f32> = slots
+        .iter()
+        .zip(sides)
+        .map(|(v, side)| {
+            v.iter()
+                .map(|s| slot_label_width(side, s))
+                .fold(0.0, f32::max)
+        })
+        .collect();
+    let has_service = |i: usize| slots[i].iter().any(|s| matches!(s, Slot::Service { .. }));
+    let margin = |i: usize| {
+        if slots[i].is_empty() {
+            16.0
+        } else {
+            label_w[i] + 24.0 + if has_service(i) { STEM + 10.0 } else { 0.0 }
+        }
+    };
+    let (ml, mr, mt, mb) = (margin(0), margin(1), margin(2), margin(3));
+    let name_c = clip(name, 60);
+    let box_w = [
+        200.0,
+        text_width(&name_c, 15.0) + 40.0,
+        slots[2].len() as f32 * SLOT_H + 40.0,
+        slots[3].len() as f32 * SLOT_H + 40.0,
+    ]
+    .into_iter()
+    .fold(0.0, f32::max)
+    .ceil();
+    let box_h = [
+        110.0,
+        HEADER + slots[0].len() as f32 * SLOT_V + 10.0,
+        HEADER + slots[1].len() as f32 * SLOT_V + 10.0,
+    ]
+    .into_iter()
+    .fold(0.0, f32::max)
+    .ceil();
+    let bx = ml.ceil();
+    let by = mt.ceil();
+    let width = (bx + box_w + mr).ceil();
+    let height = (by + box_h + mb).ceil();
+
+    let mut s = String::with_capacity(4096);
+    let _ = write!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram component-diagram" viewBox="0 0 {width} {height}" width="{width}" height="{height}" role="img" aria-label="{}"><title>{}</title>"#,
+        esc(title),
+        esc(title)
+    );
+    let _ = write!(
+        s,
+        r#"<rect class="rtc-box" x="{bx}" y="{by}" width="{box_w}" height="{box_h}" rx="4"/><text class="stereotype" x="{}" y="{}" text-anchor="middle">«RTC»</text><text class="rtc-name" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+        bx + box_w / 2.0,
+        by + 20.0,
+        bx + box_w / 2.0,
+        by + 40.0,
+        esc(&name_c)
+    );
+
+    for (si, side) in sides.iter().enumerate() {
+        let list = &slots[si];
+        // Service ports are drawn as one rectangle spanning their slots.
+        let mut i = 0;
+        while i < list.len() {
+            let (ex, ey) = edge_point(*side, i, bx, by, box_w, box_h);
+            match &list[i] {
+                Slot::Data(p) => {
+                    let _ = write!(
+                        s,
+                        r##"<a href="#{}" class="port {}"><rect class="port-square" x="{}" y="{}" width="12" height="12"/>"##,
+                        esc(&p.anchor),
+                        p.class,
+                        ex - 6.0,
+                        ey - 6.0
+                    );
+                    let (l1, l2) = slot_lines(&list[i]);
+                    label(&mut s, *side, ex, ey, 14.0, &l1, &l2);
+                    s.push_str("</a>");
+                    i += 1;
+                }
+                Slot::Service { port, .. } => {
+                    let span = port.interfaces.len().max(1);
+                    let (fx, fy) = edge_point(*side, i + span - 1, bx, by, box_w, box_h);
+                    let (rx, ry, rw, rh) = match side {
+                        PortSide::Left | PortSide::Right => {
+                            (ex - 6.0, ey - 6.0, 12.0, fy - ey + 12.0)
+                        }
+                        _ => (ex - 6.0, ey - 6.0, fx - ex + 12.0, 12.0),
+                    };
+                    let _ = write!(
+                        s,
+                        r##"<a href="#{}" class="port service"><rect class="port-square" x="{rx}" y="{ry}" width="{rw}" height="{rh}"/></a>"##,
+                        esc(&port.anchor)
+                    );
+                    for k in 0..span {
+                        let (px, py) = edge_point(*side, i + k, bx, by, box_w, box_h);
+                        let (l1, l2) = slot_lines(&list[i + k]);
+                        match port.interfaces.get(k) {
+                            Some(iface) => {
+                                let _ = write!(
+                                    s,
+                                    r##"<a href="#{}" class="iface {}">"##,
+                                    esc(&iface.anchor),
+                                    if iface.provided {
+                                        "provided"
+                                    } else {
+                                        "required"
+                                    }
+                                );
+                                symbol(&mut s, *side, px, py, iface.provided);
+                                label(&mut s, *side, px, py, STEM + 14.0, &l1, &l2);
+                                s.push_str("</a>");
+                            }
+                            None => {
+                                let _ = write!(
+                                    s,
+                                    r##"<a href="#{}" class="port service">"##,
+                                    esc(&port.anchor)
+                                );
+                                label(&mut s, *side, px, py, 14.0, &l1, &l2);
+                                s.push_str("</a>");
+                            }
+                        }
+                    }
+                    i += span;
+                }
+            }
+        }
+    }
+    s.push_str("</svg>");
+    s
+}
+
+/// Centre of slot `i` on `side`'s edge.
+fn edge_point(side: PortSide, i: usize, bx: f32, by: f32, box_w: f32, box_h: f32) -> (f32, f32) {
+    let along_v = by + HEADER + SLOT_V * i as f32 + SLOT_V / 2.0 - 4.0;
+    let along_h = bx + 20.0 + SLOT_H * i as f32 + SLOT_H / 2.0;
+    match side {
+        PortSide::Left => (bx, along_v),
+        PortSide::Right => (bx + box_w, along_v),
+        PortSide::Top => (along_h, by),
+        PortSide::Bottom => (along_h, by + box_h),
+    }
+}
+
+/// Lollipop (provided) or socket (required) on the outside of the edge at (x, y).
+fn symbol(s: &mut String, side: PortSide, x: f32, y: f32, provided: bool) {
+    let (nx, ny): (f32, f32) = match side {
+        PortSide::Left => (-1.0, 0.0),
+        PortSide::Right => (1.0, 0.0),
+        PortSide::Top => (0.0, -1.0),
+        PortSide::Bottom => (0.0, 1.0),
+    };
+    let (cx, cy) = (x + nx * STEM, y + ny * STEM);
+    let r = 7.0;
+    let (sx, sy) = (x + nx * 6.0, y + ny * 6.0);
+    let (tx, ty) = (cx - nx * r, cy - ny * r);
+    let _ = write!(
+        s,
+        r#"<line class="stem" x1="{sx}" y1="{sy}" x2="{tx}" y2="{ty}"/>"#
+    );
+    if provided {
+        let _ = write!(s, r#"<circle class="ball" cx="{cx}" cy="{cy}" r="{r}"/>"#);
+    } else {
+        // A half circle whose back touches the stem and whose opening faces outward.
+        let (px, py) = (-ny, nx);
+        let (x1, y1) = (cx + px * r, cy + py * r);
+        let (x2, y2) = (cx - px * r, cy - py * r);
+        let _ = write!(
+            s,
+            r#"<path class="socket" d="M{x1} {y1} A{r} {r} 0 0 0 {x2} {y2}"/>"#
+        );
+    }
+}
+
+/// Two-line label outside the edge, `gap` pixels away from it; top and bottom labels are
+/// rotated to read upwards so many ports still fit.
+fn label(s: &mut String, side: PortSide, x: f32, y: f32, gap: f32, l1: &str, l2: &str) {
+    match side {
+        PortSide::Left | PortSide::Right => {
+            let (tx, anchor) = if side == PortSide::Left {
+                (x - gap, "end")
+            } else {
+                (x + gap, "start")
+            };
+            let _ = write!(
+                s,
+                r#"<text class="port-name" x="{tx}" y="{}" text-anchor="{anchor}">{}</text>"#,
+                y + 1.0,
+                esc(l1)
+            );
+            if !l2.is_empty() {
+                let _ = write!(
+                    s,
+                    r#"<text class="port-type" x="{tx}" y="{}" text-anchor="{anchor}">{}</text>"#,
+                    y + 14.0,
+                    esc(l2)
+                );
+            }
+        }
+        PortSide::Top | PortSide::Bottom => {
+            let text = if l2.is_empty() {
+                l1.to_string()
+            } else {
+                format!("{l1} : {l2}")
+            };
+            let (ty, anchor) = if side == PortSide::Top {
+                (y - gap, "start")
+            } else {
+                (y + gap, "end")
+            };
+            let _ = write!(
+                s,
+                r#"<text class="port-name" x="{}" y="{ty}" text-anchor="{anchor}" transform="rotate(-90 {} {ty})">{}</text>"#,
+                x + 4.0,
+                x + 4.0,
+                esc(&text)
+            );
+        }
+    }
+}
+
+/// Callback labels and states of the lifecycle diagram, in the page language.
+pub struct LifecycleLabels<'a> {
+    pub title: &'a str,
+    pub created: &'a str,
+    pub inactive: &'a str,
+    pub active: &'a str,
+    pub error: &'a str,
+    pub finalized: &'a str,
+    pub ec_events: &'a str,
+    pub fsm: &'a str,
+    pub implemented: &'a str,
+    pub not_implemented: &'a str,
+}
+
+/// Renders the lifecycle state diagram (Created, Inactive, Active, Error, Finalized) with the
+/// callbacks on their transitions; `implemented(callback_name)` says which to highlight.
+pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> bool) -> String {
+    let mut s = String::with_capacity(4096);
+    let _ = write!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram lifecycle-diagram" viewBox="0 0 800 410" width="800" height="410" role="img" aria-label="{}"><title>{}</title>"#,
+        esc(l.title),
+        esc(l.title)
+    );
+    s.push_str(r#"<defs><marker id="lc-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="8" markerHeight="8" orient="auto-start-reverse"><path class="arrowhead" d="M0 0 L10 5 L0 10 z"/></marker></defs>"#);
+    let cb = |s: &mut String, x: f32, y: f32, anchor: &str, name: &str| {
+        let on = implemented(name);
+        let _ = write!(
+            s,
+            r#"<text class="cb{}" x="{x}" y="{y}" text-anchor="{anchor}">{}{}</text>"#,
+            if on { " impl" } else { "" },
+            if on { "✔ " } else { "" },
+            esc(name)
+        );
+    };
+    let state = |s: &mut String, x: f32, y: f32, name: &str, class: &str| {
+        let _ = write!(
+            s,
+            r#"<rect class="state {class}" x="{x}" y="{y}" width="130" height="44" rx="14"/><text class="state-name" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+            x + 65.0,
+            y + 27.0,
+            esc(name)
+        );
+    };
+    let arrow = |s: &mut String, d: &str| {
+        let _ = write!(
+            s,
+            r#"<path class="transition" d="{d}" marker-end="url(#lc-arrow)"/>"#
+        );
+    };
+    // Initial pseudo-state and the states.
+    s.push_str(r#"<circle class="initial" cx="20" cy="152" r="7"/>"#);
+    arrow(&mut s, "M27 152 L48 152");
+    state(&mut s, 50.0, 130.0, l.created, "created");
+    state(&mut s, 320.0, 130.0, l.inactive, "inactive");
+    state(&mut s, 600.0, 130.0, l.active, "active");
+    state(&mut s, 600.0, 300.0, l.error, "error");
+    state(&mut s, 320.0, 300.0, l.finalized, "finalized");
+    // Created → Inactive.
+    arrow(&mut s, "M180 152 L318 152");
+    cb(&mut s, 249.0, 144.0, "middle", "on_initialize");
+    // Inactive ⇄ Active.
+    arrow(&mut s, "M450 142 L598 142");
+    cb(&mut s, 524.0, 134.0, "middle", "on_activated");
+    arrow(&mut s, "M600 164 L452 164");
+    cb(&mut s, 524.0, 182.0, "middle", "on_deactivated");
+    // Active loop: periodic callbacks.
+    arrow(&mut s, "M640 130 C640 80 700 80 700 128");
+    cb(&mut s, 665.0, 76.0, "middle", "on_execute");
+    cb(&mut s, 665.0, 60.0, "middle", "on_state_update");
+    // Active → Error.
+    arrow(&mut s, "M690 174 L690 298");
+    cb(&mut s, 696.0, 240.0, "start", "on_aborting");
+    // Error loop.
+    arrow(&mut s, "M640 344 C640 390 700 390 700 346");
+    cb(&mut s, 665.0, 396.0, "middle", "on_error");
+    // Error → Inactive.
+    arrow(&mut s, "M600 310 C520 280 440 240 420 176");
+    cb(&mut s, 500.0, 262.0, "middle", "on_reset");
+    // Inactive → Finalized.
+    arrow(&mut s, "M385 174 L385 298");
+    cb(&mut s, 379.0, 240.0, "end", "on_finalize");
+    // Execution-context events and FSM callbacks, not tied to one transition.
+    let _ = write!(
+        s,
+        r#"<text class="note-title" x="20" y="24">{}</text>"#,
+        esc(l.ec_events)
+    );
+    cb(&mut s, 20.0, 42.0, "start", "on_startup");
+    cb(&mut s, 140.0, 42.0, "start", "on_shutdown");
+    cb(&mut s, 270.0, 42.0, "start", "on_rate_changed");
+    let _ = write!(
+        s,
+        r#"<text class="note-title" x="20" y="240">{}</text>"#,
+        esc(l.fsm)
+    );
+    cb(&mut s, 20.0, 258.0, "start", "on_action");
+    cb(&mut s, 20.0, 276.0, "start", "on_mode_changed");
+    // Legend.
+    let _ = write!(
+        s,
+        r#"<text class="cb impl" x="20" y="360">✔ {}</text><text class="cb" x="20" y="378">{}</text>"#,
+        esc(l.implemented),
+        esc(l.not_implemented)
+    );
+    s.push_str("</svg>");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn diagram_escapes_names_and_grows() {
+        let ports: Vec<DiagramDataPort> = (0..45)
+            .map(|i| DiagramDataPort {
+                side: if i % 2 == 0 {
+                    PortSide::Left
+                } else {
+                    PortSide::Right
+                },
+                name: format!("<in{i}>"),
+                type_label: "T\"x".into(),
+                class: "in",
+                anchor: format!("port-in{i}"),
+            })
+            .collect();
+        let svg = component_diagram("<b>x</b>", "t", &ports, &[]);
+        assert!(!svg.contains("<b>"));
+        assert!(svg.contains("&lt;in44&gt;"));
+        assert!(svg.contains("href=\"#port-in44\""));
+        // 23 slots on the left at 38 px each need a tall box.
+        assert!(svg.contains("height=\"") && svg.len() > 5000);
+    }
+}

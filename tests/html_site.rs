@@ -1,0 +1,593 @@
+//! The HTML catalogue site: structure, cross-links, sanitisation, determinism, themes, validity.
+
+mod common;
+mod html_support;
+
+use html_support::*;
+use rtcdoc::catalog::{Catalog, LoadedProfile};
+use rtcdoc::model::{
+    Action, ActionKind, BasicInfo, DataPort, Profile, ServiceInterface, ServicePort,
+};
+use rtcdoc::output::Staging;
+use rtcdoc::parse::SourceFormat;
+use rtcdoc::render::{html::HtmlRenderer, RenderContext, Renderer, SiteOptions};
+use rtcdoc::types::canonical_type;
+use std::collections::BTreeSet;
+use std::path::Path;
+
+// ---------- a small builder for catalogues made in Rust ----------
+
+fn s(v: &str) -> Option<String> {
+    Some(v.to_string())
+}
+
+fn component(name: &str, category: &str) -> Profile {
+    Profile {
+        id: s(&format!("RTC:Test:{category}:{name}:1.0")),
+        version: s("0.2"),
+        basic_info: BasicInfo {
+            name: s(name),
+            category: s(category),
+            vendor: s("Test"),
+            version: s("1.0"),
+            description: s(&format!("{name} does things.\nSecond line.")),
+            ..Default::default()
+        },
+        actions: vec![Action {
+            kind: ActionKind::OnExecute,
+            implemented: s("true"),
+            doc: None,
+            pos: Default::default(),
+            extra: vec![],
+        }],
+        ..Default::default()
+    }
+}
+
+fn data_port(dir: &str, name: &str, ty: &str) -> DataPort {
+    DataPort {
+        port_type: s(dir),
+        name: s(name),
+        type_: s(ty),
+        ..Default::default()
+    }
+}
+
+fn service_port(name: &str, ifaces: &[(&str, &str, &str)]) -> ServicePort {
+    ServicePort {
+        name: s(name),
+        interfaces: ifaces
+            .iter()
+            .map(|(n, dir, ty)| ServiceInterface {
+                name: s(n),
+                direction: s(dir),
+                type_: s(ty),
+                ..Default::default()
+            })
+            .collect(),
+        ..Default::default()
+    }
+}
+
+fn render_catalog(profiles: Vec<Profile>, out: &Path, site: &SiteOptions) -> Catalog {
+    let loaded = profiles
+        .into_iter()
+        .enumerate()
+        .map(|(i, profile)| LoadedProfile {
+            source: format!("c{i:03}/RTC.xml"),
+            format: SourceFormat::Xml,
+            profile,
+        })
+        .collect();
+    let catalog = Catalog::build(loaded, vec![]);
+    let staging = Staging::new(out).expect("staging");
+    HtmlRenderer
+        .render(
+            &RenderContext {
+                catalog: &catalog,
+                site,
+            },
+            &staging,
+        )
+        .expect("render");
+    staging.commit().expect("commit");
+    catalog
+}
+
+fn read(p: &Path) -> String {
+    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+fn title_of(html: &str) -> String {
+    let a = html.find("<title>").expect("title") + 7;
+    let b = html[a..].find("</title>").expect("end of title") + a;
+    html[a..b].to_string()
+}
+
+/// The hrefs inside `<section id="ID">…</section>` of a page.
+fn section_links(html: &str, id: &str) -> BTreeSet<String> {
+    let open = format!("<section id=\"{id}\">");
+    let Some(a) = html.find(&open) else {
+        return BTreeSet::new();
+    };
+    let b = html[a..]
+        .find("</section>")
+        .map(|e| a + e)
+        .unwrap_or(html.len());
+    tags(&html[a..b])
+        .into_iter()
+        .filter(|t| t.name == "a")
+        .filter_map(|t| t.attr("href").map(str::to_string))
+        .filter(|h| h.contains('#'))
+        .collect()
+}
+
+// ---------- the examples site ----------
+
+#[test]
+fn examples_site_has_every_page_and_no_broken_link() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&examples(), &out, SiteOptions::default());
+    let cat = &loaded.catalog;
+    assert!(cat.components.len() >= 9, "examples loaded");
+    for f in [
+        "index.html",
+        "search.html",
+        "search-index.js",
+        "search.js",
+        "filter.js",
+        "style.css",
+        "sitemap.xml",
+        "404.html",
+        "types/index.html",
+        "interfaces/index.html",
+        "categories/index.html",
+        "vendors/index.html",
+    ] {
+        assert!(out.join(f).is_file(), "{f} missing");
+    }
+    for c in &cat.components {
+        let html = read(&out.join(format!("components/{}.html", c.slug)));
+        assert!(
+            title_of(&html).starts_with(c.profile.name()),
+            "title of {}",
+            c.slug
+        );
+        assert!(html.contains("<svg") && html.contains("«RTC»"), "diagram");
+        assert!(html.contains("lifecycle-diagram"));
+    }
+    for t in &cat.data_types {
+        let html = read(&out.join(format!("types/{}.html", t.slug)));
+        assert!(title_of(&html).contains(&t.name), "type title {}", t.name);
+    }
+    for i in &cat.interfaces {
+        let html = read(&out.join(format!("interfaces/{}.html", i.slug)));
+        assert!(
+            title_of(&html).contains(&i.name),
+            "interface title {}",
+            i.name
+        );
+    }
+    let broken = broken_links(&out);
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+    if let Some(tool) = common::shared_tool("linkcheck.py") {
+        let o = std::process::Command::new("python3")
+            .arg(tool)
+            .arg(&out)
+            .output()
+            .expect("python3");
+        assert!(
+            o.status.success(),
+            "linkcheck.py: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+    } else {
+        println!("skipped: ../shared/tools/linkcheck.py not present");
+    }
+    // The sitemap lists every component page, relative without a base URL.
+    let sm = read(&out.join("sitemap.xml"));
+    for c in &cat.components {
+        assert!(sm.contains(&format!("<loc>components/{}.html</loc>", c.slug)));
+    }
+    assert!(!sm.contains("404.html"));
+}
+
+#[test]
+fn type_pages_list_exactly_the_producers_and_consumers() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&examples(), &out, SiteOptions::default());
+    let cat = &loaded.catalog;
+    // Expected sets derived from the profiles directly (not from the catalogue indexes).
+    for t in &cat.data_types {
+        let mut producers = BTreeSet::new();
+        let mut consumers = BTreeSet::new();
+        for c in &cat.components {
+            for (pi, p) in c.profile.data_ports.iter().enumerate() {
+                let Some(ty) = p.type_.as_deref().filter(|x| !x.trim().is_empty()) else {
+                    continue;
+                };
+                if canonical_type(ty) != t.name {
+                    continue;
+                }
+                let href = format!("../components/{}.html#{}", c.slug, c.anchors.data_ports[pi]);
+                match p.port_type.as_deref() {
+                    Some("DataOutPort") => producers.insert(href),
+                    Some("DataInPort") => consumers.insert(href),
+                    _ => false,
+                };
+            }
+        }
+        let html = read(&out.join(format!("types/{}.html", t.slug)));
+        assert_eq!(section_links(&html, "producers"), producers, "{}", t.name);
+        assert_eq!(section_links(&html, "consumers"), consumers, "{}", t.name);
+    }
+    // A known fact of the example robot: the camera image flows to the filter and detector.
+    let img = cat.data_type("CameraImage").expect("CameraImage is used");
+    let html = read(&out.join(format!("types/{}.html", img.slug)));
+    assert!(section_links(&html, "producers")
+        .iter()
+        .any(|h| h.starts_with("../components/usbcamera.html#")));
+    assert!(section_links(&html, "consumers").len() >= 2);
+}
+
+#[test]
+fn every_port_links_to_its_type_or_interface_page_and_peers() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&examples(), &out, SiteOptions::default());
+    let cat = &loaded.catalog;
+    for (ci, c) in cat.components.iter().enumerate() {
+        let html = read(&out.join(format!("components/{}.html", c.slug)));
+        for (pi, p) in c.profile.data_ports.iter().enumerate() {
+            let Some(t) = p.type_.as_deref().and_then(|t| cat.data_type(t)) else {
+                continue;
+            };
+            let anchor = &c.anchors.data_ports[pi];
+            let row_start = html
+                .find(&format!("<tr id=\"{anchor}\">"))
+                .unwrap_or_else(|| panic!("row {anchor} in {}", c.slug));
+            let row = &html[row_start..row_start + html[row_start..].find("</tr>").unwrap()];
+            assert!(
+                row.contains(&format!("href=\"../types/{}.html\"", t.slug)),
+                "{}.{anchor} links to its type",
+                c.slug
+            );
+            // Peers are other components (a port never "connects to" its own component).
+            for peer in cat
+                .data_port_peers(ci, pi)
+                .iter()
+                .filter(|r| r.component != ci)
+                .take(20)
+            {
+                let pc = &cat.components[peer.component];
+                let href = format!(
+                    "../components/{}.html#{}",
+                    pc.slug, pc.anchors.data_ports[peer.port]
+                );
+                assert!(
+                    row.contains(&href),
+                    "{}.{anchor} connects to {href}",
+                    c.slug
+                );
+            }
+            // The diagram links the port to its row.
+            assert!(html.contains(&format!("<a href=\"#{anchor}\"")));
+        }
+        for (si, sp) in c.profile.service_ports.iter().enumerate() {
+            for (ii, i) in sp.interfaces.iter().enumerate() {
+                let Some(t) = i.type_.as_deref().and_then(|t| cat.interface(t)) else {
+                    continue;
+                };
+                let anchor = &c.anchors.interfaces[si][ii];
+                let row_start = html.find(&format!("<tr id=\"{anchor}\">")).expect("row");
+                let row = &html[row_start..row_start + html[row_start..].find("</tr>").unwrap()];
+                assert!(row.contains(&format!("href=\"../interfaces/{}.html\"", t.slug)));
+            }
+        }
+    }
+}
+
+#[test]
+fn interface_pages_list_providers_and_flag_unprovided() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&examples(), &out, SiteOptions::default());
+    let cat = &loaded.catalog;
+    let index = read(&out.join("interfaces/index.html"));
+    let mut flagged = 0;
+    for i in &cat.interfaces {
+        let html = read(&out.join(format!("interfaces/{}.html", i.slug)));
+        assert_eq!(section_links(&html, "providers").len(), i.providers.len());
+        assert_eq!(section_links(&html, "requirers").len(), i.requirers.len());
+        assert_eq!(
+            html.contains("class=\"warning flag\""),
+            i.is_unprovided(),
+            "{}",
+            i.name
+        );
+        if i.is_unprovided() {
+            flagged += 1;
+        }
+    }
+    assert!(
+        flagged >= 1,
+        "the examples require an interface nobody provides"
+    );
+    assert_eq!(index.matches("class=\"unprovided\"").count(), flagged);
+}
+
+// ---------- catalogues built in Rust ----------
+
+#[test]
+fn big_components_grow_the_diagram_and_cap_peer_lists() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let mut big = component("Big", "Test");
+    for i in 0..44 {
+        let dir = if i % 2 == 0 {
+            "DataInPort"
+        } else {
+            "DataOutPort"
+        };
+        big.data_ports
+            .push(data_port(dir, &format!("port{i}"), "RTC::TimedLong"));
+    }
+    big.service_ports.push(service_port(
+        "svc",
+        &[
+            ("need", "Required", "Nobody::Provides"),
+            ("give", "Provided", "My::Service"),
+        ],
+    ));
+    let mut profiles = vec![big];
+    for i in 0..30 {
+        let mut c = component(&format!("Sink{i:02}"), "Sinks");
+        c.data_ports
+            .push(data_port("DataInPort", "in", "TimedLong"));
+        profiles.push(c);
+    }
+    let mut jp = component("地図サーバ", "ナビゲーション");
+    jp.basic_info.description = s("占有格子地図を配信する");
+    profiles.push(jp);
+    let cat = render_catalog(profiles, &out, &SiteOptions::default());
+    let big = &cat.components[0];
+    let html = read(&out.join(format!("components/{}.html", big.slug)));
+    // 22 in-ports on the left at 38 px each: the box is far taller than the minimum.
+    let svg_start = html.find("<svg").unwrap();
+    let h: f32 = html[svg_start..]
+        .split("height=\"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .and_then(|v| v.parse().ok())
+        .unwrap();
+    assert!(h > 22.0 * 38.0, "diagram height {h}");
+    for a in &big.anchors.data_ports {
+        assert!(html.contains(&format!("<a href=\"#{a}\"")));
+    }
+    // An out port with 30 consumers lists 20 and links to the type page for the rest.
+    let row_start = html
+        .find(&format!("<tr id=\"{}\">", big.anchors.data_ports[1]))
+        .unwrap();
+    let row = &html[row_start..row_start + html[row_start..].find("</tr>").unwrap()];
+    assert_eq!(row.matches("<li><a href=\"../components/sink").count(), 20);
+    assert!(row.contains("class=\"more\"") && row.contains("../types/rtc-timedlong.html"));
+    let t = read(&out.join("types/rtc-timedlong.html"));
+    assert_eq!(section_links(&t, "consumers").len(), 30 + 22);
+    // The unprovided interface is flagged; the Japanese component got a safe slug and page.
+    let nobody = cat.interface("Nobody::Provides").unwrap();
+    assert!(read(&out.join(format!("interfaces/{}.html", nobody.slug))).contains("warning flag"));
+    let jp = cat
+        .components
+        .iter()
+        .find(|c| c.profile.name() == "地図サーバ")
+        .unwrap();
+    assert!(jp.slug.is_ascii());
+    let jhtml = read(&out.join(format!("components/{}.html", jp.slug)));
+    assert!(title_of(&jhtml).starts_with("地図サーバ"));
+    // Line breaks of plain text survive.
+    assert!(html.contains("Big does things.<br>"));
+    let broken = broken_links(&out);
+    assert!(broken.is_empty(), "{}", broken.join("\n"));
+}
+
+#[test]
+fn labels_follow_the_site_language() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let mut c = component("Cam", "Sensor");
+    c.data_ports
+        .push(data_port("DataOutPort", "img", "RTC::CameraImage"));
+    let site = SiteOptions {
+        language: rtcdoc::i18n::Lang::Ja,
+        ..Default::default()
+    };
+    render_catalog(vec![c], &out, &site);
+    let html = read(&out.join("components/cam.html"));
+    assert!(html.contains("<html lang=\"ja\">"));
+    assert!(html.contains("データポート"));
+}
+
+// ---------- hostile input ----------
+
+#[test]
+fn no_payload_of_the_xss_fixture_survives() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    std::fs::create_dir_all(&input).unwrap();
+    for f in ["xss.xml", "xss.yaml"] {
+        std::fs::copy(
+            common::root().join("tests/fixtures/hostile").join(f),
+            input.join(f),
+        )
+        .unwrap();
+    }
+    let out = dir.path().join("site");
+    let loaded = build_site(&input, &out, SiteOptions::default());
+    assert_eq!(loaded.catalog.components.len(), 2, "both fixtures load");
+    let mut checked = 0;
+    for (rel, bytes) in common::tree(&out) {
+        let text = String::from_utf8_lossy(&bytes);
+        if rel.ends_with(".js") {
+            if rel == "search-index.js" {
+                assert!(
+                    !text.contains('<') && !text.contains('>'),
+                    "the index is JSON-escaped"
+                );
+                assert!(text.contains("XSS"), "payload text is indexed (inert)");
+            }
+            continue;
+        }
+        if !rel.ends_with(".html") && !rel.ends_with(".xml") {
+            continue;
+        }
+        for t in tags(&text) {
+            match t.name.as_str() {
+                "script" => {
+                    let src = t.attr("src").unwrap_or("");
+                    assert!(
+                        ["search.js", "filter.js", "search-index.js"]
+                            .iter()
+                            .any(|ok| src.ends_with(ok)),
+                        "{rel}: foreign script {t:?}"
+                    );
+                }
+                "iframe" | "object" | "embed" | "style" | "base" | "form"
+                    if t.name != "form" || t.attr("role") != Some("search") =>
+                {
+                    if t.name == "form" && t.attr("id") == Some("catalog-filter") {
+                        continue;
+                    }
+                    panic!("{rel}: forbidden element {t:?}");
+                }
+                "svg" => assert!(
+                    t.attr("class").is_some_and(|c| c.contains("diagram")),
+                    "{rel}: svg from profile text {t:?}"
+                ),
+                "img" => panic!("{rel}: image from profile text {t:?}"),
+                _ => {}
+            }
+            for (k, v) in &t.attrs {
+                assert!(!k.starts_with("on"), "{rel}: event handler {t:?}");
+                assert!(k != "style", "{rel}: style attribute {t:?}");
+                let v = v.trim().to_ascii_lowercase();
+                assert!(
+                    !(v.starts_with("javascript:")
+                        || v.starts_with("data:")
+                        || v.starts_with("vbscript:")),
+                    "{rel}: script URL {t:?}"
+                );
+            }
+        }
+        // Raw markup of the payloads never appears unescaped.
+        assert!(!text.contains("<script>alert"), "{rel}");
+        assert!(!text.contains("<iframe"), "{rel}");
+        assert!(!text.contains("<img"), "{rel}");
+        checked += 1;
+    }
+    assert!(checked > 10);
+    // Escaped, the payload text is still shown (nothing is silently dropped from names).
+    let c = &loaded.catalog.components[0];
+    let html = read(&out.join(format!("components/{}.html", c.slug)));
+    assert!(html.contains("&lt;"), "names are escaped, not removed");
+    // A path-like name got a safe slug.
+    for c in &loaded.catalog.components {
+        assert!(!c.slug.contains('/') && !c.slug.contains(".."));
+    }
+}
+
+// ---------- determinism, themes, validity ----------
+
+#[test]
+fn builds_are_byte_identical() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = dir.path().join("a");
+    let b = dir.path().join("b");
+    build_site(&examples(), &a, SiteOptions::default());
+    build_site(&examples(), &b, SiteOptions::default());
+    let ta = common::tree(&a);
+    let tb = common::tree(&b);
+    assert_eq!(
+        ta.iter().map(|(p, _)| p).collect::<Vec<_>>(),
+        tb.iter().map(|(p, _)| p).collect::<Vec<_>>()
+    );
+    for ((pa, ba), (_, bb)) in ta.iter().zip(&tb) {
+        assert!(ba == bb, "{pa} differs between two builds");
+    }
+}
+
+#[test]
+fn a_theme_dir_overrides_single_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let theme = dir.path().join("theme");
+    common::write(
+        &theme,
+        "style.css",
+        "/* my lab's style */\nbody { color: teal; }\n",
+    );
+    common::write(
+        &theme,
+        "404.html",
+        "{% extends \"base.html\" %}{% block main %}<h1>Lost in the lab</h1>{% endblock %}",
+    );
+    let out = dir.path().join("site");
+    build_site(
+        &examples(),
+        &out,
+        SiteOptions {
+            theme_dir: Some(theme),
+            base_url: Some("https://robots.example.org/catalog/".into()),
+            ..Default::default()
+        },
+    );
+    assert!(read(&out.join("style.css")).contains("my lab's style"));
+    let nf = read(&out.join("404.html"));
+    assert!(nf.contains("Lost in the lab"));
+    assert!(nf.contains("href=\"https://robots.example.org/catalog/style.css\""));
+    // Files not overridden come from the built-in theme.
+    assert!(read(&out.join("search.js")).contains("RTCDOC_INDEX"));
+    assert!(read(&out.join("index.html")).contains("catalog-filter"));
+    assert!(read(&out.join("sitemap.xml"))
+        .contains("<loc>https://robots.example.org/catalog/index.html</loc>"));
+}
+
+#[test]
+fn tidy_reports_no_errors() {
+    if !have("tidy") {
+        println!("skipped: tidy not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let mut errors = Vec::new();
+    for rel in pages(&out).keys() {
+        let o = std::process::Command::new("tidy")
+            .args(["-q", "-e"])
+            .arg(out.join(rel))
+            .output()
+            .expect("tidy");
+        let report = String::from_utf8_lossy(&o.stderr);
+        for line in report.lines().filter(|l| l.contains("Error:")) {
+            errors.push(format!("{rel}: {line}"));
+        }
+        assert_ne!(o.status.code(), Some(2), "{rel}: {report}");
+    }
+    assert!(errors.is_empty(), "{}", errors.join("\n"));
+}
+
+#[test]
+fn search_index_is_compact() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&examples(), &out, SiteOptions::default());
+    let bytes = std::fs::metadata(out.join("search-index.js"))
+        .unwrap()
+        .len();
+    let per = bytes as f64 / loaded.catalog.components.len() as f64;
+    println!("search index: {bytes} bytes, {per:.0} bytes per component");
+    assert!(per <= 1536.0, "{per} bytes per component");
+    let idx = read(&out.join("search-index.js"));
+    assert!(idx.contains("\"usbcamera\""));
+}

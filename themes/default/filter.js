@@ -1,0 +1,31 @@
+/* Index page filter: by text, category and vendor. The full list is in the HTML; this only
+   hides rows and empty category sections. */
+(function () {
+  'use strict';
+  var form = document.getElementById('catalog-filter');
+  if (!form) { return; }
+  var text = document.getElementById('f-text');
+  var cat = document.getElementById('f-category');
+  var ven = document.getElementById('f-vendor');
+  form.addEventListener('submit', function (ev) { ev.preventDefault(); });
+  function apply() {
+    var q = text.value.trim().toLowerCase();
+    var c = cat.value;
+    var v = ven.value;
+    document.querySelectorAll('section.category').forEach(function (sec) {
+      var shown = 0;
+      var catOk = !c || sec.getAttribute('data-category') === c;
+      sec.querySelectorAll('tbody tr').forEach(function (tr) {
+        var ok = catOk && (!v || tr.getAttribute('data-vendor') === v) &&
+          (!q || tr.textContent.toLowerCase().indexOf(q) >= 0);
+        tr.hidden = !ok;
+        if (ok) { shown++; }
+      });
+      sec.hidden = shown === 0;
+    });
+  }
+  [text, cat, ven].forEach(function (e) {
+    e.addEventListener('input', apply);
+    e.addEventListener('change', apply);
+  });
+})();
