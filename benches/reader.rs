@@ -7,7 +7,9 @@ use rtcdoc::parse::{self, Limits, SourceFormat};
 use std::hint::black_box;
 
 fn example(rel: &str) -> Vec<u8> {
-    let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples").join(rel);
+    let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples")
+        .join(rel);
     std::fs::read(p).expect("example profile")
 }
 

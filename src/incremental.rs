@@ -7,15 +7,16 @@
 //! components connected through them, and the index pages. A profile that no longer parses
 //! leaves the last good site in place and reports its diagnostics.
 
-use crate::build::{load, BuildOptions};
+use crate::build::{add_check_diagnostics, load, BuildOptions};
 use crate::catalog::{Catalog, LoadedProfile};
 use crate::diagnostic::Diagnostic;
 use crate::output::MemorySink;
 use crate::parse;
-use crate::render::{Format, RenderContext};
+use crate::render::html::HtmlRenderer;
+use crate::render::RenderContext;
 use crate::walk;
-use anyhow::{Context, Result};
-use std::collections::BTreeMap;
+use anyhow::Result;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// What an update did.
@@ -48,17 +49,108 @@ pub struct Workspace {
     warnings: BTreeMap<String, Vec<Diagnostic>>,
 }
 
-fn render_all(opts: &BuildOptions, catalog: &Catalog) -> Result<BTreeMap<String, Vec<u8>>> {
+/// Rendered files by site-relative path.
+pub type Files = BTreeMap<String, Vec<u8>>;
+
+/// Renders the files `wanted` accepts; returns them and the paths of the whole site.
+fn render(
+    opts: &BuildOptions,
+    catalog: &Catalog,
+    wanted: &(dyn Fn(&str) -> bool + Sync),
+) -> Result<(Files, Vec<String>)> {
     let sink = MemorySink::new();
     let ctx = RenderContext {
         catalog,
         site: &opts.site,
     };
-    let r = Format::Html
-        .renderer()
-        .context("the HTML renderer is not available")?;
-    r.render(&ctx, &sink)?;
-    Ok(sink.into_files())
+    let r = HtmlRenderer.render_some(&ctx, &sink, wanted)?;
+    Ok((sink.into_files(), r.all_paths))
+}
+
+/// The pages that can differ between the sites of `old` and `new` when only the profiles in
+/// `changed` (sources) differ; `None` when everything must be rendered again (a component was
+/// added, removed or renamed, a slug moved, or the diagnostics page appeared or vanished —
+/// every page's navigation links to it).
+fn affected(old: &Catalog, new: &Catalog, changed: &[String]) -> Option<BTreeSet<String>> {
+    let slugs = |c: &Catalog| -> Vec<(String, String)> {
+        c.components
+            .iter()
+            .map(|x| (x.source.clone(), x.slug.clone()))
+            .collect()
+    };
+    if slugs(old) != slugs(new) || old.diagnostics.is_empty() != new.diagnostics.is_empty() {
+        return None;
+    }
+    // A type, interface or facet that exists on both sides must keep its slug.
+    let moved = |a: Vec<(&String, &String)>, b: Vec<(&String, &String)>| {
+        let a: BTreeMap<_, _> = a.into_iter().collect();
+        b.into_iter()
+            .any(|(n, s)| a.get(n).is_some_and(|o| *o != s))
+    };
+    if moved(
+        old.data_types.iter().map(|t| (&t.name, &t.slug)).collect(),
+        new.data_types.iter().map(|t| (&t.name, &t.slug)).collect(),
+    ) || moved(
+        old.interfaces.iter().map(|t| (&t.name, &t.slug)).collect(),
+        new.interfaces.iter().map(|t| (&t.name, &t.slug)).collect(),
+    ) || moved(
+        old.categories.iter().map(|t| (&t.name, &t.slug)).collect(),
+        new.categories.iter().map(|t| (&t.name, &t.slug)).collect(),
+    ) || moved(
+        old.vendors.iter().map(|t| (&t.name, &t.slug)).collect(),
+        new.vendors.iter().map(|t| (&t.name, &t.slug)).collect(),
+    ) {
+        return None;
+    }
+    let mut set: BTreeSet<String> = [
+        "index.html",
+        "types/index.html",
+        "interfaces/index.html",
+        "search-index.js",
+        "sitemap.xml",
+        "diagnostics.html",
+    ]
+    .into_iter()
+    .map(String::from)
+    .collect();
+    for src in changed {
+        let ci = new.components.iter().position(|c| &c.source == src)?;
+        for cat in [old, new] {
+            let comp = &cat.components[ci];
+            set.insert(format!("components/{}.html", comp.slug));
+            // Every page that lists a port of this component: its types' and interfaces'
+            // pages and the pages of the components connected through them.
+            for p in &comp.profile.data_ports {
+                for side in [old, new] {
+                    if let Some(t) = p.type_.as_deref().and_then(|t| side.data_type(t)) {
+                        set.insert(format!("types/{}.html", t.slug));
+                        for r in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+                            set.insert(format!(
+                                "components/{}.html",
+                                side.components[r.component].slug
+                            ));
+                        }
+                    }
+                }
+            }
+            for sp in &comp.profile.service_ports {
+                for i in &sp.interfaces {
+                    for side in [old, new] {
+                        if let Some(t) = i.type_.as_deref().and_then(|t| side.interface(t)) {
+                            set.insert(format!("interfaces/{}.html", t.slug));
+                            for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
+                                set.insert(format!(
+                                    "components/{}.html",
+                                    side.components[r.component].slug
+                                ));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Some(set)
 }
 
 impl Workspace {
@@ -74,7 +166,14 @@ impl Workspace {
             opts.input.clone()
         };
         let mut warnings: BTreeMap<String, Vec<Diagnostic>> = BTreeMap::new();
-        for d in &loaded.catalog.diagnostics {
+        // Only the readers' diagnostics are kept per file: the catalogue adds its own
+        // (duplicate ids) again whenever it is rebuilt.
+        for d in loaded
+            .catalog
+            .diagnostics
+            .iter()
+            .filter(|d| d.code != crate::diagnostic::codes::DUPLICATE_ID)
+        {
             warnings.entry(d.file.clone()).or_default().push(d.clone());
         }
         let profiles = loaded
@@ -92,12 +191,14 @@ impl Workspace {
                 )
             })
             .collect();
-        let files = render_all(opts, &loaded.catalog)?;
+        let mut catalog = loaded.catalog;
+        add_check_diagnostics(&mut catalog);
+        let (files, _) = render(opts, &catalog, &|_| true)?;
         Ok(Workspace {
             opts: opts.clone(),
             input_root,
             profiles,
-            catalog: loaded.catalog,
+            catalog,
             files,
             warnings,
         })
@@ -119,14 +220,10 @@ impl Workspace {
     }
 
     fn rel(&self, path: &Path) -> Option<String> {
-        let abs_root = self.input_root.canonicalize().ok()?;
-        let abs = path.canonicalize().ok().or_else(|| {
-            path.parent()?
-                .canonicalize()
-                .ok()
-                .map(|p| p.join(path.file_name().unwrap_or_default()))
-        })?;
-        let rel = abs.strip_prefix(&abs_root).ok()?;
+        // Lexical: the file may be gone (deleted with its directory).
+        let root = crate::output::absolute(&self.input_root).ok()?;
+        let abs = crate::output::absolute(path).ok()?;
+        let rel = abs.strip_prefix(&root).ok()?;
         Some(
             rel.components()
                 .map(|c| c.as_os_str().to_string_lossy().into_owned())
@@ -187,18 +284,26 @@ impl Workspace {
             return Ok(UpdateReport::default());
         }
         let diags: Vec<Diagnostic> = new_warnings.values().flatten().cloned().collect();
-        let catalog = Catalog::build(new_profiles.values().cloned().collect(), diags);
-        let files =
-            render_all(&self.opts, &catalog).map_err(|e| UpdateError::Other(format!("{e:#}")))?;
-        let rendered = files.len();
+        let mut catalog = Catalog::build(new_profiles.values().cloned().collect(), diags);
+        add_check_diagnostics(&mut catalog);
+        let plan = affected(&self.catalog, &catalog, &touched);
+        let full = plan.is_none();
+        let wanted = |p: &str| match &plan {
+            None => true,
+            Some(set) => {
+                set.contains(p) || p.starts_with("categories/") || p.starts_with("vendors/")
+            }
+        };
+        let (written, all_paths) = render(&self.opts, &catalog, &wanted)
+            .map_err(|e| UpdateError::Other(format!("{e:#}")))?;
+        let rendered = written.len();
+        let keep: BTreeSet<&String> = all_paths.iter().collect();
+        self.files.retain(|k, _| keep.contains(k));
+        self.files.extend(written);
         self.profiles = new_profiles;
         self.warnings = new_warnings;
         self.catalog = catalog;
-        self.files = files;
-        Ok(UpdateReport {
-            rendered,
-            full: true,
-        })
+        Ok(UpdateReport { rendered, full })
     }
 
     /// Re-reads everything (after a configuration or theme change).

@@ -954,6 +954,29 @@ impl Renderer for HtmlRenderer {
     }
 
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> Result<usize> {
+        Ok(self.render_some(ctx, out, &|_| true)?.written)
+    }
+}
+
+/// What [`HtmlRenderer::render_some`] did.
+#[derive(Debug, Clone, Default)]
+pub struct Rendered {
+    /// Files written.
+    pub written: usize,
+    /// Every file the complete site has (written or not), sorted.
+    pub all_paths: Vec<String>,
+}
+
+impl HtmlRenderer {
+    /// Renders only the files whose site-relative path `wanted` accepts (used by `serve` to
+    /// re-render the pages a change affects); every page's context is still cheap to build,
+    /// only the rendering is skipped.
+    pub fn render_some(
+        &self,
+        ctx: &RenderContext<'_>,
+        out: &dyn Sink,
+        wanted: &(dyn Fn(&str) -> bool + Sync),
+    ) -> Result<Rendered> {
         let catalog = ctx.catalog;
         let opts = ctx.site;
         let lang = opts.language;
@@ -973,19 +996,28 @@ impl Renderer for HtmlRenderer {
                 .with_context(|| format!("theme template `{name}`"))?;
         }
 
+        let mut all_paths: Vec<String> = Vec::new();
         let mut written = 0usize;
         for asset in ASSETS {
-            let body = theme_file(opts.theme_dir.as_deref(), asset)?.unwrap_or_default();
-            out.write(asset, body.as_bytes())?;
+            all_paths.push(asset.to_string());
+            if wanted(asset) {
+                let body = theme_file(opts.theme_dir.as_deref(), asset)?.unwrap_or_default();
+                out.write(asset, body.as_bytes())?;
+                written += 1;
+            }
+        }
+        all_paths.push("search-index.js".into());
+        if wanted("search-index.js") {
+            out.write("search-index.js", search::index_js(catalog).as_bytes())?;
             written += 1;
         }
-        out.write("search-index.js", search::index_js(catalog).as_bytes())?;
-        written += 1;
 
         // Component pages: the bulk of the work, rendered and written in parallel.
         let tmpl = env.get_template("component.html")?;
+        all_paths.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
         written += (0..catalog.components.len())
             .into_par_iter()
+            .filter(|&ci| wanted(&site.component_path(ci)))
             .map(|ci| -> Result<usize> {
                 let page = site.component_page(ci);
                 let html = tmpl
@@ -997,8 +1029,10 @@ impl Renderer for HtmlRenderer {
             .try_reduce(|| 0, |a, b| Ok(a + b))?;
 
         let pages = other_pages(&site);
+        all_paths.extend(pages.iter().map(|p| p.path.clone()));
         written += pages
             .par_iter()
+            .filter(|pg| wanted(&pg.path))
             .map(|pg| -> Result<usize> {
                 let html = env
                     .get_template(pg.template)?
@@ -1009,31 +1043,35 @@ impl Renderer for HtmlRenderer {
             })
             .try_reduce(|| 0, |a, b| Ok(a + b))?;
 
-        // Sitemap: every page but the 404.
-        let mut urls: Vec<String> = pages
-            .iter()
-            .map(|p| p.path.clone())
-            .filter(|p| p != "404.html")
-            .collect();
-        urls.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
-        urls.sort();
-        let base = opts
-            .base_url
-            .as_deref()
-            .map(|b| format!("{}/", b.trim_end_matches('/')))
-            .unwrap_or_default();
-        let mut sm = String::from(
-            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<urlset xmlns=\"http://www.sitemaps.org/schemas/sitemap/0.9\">\n",
-        );
-        for u in urls {
-            sm.push_str("  <url><loc>");
-            sm.push_str(&xml_escape(&format!("{base}{u}")));
-            sm.push_str("</loc></url>\n");
+        all_paths.push("sitemap.xml".into());
+        if wanted("sitemap.xml") {
+            // Sitemap: every page but the 404.
+            let mut urls: Vec<String> = pages
+                .iter()
+                .map(|p| p.path.clone())
+                .filter(|p| p != "404.html")
+                .collect();
+            urls.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
+            urls.sort();
+            let base = opts
+                .base_url
+                .as_deref()
+                .map(|b| format!("{}/", b.trim_end_matches('/')))
+                .unwrap_or_default();
+            let mut sm = String::from(
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<urlset xmlns=\"http://www.sitemaps.org/schemas/sitemap/0.9\">\n",
+            );
+            for u in urls {
+                sm.push_str("  <url><loc>");
+                sm.push_str(&xml_escape(&format!("{base}{u}")));
+                sm.push_str("</loc></url>\n");
+            }
+            sm.push_str("</urlset>\n");
+            out.write("sitemap.xml", sm.as_bytes())?;
+            written += 1;
         }
-        sm.push_str("</urlset>\n");
-        out.write("sitemap.xml", sm.as_bytes())?;
-        written += 1;
-        Ok(written)
+        all_paths.sort();
+        Ok(Rendered { written, all_paths })
     }
 }
 
