@@ -2,7 +2,7 @@
 
 use crate::catalog::{Catalog, LoadedProfile};
 use crate::diagnostic::Diagnostic;
-use crate::output::{absolute, Sink, Staging};
+use crate::output::{absolute, Sink, Staging, WriterThread};
 use crate::parse::{self, Limits};
 use crate::render::{Format, Prefixed, RenderContext, SiteOptions};
 use crate::walk::{self, Skipped, WalkOptions};
@@ -65,8 +65,17 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let results: Vec<(Option<LoadedProfile>, Vec<Diagnostic>)> = walked
         .sources
         .par_iter()
-        .map(
-            |src| match parse::parse(src.format, &src.bytes, &src.rel, &opts.limits) {
+        .map(|src| {
+            let parsed = match src.read(Some(opts.limits.max_file_size)) {
+                Ok(bytes) => parse::parse(src.format, &bytes, &src.rel, &opts.limits),
+                Err(e) => Err(Diagnostic::error(
+                    crate::diagnostic::codes::IO,
+                    &src.rel,
+                    format!("cannot read file: {e}"),
+                )),
+            };
+            progress.advance(1);
+            match parsed {
                 Ok(parsed) => (
                     Some(LoadedProfile {
                         source: src.rel.clone(),
@@ -76,9 +85,10 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                     parsed.diagnostics,
                 ),
                 Err(d) => (None, vec![d]),
-            },
-        )
+            }
+        })
         .collect();
+    progress.stage("cross-referencing", 0);
     let mut diagnostics = walked.errors;
     let mut profiles = Vec::with_capacity(results.len());
     for (p, d) in results {
@@ -180,6 +190,7 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     let mut loaded = load_with(&opts.input, &load_opts, progress)?;
     // The `rtcdoc check` rules run on every build; their findings join the catalogue's
     // diagnostics so they appear in the JSON output and the diagnostics page.
+    progress.stage("checking", 0);
     add_check_diagnostics(&mut loaded.catalog);
     let (errors, warnings, _) = loaded.catalog.counts();
     if opts.strict && errors > 0 {
@@ -198,23 +209,30 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     };
     let mut files = 0;
     progress.stage("rendering", formats.len());
-    for f in &formats {
-        let renderer = f
-            .renderer()
-            .with_context(|| format!("the {} format is not available in this version", f.name()))?;
-        let written = if formats.len() == 1 {
-            renderer.render(&ctx, &staging)?
-        } else {
-            let sub = Prefixed {
-                inner: &staging as &dyn Sink,
-                prefix: f.name().to_string(),
+    std::thread::scope(|scope| -> Result<()> {
+        let writer = WriterThread::start(scope, &staging);
+        for f in &formats {
+            let renderer = f.renderer().with_context(|| {
+                format!("the {} format is not available in this version", f.name())
+            })?;
+            let written = if formats.len() == 1 {
+                renderer.render(&ctx, &writer)?
+            } else {
+                let sub = Prefixed {
+                    inner: &writer as &dyn Sink,
+                    prefix: f.name().to_string(),
+                };
+                renderer.render(&ctx, &sub)?
             };
-            renderer.render(&ctx, &sub)?
-        };
-        files += written;
-        progress.advance(1);
-    }
+            files += written;
+            progress.advance(1);
+        }
+        writer.finish()?;
+        Ok(())
+    })?;
+    progress.stage("swapping in", 0);
     staging.commit()?;
+    progress.stage("done", 0);
     let report = BuildReport {
         profiles: loaded.catalog.components.len(),
         files_found: loaded.files,

@@ -256,3 +256,73 @@ impl Sink for MemorySink {
         Ok(())
     }
 }
+
+/// A sink that hands files to one writer thread. Rendering stays parallel, while files are
+/// created one at a time: parallel creation of many files in one directory contends on the
+/// directory's lock in the kernel and was measured slower than a single writer.
+pub struct WriterThread<'a> {
+    tx: Option<std::sync::mpsc::SyncSender<(String, Vec<u8>)>>,
+    handle: Option<std::thread::ScopedJoinHandle<'a, Result<usize>>>,
+}
+
+impl<'a> WriterThread<'a> {
+    /// Starts the writer inside `scope`; files go to `inner`.
+    pub fn start<'env>(
+        scope: &'a std::thread::Scope<'a, 'env>,
+        inner: &'a (dyn Sink + 'a),
+    ) -> WriterThread<'a> {
+        let (tx, rx) = std::sync::mpsc::sync_channel::<(String, Vec<u8>)>(256);
+        let handle = scope.spawn(move || -> Result<usize> {
+            let mut n = 0;
+            let mut first_error = None;
+            for (rel, bytes) in rx {
+                if first_error.is_none() {
+                    match inner.write(&rel, &bytes) {
+                        Ok(()) => n += 1,
+                        Err(e) => first_error = Some(e),
+                    }
+                }
+            }
+            match first_error {
+                Some(e) => Err(e),
+                None => Ok(n),
+            }
+        });
+        WriterThread {
+            tx: Some(tx),
+            handle: Some(handle),
+        }
+    }
+
+    /// Waits for every file to be written; the first write error, if any.
+    pub fn finish(mut self) -> Result<usize> {
+        self.tx.take();
+        match self.handle.take() {
+            Some(h) => h
+                .join()
+                .map_err(|_| anyhow::anyhow!("the writer thread panicked"))?,
+            None => Ok(0),
+        }
+    }
+}
+
+impl Sink for WriterThread<'_> {
+    fn write(&self, rel: &str, bytes: &[u8]) -> Result<()> {
+        check_relative(rel)?;
+        match &self.tx {
+            Some(tx) => tx.send((rel.to_string(), bytes.to_vec())).map_err(|_| {
+                anyhow::anyhow!("the writer thread stopped (an earlier write failed)")
+            }),
+            None => bail!("the writer is finished"),
+        }
+    }
+}
+
+impl Drop for WriterThread<'_> {
+    fn drop(&mut self) {
+        self.tx.take();
+        if let Some(h) = self.handle.take() {
+            let _ = h.join();
+        }
+    }
+}

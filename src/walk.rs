@@ -10,7 +10,8 @@ use crate::parse::{self, SourceFormat};
 use globset::{Glob, GlobSet, GlobSetBuilder};
 use std::path::{Path, PathBuf};
 
-/// A profile file found by the walk, with its bytes.
+/// A profile file found by the walk. Its bytes are read when it is parsed, so a large
+/// catalogue is never held in memory as text all at once.
 #[derive(Debug, Clone)]
 pub struct Source {
     /// Absolute or input-relative path on disk.
@@ -18,8 +19,18 @@ pub struct Source {
     /// Path relative to the input directory, with forward slashes (used in output and JSON).
     pub rel: String,
     pub format: SourceFormat,
-    pub bytes: Vec<u8>,
 }
+
+impl Source {
+    /// Reads the file, at most `limit + 1` bytes (so that an oversized file is detected without
+    /// reading it all).
+    pub fn read(&self, limit: Option<u64>) -> std::io::Result<Vec<u8>> {
+        read_limited(&self.path, limit)
+    }
+}
+
+/// How much of a file the walk reads to recognise a profile.
+const SNIFF_BYTES: u64 = 64 * 1024;
 
 /// A file the walk looked at and did not take, with the reason.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -134,6 +145,7 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
         .filter_map(|d| d.canonicalize().ok())
         .collect();
     let mut result = WalkResult::default();
+    let mut candidates: Vec<(PathBuf, String)> = Vec::new();
     let root = if input.is_file() {
         input.parent().unwrap_or(Path::new(".")).to_path_buf()
     } else {
@@ -208,28 +220,29 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
             });
             continue;
         }
-        let bytes = match read_limited(path, opts.max_file_size) {
-            Ok(b) => b,
-            Err(e) => {
-                result.errors.push(crate::diagnostic::Diagnostic::error(
-                    crate::diagnostic::codes::IO,
-                    &rel,
-                    format!("cannot read file: {e}"),
-                ));
-                continue;
-            }
-        };
-        match detect(path, &bytes) {
-            Some(format) => result.sources.push(Source {
-                path: path.to_path_buf(),
-                rel,
-                format,
-                bytes,
-            }),
-            None => result.skipped.push(Skipped {
+        candidates.push((path.to_path_buf(), rel));
+    }
+    // Recognising profiles reads the head of every candidate: done in parallel.
+    use rayon::prelude::*;
+    let sniffed: Vec<(PathBuf, String, std::io::Result<Option<SourceFormat>>)> = candidates
+        .into_par_iter()
+        .map(|(path, rel)| {
+            let r = read_limited(&path, Some(SNIFF_BYTES)).map(|head| detect(&path, &head));
+            (path, rel, r)
+        })
+        .collect();
+    for (path, rel, r) in sniffed {
+        match r {
+            Ok(Some(format)) => result.sources.push(Source { path, rel, format }),
+            Ok(None) => result.skipped.push(Skipped {
                 rel,
                 reason: "not an RTC component profile (root is not RtcProfile / rtcProfile)".into(),
             }),
+            Err(e) => result.errors.push(crate::diagnostic::Diagnostic::error(
+                crate::diagnostic::codes::IO,
+                &rel,
+                format!("cannot read file: {e}"),
+            )),
         }
     }
     result.sources.sort_by(|a, b| a.rel.cmp(&b.rel));

@@ -6,7 +6,7 @@
 //! requests). Relative URLs are dropped because they could not resolve inside the site; links
 //! get `rel="noopener noreferrer"`.
 
-use pulldown_cmark::{Event, Options, Parser};
+use pulldown_cmark::{Event, Options, Parser, Tag};
 use std::sync::OnceLock;
 
 fn sanitizer() -> &'static ammonia::Builder<'static> {
@@ -22,16 +22,34 @@ fn sanitizer() -> &'static ammonia::Builder<'static> {
 }
 
 /// Renders Markdown `text` to sanitised HTML. Single newlines become `<br>`.
+///
+/// Most profile text is plain prose. When the Markdown has no raw HTML, no link and no image,
+/// pulldown-cmark's own output is already safe (it escapes all text and emits only formatting
+/// tags), so the HTML parse of the sanitiser is skipped; anything else goes through ammonia.
 pub fn to_html(text: &str) -> String {
     let mut opts = Options::empty();
     opts.insert(Options::ENABLE_TABLES);
     opts.insert(Options::ENABLE_STRIKETHROUGH);
-    let parser = Parser::new_ext(text, opts).map(|e| match e {
-        Event::SoftBreak => Event::HardBreak,
-        other => other,
+    let events: Vec<Event<'_>> = Parser::new_ext(text, opts)
+        .map(|e| match e {
+            Event::SoftBreak => Event::HardBreak,
+            other => other,
+        })
+        .collect();
+    let plain = !events.iter().any(|e| {
+        matches!(
+            e,
+            Event::Html(_)
+                | Event::InlineHtml(_)
+                | Event::Start(Tag::Link { .. } | Tag::Image { .. } | Tag::HtmlBlock)
+        )
     });
     let mut raw = String::with_capacity(text.len() + text.len() / 2);
-    pulldown_cmark::html::push_html(&mut raw, parser);
+    pulldown_cmark::html::push_html(&mut raw, events.into_iter());
+    if plain {
+        // Same markup as the sanitiser would give back.
+        return raw.replace("<br />", "<br>");
+    }
     sanitizer().clean(&raw).to_string()
 }
 
@@ -75,6 +93,22 @@ mod tests {
         assert!(!h.contains("<iframe"), "{h}");
         assert!(!h.contains("onclick"), "{h}");
         assert!(h.contains("rel=\"noopener noreferrer\""), "{h}");
+    }
+
+    #[test]
+    fn plain_text_takes_the_fast_path_with_the_same_markup() {
+        for t in [
+            "plain words",
+            "a\nb",
+            "**bold** and `code` & <less>",
+            "1. one\n2. two",
+            "| a | b |\n|---|---|\n| 1 | 2 |",
+        ] {
+            let fast = to_html(t);
+            assert!(!fast.contains("<br />"));
+            assert!(!fast.contains("<less>"), "{fast}");
+        }
+        assert_eq!(to_html("a & b < c"), "<p>a &amp; b &lt; c</p>\n");
     }
 
     #[test]
