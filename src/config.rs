@@ -251,6 +251,14 @@ pub struct Overrides {
     pub max_depth: Option<usize>,
 }
 
+/// The catalogue title when none is configured, in the UI language.
+pub fn default_title(lang: Lang) -> String {
+    match lang {
+        Lang::En => crate::render::SiteOptions::default().title,
+        Lang::Ja => "RTコンポーネント カタログ".to_string(),
+    }
+}
+
 /// Combines defaults, the configuration file and command-line overrides (in rising order of
 /// precedence) into the options of a build.
 pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptions {
@@ -278,7 +286,6 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
             cli.clone()
         }
     };
-    let defaults = crate::render::SiteOptions::default();
     let limits = file.limits();
     crate::build::BuildOptions {
         input,
@@ -299,7 +306,7 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 .title
                 .clone()
                 .or_else(|| c.title.clone())
-                .unwrap_or(defaults.title),
+                .unwrap_or_else(|| default_title(cli.language.or(c.language).unwrap_or_default())),
             base_url: cli.base_url.clone().or_else(|| c.base_url.clone()),
             theme_dir: cli
                 .theme
