@@ -6,6 +6,10 @@ use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rtcdoc::parse::{self, Limits, SourceFormat};
 use std::hint::black_box;
 
+/// The allocator the `rtcdoc` binary uses, so the numbers match real runs.
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn example(rel: &str) -> Vec<u8> {
     let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("examples")

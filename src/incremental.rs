@@ -8,7 +8,7 @@
 //! leaves the last good site in place and reports its diagnostics.
 
 use crate::build::{add_check_diagnostics, load, BuildOptions};
-use crate::catalog::{Catalog, LoadedProfile};
+use crate::catalog::{Catalog, Component, LoadedProfile};
 use crate::diagnostic::Diagnostic;
 use crate::output::MemorySink;
 use crate::parse;
@@ -41,7 +41,6 @@ pub enum UpdateError {
 pub struct Workspace {
     opts: BuildOptions,
     input_root: PathBuf,
-    profiles: BTreeMap<String, LoadedProfile>,
     catalog: Catalog,
     files: BTreeMap<String, Vec<u8>>,
     /// Load diagnostics of files that are not profiles any more are dropped; these are the
@@ -67,40 +66,120 @@ fn render(
     Ok((sink.into_files(), r.all_paths))
 }
 
-/// The pages that can differ between the sites of `old` and `new` when only the profiles in
-/// `changed` (sources) differ; `None` when everything must be rendered again (a component was
+/// What a component shows on *other* pages (type and interface pages, peers' "connects to"
+/// lists): its name, slug and anchors, and the name, type, IDL file and direction of every port
+/// and interface. When this is unchanged, no other component's or type's page can change.
+fn link_signature(c: &Component) -> String {
+    let p = &c.profile;
+    let mut s = format!("{}\u{0}{}\u{0}{:?}", p.name(), c.slug, c.anchors);
+    for d in &p.data_ports {
+        s.push_str(&format!(
+            "\u{1}{:?}{:?}{:?}{:?}",
+            d.name, d.type_, d.idl_file, d.port_type
+        ));
+    }
+    for sp in &p.service_ports {
+        s.push_str(&format!("\u{2}{:?}", sp.name));
+        for i in &sp.interfaces {
+            s.push_str(&format!(
+                "\u{3}{:?}{:?}{:?}{:?}",
+                i.name, i.type_, i.idl_file, i.direction
+            ));
+        }
+    }
+    s
+}
+
+/// Pages of the types and interfaces component `ci` of `cat` uses and of the components
+/// connected to it through them.
+fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
+    for p in &comp.profile.data_ports {
+        if let Some(t) = p.type_.as_deref().and_then(|t| cat.data_type(t)) {
+            set.insert(format!("types/{}.html", t.slug));
+            for r in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+                set.insert(format!(
+                    "components/{}.html",
+                    cat.components[r.component].slug
+                ));
+            }
+        }
+    }
+    for sp in &comp.profile.service_ports {
+        for i in &sp.interfaces {
+            if let Some(t) = i.type_.as_deref().and_then(|t| cat.interface(t)) {
+                set.insert(format!("interfaces/{}.html", t.slug));
+                for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
+                    set.insert(format!(
+                        "components/{}.html",
+                        cat.components[r.component].slug
+                    ));
+                }
+            }
+        }
+    }
+}
+
+/// What the old site looked like, taken before the old catalogue is consumed.
+struct Before {
+    slugs: Vec<(String, String)>,
+    names: [BTreeMap<String, String>; 4],
+    had_diagnostics: bool,
+    /// Per changed source: its link signature and the peer pages on the old site.
+    changed: BTreeMap<String, (String, BTreeSet<String>)>,
+}
+
+fn slug_maps(c: &Catalog) -> [BTreeMap<String, String>; 4] {
+    let m =
+        |v: Vec<(&String, &String)>| v.into_iter().map(|(a, b)| (a.clone(), b.clone())).collect();
+    [
+        m(c.data_types.iter().map(|t| (&t.name, &t.slug)).collect()),
+        m(c.interfaces.iter().map(|t| (&t.name, &t.slug)).collect()),
+        m(c.categories.iter().map(|t| (&t.name, &t.slug)).collect()),
+        m(c.vendors.iter().map(|t| (&t.name, &t.slug)).collect()),
+    ]
+}
+
+impl Before {
+    fn of(old: &Catalog, changed: &[String]) -> Before {
+        let mut ch = BTreeMap::new();
+        for src in changed {
+            if let Some(c) = old.components.iter().find(|c| &c.source == src) {
+                let mut set = BTreeSet::new();
+                peer_pages(old, c, &mut set);
+                ch.insert(src.clone(), (link_signature(c), set));
+            }
+        }
+        Before {
+            slugs: old
+                .components
+                .iter()
+                .map(|x| (x.source.clone(), x.slug.clone()))
+                .collect(),
+            names: slug_maps(old),
+            had_diagnostics: !old.diagnostics.is_empty(),
+            changed: ch,
+        }
+    }
+}
+
+/// The pages that can differ between the old site and the site of `new` when only the profiles
+/// in `changed` (sources) differ; `None` when everything must be rendered again (a component was
 /// added, removed or renamed, a slug moved, or the diagnostics page appeared or vanished —
 /// every page's navigation links to it).
-fn affected(old: &Catalog, new: &Catalog, changed: &[String]) -> Option<BTreeSet<String>> {
-    let slugs = |c: &Catalog| -> Vec<(String, String)> {
-        c.components
-            .iter()
-            .map(|x| (x.source.clone(), x.slug.clone()))
-            .collect()
-    };
-    if slugs(old) != slugs(new) || old.diagnostics.is_empty() != new.diagnostics.is_empty() {
+fn affected(before: &Before, new: &Catalog, changed: &[String]) -> Option<BTreeSet<String>> {
+    let slugs: Vec<(String, String)> = new
+        .components
+        .iter()
+        .map(|x| (x.source.clone(), x.slug.clone()))
+        .collect();
+    if slugs != before.slugs || before.had_diagnostics == new.diagnostics.is_empty() {
         return None;
     }
     // A type, interface or facet that exists on both sides must keep its slug.
-    let moved = |a: Vec<(&String, &String)>, b: Vec<(&String, &String)>| {
-        let a: BTreeMap<_, _> = a.into_iter().collect();
-        b.into_iter()
-            .any(|(n, s)| a.get(n).is_some_and(|o| *o != s))
-    };
-    if moved(
-        old.data_types.iter().map(|t| (&t.name, &t.slug)).collect(),
-        new.data_types.iter().map(|t| (&t.name, &t.slug)).collect(),
-    ) || moved(
-        old.interfaces.iter().map(|t| (&t.name, &t.slug)).collect(),
-        new.interfaces.iter().map(|t| (&t.name, &t.slug)).collect(),
-    ) || moved(
-        old.categories.iter().map(|t| (&t.name, &t.slug)).collect(),
-        new.categories.iter().map(|t| (&t.name, &t.slug)).collect(),
-    ) || moved(
-        old.vendors.iter().map(|t| (&t.name, &t.slug)).collect(),
-        new.vendors.iter().map(|t| (&t.name, &t.slug)).collect(),
-    ) {
-        return None;
+    for (old, new) in before.names.iter().zip(slug_maps(new).iter()) {
+        if new.iter().any(|(n, s)| old.get(n).is_some_and(|o| o != s)) {
+            return None;
+        }
     }
     let mut set: BTreeSet<String> = [
         "index.html",
@@ -114,40 +193,13 @@ fn affected(old: &Catalog, new: &Catalog, changed: &[String]) -> Option<BTreeSet
     .map(String::from)
     .collect();
     for src in changed {
-        let ci = new.components.iter().position(|c| &c.source == src)?;
-        for cat in [old, new] {
-            let comp = &cat.components[ci];
-            set.insert(format!("components/{}.html", comp.slug));
-            // Every page that lists a port of this component: its types' and interfaces'
-            // pages and the pages of the components connected through them.
-            for p in &comp.profile.data_ports {
-                for side in [old, new] {
-                    if let Some(t) = p.type_.as_deref().and_then(|t| side.data_type(t)) {
-                        set.insert(format!("types/{}.html", t.slug));
-                        for r in t.producers.iter().chain(&t.consumers).chain(&t.others) {
-                            set.insert(format!(
-                                "components/{}.html",
-                                side.components[r.component].slug
-                            ));
-                        }
-                    }
-                }
-            }
-            for sp in &comp.profile.service_ports {
-                for i in &sp.interfaces {
-                    for side in [old, new] {
-                        if let Some(t) = i.type_.as_deref().and_then(|t| side.interface(t)) {
-                            set.insert(format!("interfaces/{}.html", t.slug));
-                            for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
-                                set.insert(format!(
-                                    "components/{}.html",
-                                    side.components[r.component].slug
-                                ));
-                            }
-                        }
-                    }
-                }
-            }
+        let comp = new.components.iter().find(|c| &c.source == src)?;
+        let (old_sig, old_peers) = before.changed.get(src)?;
+        set.insert(format!("components/{}.html", comp.slug));
+        if *old_sig != link_signature(comp) {
+            // Its ports or name changed: every page listing them, before and after.
+            set.extend(old_peers.iter().cloned());
+            peer_pages(new, comp, &mut set);
         }
     }
     Some(set)
@@ -176,28 +228,12 @@ impl Workspace {
         {
             warnings.entry(d.file.clone()).or_default().push(d.clone());
         }
-        let profiles = loaded
-            .catalog
-            .components
-            .iter()
-            .map(|c| {
-                (
-                    c.source.clone(),
-                    LoadedProfile {
-                        source: c.source.clone(),
-                        format: c.format,
-                        profile: c.profile.clone(),
-                    },
-                )
-            })
-            .collect();
         let mut catalog = loaded.catalog;
         add_check_diagnostics(&mut catalog);
         let (files, _) = render(opts, &catalog, &|_| true)?;
         Ok(Workspace {
             opts: opts.clone(),
             input_root,
-            profiles,
             catalog,
             files,
             warnings,
@@ -237,56 +273,86 @@ impl Workspace {
         &mut self,
         changed: &[PathBuf],
     ) -> std::result::Result<UpdateReport, UpdateError> {
+        // Read the changed files first: an error leaves everything as it was.
         let mut errors = Vec::new();
-        let mut new_profiles = self.profiles.clone();
-        let mut new_warnings = self.warnings.clone();
-        let mut touched: Vec<String> = Vec::new();
+        let mut replaced: Vec<(String, Option<(LoadedProfile, Vec<Diagnostic>)>)> = Vec::new();
         let load = &self.opts.load;
         for path in changed {
             let Some(rel) = self.rel(path) else { continue };
-            if !path.exists() {
-                if new_profiles.remove(&rel).is_some() {
-                    touched.push(rel.clone());
-                }
-                new_warnings.remove(&rel);
-                continue;
-            }
-            let Ok(bytes) = std::fs::read(path) else {
-                continue;
+            let bytes = if path.exists() {
+                std::fs::read(path).ok()
+            } else {
+                None
             };
-            let Some(format) = walk::detect(path, &bytes) else {
-                if new_profiles.remove(&rel).is_some() {
-                    touched.push(rel.clone());
-                    new_warnings.remove(&rel);
+            let format = bytes.as_deref().and_then(|b| walk::detect(path, b));
+            match (bytes, format) {
+                (Some(bytes), Some(format)) => {
+                    match parse::parse(format, &bytes, &rel, &load.limits) {
+                        Ok(p) => replaced.push((
+                            rel.clone(),
+                            Some((
+                                LoadedProfile {
+                                    source: rel,
+                                    format,
+                                    profile: p.profile,
+                                },
+                                p.diagnostics,
+                            )),
+                        )),
+                        Err(d) => errors.push(d),
+                    }
                 }
-                continue;
-            };
-            match parse::parse(format, &bytes, &rel, &load.limits) {
-                Ok(p) => {
-                    new_profiles.insert(
-                        rel.clone(),
-                        LoadedProfile {
-                            source: rel.clone(),
-                            format,
-                            profile: p.profile,
-                        },
-                    );
-                    new_warnings.insert(rel.clone(), p.diagnostics);
-                    touched.push(rel);
+                // Deleted, or no longer a profile.
+                _ => {
+                    if self.catalog.components.iter().any(|c| c.source == rel) {
+                        replaced.push((rel, None));
+                    }
                 }
-                Err(d) => errors.push(d),
             }
         }
         if !errors.is_empty() {
             return Err(UpdateError::Profiles(errors));
         }
-        if touched.is_empty() {
+        if replaced.is_empty() {
             return Ok(UpdateReport::default());
         }
-        let diags: Vec<Diagnostic> = new_warnings.values().flatten().cloned().collect();
-        let mut catalog = Catalog::build(new_profiles.values().cloned().collect(), diags);
+        let touched: Vec<String> = replaced.iter().map(|(r, _)| r.clone()).collect();
+        let before = Before::of(&self.catalog, &touched);
+
+        // Move the profiles out of the old catalogue (no copies), apply the changes, rebuild.
+        let old = std::mem::replace(&mut self.catalog, Catalog::build(Vec::new(), Vec::new()));
+        let mut profiles: BTreeMap<String, LoadedProfile> = old
+            .components
+            .into_iter()
+            .map(|c| {
+                (
+                    c.source.clone(),
+                    LoadedProfile {
+                        source: c.source,
+                        format: c.format,
+                        profile: c.profile,
+                    },
+                )
+            })
+            .collect();
+        for (rel, new) in replaced {
+            match new {
+                Some((p, diags)) => {
+                    profiles.insert(rel.clone(), p);
+                    self.warnings.insert(rel, diags);
+                }
+                None => {
+                    profiles.remove(&rel);
+                    self.warnings.remove(&rel);
+                }
+            }
+        }
+        let diags: Vec<Diagnostic> = self.warnings.values().flatten().cloned().collect();
+        let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
         add_check_diagnostics(&mut catalog);
-        let plan = affected(&self.catalog, &catalog, &touched);
+        self.catalog = catalog;
+
+        let plan = affected(&before, &self.catalog, &touched);
         let full = plan.is_none();
         let wanted = |p: &str| match &plan {
             None => true,
@@ -294,15 +360,12 @@ impl Workspace {
                 set.contains(p) || p.starts_with("categories/") || p.starts_with("vendors/")
             }
         };
-        let (written, all_paths) = render(&self.opts, &catalog, &wanted)
+        let (written, all_paths) = render(&self.opts, &self.catalog, &wanted)
             .map_err(|e| UpdateError::Other(format!("{e:#}")))?;
         let rendered = written.len();
         let keep: BTreeSet<&String> = all_paths.iter().collect();
         self.files.retain(|k, _| keep.contains(k));
         self.files.extend(written);
-        self.profiles = new_profiles;
-        self.warnings = new_warnings;
-        self.catalog = catalog;
         Ok(UpdateReport { rendered, full })
     }
 

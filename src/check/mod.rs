@@ -23,10 +23,11 @@ use std::collections::BTreeMap;
 /// Runs every rule over every component and over the catalogue. The catalogue's own
 /// diagnostics (loader codes, RTC010 duplicate ids) are not repeated here.
 pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
+    use rayon::prelude::*;
     let mut out: Vec<Diagnostic> = catalog
         .components
-        .iter()
-        .flat_map(rules::component)
+        .par_iter()
+        .flat_map_iter(rules::component)
         .collect();
     out.extend(rules::catalogue(catalog));
     sort(&mut out);
