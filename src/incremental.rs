@@ -119,6 +119,9 @@ fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
     }
 }
 
+/// A changed profile read again, with its reader warnings.
+type Reread = (LoadedProfile, Vec<Diagnostic>);
+
 /// What the old site looked like, taken before the old catalogue is consumed.
 struct Before {
     slugs: Vec<(String, String)>,
@@ -275,7 +278,7 @@ impl Workspace {
     ) -> std::result::Result<UpdateReport, UpdateError> {
         // Read the changed files first: an error leaves everything as it was.
         let mut errors = Vec::new();
-        let mut replaced: Vec<(String, Option<(LoadedProfile, Vec<Diagnostic>)>)> = Vec::new();
+        let mut replaced: Vec<(String, Option<Reread>)> = Vec::new();
         let load = &self.opts.load;
         for path in changed {
             let Some(rel) = self.rel(path) else { continue };
