@@ -593,16 +593,10 @@ fn iface_ref_rows(cat: &Catalog, refs: &[crate::catalog::InterfaceRef]) -> Vec<V
 fn list_facts(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
     let mut f = Vec::new();
     if !spellings.is_empty() {
-        f.push(Fact {
-            label: lang.t("fact_spellings").into(),
-            value: spellings.join(", "),
-        });
+        f.push(Fact::new(lang.t("fact_spellings"), spellings.join(", ")));
     }
     if !idl.is_empty() {
-        f.push(Fact {
-            label: lang.t("fact_idl_files").into(),
-            value: idl.join("\n"),
-        });
+        f.push(Fact::new(lang.t("fact_idl_files"), idl.join("\n")));
     }
     if !f.is_empty() {
         facts_table(out, lang, &f);
