@@ -21,6 +21,9 @@
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
 use super::facts::{self, Fact};
+use super::text::{
+    category_name, component_cols, facts_cell, facts_table, names_facts, peers_cell, Markup,
+};
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Component, InterfaceRef, PortRef};
 use crate::i18n::Lang;
@@ -29,8 +32,8 @@ use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 
-/// How many peers a "connects to" cell lists before pointing at the type page.
-pub const PEER_CAP: usize = 12;
+/// At most this many "connects to" peers are listed per port (shared with Markdown).
+pub use super::text::PEER_CAP;
 
 /// Writes the `.dox` pages and the `Doxyfile`.
 pub struct DoxygenRenderer;
@@ -139,6 +142,24 @@ fn opt(s: &Option<String>) -> String {
     model::non_empty(s).map(text).unwrap_or_default()
 }
 
+/// Doxygen syntax for the shared [`super::text`] helpers.
+struct Dox;
+
+impl Markup for Dox {
+    fn esc(s: &str) -> String {
+        text(s)
+    }
+    fn link(text_: &str, target: &str) -> String {
+        refer(target, text_)
+    }
+    fn bold(escaped: &str) -> String {
+        format!("<b>{escaped}</b>")
+    }
+    fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
+        table(out, headers, rows)
+    }
+}
+
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     d!(out, "<table>");
     let head: String = headers
@@ -152,22 +173,6 @@ fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     }
     d!(out, "</table>");
     d!(out);
-}
-
-fn facts_table(out: &mut String, lang: Lang, facts: &[Fact]) {
-    let rows: Vec<Vec<String>> = facts
-        .iter()
-        .map(|f| vec![text(&f.label), text(&f.value)])
-        .collect();
-    table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
-}
-
-fn facts_cell(facts: &[Fact]) -> String {
-    facts
-        .iter()
-        .map(|f| format!("<b>{}</b>: {}", text(&f.label), text(&f.value)))
-        .collect::<Vec<_>>()
-        .join("<br>")
 }
 
 fn section(out: &mut String, page: &str, anchor: &str, heading: &str) {
@@ -189,37 +194,12 @@ fn paragraphs(out: &mut String, s: &str) {
     d!(out);
 }
 
-fn category_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("fact_uncategorized").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
-fn peers_cell(items: Vec<(String, String)>, rest: Option<String>, lang: Lang) -> String {
-    let total = items.len();
-    let mut parts: Vec<String> = items
-        .into_iter()
-        .take(PEER_CAP)
-        .map(|(l, t)| refer(&l, &t))
-        .collect();
-    if total > PEER_CAP {
-        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
-        parts.push(match rest {
-            Some(l) => refer(&l, &more),
-            None => text(&more),
-        });
-    }
-    parts.join("<br>")
-}
-
 fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
     let pc = &cat.components[r.component];
     let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
     (
-        anchor_label(pc, &pc.anchors.data_ports[r.port]),
         format!("{} / {pn}", pc.profile.name()),
+        anchor_label(pc, &pc.anchors.data_ports[r.port]),
     )
 }
 
@@ -228,12 +208,12 @@ fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
     let sp = &pc.profile.service_ports[r.port];
     let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
     (
-        anchor_label(pc, &pc.anchors.interfaces[r.port][r.interface]),
         format!(
             "{} / {} / {iname}",
             pc.profile.name(),
             model::non_empty(&sp.name).unwrap_or("")
         ),
+        anchor_label(pc, &pc.anchors.interfaces[r.port][r.interface]),
     )
 }
 
@@ -251,13 +231,13 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
     }
 
     section(&mut out, &page, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table(&mut out, lang, &facts::basic_info(c, lang));
+    facts_table::<Dox>(&mut out, lang, &facts::basic_info(c, lang));
 
     if let Some(doc) = &p.basic_info.doc {
         let f = facts::document(doc, lang);
         if !f.is_empty() {
             section(&mut out, &page, "sec-document", lang.t("fact_document"));
-            facts_table(&mut out, lang, &f);
+            facts_table::<Dox>(&mut out, lang, &f);
         }
     }
 
@@ -297,8 +277,8 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
                     dir,
                     ty,
                     desc,
-                    facts_cell(&facts::data_port(port, lang)),
-                    peers_cell(
+                    facts_cell::<Dox>(&facts::data_port(port, lang)),
+                    peers_cell::<Dox>(
                         peers,
                         dt.map(|t| format!("rtc_type_{}", label(&t.slug))),
                         lang,
@@ -337,7 +317,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
             d!(out);
             let pf = facts::service_port(sp, lang);
             if !pf.is_empty() {
-                facts_table(&mut out, lang, &pf);
+                facts_table::<Dox>(&mut out, lang, &pf);
             }
             if sp.interfaces.is_empty() {
                 continue;
@@ -376,8 +356,8 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
                         dir,
                         ty,
                         desc,
-                        facts_cell(&facts::service_interface(i, lang)),
-                        peers_cell(
+                        facts_cell::<Dox>(&facts::service_interface(i, lang)),
+                        peers_cell::<Dox>(
                             peers,
                             it.map(|t| format!("rtc_if_{}", label(&t.slug))),
                             lang,
@@ -428,7 +408,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
                         .as_ref()
                         .map(|d| opt(&d.description))
                         .unwrap_or_default(),
-                    facts_cell(&facts::configuration(cf, lang)),
+                    facts_cell::<Dox>(&facts::configuration(cf, lang)),
                 ]
             })
             .collect();
@@ -507,7 +487,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
         if !lf.is_empty() || !targets.is_empty() {
             section(&mut out, &page, "sec-language", lang.t("language"));
             if !lf.is_empty() {
-                facts_table(&mut out, lang, &lf);
+                facts_table::<Dox>(&mut out, lang, &lf);
             }
             for (ti, tf) in targets.iter().enumerate() {
                 d!(
@@ -516,7 +496,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
                     text(lang.t("fact_target")),
                     ti + 1
                 );
-                facts_table(&mut out, lang, tf);
+                facts_table::<Dox>(&mut out, lang, tf);
             }
         }
     }
@@ -550,7 +530,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
     let extras = facts::extras(p);
     if !extras.is_empty() {
         section(&mut out, &page, "sec-extra", lang.t("extra"));
-        facts_table(&mut out, lang, &extras);
+        facts_table::<Dox>(&mut out, lang, &extras);
     }
     out
 }
@@ -594,19 +574,6 @@ fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
         .collect()
 }
 
-fn names_facts(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
-    let mut f = Vec::new();
-    if !spellings.is_empty() {
-        f.push(Fact::new(lang.t("fact_spellings"), spellings.join(", ")));
-    }
-    if !idl.is_empty() {
-        f.push(Fact::new(lang.t("fact_idl_files"), idl.join("\n")));
-    }
-    if !f.is_empty() {
-        facts_table(out, lang, &f);
-    }
-}
-
 fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     let t = &cat.data_types[ti];
     let page = format!("rtc_type_{}", label(&t.slug));
@@ -615,7 +582,7 @@ fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index › \\ref rtc_types</p>");
     d!(out);
-    names_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-producers", "producers", &t.producers),
@@ -642,7 +609,7 @@ fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
         d!(out, "<p><b>{}</b></p>", text(lang.t("not_provided")));
         d!(out);
     }
-    names_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-providers", "providers", &t.providers),
@@ -672,15 +639,6 @@ fn component_rows(cat: &Catalog, members: &[usize], command: &str) -> Vec<Vec<St
             ]
         })
         .collect()
-}
-
-fn component_cols(lang: Lang) -> [&'static str; 4] {
-    [
-        lang.t("name"),
-        lang.t("description"),
-        lang.t("vendor"),
-        lang.t("version"),
-    ]
 }
 
 fn cat_label(slug: &str) -> String {

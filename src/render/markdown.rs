@@ -13,17 +13,20 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::facts::{self, Fact};
+use super::facts;
+use super::text::{
+    category_name, component_cols, facts_cell, facts_table, names_facts, peers_cell, Markup,
+};
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component};
+use crate::catalog::{Catalog, Component, InterfaceRef, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self, ActionKind, Direction, PortDirection};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 
-/// How many peers a "connects to" cell lists before linking to the type page for the rest.
-pub const PEER_CAP: usize = 12;
+/// At most this many "connects to" peers are listed per port (shared with Doxygen).
+pub use super::text::PEER_CAP;
 
 /// Writes the Markdown pages.
 pub struct MarkdownRenderer;
@@ -133,6 +136,24 @@ fn link(text: &str, href: &str) -> String {
     format!("[{}]({href})", inline(text))
 }
 
+/// Markdown syntax for the shared [`super::text`] helpers.
+struct Md;
+
+impl Markup for Md {
+    fn esc(s: &str) -> String {
+        inline(s)
+    }
+    fn link(text: &str, target: &str) -> String {
+        link(text, target)
+    }
+    fn bold(escaped: &str) -> String {
+        format!("**{escaped}**")
+    }
+    fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
+        table(out, headers, rows)
+    }
+}
+
 /// A GFM table; cells are already escaped. An empty cell becomes a space.
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     let head: Vec<String> = headers.iter().map(|h| inline(h)).collect();
@@ -146,24 +167,6 @@ fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
         w!(out, "| {} |", cells.join(" | "));
     }
     w!(out);
-}
-
-/// Facts as a two-column table (label, value).
-fn facts_table(out: &mut String, lang: Lang, facts: &[Fact]) {
-    let rows: Vec<Vec<String>> = facts
-        .iter()
-        .map(|f| vec![inline(&f.label), inline(&f.value)])
-        .collect();
-    table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
-}
-
-/// Facts inside one cell: `**label**: value<br>…`.
-fn facts_cell(facts: &[Fact]) -> String {
-    facts
-        .iter()
-        .map(|f| format!("**{}**: {}", inline(&f.label), inline(&f.value)))
-        .collect::<Vec<_>>()
-        .join("<br>")
 }
 
 /// A section heading with a stable explicit anchor before it.
@@ -182,14 +185,6 @@ fn component_href(c: &Component) -> String {
     format!("../components/{}.md", c.slug)
 }
 
-fn category_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("fact_uncategorized").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
 /// The category facet slug of a component (every component is in exactly one facet).
 fn category_slugs(cat: &Catalog) -> Vec<usize> {
     let mut of = vec![0; cat.components.len()];
@@ -201,22 +196,33 @@ fn category_slugs(cat: &Catalog) -> Vec<usize> {
     of
 }
 
-/// Links to up to [`PEER_CAP`] peers, then "… +N more" pointing at `rest_href`.
-fn peers_cell(items: Vec<(String, String)>, rest_href: Option<String>, lang: Lang) -> String {
-    let total = items.len();
-    let mut parts: Vec<String> = items
-        .into_iter()
-        .take(PEER_CAP)
-        .map(|(t, h)| link(&t, &h))
-        .collect();
-    if total > PEER_CAP {
-        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
-        parts.push(match rest_href {
-            Some(h) => link(&more, &h),
-            None => inline(&more),
-        });
-    }
-    parts.join("<br>")
+/// A data port peer as (text, link).
+fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+    let pc = &cat.components[r.component];
+    let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
+    (
+        format!("{} / {pn}", pc.profile.name()),
+        format!("{}#{}", component_href(pc), pc.anchors.data_ports[r.port]),
+    )
+}
+
+/// A service interface peer as (text, link).
+fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+    let pc = &cat.components[r.component];
+    let sp = &pc.profile.service_ports[r.port];
+    let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
+    (
+        format!(
+            "{} / {} / {iname}",
+            pc.profile.name(),
+            model::non_empty(&sp.name).unwrap_or("")
+        ),
+        format!(
+            "{}#{}",
+            component_href(pc),
+            pc.anchors.interfaces[r.port][r.interface]
+        ),
+    )
 }
 
 fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: Lang) -> String {
@@ -242,13 +248,13 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
     }
 
     heading(&mut out, 2, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table(&mut out, lang, &facts::basic_info(c, lang));
+    facts_table::<Md>(&mut out, lang, &facts::basic_info(c, lang));
 
     if let Some(doc) = &p.basic_info.doc {
         let f = facts::document(doc, lang);
         if !f.is_empty() {
             heading(&mut out, 2, "sec-document", lang.t("fact_document"));
-            facts_table(&mut out, lang, &f);
+            facts_table::<Md>(&mut out, lang, &f);
         }
     }
 
@@ -276,15 +282,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
                 let peers: Vec<(String, String)> = cat
                     .data_port_peers(ci, pi)
                     .iter()
-                    .map(|r| {
-                        let pc = &cat.components[r.component];
-                        let pn =
-                            model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
-                        (
-                            format!("{} / {pn}", pc.profile.name()),
-                            format!("{}#{}", component_href(pc), pc.anchors.data_ports[r.port]),
-                        )
-                    })
+                    .map(|r| port_peer(cat, r))
                     .collect();
                 let rest = port
                     .type_
@@ -300,8 +298,8 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
                     dir,
                     ty,
                     desc,
-                    facts_cell(&facts::data_port(port, lang)),
-                    peers_cell(peers, rest, lang),
+                    facts_cell::<Md>(&facts::data_port(port, lang)),
+                    peers_cell::<Md>(peers, rest, lang),
                 ]
             })
             .collect();
@@ -330,7 +328,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
             );
             let pf = facts::service_port(sp, lang);
             if !pf.is_empty() {
-                facts_table(&mut out, lang, &pf);
+                facts_table::<Md>(&mut out, lang, &pf);
             }
             if sp.interfaces.is_empty() {
                 continue;
@@ -357,24 +355,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
                     let peers: Vec<(String, String)> = cat
                         .interface_peers(ci, si, ii)
                         .iter()
-                        .map(|r| {
-                            let pc = &cat.components[r.component];
-                            let sp = &pc.profile.service_ports[r.port];
-                            let iname =
-                                model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
-                            (
-                                format!(
-                                    "{} / {} / {iname}",
-                                    pc.profile.name(),
-                                    model::non_empty(&sp.name).unwrap_or("")
-                                ),
-                                format!(
-                                    "{}#{}",
-                                    component_href(pc),
-                                    pc.anchors.interfaces[r.port][r.interface]
-                                ),
-                            )
-                        })
+                        .map(|r| iface_peer(cat, r))
                         .collect();
                     let rest = i
                         .type_
@@ -390,8 +371,8 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
                         dir,
                         ty,
                         desc,
-                        facts_cell(&facts::service_interface(i, lang)),
-                        peers_cell(peers, rest, lang),
+                        facts_cell::<Md>(&facts::service_interface(i, lang)),
+                        peers_cell::<Md>(peers, rest, lang),
                     ]
                 })
                 .collect();
@@ -433,7 +414,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
                         .as_ref()
                         .map(|d| opt(&d.description))
                         .unwrap_or_default(),
-                    facts_cell(&facts::configuration(cf, lang)),
+                    facts_cell::<Md>(&facts::configuration(cf, lang)),
                 ]
             })
             .collect();
@@ -501,7 +482,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
         if !lf.is_empty() || !l.targets.is_empty() {
             heading(&mut out, 2, "sec-language", lang.t("language"));
             if !lf.is_empty() {
-                facts_table(&mut out, lang, &lf);
+                facts_table::<Md>(&mut out, lang, &lf);
             }
             for (ti, t) in l.targets.iter().enumerate() {
                 let tf = facts::target(t, lang);
@@ -510,7 +491,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
                 }
                 w!(out, "**{} {}**", inline(lang.t("fact_target")), ti + 1);
                 w!(out);
-                facts_table(&mut out, lang, &tf);
+                facts_table::<Md>(&mut out, lang, &tf);
             }
         }
     }
@@ -542,12 +523,12 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
     let extras = facts::extras(p);
     if !extras.is_empty() {
         heading(&mut out, 2, "sec-extra", lang.t("extra"));
-        facts_table(&mut out, lang, &extras);
+        facts_table::<Md>(&mut out, lang, &extras);
     }
     out
 }
 
-fn port_ref_rows(cat: &Catalog, refs: &[crate::catalog::PortRef]) -> Vec<Vec<String>> {
+fn port_ref_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
     refs.iter()
         .map(|r| {
             let c = &cat.components[r.component];
@@ -564,7 +545,7 @@ fn port_ref_rows(cat: &Catalog, refs: &[crate::catalog::PortRef]) -> Vec<Vec<Str
         .collect()
 }
 
-fn iface_ref_rows(cat: &Catalog, refs: &[crate::catalog::InterfaceRef]) -> Vec<Vec<String>> {
+fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
     refs.iter()
         .map(|r| {
             let c = &cat.components[r.component];
@@ -590,19 +571,6 @@ fn iface_ref_rows(cat: &Catalog, refs: &[crate::catalog::InterfaceRef]) -> Vec<V
         .collect()
 }
 
-fn list_facts(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
-    let mut f = Vec::new();
-    if !spellings.is_empty() {
-        f.push(Fact::new(lang.t("fact_spellings"), spellings.join(", ")));
-    }
-    if !idl.is_empty() {
-        f.push(Fact::new(lang.t("fact_idl_files"), idl.join("\n")));
-    }
-    if !f.is_empty() {
-        facts_table(out, lang, &f);
-    }
-}
-
 fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
     let t = &cat.data_types[ti];
     let mut out = String::new();
@@ -615,7 +583,7 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
         link(lang.t("data_types"), "../types.md")
     );
     w!(out);
-    list_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-producers", "producers", &t.producers),
@@ -647,7 +615,7 @@ fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
         w!(out, "> **{}**", inline(lang.t("not_provided")));
         w!(out);
     }
-    list_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-providers", "providers", &t.providers),
@@ -680,15 +648,6 @@ fn component_rows(cat: &Catalog, members: &[usize], prefix: &str) -> Vec<Vec<Str
             ]
         })
         .collect()
-}
-
-fn component_cols(lang: Lang) -> [&'static str; 4] {
-    [
-        lang.t("name"),
-        lang.t("description"),
-        lang.t("vendor"),
-        lang.t("version"),
-    ]
 }
 
 fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
