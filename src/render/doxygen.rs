@@ -20,14 +20,11 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::facts::{self, Fact};
-use super::text::{
-    category_name, component_cols, facts_cell, facts_table, names_facts, peers_cell, Markup,
-};
+use super::text::{category_name, component_cols, component_sections, names_facts, Markup};
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, InterfaceRef, PortRef};
+use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
 use crate::i18n::Lang;
-use crate::model::{self, ActionKind, Direction, PortDirection};
+use crate::model::{self};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -158,6 +155,51 @@ impl Markup for Dox {
     fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
         table(out, headers, rows)
     }
+    fn code(s: &str) -> String {
+        format!("<tt>{s}</tt>")
+    }
+    fn paragraph(out: &mut String, escaped: &str) {
+        d!(out, "<p>{escaped}</p>");
+    }
+    fn list(out: &mut String, items: &[&str]) {
+        d!(out, "<ul>");
+        for l in items {
+            d!(out, "<li>{}</li>", text(l));
+        }
+        d!(out, "</ul>");
+        d!(out);
+    }
+    fn heading(out: &mut String, c: &Component, level: usize, anchor: &str, text: &str) {
+        let command = if level <= 2 { "section" } else { "subsection" };
+        d!(
+            out,
+            "\\{command} {} {}",
+            anchor_label(c, anchor),
+            title(text)
+        );
+        d!(out);
+    }
+    fn anchored(c: &Component, anchor: &str, escaped: &str) -> String {
+        format!("\\anchor {} {escaped}", anchor_label(c, anchor))
+    }
+    fn type_ref(t: &DataType) -> String {
+        format!("\\ref {}", Self::type_target(t))
+    }
+    fn type_target(t: &DataType) -> String {
+        format!("rtc_type_{}", label(&t.slug))
+    }
+    fn iface_ref(t: &InterfaceType) -> String {
+        format!("\\ref {}", Self::iface_target(t))
+    }
+    fn iface_target(t: &InterfaceType) -> String {
+        format!("rtc_if_{}", label(&t.slug))
+    }
+    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+        port_peer(cat, r)
+    }
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+        iface_peer(cat, r)
+    }
 }
 
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
@@ -230,308 +272,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
         paragraphs(&mut out, desc);
     }
 
-    section(&mut out, &page, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table::<Dox>(&mut out, lang, &facts::basic_info(c, lang));
-
-    if let Some(doc) = &p.basic_info.doc {
-        let f = facts::document(doc, lang);
-        if !f.is_empty() {
-            section(&mut out, &page, "sec-document", lang.t("fact_document"));
-            facts_table::<Dox>(&mut out, lang, &f);
-        }
-    }
-
-    if !p.data_ports.is_empty() {
-        section(&mut out, &page, "sec-data-ports", lang.t("data_ports"));
-        let rows: Vec<Vec<String>> = p
-            .data_ports
-            .iter()
-            .enumerate()
-            .map(|(pi, port)| {
-                let dir = match port.direction() {
-                    Some(PortDirection::In) => text(lang.t("in")),
-                    Some(PortDirection::Out) => text(lang.t("out")),
-                    _ => opt(&port.port_type),
-                };
-                let dt = port.type_.as_deref().and_then(|t| cat.data_type(t));
-                let ty = match dt {
-                    Some(t) => format!("\\ref rtc_type_{}", label(&t.slug)),
-                    None => opt(&port.type_),
-                };
-                let desc = port
-                    .doc
-                    .as_ref()
-                    .map(|d| opt(&d.description))
-                    .unwrap_or_default();
-                let peers = cat
-                    .data_port_peers(ci, pi)
-                    .iter()
-                    .map(|r| port_peer(cat, r))
-                    .collect();
-                vec![
-                    format!(
-                        "\\anchor {} {}",
-                        anchor_label(c, &c.anchors.data_ports[pi]),
-                        opt(&port.name)
-                    ),
-                    dir,
-                    ty,
-                    desc,
-                    facts_cell::<Dox>(&facts::data_port(port, lang)),
-                    peers_cell::<Dox>(
-                        peers,
-                        dt.map(|t| format!("rtc_type_{}", label(&t.slug))),
-                        lang,
-                    ),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("direction"),
-                lang.t("data_type"),
-                lang.t("description"),
-                lang.t("fact_details"),
-                lang.t("connects_to"),
-            ],
-            &rows,
-        );
-    }
-
-    if !p.service_ports.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-service-ports",
-            lang.t("service_ports"),
-        );
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            d!(
-                out,
-                "\\subsection {} {}",
-                anchor_label(c, &c.anchors.service_ports[si]),
-                title(model::non_empty(&sp.name).unwrap_or("?"))
-            );
-            d!(out);
-            let pf = facts::service_port(sp, lang);
-            if !pf.is_empty() {
-                facts_table::<Dox>(&mut out, lang, &pf);
-            }
-            if sp.interfaces.is_empty() {
-                continue;
-            }
-            let rows: Vec<Vec<String>> = sp
-                .interfaces
-                .iter()
-                .enumerate()
-                .map(|(ii, i)| {
-                    let dir = match i.direction_kind() {
-                        Some(Direction::Provided) => text(lang.t("provided")),
-                        Some(Direction::Required) => text(lang.t("required")),
-                        None => opt(&i.direction),
-                    };
-                    let it = i.type_.as_deref().and_then(|t| cat.interface(t));
-                    let ty = match it {
-                        Some(t) => format!("\\ref rtc_if_{}", label(&t.slug)),
-                        None => opt(&i.type_),
-                    };
-                    let desc = i
-                        .doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default();
-                    let peers = cat
-                        .interface_peers(ci, si, ii)
-                        .iter()
-                        .map(|r| iface_peer(cat, r))
-                        .collect();
-                    vec![
-                        format!(
-                            "\\anchor {} {}",
-                            anchor_label(c, &c.anchors.interfaces[si][ii]),
-                            opt(&i.name)
-                        ),
-                        dir,
-                        ty,
-                        desc,
-                        facts_cell::<Dox>(&facts::service_interface(i, lang)),
-                        peers_cell::<Dox>(
-                            peers,
-                            it.map(|t| format!("rtc_if_{}", label(&t.slug))),
-                            lang,
-                        ),
-                    ]
-                })
-                .collect();
-            table(
-                &mut out,
-                &[
-                    lang.t("interface"),
-                    lang.t("direction"),
-                    lang.t("type"),
-                    lang.t("description"),
-                    lang.t("fact_details"),
-                    lang.t("connects_to"),
-                ],
-                &rows,
-            );
-        }
-    }
-
-    let confs = p.configurations();
-    if !confs.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-configuration",
-            lang.t("configuration"),
-        );
-        let rows: Vec<Vec<String>> = confs
-            .iter()
-            .enumerate()
-            .map(|(k, cf)| {
-                vec![
-                    format!(
-                        "\\anchor {} {}",
-                        anchor_label(c, &c.anchors.configurations[k]),
-                        opt(&cf.name)
-                    ),
-                    opt(&cf.type_),
-                    opt(&cf.default_value),
-                    opt(&cf.unit),
-                    facts::configuration_constraint(cf)
-                        .map(|s| text(&s))
-                        .unwrap_or_default(),
-                    cf.doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default(),
-                    facts_cell::<Dox>(&facts::configuration(cf, lang)),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("type"),
-                lang.t("default_value"),
-                lang.t("unit"),
-                lang.t("constraint"),
-                lang.t("description"),
-                lang.t("fact_details"),
-            ],
-            &rows,
-        );
-    }
-
-    section(&mut out, &page, "sec-lifecycle", lang.t("actions"));
-    let rows: Vec<Vec<String>> = ActionKind::ALL
-        .iter()
-        .map(|&k| {
-            let a = p.action(k);
-            let (desc, pre, post) = facts::action_description(a);
-            let implemented = match a {
-                Some(a) if a.is_implemented() => lang.t("yes"),
-                _ => lang.t("no"),
-            };
-            vec![
-                format!("<tt>{}</tt>", k.callback_name()),
-                text(implemented),
-                desc.map(text).unwrap_or_default(),
-                pre.map(text).unwrap_or_default(),
-                post.map(text).unwrap_or_default(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("fact_callback"),
-            lang.t("implemented"),
-            lang.t("description"),
-            lang.t("pre_condition"),
-            lang.t("post_condition"),
-        ],
-        &rows,
-    );
-
-    if !p.parameters.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-system-parameters",
-            lang.t("parameters"),
-        );
-        let rows: Vec<Vec<String>> = p
-            .parameters
-            .iter()
-            .map(|par| {
-                let (n, v) = facts::parameter(par);
-                vec![text(n), text(v)]
-            })
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("default_value")], &rows);
-    }
-
-    if let Some(l) = &p.language {
-        let lf = facts::language(l, lang);
-        let targets: Vec<Vec<Fact>> = l
-            .targets
-            .iter()
-            .map(|t| facts::target(t, lang))
-            .filter(|f| !f.is_empty())
-            .collect();
-        if !lf.is_empty() || !targets.is_empty() {
-            section(&mut out, &page, "sec-language", lang.t("language"));
-            if !lf.is_empty() {
-                facts_table::<Dox>(&mut out, lang, &lf);
-            }
-            for (ti, tf) in targets.iter().enumerate() {
-                d!(
-                    out,
-                    "<p><b>{} {}</b></p>",
-                    text(lang.t("fact_target")),
-                    ti + 1
-                );
-                facts_table::<Dox>(&mut out, lang, tf);
-            }
-        }
-    }
-
-    let props = facts::component_properties(p, lang);
-    if !props.is_empty() {
-        section(&mut out, &page, "sec-properties", lang.t("properties"));
-        let rows: Vec<Vec<String>> = props
-            .iter()
-            .map(|f| vec![text(&f.label), text(&f.value)])
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("fact_value")], &rows);
-    }
-
-    let logs = facts::version_up_logs(p);
-    if !logs.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-version-history",
-            lang.t("version_up_logs"),
-        );
-        d!(out, "<ul>");
-        for l in logs {
-            d!(out, "<li>{}</li>", text(l));
-        }
-        d!(out, "</ul>");
-        d!(out);
-    }
-
-    let extras = facts::extras(p);
-    if !extras.is_empty() {
-        section(&mut out, &page, "sec-extra", lang.t("extra"));
-        facts_table::<Dox>(&mut out, lang, &extras);
-    }
+    component_sections::<Dox>(&mut out, cat, ci, lang);
     out
 }
 

@@ -13,14 +13,11 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::facts;
-use super::text::{
-    category_name, component_cols, facts_cell, facts_table, names_facts, peers_cell, Markup,
-};
+use super::text::{category_name, component_cols, component_sections, names_facts, Markup};
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, InterfaceRef, PortRef};
+use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
 use crate::i18n::Lang;
-use crate::model::{self, ActionKind, Direction, PortDirection};
+use crate::model::{self};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -152,6 +149,43 @@ impl Markup for Md {
     fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
         table(out, headers, rows)
     }
+    fn code(s: &str) -> String {
+        format!("`{s}`")
+    }
+    fn paragraph(out: &mut String, escaped: &str) {
+        w!(out, "{escaped}");
+        w!(out);
+    }
+    fn list(out: &mut String, items: &[&str]) {
+        for l in items {
+            w!(out, "- {}", inline(l));
+        }
+        w!(out);
+    }
+    fn heading(out: &mut String, _: &Component, level: usize, anchor: &str, text: &str) {
+        heading(out, level, anchor, text)
+    }
+    fn anchored(_: &Component, anchor: &str, escaped: &str) -> String {
+        format!("<a id=\"{anchor}\"></a>{escaped}")
+    }
+    fn type_ref(t: &DataType) -> String {
+        link(&t.name, &Self::type_target(t))
+    }
+    fn type_target(t: &DataType) -> String {
+        format!("../types/{}.md", t.slug)
+    }
+    fn iface_ref(t: &InterfaceType) -> String {
+        link(&t.name, &Self::iface_target(t))
+    }
+    fn iface_target(t: &InterfaceType) -> String {
+        format!("../interfaces/{}.md", t.slug)
+    }
+    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+        port_peer(cat, r)
+    }
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+        iface_peer(cat, r)
+    }
 }
 
 /// A GFM table; cells are already escaped. An empty cell becomes a space.
@@ -247,284 +281,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
         w!(out);
     }
 
-    heading(&mut out, 2, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table::<Md>(&mut out, lang, &facts::basic_info(c, lang));
-
-    if let Some(doc) = &p.basic_info.doc {
-        let f = facts::document(doc, lang);
-        if !f.is_empty() {
-            heading(&mut out, 2, "sec-document", lang.t("fact_document"));
-            facts_table::<Md>(&mut out, lang, &f);
-        }
-    }
-
-    if !p.data_ports.is_empty() {
-        heading(&mut out, 2, "sec-data-ports", lang.t("data_ports"));
-        let rows: Vec<Vec<String>> = p
-            .data_ports
-            .iter()
-            .enumerate()
-            .map(|(pi, port)| {
-                let dir = match port.direction() {
-                    Some(PortDirection::In) => lang.t("in").to_string(),
-                    Some(PortDirection::Out) => lang.t("out").to_string(),
-                    _ => opt(&port.port_type),
-                };
-                let ty = match port.type_.as_deref().and_then(|t| cat.data_type(t)) {
-                    Some(t) => link(&t.name, &format!("../types/{}.md", t.slug)),
-                    None => opt(&port.type_),
-                };
-                let desc = port
-                    .doc
-                    .as_ref()
-                    .map(|d| opt(&d.description))
-                    .unwrap_or_default();
-                let peers: Vec<(String, String)> = cat
-                    .data_port_peers(ci, pi)
-                    .iter()
-                    .map(|r| port_peer(cat, r))
-                    .collect();
-                let rest = port
-                    .type_
-                    .as_deref()
-                    .and_then(|t| cat.data_type(t))
-                    .map(|t| format!("../types/{}.md", t.slug));
-                vec![
-                    format!(
-                        "<a id=\"{}\"></a>{}",
-                        c.anchors.data_ports[pi],
-                        opt(&port.name)
-                    ),
-                    dir,
-                    ty,
-                    desc,
-                    facts_cell::<Md>(&facts::data_port(port, lang)),
-                    peers_cell::<Md>(peers, rest, lang),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("direction"),
-                lang.t("data_type"),
-                lang.t("description"),
-                lang.t("fact_details"),
-                lang.t("connects_to"),
-            ],
-            &rows,
-        );
-    }
-
-    if !p.service_ports.is_empty() {
-        heading(&mut out, 2, "sec-service-ports", lang.t("service_ports"));
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            heading(
-                &mut out,
-                3,
-                &c.anchors.service_ports[si],
-                model::non_empty(&sp.name).unwrap_or("?"),
-            );
-            let pf = facts::service_port(sp, lang);
-            if !pf.is_empty() {
-                facts_table::<Md>(&mut out, lang, &pf);
-            }
-            if sp.interfaces.is_empty() {
-                continue;
-            }
-            let rows: Vec<Vec<String>> = sp
-                .interfaces
-                .iter()
-                .enumerate()
-                .map(|(ii, i)| {
-                    let dir = match i.direction_kind() {
-                        Some(Direction::Provided) => lang.t("provided").to_string(),
-                        Some(Direction::Required) => lang.t("required").to_string(),
-                        None => opt(&i.direction),
-                    };
-                    let ty = match i.type_.as_deref().and_then(|t| cat.interface(t)) {
-                        Some(t) => link(&t.name, &format!("../interfaces/{}.md", t.slug)),
-                        None => opt(&i.type_),
-                    };
-                    let desc = i
-                        .doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default();
-                    let peers: Vec<(String, String)> = cat
-                        .interface_peers(ci, si, ii)
-                        .iter()
-                        .map(|r| iface_peer(cat, r))
-                        .collect();
-                    let rest = i
-                        .type_
-                        .as_deref()
-                        .and_then(|t| cat.interface(t))
-                        .map(|t| format!("../interfaces/{}.md", t.slug));
-                    vec![
-                        format!(
-                            "<a id=\"{}\"></a>{}",
-                            c.anchors.interfaces[si][ii],
-                            opt(&i.name)
-                        ),
-                        dir,
-                        ty,
-                        desc,
-                        facts_cell::<Md>(&facts::service_interface(i, lang)),
-                        peers_cell::<Md>(peers, rest, lang),
-                    ]
-                })
-                .collect();
-            table(
-                &mut out,
-                &[
-                    lang.t("interface"),
-                    lang.t("direction"),
-                    lang.t("type"),
-                    lang.t("description"),
-                    lang.t("fact_details"),
-                    lang.t("connects_to"),
-                ],
-                &rows,
-            );
-        }
-    }
-
-    let confs = p.configurations();
-    if !confs.is_empty() {
-        heading(&mut out, 2, "sec-configuration", lang.t("configuration"));
-        let rows: Vec<Vec<String>> = confs
-            .iter()
-            .enumerate()
-            .map(|(k, cf)| {
-                vec![
-                    format!(
-                        "<a id=\"{}\"></a>{}",
-                        c.anchors.configurations[k],
-                        opt(&cf.name)
-                    ),
-                    opt(&cf.type_),
-                    opt(&cf.default_value),
-                    opt(&cf.unit),
-                    facts::configuration_constraint(cf)
-                        .map(|s| inline(&s))
-                        .unwrap_or_default(),
-                    cf.doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default(),
-                    facts_cell::<Md>(&facts::configuration(cf, lang)),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("type"),
-                lang.t("default_value"),
-                lang.t("unit"),
-                lang.t("constraint"),
-                lang.t("description"),
-                lang.t("fact_details"),
-            ],
-            &rows,
-        );
-    }
-
-    heading(&mut out, 2, "sec-lifecycle", lang.t("actions"));
-    let rows: Vec<Vec<String>> = ActionKind::ALL
-        .iter()
-        .map(|&k| {
-            let a = p.action(k);
-            let (d, pre, post) = facts::action_description(a);
-            let implemented = match a {
-                Some(a) if a.is_implemented() => lang.t("yes"),
-                _ => lang.t("no"),
-            };
-            vec![
-                format!("`{}`", k.callback_name()),
-                implemented.to_string(),
-                d.map(inline).unwrap_or_default(),
-                pre.map(inline).unwrap_or_default(),
-                post.map(inline).unwrap_or_default(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("fact_callback"),
-            lang.t("implemented"),
-            lang.t("description"),
-            lang.t("pre_condition"),
-            lang.t("post_condition"),
-        ],
-        &rows,
-    );
-
-    if !p.parameters.is_empty() {
-        heading(&mut out, 2, "sec-system-parameters", lang.t("parameters"));
-        let rows: Vec<Vec<String>> = p
-            .parameters
-            .iter()
-            .map(|par| {
-                let (n, v) = facts::parameter(par);
-                vec![inline(n), inline(v)]
-            })
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("default_value")], &rows);
-    }
-
-    if let Some(l) = &p.language {
-        let lf = facts::language(l, lang);
-        if !lf.is_empty() || !l.targets.is_empty() {
-            heading(&mut out, 2, "sec-language", lang.t("language"));
-            if !lf.is_empty() {
-                facts_table::<Md>(&mut out, lang, &lf);
-            }
-            for (ti, t) in l.targets.iter().enumerate() {
-                let tf = facts::target(t, lang);
-                if tf.is_empty() {
-                    continue;
-                }
-                w!(out, "**{} {}**", inline(lang.t("fact_target")), ti + 1);
-                w!(out);
-                facts_table::<Md>(&mut out, lang, &tf);
-            }
-        }
-    }
-
-    let props = facts::component_properties(p, lang);
-    if !props.is_empty() {
-        heading(&mut out, 2, "sec-properties", lang.t("properties"));
-        let rows: Vec<Vec<String>> = props
-            .iter()
-            .map(|f| vec![inline(&f.label), inline(&f.value)])
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("fact_value")], &rows);
-    }
-
-    let logs = facts::version_up_logs(p);
-    if !logs.is_empty() {
-        heading(
-            &mut out,
-            2,
-            "sec-version-history",
-            lang.t("version_up_logs"),
-        );
-        for l in logs {
-            w!(out, "- {}", inline(l));
-        }
-        w!(out);
-    }
-
-    let extras = facts::extras(p);
-    if !extras.is_empty() {
-        heading(&mut out, 2, "sec-extra", lang.t("extra"));
-        facts_table::<Md>(&mut out, lang, &extras);
-    }
+    component_sections::<Md>(&mut out, cat, ci, lang);
     out
 }
 
