@@ -376,6 +376,42 @@ impl<'a> Site<'a> {
         }
     }
 
+    /// The "connects to" links of a port of component `ci`: up to [`PEER_CAP`] peers of other
+    /// components (`all`, sorted by component), then a link to the type or interface page
+    /// (`type_ref`) saying how many more there are (`more_key`).
+    fn peers<R>(
+        &self,
+        ci: usize,
+        all: &[R],
+        component: impl Fn(&R) -> usize,
+        link: impl Fn(&R) -> PortUse,
+        type_ref: &Option<PortTypeRef>,
+        more_key: &str,
+    ) -> (Vec<Link>, Option<Link>) {
+        let others = others_than(all, ci, &component);
+        let peers = all
+            .iter()
+            .filter(|r| component(r) != ci)
+            .take(PEER_CAP)
+            .map(|r| {
+                let u = link(r);
+                Link {
+                    text: format!("{}.{}", u.component.text, u.port.text),
+                    href: u.port.href,
+                }
+            })
+            .collect();
+        let more = type_ref
+            .as_ref()
+            .and_then(|t| t.href.clone())
+            .filter(|_| others > PEER_CAP)
+            .map(|href| Link {
+                text: format!("+{} — {}", others - PEER_CAP, self.t(more_key)),
+                href,
+            });
+        (peers, more)
+    }
+
     fn summary(&self, c: &Component) -> ComponentSummary {
         let b = &c.profile.basic_info;
         let facet_slug = |facets: &[Facet], v: &Option<String>| {
@@ -471,35 +507,14 @@ impl<'a> Site<'a> {
                     fields: fields(lang, None, facts::event(e, lang)),
                 })
                 .collect();
-            let all_peers = self.catalog.data_port_peers(ci, pi);
-            let others = others_than(all_peers, ci, |r| r.component);
-            let peers = all_peers
-                .iter()
-                .filter(|r| r.component != ci)
-                .take(PEER_CAP)
-                .map(|r| {
-                    let u = self.port_link(root, r);
-                    Link {
-                        text: format!("{}.{}", u.component.text, u.port.text),
-                        href: u.port.href,
-                    }
-                })
-                .collect();
-            let peers_more = (others > PEER_CAP)
-                .then(|| {
-                    type_ref
-                        .as_ref()
-                        .and_then(|t| t.href.clone())
-                        .map(|href| Link {
-                            text: format!(
-                                "+{} — {}",
-                                others - PEER_CAP,
-                                self.t("more_on_type_page")
-                            ),
-                            href,
-                        })
-                })
-                .flatten();
+            let (peers, peers_more) = self.peers(
+                ci,
+                self.catalog.data_port_peers(ci, pi),
+                |r| r.component,
+                |r| self.port_link(root, r),
+                &type_ref,
+                "more_on_type_page",
+            );
             data_ports.push(DataPortRow {
                 anchor,
                 direction,
@@ -549,35 +564,14 @@ impl<'a> Site<'a> {
                     i.doc.as_ref().map(|d| &d.description),
                     facts::service_interface(i, lang),
                 );
-                let all_peers = self.catalog.interface_peers(ci, si, ii);
-                let others = others_than(all_peers, ci, |r| r.component);
-                let peers = all_peers
-                    .iter()
-                    .filter(|r| r.component != ci)
-                    .take(PEER_CAP)
-                    .map(|r| {
-                        let u = self.iface_link(root, r);
-                        Link {
-                            text: format!("{}.{}", u.component.text, u.port.text),
-                            href: u.port.href,
-                        }
-                    })
-                    .collect();
-                let peers_more = (others > PEER_CAP)
-                    .then(|| {
-                        type_ref
-                            .as_ref()
-                            .and_then(|t| t.href.clone())
-                            .map(|href| Link {
-                                text: format!(
-                                    "+{} — {}",
-                                    others - PEER_CAP,
-                                    self.t("more_on_interface_page")
-                                ),
-                                href,
-                            })
-                    })
-                    .flatten();
+                let (peers, peers_more) = self.peers(
+                    ci,
+                    self.catalog.interface_peers(ci, si, ii),
+                    |r| r.component,
+                    |r| self.iface_link(root, r),
+                    &type_ref,
+                    "more_on_interface_page",
+                );
                 interfaces.push(InterfaceRow {
                     anchor: ianchor,
                     direction,
@@ -729,6 +723,16 @@ struct Page {
     path: String,
     template: &'static str,
     context: Value,
+}
+
+/// Breadcrumbs to the catalogue and a section index (`key` names the section).
+fn crumbs_section(lang: Lang, root: &str, key: &str) -> Vec<Link> {
+    let mut crumbs = crumbs_home(lang, root);
+    crumbs.push(Link {
+        text: lang.t(key).to_string(),
+        href: "index.html".into(),
+    });
+    crumbs
 }
 
 fn crumbs_home(lang: Lang, root: &str) -> Vec<Link> {
@@ -994,11 +998,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
         });
         for f in facets.iter() {
             let name = site.facet_name(&f.name, empty_key);
-            let mut crumbs = crumbs_home(lang, root);
-            crumbs.push(Link {
-                text: lang.t(key).to_string(),
-                href: "index.html".into(),
-            });
+            let crumbs = crumbs_section(lang, root, key);
             let comps: Vec<&ComponentSummary> =
                 f.components.iter().map(|&i| &site.summaries[i]).collect();
             pages.push(Page {
@@ -1056,11 +1056,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
             },
         });
         for t in &catalog.data_types {
-            let mut crumbs = crumbs_home(lang, root);
-            crumbs.push(Link {
-                text: lang.t("data_types").to_string(),
-                href: "index.html".into(),
-            });
+            let crumbs = crumbs_section(lang, root, "data_types");
             let uses = |v: &[PortRef]| -> Vec<PortUse> {
                 v.iter().map(|r| site.port_link(root, r)).collect()
             };
@@ -1115,11 +1111,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
             },
         });
         for t in &catalog.interfaces {
-            let mut crumbs = crumbs_home(lang, root);
-            crumbs.push(Link {
-                text: lang.t("interfaces").to_string(),
-                href: "index.html".into(),
-            });
+            let crumbs = crumbs_section(lang, root, "interfaces");
             let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
                 v.iter().map(|r| site.iface_link(root, r)).collect()
             };
