@@ -20,7 +20,10 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::text::{category_name, component_cols, component_sections, names_facts, Markup};
+use super::text::{
+    category_name, component_cols, component_sections, interface_index_table, names_facts,
+    type_index_table, Markup,
+};
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
 use crate::i18n::Lang;
@@ -477,28 +480,9 @@ fn type_index(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index</p>");
     d!(out);
-    let rows: Vec<Vec<String>> = cat
-        .data_types
-        .iter()
-        .map(|t| {
-            vec![
-                format!("\\subpage rtc_type_{}", label(&t.slug)),
-                t.producers.len().to_string(),
-                t.consumers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("data_type"),
-            lang.t("producers"),
-            lang.t("consumers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    type_index_table::<Dox>(&mut out, cat, lang, |t| {
+        format!("\\subpage {}", Dox::type_target(t))
+    });
     out
 }
 
@@ -508,32 +492,9 @@ fn interface_index(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index</p>");
     d!(out);
-    let rows: Vec<Vec<String>> = cat
-        .interfaces
-        .iter()
-        .map(|t| {
-            let mut name = format!("\\subpage rtc_if_{}", label(&t.slug));
-            if t.is_unprovided() {
-                name.push_str(&format!(" ({})", text(lang.t("not_provided"))));
-            }
-            vec![
-                name,
-                t.providers.len().to_string(),
-                t.requirers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("interface"),
-            lang.t("providers"),
-            lang.t("requirers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    interface_index_table::<Dox>(&mut out, cat, lang, |t| {
+        format!("\\subpage {}", Dox::iface_target(t))
+    });
     out
 }
 

@@ -13,7 +13,10 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::text::{category_name, component_cols, component_sections, names_facts, Markup};
+use super::text::{
+    category_name, component_cols, component_sections, interface_index_table, names_facts,
+    type_index_table, Markup,
+};
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
 use crate::i18n::Lang;
@@ -468,28 +471,9 @@ fn type_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out);
     w!(out, "{}", link(title, "index.md"));
     w!(out);
-    let rows: Vec<Vec<String>> = cat
-        .data_types
-        .iter()
-        .map(|t| {
-            vec![
-                link(&t.name, &format!("types/{}.md", t.slug)),
-                t.producers.len().to_string(),
-                t.consumers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("data_type"),
-            lang.t("producers"),
-            lang.t("consumers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    type_index_table::<Md>(&mut out, cat, lang, |t| {
+        link(&t.name, &format!("types/{}.md", t.slug))
+    });
     out
 }
 
@@ -499,32 +483,9 @@ fn interface_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out);
     w!(out, "{}", link(title, "index.md"));
     w!(out);
-    let rows: Vec<Vec<String>> = cat
-        .interfaces
-        .iter()
-        .map(|t| {
-            let mut name = link(&t.name, &format!("interfaces/{}.md", t.slug));
-            if t.is_unprovided() {
-                name.push_str(&format!(" ({})", inline(lang.t("not_provided"))));
-            }
-            vec![
-                name,
-                t.providers.len().to_string(),
-                t.requirers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("interface"),
-            lang.t("providers"),
-            lang.t("requirers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    interface_index_table::<Md>(&mut out, cat, lang, |t| {
+        link(&t.name, &format!("interfaces/{}.md", t.slug))
+    });
     out
 }
 

@@ -391,3 +391,71 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
         facts_table::<M>(out, lang, &extras);
     }
 }
+
+/// The table of every data type with its producer, consumer and other counts; `name` makes
+/// the first cell (a link to the type's page).
+pub fn type_index_table<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    lang: Lang,
+    name: impl Fn(&DataType) -> String,
+) {
+    let rows: Vec<Vec<String>> = cat
+        .data_types
+        .iter()
+        .map(|t| {
+            vec![
+                name(t),
+                t.producers.len().to_string(),
+                t.consumers.len().to_string(),
+                t.others.len().to_string(),
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("data_type"),
+            lang.t("producers"),
+            lang.t("consumers"),
+            lang.t("fact_others"),
+        ],
+        &rows,
+    );
+}
+
+/// The table of every interface with its provider, requirer and other counts, flagging
+/// interfaces nobody provides; `name` makes the link to the interface's page.
+pub fn interface_index_table<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    lang: Lang,
+    name: impl Fn(&InterfaceType) -> String,
+) {
+    let rows: Vec<Vec<String>> = cat
+        .interfaces
+        .iter()
+        .map(|t| {
+            let mut cell = name(t);
+            if t.is_unprovided() {
+                cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
+            }
+            vec![
+                cell,
+                t.providers.len().to_string(),
+                t.requirers.len().to_string(),
+                t.others.len().to_string(),
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("interface"),
+            lang.t("providers"),
+            lang.t("requirers"),
+            lang.t("fact_others"),
+        ],
+        &rows,
+    );
+}
