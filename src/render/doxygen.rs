@@ -20,17 +20,20 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::facts::{self, Fact};
+use super::text::{
+    category_name, component_cols, component_sections, interface_index_table, names_facts,
+    type_index_table, Markup,
+};
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, InterfaceRef, PortRef};
+use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
 use crate::i18n::Lang;
-use crate::model::{self, ActionKind, Direction, PortDirection};
+use crate::model::{self};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 
-/// How many peers a "connects to" cell lists before pointing at the type page.
-pub const PEER_CAP: usize = 12;
+/// At most this many "connects to" peers are listed per port (shared with Markdown).
+pub use super::text::PEER_CAP;
 
 /// Writes the `.dox` pages and the `Doxyfile`.
 pub struct DoxygenRenderer;
@@ -139,6 +142,69 @@ fn opt(s: &Option<String>) -> String {
     model::non_empty(s).map(text).unwrap_or_default()
 }
 
+/// Doxygen syntax for the shared [`super::text`] helpers.
+struct Dox;
+
+impl Markup for Dox {
+    fn esc(s: &str) -> String {
+        text(s)
+    }
+    fn link(text_: &str, target: &str) -> String {
+        refer(target, text_)
+    }
+    fn bold(escaped: &str) -> String {
+        format!("<b>{escaped}</b>")
+    }
+    fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
+        table(out, headers, rows)
+    }
+    fn code(s: &str) -> String {
+        format!("<tt>{s}</tt>")
+    }
+    fn paragraph(out: &mut String, escaped: &str) {
+        d!(out, "<p>{escaped}</p>");
+    }
+    fn list(out: &mut String, items: &[&str]) {
+        d!(out, "<ul>");
+        for l in items {
+            d!(out, "<li>{}</li>", text(l));
+        }
+        d!(out, "</ul>");
+        d!(out);
+    }
+    fn heading(out: &mut String, c: &Component, level: usize, anchor: &str, text: &str) {
+        let command = if level <= 2 { "section" } else { "subsection" };
+        d!(
+            out,
+            "\\{command} {} {}",
+            anchor_label(c, anchor),
+            title(text)
+        );
+        d!(out);
+    }
+    fn anchored(c: &Component, anchor: &str, escaped: &str) -> String {
+        format!("\\anchor {} {escaped}", anchor_label(c, anchor))
+    }
+    fn type_ref(t: &DataType) -> String {
+        format!("\\ref {}", Self::type_target(t))
+    }
+    fn type_target(t: &DataType) -> String {
+        format!("rtc_type_{}", label(&t.slug))
+    }
+    fn iface_ref(t: &InterfaceType) -> String {
+        format!("\\ref {}", Self::iface_target(t))
+    }
+    fn iface_target(t: &InterfaceType) -> String {
+        format!("rtc_if_{}", label(&t.slug))
+    }
+    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+        port_peer(cat, r)
+    }
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+        iface_peer(cat, r)
+    }
+}
+
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     d!(out, "<table>");
     let head: String = headers
@@ -152,22 +218,6 @@ fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     }
     d!(out, "</table>");
     d!(out);
-}
-
-fn facts_table(out: &mut String, lang: Lang, facts: &[Fact]) {
-    let rows: Vec<Vec<String>> = facts
-        .iter()
-        .map(|f| vec![text(&f.label), text(&f.value)])
-        .collect();
-    table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
-}
-
-fn facts_cell(facts: &[Fact]) -> String {
-    facts
-        .iter()
-        .map(|f| format!("<b>{}</b>: {}", text(&f.label), text(&f.value)))
-        .collect::<Vec<_>>()
-        .join("<br>")
 }
 
 fn section(out: &mut String, page: &str, anchor: &str, heading: &str) {
@@ -189,37 +239,12 @@ fn paragraphs(out: &mut String, s: &str) {
     d!(out);
 }
 
-fn category_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("fact_uncategorized").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
-fn peers_cell(items: Vec<(String, String)>, rest: Option<String>, lang: Lang) -> String {
-    let total = items.len();
-    let mut parts: Vec<String> = items
-        .into_iter()
-        .take(PEER_CAP)
-        .map(|(l, t)| refer(&l, &t))
-        .collect();
-    if total > PEER_CAP {
-        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
-        parts.push(match rest {
-            Some(l) => refer(&l, &more),
-            None => text(&more),
-        });
-    }
-    parts.join("<br>")
-}
-
 fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
     let pc = &cat.components[r.component];
     let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
     (
-        anchor_label(pc, &pc.anchors.data_ports[r.port]),
         format!("{} / {pn}", pc.profile.name()),
+        anchor_label(pc, &pc.anchors.data_ports[r.port]),
     )
 }
 
@@ -228,12 +253,12 @@ fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
     let sp = &pc.profile.service_ports[r.port];
     let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
     (
-        anchor_label(pc, &pc.anchors.interfaces[r.port][r.interface]),
         format!(
             "{} / {} / {iname}",
             pc.profile.name(),
             model::non_empty(&sp.name).unwrap_or("")
         ),
+        anchor_label(pc, &pc.anchors.interfaces[r.port][r.interface]),
     )
 }
 
@@ -250,308 +275,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
         paragraphs(&mut out, desc);
     }
 
-    section(&mut out, &page, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table(&mut out, lang, &facts::basic_info(c, lang));
-
-    if let Some(doc) = &p.basic_info.doc {
-        let f = facts::document(doc, lang);
-        if !f.is_empty() {
-            section(&mut out, &page, "sec-document", lang.t("fact_document"));
-            facts_table(&mut out, lang, &f);
-        }
-    }
-
-    if !p.data_ports.is_empty() {
-        section(&mut out, &page, "sec-data-ports", lang.t("data_ports"));
-        let rows: Vec<Vec<String>> = p
-            .data_ports
-            .iter()
-            .enumerate()
-            .map(|(pi, port)| {
-                let dir = match port.direction() {
-                    Some(PortDirection::In) => text(lang.t("in")),
-                    Some(PortDirection::Out) => text(lang.t("out")),
-                    _ => opt(&port.port_type),
-                };
-                let dt = port.type_.as_deref().and_then(|t| cat.data_type(t));
-                let ty = match dt {
-                    Some(t) => format!("\\ref rtc_type_{}", label(&t.slug)),
-                    None => opt(&port.type_),
-                };
-                let desc = port
-                    .doc
-                    .as_ref()
-                    .map(|d| opt(&d.description))
-                    .unwrap_or_default();
-                let peers = cat
-                    .data_port_peers(ci, pi)
-                    .iter()
-                    .map(|r| port_peer(cat, r))
-                    .collect();
-                vec![
-                    format!(
-                        "\\anchor {} {}",
-                        anchor_label(c, &c.anchors.data_ports[pi]),
-                        opt(&port.name)
-                    ),
-                    dir,
-                    ty,
-                    desc,
-                    facts_cell(&facts::data_port(port, lang)),
-                    peers_cell(
-                        peers,
-                        dt.map(|t| format!("rtc_type_{}", label(&t.slug))),
-                        lang,
-                    ),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("direction"),
-                lang.t("data_type"),
-                lang.t("description"),
-                lang.t("fact_details"),
-                lang.t("connects_to"),
-            ],
-            &rows,
-        );
-    }
-
-    if !p.service_ports.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-service-ports",
-            lang.t("service_ports"),
-        );
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            d!(
-                out,
-                "\\subsection {} {}",
-                anchor_label(c, &c.anchors.service_ports[si]),
-                title(model::non_empty(&sp.name).unwrap_or("?"))
-            );
-            d!(out);
-            let pf = facts::service_port(sp, lang);
-            if !pf.is_empty() {
-                facts_table(&mut out, lang, &pf);
-            }
-            if sp.interfaces.is_empty() {
-                continue;
-            }
-            let rows: Vec<Vec<String>> = sp
-                .interfaces
-                .iter()
-                .enumerate()
-                .map(|(ii, i)| {
-                    let dir = match i.direction_kind() {
-                        Some(Direction::Provided) => text(lang.t("provided")),
-                        Some(Direction::Required) => text(lang.t("required")),
-                        None => opt(&i.direction),
-                    };
-                    let it = i.type_.as_deref().and_then(|t| cat.interface(t));
-                    let ty = match it {
-                        Some(t) => format!("\\ref rtc_if_{}", label(&t.slug)),
-                        None => opt(&i.type_),
-                    };
-                    let desc = i
-                        .doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default();
-                    let peers = cat
-                        .interface_peers(ci, si, ii)
-                        .iter()
-                        .map(|r| iface_peer(cat, r))
-                        .collect();
-                    vec![
-                        format!(
-                            "\\anchor {} {}",
-                            anchor_label(c, &c.anchors.interfaces[si][ii]),
-                            opt(&i.name)
-                        ),
-                        dir,
-                        ty,
-                        desc,
-                        facts_cell(&facts::service_interface(i, lang)),
-                        peers_cell(
-                            peers,
-                            it.map(|t| format!("rtc_if_{}", label(&t.slug))),
-                            lang,
-                        ),
-                    ]
-                })
-                .collect();
-            table(
-                &mut out,
-                &[
-                    lang.t("interface"),
-                    lang.t("direction"),
-                    lang.t("type"),
-                    lang.t("description"),
-                    lang.t("fact_details"),
-                    lang.t("connects_to"),
-                ],
-                &rows,
-            );
-        }
-    }
-
-    let confs = p.configurations();
-    if !confs.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-configuration",
-            lang.t("configuration"),
-        );
-        let rows: Vec<Vec<String>> = confs
-            .iter()
-            .enumerate()
-            .map(|(k, cf)| {
-                vec![
-                    format!(
-                        "\\anchor {} {}",
-                        anchor_label(c, &c.anchors.configurations[k]),
-                        opt(&cf.name)
-                    ),
-                    opt(&cf.type_),
-                    opt(&cf.default_value),
-                    opt(&cf.unit),
-                    facts::configuration_constraint(cf)
-                        .map(|s| text(&s))
-                        .unwrap_or_default(),
-                    cf.doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default(),
-                    facts_cell(&facts::configuration(cf, lang)),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("type"),
-                lang.t("default_value"),
-                lang.t("unit"),
-                lang.t("constraint"),
-                lang.t("description"),
-                lang.t("fact_details"),
-            ],
-            &rows,
-        );
-    }
-
-    section(&mut out, &page, "sec-lifecycle", lang.t("actions"));
-    let rows: Vec<Vec<String>> = ActionKind::ALL
-        .iter()
-        .map(|&k| {
-            let a = p.action(k);
-            let (desc, pre, post) = facts::action_description(a);
-            let implemented = match a {
-                Some(a) if a.is_implemented() => lang.t("yes"),
-                _ => lang.t("no"),
-            };
-            vec![
-                format!("<tt>{}</tt>", k.callback_name()),
-                text(implemented),
-                desc.map(text).unwrap_or_default(),
-                pre.map(text).unwrap_or_default(),
-                post.map(text).unwrap_or_default(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("fact_callback"),
-            lang.t("implemented"),
-            lang.t("description"),
-            lang.t("pre_condition"),
-            lang.t("post_condition"),
-        ],
-        &rows,
-    );
-
-    if !p.parameters.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-system-parameters",
-            lang.t("parameters"),
-        );
-        let rows: Vec<Vec<String>> = p
-            .parameters
-            .iter()
-            .map(|par| {
-                let (n, v) = facts::parameter(par);
-                vec![text(n), text(v)]
-            })
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("default_value")], &rows);
-    }
-
-    if let Some(l) = &p.language {
-        let lf = facts::language(l, lang);
-        let targets: Vec<Vec<Fact>> = l
-            .targets
-            .iter()
-            .map(|t| facts::target(t, lang))
-            .filter(|f| !f.is_empty())
-            .collect();
-        if !lf.is_empty() || !targets.is_empty() {
-            section(&mut out, &page, "sec-language", lang.t("language"));
-            if !lf.is_empty() {
-                facts_table(&mut out, lang, &lf);
-            }
-            for (ti, tf) in targets.iter().enumerate() {
-                d!(
-                    out,
-                    "<p><b>{} {}</b></p>",
-                    text(lang.t("fact_target")),
-                    ti + 1
-                );
-                facts_table(&mut out, lang, tf);
-            }
-        }
-    }
-
-    let props = facts::component_properties(p, lang);
-    if !props.is_empty() {
-        section(&mut out, &page, "sec-properties", lang.t("properties"));
-        let rows: Vec<Vec<String>> = props
-            .iter()
-            .map(|f| vec![text(&f.label), text(&f.value)])
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("fact_value")], &rows);
-    }
-
-    let logs = facts::version_up_logs(p);
-    if !logs.is_empty() {
-        section(
-            &mut out,
-            &page,
-            "sec-version-history",
-            lang.t("version_up_logs"),
-        );
-        d!(out, "<ul>");
-        for l in logs {
-            d!(out, "<li>{}</li>", text(l));
-        }
-        d!(out, "</ul>");
-        d!(out);
-    }
-
-    let extras = facts::extras(p);
-    if !extras.is_empty() {
-        section(&mut out, &page, "sec-extra", lang.t("extra"));
-        facts_table(&mut out, lang, &extras);
-    }
+    component_sections::<Dox>(&mut out, cat, ci, lang);
     out
 }
 
@@ -594,25 +318,6 @@ fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
         .collect()
 }
 
-fn names_facts(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
-    let mut f = Vec::new();
-    if !spellings.is_empty() {
-        f.push(Fact {
-            label: lang.t("fact_spellings").into(),
-            value: spellings.join(", "),
-        });
-    }
-    if !idl.is_empty() {
-        f.push(Fact {
-            label: lang.t("fact_idl_files").into(),
-            value: idl.join("\n"),
-        });
-    }
-    if !f.is_empty() {
-        facts_table(out, lang, &f);
-    }
-}
-
 fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     let t = &cat.data_types[ti];
     let page = format!("rtc_type_{}", label(&t.slug));
@@ -621,7 +326,7 @@ fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index › \\ref rtc_types</p>");
     d!(out);
-    names_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-producers", "producers", &t.producers),
@@ -648,7 +353,7 @@ fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
         d!(out, "<p><b>{}</b></p>", text(lang.t("not_provided")));
         d!(out);
     }
-    names_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-providers", "providers", &t.providers),
@@ -678,15 +383,6 @@ fn component_rows(cat: &Catalog, members: &[usize], command: &str) -> Vec<Vec<St
             ]
         })
         .collect()
-}
-
-fn component_cols(lang: Lang) -> [&'static str; 4] {
-    [
-        lang.t("name"),
-        lang.t("description"),
-        lang.t("vendor"),
-        lang.t("version"),
-    ]
 }
 
 fn cat_label(slug: &str) -> String {
@@ -784,28 +480,9 @@ fn type_index(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index</p>");
     d!(out);
-    let rows: Vec<Vec<String>> = cat
-        .data_types
-        .iter()
-        .map(|t| {
-            vec![
-                format!("\\subpage rtc_type_{}", label(&t.slug)),
-                t.producers.len().to_string(),
-                t.consumers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("data_type"),
-            lang.t("producers"),
-            lang.t("consumers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    type_index_table::<Dox>(&mut out, cat, lang, |t| {
+        format!("\\subpage {}", Dox::type_target(t))
+    });
     out
 }
 
@@ -815,32 +492,9 @@ fn interface_index(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index</p>");
     d!(out);
-    let rows: Vec<Vec<String>> = cat
-        .interfaces
-        .iter()
-        .map(|t| {
-            let mut name = format!("\\subpage rtc_if_{}", label(&t.slug));
-            if t.is_unprovided() {
-                name.push_str(&format!(" ({})", text(lang.t("not_provided"))));
-            }
-            vec![
-                name,
-                t.providers.len().to_string(),
-                t.requirers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("interface"),
-            lang.t("providers"),
-            lang.t("requirers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    interface_index_table::<Dox>(&mut out, cat, lang, |t| {
+        format!("\\subpage {}", Dox::iface_target(t))
+    });
     out
 }
 

@@ -13,10 +13,21 @@ use crate::catalog::Component;
 use crate::constraint;
 use crate::i18n::Lang;
 use crate::model::{
-    self, Action, BasicDoc, Configuration, DataPort, Extra, Language, Parameter, Profile, Property,
-    ServiceInterface, ServicePort, Target,
+    self, Action, BasicDoc, Configuration, DataPort, Extra, ExtraKind, Language, Parameter,
+    Profile, Property, ServiceInterface, ServicePort, Target,
 };
 use std::borrow::Cow;
+
+/// What kind of value a [`Fact`] holds, for renderers that present the two differently.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FactKind {
+    /// A plain value: an identifier, a number, a date, a type name.
+    #[default]
+    Value,
+    /// Free text written for humans (descriptions, comments, algorithm notes), which may hold
+    /// Markdown; the HTML site renders it as sanitised Markdown.
+    Text,
+}
 
 /// One labelled value of a page.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -25,13 +36,17 @@ pub struct Fact {
     pub label: Cow<'static, str>,
     /// The value as the profile wrote it (plain text, may contain line breaks).
     pub value: String,
+    /// Whether the value is a plain value or free text.
+    pub kind: FactKind,
 }
 
 impl Fact {
-    fn new(label: impl Into<Cow<'static, str>>, value: impl Into<String>) -> Fact {
+    /// A plain-value fact ([`FactKind::Value`]).
+    pub fn new(label: impl Into<Cow<'static, str>>, value: impl Into<String>) -> Fact {
         Fact {
             label: label.into(),
             value: value.into(),
+            kind: FactKind::Value,
         }
     }
 }
@@ -52,6 +67,15 @@ impl Facts {
     fn opt(&mut self, key: &'static str, v: &Option<String>) -> &mut Self {
         if let Some(s) = model::non_empty(v) {
             self.out.push(Fact::new(self.lang.t(key), s));
+        }
+        self
+    }
+    /// Like [`Facts::opt`], for free text ([`FactKind::Text`]).
+    fn md(&mut self, key: &'static str, v: &Option<String>) -> &mut Self {
+        if let Some(s) = model::non_empty(v) {
+            let mut f = Fact::new(self.lang.t(key), s);
+            f.kind = FactKind::Text;
+            self.out.push(f);
         }
         self
     }
@@ -92,6 +116,15 @@ impl Facts {
         }
         self
     }
+    /// The Document Profile of a data port or an FSM event, except its description.
+    fn data_doc(&mut self, d: &model::DataPortDoc) -> &mut Self {
+        self.md("fact_doc_type", &d.type_)
+            .md("fact_number", &d.number)
+            .md("fact_semantics", &d.semantics)
+            .md("fact_doc_unit", &d.unit)
+            .md("fact_occurrence", &d.occurrence)
+            .md("fact_operation", &d.operation)
+    }
     fn done(&mut self) -> Vec<Fact> {
         std::mem::take(&mut self.out)
     }
@@ -114,11 +147,11 @@ pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
         .opt("execution_type", &b.execution_type)
         .opt("execution_rate", &b.execution_rate)
         .opt("max_instances", &b.max_instances)
-        .opt("fact_abstract", &b.abstract_)
+        .md("fact_abstract", &b.abstract_)
         .opt("fact_hardware_profile", &b.hardware_profile)
         .opt("creation_date", &b.creation_date)
         .opt("update_date", &b.update_date)
-        .opt("fact_comment", &b.comment)
+        .md("fact_comment", &b.comment)
         .opt("fact_save_project", &b.save_project)
         .opt("fact_profile_version", &p.version)
         .text("source", &c.source)
@@ -128,12 +161,12 @@ pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
 /// The component's Document Profile (spec 2.4.2).
 pub fn document(d: &BasicDoc, lang: Lang) -> Vec<Fact> {
     Facts::new(lang)
-        .opt("description", &d.description)
-        .opt("inout", &d.inout)
-        .opt("algorithm", &d.algorithm)
+        .md("description", &d.description)
+        .md("inout", &d.inout)
+        .md("algorithm", &d.algorithm)
         .opt("creator", &d.creator)
         .opt("license", &d.license)
-        .opt("reference", &d.reference)
+        .md("reference", &d.reference)
         .done()
 }
 
@@ -141,6 +174,18 @@ pub fn document(d: &BasicDoc, lang: Lang) -> Vec<Fact> {
 /// their own columns): transport attributes, constraint, the rest of its Document Profile,
 /// extended attributes, properties and FSM events.
 pub fn data_port(p: &DataPort, lang: Lang) -> Vec<Fact> {
+    let mut out = data_port_attributes(p, lang);
+    out.extend(
+        p.events
+            .iter()
+            .map(|e| Fact::new(lang.t("fact_event"), event_text(e))),
+    );
+    out
+}
+
+/// [`data_port`] without the FSM events, for renderers that list events on their own
+/// (see [`event`]).
+pub fn data_port_attributes(p: &DataPort, lang: Lang) -> Vec<Fact> {
     let mut f = Facts::new(lang);
     f.opt("fact_idl_file", &p.idl_file)
         .opt("fact_interface_type", &p.interface_type)
@@ -151,19 +196,25 @@ pub fn data_port(p: &DataPort, lang: Lang) -> Vec<Fact> {
         f.text("constraint", &constraint::describe(c));
     }
     if let Some(d) = &p.doc {
-        f.opt("fact_doc_type", &d.type_)
-            .opt("fact_number", &d.number)
-            .opt("fact_semantics", &d.semantics)
-            .opt("fact_doc_unit", &d.unit)
-            .opt("fact_occurrence", &d.occurrence)
-            .opt("fact_operation", &d.operation);
+        f.data_doc(d);
     }
-    f.opt("fact_comment", &p.comment)
+    f.md("fact_comment", &p.comment)
         .opt("fact_variable_name", &p.variable_name)
         .opt("fact_position", &p.position)
-        .properties(&p.properties, &[]);
-    for e in &p.events {
-        f.text("fact_event", &event_text(e));
+        .properties(&p.properties, &[])
+        .done()
+}
+
+/// Everything about one FSM event except its name: type, source, target, condition and its
+/// Document Profile.
+pub fn event(e: &model::Event, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    f.opt("type", &e.type_)
+        .opt("source", &e.source)
+        .opt("event_target", &e.target)
+        .opt("condition", &e.condition);
+    if let Some(d) = &e.doc {
+        f.md("description", &d.description).data_doc(d);
     }
     f.done()
 }
@@ -200,8 +251,8 @@ fn event_text(e: &model::Event) -> String {
 pub fn service_port(p: &ServicePort, lang: Lang) -> Vec<Fact> {
     let mut f = Facts::new(lang);
     if let Some(d) = &p.doc {
-        f.opt("description", &d.description)
-            .opt("fact_if_description", &d.ifdescription);
+        f.md("description", &d.description)
+            .md("fact_if_description", &d.ifdescription);
     }
     let kinds: Vec<String> = p
         .trans_methods
@@ -209,7 +260,7 @@ pub fn service_port(p: &ServicePort, lang: Lang) -> Vec<Fact> {
         .filter_map(|t| model::non_empty(&t.kind).map(str::to_string))
         .collect();
     f.list("fact_trans_methods", &kinds)
-        .opt("fact_comment", &p.comment)
+        .md("fact_comment", &p.comment)
         .opt("fact_position", &p.position)
         .properties(&p.properties, &[])
         .done()
@@ -222,13 +273,13 @@ pub fn service_interface(i: &ServiceInterface, lang: Lang) -> Vec<Fact> {
         .opt("fact_idl_file", &i.idl_file)
         .opt("fact_path", &i.path);
     if let Some(d) = &i.doc {
-        f.opt("fact_doc_argument", &d.doc_argument)
-            .opt("fact_doc_return", &d.doc_return)
-            .opt("fact_doc_exception", &d.doc_exception)
-            .opt("pre_condition", &d.doc_pre_condition)
-            .opt("post_condition", &d.doc_post_condition);
+        f.md("fact_doc_argument", &d.doc_argument)
+            .md("fact_doc_return", &d.doc_return)
+            .md("fact_doc_exception", &d.doc_exception)
+            .md("pre_condition", &d.doc_pre_condition)
+            .md("post_condition", &d.doc_post_condition);
     }
-    f.opt("fact_comment", &i.comment)
+    f.md("fact_comment", &i.comment)
         .opt("fact_variable_name", &i.variable_name)
         .properties(&i.properties, &[])
         .done()
@@ -248,11 +299,11 @@ pub fn configuration_constraint(c: &Configuration) -> Option<String> {
 pub fn configuration(c: &Configuration, lang: Lang) -> Vec<Fact> {
     let mut f = Facts::new(lang);
     if let Some(d) = &c.doc {
-        f.opt("fact_dataname", &d.dataname)
-            .opt("fact_doc_default", &d.default_value)
-            .opt("fact_doc_unit", &d.unit)
-            .opt("fact_range", &d.range)
-            .opt("fact_doc_constraint", &d.constraint);
+        f.md("fact_dataname", &d.dataname)
+            .md("fact_doc_default", &d.default_value)
+            .md("fact_doc_unit", &d.unit)
+            .md("fact_range", &d.range)
+            .md("fact_doc_constraint", &d.constraint);
     }
     if let Some(w) = c.widget().map(str::trim).filter(|w| !w.is_empty()) {
         f.text("fact_widget", &widget_text(w, lang));
@@ -260,7 +311,7 @@ pub fn configuration(c: &Configuration, lang: Lang) -> Vec<Fact> {
     if let Some(s) = c.step() {
         f.text("fact_step", s);
     }
-    f.opt("fact_comment", &c.comment)
+    f.md("fact_comment", &c.comment)
         .opt("fact_variable_name", &c.variable_name)
         .properties(&c.properties, &["__widget__", "__step__"])
         .done()
@@ -285,6 +336,17 @@ fn widget_text(w: &str, lang: Lang) -> String {
         Some(step) => format!("{w} ({}, {} {step})", lang.t(key), lang.t("fact_step")),
         None => format!("{w} ({})", lang.t(key)),
     }
+}
+
+/// The Document Profile of a lifecycle action: description, pre- and post-condition.
+pub fn action(a: Option<&Action>, lang: Lang) -> Vec<Fact> {
+    let mut f = Facts::new(lang);
+    if let Some(d) = a.and_then(|a| a.doc.as_ref()) {
+        f.md("description", &d.description)
+            .md("pre_condition", &d.pre_condition)
+            .md("post_condition", &d.post_condition);
+    }
+    f.done()
 }
 
 /// Facts of a lifecycle action beyond implemented/description/pre/post: nothing in the spec,
@@ -357,11 +419,16 @@ pub fn version_up_logs(p: &Profile) -> Vec<&str> {
 /// Every extra (unknown) value of the profile, flattened: label = `path: name/child/…`,
 /// value = the text (attributes of unknown elements become their own rows).
 pub fn extras(p: &Profile) -> Vec<Fact> {
-    fn walk(prefix: &str, e: &Extra, out: &mut Vec<Fact>) {
+    extras_with_kind(p).into_iter().map(|(f, _)| f).collect()
+}
+
+/// [`extras`], each with the kind of node it came from (element, attribute or key).
+pub fn extras_with_kind(p: &Profile) -> Vec<(Fact, ExtraKind)> {
+    fn walk(prefix: &str, e: &Extra, out: &mut Vec<(Fact, ExtraKind)>) {
         let name = format!("{prefix}{}", e.name);
         let value = e.value.as_deref().map(str::trim).unwrap_or("");
         if !value.is_empty() || e.children.is_empty() {
-            out.push(Fact::new(name.clone(), value));
+            out.push((Fact::new(name.clone(), value), e.kind));
         }
         for c in &e.children {
             walk(&format!("{name}/"), c, out);

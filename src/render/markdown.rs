@@ -13,17 +13,20 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::facts::{self, Fact};
+use super::text::{
+    category_name, component_cols, component_sections, interface_index_table, names_facts,
+    type_index_table, Markup,
+};
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component};
+use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
 use crate::i18n::Lang;
-use crate::model::{self, ActionKind, Direction, PortDirection};
+use crate::model::{self};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 
-/// How many peers a "connects to" cell lists before linking to the type page for the rest.
-pub const PEER_CAP: usize = 12;
+/// At most this many "connects to" peers are listed per port (shared with Doxygen).
+pub use super::text::PEER_CAP;
 
 /// Writes the Markdown pages.
 pub struct MarkdownRenderer;
@@ -133,6 +136,61 @@ fn link(text: &str, href: &str) -> String {
     format!("[{}]({href})", inline(text))
 }
 
+/// Markdown syntax for the shared [`super::text`] helpers.
+struct Md;
+
+impl Markup for Md {
+    fn esc(s: &str) -> String {
+        inline(s)
+    }
+    fn link(text: &str, target: &str) -> String {
+        link(text, target)
+    }
+    fn bold(escaped: &str) -> String {
+        format!("**{escaped}**")
+    }
+    fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
+        table(out, headers, rows)
+    }
+    fn code(s: &str) -> String {
+        format!("`{s}`")
+    }
+    fn paragraph(out: &mut String, escaped: &str) {
+        w!(out, "{escaped}");
+        w!(out);
+    }
+    fn list(out: &mut String, items: &[&str]) {
+        for l in items {
+            w!(out, "- {}", inline(l));
+        }
+        w!(out);
+    }
+    fn heading(out: &mut String, _: &Component, level: usize, anchor: &str, text: &str) {
+        heading(out, level, anchor, text)
+    }
+    fn anchored(_: &Component, anchor: &str, escaped: &str) -> String {
+        format!("<a id=\"{anchor}\"></a>{escaped}")
+    }
+    fn type_ref(t: &DataType) -> String {
+        link(&t.name, &Self::type_target(t))
+    }
+    fn type_target(t: &DataType) -> String {
+        format!("../types/{}.md", t.slug)
+    }
+    fn iface_ref(t: &InterfaceType) -> String {
+        link(&t.name, &Self::iface_target(t))
+    }
+    fn iface_target(t: &InterfaceType) -> String {
+        format!("../interfaces/{}.md", t.slug)
+    }
+    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+        port_peer(cat, r)
+    }
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+        iface_peer(cat, r)
+    }
+}
+
 /// A GFM table; cells are already escaped. An empty cell becomes a space.
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     let head: Vec<String> = headers.iter().map(|h| inline(h)).collect();
@@ -146,24 +204,6 @@ fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
         w!(out, "| {} |", cells.join(" | "));
     }
     w!(out);
-}
-
-/// Facts as a two-column table (label, value).
-fn facts_table(out: &mut String, lang: Lang, facts: &[Fact]) {
-    let rows: Vec<Vec<String>> = facts
-        .iter()
-        .map(|f| vec![inline(&f.label), inline(&f.value)])
-        .collect();
-    table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
-}
-
-/// Facts inside one cell: `**label**: value<br>…`.
-fn facts_cell(facts: &[Fact]) -> String {
-    facts
-        .iter()
-        .map(|f| format!("**{}**: {}", inline(&f.label), inline(&f.value)))
-        .collect::<Vec<_>>()
-        .join("<br>")
 }
 
 /// A section heading with a stable explicit anchor before it.
@@ -182,14 +222,6 @@ fn component_href(c: &Component) -> String {
     format!("../components/{}.md", c.slug)
 }
 
-fn category_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("fact_uncategorized").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
 /// The category facet slug of a component (every component is in exactly one facet).
 fn category_slugs(cat: &Catalog) -> Vec<usize> {
     let mut of = vec![0; cat.components.len()];
@@ -201,22 +233,33 @@ fn category_slugs(cat: &Catalog) -> Vec<usize> {
     of
 }
 
-/// Links to up to [`PEER_CAP`] peers, then "… +N more" pointing at `rest_href`.
-fn peers_cell(items: Vec<(String, String)>, rest_href: Option<String>, lang: Lang) -> String {
-    let total = items.len();
-    let mut parts: Vec<String> = items
-        .into_iter()
-        .take(PEER_CAP)
-        .map(|(t, h)| link(&t, &h))
-        .collect();
-    if total > PEER_CAP {
-        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
-        parts.push(match rest_href {
-            Some(h) => link(&more, &h),
-            None => inline(&more),
-        });
-    }
-    parts.join("<br>")
+/// A data port peer as (text, link).
+fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+    let pc = &cat.components[r.component];
+    let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
+    (
+        format!("{} / {pn}", pc.profile.name()),
+        format!("{}#{}", component_href(pc), pc.anchors.data_ports[r.port]),
+    )
+}
+
+/// A service interface peer as (text, link).
+fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+    let pc = &cat.components[r.component];
+    let sp = &pc.profile.service_ports[r.port];
+    let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
+    (
+        format!(
+            "{} / {} / {iname}",
+            pc.profile.name(),
+            model::non_empty(&sp.name).unwrap_or("")
+        ),
+        format!(
+            "{}#{}",
+            component_href(pc),
+            pc.anchors.interfaces[r.port][r.interface]
+        ),
+    )
 }
 
 fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: Lang) -> String {
@@ -241,313 +284,11 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
         w!(out);
     }
 
-    heading(&mut out, 2, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table(&mut out, lang, &facts::basic_info(c, lang));
-
-    if let Some(doc) = &p.basic_info.doc {
-        let f = facts::document(doc, lang);
-        if !f.is_empty() {
-            heading(&mut out, 2, "sec-document", lang.t("fact_document"));
-            facts_table(&mut out, lang, &f);
-        }
-    }
-
-    if !p.data_ports.is_empty() {
-        heading(&mut out, 2, "sec-data-ports", lang.t("data_ports"));
-        let rows: Vec<Vec<String>> = p
-            .data_ports
-            .iter()
-            .enumerate()
-            .map(|(pi, port)| {
-                let dir = match port.direction() {
-                    Some(PortDirection::In) => lang.t("in").to_string(),
-                    Some(PortDirection::Out) => lang.t("out").to_string(),
-                    _ => opt(&port.port_type),
-                };
-                let ty = match port.type_.as_deref().and_then(|t| cat.data_type(t)) {
-                    Some(t) => link(&t.name, &format!("../types/{}.md", t.slug)),
-                    None => opt(&port.type_),
-                };
-                let desc = port
-                    .doc
-                    .as_ref()
-                    .map(|d| opt(&d.description))
-                    .unwrap_or_default();
-                let peers: Vec<(String, String)> = cat
-                    .data_port_peers(ci, pi)
-                    .iter()
-                    .map(|r| {
-                        let pc = &cat.components[r.component];
-                        let pn =
-                            model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
-                        (
-                            format!("{} / {pn}", pc.profile.name()),
-                            format!("{}#{}", component_href(pc), pc.anchors.data_ports[r.port]),
-                        )
-                    })
-                    .collect();
-                let rest = port
-                    .type_
-                    .as_deref()
-                    .and_then(|t| cat.data_type(t))
-                    .map(|t| format!("../types/{}.md", t.slug));
-                vec![
-                    format!(
-                        "<a id=\"{}\"></a>{}",
-                        c.anchors.data_ports[pi],
-                        opt(&port.name)
-                    ),
-                    dir,
-                    ty,
-                    desc,
-                    facts_cell(&facts::data_port(port, lang)),
-                    peers_cell(peers, rest, lang),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("direction"),
-                lang.t("data_type"),
-                lang.t("description"),
-                lang.t("fact_details"),
-                lang.t("connects_to"),
-            ],
-            &rows,
-        );
-    }
-
-    if !p.service_ports.is_empty() {
-        heading(&mut out, 2, "sec-service-ports", lang.t("service_ports"));
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            heading(
-                &mut out,
-                3,
-                &c.anchors.service_ports[si],
-                model::non_empty(&sp.name).unwrap_or("?"),
-            );
-            let pf = facts::service_port(sp, lang);
-            if !pf.is_empty() {
-                facts_table(&mut out, lang, &pf);
-            }
-            if sp.interfaces.is_empty() {
-                continue;
-            }
-            let rows: Vec<Vec<String>> = sp
-                .interfaces
-                .iter()
-                .enumerate()
-                .map(|(ii, i)| {
-                    let dir = match i.direction_kind() {
-                        Some(Direction::Provided) => lang.t("provided").to_string(),
-                        Some(Direction::Required) => lang.t("required").to_string(),
-                        None => opt(&i.direction),
-                    };
-                    let ty = match i.type_.as_deref().and_then(|t| cat.interface(t)) {
-                        Some(t) => link(&t.name, &format!("../interfaces/{}.md", t.slug)),
-                        None => opt(&i.type_),
-                    };
-                    let desc = i
-                        .doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default();
-                    let peers: Vec<(String, String)> = cat
-                        .interface_peers(ci, si, ii)
-                        .iter()
-                        .map(|r| {
-                            let pc = &cat.components[r.component];
-                            let sp = &pc.profile.service_ports[r.port];
-                            let iname =
-                                model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
-                            (
-                                format!(
-                                    "{} / {} / {iname}",
-                                    pc.profile.name(),
-                                    model::non_empty(&sp.name).unwrap_or("")
-                                ),
-                                format!(
-                                    "{}#{}",
-                                    component_href(pc),
-                                    pc.anchors.interfaces[r.port][r.interface]
-                                ),
-                            )
-                        })
-                        .collect();
-                    let rest = i
-                        .type_
-                        .as_deref()
-                        .and_then(|t| cat.interface(t))
-                        .map(|t| format!("../interfaces/{}.md", t.slug));
-                    vec![
-                        format!(
-                            "<a id=\"{}\"></a>{}",
-                            c.anchors.interfaces[si][ii],
-                            opt(&i.name)
-                        ),
-                        dir,
-                        ty,
-                        desc,
-                        facts_cell(&facts::service_interface(i, lang)),
-                        peers_cell(peers, rest, lang),
-                    ]
-                })
-                .collect();
-            table(
-                &mut out,
-                &[
-                    lang.t("interface"),
-                    lang.t("direction"),
-                    lang.t("type"),
-                    lang.t("description"),
-                    lang.t("fact_details"),
-                    lang.t("connects_to"),
-                ],
-                &rows,
-            );
-        }
-    }
-
-    let confs = p.configurations();
-    if !confs.is_empty() {
-        heading(&mut out, 2, "sec-configuration", lang.t("configuration"));
-        let rows: Vec<Vec<String>> = confs
-            .iter()
-            .enumerate()
-            .map(|(k, cf)| {
-                vec![
-                    format!(
-                        "<a id=\"{}\"></a>{}",
-                        c.anchors.configurations[k],
-                        opt(&cf.name)
-                    ),
-                    opt(&cf.type_),
-                    opt(&cf.default_value),
-                    opt(&cf.unit),
-                    facts::configuration_constraint(cf)
-                        .map(|s| inline(&s))
-                        .unwrap_or_default(),
-                    cf.doc
-                        .as_ref()
-                        .map(|d| opt(&d.description))
-                        .unwrap_or_default(),
-                    facts_cell(&facts::configuration(cf, lang)),
-                ]
-            })
-            .collect();
-        table(
-            &mut out,
-            &[
-                lang.t("name"),
-                lang.t("type"),
-                lang.t("default_value"),
-                lang.t("unit"),
-                lang.t("constraint"),
-                lang.t("description"),
-                lang.t("fact_details"),
-            ],
-            &rows,
-        );
-    }
-
-    heading(&mut out, 2, "sec-lifecycle", lang.t("actions"));
-    let rows: Vec<Vec<String>> = ActionKind::ALL
-        .iter()
-        .map(|&k| {
-            let a = p.action(k);
-            let (d, pre, post) = facts::action_description(a);
-            let implemented = match a {
-                Some(a) if a.is_implemented() => lang.t("yes"),
-                _ => lang.t("no"),
-            };
-            vec![
-                format!("`{}`", k.callback_name()),
-                implemented.to_string(),
-                d.map(inline).unwrap_or_default(),
-                pre.map(inline).unwrap_or_default(),
-                post.map(inline).unwrap_or_default(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("fact_callback"),
-            lang.t("implemented"),
-            lang.t("description"),
-            lang.t("pre_condition"),
-            lang.t("post_condition"),
-        ],
-        &rows,
-    );
-
-    if !p.parameters.is_empty() {
-        heading(&mut out, 2, "sec-system-parameters", lang.t("parameters"));
-        let rows: Vec<Vec<String>> = p
-            .parameters
-            .iter()
-            .map(|par| {
-                let (n, v) = facts::parameter(par);
-                vec![inline(n), inline(v)]
-            })
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("default_value")], &rows);
-    }
-
-    if let Some(l) = &p.language {
-        let lf = facts::language(l, lang);
-        if !lf.is_empty() || !l.targets.is_empty() {
-            heading(&mut out, 2, "sec-language", lang.t("language"));
-            if !lf.is_empty() {
-                facts_table(&mut out, lang, &lf);
-            }
-            for (ti, t) in l.targets.iter().enumerate() {
-                let tf = facts::target(t, lang);
-                if tf.is_empty() {
-                    continue;
-                }
-                w!(out, "**{} {}**", inline(lang.t("fact_target")), ti + 1);
-                w!(out);
-                facts_table(&mut out, lang, &tf);
-            }
-        }
-    }
-
-    let props = facts::component_properties(p, lang);
-    if !props.is_empty() {
-        heading(&mut out, 2, "sec-properties", lang.t("properties"));
-        let rows: Vec<Vec<String>> = props
-            .iter()
-            .map(|f| vec![inline(&f.label), inline(&f.value)])
-            .collect();
-        table(&mut out, &[lang.t("name"), lang.t("fact_value")], &rows);
-    }
-
-    let logs = facts::version_up_logs(p);
-    if !logs.is_empty() {
-        heading(
-            &mut out,
-            2,
-            "sec-version-history",
-            lang.t("version_up_logs"),
-        );
-        for l in logs {
-            w!(out, "- {}", inline(l));
-        }
-        w!(out);
-    }
-
-    let extras = facts::extras(p);
-    if !extras.is_empty() {
-        heading(&mut out, 2, "sec-extra", lang.t("extra"));
-        facts_table(&mut out, lang, &extras);
-    }
+    component_sections::<Md>(&mut out, cat, ci, lang);
     out
 }
 
-fn port_ref_rows(cat: &Catalog, refs: &[crate::catalog::PortRef]) -> Vec<Vec<String>> {
+fn port_ref_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
     refs.iter()
         .map(|r| {
             let c = &cat.components[r.component];
@@ -564,7 +305,7 @@ fn port_ref_rows(cat: &Catalog, refs: &[crate::catalog::PortRef]) -> Vec<Vec<Str
         .collect()
 }
 
-fn iface_ref_rows(cat: &Catalog, refs: &[crate::catalog::InterfaceRef]) -> Vec<Vec<String>> {
+fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
     refs.iter()
         .map(|r| {
             let c = &cat.components[r.component];
@@ -590,25 +331,6 @@ fn iface_ref_rows(cat: &Catalog, refs: &[crate::catalog::InterfaceRef]) -> Vec<V
         .collect()
 }
 
-fn list_facts(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
-    let mut f = Vec::new();
-    if !spellings.is_empty() {
-        f.push(Fact {
-            label: lang.t("fact_spellings").into(),
-            value: spellings.join(", "),
-        });
-    }
-    if !idl.is_empty() {
-        f.push(Fact {
-            label: lang.t("fact_idl_files").into(),
-            value: idl.join("\n"),
-        });
-    }
-    if !f.is_empty() {
-        facts_table(out, lang, &f);
-    }
-}
-
 fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
     let t = &cat.data_types[ti];
     let mut out = String::new();
@@ -621,7 +343,7 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
         link(lang.t("data_types"), "../types.md")
     );
     w!(out);
-    list_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-producers", "producers", &t.producers),
@@ -653,7 +375,7 @@ fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
         w!(out, "> **{}**", inline(lang.t("not_provided")));
         w!(out);
     }
-    list_facts(&mut out, lang, &t.spellings, &t.idl_files);
+    names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-providers", "providers", &t.providers),
@@ -686,15 +408,6 @@ fn component_rows(cat: &Catalog, members: &[usize], prefix: &str) -> Vec<Vec<Str
             ]
         })
         .collect()
-}
-
-fn component_cols(lang: Lang) -> [&'static str; 4] {
-    [
-        lang.t("name"),
-        lang.t("description"),
-        lang.t("vendor"),
-        lang.t("version"),
-    ]
 }
 
 fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
@@ -758,28 +471,9 @@ fn type_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out);
     w!(out, "{}", link(title, "index.md"));
     w!(out);
-    let rows: Vec<Vec<String>> = cat
-        .data_types
-        .iter()
-        .map(|t| {
-            vec![
-                link(&t.name, &format!("types/{}.md", t.slug)),
-                t.producers.len().to_string(),
-                t.consumers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("data_type"),
-            lang.t("producers"),
-            lang.t("consumers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    type_index_table::<Md>(&mut out, cat, lang, |t| {
+        link(&t.name, &format!("types/{}.md", t.slug))
+    });
     out
 }
 
@@ -789,32 +483,9 @@ fn interface_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out);
     w!(out, "{}", link(title, "index.md"));
     w!(out);
-    let rows: Vec<Vec<String>> = cat
-        .interfaces
-        .iter()
-        .map(|t| {
-            let mut name = link(&t.name, &format!("interfaces/{}.md", t.slug));
-            if t.is_unprovided() {
-                name.push_str(&format!(" ({})", inline(lang.t("not_provided"))));
-            }
-            vec![
-                name,
-                t.providers.len().to_string(),
-                t.requirers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("interface"),
-            lang.t("providers"),
-            lang.t("requirers"),
-            lang.t("fact_others"),
-        ],
-        &rows,
-    );
+    interface_index_table::<Md>(&mut out, cat, lang, |t| {
+        link(&t.name, &format!("interfaces/{}.md", t.slug))
+    });
     out
 }
 

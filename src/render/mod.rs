@@ -8,6 +8,7 @@ pub mod facts;
 pub mod html;
 pub mod json;
 pub mod markdown;
+pub mod text;
 
 use crate::catalog::Catalog;
 use crate::output::Sink;

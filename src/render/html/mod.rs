@@ -12,11 +12,11 @@ pub mod markdown;
 pub mod search;
 pub mod svg;
 
+use super::facts::{self, Fact, FactKind};
 use super::{RenderContext, Renderer, SiteOptions};
 use crate::catalog::{Catalog, Component, Facet, InterfaceRef, PortRef};
-use crate::constraint;
 use crate::i18n::Lang;
-use crate::model::{non_empty, ActionKind, Direction, Extra, PortDirection, Property};
+use crate::model::{non_empty, ActionKind, Direction, ExtraKind, PortDirection};
 use crate::output::Sink;
 use crate::types::{canonical_type, short_name};
 use anyhow::{Context, Result};
@@ -142,73 +142,43 @@ pub struct Field {
     pub html: Option<String>,
 }
 
-/// Collects the non-empty fields of a section.
-struct Fields {
-    lang: Lang,
-    v: Vec<Field>,
+impl From<Fact> for Field {
+    /// Plain values are escaped by the template; free text becomes sanitised Markdown.
+    fn from(f: Fact) -> Field {
+        let (text, html) = match f.kind {
+            FactKind::Value => (Some(f.value), None),
+            FactKind::Text => (None, Some(markdown::to_html(&f.value))),
+        };
+        Field {
+            label: f.label.into_owned(),
+            text,
+            html,
+        }
+    }
 }
 
-impl Fields {
-    fn new(lang: Lang) -> Self {
-        Fields {
-            lang,
-            v: Vec::new(),
-        }
-    }
-    fn text(&mut self, key: &str, value: &Option<String>) -> &mut Self {
-        if let Some(s) = non_empty(value) {
-            self.raw(key, s.to_string());
-        }
-        self
-    }
-    fn raw(&mut self, key: &str, value: String) -> &mut Self {
-        self.v.push(Field {
-            label: self.lang.t(key).to_string(),
-            text: Some(value),
-            html: None,
-        });
-        self
-    }
-    fn md(&mut self, key: &str, value: &Option<String>) -> &mut Self {
-        if let Some(s) = non_empty(value) {
-            self.v.push(Field {
-                label: self.lang.t(key).to_string(),
-                text: None,
-                html: Some(markdown::to_html(s)),
-            });
-        }
-        self
-    }
-    fn list(&mut self, key: &str, values: &[String]) -> &mut Self {
-        let v: Vec<&str> = values
-            .iter()
-            .map(|s| s.trim())
-            .filter(|s| !s.is_empty())
-            .collect();
-        if !v.is_empty() {
-            self.raw(key, v.join(", "));
-        }
-        self
-    }
-    fn properties(&mut self, props: &[Property], skip: &[&str]) -> &mut Self {
-        for p in props {
-            let name = p.name.as_deref().unwrap_or("");
-            if skip.contains(&name) {
-                continue;
-            }
-            if non_empty(&p.name).is_some() || non_empty(&p.value).is_some() {
-                self.v.push(Field {
-                    label: format!("{} {}", self.lang.t("properties"), name.trim()),
-                    text: Some(p.value.clone().unwrap_or_default()),
-                    html: None,
-                });
-            }
-        }
-        self
-    }
-    fn done(&mut self) -> Vec<Field> {
-        std::mem::take(&mut self.v)
-    }
+/// The fields of a section: `description` (free text shown first, when the section has one)
+/// followed by `facts`.
+fn fields(lang: Lang, description: Option<&Option<String>>, facts: Vec<Fact>) -> Vec<Field> {
+    let lead = description.and_then(|d| non_empty(d)).map(|d| Field {
+        label: lang.t("description").to_string(),
+        text: None,
+        html: Some(markdown::to_html(d)),
+    });
+    lead.into_iter()
+        .chain(facts.into_iter().map(Field::from))
+        .collect()
+}
+
+/// Facts as (key, value) rows of a two-column table.
+fn key_values(facts: Vec<Fact>) -> Vec<KeyValue> {
+    facts
+        .into_iter()
+        .map(|f| KeyValue {
+            key: f.label.into_owned(),
+            value: f.value,
+        })
+        .collect()
 }
 
 /// A component in lists (index, category and vendor pages).
@@ -302,7 +272,6 @@ struct KeyValue {
 
 #[derive(Serialize)]
 struct ExtraRow {
-    path: String,
     kind: &'static str,
     name: String,
     value: String,
@@ -361,25 +330,6 @@ fn others_than<T>(refs: &[T], ci: usize, component: impl Fn(&T) -> usize) -> usi
     refs.len() - (hi - lo)
 }
 
-fn flatten_extras(path: &str, e: &Extra, out: &mut Vec<ExtraRow>) {
-    out.push(ExtraRow {
-        path: path.to_string(),
-        kind: match e.kind {
-            crate::model::ExtraKind::Attribute => "attribute",
-            crate::model::ExtraKind::Element => "element",
-            crate::model::ExtraKind::Key => "key",
-        },
-        name: e.name.clone(),
-        value: e.value.clone().unwrap_or_default(),
-    });
-    if !e.children.is_empty() {
-        let child_path = format!("{path} / {}", e.name);
-        for c in &e.children {
-            flatten_extras(&child_path, c, out);
-        }
-    }
-}
-
 impl<'a> Site<'a> {
     fn t(&self, key: &str) -> &'static str {
         self.lang.t(key)
@@ -424,6 +374,42 @@ impl<'a> Site<'a> {
                 href: format!("{href}#{}", c.anchors.interfaces[r.port][r.interface]),
             },
         }
+    }
+
+    /// The "connects to" links of a port of component `ci`: up to [`PEER_CAP`] peers of other
+    /// components (`all`, sorted by component), then a link to the type or interface page
+    /// (`type_ref`) saying how many more there are (`more_key`).
+    fn peers<R>(
+        &self,
+        ci: usize,
+        all: &[R],
+        component: impl Fn(&R) -> usize,
+        link: impl Fn(&R) -> PortUse,
+        type_ref: &Option<PortTypeRef>,
+        more_key: &str,
+    ) -> (Vec<Link>, Option<Link>) {
+        let others = others_than(all, ci, &component);
+        let peers = all
+            .iter()
+            .filter(|r| component(r) != ci)
+            .take(PEER_CAP)
+            .map(|r| {
+                let u = link(r);
+                Link {
+                    text: format!("{}.{}", u.component.text, u.port.text),
+                    href: u.port.href,
+                }
+            })
+            .collect();
+        let more = type_ref
+            .as_ref()
+            .and_then(|t| t.href.clone())
+            .filter(|_| others > PEER_CAP)
+            .map(|href| Link {
+                text: format!("+{} — {}", others - PEER_CAP, self.t(more_key)),
+                href,
+            });
+        (peers, more)
     }
 
     fn summary(&self, c: &Component) -> ComponentSummary {
@@ -479,45 +465,12 @@ impl<'a> Site<'a> {
             href: format!("{root}categories/{}.html", sum.category_slug),
         });
 
-        let mut f = Fields::new(lang);
-        f.text("id_label", &p.id)
-            .text("version", &b.version)
-            .text("vendor", &b.vendor)
-            .text("category", &b.category)
-            .text("component_type", &b.component_type)
-            .text("component_kind", &b.component_kind)
-            .text("rtc_type", &b.rtc_type)
-            .text("activity_type", &b.activity_type)
-            .text("execution_type", &b.execution_type);
-        if let Some(r) = non_empty(&b.execution_rate) {
-            f.raw("execution_rate", format!("{r} Hz"));
-        }
-        f.text("max_instances", &b.max_instances);
-        if let Some(l) = &p.language {
-            f.text("language", &l.kind);
-        }
-        f.text("creation_date", &b.creation_date)
-            .text("update_date", &b.update_date);
-        if let Some(d) = &b.doc {
-            f.text("creator", &d.creator).text("license", &d.license);
-        }
-        f.md("abstract", &b.abstract_)
-            .text("hardware_profile", &b.hardware_profile)
-            .md("comment", &b.comment)
-            .text("save_project", &b.save_project)
-            .text("profile_version", &p.version)
-            .raw("source", c.source.clone());
-        let header = f.done();
-
-        let document = match &b.doc {
-            Some(d) => f
-                .md("description", &d.description)
-                .md("inout", &d.inout)
-                .md("algorithm", &d.algorithm)
-                .md("reference", &d.reference)
-                .done(),
-            None => Vec::new(),
-        };
+        let header = fields(lang, None, facts::basic_info(c, lang));
+        let document = b
+            .doc
+            .as_ref()
+            .map(|d| fields(lang, None, facts::document(d, lang)))
+            .unwrap_or_default();
 
         // Data ports.
         let mut diagram_data = Vec::new();
@@ -541,84 +494,27 @@ impl<'a> Site<'a> {
                 class: dir_class,
                 anchor: anchor.clone(),
             });
-            f.text("interface_type", &dp.interface_type)
-                .text("dataflow_type", &dp.dataflow_type)
-                .text("subscription_type", &dp.subscription_type);
-            if let Some(k) = &dp.constraint {
-                let d = constraint::describe(k);
-                if !d.is_empty() {
-                    f.raw("constraint", d);
-                }
-            }
-            f.text("idl_file", &dp.idl_file);
-            if let Some(d) = &dp.doc {
-                f.md("description", &d.description)
-                    .md("doc_type", &d.type_)
-                    .md("number", &d.number)
-                    .md("semantics", &d.semantics)
-                    .md("unit", &d.unit)
-                    .md("occurrence", &d.occurrence)
-                    .md("operation", &d.operation);
-            }
-            f.md("comment", &dp.comment)
-                .text("variable_name", &dp.variable_name)
-                .text("position", &dp.position)
-                .properties(&dp.properties, &[]);
-            let details = f.done();
+            let details = fields(
+                lang,
+                dp.doc.as_ref().map(|d| &d.description),
+                facts::data_port_attributes(dp, lang),
+            );
             let events = dp
                 .events
                 .iter()
-                .map(|e| {
-                    f.text("type", &e.type_)
-                        .text("source", &e.source)
-                        .text("condition", &e.condition);
-                    if let Some(t) = non_empty(&e.target) {
-                        f.raw("event_target", t.to_string());
-                    }
-                    if let Some(d) = &e.doc {
-                        f.md("description", &d.description)
-                            .md("doc_type", &d.type_)
-                            .md("number", &d.number)
-                            .md("semantics", &d.semantics)
-                            .md("unit", &d.unit)
-                            .md("occurrence", &d.occurrence)
-                            .md("operation", &d.operation);
-                    }
-                    EventRow {
-                        name: e.name.clone().unwrap_or_default(),
-                        fields: f.done(),
-                    }
+                .map(|e| EventRow {
+                    name: e.name.clone().unwrap_or_default(),
+                    fields: fields(lang, None, facts::event(e, lang)),
                 })
                 .collect();
-            let all_peers = self.catalog.data_port_peers(ci, pi);
-            let others = others_than(all_peers, ci, |r| r.component);
-            let peers = all_peers
-                .iter()
-                .filter(|r| r.component != ci)
-                .take(PEER_CAP)
-                .map(|r| {
-                    let u = self.port_link(root, r);
-                    Link {
-                        text: format!("{}.{}", u.component.text, u.port.text),
-                        href: u.port.href,
-                    }
-                })
-                .collect();
-            let peers_more = (others > PEER_CAP)
-                .then(|| {
-                    type_ref
-                        .as_ref()
-                        .and_then(|t| t.href.clone())
-                        .map(|href| Link {
-                            text: format!(
-                                "+{} — {}",
-                                others - PEER_CAP,
-                                self.t("more_on_type_page")
-                            ),
-                            href,
-                        })
-                })
-                .flatten();
+            let (peers, peers_more) = self.peers(
+                ci,
+                self.catalog.data_port_peers(ci, pi),
+                |r| r.component,
+                |r| self.port_link(root, r),
+                &type_ref,
+                "more_on_type_page",
+            );
             data_ports.push(DataPortRow {
                 anchor,
                 direction,
@@ -638,20 +534,7 @@ impl<'a> Site<'a> {
         let mut service_ports = Vec::new();
         for (si, sp) in p.service_ports.iter().enumerate() {
             let anchor = c.anchors.service_ports[si].clone();
-            if let Some(d) = &sp.doc {
-                f.md("description", &d.description)
-                    .md("if_description", &d.ifdescription);
-            }
-            let methods: Vec<String> = sp
-                .trans_methods
-                .iter()
-                .filter_map(|m| m.kind.clone())
-                .collect();
-            f.md("comment", &sp.comment)
-                .text("position", &sp.position)
-                .list("trans_methods", &methods)
-                .properties(&sp.properties, &[]);
-            let details = f.done();
+            let details = fields(lang, None, facts::service_port(sp, lang));
             let mut interfaces = Vec::new();
             let mut diagram_ifaces = Vec::new();
             for (ii, i) in sp.interfaces.iter().enumerate() {
@@ -676,55 +559,26 @@ impl<'a> Site<'a> {
                         .unwrap_or_default(),
                     anchor: ianchor.clone(),
                 });
-                f.text("instance_name", &i.instance_name)
-                    .text("idl_file", &i.idl_file)
-                    .text("idl_path", &i.path)
-                    .text("variable_name", &i.variable_name);
-                if let Some(d) = &i.doc {
-                    f.md("description", &d.description)
-                        .md("argument", &d.doc_argument)
-                        .md("return", &d.doc_return)
-                        .md("exception", &d.doc_exception)
-                        .md("pre_condition", &d.doc_pre_condition)
-                        .md("post_condition", &d.doc_post_condition);
-                }
-                f.md("comment", &i.comment).properties(&i.properties, &[]);
-                let all_peers = self.catalog.interface_peers(ci, si, ii);
-                let others = others_than(all_peers, ci, |r| r.component);
-                let peers = all_peers
-                    .iter()
-                    .filter(|r| r.component != ci)
-                    .take(PEER_CAP)
-                    .map(|r| {
-                        let u = self.iface_link(root, r);
-                        Link {
-                            text: format!("{}.{}", u.component.text, u.port.text),
-                            href: u.port.href,
-                        }
-                    })
-                    .collect();
-                let peers_more = (others > PEER_CAP)
-                    .then(|| {
-                        type_ref
-                            .as_ref()
-                            .and_then(|t| t.href.clone())
-                            .map(|href| Link {
-                                text: format!(
-                                    "+{} — {}",
-                                    others - PEER_CAP,
-                                    self.t("more_on_interface_page")
-                                ),
-                                href,
-                            })
-                    })
-                    .flatten();
+                let details = fields(
+                    lang,
+                    i.doc.as_ref().map(|d| &d.description),
+                    facts::service_interface(i, lang),
+                );
+                let (peers, peers_more) = self.peers(
+                    ci,
+                    self.catalog.interface_peers(ci, si, ii),
+                    |r| r.component,
+                    |r| self.iface_link(root, r),
+                    &type_ref,
+                    "more_on_interface_page",
+                );
                 interfaces.push(InterfaceRow {
                     anchor: ianchor,
                     direction,
                     dir_class,
                     name: i.name.clone().unwrap_or_default(),
                     type_ref,
-                    details: f.done(),
+                    details,
                     peers,
                     peers_more,
                 });
@@ -748,33 +602,20 @@ impl<'a> Site<'a> {
             .configurations()
             .iter()
             .enumerate()
-            .map(|(k, conf)| {
-                if let Some(d) = &conf.doc {
-                    f.md("description", &d.description)
-                        .md("dataname", &d.dataname)
-                        .md("default_value", &d.default_value)
-                        .md("unit", &d.unit)
-                        .md("range", &d.range)
-                        .md("constraint", &d.constraint);
-                }
-                f.md("comment", &conf.comment)
-                    .text("variable_name", &conf.variable_name)
-                    .properties(&conf.properties, &["__widget__", "__step__"]);
-                ConfigurationRow {
-                    anchor: c.anchors.configurations[k].clone(),
-                    name: conf.name.clone().unwrap_or_default(),
-                    type_: non_empty(&conf.type_).unwrap_or("").to_string(),
-                    default: conf.default_value.clone().unwrap_or_default(),
-                    unit: non_empty(&conf.unit).unwrap_or("").to_string(),
-                    constraint: conf
-                        .constraint
-                        .as_ref()
-                        .map(constraint::describe)
-                        .unwrap_or_default(),
-                    widget: conf.widget().unwrap_or("").to_string(),
-                    step: conf.step().unwrap_or("").to_string(),
-                    details: f.done(),
-                }
+            .map(|(k, conf)| ConfigurationRow {
+                anchor: c.anchors.configurations[k].clone(),
+                name: conf.name.clone().unwrap_or_default(),
+                type_: non_empty(&conf.type_).unwrap_or("").to_string(),
+                default: conf.default_value.clone().unwrap_or_default(),
+                unit: non_empty(&conf.unit).unwrap_or("").to_string(),
+                constraint: facts::configuration_constraint(conf).unwrap_or_default(),
+                widget: conf.widget().unwrap_or("").to_string(),
+                step: conf.step().unwrap_or("").to_string(),
+                details: fields(
+                    lang,
+                    conf.doc.as_ref().map(|d| &d.description),
+                    facts::configuration(conf, lang),
+                ),
             })
             .collect();
 
@@ -783,15 +624,10 @@ impl<'a> Site<'a> {
             .iter()
             .map(|&k| {
                 let a = p.action(k);
-                if let Some(d) = a.and_then(|a| a.doc.as_ref()) {
-                    f.md("description", &d.description)
-                        .md("pre_condition", &d.pre_condition)
-                        .md("post_condition", &d.post_condition);
-                }
                 ActionRow {
                     name: k.callback_name(),
                     implemented: a.map(|a| a.is_implemented()).unwrap_or(false),
-                    details: f.done(),
+                    details: fields(lang, None, facts::action(a, lang)),
                 }
             })
             .collect();
@@ -821,59 +657,42 @@ impl<'a> Site<'a> {
         let parameters = p
             .parameters
             .iter()
-            .map(|par| KeyValue {
-                key: par.name.clone().unwrap_or_default(),
-                value: par.default_value.clone().unwrap_or_default(),
+            .map(|par| {
+                let (key, value) = facts::parameter(par);
+                KeyValue {
+                    key: key.to_string(),
+                    value: value.to_string(),
+                }
             })
             .collect();
         let (language, targets) = match &p.language {
-            Some(l) => {
-                let targets = l
-                    .targets
+            Some(l) => (
+                fields(lang, None, facts::language(l, lang)),
+                l.targets
                     .iter()
-                    .map(|t| {
-                        f.text("lang_version", &t.lang_version)
-                            .text("os", &t.os)
-                            .list("os_versions", &t.os_versions)
-                            .text("other", &t.other)
-                            .list("cpus", &t.cpus)
-                            .text("cpu_other", &t.cpu_other);
-                        for lib in &t.libraries {
-                            let parts: Vec<String> = [&lib.name, &lib.version, &lib.other]
-                                .iter()
-                                .filter_map(|v| non_empty(v).map(str::to_string))
-                                .collect();
-                            if !parts.is_empty() {
-                                f.raw("libraries", parts.join(" "));
-                            }
-                        }
-                        f.done()
-                    })
-                    .filter(|v: &Vec<Field>| !v.is_empty())
-                    .collect();
-                (f.text("language", &l.kind).done(), targets)
-            }
+                    .map(|t| fields(lang, None, facts::target(t, lang)))
+                    .filter(|v| !v.is_empty())
+                    .collect(),
+            ),
             None => (Vec::new(), Vec::new()),
         };
-        let properties = b
-            .properties
-            .iter()
-            .filter(|pr| non_empty(&pr.name).is_some() || non_empty(&pr.value).is_some())
-            .map(|pr| KeyValue {
-                key: pr.name.clone().unwrap_or_default(),
-                value: pr.value.clone().unwrap_or_default(),
+        let properties = key_values(facts::component_properties(p, lang));
+        let version_up_logs = facts::version_up_logs(p)
+            .into_iter()
+            .map(str::to_string)
+            .collect();
+        let extras = facts::extras_with_kind(p)
+            .into_iter()
+            .map(|(f, kind)| ExtraRow {
+                kind: match kind {
+                    ExtraKind::Attribute => "attribute",
+                    ExtraKind::Element => "element",
+                    ExtraKind::Key => "key",
+                },
+                name: f.label.into_owned(),
+                value: f.value,
             })
             .collect();
-        let version_up_logs = b
-            .version_up_logs
-            .iter()
-            .filter(|s| !s.trim().is_empty())
-            .cloned()
-            .collect();
-        let mut extras = Vec::new();
-        for (path, e) in p.all_extras() {
-            flatten_extras(&path, e, &mut extras);
-        }
 
         ComponentPage {
             root,
@@ -904,6 +723,16 @@ struct Page {
     path: String,
     template: &'static str,
     context: Value,
+}
+
+/// Breadcrumbs to the catalogue and a section index (`key` names the section).
+fn crumbs_section(lang: Lang, root: &str, key: &str) -> Vec<Link> {
+    let mut crumbs = crumbs_home(lang, root);
+    crumbs.push(Link {
+        text: lang.t(key).to_string(),
+        href: "index.html".into(),
+    });
+    crumbs
 }
 
 fn crumbs_home(lang: Lang, root: &str) -> Vec<Link> {
@@ -1169,11 +998,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
         });
         for f in facets.iter() {
             let name = site.facet_name(&f.name, empty_key);
-            let mut crumbs = crumbs_home(lang, root);
-            crumbs.push(Link {
-                text: lang.t(key).to_string(),
-                href: "index.html".into(),
-            });
+            let crumbs = crumbs_section(lang, root, key);
             let comps: Vec<&ComponentSummary> =
                 f.components.iter().map(|&i| &site.summaries[i]).collect();
             pages.push(Page {
@@ -1231,11 +1056,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
             },
         });
         for t in &catalog.data_types {
-            let mut crumbs = crumbs_home(lang, root);
-            crumbs.push(Link {
-                text: lang.t("data_types").to_string(),
-                href: "index.html".into(),
-            });
+            let crumbs = crumbs_section(lang, root, "data_types");
             let uses = |v: &[PortRef]| -> Vec<PortUse> {
                 v.iter().map(|r| site.port_link(root, r)).collect()
             };
@@ -1290,11 +1111,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
             },
         });
         for t in &catalog.interfaces {
-            let mut crumbs = crumbs_home(lang, root);
-            crumbs.push(Link {
-                text: lang.t("interfaces").to_string(),
-                href: "index.html".into(),
-            });
+            let crumbs = crumbs_section(lang, root, "interfaces");
             let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
                 v.iter().map(|r| site.iface_link(root, r)).collect()
             };

@@ -1,0 +1,461 @@
+//! Building blocks shared by the text renderers (Markdown and Doxygen).
+//!
+//! Both renderers lay out the same tables of [`Fact`]s and the same peer lists; they differ
+//! only in how text is escaped, how a cross-reference is written and how a table looks, which
+//! is what a [`Markup`] says.
+
+use super::facts::{self, Fact};
+use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
+use crate::i18n::Lang;
+use crate::model::{self, ActionKind, Direction, PortDirection};
+
+/// At most this many "connects to" peers are listed per port; the rest are on the type or
+/// interface page.
+pub const PEER_CAP: usize = 12;
+
+/// The syntax of one text output format.
+pub trait Markup {
+    /// Escapes plain text for an inline position (a table cell, a heading).
+    fn esc(s: &str) -> String;
+    /// A cross-reference with plain `text`; `target` (a URL or a label) is generated and safe.
+    fn link(text: &str, target: &str) -> String;
+    /// Bold text; `escaped` is already escaped.
+    fn bold(escaped: &str) -> String;
+    /// A table with plain-text `headers`; the cells of `rows` are already escaped.
+    fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]);
+    /// Inline code; `s` is a generated identifier.
+    fn code(s: &str) -> String;
+    /// A paragraph of already escaped text.
+    fn paragraph(out: &mut String, escaped: &str);
+    /// A bulleted list of plain-text items.
+    fn list(out: &mut String, items: &[&str]);
+    /// A heading of `level` (2 or 3) on component `c`'s page, with the stable `anchor`.
+    fn heading(out: &mut String, c: &Component, level: usize, anchor: &str, text: &str);
+    /// A table cell of already escaped text with the stable `anchor` of `c`'s page.
+    fn anchored(c: &Component, anchor: &str, escaped: &str) -> String;
+    /// A link to a data type's page, as a table cell.
+    fn type_ref(t: &DataType) -> String;
+    /// The target of a data type's page, for [`Markup::link`].
+    fn type_target(t: &DataType) -> String;
+    /// A link to an interface's page, as a table cell.
+    fn iface_ref(t: &InterfaceType) -> String;
+    /// The target of an interface's page, for [`Markup::link`].
+    fn iface_target(t: &InterfaceType) -> String;
+    /// A data port peer as (text, target).
+    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String);
+    /// A service interface peer as (text, target).
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String);
+}
+
+/// Facts as a two-column table (label, value).
+pub fn facts_table<M: Markup>(out: &mut String, lang: Lang, facts: &[Fact]) {
+    let rows: Vec<Vec<String>> = facts
+        .iter()
+        .map(|f| vec![M::esc(&f.label), M::esc(&f.value)])
+        .collect();
+    M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
+}
+
+/// Facts inside one cell: bold label, colon, value; one line each.
+pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
+    facts
+        .iter()
+        .map(|f| format!("{}: {}", M::bold(&M::esc(&f.label)), M::esc(&f.value)))
+        .collect::<Vec<_>>()
+        .join("<br>")
+}
+
+/// Links to up to [`PEER_CAP`] peers, given as (text, target), then "… +N more" pointing at
+/// `rest` (the type or interface page), if there is one.
+pub fn peers_cell<M: Markup>(
+    items: Vec<(String, String)>,
+    rest: Option<String>,
+    lang: Lang,
+) -> String {
+    let total = items.len();
+    let mut parts: Vec<String> = items
+        .into_iter()
+        .take(PEER_CAP)
+        .map(|(text, target)| M::link(&text, &target))
+        .collect();
+    if total > PEER_CAP {
+        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
+        parts.push(match rest {
+            Some(target) => M::link(&more, &target),
+            None => M::esc(&more),
+        });
+    }
+    parts.join("<br>")
+}
+
+/// A category's display name; the empty category has a translated name.
+pub fn category_name(name: &str, lang: Lang) -> String {
+    if name.is_empty() {
+        lang.t("fact_uncategorized").to_string()
+    } else {
+        name.to_string()
+    }
+}
+
+/// The spellings and IDL files of a data type or interface as a facts table (nothing when
+/// both are empty).
+pub fn names_facts<M: Markup>(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
+    let mut f = Vec::new();
+    if !spellings.is_empty() {
+        f.push(Fact::new(lang.t("fact_spellings"), spellings.join(", ")));
+    }
+    if !idl.is_empty() {
+        f.push(Fact::new(lang.t("fact_idl_files"), idl.join("\n")));
+    }
+    if !f.is_empty() {
+        facts_table::<M>(out, lang, &f);
+    }
+}
+
+/// Column headers of a component list.
+pub fn component_cols(lang: Lang) -> [&'static str; 4] {
+    [
+        lang.t("name"),
+        lang.t("description"),
+        lang.t("vendor"),
+        lang.t("version"),
+    ]
+}
+
+fn esc_opt<M: Markup>(s: &Option<String>) -> String {
+    model::non_empty(s).map(M::esc).unwrap_or_default()
+}
+
+/// The sections of a component page after its title and lead text: basic info, Document
+/// Profile, data ports, service ports, configuration, lifecycle, system parameters, language,
+/// properties, version history and extras — the same tables in every text format.
+pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize, lang: Lang) {
+    let c = &cat.components[ci];
+    let p = &c.profile;
+    M::heading(out, c, 2, "sec-basic-info", lang.t("fact_basic_info"));
+    facts_table::<M>(out, lang, &facts::basic_info(c, lang));
+
+    if let Some(doc) = &p.basic_info.doc {
+        let f = facts::document(doc, lang);
+        if !f.is_empty() {
+            M::heading(out, c, 2, "sec-document", lang.t("fact_document"));
+            facts_table::<M>(out, lang, &f);
+        }
+    }
+
+    if !p.data_ports.is_empty() {
+        M::heading(out, c, 2, "sec-data-ports", lang.t("data_ports"));
+        let rows: Vec<Vec<String>> = p
+            .data_ports
+            .iter()
+            .enumerate()
+            .map(|(pi, port)| {
+                let dir = match port.direction() {
+                    Some(PortDirection::In) => M::esc(lang.t("in")),
+                    Some(PortDirection::Out) => M::esc(lang.t("out")),
+                    _ => esc_opt::<M>(&port.port_type),
+                };
+                let dt = port.type_.as_deref().and_then(|t| cat.data_type(t));
+                let ty = match dt {
+                    Some(t) => M::type_ref(t),
+                    None => esc_opt::<M>(&port.type_),
+                };
+                let desc = port
+                    .doc
+                    .as_ref()
+                    .map(|d| esc_opt::<M>(&d.description))
+                    .unwrap_or_default();
+                let peers: Vec<(String, String)> = cat
+                    .data_port_peers(ci, pi)
+                    .iter()
+                    .map(|r| M::port_peer(cat, r))
+                    .collect();
+                let rest = dt.map(M::type_target);
+                vec![
+                    M::anchored(c, &c.anchors.data_ports[pi], &esc_opt::<M>(&port.name)),
+                    dir,
+                    ty,
+                    desc,
+                    facts_cell::<M>(&facts::data_port(port, lang)),
+                    peers_cell::<M>(peers, rest, lang),
+                ]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("name"),
+                lang.t("direction"),
+                lang.t("data_type"),
+                lang.t("description"),
+                lang.t("fact_details"),
+                lang.t("connects_to"),
+            ],
+            &rows,
+        );
+    }
+
+    if !p.service_ports.is_empty() {
+        M::heading(out, c, 2, "sec-service-ports", lang.t("service_ports"));
+        for (si, sp) in p.service_ports.iter().enumerate() {
+            M::heading(
+                out,
+                c,
+                3,
+                &c.anchors.service_ports[si],
+                model::non_empty(&sp.name).unwrap_or("?"),
+            );
+            let pf = facts::service_port(sp, lang);
+            if !pf.is_empty() {
+                facts_table::<M>(out, lang, &pf);
+            }
+            if sp.interfaces.is_empty() {
+                continue;
+            }
+            let rows: Vec<Vec<String>> = sp
+                .interfaces
+                .iter()
+                .enumerate()
+                .map(|(ii, i)| {
+                    let dir = match i.direction_kind() {
+                        Some(Direction::Provided) => M::esc(lang.t("provided")),
+                        Some(Direction::Required) => M::esc(lang.t("required")),
+                        None => esc_opt::<M>(&i.direction),
+                    };
+                    let it = i.type_.as_deref().and_then(|t| cat.interface(t));
+                    let ty = match it {
+                        Some(t) => M::iface_ref(t),
+                        None => esc_opt::<M>(&i.type_),
+                    };
+                    let desc = i
+                        .doc
+                        .as_ref()
+                        .map(|d| esc_opt::<M>(&d.description))
+                        .unwrap_or_default();
+                    let peers: Vec<(String, String)> = cat
+                        .interface_peers(ci, si, ii)
+                        .iter()
+                        .map(|r| M::iface_peer(cat, r))
+                        .collect();
+                    let rest = it.map(M::iface_target);
+                    vec![
+                        M::anchored(c, &c.anchors.interfaces[si][ii], &esc_opt::<M>(&i.name)),
+                        dir,
+                        ty,
+                        desc,
+                        facts_cell::<M>(&facts::service_interface(i, lang)),
+                        peers_cell::<M>(peers, rest, lang),
+                    ]
+                })
+                .collect();
+            M::table(
+                out,
+                &[
+                    lang.t("interface"),
+                    lang.t("direction"),
+                    lang.t("type"),
+                    lang.t("description"),
+                    lang.t("fact_details"),
+                    lang.t("connects_to"),
+                ],
+                &rows,
+            );
+        }
+    }
+
+    let confs = p.configurations();
+    if !confs.is_empty() {
+        M::heading(out, c, 2, "sec-configuration", lang.t("configuration"));
+        let rows: Vec<Vec<String>> = confs
+            .iter()
+            .enumerate()
+            .map(|(k, cf)| {
+                vec![
+                    M::anchored(c, &c.anchors.configurations[k], &esc_opt::<M>(&cf.name)),
+                    esc_opt::<M>(&cf.type_),
+                    esc_opt::<M>(&cf.default_value),
+                    esc_opt::<M>(&cf.unit),
+                    facts::configuration_constraint(cf)
+                        .map(|s| M::esc(&s))
+                        .unwrap_or_default(),
+                    cf.doc
+                        .as_ref()
+                        .map(|d| esc_opt::<M>(&d.description))
+                        .unwrap_or_default(),
+                    facts_cell::<M>(&facts::configuration(cf, lang)),
+                ]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("name"),
+                lang.t("type"),
+                lang.t("default_value"),
+                lang.t("unit"),
+                lang.t("constraint"),
+                lang.t("description"),
+                lang.t("fact_details"),
+            ],
+            &rows,
+        );
+    }
+
+    M::heading(out, c, 2, "sec-lifecycle", lang.t("actions"));
+    let rows: Vec<Vec<String>> = ActionKind::ALL
+        .iter()
+        .map(|&k| {
+            let a = p.action(k);
+            let (d, pre, post) = facts::action_description(a);
+            let implemented = match a {
+                Some(a) if a.is_implemented() => lang.t("yes"),
+                _ => lang.t("no"),
+            };
+            vec![
+                M::code(k.callback_name()),
+                M::esc(implemented),
+                d.map(M::esc).unwrap_or_default(),
+                pre.map(M::esc).unwrap_or_default(),
+                post.map(M::esc).unwrap_or_default(),
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("fact_callback"),
+            lang.t("implemented"),
+            lang.t("description"),
+            lang.t("pre_condition"),
+            lang.t("post_condition"),
+        ],
+        &rows,
+    );
+
+    if !p.parameters.is_empty() {
+        M::heading(out, c, 2, "sec-system-parameters", lang.t("parameters"));
+        let rows: Vec<Vec<String>> = p
+            .parameters
+            .iter()
+            .map(|par| {
+                let (n, v) = facts::parameter(par);
+                vec![M::esc(n), M::esc(v)]
+            })
+            .collect();
+        M::table(out, &[lang.t("name"), lang.t("default_value")], &rows);
+    }
+
+    if let Some(l) = &p.language {
+        let lf = facts::language(l, lang);
+        let targets: Vec<(usize, Vec<Fact>)> = l
+            .targets
+            .iter()
+            .map(|t| facts::target(t, lang))
+            .enumerate()
+            .filter(|(_, f)| !f.is_empty())
+            .collect();
+        if !lf.is_empty() || !targets.is_empty() {
+            M::heading(out, c, 2, "sec-language", lang.t("language"));
+            if !lf.is_empty() {
+                facts_table::<M>(out, lang, &lf);
+            }
+            for (ti, tf) in &targets {
+                M::paragraph(
+                    out,
+                    &M::bold(&format!("{} {}", M::esc(lang.t("fact_target")), ti + 1)),
+                );
+                facts_table::<M>(out, lang, tf);
+            }
+        }
+    }
+
+    let props = facts::component_properties(p, lang);
+    if !props.is_empty() {
+        M::heading(out, c, 2, "sec-properties", lang.t("properties"));
+        let rows: Vec<Vec<String>> = props
+            .iter()
+            .map(|f| vec![M::esc(&f.label), M::esc(&f.value)])
+            .collect();
+        M::table(out, &[lang.t("name"), lang.t("fact_value")], &rows);
+    }
+
+    let logs = facts::version_up_logs(p);
+    if !logs.is_empty() {
+        M::heading(out, c, 2, "sec-version-history", lang.t("version_up_logs"));
+        M::list(out, &logs);
+    }
+
+    let extras = facts::extras(p);
+    if !extras.is_empty() {
+        M::heading(out, c, 2, "sec-extra", lang.t("extra"));
+        facts_table::<M>(out, lang, &extras);
+    }
+}
+
+/// The table of every data type with its producer, consumer and other counts; `name` makes
+/// the first cell (a link to the type's page).
+pub fn type_index_table<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    lang: Lang,
+    name: impl Fn(&DataType) -> String,
+) {
+    let rows: Vec<Vec<String>> = cat
+        .data_types
+        .iter()
+        .map(|t| {
+            vec![
+                name(t),
+                t.producers.len().to_string(),
+                t.consumers.len().to_string(),
+                t.others.len().to_string(),
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("data_type"),
+            lang.t("producers"),
+            lang.t("consumers"),
+            lang.t("fact_others"),
+        ],
+        &rows,
+    );
+}
+
+/// The table of every interface with its provider, requirer and other counts, flagging
+/// interfaces nobody provides; `name` makes the link to the interface's page.
+pub fn interface_index_table<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    lang: Lang,
+    name: impl Fn(&InterfaceType) -> String,
+) {
+    let rows: Vec<Vec<String>> = cat
+        .interfaces
+        .iter()
+        .map(|t| {
+            let mut cell = name(t);
+            if t.is_unprovided() {
+                cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
+            }
+            vec![
+                cell,
+                t.providers.len().to_string(),
+                t.requirers.len().to_string(),
+                t.others.len().to_string(),
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("interface"),
+            lang.t("providers"),
+            lang.t("requirers"),
+            lang.t("fact_others"),
+        ],
+        &rows,
+    );
+}
