@@ -130,6 +130,16 @@ impl Facts {
     }
 }
 
+/// The execution rate with its unit (spec 2.3.2: Hz) when it is a number; as written otherwise.
+fn hertz(rate: &str) -> String {
+    let r = rate.trim();
+    if !r.is_empty() && r.parse::<f64>().is_ok() {
+        format!("{r} Hz")
+    } else {
+        rate.to_string()
+    }
+}
+
 /// Header fields of a component page (Basic Profile, spec 2.3.2, and its extended part), in a
 /// fixed order. Name and description are left out: pages show them as title and lead text.
 pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
@@ -145,7 +155,10 @@ pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
         .opt("component_kind", &b.component_kind)
         .opt("fact_rtc_type", &b.rtc_type)
         .opt("execution_type", &b.execution_type)
-        .opt("execution_rate", &b.execution_rate)
+        .opt(
+            "execution_rate",
+            &b.execution_rate.as_ref().map(|r| hertz(r)),
+        )
         .opt("max_instances", &b.max_instances)
         .md("fact_abstract", &b.abstract_)
         .opt("fact_hardware_profile", &b.hardware_profile)
