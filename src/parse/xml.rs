@@ -454,7 +454,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                 )
                 .with_hint("raise `max_depth` if the file is genuine"));
         }
-        let qname = String::from_utf8_lossy(e.name().as_ref()).into_owned();
+        let qname = sub(text, e.name().as_ref()).into_owned();
         if !is_name(&qname) {
             return Err(b.err(
                 codes::MALFORMED,
@@ -462,7 +462,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                 format!("`<{qname}` is not a valid element name"),
             ));
         }
-        let local = String::from_utf8_lossy(e.local_name().as_ref()).into_owned();
+        let local = sub(text, e.local_name().as_ref()).into_owned();
         let pos = b.cursor.pos(before);
         let mut attrs = Vec::new();
         for a in e.attributes() {
@@ -478,7 +478,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
             if key == b"xmlns" || key.starts_with(b"xmlns:") {
                 continue; // namespace declarations: plumbing
             }
-            let aq = String::from_utf8_lossy(key).into_owned();
+            let aq = sub(text, key).into_owned();
             let (ans, alocal) = reader.resolve_attribute(a.key);
             let ans = own_ns(ans).map_err(|p| {
                 b.err(
@@ -487,7 +487,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                     format!("namespace prefix `{p}` of attribute `{aq}` is not declared"),
                 )
             })?;
-            let alocal = String::from_utf8_lossy(alocal.as_ref()).into_owned();
+            let alocal = sub(text, alocal.as_ref()).into_owned();
             if ans == Ns::Xsi
                 && matches!(
                     alocal.as_str(),
@@ -496,7 +496,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
             {
                 continue; // xsi:type names the concrete XSD type: plumbing
             }
-            let raw = String::from_utf8_lossy(&a.value);
+            let raw = sub(text, &a.value);
             let value_off = offset_in(text, &a.value).unwrap_or(key_off);
             let value = unescape_attr(&raw)
                 .map_err(|(rel, msg)| entity_error(&mut b, value_off + rel, msg))?;
@@ -576,7 +576,7 @@ fn other_event(
     match event {
         XmlEvent::End(e) => {
             let name = e.name();
-            let found = String::from_utf8_lossy(name.as_ref()).into_owned();
+            let found = sub(b.text, name.as_ref());
             let Some(node) = stack.pop() else {
                 return Err(b.err(
                     codes::MALFORMED,
@@ -597,11 +597,11 @@ fn other_event(
             close(node, stack, root);
         }
         XmlEvent::Text(t) => {
-            let raw = String::from_utf8_lossy(&t);
+            let raw = sub(b.text, &t);
             add_text(b, stack, &normalize_eol(&raw), before)?;
         }
         XmlEvent::CData(t) => {
-            let raw = String::from_utf8_lossy(&t);
+            let raw = sub(b.text, &t);
             add_text(b, stack, &normalize_eol(&raw), before)?;
         }
         XmlEvent::GeneralRef(r) => {
@@ -671,6 +671,14 @@ fn is_name(s: &str) -> bool {
         c.is_whitespace() || c.is_control() || "<>&\"'=/!?;,()[]{}`^|\\*+$%@#~".contains(c)
     };
     !bad(first) && !first.is_ascii_digit() && !matches!(first, '-' | '.') && !chars.any(bad)
+}
+
+/// `part` as text: borrowed without re-validation when it is a slice of `whole` (always the case
+/// for what the reader yields from a `&str`), else decoded lossily.
+fn sub<'t>(whole: &'t str, part: &'t [u8]) -> Cow<'t, str> {
+    offset_in(whole, part)
+        .and_then(|off| whole.get(off..off.checked_add(part.len())?))
+        .map_or_else(|| String::from_utf8_lossy(part), Cow::Borrowed)
 }
 
 /// Byte offset of `part` inside `whole`, when `part` borrows from it.
