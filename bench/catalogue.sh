@@ -71,7 +71,9 @@ for n in "${sizes[@]}"; do
     rm -rf "$site"
     mkdir -p "$site/layouts/_default"
     cp -r "$work/out-$n-markdown" "$site/content"
-    rm -f "$site/content/.rtcdoc-output"
+    rm -f "$site/content/.rtcdoc-output" "$site/content/README.md"
+    # A content/index.md would make the whole folder one leaf bundle; Hugo's home page is _index.md.
+    mv "$site/content/index.md" "$site/content/_index.md"
     printf 'baseURL = "http://localhost/"\ntitle = "bench"\ndisableKinds = ["taxonomy", "term", "RSS"]\n[markup.goldmark.renderer]\nunsafe = true\n' >"$site/hugo.toml"
     printf '<!DOCTYPE html><html><head><title>{{ .Title }}</title></head><body>{{ .Content }}</body></html>\n' >"$site/layouts/_default/single.html"
     printf '<!DOCTYPE html><html><head><title>{{ .Title }}</title></head><body>{{ .Content }}</body></html>\n' >"$site/layouts/_default/list.html"
