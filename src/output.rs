@@ -15,6 +15,18 @@ pub const MARKER: &str = ".rtcdoc-output";
 pub trait Sink: Sync {
     /// Writes one file, creating parent directories.
     fn write(&self, rel: &str, bytes: &[u8]) -> Result<()>;
+
+    /// Writes one file by streaming into it (for large files such as `catalog.json`, which need
+    /// not be held in memory whole). The default buffers and calls [`Sink::write`].
+    fn write_with(
+        &self,
+        rel: &str,
+        fill: &mut dyn FnMut(&mut dyn std::io::Write) -> Result<()>,
+    ) -> Result<()> {
+        let mut buf = Vec::new();
+        fill(&mut buf)?;
+        self.write(rel, &buf)
+    }
 }
 
 /// Checks that `rel` is a plain relative path that stays inside its root.
@@ -131,6 +143,26 @@ impl Sink for Staging {
                 .with_context(|| format!("cannot create `{}`", parent.display()))?;
         }
         std::fs::write(&path, bytes).with_context(|| format!("cannot write `{}`", path.display()))
+    }
+
+    fn write_with(
+        &self,
+        rel: &str,
+        fill: &mut dyn FnMut(&mut dyn std::io::Write) -> Result<()>,
+    ) -> Result<()> {
+        use std::io::Write;
+        check_relative(rel)?;
+        let path = self.tmp.join(rel);
+        if let Some(parent) = path.parent() {
+            std::fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create `{}`", parent.display()))?;
+        }
+        let file = std::fs::File::create(&path)
+            .with_context(|| format!("cannot write `{}`", path.display()))?;
+        let mut w = std::io::BufWriter::with_capacity(1 << 16, file);
+        fill(&mut w)?;
+        w.flush()
+            .with_context(|| format!("cannot write `{}`", path.display()))
     }
 }
 
@@ -261,6 +293,7 @@ impl Sink for MemorySink {
 /// created one at a time: parallel creation of many files in one directory contends on the
 /// directory's lock in the kernel and was measured slower than a single writer.
 pub struct WriterThread<'a> {
+    inner: &'a (dyn Sink + 'a),
     tx: Option<std::sync::mpsc::SyncSender<(String, Vec<u8>)>>,
     handle: Option<std::thread::ScopedJoinHandle<'a, Result<usize>>>,
 }
@@ -289,6 +322,7 @@ impl<'a> WriterThread<'a> {
             }
         });
         WriterThread {
+            inner,
             tx: Some(tx),
             handle: Some(handle),
         }
@@ -315,6 +349,16 @@ impl Sink for WriterThread<'_> {
             }),
             None => bail!("the writer is finished"),
         }
+    }
+
+    /// Streams straight into the inner sink from the calling thread (a large file is not
+    /// queued as one buffer).
+    fn write_with(
+        &self,
+        rel: &str,
+        fill: &mut dyn FnMut(&mut dyn std::io::Write) -> Result<()>,
+    ) -> Result<()> {
+        self.inner.write_with(rel, fill)
     }
 }
 

@@ -571,12 +571,41 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
 
 /// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
 pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
+    let of = category_of(cat);
+    let mut out = other_pages(cat, site_title, lang);
+    out.par_extend(
+        (0..cat.components.len())
+            .into_par_iter()
+            .map(|ci| component_entry(cat, &of, ci, lang)),
+    );
+    out
+}
+
+/// Index of each component's category facet.
+fn category_of(cat: &Catalog) -> Vec<usize> {
     let mut of = vec![0; cat.components.len()];
     for (fi, f) in cat.categories.iter().enumerate() {
         for &ci in &f.components {
             of[ci] = fi;
         }
     }
+    of
+}
+
+fn component_path(cat: &Catalog, ci: usize) -> String {
+    format!("components/{}.dox", cat.components[ci].slug)
+}
+
+/// The path and text of component `ci`'s page.
+fn component_entry(cat: &Catalog, of: &[usize], ci: usize, lang: Lang) -> (String, String) {
+    (
+        component_path(cat, ci),
+        component_page(cat, ci, &cat_label(&cat.categories[of[ci]].slug), lang),
+    )
+}
+
+/// Every file but the component pages, the Doxyfile included (its INPUT lists every page).
+fn other_pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
     let mut out = vec![
         ("mainpage.dox".to_string(), mainpage(cat, site_title, lang)),
         ("types.dox".to_string(), type_index(cat, lang)),
@@ -586,12 +615,6 @@ pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String
         (
             format!("categories/{}.dox", cat.categories[fi].slug),
             category_page(cat, fi, lang),
-        )
-    }));
-    out.par_extend((0..cat.components.len()).into_par_iter().map(|ci| {
-        (
-            format!("components/{}.dox", cat.components[ci].slug),
-            component_page(cat, ci, &cat_label(&cat.categories[of[ci]].slug), lang),
         )
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
@@ -606,7 +629,13 @@ pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String
             interface_page(cat, ii, lang),
         )
     }));
-    let inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
+    let mut inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
+    // Same order as before: category pages, then components, then types and interfaces.
+    let at = 3 + cat.categories.len();
+    inputs.splice(
+        at..at,
+        (0..cat.components.len()).map(|ci| component_path(cat, ci)),
+    );
     out.push(("Doxyfile".into(), doxyfile(site_title, lang, &inputs)));
     out
 }
@@ -616,11 +645,20 @@ impl Renderer for DoxygenRenderer {
         "doxygen"
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
-        let pages = pages(ctx.catalog, &ctx.site.title, ctx.site.language);
+        let (cat, lang) = (ctx.catalog, ctx.site.language);
+        let pages = other_pages(cat, &ctx.site.title, lang);
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
-        Ok(pages.len())
+        // Component pages are the bulk: written as they are rendered, never all held at once.
+        let of = category_of(cat);
+        (0..cat.components.len())
+            .into_par_iter()
+            .try_for_each(|ci| {
+                let (path, text) = component_entry(cat, &of, ci, lang);
+                out.write(&path, text.as_bytes())
+            })?;
+        Ok(pages.len() + cat.components.len())
     }
 }
 

@@ -23,16 +23,27 @@ struct Document<'a> {
     catalog: &'a Catalog,
 }
 
-/// Serializes the catalogue as pretty JSON.
-pub fn to_json(catalog: &Catalog, title: &str) -> serde_json::Result<Vec<u8>> {
+/// Serializes the catalogue as pretty JSON into `w`.
+pub fn write_json(
+    catalog: &Catalog,
+    title: &str,
+    w: &mut dyn std::io::Write,
+) -> anyhow::Result<()> {
     let doc = Document {
         generator: format!("rtcdoc {}", env!("CARGO_PKG_VERSION")),
         format_version: FORMAT_VERSION,
         title,
         catalog,
     };
-    let mut v = serde_json::to_vec_pretty(&doc)?;
-    v.push(b'\n');
+    serde_json::to_writer_pretty(&mut *w, &doc)?;
+    w.write_all(b"\n")?;
+    Ok(())
+}
+
+/// Serializes the catalogue as pretty JSON.
+pub fn to_json(catalog: &Catalog, title: &str) -> anyhow::Result<Vec<u8>> {
+    let mut v = Vec::new();
+    write_json(catalog, title, &mut v)?;
     Ok(v)
 }
 
@@ -44,7 +55,10 @@ impl Renderer for JsonRenderer {
         "json"
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
-        out.write("catalog.json", &to_json(ctx.catalog, &ctx.site.title)?)?;
+        // Streamed: at 10,000 components the document is hundreds of megabytes.
+        out.write_with("catalog.json", &mut |w| {
+            write_json(ctx.catalog, &ctx.site.title, w)
+        })?;
         Ok(1)
     }
 }

@@ -541,6 +541,32 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
 /// Renders every page as (relative path, content), in a fixed order.
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = category_slugs(cat);
+    let mut out = other_pages(cat, title, lang);
+    out.par_extend(
+        (0..cat.components.len())
+            .into_par_iter()
+            .map(|ci| component_entry(cat, &of, ci, title, lang)),
+    );
+    out
+}
+
+/// The path and text of component `ci`'s page.
+fn component_entry(
+    cat: &Catalog,
+    of: &[usize],
+    ci: usize,
+    title: &str,
+    lang: Lang,
+) -> (String, String) {
+    let c = &cat.components[ci];
+    (
+        format!("components/{}.md", c.slug),
+        component_page(cat, ci, &cat.categories[of[ci]].slug, title, lang),
+    )
+}
+
+/// Every page but the component pages.
+fn other_pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     let index = index_page(cat, title, lang);
     let mut out = vec![
         ("SUMMARY.md".to_string(), summary(cat, title, lang)),
@@ -556,13 +582,6 @@ pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
         (
             format!("categories/{}.md", cat.categories[fi].slug),
             category_page(cat, fi, title, lang),
-        )
-    }));
-    out.par_extend((0..cat.components.len()).into_par_iter().map(|ci| {
-        let c = &cat.components[ci];
-        (
-            format!("components/{}.md", c.slug),
-            component_page(cat, ci, &cat.categories[of[ci]].slug, title, lang),
         )
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
@@ -585,11 +604,20 @@ impl Renderer for MarkdownRenderer {
         "markdown"
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
-        let pages = pages(ctx.catalog, &ctx.site.title, ctx.site.language);
+        let (cat, title, lang) = (ctx.catalog, &ctx.site.title, ctx.site.language);
+        let pages = other_pages(cat, title, lang);
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
-        Ok(pages.len())
+        // Component pages are the bulk: written as they are rendered, never all held at once.
+        let of = category_slugs(cat);
+        (0..cat.components.len())
+            .into_par_iter()
+            .try_for_each(|ci| {
+                let (path, text) = component_entry(cat, &of, ci, title, lang);
+                out.write(&path, text.as_bytes())
+            })?;
+        Ok(pages.len() + cat.components.len())
     }
 }
 

@@ -106,4 +106,12 @@ impl Sink for Prefixed<'_> {
     fn write(&self, rel: &str, bytes: &[u8]) -> anyhow::Result<()> {
         self.inner.write(&format!("{}/{rel}", self.prefix), bytes)
     }
+    fn write_with(
+        &self,
+        rel: &str,
+        fill: &mut dyn FnMut(&mut dyn std::io::Write) -> anyhow::Result<()>,
+    ) -> anyhow::Result<()> {
+        self.inner
+            .write_with(&format!("{}/{rel}", self.prefix), fill)
+    }
 }
