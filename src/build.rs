@@ -57,7 +57,6 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             include: opts.include.clone(),
             exclude: opts.exclude.clone(),
             skip_dirs: opts.skip_dirs.clone(),
-            max_file_size: Some(opts.limits.max_file_size),
         },
     )?;
     let files = walked.sources.len() + walked.errors.len();

@@ -48,9 +48,6 @@ pub struct WalkOptions {
     pub exclude: Vec<String>,
     /// Directories never to enter (e.g. the output directory).
     pub skip_dirs: Vec<PathBuf>,
-    /// Files larger than this are still returned (the reader reports them), but are not read
-    /// beyond this many bytes + 1, so a huge file costs no memory.
-    pub max_file_size: Option<u64>,
 }
 
 /// What a walk found.
