@@ -67,11 +67,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         .map(|src| {
             let parsed = match src.read(Some(opts.limits.max_file_size)) {
                 Ok(bytes) => parse::parse(src.format, &bytes, &src.rel, &opts.limits),
-                Err(e) => Err(Diagnostic::error(
-                    crate::diagnostic::codes::IO,
-                    &src.rel,
-                    format!("cannot read file: {e}"),
-                )),
+                Err(e) => Err(Diagnostic::io(&src.rel, &e)),
             };
             progress.advance(1);
             match parsed {
@@ -106,10 +102,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
 pub fn add_check_diagnostics(catalog: &mut Catalog) {
     let found = crate::check::run(catalog);
     catalog.diagnostics.extend(found);
-    catalog.diagnostics.sort_by(|a, b| {
-        (&a.file, a.pos, a.severity, a.code, &a.message)
-            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
-    });
+    crate::diagnostic::sort(&mut catalog.diagnostics);
 }
 
 /// Everything `rtcdoc build` needs.

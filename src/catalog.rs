@@ -444,10 +444,7 @@ impl Catalog {
         let categories = facet(&|p| p.basic_info.category.as_deref());
         let vendors = facet(&|p| p.basic_info.vendor.as_deref());
 
-        diagnostics.sort_by(|a, b| {
-            (&a.file, a.pos, a.severity, a.code, &a.message)
-                .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
-        });
+        crate::diagnostic::sort(&mut diagnostics);
         let type_index = data_types
             .iter()
             .enumerate()

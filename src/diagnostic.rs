@@ -82,6 +82,19 @@ impl Diagnostic {
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }
+    /// A file that could not be read.
+    pub fn io(file: &str, err: &std::io::Error) -> Self {
+        Self::error(codes::IO, file, format!("cannot read file: {err}"))
+    }
+}
+
+/// Sorts diagnostics the way every output shows them: by file, position, severity, code and
+/// message (a total order, so output is deterministic).
+pub fn sort(diagnostics: &mut [Diagnostic]) {
+    diagnostics.sort_by(|a, b| {
+        (&a.file, a.pos, a.severity, a.code, &a.message)
+            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
+    });
 }
 
 impl std::fmt::Display for Diagnostic {

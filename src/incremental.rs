@@ -262,13 +262,9 @@ impl Workspace {
         // Lexical: the file may be gone (deleted with its directory).
         let root = crate::output::absolute(&self.input_root).ok()?;
         let abs = crate::output::absolute(path).ok()?;
-        let rel = abs.strip_prefix(&root).ok()?;
-        Some(
-            rel.components()
-                .map(|c| c.as_os_str().to_string_lossy().into_owned())
-                .collect::<Vec<_>>()
-                .join("/"),
-        )
+        // Paths outside the input (e.g. the theme) are not profiles of this workspace.
+        abs.starts_with(&root)
+            .then(|| crate::walk::rel_path(&root, &abs))
     }
 
     /// Applies changes to the given files (created, modified or deleted).

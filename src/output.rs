@@ -100,6 +100,17 @@ impl Staging {
         &self.target
     }
 
+    /// Checks `rel` and creates its parent directories; the path to write.
+    fn prepare(&self, rel: &str) -> Result<PathBuf> {
+        check_relative(rel)?;
+        let path = self.tmp.join(rel);
+        if let Some(parent) = path.parent() {
+            std::fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create `{}`", parent.display()))?;
+        }
+        Ok(path)
+    }
+
     /// Replaces the target with the staged tree.
     pub fn commit(mut self) -> Result<()> {
         let old = self.tmp.with_extension("old");
@@ -136,12 +147,7 @@ impl Drop for Staging {
 
 impl Sink for Staging {
     fn write(&self, rel: &str, bytes: &[u8]) -> Result<()> {
-        check_relative(rel)?;
-        let path = self.tmp.join(rel);
-        if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent)
-                .with_context(|| format!("cannot create `{}`", parent.display()))?;
-        }
+        let path = self.prepare(rel)?;
         std::fs::write(&path, bytes).with_context(|| format!("cannot write `{}`", path.display()))
     }
 
@@ -151,12 +157,7 @@ impl Sink for Staging {
         fill: &mut dyn FnMut(&mut dyn std::io::Write) -> Result<()>,
     ) -> Result<()> {
         use std::io::Write;
-        check_relative(rel)?;
-        let path = self.tmp.join(rel);
-        if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent)
-                .with_context(|| format!("cannot create `{}`", parent.display()))?;
-        }
+        let path = self.prepare(rel)?;
         let file = std::fs::File::create(&path)
             .with_context(|| format!("cannot write `{}`", path.display()))?;
         let mut w = std::io::BufWriter::with_capacity(1 << 16, file);

@@ -97,7 +97,8 @@ fn build_globs(patterns: &[String]) -> Result<GlobSet, WalkError> {
     })
 }
 
-fn rel_path(root: &Path, path: &Path) -> String {
+/// `path` relative to `root`, with forward slashes (its file name when it is `root` itself).
+pub(crate) fn rel_path(root: &Path, path: &Path) -> String {
     let rel = path.strip_prefix(root).unwrap_or(path);
     let s: Vec<String> = rel
         .components()
@@ -235,11 +236,9 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
                 rel,
                 reason: "not an RTC component profile (root is not RtcProfile / rtcProfile)".into(),
             }),
-            Err(e) => result.errors.push(crate::diagnostic::Diagnostic::error(
-                crate::diagnostic::codes::IO,
-                &rel,
-                format!("cannot read file: {e}"),
-            )),
+            Err(e) => result
+                .errors
+                .push(crate::diagnostic::Diagnostic::io(&rel, &e)),
         }
     }
     result.sources.sort_by(|a, b| a.rel.cmp(&b.rel));

@@ -34,12 +34,7 @@ pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
     out
 }
 
-fn sort(d: &mut [Diagnostic]) {
-    d.sort_by(|a, b| {
-        (&a.file, a.pos, a.severity, a.code, &a.message)
-            .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
-    });
-}
+use crate::diagnostic::sort;
 
 /// Documentation coverage of one component.
 #[derive(Debug, Clone, Serialize, PartialEq)]

@@ -40,13 +40,6 @@ pub fn write_json(
     Ok(())
 }
 
-/// Serializes the catalogue as pretty JSON.
-pub fn to_json(catalog: &Catalog, title: &str) -> anyhow::Result<Vec<u8>> {
-    let mut v = Vec::new();
-    write_json(catalog, title, &mut v)?;
-    Ok(v)
-}
-
 /// Writes `catalog.json`.
 pub struct JsonRenderer;
 
