@@ -516,6 +516,23 @@ fn multi_document_reads_first_profile() {
 }
 
 #[test]
+fn duplicate_key_is_an_error_with_position() {
+    let e = parse_err(b"rtcProfile:\n  id: a\n  version: \"0.2\"\n  id: b\n");
+    assert_eq!(e.code, codes::MALFORMED);
+    assert!(e.message.contains("duplicate entry with key \"id\""), "{e}");
+    // serde_norway reports the mapping that holds the duplicate.
+    assert_eq!(e.pos, Some(Pos::new(2, 3)), "{e}");
+}
+
+#[test]
+fn tagged_values_read_as_their_value() {
+    let p =
+        parse_str("rtcProfile: !profile\n  id: !str \"RTC:V:C:N:1\"\n  basicInfo:\n    name: N\n");
+    assert_eq!(s(&p.profile.id), Some("RTC:V:C:N:1"));
+    assert_eq!(s(&p.profile.basic_info.name), Some("N"));
+}
+
+#[test]
 fn sniffing() {
     assert!(yaml::is_profile(b"rtcProfile:\n  id: x\n"));
     assert!(yaml::is_profile(b"# c\n---\n\"rtcProfile\" :\n"));

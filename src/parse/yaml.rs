@@ -9,16 +9,15 @@
 //! through the source text looking for each key. This is exact for block-style YAML, which is
 //! what RTCBuilder writes, and a close approximation for flow style.
 //!
-//! Hostile input: before the `Value` is built, a counting pass over the same events rejects
-//! documents that nest deeper than [`Limits::max_depth`] or whose aliases expand to more than
-//! [`MAX_NODES`] nodes (alias bombs). `serde_norway` itself stops at a nesting of 128 and after
+//! Hostile input: the `Value` is built by our own seed, which counts nodes and depth as it goes
+//! and rejects documents that nest deeper than [`Limits::max_depth`] or whose aliases expand to
+//! more than [`MAX_NODES`] nodes (alias bombs) as soon as the limit is passed. `serde_norway` itself stops at a nesting of 128 and after
 //! `100 × events` alias jumps; both of its errors are reported with their own codes too.
 
 use super::{Limits, Parsed};
 use crate::diagnostic::{codes, Diagnostic};
 use crate::model::*;
 use serde::de::{DeserializeSeed, MapAccess, SeqAccess, Visitor};
-use serde::Deserialize;
 use serde_norway::{Mapping, Value};
 use std::fmt;
 
@@ -96,40 +95,37 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile"));
     }
 
-    // Pass 1: count nodes and depth per document (cheap, aborts early on bombs) and find the
-    // first document whose root mapping has `rtcProfile`.
-    let mut chosen = None;
-    for (index, doc) in serde_norway::Deserializer::from_slice(bytes).enumerate() {
-        let mut state = CountState {
-            nodes: 0,
-            max_nodes: MAX_NODES.min(100_000 + bytes.len()),
-            max_depth: limits.max_depth,
-        };
-        let found = CountSeed {
-            state: &mut state,
-            depth: 0,
-            root: true,
-        }
-        .deserialize(doc)
-        .map_err(|e| yaml_error(e, file, limits))?;
-        if found {
-            chosen = Some(index);
+    // One pass: each document is built into a `Value` by a seed that counts nodes and depth as
+    // it goes (so an alias bomb or a deep nest is stopped early), until a document whose root
+    // mapping has `rtcProfile` is found.
+    let mut value = None;
+    let mut state = CountState {
+        nodes: 0,
+        max_nodes: MAX_NODES.min(100_000 + bytes.len()),
+        max_depth: limits.max_depth,
+    };
+    for doc in serde_norway::Deserializer::from_slice(bytes) {
+        state.nodes = 0;
+        let v = untag(
+            BuildSeed {
+                state: &mut state,
+                depth: 0,
+            }
+            .deserialize(doc)
+            .map_err(|e| yaml_error(e, file, limits))?,
+        );
+        if matches!(&v, Value::Mapping(m) if m.contains_key("rtcProfile")) {
+            value = Some(v);
             break;
         }
     }
-    let Some(index) = chosen else {
+    if value.is_none() {
         return Err(Diagnostic::error(
             codes::SHAPE,
             file,
             "not an RTC Profile: no YAML document has a top-level `rtcProfile` key",
         )
         .with_hint("a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)"));
-    };
-
-    // Pass 2: build the Value of that document.
-    let mut value = None;
-    if let Some(doc) = serde_norway::Deserializer::from_slice(bytes).nth(index) {
-        value = Some(Value::deserialize(doc).map_err(|e| yaml_error(e, file, limits))?);
     }
     let Some(Value::Mapping(root)) = value.map(untag) else {
         return Err(Diagnostic::error(
@@ -263,7 +259,7 @@ const TOO_DEEP_MSG: &str = "rtcdoc: nesting too deep";
 const BOMB_MSG: &str = "rtcdoc: alias expansion too large";
 
 // ---------------------------------------------------------------------------------------------
-// Pass 1: a counting visitor (no allocation per node) that enforces depth and size limits.
+// Building a `Value` while enforcing the depth and size limits.
 
 struct CountState {
     nodes: usize,
@@ -271,21 +267,22 @@ struct CountState {
     max_depth: usize,
 }
 
-/// Counts the nodes of one document; returns whether the root is a mapping with `rtcProfile`.
-struct CountSeed<'s> {
+/// Builds one node (and its subtree) of a document, counting nodes and nesting depth. Aliases
+/// are replayed by serde_norway as their events, so expanded nodes are counted too. Tags
+/// (`!tag value`) are dropped: the value stands for itself.
+struct BuildSeed<'s> {
     state: &'s mut CountState,
     depth: usize,
-    root: bool,
 }
 
-impl<'de> DeserializeSeed<'de> for CountSeed<'_> {
-    type Value = bool;
-    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
+impl<'de> DeserializeSeed<'de> for BuildSeed<'_> {
+    type Value = Value;
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
         d.deserialize_any(self)
     }
 }
 
-impl CountSeed<'_> {
+impl BuildSeed<'_> {
     fn bump<E: serde::de::Error>(&mut self) -> Result<(), E> {
         self.state.nodes += 1;
         if self.state.nodes > self.state.max_nodes {
@@ -293,11 +290,10 @@ impl CountSeed<'_> {
         }
         Ok(())
     }
-    fn child(&mut self, root: bool) -> CountSeed<'_> {
-        CountSeed {
+    fn child(&mut self) -> BuildSeed<'_> {
+        BuildSeed {
             state: self.state,
             depth: self.depth + 1,
-            root,
         }
     }
     fn enter<E: serde::de::Error>(&mut self) -> Result<(), E> {
@@ -307,122 +303,83 @@ impl CountSeed<'_> {
         }
         Ok(())
     }
+    fn leaf<E: serde::de::Error>(mut self, v: Value) -> Result<Value, E> {
+        self.bump().map(|_| v)
+    }
 }
 
-impl<'de> Visitor<'de> for CountSeed<'_> {
-    type Value = bool;
+impl<'de> Visitor<'de> for BuildSeed<'_> {
+    type Value = Value;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("any YAML value")
     }
-    fn visit_bool<E: serde::de::Error>(mut self, _: bool) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_bool<E: serde::de::Error>(self, b: bool) -> Result<Value, E> {
+        self.leaf(Value::Bool(b))
     }
-    fn visit_i64<E: serde::de::Error>(mut self, _: i64) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_i64<E: serde::de::Error>(self, n: i64) -> Result<Value, E> {
+        self.leaf(Value::Number(n.into()))
     }
-    fn visit_u64<E: serde::de::Error>(mut self, _: u64) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_u64<E: serde::de::Error>(self, n: u64) -> Result<Value, E> {
+        self.leaf(Value::Number(n.into()))
     }
-    fn visit_i128<E: serde::de::Error>(mut self, _: i128) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_f64<E: serde::de::Error>(self, n: f64) -> Result<Value, E> {
+        self.leaf(Value::Number(n.into()))
     }
-    fn visit_u128<E: serde::de::Error>(mut self, _: u128) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<Value, E> {
+        self.leaf(Value::String(s.to_owned()))
     }
-    fn visit_f64<E: serde::de::Error>(mut self, _: f64) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_string<E: serde::de::Error>(self, s: String) -> Result<Value, E> {
+        self.leaf(Value::String(s))
     }
-    fn visit_str<E: serde::de::Error>(mut self, _: &str) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_unit<E: serde::de::Error>(self) -> Result<Value, E> {
+        self.leaf(Value::Null)
     }
-    fn visit_unit<E: serde::de::Error>(mut self) -> Result<bool, E> {
-        self.bump().map(|_| false)
+    fn visit_none<E: serde::de::Error>(self) -> Result<Value, E> {
+        self.leaf(Value::Null)
     }
-    fn visit_none<E: serde::de::Error>(mut self) -> Result<bool, E> {
-        self.bump().map(|_| false)
-    }
-    fn visit_some<D: serde::Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
+    fn visit_some<D: serde::Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
         d.deserialize_any(self)
     }
-    fn visit_newtype_struct<D: serde::Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
+    fn visit_newtype_struct<D: serde::Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
         d.deserialize_any(self)
     }
-    fn visit_enum<A: serde::de::EnumAccess<'de>>(mut self, data: A) -> Result<bool, A::Error> {
-        // `!tag value`: count the value.
+    fn visit_enum<A: serde::de::EnumAccess<'de>>(mut self, data: A) -> Result<Value, A::Error> {
         use serde::de::VariantAccess;
         self.enter()?;
-        let root = self.root;
         let (_, variant): (serde::de::IgnoredAny, _) = data.variant()?;
-        variant.newtype_variant_seed(self.child(root))
+        variant.newtype_variant_seed(self.child())
     }
-    fn visit_seq<A: SeqAccess<'de>>(mut self, mut seq: A) -> Result<bool, A::Error> {
+    fn visit_seq<A: SeqAccess<'de>>(mut self, mut seq: A) -> Result<Value, A::Error> {
         self.enter()?;
-        while seq.next_element_seed(self.child(false))?.is_some() {}
-        Ok(false)
-    }
-    fn visit_map<A: MapAccess<'de>>(mut self, mut map: A) -> Result<bool, A::Error> {
-        self.enter()?;
-        let mut found = false;
-        while let Some(key) = map.next_key::<KeyProbe>()? {
-            self.bump()?;
-            if self.root && key.0 {
-                found = true;
-            }
-            map.next_value_seed(self.child(false))?;
+        let mut items = Vec::new();
+        while let Some(v) = seq.next_element_seed(self.child())? {
+            items.push(v);
         }
-        Ok(found)
+        Ok(Value::Sequence(items))
+    }
+    fn visit_map<A: MapAccess<'de>>(mut self, mut map: A) -> Result<Value, A::Error> {
+        self.enter()?;
+        let mut mapping = Mapping::new();
+        while let Some(key) = map.next_key_seed(self.child())? {
+            let key = untag(key);
+            if mapping.contains_key(&key) {
+                return Err(serde::de::Error::custom(duplicate_key(&key)));
+            }
+            let v = map.next_value_seed(self.child())?;
+            mapping.insert(key, v);
+        }
+        Ok(Value::Mapping(mapping))
     }
 }
 
-/// A mapping key of pass 1: only whether it is the string `rtcProfile` matters.
-struct KeyProbe(bool);
-
-impl<'de> Deserialize<'de> for KeyProbe {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = KeyProbe;
-            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a mapping key")
-            }
-            fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<KeyProbe, E> {
-                Ok(KeyProbe(s == "rtcProfile"))
-            }
-            fn visit_bool<E>(self, _: bool) -> Result<KeyProbe, E> {
-                Ok(KeyProbe(false))
-            }
-            fn visit_i64<E>(self, _: i64) -> Result<KeyProbe, E> {
-                Ok(KeyProbe(false))
-            }
-            fn visit_u64<E>(self, _: u64) -> Result<KeyProbe, E> {
-                Ok(KeyProbe(false))
-            }
-            fn visit_f64<E>(self, _: f64) -> Result<KeyProbe, E> {
-                Ok(KeyProbe(false))
-            }
-            fn visit_unit<E>(self) -> Result<KeyProbe, E> {
-                Ok(KeyProbe(false))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<KeyProbe, A::Error> {
-                // Complex keys: bounded by serde_norway's own depth and repetition limits.
-                while seq.next_element::<serde::de::IgnoredAny>()?.is_some() {}
-                Ok(KeyProbe(false))
-            }
-            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<KeyProbe, A::Error> {
-                while map
-                    .next_entry::<serde::de::IgnoredAny, serde::de::IgnoredAny>()?
-                    .is_some()
-                {}
-                Ok(KeyProbe(false))
-            }
-            fn visit_enum<A: serde::de::EnumAccess<'de>>(self, a: A) -> Result<KeyProbe, A::Error> {
-                use serde::de::VariantAccess;
-                let (_, v): (serde::de::IgnoredAny, _) = a.variant()?;
-                v.newtype_variant::<serde::de::IgnoredAny>()?;
-                Ok(KeyProbe(false))
-            }
-        }
-        d.deserialize_any(V)
+/// The message serde_norway gives a duplicate mapping key.
+fn duplicate_key(key: &Value) -> String {
+    match key {
+        Value::Null => "duplicate entry with null key".to_string(),
+        Value::Bool(b) => format!("duplicate entry with key `{b}`"),
+        Value::Number(n) => format!("duplicate entry with key {n}"),
+        Value::String(s) => format!("duplicate entry with key {s:?}"),
+        _ => "duplicate entry in YAML map".to_string(),
     }
 }
 
