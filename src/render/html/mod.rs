@@ -718,11 +718,29 @@ impl<'a> Site<'a> {
     }
 }
 
-/// A page to render: output path, template and context.
-struct Page {
+/// A page to render: output path, template and context. The context of the many per-item
+/// pages (facets, types, interfaces) is built only when the page is rendered, so that their
+/// contexts are never all in memory at once.
+struct Page<'a> {
     path: String,
     template: &'static str,
-    context: Value,
+    context: PageContext<'a>,
+}
+
+type LazyContext<'a> = Box<dyn Fn() -> Value + Send + Sync + 'a>;
+
+enum PageContext<'a> {
+    Ready(Value),
+    Lazy(LazyContext<'a>),
+}
+
+impl PageContext<'_> {
+    fn value(&self) -> Value {
+        match self {
+            PageContext::Ready(v) => v.clone(),
+            PageContext::Lazy(f) => f(),
+        }
+    }
 }
 
 /// Breadcrumbs to the catalogue and a section index (`key` names the section).
@@ -865,7 +883,7 @@ impl HtmlRenderer {
             .map(|pg| -> Result<usize> {
                 let html = env
                     .get_template(pg.template)?
-                    .render(&pg.context)
+                    .render(pg.context.value())
                     .with_context(|| format!("rendering `{}`", pg.path))?;
                 out.write(&pg.path, html.as_bytes())?;
                 Ok(1)
@@ -909,10 +927,15 @@ fn ctx<S: Serialize>(v: &S) -> Value {
 }
 
 /// Every page except component pages.
-fn other_pages(site: &Site<'_>) -> Vec<Page> {
+/// `<title>` of a page: its own title, then the site's.
+fn page_title(site: &Site<'_>, s: &str) -> String {
+    format!("{s} — {}", site.opts.title)
+}
+
+fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
     let catalog = site.catalog;
     let lang = site.lang;
-    let title = |s: &str| format!("{s} — {}", site.opts.title);
+    let title = |s: &str| page_title(site, s);
     let mut pages = Vec::new();
 
     // Index: components grouped by category.
@@ -949,7 +972,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
     pages.push(Page {
         path: "index.html".into(),
         template: "index.html",
-        context: minijinja::context! {
+        context: PageContext::Ready(minijinja::context! {
             root => "",
             title => site.opts.title.clone(),
             is_home => true,
@@ -959,7 +982,7 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
             component_count => catalog.components.len(),
             type_count => catalog.data_types.len(),
             interface_count => catalog.interfaces.len(),
-        },
+        }),
     });
 
     // Category and vendor pages.
@@ -988,30 +1011,32 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
         pages.push(Page {
             path: format!("{dir}/index.html"),
             template: "facets.html",
-            context: minijinja::context! {
+            context: PageContext::Ready(minijinja::context! {
                 root => root,
                 title => title(lang.t(key)),
                 heading => lang.t(key),
                 crumbs => ctx(&crumbs_home(lang, root)),
                 facets => ctx(&list),
-            },
+            }),
         });
         for f in facets.iter() {
-            let name = site.facet_name(&f.name, empty_key);
-            let crumbs = crumbs_section(lang, root, key);
-            let comps: Vec<&ComponentSummary> =
-                f.components.iter().map(|&i| &site.summaries[i]).collect();
             pages.push(Page {
                 path: format!("{dir}/{}.html", f.slug),
                 template: "facet.html",
-                context: minijinja::context! {
-                    root => root,
-                    title => title(&name),
-                    heading => name,
-                    kind => lang.t(if dir == "categories" { "category" } else { "vendor" }),
-                    crumbs => ctx(&crumbs),
-                    components => ctx(&comps),
-                },
+                context: PageContext::Lazy(Box::new(move || {
+                    let name = site.facet_name(&f.name, empty_key);
+                    let crumbs = crumbs_section(lang, root, key);
+                    let comps: Vec<&ComponentSummary> =
+                        f.components.iter().map(|&i| &site.summaries[i]).collect();
+                    minijinja::context! {
+                        root => root,
+                        title => page_title(site, &name),
+                        heading => name,
+                        kind => lang.t(if dir == "categories" { "category" } else { "vendor" }),
+                        crumbs => ctx(&crumbs),
+                        components => ctx(&comps),
+                    }
+                })),
             });
         }
     }
@@ -1048,32 +1073,34 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
         pages.push(Page {
             path: "types/index.html".into(),
             template: "types.html",
-            context: minijinja::context! {
+            context: PageContext::Ready(minijinja::context! {
                 root => root,
                 title => title(lang.t("data_types")),
                 crumbs => ctx(&crumbs_home(lang, root)),
                 types => ctx(&rows),
-            },
+            }),
         });
         for t in &catalog.data_types {
-            let crumbs = crumbs_section(lang, root, "data_types");
-            let uses = |v: &[PortRef]| -> Vec<PortUse> {
-                v.iter().map(|r| site.port_link(root, r)).collect()
-            };
             pages.push(Page {
                 path: format!("types/{}.html", t.slug),
                 template: "type.html",
-                context: minijinja::context! {
-                    root => root,
-                    title => title(&format!("{} {}", t.name, lang.t("data_type"))),
-                    name => t.name.clone(),
-                    crumbs => ctx(&crumbs),
-                    spellings => ctx(&t.spellings),
-                    idl_files => ctx(&t.idl_files),
-                    producers => ctx(&uses(&t.producers)),
-                    consumers => ctx(&uses(&t.consumers)),
-                    others => ctx(&uses(&t.others)),
-                },
+                context: PageContext::Lazy(Box::new(move || {
+                    let crumbs = crumbs_section(lang, root, "data_types");
+                    let uses = |v: &[PortRef]| -> Vec<PortUse> {
+                        v.iter().map(|r| site.port_link(root, r)).collect()
+                    };
+                    minijinja::context! {
+                        root => root,
+                        title => page_title(site, &format!("{} {}", t.name, lang.t("data_type"))),
+                        name => t.name.clone(),
+                        crumbs => ctx(&crumbs),
+                        spellings => ctx(&t.spellings),
+                        idl_files => ctx(&t.idl_files),
+                        producers => ctx(&uses(&t.producers)),
+                        consumers => ctx(&uses(&t.consumers)),
+                        others => ctx(&uses(&t.others)),
+                    }
+                })),
             });
         }
     }
@@ -1103,33 +1130,35 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
         pages.push(Page {
             path: "interfaces/index.html".into(),
             template: "interfaces.html",
-            context: minijinja::context! {
+            context: PageContext::Ready(minijinja::context! {
                 root => root,
                 title => title(lang.t("interfaces")),
                 crumbs => ctx(&crumbs_home(lang, root)),
                 interfaces => ctx(&rows),
-            },
+            }),
         });
         for t in &catalog.interfaces {
-            let crumbs = crumbs_section(lang, root, "interfaces");
-            let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
-                v.iter().map(|r| site.iface_link(root, r)).collect()
-            };
             pages.push(Page {
                 path: format!("interfaces/{}.html", t.slug),
                 template: "interface.html",
-                context: minijinja::context! {
-                    root => root,
-                    title => title(&format!("{} {}", t.name, lang.t("interface"))),
-                    name => t.name.clone(),
-                    crumbs => ctx(&crumbs),
-                    spellings => ctx(&t.spellings),
-                    idl_files => ctx(&t.idl_files),
-                    unprovided => t.is_unprovided(),
-                    providers => ctx(&uses(&t.providers)),
-                    requirers => ctx(&uses(&t.requirers)),
-                    others => ctx(&uses(&t.others)),
-                },
+                context: PageContext::Lazy(Box::new(move || {
+                    let crumbs = crumbs_section(lang, root, "interfaces");
+                    let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
+                        v.iter().map(|r| site.iface_link(root, r)).collect()
+                    };
+                    minijinja::context! {
+                        root => root,
+                        title => page_title(site, &format!("{} {}", t.name, lang.t("interface"))),
+                        name => t.name.clone(),
+                        crumbs => ctx(&crumbs),
+                        spellings => ctx(&t.spellings),
+                        idl_files => ctx(&t.idl_files),
+                        unprovided => t.is_unprovided(),
+                        providers => ctx(&uses(&t.providers)),
+                        requirers => ctx(&uses(&t.requirers)),
+                        others => ctx(&uses(&t.others)),
+                    }
+                })),
             });
         }
     }
@@ -1138,11 +1167,11 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
     pages.push(Page {
         path: "search.html".into(),
         template: "search.html",
-        context: minijinja::context! {
+        context: PageContext::Ready(minijinja::context! {
             root => "",
             title => title(lang.t("search")),
             crumbs => ctx(&crumbs_home(lang, "")),
-        },
+        }),
     });
     // The 404 page may be served from any path: use absolute links when the base URL is known.
     let root404 = site
@@ -1154,10 +1183,10 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
     pages.push(Page {
         path: "404.html".into(),
         template: "404.html",
-        context: minijinja::context! {
+        context: PageContext::Ready(minijinja::context! {
             root => root404,
             title => title(lang.t("not_found_title")),
-        },
+        }),
     });
     if !catalog.diagnostics.is_empty() {
         #[derive(Serialize)]
@@ -1185,12 +1214,12 @@ fn other_pages(site: &Site<'_>) -> Vec<Page> {
         pages.push(Page {
             path: "diagnostics.html".into(),
             template: "diagnostics.html",
-            context: minijinja::context! {
+            context: PageContext::Ready(minijinja::context! {
                 root => "",
                 title => title(lang.t("diagnostics")),
                 crumbs => ctx(&crumbs_home(lang, "")),
                 diagnostics => ctx(&rows),
-            },
+            }),
         });
     }
     pages
