@@ -75,7 +75,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                     Some(LoadedProfile {
                         source: src.rel.clone(),
                         format: src.format,
-                        profile: parsed.profile,
+                        profile: Box::new(parsed.profile),
                     }),
                     parsed.diagnostics,
                 ),

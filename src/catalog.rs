@@ -24,7 +24,7 @@ pub struct Component {
     /// Anchors of the rows of the component page (ports, interfaces, parameters).
     pub anchors: Anchors,
     #[serde(flatten)]
-    pub profile: Profile,
+    pub profile: Box<Profile>,
 }
 
 /// Stable fragment ids for the rows of a component page, unique within the page.
@@ -133,7 +133,7 @@ pub struct Catalog {
 pub struct LoadedProfile {
     pub source: String,
     pub format: SourceFormat,
-    pub profile: Profile,
+    pub profile: Box<Profile>,
 }
 
 /// Turns any text into a file-name-safe slug: lower-case ASCII letters, digits and `-`; never

@@ -293,7 +293,7 @@ impl Workspace {
                                 LoadedProfile {
                                     source: rel,
                                     format,
-                                    profile: p.profile,
+                                    profile: Box::new(p.profile),
                                 },
                                 p.diagnostics,
                             )),

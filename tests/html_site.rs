@@ -76,7 +76,7 @@ fn render_catalog(profiles: Vec<Profile>, out: &Path, site: &SiteOptions) -> Cat
         .map(|(i, profile)| LoadedProfile {
             source: format!("c{i:03}/RTC.xml"),
             format: SourceFormat::Xml,
-            profile,
+            profile: Box::new(profile),
         })
         .collect();
     let catalog = Catalog::build(loaded, vec![]);
