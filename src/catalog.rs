@@ -224,7 +224,7 @@ fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String>
 }
 
 fn anchors(profile: &Profile) -> Anchors {
-    let name = |s: &Option<String>| s.clone().unwrap_or_default();
+    let name = |s: &Option<crate::model::Text>| s.as_deref().unwrap_or_default().to_string();
     let service_ports = anchors_for("sport", profile.service_ports.iter().map(|p| name(&p.name)));
     let interfaces = profile
         .service_ports

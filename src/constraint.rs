@@ -41,11 +41,11 @@ pub fn describe(c: &Constraint) -> String {
     describe_kind(c, false)
 }
 
-fn text(s: &Option<String>) -> &str {
+fn text(s: &Option<crate::model::Text>) -> &str {
     s.as_deref().map(str::trim).unwrap_or("")
 }
 
-fn is_case_insensitive(match_case: &Option<String>) -> bool {
+fn is_case_insensitive(match_case: &Option<crate::model::Text>) -> bool {
     crate::model::parse_bool(match_case.as_deref()) == Some(false)
 }
 
@@ -289,8 +289,12 @@ pub struct LikeChars {
 impl LikeChars {
     /// From the attributes as written: first non-space character; absent = `*`, `?`, `\`;
     /// present but blank = no such character.
-    pub fn from_attrs(w: &Option<String>, s: &Option<String>, e: &Option<String>) -> Self {
-        let pick = |a: &Option<String>, default: char| match a {
+    pub fn from_attrs(
+        w: &Option<crate::model::Text>,
+        s: &Option<crate::model::Text>,
+        e: &Option<crate::model::Text>,
+    ) -> Self {
+        let pick = |a: &Option<crate::model::Text>, default: char| match a {
             None => Some(default),
             Some(t) => t.trim().chars().next(),
         };
@@ -358,7 +362,7 @@ pub fn like_matches(text: &str, pattern: &str, chars: LikeChars) -> bool {
     toks[p.min(toks.len())..].iter().all(|k| *k == Tok::Any)
 }
 
-fn opt(s: &Option<String>) -> Option<&str> {
+fn opt(s: &Option<crate::model::Text>) -> Option<&str> {
     s.as_deref().map(str::trim)
 }
 
@@ -722,7 +726,7 @@ fn walk_problems(
     let pos = if c.pos.is_unknown() { parent } else { c.pos };
     let structure =
         |out: &mut Vec<Problem>, message: String| out.push(Problem::Structure { pos, message });
-    let check_literal = |out: &mut Vec<Problem>, what: &str, lit: &Option<String>| {
+    let check_literal = |out: &mut Vec<Problem>, what: &str, lit: &Option<crate::model::Text>| {
         let Some(l) = opt(lit) else {
             out.push(Problem::Structure {
                 pos,

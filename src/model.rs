@@ -7,6 +7,11 @@
 
 use serde::Serialize;
 
+/// A string value of a profile. Most values are short (names, types, numbers, `true`), and a
+/// `CompactString` keeps up to 24 bytes inline, without a heap allocation: a 10,000-profile
+/// catalogue holds millions of them.
+pub type Text = compact_str::CompactString;
+
 /// A position in a source file: 1-based line and column (columns count characters).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct Pos {
@@ -38,13 +43,13 @@ pub struct Extra {
     /// `attribute`, `element` or `key` (YAML).
     pub kind: ExtraKind,
     /// Name as written, with its prefix when it had one (`rtc:library`, `"rtcExt::foo"`).
-    pub name: String,
+    pub name: Text,
     /// Namespace URI for XML names that have one.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub namespace: Option<String>,
+    pub namespace: Option<Text>,
     /// The attribute value, the element's text, or the YAML scalar.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub value: Option<String>,
+    pub value: Option<Text>,
     /// Attributes and child elements of an unknown element; entries of a YAML map or sequence.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub children: Vec<Extra>,
@@ -63,8 +68,8 @@ pub enum ExtraKind {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Property {
-    pub name: Option<String>,
-    pub value: Option<String>,
+    pub name: Option<Text>,
+    pub value: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -75,9 +80,9 @@ pub struct Property {
 #[serde(rename_all = "camelCase")]
 pub struct Profile {
     /// `RTC:<vendor>:<category>:<name>:<version>`.
-    pub id: Option<String>,
+    pub id: Option<Text>,
     /// Version of the profile format (`0.2`, `0.3`, `1.0`).
-    pub version: Option<String>,
+    pub version: Option<Text>,
     pub basic_info: BasicInfo,
     /// The 14 lifecycle actions, in spec order, as far as the profile lists them.
     pub actions: Vec<Action>,
@@ -100,28 +105,28 @@ pub struct Profile {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct BasicInfo {
-    pub name: Option<String>,
-    pub component_type: Option<String>,
-    pub activity_type: Option<String>,
-    pub component_kind: Option<String>,
-    pub rtc_type: Option<String>,
-    pub category: Option<String>,
-    pub description: Option<String>,
-    pub execution_rate: Option<String>,
-    pub execution_type: Option<String>,
-    pub max_instances: Option<String>,
-    pub vendor: Option<String>,
-    pub version: Option<String>,
+    pub name: Option<Text>,
+    pub component_type: Option<Text>,
+    pub activity_type: Option<Text>,
+    pub component_kind: Option<Text>,
+    pub rtc_type: Option<Text>,
+    pub category: Option<Text>,
+    pub description: Option<Text>,
+    pub execution_rate: Option<Text>,
+    pub execution_type: Option<Text>,
+    pub max_instances: Option<Text>,
+    pub vendor: Option<Text>,
+    pub version: Option<Text>,
     #[serde(rename = "abstract")]
-    pub abstract_: Option<String>,
-    pub hardware_profile: Option<String>,
+    pub abstract_: Option<Text>,
+    pub hardware_profile: Option<Text>,
     /// As written in XML (`xsd:dateTime`); YAML date maps are turned into the same ISO form.
-    pub creation_date: Option<String>,
-    pub update_date: Option<String>,
+    pub creation_date: Option<Text>,
+    pub update_date: Option<Text>,
     pub doc: Option<BasicDoc>,
-    pub comment: Option<String>,
-    pub save_project: Option<String>,
-    pub version_up_logs: Vec<String>,
+    pub comment: Option<Text>,
+    pub save_project: Option<Text>,
+    pub version_up_logs: Vec<Text>,
     pub properties: Vec<Property>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -132,12 +137,12 @@ pub struct BasicInfo {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct BasicDoc {
-    pub description: Option<String>,
-    pub inout: Option<String>,
-    pub algorithm: Option<String>,
-    pub creator: Option<String>,
-    pub license: Option<String>,
-    pub reference: Option<String>,
+    pub description: Option<Text>,
+    pub inout: Option<Text>,
+    pub algorithm: Option<Text>,
+    pub creator: Option<Text>,
+    pub license: Option<Text>,
+    pub reference: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -256,7 +261,7 @@ impl ActionKind {
 pub struct Action {
     pub kind: ActionKind,
     /// `implemented` as written (`true` / `false`).
-    pub implemented: Option<String>,
+    pub implemented: Option<Text>,
     pub doc: Option<ActionDoc>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -273,9 +278,9 @@ impl Action {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ActionDoc {
-    pub description: Option<String>,
-    pub pre_condition: Option<String>,
-    pub post_condition: Option<String>,
+    pub description: Option<Text>,
+    pub pre_condition: Option<Text>,
+    pub post_condition: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -295,15 +300,15 @@ pub struct ConfigurationSet {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Configuration {
-    pub name: Option<String>,
+    pub name: Option<Text>,
     #[serde(rename = "type")]
-    pub type_: Option<String>,
-    pub default_value: Option<String>,
-    pub unit: Option<String>,
+    pub type_: Option<Text>,
+    pub default_value: Option<Text>,
+    pub unit: Option<Text>,
     pub constraint: Option<Constraint>,
     pub doc: Option<ConfigurationDoc>,
-    pub comment: Option<String>,
-    pub variable_name: Option<String>,
+    pub comment: Option<Text>,
+    pub variable_name: Option<Text>,
     pub properties: Vec<Property>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -325,12 +330,12 @@ impl Configuration {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ConfigurationDoc {
-    pub dataname: Option<String>,
-    pub default_value: Option<String>,
-    pub description: Option<String>,
-    pub unit: Option<String>,
-    pub range: Option<String>,
-    pub constraint: Option<String>,
+    pub dataname: Option<Text>,
+    pub default_value: Option<Text>,
+    pub description: Option<Text>,
+    pub unit: Option<Text>,
+    pub range: Option<Text>,
+    pub constraint: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -341,21 +346,21 @@ pub struct ConfigurationDoc {
 #[serde(rename_all = "camelCase")]
 pub struct DataPort {
     /// `DataInPort`, `DataOutPort` or `EventPort` as written.
-    pub port_type: Option<String>,
-    pub name: Option<String>,
+    pub port_type: Option<Text>,
+    pub name: Option<Text>,
     #[serde(rename = "type")]
-    pub type_: Option<String>,
-    pub idl_file: Option<String>,
-    pub interface_type: Option<String>,
-    pub dataflow_type: Option<String>,
-    pub subscription_type: Option<String>,
-    pub unit: Option<String>,
+    pub type_: Option<Text>,
+    pub idl_file: Option<Text>,
+    pub interface_type: Option<Text>,
+    pub dataflow_type: Option<Text>,
+    pub subscription_type: Option<Text>,
+    pub unit: Option<Text>,
     pub constraint: Option<Constraint>,
     pub doc: Option<DataPortDoc>,
-    pub comment: Option<String>,
-    pub variable_name: Option<String>,
+    pub comment: Option<Text>,
+    pub variable_name: Option<Text>,
     /// `rtcExt:position` as written (`LEFT`, `left`, …).
-    pub position: Option<String>,
+    pub position: Option<Text>,
     pub properties: Vec<Property>,
     /// FSM events carried by an `EventPort` (RTCBuilder 2.x).
     pub events: Vec<Event>,
@@ -398,12 +403,12 @@ impl DataPort {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Event {
-    pub name: Option<String>,
+    pub name: Option<Text>,
     #[serde(rename = "type")]
-    pub type_: Option<String>,
-    pub source: Option<String>,
-    pub target: Option<String>,
-    pub condition: Option<String>,
+    pub type_: Option<Text>,
+    pub source: Option<Text>,
+    pub target: Option<Text>,
+    pub condition: Option<Text>,
     pub doc: Option<DataPortDoc>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -415,14 +420,14 @@ pub struct Event {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct DataPortDoc {
-    pub description: Option<String>,
+    pub description: Option<Text>,
     #[serde(rename = "type")]
-    pub type_: Option<String>,
-    pub number: Option<String>,
-    pub semantics: Option<String>,
-    pub unit: Option<String>,
-    pub occurrence: Option<String>,
-    pub operation: Option<String>,
+    pub type_: Option<Text>,
+    pub number: Option<Text>,
+    pub semantics: Option<Text>,
+    pub unit: Option<Text>,
+    pub occurrence: Option<Text>,
+    pub operation: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -455,12 +460,12 @@ impl PortSide {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ServicePort {
-    pub name: Option<String>,
+    pub name: Option<Text>,
     pub interfaces: Vec<ServiceInterface>,
     pub trans_methods: Vec<TransMethod>,
     pub doc: Option<ServicePortDoc>,
-    pub comment: Option<String>,
-    pub position: Option<String>,
+    pub comment: Option<Text>,
+    pub position: Option<Text>,
     pub properties: Vec<Property>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -477,8 +482,8 @@ impl ServicePort {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ServicePortDoc {
-    pub description: Option<String>,
-    pub ifdescription: Option<String>,
+    pub description: Option<Text>,
+    pub ifdescription: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -488,7 +493,7 @@ pub struct ServicePortDoc {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct TransMethod {
-    pub kind: Option<String>,
+    pub kind: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -498,17 +503,17 @@ pub struct TransMethod {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ServiceInterface {
-    pub name: Option<String>,
+    pub name: Option<Text>,
     #[serde(rename = "type")]
-    pub type_: Option<String>,
+    pub type_: Option<Text>,
     /// `Provided` or `Required` as written.
-    pub direction: Option<String>,
-    pub instance_name: Option<String>,
-    pub idl_file: Option<String>,
-    pub path: Option<String>,
+    pub direction: Option<Text>,
+    pub instance_name: Option<Text>,
+    pub idl_file: Option<Text>,
+    pub path: Option<Text>,
     pub doc: Option<ServiceInterfaceDoc>,
-    pub comment: Option<String>,
-    pub variable_name: Option<String>,
+    pub comment: Option<Text>,
+    pub variable_name: Option<Text>,
     pub properties: Vec<Property>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -543,12 +548,12 @@ impl ServiceInterface {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ServiceInterfaceDoc {
-    pub description: Option<String>,
-    pub doc_argument: Option<String>,
-    pub doc_return: Option<String>,
-    pub doc_exception: Option<String>,
-    pub doc_pre_condition: Option<String>,
-    pub doc_post_condition: Option<String>,
+    pub description: Option<Text>,
+    pub doc_argument: Option<Text>,
+    pub doc_return: Option<Text>,
+    pub doc_exception: Option<Text>,
+    pub doc_pre_condition: Option<Text>,
+    pub doc_post_condition: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -558,8 +563,8 @@ pub struct ServiceInterfaceDoc {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Parameter {
-    pub name: Option<String>,
-    pub default_value: Option<String>,
+    pub name: Option<Text>,
+    pub default_value: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -569,7 +574,7 @@ pub struct Parameter {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Language {
-    pub kind: Option<String>,
+    pub kind: Option<Text>,
     pub targets: Vec<Target>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -580,12 +585,12 @@ pub struct Language {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Target {
-    pub lang_version: Option<String>,
-    pub os: Option<String>,
-    pub os_versions: Vec<String>,
-    pub other: Option<String>,
-    pub cpus: Vec<String>,
-    pub cpu_other: Option<String>,
+    pub lang_version: Option<Text>,
+    pub os: Option<Text>,
+    pub os_versions: Vec<Text>,
+    pub other: Option<Text>,
+    pub cpus: Vec<Text>,
+    pub cpu_other: Option<Text>,
     pub libraries: Vec<Library>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -596,9 +601,9 @@ pub struct Target {
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Library {
-    pub name: Option<String>,
-    pub version: Option<String>,
-    pub other: Option<String>,
+    pub name: Option<Text>,
+    pub version: Option<Text>,
+    pub other: Option<Text>,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -620,7 +625,7 @@ pub enum ConstraintKind {
     /// `ConstraintUnitType` (2.3.19): one condition, optionally keyed (inside a hash).
     Unit {
         #[serde(skip_serializing_if = "Option::is_none")]
-        key: Option<String>,
+        key: Option<Text>,
         condition: Box<Condition>,
     },
     /// `ConstraintListType` (2.3.20): element i of a vector value must satisfy item i.
@@ -647,26 +652,26 @@ pub enum Condition {
     /// `propertyIsNull`: the value must be empty.
     IsNull {
         #[serde(skip_serializing_if = "Option::is_none")]
-        text: Option<String>,
+        text: Option<Text>,
     },
     /// `=`, `≠`, `<`, `>`, `≤`, `≥` against a literal.
     Compare {
         comparison: Comparison,
-        literal: Option<String>,
+        literal: Option<Text>,
         /// `matchCase` as written; absent means case-sensitive (spec 8.1).
-        match_case: Option<String>,
+        match_case: Option<Text>,
     },
     /// `propertyIsLike`: a pattern with wild-card, single-character and escape characters.
     Like {
-        literal: Option<String>,
-        wild_card: Option<String>,
-        single_char: Option<String>,
-        escape_char: Option<String>,
+        literal: Option<Text>,
+        wild_card: Option<Text>,
+        single_char: Option<Text>,
+        escape_char: Option<Text>,
     },
     /// `propertyIsBetween`: lower ≤ x ≤ upper (both inclusive).
     Between {
-        lower: Option<String>,
-        upper: Option<String>,
+        lower: Option<Text>,
+        upper: Option<Text>,
     },
 }
 
@@ -726,7 +731,7 @@ pub fn property_value<'a>(props: &'a [Property], name: &str) -> Option<&'a str> 
 
 /// A non-empty, trimmed view of an optional string: empty attributes count as absent when
 /// rendering (NOTES: "treat empty as absent when rendering, but keep it in JSON as given").
-pub fn non_empty(s: &Option<String>) -> Option<&str> {
+pub fn non_empty(s: &Option<Text>) -> Option<&str> {
     s.as_deref().map(str::trim).filter(|s| !s.is_empty())
 }
 

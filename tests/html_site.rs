@@ -17,8 +17,8 @@ use std::path::Path;
 
 // ---------- a small builder for catalogues made in Rust ----------
 
-fn s(v: &str) -> Option<String> {
-    Some(v.to_string())
+fn s(v: &str) -> Option<rtcdoc::model::Text> {
+    Some(v.into())
 }
 
 fn component(name: &str, category: &str) -> Profile {

@@ -80,7 +80,7 @@ fn fixture(name: &str) -> Parsed {
     }
 }
 
-fn s(v: &Option<String>) -> Option<&str> {
+fn s(v: &Option<rtcdoc::model::Text>) -> Option<&str> {
     v.as_deref()
 }
 
@@ -91,7 +91,7 @@ fn config<'a>(p: &'a Profile, name: &str) -> &'a Configuration {
         .unwrap_or_else(|| panic!("no configuration {name}"))
 }
 
-fn unit(c: &Constraint) -> (&Option<String>, &Condition) {
+fn unit(c: &Constraint) -> (&Option<rtcdoc::model::Text>, &Condition) {
     match &c.kind {
         ConstraintKind::Unit { key, condition } => (key, condition),
         k => panic!("not a unit: {k:?}"),

@@ -28,7 +28,7 @@ impl Sink<'_> {
     }
 }
 
-fn blank(s: &Option<String>) -> bool {
+fn blank(s: &Option<crate::model::Text>) -> bool {
     non_empty(s).is_none()
 }
 
@@ -52,7 +52,7 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
 
 /// RTC101: required attributes (XSD `use="required"`).
 fn required(p: &Profile, s: &mut Sink) {
-    let miss = |s: &mut Sink, what: &str, v: &Option<String>, pos: Pos| {
+    let miss = |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
         if blank(v) {
             let how = if v.is_some() {
                 "is empty"
@@ -162,22 +162,23 @@ fn required(p: &Profile, s: &mut Sink) {
 /// RTC102: enumerations of the XSD.
 fn enumerations(p: &Profile, s: &mut Sink) {
     let b = &p.basic_info;
-    let exact = |s: &mut Sink, what: &str, v: &Option<String>, allowed: &[&str], pos: Pos| {
-        if let Some(v) = non_empty(v) {
-            if !allowed.contains(&v) {
-                let hint = allowed
-                    .iter()
-                    .find(|a| a.eq_ignore_ascii_case(v))
-                    .map(|a| format!(" (write `{a}`: the value is case-sensitive)"))
-                    .unwrap_or_default();
-                s.emit(
-                    r::INVALID_ENUM,
-                    pos,
-                    format!("{what} `{v}` is not one of {}{hint}", allowed.join(", ")),
-                );
+    let exact =
+        |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, allowed: &[&str], pos: Pos| {
+            if let Some(v) = non_empty(v) {
+                if !allowed.contains(&v) {
+                    let hint = allowed
+                        .iter()
+                        .find(|a| a.eq_ignore_ascii_case(v))
+                        .map(|a| format!(" (write `{a}`: the value is case-sensitive)"))
+                        .unwrap_or_default();
+                    s.emit(
+                        r::INVALID_ENUM,
+                        pos,
+                        format!("{what} `{v}` is not one of {}{hint}", allowed.join(", ")),
+                    );
+                }
             }
-        }
-    };
+        };
     exact(
         s,
         "componentType",
@@ -224,7 +225,7 @@ fn enumerations(p: &Profile, s: &mut Sink) {
     }
 }
 
-fn position(s: &mut Sink, v: &Option<String>, port: Option<&str>, pos: Pos) {
+fn position(s: &mut Sink, v: &Option<crate::model::Text>, port: Option<&str>, pos: Pos) {
     if let Some(v) = non_empty(v) {
         if crate::model::PortSide::parse(Some(v)).is_none() {
             s.emit(
@@ -287,7 +288,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
             }
         }
     }
-    let boolean = |s: &mut Sink, what: String, v: &Option<String>, pos: Pos| {
+    let boolean = |s: &mut Sink, what: String, v: &Option<crate::model::Text>, pos: Pos| {
         if let Some(t) = v {
             if parse_bool(Some(t)).is_none() {
                 s.emit(
@@ -449,7 +450,7 @@ fn identity(p: &Profile, s: &mut Sink) {
 
 /// RTC204–RTC207: names without whitespace, unique where they must be.
 fn names<'a>(p: &'a Profile, s: &mut Sink) {
-    let ws = |s: &mut Sink, what: &str, v: &Option<String>, pos: Pos| {
+    let ws = |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
         if let Some(n) = v.as_deref().filter(|n| !n.trim().is_empty()) {
             if n.chars().any(char::is_whitespace) {
                 s.emit(
@@ -462,22 +463,23 @@ fn names<'a>(p: &'a Profile, s: &mut Sink) {
     };
     // Ports: data and service ports share one namespace.
     let mut ports: HashMap<&str, (Pos, &str)> = HashMap::new();
-    let mut port = |s: &mut Sink, kind: &'static str, v: &'a Option<String>, pos: Pos| {
-        let Some(n) = non_empty(v) else { return };
-        match ports.get(n) {
-            Some((first, first_kind)) => s.emit(
-                r::DUPLICATE_PORT,
-                pos,
-                format!(
-                    "{kind} `{n}` has the same name as the {first_kind} at line {}",
-                    first.line
+    let mut port =
+        |s: &mut Sink, kind: &'static str, v: &'a Option<crate::model::Text>, pos: Pos| {
+            let Some(n) = non_empty(v) else { return };
+            match ports.get(n) {
+                Some((first, first_kind)) => s.emit(
+                    r::DUPLICATE_PORT,
+                    pos,
+                    format!(
+                        "{kind} `{n}` has the same name as the {first_kind} at line {}",
+                        first.line
+                    ),
                 ),
-            ),
-            None => {
-                ports.insert(n, (pos, kind));
+                None => {
+                    ports.insert(n, (pos, kind));
+                }
             }
-        }
-    };
+        };
     for d in &p.data_ports {
         ws(s, "data port", &d.name, d.pos);
         port(s, "data port", &d.name, d.pos);
@@ -604,25 +606,26 @@ fn unknown_items<'a>(v: &'a str, known: &[&str]) -> Vec<&'a str> {
 /// RTC208–RTC212: componentKind, executionType and the data-port transport attributes.
 fn known_values(p: &Profile, s: &mut Sink) {
     let b = &p.basic_info;
-    let check = |s: &mut Sink, code, what: &str, v: &Option<String>, known: &[&str], pos| {
-        let Some(t) = non_empty(v) else { return };
-        let bad = unknown_items(t, known);
-        if !bad.is_empty() {
-            s.emit(
-                code,
-                pos,
-                format!(
-                    "{what} `{}` is not a known value{}",
-                    bad.join("`, `"),
-                    if bad.len() == 1 && bad[0] == t {
-                        String::new()
-                    } else {
-                        format!(" (in `{t}`)")
-                    }
-                ),
-            );
-        }
-    };
+    let check =
+        |s: &mut Sink, code, what: &str, v: &Option<crate::model::Text>, known: &[&str], pos| {
+            let Some(t) = non_empty(v) else { return };
+            let bad = unknown_items(t, known);
+            if !bad.is_empty() {
+                s.emit(
+                    code,
+                    pos,
+                    format!(
+                        "{what} `{}` is not a known value{}",
+                        bad.join("`, `"),
+                        if bad.len() == 1 && bad[0] == t {
+                            String::new()
+                        } else {
+                            format!(" (in `{t}`)")
+                        }
+                    ),
+                );
+            }
+        };
     check(
         s,
         r::COMPONENT_KIND,
@@ -771,15 +774,18 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
 pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Sink>) -> (usize, usize) {
     let mut documented = 0;
     let mut total = 0;
-    let mut item =
-        |s: &mut Option<&mut Sink>, desc: Option<&Option<String>>, code, pos, msg: String| {
-            total += 1;
-            if desc.is_some_and(|d| !blank(d)) {
-                documented += 1;
-            } else if let Some(s) = s.as_deref_mut() {
-                s.emit(code, pos, msg);
-            }
-        };
+    let mut item = |s: &mut Option<&mut Sink>,
+                    desc: Option<&Option<crate::model::Text>>,
+                    code,
+                    pos,
+                    msg: String| {
+        total += 1;
+        if desc.is_some_and(|d| !blank(d)) {
+            documented += 1;
+        } else if let Some(s) = s.as_deref_mut() {
+            s.emit(code, pos, msg);
+        }
+    };
     let b = &p.basic_info;
     item(
         &mut s,

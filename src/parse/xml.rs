@@ -313,14 +313,14 @@ impl Ns {
             _ => Ns::Other(String::from_utf8_lossy(uri).into_owned()),
         }
     }
-    fn uri(&self) -> Option<String> {
+    fn uri(&self) -> Option<Text> {
         match self {
             Ns::Rtc => Some(NS_RTC.into()),
             Ns::Doc => Some(NS_RTC_DOC.into()),
             Ns::Ext => Some(NS_RTC_EXT.into()),
             Ns::Xsi => Some(NS_XSI.into()),
             Ns::None => None,
-            Ns::Other(u) => Some(u.clone()),
+            Ns::Other(u) => Some(u.as_str().into()),
         }
     }
     /// The reader is lenient about which of the three RTC namespaces (or none) a known name
@@ -888,7 +888,7 @@ impl Mapper<'_> {
 
     /// Sets a known attribute's field; a duplicate (same local name in two namespaces) goes
     /// to `extra`.
-    fn set(&mut self, slot: &mut Option<String>, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
+    fn set(&mut self, slot: &mut Option<Text>, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
         if slot.is_some() {
             self.warn(
                 a.pos,
@@ -899,7 +899,7 @@ impl Mapper<'_> {
             );
             extra.push(attr_extra(a));
         } else {
-            *slot = Some(a.value.clone());
+            *slot = Some(a.value.as_str().into());
         }
     }
 
@@ -915,7 +915,7 @@ impl Mapper<'_> {
                 kind: ExtraKind::Element,
                 name: "#text".into(),
                 namespace: None,
-                value: Some(n.text.clone()),
+                value: Some(n.text.as_str().into()),
                 children: Vec::new(),
                 pos,
             });
@@ -924,15 +924,17 @@ impl Mapper<'_> {
 
     /// Text content of a text-only element (`VersionUpLogs`, `cpus`, `Literal`, …). Its
     /// attributes and child elements are unknown and go to `extra` of the owning node.
-    fn text_of(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) -> String {
-        let what = format!("`{}` of {on}", n.qname);
-        for a in &n.attrs {
-            self.unknown_attr(a, &what, extra);
+    fn text_of(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) -> Text {
+        if !n.attrs.is_empty() || !n.children.is_empty() {
+            let what = format!("`{}` of {on}", n.qname);
+            for a in &n.attrs {
+                self.unknown_attr(a, &what, extra);
+            }
+            for c in &n.children {
+                self.unknown_elem(c, &what, extra);
+            }
         }
-        for c in &n.children {
-            self.unknown_elem(c, &what, extra);
-        }
-        n.text.clone()
+        n.text.as_str().into()
     }
 
     /// Reports every attribute of an element that has none defined.
@@ -953,9 +955,9 @@ fn foreign(ns: &Ns) -> String {
 fn attr_extra(a: &Attr) -> Extra {
     Extra {
         kind: ExtraKind::Attribute,
-        name: a.qname.clone(),
+        name: a.qname.as_str().into(),
         namespace: a.ns.uri(),
-        value: Some(a.value.clone()),
+        value: Some(a.value.as_str().into()),
         children: Vec::new(),
         pos: a.pos,
     }
@@ -967,17 +969,17 @@ fn node_extra(n: &Node) -> Extra {
     children.extend(n.children.iter().map(node_extra));
     Extra {
         kind: ExtraKind::Element,
-        name: n.qname.clone(),
+        name: n.qname.as_str().into(),
         namespace: n.ns.uri(),
-        value: n.has_text().then(|| n.text.clone()),
+        value: n.has_text().then(|| n.text.as_str().into()),
         children,
         pos: n.pos,
     }
 }
 
 /// Non-empty text of a text element (whitespace-only counts as empty).
-fn non_blank(s: String) -> Option<String> {
-    (!s.trim().is_empty()).then_some(s)
+fn non_blank(s: &str) -> Option<Text> {
+    (!s.trim().is_empty()).then(|| s.into())
 }
 
 /// spec 2.2 `rtc_profile`, XSD 6.1 `RtcProfile`.
@@ -1069,7 +1071,7 @@ fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
             // XSD 6.3 `VersionUpLogs`; the 9.2 sample writes `VersionUpLog`. Empty ones are
             // common in real files and say nothing.
             Some("VersionUpLogs" | "VersionUpLog") => {
-                if let Some(t) = non_blank(m.text_of(c, on, &mut extra)) {
+                if let Some(t) = non_blank(&m.text_of(c, on, &mut extra)) {
                     b.version_up_logs.push(t);
                 }
             }
@@ -1613,12 +1615,12 @@ fn map_target(m: &mut Mapper, n: &Node) -> Target {
     for c in &n.children {
         match c.key() {
             Some("osVersions") => {
-                if let Some(v) = non_blank(m.text_of(c, on, &mut extra)) {
+                if let Some(v) = non_blank(&m.text_of(c, on, &mut extra)) {
                     t.os_versions.push(v);
                 }
             }
             Some("cpus") => {
-                if let Some(v) = non_blank(m.text_of(c, on, &mut extra)) {
+                if let Some(v) = non_blank(&m.text_of(c, on, &mut extra)) {
                     t.cpus.push(v);
                 }
             }
@@ -1722,7 +1724,7 @@ fn map_unit(m: &mut Mapper, n: &Node, extra: &mut Vec<Extra>) -> ConstraintKind 
     for a in &n.attrs {
         match a.key() {
             Some("key") if key.is_none() => {
-                key = Some(a.value.clone());
+                key = Some(a.value.as_str().into());
                 key_attr = Some(a);
             }
             _ => m.unknown_attr(a, on, extra),
@@ -1808,7 +1810,7 @@ fn map_condition(m: &mut Mapper, n: &Node, k: &str, extra: &mut Vec<Extra>) -> O
                 m.unknown_elem(c, &on, extra);
             }
             Condition::IsNull {
-                text: non_blank(n.text.clone()),
+                text: non_blank(&n.text),
             }
         }
         "propertyisnulltype" => {
@@ -1817,7 +1819,7 @@ fn map_condition(m: &mut Mapper, n: &Node, k: &str, extra: &mut Vec<Extra>) -> O
             for c in &n.children {
                 match c.key_lower().as_deref() {
                     Some("propertyisnull") if text.is_none() => {
-                        text = Some(non_blank(m.text_of(c, &on, extra)))
+                        text = Some(non_blank(&m.text_of(c, &on, extra)))
                     }
                     _ => m.unknown_elem(c, &on, extra),
                 }
@@ -1890,7 +1892,7 @@ fn map_condition(m: &mut Mapper, n: &Node, k: &str, extra: &mut Vec<Extra>) -> O
 }
 
 /// The text of the `Literal` child; other children and stray text go to `extra`.
-fn literal_child(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) -> Option<String> {
+fn literal_child(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) -> Option<Text> {
     let mut literal = None;
     for c in &n.children {
         match c.key_lower().as_deref() {

@@ -569,13 +569,13 @@ fn describe(v: &Value) -> &'static str {
 #[derive(Default)]
 struct DateParts {
     ymdhms: [Option<i64>; 6],
-    fraction: Option<String>,
+    fraction: Option<Text>,
     millisecond: Option<i64>,
     timezone: Option<i64>,
 }
 
 impl DateParts {
-    fn iso(&self) -> Option<String> {
+    fn iso(&self) -> Option<Text> {
         let [Some(y), Some(mo), Some(d), Some(h), Some(mi), Some(s)] = self.ymdhms else {
             return None;
         };
@@ -599,7 +599,7 @@ impl DateParts {
             let a = tz.unsigned_abs();
             out.push_str(&format!("{sign}{:02}:{:02}", a / 60, a % 60));
         }
-        Some(out)
+        Some(out.into())
     }
 }
 
@@ -691,7 +691,7 @@ impl Reader<'_> {
     fn extra(&mut self, name: &str, v: &Value, pos: Pos) -> Extra {
         let mut e = Extra {
             kind: ExtraKind::Key,
-            name: name.to_string(),
+            name: name.into(),
             namespace: None,
             value: None,
             children: Vec::new(),
@@ -720,7 +720,7 @@ impl Reader<'_> {
     /// Text of a scalar as written: numbers keep their source spelling (`1000.0`), booleans are
     /// `true`/`false`, null is `None`. `after_key` says whether the locator sits just after the
     /// key of this value (else after a sequence `-`).
-    fn scalar_text(&mut self, v: &Value, after_key: bool) -> Option<String> {
+    fn scalar_text(&mut self, v: &Value, after_key: bool) -> Option<Text> {
         let raw = if after_key {
             self.loc.raw_after_key()
         } else {
@@ -728,16 +728,16 @@ impl Reader<'_> {
         };
         match untag_ref(v) {
             Value::Null => None,
-            Value::Bool(b) => Some(b.to_string()),
+            Value::Bool(b) => Some(if *b { "true" } else { "false" }.into()),
             Value::Number(n) => {
                 let text = raw
                     .map(|(r, _)| r)
                     .filter(|r| r.parse::<serde_norway::Number>().ok().as_ref() == Some(n))
-                    .map(str::to_string);
+                    .map(Text::from);
                 if let Some((_, end)) = raw {
                     self.loc.cursor = end;
                 }
-                Some(text.unwrap_or_else(|| n.to_string()))
+                Some(text.unwrap_or_else(|| compact_str::format_compact!("{n}")))
             }
             Value::String(s) => {
                 // Skip a one-line value so that its text is not mistaken for a later key.
@@ -751,14 +751,14 @@ impl Reader<'_> {
                         self.loc.cursor = end;
                     }
                 }
-                Some(s.clone())
+                Some(s.as_str().into())
             }
             _ => None,
         }
     }
 
     /// A text value (chapter 7 `type: text|int|bool|number`).
-    fn text(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<String> {
+    fn text(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<Text> {
         match untag_ref(v) {
             Value::Mapping(_) | Value::Sequence(_) => {
                 self.wrong_shape(name, v, pos, "a scalar", sink);
@@ -805,7 +805,7 @@ impl Reader<'_> {
     }
 
     /// A list of texts (`osVersions`, `cpus`, `"rtcExt::versionUpLogs"`).
-    fn texts(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Vec<String> {
+    fn texts(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Vec<Text> {
         let mut out = Vec::new();
         for (i, item) in self.seq(v, name, pos, sink).iter().enumerate() {
             let p = self.loc.item();
@@ -990,7 +990,7 @@ impl Reader<'_> {
     }
 
     /// A date: a chapter 7 `dateType` map (→ ISO 8601) or a plain string kept as written.
-    fn date(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<String> {
+    fn date(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<Text> {
         let m = match untag_ref(v) {
             Value::Mapping(m) => m,
             Value::Sequence(_) => {
@@ -1036,19 +1036,19 @@ impl Reader<'_> {
                 // The entries were located above; they share the date key's position here.
                 let e = Extra {
                     kind: ExtraKind::Key,
-                    name: name.to_string(),
+                    name: name.into(),
                     namespace: None,
                     value: None,
                     children: m
                         .iter()
                         .map(|(k, cv)| Extra {
                             kind: ExtraKind::Key,
-                            name: key_text(k),
+                            name: key_text(k).into(),
                             namespace: None,
                             value: match untag_ref(cv) {
-                                Value::String(s) => Some(s.clone()),
-                                Value::Number(n) => Some(n.to_string()),
-                                Value::Bool(b) => Some(b.to_string()),
+                                Value::String(s) => Some(s.as_str().into()),
+                                Value::Number(n) => Some(compact_str::format_compact!("{n}")),
+                                Value::Bool(b) => Some(if *b { "true" } else { "false" }.into()),
                                 _ => None,
                             },
                             children: Vec::new(),

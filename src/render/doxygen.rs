@@ -138,7 +138,7 @@ fn refer(label: &str, text_: &str) -> String {
     format!("\\ref {label} \"{}\"", text(text_))
 }
 
-fn opt(s: &Option<String>) -> String {
+fn opt(s: &Option<crate::model::Text>) -> String {
     model::non_empty(s).map(text).unwrap_or_default()
 }
 

@@ -64,14 +64,14 @@ impl Facts {
             out: Vec::new(),
         }
     }
-    fn opt(&mut self, key: &'static str, v: &Option<String>) -> &mut Self {
+    fn opt(&mut self, key: &'static str, v: &Option<crate::model::Text>) -> &mut Self {
         if let Some(s) = model::non_empty(v) {
             self.out.push(Fact::new(self.lang.t(key), s));
         }
         self
     }
     /// Like [`Facts::opt`], for free text ([`FactKind::Text`]).
-    fn md(&mut self, key: &'static str, v: &Option<String>) -> &mut Self {
+    fn md(&mut self, key: &'static str, v: &Option<crate::model::Text>) -> &mut Self {
         if let Some(s) = model::non_empty(v) {
             let mut f = Fact::new(self.lang.t(key), s);
             f.kind = FactKind::Text;
@@ -86,10 +86,10 @@ impl Facts {
         }
         self
     }
-    fn list(&mut self, key: &'static str, v: &[String]) -> &mut Self {
+    fn list<S: AsRef<str>>(&mut self, key: &'static str, v: &[S]) -> &mut Self {
         let items: Vec<&str> = v
             .iter()
-            .map(|s| s.trim())
+            .map(|s| s.as_ref().trim())
             .filter(|s| !s.is_empty())
             .collect();
         if !items.is_empty() {
@@ -157,7 +157,9 @@ pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
         .opt("execution_type", &b.execution_type)
         .opt(
             "execution_rate",
-            &b.execution_rate.as_ref().map(|r| hertz(r)),
+            &b.execution_rate
+                .as_ref()
+                .map(|r| crate::model::Text::from(hertz(r))),
         )
         .opt("max_instances", &b.max_instances)
         .md("fact_abstract", &b.abstract_)

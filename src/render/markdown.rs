@@ -214,7 +214,7 @@ fn heading(out: &mut String, level: usize, anchor: &str, text: &str) {
     w!(out);
 }
 
-fn opt(s: &Option<String>) -> String {
+fn opt(s: &Option<crate::model::Text>) -> String {
     model::non_empty(s).map(inline).unwrap_or_default()
 }
 

@@ -122,7 +122,7 @@ pub fn component_cols(lang: Lang) -> [&'static str; 4] {
     ]
 }
 
-fn esc_opt<M: Markup>(s: &Option<String>) -> String {
+fn esc_opt<M: Markup>(s: &Option<crate::model::Text>) -> String {
     model::non_empty(s).map(M::esc).unwrap_or_default()
 }
 

@@ -159,7 +159,11 @@ impl From<Fact> for Field {
 
 /// The fields of a section: `description` (free text shown first, when the section has one)
 /// followed by `facts`.
-fn fields(lang: Lang, description: Option<&Option<String>>, facts: Vec<Fact>) -> Vec<Field> {
+fn fields(
+    lang: Lang,
+    description: Option<&Option<crate::model::Text>>,
+    facts: Vec<Fact>,
+) -> Vec<Field> {
     let lead = description.and_then(|d| non_empty(d)).map(|d| Field {
         label: lang.t("description").to_string(),
         text: None,
@@ -313,7 +317,11 @@ struct Site<'a> {
     summaries: Vec<ComponentSummary>,
 }
 
-fn dir_label(lang: Lang, d: Option<PortDirection>, raw: &Option<String>) -> (String, &'static str) {
+fn dir_label(
+    lang: Lang,
+    d: Option<PortDirection>,
+    raw: &Option<crate::model::Text>,
+) -> (String, &'static str) {
     match d {
         Some(PortDirection::In) => (lang.t("in").to_string(), "in"),
         Some(PortDirection::Out) => (lang.t("out").to_string(), "out"),
@@ -349,7 +357,7 @@ impl<'a> Site<'a> {
                 href: href.clone(),
             },
             port: Link {
-                text: port.name.clone().unwrap_or_default(),
+                text: port.name.as_deref().unwrap_or_default().to_string(),
                 href: format!("{href}#{}", c.anchors.data_ports[r.port]),
             },
         }
@@ -414,7 +422,7 @@ impl<'a> Site<'a> {
 
     fn summary(&self, c: &Component) -> ComponentSummary {
         let b = &c.profile.basic_info;
-        let facet_slug = |facets: &[Facet], v: &Option<String>| {
+        let facet_slug = |facets: &[Facet], v: &Option<crate::model::Text>| {
             let name = non_empty(v).unwrap_or("");
             facets
                 .iter()
@@ -487,7 +495,7 @@ impl<'a> Site<'a> {
             });
             diagram_data.push(svg::DiagramDataPort {
                 side: dp.side(),
-                name: dp.name.clone().unwrap_or_default(),
+                name: dp.name.as_deref().unwrap_or_default().to_string(),
                 type_label: non_empty(&dp.type_)
                     .map(|t| short_name(&canonical_type(t)).to_string())
                     .unwrap_or_default(),
@@ -503,7 +511,7 @@ impl<'a> Site<'a> {
                 .events
                 .iter()
                 .map(|e| EventRow {
-                    name: e.name.clone().unwrap_or_default(),
+                    name: e.name.as_deref().unwrap_or_default().to_string(),
                     fields: fields(lang, None, facts::event(e, lang)),
                 })
                 .collect();
@@ -519,7 +527,7 @@ impl<'a> Site<'a> {
                 anchor,
                 direction,
                 dir_class,
-                name: dp.name.clone().unwrap_or_default(),
+                name: dp.name.as_deref().unwrap_or_default().to_string(),
                 type_ref,
                 unit: non_empty(&dp.unit).unwrap_or("").to_string(),
                 details,
@@ -553,7 +561,7 @@ impl<'a> Site<'a> {
                 });
                 diagram_ifaces.push(svg::DiagramInterface {
                     provided: i.direction_kind() == Some(Direction::Provided),
-                    label: i.name.clone().unwrap_or_default(),
+                    label: i.name.as_deref().unwrap_or_default().to_string(),
                     type_label: non_empty(&i.type_)
                         .map(|t| short_name(&canonical_type(t)).to_string())
                         .unwrap_or_default(),
@@ -576,7 +584,7 @@ impl<'a> Site<'a> {
                     anchor: ianchor,
                     direction,
                     dir_class,
-                    name: i.name.clone().unwrap_or_default(),
+                    name: i.name.as_deref().unwrap_or_default().to_string(),
                     type_ref,
                     details,
                     peers,
@@ -585,13 +593,13 @@ impl<'a> Site<'a> {
             }
             diagram_service.push(svg::DiagramServicePort {
                 side: sp.side(),
-                name: sp.name.clone().unwrap_or_default(),
+                name: sp.name.as_deref().unwrap_or_default().to_string(),
                 anchor: anchor.clone(),
                 interfaces: diagram_ifaces,
             });
             service_ports.push(ServicePortRow {
                 anchor,
-                name: sp.name.clone().unwrap_or_default(),
+                name: sp.name.as_deref().unwrap_or_default().to_string(),
                 details,
                 interfaces,
             });
@@ -604,9 +612,13 @@ impl<'a> Site<'a> {
             .enumerate()
             .map(|(k, conf)| ConfigurationRow {
                 anchor: c.anchors.configurations[k].clone(),
-                name: conf.name.clone().unwrap_or_default(),
+                name: conf.name.as_deref().unwrap_or_default().to_string(),
                 type_: non_empty(&conf.type_).unwrap_or("").to_string(),
-                default: conf.default_value.clone().unwrap_or_default(),
+                default: conf
+                    .default_value
+                    .as_deref()
+                    .unwrap_or_default()
+                    .to_string(),
                 unit: non_empty(&conf.unit).unwrap_or("").to_string(),
                 constraint: facts::configuration_constraint(conf).unwrap_or_default(),
                 widget: conf.widget().unwrap_or("").to_string(),
