@@ -27,6 +27,60 @@ fn sanitizer() -> &'static ammonia::Builder<'static> {
 /// pulldown-cmark's own output is already safe (it escapes all text and emits only formatting
 /// tags), so the HTML parse of the sanitiser is skipped; anything else goes through ammonia.
 pub fn to_html(text: &str) -> String {
+    match prose_html(text) {
+        Some(html) => html,
+        None => parsed_html(text),
+    }
+}
+
+/// The HTML of text that contains nothing Markdown or HTML would read specially — one
+/// paragraph of lines without leading/trailing blanks, markup characters or characters that
+/// need escaping — built without running the parser. `None` for anything else. For such text
+/// this is exactly what [`parsed_html`] gives (a property test checks it).
+fn prose_html(text: &str) -> Option<String> {
+    let mut out = String::with_capacity(text.len() + 16);
+    out.push_str("<p>");
+    for (i, line) in text.split('\n').enumerate() {
+        let first = line.chars().next()?;
+        if first.is_ascii_digit() || matches!(first, '#' | '-' | '+' | '=' | ':') {
+            return None;
+        }
+        if line.ends_with(' ') || line.starts_with(' ') {
+            return None;
+        }
+        if line.chars().any(|c| {
+            c.is_control()
+                || matches!(
+                    c,
+                    '\\' | '`'
+                        | '*'
+                        | '_'
+                        | '['
+                        | ']'
+                        | '<'
+                        | '>'
+                        | '!'
+                        | '&'
+                        | '|'
+                        | '~'
+                        | '"'
+                        | '\''
+                )
+        }) {
+            return None;
+        }
+        if i > 0 {
+            out.push_str("<br>\n");
+        }
+        out.push_str(line);
+    }
+    out.push_str("</p>\n");
+    Some(out)
+}
+
+/// Markdown → HTML through pulldown-cmark, and through the sanitiser when the output could
+/// carry anything unsafe.
+fn parsed_html(text: &str) -> String {
     let mut opts = Options::empty();
     opts.insert(Options::ENABLE_TABLES);
     opts.insert(Options::ENABLE_STRIKETHROUGH);
@@ -109,6 +163,29 @@ mod tests {
             assert!(!fast.contains("<less>"), "{fast}");
         }
         assert_eq!(to_html("a & b < c"), "<p>a &amp; b &lt; c</p>\n");
+    }
+
+    #[test]
+    fn prose_skips_the_parser() {
+        assert_eq!(
+            prose_html("Images from the camera.\n画像を配信する"),
+            Some("<p>Images from the camera.<br>\n画像を配信する</p>\n".to_string())
+        );
+        for t in [
+            "", "a\n\nb", "1. x", "a *b*", " a", "a  \nb", "x\r\ny", "a & b", "- a",
+        ] {
+            assert_eq!(prose_html(t), None, "{t:?}");
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig { cases: 4096, ..Default::default() })]
+        #[test]
+        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}\\-\n\t\u{3042}\u{FF01}]{0,40}") {
+            if let Some(fast) = prose_html(&t) {
+                proptest::prop_assert_eq!(fast, parsed_html(&t));
+            }
+        }
     }
 
     #[test]
