@@ -8,6 +8,7 @@
 //! by [`svg`] with every profile string escaped. One minijinja environment serves all pages, and
 //! pages are rendered in parallel. Links are relative, so the site works from `file://`.
 
+mod builtins;
 pub mod markdown;
 pub mod search;
 pub mod svg;
@@ -786,25 +787,35 @@ impl HtmlRenderer {
                 minijinja::Error::new(minijinja::ErrorKind::InvalidOperation, e.to_string())
             })
         });
-        // HTML-escape strings ourselves: minijinja's default also escapes `/`, which makes
-        // every URL in the site longer and harder to read without adding safety.
-        env.set_formatter(|out, state, value| {
-            if state.auto_escape() == minijinja::AutoEscape::Html && !value.is_safe() {
-                if let Some(s) = value.as_str() {
-                    out.write_str(&svg::esc(s))?;
-                    return Ok(());
-                }
-            }
-            minijinja::escape_formatter(out, state, value)
-        });
+        env.set_formatter(formatter);
         let labels: BTreeMap<&str, &str> = opts.language.labels().collect();
         env.add_global("t", Value::from_serialize(&labels));
         env.add_global("lang", opts.language.tag());
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
         env.add_global("generator", format!("rtcdoc {}", env!("CARGO_PKG_VERSION")));
+        env.add_function("fields", builtins::fields);
+        env.add_function("type_link", builtins::type_link);
+        env.add_function("peers", builtins::peers);
         env
     }
+}
+
+/// How `{{ … }}` prints a value: strings are escaped with [`svg::esc_into`] (minijinja's default
+/// would also escape `/`, making every URL longer without adding safety), the rest as minijinja
+/// does.
+fn formatter(
+    out: &mut minijinja::Output<'_>,
+    state: &minijinja::State<'_, '_>,
+    value: &Value,
+) -> Result<(), minijinja::Error> {
+    if state.auto_escape() == minijinja::AutoEscape::Html && !value.is_safe() {
+        if let Some(s) = value.as_str() {
+            svg::esc_into(out, s)?;
+            return Ok(());
+        }
+    }
+    minijinja::escape_formatter(out, state, value)
 }
 
 impl Renderer for HtmlRenderer {

@@ -8,18 +8,33 @@ use std::fmt::Write as _;
 /// Escapes text for SVG/HTML text and attribute values.
 pub fn esc(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
-    for ch in s.chars() {
-        match ch {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c if (c as u32) < 0x20 && c != '\n' && c != '\t' => out.push(' '),
-            c => out.push(c),
-        }
-    }
+    // Writing to a String cannot fail.
+    let _ = esc_into(&mut out, s);
     out
+}
+
+/// Writes `s` escaped for HTML/SVG text and attribute values: `& < > " '` become references,
+/// control characters other than newline and tab become spaces. Runs of ordinary text are
+/// written in one piece.
+pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
+    let b = s.as_bytes();
+    let mut start = 0;
+    for (i, &c) in b.iter().enumerate() {
+        let rep = match c {
+            b'&' => "&amp;",
+            b'<' => "&lt;",
+            b'>' => "&gt;",
+            b'"' => "&quot;",
+            b'\'' => "&#39;",
+            c if c < 0x20 && c != b'\n' && c != b'\t' => " ",
+            _ => continue,
+        };
+        // `i` is at an ASCII byte, so both slices end on character boundaries.
+        out.write_str(&s[start..i])?;
+        out.write_str(rep)?;
+        start = i + 1;
+    }
+    out.write_str(&s[start..])
 }
 
 /// Approximate rendered width of `s` in pixels at 12 px sans-serif (CJK glyphs are square).
