@@ -331,29 +331,29 @@ impl Ns {
 }
 
 #[derive(Debug)]
-struct Attr {
-    qname: String,
+struct Attr<'t> {
+    qname: Cow<'t, str>,
     ns: Ns,
-    local: String,
-    value: String,
+    local: Cow<'t, str>,
+    value: Cow<'t, str>,
     pos: Pos,
 }
 
-impl Attr {
+impl Attr<'_> {
     /// The local name when the attribute may carry a known RTC field.
     fn key(&self) -> Option<&str> {
-        self.ns.is_rtc_family().then_some(self.local.as_str())
+        self.ns.is_rtc_family().then_some(&*self.local)
     }
 }
 
 #[derive(Debug)]
-struct Node {
-    qname: String,
+struct Node<'t> {
+    qname: Cow<'t, str>,
     ns: Ns,
-    local: String,
+    local: Cow<'t, str>,
     /// Attributes, without the plumbing (`xmlns*`, `xsi:type`, schema locations).
-    attrs: Vec<Attr>,
-    children: Vec<Node>,
+    attrs: Vec<Attr<'t>>,
+    children: Vec<Node<'t>>,
     /// All character data directly inside the element, unescaped and EOL-normalised.
     text: String,
     /// Position of the first non-whitespace character data.
@@ -361,10 +361,10 @@ struct Node {
     pos: Pos,
 }
 
-impl Node {
+impl Node<'_> {
     /// The local name when the element may be a known RTC element.
     fn key(&self) -> Option<&str> {
-        self.ns.is_rtc_family().then_some(self.local.as_str())
+        self.ns.is_rtc_family().then_some(&*self.local)
     }
     /// Lower-cased key, for the case-insensitive constraint vocabulary (spec 8.1 vs XSD).
     fn key_lower(&self) -> Option<String> {
@@ -390,7 +390,7 @@ impl TreeBuilder<'_, '_> {
 }
 
 /// Text → element tree. Streams through quick-xml's `NsReader`; O(n) time and memory.
-fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnostic> {
+fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>, Diagnostic> {
     let mut b = TreeBuilder {
         text,
         file,
@@ -454,7 +454,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                 )
                 .with_hint("raise `max_depth` if the file is genuine"));
         }
-        let qname = sub(text, e.name().as_ref()).into_owned();
+        let qname = sub(text, e.name().as_ref());
         if !is_name(&qname) {
             return Err(b.err(
                 codes::MALFORMED,
@@ -462,7 +462,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                 format!("`<{qname}` is not a valid element name"),
             ));
         }
-        let local = sub(text, e.local_name().as_ref()).into_owned();
+        let local = sub(text, e.local_name().as_ref());
         let pos = b.cursor.pos(before);
         let mut attrs = Vec::new();
         for a in e.attributes() {
@@ -478,7 +478,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
             if key == b"xmlns" || key.starts_with(b"xmlns:") {
                 continue; // namespace declarations: plumbing
             }
-            let aq = sub(text, key).into_owned();
+            let aq = sub(text, key);
             let (ans, alocal) = reader.resolve_attribute(a.key);
             let ans = own_ns(ans).map_err(|p| {
                 b.err(
@@ -487,10 +487,10 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
                     format!("namespace prefix `{p}` of attribute `{aq}` is not declared"),
                 )
             })?;
-            let alocal = sub(text, alocal.as_ref()).into_owned();
+            let alocal = sub(text, alocal.as_ref());
             if ans == Ns::Xsi
                 && matches!(
-                    alocal.as_str(),
+                    &*alocal,
                     "type" | "schemaLocation" | "noNamespaceSchemaLocation"
                 )
             {
@@ -498,7 +498,7 @@ fn build_tree(text: &str, file: &str, limits: &Limits) -> Result<Node, Diagnosti
             }
             let raw = sub(text, &a.value);
             let value_off = offset_in(text, &a.value).unwrap_or(key_off);
-            let value = unescape_attr(&raw)
+            let value = unescape_attr(raw)
                 .map_err(|(rel, msg)| entity_error(&mut b, value_off + rel, msg))?;
             let apos = b.cursor.pos(key_off);
             attrs.push(Attr {
@@ -566,10 +566,10 @@ fn own_ns(ns: ResolveResult<'_>) -> Result<Ns, String> {
 }
 
 /// Everything but start tags and end of file: end tags, text, references, DOCTYPE, ….
-fn other_event(
+fn other_event<'t>(
     b: &mut TreeBuilder<'_, '_>,
-    stack: &mut Vec<Node>,
-    root: &mut Option<Node>,
+    stack: &mut Vec<Node<'t>>,
+    root: &mut Option<Node<'t>>,
     event: XmlEvent<'_>,
     before: usize,
 ) -> Result<(), Diagnostic> {
@@ -629,7 +629,7 @@ fn other_event(
 }
 
 /// Finishes `node`: attaches it to its parent, or makes it the root.
-fn close(node: Node, stack: &mut [Node], root: &mut Option<Node>) {
+fn close<'t>(node: Node<'t>, stack: &mut [Node<'t>], root: &mut Option<Node<'t>>) {
     match stack.last_mut() {
         Some(parent) => parent.children.push(node),
         None => *root = Some(node),
@@ -663,6 +663,15 @@ fn add_text(
 
 /// A loose check of XML 1.0 `Name` (§2.3): quick-xml accepts anything up to whitespace or `>`.
 fn is_name(s: &str) -> bool {
+    // The usual case, an ASCII name such as `rtc:DataPorts`, decided byte by byte.
+    let b = s.as_bytes();
+    if b.first()
+        .is_some_and(|c| c.is_ascii_alphabetic() || matches!(c, b'_' | b':'))
+        && b.iter()
+            .all(|c| c.is_ascii_alphanumeric() || matches!(c, b'_' | b':' | b'-' | b'.'))
+    {
+        return true;
+    }
     let mut chars = s.chars();
     let Some(first) = chars.next() else {
         return false;
@@ -675,10 +684,13 @@ fn is_name(s: &str) -> bool {
 
 /// `part` as text: borrowed without re-validation when it is a slice of `whole` (always the case
 /// for what the reader yields from a `&str`), else decoded lossily.
-fn sub<'t>(whole: &'t str, part: &'t [u8]) -> Cow<'t, str> {
+fn sub<'t>(whole: &'t str, part: &[u8]) -> Cow<'t, str> {
     offset_in(whole, part)
         .and_then(|off| whole.get(off..off.checked_add(part.len())?))
-        .map_or_else(|| String::from_utf8_lossy(part), Cow::Borrowed)
+        .map_or_else(
+            || Cow::Owned(String::from_utf8_lossy(part).into_owned()),
+            Cow::Borrowed,
+        )
 }
 
 /// Byte offset of `part` inside `whole`, when `part` borrows from it.
@@ -729,7 +741,11 @@ fn resolve_ref(name: &str) -> Result<String, String> {
 
 /// Attribute-value normalisation (XML 1.0 §3.3.3, CDATA type): literal tab, CR, LF → space
 /// (CRLF → one space), then references resolved. Errors carry the byte offset inside `raw`.
-fn unescape_attr(raw: &str) -> Result<String, (usize, String)> {
+fn unescape_attr(raw: Cow<'_, str>) -> Result<Cow<'_, str>, (usize, String)> {
+    if !raw.contains(['&', '\t', '\r', '\n']) {
+        return Ok(raw);
+    }
+    let raw = &*raw;
     let mut out = String::with_capacity(raw.len());
     let mut rest = raw;
     let mut base = 0;
@@ -755,7 +771,7 @@ fn unescape_attr(raw: &str) -> Result<String, (usize, String)> {
         }
     }
     out.push_str(rest);
-    Ok(out)
+    Ok(Cow::Owned(out))
 }
 
 fn entity_error(b: &mut TreeBuilder<'_, '_>, offset: usize, msg: String) -> Diagnostic {
@@ -899,7 +915,7 @@ impl Mapper<'_> {
             );
             extra.push(attr_extra(a));
         } else {
-            *slot = Some(a.value.as_str().into());
+            *slot = Some((&*a.value).into());
         }
     }
 
@@ -955,9 +971,9 @@ fn foreign(ns: &Ns) -> String {
 fn attr_extra(a: &Attr) -> Extra {
     Extra {
         kind: ExtraKind::Attribute,
-        name: a.qname.as_str().into(),
+        name: (&*a.qname).into(),
         namespace: a.ns.uri(),
-        value: Some(a.value.as_str().into()),
+        value: Some((&*a.value).into()),
         children: Vec::new(),
         pos: a.pos,
     }
@@ -969,7 +985,7 @@ fn node_extra(n: &Node) -> Extra {
     children.extend(n.children.iter().map(node_extra));
     Extra {
         kind: ExtraKind::Element,
-        name: n.qname.as_str().into(),
+        name: (&*n.qname).into(),
         namespace: n.ns.uri(),
         value: n.has_text().then(|| n.text.as_str().into()),
         children,
@@ -1724,7 +1740,7 @@ fn map_unit(m: &mut Mapper, n: &Node, extra: &mut Vec<Extra>) -> ConstraintKind 
     for a in &n.attrs {
         match a.key() {
             Some("key") if key.is_none() => {
-                key = Some(a.value.as_str().into());
+                key = Some((&*a.value).into());
                 key_attr = Some(a);
             }
             _ => m.unknown_attr(a, on, extra),
@@ -1920,8 +1936,15 @@ mod tests {
 
     #[test]
     fn attr_unescape_normalises() {
-        assert_eq!(unescape_attr("a\r\nb\tc&#10;&lt;").unwrap(), "a b c\n<");
-        assert!(unescape_attr("&foo;").is_err());
+        assert_eq!(
+            unescape_attr("a\r\nb\tc&#10;&lt;".into()).unwrap(),
+            "a b c\n<"
+        );
+        assert!(matches!(
+            unescape_attr("plain".into()),
+            Ok(Cow::Borrowed("plain"))
+        ));
+        assert!(unescape_attr("&foo;".into()).is_err());
     }
 
     #[test]
