@@ -27,6 +27,12 @@ pub trait Sink: Sync {
         fill(&mut buf)?;
         self.write(rel, &buf)
     }
+
+    /// Writes one file whose bytes the caller no longer needs (a rendered page): a sink that
+    /// queues files takes the buffer instead of copying it. The default calls [`Sink::write`].
+    fn write_owned(&self, rel: &str, bytes: Vec<u8>) -> Result<()> {
+        self.write(rel, &bytes)
+    }
 }
 
 /// Checks that `rel` is a plain relative path that stays inside its root.
@@ -49,6 +55,8 @@ pub struct Staging {
     target: PathBuf,
     tmp: PathBuf,
     committed: bool,
+    /// Directories already created under `tmp` (one `mkdir` per directory, not per file).
+    made_dirs: std::sync::Mutex<std::collections::HashSet<PathBuf>>,
 }
 
 impl Staging {
@@ -87,6 +95,7 @@ impl Staging {
             target,
             tmp,
             committed: false,
+            made_dirs: Default::default(),
         })
     }
 
@@ -105,8 +114,12 @@ impl Staging {
         check_relative(rel)?;
         let path = self.tmp.join(rel);
         if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent)
-                .with_context(|| format!("cannot create `{}`", parent.display()))?;
+            let mut made = self.made_dirs.lock().unwrap_or_else(|e| e.into_inner());
+            if !made.contains(parent) {
+                std::fs::create_dir_all(parent)
+                    .with_context(|| format!("cannot create `{}`", parent.display()))?;
+                made.insert(parent.to_path_buf());
+            }
         }
         Ok(path)
     }
@@ -281,11 +294,15 @@ impl MemorySink {
 
 impl Sink for MemorySink {
     fn write(&self, rel: &str, bytes: &[u8]) -> Result<()> {
+        self.write_owned(rel, bytes.to_vec())
+    }
+
+    fn write_owned(&self, rel: &str, bytes: Vec<u8>) -> Result<()> {
         check_relative(rel)?;
         self.files
             .lock()
             .unwrap_or_else(|e| e.into_inner())
-            .insert(rel.to_string(), bytes.to_vec());
+            .insert(rel.to_string(), bytes);
         Ok(())
     }
 }
@@ -343,9 +360,13 @@ impl<'a> WriterThread<'a> {
 
 impl Sink for WriterThread<'_> {
     fn write(&self, rel: &str, bytes: &[u8]) -> Result<()> {
+        self.write_owned(rel, bytes.to_vec())
+    }
+
+    fn write_owned(&self, rel: &str, bytes: Vec<u8>) -> Result<()> {
         check_relative(rel)?;
         match &self.tx {
-            Some(tx) => tx.send((rel.to_string(), bytes.to_vec())).map_err(|_| {
+            Some(tx) => tx.send((rel.to_string(), bytes)).map_err(|_| {
                 anyhow::anyhow!("the writer thread stopped (an earlier write failed)")
             }),
             None => bail!("the writer is finished"),

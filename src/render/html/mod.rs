@@ -893,7 +893,7 @@ impl HtmlRenderer {
                 let html = tmpl
                     .render(&page)
                     .with_context(|| format!("rendering component `{}`", page.name))?;
-                out.write(&site.component_path(ci), html.as_bytes())?;
+                out.write_owned(&site.component_path(ci), html.into_bytes())?;
                 Ok(1)
             })
             .try_reduce(|| 0, |a, b| Ok(a + b))?;
@@ -908,7 +908,7 @@ impl HtmlRenderer {
                     .get_template(pg.template)?
                     .render(pg.context.value())
                     .with_context(|| format!("rendering `{}`", pg.path))?;
-                out.write(&pg.path, html.as_bytes())?;
+                out.write_owned(&pg.path, html.into_bytes())?;
                 Ok(1)
             })
             .try_reduce(|| 0, |a, b| Ok(a + b))?;
