@@ -2,15 +2,21 @@
 # Catalogue-scale benchmark: rtcdoc vs Hugo vs the file-creation floor (cp -r).
 #
 # usage: bench/catalogue.sh [N ...]        (default: 100 1000 10000)
+#        RUNS=5 bench/catalogue.sh 10000    (runs per measurement; default 3, Hugo runs once)
+#        BENCH_DIR=/dev/shm/b …             (where catalogues and outputs go; default /tmp)
 #
 # For each N it generates a synthetic catalogue (bench/gen_catalogue.py), then measures with
 # /usr/bin/time -v, for each output format: wall time, profiles/s, files/s and peak RSS;
 # `rtcdoc check`; Hugo rendering rtcdoc's own Markdown output with a minimal layout; and
 # `cp -r` of rtcdoc's HTML output (the floor of creating that many files on this disk).
+# Each rtcdoc and cp measurement is run RUNS times and the run with the median wall time is
+# reported (RSS: the largest of the runs); the file system is synced before every run, so a run
+# does not pay for the previous run's writes or deletions.
 # Installs hugo and GNU time with apt-get when missing (root only). Prints a Markdown table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")
+runs=${RUNS:-3}
 [ ${#sizes[@]} -eq 0 ] && sizes=(100 1000 10000)
 work=${BENCH_DIR:-/tmp/rtcdoc-bench}
 mkdir -p "$work"
@@ -23,9 +29,10 @@ fi
 cargo build --release --quiet
 bin=$PWD/target/release/rtcdoc
 
-# measure LABEL CMD...: runs CMD under /usr/bin/time, prints "seconds rss_mb"
+# measure CMD...: runs CMD under /usr/bin/time, prints "seconds rss_mb"
 measure() {
   local log="$work/time.log"
+  sync
   /usr/bin/time -v "$@" >"$work/cmd.out" 2>"$log" || { echo "failed: $*" >&2; tail -5 "$log" >&2; return 1; }
   local wall rss
   wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' "$log")
@@ -39,6 +46,22 @@ print(f"{s:.2f} {rss/1024:.0f}")
 PY
 }
 
+# measure_runs CLEAN CMD...: RUNS times `rm -rf CLEAN; measure CMD`; prints the median wall time
+# and the largest RSS.
+measure_runs() {
+  local clean=$1; shift
+  local results=()
+  for ((r = 0; r < runs; r++)); do
+    rm -rf "$clean"
+    results+=("$(measure "$@")")
+  done
+  printf '%s\n' "${results[@]}" | python3 -c '
+import sys
+rows = [tuple(map(float, l.split())) for l in sys.stdin if l.strip()]
+walls = sorted(r[0] for r in rows)
+print(f"{walls[len(walls) // 2]:.2f} {max(r[1] for r in rows):.0f}")'
+}
+
 files_in() { find "$1" -type f | wc -l; }
 
 echo "| N | what | wall s | profiles/s | files | files/s | peak RSS MB |"
@@ -49,18 +72,16 @@ for n in "${sizes[@]}"; do
   python3 bench/gen_catalogue.py "$n" "$src" >/dev/null
   for fmt in html markdown doxygen json; do
     out="$work/out-$n-$fmt"
-    rm -rf "$out"
-    read -r s rss < <(measure "$bin" build "$src" -f "$fmt" -o "$out" -q)
+    read -r s rss < <(measure_runs "$out" "$bin" build "$src" -f "$fmt" -o "$out" -q)
     f=$(files_in "$out")
     python3 -c "print(f'| $n | rtcdoc build --format $fmt | $s | {$n/max($s,0.001):.0f} | $f | {$f/max($s,0.001):.0f} | $rss |')"
     [ "$fmt" = html ] && html_time[$n]=$s
   done
-  read -r s rss < <(measure "$bin" check "$src" -q || true)
+  read -r s rss < <(measure_runs "$work/none" "$bin" check "$src" -q || true)
   python3 -c "print(f'| $n | rtcdoc check | $s | {$n/max($s,0.001):.0f} | - | - | $rss |')"
 
   # The floor: copying rtcdoc's own HTML tree.
-  rm -rf "$work/copy-$n"
-  read -r s rss < <(measure cp -r "$work/out-$n-html" "$work/copy-$n")
+  read -r s rss < <(measure_runs "$work/copy-$n" cp -r "$work/out-$n-html" "$work/copy-$n")
   f=$(files_in "$work/copy-$n")
   python3 -c "print(f'| $n | cp -r of the HTML output (floor) | $s | - | $f | {$f/max($s,0.001):.0f} | $rss |')"
   floor=$s
