@@ -12,6 +12,7 @@
 use crate::catalog::Catalog;
 use crate::model::non_empty;
 use crate::types::canonical_type;
+use rayon::prelude::*;
 use std::collections::BTreeSet;
 
 /// Whether `c` is written without spaces between words (kana, CJK ideographs, full-width forms).
@@ -98,58 +99,62 @@ const MAX_DESCRIPTION: usize = 400;
 /// Builds the contents of `search-index.js`. The JSON is escaped so that no `<`, `>` or `&`
 /// appears literally (a `</script>` in a profile cannot end a script element).
 pub fn index_js(catalog: &Catalog) -> String {
-    let mut entries: Vec<serde_json::Value> = Vec::with_capacity(catalog.components.len());
-    for c in &catalog.components {
-        let p = &c.profile;
-        let b = &p.basic_info;
-        let mut tokens = BTreeSet::new();
-        let mut add = |s: Option<&str>| {
-            if let Some(s) = s {
-                let s: String = s.chars().take(MAX_DESCRIPTION).collect();
-                tokenize(&s, &mut tokens);
+    // Entries are built in parallel; the indexed collect keeps catalogue order.
+    let entries: Vec<serde_json::Value> = catalog
+        .components
+        .par_iter()
+        .map(|c| {
+            let p = &c.profile;
+            let b = &p.basic_info;
+            let mut tokens = BTreeSet::new();
+            let mut add = |s: Option<&str>| {
+                if let Some(s) = s {
+                    let s: String = s.chars().take(MAX_DESCRIPTION).collect();
+                    tokenize(&s, &mut tokens);
+                }
+            };
+            add(Some(p.name()));
+            add(non_empty(&b.category));
+            add(non_empty(&b.vendor));
+            add(non_empty(&b.description));
+            if let Some(d) = &b.doc {
+                add(non_empty(&d.description));
             }
-        };
-        add(Some(p.name()));
-        add(non_empty(&b.category));
-        add(non_empty(&b.vendor));
-        add(non_empty(&b.description));
-        if let Some(d) = &b.doc {
-            add(non_empty(&d.description));
-        }
-        for d in &p.data_ports {
-            add(non_empty(&d.name));
-            if let Some(t) = non_empty(&d.type_) {
-                add(Some(&canonical_type(t)));
-            }
-            for e in &d.events {
-                add(non_empty(&e.name));
-            }
-        }
-        for s in &p.service_ports {
-            add(non_empty(&s.name));
-            for i in &s.interfaces {
-                add(non_empty(&i.name));
-                if let Some(t) = non_empty(&i.type_) {
+            for d in &p.data_ports {
+                add(non_empty(&d.name));
+                if let Some(t) = non_empty(&d.type_) {
                     add(Some(&canonical_type(t)));
                 }
+                for e in &d.events {
+                    add(non_empty(&e.name));
+                }
             }
-        }
-        for conf in p.configurations() {
-            add(non_empty(&conf.name));
-        }
-        let summary = non_empty(&b.description)
-            .map(|d| super::markdown::first_line(d, 90))
-            .unwrap_or_default();
-        let tokens: Vec<String> = tokens.into_iter().collect();
-        entries.push(serde_json::json!([
-            p.name(),
-            c.slug,
-            non_empty(&b.category).unwrap_or(""),
-            non_empty(&b.vendor).unwrap_or(""),
-            summary,
-            tokens.join(" "),
-        ]));
-    }
+            for s in &p.service_ports {
+                add(non_empty(&s.name));
+                for i in &s.interfaces {
+                    add(non_empty(&i.name));
+                    if let Some(t) = non_empty(&i.type_) {
+                        add(Some(&canonical_type(t)));
+                    }
+                }
+            }
+            for conf in p.configurations() {
+                add(non_empty(&conf.name));
+            }
+            let summary = non_empty(&b.description)
+                .map(|d| super::markdown::first_line(d, 90))
+                .unwrap_or_default();
+            let tokens: Vec<String> = tokens.into_iter().collect();
+            serde_json::json!([
+                p.name(),
+                c.slug,
+                non_empty(&b.category).unwrap_or(""),
+                non_empty(&b.vendor).unwrap_or(""),
+                summary,
+                tokens.join(" "),
+            ])
+        })
+        .collect();
     let json = serde_json::to_string(&entries).unwrap_or_else(|_| "[]".into());
     let mut out = String::with_capacity(json.len() + 64);
     out.push_str("window.RTCDOC_INDEX=");
