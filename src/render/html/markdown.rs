@@ -52,21 +52,20 @@ fn prose_html(text: &str) -> Option<String> {
             c.is_control()
                 || matches!(
                     c,
-                    '\\' | '`'
-                        | '*'
-                        | '_'
-                        | '['
-                        | ']'
-                        | '<'
-                        | '>'
-                        | '!'
-                        | '&'
-                        | '|'
-                        | '~'
-                        | '"'
-                        | '\''
+                    '\\' | '`' | '*' | '[' | ']' | '<' | '>' | '!' | '&' | '|' | '~'
                 )
         }) {
+            return None;
+        }
+        // `_` between two ASCII letters or digits (`image_width`) can neither open nor close
+        // emphasis; anywhere else it might.
+        let b = line.as_bytes();
+        let inert = |i: usize| {
+            i > 0
+                && b[i - 1].is_ascii_alphanumeric()
+                && b.get(i + 1).is_some_and(u8::is_ascii_alphanumeric)
+        };
+        if (0..b.len()).any(|i| b[i] == b'_' && !inert(i)) {
             return None;
         }
         if i > 0 {
@@ -171,8 +170,13 @@ mod tests {
             prose_html("Images from the camera.\n画像を配信する"),
             Some("<p>Images from the camera.<br>\n画像を配信する</p>\n".to_string())
         );
+        assert_eq!(
+            prose_html("image_width is \"it's\""),
+            Some("<p>image_width is \"it's\"</p>\n".to_string())
+        );
         for t in [
-            "", "a\n\nb", "1. x", "a *b*", " a", "a  \nb", "x\r\ny", "a & b", "- a",
+            "", "a\n\nb", "1. x", "a *b*", " a", "a  \nb", "x\r\ny", "a & b", "- a", "_a_",
+            "a _b_", "a_",
         ] {
             assert_eq!(prose_html(t), None, "{t:?}");
         }
@@ -181,7 +185,7 @@ mod tests {
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig { cases: 4096, ..Default::default() })]
         #[test]
-        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}\\-\n\t\u{3042}\u{FF01}]{0,40}") {
+        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}_'\"*\\-\n\t\u{3042}\u{FF01}]{0,40}") {
             if let Some(fast) = prose_html(&t) {
                 proptest::prop_assert_eq!(fast, parsed_html(&t));
             }
