@@ -51,7 +51,7 @@ pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
 /// [`load`] with progress reports.
 pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> Result<Loaded> {
     progress.stage("finding profiles", 0);
-    let walked = walk::walk(
+    let found = walk::candidates(
         input,
         &WalkOptions {
             include: opts.include.clone(),
@@ -59,40 +59,67 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             skip_dirs: opts.skip_dirs.clone(),
         },
     )?;
-    let files = walked.sources.len() + walked.errors.len();
-    progress.stage("reading profiles", walked.sources.len());
-    let results: Vec<(Option<LoadedProfile>, Vec<Diagnostic>)> = walked
-        .sources
+    // Each candidate is read once: its head tells whether it is a profile (as `walk::walk`
+    // decides), and a profile is parsed from the same bytes.
+    progress.stage("reading profiles", found.files.len());
+    enum Outcome {
+        NotProfile,
+        Loaded(LoadedProfile, Vec<Diagnostic>),
+        Failed(Diagnostic),
+    }
+    let outcomes: Vec<Outcome> = found
+        .files
         .par_iter()
-        .map(|src| {
-            let parsed = match src.read(Some(opts.limits.max_file_size)) {
-                Ok(bytes) => parse::parse(src.format, &bytes, &src.rel, &opts.limits),
-                Err(e) => Err(Diagnostic::io(&src.rel, &e)),
+        .map(|(path, rel)| {
+            let outcome = match walk::read_profile(path, Some(opts.limits.max_file_size)) {
+                Ok(None) => Outcome::NotProfile,
+                Ok(Some((format, bytes))) => {
+                    match parse::parse(format, &bytes, rel, &opts.limits) {
+                        Ok(parsed) => Outcome::Loaded(
+                            LoadedProfile {
+                                source: rel.clone(),
+                                format,
+                                profile: Box::new(parsed.profile),
+                            },
+                            parsed.diagnostics,
+                        ),
+                        Err(d) => Outcome::Failed(d),
+                    }
+                }
+                Err(e) => Outcome::Failed(Diagnostic::io(rel, &e)),
             };
             progress.advance(1);
-            match parsed {
-                Ok(parsed) => (
-                    Some(LoadedProfile {
-                        source: src.rel.clone(),
-                        format: src.format,
-                        profile: Box::new(parsed.profile),
-                    }),
-                    parsed.diagnostics,
-                ),
-                Err(d) => (None, vec![d]),
-            }
+            outcome
         })
         .collect();
     progress.stage("cross-referencing", 0);
-    let mut diagnostics = walked.errors;
-    let mut profiles = Vec::with_capacity(results.len());
-    for (p, d) in results {
-        profiles.extend(p);
+    let mut skipped = found.skipped;
+    let mut diagnostics = Vec::new();
+    let mut loaded = Vec::with_capacity(outcomes.len());
+    let mut files = 0;
+    for ((_, rel), outcome) in found.files.into_iter().zip(outcomes) {
+        match outcome {
+            Outcome::NotProfile => skipped.push(walk::not_a_profile(rel)),
+            Outcome::Loaded(p, d) => {
+                files += 1;
+                loaded.push((p, d));
+            }
+            Outcome::Failed(d) => {
+                files += 1;
+                diagnostics.push(d);
+            }
+        }
+    }
+    // Profiles in the order of their relative paths, as `walk::walk` sorts its sources.
+    loaded.sort_by(|a, b| a.0.source.cmp(&b.0.source));
+    let mut profiles = Vec::with_capacity(loaded.len());
+    for (p, d) in loaded {
+        profiles.push(p);
         diagnostics.extend(d);
     }
     Ok(Loaded {
         catalog: Catalog::build(profiles, diagnostics),
-        skipped: walked.skipped,
+        skipped,
         files,
     })
 }

@@ -132,6 +132,86 @@ fn read_limited(path: &Path, limit: Option<u64>) -> std::io::Result<Vec<u8>> {
 /// Walks `input` (a directory or a single file) and returns the profiles found, sorted by
 /// their relative path.
 pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
+    let Candidates {
+        files: candidates,
+        skipped,
+    } = candidates(input, opts)?;
+    let mut result = WalkResult {
+        skipped,
+        ..WalkResult::default()
+    };
+    // Recognising profiles reads the head of every candidate: done in parallel.
+    use rayon::prelude::*;
+    let sniffed: Vec<(PathBuf, String, std::io::Result<Option<SourceFormat>>)> = candidates
+        .into_par_iter()
+        .map(|(path, rel)| {
+            let r = read_limited(&path, Some(SNIFF_BYTES)).map(|head| detect(&path, &head));
+            (path, rel, r)
+        })
+        .collect();
+    for (path, rel, r) in sniffed {
+        match r {
+            Ok(Some(format)) => result.sources.push(Source { path, rel, format }),
+            Ok(None) => result.skipped.push(not_a_profile(rel)),
+            Err(e) => result
+                .errors
+                .push(crate::diagnostic::Diagnostic::io(&rel, &e)),
+        }
+    }
+    result.sources.sort_by(|a, b| a.rel.cmp(&b.rel));
+    Ok(result)
+}
+
+/// The files a walk considers: every `.xml`/`.yaml`/`.yml` file the patterns let through, in
+/// walk order, before their content is looked at; and the files left out on the way.
+pub(crate) struct Candidates {
+    pub files: Vec<(PathBuf, String)>,
+    pub skipped: Vec<Skipped>,
+}
+
+/// The [`Skipped`] entry of a candidate whose content is not a profile.
+pub(crate) fn not_a_profile(rel: String) -> Skipped {
+    Skipped {
+        rel,
+        reason: "not an RTC component profile (root is not RtcProfile / rtcProfile)".into(),
+    }
+}
+
+/// Reads a candidate file once: its head, to recognise a profile (as the walk does), and when
+/// it is one, the rest — at most `limit + 1` bytes in all, like [`Source::read`]. `None` when
+/// the file is not a profile.
+pub(crate) fn read_profile(
+    path: &Path,
+    limit: Option<u64>,
+) -> std::io::Result<Option<(SourceFormat, Vec<u8>)>> {
+    use std::io::Read;
+    let mut f = std::fs::File::open(path)?;
+    let mut buf = Vec::new();
+    (&mut f)
+        .take(SNIFF_BYTES.saturating_add(1))
+        .read_to_end(&mut buf)?;
+    let Some(format) = detect(path, &buf) else {
+        return Ok(None);
+    };
+    match limit {
+        Some(l) => {
+            let cap = l.saturating_add(1);
+            let have = buf.len() as u64;
+            if have > cap {
+                buf.truncate(usize::try_from(cap).unwrap_or(usize::MAX));
+            } else {
+                f.take(cap - have).read_to_end(&mut buf)?;
+            }
+        }
+        None => {
+            f.read_to_end(&mut buf)?;
+        }
+    }
+    Ok(Some((format, buf)))
+}
+
+/// The traversal part of [`walk`]: which files are candidates, without reading any.
+pub(crate) fn candidates(input: &Path, opts: &WalkOptions) -> Result<Candidates, WalkError> {
     if !input.exists() {
         return Err(WalkError::Missing(input.to_path_buf()));
     }
@@ -142,6 +222,31 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
         .iter()
         .filter_map(|d| d.canonicalize().ok())
         .collect();
+    // Canonicalizing every directory of a large tree costs a path resolution each; on Unix
+    // only a directory with the inode number of a skipped one needs it.
+    #[cfg(unix)]
+    let skip_inodes: Vec<u64> = {
+        use std::os::unix::fs::MetadataExt;
+        skip_dirs
+            .iter()
+            .filter_map(|d| std::fs::metadata(d).ok().map(|m| m.ino()))
+            .collect()
+    };
+    let may_be_skipped = |e: &walkdir::DirEntry| -> bool {
+        if skip_dirs.is_empty() {
+            return false;
+        }
+        #[cfg(unix)]
+        {
+            use walkdir::DirEntryExt;
+            skip_inodes.contains(&e.ino())
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = e;
+            true
+        }
+    };
     let mut result = WalkResult::default();
     let mut candidates: Vec<(PathBuf, String)> = Vec::new();
     let root = if input.is_file() {
@@ -155,9 +260,11 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
         .into_iter()
         .filter_entry(|e| {
             if e.depth() > 0 && e.file_type().is_dir() {
-                if let Ok(c) = e.path().canonicalize() {
-                    if skip_dirs.contains(&c) {
-                        return false;
+                if may_be_skipped(e) {
+                    if let Ok(c) = e.path().canonicalize() {
+                        if skip_dirs.contains(&c) {
+                            return false;
+                        }
                     }
                 }
                 // Hidden directories (.git, .svn, .cache) hold no profiles of interest.
@@ -220,27 +327,8 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
         }
         candidates.push((path.to_path_buf(), rel));
     }
-    // Recognising profiles reads the head of every candidate: done in parallel.
-    use rayon::prelude::*;
-    let sniffed: Vec<(PathBuf, String, std::io::Result<Option<SourceFormat>>)> = candidates
-        .into_par_iter()
-        .map(|(path, rel)| {
-            let r = read_limited(&path, Some(SNIFF_BYTES)).map(|head| detect(&path, &head));
-            (path, rel, r)
-        })
-        .collect();
-    for (path, rel, r) in sniffed {
-        match r {
-            Ok(Some(format)) => result.sources.push(Source { path, rel, format }),
-            Ok(None) => result.skipped.push(Skipped {
-                rel,
-                reason: "not an RTC component profile (root is not RtcProfile / rtcProfile)".into(),
-            }),
-            Err(e) => result
-                .errors
-                .push(crate::diagnostic::Diagnostic::io(&rel, &e)),
-        }
-    }
-    result.sources.sort_by(|a, b| a.rel.cmp(&b.rel));
-    Ok(result)
+    Ok(Candidates {
+        files: candidates,
+        skipped: result.skipped,
+    })
 }
