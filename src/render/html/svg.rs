@@ -5,6 +5,22 @@
 use crate::model::PortSide;
 use std::fmt::Write as _;
 
+/// The bytes [`esc_into`] replaces: `& < > " '` and control characters but newline and tab.
+const NEEDS_ESCAPE: [bool; 256] = {
+    let mut t = [false; 256];
+    let mut c = 0;
+    while c < 0x20 {
+        t[c] = c != b'\n' as usize && c != b'\t' as usize;
+        c += 1;
+    }
+    t[b'&' as usize] = true;
+    t[b'<' as usize] = true;
+    t[b'>' as usize] = true;
+    t[b'"' as usize] = true;
+    t[b'\'' as usize] = true;
+    t
+};
+
 /// Escapes text for SVG/HTML text and attribute values.
 pub fn esc(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
@@ -18,16 +34,22 @@ pub fn esc(s: &str) -> String {
 /// written in one piece.
 pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
     let b = s.as_bytes();
+    // Most text needs no escaping: one pass over a table, then one write.
+    if !b.iter().any(|&c| NEEDS_ESCAPE[usize::from(c)]) {
+        return out.write_str(s);
+    }
     let mut start = 0;
     for (i, &c) in b.iter().enumerate() {
+        if !NEEDS_ESCAPE[usize::from(c)] {
+            continue;
+        }
         let rep = match c {
             b'&' => "&amp;",
             b'<' => "&lt;",
             b'>' => "&gt;",
             b'"' => "&quot;",
             b'\'' => "&#39;",
-            c if c < 0x20 && c != b'\n' && c != b'\t' => " ",
-            _ => continue,
+            _ => " ", // a control character other than newline and tab
         };
         // `i` is at an ASCII byte, so both slices end on character boundaries.
         out.write_str(&s[start..i])?;
@@ -488,6 +510,16 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn escaping() {
+        assert_eq!(esc("plain 画像"), "plain 画像");
+        assert_eq!(
+            esc("<a href=\"x\">'&'</a>\u{1}\n\t"),
+            "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt; \n\t"
+        );
+        assert_eq!(esc("画<像"), "画&lt;像");
+    }
 
     #[test]
     fn diagram_escapes_names_and_grows() {
