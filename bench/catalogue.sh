@@ -2,14 +2,14 @@
 # Catalogue-scale benchmark: rtcdoc vs Hugo vs the file-creation floor (cp -r).
 #
 # usage: bench/catalogue.sh [N ...]        (default: 100 1000 10000)
-#        RUNS=5 bench/catalogue.sh 10000    (runs per measurement; default 3, Hugo runs once)
+#        RUNS=5 bench/catalogue.sh 10000    (runs per measurement, Hugo too; default 3)
 #        BENCH_DIR=/dev/shm/b …             (where catalogues and outputs go; default /tmp)
 #
 # For each N it generates a synthetic catalogue (bench/gen_catalogue.py), then measures with
 # /usr/bin/time -v, for each output format: wall time, profiles/s, files/s and peak RSS;
 # `rtcdoc check`; Hugo rendering rtcdoc's own Markdown output with a minimal layout; and
 # `cp -r` of rtcdoc's HTML output (the floor of creating that many files on this disk).
-# Each rtcdoc and cp measurement is run RUNS times and the run with the median wall time is
+# Each measurement (rtcdoc, cp and Hugo) is run RUNS times and the run with the median wall time is
 # reported (RSS: the largest of the runs); the file system is synced before every run, so a run
 # does not pay for the previous run's writes. Old outputs are moved aside, not deleted, until
 # the end: ext4 avoids reusing inodes freed in the last seconds and scans further for each new
@@ -113,7 +113,7 @@ for n in "${sizes[@]}"; do
     printf 'baseURL = "http://localhost/"\ntitle = "bench"\ndisableKinds = ["taxonomy", "term", "RSS"]\n[markup.goldmark.renderer]\nunsafe = true\n' >"$site/hugo.toml"
     printf '<!DOCTYPE html><html><head><title>{{ .Title }}</title></head><body>{{ .Content }}</body></html>\n' >"$site/layouts/_default/single.html"
     printf '<!DOCTYPE html><html><head><title>{{ .Title }}</title></head><body>{{ .Content }}</body></html>\n' >"$site/layouts/_default/list.html"
-    read -r s rss < <(measure hugo --source "$site" --quiet --destination "$site/public")
+    read -r s rss < <(measure_runs "$site/public" hugo --source "$site" --quiet --destination "$site/public")
     f=$(find "$site/public" -name '*.html' | wc -l)
     python3 -c "print(f'| $n | hugo on the Markdown output | $s | {$n/max($s,0.001):.0f} | $f | {$f/max($s,0.001):.0f} | $rss |')"
     hugo_time=$s
