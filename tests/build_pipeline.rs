@@ -53,6 +53,67 @@ fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
     assert!(skipped.contains(&"skip/me/RTC.xml"));
 }
 
+#[test]
+fn load_takes_and_skips_the_same_files_as_the_walk() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "b/RTC.xml", &xml_profile("B", &[]));
+    write(d, "a/RTC.xml20230831164412.xml", &xml_profile("A", &[]));
+    write(d, "a/notes.xml", "<root/>");
+    write(
+        d,
+        "c/RTC.yaml",
+        "rtcProfile:\n  id: RTC:V:C:Y:1\n  basicInfo:\n    name: Y\n",
+    );
+    write(d, "readme.md", "# hi");
+    write(d, "skip/me/RTC.xml", &xml_profile("Excluded", &[]));
+    // A profile whose root element comes after a comment longer than the size limit: still
+    // recognised (the head read to recognise profiles is 64 KiB), then refused as too large.
+    let mut late = String::from("<?xml version=\"1.0\"?>\n");
+    late.push_str(&format!("<!-- {} -->\n", "x".repeat(3000)));
+    late.push_str(
+        &xml_profile("Late", &[])["<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n".len()..],
+    );
+    write(d, "late/RTC.xml", &late);
+    let walk_opts = rtcdoc::walk::WalkOptions {
+        exclude: vec!["skip/**".into()],
+        ..Default::default()
+    };
+    let walked = rtcdoc::walk::walk(d, &walk_opts).unwrap();
+    let mut o = LoadOptions {
+        exclude: walk_opts.exclude.clone(),
+        ..Default::default()
+    };
+    o.limits.max_file_size = 2000;
+    let loaded = build::load(d, &o).unwrap();
+
+    let skipped = |v: &[rtcdoc::walk::Skipped]| -> Vec<(String, String)> {
+        v.iter()
+            .map(|s| (s.rel.clone(), s.reason.clone()))
+            .collect()
+    };
+    assert_eq!(skipped(&loaded.skipped), skipped(&walked.skipped));
+    assert_eq!(loaded.files, walked.sources.len());
+    let sources: Vec<&str> = loaded
+        .catalog
+        .components
+        .iter()
+        .map(|c| c.source.as_str())
+        .collect();
+    assert_eq!(
+        sources,
+        ["a/RTC.xml20230831164412.xml", "b/RTC.xml", "c/RTC.yaml"]
+    );
+    let too_large = loaded
+        .catalog
+        .diagnostics
+        .iter()
+        .find(|d| d.file == "late/RTC.xml")
+        .expect("the late profile is reported");
+    assert_eq!(too_large.code, "RTC002");
+    assert!(too_large.message.contains("2001 bytes"), "{too_large}");
+}
+
 #[cfg(unix)]
 #[test]
 fn walk_survives_symlink_cycles() {
