@@ -361,12 +361,14 @@ impl<'de> Visitor<'de> for BuildSeed<'_> {
         self.enter()?;
         let mut mapping = Mapping::new();
         while let Some(key) = map.next_key_seed(self.child())? {
-            let key = untag(key);
-            if mapping.contains_key(&key) {
-                return Err(serde::de::Error::custom(duplicate_key(&key)));
+            match mapping.entry(untag(key)) {
+                serde_norway::mapping::Entry::Occupied(e) => {
+                    return Err(serde::de::Error::custom(duplicate_key(e.key())));
+                }
+                serde_norway::mapping::Entry::Vacant(e) => {
+                    e.insert(map.next_value_seed(self.child())?);
+                }
             }
-            let v = map.next_value_seed(self.child())?;
-            mapping.insert(key, v);
         }
         Ok(Value::Mapping(mapping))
     }
