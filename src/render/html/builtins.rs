@@ -180,6 +180,22 @@ mod tests {
     }
 
     #[test]
+    fn labels_object_reads_like_a_map() {
+        let mut env = Environment::new();
+        let lang = crate::i18n::Lang::En;
+        env.add_global("t", Value::from_object(super::super::Labels::new(lang)));
+        let out = env
+            .render_str(
+                "{{ t.data_ports }}|{{ t.nope is undefined }}|{{ t|length }}|{{ (t|items|first)[0] }}",
+                (),
+            )
+            .unwrap();
+        let n = lang.labels().count();
+        let first = lang.labels().map(|(k, _)| k).min().unwrap();
+        assert_eq!(out, format!("{}|True|{n}|{first}", lang.t("data_ports")));
+    }
+
+    #[test]
     fn profile_text_is_escaped() {
         let env = env();
         let (_, new) = both(

@@ -24,7 +24,6 @@ use anyhow::{Context, Result};
 use minijinja::{Environment, Value};
 use rayon::prelude::*;
 use serde::Serialize;
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// At most this many "connects to" peers are listed inline per port; the rest are on the
@@ -788,8 +787,7 @@ impl HtmlRenderer {
             })
         });
         env.set_formatter(formatter);
-        let labels: BTreeMap<&str, &str> = opts.language.labels().collect();
-        env.add_global("t", Value::from_serialize(&labels));
+        env.add_global("t", Value::from_object(Labels::new(opts.language)));
         env.add_global("lang", opts.language.tag());
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
@@ -798,6 +796,39 @@ impl HtmlRenderer {
         env.add_function("type_link", builtins::type_link);
         env.add_function("peers", builtins::peers);
         env
+    }
+}
+
+/// The `t` global: UI labels by key. A map object over the sorted label table, so that the
+/// hundred-odd `t.…` lookups of every page are a binary search over `&str` returning a shared
+/// value, not a search of a map keyed by template values.
+#[derive(Debug)]
+struct Labels {
+    keys: Vec<&'static str>,
+    values: Vec<Value>,
+}
+
+impl Labels {
+    fn new(lang: crate::i18n::Lang) -> Labels {
+        let mut pairs: Vec<(&'static str, &'static str)> = lang.labels().collect();
+        pairs.sort_by_key(|&(k, _)| k);
+        Labels {
+            keys: pairs.iter().map(|&(k, _)| k).collect(),
+            values: pairs.iter().map(|&(_, v)| Value::from(v)).collect(),
+        }
+    }
+}
+
+impl minijinja::value::Object for Labels {
+    fn repr(self: &std::sync::Arc<Self>) -> minijinja::value::ObjectRepr {
+        minijinja::value::ObjectRepr::Map
+    }
+    fn get_value(self: &std::sync::Arc<Self>, key: &Value) -> Option<Value> {
+        let i = self.keys.binary_search(&key.as_str()?).ok()?;
+        self.values.get(i).cloned()
+    }
+    fn enumerate(self: &std::sync::Arc<Self>) -> minijinja::value::Enumerator {
+        minijinja::value::Enumerator::Values(self.keys.iter().map(|&k| Value::from(k)).collect())
     }
 }
 
