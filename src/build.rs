@@ -71,7 +71,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         .files
         .par_iter()
         .map(|(path, rel)| {
-            let outcome = match walk::read_profile(path, Some(opts.limits.max_file_size)) {
+            let outcome = match walk::read_profile(path, opts.limits.max_file_size) {
                 Ok(None) => Outcome::NotProfile,
                 Ok(Some((format, bytes))) => {
                     match parse::parse(format, &bytes, rel, &opts.limits) {

@@ -23,15 +23,15 @@ impl Lang {
         }
     }
 
-    /// The label for `key`; the key itself when it is unknown (so a missing label is visible
-    /// rather than blank). Tests assert every key has both languages.
+    /// The label for `key`; `??` when it is unknown (so a missing label is visible rather than
+    /// blank). Tests assert every key has both languages.
     pub fn t(self, key: &str) -> &'static str {
-        match LABELS.binary_search_by(|(k, _, _)| k.cmp(&key)) {
-            Ok(i) => match self {
+        match label_index(key) {
+            Some(i) => match self {
                 Lang::En => LABELS[i].1,
                 Lang::Ja => LABELS[i].2,
             },
-            Err(_) => "??",
+            None => "??",
         }
     }
 
@@ -47,6 +47,11 @@ impl Lang {
             )
         })
     }
+}
+
+/// The position of `key` in [`LABELS`] (and in [`Lang::labels`]).
+pub fn label_index(key: &str) -> Option<usize> {
+    LABELS.binary_search_by(|(k, _, _)| k.cmp(&key)).ok()
 }
 
 /// (key, English, Japanese), sorted by key (checked by a test).

@@ -21,14 +21,6 @@ pub struct Source {
     pub format: SourceFormat,
 }
 
-impl Source {
-    /// Reads the file, at most `limit + 1` bytes (so that an oversized file is detected without
-    /// reading it all).
-    pub fn read(&self, limit: Option<u64>) -> std::io::Result<Vec<u8>> {
-        read_limited(&self.path, limit)
-    }
-}
-
 /// How much of a file the walk reads to recognise a profile.
 const SNIFF_BYTES: u64 = 64 * 1024;
 
@@ -113,22 +105,6 @@ pub(crate) fn rel_path(root: &Path, path: &Path) -> String {
     }
 }
 
-fn read_limited(path: &Path, limit: Option<u64>) -> std::io::Result<Vec<u8>> {
-    use std::io::Read;
-    let f = std::fs::File::open(path)?;
-    let mut buf = Vec::new();
-    match limit {
-        Some(l) => {
-            f.take(l.saturating_add(1)).read_to_end(&mut buf)?;
-        }
-        None => {
-            let mut f = f;
-            f.read_to_end(&mut buf)?;
-        }
-    }
-    Ok(buf)
-}
-
 /// Walks `input` (a directory or a single file) and returns the profiles found, sorted by
 /// their relative path.
 pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
@@ -145,7 +121,7 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
     let sniffed: Vec<(PathBuf, String, std::io::Result<Option<SourceFormat>>)> = candidates
         .into_par_iter()
         .map(|(path, rel)| {
-            let r = read_limited(&path, Some(SNIFF_BYTES)).map(|head| detect(&path, &head));
+            let r = sniff(&path).map(|(_, _, format)| format);
             (path, rel, r)
         })
         .collect();
@@ -177,35 +153,37 @@ pub(crate) fn not_a_profile(rel: String) -> Skipped {
     }
 }
 
-/// Reads a candidate file once: its head, to recognise a profile (as the walk does), and when
-/// it is one, the rest — at most `limit + 1` bytes in all, like [`Source::read`]. `None` when
-/// the file is not a profile.
-pub(crate) fn read_profile(
-    path: &Path,
-    limit: Option<u64>,
-) -> std::io::Result<Option<(SourceFormat, Vec<u8>)>> {
+/// Opens a candidate and reads its head: the open file (positioned after the head), the head
+/// and the format when the head shows a profile.
+fn sniff(path: &Path) -> std::io::Result<(std::fs::File, Vec<u8>, Option<SourceFormat>)> {
     use std::io::Read;
     let mut f = std::fs::File::open(path)?;
-    let mut buf = Vec::new();
+    let mut head = Vec::new();
     (&mut f)
         .take(SNIFF_BYTES.saturating_add(1))
-        .read_to_end(&mut buf)?;
-    let Some(format) = detect(path, &buf) else {
+        .read_to_end(&mut head)?;
+    let format = detect(path, &head);
+    Ok((f, head, format))
+}
+
+/// Reads a candidate file once: its head, to recognise a profile exactly as [`walk`] does, and
+/// when it is one, the rest — at most `limit + 1` bytes in all, so that an oversized file is
+/// detected without reading it whole. `None` when the file is not a profile.
+pub(crate) fn read_profile(
+    path: &Path,
+    limit: u64,
+) -> std::io::Result<Option<(SourceFormat, Vec<u8>)>> {
+    use std::io::Read;
+    let (f, mut buf, format) = sniff(path)?;
+    let Some(format) = format else {
         return Ok(None);
     };
-    match limit {
-        Some(l) => {
-            let cap = l.saturating_add(1);
-            let have = buf.len() as u64;
-            if have > cap {
-                buf.truncate(usize::try_from(cap).unwrap_or(usize::MAX));
-            } else {
-                f.take(cap - have).read_to_end(&mut buf)?;
-            }
-        }
-        None => {
-            f.read_to_end(&mut buf)?;
-        }
+    let cap = limit.saturating_add(1);
+    let have = buf.len() as u64;
+    if have > cap {
+        buf.truncate(usize::try_from(cap).unwrap_or(usize::MAX));
+    } else {
+        f.take(cap - have).read_to_end(&mut buf)?;
     }
     Ok(Some((format, buf)))
 }

@@ -21,10 +21,9 @@ fn json(path: &Path) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(path).expect("read json")).expect("valid json")
 }
 
-#[test]
-fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
+/// Two profiles (one under a backup name) among files the walk must skip: a non-profile
+/// `.xml`, an RT System profile, a README, a hidden directory and `skip/` (to be excluded).
+fn mixed_tree(d: &Path) {
     write(d, "b/RTC.xml", &xml_profile("B", &[]));
     write(d, "a/RTC.xml20230831164412.xml", &xml_profile("A", &[]));
     write(d, "a/notes.xml", "<root/>");
@@ -36,6 +35,13 @@ fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
     write(d, "readme.md", "# hi");
     write(d, ".git/RTC.xml", &xml_profile("Hidden", &[]));
     write(d, "skip/me/RTC.xml", &xml_profile("Excluded", &[]));
+}
+
+#[test]
+fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    mixed_tree(d);
     let res = rtcdoc::walk::walk(
         d,
         &rtcdoc::walk::WalkOptions {
@@ -57,16 +63,12 @@ fn walk_finds_profiles_by_content_sorted_and_skips_the_rest() {
 fn load_takes_and_skips_the_same_files_as_the_walk() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write(d, "b/RTC.xml", &xml_profile("B", &[]));
-    write(d, "a/RTC.xml20230831164412.xml", &xml_profile("A", &[]));
-    write(d, "a/notes.xml", "<root/>");
+    mixed_tree(d);
     write(
         d,
         "c/RTC.yaml",
         "rtcProfile:\n  id: RTC:V:C:Y:1\n  basicInfo:\n    name: Y\n",
     );
-    write(d, "readme.md", "# hi");
-    write(d, "skip/me/RTC.xml", &xml_profile("Excluded", &[]));
     // A profile whose root element comes after a comment longer than the size limit: still
     // recognised (the head read to recognise profiles is 64 KiB), then refused as too large.
     let mut late = String::from("<?xml version=\"1.0\"?>\n");

@@ -414,15 +414,7 @@ fn labels_follow_the_site_language() {
 #[test]
 fn no_payload_of_the_xss_fixture_survives() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("in");
-    std::fs::create_dir_all(&input).unwrap();
-    for f in ["xss.xml", "xss.yaml"] {
-        std::fs::copy(
-            common::root().join("tests/fixtures/hostile").join(f),
-            input.join(f),
-        )
-        .unwrap();
-    }
+    let input = common::hostile_input(dir.path());
     let out = dir.path().join("site");
     let loaded = build_site(&input, &out, SiteOptions::default());
     assert_eq!(loaded.catalog.components.len(), 2, "both fixtures load");

@@ -63,6 +63,17 @@ pub fn rtcdoc(args: &[&str], cwd: &Path) -> std::process::Output {
         .expect("run rtcdoc")
 }
 
+/// `dir/in` holding copies of the hostile-input fixtures `xss.xml` and `xss.yaml`.
+pub fn hostile_input(dir: &Path) -> PathBuf {
+    let input = dir.join("in");
+    std::fs::create_dir_all(&input).expect("mkdir");
+    for f in ["xss.xml", "xss.yaml"] {
+        std::fs::copy(root().join("tests/fixtures/hostile").join(f), input.join(f))
+            .expect("copy fixture");
+    }
+    input
+}
+
 /// Every file below `dir` with its bytes, sorted by relative path.
 pub fn tree(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut out: Vec<(String, Vec<u8>)> = walkdir::WalkDir::new(dir)

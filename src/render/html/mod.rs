@@ -799,22 +799,19 @@ impl HtmlRenderer {
     }
 }
 
-/// The `t` global: UI labels by key. A map object over the sorted label table, so that the
-/// hundred-odd `t.…` lookups of every page are a binary search over `&str` returning a shared
+/// The `t` global: UI labels by key. A map object over the label table, so that the hundred-odd
+/// `t.…` lookups of every page are the table's binary search over `&str` returning a shared
 /// value, not a search of a map keyed by template values.
 #[derive(Debug)]
 struct Labels {
-    keys: Vec<&'static str>,
+    /// The labels of one language, in [`crate::i18n::LABELS`] order.
     values: Vec<Value>,
 }
 
 impl Labels {
     fn new(lang: crate::i18n::Lang) -> Labels {
-        let mut pairs: Vec<(&'static str, &'static str)> = lang.labels().collect();
-        pairs.sort_by_key(|&(k, _)| k);
         Labels {
-            keys: pairs.iter().map(|&(k, _)| k).collect(),
-            values: pairs.iter().map(|&(_, v)| Value::from(v)).collect(),
+            values: lang.labels().map(|(_, v)| Value::from(v)).collect(),
         }
     }
 }
@@ -824,11 +821,16 @@ impl minijinja::value::Object for Labels {
         minijinja::value::ObjectRepr::Map
     }
     fn get_value(self: &std::sync::Arc<Self>, key: &Value) -> Option<Value> {
-        let i = self.keys.binary_search(&key.as_str()?).ok()?;
+        let i = crate::i18n::label_index(key.as_str()?)?;
         self.values.get(i).cloned()
     }
     fn enumerate(self: &std::sync::Arc<Self>) -> minijinja::value::Enumerator {
-        minijinja::value::Enumerator::Values(self.keys.iter().map(|&k| Value::from(k)).collect())
+        minijinja::value::Enumerator::Values(
+            crate::i18n::LABELS
+                .iter()
+                .map(|&(k, _, _)| Value::from(k))
+                .collect(),
+        )
     }
 }
 
