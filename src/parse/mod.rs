@@ -5,6 +5,7 @@
 
 pub mod xml;
 pub mod yaml;
+mod yaml_fast;
 
 use crate::diagnostic::Diagnostic;
 use crate::model::Profile;

@@ -3,8 +3,9 @@
 //! `spec/NOTES.md`: `"rtcExt::properties"`, `constraint*Type`, `occerrence`, date maps with
 //! `fractionalSecond` / `millisecond` / `timezone`, null actions, `transMethods`).
 //!
-//! The file is parsed with `serde_norway` into a [`Value`] tree which is then mapped onto the
-//! model. `Value` carries no source marks, so positions are recovered with a [`Locator`]: the
+//! The file is parsed into a `serde_norway` [`Value`] tree which is then mapped onto the
+//! model: by our own line reader (`yaml_fast`) when the file is one block-style document of
+//! one-line scalars (what RTCBuilder writes), else by `serde_norway`. `Value` carries no source marks, so positions are recovered with a [`Locator`]: the
 //! tree is walked in document order (mappings keep their order) while a cursor moves forward
 //! through the source text looking for each key. This is exact for block-style YAML, which is
 //! what RTCBuilder writes, and a close approximation for flow style.
@@ -95,30 +96,12 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile"));
     }
 
-    // One pass: each document is built into a `Value` by a seed that counts nodes and depth as
-    // it goes (so an alias bomb or a deep nest is stopped early), until a document whose root
-    // mapping has `rtcProfile` is found.
-    let mut value = None;
-    let mut state = CountState {
-        nodes: 0,
-        max_nodes: MAX_NODES.min(100_000 + bytes.len()),
-        max_depth: limits.max_depth,
+    // The common case (one block-style document) is read by our own line reader; anything
+    // it does not handle — and every error — goes through serde_norway.
+    let value = match super::yaml_fast::parse(src, limits.max_depth) {
+        Some(v) => Some(v),
+        None => slow_value(bytes, file, limits)?,
     };
-    for doc in serde_norway::Deserializer::from_slice(bytes) {
-        state.nodes = 0;
-        let v = untag(
-            BuildSeed {
-                state: &mut state,
-                depth: 0,
-            }
-            .deserialize(doc)
-            .map_err(|e| yaml_error(e, file, limits))?,
-        );
-        if matches!(&v, Value::Mapping(m) if m.contains_key("rtcProfile")) {
-            value = Some(v);
-            break;
-        }
-    }
     if value.is_none() {
         return Err(Diagnostic::error(
             codes::SHAPE,
@@ -154,6 +137,36 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         profile,
         diagnostics: r.diags,
     })
+}
+
+/// The first document whose root mapping has `rtcProfile`, read with serde_norway. Each
+/// document is built into a `Value` by a seed that counts nodes and depth as it goes (so an
+/// alias bomb or a deep nest is stopped early).
+pub(super) fn slow_value(
+    bytes: &[u8],
+    file: &str,
+    limits: &Limits,
+) -> Result<Option<Value>, Diagnostic> {
+    let mut state = CountState {
+        nodes: 0,
+        max_nodes: MAX_NODES.min(100_000 + bytes.len()),
+        max_depth: limits.max_depth,
+    };
+    for doc in serde_norway::Deserializer::from_slice(bytes) {
+        state.nodes = 0;
+        let v = untag(
+            BuildSeed {
+                state: &mut state,
+                depth: 0,
+            }
+            .deserialize(doc)
+            .map_err(|e| yaml_error(e, file, limits))?,
+        );
+        if matches!(&v, Value::Mapping(m) if m.contains_key("rtcProfile")) {
+            return Ok(Some(v));
+        }
+    }
+    Ok(None)
 }
 
 /// Cheap pre-scan for deeply nested flow collections (`[[[[…`), which libyaml handles in
