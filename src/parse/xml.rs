@@ -250,39 +250,52 @@ impl<'a> LineIndex<'a> {
     }
 }
 
-/// Like [`LineIndex`] but fast for increasing offsets (the streaming case): columns are counted
-/// from the last position asked for, so long single-line files stay O(n).
+/// Like [`LineIndex`] but fast for increasing offsets (the streaming case): the line is found
+/// by stepping forward from the last one asked for, and columns are counted from the last
+/// position when it is on the same line, so long single-line files stay O(n).
 struct PosCursor<'a> {
     index: LineIndex<'a>,
-    last: (usize, Pos),
+    /// The last offset asked for (on a character boundary), its position, and the index of
+    /// its line in `index.starts`.
+    last: (usize, Pos, usize),
 }
 
 impl<'a> PosCursor<'a> {
     fn pos(&mut self, offset: usize) -> Pos {
-        let (last_off, last_pos) = self.last;
-        let line = self
-            .index
-            .starts
-            .partition_point(|&s| s <= offset.min(self.index.text.len()));
-        let p = if offset >= last_off && line as u32 == last_pos.line {
-            let mut off = offset.min(self.index.text.len());
-            while !self.index.text.is_char_boundary(off) {
-                off -= 1;
-            }
-            let n = self
-                .index
-                .text
-                .get(last_off..off)
-                .map_or(0, |s| s.chars().count());
-            Pos::new(last_pos.line, last_pos.column.saturating_add(n as u32))
-        } else {
-            self.index.pos(offset)
-        };
-        let mut off = offset.min(self.index.text.len());
-        while !self.index.text.is_char_boundary(off) {
+        let text = self.index.text;
+        let starts = &self.index.starts;
+        let mut off = offset.min(text.len());
+        while !text.is_char_boundary(off) {
             off -= 1;
         }
-        self.last = (off, p);
+        let (last_off, last_pos, last_line) = self.last;
+        let (p, line) = if off >= last_off {
+            // Step forward a few lines; search beyond that.
+            let mut line = last_line;
+            let mut steps = 0;
+            while line + 1 < starts.len() && starts[line + 1] <= off && steps < 8 {
+                line += 1;
+                steps += 1;
+            }
+            if line + 1 < starts.len() && starts[line + 1] <= off {
+                line += starts[line + 1..].partition_point(|&s| s <= off);
+            }
+            let p = if line == last_line {
+                let n = text.get(last_off..off).map_or(0, |s| s.chars().count());
+                Pos::new(last_pos.line, last_pos.column.saturating_add(n as u32))
+            } else {
+                let n = text.get(starts[line]..off).map_or(0, |s| s.chars().count());
+                Pos::new(
+                    u32::try_from(line + 1).unwrap_or(u32::MAX),
+                    u32::try_from(n + 1).unwrap_or(u32::MAX),
+                )
+            };
+            (p, line)
+        } else {
+            let p = self.index.pos(off);
+            (p, starts.partition_point(|&s| s <= off).max(1) - 1)
+        };
+        self.last = (off, p, line);
         p
     }
 }
@@ -371,7 +384,7 @@ impl Node<'_> {
         self.key().map(str::to_ascii_lowercase)
     }
     fn has_text(&self) -> bool {
-        !self.text.trim().is_empty()
+        !is_blank(&self.text)
     }
 }
 
@@ -396,7 +409,7 @@ fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>
         file,
         cursor: PosCursor {
             index: LineIndex::new(text),
-            last: (0, Pos::new(1, 1)),
+            last: (0, Pos::new(1, 1), 0),
         },
         max_depth: limits.max_depth.min(HARD_MAX_DEPTH),
     };
@@ -642,7 +655,7 @@ fn add_text(
     s: &str,
     offset: usize,
 ) -> Result<(), Diagnostic> {
-    let blank = s.trim().is_empty();
+    let blank = is_blank(s);
     match stack.last_mut() {
         Some(node) => {
             if !blank && node.text_pos.is_none() {
@@ -659,6 +672,12 @@ fn add_text(
             "text outside the root element",
         )),
     }
+}
+
+/// True when the text is only white space (Unicode `White_Space`, as `str::trim`), decided
+/// byte by byte for the usual ASCII indentation between elements.
+fn is_blank(s: &str) -> bool {
+    s.bytes().all(|b| matches!(b, b' ' | b'\t' | b'\n' | b'\r')) || s.trim().is_empty()
 }
 
 /// A loose check of XML 1.0 `Name` (§2.3): quick-xml accepts anything up to whitespace or `>`.
@@ -1923,6 +1942,31 @@ fn literal_child(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// The streaming cursor gives the positions the index gives, for offsets asked in any
+        /// order (mostly increasing, as in the reader, with jumps back and far ahead).
+        #[test]
+        fn pos_cursor_agrees_with_line_index(
+            parts in proptest::collection::vec(
+                proptest::sample::select(&["a", "é", "日", "\n", "\r\n", "\r", "  ", "<x>"][..]),
+                0..200,
+            ),
+            offsets in proptest::collection::vec(0usize..1200, 1..60),
+            sorted in proptest::bool::ANY,
+        ) {
+            let text: String = parts.concat();
+            let mut offsets = offsets;
+            if sorted {
+                offsets.sort_unstable();
+            }
+            let index = LineIndex::new(&text);
+            let mut cursor = PosCursor { index: LineIndex::new(&text), last: (0, Pos::new(1, 1), 0) };
+            for o in offsets {
+                proptest::prop_assert_eq!(cursor.pos(o), index.pos(o), "offset {} of {:?}", o, text);
+            }
+        }
+    }
 
     #[test]
     fn line_index_counts_chars_and_cr() {

@@ -28,69 +28,98 @@ pub fn is_cjk(c: char) -> bool {
 }
 
 /// Splits `text` into search tokens (see the module documentation); pushes them into `out`.
+/// Works on slices of `text`; a token is allocated only when it is new to `out`.
 pub fn tokenize(text: &str, out: &mut BTreeSet<String>) {
-    let mut word: Vec<char> = Vec::new();
-    let mut cjk: Vec<char> = Vec::new();
-    let flush_word = |word: &mut Vec<char>, out: &mut BTreeSet<String>| {
-        if word.is_empty() {
-            return;
-        }
-        let w: String = word.iter().collect();
-        out.insert(w.to_lowercase());
-        // camelCase / digit boundaries: UsbCamera → usb, camera.
-        let mut part = String::new();
-        let mut prev: Option<char> = None;
-        let mut parts = Vec::new();
-        for &c in word.iter() {
-            if let Some(p) = prev {
-                let boundary = (p.is_lowercase() && c.is_uppercase())
-                    || (p.is_alphabetic() && c.is_ascii_digit())
-                    || (p.is_ascii_digit() && c.is_alphabetic());
-                if boundary && !part.is_empty() {
-                    parts.push(std::mem::take(&mut part));
-                }
-            }
-            part.push(c);
-            prev = Some(c);
-        }
-        if !part.is_empty() {
-            parts.push(part);
-        }
-        if parts.len() > 1 {
-            for p in parts {
-                out.insert(p.to_lowercase());
-            }
-        }
-        word.clear();
-    };
-    let flush_cjk = |cjk: &mut Vec<char>, out: &mut BTreeSet<String>| {
-        match cjk.len() {
-            0 => {}
-            1 => {
-                out.insert(cjk[0].to_string());
-            }
-            _ => {
-                for w in cjk.windows(2) {
-                    out.insert(w.iter().collect());
-                }
-            }
-        }
-        cjk.clear();
-    };
-    for c in text.chars() {
-        if is_cjk(c) {
-            flush_word(&mut word, out);
-            cjk.push(c);
+    let mut buf = String::new();
+    // Start of the current word or CJK run (byte offset), and which of the two it is.
+    let mut start: Option<(usize, bool)> = None;
+    for (i, c) in text.char_indices() {
+        let class = if is_cjk(c) {
+            Some(true)
         } else if c.is_alphanumeric() || c == '_' {
-            flush_cjk(&mut cjk, out);
-            word.push(c);
+            Some(false)
         } else {
-            flush_word(&mut word, out);
-            flush_cjk(&mut cjk, out);
+            None
+        };
+        match (start, class) {
+            (Some((_, a)), Some(b)) if a == b => {}
+            _ => {
+                if let Some((s, cjk)) = start {
+                    flush(&text[s..i], cjk, &mut buf, out);
+                }
+                start = class.map(|cjk| (i, cjk));
+            }
         }
     }
-    flush_word(&mut word, out);
-    flush_cjk(&mut cjk, out);
+    if let Some((s, cjk)) = start {
+        flush(&text[s..], cjk, &mut buf, out);
+    }
+}
+
+/// Inserts the tokens of one word (itself and its camelCase / digit parts) or one CJK run
+/// (overlapping bigrams, or the lone character).
+fn flush(run: &str, cjk: bool, buf: &mut String, out: &mut BTreeSet<String>) {
+    if cjk {
+        let mut ends = run
+            .char_indices()
+            .map(|(i, _)| i)
+            .skip(1)
+            .chain([run.len()]);
+        let Some(mut prev_end) = ends.next() else {
+            return;
+        };
+        if prev_end == run.len() {
+            insert(run, out);
+            return;
+        }
+        let mut prev_start = 0;
+        for end in ends {
+            insert(&run[prev_start..end], out);
+            prev_start = prev_end;
+            prev_end = end;
+        }
+        return;
+    }
+    insert_lower(run, buf, out);
+    // camelCase / digit boundaries: UsbCamera → usb, camera (only when there are two parts
+    // or more).
+    let mut part_start = 0;
+    let mut prev: Option<char> = None;
+    for (i, c) in run.char_indices() {
+        if let Some(p) = prev {
+            let boundary = (p.is_lowercase() && c.is_uppercase())
+                || (p.is_alphabetic() && c.is_ascii_digit())
+                || (p.is_ascii_digit() && c.is_alphabetic());
+            if boundary {
+                insert_lower(&run[part_start..i], buf, out);
+                part_start = i;
+            }
+        }
+        prev = Some(c);
+    }
+    if part_start > 0 {
+        insert_lower(&run[part_start..], buf, out);
+    }
+}
+
+/// Inserts `s` lower-cased (as `str::to_lowercase`), allocating only when it is new.
+fn insert_lower(s: &str, buf: &mut String, out: &mut BTreeSet<String>) {
+    if s.is_ascii() {
+        buf.clear();
+        buf.extend(s.bytes().map(|b| char::from(b.to_ascii_lowercase())));
+        if !out.contains(buf.as_str()) {
+            out.insert(buf.clone());
+        }
+    } else {
+        out.insert(s.to_lowercase());
+    }
+}
+
+/// Inserts `s` as it is, allocating only when it is new.
+fn insert(s: &str, out: &mut BTreeSet<String>) {
+    if !out.contains(s) {
+        out.insert(s.to_string());
+    }
 }
 
 /// Longest description text indexed per component, in characters (keeps entries small).
@@ -183,6 +212,94 @@ pub fn js_safe_json(json: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The first implementation (one `String` per word and part), kept as the oracle.
+    fn reference(text: &str, out: &mut BTreeSet<String>) {
+        let mut word: Vec<char> = Vec::new();
+        let mut cjk: Vec<char> = Vec::new();
+        let flush_word = |word: &mut Vec<char>, out: &mut BTreeSet<String>| {
+            if word.is_empty() {
+                return;
+            }
+            let w: String = word.iter().collect();
+            out.insert(w.to_lowercase());
+            // camelCase / digit boundaries: UsbCamera → usb, camera.
+            let mut part = String::new();
+            let mut prev: Option<char> = None;
+            let mut parts = Vec::new();
+            for &c in word.iter() {
+                if let Some(p) = prev {
+                    let boundary = (p.is_lowercase() && c.is_uppercase())
+                        || (p.is_alphabetic() && c.is_ascii_digit())
+                        || (p.is_ascii_digit() && c.is_alphabetic());
+                    if boundary && !part.is_empty() {
+                        parts.push(std::mem::take(&mut part));
+                    }
+                }
+                part.push(c);
+                prev = Some(c);
+            }
+            if !part.is_empty() {
+                parts.push(part);
+            }
+            if parts.len() > 1 {
+                for p in parts {
+                    out.insert(p.to_lowercase());
+                }
+            }
+            word.clear();
+        };
+        let flush_cjk = |cjk: &mut Vec<char>, out: &mut BTreeSet<String>| {
+            match cjk.len() {
+                0 => {}
+                1 => {
+                    out.insert(cjk[0].to_string());
+                }
+                _ => {
+                    for w in cjk.windows(2) {
+                        out.insert(w.iter().collect());
+                    }
+                }
+            }
+            cjk.clear();
+        };
+        for c in text.chars() {
+            if is_cjk(c) {
+                flush_word(&mut word, out);
+                cjk.push(c);
+            } else if c.is_alphanumeric() || c == '_' {
+                flush_cjk(&mut cjk, out);
+                word.push(c);
+            } else {
+                flush_word(&mut word, out);
+                flush_cjk(&mut cjk, out);
+            }
+        }
+        flush_word(&mut word, out);
+        flush_cjk(&mut cjk, out);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig { cases: 2048, ..Default::default() })]
+        /// The slice-based tokenizer gives exactly the tokens of the reference.
+        #[test]
+        fn tokenize_matches_the_reference(
+            parts in proptest::collection::vec(
+                proptest::sample::select(&[
+                    "Usb", "camera", "RTC", "::", "Timed", "Long2", "x86", "_", " ", "-", "画像",
+                    "を", "カメラ", "İ", "ΟΔΟΣ", "Σ", "ß", "é", "3D", "a1b2", "\u{1F600}", "ｶ",
+                ][..]),
+                0..12,
+            ),
+        ) {
+            let text = parts.concat();
+            let mut fast = BTreeSet::new();
+            tokenize(&text, &mut fast);
+            let mut slow = BTreeSet::new();
+            reference(&text, &mut slow);
+            proptest::prop_assert_eq!(fast, slow, "{:?}", text);
+        }
+    }
 
     fn toks(s: &str) -> Vec<String> {
         let mut t = BTreeSet::new();
