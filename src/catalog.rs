@@ -9,6 +9,7 @@ use crate::diagnostic::{codes, Diagnostic, Severity};
 use crate::model::{Direction, PortDirection, Profile};
 use crate::parse::SourceFormat;
 use crate::types::canonical_type;
+use rayon::prelude::*;
 use serde::Serialize;
 use std::collections::{BTreeMap, HashMap};
 
@@ -183,7 +184,7 @@ pub fn fnv1a(bytes: &[u8]) -> u64 {
 /// (stable: adding another component never renames an existing page unless it collides).
 fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
     let mut count: HashMap<String, usize> = HashMap::new();
-    let base: Vec<String> = items.iter().map(|(name, _)| slugify(name)).collect();
+    let base: Vec<String> = items.par_iter().map(|(name, _)| slugify(name)).collect();
     for b in &base {
         *count.entry(b.clone()).or_default() += 1;
     }
@@ -275,11 +276,13 @@ impl Catalog {
             .map(|l| (l.profile.name().to_string(), l.source.clone()))
             .collect();
         let slugs = unique_slugs(&keys);
+        let all_anchors: Vec<Anchors> = loaded.par_iter().map(|l| anchors(&l.profile)).collect();
         let components: Vec<Component> = loaded
             .into_iter()
             .zip(slugs)
-            .map(|(l, slug)| Component {
-                anchors: anchors(&l.profile),
+            .zip(all_anchors)
+            .map(|((l, slug), anchors)| Component {
+                anchors,
                 source: l.source,
                 format: l.format,
                 slug,
@@ -332,15 +335,39 @@ impl Catalog {
             }
         }
 
-        // Data-type and interface indexes, one pass over all ports.
+        // Data-type and interface indexes, one pass over all ports (the canonical type names
+        // are computed in parallel first).
+        type Canon = (Vec<Option<String>>, Vec<Vec<Option<String>>>);
+        let canon = |t: &Option<crate::model::Text>| {
+            t.as_deref()
+                .filter(|t| !t.trim().is_empty())
+                .map(canonical_type)
+        };
+        let canonical: Vec<Canon> = components
+            .par_iter()
+            .map(|c| {
+                (
+                    c.profile
+                        .data_ports
+                        .iter()
+                        .map(|p| canon(&p.type_))
+                        .collect(),
+                    c.profile
+                        .service_ports
+                        .iter()
+                        .map(|p| p.interfaces.iter().map(|i| canon(&i.type_)).collect())
+                        .collect(),
+                )
+            })
+            .collect();
         let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
         let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
-        for (ci, c) in components.iter().enumerate() {
-            for (pi, p) in c.profile.data_ports.iter().enumerate() {
-                let Some(t) = p.type_.as_deref().filter(|t| !t.trim().is_empty()) else {
+        for ((ci, c), (port_types, iface_types)) in components.iter().enumerate().zip(canonical) {
+            for ((pi, p), key) in c.profile.data_ports.iter().enumerate().zip(port_types) {
+                let (Some(key), Some(t)) = (key, p.type_.as_deref()) else {
                     continue;
                 };
-                let acc = types.entry(canonical_type(t)).or_default();
+                let acc = types.entry(key).or_default();
                 acc.spellings.push(t.trim().to_string());
                 if let Some(f) = p.idl_file.as_deref().filter(|f| !f.trim().is_empty()) {
                     acc.idl_files.push(f.trim().to_string());
@@ -351,12 +378,12 @@ impl Catalog {
                     _ => acc.other.push((ci, pi, 0)),
                 }
             }
-            for (pi, p) in c.profile.service_ports.iter().enumerate() {
-                for (ii, i) in p.interfaces.iter().enumerate() {
-                    let Some(t) = i.type_.as_deref().filter(|t| !t.trim().is_empty()) else {
+            for ((pi, p), keys) in c.profile.service_ports.iter().enumerate().zip(iface_types) {
+                for ((ii, i), key) in p.interfaces.iter().enumerate().zip(keys) {
+                    let (Some(key), Some(t)) = (key, i.type_.as_deref()) else {
                         continue;
                     };
-                    let acc = ifaces.entry(canonical_type(t)).or_default();
+                    let acc = ifaces.entry(key).or_default();
                     acc.spellings.push(t.trim().to_string());
                     if let Some(f) = i.idl_file.as_deref().filter(|f| !f.trim().is_empty()) {
                         acc.idl_files.push(f.trim().to_string());

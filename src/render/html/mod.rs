@@ -910,26 +910,34 @@ impl HtmlRenderer {
             }
         }
         all_paths.push("search-index.js".into());
-        if wanted("search-index.js") {
-            out.write("search-index.js", search::index_js(catalog).as_bytes())?;
-            written += 1;
-        }
-
-        // Component pages: the bulk of the work, rendered and written in parallel.
+        // Component pages: the bulk of the work, rendered and written in parallel; the search
+        // index is built alongside (its JSON serialisation is serial).
         let tmpl = env.get_template("component.html")?;
         all_paths.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
-        written += (0..catalog.components.len())
-            .into_par_iter()
-            .filter(|&ci| wanted(&site.component_path(ci)))
-            .map(|ci| -> Result<usize> {
-                let page = site.component_page(ci);
-                let html = tmpl
-                    .render(&page)
-                    .with_context(|| format!("rendering component `{}`", page.name))?;
-                out.write_owned(&site.component_path(ci), html.into_bytes())?;
+        let (search_written, pages_written) = rayon::join(
+            || -> Result<usize> {
+                if !wanted("search-index.js") {
+                    return Ok(0);
+                }
+                out.write("search-index.js", search::index_js(catalog).as_bytes())?;
                 Ok(1)
-            })
-            .try_reduce(|| 0, |a, b| Ok(a + b))?;
+            },
+            || {
+                (0..catalog.components.len())
+                    .into_par_iter()
+                    .filter(|&ci| wanted(&site.component_path(ci)))
+                    .map(|ci| -> Result<usize> {
+                        let page = site.component_page(ci);
+                        let html = tmpl
+                            .render(&page)
+                            .with_context(|| format!("rendering component `{}`", page.name))?;
+                        out.write_owned(&site.component_path(ci), html.into_bytes())?;
+                        Ok(1)
+                    })
+                    .try_reduce(|| 0, |a, b| Ok(a + b))
+            },
+        );
+        written += search_written? + pages_written?;
 
         let pages = other_pages(&site);
         all_paths.extend(pages.iter().map(|p| p.path.clone()));
