@@ -548,6 +548,25 @@ fn error_too_deep_fast() {
 }
 
 #[test]
+fn many_attributes_stay_linear() {
+    // quick-xml's duplicate check compares each attribute with all earlier ones; 100,000
+    // attributes on one tag took minutes. The duplicate at the end is still found.
+    let n = 100_000;
+    let mut s = String::from(
+        "<rtc:RtcProfile xmlns:rtc=\"http://www.openrtp.org/namespaces/rtc\">\n<rtc:BasicInfo",
+    );
+    for i in 0..n {
+        s.push_str(&format!(" a{i}=\"x\""));
+    }
+    s.push_str(" a7=\"again\"/></rtc:RtcProfile>\n");
+    let t = Instant::now();
+    let d = err_bytes(s.as_bytes());
+    assert!(t.elapsed() < Duration::from_secs(10), "{:?}", t.elapsed());
+    assert_err(&d, codes::MALFORMED, 2, 1);
+    assert!(d.message.contains("written twice"), "{}", d.message);
+}
+
+#[test]
 fn error_invalid_utf8() {
     let mut b =
         b"<?xml version=\"1.0\"?>\n<rtc:RtcProfile xmlns:rtc=\"x\">\n  <a>h\xC3\xA9".to_vec();

@@ -81,7 +81,10 @@ fn first_element_is_profile(bytes: &[u8]) -> bool {
 /// `check` stage reports them. Unknown content becomes `extra` entries plus warnings.
 pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagnostic> {
     let text = decode(bytes, file)?;
-    let root = build_tree(&text, file, limits)?;
+    let root = match fast::build(&text, file, limits.max_depth.min(HARD_MAX_DEPTH)) {
+        Some(root) => root,
+        None => build_tree(&text, file, limits)?,
+    };
     let mut m = Mapper {
         file,
         diags: Vec::new(),
@@ -92,6 +95,9 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         diagnostics: m.diags,
     })
 }
+
+#[path = "xml_fast.rs"]
+mod fast;
 
 // ---------------------------------------------------------------------------------------------
 // Pass 1: decoding
@@ -478,7 +484,11 @@ fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>
         let local = sub(text, e.local_name().as_ref());
         let pos = b.cursor.pos(before);
         let mut attrs = Vec::new();
-        for a in e.attributes() {
+        // Duplicates are found by `Seen` in linear time: quick-xml's own check compares each
+        // attribute with all earlier ones, which a tag with 200,000 attributes turns into
+        // minutes.
+        let mut seen = Seen::default();
+        for a in e.attributes().with_checks(false) {
             let a = a.map_err(|err| {
                 b.err(
                     codes::MALFORMED,
@@ -487,6 +497,13 @@ fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>
                 )
             })?;
             let key = a.key.as_ref();
+            if !seen.insert(sub(text, key)) {
+                return Err(b.err(
+                    codes::MALFORMED,
+                    before,
+                    format!("bad attribute in `<{qname}>`: the same attribute is written twice"),
+                ));
+            }
             let key_off = offset_in(text, key).unwrap_or(before);
             if key == b"xmlns" || key.starts_with(b"xmlns:") {
                 continue; // namespace declarations: plumbing
@@ -800,6 +817,31 @@ fn entity_error(b: &mut TreeBuilder<'_, '_>, offset: usize, msg: String) -> Diag
         codes::MALFORMED
     };
     b.err(code, offset, msg)
+}
+
+/// The attribute names of one tag met so far: a short list, or a hash set once the tag has
+/// many attributes (so that hostile tags stay linear).
+#[derive(Default)]
+struct Seen<'a> {
+    small: Vec<Cow<'a, str>>,
+    big: Option<std::collections::HashSet<Cow<'a, str>>>,
+}
+
+impl<'a> Seen<'a> {
+    /// Adds `key`; false when it was already there.
+    fn insert(&mut self, key: Cow<'a, str>) -> bool {
+        if let Some(set) = &mut self.big {
+            return set.insert(key);
+        }
+        if self.small.contains(&key) {
+            return false;
+        }
+        self.small.push(key);
+        if self.small.len() > 16 {
+            self.big = Some(self.small.drain(..).collect());
+        }
+        true
+    }
 }
 
 fn attr_error(e: &quick_xml::events::attributes::AttrError) -> String {
