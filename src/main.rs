@@ -2,7 +2,7 @@
 //! library, report.
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
+use codespan_reporting::term::termcolor::{BufferedStandardStream, ColorChoice};
 use rtcdoc::build::{self, Progress};
 use rtcdoc::config::{self, Overrides};
 use rtcdoc::diagnostic::Severity;
@@ -478,7 +478,8 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             } else {
                 ColorChoice::Never
             };
-            let stream = StandardStream::stderr(choice);
+            // Buffered: codespan writes a snippet in many small pieces.
+            let mut stream = BufferedStandardStream::stderr(choice);
             let verbosity = if cli.quiet {
                 report::Verbosity::Quiet
             } else if cli.verbose {
@@ -486,12 +487,11 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             } else {
                 report::Verbosity::Normal
             };
-            let mut lock = stream.lock();
-            report::write_human(&mut lock, &report.diagnostics, verbosity, &mut |f| {
+            report::write_human(&mut stream, &report.diagnostics, verbosity, &mut |f| {
                 let bytes = std::fs::read(f).ok()?;
                 String::from_utf8(bytes).ok()
             })?;
-            drop(lock);
+            std::io::Write::flush(&mut stream)?;
             if !cli.quiet {
                 let s = &report.summary;
                 let hidden = if verbosity == report::Verbosity::Verbose || s.infos == 0 {

@@ -14,7 +14,7 @@
 use super::{registry, Report};
 use crate::diagnostic::{Diagnostic, Severity};
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label, Severity as CsSeverity};
-use codespan_reporting::files::SimpleFiles;
+use codespan_reporting::files::{Files, SimpleFiles};
 use codespan_reporting::term::{self, termcolor::WriteColor};
 use serde::Serialize;
 use serde_json::{json, Value};
@@ -195,6 +195,11 @@ impl Verbosity {
 /// line with a caret under the element, and `= help: hint`. `source` returns the text of a
 /// file (by the name in the diagnostic), or `None` when it cannot be shown (the diagnostic is
 /// then printed without a snippet).
+/// Source lines longer than this (bytes) are not shown in snippets: far above the longest
+/// line of the published profiles (781 bytes), it keeps a hostile one-line file with thousands
+/// of findings from printing its whole line for each of them.
+const MAX_SNIPPET_LINE: usize = 2000;
+
 pub fn write_human(
     out: &mut dyn WriteColor,
     diagnostics: &[Diagnostic],
@@ -218,11 +223,17 @@ pub fn write_human(
             .or_insert_with(|| source(&d.file).map(|t| files.add(d.file.clone(), t)));
         let mut labelled = false;
         if let (Some(id), Some(p)) = (id, d.pos) {
-            if let Some(range) = files
-                .get(id)
+            // The line comes from the file's line index; a line too long to show (a minified
+            // or hostile file) gets no snippet, only the position in a note.
+            let line = files
+                .line_range(id, (p.line as usize).saturating_sub(1))
                 .ok()
-                .and_then(|f| span_at(f.source(), p.line, p.column))
-            {
+                .filter(|r| r.len() <= MAX_SNIPPET_LINE);
+            if let Some(range) = line.and_then(|l| {
+                let f = files.get(id).ok()?;
+                let r = span_at(f.source().get(l.start..l.end)?, 1, p.column)?;
+                Some(l.start + r.start..l.start + r.end)
+            }) {
                 cs = cs.with_labels(vec![Label::primary(id, range)]);
                 labelled = true;
             }
@@ -247,6 +258,32 @@ pub fn write_human(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_lines_get_no_snippet() {
+        use codespan_reporting::term::termcolor::NoColor;
+        let long = format!("<a {}/>", "x=\"1\" ".repeat(500));
+        let src = format!("<r>\n{long}\n</r>\n");
+        let diags = vec![
+            Diagnostic::warning("RTC006", "f.xml", "far right").at(crate::model::Pos::new(2, 9000)),
+            Diagnostic::warning("RTC006", "f.xml", "short line").at(crate::model::Pos::new(1, 2)),
+        ];
+        let mut out = NoColor::new(Vec::new());
+        write_human(&mut out, &diags, Verbosity::Normal, &mut |_| {
+            Some(src.clone())
+        })
+        .expect("written");
+        let text = String::from_utf8(out.into_inner()).expect("utf-8");
+        assert!(
+            !text.contains("x=\"1\" x=\"1\""),
+            "the long line is not printed"
+        );
+        assert!(text.contains("in f.xml:2:9000"), "{text}");
+        assert!(
+            text.contains("1 │ <r>"),
+            "short lines keep their snippet: {text}"
+        );
+    }
 
     #[test]
     fn spans() {
