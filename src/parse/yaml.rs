@@ -441,7 +441,10 @@ impl<'a> Locator<'a> {
         let src = self.src;
         let step = key.chars().next().map_or(1, char::len_utf8);
         let mut from = self.cursor;
-        while let Some(i) = src.get(from..).and_then(|s| s.find(key)) {
+        // One searcher for the whole scan (a UTF-8 needle only matches at character
+        // boundaries, so byte offsets are string offsets).
+        let finder = memchr::memmem::Finder::new(key.as_bytes());
+        while let Some(i) = src.get(from..).and_then(|s| finder.find(s.as_bytes())) {
             let at = from + i;
             self.budget = self.budget.saturating_sub(i + 1);
             if self.budget == 0 {

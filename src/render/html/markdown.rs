@@ -34,32 +34,40 @@ pub fn to_html(text: &str) -> String {
 }
 
 /// The HTML of text that contains nothing Markdown or HTML would read specially — one
-/// paragraph of lines without leading/trailing blanks, markup characters or characters that
-/// need escaping — built without running the parser. `None` for anything else. For such text
-/// this is exactly what [`parsed_html`] gives (a property test checks it).
+/// paragraph of lines without leading/trailing blanks or markup characters, where `<`, `>` and
+/// `&` can only be literal (`x > 0`, `< 3.14`, `a & b`) and a leading number is no list item
+/// (`0.5`, `20 Hz`) — built without running the parser. `None` for anything else. For such
+/// text this is exactly what [`parsed_html`] gives (a property test checks it).
 fn prose_html(text: &str) -> Option<String> {
+    // A single `~` cannot open or close strikethrough; two might.
+    if memchr::memchr_iter(b'~', text.as_bytes()).nth(1).is_some() {
+        return None;
+    }
     let mut out = String::with_capacity(text.len() + 16);
     out.push_str("<p>");
     for (i, line) in text.split('\n').enumerate() {
         let first = line.chars().next()?;
-        if first.is_ascii_digit() || matches!(first, '#' | '-' | '+' | '=' | ':') {
+        if matches!(first, '#' | '-' | '+' | '=' | ':' | '>') || list_number(line) {
             return None;
         }
         if line.ends_with(' ') || line.starts_with(' ') {
             return None;
         }
-        if line.chars().any(|c| {
+        let b = line.as_bytes();
+        // `<` and `&` followed by a space or a digit start no tag, autolink or entity.
+        let literal = |i: usize| {
+            b.get(i + 1)
+                .is_some_and(|c| *c == b' ' || c.is_ascii_digit())
+        };
+        if line.char_indices().any(|(i, c)| {
             c.is_control()
-                || matches!(
-                    c,
-                    '\\' | '`' | '*' | '[' | ']' | '<' | '>' | '!' | '&' | '|' | '~'
-                )
+                || matches!(c, '\\' | '`' | '*' | '[' | ']' | '!' | '|')
+                || (matches!(c, '<' | '&') && !literal(i))
         }) {
             return None;
         }
         // `_` between two ASCII letters or digits (`image_width`) can neither open nor close
         // emphasis; anywhere else it might.
-        let b = line.as_bytes();
         let inert = |i: usize| {
             i > 0
                 && b[i - 1].is_ascii_alphanumeric()
@@ -71,10 +79,30 @@ fn prose_html(text: &str) -> Option<String> {
         if i > 0 {
             out.push_str("<br>\n");
         }
-        out.push_str(line);
+        let mut rest = line;
+        while let Some(at) = rest.find(['<', '>', '&']) {
+            out.push_str(&rest[..at]);
+            out.push_str(match rest.as_bytes()[at] {
+                b'<' => "&lt;",
+                b'>' => "&gt;",
+                _ => "&amp;",
+            });
+            rest = &rest[at + 1..];
+        }
+        out.push_str(rest);
     }
     out.push_str("</p>\n");
     Some(out)
+}
+
+/// True when the line starts like an ordered list item: up to nine digits, `.` or `)`, then a
+/// blank or the end.
+fn list_number(line: &str) -> bool {
+    let b = line.as_bytes();
+    let digits = b.iter().take_while(|c| c.is_ascii_digit()).count();
+    (1..=9).contains(&digits)
+        && matches!(b.get(digits), Some(b'.' | b')'))
+        && b.get(digits + 1).is_none_or(|c| *c == b' ' || *c == b'\t')
 }
 
 /// Markdown → HTML through pulldown-cmark, and through the sanitiser when the output could
@@ -174,9 +202,20 @@ mod tests {
             prose_html("image_width is \"it's\""),
             Some("<p>image_width is \"it's\"</p>\n".to_string())
         );
+        for (t, html) in [
+            ("a & b", "<p>a &amp; b</p>\n"),
+            ("0.5", "<p>0.5</p>\n"),
+            ("20 Hz\n1", "<p>20 Hz<br>\n1</p>\n"),
+            ("x > 0", "<p>x &gt; 0</p>\n"),
+            ("< 3.14", "<p>&lt; 3.14</p>\n"),
+            ("~10 Hz", "<p>~10 Hz</p>\n"),
+        ] {
+            assert_eq!(prose_html(t).as_deref(), Some(html), "{t:?}");
+            assert_eq!(parsed_html(t), html, "{t:?}");
+        }
         for t in [
-            "", "a\n\nb", "1. x", "a *b*", " a", "a  \nb", "x\r\ny", "a & b", "- a", "_a_",
-            "a _b_", "a_",
+            "", "a\n\nb", "1. x", "2) x", "1.", "a *b*", " a", "a  \nb", "x\r\ny", "- a", "_a_",
+            "a _b_", "a_", "~~a~~", "> q", "<b>", "&amp;", "a<b", "~~~",
         ] {
             assert_eq!(prose_html(t), None, "{t:?}");
         }
@@ -185,7 +224,16 @@ mod tests {
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig { cases: 4096, ..Default::default() })]
         #[test]
-        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}_'\"*\\-\n\t\u{3042}\u{FF01}]{0,40}") {
+        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}_'\"*\\-\n\t\u{3042}\u{FF01}<>&~]{0,40}") {
+            if let Some(fast) = prose_html(&t) {
+                proptest::prop_assert_eq!(fast, parsed_html(&t));
+            }
+        }
+
+        /// A small alphabet of the characters that decide between literal text and markup
+        /// (`<a>`, `&#1;`, `1. `, `~a~`), so that such sequences actually occur.
+        #[test]
+        fn prose_matches_the_parser_on_markup_characters(t in "[ab1.;#<>&~/ )\n:-]{0,16}") {
             if let Some(fast) = prose_html(&t) {
                 proptest::prop_assert_eq!(fast, parsed_html(&t));
             }

@@ -423,7 +423,7 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
         esc(l.title)
     );
     s.push_str(r#"<defs><marker id="lc-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="8" markerHeight="8" orient="auto-start-reverse"><path class="arrowhead" d="M0 0 L10 5 L0 10 z"/></marker></defs>"#);
-    let cb = |s: &mut String, x: f32, y: f32, anchor: &str, name: &str| {
+    let cb = |s: &mut String, x: u32, y: u32, anchor: &str, name: &str| {
         let on = implemented(name);
         let _ = write!(
             s,
@@ -433,12 +433,12 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
             esc(name)
         );
     };
-    let state = |s: &mut String, x: f32, y: f32, name: &str, class: &str| {
+    let state = |s: &mut String, x: u32, y: u32, name: &str, class: &str| {
         let _ = write!(
             s,
             r#"<rect class="state {class}" x="{x}" y="{y}" width="130" height="44" rx="14"/><text class="state-name" x="{}" y="{}" text-anchor="middle">{}</text>"#,
-            x + 65.0,
-            y + 27.0,
+            x + 65,
+            y + 27,
             esc(name)
         );
     };
@@ -451,51 +451,51 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
     // Initial pseudo-state and the states.
     s.push_str(r#"<circle class="initial" cx="20" cy="152" r="7"/>"#);
     arrow(&mut s, "M27 152 L48 152");
-    state(&mut s, 50.0, 130.0, l.created, "created");
-    state(&mut s, 320.0, 130.0, l.inactive, "inactive");
-    state(&mut s, 600.0, 130.0, l.active, "active");
-    state(&mut s, 600.0, 300.0, l.error, "error");
-    state(&mut s, 320.0, 300.0, l.finalized, "finalized");
+    state(&mut s, 50, 130, l.created, "created");
+    state(&mut s, 320, 130, l.inactive, "inactive");
+    state(&mut s, 600, 130, l.active, "active");
+    state(&mut s, 600, 300, l.error, "error");
+    state(&mut s, 320, 300, l.finalized, "finalized");
     // Created → Inactive.
     arrow(&mut s, "M180 152 L318 152");
-    cb(&mut s, 249.0, 144.0, "middle", "on_initialize");
+    cb(&mut s, 249, 144, "middle", "on_initialize");
     // Inactive ⇄ Active.
     arrow(&mut s, "M450 142 L598 142");
-    cb(&mut s, 524.0, 134.0, "middle", "on_activated");
+    cb(&mut s, 524, 134, "middle", "on_activated");
     arrow(&mut s, "M600 164 L452 164");
-    cb(&mut s, 524.0, 182.0, "middle", "on_deactivated");
+    cb(&mut s, 524, 182, "middle", "on_deactivated");
     // Active loop: periodic callbacks.
     arrow(&mut s, "M640 130 C640 80 700 80 700 128");
-    cb(&mut s, 665.0, 76.0, "middle", "on_execute");
-    cb(&mut s, 665.0, 60.0, "middle", "on_state_update");
+    cb(&mut s, 665, 76, "middle", "on_execute");
+    cb(&mut s, 665, 60, "middle", "on_state_update");
     // Active → Error.
     arrow(&mut s, "M690 174 L690 298");
-    cb(&mut s, 696.0, 240.0, "start", "on_aborting");
+    cb(&mut s, 696, 240, "start", "on_aborting");
     // Error loop.
     arrow(&mut s, "M640 344 C640 390 700 390 700 346");
-    cb(&mut s, 665.0, 396.0, "middle", "on_error");
+    cb(&mut s, 665, 396, "middle", "on_error");
     // Error → Inactive.
     arrow(&mut s, "M600 310 C520 280 440 240 420 176");
-    cb(&mut s, 500.0, 262.0, "middle", "on_reset");
+    cb(&mut s, 500, 262, "middle", "on_reset");
     // Inactive → Finalized.
     arrow(&mut s, "M385 174 L385 298");
-    cb(&mut s, 379.0, 240.0, "end", "on_finalize");
+    cb(&mut s, 379, 240, "end", "on_finalize");
     // Execution-context events and FSM callbacks, not tied to one transition.
     let _ = write!(
         s,
         r#"<text class="note-title" x="20" y="24">{}</text>"#,
         esc(l.ec_events)
     );
-    cb(&mut s, 20.0, 42.0, "start", "on_startup");
-    cb(&mut s, 140.0, 42.0, "start", "on_shutdown");
-    cb(&mut s, 270.0, 42.0, "start", "on_rate_changed");
+    cb(&mut s, 20, 42, "start", "on_startup");
+    cb(&mut s, 140, 42, "start", "on_shutdown");
+    cb(&mut s, 270, 42, "start", "on_rate_changed");
     let _ = write!(
         s,
         r#"<text class="note-title" x="20" y="240">{}</text>"#,
         esc(l.fsm)
     );
-    cb(&mut s, 20.0, 258.0, "start", "on_action");
-    cb(&mut s, 20.0, 276.0, "start", "on_mode_changed");
+    cb(&mut s, 20, 258, "start", "on_action");
+    cb(&mut s, 20, 276, "start", "on_mode_changed");
     // Legend.
     let _ = write!(
         s,
