@@ -7,6 +7,20 @@ pub mod xml;
 pub mod yaml;
 mod yaml_fast;
 
+/// Helpers shared by the readers' property tests.
+#[cfg(test)]
+mod test_support {
+    /// Inserts `text` into `s` at `at` (taken modulo the length, moved back to a character
+    /// boundary): a mutation of a generated document.
+    pub fn insert(s: &mut String, at: usize, text: &str) {
+        let mut at = at % (s.len() + 1);
+        while !s.is_char_boundary(at) {
+            at -= 1;
+        }
+        s.insert_str(at, text);
+    }
+}
+
 use crate::diagnostic::Diagnostic;
 use crate::model::Profile;
 

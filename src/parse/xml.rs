@@ -267,6 +267,13 @@ struct PosCursor<'a> {
 }
 
 impl<'a> PosCursor<'a> {
+    fn new(text: &'a str) -> Self {
+        PosCursor {
+            index: LineIndex::new(text),
+            last: (0, Pos::new(1, 1), 0),
+        }
+    }
+
     fn pos(&mut self, offset: usize) -> Pos {
         let text = self.index.text;
         let starts = &self.index.starts;
@@ -401,7 +408,16 @@ struct TreeBuilder<'t, 'f> {
     max_depth: usize,
 }
 
-impl TreeBuilder<'_, '_> {
+impl<'t, 'f> TreeBuilder<'t, 'f> {
+    fn new(text: &'t str, file: &'f str, max_depth: usize) -> Self {
+        TreeBuilder {
+            text,
+            file,
+            cursor: PosCursor::new(text),
+            max_depth,
+        }
+    }
+
     fn err(&mut self, code: &'static str, offset: usize, msg: impl Into<String>) -> Diagnostic {
         let pos = self.cursor.pos(offset);
         Diagnostic::error(code, self.file, msg).at(pos)
@@ -410,15 +426,7 @@ impl TreeBuilder<'_, '_> {
 
 /// Text → element tree. Streams through quick-xml's `NsReader`; O(n) time and memory.
 fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>, Diagnostic> {
-    let mut b = TreeBuilder {
-        text,
-        file,
-        cursor: PosCursor {
-            index: LineIndex::new(text),
-            last: (0, Pos::new(1, 1), 0),
-        },
-        max_depth: limits.max_depth.min(HARD_MAX_DEPTH),
-    };
+    let mut b = TreeBuilder::new(text, file, limits.max_depth.min(HARD_MAX_DEPTH));
     let mut reader = NsReader::from_str(text);
     {
         let cfg = reader.config_mut();
@@ -2003,7 +2011,7 @@ mod tests {
                 offsets.sort_unstable();
             }
             let index = LineIndex::new(&text);
-            let mut cursor = PosCursor { index: LineIndex::new(&text), last: (0, Pos::new(1, 1), 0) };
+            let mut cursor = PosCursor::new(&text);
             for o in offsets {
                 proptest::prop_assert_eq!(cursor.pos(o), index.pos(o), "offset {} of {:?}", o, text);
             }

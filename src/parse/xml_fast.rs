@@ -13,8 +13,7 @@
 //! every error. A differential property test holds the two equal on generated and mutated
 //! documents.
 
-use super::{add_text, close, is_name, unescape_attr, Attr, LineIndex, Node, Ns, PosCursor, Seen};
-use super::{Pos, TreeBuilder};
+use super::{add_text, close, is_name, unescape_attr, Attr, Node, Ns, Seen, TreeBuilder};
 use std::borrow::Cow;
 
 /// One namespace binding: prefix (`""` for the default namespace) and what it resolves to.
@@ -26,15 +25,7 @@ struct Binding<'t> {
 /// The tree of `text` when it is in the subset this builder reads and its root is an RTC
 /// profile; `None` otherwise.
 pub(super) fn build<'t>(text: &'t str, file: &str, max_depth: usize) -> Option<Node<'t>> {
-    let mut b = TreeBuilder {
-        text,
-        file,
-        cursor: PosCursor {
-            index: LineIndex::new(text),
-            last: (0, Pos::new(1, 1), 0),
-        },
-        max_depth,
-    };
+    let mut b = TreeBuilder::new(text, file, max_depth);
     let bytes = text.as_bytes();
     let mut i = 0;
     if text.starts_with("<?xml ") {
@@ -297,7 +288,7 @@ fn resolve(bindings: &[Binding<'_>], prefix: &str, element: bool) -> Option<Ns> 
 mod tests {
     use super::super::{build_tree, HARD_MAX_DEPTH};
     use super::build;
-    use crate::parse::Limits;
+    use crate::parse::{test_support::insert, Limits};
     use proptest::prelude::*;
     use proptest::strategy::ValueTree;
 
@@ -596,14 +587,6 @@ mod tests {
             ],
             0..5,
         )
-    }
-
-    fn insert(s: &mut String, at: usize, text: &str) {
-        let mut at = at % (s.len() + 1);
-        while !s.is_char_boundary(at) {
-            at -= 1;
-        }
-        s.insert_str(at, text);
     }
 
     /// The property below is only worth something if the fast builder takes most of the

@@ -448,7 +448,7 @@ fn float_syntax(b: &[u8]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::parse;
-    use crate::parse::{yaml::slow_value, Limits};
+    use crate::parse::{test_support::insert, yaml::slow_value, Limits};
     use proptest::prelude::*;
     use proptest::strategy::ValueTree;
 
@@ -770,8 +770,8 @@ mod tests {
                 self.out.push_str(&format!("{ind}# comment{}", self.nl));
             }
         }
-        /// Writes what follows `key:`.
-        fn after_key(&mut self, v: &N, indent: usize) {
+        /// Writes what follows `key:` (`indent`: the key's) or `-` (`after_key` false).
+        fn value(&mut self, v: &N, indent: usize, after_key: bool) {
             match v {
                 N::S(s) => {
                     let s = self.scalar(s);
@@ -779,14 +779,23 @@ mod tests {
                     self.out.push_str(&s);
                     self.end_line();
                 }
+                // `key:` with nothing after it is null, as `{}` would not be.
+                N::M(e) if e.is_empty() && after_key && self.pick(2) == 0 => self.end_line(),
                 N::M(e) if e.is_empty() => {
-                    let flow = if self.pick(2) == 0 { " {}" } else { "" };
-                    self.out.push_str(flow);
+                    self.out.push_str(" {}");
                     self.end_line();
                 }
                 N::Q(q) if q.is_empty() => {
                     self.out.push_str(" []");
                     self.end_line();
+                }
+                // `- key: value`: a compact mapping on the item's line.
+                N::M(e) if !after_key && self.pick(2) == 0 => {
+                    let extra = 1 + self.pick(3) as usize;
+                    self.out.push_str(&" ".repeat(extra));
+                    let inner = indent + 1 + extra;
+                    self.entry(e[0].0, &e[0].1, inner);
+                    self.map(&e[1..], inner);
                 }
                 N::M(e) => {
                     self.end_line();
@@ -794,7 +803,8 @@ mod tests {
                 }
                 N::Q(q) => {
                     self.end_line();
-                    let ind = if self.pick(2) == 0 {
+                    // After a key, a sequence may sit at the key's own indent.
+                    let ind = if after_key && self.pick(2) == 0 {
                         indent
                     } else {
                         indent + self.step
@@ -808,7 +818,7 @@ mod tests {
             self.out.push_str(&k);
             let colon = if self.pick(5) == 0 { " :" } else { ":" };
             self.out.push_str(colon);
-            self.after_key(v, indent);
+            self.value(v, indent, true);
         }
         fn map(&mut self, e: &[(&str, N)], indent: usize) {
             for (k, v) in e {
@@ -820,37 +830,7 @@ mod tests {
             for v in q {
                 self.out.push_str(&" ".repeat(indent));
                 self.out.push('-');
-                match v {
-                    N::S(s) => {
-                        let s = self.scalar(s);
-                        self.out.push(' ');
-                        self.out.push_str(&s);
-                        self.end_line();
-                    }
-                    N::M(e) if !e.is_empty() && self.pick(2) == 0 => {
-                        let extra = 1 + self.pick(3) as usize;
-                        self.out.push_str(&" ".repeat(extra));
-                        let inner = indent + 1 + extra;
-                        self.entry(e[0].0, &e[0].1, inner);
-                        self.map(&e[1..], inner);
-                    }
-                    N::M(e) if e.is_empty() => {
-                        self.out.push_str(" {}");
-                        self.end_line();
-                    }
-                    N::Q(q) if q.is_empty() => {
-                        self.out.push_str(" []");
-                        self.end_line();
-                    }
-                    N::M(e) => {
-                        self.end_line();
-                        self.map(e, indent + self.step);
-                    }
-                    N::Q(q) => {
-                        self.end_line();
-                        self.seq(q, indent + self.step);
-                    }
-                }
+                self.value(v, indent, false);
             }
         }
     }
@@ -871,17 +851,9 @@ mod tests {
             r.out.push_str(nl);
         }
         r.out.push_str("rtcProfile:");
-        r.after_key(root, 0);
+        r.value(root, 0, true);
         r.map(extra, 0);
         r.out
-    }
-
-    fn insert(s: &mut String, at: usize, text: &str) {
-        let mut at = at % (s.len() + 1);
-        while !s.is_char_boundary(at) {
-            at -= 1;
-        }
-        s.insert_str(at, text);
     }
 
     /// The property below is only worth something if the fast reader takes most of the
