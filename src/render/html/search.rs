@@ -13,7 +13,7 @@ use crate::catalog::Catalog;
 use crate::model::non_empty;
 use crate::types::canonical_type;
 use rayon::prelude::*;
-use std::collections::BTreeSet;
+use std::borrow::Cow;
 
 /// Whether `c` is written without spaces between words (kana, CJK ideographs, full-width forms).
 pub fn is_cjk(c: char) -> bool {
@@ -27,10 +27,10 @@ pub fn is_cjk(c: char) -> bool {
     )
 }
 
-/// Splits `text` into search tokens (see the module documentation); pushes them into `out`.
-/// Works on slices of `text`; a token is allocated only when it is new to `out`.
-pub fn tokenize(text: &str, out: &mut BTreeSet<String>) {
-    let mut buf = String::new();
+/// Splits `text` into search tokens (see the module documentation); pushes them onto `out`,
+/// duplicates included (the caller sorts and de-duplicates). Tokens borrow from `text` unless
+/// lower-casing changed them.
+pub fn tokenize<'a>(text: &'a str, out: &mut Vec<Cow<'a, str>>) {
     // Start of the current word or CJK run (byte offset), and which of the two it is.
     let mut start: Option<(usize, bool)> = None;
     for (i, c) in text.char_indices() {
@@ -45,20 +45,20 @@ pub fn tokenize(text: &str, out: &mut BTreeSet<String>) {
             (Some((_, a)), Some(b)) if a == b => {}
             _ => {
                 if let Some((s, cjk)) = start {
-                    flush(&text[s..i], cjk, &mut buf, out);
+                    flush(&text[s..i], cjk, out);
                 }
                 start = class.map(|cjk| (i, cjk));
             }
         }
     }
     if let Some((s, cjk)) = start {
-        flush(&text[s..], cjk, &mut buf, out);
+        flush(&text[s..], cjk, out);
     }
 }
 
-/// Inserts the tokens of one word (itself and its camelCase / digit parts) or one CJK run
+/// The tokens of one word (itself and its camelCase / digit parts) or one CJK run
 /// (overlapping bigrams, or the lone character).
-fn flush(run: &str, cjk: bool, buf: &mut String, out: &mut BTreeSet<String>) {
+fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
     if cjk {
         let mut ends = run
             .char_indices()
@@ -69,18 +69,18 @@ fn flush(run: &str, cjk: bool, buf: &mut String, out: &mut BTreeSet<String>) {
             return;
         };
         if prev_end == run.len() {
-            insert(run, out);
+            out.push(Cow::Borrowed(run));
             return;
         }
         let mut prev_start = 0;
         for end in ends {
-            insert(&run[prev_start..end], out);
+            out.push(Cow::Borrowed(&run[prev_start..end]));
             prev_start = prev_end;
             prev_end = end;
         }
         return;
     }
-    insert_lower(run, buf, out);
+    out.push(lower(run));
     // camelCase / digit boundaries: UsbCamera → usb, camera (only when there are two parts
     // or more).
     let mut part_start = 0;
@@ -91,34 +91,36 @@ fn flush(run: &str, cjk: bool, buf: &mut String, out: &mut BTreeSet<String>) {
                 || (p.is_alphabetic() && c.is_ascii_digit())
                 || (p.is_ascii_digit() && c.is_alphabetic());
             if boundary {
-                insert_lower(&run[part_start..i], buf, out);
+                out.push(lower(&run[part_start..i]));
                 part_start = i;
             }
         }
         prev = Some(c);
     }
     if part_start > 0 {
-        insert_lower(&run[part_start..], buf, out);
+        out.push(lower(&run[part_start..]));
     }
 }
 
-/// Inserts `s` lower-cased (as `str::to_lowercase`), allocating only when it is new.
-fn insert_lower(s: &str, buf: &mut String, out: &mut BTreeSet<String>) {
-    if s.is_ascii() {
-        buf.clear();
-        buf.extend(s.bytes().map(|b| char::from(b.to_ascii_lowercase())));
-        if !out.contains(buf.as_str()) {
-            out.insert(buf.clone());
-        }
+/// `s` lower-cased (as `str::to_lowercase`), borrowed when it already is.
+fn lower(s: &str) -> Cow<'_, str> {
+    if s.bytes().all(|b| !b.is_ascii_uppercase() && b.is_ascii()) {
+        Cow::Borrowed(s)
+    } else if s.is_ascii() {
+        Cow::Owned(s.to_ascii_lowercase())
     } else {
-        out.insert(s.to_lowercase());
+        Cow::Owned(s.to_lowercase())
     }
 }
 
-/// Inserts `s` as it is, allocating only when it is new.
-fn insert(s: &str, out: &mut BTreeSet<String>) {
-    if !out.contains(s) {
-        out.insert(s.to_string());
+/// Tokenizes the first [`MAX_DESCRIPTION`] characters of `s`.
+fn add<'a>(tokens: &mut Vec<Cow<'a, str>>, s: Option<&'a str>) {
+    if let Some(s) = s {
+        let end = s
+            .char_indices()
+            .nth(MAX_DESCRIPTION)
+            .map_or(s.len(), |(i, _)| i);
+        tokenize(&s[..end], tokens);
     }
 }
 
@@ -135,45 +137,49 @@ pub fn index_js(catalog: &Catalog) -> String {
         .map(|c| {
             let p = &c.profile;
             let b = &p.basic_info;
-            let mut tokens = BTreeSet::new();
-            let mut add = |s: Option<&str>| {
-                if let Some(s) = s {
-                    let s: String = s.chars().take(MAX_DESCRIPTION).collect();
-                    tokenize(&s, &mut tokens);
-                }
-            };
-            add(Some(p.name()));
-            add(non_empty(&b.category));
-            add(non_empty(&b.vendor));
-            add(non_empty(&b.description));
+            // Canonical type names are made first: tokens borrow from them.
+            let types: Vec<String> = p
+                .data_ports
+                .iter()
+                .map(|d| &d.type_)
+                .chain(
+                    p.service_ports
+                        .iter()
+                        .flat_map(|s| s.interfaces.iter().map(|i| &i.type_)),
+                )
+                .filter_map(|t| non_empty(t).map(canonical_type))
+                .collect();
+            let mut tokens: Vec<Cow<'_, str>> = Vec::new();
+            add(&mut tokens, Some(p.name()));
+            add(&mut tokens, non_empty(&b.category));
+            add(&mut tokens, non_empty(&b.vendor));
+            add(&mut tokens, non_empty(&b.description));
             if let Some(d) = &b.doc {
-                add(non_empty(&d.description));
+                add(&mut tokens, non_empty(&d.description));
             }
             for d in &p.data_ports {
-                add(non_empty(&d.name));
-                if let Some(t) = non_empty(&d.type_) {
-                    add(Some(&canonical_type(t)));
-                }
+                add(&mut tokens, non_empty(&d.name));
                 for e in &d.events {
-                    add(non_empty(&e.name));
+                    add(&mut tokens, non_empty(&e.name));
                 }
             }
             for s in &p.service_ports {
-                add(non_empty(&s.name));
+                add(&mut tokens, non_empty(&s.name));
                 for i in &s.interfaces {
-                    add(non_empty(&i.name));
-                    if let Some(t) = non_empty(&i.type_) {
-                        add(Some(&canonical_type(t)));
-                    }
+                    add(&mut tokens, non_empty(&i.name));
                 }
             }
-            for conf in p.configurations() {
-                add(non_empty(&conf.name));
+            for t in &types {
+                add(&mut tokens, Some(t));
             }
+            for conf in p.configurations() {
+                add(&mut tokens, non_empty(&conf.name));
+            }
+            tokens.sort_unstable();
+            tokens.dedup();
             let summary = non_empty(&b.description)
                 .map(|d| super::markdown::first_line(d, 90))
                 .unwrap_or_default();
-            let tokens: Vec<String> = tokens.into_iter().collect();
             serde_json::json!([
                 p.name(),
                 c.slug,
@@ -212,6 +218,7 @@ pub fn js_safe_json(json: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::collections::BTreeSet;
 
     /// The first implementation (one `String` per word and part), kept as the oracle.
     fn reference(text: &str, out: &mut BTreeSet<String>) {
@@ -293,8 +300,9 @@ mod tests {
             ),
         ) {
             let text = parts.concat();
-            let mut fast = BTreeSet::new();
-            tokenize(&text, &mut fast);
+            let mut tokens = Vec::new();
+            tokenize(&text, &mut tokens);
+            let fast: BTreeSet<String> = tokens.into_iter().map(Cow::into_owned).collect();
             let mut slow = BTreeSet::new();
             reference(&text, &mut slow);
             proptest::prop_assert_eq!(fast, slow, "{:?}", text);
@@ -302,9 +310,10 @@ mod tests {
     }
 
     fn toks(s: &str) -> Vec<String> {
-        let mut t = BTreeSet::new();
+        let mut t = Vec::new();
         tokenize(s, &mut t);
-        t.into_iter().collect()
+        let set: BTreeSet<String> = t.into_iter().map(Cow::into_owned).collect();
+        set.into_iter().collect()
     }
 
     #[test]
