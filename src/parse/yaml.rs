@@ -441,10 +441,25 @@ impl<'a> Locator<'a> {
         let src = self.src;
         let step = key.chars().next().map_or(1, char::len_utf8);
         let mut from = self.cursor;
-        // One searcher for the whole scan (a UTF-8 needle only matches at character
-        // boundaries, so byte offsets are string offsets).
-        let finder = memchr::memmem::Finder::new(key.as_bytes());
-        while let Some(i) = src.get(from..).and_then(|s| finder.find(s.as_bytes())) {
+        // The key is usually a few bytes ahead: for a short key, look for its first byte and
+        // compare; a long one (an explicit `? key`) gets a linear-time searcher. A UTF-8 needle
+        // only matches at character boundaries, so byte offsets are string offsets.
+        let needle = key.as_bytes();
+        let long = (needle.len() > 64).then(|| memchr::memmem::Finder::new(needle));
+        let find = |hay: &[u8]| {
+            if let Some(f) = &long {
+                return f.find(hay);
+            }
+            let mut at = 0;
+            while let Some(i) = memchr::memchr(needle[0], &hay[at..]) {
+                if hay[at + i..].starts_with(needle) {
+                    return Some(at + i);
+                }
+                at += i + 1;
+            }
+            None
+        };
+        while let Some(i) = src.get(from..).and_then(|s| find(s.as_bytes())) {
             let at = from + i;
             self.budget = self.budget.saturating_sub(i + 1);
             if self.budget == 0 {
