@@ -49,9 +49,18 @@ impl Lang {
     }
 }
 
-/// The position of `key` in [`LABELS`] (and in [`Lang::labels`]).
+/// The position of `key` in [`LABELS`] (and in [`Lang::labels`]). A hash lookup: templates
+/// and fact tables ask for labels tens of thousands of times per build.
 pub fn label_index(key: &str) -> Option<usize> {
-    LABELS.binary_search_by(|(k, _, _)| k.cmp(&key)).ok()
+    static INDEX: std::sync::LazyLock<std::collections::HashMap<&'static str, usize>> =
+        std::sync::LazyLock::new(|| {
+            LABELS
+                .iter()
+                .enumerate()
+                .map(|(i, (k, _, _))| (*k, i))
+                .collect()
+        });
+    INDEX.get(key).copied()
 }
 
 /// (key, English, Japanese), sorted by key (checked by a test).
