@@ -95,14 +95,15 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     progress.stage("cross-referencing", 0);
     let mut skipped = found.skipped;
     let mut diagnostics = Vec::new();
-    let mut loaded = Vec::with_capacity(outcomes.len());
+    let mut profiles = Vec::with_capacity(outcomes.len());
     let mut files = 0;
     for ((_, rel), outcome) in found.files.into_iter().zip(outcomes) {
         match outcome {
             Outcome::NotProfile => skipped.push(walk::not_a_profile(rel)),
             Outcome::Loaded(p, d) => {
                 files += 1;
-                loaded.push((p, d));
+                profiles.push(p);
+                diagnostics.extend(d);
             }
             Outcome::Failed(d) => {
                 files += 1;
@@ -110,13 +111,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             }
         }
     }
-    // Profiles in the order of their relative paths, as `walk::walk` sorts its sources.
-    loaded.sort_by(|a, b| a.0.source.cmp(&b.0.source));
-    let mut profiles = Vec::with_capacity(loaded.len());
-    for (p, d) in loaded {
-        profiles.push(p);
-        diagnostics.extend(d);
-    }
+    // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
     Ok(Loaded {
         catalog: Catalog::build(profiles, diagnostics),
         skipped,

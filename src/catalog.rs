@@ -335,36 +335,27 @@ impl Catalog {
             }
         }
 
-        // Data-type and interface indexes, one pass over all ports (the canonical type names
-        // are computed in parallel first).
-        type Canon = (Vec<Option<String>>, Vec<Vec<Option<String>>>);
-        let canon = |t: &Option<crate::model::Text>| {
-            t.as_deref()
-                .filter(|t| !t.trim().is_empty())
-                .map(canonical_type)
-        };
-        let canonical: Vec<Canon> = components
+        // Data-type and interface indexes, one pass over all ports. The canonical type names
+        // are computed in parallel first, in the order the loop meets them.
+        let canonical: Vec<Vec<Option<String>>> = components
             .par_iter()
             .map(|c| {
-                (
-                    c.profile
-                        .data_ports
-                        .iter()
-                        .map(|p| canon(&p.type_))
-                        .collect(),
-                    c.profile
-                        .service_ports
-                        .iter()
-                        .map(|p| p.interfaces.iter().map(|i| canon(&i.type_)).collect())
-                        .collect(),
-                )
+                c.profile
+                    .port_types()
+                    .map(|t| {
+                        t.as_deref()
+                            .filter(|t| !t.trim().is_empty())
+                            .map(canonical_type)
+                    })
+                    .collect()
             })
             .collect();
         let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
         let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
-        for ((ci, c), (port_types, iface_types)) in components.iter().enumerate().zip(canonical) {
-            for ((pi, p), key) in c.profile.data_ports.iter().enumerate().zip(port_types) {
-                let (Some(key), Some(t)) = (key, p.type_.as_deref()) else {
+        for ((ci, c), keys) in components.iter().enumerate().zip(canonical) {
+            let mut keys = keys.into_iter();
+            for (pi, p) in c.profile.data_ports.iter().enumerate() {
+                let (Some(key), Some(t)) = (keys.next().flatten(), p.type_.as_deref()) else {
                     continue;
                 };
                 let acc = types.entry(key).or_default();
@@ -378,9 +369,9 @@ impl Catalog {
                     _ => acc.other.push((ci, pi, 0)),
                 }
             }
-            for ((pi, p), keys) in c.profile.service_ports.iter().enumerate().zip(iface_types) {
-                for ((ii, i), key) in p.interfaces.iter().enumerate().zip(keys) {
-                    let (Some(key), Some(t)) = (key, i.type_.as_deref()) else {
+            for (pi, p) in c.profile.service_ports.iter().enumerate() {
+                for (ii, i) in p.interfaces.iter().enumerate() {
+                    let (Some(key), Some(t)) = (keys.next().flatten(), i.type_.as_deref()) else {
                         continue;
                     };
                     let acc = ifaces.entry(key).or_default();

@@ -746,6 +746,16 @@ impl Profile {
         self.actions.iter().find(|a| a.kind == kind)
     }
 
+    /// The type fields of the data ports, then of the service interfaces (port by port), in
+    /// document order.
+    pub fn port_types(&self) -> impl Iterator<Item = &Option<Text>> {
+        self.data_ports.iter().map(|d| &d.type_).chain(
+            self.service_ports
+                .iter()
+                .flat_map(|s| s.interfaces.iter().map(|i| &i.type_)),
+        )
+    }
+
     /// Configuration parameters (empty when there is no configuration set).
     pub fn configurations(&self) -> &[Configuration] {
         self.configuration_set

@@ -2,12 +2,13 @@
 //!
 //! Reading happens in three passes, each O(n) in the file size:
 //!
-//! 1. [`decode`]: bytes → text. UTF-8 (with or without BOM) is the default; an encoding named in
+//! 1. `decode`: bytes → text. UTF-8 (with or without BOM) is the default; an encoding named in
 //!    the XML declaration (Shift_JIS, EUC-JP, …) is decoded with `encoding_rs`. Invalid bytes are
 //!    an error pointing at the first bad byte.
-//! 2. [`build_tree`]: text → a small element tree with namespaces resolved *by URI* and every
-//!    element and attribute carrying its line:column. Hostile input (entity declarations,
-//!    undefined entities, too deep nesting) is rejected while streaming.
+//! 2. `build_tree` (or `xml_fast` for the common shape of file): text → a small element tree
+//!    with namespaces resolved *by URI* and every element and attribute carrying its
+//!    line:column. Hostile input (entity declarations, undefined entities, too deep nesting) is
+//!    rejected while streaming.
 //! 3. The mapping pass (`map_*` functions): tree → [`Profile`]. Whatever the spec does not define
 //!    for a node is kept in that node's `extra` list and reported as a warning, so nothing in a
 //!    profile is lost.
@@ -239,11 +240,26 @@ impl<'a> LineIndex<'a> {
     }
 
     fn pos(&self, offset: usize) -> Pos {
+        let offset = self.boundary(offset);
+        self.pos_on(self.line_of(offset), offset)
+    }
+
+    /// `offset`, within the text and moved back to a character boundary.
+    fn boundary(&self, offset: usize) -> usize {
         let mut offset = offset.min(self.text.len());
         while !self.text.is_char_boundary(offset) {
             offset -= 1;
         }
-        let line = self.starts.partition_point(|&s| s <= offset).max(1) - 1;
+        offset
+    }
+
+    /// Index in `starts` of the line holding `offset`.
+    fn line_of(&self, offset: usize) -> usize {
+        self.starts.partition_point(|&s| s <= offset).max(1) - 1
+    }
+
+    /// Position of `offset` (a boundary) on line `line` (an index in `starts`).
+    fn pos_on(&self, line: usize, offset: usize) -> Pos {
         let start = self.starts.get(line).copied().unwrap_or(0).min(offset);
         let col = self
             .text
@@ -275,12 +291,9 @@ impl<'a> PosCursor<'a> {
     }
 
     fn pos(&mut self, offset: usize) -> Pos {
-        let text = self.index.text;
-        let starts = &self.index.starts;
-        let mut off = offset.min(text.len());
-        while !text.is_char_boundary(off) {
-            off -= 1;
-        }
+        let index = &self.index;
+        let starts = &index.starts;
+        let off = index.boundary(offset);
         let (last_off, last_pos, last_line) = self.last;
         let (p, line) = if off >= last_off {
             // Step forward a few lines; search beyond that.
@@ -294,19 +307,19 @@ impl<'a> PosCursor<'a> {
                 line += starts[line + 1..].partition_point(|&s| s <= off);
             }
             let p = if line == last_line {
-                let n = text.get(last_off..off).map_or(0, |s| s.chars().count());
+                // Count only the characters since the last position.
+                let n = index
+                    .text
+                    .get(last_off..off)
+                    .map_or(0, |s| s.chars().count());
                 Pos::new(last_pos.line, last_pos.column.saturating_add(n as u32))
             } else {
-                let n = text.get(starts[line]..off).map_or(0, |s| s.chars().count());
-                Pos::new(
-                    u32::try_from(line + 1).unwrap_or(u32::MAX),
-                    u32::try_from(n + 1).unwrap_or(u32::MAX),
-                )
+                index.pos_on(line, off)
             };
             (p, line)
         } else {
-            let p = self.index.pos(off);
-            (p, starts.partition_point(|&s| s <= off).max(1) - 1)
+            let line = index.line_of(off);
+            (index.pos_on(line, off), line)
         };
         self.last = (off, p, line);
         p
@@ -513,8 +526,8 @@ fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>
                 ));
             }
             let key_off = offset_in(text, key).unwrap_or(before);
-            if key == b"xmlns" || key.starts_with(b"xmlns:") {
-                continue; // namespace declarations: plumbing
+            if is_ns_declaration(key) {
+                continue;
             }
             let aq = sub(text, key);
             let (ans, alocal) = reader.resolve_attribute(a.key);
@@ -526,13 +539,8 @@ fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>
                 )
             })?;
             let alocal = sub(text, alocal.as_ref());
-            if ans == Ns::Xsi
-                && matches!(
-                    &*alocal,
-                    "type" | "schemaLocation" | "noNamespaceSchemaLocation"
-                )
-            {
-                continue; // xsi:type names the concrete XSD type: plumbing
+            if is_schema_plumbing(&ans, &alocal) {
+                continue;
             }
             let raw = sub(text, &a.value);
             let value_off = offset_in(text, &a.value).unwrap_or(key_off);
@@ -705,14 +713,18 @@ fn is_blank(s: &str) -> bool {
     s.bytes().all(|b| matches!(b, b' ' | b'\t' | b'\n' | b'\r')) || s.trim().is_empty()
 }
 
+/// A byte of an ASCII XML name (`rtc:DataPorts`, `a.b-c_d`).
+fn is_ascii_name_byte(c: &u8) -> bool {
+    c.is_ascii_alphanumeric() || matches!(c, b'_' | b':' | b'-' | b'.')
+}
+
 /// A loose check of XML 1.0 `Name` (§2.3): quick-xml accepts anything up to whitespace or `>`.
 fn is_name(s: &str) -> bool {
     // The usual case, an ASCII name such as `rtc:DataPorts`, decided byte by byte.
     let b = s.as_bytes();
     if b.first()
         .is_some_and(|c| c.is_ascii_alphabetic() || matches!(c, b'_' | b':'))
-        && b.iter()
-            .all(|c| c.is_ascii_alphanumeric() || matches!(c, b'_' | b':' | b'-' | b'.'))
+        && b.iter().all(is_ascii_name_byte)
     {
         return true;
     }
@@ -786,7 +798,10 @@ fn resolve_ref(name: &str) -> Result<String, String> {
 /// Attribute-value normalisation (XML 1.0 §3.3.3, CDATA type): literal tab, CR, LF → space
 /// (CRLF → one space), then references resolved. Errors carry the byte offset inside `raw`.
 fn unescape_attr(raw: Cow<'_, str>) -> Result<Cow<'_, str>, (usize, String)> {
-    if !raw.contains(['&', '\t', '\r', '\n']) {
+    if !raw
+        .bytes()
+        .any(|c| matches!(c, b'&' | b'\t' | b'\r' | b'\n'))
+    {
         return Ok(raw);
     }
     let raw = &*raw;
@@ -825,6 +840,20 @@ fn entity_error(b: &mut TreeBuilder<'_, '_>, offset: usize, msg: String) -> Diag
         codes::MALFORMED
     };
     b.err(code, offset, msg)
+}
+
+/// `xmlns` and `xmlns:p` attributes: namespace declarations, not data.
+fn is_ns_declaration(key: &[u8]) -> bool {
+    key == b"xmlns" || key.starts_with(b"xmlns:")
+}
+
+/// `xsi:type` (the concrete XSD type) and the schema locations: plumbing, not data.
+fn is_schema_plumbing(ns: &Ns, local: &str) -> bool {
+    *ns == Ns::Xsi
+        && matches!(
+            local,
+            "type" | "schemaLocation" | "noNamespaceSchemaLocation"
+        )
 }
 
 /// The attribute names of one tag met so far: a short list, or a hash set once the tag has

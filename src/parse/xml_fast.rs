@@ -3,8 +3,7 @@
 //! entities and character references, comments, and an XML declaration at the start.
 //!
 //! quick-xml's namespace reader looks at every start tag's attributes twice (once for the
-//! declarations) and checks each attribute against all earlier ones; this builder reads a tag
-//! once, and builds the same [`Node`] tree with the same positions, through the same helpers
+//! declarations); this builder reads a tag once, and builds the same [`Node`] tree with the same positions, through the same helpers
 //! ([`add_text`], [`unescape_attr`], [`PosCursor`]) as [`build_tree`]. It returns `None` for
 //! anything else — CDATA sections, processing instructions, a DOCTYPE, non-ASCII or odd names,
 //! unquoted or duplicate attributes, `<` or `>` in attribute values, undeclared prefixes,
@@ -13,7 +12,8 @@
 //! every error. A differential property test holds the two equal on generated and mutated
 //! documents.
 
-use super::{add_text, close, is_name, unescape_attr, Attr, Node, Ns, Seen, TreeBuilder};
+use super::{add_text, close, is_ascii_name_byte, is_name, is_ns_declaration};
+use super::{is_schema_plumbing, unescape_attr, Attr, Node, Ns, Seen, TreeBuilder};
 use std::borrow::Cow;
 
 /// One namespace binding: prefix (`""` for the default namespace) and what it resolves to.
@@ -139,7 +139,7 @@ fn start_tag<'t>(
         + 1
         + bytes[at + 1..]
             .iter()
-            .position(|c| !(c.is_ascii_alphanumeric() || matches!(c, b'_' | b':' | b'-' | b'.')))?;
+            .position(|c| !is_ascii_name_byte(c))?;
     let qname = &text[at + 1..name_end];
     if !name_start(qname) {
         return None;
@@ -163,9 +163,7 @@ fn start_tag<'t>(
             _ => {}
         }
         let key_start = i;
-        let key_len = bytes[i..]
-            .iter()
-            .position(|c| !(c.is_ascii_alphanumeric() || matches!(c, b'_' | b':' | b'-' | b'.')))?;
+        let key_len = bytes[i..].iter().position(|c| !is_ascii_name_byte(c))?;
         let key = &text[i..i + key_len];
         if !name_start(key) || bytes.get(i + key_len) != Some(&b'=') {
             return None;
@@ -204,27 +202,15 @@ fn start_tag<'t>(
     let pos = b.cursor.pos(at);
     let mut attrs = Vec::new();
     for (key, key_off, value) in raw {
-        if key == "xmlns" || key.starts_with("xmlns:") {
+        if is_ns_declaration(key.as_bytes()) {
             continue;
         }
         let (aprefix, alocal) = split(key)?;
         let ans = resolve(bindings, aprefix, false)?;
-        if ans == Ns::Xsi
-            && matches!(
-                alocal,
-                "type" | "schemaLocation" | "noNamespaceSchemaLocation"
-            )
-        {
+        if is_schema_plumbing(&ans, alocal) {
             continue;
         }
-        let value = if value
-            .bytes()
-            .any(|c| matches!(c, b'&' | b'\t' | b'\r' | b'\n'))
-        {
-            unescape_attr(Cow::Borrowed(value)).ok()?
-        } else {
-            Cow::Borrowed(value)
-        };
+        let value = unescape_attr(Cow::Borrowed(value)).ok()?;
         attrs.push(Attr {
             qname: Cow::Borrowed(key),
             ns: ans,

@@ -5,9 +5,10 @@
 //!
 //! The file is parsed into a `serde_norway` [`Value`] tree which is then mapped onto the
 //! model: by our own line reader (`yaml_fast`) when the file is one block-style document of
-//! one-line scalars (what RTCBuilder writes), else by `serde_norway`. `Value` carries no source marks, so positions are recovered with a [`Locator`]: the
-//! tree is walked in document order (mappings keep their order) while a cursor moves forward
-//! through the source text looking for each key. This is exact for block-style YAML, which is
+//! one-line scalars (what RTCBuilder writes), else by `serde_norway`. `Value` carries no
+//! source marks, so positions are recovered with a `Locator`: the tree is walked in document
+//! order (mappings keep their order) while a cursor moves forward through the source text
+//! looking for each key. This is exact for block-style YAML, which is
 //! what RTCBuilder writes, and a close approximation for flow style.
 //!
 //! Hostile input: the `Value` is built by our own seed, which counts nodes and depth as it goes

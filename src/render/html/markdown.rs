@@ -79,17 +79,8 @@ fn prose_html(text: &str) -> Option<String> {
         if i > 0 {
             out.push_str("<br>\n");
         }
-        let mut rest = line;
-        while let Some(at) = rest.find(['<', '>', '&']) {
-            out.push_str(&rest[..at]);
-            out.push_str(match rest.as_bytes()[at] {
-                b'<' => "&lt;",
-                b'>' => "&gt;",
-                _ => "&amp;",
-            });
-            rest = &rest[at + 1..];
-        }
-        out.push_str(rest);
+        // The parser's own text escaper (`<`, `>`, `&`); writing to a String cannot fail.
+        let _ = pulldown_cmark_escape::escape_html_body_text(&mut out, line);
     }
     out.push_str("</p>\n");
     Some(out)

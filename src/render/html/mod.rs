@@ -800,7 +800,7 @@ impl HtmlRenderer {
 }
 
 /// The `t` global: UI labels by key. A map object over the label table, so that the hundred-odd
-/// `t.…` lookups of every page are the table's binary search over `&str` returning a shared
+/// `t.…` lookups of every page are [`crate::i18n::label_index`] over `&str` returning a shared
 /// value, not a search of a map keyed by template values.
 #[derive(Debug)]
 struct Labels {

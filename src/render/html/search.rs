@@ -60,23 +60,14 @@ pub fn tokenize<'a>(text: &'a str, out: &mut Vec<Cow<'a, str>>) {
 /// (overlapping bigrams, or the lone character).
 fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
     if cjk {
-        let mut ends = run
-            .char_indices()
-            .map(|(i, _)| i)
-            .skip(1)
-            .chain([run.len()]);
-        let Some(mut prev_end) = ends.next() else {
-            return;
-        };
-        if prev_end == run.len() {
-            out.push(Cow::Borrowed(run));
-            return;
+        // Each character with the next one; a lone character stands for itself.
+        let mut prev = 0;
+        for (i, c) in run.char_indices().skip(1) {
+            out.push(Cow::Borrowed(&run[prev..i + c.len_utf8()]));
+            prev = i;
         }
-        let mut prev_start = 0;
-        for end in ends {
-            out.push(Cow::Borrowed(&run[prev_start..end]));
-            prev_start = prev_end;
-            prev_end = end;
+        if prev == 0 {
+            out.push(Cow::Borrowed(run));
         }
         return;
     }
@@ -139,14 +130,7 @@ pub fn index_js(catalog: &Catalog) -> String {
             let b = &p.basic_info;
             // Canonical type names are made first: tokens borrow from them.
             let types: Vec<String> = p
-                .data_ports
-                .iter()
-                .map(|d| &d.type_)
-                .chain(
-                    p.service_ports
-                        .iter()
-                        .flat_map(|s| s.interfaces.iter().map(|i| &i.type_)),
-                )
+                .port_types()
                 .filter_map(|t| non_empty(t).map(canonical_type))
                 .collect();
             let mut tokens: Vec<Cow<'_, str>> = Vec::new();
