@@ -10,6 +10,7 @@
 
 mod builtins;
 pub mod markdown;
+mod native;
 pub mod search;
 pub mod svg;
 
@@ -791,7 +792,7 @@ impl HtmlRenderer {
         env.add_global("lang", opts.language.tag());
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
-        env.add_global("generator", format!("rtcdoc {}", env!("CARGO_PKG_VERSION")));
+        env.add_global("generator", generator());
         env.add_function("fields", builtins::fields);
         env.add_function("type_link", builtins::type_link);
         env.add_function("peers", builtins::peers);
@@ -913,6 +914,14 @@ impl HtmlRenderer {
         // Component pages: the bulk of the work, rendered and written in parallel; the search
         // index is built alongside (its JSON serialisation is serial).
         let tmpl = env.get_template("component.html")?;
+        let native = native_component_pages(opts);
+        let generator = generator();
+        let globals = native::Globals {
+            lang,
+            site_title: &opts.title,
+            has_diagnostics: !catalog.diagnostics.is_empty(),
+            generator: &generator,
+        };
         all_paths.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
         let (search_written, pages_written) = rayon::join(
             || -> Result<usize> {
@@ -928,9 +937,12 @@ impl HtmlRenderer {
                     .filter(|&ci| wanted(&site.component_path(ci)))
                     .map(|ci| -> Result<usize> {
                         let page = site.component_page(ci);
-                        let html = tmpl
-                            .render(&page)
-                            .with_context(|| format!("rendering component `{}`", page.name))?;
+                        let html = if native {
+                            native::component_page(&page, &globals)
+                        } else {
+                            tmpl.render(&page)
+                                .with_context(|| format!("rendering component `{}`", page.name))?
+                        };
                         out.write_owned(&site.component_path(ci), html.into_bytes())?;
                         Ok(1)
                     })
@@ -984,6 +996,21 @@ impl HtmlRenderer {
         all_paths.sort();
         Ok(Rendered { written, all_paths })
     }
+}
+
+/// The `generator` global: `rtcdoc <version>`.
+fn generator() -> String {
+    format!("rtcdoc {}", env!("CARGO_PKG_VERSION"))
+}
+
+/// Whether component pages are written by [`native::component_page`]: when the theme directory
+/// overrides neither of the templates it stands for.
+fn native_component_pages(opts: &SiteOptions) -> bool {
+    opts.theme_dir.as_deref().is_none_or(|d| {
+        !["base.html", "component.html"]
+            .iter()
+            .any(|f| d.join(f).is_file())
+    })
 }
 
 fn ctx<S: Serialize>(v: &S) -> Value {

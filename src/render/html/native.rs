@@ -1,0 +1,555 @@
+//! The component page of the built-in theme, written by Rust code instead of by running the
+//! templates `base.html` + `component.html` in minijinja.
+//!
+//! Component pages are most of a site (10,000 of 14,000 files for 10,000 profiles) and running
+//! their template was a third of the build's instructions. When the theme directory overrides
+//! neither `base.html` nor `component.html`, [`component_page`] writes the page directly, byte
+//! for byte what the templates produce: the tests render every page both ways and compare (the
+//! examples, the hostile fixtures, generated catalogues and, when present, the real-world
+//! corpus). The templates stay the documented source of the markup and are what a theme that
+//! overrides either file runs. A change to either template must be made here too — the tests
+//! fail until it is.
+
+use super::svg::esc_into;
+use super::{ComponentPage, Field, PortTypeRef};
+use crate::i18n::Lang;
+
+/// The template globals the page prints.
+pub(super) struct Globals<'a> {
+    pub lang: Lang,
+    pub site_title: &'a str,
+    pub has_diagnostics: bool,
+    pub generator: &'a str,
+}
+
+/// Writes HTML: `raw` markup as is, `text`/`label` escaped as `{{ … }}` prints a string.
+struct Out<'a> {
+    buf: String,
+    lang: Lang,
+    g: &'a Globals<'a>,
+}
+
+impl Out<'_> {
+    fn raw(&mut self, s: &str) {
+        self.buf.push_str(s);
+    }
+
+    fn text(&mut self, s: &str) {
+        // Writing to a String cannot fail.
+        let _ = esc_into(&mut self.buf, s);
+    }
+
+    /// `{{ t.key }}`.
+    fn label(&mut self, key: &str) {
+        let s = self.lang.t(key);
+        self.text(s);
+    }
+
+    /// `fields(list)` (see `builtins::fields`).
+    fn fields(&mut self, list: &[Field]) {
+        if list.is_empty() {
+            return;
+        }
+        self.raw("<dl class=\"fields\">\n");
+        for f in list {
+            self.raw("<dt>");
+            self.text(&f.label);
+            self.raw("</dt><dd>");
+            match (&f.html, &f.text) {
+                (Some(h), _) if !h.is_empty() => self.raw(h),
+                (_, Some(t)) => self.text(t),
+                _ => {}
+            }
+            self.raw("</dd>\n");
+        }
+        self.raw("</dl>");
+    }
+
+    /// `type_link(r)` (see `builtins::type_link`).
+    fn type_link(&mut self, r: &Option<PortTypeRef>) {
+        let Some(r) = r else { return };
+        match r.href.as_deref() {
+            Some(href) if !href.is_empty() => {
+                self.raw("<a href=\"");
+                self.text(href);
+                self.raw("\"><code>");
+                self.text(&r.text);
+                self.raw("</code></a>");
+            }
+            _ => {
+                self.raw("<code>");
+                self.text(&r.text);
+                self.raw("</code>");
+            }
+        }
+    }
+
+    /// `peers(row)` (see `builtins::peers`).
+    fn peers(&mut self, peers: &[super::Link], more: &Option<super::Link>) {
+        if peers.is_empty() {
+            self.raw("<span class=\"none\">—</span>");
+            return;
+        }
+        self.raw("<ul class=\"peers\">\n");
+        for l in peers {
+            self.raw("<li><a href=\"");
+            self.text(&l.href);
+            self.raw("\">");
+            self.text(&l.text);
+            self.raw("</a></li>\n");
+        }
+        if let Some(m) = more {
+            self.raw("<li class=\"more\"><a href=\"");
+            self.text(&m.href);
+            self.raw("\">");
+            self.text(&m.text);
+            self.raw("</a></li>\n");
+        }
+        self.raw("</ul>");
+    }
+
+    /// `<th scope="col">{{ t.key }}</th>` for each key.
+    fn head_cells(&mut self, keys: &[&str]) {
+        for k in keys {
+            self.raw("<th scope=\"col\">");
+            self.label(k);
+            self.raw("</th>");
+        }
+    }
+
+    /// `{% if cond %}<li><a href="#id">{{ t.key }}</a></li>{% endif %}` and its line break.
+    fn toc_entry(&mut self, cond: bool, id: &str, key: &str) {
+        if cond {
+            self.raw("<li><a href=\"#");
+            self.raw(id);
+            self.raw("\">");
+            self.label(key);
+            self.raw("</a></li>");
+        }
+        self.raw("\n");
+    }
+
+    /// `<section id="…"[ class="card"]>` + `<h2>{{ t.key }}</h2>`.
+    fn section_start(&mut self, id: &str, card: bool, key: &str) {
+        self.raw("<section id=\"");
+        self.raw(id);
+        self.raw(if card {
+            "\" class=\"card\">\n<h2>"
+        } else {
+            "\">\n<h2>"
+        });
+        self.label(key);
+        self.raw("</h2>\n");
+    }
+}
+
+/// The whole component page, as `component.html` (extending `base.html`) renders `page`.
+pub(super) fn component_page(page: &ComponentPage, g: &Globals<'_>) -> String {
+    let mut o = Out {
+        buf: String::with_capacity(32 * 1024),
+        lang: g.lang,
+        g,
+    };
+    base_top(&mut o, page);
+    main_block(&mut o, page);
+    base_bottom(&mut o);
+    o.buf
+}
+
+/// `base.html` up to `{% block main %}`.
+fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
+    let root = page.root;
+    o.raw("<!DOCTYPE html>\n<html lang=\"");
+    o.text(o.g.lang.tag());
+    o.raw("\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<meta name=\"generator\" content=\"");
+    o.text(o.g.generator);
+    o.raw("\">\n<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data:; object-src 'none'; base-uri 'none'; form-action 'self'\">\n<title>");
+    o.text(&page.title);
+    o.raw("</title>\n<link rel=\"stylesheet\" href=\"");
+    o.text(root);
+    o.raw("style.css\">\n<script src=\"");
+    o.text(root);
+    o.raw("search.js\" defer></script>\n\n</head>\n<body data-root=\"");
+    o.text(root);
+    o.raw("\">\n<a class=\"skip\" href=\"#main\">");
+    o.label("skip");
+    o.raw("</a>\n<header class=\"site-header\">\n<div class=\"bar\">\n<a class=\"brand\" href=\"");
+    o.text(root);
+    o.raw("index.html\">");
+    o.text(o.g.site_title);
+    o.raw("</a>\n<nav class=\"site-nav\" aria-label=\"");
+    o.label("main_nav");
+    o.raw("\">\n<ul>\n");
+    for (path, key) in [
+        ("index.html", "components"),
+        ("types/index.html", "data_types"),
+        ("interfaces/index.html", "interfaces"),
+        ("categories/index.html", "categories"),
+        ("vendors/index.html", "vendors"),
+    ] {
+        o.raw("<li><a href=\"");
+        o.text(root);
+        o.raw(path);
+        o.raw("\">");
+        o.label(key);
+        o.raw("</a></li>\n");
+    }
+    if o.g.has_diagnostics {
+        o.raw("<li><a href=\"");
+        o.text(root);
+        o.raw("diagnostics.html\">");
+        o.label("diagnostics");
+        o.raw("</a></li>");
+    }
+    o.raw("\n</ul>\n</nav>\n<form class=\"search\" role=\"search\" action=\"");
+    o.text(root);
+    o.raw("search.html\" method=\"get\">\n<label for=\"search-input\" class=\"visually-hidden\">");
+    o.label("search");
+    o.raw("</label>\n<input id=\"search-input\" name=\"q\" type=\"search\" placeholder=\"");
+    o.label("search_placeholder");
+    o.raw("\" autocomplete=\"off\" aria-describedby=\"search-help\" aria-controls=\"search-popup\">\n<span id=\"search-help\" class=\"visually-hidden\">");
+    o.label("search_help");
+    o.raw("</span>\n<div id=\"search-popup\" class=\"search-popup\" hidden></div>\n</form>\n</div>\n</header>\n");
+    if !page.crumbs.is_empty() {
+        o.raw("<nav class=\"crumbs\" aria-label=\"");
+        o.label("breadcrumbs");
+        o.raw("\">\n<ol>\n");
+        for c in &page.crumbs {
+            o.raw("<li><a href=\"");
+            o.text(&c.href);
+            o.raw("\">");
+            o.text(&c.text);
+            o.raw("</a></li>\n");
+        }
+        o.raw("<li aria-current=\"page\">");
+        o.text(&page.name);
+        o.raw("</li>\n</ol>\n</nav>");
+    }
+    o.raw("\n<main id=\"main\">\n");
+}
+
+/// `base.html` after `{% endblock %}` of `main`.
+fn base_bottom(o: &mut Out<'_>) {
+    o.raw("\n</main>\n<footer class=\"site-footer\">\n<p>");
+    o.text(o.g.site_title);
+    o.raw(" · ");
+    o.text(o.g.generator);
+    o.raw("</p>\n</footer>\n</body>\n</html>");
+}
+
+/// `component.html`'s `{% block main %}`.
+fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
+    o.raw("\n<article class=\"component\">\n<h1>");
+    o.text(&p.name);
+    o.raw("</h1>\n");
+    if let Some(s) = p.summary_html.as_deref().filter(|s| !s.is_empty()) {
+        o.raw("<div class=\"summary\">");
+        o.raw(s);
+        o.raw("</div>");
+    }
+    o.raw("\n<nav class=\"toc\" aria-label=\"");
+    o.label("component");
+    o.raw("\">\n<ul>\n");
+    o.toc_entry(!p.document.is_empty(), "document", "document");
+    o.toc_entry(true, "diagram", "component_diagram");
+    o.toc_entry(!p.data_ports.is_empty(), "data-ports", "data_ports");
+    o.toc_entry(
+        !p.service_ports.is_empty(),
+        "service-ports",
+        "service_ports",
+    );
+    o.toc_entry(
+        !p.configurations.is_empty(),
+        "configuration",
+        "configuration",
+    );
+    o.toc_entry(true, "lifecycle", "actions");
+    o.toc_entry(!p.parameters.is_empty(), "parameters", "parameters");
+    o.toc_entry(
+        !p.language.is_empty() || !p.targets.is_empty(),
+        "language",
+        "language",
+    );
+    o.toc_entry(!p.properties.is_empty(), "properties", "properties");
+    o.toc_entry(!p.version_up_logs.is_empty(), "history", "version_up_logs");
+    o.toc_entry(!p.extras.is_empty(), "extra", "extra");
+    o.raw("</ul>\n</nav>\n\n");
+
+    o.section_start("overview", true, "component");
+    o.fields(&p.header);
+    o.raw("\n</section>\n\n");
+
+    if !p.document.is_empty() {
+        o.section_start("document", true, "document");
+        o.fields(&p.document);
+        o.raw("\n</section>");
+    }
+    o.raw("\n\n");
+
+    o.section_start("diagram", false, "component_diagram");
+    o.raw("<div class=\"diagram-wrap\">");
+    o.raw(&p.diagram_svg);
+    o.raw("</div>\n</section>\n\n");
+
+    data_ports(o, p);
+    o.raw("\n\n");
+    service_ports(o, p);
+    o.raw("\n\n");
+    configurations(o, p);
+    o.raw("\n\n");
+    lifecycle(o, p);
+    o.raw("\n\n");
+    rest(o, p);
+    o.raw("\n</article>\n");
+}
+
+fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
+    if p.data_ports.is_empty() {
+        return;
+    }
+    o.section_start("data-ports", false, "data_ports");
+    o.raw("<div class=\"table-wrap\">\n<table class=\"ports\">\n<thead><tr>");
+    o.head_cells(&[
+        "direction",
+        "name",
+        "type",
+        "unit",
+        "description",
+        "connects_to",
+    ]);
+    o.raw("</tr></thead>\n<tbody>\n");
+    for r in &p.data_ports {
+        o.raw("<tr id=\"");
+        o.text(&r.anchor);
+        o.raw("\">\n<td><span class=\"dir ");
+        o.text(r.dir_class);
+        o.raw("\">");
+        o.text(&r.direction);
+        o.raw("</span></td>\n<th scope=\"row\"><code>");
+        o.text(&r.name);
+        o.raw("</code></th>\n<td>");
+        o.type_link(&r.type_ref);
+        o.raw("</td>\n<td>");
+        o.text(&r.unit);
+        o.raw("</td>\n<td>");
+        o.fields(&r.details);
+        if !r.events.is_empty() {
+            o.raw("<div class=\"events\"><strong>");
+            o.label("events");
+            o.raw("</strong>\n<ul>\n");
+            for e in &r.events {
+                o.raw("<li><code>");
+                o.text(&e.name);
+                o.raw("</code>");
+                o.fields(&e.fields);
+                o.raw("</li>\n");
+            }
+            o.raw("</ul>\n</div>");
+        }
+        o.raw("</td>\n<td>");
+        o.peers(&r.peers, &r.peers_more);
+        o.raw("</td>\n</tr>\n");
+    }
+    o.raw("</tbody>\n</table>\n</div>\n</section>");
+}
+
+fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
+    if p.service_ports.is_empty() {
+        return;
+    }
+    o.section_start("service-ports", false, "service_ports");
+    o.raw("<div class=\"table-wrap\">\n<table class=\"ports\">\n<thead><tr>");
+    o.head_cells(&[
+        "direction",
+        "name",
+        "interface_type",
+        "description",
+        "connects_to",
+    ]);
+    o.raw("</tr></thead>\n");
+    for sp in &p.service_ports {
+        o.raw("<tbody>\n<tr id=\"");
+        o.text(&sp.anchor);
+        o.raw(
+            "\" class=\"sport\"><th scope=\"rowgroup\" colspan=\"5\"><span class=\"dir service\">",
+        );
+        o.label("port");
+        o.raw("</span> <code>");
+        o.text(&sp.name);
+        o.raw("</code>");
+        o.fields(&sp.details);
+        o.raw("</th></tr>\n");
+        for i in &sp.interfaces {
+            o.raw("<tr id=\"");
+            o.text(&i.anchor);
+            o.raw("\">\n<td><span class=\"dir ");
+            o.text(i.dir_class);
+            o.raw("\">");
+            o.text(&i.direction);
+            o.raw("</span></td>\n<th scope=\"row\"><code>");
+            o.text(&i.name);
+            o.raw("</code></th>\n<td>");
+            o.type_link(&i.type_ref);
+            o.raw("</td>\n<td>");
+            o.fields(&i.details);
+            o.raw("</td>\n<td>");
+            o.peers(&i.peers, &i.peers_more);
+            o.raw("</td>\n</tr>\n");
+        }
+        o.raw("</tbody>\n");
+    }
+    o.raw("</table>\n</div>\n</section>");
+}
+
+fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
+    if p.configurations.is_empty() {
+        return;
+    }
+    o.section_start("configuration", false, "configuration");
+    o.raw("<div class=\"table-wrap\">\n<table class=\"config\">\n<thead><tr>");
+    o.head_cells(&[
+        "name",
+        "type",
+        "default_value",
+        "unit",
+        "constraint",
+        "widget",
+        "description",
+    ]);
+    o.raw("</tr></thead>\n<tbody>\n");
+    for c in &p.configurations {
+        o.raw("<tr id=\"");
+        o.text(&c.anchor);
+        o.raw("\">\n<th scope=\"row\"><code>");
+        o.text(&c.name);
+        o.raw("</code></th>\n<td><code>");
+        o.text(&c.type_);
+        o.raw("</code></td>\n<td><code>");
+        o.text(&c.default);
+        o.raw("</code></td>\n<td>");
+        o.text(&c.unit);
+        o.raw("</td>\n<td>");
+        o.text(&c.constraint);
+        o.raw("</td>\n<td>");
+        o.text(&c.widget);
+        if !c.step.is_empty() {
+            o.raw(" (");
+            o.label("step");
+            o.raw(" ");
+            o.text(&c.step);
+            o.raw(")");
+        }
+        o.raw("</td>\n<td>");
+        o.fields(&c.details);
+        o.raw("</td>\n</tr>\n");
+    }
+    o.raw("</tbody>\n</table>\n</div>\n</section>");
+}
+
+fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
+    o.section_start("lifecycle", false, "actions");
+    o.raw("<div class=\"diagram-wrap\">");
+    o.raw(&p.lifecycle_svg);
+    o.raw("</div>\n<div class=\"table-wrap\">\n<table class=\"actions\">\n<thead><tr>");
+    o.head_cells(&["callback", "implemented", "description"]);
+    o.raw("</tr></thead>\n<tbody>\n");
+    for a in &p.actions {
+        o.raw("<tr id=\"action-");
+        o.text(a.name);
+        o.raw(if a.implemented {
+            "\" class=\"impl\">\n<th scope=\"row\"><code>"
+        } else {
+            "\" class=\"not-impl\">\n<th scope=\"row\"><code>"
+        });
+        o.text(a.name);
+        o.raw("</code></th>\n<td>");
+        if a.implemented {
+            o.raw("<span class=\"yes\">✔ ");
+            o.label("yes");
+        } else {
+            o.raw("<span class=\"no\">");
+            o.label("no");
+        }
+        o.raw("</span></td>\n<td>");
+        o.fields(&a.details);
+        o.raw("</td>\n</tr>\n");
+    }
+    o.raw("</tbody>\n</table>\n</div>\n</section>");
+}
+
+/// Parameters, language, properties, version history and extra properties.
+fn rest(o: &mut Out<'_>, p: &ComponentPage) {
+    if !p.parameters.is_empty() {
+        o.section_start("parameters", false, "parameters");
+        o.raw("<div class=\"table-wrap\">\n<table>\n<thead><tr>");
+        o.head_cells(&["name", "default_value"]);
+        o.raw("</tr></thead>\n<tbody>\n");
+        for kv in &p.parameters {
+            o.raw("<tr><th scope=\"row\"><code>");
+            o.text(&kv.key);
+            o.raw("</code></th><td><code>");
+            o.text(&kv.value);
+            o.raw("</code></td></tr>\n");
+        }
+        o.raw("</tbody>\n</table>\n</div>\n</section>");
+    }
+    o.raw("\n\n");
+    if !p.language.is_empty() || !p.targets.is_empty() {
+        o.section_start("language", true, "language");
+        o.fields(&p.language);
+        o.raw("\n");
+        if !p.targets.is_empty() {
+            o.raw("<h3>");
+            o.label("targets");
+            o.raw("</h3>\n");
+            for tg in &p.targets {
+                o.fields(tg);
+                o.raw("\n");
+            }
+        }
+        o.raw("\n</section>");
+    }
+    o.raw("\n\n");
+    if !p.properties.is_empty() {
+        o.section_start("properties", false, "properties");
+        o.raw("<div class=\"table-wrap\">\n<table>\n<thead><tr>");
+        o.head_cells(&["key", "value"]);
+        o.raw("</tr></thead>\n<tbody>\n");
+        for kv in &p.properties {
+            o.raw("<tr><th scope=\"row\"><code>");
+            o.text(&kv.key);
+            o.raw("</code></th><td>");
+            o.text(&kv.value);
+            o.raw("</td></tr>\n");
+        }
+        o.raw("</tbody>\n</table>\n</div>\n</section>");
+    }
+    o.raw("\n\n");
+    if !p.version_up_logs.is_empty() {
+        o.section_start("history", false, "version_up_logs");
+        o.raw("<ul class=\"history\">\n");
+        for v in &p.version_up_logs {
+            o.raw("<li>");
+            o.text(v);
+            o.raw("</li>\n");
+        }
+        o.raw("</ul>\n</section>");
+    }
+    o.raw("\n\n");
+    if !p.extras.is_empty() {
+        o.section_start("extra", false, "extra");
+        o.raw("<div class=\"table-wrap\">\n<table>\n<thead><tr>");
+        o.head_cells(&["extra_path", "extra_kind", "value"]);
+        o.raw("</tr></thead>\n<tbody>\n");
+        for e in &p.extras {
+            o.raw("<tr><th scope=\"row\"><code>");
+            o.text(&e.name);
+            o.raw("</code></th><td>");
+            o.text(e.kind);
+            o.raw("</td><td>");
+            o.text(&e.value);
+            o.raw("</td></tr>\n");
+        }
+        o.raw("</tbody>\n</table>\n</div>\n</section>");
+    }
+}
