@@ -140,9 +140,17 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
 
 /// The files a walk considers: every `.xml`/`.yaml`/`.yml` file the patterns let through, in
 /// walk order, before their content is looked at; and the files left out on the way.
+#[derive(Default)]
 pub(crate) struct Candidates {
     pub files: Vec<(PathBuf, String)>,
     pub skipped: Vec<Skipped>,
+}
+
+impl Candidates {
+    fn append(&mut self, mut other: Candidates) {
+        self.files.append(&mut other.files);
+        self.skipped.append(&mut other.skipped);
+    }
 }
 
 /// The [`Skipped`] entry of a candidate whose content is not a profile.
@@ -188,125 +196,290 @@ pub(crate) fn read_profile(
     Ok(Some((format, buf)))
 }
 
-/// The traversal part of [`walk`]: which files are candidates, without reading any.
+/// The traversal part of [`walk`]: which files are candidates, without reading any. The
+/// entries of the input directory are walked in parallel, each subtree in order, so the result
+/// is the same as one sorted walk of the whole tree ([`Walker::subtree`] of the input).
 pub(crate) fn candidates(input: &Path, opts: &WalkOptions) -> Result<Candidates, WalkError> {
     if !input.exists() {
         return Err(WalkError::Missing(input.to_path_buf()));
     }
-    let globs = build_globs(&opts.exclude)?;
-    let includes = build_globs(&opts.include)?;
-    let skip_dirs: Vec<PathBuf> = opts
-        .skip_dirs
-        .iter()
-        .filter_map(|d| d.canonicalize().ok())
-        .collect();
-    // Canonicalizing every directory of a large tree costs a path resolution each; on Unix
-    // only a directory with the inode number of a skipped one needs it.
+    let w = Walker::new(input, opts)?;
+    Ok(if input.is_dir() {
+        w.parallel()
+    } else {
+        w.subtree(input)
+    })
+}
+
+/// The settings of one walk.
+struct Walker<'a> {
+    input: &'a Path,
+    /// What relative paths are relative to.
+    root: PathBuf,
+    excludes: GlobSet,
+    includes: Option<GlobSet>,
+    skip_dirs: Vec<PathBuf>,
+    /// Inode numbers of `skip_dirs`: canonicalizing every directory of a large tree costs a
+    /// path resolution each; on Unix only a directory with the inode number of a skipped one
+    /// needs it.
     #[cfg(unix)]
-    let skip_inodes: Vec<u64> = {
-        use std::os::unix::fs::MetadataExt;
-        skip_dirs
+    skip_inodes: Vec<u64>,
+}
+
+impl<'a> Walker<'a> {
+    fn new(input: &'a Path, opts: &WalkOptions) -> Result<Walker<'a>, WalkError> {
+        let skip_dirs: Vec<PathBuf> = opts
+            .skip_dirs
             .iter()
-            .filter_map(|d| std::fs::metadata(d).ok().map(|m| m.ino()))
-            .collect()
-    };
-    let may_be_skipped = |e: &walkdir::DirEntry| -> bool {
-        if skip_dirs.is_empty() {
+            .filter_map(|d| d.canonicalize().ok())
+            .collect();
+        #[cfg(unix)]
+        let skip_inodes = {
+            use std::os::unix::fs::MetadataExt;
+            skip_dirs
+                .iter()
+                .filter_map(|d| std::fs::metadata(d).ok().map(|m| m.ino()))
+                .collect()
+        };
+        Ok(Walker {
+            input,
+            root: if input.is_file() {
+                input.parent().unwrap_or(Path::new(".")).to_path_buf()
+            } else {
+                input.to_path_buf()
+            },
+            excludes: build_globs(&opts.exclude)?,
+            includes: if opts.include.is_empty() {
+                None
+            } else {
+                Some(build_globs(&opts.include)?)
+            },
+            skip_dirs,
+            #[cfg(unix)]
+            skip_inodes,
+        })
+    }
+
+    fn walkdir(start: &Path) -> walkdir::WalkDir {
+        walkdir::WalkDir::new(start)
+            .follow_links(false)
+            .sort_by_file_name()
+    }
+
+    /// Whether the walk enters or takes `e` (every entry below the input): not a skipped
+    /// directory (the output) and not a hidden directory.
+    fn keep(&self, e: &walkdir::DirEntry) -> bool {
+        if !e.file_type().is_dir() {
+            return true;
+        }
+        if self.may_be_skipped(e) {
+            if let Ok(c) = e.path().canonicalize() {
+                if self.skip_dirs.contains(&c) {
+                    return false;
+                }
+            }
+        }
+        // Hidden directories (.git, .svn, .cache) hold no profiles of interest.
+        !e.file_name().to_string_lossy().starts_with('.')
+    }
+
+    fn may_be_skipped(&self, e: &walkdir::DirEntry) -> bool {
+        if self.skip_dirs.is_empty() {
             return false;
         }
         #[cfg(unix)]
         {
             use walkdir::DirEntryExt;
-            skip_inodes.contains(&e.ino())
+            self.skip_inodes.contains(&e.ino())
         }
         #[cfg(not(unix))]
         {
             let _ = e;
             true
         }
-    };
-    let mut result = WalkResult::default();
-    let mut candidates: Vec<(PathBuf, String)> = Vec::new();
-    let root = if input.is_file() {
-        input.parent().unwrap_or(Path::new(".")).to_path_buf()
-    } else {
-        input.to_path_buf()
-    };
-    let walker = walkdir::WalkDir::new(input)
-        .follow_links(false)
-        .sort_by_file_name()
-        .into_iter()
-        .filter_entry(|e| {
-            if e.depth() > 0 && e.file_type().is_dir() {
-                if may_be_skipped(e) {
-                    if let Ok(c) = e.path().canonicalize() {
-                        if skip_dirs.contains(&c) {
-                            return false;
-                        }
-                    }
+    }
+
+    /// A sorted walk of `start` (the input, or a directory directly in it).
+    fn subtree(&self, start: &Path) -> Candidates {
+        let mut out = Candidates::default();
+        let walker = Self::walkdir(start)
+            .into_iter()
+            .filter_entry(|e| e.depth() == 0 || self.keep(e));
+        for entry in walker {
+            self.visit(entry, &mut out);
+        }
+        out
+    }
+
+    /// The input directory's entries in order, each directory among them walked on its own
+    /// and in parallel.
+    fn parallel(&self) -> Candidates {
+        use rayon::prelude::*;
+        let top: Vec<_> = Self::walkdir(self.input)
+            .max_depth(1)
+            .into_iter()
+            .filter_entry(|e| e.depth() == 0 || self.keep(e))
+            .collect();
+        let parts: Vec<Candidates> = top
+            .into_par_iter()
+            .map(|entry| match entry {
+                Ok(e) if e.depth() == 1 && e.file_type().is_dir() => self.subtree(e.path()),
+                other => {
+                    let mut out = Candidates::default();
+                    self.visit(other, &mut out);
+                    out
                 }
-                // Hidden directories (.git, .svn, .cache) hold no profiles of interest.
-                if e.file_name().to_string_lossy().starts_with('.') {
-                    return false;
-                }
-            }
-            true
-        });
-    for entry in walker {
+            })
+            .collect();
+        let mut all = Candidates::default();
+        for p in parts {
+            all.append(p);
+        }
+        all
+    }
+
+    /// Files: a candidate, or skipped with the reason; directories: nothing (symbolic links
+    /// are reported).
+    fn visit(&self, entry: walkdir::Result<walkdir::DirEntry>, out: &mut Candidates) {
         let entry = match entry {
             Ok(e) => e,
             Err(e) => {
                 let rel = e
                     .path()
-                    .map(|p| rel_path(&root, p))
-                    .unwrap_or_else(|| input.display().to_string());
-                result.skipped.push(Skipped {
+                    .map(|p| rel_path(&self.root, p))
+                    .unwrap_or_else(|| self.input.display().to_string());
+                out.skipped.push(Skipped {
                     rel,
                     reason: format!("cannot be read: {e}"),
                 });
-                continue;
+                return;
             }
         };
         if !entry.file_type().is_file() {
             if entry.file_type().is_symlink() {
-                result.skipped.push(Skipped {
-                    rel: rel_path(&root, entry.path()),
+                out.skipped.push(Skipped {
+                    rel: rel_path(&self.root, entry.path()),
                     reason: "symbolic link (not followed)".into(),
                 });
             }
-            continue;
+            return;
         }
         let path = entry.path();
-        let rel = rel_path(&root, path);
-        if globs.is_match(&rel) {
-            result.skipped.push(Skipped {
+        let rel = rel_path(&self.root, path);
+        if self.excludes.is_match(&rel) {
+            out.skipped.push(Skipped {
                 rel,
                 reason: "excluded by pattern".into(),
             });
-            continue;
+            return;
         }
-        if !opts.include.is_empty() && !includes.is_match(&rel) {
-            result.skipped.push(Skipped {
-                rel,
-                reason: "not matched by an include pattern".into(),
-            });
-            continue;
+        if let Some(inc) = &self.includes {
+            if !inc.is_match(&rel) {
+                out.skipped.push(Skipped {
+                    rel,
+                    reason: "not matched by an include pattern".into(),
+                });
+                return;
+            }
         }
         let ext = path
             .extension()
             .and_then(|e| e.to_str())
             .map(|e| e.to_ascii_lowercase());
         if !matches!(ext.as_deref(), Some("xml" | "yaml" | "yml")) {
-            result.skipped.push(Skipped {
+            out.skipped.push(Skipped {
                 rel,
                 reason: "not an .xml/.yaml/.yml file".into(),
             });
-            continue;
+            return;
         }
-        candidates.push((path.to_path_buf(), rel));
+        out.files.push((path.to_path_buf(), rel));
     }
-    Ok(Candidates {
-        files: candidates,
-        skipped: result.skipped,
-    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn write(dir: &Path, rel: &str) {
+        let p = dir.join(rel);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, "<rtc:RtcProfile/>").unwrap();
+    }
+
+    /// (files, skipped) as comparable lists.
+    fn flat(c: Candidates) -> (Vec<(PathBuf, String)>, Vec<Skipped>) {
+        (c.files, c.skipped)
+    }
+
+    /// The parallel walk gives what one sorted walk of the whole tree gives: same files, same
+    /// skipped entries, same order — with hidden and skipped directories and symbolic links at
+    /// the top and deeper, root files among directories, and patterns.
+    #[test]
+    fn parallel_walk_equals_one_sorted_walk() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        for rel in [
+            "a.xml",
+            "m.yaml",
+            "z.txt",
+            "b/RTC.xml",
+            "b/c/RTC.yml",
+            "b/c/notes.md",
+            "b/.hidden/RTC.xml",
+            ".git/RTC.xml",
+            "out/index.xml",
+            "deep/x/out2/RTC.xml",
+            "deep/x/RTC.XML",
+            "skip/me/RTC.xml",
+            "n/keep.xml",
+        ] {
+            write(d, rel);
+        }
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(d.join("b"), d.join("link-dir")).unwrap();
+            std::os::unix::fs::symlink(d.join("a.xml"), d.join("b/link.xml")).unwrap();
+            std::os::unix::fs::symlink(d, d.join("deep/x/cycle")).unwrap();
+        }
+        let cases = [
+            WalkOptions::default(),
+            WalkOptions {
+                exclude: vec!["skip/**".into(), "*.yml".into()],
+                skip_dirs: vec![d.join("out"), d.join("deep/x/out2")],
+                ..Default::default()
+            },
+            WalkOptions {
+                include: vec!["b/**".into(), "n/*".into()],
+                ..Default::default()
+            },
+        ];
+        for opts in &cases {
+            let w = Walker::new(d, opts).unwrap();
+            let one = flat(w.subtree(d));
+            let par = flat(candidates(d, opts).unwrap());
+            assert_eq!(par, one, "{opts:?}");
+            assert!(!one.0.is_empty() && !one.1.is_empty(), "{opts:?}");
+        }
+        // The skipped directories and hidden ones are not entered; links are reported.
+        let (files, skipped) = flat(candidates(d, &cases[1]).unwrap());
+        let rels: Vec<&str> = files.iter().map(|(_, r)| r.as_str()).collect();
+        assert_eq!(
+            rels,
+            [
+                "a.xml",
+                "b/RTC.xml",
+                "deep/x/RTC.XML",
+                "m.yaml",
+                "n/keep.xml"
+            ]
+        );
+        #[cfg(unix)]
+        for link in ["link-dir", "b/link.xml", "deep/x/cycle"] {
+            assert!(skipped.iter().any(|s| s.rel == link), "{link}: {skipped:?}");
+        }
+        // A single file is walked as itself.
+        let one = flat(candidates(&d.join("b/RTC.xml"), &WalkOptions::default()).unwrap());
+        assert_eq!(one.0.len(), 1);
+    }
 }
