@@ -223,6 +223,20 @@ impl Bar {
     }
 }
 
+/// The process's peak resident set size (`VmHWM` of `/proc/self/status`, Linux only).
+fn peak_rss() -> Option<String> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let kb: u64 = status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmHWM:"))?
+        .trim()
+        .trim_end_matches("kB")
+        .trim()
+        .parse()
+        .ok()?;
+    Some(format!("{} MB", kb / 1024))
+}
+
 fn timing() -> Option<std::sync::Mutex<(String, std::time::Instant)>> {
     std::env::var_os("RTCDOC_TIMING")
         .map(|_| std::sync::Mutex::new((String::new(), std::time::Instant::now())))
@@ -234,9 +248,10 @@ impl Progress for Bar {
             let mut t = t.lock().unwrap_or_else(|e| e.into_inner());
             if !t.0.is_empty() {
                 eprintln!(
-                    "timing: {:<20} {:>8.1} ms",
+                    "timing: {:<20} {:>8.1} ms  (peak RSS so far: {})",
                     t.0,
-                    t.1.elapsed().as_secs_f64() * 1000.0
+                    t.1.elapsed().as_secs_f64() * 1000.0,
+                    peak_rss().unwrap_or_else(|| "?".into())
                 );
             }
             *t = (name.to_string(), std::time::Instant::now());

@@ -322,7 +322,7 @@ impl<'a> WriterThread<'a> {
         scope: &'a std::thread::Scope<'a, 'env>,
         inner: &'a (dyn Sink + 'a),
     ) -> WriterThread<'a> {
-        let (tx, rx) = std::sync::mpsc::sync_channel::<(String, Vec<u8>)>(256);
+        let (tx, rx) = std::sync::mpsc::sync_channel::<(String, Vec<u8>)>(64);
         let handle = scope.spawn(move || -> Result<usize> {
             let mut n = 0;
             let mut first_error = None;

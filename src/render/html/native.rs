@@ -153,6 +153,8 @@ pub(super) fn component_page(page: &ComponentPage, g: &Globals<'_>) -> String {
     base_top(&mut o, page);
     main_block(&mut o, page);
     base_bottom(&mut o);
+    // Pages wait in the writer's queue: keep only what they use (a page is about 20 KB).
+    o.buf.shrink_to_fit();
     o.buf
 }
 
