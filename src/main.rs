@@ -156,22 +156,7 @@ struct InitArgs {
     force: bool,
 }
 
-/// mimalloc's `mi_option_purge_delay` (its place in `mi_option_t`, mimalloc 3's `mimalloc.h`;
-/// the bindings name only the options whose place v2 and v3 share).
-const MI_OPTION_PURGE_DELAY: libmimalloc_sys::mi_option_t = 15;
-
-/// Tells mimalloc to keep the memory it frees instead of returning it to the OS 10 ms later:
-/// a build frees and reallocates page after page, and each memory block given back came back
-/// as a fresh (zero-filled) page fault. On a 10,000-profile HTML build: 1,600 → 520 page
-/// faults, about 7 % less wall time, peak RSS 270 → 276 MB (`bench/catalogue.sh`).
-fn keep_freed_memory() {
-    // SAFETY: sets one process-wide allocator option to a documented value (-1: never purge),
-    // before any other thread exists.
-    unsafe { libmimalloc_sys::mi_option_set(MI_OPTION_PURGE_DELAY, -1) };
-}
-
 fn main() -> ExitCode {
-    keep_freed_memory();
     let cli = Cli::parse();
     match run(&cli) {
         Ok(code) => code,
