@@ -102,6 +102,24 @@ for n in "${sizes[@]}"; do
   python3 -c "print(f'| $n | cp -r of the HTML output (floor) | $s | - | $f | {$f/max($s,0.001):.0f} | $rss |')"
   floor=$s
 
+  # The disk's state drifts (ext4 here made the same cp -r take 0.47 s in one run and 1.05 s in
+  # another): the HTML build and the copy of its output also run in alternation, and the median
+  # of the per-pair ratios is reported.
+  pairs=()
+  for ((r = 0; r < runs; r++)); do
+    set_aside "$work/pair-$n-html"
+    read -r a _ < <(measure "$bin" build "$src" -f html -o "$work/pair-$n-html" -q)
+    set_aside "$work/pair-$n-copy"
+    read -r b _ < <(measure cp -r "$work/pair-$n-html" "$work/pair-$n-copy")
+    pairs+=("$a $b")
+  done
+  printf '%s\n' "${pairs[@]}" | python3 -c '
+import sys
+rows = [tuple(map(float, l.split())) for l in sys.stdin if l.strip()]
+ratios = sorted(a / max(b, 0.001) for a, b in rows)
+runs = ", ".join(f"{a:.2f}/{b:.2f}" for a, b in rows)
+print(f"|   | paired: rtcdoc HTML time ÷ cp -r floor, alternating runs = {ratios[len(ratios) // 2]:.2f} (HTML/cp s: {runs}) | | | | | |")'
+
   # Hugo on rtcdoc's Markdown output, minimal layout.
   if command -v hugo >/dev/null; then
     site="$work/hugo-$n"
