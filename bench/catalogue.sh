@@ -14,7 +14,8 @@
 # does not pay for the previous run's writes. Old outputs are moved aside, not deleted, until
 # the end: ext4 avoids reusing inodes freed in the last seconds and scans further for each new
 # file, which made a run right after deleting 14,000 files up to 4× slower (cp -r included).
-# The old outputs are deleted when the script ends: leave five minutes between two runs.
+# The old outputs are deleted when the script ends, and the next run waits until five minutes
+# have passed since (SETTLE_SECONDS).
 # Installs hugo and GNU time with apt-get when missing (root only). Prints a Markdown table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,9 +25,22 @@ runs=${RUNS:-3}
 work=${BENCH_DIR:-/tmp/rtcdoc-bench}
 mkdir -p "$work"
 trash="$work/trash"
-rm -rf "$trash"
+# Deleting many files leaves ext4 slow to create new ones for minutes (a run started two minutes
+# after the previous run's clean-up measured every rtcdoc build and the cp -r floor 1.7× slower):
+# the time of each clean-up is recorded, and a run starts only five minutes after the last one.
+settle=${SETTLE_SECONDS:-300}
+stamp_file="$work/.last-deletion"
+clean_up() { rm -rf "$trash"; date +%s >"$stamp_file"; }
+if [ -e "$trash" ]; then clean_up; fi
+if [ -e "$stamp_file" ]; then
+  wait_s=$(( $(cat "$stamp_file") + settle - $(date +%s) ))
+  if [ "$wait_s" -gt 0 ]; then
+    echo "waiting ${wait_s}s for the disk to settle after the last clean-up (SETTLE_SECONDS=0 skips)" >&2
+    sleep "$wait_s"
+  fi
+fi
 mkdir -p "$trash"
-trap 'rm -rf "$trash"' EXIT
+trap clean_up EXIT
 # set_aside DIR: moves DIR out of the way (a rename), to be deleted when the script ends.
 set_aside() { if [ -e "$1" ]; then mv "$1" "$(mktemp -d "$trash/old.XXXXXX")/"; fi; }
 
