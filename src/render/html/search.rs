@@ -175,9 +175,11 @@ pub fn index_js(catalog: &Catalog) -> String {
         })
         .collect();
     let json = serde_json::to_string(&entries).unwrap_or_else(|_| "[]".into());
+    // 10,000 components make megabytes of each: not all three at once.
+    drop(entries);
     let mut out = String::with_capacity(json.len() + 64);
     out.push_str("window.RTCDOC_INDEX=");
-    out.push_str(&js_safe_json(&json));
+    push_js_safe_json(&mut out, &json);
     out.push_str(";\n");
     out
 }
@@ -186,6 +188,12 @@ pub fn index_js(catalog: &Catalog) -> String {
 /// occur inside JSON strings, where `\uXXXX` means the same character.
 pub fn js_safe_json(json: &str) -> String {
     let mut out = String::with_capacity(json.len());
+    push_js_safe_json(&mut out, json);
+    out
+}
+
+/// [`js_safe_json`] appended to `out`.
+fn push_js_safe_json(out: &mut String, json: &str) {
     for ch in json.chars() {
         match ch {
             '<' => out.push_str("\\u003c"),
@@ -196,7 +204,6 @@ pub fn js_safe_json(json: &str) -> String {
             c => out.push(c),
         }
     }
-    out
 }
 
 #[cfg(test)]
