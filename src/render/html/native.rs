@@ -11,7 +11,7 @@
 //! fail until it is.
 
 use super::svg::esc_into;
-use super::{ComponentPage, Field, PortTypeRef};
+use super::{ComponentPage, Field, KeyValue, PortTypeRef};
 use crate::i18n::Lang;
 
 /// The template globals the page prints.
@@ -92,20 +92,48 @@ impl Out<'_> {
         }
         self.raw("<ul class=\"peers\">\n");
         for l in peers {
-            self.raw("<li><a href=\"");
-            self.text(&l.href);
-            self.raw("\">");
-            self.text(&l.text);
-            self.raw("</a></li>\n");
+            self.link_item(false, &l.href, &l.text);
         }
         if let Some(m) = more {
-            self.raw("<li class=\"more\"><a href=\"");
-            self.text(&m.href);
-            self.raw("\">");
-            self.text(&m.text);
-            self.raw("</a></li>\n");
+            self.link_item(true, &m.href, &m.text);
         }
         self.raw("</ul>");
+    }
+
+    /// The cells a data port row and a service interface row share: direction, name and type,
+    /// up to the opening of the next cell.
+    fn port_row_start(
+        &mut self,
+        anchor: &str,
+        dir_class: &str,
+        direction: &str,
+        name: &str,
+        type_ref: &Option<PortTypeRef>,
+    ) {
+        self.raw("<tr id=\"");
+        self.text(anchor);
+        self.raw("\">\n<td><span class=\"dir ");
+        self.text(dir_class);
+        self.raw("\">");
+        self.text(direction);
+        self.raw("</span></td>\n<th scope=\"row\"><code>");
+        self.text(name);
+        self.raw("</code></th>\n<td>");
+        self.type_link(type_ref);
+        self.raw("</td>\n<td>");
+    }
+
+    /// `<li[ class="more"]><a href="href">text</a></li>` and a line break.
+    fn link_item(&mut self, more: bool, href: &str, text: &str) {
+        self.raw(if more {
+            "<li class=\"more\"><a href=\""
+        } else {
+            "<li><a href=\""
+        });
+        self.text(href);
+        self.raw("\">");
+        self.text(text);
+        self.raw("</a></li>\n");
     }
 
     /// `<th scope="col">{{ t.key }}</th>` for each key.
@@ -127,6 +155,33 @@ impl Out<'_> {
             self.raw("</a></li>");
         }
         self.raw("\n");
+    }
+
+    /// A section holding one table: `<section id>`, `<h2>`, the table-wrap `<div>`, `<table>`
+    /// with `class` (none when empty), the header row of `heads` labels and `<tbody>`.
+    fn table_start(&mut self, id: &str, key: &str, class: &str, heads: &[&str]) {
+        self.section_start(id, false, key);
+        self.raw("<div class=\"table-wrap\">\n");
+        self.table_head(class, heads);
+        self.raw("<tbody>\n");
+    }
+
+    /// `<table[ class]>` and its header row.
+    fn table_head(&mut self, class: &str, heads: &[&str]) {
+        if class.is_empty() {
+            self.raw("<table>\n<thead><tr>");
+        } else {
+            self.raw("<table class=\"");
+            self.raw(class);
+            self.raw("\">\n<thead><tr>");
+        }
+        self.head_cells(heads);
+        self.raw("</tr></thead>\n");
+    }
+
+    /// Closes what [`Out::table_start`] opened.
+    fn table_end(&mut self) {
+        self.raw("</tbody>\n</table>\n</div>\n</section>");
     }
 
     /// `<section id="…"[ class="card"]>` + `<h2>{{ t.key }}</h2>`.
@@ -217,11 +272,7 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
         o.label("breadcrumbs");
         o.raw("\">\n<ol>\n");
         for c in &page.crumbs {
-            o.raw("<li><a href=\"");
-            o.text(&c.href);
-            o.raw("\">");
-            o.text(&c.text);
-            o.raw("</a></li>\n");
+            o.link_item(false, &c.href, &c.text);
         }
         o.raw("<li aria-current=\"page\">");
         o.text(&page.name);
@@ -309,29 +360,21 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
     if p.data_ports.is_empty() {
         return;
     }
-    o.section_start("data-ports", false, "data_ports");
-    o.raw("<div class=\"table-wrap\">\n<table class=\"ports\">\n<thead><tr>");
-    o.head_cells(&[
-        "direction",
-        "name",
-        "type",
-        "unit",
-        "description",
-        "connects_to",
-    ]);
-    o.raw("</tr></thead>\n<tbody>\n");
+    o.table_start(
+        "data-ports",
+        "data_ports",
+        "ports",
+        &[
+            "direction",
+            "name",
+            "type",
+            "unit",
+            "description",
+            "connects_to",
+        ],
+    );
     for r in &p.data_ports {
-        o.raw("<tr id=\"");
-        o.text(&r.anchor);
-        o.raw("\">\n<td><span class=\"dir ");
-        o.text(r.dir_class);
-        o.raw("\">");
-        o.text(&r.direction);
-        o.raw("</span></td>\n<th scope=\"row\"><code>");
-        o.text(&r.name);
-        o.raw("</code></th>\n<td>");
-        o.type_link(&r.type_ref);
-        o.raw("</td>\n<td>");
+        o.port_row_start(&r.anchor, r.dir_class, &r.direction, &r.name, &r.type_ref);
         o.text(&r.unit);
         o.raw("</td>\n<td>");
         o.fields(&r.details);
@@ -352,7 +395,7 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.peers(&r.peers, &r.peers_more);
         o.raw("</td>\n</tr>\n");
     }
-    o.raw("</tbody>\n</table>\n</div>\n</section>");
+    o.table_end();
 }
 
 fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
@@ -360,15 +403,17 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         return;
     }
     o.section_start("service-ports", false, "service_ports");
-    o.raw("<div class=\"table-wrap\">\n<table class=\"ports\">\n<thead><tr>");
-    o.head_cells(&[
-        "direction",
-        "name",
-        "interface_type",
-        "description",
-        "connects_to",
-    ]);
-    o.raw("</tr></thead>\n");
+    o.raw("<div class=\"table-wrap\">\n");
+    o.table_head(
+        "ports",
+        &[
+            "direction",
+            "name",
+            "interface_type",
+            "description",
+            "connects_to",
+        ],
+    );
     for sp in &p.service_ports {
         o.raw("<tbody>\n<tr id=\"");
         o.text(&sp.anchor);
@@ -382,17 +427,7 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.fields(&sp.details);
         o.raw("</th></tr>\n");
         for i in &sp.interfaces {
-            o.raw("<tr id=\"");
-            o.text(&i.anchor);
-            o.raw("\">\n<td><span class=\"dir ");
-            o.text(i.dir_class);
-            o.raw("\">");
-            o.text(&i.direction);
-            o.raw("</span></td>\n<th scope=\"row\"><code>");
-            o.text(&i.name);
-            o.raw("</code></th>\n<td>");
-            o.type_link(&i.type_ref);
-            o.raw("</td>\n<td>");
+            o.port_row_start(&i.anchor, i.dir_class, &i.direction, &i.name, &i.type_ref);
             o.fields(&i.details);
             o.raw("</td>\n<td>");
             o.peers(&i.peers, &i.peers_more);
@@ -407,18 +442,20 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
     if p.configurations.is_empty() {
         return;
     }
-    o.section_start("configuration", false, "configuration");
-    o.raw("<div class=\"table-wrap\">\n<table class=\"config\">\n<thead><tr>");
-    o.head_cells(&[
-        "name",
-        "type",
-        "default_value",
-        "unit",
-        "constraint",
-        "widget",
-        "description",
-    ]);
-    o.raw("</tr></thead>\n<tbody>\n");
+    o.table_start(
+        "configuration",
+        "configuration",
+        "config",
+        &[
+            "name",
+            "type",
+            "default_value",
+            "unit",
+            "constraint",
+            "widget",
+            "description",
+        ],
+    );
     for c in &p.configurations {
         o.raw("<tr id=\"");
         o.text(&c.anchor);
@@ -445,16 +482,16 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
         o.fields(&c.details);
         o.raw("</td>\n</tr>\n");
     }
-    o.raw("</tbody>\n</table>\n</div>\n</section>");
+    o.table_end();
 }
 
 fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
     o.section_start("lifecycle", false, "actions");
     o.raw("<div class=\"diagram-wrap\">");
     o.raw(&p.lifecycle_svg);
-    o.raw("</div>\n<div class=\"table-wrap\">\n<table class=\"actions\">\n<thead><tr>");
-    o.head_cells(&["callback", "implemented", "description"]);
-    o.raw("</tr></thead>\n<tbody>\n");
+    o.raw("</div>\n<div class=\"table-wrap\">\n");
+    o.table_head("actions", &["callback", "implemented", "description"]);
+    o.raw("<tbody>\n");
     for a in &p.actions {
         o.raw("<tr id=\"action-");
         o.text(a.name);
@@ -476,25 +513,43 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
         o.fields(&a.details);
         o.raw("</td>\n</tr>\n");
     }
-    o.raw("</tbody>\n</table>\n</div>\n</section>");
+    o.table_end();
+}
+
+/// The parameters or properties section (`id` is also its label key): nothing when `rows` is
+/// empty; values in `<code>` when `code`.
+fn key_value_table(o: &mut Out<'_>, id: &str, heads: &[&str], rows: &[KeyValue], code: bool) {
+    if rows.is_empty() {
+        return;
+    }
+    o.table_start(id, id, "", heads);
+    for kv in rows {
+        o.raw("<tr><th scope=\"row\"><code>");
+        o.text(&kv.key);
+        o.raw(if code {
+            "</code></th><td><code>"
+        } else {
+            "</code></th><td>"
+        });
+        o.text(&kv.value);
+        o.raw(if code {
+            "</code></td></tr>\n"
+        } else {
+            "</td></tr>\n"
+        });
+    }
+    o.table_end();
 }
 
 /// Parameters, language, properties, version history and extra properties.
 fn rest(o: &mut Out<'_>, p: &ComponentPage) {
-    if !p.parameters.is_empty() {
-        o.section_start("parameters", false, "parameters");
-        o.raw("<div class=\"table-wrap\">\n<table>\n<thead><tr>");
-        o.head_cells(&["name", "default_value"]);
-        o.raw("</tr></thead>\n<tbody>\n");
-        for kv in &p.parameters {
-            o.raw("<tr><th scope=\"row\"><code>");
-            o.text(&kv.key);
-            o.raw("</code></th><td><code>");
-            o.text(&kv.value);
-            o.raw("</code></td></tr>\n");
-        }
-        o.raw("</tbody>\n</table>\n</div>\n</section>");
-    }
+    key_value_table(
+        o,
+        "parameters",
+        &["name", "default_value"],
+        &p.parameters,
+        true,
+    );
     o.raw("\n\n");
     if !p.language.is_empty() || !p.targets.is_empty() {
         o.section_start("language", true, "language");
@@ -512,20 +567,7 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("\n</section>");
     }
     o.raw("\n\n");
-    if !p.properties.is_empty() {
-        o.section_start("properties", false, "properties");
-        o.raw("<div class=\"table-wrap\">\n<table>\n<thead><tr>");
-        o.head_cells(&["key", "value"]);
-        o.raw("</tr></thead>\n<tbody>\n");
-        for kv in &p.properties {
-            o.raw("<tr><th scope=\"row\"><code>");
-            o.text(&kv.key);
-            o.raw("</code></th><td>");
-            o.text(&kv.value);
-            o.raw("</td></tr>\n");
-        }
-        o.raw("</tbody>\n</table>\n</div>\n</section>");
-    }
+    key_value_table(o, "properties", &["key", "value"], &p.properties, false);
     o.raw("\n\n");
     if !p.version_up_logs.is_empty() {
         o.section_start("history", false, "version_up_logs");
@@ -539,10 +581,7 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
     }
     o.raw("\n\n");
     if !p.extras.is_empty() {
-        o.section_start("extra", false, "extra");
-        o.raw("<div class=\"table-wrap\">\n<table>\n<thead><tr>");
-        o.head_cells(&["extra_path", "extra_kind", "value"]);
-        o.raw("</tr></thead>\n<tbody>\n");
+        o.table_start("extra", "extra", "", &["extra_path", "extra_kind", "value"]);
         for e in &p.extras {
             o.raw("<tr><th scope=\"row\"><code>");
             o.text(&e.name);
@@ -552,6 +591,6 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
             o.text(&e.value);
             o.raw("</td></tr>\n");
         }
-        o.raw("</tbody>\n</table>\n</div>\n</section>");
+        o.table_end();
     }
 }
