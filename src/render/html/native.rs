@@ -25,7 +25,6 @@ pub(super) struct Globals<'a> {
 /// Writes HTML: `raw` markup as is, `text`/`label` escaped as `{{ … }}` prints a string.
 struct Out<'a> {
     buf: String,
-    lang: Lang,
     g: &'a Globals<'a>,
 }
 
@@ -41,7 +40,7 @@ impl Out<'_> {
 
     /// `{{ t.key }}`.
     fn label(&mut self, key: &str) {
-        let s = self.lang.t(key);
+        let s = self.g.lang.t(key);
         self.text(s);
     }
 
@@ -202,7 +201,6 @@ impl Out<'_> {
 pub(super) fn component_page(page: &ComponentPage, g: &Globals<'_>) -> String {
     let mut o = Out {
         buf: String::with_capacity(32 * 1024),
-        lang: g.lang,
         g,
     };
     base_top(&mut o, page);
