@@ -184,7 +184,8 @@ fn print_diagnostics(diags: &[rtcdoc::diagnostic::Diagnostic], verbose: bool, qu
 }
 
 /// A progress bar on standard error, drawn only when it is a terminal. With the environment
-/// variable `RTCDOC_TIMING` set, the time of every stage is printed as well (for profiling).
+/// variable `RTCDOC_TIMING` set, the time of every stage and the peak RSS so far are printed as
+/// well (for profiling).
 struct Bar(
     indicatif::ProgressBar,
     Option<std::sync::Mutex<(String, std::time::Instant)>>,
