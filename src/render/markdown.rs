@@ -224,11 +224,13 @@ fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     w!(out, "| {} |", head.join(" | "));
     w!(out, "|{}", "---|".repeat(headers.len()));
     for r in rows {
-        let cells: Vec<&str> = r
-            .iter()
-            .map(|c| if c.is_empty() { " " } else { c.as_str() })
-            .collect();
-        w!(out, "| {} |", cells.join(" | "));
+        out.push('|');
+        for c in r {
+            out.push(' ');
+            out.push_str(if c.is_empty() { " " } else { c });
+            out.push_str(" |");
+        }
+        out.push('\n');
     }
     w!(out);
 }

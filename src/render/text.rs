@@ -58,11 +58,16 @@ pub fn facts_table<M: Markup>(out: &mut String, lang: Lang, facts: &[Fact]) {
 
 /// Facts inside one cell: bold label, colon, value; one line each.
 pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
-    facts
-        .iter()
-        .map(|f| format!("{}: {}", M::bold(&M::esc(&f.label)), M::esc(&f.value)))
-        .collect::<Vec<_>>()
-        .join("<br>")
+    let mut out = String::new();
+    for (i, f) in facts.iter().enumerate() {
+        if i > 0 {
+            out.push_str("<br>");
+        }
+        out.push_str(&M::bold(&M::esc(&f.label)));
+        out.push_str(": ");
+        out.push_str(&M::esc(&f.value));
+    }
+    out
 }
 
 /// Links to up to [`PEER_CAP`] peers, given as (text, target), then "… +N more" pointing at
