@@ -9,7 +9,8 @@
 # /usr/bin/time -v, for each output format: wall time, profiles/s, files/s and peak RSS;
 # `rtcdoc check`; Hugo rendering rtcdoc's own Markdown output with a minimal layout; and
 # `cp -r` of rtcdoc's HTML output (the floor of creating that many files on this disk).
-# Each measurement (rtcdoc, cp and Hugo) is run RUNS times and the run with the median wall time is
+# Each measurement (rtcdoc, cp and Hugo) is run RUNS times (the HTML build and its cp -r in
+# alternation, so that the ratio of the two is also reported per pair) and the median wall time is
 # reported (RSS: the largest of the runs); the file system is synced before every run, so a run
 # does not pay for the previous run's writes. Old outputs are moved aside, not deleted, until
 # the end: ext4 avoids reusing inodes freed in the last seconds and scans further for each new
@@ -100,39 +101,40 @@ for n in "${sizes[@]}"; do
     python3 bench/gen_catalogue.py "$n" "$src" >/dev/null
     echo "$stamp" >"$src/.stamp"
   fi
-  for fmt in html markdown doxygen json; do
+  # The HTML build and the cp -r floor of its output run in alternation, so that both see the
+  # same state of the disk (ext4 here made the same cp -r take 0.47 s in one run and 1.05 s in
+  # another): medians of each, and the median of the per-pair ratios.
+  pairs=()
+  for ((r = 0; r < runs; r++)); do
+    set_aside "$work/out-$n-html"
+    read -r a rss_a < <(measure "$bin" build "$src" -f html -o "$work/out-$n-html" -q)
+    set_aside "$work/copy-$n"
+    read -r b rss_b < <(measure cp -r "$work/out-$n-html" "$work/copy-$n")
+    pairs+=("$a $b $rss_a $rss_b")
+  done
+  read -r s floor html_rss cp_rss paired runs_txt < <(printf '%s\n' "${pairs[@]}" | python3 -c '
+import sys
+rows = [tuple(map(float, l.split())) for l in sys.stdin if l.strip()]
+med = lambda v: sorted(v)[len(v) // 2]
+ratios = [a / max(b, 0.001) for a, b, _, _ in rows]
+runs = ",".join(f"{a:.2f}/{b:.2f}" for a, b, _, _ in rows)
+print(f"{med([r[0] for r in rows]):.2f} {med([r[1] for r in rows]):.2f} {max(r[2] for r in rows):.0f} {max(r[3] for r in rows):.0f} {med(ratios):.2f} {runs}")')
+  html_time[$n]=$s
+  f=$(files_in "$work/out-$n-html")
+  python3 -c "print(f'| $n | rtcdoc build --format html | $s | {$n/max($s,0.001):.0f} | $f | {$f/max($s,0.001):.0f} | $html_rss |')"
+  for fmt in markdown doxygen json; do
     out="$work/out-$n-$fmt"
     read -r s rss < <(measure_runs "$out" "$bin" build "$src" -f "$fmt" -o "$out" -q)
     f=$(files_in "$out")
     python3 -c "print(f'| $n | rtcdoc build --format $fmt | $s | {$n/max($s,0.001):.0f} | $f | {$f/max($s,0.001):.0f} | $rss |')"
-    [ "$fmt" = html ] && html_time[$n]=$s
   done
   read -r s rss < <(measure_runs "$work/none" "$bin" check "$src" -q || true)
   python3 -c "print(f'| $n | rtcdoc check | $s | {$n/max($s,0.001):.0f} | - | - | $rss |')"
 
-  # The floor: copying rtcdoc's own HTML tree.
-  read -r s rss < <(measure_runs "$work/copy-$n" cp -r "$work/out-$n-html" "$work/copy-$n")
+  # The floor: copying rtcdoc's own HTML tree (measured above, alternating with the builds).
   f=$(files_in "$work/copy-$n")
-  python3 -c "print(f'| $n | cp -r of the HTML output (floor) | $s | - | $f | {$f/max($s,0.001):.0f} | $rss |')"
-  floor=$s
-
-  # The disk's state drifts (ext4 here made the same cp -r take 0.47 s in one run and 1.05 s in
-  # another): the HTML build and the copy of its output also run in alternation, and the median
-  # of the per-pair ratios is reported.
-  pairs=()
-  for ((r = 0; r < runs; r++)); do
-    set_aside "$work/pair-$n-html"
-    read -r a _ < <(measure "$bin" build "$src" -f html -o "$work/pair-$n-html" -q)
-    set_aside "$work/pair-$n-copy"
-    read -r b _ < <(measure cp -r "$work/pair-$n-html" "$work/pair-$n-copy")
-    pairs+=("$a $b")
-  done
-  printf '%s\n' "${pairs[@]}" | python3 -c '
-import sys
-rows = [tuple(map(float, l.split())) for l in sys.stdin if l.strip()]
-ratios = sorted(a / max(b, 0.001) for a, b in rows)
-runs = ", ".join(f"{a:.2f}/{b:.2f}" for a, b in rows)
-print(f"|   | paired: rtcdoc HTML time ÷ cp -r floor, alternating runs = {ratios[len(ratios) // 2]:.2f} (HTML/cp s: {runs}) | | | | | |")'
+  python3 -c "print(f'| $n | cp -r of the HTML output (floor) | $floor | - | $f | {$f/max($floor,0.001):.0f} | $cp_rss |')"
+  echo "|   | paired: rtcdoc HTML time ÷ cp -r floor, median of the per-run ratios = $paired (HTML/cp s: $runs_txt) | | | | | |"
 
   # Hugo on rtcdoc's Markdown output, minimal layout.
   if command -v hugo >/dev/null; then

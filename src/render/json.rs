@@ -57,7 +57,7 @@ pub fn write_json(
 ) -> anyhow::Result<()> {
     use rayon::prelude::*;
     let skeleton = serde_json::to_vec_pretty(&Skeleton {
-        generator: format!("rtcdoc {}", env!("CARGO_PKG_VERSION")),
+        generator: super::generator(),
         format_version: FORMAT_VERSION,
         title,
         components: [],
@@ -76,7 +76,8 @@ pub fn write_json(
     if !catalog.components.is_empty() {
         // Chunks of components, so that a 10,000-component catalogue is never in memory as
         // JSON all at once.
-        for (k, chunk) in catalog.components.chunks(64).enumerate() {
+        let mut separator: &[u8] = b"\n";
+        for chunk in catalog.components.chunks(64) {
             let parts = chunk
                 .par_iter()
                 .map(|c| {
@@ -85,9 +86,10 @@ pub fn write_json(
                     Ok(indented(&buf))
                 })
                 .collect::<serde_json::Result<Vec<Vec<u8>>>>()?;
-            for (i, part) in parts.iter().enumerate() {
-                w.write_all(if k == 0 && i == 0 { b"\n" } else { b",\n" })?;
+            for part in &parts {
+                w.write_all(separator)?;
                 w.write_all(part)?;
+                separator = b",\n";
             }
         }
         w.write_all(b"\n  ")?;
@@ -137,7 +139,7 @@ mod tests {
 
     fn reference(catalog: &Catalog, title: &str) -> Vec<u8> {
         let mut out = serde_json::to_vec_pretty(&Document {
-            generator: format!("rtcdoc {}", env!("CARGO_PKG_VERSION")),
+            generator: super::super::generator(),
             format_version: FORMAT_VERSION,
             title,
             catalog,

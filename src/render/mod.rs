@@ -14,6 +14,28 @@ use crate::catalog::Catalog;
 use crate::output::Sink;
 use std::path::PathBuf;
 
+/// What the outputs name as their generator: `rtcdoc <version>`.
+pub fn generator() -> String {
+    format!("rtcdoc {}", env!("CARGO_PKG_VERSION"))
+}
+
+/// A byte set for escapers' "can this text be copied as is" checks: the ASCII control
+/// characters when `controls`, and `bytes`.
+pub(crate) const fn byte_set(controls: bool, bytes: &[u8]) -> [bool; 256] {
+    let mut t = [false; 256];
+    let mut i = 0;
+    while controls && i < 0x20 {
+        t[i] = true;
+        i += 1;
+    }
+    let mut k = 0;
+    while k < bytes.len() {
+        t[bytes[k] as usize] = true;
+        k += 1;
+    }
+    t
+}
+
 /// Site-wide settings every renderer can use.
 #[derive(Debug, Clone)]
 pub struct SiteOptions {

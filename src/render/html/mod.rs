@@ -792,7 +792,7 @@ impl HtmlRenderer {
         env.add_global("lang", opts.language.tag());
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
-        env.add_global("generator", generator());
+        env.add_global("generator", super::generator());
         env.add_function("fields", builtins::fields);
         env.add_function("type_link", builtins::type_link);
         env.add_function("peers", builtins::peers);
@@ -915,7 +915,7 @@ impl HtmlRenderer {
         // index is built alongside (its JSON serialisation is serial).
         let tmpl = env.get_template("component.html")?;
         let native = native_component_pages(opts);
-        let generator = generator();
+        let generator = super::generator();
         let globals = native::Globals {
             lang,
             site_title: &opts.title,
@@ -996,11 +996,6 @@ impl HtmlRenderer {
         all_paths.sort();
         Ok(Rendered { written, all_paths })
     }
-}
-
-/// The `generator` global: `rtcdoc <version>`.
-fn generator() -> String {
-    format!("rtcdoc {}", env!("CARGO_PKG_VERSION"))
 }
 
 /// Whether component pages are written by [`native::component_page`]: when the theme directory
