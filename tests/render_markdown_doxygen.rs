@@ -266,6 +266,8 @@ const METACHARS: &[&str] = &[
     "At-signs: @ @@ @{ @}",
     "<!-- comment --> <![CDATA[x]]>",
     "Braces: {{ }} {% raw %} [[link]]",
+    // mdBook 0.5's smart punctuation would make dashes, an ellipsis and curly quotes of these.
+    "Dashes -- and --- and dots... 'single' \"double\" it's",
     "# Not a heading",
     "`code` *bold* _em_ **strong** __under__ ~~strike~~",
     "\\brief not a brief @brief neither",

@@ -51,6 +51,9 @@ fn escape_char(ch: char) -> Option<&'static str> {
         '~' => "\\~",
         '!' => "\\!",
         '$' => "\\$",
+        // Smart punctuation would curl straight quotes and apostrophes.
+        '\'' => "\\'",
+        '"' => "\\\"",
         '<' => "&lt;",
         '>' => "&gt;",
         '&' => "&amp;",
@@ -62,17 +65,22 @@ fn escape_char(ch: char) -> Option<&'static str> {
 }
 
 /// Bytes after which [`escape_line_chars`] may write something other than the byte itself:
-/// Markdown and HTML metacharacters, tabs and other control characters (ASCII, DEL, and 0xC2,
-/// the lead byte of U+0080–U+009F).
-static LINE_SPECIAL: [bool; 256] = super::byte_set(true, b"\\`*_[]|#~!$<>&{}\x7f\xc2");
+/// Markdown and HTML metacharacters, quotes (smart punctuation), tabs and other control
+/// characters (ASCII, DEL, and 0xC2, the lead byte of U+0080–U+009F).
+static LINE_SPECIAL: [bool; 256] = super::byte_set(true, b"\\`*_[]|#~!$<>&{}'\"\x7f\xc2");
 
 /// Escapes one line; a leading list, heading-underline or ordered-list marker is neutralised.
-/// A line that cannot start a list and holds no special byte is copied as is.
+/// A line that cannot start a list and holds no special byte or smart-punctuation run
+/// (`--`, `...`) is copied as is.
 fn escape_line(line: &str, out: &mut String) {
     let line = line.trim_start();
     let b = line.as_bytes();
     let may_start_list = matches!(b.first(), Some(b'-' | b'+' | b'=' | b'0'..=b'9'));
-    if !may_start_list && !b.iter().any(|&c| LINE_SPECIAL[usize::from(c)]) {
+    if !may_start_list
+        && !b.iter().any(|&c| LINE_SPECIAL[usize::from(c)])
+        && memchr::memmem::find(b, b"--").is_none()
+        && memchr::memmem::find(b, b"...").is_none()
+    {
         out.push_str(line);
     } else {
         escape_line_chars(line, out);
@@ -87,9 +95,19 @@ fn escape_line_chars(line: &str, out: &mut String) {
     let ordered = (1..=9).contains(&digits)
         && matches!(chars.get(digits), Some('.' | ')'))
         && chars.get(digits + 1).is_none_or(|c| c.is_whitespace());
+    // Runs of plain `-` and `.` written so far: mdBook 0.5 (pulldown-cmark's smart punctuation,
+    // on by default) turns `--`, `---` into dashes and `...` into an ellipsis; a backslash before
+    // the second hyphen or the third dot keeps the text as written, for 0.4 alike.
+    let (mut hyphens, mut dots) = (0, 0);
     for (i, &ch) in chars.iter().enumerate() {
         let at_marker = (i == 0 && matches!(ch, '-' | '+' | '=')) || (ordered && i == digits);
-        if at_marker {
+        let smart = (ch == '-' && hyphens == 1) || (ch == '.' && dots == 2);
+        (hyphens, dots) = match ch {
+            '-' if !at_marker && !smart => (hyphens + 1, 0),
+            '.' if !at_marker && !smart => (0, dots + 1),
+            _ => (0, 0),
+        };
+        if at_marker || smart {
             out.push('\\');
             out.push(ch);
         } else if let Some(e) = escape_char(ch) {
@@ -650,7 +668,7 @@ mod tests {
         /// non-ASCII letters escape exactly as character by character.
         #[test]
         fn escape_line_matches_character_by_character(
-            line in "[ \t0-9a-z.)\\-+=*_`|<>&{}#!$~\\[\\]\u{0}-\u{1f}\u{7f}\u{80}-\u{9f}\u{a0}é日本\u{2028}]{0,24}"
+            line in "[ \t0-9a-z.)\\-+=*_`|<>&{}#!$~'\"\\[\\]\u{0}-\u{1f}\u{7f}\u{80}-\u{9f}\u{a0}é日本\u{2028}]{0,24}"
         ) {
             let (mut fast, mut reference) = (String::new(), String::new());
             escape_line(&line, &mut fast);
@@ -687,6 +705,12 @@ mod tests {
         assert_eq!(inline("one\ntwo\r\n- three"), "one<br>two<br>\\- three");
         assert_eq!(inline("a\u{7}b\tc"), "ab c");
         assert_eq!(inline("日本語 1.5"), "日本語 1.5");
+        assert_eq!(inline("a -- b --- c"), "a -\\- b -\\-- c");
+        assert_eq!(inline("wait... ...."), "wait..\\. ..\\..");
+        assert_eq!(inline("it's \"x\""), "it\\'s \\\"x\\\"");
+        assert_eq!(inline("<!-- c -->"), "&lt;\\!-\\- c -\\-&gt;");
+        assert_eq!(inline("--x"), "\\--x");
+        assert_eq!(inline("1.5 0..10 a-b"), "1.5 0..10 a-b");
     }
 
     #[test]
