@@ -19,7 +19,24 @@ pub struct LoadOptions {
     pub limits: Limits,
     /// Directories the walk must not enter (the output directory).
     pub skip_dirs: Vec<PathBuf>,
+    /// Accept an input with no profile at all (`--allow-empty`); otherwise that is an error.
+    pub allow_empty: bool,
 }
+
+/// `--strict` and a profile has an error: nothing was written. Carries the findings so the
+/// caller can print them (exit status 1, like `check`).
+#[derive(Debug, thiserror::Error)]
+#[error("{errors} error(s) in the profiles (--strict); nothing was written")]
+pub struct StrictFailure {
+    pub errors: usize,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// The input holds nothing to document (and `--allow-empty` was not given): the message names
+/// the directory and what was skipped.
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct NothingToDocument(pub String);
 
 /// The result of loading a directory.
 pub struct Loaded {
@@ -62,8 +79,10 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     // Each candidate is read once: its head tells whether it is a profile (as `walk::walk`
     // decides), and a profile is parsed from the same bytes.
     progress.stage("reading profiles", found.files.len());
+    // A file named on the command line is read as a profile whatever its name.
+    let named = input.is_file();
     enum Outcome {
-        NotProfile,
+        NotProfile(String),
         Loaded(LoadedProfile, Vec<Diagnostic>),
         Failed(Diagnostic),
     }
@@ -71,9 +90,11 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         .files
         .par_iter()
         .map(|(path, rel)| {
-            let outcome = match walk::read_profile(path, opts.limits.max_file_size) {
-                Ok(None) => Outcome::NotProfile,
-                Ok(Some((format, bytes))) => {
+            let outcome = match walk::read_profile(path, opts.limits.max_file_size, named) {
+                Ok(walk::ReadFile::Other(head)) => {
+                    Outcome::NotProfile(walk::describe_non_profile(&head))
+                }
+                Ok(walk::ReadFile::Profile(format, bytes)) => {
                     match parse::parse(format, &bytes, rel, &opts.limits) {
                         Ok(parsed) => Outcome::Loaded(
                             LoadedProfile {
@@ -97,9 +118,38 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut diagnostics = Vec::new();
     let mut profiles = Vec::with_capacity(outcomes.len());
     let mut files = 0;
-    for ((_, rel), outcome) in found.files.into_iter().zip(outcomes) {
+    for ((path, rel), outcome) in found.files.into_iter().zip(outcomes) {
         match outcome {
-            Outcome::NotProfile => skipped.push(walk::not_a_profile(rel)),
+            Outcome::NotProfile(what) if named => {
+                bail!(
+                    "`{}` {what}; name an RTC component profile (RTC.xml or its YAML form)",
+                    input.display()
+                )
+            }
+            Outcome::NotProfile(what) if walk::named_like_profile(&path) => {
+                let name = path
+                    .file_name()
+                    .map(|n| n.to_string_lossy())
+                    .unwrap_or_default();
+                diagnostics.push(
+                    Diagnostic::warning(
+                        crate::diagnostic::codes::NOT_A_PROFILE,
+                        &rel,
+                        format!("{name} {what}; it is not documented"),
+                    )
+                    .with_hint("restore it (version control, RTCBuilder), or rename or exclude it"),
+                );
+                skipped.push(walk::Skipped {
+                    rel,
+                    reason: what,
+                    kind: walk::SkipKind::NotAProfile,
+                });
+            }
+            Outcome::NotProfile(what) => skipped.push(walk::Skipped {
+                rel,
+                reason: what,
+                kind: walk::SkipKind::NotAProfile,
+            }),
             Outcome::Loaded(p, d) => {
                 files += 1;
                 profiles.push(p);
@@ -111,12 +161,49 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             }
         }
     }
+    if files == 0 && !opts.allow_empty {
+        return Err(NothingToDocument(nothing_found(input, &skipped)).into());
+    }
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
     Ok(Loaded {
         catalog: Catalog::build(profiles, diagnostics),
         skipped,
         files,
     })
+}
+
+/// The message of [`NothingToDocument`]: the directory and what the walk left out, by kind.
+fn nothing_found(input: &Path, skipped: &[walk::Skipped]) -> String {
+    use walk::SkipKind;
+    let count = |k: SkipKind| skipped.iter().filter(|s| s.kind == k).count();
+    let mut parts = Vec::new();
+    for (kind, what) in [
+        (
+            SkipKind::NotAProfile,
+            ".xml/.yaml file(s) that are not component profiles",
+        ),
+        (SkipKind::Excluded, "excluded by --exclude"),
+        (SkipKind::NotIncluded, "not matched by --include"),
+        (SkipKind::OtherFile, "other file(s)"),
+        (SkipKind::Symlink, "symbolic link(s)"),
+        (SkipKind::Unreadable, "unreadable"),
+    ] {
+        let n = count(kind);
+        if n > 0 {
+            parts.push(format!("{n} {what}"));
+        }
+    }
+    let looked = if parts.is_empty() {
+        "it holds no files".to_string()
+    } else {
+        format!("skipped {}", parts.join(", "))
+    };
+    format!(
+        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`) in `{}` ({looked}; \
+         `--verbose` lists them). Check the path and the --include/--exclude patterns, or pass \
+         --allow-empty to build an empty catalogue anyway",
+        input.display()
+    )
 }
 
 /// Runs the `rtcdoc check` rules ([`crate::check::run`]) and adds their diagnostics to the
@@ -208,7 +295,11 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     add_check_diagnostics(&mut loaded.catalog);
     let (errors, warnings, _) = loaded.catalog.counts();
     if opts.strict && errors > 0 {
-        bail!("{errors} error(s) in the profiles (--strict); nothing was written");
+        return Err(StrictFailure {
+            errors,
+            diagnostics: loaded.catalog.diagnostics.clone(),
+        }
+        .into());
     }
     let mut formats = opts.formats.clone();
     formats.sort();
@@ -216,7 +307,12 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     if formats.is_empty() {
         formats.push(Format::Html);
     }
-    let staging = Staging::new(&opts.output)?;
+    let marker = if formats == [Format::Markdown] {
+        crate::output::MARKER_MD
+    } else {
+        crate::output::MARKER
+    };
+    let staging = Staging::with_marker(&opts.output, marker)?;
     let ctx = RenderContext {
         catalog: &loaded.catalog,
         site: &opts.site,

@@ -249,6 +249,8 @@ pub struct Overrides {
     pub exclude: Vec<String>,
     pub max_file_size: Option<u64>,
     pub max_depth: Option<usize>,
+    /// `--allow-empty`: an input without profiles is not an error.
+    pub allow_empty: bool,
 }
 
 /// The catalogue title when none is configured, in the UI language.
@@ -300,6 +302,7 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 max_depth: cli.max_depth.unwrap_or(limits.max_depth),
             },
             skip_dirs: vec![],
+            allow_empty: cli.allow_empty,
         },
         site: crate::render::SiteOptions {
             title: cli

@@ -73,6 +73,26 @@ struct InputArgs {
     /// Configuration file [default: rtcdoc.toml in the input directory or the current directory].
     #[arg(long, value_name = "FILE")]
     config: Option<PathBuf>,
+    /// Accept an input without any component profile (otherwise an error, exit 2).
+    #[arg(long)]
+    allow_empty: bool,
+}
+
+/// What the pages look like: shared by `build` and `serve`.
+#[derive(Args, Clone, Default)]
+struct SiteArgs {
+    /// Title of the catalogue.
+    #[arg(long)]
+    title: Option<String>,
+    /// URL the site is published at (sitemap.xml is written only with it).
+    #[arg(long, value_name = "URL")]
+    base_url: Option<String>,
+    /// Theme directory overriding built-in templates and assets file by file.
+    #[arg(long, value_name = "DIR")]
+    theme: Option<PathBuf>,
+    /// Language of generated labels (profile text is shown as written).
+    #[arg(long, value_enum)]
+    language: Option<Lang>,
 }
 
 #[derive(Args)]
@@ -85,21 +105,11 @@ struct BuildArgs {
     /// Output format(s); several at once go to OUT/<format>/ [default: html].
     #[arg(short, long, value_enum, value_delimiter = ',')]
     format: Vec<Format>,
-    /// Fail without writing anything when any profile has an error.
+    /// Fail (exit 1) without writing anything when any profile has an error.
     #[arg(long)]
     strict: bool,
-    /// Title of the catalogue.
-    #[arg(long)]
-    title: Option<String>,
-    /// URL the site is published at (for sitemap.xml).
-    #[arg(long, value_name = "URL")]
-    base_url: Option<String>,
-    /// Theme directory overriding built-in templates and assets file by file.
-    #[arg(long, value_name = "DIR")]
-    theme: Option<PathBuf>,
-    /// Language of generated labels (profile text is shown as written).
-    #[arg(long, value_enum)]
-    language: Option<Lang>,
+    #[command(flatten)]
+    site: SiteArgs,
     #[command(flatten)]
     input_args: InputArgs,
 }
@@ -134,10 +144,15 @@ enum Deny {
     Warnings,
 }
 
+/// `serve` renders HTML into memory: it takes no output directory, format or `--strict`.
 #[derive(Args)]
 struct ServeArgs {
+    /// Directory of profiles [default: the config's `input`, else `.`].
+    input: Option<PathBuf>,
     #[command(flatten)]
-    build: BuildArgs,
+    site: SiteArgs,
+    #[command(flatten)]
+    input_args: InputArgs,
     /// Port on 127.0.0.1 [default: 3000; 0 picks a free one].
     #[arg(short, long)]
     port: Option<u16>,
@@ -163,22 +178,6 @@ fn main() -> ExitCode {
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::from(2)
-        }
-    }
-}
-
-fn print_diagnostics(diags: &[rtcdoc::diagnostic::Diagnostic], verbose: bool, quiet: bool) {
-    for d in diags {
-        let show = match d.severity {
-            Severity::Error => true,
-            Severity::Warning => !quiet,
-            Severity::Info => verbose,
-        };
-        if show {
-            eprintln!("{d}");
-            if let Some(h) = &d.hint {
-                eprintln!("  = help: {h}");
-            }
         }
     }
 }
@@ -261,21 +260,132 @@ fn load_config(input: Option<&Path>, explicit: Option<&Path>) -> anyhow::Result<
     config::load(explicit, &search)
 }
 
-fn overrides(args: &BuildArgs) -> Overrides {
-    let i = &args.input_args;
+fn overrides(
+    input: &Option<PathBuf>,
+    site: &SiteArgs,
+    i: &InputArgs,
+    build: Option<&BuildArgs>,
+) -> Overrides {
     Overrides {
-        input: args.input.clone(),
-        output: args.output.clone(),
-        formats: args.format.clone(),
-        strict: args.strict,
-        title: args.title.clone(),
-        base_url: args.base_url.clone(),
-        theme: args.theme.clone(),
-        language: args.language,
+        input: input.clone(),
+        output: build.and_then(|b| b.output.clone()),
+        formats: build.map(|b| b.format.clone()).unwrap_or_default(),
+        strict: build.is_some_and(|b| b.strict),
+        title: site.title.clone(),
+        base_url: site.base_url.clone(),
+        theme: site.theme.clone(),
+        language: site.language,
         include: i.include.clone(),
         exclude: i.exclude.clone(),
         max_file_size: i.max_file_size,
         max_depth: i.max_depth,
+        allow_empty: i.allow_empty,
+    }
+}
+
+fn build_overrides(args: &BuildArgs) -> Overrides {
+    overrides(&args.input, &args.site, &args.input_args, Some(args))
+}
+
+/// How many errors and warnings `build` and `serve` print before pointing at `rtcdoc check`.
+const PRINT_CAP: usize = 50;
+
+/// Prints what the rules found, like cargo: errors, then warnings (unless `quiet`), then infos
+/// (only with `verbose`), each as `file:line:col: severity[CODE]: message` with files named as
+/// the user can open them. Without `verbose` at most [`PRINT_CAP`] are printed; the rest are
+/// counted, with the command that lists them all.
+fn print_findings(
+    diags: &[rtcdoc::diagnostic::Diagnostic],
+    root: &Path,
+    verbose: bool,
+    quiet: bool,
+    check_cmd: &str,
+) {
+    let mut shown: Vec<&rtcdoc::diagnostic::Diagnostic> = Vec::new();
+    for sev in [Severity::Error, Severity::Warning, Severity::Info] {
+        let wanted = match sev {
+            Severity::Error => true,
+            Severity::Warning => !quiet,
+            Severity::Info => verbose,
+        };
+        if wanted {
+            shown.extend(diags.iter().filter(|d| d.severity == sev));
+        }
+    }
+    let cap = if verbose { usize::MAX } else { PRINT_CAP };
+    for d in shown.iter().take(cap) {
+        let mut d = (*d).clone();
+        d.file = display_path(root, &d.file);
+        eprintln!("{d}");
+        if let Some(h) = &d.hint {
+            eprintln!("  = help: {h}");
+        }
+    }
+    if shown.len() > cap {
+        eprintln!(
+            "… {} more: run `{check_cmd}` to see them all",
+            shown.len() - cap
+        );
+    }
+}
+
+/// `rtcdoc check` with the input options a build used, so that it reports the same findings.
+fn check_command(input: &Path, i: &InputArgs) -> String {
+    let mut cmd = format!("rtcdoc check {}", shell_quote(&input.to_string_lossy()));
+    if let Some(c) = &i.config {
+        cmd.push_str(&format!(" --config {}", shell_quote(&c.to_string_lossy())));
+    }
+    for (flag, values) in [("--include", &i.include), ("--exclude", &i.exclude)] {
+        for v in values {
+            cmd.push_str(&format!(" {flag} {}", shell_quote(v)));
+        }
+    }
+    if let Some(n) = i.max_file_size {
+        cmd.push_str(&format!(" --max-file-size {n}"));
+    }
+    if let Some(n) = i.max_depth {
+        cmd.push_str(&format!(" --max-depth {n}"));
+    }
+    cmd
+}
+
+/// `s` as one POSIX shell word.
+fn shell_quote(s: &str) -> String {
+    let plain = !s.is_empty()
+        && s.bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b"_./:=@%+,-".contains(&b));
+    if plain {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', "'\\''"))
+    }
+}
+
+/// `--verbose`: every file that could have been a profile and was not taken, with the reason;
+/// the other files (sources, images, …) as one count by extension.
+fn print_skipped(skipped: &[rtcdoc::walk::Skipped], root: &Path) {
+    use rtcdoc::walk::SkipKind;
+    let mut others: std::collections::BTreeMap<String, usize> = Default::default();
+    for s in skipped {
+        if s.kind == SkipKind::OtherFile {
+            let ext = Path::new(&s.rel)
+                .extension()
+                .map(|e| format!(".{}", e.to_string_lossy().to_ascii_lowercase()))
+                .unwrap_or_else(|| "no extension".into());
+            *others.entry(ext).or_default() += 1;
+        } else {
+            eprintln!("skipped {}: {}", display_path(root, &s.rel), s.reason);
+        }
+    }
+    if !others.is_empty() {
+        let total: usize = others.values().sum();
+        let mut by: Vec<(String, usize)> = others.into_iter().collect();
+        by.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+        let list: Vec<String> = by.iter().map(|(e, n)| format!("{n} {e}")).collect();
+        eprintln!(
+            "skipped {total} other file(s), not .xml/.yaml/.yml: {}",
+            list.join(", ")
+        );
     }
 }
 
@@ -283,36 +393,44 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
         Command::Build(args) => {
             let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
-            let opts = config::build_options(&file, &overrides(args));
+            let opts = config::build_options(&file, &build_overrides(args));
+            let root = input_root(&opts.input);
+            let check_cmd = check_command(&opts.input, &args.input_args);
             let bar = Bar::new(!cli.quiet);
             let result = build::build_with(&opts, &bar);
             bar.0.finish_and_clear();
-            let (loaded, report) = result?;
+            let (loaded, report) = match result {
+                Ok(r) => r,
+                Err(e) => {
+                    if let Some(f) = e.downcast_ref::<build::StrictFailure>() {
+                        print_findings(&f.diagnostics, &root, cli.verbose, cli.quiet, &check_cmd);
+                        eprintln!("error: {e}");
+                        return Ok(ExitCode::from(1));
+                    }
+                    return Err(e);
+                }
+            };
             if cli.verbose {
                 if let Some(p) = &file.path {
                     eprintln!("configuration: {}", p.display());
                 }
-                for s in &loaded.skipped {
-                    eprintln!("skipped {}: {}", s.rel, s.reason);
-                }
+                print_skipped(&loaded.skipped, &root);
             }
-            // Loader diagnostics as before; the check rules' findings are summed up in one
-            // line (all of them with --verbose, and in the JSON output / diagnostics page).
-            let (loader, rules): (Vec<_>, Vec<_>) = loaded
-                .catalog
-                .diagnostics
-                .iter()
-                .cloned()
-                .partition(|d| d.code < "RTC100");
-            print_diagnostics(&loader, cli.verbose, cli.quiet);
-            if cli.verbose {
-                print_diagnostics(&rules, true, false);
-            }
+            print_findings(
+                &loaded.catalog.diagnostics,
+                &root,
+                cli.verbose,
+                cli.quiet,
+                &check_cmd,
+            );
             if !cli.quiet {
+                let html = opts.formats.is_empty() || opts.formats.contains(&Format::Html);
+                if html && opts.site.base_url.is_none() {
+                    eprintln!("note: no sitemap.xml: it needs absolute URLs; pass --base-url URL (or set base-url in rtcdoc.toml)");
+                }
                 eprintln!(
-                    "{} (details: rtcdoc check {})",
+                    "{} (details: {check_cmd})",
                     rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
-                    opts.input.display()
                 );
                 eprintln!(
                     "built {} profile(s) into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
@@ -331,11 +449,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
         }
         Command::Check(args) => check(cli, args),
         Command::Serve(args) => {
-            let file = load_config(
-                args.build.input.as_deref(),
-                args.build.input_args.config.as_deref(),
-            )?;
-            let mut build = config::build_options(&file, &overrides(&args.build));
+            let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
+            let cli_over = overrides(&args.input, &args.site, &args.input_args, None);
+            let mut build = config::build_options(&file, &cli_over);
             build.formats = vec![Format::Html];
             let serve_cfg = file.config.serve.clone().unwrap_or_default();
             let mut watch = Vec::new();
@@ -346,11 +462,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 watch.push(p.clone());
             }
             let quiet = cli.quiet;
-            let (input, explicit, cli_over) = (
-                args.build.input.clone(),
-                args.build.input_args.config.clone(),
-                overrides(&args.build),
-            );
+            let root = input_root(&build.input);
+            let check_cmd = check_command(&build.input, &args.input_args);
+            let (input, explicit) = (args.input.clone(), args.input_args.config.clone());
             let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
                 let file = load_config(input.as_deref(), explicit.as_deref())?;
                 let mut b = config::build_options(&file, &cli_over);
@@ -371,6 +485,13 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                     }
                 }),
             )?;
+            print_findings(
+                handle.first_diagnostics(),
+                &root,
+                cli.verbose,
+                cli.quiet,
+                &check_cmd,
+            );
             eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
             if args.open || serve_cfg.open.unwrap_or(false) {
                 rtcdoc::serve::open_browser(&handle.url());
@@ -455,6 +576,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             exclude: args.input_args.exclude.clone(),
             max_file_size: args.input_args.max_file_size,
             max_depth: args.input_args.max_depth,
+            allow_empty: args.input_args.allow_empty,
             ..Default::default()
         },
     )
@@ -473,9 +595,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             c.source = display_path(&root, &c.source);
         }
         if cli.verbose {
-            for s in &loaded.skipped {
-                eprintln!("skipped {}: {}", display_path(&root, &s.rel), s.reason);
-            }
+            print_skipped(&loaded.skipped, &root);
         }
         reports.push(r);
         // Not freed one allocation at a time: the process ends soon (see `Command::Build`).

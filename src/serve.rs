@@ -85,9 +85,15 @@ pub struct ServerHandle {
     port: u16,
     shared: Arc<Shared>,
     threads: Vec<std::thread::JoinHandle<()>>,
+    /// What the first build found (the CLI prints it like `build` does).
+    first_diagnostics: Vec<crate::diagnostic::Diagnostic>,
 }
 
 impl ServerHandle {
+    /// The diagnostics of the first build.
+    pub fn first_diagnostics(&self) -> &[crate::diagnostic::Diagnostic] {
+        &self.first_diagnostics
+    }
     /// The port the server listens on.
     pub fn port(&self) -> u16 {
         self.port
@@ -128,6 +134,7 @@ impl Drop for ServerHandle {
 /// event (rebuilds, errors).
 pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result<ServerHandle> {
     let mut ws = Workspace::open(&opts.build)?;
+    let first_diagnostics = ws.catalog().diagnostics.clone();
     let shared = Arc::new(Shared {
         files: RwLock::new(Arc::new(ws.files().clone())),
         error: RwLock::new(None),
@@ -251,6 +258,7 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
         port,
         shared,
         threads,
+        first_diagnostics,
     })
 }
 

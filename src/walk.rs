@@ -29,6 +29,82 @@ const SNIFF_BYTES: u64 = 64 * 1024;
 pub struct Skipped {
     pub rel: String,
     pub reason: String,
+    pub kind: SkipKind,
+}
+
+/// Why a file (or directory) was not taken: `--verbose` lists every kind but
+/// [`SkipKind::OtherFile`], which it counts by extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum SkipKind {
+    /// An `.xml`/`.yaml`/`.yml` file whose content is not an RTC component profile.
+    NotAProfile,
+    /// Left out by an `--exclude` pattern (a file, or a directory and everything below it).
+    Excluded,
+    /// Not matched by an `--include` pattern.
+    NotIncluded,
+    /// A symbolic link (not followed).
+    Symlink,
+    /// The file or directory could not be read.
+    Unreadable,
+    /// A file no profile can be in (`.cpp`, `.png`, …).
+    OtherFile,
+}
+
+/// Whether `path`'s file name is one profile writers give a component profile: `RTC.xml`,
+/// `RTC.yaml`, `RTC.yml`, `*.rtc.xml`, and RTCBuilder's backups `RTC.xml<timestamp>` (with or
+/// without a further `.xml`). Such a file that is not a readable profile is worth a warning.
+pub fn named_like_profile(path: &Path) -> bool {
+    let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+        return false;
+    };
+    if matches!(name, "RTC.xml" | "RTC.yaml" | "RTC.yml") || name.ends_with(".rtc.xml") {
+        return true;
+    }
+    is_backup_name(name)
+}
+
+/// `RTC.xml` followed by a timestamp of digits, optionally ending in `.xml` (RTCBuilder's backup).
+fn is_backup_name(name: &str) -> bool {
+    let Some(rest) = name.strip_prefix("RTC.xml") else {
+        return false;
+    };
+    let digits = rest.strip_suffix(".xml").unwrap_or(rest);
+    (8..=17).contains(&digits.len()) && digits.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// What a file that is not an RTC component profile is, for a message ("is empty: a failed
+/// save?", "is an RT System profile").
+pub fn describe_non_profile(bytes: &[u8]) -> String {
+    let body = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    if body.iter().all(u8::is_ascii_whitespace) {
+        return "is empty (a failed save?)".into();
+    }
+    let utf16 = bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]);
+    let head = &body[..body.len().min(4096)];
+    if !utf16 && head.contains(&0) {
+        return "is binary data, not a text profile".into();
+    }
+    let first = head.iter().find(|b| !b.is_ascii_whitespace()).copied();
+    if utf16 || first == Some(b'<') {
+        return match parse::xml::root_element(bytes) {
+            parse::xml::Root::Element(name) if name == "RtsProfile" => {
+                "is an RT System profile (RtsProfile), not a component profile".into()
+            }
+            parse::xml::Root::Element(name) => {
+                format!("is XML with the root element `{name}`, not `RtcProfile`")
+            }
+            parse::xml::Root::Truncated => "ends before its root element (truncated?)".into(),
+            parse::xml::Root::NotXml => "is not well-formed XML before its root element".into(),
+        };
+    }
+    let top_key = |k: &[u8]| {
+        head.split(|&b| b == b'\n')
+            .any(|l| l.strip_prefix(k).is_some_and(|r| r.first() == Some(&b':')))
+    };
+    if top_key(b"rtsProfile") {
+        return "is an RT System profile (YAML rtsProfile), not a component profile".into();
+    }
+    "is neither XML nor YAML with a top-level `rtcProfile` key".into()
 }
 
 /// Options of a walk.
@@ -70,6 +146,14 @@ pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
     match ext.as_deref() {
         Some("xml") if parse::xml::is_profile(bytes) => Some(SourceFormat::Xml),
         Some("yaml") | Some("yml") if parse::yaml::is_profile(bytes) => Some(SourceFormat::Yaml),
+        _ if path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .is_some_and(is_backup_name)
+            && parse::xml::is_profile(bytes) =>
+        {
+            Some(SourceFormat::Xml)
+        }
         _ => None,
     }
 }
@@ -118,17 +202,22 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
     };
     // Recognising profiles reads the head of every candidate: done in parallel.
     use rayon::prelude::*;
-    let sniffed: Vec<(PathBuf, String, std::io::Result<Option<SourceFormat>>)> = candidates
+    let sniffed: Vec<(PathBuf, String, std::io::Result<Recognised>)> = candidates
         .into_par_iter()
         .map(|(path, rel)| {
-            let r = sniff(&path).map(|(_, _, format)| format);
+            let r = sniff(&path)
+                .map(|(_, head, format)| format.ok_or_else(|| describe_non_profile(&head)));
             (path, rel, r)
         })
         .collect();
     for (path, rel, r) in sniffed {
         match r {
-            Ok(Some(format)) => result.sources.push(Source { path, rel, format }),
-            Ok(None) => result.skipped.push(not_a_profile(rel)),
+            Ok(Ok(format)) => result.sources.push(Source { path, rel, format }),
+            Ok(Err(reason)) => result.skipped.push(Skipped {
+                rel,
+                reason,
+                kind: SkipKind::NotAProfile,
+            }),
             Err(e) => result
                 .errors
                 .push(crate::diagnostic::Diagnostic::io(&rel, &e)),
@@ -153,11 +242,15 @@ impl Candidates {
     }
 }
 
-/// The [`Skipped`] entry of a candidate whose content is not a profile.
-pub(crate) fn not_a_profile(rel: String) -> Skipped {
-    Skipped {
-        rel,
-        reason: "not an RTC component profile (root is not RtcProfile / rtcProfile)".into(),
+/// The format of a file named on the command line, by content alone (whatever its name): XML
+/// when it starts like XML, else YAML; `None` when neither reads as a component profile.
+pub fn detect_named(bytes: &[u8]) -> Option<SourceFormat> {
+    if parse::xml::is_profile(bytes) {
+        Some(SourceFormat::Xml)
+    } else if parse::yaml::is_profile(bytes) {
+        Some(SourceFormat::Yaml)
+    } else {
+        None
     }
 }
 
@@ -174,17 +267,27 @@ fn sniff(path: &Path) -> std::io::Result<(std::fs::File, Vec<u8>, Option<SourceF
     Ok((f, head, format))
 }
 
-/// Reads a candidate file once: its head, to recognise a profile exactly as [`walk`] does, and
-/// when it is one, the rest — at most `limit + 1` bytes in all, so that an oversized file is
-/// detected without reading it whole. `None` when the file is not a profile.
-pub(crate) fn read_profile(
-    path: &Path,
-    limit: u64,
-) -> std::io::Result<Option<(SourceFormat, Vec<u8>)>> {
+/// What the head of a candidate shows: its format, or what it is instead (for a message).
+type Recognised = Result<SourceFormat, String>;
+
+/// A candidate read by [`read_profile`].
+pub(crate) enum ReadFile {
+    /// A profile of this format: its bytes (at most the size limit + 1).
+    Profile(SourceFormat, Vec<u8>),
+    /// Not a profile: the head that was read.
+    Other(Vec<u8>),
+}
+
+/// Reads a candidate file once: its head, to recognise a profile exactly as [`walk`] does (or,
+/// for a file named on the command line, by content alone), and when it is one, the rest — at
+/// most `limit + 1` bytes in all, so that an oversized file is detected without reading it
+/// whole. `Err(head)` when the file is not a profile.
+pub(crate) fn read_profile(path: &Path, limit: u64, named: bool) -> std::io::Result<ReadFile> {
     use std::io::Read;
     let (f, mut buf, format) = sniff(path)?;
+    let format = if named { detect_named(&buf) } else { format };
     let Some(format) = format else {
-        return Ok(None);
+        return Ok(ReadFile::Other(buf));
     };
     let cap = limit.saturating_add(1);
     let have = buf.len() as u64;
@@ -193,7 +296,7 @@ pub(crate) fn read_profile(
     } else {
         f.take(cap - have).read_to_end(&mut buf)?;
     }
-    Ok(Some((format, buf)))
+    Ok(ReadFile::Profile(format, buf))
 }
 
 /// The traversal part of [`walk`]: which files are candidates, without reading any. The
@@ -217,6 +320,8 @@ struct Walker<'a> {
     /// What relative paths are relative to.
     root: PathBuf,
     excludes: GlobSet,
+    /// The exclude patterns as written, in `excludes`' order (to name the one that matched).
+    exclude_patterns: Vec<String>,
     includes: Option<GlobSet>,
     skip_dirs: Vec<PathBuf>,
     /// Inode numbers of `skip_dirs`: canonicalizing every directory of a large tree costs a
@@ -249,6 +354,7 @@ impl<'a> Walker<'a> {
                 input.to_path_buf()
             },
             excludes: build_globs(&opts.exclude)?,
+            exclude_patterns: opts.exclude.clone(),
             includes: if opts.include.is_empty() {
                 None
             } else {
@@ -299,13 +405,49 @@ impl<'a> Walker<'a> {
         }
     }
 
-    /// A sorted walk of `start` (the input, or a directory directly in it).
+    /// The first exclude pattern that matches the input-relative path `rel`.
+    fn excluded(&self, rel: &str) -> Option<&str> {
+        self.excludes
+            .matches(rel)
+            .first()
+            .and_then(|&i| self.exclude_patterns.get(i))
+            .map(String::as_str)
+    }
+
+    /// Whether the walk enters the directory `e` (below the input): not a hidden or skipped
+    /// one ([`Walker::keep`]), and not one an exclude pattern matches — `--exclude
+    /// examples/Templates` leaves out everything below it, which is reported once.
+    fn enter(&self, e: &walkdir::DirEntry, out: &mut Candidates) -> bool {
+        if !self.keep(e) {
+            return false;
+        }
+        let rel = rel_path(&self.root, e.path());
+        if let Some(pattern) = self.excluded(&rel) {
+            out.skipped.push(Skipped {
+                rel: format!("{rel}/"),
+                reason: format!(
+                    "directory excluded by pattern `{pattern}` (nothing below it is read)"
+                ),
+                kind: SkipKind::Excluded,
+            });
+            return false;
+        }
+        true
+    }
+
+    /// A sorted walk of `start` (the input, or a directory directly in it, already entered).
     fn subtree(&self, start: &Path) -> Candidates {
         let mut out = Candidates::default();
-        let walker = Self::walkdir(start)
-            .into_iter()
-            .filter_entry(|e| e.depth() == 0 || self.keep(e));
-        for entry in walker {
+        let mut it = Self::walkdir(start).into_iter();
+        while let Some(entry) = it.next() {
+            if let Ok(e) = &entry {
+                if e.depth() > 0 && e.file_type().is_dir() {
+                    if !self.enter(e, &mut out) {
+                        it.skip_current_dir();
+                    }
+                    continue;
+                }
+            }
             self.visit(entry, &mut out);
         }
         out
@@ -323,7 +465,14 @@ impl<'a> Walker<'a> {
         let parts: Vec<Candidates> = top
             .into_par_iter()
             .map(|entry| match entry {
-                Ok(e) if e.depth() == 1 && e.file_type().is_dir() => self.subtree(e.path()),
+                Ok(e) if e.depth() == 1 && e.file_type().is_dir() => {
+                    let mut out = Candidates::default();
+                    if self.enter(&e, &mut out) {
+                        self.subtree(e.path())
+                    } else {
+                        out
+                    }
+                }
                 other => {
                     let mut out = Candidates::default();
                     self.visit(other, &mut out);
@@ -351,6 +500,7 @@ impl<'a> Walker<'a> {
                 out.skipped.push(Skipped {
                     rel,
                     reason: format!("cannot be read: {e}"),
+                    kind: SkipKind::Unreadable,
                 });
                 return;
             }
@@ -360,16 +510,37 @@ impl<'a> Walker<'a> {
                 out.skipped.push(Skipped {
                     rel: rel_path(&self.root, entry.path()),
                     reason: "symbolic link (not followed)".into(),
+                    kind: SkipKind::Symlink,
                 });
             }
             return;
         }
         let path = entry.path();
         let rel = rel_path(&self.root, path);
-        if self.excludes.is_match(&rel) {
+        // A file named on the command line is read whatever its name and the patterns.
+        if entry.depth() == 0 && self.input.is_file() {
+            out.files.push((path.to_path_buf(), rel));
+            return;
+        }
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase());
+        let candidate =
+            matches!(ext.as_deref(), Some("xml" | "yaml" | "yml")) || named_like_profile(path);
+        if !candidate {
             out.skipped.push(Skipped {
                 rel,
-                reason: "excluded by pattern".into(),
+                reason: "not an .xml/.yaml/.yml file".into(),
+                kind: SkipKind::OtherFile,
+            });
+            return;
+        }
+        if let Some(pattern) = self.excluded(&rel) {
+            out.skipped.push(Skipped {
+                rel,
+                reason: format!("excluded by pattern `{pattern}`"),
+                kind: SkipKind::Excluded,
             });
             return;
         }
@@ -378,20 +549,10 @@ impl<'a> Walker<'a> {
                 out.skipped.push(Skipped {
                     rel,
                     reason: "not matched by an include pattern".into(),
+                    kind: SkipKind::NotIncluded,
                 });
                 return;
             }
-        }
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(|e| e.to_ascii_lowercase());
-        if !matches!(ext.as_deref(), Some("xml" | "yaml" | "yml")) {
-            out.skipped.push(Skipped {
-                rel,
-                reason: "not an .xml/.yaml/.yml file".into(),
-            });
-            return;
         }
         out.files.push((path.to_path_buf(), rel));
     }

@@ -138,7 +138,6 @@ fn examples_site_has_every_page_and_no_broken_link() {
         "search.js",
         "filter.js",
         "style.css",
-        "sitemap.xml",
         "404.html",
         "types/index.html",
         "interfaces/index.html",
@@ -185,12 +184,8 @@ fn examples_site_has_every_page_and_no_broken_link() {
     } else {
         println!("skipped: ../shared/tools/linkcheck.py not present");
     }
-    // The sitemap lists every component page, relative without a base URL.
-    let sm = read(&out.join("sitemap.xml"));
-    for c in &cat.components {
-        assert!(sm.contains(&format!("<loc>components/{}.html</loc>", c.slug)));
-    }
-    assert!(!sm.contains("404.html"));
+    // A sitemap needs absolute URLs: without a base URL there is none.
+    assert!(!out.join("sitemap.xml").exists());
 }
 
 #[test]

@@ -155,6 +155,15 @@ pub static RULES: &[Rule] = &[
         hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy (e.g. an RTCBuilder backup RTC.xml2023…)",
     },
     Rule {
+        code: "RTC011",
+        severity: Warning,
+        name: "not-a-profile",
+        summary: "a file named like a profile cannot be read as one",
+        explanation: "Files named `RTC.xml`, `RTC.yaml`, `*.rtc.xml` or `RTC.xml<timestamp>` (RTCBuilder's backups) are component profiles by convention. One that is empty, binary, not XML, has another root element or ends before its root is not documented; the warning says which, because it is usually a failed save or a file put in the wrong place, and skipping it silently would leave a component out of the catalogue unnoticed.",
+        spec: "3.1 (XML mapping)",
+        hint: "restore the profile from version control or RTCBuilder, or rename or exclude the file (`--exclude PATH`)",
+    },
+    Rule {
         code: MISSING_REQUIRED,
         severity: Error,
         name: "missing-required",

@@ -40,6 +40,22 @@ const HARD_MAX_DEPTH: usize = 1024;
 /// looks at the local name of the first element only; `RtsProfile` (system profiles) and
 /// anything that is not XML give `false`.
 pub fn is_profile(bytes: &[u8]) -> bool {
+    matches!(root_element(bytes), Root::Element(name) if name == "RtcProfile")
+}
+
+/// What the head of an XML file shows about its root element.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Root {
+    /// The local name of the first element (`RtcProfile`, `RtsProfile`, …).
+    Element(String),
+    /// Only a prolog (declaration, comments, white space): the file ends before its root.
+    Truncated,
+    /// Not XML: the first thing after the prolog is neither an element nor white space.
+    NotXml,
+}
+
+/// The root element of an XML document, from its head (UTF-8, UTF-16 with BOM).
+pub fn root_element(bytes: &[u8]) -> Root {
     // UTF-16 needs decoding before a byte-oriented look; only the head is needed.
     let utf16 = match bytes {
         [0xFF, 0xFE, ..] => Some(encoding_rs::UTF_16LE),
@@ -49,29 +65,32 @@ pub fn is_profile(bytes: &[u8]) -> bool {
     if let Some(enc) = utf16 {
         let head = &bytes[2..bytes.len().min(64 * 1024)];
         let (text, _) = enc.decode_without_bom_handling(head);
-        return first_element_is_profile(text.as_bytes());
+        return first_element(text.as_bytes());
     }
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    first_element_is_profile(bytes)
+    first_element(bytes)
 }
 
-fn first_element_is_profile(bytes: &[u8]) -> bool {
+fn first_element(bytes: &[u8]) -> Root {
     let mut reader = Reader::from_reader(bytes);
     // A prolog longer than this many events is not something we want to scan.
     for _ in 0..10_000 {
         match reader.read_event() {
             Ok(XmlEvent::Start(e)) | Ok(XmlEvent::Empty(e)) => {
-                return e.local_name().as_ref() == b"RtcProfile";
+                return Root::Element(
+                    String::from_utf8_lossy(e.local_name().as_ref()).into_owned(),
+                );
             }
             Ok(XmlEvent::Decl(_))
             | Ok(XmlEvent::Comment(_))
             | Ok(XmlEvent::PI(_))
             | Ok(XmlEvent::DocType(_)) => {}
             Ok(XmlEvent::Text(t)) if t.iter().all(u8::is_ascii_whitespace) => {}
-            _ => return false,
+            Ok(XmlEvent::Eof) => return Root::Truncated,
+            _ => return Root::NotXml,
         }
     }
-    false
+    Root::NotXml
 }
 
 /// Reads an RTC Profile from XML bytes.

@@ -966,9 +966,12 @@ impl HtmlRenderer {
             })
             .try_reduce(|| 0, |a, b| Ok(a + b))?;
 
-        all_paths.push("sitemap.xml".into());
-        if wanted("sitemap.xml") {
-            // Sitemap: every page but the 404.
+        // Sitemap: every page but the 404, at absolute URLs — which only a base URL gives
+        // (the sitemap protocol requires them), so without one there is no sitemap.
+        if opts.base_url.is_some() {
+            all_paths.push("sitemap.xml".into());
+        }
+        if let Some(base_url) = opts.base_url.as_deref().filter(|_| wanted("sitemap.xml")) {
             let mut urls: Vec<String> = pages
                 .iter()
                 .map(|p| p.path.clone())
@@ -976,11 +979,7 @@ impl HtmlRenderer {
                 .collect();
             urls.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
             urls.sort();
-            let base = opts
-                .base_url
-                .as_deref()
-                .map(|b| format!("{}/", b.trim_end_matches('/')))
-                .unwrap_or_default();
+            let base = format!("{}/", base_url.trim_end_matches('/'));
             let mut sm = String::from(
                 "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<urlset xmlns=\"http://www.sitemaps.org/schemas/sitemap/0.9\">\n",
             );

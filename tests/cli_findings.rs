@@ -1,0 +1,389 @@
+//! What `build`, `check` and `serve` print and how they exit: findings like cargo, exit codes,
+//! `--exclude DIR`, profile-named files that are not profiles, files named on the command line,
+//! inputs with nothing to document, flags `serve` does not take.
+
+mod common;
+use common::*;
+use std::path::Path;
+
+fn fixture(name: &str) -> String {
+    std::fs::read_to_string(root().join("tests/fixtures/check").join(name)).expect("fixture")
+}
+
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// `in/` with one profile with a rule error (RTC303) and one with a warning (RTC203).
+fn with_findings(d: &Path) {
+    write(d, "in/bad/RTC.xml", &fixture("RTC303-bad.xml"));
+    write(d, "in/warn/RTC.xml", &fixture("RTC203-bad.xml"));
+    // Undocumented: documentation-coverage infos.
+    write(
+        d,
+        "in/plain/RTC.xml",
+        &xml_profile("Plain", &[("DataOutPort", "out", "RTC::TimedLong")]),
+    );
+}
+
+#[test]
+fn build_prints_rule_errors_and_warnings_like_cargo() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    with_findings(d);
+    let out = rtcdoc(&["build", "in", "-o", "site", "--exclude", "nothing/**"], d);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let err = stderr(&out);
+    // file:line:col: severity[CODE]: message, with the path as the user can open it.
+    assert!(err.contains("in/bad/RTC.xml:10:5: error[RTC303]:"), "{err}");
+    assert!(err.contains("in/warn/RTC.xml:"), "{err}");
+    assert!(err.contains(": warning[RTC203]:"), "{err}");
+    assert!(err.contains("  = help: "), "{err}");
+    // Errors come before warnings.
+    assert!(err.find("error[RTC303]").unwrap() < err.find("warning[RTC203]").unwrap());
+    // Infos only with --verbose.
+    assert!(!err.contains(": info["), "{err}");
+    // The hint repeats the input options of the build.
+    assert!(
+        err.contains("(details: rtcdoc check in --exclude 'nothing/**')"),
+        "{err}"
+    );
+    let v = rtcdoc(&["build", "in", "-o", "site", "--verbose"], d);
+    assert!(stderr(&v).contains(": info[RTC50"), "{}", stderr(&v));
+    // --quiet: errors only.
+    let q = rtcdoc(&["build", "in", "-o", "site", "--quiet"], d);
+    let qe = stderr(&q);
+    assert!(
+        qe.contains("error[RTC303]") && !qe.contains("warning["),
+        "{qe}"
+    );
+}
+
+#[test]
+fn build_caps_the_findings_it_prints() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for i in 0..60 {
+        write(
+            d,
+            &format!("in/c{i:02}/RTC.xml"),
+            &fixture("RTC303-bad.xml"),
+        );
+    }
+    let out = rtcdoc(&["build", "in", "-o", "site", "--config", "none.toml"], d);
+    let err = stderr(&out);
+    // --config names a missing file: the build says so (exit 2) …
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let out = rtcdoc(&["build", "in", "-o", "site"], d);
+    let err = stderr(&out);
+    let printed = err.lines().filter(|l| l.contains("]: ")).count();
+    assert_eq!(printed, 50, "{err}");
+    // 60 RTC303 errors and 60 duplicate-id warnings: 70 more than printed.
+    assert!(
+        err.contains("… 70 more: run `rtcdoc check in` to see them all"),
+        "{err}"
+    );
+    let v = rtcdoc(&["build", "in", "-o", "site", "--verbose"], d);
+    assert!(!stderr(&v).contains("more: run"), "{}", stderr(&v));
+}
+
+#[test]
+fn strict_build_exits_1_and_prints_the_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    with_findings(d);
+    let out = rtcdoc(&["build", "in", "-o", "site", "--strict"], d);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("in/bad/RTC.xml:10:5: error[RTC303]:"), "{err}");
+    assert!(err.contains("nothing was written"), "{err}");
+    assert!(!d.join("site").exists());
+    // Usage errors are 2.
+    let u = rtcdoc(&["build", "in", "--format", "pdf"], d);
+    assert_eq!(u.status.code(), Some(2));
+}
+
+#[test]
+fn exclude_of_a_directory_leaves_out_its_whole_subtree() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/comp/RTC.xml", &xml_profile("Comp", &[]));
+    write(
+        d,
+        "in/examples/Templates/a/RTC.xml",
+        &xml_profile("TplA", &[]),
+    );
+    write(d, "in/examples/Templates/b.xml", &xml_profile("TplB", &[]));
+    let out = rtcdoc(
+        &[
+            "build",
+            "in",
+            "-f",
+            "json",
+            "-o",
+            "out",
+            "--exclude",
+            "examples/Templates",
+            "--verbose",
+        ],
+        d,
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let json = std::fs::read_to_string(d.join("out/catalog.json")).unwrap();
+    assert!(json.contains("\"Comp\"") && !json.contains("Tpl"), "{json}");
+    let err = stderr(&out);
+    assert!(
+        err.contains(
+            "skipped in/examples/Templates/: directory excluded by pattern `examples/Templates`"
+        ),
+        "{err}"
+    );
+    // check with the same pattern agrees.
+    let c = rtcdoc(
+        &[
+            "check",
+            "in",
+            "--exclude",
+            "examples/Templates",
+            "--format",
+            "json",
+        ],
+        d,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
+    assert_eq!(v["coverage"]["components"].as_array().unwrap().len(), 1);
+}
+
+#[test]
+fn profile_named_files_that_are_no_profiles_are_warned_about() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/ok/RTC.xml", &xml_profile("Ok", &[]));
+    write(d, "in/empty/RTC.xml", "");
+    std::fs::create_dir_all(d.join("in/bin")).unwrap();
+    std::fs::write(d.join("in/bin/RTC.xml"), b"\x89PNG\r\n\x1a\n\0\0\0IHDR").unwrap();
+    write(
+        d,
+        "in/cut/RTC.xml",
+        "<?xml version=\"1.0\"?>\n<!-- RTCBuilder -->\n",
+    );
+    write(d, "in/yaml/RTC.yaml", "just: text\n");
+    write(d, "in/old/RTC.xml20171205120156", "");
+    write(
+        d,
+        "in/sys/RTC.xml",
+        "<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\"/>",
+    );
+    // Not named like a profile: quietly skipped, as before.
+    write(d, "in/ok/notes.xml", "<notes/>");
+    let out = rtcdoc(&["build", "in", "-o", "site"], d);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    for (file, what) in [
+        ("in/empty/RTC.xml", "RTC.xml is empty (a failed save?)"),
+        ("in/bin/RTC.xml", "RTC.xml is binary data"),
+        (
+            "in/cut/RTC.xml",
+            "RTC.xml ends before its root element (truncated?)",
+        ),
+        (
+            "in/yaml/RTC.yaml",
+            "RTC.yaml is neither XML nor YAML with a top-level `rtcProfile` key",
+        ),
+        (
+            "in/old/RTC.xml20171205120156",
+            "RTC.xml20171205120156 is empty",
+        ),
+        ("in/sys/RTC.xml", "RTC.xml is an RT System profile"),
+    ] {
+        assert!(
+            err.contains(&format!("{file}: warning[RTC011]: {what}")),
+            "{file}: {err}"
+        );
+    }
+    assert!(!err.contains("notes.xml"), "{err}");
+    // check reports the same warnings.
+    let c = rtcdoc(&["check", "in", "--format", "json"], d);
+    assert_eq!(c.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
+    assert_eq!(v["summary"]["byCode"]["RTC011"], 6, "{v}");
+    // A backup without .xml that is a profile is read like one with it.
+    write(d, "in/old/RTC.xml20171205120156", &xml_profile("Old", &[]));
+    let j = rtcdoc(&["build", "in", "-f", "json", "-o", "j"], d);
+    assert!(j.status.success(), "{}", stderr(&j));
+    let json = std::fs::read_to_string(d.join("j/catalog.json")).unwrap();
+    assert!(
+        json.contains("\"source\": \"old/RTC.xml20171205120156\""),
+        "{json}"
+    );
+}
+
+#[test]
+fn a_file_named_on_the_command_line_is_read_whatever_its_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "backup/RTC.bak", &fixture("RTC303-bad.xml"));
+    let out = rtcdoc(&["check", "backup/RTC.bak"], d);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("error[RTC303]"), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("backup/RTC.bak:10:5"),
+        "{}",
+        stderr(&out)
+    );
+    write(
+        d,
+        "sys/DefaultSystem.xml",
+        "<?xml version=\"1.0\"?><rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\"/>",
+    );
+    let sys = rtcdoc(&["check", "sys/DefaultSystem.xml"], d);
+    assert_eq!(sys.status.code(), Some(2));
+    assert!(
+        stderr(&sys).contains(
+            "`sys/DefaultSystem.xml` is an RT System profile (RtsProfile), not a component profile"
+        ),
+        "{}",
+        stderr(&sys)
+    );
+    write(d, "notes.txt", "hello");
+    let txt = rtcdoc(&["check", "notes.txt"], d);
+    assert_eq!(txt.status.code(), Some(2));
+    assert!(
+        stderr(&txt).contains("is neither XML nor YAML"),
+        "{}",
+        stderr(&txt)
+    );
+}
+
+#[test]
+fn nothing_to_document_is_an_error_unless_allowed() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/src/main.cpp", "int main() {}");
+    write(d, "in/data/notes.xml", "<notes/>");
+    for cmd in ["build", "check"] {
+        let out = rtcdoc(&[cmd, "in"], d);
+        assert_eq!(out.status.code(), Some(2), "{cmd}: {}", stderr(&out));
+        let err = stderr(&out);
+        assert!(err.contains("nothing to document"), "{err}");
+        assert!(err.contains("`in`"), "{err}");
+        assert!(
+            err.contains("1 .xml/.yaml file(s) that are not component profiles, 1 other file(s)"),
+            "{err}"
+        );
+        assert!(err.contains("--allow-empty"), "{err}");
+    }
+    assert!(!d.join("site").exists());
+    let ok = rtcdoc(&["build", "in", "--allow-empty", "-o", "site"], d);
+    assert!(ok.status.success(), "{}", stderr(&ok));
+    assert!(d.join("site/index.html").is_file());
+    assert!(rtcdoc(&["check", "in", "--allow-empty"], d)
+        .status
+        .success());
+}
+
+#[test]
+fn sitemap_only_with_a_base_url() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/a/RTC.xml", &xml_profile("A", &[]));
+    let out = rtcdoc(&["build", "in", "-o", "site"], d);
+    assert!(out.status.success());
+    assert!(!d.join("site/sitemap.xml").exists());
+    assert!(
+        stderr(&out).contains("note: no sitemap.xml"),
+        "{}",
+        stderr(&out)
+    );
+    let out = rtcdoc(
+        &[
+            "build",
+            "in",
+            "-o",
+            "site",
+            "--base-url",
+            "https://x.example/c",
+        ],
+        d,
+    );
+    assert!(!stderr(&out).contains("sitemap"), "{}", stderr(&out));
+    let sm = std::fs::read_to_string(d.join("site/sitemap.xml")).unwrap();
+    assert!(sm.contains("<loc>https://x.example/c/components/"), "{sm}");
+}
+
+#[test]
+fn markdown_output_keeps_its_marker_out_of_the_book() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/a/RTC.xml", &xml_profile("A", &[]));
+    let out = rtcdoc(&["build", "in", "-f", "markdown", "-o", "book/src"], d);
+    assert!(out.status.success(), "{}", stderr(&out));
+    // mdBook copies every non-Markdown file of src/ into the book: the marker is a .md file.
+    assert!(d.join("book/src/.rtcdoc-output.md").is_file());
+    assert!(!d.join("book/src/.rtcdoc-output").exists());
+    // … and still lets the next build replace the output.
+    let again = rtcdoc(&["build", "in", "-f", "markdown", "-o", "book/src"], d);
+    assert!(again.status.success(), "{}", stderr(&again));
+    if tool_available("mdbook") {
+        write(d, "book/book.toml", "[book]\ntitle = \"t\"\n");
+        let b = std::process::Command::new("mdbook")
+            .arg("build")
+            .current_dir(d.join("book"))
+            .output()
+            .unwrap();
+        assert!(b.status.success(), "{}", String::from_utf8_lossy(&b.stderr));
+        let leaked: Vec<_> = walkdir::WalkDir::new(d.join("book/book"))
+            .into_iter()
+            .flatten()
+            .filter(|e| e.file_name().to_string_lossy().contains("rtcdoc-output"))
+            .collect();
+        assert!(leaked.is_empty(), "{leaked:?}");
+    } else {
+        println!("skipped (mdbook part): mdbook not installed");
+    }
+}
+
+#[test]
+fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    with_findings(d);
+    for flags in [&["-o", "x"][..], &["-f", "json"], &["--strict"]] {
+        let mut args = vec!["serve", "in", "--port", "0"];
+        args.extend_from_slice(flags);
+        let out = rtcdoc(&args, d);
+        assert_eq!(out.status.code(), Some(2), "{flags:?}");
+        assert!(
+            stderr(&out).contains("unexpected argument"),
+            "{}",
+            stderr(&out)
+        );
+    }
+    // The first build's findings are printed before "serving at".
+    use std::io::{BufRead, BufReader};
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(["serve", "in", "--port", "0"])
+        .current_dir(d)
+        .env("NO_COLOR", "1")
+        .stderr(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = Vec::new();
+    let reader = BufReader::new(child.stderr.take().unwrap());
+    for line in reader.lines().map_while(Result::ok) {
+        let done = line.starts_with("serving at");
+        lines.push(line);
+        if done || lines.len() > 200 {
+            break;
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    let text = lines.join("\n");
+    assert!(
+        text.contains("in/bad/RTC.xml:10:5: error[RTC303]"),
+        "{text}"
+    );
+    assert!(text.contains("serving at http://127.0.0.1:"), "{text}");
+}
