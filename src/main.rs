@@ -39,7 +39,8 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Render a directory of profiles as an HTML site, Markdown, Doxygen input or JSON.
+    /// Render a directory of profiles as an HTML site, Markdown, Doxygen input or JSON; exits 1
+    /// with --strict when a profile has an error.
     Build(BuildArgs),
     /// Validate profiles (for CI); exits 1 when a profile has an error.
     Check(CheckArgs),
@@ -61,7 +62,8 @@ struct InputArgs {
     /// Glob of input-relative paths to take (repeatable); default: every file.
     #[arg(long, value_name = "GLOB")]
     include: Vec<String>,
-    /// Glob of input-relative paths to leave out (repeatable), e.g. `--exclude '**/backup/**'`.
+    /// Glob of input-relative paths to leave out (repeatable); a directory it matches is left
+    /// out whole, e.g. `--exclude examples/Templates` or `--exclude '**/backup'`.
     #[arg(long, value_name = "GLOB")]
     exclude: Vec<String>,
     /// Largest profile file accepted, in bytes [default: 16 MiB].

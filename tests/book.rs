@@ -190,3 +190,50 @@ fn check_page_repeats_the_registry() {
         assert!(check.contains(r.hint), "check.md lacks {}'s hint", r.code);
     }
 }
+
+/// The long flags `rtcdoc SUBCOMMAND --help` lists.
+fn help_flags(sub: &str) -> Vec<String> {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args([sub, "--help"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    let mut flags: Vec<String> = text
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .filter(|w| w.starts_with("--") && w.len() > 2)
+        .map(str::to_string)
+        .filter(|f| f != "--help" && f != "--version")
+        .collect();
+    flags.sort();
+    flags.dedup();
+    flags
+}
+
+/// `--help`, the command-line page of the guide and the README name the same flags.
+#[test]
+fn help_guide_and_readme_name_the_same_flags() {
+    let cli = std::fs::read_to_string(root().join("book/src/cli.md")).unwrap();
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    for sub in ["build", "check", "serve", "init"] {
+        let flags = help_flags(sub);
+        assert!(!flags.is_empty(), "{sub}");
+        for f in &flags {
+            assert!(
+                cli.contains(f.as_str()),
+                "cli.md does not mention `{sub} {f}`"
+            );
+            if sub != "init" {
+                assert!(
+                    readme.contains(f.as_str()),
+                    "README does not mention `{sub} {f}`"
+                );
+            }
+        }
+    }
+    // serve takes no output options: the guide says so, and --help does not offer them.
+    let serve = help_flags("serve");
+    for f in ["--output", "--format", "--strict"] {
+        assert!(!serve.iter().any(|s| s == f), "serve offers {f}");
+    }
+}
