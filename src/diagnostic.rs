@@ -131,5 +131,5 @@ pub mod codes {
     /// Two profiles declare the same component id.
     pub const DUPLICATE_ID: &str = "RTC010";
     /// A file named like a profile (`RTC.xml`, a backup `RTC.xml<timestamp>`) is not one.
-    pub const NOT_A_PROFILE: &str = "RTC011";
+    pub const NOT_A_PROFILE: &str = "RTC012";
 }

@@ -556,7 +556,11 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 ExitCode::SUCCESS
             }
             None => {
-                eprintln!("error: no rule has the code `{code}` (codes: RTC001–RTC010, RTC101…RTC505; see `rtcdoc check --help`)");
+                let codes: Vec<&str> = check::RULES.iter().map(|r| r.code).collect();
+                eprintln!(
+                    "error: no rule has the code `{code}`; the codes are {}",
+                    codes.join(", ")
+                );
                 ExitCode::from(2)
             }
         });

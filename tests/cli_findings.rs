@@ -197,7 +197,7 @@ fn profile_named_files_that_are_no_profiles_are_warned_about() {
         ("in/sys/RTC.xml", "RTC.xml is an RT System profile"),
     ] {
         assert!(
-            err.contains(&format!("{file}: warning[RTC011]: {what}")),
+            err.contains(&format!("{file}: warning[RTC012]: {what}")),
             "{file}: {err}"
         );
     }
@@ -206,7 +206,7 @@ fn profile_named_files_that_are_no_profiles_are_warned_about() {
     let c = rtcdoc(&["check", "in", "--format", "json"], d);
     assert_eq!(c.status.code(), Some(0));
     let v: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
-    assert_eq!(v["summary"]["byCode"]["RTC011"], 6, "{v}");
+    assert_eq!(v["summary"]["byCode"]["RTC012"], 6, "{v}");
     // A backup without .xml that is a profile is read like one with it.
     write(d, "in/old/RTC.xml20171205120156", &xml_profile("Old", &[]));
     let j = rtcdoc(&["build", "in", "-f", "json", "-o", "j"], d);

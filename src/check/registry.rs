@@ -22,7 +22,7 @@ pub struct Rule {
     pub hint: &'static str,
 }
 
-// Loader codes (RTC001–RTC010, produced by the readers, the walk and the catalogue).
+// Loader codes (RTC001–RTC099, produced by the readers, the walk and the catalogue).
 pub const MALFORMED: &str = "RTC001";
 // Schema level (spec chapter 6).
 pub const MISSING_REQUIRED: &str = "RTC101";
@@ -155,7 +155,7 @@ pub static RULES: &[Rule] = &[
         hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy (e.g. an RTCBuilder backup RTC.xml2023…)",
     },
     Rule {
-        code: "RTC011",
+        code: "RTC012",
         severity: Warning,
         name: "not-a-profile",
         summary: "a file named like a profile cannot be read as one",
