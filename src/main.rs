@@ -383,7 +383,17 @@ fn print_skipped(skipped: &[rtcdoc::walk::Skipped], root: &Path) {
         let total: usize = others.values().sum();
         let mut by: Vec<(String, usize)> = others.into_iter().collect();
         by.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
-        let list: Vec<String> = by.iter().map(|(e, n)| format!("{n} {e}")).collect();
+        // The most frequent kinds; a long tail of one-off names says nothing.
+        const KINDS: usize = 12;
+        let mut list: Vec<String> = by
+            .iter()
+            .take(KINDS)
+            .map(|(e, n)| format!("{n} {e}"))
+            .collect();
+        if by.len() > KINDS {
+            let rest: usize = by[KINDS..].iter().map(|(_, n)| n).sum();
+            list.push(format!("{rest} of {} other kinds", by.len() - KINDS));
+        }
         eprintln!(
             "skipped {total} other file(s), not .xml/.yaml/.yml: {}",
             list.join(", ")
