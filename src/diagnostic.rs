@@ -130,4 +130,6 @@ pub mod codes {
     pub const SHAPE: &str = "RTC009";
     /// Two profiles declare the same component id.
     pub const DUPLICATE_ID: &str = "RTC010";
+    /// Empty attributes or keys the spec does not define (one summary note per profile).
+    pub const EMPTY_UNKNOWN: &str = "RTC011";
 }
