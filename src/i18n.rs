@@ -233,6 +233,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("name", "Name", "名前"),
     ("no", "no", "いいえ"),
     ("no_category", "(no category)", "(カテゴリなし)"),
+    ("facet_variants", "Also written", "別の表記"),
     ("no_results", "No results", "該当なし"),
     ("no_vendor", "(no vendor)", "(ベンダーなし)"),
     ("not_found_text", "The page you asked for does not exist. Try the catalogue or the search.", "お探しのページは存在しません。カタログか検索をお試しください。"),
