@@ -222,10 +222,10 @@ pub static RULES: &[Rule] = &[
         code: ID_FORMAT,
         severity: Error,
         name: "id-format",
-        summary: "the id is not RTC:<vendor>:<category>:<name>:<version>",
+        summary: "the id is not `RTC:<vendor>:<category>:<name>:<version>`",
         explanation: "The component id has the fixed form `RTC:[vendor]:[category]:[component name]:[version]`: five parts separated by `:`, the first being `RTC`. The dotted form of RTCBuilder's first profile format and of OpenRTM-aist-Python's rtc-template, `RTC:[vendor].[category].[name]:[version]`, is read as the same parts and accepted (the JSON notes it in `writtenAs`).",
         spec: "2.3.1.1 (id)",
-        hint: "write the id as RTC:<vendor>:<category>:<name>:<version> from the BasicInfo values",
+        hint: "write the id as `RTC:<vendor>:<category>:<name>:<version>` from the BasicInfo values",
     },
     Rule {
         code: ID_MISMATCH,
