@@ -462,8 +462,9 @@ impl Catalog {
             })
             .collect();
 
-        // Duplicate ids: kept apart (both rendered), warned about.
-        let mut by_id: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
+        // Duplicate ids: kept apart (both rendered), warned about. The dotted form of
+        // RTCBuilder 0.1 names the same component as the colon form with the same parts.
+        let mut by_id: BTreeMap<String, Vec<usize>> = BTreeMap::new();
         for (i, c) in components.iter().enumerate() {
             if let Some(id) = c
                 .profile
@@ -472,7 +473,11 @@ impl Catalog {
                 .map(str::trim)
                 .filter(|s| !s.is_empty())
             {
-                by_id.entry(id).or_default().push(i);
+                let key = match crate::model::IdParts::parse(id, &c.profile.basic_info) {
+                    Some(p) => format!("RTC:{}:{}:{}:{}", p.vendor, p.category, p.name, p.version),
+                    None => id.to_string(),
+                };
+                by_id.entry(key).or_default().push(i);
             }
         }
         for (id, idx) in &by_id {

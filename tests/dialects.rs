@@ -347,3 +347,79 @@ fn dialect_fixtures_lose_nothing() {
     }
     assert!(checked > 100, "{checked}");
 }
+
+/// The dotted and the colon form of one id name the same component (RTC010).
+#[test]
+fn dotted_and_colon_ids_are_one_id() {
+    let dir = tempfile::tempdir().unwrap();
+    let old = std::fs::read_to_string(fixture("rtcbuilder01.xml")).unwrap();
+    std::fs::create_dir_all(dir.path().join("a")).unwrap();
+    std::fs::create_dir_all(dir.path().join("b")).unwrap();
+    std::fs::write(dir.path().join("a/RTC.xml"), &old).unwrap();
+    let colon = old.replace(
+        "RTC:Acme.Software algorithm.Planner:1.2.0",
+        "RTC:Acme:Software algorithm:Planner:1.2.0",
+    );
+    assert_ne!(colon, old);
+    std::fs::write(dir.path().join("b/RTC.xml"), colon).unwrap();
+    let loaded = build::load(dir.path(), &LoadOptions::default()).unwrap();
+    let r = check::check(&loaded.catalog);
+    assert_eq!(of(&r, "RTC010").len(), 2, "{:#?}", r.diagnostics);
+    // Same name, same language: told apart by folder, with readable slugs.
+    let slugs: Vec<&str> = loaded
+        .catalog
+        .components
+        .iter()
+        .map(|c| c.slug.as_str())
+        .collect();
+    assert_eq!(slugs, vec!["planner-a", "planner-b"]);
+    assert_eq!(loaded.catalog.components[0].display_name(), "Planner (a)");
+}
+
+/// Categories differing only in case or spacing are one facet; the C++ and Python variants
+/// of one component get their language as slug and qualifier.
+#[test]
+fn facets_fold_spellings_and_variants_get_language_slugs() {
+    use rtcdoc::catalog::{Catalog, LoadedProfile};
+    use rtcdoc::model::Language;
+    let comp = |name: &str, category: &str, lang: &str, source: &str| {
+        let mut p = Profile::default();
+        p.basic_info.name = Some(name.into());
+        p.basic_info.category = Some(category.into());
+        p.language = Some(Language {
+            kind: Some(lang.into()),
+            ..Default::default()
+        });
+        LoadedProfile {
+            source: source.into(),
+            format: rtcdoc::parse::SourceFormat::Xml,
+            profile: Box::new(p),
+        }
+    };
+    let cat = Catalog::build(
+        vec![
+            comp("RobotController", "Hardware Interface", "C++", "a/RTC.xml"),
+            comp(
+                "RobotController",
+                "Hardware interface",
+                "Python",
+                "b/RTC.xml",
+            ),
+            comp("Other", "Hardware interface", "C++", "c/RTC.xml"),
+        ],
+        vec![],
+    );
+    assert_eq!(cat.categories.len(), 1);
+    let f = &cat.categories[0];
+    assert_eq!(f.name, "Hardware interface");
+    assert_eq!(f.variants, vec!["Hardware Interface"]);
+    assert_eq!(f.slug, "hardware-interface");
+    assert_eq!(f.components, vec![0, 1, 2]);
+    let slugs: Vec<&str> = cat.components.iter().map(|c| c.slug.as_str()).collect();
+    assert_eq!(
+        slugs,
+        vec!["robotcontroller-cpp", "robotcontroller-python", "other"]
+    );
+    assert_eq!(cat.components[1].display_name(), "RobotController (Python)");
+    assert_eq!(cat.components[2].qualifier, None);
+}
