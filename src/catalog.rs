@@ -24,8 +24,164 @@ pub struct Component {
     pub slug: String,
     /// Anchors of the rows of the component page (ports, interfaces, parameters).
     pub anchors: Anchors,
+    /// What tells this component apart from others of the same name (the C++ and Python
+    /// variants of one component, a copy in another folder): its language, else its folder.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub qualifier: Option<String>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
+}
+
+impl Component {
+    /// The name, with the qualifier when others share it: `RobotController (Python)`.
+    pub fn display_name(&self) -> std::borrow::Cow<'_, str> {
+        match &self.qualifier {
+            Some(q) => format!("{} ({q})", self.profile.name()).into(),
+            None => self.profile.name().into(),
+        }
+    }
+}
+
+/// A slug for a qualifier (`C++` → `cpp`, `C#` → `csharp`).
+fn qualifier_slug(q: &str) -> String {
+    slugify(&q.replace("++", "pp").replace('#', "sharp"))
+}
+
+/// What tells the profiles `members` (indices into `loaded`) apart by place: the folders of
+/// their paths that they do not all share (common leading and trailing folders dropped), as
+/// few leading ones of those as make them distinct; the file name when they share a folder.
+fn folder_qualifiers(loaded: &[LoadedProfile], members: &[usize]) -> Vec<String> {
+    let dirs: Vec<Vec<&str>> = members
+        .iter()
+        .map(|&i| {
+            let mut d: Vec<&str> = loaded[i].source.split('/').collect();
+            d.pop();
+            d
+        })
+        .collect();
+    let shortest = dirs.iter().map(Vec::len).min().unwrap_or(0);
+    let prefix = (0..shortest)
+        .take_while(|&k| dirs.iter().all(|d| d[k] == dirs[0][k]))
+        .count();
+    let suffix = (0..shortest - prefix)
+        .take_while(|&k| {
+            let last = |d: &Vec<&str>| d[d.len() - 1 - k].to_string();
+            dirs.iter().all(|d| last(d) == last(&dirs[0]))
+        })
+        .count();
+    let middle: Vec<&[&str]> = dirs.iter().map(|d| &d[prefix..d.len() - suffix]).collect();
+    let longest = middle.iter().map(|m| m.len()).max().unwrap_or(0);
+    let take = |k: usize| -> Vec<String> {
+        middle
+            .iter()
+            .map(|m| m[..k.min(m.len())].join("/"))
+            .collect()
+    };
+    for k in 1..=longest {
+        let q = take(k);
+        let mut sorted = q.clone();
+        sorted.sort();
+        sorted.dedup();
+        if sorted.len() == q.len() && q.iter().all(|s| !s.is_empty()) {
+            return q;
+        }
+    }
+    members
+        .iter()
+        .map(|&i| {
+            loaded[i]
+                .source
+                .rsplit('/')
+                .next()
+                .unwrap_or("")
+                .to_string()
+        })
+        .collect()
+}
+
+/// Component slugs and qualifiers. A name used once keeps its plain slug; components sharing
+/// a name are told apart by their language when it is theirs alone among them
+/// (`robotcontroller-python`), else by language and the folders that differ
+/// (`robotcontroller-python-openrtm-rtm-tutorial-ev3`), else by the file name; a number only
+/// when all of that still collides.
+fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
+    let base: Vec<String> = loaded
+        .par_iter()
+        .map(|l| slugify(l.profile.name()))
+        .collect();
+    let mut groups: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
+    for (i, b) in base.iter().enumerate() {
+        groups.entry(b.as_str()).or_default().push(i);
+    }
+    let lang = |i: usize| -> Option<String> {
+        loaded[i]
+            .profile
+            .language
+            .as_ref()
+            .and_then(|l| crate::model::non_empty(&l.kind))
+            .map(str::to_string)
+    };
+    let mut qualifier: Vec<Option<String>> = vec![None; loaded.len()];
+    for idx in groups.values().filter(|g| g.len() > 1) {
+        let count = |l: &Option<String>| idx.iter().filter(|&&j| &lang(j) == l).count();
+        let mut rest = Vec::new();
+        for &i in idx {
+            let l = lang(i);
+            match l {
+                Some(l) if count(&Some(l.clone())) == 1 => qualifier[i] = Some(l),
+                _ => rest.push(i),
+            }
+        }
+        if rest.len() < 2 {
+            // One left without a language of its own: the others are told apart already.
+            continue;
+        }
+        let mut langs: Vec<Option<String>> = rest.iter().map(|&i| lang(i)).collect();
+        langs.sort();
+        langs.dedup();
+        for l in &langs {
+            let part: Vec<usize> = rest.iter().copied().filter(|&i| &lang(i) == l).collect();
+            let places = if part.len() > 1 {
+                folder_qualifiers(loaded, &part)
+            } else {
+                // Alone in its language (none): told apart from the rest by place.
+                let all = folder_qualifiers(loaded, &rest);
+                let at = rest.iter().position(|&i| i == part[0]).unwrap_or(0);
+                vec![all[at].clone()]
+            };
+            for (&i, place) in part.iter().zip(places) {
+                qualifier[i] = Some(match l {
+                    Some(l) if langs.len() > 1 => format!("{l}, {place}"),
+                    _ => place,
+                });
+            }
+        }
+    }
+    let mut used: HashMap<String, usize> = HashMap::new();
+    base.into_iter()
+        .zip(qualifier)
+        .zip(loaded)
+        .map(|((b, q), l)| {
+            let mut s = match &q {
+                Some(q) => format!("{b}-{}", qualifier_slug(q)),
+                // `index` is reserved for the index page of each page folder.
+                None if b == "index" => {
+                    format!("{b}-{:06x}", fnv1a(l.source.as_bytes()) as u32 & 0xff_ffff)
+                }
+                None => b,
+            };
+            if s.len() > 96 {
+                let hash = fnv1a(l.source.as_bytes()) as u32 & 0xff_ffff;
+                s = format!("{}-{hash:06x}", s[..64].trim_end_matches('-'));
+            }
+            let n = used.entry(s.clone()).or_default();
+            *n += 1;
+            if *n > 1 {
+                s = format!("{s}-{n}");
+            }
+            (s, q)
+        })
+        .collect()
 }
 
 /// Stable fragment ids for the rows of a component page, unique within the page.
@@ -104,13 +260,32 @@ impl InterfaceType {
     }
 }
 
-/// A category or vendor and its components.
+/// A category or vendor and its components. Spellings that differ only in case or spacing
+/// ("Hardware Interface" / "Hardware interface") are one facet, named by the most frequent
+/// spelling.
 #[derive(Debug, Clone, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Facet {
     pub name: String,
     pub slug: String,
     pub components: Vec<usize>,
+    /// The other spellings met, sorted (empty when all components agree).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub variants: Vec<String>,
+}
+
+/// The key that groups category and vendor spellings into one facet: lower case, without
+/// whitespace (`PointCloud`, `Pointcloud` and `Point cloud` are one).
+pub fn facet_key(s: &str) -> String {
+    s.split_whitespace()
+        .flat_map(|w| w.chars().flat_map(char::to_lowercase))
+        .collect()
+}
+
+/// The facet of `value` (a component's category or vendor, as written) among `facets`.
+pub fn facet_of<'a>(facets: &'a [Facet], value: &str) -> Option<&'a Facet> {
+    let key = facet_key(value);
+    facets.iter().find(|f| facet_key(&f.name) == key)
 }
 
 /// The whole catalogue.
@@ -270,19 +445,16 @@ impl Catalog {
     pub fn build(mut loaded: Vec<LoadedProfile>, mut diagnostics: Vec<Diagnostic>) -> Catalog {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
 
-        // Component slugs from names, disambiguated by source path.
-        let keys: Vec<(String, String)> = loaded
-            .iter()
-            .map(|l| (l.profile.name().to_string(), l.source.clone()))
-            .collect();
-        let slugs = unique_slugs(&keys);
+        // Component slugs from names, disambiguated by language or folder.
+        let slugs = component_slugs(&loaded);
         let all_anchors: Vec<Anchors> = loaded.par_iter().map(|l| anchors(&l.profile)).collect();
         let components: Vec<Component> = loaded
             .into_iter()
             .zip(slugs)
             .zip(all_anchors)
-            .map(|((l, slug), anchors)| Component {
+            .map(|((l, (slug, qualifier)), anchors)| Component {
                 anchors,
+                qualifier,
                 source: l.source,
                 format: l.format,
                 slug,
@@ -290,8 +462,9 @@ impl Catalog {
             })
             .collect();
 
-        // Duplicate ids: kept apart (both rendered), warned about.
-        let mut by_id: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
+        // Duplicate ids: kept apart (both rendered), warned about. The dotted form of
+        // RTCBuilder 0.1 names the same component as the colon form with the same parts.
+        let mut by_id: BTreeMap<String, Vec<usize>> = BTreeMap::new();
         for (i, c) in components.iter().enumerate() {
             if let Some(id) = c
                 .profile
@@ -300,7 +473,11 @@ impl Catalog {
                 .map(str::trim)
                 .filter(|s| !s.is_empty())
             {
-                by_id.entry(id).or_default().push(i);
+                let key = match crate::model::IdParts::parse(id, &c.profile.basic_info) {
+                    Some(p) => format!("RTC:{}:{}:{}:{}", p.vendor, p.category, p.name, p.version),
+                    None => id.to_string(),
+                };
+                by_id.entry(key).or_default().push(i);
             }
         }
         for (id, idx) in &by_id {
@@ -441,21 +618,42 @@ impl Catalog {
             .collect();
 
         let facet = |key: &dyn Fn(&Profile) -> Option<&str>| -> Vec<Facet> {
-            let mut m: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+            // key → (spelling → components)
+            let mut groups: BTreeMap<String, BTreeMap<String, Vec<usize>>> = BTreeMap::new();
             for (i, c) in components.iter().enumerate() {
                 let k = key(&c.profile)
                     .map(str::trim)
                     .filter(|s| !s.is_empty())
                     .unwrap_or("");
-                m.entry(k.to_string()).or_default().push(i);
+                groups
+                    .entry(facet_key(k))
+                    .or_default()
+                    .entry(k.to_string())
+                    .or_default()
+                    .push(i);
+            }
+            // Named by the most frequent spelling (the first in sort order on a tie); listed
+            // in the order of those names, as before merging.
+            let mut m: BTreeMap<String, (Vec<usize>, Vec<String>)> = BTreeMap::new();
+            for spellings in groups.into_values() {
+                let name = spellings
+                    .iter()
+                    .max_by(|a, b| a.1.len().cmp(&b.1.len()).then_with(|| b.0.cmp(a.0)))
+                    .map(|(s, _)| s.clone())
+                    .unwrap_or_default();
+                let variants = spellings.keys().filter(|s| **s != name).cloned().collect();
+                let mut members: Vec<usize> = spellings.into_values().flatten().collect();
+                members.sort_unstable();
+                m.insert(name, (members, variants));
             }
             let names: Vec<(String, String)> = m.keys().map(|k| (k.clone(), k.clone())).collect();
             m.into_iter()
                 .zip(unique_slugs(&names))
-                .map(|((name, components), slug)| Facet {
+                .map(|((name, (components, variants)), slug)| Facet {
                     name,
                     slug,
                     components,
+                    variants,
                 })
                 .collect()
         };

@@ -130,6 +130,8 @@ pub mod codes {
     pub const SHAPE: &str = "RTC009";
     /// Two profiles declare the same component id.
     pub const DUPLICATE_ID: &str = "RTC010";
+    /// Empty attributes or keys the spec does not define (one summary note per profile).
+    pub const EMPTY_UNKNOWN: &str = "RTC011";
     /// A file named like a profile (`RTC.xml`, a backup `RTC.xml<timestamp>`) is not one.
     pub const NOT_A_PROFILE: &str = "RTC012";
 }

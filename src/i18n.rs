@@ -136,6 +136,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("extra", "Extra properties", "追加プロパティ"),
     ("extra_kind", "Kind", "種別"),
     ("extra_path", "Where", "場所"),
+    ("facet_variants", "Also written", "別の表記"),
     ("fact_abstract", "Abstract", "要約"),
     ("fact_basic_info", "Basic information", "基本情報"),
     ("fact_callback", "Callback", "コールバック"),

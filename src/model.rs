@@ -96,9 +96,171 @@ pub struct Profile {
     /// System parameters (spec 5.4).
     pub parameters: Vec<Parameter>,
     pub language: Option<Language>,
+    /// Values read under another writer's spelling (RTCBuilder 0.1, rtc-template) and mapped
+    /// to the field they mean; the JSON shows what was written.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub written_as: Vec<WrittenAs>,
+    /// Positions of the `id` and `version` attributes / keys.
+    #[serde(skip)]
+    pub attr_pos: AttrPos,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
+}
+
+/// A value a profile wrote under a spelling other than spec v0.2's, read as the field it means
+/// (NOTES: "The oldest RTCBuilder format"): `rtcExt:varname` → `variableName`,
+/// `rtc:subscriprionType` → `subscriptionType`, `<rtc:Cxx/>` → language `C++`, the dotted id,
+/// activityType `EVENT_DRIVEN`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct WrittenAs {
+    /// The model field the value was read into, on its node (`dataPort out.variableName`).
+    pub field: Text,
+    /// What the profile wrote: the attribute, key or element name, or the value.
+    pub written_as: Text,
+    /// The writer generation that uses this spelling.
+    pub dialect: &'static str,
+    pub pos: Pos,
+}
+
+/// Positions of a node's known attributes (XML) or keys (YAML), by spec field name, for the
+/// rules: RTCBuilder writes an element on one long line, so the element's start can be
+/// hundreds of columns away from the attribute that is wrong. Not part of the JSON.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct AttrPos(Vec<(&'static str, Pos)>);
+
+impl AttrPos {
+    /// Records the position of `field` (the first one wins, as for the value).
+    pub fn note(&mut self, field: &'static str, pos: Pos) {
+        if !self.0.iter().any(|(f, _)| *f == field) {
+            self.0.push((field, pos));
+        }
+    }
+    /// The position of `field`, when it was written.
+    pub fn get(&self, field: &str) -> Option<Pos> {
+        self.0.iter().find(|(f, _)| *f == field).map(|(_, p)| *p)
+    }
+    /// The position of `field`, else `fallback` (the element or key of the node).
+    pub fn or(&self, field: &str, fallback: Pos) -> Pos {
+        self.get(field).unwrap_or(fallback)
+    }
+}
+
+/// The spec field name of an attribute or key the readers know on the nodes that keep
+/// positions (profile, basic info, ports, interfaces, configurations), with the older
+/// spellings mapped to the field they mean.
+pub fn field_name(local: &str) -> Option<&'static str> {
+    Some(match local {
+        "id" => "id",
+        "version" => "version",
+        "name" => "name",
+        "componentType" => "componentType",
+        "activityType" => "activityType",
+        "componentKind" => "componentKind",
+        "rtcType" => "rtcType",
+        "category" => "category",
+        "description" => "description",
+        "executionRate" => "executionRate",
+        "executionType" => "executionType",
+        "maxInstances" => "maxInstances",
+        "vendor" => "vendor",
+        "abstract" => "abstract",
+        "hardwareProfile" => "hardwareProfile",
+        "creationDate" => "creationDate",
+        "updateDate" => "updateDate",
+        "comment" | "rtcExt::comment" => "comment",
+        "saveProject" | "rtcExt::saveProject" => "saveProject",
+        "portType" => "portType",
+        "type" => "type",
+        "idlFile" => "idlFile",
+        "interfaceType" => "interfaceType",
+        "dataflowType" => "dataflowType",
+        "subscriptionType" | "subscriprionType" => "subscriptionType",
+        "unit" => "unit",
+        "variableName" | "varname" | "rtcExt::variableName" | "rtcExt::varname" => "variableName",
+        "position" | "rtcExt::position" => "position",
+        "direction" => "direction",
+        "instanceName" => "instanceName",
+        "path" => "path",
+        "defaultValue" => "defaultValue",
+        _ => return None,
+    })
+}
+
+/// The parts of a component id (spec 2.3.1.1), in either form real profiles use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IdParts<'a> {
+    pub vendor: &'a str,
+    pub category: &'a str,
+    pub name: &'a str,
+    pub version: &'a str,
+    /// `RTC:vendor.category.name:version`, the form of RTCBuilder's first profile format
+    /// (`rtc:version="0.1"`, 2009) and of OpenRTM-aist-Python's rtc-template.
+    pub dotted: bool,
+}
+
+impl<'a> IdParts<'a> {
+    /// Parses `RTC:vendor:category:name:version` or the dotted
+    /// `RTC:vendor.category.name:version`. A dotted middle part is split with the help of
+    /// `basic` (vendors such as `ysuga.net` contain dots): when BasicInfo's vendor, category and
+    /// name joined by `.` give it, those are the parts; else the vendor runs to the first dot
+    /// and the name from the last. `None` for anything else.
+    pub fn parse(id: &'a str, basic: &BasicInfo) -> Option<IdParts<'a>> {
+        let rest = id.trim().strip_prefix("RTC:")?;
+        let parts: Vec<&str> = rest.split(':').collect();
+        match parts.as_slice() {
+            [vendor, category, name, version] => Some(IdParts {
+                vendor,
+                category,
+                name,
+                version,
+                dotted: false,
+            }),
+            [middle, version] => {
+                let (v, c, n) = (
+                    basic.vendor.as_deref().unwrap_or(""),
+                    basic.category.as_deref().unwrap_or(""),
+                    basic.name.as_deref().unwrap_or(""),
+                );
+                let joined = !v.is_empty()
+                    && !c.is_empty()
+                    && !n.is_empty()
+                    && middle.len() == v.len() + c.len() + n.len() + 2
+                    && middle.starts_with(v)
+                    && middle[v.len()..].starts_with('.')
+                    && middle[v.len() + 1..].starts_with(c)
+                    && middle[v.len() + 1 + c.len()..].starts_with('.')
+                    && middle.ends_with(n);
+                let (vendor, category, name) = if joined {
+                    (
+                        &middle[..v.len()],
+                        &middle[v.len() + 1..v.len() + 1 + c.len()],
+                        &middle[middle.len() - n.len()..],
+                    )
+                } else {
+                    let first = middle.find('.')?;
+                    let last = middle.rfind('.')?;
+                    if first == last {
+                        return None;
+                    }
+                    (
+                        &middle[..first],
+                        &middle[first + 1..last],
+                        &middle[last + 1..],
+                    )
+                };
+                Some(IdParts {
+                    vendor,
+                    category,
+                    name,
+                    version,
+                    dotted: true,
+                })
+            }
+            _ => None,
+        }
+    }
 }
 
 /// Basic information (spec 2.3.2) with its Document (2.4.1) and Extended (2.5.1) parts.
@@ -128,6 +290,9 @@ pub struct BasicInfo {
     pub save_project: Option<Text>,
     pub version_up_logs: Vec<Text>,
     pub properties: Vec<Property>,
+    /// Positions of the attributes / keys, for the rules.
+    #[serde(skip)]
+    pub attr_pos: AttrPos,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -310,6 +475,8 @@ pub struct Configuration {
     pub comment: Option<Text>,
     pub variable_name: Option<Text>,
     pub properties: Vec<Property>,
+    #[serde(skip)]
+    pub attr_pos: AttrPos,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -364,6 +531,8 @@ pub struct DataPort {
     pub properties: Vec<Property>,
     /// FSM events carried by an `EventPort` (RTCBuilder 2.x).
     pub events: Vec<Event>,
+    #[serde(skip)]
+    pub attr_pos: AttrPos,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -467,6 +636,8 @@ pub struct ServicePort {
     pub comment: Option<Text>,
     pub position: Option<Text>,
     pub properties: Vec<Property>,
+    #[serde(skip)]
+    pub attr_pos: AttrPos,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -515,6 +686,8 @@ pub struct ServiceInterface {
     pub comment: Option<Text>,
     pub variable_name: Option<Text>,
     pub properties: Vec<Property>,
+    #[serde(skip)]
+    pub attr_pos: AttrPos,
     pub pos: Pos,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
@@ -707,6 +880,53 @@ impl Comparison {
             "greaterthan" => Some(Comparison::GreaterThan),
             "lessthanorequalto" => Some(Comparison::LessThanOrEqualTo),
             "greaterthanorequalto" => Some(Comparison::GreaterThanOrEqualTo),
+            _ => None,
+        }
+    }
+}
+
+/// Whether `value` of `field` is a placeholder RTCBuilder pre-fills until the user edits the
+/// field (NOTES: "RTCBuilder leaves placeholders"): vendor `VenderName` (sic), category
+/// `Category`, name `ModuleName`, description `ModuleDescription`, and template variables such
+/// as `$VenderName` in any field.
+pub fn is_placeholder(field: &str, value: &str) -> bool {
+    let v = value.trim();
+    if let Some(var) = v.strip_prefix('$') {
+        if !var.is_empty() && var.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+            return true;
+        }
+    }
+    matches!(
+        (field, v),
+        ("vendor", "VenderName")
+            | ("category", "Category")
+            | ("name", "ModuleName")
+            | ("description", "ModuleDescription")
+    )
+}
+
+/// A text that documents something: non-empty and not a placeholder of `field`.
+pub fn documented<'a>(field: &str, s: &'a Option<Text>) -> Option<&'a str> {
+    non_empty(s).filter(|v| !is_placeholder(field, v))
+}
+
+impl Constraint {
+    /// The placeholder RTCBuilder writes for a constraint nobody filled in: a unit
+    /// `propertyIsEqualTo` whose literal is `conf_constraint` (configurations) or
+    /// `dp_constraint` (data ports). Such a constraint constrains nothing.
+    pub fn placeholder(&self) -> Option<&str> {
+        let ConstraintKind::Unit { condition, .. } = &self.kind else {
+            return None;
+        };
+        match condition.as_ref() {
+            Condition::Compare {
+                comparison: Comparison::EqualTo,
+                literal: Some(l),
+                ..
+            } => {
+                let l = l.trim();
+                matches!(l, "conf_constraint" | "dp_constraint").then_some(l)
+            }
             _ => None,
         }
     }

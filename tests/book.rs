@@ -167,30 +167,6 @@ fn raw_tag_finder_finds_what_mdbook_would_take_for_html() {
     assert_eq!(raw_tags("x < y and y > z, \\<v>"), Vec::<String>::new());
 }
 
-/// The rule table and each rule's summary, explanation and hint in check.md are the registry's
-/// own text (the registry feeds `--explain` and SARIF; the guide must say the same).
-#[test]
-fn check_page_repeats_the_registry() {
-    let check = std::fs::read_to_string(root().join("book/src/check.md")).unwrap();
-    for r in rtcdoc::check::RULES {
-        let row = format!(
-            "| [{code}](#{lower}) | {sev} | `{name}` | {summary} |",
-            code = r.code,
-            lower = r.code.to_ascii_lowercase(),
-            sev = r.severity,
-            name = r.name,
-            summary = r.summary
-        );
-        assert!(check.contains(&row), "check.md lacks the row\n{row}");
-        assert!(
-            check.contains(r.explanation),
-            "check.md lacks {}'s explanation",
-            r.code
-        );
-        assert!(check.contains(r.hint), "check.md lacks {}'s hint", r.code);
-    }
-}
-
 /// The long flags `rtcdoc SUBCOMMAND --help` lists.
 fn help_flags(sub: &str) -> Vec<String> {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
@@ -236,4 +212,68 @@ fn help_guide_and_readme_name_the_same_flags() {
     for f in ["--output", "--format", "--strict"] {
         assert!(!serve.iter().any(|s| s == f), "serve offers {f}");
     }
+}
+
+/// The rule table and each rule's section of `book/src/check.md` say what the registry says
+/// (`RTCDOC_BLESS=1` rewrites them from the registry).
+#[test]
+fn check_guide_matches_the_rule_registry() {
+    let path = root().join("book/src/check.md");
+    let mut text = std::fs::read_to_string(&path).unwrap();
+    let cap = |s: &str| {
+        let mut c = s.chars();
+        c.next()
+            .map(|f| f.to_uppercase().collect::<String>() + c.as_str())
+            .unwrap_or_default()
+    };
+    let mut missing = Vec::new();
+    for r in rtcdoc::check::RULES {
+        let sev = r.severity.to_string();
+        let row = format!(
+            "| [{code}](#{lower}) | {sev} | `{name}` | {summary} |",
+            code = r.code,
+            lower = r.code.to_lowercase(),
+            name = r.name,
+            summary = r.summary
+        );
+        let section = format!(
+            "### {code}\n\n**{name}** — {sev}. {summary}.\n\n{expl}\n\n*Spec:* {spec}\n\n*Fix:* {hint}.\n",
+            code = r.code,
+            name = r.name,
+            summary = cap(r.summary),
+            expl = r.explanation,
+            spec = r.spec,
+            hint = r.hint
+        );
+        for (what, want, start) in [
+            ("row", row, format!("| [{}](#", r.code)),
+            ("section", section, format!("### {}\n", r.code)),
+        ] {
+            if text.contains(&want) {
+                continue;
+            }
+            if std::env::var_os("RTCDOC_BLESS").is_some() {
+                if let Some(at) = text.find(&start) {
+                    // Replace up to the end of the row / the `*Fix:*` line.
+                    let end_marker = if what == "row" { "\n" } else { "*Fix:*" };
+                    let from = at + text[at..].find(end_marker).unwrap_or(0);
+                    let end = from + text[from..].find('\n').map_or(0, |i| i + 1);
+                    text.replace_range(at..end, &want);
+                    if what == "row" {
+                        text.insert(at + want.len(), '\n');
+                    }
+                    continue;
+                }
+            }
+            missing.push(format!("{} {what}:\n{want}", r.code));
+        }
+    }
+    if std::env::var_os("RTCDOC_BLESS").is_some() {
+        std::fs::write(&path, &text).unwrap();
+    }
+    assert!(
+        missing.is_empty(),
+        "check.md is out of date:\n{}",
+        missing.join("\n")
+    );
 }

@@ -35,7 +35,7 @@ fn build_prints_rule_errors_and_warnings_like_cargo() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let err = stderr(&out);
     // file:line:col: severity[CODE]: message, with the path as the user can open it.
-    assert!(err.contains("in/bad/RTC.xml:10:5: error[RTC303]:"), "{err}");
+    assert!(err.contains("in/bad/RTC.xml:10:95: error[RTC303]:"), "{err}");
     assert!(err.contains("in/warn/RTC.xml:"), "{err}");
     assert!(err.contains(": warning[RTC203]:"), "{err}");
     assert!(err.contains("  = help: "), "{err}");
@@ -95,7 +95,7 @@ fn strict_build_exits_1_and_prints_the_errors() {
     let out = rtcdoc(&["build", "in", "-o", "site", "--strict"], d);
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     let err = stderr(&out);
-    assert!(err.contains("in/bad/RTC.xml:10:5: error[RTC303]:"), "{err}");
+    assert!(err.contains("in/bad/RTC.xml:10:95: error[RTC303]:"), "{err}");
     assert!(err.contains("nothing was written"), "{err}");
     assert!(!d.join("site").exists());
     // Usage errors are 2.
@@ -227,7 +227,7 @@ fn a_file_named_on_the_command_line_is_read_whatever_its_name() {
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     assert!(stderr(&out).contains("error[RTC303]"), "{}", stderr(&out));
     assert!(
-        stderr(&out).contains("backup/RTC.bak:10:5"),
+        stderr(&out).contains("backup/RTC.bak:10:95"),
         "{}",
         stderr(&out)
     );
@@ -382,7 +382,7 @@ fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
     let _ = child.wait();
     let text = lines.join("\n");
     assert!(
-        text.contains("in/bad/RTC.xml:10:5: error[RTC303]"),
+        text.contains("in/bad/RTC.xml:10:95: error[RTC303]"),
         "{text}"
     );
     assert!(text.contains("serving at http://127.0.0.1:"), "{text}");

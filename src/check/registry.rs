@@ -50,6 +50,7 @@ pub const UNKNOWN_TYPE: &str = "RTC302";
 pub const CONSTRAINT_VIOLATED: &str = "RTC303";
 pub const CONSTRAINT_LITERAL: &str = "RTC304";
 pub const CONSTRAINT_MALFORMED: &str = "RTC305";
+pub const PLACEHOLDER: &str = "RTC306";
 // Catalogue level.
 pub const UNPROVIDED_INTERFACE: &str = "RTC401";
 pub const IDL_CONFLICT: &str = "RTC402";
@@ -155,6 +156,15 @@ pub static RULES: &[Rule] = &[
         hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy (e.g. an RTCBuilder backup RTC.xml2023…)",
     },
     Rule {
+        code: "RTC011",
+        severity: Info,
+        name: "empty-unknown",
+        summary: "empty attributes or keys the spec does not define (one note per profile)",
+        explanation: "Some writers (wasanbon) put many empty attributes the spec does not define on every node (`rtcDoc:license=\"\"` on a configuration doc, …). They carry no value: they are kept in the JSON as extra properties, not shown on the page, and summarised in this one note instead of one RTC006 warning each. A non-empty unknown value is still an RTC006 warning.",
+        spec: "6 (XSD), 7 (YAML schema)",
+        hint: "nothing to do: they carry no value (wasanbon writes them); remove them to tidy the profile",
+    },
+    Rule {
         code: "RTC012",
         severity: Warning,
         name: "not-a-profile",
@@ -222,7 +232,7 @@ pub static RULES: &[Rule] = &[
         severity: Error,
         name: "id-format",
         summary: "the id is not `RTC:<vendor>:<category>:<name>:<version>`",
-        explanation: "The component id has the fixed form `RTC:[vendor]:[category]:[component name]:[version]`: five parts separated by `:`, the first being `RTC`.",
+        explanation: "The component id has the fixed form `RTC:[vendor]:[category]:[component name]:[version]`: five parts separated by `:`, the first being `RTC`. The dotted form of RTCBuilder's first profile format and of OpenRTM-aist-Python's rtc-template, `RTC:[vendor].[category].[name]:[version]`, is read as the same parts and accepted (the JSON notes it in `writtenAs`).",
         spec: "2.3.1.1 (id)",
         hint: "write the id as `RTC:<vendor>:<category>:<name>:<version>` from the BasicInfo values",
     },
@@ -371,6 +381,15 @@ pub static RULES: &[Rule] = &[
         hint: "complete the constraint (RTCBuilder's constraint editor writes well-formed ones)",
     },
     Rule {
+        code: PLACEHOLDER,
+        severity: Info,
+        name: "placeholder",
+        summary: "a value is a placeholder RTCBuilder left unfilled",
+        explanation: "RTCBuilder pre-fills fields with placeholders until the user edits them: the constraints `conf_constraint` (configuration) and `dp_constraint` (data port), vendor `VenderName`, category `Category`, name `ModuleName`, description `ModuleDescription`, and `$`-variables such as `$VenderName`. They are kept in the JSON as written, but a placeholder constraint is neither evaluated (no RTC303/RTC304) nor rendered, and a placeholder description does not count as documentation (RTC501).",
+        spec: "2.3.2 (basic_info), 2.3.17 (constraint)",
+        hint: "fill the field in RTCBuilder (or remove the placeholder constraint)",
+    },
+    Rule {
         code: UNPROVIDED_INTERFACE,
         severity: Info,
         name: "unprovided-interface",
@@ -393,9 +412,9 @@ pub static RULES: &[Rule] = &[
         severity: Info,
         name: "doc-component",
         summary: "the component has no description",
-        explanation: "The Document Profile's description is the first thing readers of the catalogue see.",
-        spec: "2.4.1 (doc_basic description)",
-        hint: "describe what the component does in rtcDoc:Doc description",
+        explanation: "The description is the first thing readers of the catalogue see. Either BasicInfo's `description` (spec 2.3.2) or the Document Profile's (2.4.1) documents the component; this fires only when neither is written (a placeholder such as `ModuleDescription` does not count).",
+        spec: "2.3.2 (basic_info description), 2.4.1 (doc_basic description)",
+        hint: "describe what the component does in BasicInfo description (or rtcDoc:Doc description)",
     },
     Rule {
         code: DOC_PORT,

@@ -6,7 +6,7 @@ use super::registry::{self as r, rule};
 use crate::catalog::{Catalog, Component};
 use crate::constraint::{self, Problem, Verdict};
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::model::{non_empty, parse_bool, Pos, Profile};
+use crate::model::{is_placeholder, non_empty, parse_bool, IdParts, Pos, Profile};
 use crate::value::{self, ValueType};
 use std::collections::{BTreeMap, HashMap};
 
@@ -46,12 +46,14 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
     names(p, &mut s);
     known_values(p, &mut s);
     configuration_values(p, &mut s);
+    placeholders(p, &mut s);
     documentation(p, &mut s);
     s.out
 }
 
 /// RTC101: required attributes (XSD `use="required"`).
 fn required(p: &Profile, s: &mut Sink) {
+    // An empty attribute is pointed at; a missing one at its element.
     let miss = |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
         if blank(v) {
             let how = if v.is_some() {
@@ -62,8 +64,18 @@ fn required(p: &Profile, s: &mut Sink) {
             s.emit(r::MISSING_REQUIRED, pos, format!("required {what} {how}"));
         }
     };
-    miss(s, "rtc_profile attribute `id`", &p.id, p.pos);
-    miss(s, "rtc_profile attribute `version`", &p.version, p.pos);
+    miss(
+        s,
+        "rtc_profile attribute `id`",
+        &p.id,
+        p.attr_pos.or("id", p.pos),
+    );
+    miss(
+        s,
+        "rtc_profile attribute `version`",
+        &p.version,
+        p.attr_pos.or("version", p.pos),
+    );
     let b = &p.basic_info;
     let bpos = if b.pos.is_unknown() { p.pos } else { b.pos };
     for (name, v) in [
@@ -78,7 +90,12 @@ fn required(p: &Profile, s: &mut Sink) {
         ("creationDate", &b.creation_date),
         ("updateDate", &b.update_date),
     ] {
-        miss(s, &format!("BasicInfo attribute `{name}`"), v, bpos);
+        miss(
+            s,
+            &format!("BasicInfo attribute `{name}`"),
+            v,
+            b.attr_pos.or(name, bpos),
+        );
     }
     if p.actions.is_empty() && p.actions_pos.is_none() {
         s.emit(
@@ -100,13 +117,18 @@ fn required(p: &Profile, s: &mut Sink) {
         }
     }
     for c in p.configurations() {
-        miss(s, "Configuration attribute `name`", &c.name, c.pos);
+        miss(
+            s,
+            "Configuration attribute `name`",
+            &c.name,
+            c.attr_pos.or("name", c.pos),
+        );
         let label = c.name.as_deref().unwrap_or("");
         miss(
             s,
             &format!("attribute `type` of configuration `{label}`"),
             &c.type_,
-            c.pos,
+            c.attr_pos.or("type", c.pos),
         );
         if c.default_value.is_none() {
             s.emit(
@@ -117,37 +139,52 @@ fn required(p: &Profile, s: &mut Sink) {
         }
     }
     for d in &p.data_ports {
-        miss(s, "DataPort attribute `name`", &d.name, d.pos);
+        miss(
+            s,
+            "DataPort attribute `name`",
+            &d.name,
+            d.attr_pos.or("name", d.pos),
+        );
         let label = d.name.as_deref().unwrap_or("");
         miss(
             s,
             &format!("attribute `portType` of data port `{label}`"),
             &d.port_type,
-            d.pos,
+            d.attr_pos.or("portType", d.pos),
         );
         miss(
             s,
             &format!("attribute `type` of data port `{label}`"),
             &d.type_,
-            d.pos,
+            d.attr_pos.or("type", d.pos),
         );
     }
     for sp in &p.service_ports {
-        miss(s, "ServicePort attribute `name`", &sp.name, sp.pos);
+        miss(
+            s,
+            "ServicePort attribute `name`",
+            &sp.name,
+            sp.attr_pos.or("name", sp.pos),
+        );
         for i in &sp.interfaces {
-            miss(s, "ServiceInterface attribute `name`", &i.name, i.pos);
+            miss(
+                s,
+                "ServiceInterface attribute `name`",
+                &i.name,
+                i.attr_pos.or("name", i.pos),
+            );
             let label = i.name.as_deref().unwrap_or("");
             miss(
                 s,
                 &format!("attribute `type` of service interface `{label}`"),
                 &i.type_,
-                i.pos,
+                i.attr_pos.or("type", i.pos),
             );
             miss(
                 s,
                 &format!("attribute `direction` of service interface `{label}`"),
                 &i.direction,
-                i.pos,
+                i.attr_pos.or("direction", i.pos),
             );
         }
     }
@@ -184,15 +221,19 @@ fn enumerations(p: &Profile, s: &mut Sink) {
         "componentType",
         &b.component_type,
         &["STATIC", "UNIQUE", "COMMUTATIVE"],
-        b.pos,
+        b.attr_pos.or("componentType", b.pos),
     );
-    exact(
-        s,
-        "activityType",
-        &b.activity_type,
-        &["PERIODIC", "SPORADIC", "EVENTDRIVEN"],
-        b.pos,
-    );
+    // `EVENT_DRIVEN` is how RTCBuilder 0.1 and rtc-template spell EVENTDRIVEN (noted in
+    // `writtenAs`, not an error).
+    if non_empty(&b.activity_type) != Some("EVENT_DRIVEN") {
+        exact(
+            s,
+            "activityType",
+            &b.activity_type,
+            &["PERIODIC", "SPORADIC", "EVENTDRIVEN"],
+            b.attr_pos.or("activityType", b.pos),
+        );
+    }
     for d in &p.data_ports {
         exact(
             s,
@@ -202,18 +243,28 @@ fn enumerations(p: &Profile, s: &mut Sink) {
             ),
             &d.port_type,
             &["DataInPort", "DataOutPort", "EventPort"],
-            d.pos,
+            d.attr_pos.or("portType", d.pos),
         );
-        position(s, &d.position, d.name.as_deref(), d.pos);
+        position(
+            s,
+            &d.position,
+            d.name.as_deref(),
+            d.attr_pos.or("position", d.pos),
+        );
     }
     for sp in &p.service_ports {
-        position(s, &sp.position, sp.name.as_deref(), sp.pos);
+        position(
+            s,
+            &sp.position,
+            sp.name.as_deref(),
+            sp.attr_pos.or("position", sp.pos),
+        );
         for i in &sp.interfaces {
             if let Some(v) = non_empty(&i.direction) {
                 if i.direction_kind().is_none() {
                     s.emit(
                         r::INVALID_ENUM,
-                        i.pos,
+                        i.attr_pos.or("direction", i.pos),
                         format!(
                             "direction `{v}` of service interface `{}` is not Provided or Required",
                             i.name.as_deref().unwrap_or("")
@@ -244,32 +295,34 @@ fn position(s: &mut Sink, v: &Option<crate::model::Text>, port: Option<&str>, po
 fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
     let b = &p.basic_info;
     if let Some(rate) = b.execution_rate.as_deref().filter(|v| !v.trim().is_empty()) {
+        let at = b.attr_pos.or("executionRate", b.pos);
         match value::parse_float(rate) {
             Some(f) if f > 0.0 => {}
             Some(_) => s.emit(
                 r::EXECUTION_RATE,
-                b.pos,
+                at,
                 format!("executionRate `{}` is not greater than 0", rate.trim()),
             ),
             None => s.emit(
                 r::EXECUTION_RATE,
-                b.pos,
+                at,
                 format!("executionRate `{}` is not a number", rate.trim()),
             ),
         }
     }
     if let Some(m) = b.max_instances.as_deref().filter(|v| !v.trim().is_empty()) {
         let t = m.trim();
+        let at = b.attr_pos.or("maxInstances", b.pos);
         match t.strip_prefix('+').unwrap_or(t).parse::<i128>() {
             Ok(n) if n >= 0 => {}
             Ok(n) => s.emit(
                 r::MAX_INSTANCES,
-                b.pos,
+                at,
                 format!("maxInstances `{n}` is negative"),
             ),
             Err(_) => s.emit(
                 r::MAX_INSTANCES,
-                b.pos,
+                at,
                 format!("maxInstances `{t}` is not an integer"),
             ),
         }
@@ -282,7 +335,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
             if let Err(why) = check_date_time(d) {
                 s.emit(
                     r::DATE_TIME,
-                    b.pos,
+                    b.attr_pos.or(name, b.pos),
                     format!("{name} `{d}` is not a valid xsd:dateTime: {why}"),
                 );
             }
@@ -394,40 +447,38 @@ fn identity(p: &Profile, s: &mut Sink) {
             if !bad.is_empty() {
                 s.emit(
                     r::VENDOR_VERSION_CHARS,
-                    bpos,
+                    b.attr_pos.or(name, bpos),
                     format!("{name} `{t}` contains {}", bad.join(" and ")),
                 );
             }
         }
     }
     let Some(id) = non_empty(&p.id) else { return };
-    let parts: Vec<&str> = id.split(':').collect();
-    if parts.len() != 5 || parts[0] != "RTC" {
-        let why = if parts.first() != Some(&"RTC") {
+    let id_pos = p.attr_pos.or("id", p.pos);
+    // Both the colon form and RTCBuilder 0.1's dotted form name the parts.
+    let Some(parts) = IdParts::parse(id, b) else {
+        let colon: Vec<&str> = id.split(':').collect();
+        let why = if colon.first() != Some(&"RTC") {
             "it does not start with `RTC:`".to_string()
         } else {
-            format!("it has {} `:`-separated parts, not 5", parts.len())
+            format!("it has {} `:`-separated parts, not 5", colon.len())
         };
         s.emit(
             r::ID_FORMAT,
-            p.pos,
+            id_pos,
             format!("id `{id}` is not RTC:<vendor>:<category>:<name>:<version>: {why}"),
         );
         return;
-    }
-    for (i, (name, v)) in [
-        ("vendor", &b.vendor),
-        ("category", &b.category),
-        ("name", &b.name),
-        ("version", &b.version),
-    ]
-    .into_iter()
-    .enumerate()
-    {
+    };
+    for (name, v, got) in [
+        ("vendor", &b.vendor, parts.vendor),
+        ("category", &b.category, parts.category),
+        ("name", &b.name, parts.name),
+        ("version", &b.version, parts.version),
+    ] {
         let Some(expected) = v.as_deref() else {
             continue;
         };
-        let got = parts[i + 1];
         if got != expected {
             let squash = |t: &str| t.split_whitespace().collect::<String>();
             let note = if squash(got) == squash(expected) {
@@ -439,7 +490,7 @@ fn identity(p: &Profile, s: &mut Sink) {
             };
             s.emit(
                 r::ID_MISMATCH,
-                p.pos,
+                id_pos,
                 format!(
                     "the {name} part of the id is `{got}` but BasicInfo {name} is `{expected}`{note}"
                 ),
@@ -481,20 +532,27 @@ fn names<'a>(p: &'a Profile, s: &mut Sink) {
             }
         };
     for d in &p.data_ports {
-        ws(s, "data port", &d.name, d.pos);
-        port(s, "data port", &d.name, d.pos);
+        let at = d.attr_pos.or("name", d.pos);
+        ws(s, "data port", &d.name, at);
+        port(s, "data port", &d.name, at);
     }
     for sp in &p.service_ports {
-        ws(s, "service port", &sp.name, sp.pos);
-        port(s, "service port", &sp.name, sp.pos);
+        let at = sp.attr_pos.or("name", sp.pos);
+        ws(s, "service port", &sp.name, at);
+        port(s, "service port", &sp.name, at);
         let mut seen: HashMap<&str, Pos> = HashMap::new();
         for i in &sp.interfaces {
-            ws(s, "service interface", &i.name, i.pos);
+            ws(
+                s,
+                "service interface",
+                &i.name,
+                i.attr_pos.or("name", i.pos),
+            );
             if let Some(n) = non_empty(&i.name) {
                 if let Some(first) = seen.get(n) {
                     s.emit(
                         r::DUPLICATE_INTERFACE,
-                        i.pos,
+                        i.attr_pos.or("name", i.pos),
                         format!(
                             "service port `{}` has two interfaces named `{n}` (the first at line {})",
                             sp.name.as_deref().unwrap_or(""),
@@ -509,12 +567,12 @@ fn names<'a>(p: &'a Profile, s: &mut Sink) {
     }
     let mut seen: HashMap<&str, Pos> = HashMap::new();
     for c in p.configurations() {
-        ws(s, "configuration", &c.name, c.pos);
+        ws(s, "configuration", &c.name, c.attr_pos.or("name", c.pos));
         if let Some(n) = non_empty(&c.name) {
             if let Some(first) = seen.get(n) {
                 s.emit(
                     r::DUPLICATE_PARAMETER,
-                    c.pos,
+                    c.attr_pos.or("name", c.pos),
                     format!(
                         "configuration `{n}` is declared twice (the first at line {})",
                         first.line
@@ -632,7 +690,7 @@ fn known_values(p: &Profile, s: &mut Sink) {
         "componentKind",
         &b.component_kind,
         COMPONENT_KINDS,
-        b.pos,
+        b.attr_pos.or("componentKind", b.pos),
     );
     check(
         s,
@@ -640,7 +698,7 @@ fn known_values(p: &Profile, s: &mut Sink) {
         "executionType",
         &b.execution_type,
         EXECUTION_TYPES,
-        b.pos,
+        b.attr_pos.or("executionType", b.pos),
     );
     for d in &p.data_ports {
         let n = d.name.as_deref().unwrap_or("");
@@ -650,7 +708,7 @@ fn known_values(p: &Profile, s: &mut Sink) {
             &format!("interfaceType of data port `{n}`:"),
             &d.interface_type,
             INTERFACE_TYPES,
-            d.pos,
+            d.attr_pos.or("interfaceType", d.pos),
         );
         check(
             s,
@@ -658,7 +716,7 @@ fn known_values(p: &Profile, s: &mut Sink) {
             &format!("dataflowType of data port `{n}`:"),
             &d.dataflow_type,
             DATAFLOW_TYPES,
-            d.pos,
+            d.attr_pos.or("dataflowType", d.pos),
         );
         check(
             s,
@@ -666,7 +724,7 @@ fn known_values(p: &Profile, s: &mut Sink) {
             &format!("subscriptionType of data port `{n}`:"),
             &d.subscription_type,
             SUBSCRIPTION_TYPES,
-            d.pos,
+            d.attr_pos.or("subscriptionType", d.pos),
         );
     }
 }
@@ -681,7 +739,7 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
                 if ty == ValueType::Unknown {
                     s.emit(
                         r::UNKNOWN_TYPE,
-                        c.pos,
+                        c.attr_pos.or("type", c.pos),
                         format!("configuration `{name}` has type `{t}`, which rtcdoc cannot check"),
                     );
                 }
@@ -695,7 +753,7 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
                 default_ok = false;
                 s.emit(
                     r::DEFAULT_TYPE,
-                    c.pos,
+                    c.attr_pos.or("defaultValue", c.pos),
                     format!(
                         "default value `{v}` of configuration `{name}` is not a valid {}: {why}",
                         c.type_.as_deref().unwrap_or("").trim()
@@ -704,6 +762,10 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
             }
         }
         let Some(k) = &c.constraint else { continue };
+        // RTCBuilder's `conf_constraint` constrains nothing (RTC306 reports it).
+        if k.placeholder().is_some() {
+            continue;
+        }
         let problems = constraint::problems(k, ty);
         for pr in &problems {
             match pr {
@@ -736,7 +798,7 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
             Verdict::Satisfied => {}
             Verdict::Violated(why) => s.emit(
                 r::CONSTRAINT_VIOLATED,
-                c.pos,
+                c.attr_pos.or("defaultValue", c.pos),
                 format!(
                     "default value `{v}` of configuration `{name}` does not satisfy its constraint `{}`: {why}",
                     constraint::describe(k)
@@ -752,7 +814,7 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
         }
     }
     for d in &p.data_ports {
-        if let Some(k) = &d.constraint {
+        if let Some(k) = d.constraint.as_ref().filter(|k| k.placeholder().is_none()) {
             for pr in constraint::problems(k, ValueType::Unknown) {
                 if let Problem::Structure { pos, message } = pr {
                     s.emit(
@@ -787,9 +849,15 @@ pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Sink>) -> (usize, usize)
         }
     };
     let b = &p.basic_info;
+    // BasicInfo's description (2.3.2) documents the component as well as the Document
+    // Profile's (2.4.1): the page shows either. A placeholder (`ModuleDescription`) does not.
+    let described = [Some(&b.description), b.doc.as_ref().map(|d| &d.description)]
+        .into_iter()
+        .flatten()
+        .find(|d| crate::model::documented("description", d).is_some());
     item(
         &mut s,
-        b.doc.as_ref().map(|d| &d.description),
+        described,
         r::DOC_COMPONENT,
         if b.pos.is_unknown() { p.pos } else { b.pos },
         format!("component `{}` has no description", p.name()),
@@ -855,6 +923,71 @@ pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Sink>) -> (usize, usize)
         );
     }
     (documented, total)
+}
+
+/// RTC306: placeholders RTCBuilder pre-fills and nobody edited.
+fn placeholders(p: &Profile, s: &mut Sink) {
+    let b = &p.basic_info;
+    for (field, v) in [
+        ("vendor", &b.vendor),
+        ("category", &b.category),
+        ("name", &b.name),
+        ("description", &b.description),
+    ] {
+        if let Some(t) = non_empty(v).filter(|t| is_placeholder(field, t)) {
+            s.emit(
+                r::PLACEHOLDER,
+                b.attr_pos.or(field, b.pos),
+                format!("BasicInfo {field} `{t}` is RTCBuilder's placeholder, never filled in"),
+            );
+        }
+    }
+    if let Some(t) = b
+        .doc
+        .as_ref()
+        .and_then(|d| non_empty(&d.description))
+        .filter(|t| is_placeholder("description", t))
+    {
+        s.emit(
+            r::PLACEHOLDER,
+            b.doc.as_ref().map_or(b.pos, |d| d.pos),
+            format!("the component description `{t}` is RTCBuilder's placeholder, never filled in"),
+        );
+    }
+    for c in p.configurations() {
+        if let Some(l) = c
+            .constraint
+            .as_ref()
+            .and_then(|k| k.placeholder().map(|l| (k, l)))
+        {
+            s.emit(
+                r::PLACEHOLDER,
+                l.0.pos,
+                format!(
+                    "the constraint of configuration `{}` is RTCBuilder's placeholder `{}`; it constrains nothing",
+                    c.name.as_deref().unwrap_or(""),
+                    l.1
+                ),
+            );
+        }
+    }
+    for d in &p.data_ports {
+        if let Some(l) = d
+            .constraint
+            .as_ref()
+            .and_then(|k| k.placeholder().map(|l| (k, l)))
+        {
+            s.emit(
+                r::PLACEHOLDER,
+                l.0.pos,
+                format!(
+                    "the constraint of data port `{}` is RTCBuilder's placeholder `{}`; it constrains nothing",
+                    d.name.as_deref().unwrap_or(""),
+                    l.1
+                ),
+            );
+        }
+    }
 }
 
 fn documentation(p: &Profile, s: &mut Sink) {

@@ -3,6 +3,7 @@
 //! One module per input format. Readers never perform I/O; positions are captured here so that
 //! later stages can point at the source.
 
+pub mod dialect;
 pub mod xml;
 pub mod yaml;
 mod yaml_fast;
@@ -86,5 +87,6 @@ pub fn parse(
     // The model keeps actions in spec order whatever order the file used (RTCBuilder's YAML
     // sorts keys alphabetically).
     parsed.profile.actions.sort_by_key(|a| a.kind);
+    dialect::annotate(&mut parsed.profile);
     Ok(parsed)
 }

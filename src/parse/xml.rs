@@ -108,8 +108,14 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
     let mut m = Mapper {
         file,
         diags: Vec::new(),
+        empties: super::dialect::EmptyUnknowns::default(),
+        written_as: Vec::new(),
     };
-    let profile = map_profile(&mut m, &root);
+    let mut profile = map_profile(&mut m, &root);
+    profile.written_as = std::mem::take(&mut m.written_as);
+    if let Some(d) = m.empties.note(file, profile.pos, "attribute") {
+        m.diags.push(d);
+    }
     Ok(Parsed {
         profile,
         diagnostics: m.diags,
@@ -973,6 +979,10 @@ fn malformed(
 struct Mapper<'f> {
     file: &'f str,
     diags: Vec<Diagnostic>,
+    /// Empty unknown attributes (wasanbon writes many): summarised in one note.
+    empties: super::dialect::EmptyUnknowns,
+    /// Values read under an older spelling, for [`Profile::written_as`].
+    written_as: Vec<WrittenAs>,
 }
 
 impl Mapper<'_> {
@@ -981,8 +991,15 @@ impl Mapper<'_> {
             .push(Diagnostic::warning(codes::UNKNOWN, self.file, msg).at(pos));
     }
 
-    /// An attribute the spec does not define on `on`.
+    /// An attribute the spec does not define on `on`. An empty one (`rtcDoc:license=""` on a
+    /// configuration doc, as wasanbon writes them by the dozen) says nothing: it is kept, and
+    /// counted for the profile's one summary note instead of a warning of its own.
     fn unknown_attr(&mut self, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
+        if a.value.trim().is_empty() {
+            self.empties.add(&a.qname);
+            extra.push(attr_extra(a));
+            return;
+        }
         self.warn(
             a.pos,
             format!(
@@ -1110,6 +1127,25 @@ fn node_extra(n: &Node) -> Extra {
     }
 }
 
+impl Mapper<'_> {
+    /// Records that attribute `a` was read as `field` of `node` under an older spelling.
+    fn alias(&mut self, node: &str, field: &str, a: &Attr, dialect: &'static str) {
+        self.written_as.push(WrittenAs {
+            field: compact_str::format_compact!("{node}.{field}"),
+            written_as: (&*a.qname).into(),
+            dialect,
+            pos: a.pos,
+        });
+    }
+}
+
+/// Records the position of a known attribute in `pos` (by its spec field name).
+fn note_pos(pos: &mut AttrPos, a: &Attr) {
+    if let Some(f) = a.key().and_then(field_name) {
+        pos.note(f, a.pos);
+    }
+}
+
 /// Non-empty text of a text element (whitespace-only counts as empty).
 fn non_blank(s: &str) -> Option<Text> {
     (!s.trim().is_empty()).then(|| s.into())
@@ -1124,6 +1160,7 @@ fn map_profile(m: &mut Mapper, n: &Node) -> Profile {
     };
     let mut extra = Vec::new();
     for a in &n.attrs {
+        note_pos(&mut p.attr_pos, a);
         let slot = match a.key() {
             Some("id") => &mut p.id,
             Some("version") => &mut p.version,
@@ -1172,6 +1209,7 @@ fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
     };
     let mut extra = Vec::new();
     for a in &n.attrs {
+        note_pos(&mut b.attr_pos, a);
         let slot = match a.key() {
             Some("name") => &mut b.name,
             Some("componentType") => &mut b.component_type,
@@ -1349,7 +1387,9 @@ fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
         ..Default::default()
     };
     let mut extra = Vec::new();
+    let mut aliases = Vec::new();
     for a in &n.attrs {
+        note_pos(&mut cf.attr_pos, a);
         let slot = match a.key() {
             Some("name") => &mut cf.name,
             Some("type") => &mut cf.type_,
@@ -1357,6 +1397,11 @@ fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
             Some("unit") => &mut cf.unit,
             Some("comment") => &mut cf.comment,
             Some("variableName") => &mut cf.variable_name,
+            // RTCBuilder 0.1 / rtc-template: `varname` is the variable name.
+            Some("varname") => {
+                aliases.push(("variableName", a));
+                &mut cf.variable_name
+            }
             _ => {
                 m.unknown_attr(a, on, &mut extra);
                 continue;
@@ -1401,6 +1446,10 @@ fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
         }
     }
     m.stray_text(n, on, &mut extra);
+    let node = format!("configuration {}", cf.name.as_deref().unwrap_or(""));
+    for (field, a) in aliases {
+        m.alias(&node, field, a, super::dialect::RTCBUILDER_01);
+    }
     cf.extra = extra;
     cf
 }
@@ -1437,7 +1486,9 @@ fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
         ..Default::default()
     };
     let mut extra = Vec::new();
+    let mut aliases = Vec::new();
     for a in &n.attrs {
+        note_pos(&mut d.attr_pos, a);
         let slot = match a.key() {
             Some("portType") => &mut d.port_type,
             Some("name") => &mut d.name,
@@ -1446,9 +1497,19 @@ fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
             Some("interfaceType") => &mut d.interface_type,
             Some("dataflowType") => &mut d.dataflow_type,
             Some("subscriptionType") => &mut d.subscription_type,
+            // RTCBuilder 0.1 (2009) misspells it.
+            Some("subscriprionType") => {
+                aliases.push(("subscriptionType", a));
+                &mut d.subscription_type
+            }
             Some("unit") => &mut d.unit,
             Some("comment") => &mut d.comment,
             Some("variableName") => &mut d.variable_name,
+            // RTCBuilder 0.1: `rtcExt:varname` is the variable name.
+            Some("varname") => {
+                aliases.push(("variableName", a));
+                &mut d.variable_name
+            }
             Some("position") => &mut d.position,
             _ => {
                 m.unknown_attr(a, on, &mut extra);
@@ -1472,6 +1533,10 @@ fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
         }
     }
     m.stray_text(n, on, &mut extra);
+    let node = format!("dataPort {}", d.name.as_deref().unwrap_or(""));
+    for (field, a) in aliases {
+        m.alias(&node, field, a, super::dialect::RTCBUILDER_01);
+    }
     d.extra = extra;
     d
 }
@@ -1548,6 +1613,7 @@ fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
     };
     let mut extra = Vec::new();
     for a in &n.attrs {
+        note_pos(&mut s.attr_pos, a);
         let slot = match a.key() {
             Some("name") => &mut s.name,
             Some("comment") => &mut s.comment,
@@ -1620,7 +1686,9 @@ fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
         ..Default::default()
     };
     let mut extra = Vec::new();
+    let mut aliases = Vec::new();
     for a in &n.attrs {
+        note_pos(&mut s.attr_pos, a);
         let slot = match a.key() {
             Some("name") => &mut s.name,
             Some("type") => &mut s.type_,
@@ -1630,6 +1698,11 @@ fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
             Some("path") => &mut s.path,
             Some("comment") => &mut s.comment,
             Some("variableName") => &mut s.variable_name,
+            // RTCBuilder 0.1: `rtc:varname` is the variable name.
+            Some("varname") => {
+                aliases.push(("variableName", a));
+                &mut s.variable_name
+            }
             _ => {
                 m.unknown_attr(a, on, &mut extra);
                 continue;
@@ -1671,6 +1744,10 @@ fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
         }
     }
     m.stray_text(n, on, &mut extra);
+    let node = format!("serviceInterface {}", s.name.as_deref().unwrap_or(""));
+    for (field, a) in aliases {
+        m.alias(&node, field, a, super::dialect::RTCBUILDER_01);
+    }
     s.extra = extra;
     s
 }
@@ -1716,12 +1793,84 @@ fn map_language(m: &mut Mapper, n: &Node) -> Language {
     for c in &n.children {
         match c.key() {
             Some("targets") => l.targets.push(map_target(m, c)),
+            Some(k) if super::dialect::language_element(k).is_some() => {
+                map_language_element(m, c, &mut l)
+            }
             _ => m.unknown_elem(c, on, &mut extra),
         }
     }
     m.stray_text(n, on, &mut extra);
     l.extra = extra;
     l
+}
+
+/// RTCBuilder 0.1's `<rtc:Language>` names the language by a child element (`<rtc:Cxx
+/// rtc:arch="" rtc:os="etc"/>`, `<rtc:Python/>`, `<rtc:Java/>`) instead of `rtc:kind`: that
+/// is the kind, and the child's attributes describe the target (`os`, `arch` → cpus,
+/// `osVersion`, `langVersion`, `library` children).
+fn map_language_element(m: &mut Mapper, c: &Node, l: &mut Language) {
+    let Some(kind) = c.key().and_then(super::dialect::language_element) else {
+        return;
+    };
+    let on = format!("language `{}`", c.qname);
+    if l.kind.is_none() {
+        l.kind = Some(kind.into());
+        m.written_as.push(WrittenAs {
+            field: "language.kind".into(),
+            written_as: (&*c.qname).into(),
+            dialect: super::dialect::RTCBUILDER_01,
+            pos: c.pos,
+        });
+    }
+    let mut t = Target {
+        pos: c.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &c.attrs {
+        match a.key() {
+            Some("os") => m.set(&mut t.os, a, &on, &mut extra),
+            Some("langVersion") => m.set(&mut t.lang_version, a, &on, &mut extra),
+            Some("other") => m.set(&mut t.other, a, &on, &mut extra),
+            Some("cpuOther") => m.set(&mut t.cpu_other, a, &on, &mut extra),
+            Some("arch" | "cpu") => {
+                if let Some(v) = non_blank(&a.value) {
+                    t.cpus.push(v);
+                }
+            }
+            Some("osVersion" | "osVersions") => {
+                if let Some(v) = non_blank(&a.value) {
+                    t.os_versions.push(v);
+                }
+            }
+            _ => m.unknown_attr(a, &on, &mut extra),
+        }
+    }
+    for lc in &c.children {
+        match lc.key() {
+            Some("library" | "libraries") if lc.attrs.is_empty() => {
+                let name = m.text_of(lc, &on, &mut extra);
+                if let Some(name) = non_blank(&name) {
+                    t.libraries.push(Library {
+                        name: Some(name),
+                        pos: lc.pos,
+                        ..Default::default()
+                    });
+                }
+            }
+            Some("library" | "libraries") => t.libraries.push(map_library(m, lc)),
+            _ => m.unknown_elem(lc, &on, &mut extra),
+        }
+    }
+    m.stray_text(c, &on, &mut extra);
+    t.extra = extra;
+    // An empty `<rtc:Cxx/>` names the language and nothing more.
+    if t != (Target {
+        pos: c.pos,
+        ..Default::default()
+    }) {
+        l.targets.push(t);
+    }
 }
 
 /// spec 2.5.7 `target_environment`.

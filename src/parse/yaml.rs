@@ -123,6 +123,8 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         file,
         loc: Locator::new(src),
         diags: Vec::new(),
+        empties: super::dialect::EmptyUnknowns::default(),
+        written_as: Vec::new(),
     };
     let mut profile = Profile::default();
     for (k, v) in &root {
@@ -133,6 +135,10 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         } else {
             r.unknown(&name, v, pos, "the document root", &mut profile.extra);
         }
+    }
+    profile.written_as = std::mem::take(&mut r.written_as);
+    if let Some(d) = r.empties.note(file, profile.pos, "key") {
+        r.diags.push(d);
     }
     Ok(Parsed {
         profile,
@@ -575,7 +581,14 @@ struct Reader<'a> {
     file: &'a str,
     loc: Locator<'a>,
     diags: Vec<Diagnostic>,
+    /// Empty unknown keys: summarised in one note.
+    empties: super::dialect::EmptyUnknowns,
+    /// Keys read under an older spelling, for [`Profile::written_as`].
+    written_as: Vec<WrittenAs>,
 }
+
+/// Keys of one node read under an older spelling: (field, key as written, position).
+type Aliases = Vec<(&'static str, String, Pos)>;
 
 /// Text of a scalar key (keys are normally strings).
 fn key_text(k: &Value) -> String {
@@ -696,8 +709,20 @@ impl Reader<'_> {
             .push(Diagnostic::warning(code, self.file, msg).at(pos));
     }
 
-    /// An unknown key: kept as an extra, with an `UNKNOWN` warning.
+    /// An unknown key: kept as an extra, with an `UNKNOWN` warning — or, when its value is
+    /// empty (null or `""`), counted for the profile's one summary note.
     fn unknown(&mut self, name: &str, v: &Value, pos: Pos, place: &str, sink: &mut Vec<Extra>) {
+        let empty = match untag_ref(v) {
+            Value::Null => true,
+            Value::String(t) => t.trim().is_empty(),
+            _ => false,
+        };
+        if empty {
+            self.empties.add(name);
+            let e = self.extra(name, v, pos);
+            sink.push(e);
+            return;
+        }
         self.warn(
             codes::UNKNOWN,
             pos,
@@ -719,6 +744,23 @@ impl Reader<'_> {
         );
         let e = self.extra(name, v, pos);
         sink.push(e);
+    }
+
+    /// Moves the aliases of a node into [`Profile::written_as`] as `node.field`.
+    fn flush(&mut self, node: &str, aliases: Aliases) {
+        for (field, written, pos) in aliases {
+            let dialect = if written == "subscriprionType" {
+                super::dialect::RTCBUILDER_01
+            } else {
+                super::dialect::RTC_TEMPLATE
+            };
+            self.written_as.push(WrittenAs {
+                field: compact_str::format_compact!("{node}.{field}"),
+                written_as: written.into(),
+                dialect,
+                pos,
+            });
+        }
     }
 
     /// Converts a subtree to an [`Extra`] (positions of nested keys included).
@@ -910,6 +952,9 @@ impl Reader<'_> {
         };
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if let Some(f) = field_name(&n) {
+                p.attr_pos.note(f, kp);
+            }
             match n.as_str() {
                 "id" => p.id = self.text(v, &n, kp, &mut p.extra),
                 "version" => p.version = self.text(v, &n, kp, &mut p.extra),
@@ -968,8 +1013,23 @@ impl Reader<'_> {
         let Some(m) = self.map(v, "basicInfo", pos, outer) else {
             return;
         };
+        let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if let Some(f) = field_name(&n) {
+                b.attr_pos.note(f, kp);
+            }
+            if matches!(n.as_str(), "doc" | "versionUpLog") {
+                al.push((
+                    if n == "doc" {
+                        "rtcDoc::doc"
+                    } else {
+                        "rtcExt::versionUpLogs"
+                    },
+                    n.clone(),
+                    kp,
+                ));
+            }
             let x = &mut b.extra;
             match n.as_str() {
                 "name" => b.name = self.text(v, &n, kp, x),
@@ -990,13 +1050,13 @@ impl Reader<'_> {
                 "updateDate" => b.update_date = self.date(v, &n, kp, x),
                 "rtcExt::comment" => b.comment = self.text(v, &n, kp, x),
                 "rtcExt::saveProject" => b.save_project = self.text(v, &n, kp, x),
-                "rtcExt::versionUpLogs" | "rtcExt::versionUpLog" => {
+                "rtcExt::versionUpLogs" | "rtcExt::versionUpLog" | "versionUpLog" => {
                     b.version_up_logs = self.texts(v, &n, kp, x)
                 }
                 "rtcExt::property" | "rtcExt::properties" => {
                     b.properties = self.properties(v, &n, kp, x)
                 }
-                "rtcDoc::doc" => {
+                "rtcDoc::doc" | "doc" => {
                     if let Some(m) = self.map(v, &n, kp, x) {
                         let mut d = BasicDoc {
                             pos: kp,
@@ -1021,6 +1081,7 @@ impl Reader<'_> {
                 _ => self.unknown(&n, v, kp, "basicInfo", x),
             }
         }
+        self.flush("basicInfo", al);
     }
 
     /// A date: a chapter 7 `dateType` map (→ ISO 8601) or a plain string kept as written.
@@ -1115,12 +1176,16 @@ impl Reader<'_> {
                 pos: kp,
                 extra: Vec::new(),
             };
+            let mut al = Aliases::new();
             if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
                 for (k, v) in m {
                     let (n, kp) = self.key(k);
+                    if n == "doc" {
+                        al.push(("rtcDoc::doc", n.clone(), kp));
+                    }
                     match n.as_str() {
                         "implemented" => a.implemented = self.text(v, &n, kp, &mut a.extra),
-                        "rtcDoc::doc" => {
+                        "rtcDoc::doc" | "doc" => {
                             if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
                                 let mut d = ActionDoc {
                                     pos: kp,
@@ -1145,6 +1210,7 @@ impl Reader<'_> {
                     }
                 }
             }
+            self.flush(&format!("actions.{}", kind.yaml_name()), al);
             p.actions.push(a);
         }
     }
@@ -1169,8 +1235,17 @@ impl Reader<'_> {
                     pos: ip,
                     ..Configuration::default()
                 };
+                let mut al = Aliases::new();
                 for (k, v) in m {
                     let (n, kp) = self.key(k);
+                    if let Some(f) = field_name(&n) {
+                        c.attr_pos.note(f, kp);
+                    }
+                    match n.as_str() {
+                        "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
+                        "varname" | "rtcExt::varname" => al.push(("variableName", n.clone(), kp)),
+                        _ => {}
+                    }
                     let x = &mut c.extra;
                     match n.as_str() {
                         "name" => c.name = self.text(v, &n, kp, x),
@@ -1179,11 +1254,13 @@ impl Reader<'_> {
                         "unit" => c.unit = self.text(v, &n, kp, x),
                         "constraint" => c.constraint = self.constraint_root(v, kp, x),
                         "rtcExt::comment" => c.comment = self.text(v, &n, kp, x),
-                        "rtcExt::variableName" => c.variable_name = self.text(v, &n, kp, x),
+                        "rtcExt::variableName" | "rtcExt::varname" | "varname" => {
+                            c.variable_name = self.text(v, &n, kp, x)
+                        }
                         "rtcExt::property" | "rtcExt::properties" => {
                             c.properties = self.properties(v, &n, kp, x)
                         }
-                        "rtcDoc::doc" => {
+                        "rtcDoc::doc" | "doc" => {
                             if let Some(m) = self.map(v, &n, kp, x) {
                                 let mut d = ConfigurationDoc {
                                     pos: kp,
@@ -1214,6 +1291,10 @@ impl Reader<'_> {
                         _ => self.unknown(&n, v, kp, "a configuration", x),
                     }
                 }
+                self.flush(
+                    &format!("configuration {}", c.name.as_deref().unwrap_or("")),
+                    al,
+                );
                 cs.configurations.push(c);
             }
         }
@@ -1226,8 +1307,19 @@ impl Reader<'_> {
             pos,
             ..DataPort::default()
         };
+        let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if let Some(f) = field_name(&n) {
+                d.attr_pos.note(f, kp);
+            }
+            match n.as_str() {
+                "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
+                "position" => al.push(("position", n.clone(), kp)),
+                "varname" | "rtcExt::varname" => al.push(("variableName", n.clone(), kp)),
+                "subscriprionType" => al.push(("subscriptionType", n.clone(), kp)),
+                _ => {}
+            }
             let x = &mut d.extra;
             match n.as_str() {
                 "portType" => d.port_type = self.text(v, &n, kp, x),
@@ -1236,16 +1328,20 @@ impl Reader<'_> {
                 "idlFile" => d.idl_file = self.text(v, &n, kp, x),
                 "interfaceType" => d.interface_type = self.text(v, &n, kp, x),
                 "dataflowType" => d.dataflow_type = self.text(v, &n, kp, x),
-                "subscriptionType" => d.subscription_type = self.text(v, &n, kp, x),
+                "subscriptionType" | "subscriprionType" => {
+                    d.subscription_type = self.text(v, &n, kp, x)
+                }
                 "unit" => d.unit = self.text(v, &n, kp, x),
                 "constraint" => d.constraint = self.constraint_root(v, kp, x),
                 "rtcExt::comment" => d.comment = self.text(v, &n, kp, x),
-                "rtcExt::variableName" => d.variable_name = self.text(v, &n, kp, x),
-                "rtcExt::position" => d.position = self.text(v, &n, kp, x),
+                "rtcExt::variableName" | "rtcExt::varname" | "varname" => {
+                    d.variable_name = self.text(v, &n, kp, x)
+                }
+                "rtcExt::position" | "position" => d.position = self.text(v, &n, kp, x),
                 "rtcExt::property" | "rtcExt::properties" => {
                     d.properties = self.properties(v, &n, kp, x)
                 }
-                "rtcDoc::doc" => {
+                "rtcDoc::doc" | "doc" => {
                     if let Some(m) = self.map(v, &n, kp, x) {
                         let mut doc = DataPortDoc {
                             pos: kp,
@@ -1274,6 +1370,7 @@ impl Reader<'_> {
                 _ => self.unknown(&n, v, kp, "a data port", x),
             }
         }
+        self.flush(&format!("dataPort {}", d.name.as_deref().unwrap_or("")), al);
         d
     }
 
@@ -1283,13 +1380,22 @@ impl Reader<'_> {
             pos,
             ..ServicePort::default()
         };
+        let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if let Some(f) = field_name(&n) {
+                s.attr_pos.note(f, kp);
+            }
+            match n.as_str() {
+                "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
+                "position" => al.push(("position", n.clone(), kp)),
+                _ => {}
+            }
             let x = &mut s.extra;
             match n.as_str() {
                 "name" => s.name = self.text(v, &n, kp, x),
                 "rtcExt::comment" => s.comment = self.text(v, &n, kp, x),
-                "rtcExt::position" => s.position = self.text(v, &n, kp, x),
+                "rtcExt::position" | "position" => s.position = self.text(v, &n, kp, x),
                 "rtcExt::property" | "rtcExt::properties" => {
                     s.properties = self.properties(v, &n, kp, x)
                 }
@@ -1321,7 +1427,7 @@ impl Reader<'_> {
                         s.interfaces.push(i);
                     }
                 }
-                "rtcDoc::doc" => {
+                "rtcDoc::doc" | "doc" => {
                     if let Some(m) = self.map(v, &n, kp, x) {
                         let mut d = ServicePortDoc {
                             pos: kp,
@@ -1342,6 +1448,10 @@ impl Reader<'_> {
                 _ => self.unknown(&n, v, kp, "a service port", x),
             }
         }
+        self.flush(
+            &format!("servicePort {}", s.name.as_deref().unwrap_or("")),
+            al,
+        );
         s
     }
 
@@ -1351,8 +1461,17 @@ impl Reader<'_> {
             pos,
             ..ServiceInterface::default()
         };
+        let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if let Some(f) = field_name(&n) {
+                i.attr_pos.note(f, kp);
+            }
+            match n.as_str() {
+                "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
+                "varname" | "rtcExt::varname" => al.push(("variableName", n.clone(), kp)),
+                _ => {}
+            }
             let x = &mut i.extra;
             match n.as_str() {
                 "name" => i.name = self.text(v, &n, kp, x),
@@ -1362,11 +1481,13 @@ impl Reader<'_> {
                 "idlFile" => i.idl_file = self.text(v, &n, kp, x),
                 "path" => i.path = self.text(v, &n, kp, x),
                 "rtcExt::comment" => i.comment = self.text(v, &n, kp, x),
-                "rtcExt::variableName" => i.variable_name = self.text(v, &n, kp, x),
+                "rtcExt::variableName" | "rtcExt::varname" | "varname" => {
+                    i.variable_name = self.text(v, &n, kp, x)
+                }
                 "rtcExt::property" | "rtcExt::properties" => {
                     i.properties = self.properties(v, &n, kp, x)
                 }
-                "rtcDoc::doc" => {
+                "rtcDoc::doc" | "doc" => {
                     if let Some(m) = self.map(v, &n, kp, x) {
                         let mut d = ServiceInterfaceDoc {
                             pos: kp,
@@ -1395,6 +1516,10 @@ impl Reader<'_> {
                 _ => self.unknown(&n, v, kp, "a service interface", x),
             }
         }
+        self.flush(
+            &format!("serviceInterface {}", i.name.as_deref().unwrap_or("")),
+            al,
+        );
         i
     }
 
@@ -1435,10 +1560,94 @@ impl Reader<'_> {
                         l.targets.push(t);
                     }
                 }
+                k if super::dialect::language_element(k).is_some() => {
+                    self.language_element(&n, v, kp, &mut l)
+                }
                 _ => self.unknown(&n, v, kp, "language", &mut l.extra),
             }
         }
         l
+    }
+
+    /// rtc-template's `language: {java: {library: [...]}}` (and `cxx:`, `python:`): the key is
+    /// the language kind, its map the target (as RTCBuilder 0.1's `<rtc:Cxx/>` element).
+    fn language_element(&mut self, n: &str, v: &Value, kp: Pos, l: &mut Language) {
+        let Some(kind) = super::dialect::language_element(n) else {
+            return;
+        };
+        if l.kind.is_none() {
+            l.kind = Some(kind.into());
+            self.written_as.push(WrittenAs {
+                field: "language.kind".into(),
+                written_as: n.into(),
+                dialect: super::dialect::RTC_TEMPLATE,
+                pos: kp,
+            });
+        }
+        let Some(m) = self.map(v, n, kp, &mut l.extra) else {
+            return;
+        };
+        let mut t = Target {
+            pos: kp,
+            ..Target::default()
+        };
+        for (k, v) in m {
+            let (kn, kp) = self.key(k);
+            let x = &mut t.extra;
+            match kn.as_str() {
+                "os" => t.os = self.text(v, &kn, kp, x),
+                "langVersion" => t.lang_version = self.text(v, &kn, kp, x),
+                "other" => t.other = self.text(v, &kn, kp, x),
+                "cpuOther" => t.cpu_other = self.text(v, &kn, kp, x),
+                "arch" | "cpus" => t.cpus.extend(self.texts_or_text(v, &kn, kp, x)),
+                "osVersion" | "osVersions" => {
+                    t.os_versions.extend(self.texts_or_text(v, &kn, kp, x))
+                }
+                "library" | "libraries" => {
+                    for (idx, it) in self.seq(v, &kn, kp, x).iter().enumerate() {
+                        let p = self.loc.item();
+                        match untag_ref(it) {
+                            Value::Mapping(_) | Value::Sequence(_) => self.wrong_shape(
+                                &format!("{kn}[{idx}]"),
+                                it,
+                                p,
+                                "a library name",
+                                &mut t.extra,
+                            ),
+                            other => {
+                                if let Some(name) = self.scalar_text(other, false) {
+                                    t.libraries.push(Library {
+                                        name: Some(name),
+                                        pos: p,
+                                        ..Library::default()
+                                    });
+                                }
+                            }
+                        }
+                    }
+                }
+                _ => self.unknown(&kn, v, kp, "a language target", x),
+            }
+        }
+        l.targets.push(t);
+    }
+
+    /// A list of texts, or one text as a list of one (empty text: none).
+    fn texts_or_text(
+        &mut self,
+        v: &Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Vec<Extra>,
+    ) -> Vec<Text> {
+        match untag_ref(v) {
+            Value::Sequence(_) => self.texts(v, name, pos, sink),
+            _ => self
+                .text(v, name, pos, sink)
+                .filter(|t| !t.trim().is_empty())
+                .into_iter()
+                .collect(),
+        }
     }
 
     fn target(&mut self, m: &Mapping, pos: Pos) -> Target {

@@ -207,7 +207,8 @@ pub fn data_port_attributes(p: &DataPort, lang: Lang) -> Vec<Fact> {
         .opt("fact_dataflow_type", &p.dataflow_type)
         .opt("fact_subscription_type", &p.subscription_type)
         .opt("unit", &p.unit);
-    if let Some(c) = &p.constraint {
+    // RTCBuilder's `dp_constraint` placeholder constrains nothing (RTC306): not shown.
+    if let Some(c) = p.constraint.as_ref().filter(|c| c.placeholder().is_none()) {
         f.text("constraint", &constraint::describe(c));
     }
     if let Some(d) = &p.doc {
@@ -304,6 +305,7 @@ pub fn service_interface(i: &ServiceInterface, lang: Lang) -> Vec<Fact> {
 pub fn configuration_constraint(c: &Configuration) -> Option<String> {
     c.constraint
         .as_ref()
+        .filter(|k| k.placeholder().is_none())
         .map(constraint::describe)
         .filter(|s| !s.trim().is_empty())
 }
@@ -432,7 +434,8 @@ pub fn version_up_logs(p: &Profile) -> Vec<&str> {
 }
 
 /// Every extra (unknown) value of the profile, flattened: label = `path: name/child/…`,
-/// value = the text (attributes of unknown elements become their own rows).
+/// value = the text (attributes of unknown elements become their own rows). Empty values
+/// (wasanbon's `rtcDoc:license=""` …) make no row: they say nothing, and the JSON keeps them.
 pub fn extras(p: &Profile) -> Vec<Fact> {
     extras_with_kind(p).into_iter().map(|(f, _)| f).collect()
 }
@@ -442,7 +445,7 @@ pub fn extras_with_kind(p: &Profile) -> Vec<(Fact, ExtraKind)> {
     fn walk(prefix: &str, e: &Extra, out: &mut Vec<(Fact, ExtraKind)>) {
         let name = format!("{prefix}{}", e.name);
         let value = e.value.as_deref().map(str::trim).unwrap_or("");
-        if !value.is_empty() || e.children.is_empty() {
+        if !value.is_empty() {
             out.push((Fact::new(name.clone(), value), e.kind));
         }
         for c in &e.children {

@@ -331,7 +331,7 @@ fn port_ref_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
             let c = &cat.components[r.component];
             let port = &c.profile.data_ports[r.port];
             vec![
-                link(c.profile.name(), &component_href(c)),
+                link(&c.display_name(), &component_href(c)),
                 link(
                     model::non_empty(&port.name).unwrap_or("?"),
                     &format!("{}#{}", component_href(c), c.anchors.data_ports[r.port]),
@@ -349,7 +349,7 @@ fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
             let sp = &c.profile.service_ports[r.port];
             let i = &sp.interfaces[r.interface];
             vec![
-                link(c.profile.name(), &component_href(c)),
+                link(&c.display_name(), &component_href(c)),
                 link(
                     &format!(
                         "{} / {}",
@@ -436,7 +436,7 @@ fn component_rows(cat: &Catalog, members: &[usize], prefix: &str) -> Vec<Vec<Str
             let b = &c.profile.basic_info;
             vec![
                 link(
-                    c.profile.name(),
+                    &c.display_name(),
                     &format!("{prefix}components/{}.md", c.slug),
                 ),
                 opt(&b.description),
@@ -494,6 +494,16 @@ fn category_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
         inline(lang.t("categories"))
     );
     w!(out);
+    if !f.variants.is_empty() {
+        let v: Vec<String> = f.variants.iter().map(|v| inline(v)).collect();
+        w!(
+            out,
+            "{}: {}",
+            inline(lang.t("facet_variants")),
+            v.join(", ")
+        );
+        w!(out);
+    }
     table(
         &mut out,
         &component_cols(lang),
@@ -555,7 +565,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
                 summary_item(
                     &mut out,
                     1,
-                    c.profile.name(),
+                    &c.display_name(),
                     &format!("components/{}.md", c.slug),
                 );
             }

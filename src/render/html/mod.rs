@@ -354,7 +354,7 @@ impl<'a> Site<'a> {
         let href = format!("{root}{}", self.component_path(r.component));
         PortUse {
             component: Link {
-                text: c.profile.name().to_string(),
+                text: c.display_name().into_owned(),
                 href: href.clone(),
             },
             port: Link {
@@ -371,7 +371,7 @@ impl<'a> Site<'a> {
         let href = format!("{root}{}", self.component_path(r.component));
         PortUse {
             component: Link {
-                text: c.profile.name().to_string(),
+                text: c.display_name().into_owned(),
                 href: href.clone(),
             },
             port: Link {
@@ -425,14 +425,12 @@ impl<'a> Site<'a> {
         let b = &c.profile.basic_info;
         let facet_slug = |facets: &[Facet], v: &Option<crate::model::Text>| {
             let name = non_empty(v).unwrap_or("");
-            facets
-                .iter()
-                .find(|f| f.name == name)
+            crate::catalog::facet_of(facets, name)
                 .map(|f| f.slug.clone())
                 .unwrap_or_default()
         };
         ComponentSummary {
-            name: c.profile.name().to_string(),
+            name: c.display_name().into_owned(),
             path: format!("components/{}.html", c.slug),
             version: non_empty(&b.version).unwrap_or("").to_string(),
             vendor: non_empty(&b.vendor).unwrap_or("").to_string(),
@@ -707,6 +705,8 @@ impl<'a> Site<'a> {
             })
             .collect();
 
+        // Components sharing a name show what tells them apart (language or folder).
+        let name = c.display_name().into_owned();
         ComponentPage {
             root,
             title: format!("{name} — {}", self.opts.title),
@@ -1118,6 +1118,8 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                         title => page_title(site, &name),
                         heading => name,
                         kind => lang.t(if dir == "categories" { "category" } else { "vendor" }),
+                        variants => ctx(&f.variants),
+                        variants_label => lang.t("facet_variants"),
                         crumbs => ctx(&crumbs),
                         components => ctx(&comps),
                     }

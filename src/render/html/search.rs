@@ -135,6 +135,7 @@ pub fn index_js(catalog: &Catalog) -> String {
                 .collect();
             let mut tokens: Vec<Cow<'_, str>> = Vec::new();
             add(&mut tokens, Some(p.name()));
+            add(&mut tokens, c.qualifier.as_deref());
             add(&mut tokens, non_empty(&b.category));
             add(&mut tokens, non_empty(&b.vendor));
             add(&mut tokens, non_empty(&b.description));
@@ -165,7 +166,7 @@ pub fn index_js(catalog: &Catalog) -> String {
                 .map(|d| super::markdown::first_line(d, 90))
                 .unwrap_or_default();
             serde_json::json!([
-                p.name(),
+                c.display_name(),
                 c.slug,
                 non_empty(&b.category).unwrap_or(""),
                 non_empty(&b.vendor).unwrap_or(""),
