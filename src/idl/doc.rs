@@ -64,7 +64,7 @@ pub(crate) fn parse_doc(text: &str) -> IdlDoc {
     doc.text = text.to_string();
     for (lang, body) in langs {
         let mut d = parse_body(&body);
-        d.text = body;
+        d.text = body.trim().to_string();
         doc.languages.push(IdlDocLanguage {
             lang,
             doc: Box::new(d),

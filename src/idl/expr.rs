@@ -190,7 +190,10 @@ impl<'t, F: FnMut(&str) -> Option<Value>> Eval<'t, F> {
     fn primary(&mut self) -> EvalResult {
         let Some(t) = self.peek() else {
             let p = self.here();
-            return Err((p, "expected an expression".into()));
+            return Err((
+                p,
+                "expected an expression, found the end of the line".into(),
+            ));
         };
         let pos = t.pos;
         match &t.tok {

@@ -306,6 +306,25 @@ impl Parser<'_> {
         self.docs_after.clear();
     }
 
+    /// Skips to the `}` closing the current braces (left for the caller), `;` included.
+    fn skip_to_close(&mut self) {
+        let mut depth = 0usize;
+        loop {
+            match self.peek_tok() {
+                Tok::Eof => return,
+                Tok::Punct("{") => depth += 1,
+                Tok::Punct("}") => {
+                    if depth == 0 {
+                        return;
+                    }
+                    depth -= 1;
+                }
+                _ => {}
+            }
+            self.bump();
+        }
+    }
+
     // ----- docs -----
 
     fn take_doc(&mut self) -> Option<IdlDoc> {
@@ -1034,7 +1053,10 @@ impl Parser<'_> {
             file: self.file.clone(),
             values,
         }));
-        result?;
+        if result.is_err() {
+            // The error is reported; skip the rest of the enumerators to the enum's own `}`.
+            self.skip_to_close();
+        }
         self.expect_punct("}", &format!("to close enum `{name}`"), "")?;
         self.expect_punct(
             ";",
