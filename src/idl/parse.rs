@@ -462,17 +462,14 @@ impl Parser<'_> {
         let mut used = vec![false; overrides.len()];
         walk_ids(defs, &mut |scoped, id| {
             for (k, o) in overrides.iter().enumerate() {
-                match &o.kind {
-                    OverrideKind::Prefix(p) => {
-                        if let Some(rest) = scoped.strip_prefix(&format!("{}::", o.target)) {
-                            let version = id.rsplit_once(':').map_or("1.0", |(_, v)| v).to_string();
-                            *id = format!("IDL:{p}/{}:{version}", rest.replace("::", "/"));
-                            used[k] = true;
-                        } else if scoped == o.target {
-                            used[k] = true;
-                        }
+                if let OverrideKind::Prefix(p) = &o.kind {
+                    if let Some(rest) = scoped.strip_prefix(&format!("{}::", o.target)) {
+                        let version = id.rsplit_once(':').map_or("1.0", |(_, v)| v).to_string();
+                        *id = format!("IDL:{p}/{}:{version}", rest.replace("::", "/"));
+                        used[k] = true;
+                    } else if scoped == o.target {
+                        used[k] = true;
                     }
-                    _ => {}
                 }
             }
             for (k, o) in overrides.iter().enumerate() {
@@ -836,7 +833,7 @@ impl Parser<'_> {
             }
             if self.at_eof() {
                 return Err(self.error_here(
-                    format!("expected `}}` to close the members, found end of file"),
+                    "expected `}` to close the members, found end of file".to_string(),
                     "every `{` needs its `};`",
                 ));
             }

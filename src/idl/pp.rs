@@ -325,10 +325,8 @@ impl Pp<'_, '_> {
             let (word, _) = first_word(&d.raw);
             match d.name.as_str() {
                 "ifdef" | "ifndef" => {
-                    if word.is_empty() {
-                        if active {
-                            self.err(&path, t.pos, format!("`#{}` needs a macro name", d.name));
-                        }
+                    if word.is_empty() && active {
+                        self.err(&path, t.pos, format!("`#{}` needs a macro name", d.name));
                     }
                     let defined = self.defines.contains_key(word);
                     let on = active && (defined == (d.name == "ifdef"));
