@@ -10,6 +10,7 @@ pub mod config;
 pub mod constraint;
 pub mod diagnostic;
 pub mod i18n;
+pub mod idl;
 pub mod incremental;
 pub mod model;
 pub mod output;

@@ -13,7 +13,9 @@ use serde::Serialize;
 pub type Text = compact_str::CompactString;
 
 /// A position in a source file: 1-based line and column (columns count characters).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[derive(
+    Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, serde::Deserialize,
+)]
 pub struct Pos {
     pub line: u32,
     pub column: u32,

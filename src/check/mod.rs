@@ -1,8 +1,9 @@
 //! `rtcdoc check`: validation rules over the loaded catalogue, for CI.
 //!
 //! Every rule has a stable code, a default severity, a short name, an explanation citing the
-//! spec section it comes from and a hint ([`registry::RULES`]). Codes: RTC001–RTC099 come from
-//! the loader and the catalogue; RTC1xx schema level (spec chapter 6), RTC2xx spec semantics
+//! spec section it comes from and a hint ([`registry::RULES`]). Codes: RTC001–RTC019 come from
+//! the loader and the catalogue; RTC020–RTC029 from the IDL reader ([`crate::idl::codes`]);
+//! RTC1xx schema level (spec chapter 6), RTC2xx spec semantics
 //! (chapter 2), RTC3xx values and constraints, RTC4xx catalogue level, RTC5xx doc coverage.
 //!
 //! [`run`] returns the rule diagnostics (not the loader's); [`check`] returns a [`Report`] with

@@ -22,8 +22,19 @@ pub struct Rule {
     pub hint: &'static str,
 }
 
-// Loader codes (RTC001–RTC099, produced by the readers, the walk and the catalogue).
+// Loader codes (RTC001–RTC019, produced by the readers, the walk and the catalogue).
 pub const MALFORMED: &str = "RTC001";
+// IDL reader codes (RTC020–RTC029, produced by crate::idl; kept equal to crate::idl::codes).
+pub const IDL_SYNTAX: &str = "RTC020";
+pub const IDL_PREPROCESSOR: &str = "RTC021";
+pub const IDL_INCLUDE: &str = "RTC022";
+pub const IDL_INCLUDE_CYCLE: &str = "RTC023";
+pub const IDL_LIMIT: &str = "RTC024";
+pub const IDL_ENCODING: &str = "RTC025";
+pub const IDL_SKIPPED: &str = "RTC026";
+pub const IDL_DIRECTIVE: &str = "RTC027";
+pub const IDL_REDEFINITION: &str = "RTC028";
+pub const IDL_UNRESOLVED: &str = "RTC029";
 // Schema level (spec chapter 6).
 pub const MISSING_REQUIRED: &str = "RTC101";
 pub const INVALID_ENUM: &str = "RTC102";
@@ -172,6 +183,96 @@ pub static RULES: &[Rule] = &[
         explanation: "Files named `RTC.xml`, `RTC.yaml`, `*.rtc.xml` or `RTC.xml<timestamp>` (RTCBuilder's backups) are component profiles by convention. One that is empty, binary, not XML, has another root element or ends before its root is not documented; the warning says which, because it is usually a failed save or a file put in the wrong place, and skipping it silently would leave a component out of the catalogue unnoticed.",
         spec: "3.1 (XML mapping)",
         hint: "restore the profile from version control or RTCBuilder, or rename or exclude the file (`--exclude PATH`)",
+    },
+    Rule {
+        code: IDL_SYNTAX,
+        severity: Error,
+        name: "idl-syntax",
+        summary: "an IDL file has a syntax error",
+        explanation: "The IDL reader could not parse a declaration (a missing `;`, an unknown keyword, an unbalanced bracket, a malformed literal or constant expression such as a division by zero). The message says what was expected and what was found. The reader skips to the next `;` or to the `}` closing the current scope and goes on, so one bad declaration hides nothing else; the declarations read before the error in the same struct or enum are kept.",
+        spec: "OMG IDL 3.5 chapter 7 (grammar)",
+        hint: "fix the declaration at the position shown; compare with a working declaration such as `struct S { long x; };`",
+    },
+    Rule {
+        code: IDL_PREPROCESSOR,
+        severity: Error,
+        name: "idl-preprocessor",
+        summary: "a malformed or unbalanced preprocessor directive, or #error",
+        explanation: "`#if`/`#ifdef`/`#ifndef` without `#endif` (or the reverse), `#else`/`#elif` out of place, an `#if` expression that does not parse, `#include` without a `\"file\"` or `<file>`, `#define` without a name, or an active `#error`. The rest of the file is read as if the directive were absent.",
+        spec: "OMG IDL 3.5 §7.3 (preprocessing), C preprocessor",
+        hint: "balance every #if/#ifdef/#ifndef with #endif and write directives as a C preprocessor expects",
+    },
+    Rule {
+        code: IDL_INCLUDE,
+        severity: Warning,
+        name: "idl-include-not-found",
+        summary: "an #include names no IDL file that was read",
+        explanation: "An include is looked for relative to the including file, then in the IDL search path, then by file name among every IDL file read (authors often include absolute paths of their own machines). When none matches, the macros and include guards of that file are unknown, and the types it defines stay unresolved. A `<file>` include that is not found (usually an ORB's own file such as <orb.idl>) is reported as an info only.",
+        spec: "OMG IDL 3.5 §7.3 (#include)",
+        hint: "add the directory holding the file with --idl-path (e.g. the OpenRTM installation's rtm/idl), or remove the include",
+    },
+    Rule {
+        code: IDL_INCLUDE_CYCLE,
+        severity: Error,
+        name: "idl-include-cycle",
+        summary: "IDL files include each other without include guards",
+        explanation: "Following the includes leads back to a file that is still being read and has no include guard that is already defined. The include that closes the cycle is not followed; the error names the whole cycle once. A guarded cycle (`#ifndef X_IDL / #define X_IDL`) is harmless and not reported.",
+        spec: "OMG IDL 3.5 §7.3 (#include)",
+        hint: "add an include guard (#ifndef X / #define X / #endif) to the files, or remove one of the includes",
+    },
+    Rule {
+        code: IDL_LIMIT,
+        severity: Error,
+        name: "idl-limit",
+        summary: "an IDL file exceeds a limit against hostile input",
+        explanation: "A file larger than the maximum file size (16 MiB by default), scopes, types, expressions or conditionals nesting deeper than the nesting limit (64), includes deeper than the include depth limit (32), or more tokens than the token limit (2,000,000, after macro expansion). The reader stops reading that part so that a hostile or broken file cannot exhaust memory or the stack.",
+        spec: "— (robustness limit of rtcdoc)",
+        hint: "raise the limit if the file is genuine, or exclude it",
+    },
+    Rule {
+        code: IDL_ENCODING,
+        severity: Info,
+        name: "idl-encoding",
+        summary: "an IDL file is not UTF-8",
+        explanation: "IDL files declare no encoding, so it is detected: valid UTF-8 (with or without BOM), else EUC-JP, else Shift_JIS, whichever decodes without error (OpenRTM's own RTC.idl is EUC-JP). The info says which one was used. When no encoding decodes the bytes, they are read as EUC-JP with replacement characters and the diagnostic is a warning.",
+        spec: "— (Japanese IDL files as found)",
+        hint: "nothing to do if the text shows correctly; saving the file as UTF-8 avoids the guess",
+    },
+    Rule {
+        code: IDL_SKIPPED,
+        severity: Info,
+        name: "idl-skipped",
+        summary: "an IDL declaration that rtcdoc does not model was skipped",
+        explanation: "valuetype, eventtype, component, home, porttype, connector and import declarations are read to their end and listed by name, but their contents are not modelled (RT components exchange structs and interfaces). Also reported: an #include inside a module, whose declarations rtcdoc reads as the included file's own, at global scope.",
+        spec: "OMG IDL 3.5 §7.8–7.9 (value types), §7.17–7.20 (components)",
+        hint: "nothing to do, unless a port type is one of these declarations",
+    },
+    Rule {
+        code: IDL_DIRECTIVE,
+        severity: Warning,
+        name: "idl-directive-ignored",
+        summary: "a preprocessor directive or pragma was ignored",
+        explanation: "An unknown directive (`#frobnicate`), a function-like macro (`#define F(x) …`, whose uses are left as written), `#warning`, a malformed `#pragma prefix/ID/version`, or a `#pragma ID`/`#pragma version`/`typeid`/`typeprefix` naming a declaration the file does not have. Unknown pragmas (such as `#pragma keylist`) are kept silently.",
+        spec: "OMG IDL 3.5 §7.3, CORBA 3 §10.7.5 (repository id pragmas)",
+        hint: "remove the directive, or name a declaration of this file relative to the scope the pragma stands in",
+    },
+    Rule {
+        code: IDL_REDEFINITION,
+        severity: Warning,
+        name: "idl-redefinition",
+        summary: "one IDL file declares the same name twice",
+        explanation: "Two declarations with the same scoped name in one file (modules may be reopened, and a forward declaration may precede its definition; anything else is an error for IDL compilers). Both are kept; lookups find the first.",
+        spec: "OMG IDL 3.5 §7.20 (names and scoping)",
+        hint: "rename one of the declarations, or remove the duplicate",
+    },
+    Rule {
+        code: IDL_UNRESOLVED,
+        severity: Info,
+        name: "idl-unresolved-type",
+        summary: "a type name that no IDL file read defines",
+        explanation: "A field, parameter, typedef or base interface names a type that is not declared in any IDL file read, after IDL scoping rules (the enclosing scopes from the innermost outward, then the global scope). Reported once per name and file. Usually the file that defines it was not given, e.g. the OpenRTM IDL directory.",
+        spec: "OMG IDL 3.5 §7.20 (names and scoping)",
+        hint: "add the IDL file that defines the type with --idl-path",
     },
     Rule {
         code: MISSING_REQUIRED,
@@ -488,6 +589,22 @@ mod tests {
             assert!(!r.spec.is_empty() && !r.explanation.is_empty());
         }
         assert!(rule("rtc303").is_some());
+        use crate::idl::codes as idl;
+        for (ours, theirs) in [
+            (IDL_SYNTAX, idl::SYNTAX),
+            (IDL_PREPROCESSOR, idl::PREPROCESSOR),
+            (IDL_INCLUDE, idl::INCLUDE),
+            (IDL_INCLUDE_CYCLE, idl::INCLUDE_CYCLE),
+            (IDL_LIMIT, idl::LIMIT),
+            (IDL_ENCODING, idl::ENCODING),
+            (IDL_SKIPPED, idl::SKIPPED),
+            (IDL_DIRECTIVE, idl::DIRECTIVE),
+            (IDL_REDEFINITION, idl::REDEFINITION),
+            (IDL_UNRESOLVED, idl::UNRESOLVED),
+        ] {
+            assert_eq!(ours, theirs);
+            assert!(rule(ours).is_some(), "{ours} is not registered");
+        }
         let _ = MALFORMED;
     }
 }
