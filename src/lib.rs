@@ -16,6 +16,7 @@ pub mod output;
 pub mod parse;
 pub mod render;
 pub mod serve;
+pub mod system;
 pub mod types;
 pub mod value;
 pub mod walk;

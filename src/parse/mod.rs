@@ -3,6 +3,7 @@
 //! One module per input format. Readers never perform I/O; positions are captured here so that
 //! later stages can point at the source.
 
+pub mod rts;
 pub mod xml;
 pub mod yaml;
 mod yaml_fast;
