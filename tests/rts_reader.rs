@@ -8,6 +8,7 @@ use rtcdoc::model::{Extra, ExtraKind, Pos};
 use rtcdoc::parse::rts::{is_system, parse, ParsedSystem};
 use rtcdoc::parse::{Limits, SourceFormat};
 use rtcdoc::system::*;
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> Vec<u8> {
@@ -113,16 +114,29 @@ fn xml_values(bytes: &[u8]) -> Vec<String> {
     out
 }
 
-/// Every string in a JSON value.
-fn json_strings(v: &serde_json::Value, out: &mut std::collections::HashSet<String>) {
+/// Every string in a JSON value, with how often it occurs.
+fn json_strings(v: &serde_json::Value, out: &mut HashMap<String, usize>) {
     match v {
-        serde_json::Value::String(s) => {
-            out.insert(s.trim().to_string());
-        }
+        serde_json::Value::String(s) => *out.entry(s.trim().to_string()).or_default() += 1,
         serde_json::Value::Array(a) => a.iter().for_each(|v| json_strings(v, out)),
         serde_json::Value::Object(o) => o.values().for_each(|v| json_strings(v, out)),
         _ => {}
     }
+}
+
+/// The values of a file the model's JSON does not hold as often as the file does: a value
+/// written twice must be kept twice (the model adds derived strings, never fewer).
+fn lost_values(values: &[String], model: &impl serde::Serialize) -> Vec<String> {
+    let mut pool = HashMap::new();
+    json_strings(&serde_json::to_value(model).unwrap(), &mut pool);
+    let mut lost = Vec::new();
+    for v in values {
+        match pool.get_mut(v.trim()) {
+            Some(n) if *n > 0 => *n -= 1,
+            _ => lost.push(v.clone()),
+        }
+    }
+    lost
 }
 
 #[test]
@@ -157,12 +171,9 @@ fn corpus_systems_are_read_whole_without_unknown_warnings() {
         );
         assert!(!s.components.is_empty(), "{name}");
         // Nothing lost: every value of the file is a string of the model's JSON.
-        let json = serde_json::to_value(s).unwrap();
-        let mut pool = std::collections::HashSet::new();
-        json_strings(&json, &mut pool);
         let values = xml_values(&bytes);
         total_values += values.len();
-        let lost: Vec<&String> = values.iter().filter(|v| !pool.contains(v.trim())).collect();
+        let lost = lost_values(&values, s);
         assert!(lost.is_empty(), "{name}: lost {lost:?}");
         // Every instance's component id is parsed, and every connector end has a port name.
         for c in &s.components {
@@ -863,4 +874,86 @@ fn mutated_fixtures_never_panic() {
             let _ = parse(f, &flipped, name, &Limits::default());
         }
     }
+}
+
+#[test]
+fn own_fixtures_lose_nothing_either() {
+    // XML: every attribute value and text (unknown ones included) is in the model's JSON.
+    for name in ["full.xml", "oddities.xml", "unknown.xml"] {
+        let lost = lost_values(&xml_values(&fixture(name)), &read(name).system);
+        assert!(lost.is_empty(), "{name}: lost {lost:?}");
+    }
+    // YAML: every scalar (date maps become one ISO date) and every unknown key.
+    fn scalars(v: &serde_norway::Value, out: &mut Vec<String>) {
+        use serde_norway::Value as V;
+        match v {
+            V::String(s) => out.push(s.clone()),
+            V::Number(n) => out.push(n.to_string()),
+            V::Bool(b) => out.push(b.to_string()),
+            V::Sequence(s) => s.iter().for_each(|v| scalars(v, out)),
+            V::Mapping(m) => {
+                for (k, v) in m {
+                    let date = matches!(k.as_str(), Some("creationDate" | "updateDate"));
+                    if !(date && v.is_mapping()) {
+                        scalars(v, out);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    for name in ["full.yaml", "unknown.yaml"] {
+        let value: serde_norway::Value = serde_norway::from_slice(&fixture(name)).unwrap();
+        let mut values = Vec::new();
+        scalars(&value, &mut values);
+        let lost = lost_values(&values, &read(name).system);
+        assert!(lost.is_empty(), "{name}: lost {lost:?}");
+    }
+}
+
+#[test]
+fn the_fixture_component_has_the_instance_id() {
+    // tests/fixtures/rts/components/Camera/RTC.xml is the component of `Camera0`: the same
+    // id string, and the same parts by the system reader's id rule.
+    let bytes = fixture("components/Camera/RTC.xml");
+    let profile = rtcdoc::parse::parse(SourceFormat::Xml, &bytes, "RTC.xml", &Limits::default())
+        .unwrap()
+        .profile;
+    let s = read("full.xml").system;
+    let cam = s.component("Camera0").unwrap();
+    assert_eq!(profile.id, cam.id);
+    let parts = ComponentIdParts::parse(profile.id.as_deref().unwrap()).unwrap();
+    assert_eq!(Some(parts), cam.id_parts);
+    let b = &profile.basic_info;
+    let p = cam.id_parts.as_ref().unwrap();
+    assert_eq!(
+        (&b.vendor, &b.category, &b.name),
+        (&p.vendor, &p.category, &p.name)
+    );
+}
+
+#[test]
+fn yaml_oddities() {
+    // Dates written as strings, a bare participant, a bare wait time, `rtsExt::` left off,
+    // a lower-case direction, an `Instance.port` name before the instance name.
+    let y = "rtsProfile:\n  id: 'RTSystem :V.S.1.0'\n  creationDate: '2020-01-02T03:04:05'\n  comment: no prefix\n  components:\n    - dataPorts:\n        - name: I0.out\n      instanceName: I0\n      participants:\n        - componentId: RTC:V:C:P:1\n          instanceName: P0\n      location:\n        direction: up\n  startUp:\n    targets:\n      - sequence: 1\n        condition:\n          waitTime: 250\n";
+    let p = read_str(SourceFormat::Yaml, y).unwrap();
+    assert!(p.diagnostics.is_empty(), "{:?}", p.diagnostics);
+    let s = p.system;
+    assert_eq!(t(&s.creation_date), "2020-01-02T03:04:05");
+    assert_eq!(t(&s.comment), "no prefix");
+    assert_eq!(t(&s.id_parts.as_ref().unwrap().name), "S");
+    let c = &s.components[0];
+    assert_eq!(t(&c.data_ports[0].short_name), "out");
+    assert_eq!(t(&c.participants[0].instance_name), "P0");
+    assert_eq!(
+        c.location.as_ref().unwrap().direction_kind(),
+        Some(LocationDirection::Up)
+    );
+    let w = s.orders[0].targets[0].wait_time.as_ref().unwrap();
+    assert_eq!(t(&w.wait_time), "250");
+    // A wrong shape is kept and reported as such (RTC009), not dropped.
+    let p = read_str(SourceFormat::Yaml, "rtsProfile:\n  components: 3\n").unwrap();
+    assert_eq!(codes_of(&p.diagnostics), [codes::SHAPE]);
+    assert_eq!(p.system.extra[0].value.as_deref(), Some("3"));
 }
