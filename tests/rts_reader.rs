@@ -151,12 +151,16 @@ fn corpus_systems_are_read_whole_without_unknown_warnings() {
         let bytes = std::fs::read(f).unwrap();
         assert!(is_system(&bytes), "{}", f.display());
         let name = f.display().to_string();
+        let started = std::time::Instant::now();
         let p = parse(SourceFormat::Xml, &bytes, &name, &Limits::default())
             .unwrap_or_else(|d| panic!("{d}"));
+        let took = started.elapsed();
+        assert!(took < std::time::Duration::from_secs(2), "{name}: {took:?}");
         let s = &p.system;
         println!(
-            "{}: id {:?}, {} instances, {} data + {} service connectors, {} private properties, warnings {:?}",
+            "{} ({} bytes, {took:?}): id {:?}, {} instances, {} data + {} service connectors, {} private properties, warnings {:?}",
             f.strip_prefix(corpus_dir().unwrap()).unwrap().display(),
+            bytes.len(),
             s.id.as_deref().unwrap_or(""),
             s.components.len(),
             s.data_port_connectors.len(),
@@ -956,4 +960,25 @@ fn yaml_oddities() {
     let p = read_str(SourceFormat::Yaml, "rtsProfile:\n  components: 3\n").unwrap();
     assert_eq!(codes_of(&p.diagnostics), [codes::SHAPE]);
     assert_eq!(p.system.extra[0].value.as_deref(), Some("3"));
+}
+
+#[test]
+fn group_id_spellings_and_repeated_orders() {
+    let ns = "xmlns:rts=\"http://www.openrtp.org/namespaces/rts\"";
+    // rtsprofile (Python) writes `groupID`; both spellings on one element keep the second.
+    let x = format!(
+        "<rts:RtsProfile {ns}>\n<rts:Groups rts:groupID=\"g1\"/>\n<rts:Groups rts:groupId=\"g2\" rts:groupID=\"g3\"/>\n<rts:StartUp/>\n<rts:StartUp/>\n</rts:RtsProfile>"
+    );
+    let p = read_str(SourceFormat::Xml, &x).unwrap();
+    let s = &p.system;
+    assert_eq!(t(&s.groups[0].group_id), "g1");
+    assert_eq!(t(&s.groups[1].group_id), "g2");
+    assert_eq!(s.groups[1].extra[0].value.as_deref(), Some("g3"));
+    assert_eq!(s.orders.len(), 1, "StartUp is allowed once");
+    assert_eq!(s.extra[0].name, "rts:StartUp");
+    assert_eq!(s.extra[0].pos, Pos::new(5, 1));
+    let msgs: Vec<&str> = p.diagnostics.iter().map(|d| d.message.as_str()).collect();
+    assert_eq!(msgs.len(), 2, "{msgs:?}");
+    assert!(msgs[0].starts_with("repeated attribute `rts:groupID`"));
+    assert!(msgs[1].starts_with("repeated element `rts:StartUp`"));
 }

@@ -160,7 +160,11 @@ fn map_system(m: &mut Mapper, n: &Node) -> RtSystem {
             }
             Some("Properties") => s.properties.push(map_property(m, c)),
             Some("Systems") => s.systems.push(map_subsystem(m, c)),
+            // Each order at most once (the XSD's maxOccurs="1").
             Some(k) => match OrderKind::from_xml_name(k) {
+                Some(kind) if s.orders.iter().any(|o| o.kind == kind) => {
+                    m.repeated_elem(c, on, &mut extra)
+                }
                 Some(kind) => s.orders.push(map_order(m, c, kind)),
                 None => unknown_elem(m, c, on, &mut extra),
             },
@@ -466,30 +470,14 @@ fn map_group(m: &mut Mapper, n: &Node) -> Group {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    // rtsprofile (Python) writes `groupID`, the schema `groupId`.
-    let (mut id, mut id_upper) = (None, None);
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [("groupId", &mut id), ("groupID", &mut id_upper)],
-    );
-    g.group_id = match (id, id_upper) {
-        (Some(a), Some(b)) => {
-            // Both spellings: the schema's wins, the other is kept.
-            extra.push(Extra {
-                kind: crate::model::ExtraKind::Attribute,
-                name: "groupID".into(),
-                namespace: None,
-                value: Some(b),
-                children: Vec::new(),
-                pos: n.pos,
-            });
-            Some(a)
+    // rtsprofile (Python) writes `groupID`, the schema `groupId`: either fills the id, a
+    // second one is kept as a repeated attribute.
+    for a in &n.attrs {
+        match akey(a) {
+            Some("groupId" | "groupID") => m.set(&mut g.group_id, a, on, &mut extra),
+            _ => unknown_attr(m, a, on, &mut extra),
         }
-        (a, b) => a.or(b),
-    };
+    }
     for c in &n.children {
         match ekey(c) {
             Some("Members") => g.members.push(map_target(m, c, "group member")),
