@@ -2,6 +2,8 @@
 //!
 //! Pipeline: files → [`walk`] → [`parse`] → [`model::Profile`] → [`catalog::Catalog`]
 //! (cross-references) → [`render`]ers (HTML, Markdown, Doxygen, JSON), driven by [`build`].
+//! RT System profiles are read by [`parse::rts`] into [`system::RtSystem`] (not yet in the
+//! catalogue).
 
 pub mod build;
 pub mod catalog;
@@ -17,6 +19,7 @@ pub mod output;
 pub mod parse;
 pub mod render;
 pub mod serve;
+pub mod system;
 pub mod types;
 pub mod value;
 pub mod walk;

@@ -5,7 +5,7 @@
 //! the source said; typed views (`ActionKind`, `Direction`, `PortSide`, …) are offered as methods.
 //! Values the spec does not define are kept in an `extra` list on the nearest node.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// A string value of a profile. Most values are short (names, types, numbers, `true`), and a
 /// `CompactString` keeps up to 24 bytes inline, without a heap allocation: a 10,000-profile
@@ -14,7 +14,7 @@ pub type Text = compact_str::CompactString;
 
 /// A position in a source file: 1-based line and column (columns count characters).
 #[derive(
-    Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, serde::Deserialize,
+    Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize,
 )]
 pub struct Pos {
     pub line: u32,
@@ -39,7 +39,7 @@ impl std::fmt::Display for Pos {
 
 /// A value the spec does not define: an unknown attribute, element (with its whole subtree) or
 /// YAML key. Kept so that nothing in a profile is lost, and shown as an extra property.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Extra {
     /// `attribute`, `element` or `key` (YAML).
@@ -53,12 +53,12 @@ pub struct Extra {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub value: Option<Text>,
     /// Attributes and child elements of an unknown element; entries of a YAML map or sequence.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub children: Vec<Extra>,
     pub pos: Pos,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum ExtraKind {
     Attribute,

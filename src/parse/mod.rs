@@ -4,6 +4,7 @@
 //! later stages can point at the source.
 
 pub mod dialect;
+pub mod rts;
 pub mod xml;
 pub mod yaml;
 mod yaml_fast;

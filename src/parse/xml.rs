@@ -125,6 +125,10 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
 #[path = "xml_fast.rs"]
 mod fast;
 
+/// The mapping of RT System profiles (`RtsProfile`), on this module's decoder and tree.
+#[path = "rts_xml.rs"]
+pub(super) mod rts;
+
 // ---------------------------------------------------------------------------------------------
 // Pass 1: decoding
 // ---------------------------------------------------------------------------------------------
@@ -462,8 +466,26 @@ impl<'t, 'f> TreeBuilder<'t, 'f> {
     }
 }
 
-/// Text → element tree. Streams through quick-xml's `NsReader`; O(n) time and memory.
+/// Text → element tree of an RTC profile (root `RtcProfile`); see [`build_any_tree`].
 fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>, Diagnostic> {
+    let root = build_any_tree(text, file, limits)?;
+    if root.local != "RtcProfile" || !root.ns.is_rtc_family() {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            format!(
+                "root element is `{}`, not `rtc:RtcProfile`: not an RTC component profile",
+                root.qname
+            ),
+        )
+        .at(root.pos));
+    }
+    Ok(root)
+}
+
+/// Text → element tree, whatever the root element (RT System profiles use this too). Streams
+/// through quick-xml's `NsReader`; O(n) time and memory.
+fn build_any_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>, Diagnostic> {
     let mut b = TreeBuilder::new(text, file, limits.max_depth.min(HARD_MAX_DEPTH));
     let mut reader = NsReader::from_str(text);
     {
@@ -613,17 +635,6 @@ fn build_tree<'t>(text: &'t str, file: &str, limits: &Limits) -> Result<Node<'t>
             "no root element: the file is empty or contains no XML element",
         ));
     };
-    if root.local != "RtcProfile" || !root.ns.is_rtc_family() {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            format!(
-                "root element is `{}`, not `rtc:RtcProfile`: not an RTC component profile",
-                root.qname
-            ),
-        )
-        .at(root.pos));
-    }
     Ok(root)
 }
 

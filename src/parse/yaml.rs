@@ -33,18 +33,21 @@ pub const MAX_NODES: usize = 2_000_000;
 /// starts (column 0) with `rtcProfile:`, `"rtcProfile":` or `'rtcProfile':`, or a flow mapping
 /// `{rtcProfile: …`. Only the first 64 KiB are looked at; nothing is parsed.
 pub fn is_profile(bytes: &[u8]) -> bool {
+    has_root_key(bytes, "rtcProfile")
+}
+
+/// True when the bytes look like a YAML document with the top-level key `key`, by the rule of
+/// [`is_profile`] (`rtsProfile` finds RT System profiles).
+pub fn has_root_key(bytes: &[u8], key: &str) -> bool {
     let head = &bytes[..bytes.len().min(64 * 1024)];
     let head = head.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(head);
+    let k = key.as_bytes();
+    let quoted = |q: u8| [&[q][..], k, &[q][..]].concat();
+    let (dq, sq) = (quoted(b'"'), quoted(b'\''));
     head.split(|&b| b == b'\n').any(|line| {
         let line = line.strip_prefix(b"{").unwrap_or(line);
         let line = line.strip_prefix(b"--- ").unwrap_or(line);
-        [
-            &b"rtcProfile"[..],
-            &b"\"rtcProfile\""[..],
-            &b"'rtcProfile'"[..],
-        ]
-        .iter()
-        .any(|k| {
+        [k, &dq[..], &sq[..]].iter().any(|k| {
             line.strip_prefix(*k).is_some_and(|rest| {
                 let rest = trim_start_blank(rest);
                 rest.first() == Some(&b':')
@@ -65,37 +68,7 @@ fn trim_start_blank(s: &[u8]) -> &[u8] {
 /// `rtcProfile`). Everything else — unknown keys, values of the wrong shape — becomes a warning
 /// and is kept as an [`Extra`] on the nearest node.
 pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagnostic> {
-    let src = match std::str::from_utf8(bytes) {
-        Ok(s) => s,
-        Err(e) => {
-            let valid = &bytes[..e.valid_up_to()];
-            // The prefix is valid UTF-8 by construction.
-            let prefix = std::str::from_utf8(valid).unwrap_or("");
-            let line = prefix.matches('\n').count() + 1;
-            let col = prefix.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-            return Err(Diagnostic::error(
-                codes::ENCODING,
-                file,
-                format!("invalid UTF-8 byte sequence at byte {}", e.valid_up_to()),
-            )
-            .at(Pos::new(to_u32(line), to_u32(col)))
-            .with_hint("YAML profiles must be UTF-8; re-save the file as UTF-8"));
-        }
-    };
-
-    if let Some((off, depth)) = flow_depth_exceeds(src, limits.max_depth) {
-        return Err(Diagnostic::error(
-            codes::TOO_DEEP,
-            file,
-            format!(
-                "YAML flow collections nest deeper than the limit of {} levels ({depth} `[`/`{{` \
-                 open here)",
-                limits.max_depth
-            ),
-        )
-        .at(Locator::new(src).pos(off))
-        .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile"));
-    }
+    let src = source(bytes, file, limits)?;
 
     // The common case (one block-style document) is read by our own line reader; anything
     // it does not handle — and every error — goes through serde_norway.
@@ -146,6 +119,47 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
     })
 }
 
+/// The mapping of RT System profiles (`rtsProfile`), on this module's value builder, limits and
+/// locator.
+#[path = "rts_yaml.rs"]
+pub(super) mod rts;
+
+/// The bytes as text: UTF-8, and no flow collections nested beyond the depth limit.
+fn source<'b>(bytes: &'b [u8], file: &str, limits: &Limits) -> Result<&'b str, Diagnostic> {
+    let src = match std::str::from_utf8(bytes) {
+        Ok(s) => s,
+        Err(e) => {
+            let valid = &bytes[..e.valid_up_to()];
+            // The prefix is valid UTF-8 by construction.
+            let prefix = std::str::from_utf8(valid).unwrap_or("");
+            let line = prefix.matches('\n').count() + 1;
+            let col = prefix.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            return Err(Diagnostic::error(
+                codes::ENCODING,
+                file,
+                format!("invalid UTF-8 byte sequence at byte {}", e.valid_up_to()),
+            )
+            .at(Pos::new(to_u32(line), to_u32(col)))
+            .with_hint("YAML profiles must be UTF-8; re-save the file as UTF-8"));
+        }
+    };
+
+    if let Some((off, depth)) = flow_depth_exceeds(src, limits.max_depth) {
+        return Err(Diagnostic::error(
+            codes::TOO_DEEP,
+            file,
+            format!(
+                "YAML flow collections nest deeper than the limit of {} levels ({depth} `[`/`{{` \
+                 open here)",
+                limits.max_depth
+            ),
+        )
+        .at(Locator::new(src).pos(off))
+        .with_hint("RTC Profiles nest about 15 levels; the file is probably not a profile"));
+    }
+    Ok(src)
+}
+
 /// The first document whose root mapping has `rtcProfile`, read with serde_norway. Each
 /// document is built into a `Value` by a seed that counts nodes and depth as it goes (so an
 /// alias bomb or a deep nest is stopped early).
@@ -153,6 +167,16 @@ pub(super) fn slow_value(
     bytes: &[u8],
     file: &str,
     limits: &Limits,
+) -> Result<Option<Value>, Diagnostic> {
+    slow_value_with_root(bytes, file, limits, "rtcProfile")
+}
+
+/// [`slow_value`] for the first document whose root mapping has `root_key`.
+fn slow_value_with_root(
+    bytes: &[u8],
+    file: &str,
+    limits: &Limits,
+    root_key: &str,
 ) -> Result<Option<Value>, Diagnostic> {
     let mut state = CountState {
         nodes: 0,
@@ -169,7 +193,7 @@ pub(super) fn slow_value(
             .deserialize(doc)
             .map_err(|e| yaml_error(e, file, limits))?,
         );
-        if matches!(&v, Value::Mapping(m) if m.contains_key("rtcProfile")) {
+        if matches!(&v, Value::Mapping(m) if m.contains_key(root_key)) {
             return Ok(Some(v));
         }
     }

@@ -35,6 +35,11 @@ struct Line {
 /// The document's root value when the whole source is in the subset this reader handles and
 /// the root is a mapping with an `rtcProfile` key; `None` otherwise.
 pub(crate) fn parse(src: &str, max_depth: usize) -> Option<Value> {
+    parse_with_root(src, max_depth, "rtcProfile")
+}
+
+/// [`parse`] for a root mapping with the key `root_key` (`rtsProfile` for system profiles).
+pub(crate) fn parse_with_root(src: &str, max_depth: usize, root_key: &str) -> Option<Value> {
     if !plain_text(src.as_bytes()) {
         return None;
     }
@@ -51,7 +56,7 @@ pub(crate) fn parse(src: &str, max_depth: usize) -> Option<Value> {
         return None;
     }
     match &root {
-        Value::Mapping(m) if m.contains_key("rtcProfile") => Some(root),
+        Value::Mapping(m) if m.contains_key(root_key) => Some(root),
         _ => None,
     }
 }
