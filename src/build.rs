@@ -21,6 +21,9 @@ pub struct LoadOptions {
     pub skip_dirs: Vec<PathBuf>,
     /// Accept an input with no profile at all (`--allow-empty`); otherwise that is an error.
     pub allow_empty: bool,
+    /// More directories of IDL files (`--idl-path`, `idl-path`), searched recursively, e.g. an
+    /// OpenRTM installation's `rtm/idl`.
+    pub idl_path: Vec<PathBuf>,
 }
 
 /// `--strict` and a profile has an error: nothing was written. Carries the findings so the
@@ -161,15 +164,61 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             }
         }
     }
-    if files == 0 && !opts.allow_empty {
+    let idl = read_idl(&found.idl, opts)?;
+    if files == 0 && found.idl.is_empty() && !opts.allow_empty {
         return Err(NothingToDocument(nothing_found(input, &skipped)).into());
     }
+    diagnostics.extend(idl.diagnostics.iter().cloned());
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
+    let mut catalog = Catalog::build(profiles, diagnostics);
+    catalog.idl = idl;
     Ok(Loaded {
-        catalog: Catalog::build(profiles, diagnostics),
+        catalog,
         skipped,
         files,
     })
+}
+
+/// Reads the IDL files found below the input and on the IDL path (each file once, in order).
+/// An unreadable file is a diagnostic of the set, like a syntax error.
+fn read_idl(found: &[(PathBuf, String)], opts: &LoadOptions) -> Result<crate::idl::IdlSet> {
+    let mut all: Vec<(PathBuf, String)> = found.to_vec();
+    for dir in &opts.idl_path {
+        all.extend(
+            walk::idl_files(dir)
+                .with_context(|| format!("--idl-path `{}`: not a directory", dir.display()))?,
+        );
+    }
+    let read: Vec<std::result::Result<crate::idl::SourceFile, Diagnostic>> = all
+        .par_iter()
+        .map(|(path, rel)| {
+            use std::io::Read;
+            let mut bytes = Vec::new();
+            std::fs::File::open(path)
+                .and_then(|f| {
+                    f.take(opts.limits.max_file_size.saturating_add(1))
+                        .read_to_end(&mut bytes)
+                })
+                .map(|_| crate::idl::SourceFile::new(rel.clone(), bytes))
+                .map_err(|e| Diagnostic::io(rel, &e))
+        })
+        .collect();
+    let mut sources = Vec::with_capacity(read.len());
+    let mut failed = Vec::new();
+    for r in read {
+        match r {
+            Ok(s) => sources.push(s),
+            Err(d) => failed.push(d),
+        }
+    }
+    let idl_opts = crate::idl::IdlOptions {
+        max_file_size: opts.limits.max_file_size,
+        max_depth: opts.limits.max_depth,
+        ..Default::default()
+    };
+    let mut set = crate::idl::read(&sources, &idl_opts);
+    set.diagnostics.extend(failed);
+    Ok(set)
 }
 
 /// The message of [`NothingToDocument`]: the directory and what the walk left out, by kind.
@@ -199,7 +248,7 @@ fn nothing_found(input: &Path, skipped: &[walk::Skipped]) -> String {
         format!("skipped {}", parts.join(", "))
     };
     format!(
-        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`) in `{}` ({looked}; \
+        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`) and no IDL file in `{}` ({looked}; \
          `--verbose` lists them). Check the path and the --include/--exclude patterns, or pass \
          --allow-empty to build an empty catalogue anyway",
         input.display()

@@ -298,6 +298,10 @@ pub struct Catalog {
     pub categories: Vec<Facet>,
     pub vendors: Vec<Facet>,
     pub diagnostics: Vec<Diagnostic>,
+    /// The IDL files read (below the input and on the IDL path): what is inside the data types
+    /// and service interfaces. Left out of `catalog.json` when there are none.
+    #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
+    pub idl: crate::idl::IdlSet,
     #[serde(skip)]
     type_index: HashMap<String, usize>,
     #[serde(skip)]
@@ -678,6 +682,7 @@ impl Catalog {
             categories,
             vendors,
             diagnostics,
+            idl: Default::default(),
             type_index,
             interface_index,
         }

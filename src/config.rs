@@ -36,6 +36,8 @@ pub struct Config {
     pub include: Option<Vec<String>>,
     /// Globs of input-relative paths to leave out.
     pub exclude: Option<Vec<String>>,
+    /// More directories of IDL files, searched recursively (e.g. OpenRTM's `rtm/idl`).
+    pub idl_path: Option<Vec<PathBuf>>,
     /// Fail the build on any profile error.
     pub strict: Option<bool>,
     /// Largest profile file accepted, in bytes.
@@ -175,6 +177,10 @@ pub fn template() -> String {
 # include = ["**"]
 # exclude = ["**/backup/**", "**/*.xml2*"]
 
+# More directories of IDL files (data types, service interfaces), searched recursively; every
+# *.idl below the input is read anyway. E.g. an OpenRTM installation's IDL:
+# idl-path = ["/usr/include/openrtm-2.0/rtm/idl"]
+
 # Fail without writing anything when a profile has an error.
 # strict = false
 
@@ -251,6 +257,8 @@ pub struct Overrides {
     pub max_depth: Option<usize>,
     /// `--allow-empty`: an input without profiles is not an error.
     pub allow_empty: bool,
+    /// `--idl-path DIR` (repeatable).
+    pub idl_path: Vec<PathBuf>,
 }
 
 /// The catalogue title when none is configured, in the UI language.
@@ -303,6 +311,15 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
             },
             skip_dirs: vec![],
             allow_empty: cli.allow_empty,
+            idl_path: if cli.idl_path.is_empty() {
+                c.idl_path
+                    .iter()
+                    .flatten()
+                    .map(|p| file.resolve(p))
+                    .collect()
+            } else {
+                cli.idl_path.clone()
+            },
         },
         site: crate::render::SiteOptions {
             title: cli

@@ -319,7 +319,9 @@ impl Workspace {
         let before = Before::of(&self.catalog, &touched);
 
         // Move the profiles out of the old catalogue (no copies), apply the changes, rebuild.
-        let old = std::mem::replace(&mut self.catalog, Catalog::build(Vec::new(), Vec::new()));
+        let mut old = std::mem::replace(&mut self.catalog, Catalog::build(Vec::new(), Vec::new()));
+        // Profiles changed, not IDL (a changed IDL file reloads everything: see `serve`).
+        let idl = std::mem::take(&mut old.idl);
         let mut profiles: BTreeMap<String, LoadedProfile> = old
             .components
             .into_iter()
@@ -348,6 +350,7 @@ impl Workspace {
         }
         let diags: Vec<Diagnostic> = self.warnings.values().flatten().cloned().collect();
         let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
+        catalog.idl = idl;
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;
 

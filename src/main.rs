@@ -78,6 +78,10 @@ struct InputArgs {
     /// Accept an input without any component profile (otherwise an error, exit 2).
     #[arg(long)]
     allow_empty: bool,
+    /// Directory of IDL files to read as well, searched recursively (repeatable), e.g. an
+    /// OpenRTM installation's `rtm/idl`; every `*.idl` below the input is read anyway.
+    #[arg(long, value_name = "DIR")]
+    idl_path: Vec<PathBuf>,
 }
 
 /// What the pages look like: shared by `build` and `serve`.
@@ -282,6 +286,7 @@ fn overrides(
         max_file_size: i.max_file_size,
         max_depth: i.max_depth,
         allow_empty: i.allow_empty,
+        idl_path: i.idl_path.clone(),
     }
 }
 
@@ -347,6 +352,12 @@ fn check_command(input: &Path, i: &InputArgs) -> String {
     }
     if let Some(n) = i.max_depth {
         cmd.push_str(&format!(" --max-depth {n}"));
+    }
+    for d in &i.idl_path {
+        cmd.push_str(&format!(
+            " --idl-path {}",
+            shell_quote(&d.to_string_lossy())
+        ));
     }
     cmd
 }
@@ -593,6 +604,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             max_file_size: args.input_args.max_file_size,
             max_depth: args.input_args.max_depth,
             allow_empty: args.input_args.allow_empty,
+            idl_path: args.input_args.idl_path.clone(),
             ..Default::default()
         },
     )

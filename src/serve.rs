@@ -209,7 +209,9 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
             }
             let start = std::time::Instant::now();
             let full = paths.iter().any(|p| {
-                config_file.as_deref() == Some(p.as_path())
+                // IDL files define what every type page shows: reload everything.
+                p.extension().is_some_and(|e| e.eq_ignore_ascii_case("idl"))
+                    || config_file.as_deref() == Some(p.as_path())
                     || watch_extra.iter().any(|w| p.starts_with(w))
             });
             let result = if full {

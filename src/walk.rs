@@ -195,6 +195,7 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
     let Candidates {
         files: candidates,
         skipped,
+        ..
     } = candidates(input, opts)?;
     let mut result = WalkResult {
         skipped,
@@ -232,12 +233,15 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
 #[derive(Default)]
 pub(crate) struct Candidates {
     pub files: Vec<(PathBuf, String)>,
+    /// `*.idl` files (data types and service interfaces), read by [`crate::idl`].
+    pub idl: Vec<(PathBuf, String)>,
     pub skipped: Vec<Skipped>,
 }
 
 impl Candidates {
     fn append(&mut self, mut other: Candidates) {
         self.files.append(&mut other.files);
+        self.idl.append(&mut other.idl);
         self.skipped.append(&mut other.skipped);
     }
 }
@@ -526,8 +530,10 @@ impl<'a> Walker<'a> {
             .extension()
             .and_then(|e| e.to_str())
             .map(|e| e.to_ascii_lowercase());
-        let candidate =
-            matches!(ext.as_deref(), Some("xml" | "yaml" | "yml")) || named_like_profile(path);
+        let idl = ext.as_deref() == Some("idl");
+        let candidate = idl
+            || matches!(ext.as_deref(), Some("xml" | "yaml" | "yml"))
+            || named_like_profile(path);
         if !candidate {
             out.skipped.push(Skipped {
                 rel,
@@ -554,8 +560,33 @@ impl<'a> Walker<'a> {
                 return;
             }
         }
-        out.files.push((path.to_path_buf(), rel));
+        if idl {
+            out.idl.push((path.to_path_buf(), rel));
+        } else {
+            out.files.push((path.to_path_buf(), rel));
+        }
     }
+}
+
+/// Every `*.idl` file below `dir` (an `--idl-path` directory), sorted, with its path shown as
+/// `NAME/…` where NAME is the directory's own name — never the absolute path of this machine.
+pub fn idl_files(dir: &Path) -> Result<Vec<(PathBuf, String)>, WalkError> {
+    if !dir.is_dir() {
+        return Err(WalkError::Missing(dir.to_path_buf()));
+    }
+    let opts = WalkOptions::default();
+    let w = Walker::new(dir, &opts)?;
+    let found = w.subtree(dir);
+    let name = dir
+        .canonicalize()
+        .ok()
+        .and_then(|d| d.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .unwrap_or_else(|| "idl-path".into());
+    Ok(found
+        .idl
+        .into_iter()
+        .map(|(p, rel)| (p, format!("{name}/{rel}")))
+        .collect())
 }
 
 #[cfg(test)]

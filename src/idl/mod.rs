@@ -136,6 +136,23 @@ pub struct IdlSet {
     by_simple: HashMap<String, Vec<String>>,
 }
 
+impl IdlSet {
+    /// No IDL file was read.
+    pub fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+}
+
+/// In `catalog.json`: the files with their definitions (the diagnostics are the catalogue's).
+impl serde::Serialize for IdlSet {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("IdlSet", 1)?;
+        st.serialize_field("files", &self.files)?;
+        st.end()
+    }
+}
+
 /// A definition found by a lookup, with the file it is in.
 #[derive(Debug, Clone, Copy)]
 pub struct IdlItem<'a> {

@@ -41,6 +41,8 @@ struct Skeleton<'a> {
     categories: &'a [crate::catalog::Facet],
     vendors: &'a [crate::catalog::Facet],
     diagnostics: &'a [crate::diagnostic::Diagnostic],
+    #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
+    idl: &'a crate::idl::IdlSet,
 }
 
 /// Where the components go in the pretty-printed skeleton (top-level keys are indented by two
@@ -66,6 +68,7 @@ pub fn write_json(
         categories: &catalog.categories,
         vendors: &catalog.vendors,
         diagnostics: &catalog.diagnostics,
+        idl: &catalog.idl,
     })?;
     let at = skeleton
         .windows(COMPONENTS_KEY.len())

@@ -6,6 +6,7 @@
 pub mod doxygen;
 pub mod facts;
 pub mod html;
+pub mod idl_view;
 pub mod json;
 pub mod markdown;
 pub mod text;

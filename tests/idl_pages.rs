@@ -1,0 +1,183 @@
+//! IDL on the pages: data-type and interface pages show their definitions (fields with types
+//! and doc comments, enum values, operations with parameters), types with pages are linked,
+//! `--idl-path` adds IDL outside the input (shown by a relative path), `catalog.json` carries
+//! the files, and IDL findings are reported like the profiles'.
+
+mod common;
+use common::*;
+use std::path::Path;
+
+fn read(p: &Path) -> String {
+    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn example_type_and_interface_pages_show_their_idl() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let b = rtcdoc(&["build", "examples", "-o", out.to_str().unwrap()], &root());
+    assert!(b.status.success(), "{}", stderr(&b));
+    let t = read(&out.join("types/detection-timedobjectlist.html"));
+    assert!(
+        t.contains("Defined in <code>idl/Detection.idl:38</code>"),
+        "{t}"
+    );
+    assert!(t.contains("IDL:Detection/TimedObjectList:1.0"));
+    assert!(t.contains("<p>The detections of one processed image.</p>"));
+    assert!(t.contains("<tr id=\"field-tm\"><td><code>tm</code></td><td><code>Example::Time</code></td><td>Capture time of the image</td></tr>"), "{t}");
+    assert!(t.contains("<tr id=\"field-data\">"));
+    let i = read(&out.join("interfaces/detection-modelrepository.html"));
+    assert!(i.contains("id=\"op-fetch\""), "{i}");
+    assert!(i.contains("<code><strong>fetch</strong>(</code><code>in </code><code>string</code> <code>name</code>"), "{i}");
+    assert!(i.contains("<code>raises (</code><code>NotFound</code>"));
+    assert!(i.contains("<dd>true when the model came from the local cache</dd>"));
+    assert!(i.contains("<code>models</code> (read-only)"));
+    let c = read(&out.join("interfaces/camera-cameracontrol.html"));
+    assert!(
+        c.contains("id=\"op-setExposure\"")
+            && c.contains("Sets the exposure time for MANUAL mode."),
+        "{c}"
+    );
+    // A type no IDL defines has no definition section.
+    let l = read(&out.join("types/rtc-timedlong.html"));
+    assert!(!l.contains("id=\"definition\""));
+    // Japanese labels.
+    let ja = dir.path().join("ja");
+    let b = rtcdoc(
+        &[
+            "build",
+            "examples",
+            "--language",
+            "ja",
+            "-o",
+            ja.to_str().unwrap(),
+        ],
+        &root(),
+    );
+    assert!(b.status.success());
+    assert!(read(&ja.join("types/detection-timedobjectlist.html")).contains("フィールド"));
+}
+
+/// A lab's own types outside the input, through `--idl-path`: nested types that are port types
+/// link to each other's pages; the file is shown relative to the IDL directory.
+#[test]
+fn idl_path_types_are_resolved_and_linked() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(
+        d,
+        "in/a/RTC.xml",
+        &xml_profile(
+            "A",
+            &[
+                ("DataOutPort", "pose", "Lab::Pose"),
+                ("DataOutPort", "stamped", "Lab::StampedPose"),
+            ],
+        ),
+    );
+    write(
+        d,
+        "shared-idl/lab/Lab.idl",
+        "module Lab {\n  /// A position.\n  struct Pose { double x; ///< metres\n double y; };\n  struct StampedPose { unsigned long long stamp; Pose pose; ///< where\n sequence<Pose> trail; };\n};\n",
+    );
+    let out = d.join("site");
+    let b = rtcdoc(
+        &["build", "in", "-o", "site", "--idl-path", "shared-idl"],
+        d,
+    );
+    assert!(b.status.success(), "{}", stderr(&b));
+    let s = read(&out.join("types/lab-stampedpose.html"));
+    assert!(
+        s.contains("Defined in <code>shared-idl/lab/Lab.idl:5</code>"),
+        "{s}"
+    );
+    assert!(
+        !s.contains(&d.to_string_lossy().to_string()),
+        "absolute path on the page"
+    );
+    assert!(
+        s.contains("<a href=\"../types/lab-pose.html\"><code>Pose</code></a>"),
+        "{s}"
+    );
+    assert!(
+        s.contains("<a href=\"../types/lab-pose.html\"><code>sequence&lt;Pose&gt;</code></a>"),
+        "{s}"
+    );
+    let p = read(&out.join("types/lab-pose.html"));
+    assert!(
+        p.contains("<p>A position.</p>") && p.contains("<td>metres</td>"),
+        "{p}"
+    );
+    // Without the IDL path: no definition, and the build says nothing about it.
+    let b = rtcdoc(&["build", "in", "-o", "site2"], d);
+    assert!(b.status.success());
+    assert!(!read(&d.join("site2/types/lab-pose.html")).contains("id=\"definition\""));
+    // The JSON carries the IDL files and their definitions.
+    let j = rtcdoc(
+        &[
+            "build",
+            "in",
+            "-f",
+            "json",
+            "-o",
+            "j",
+            "--idl-path",
+            "shared-idl",
+        ],
+        d,
+    );
+    assert!(j.status.success());
+    let v: serde_json::Value = serde_json::from_str(&read(&d.join("j/catalog.json"))).unwrap();
+    let files = v["idl"]["files"].as_array().expect("idl.files");
+    assert_eq!(files[0]["path"], "shared-idl/lab/Lab.idl");
+    let text = serde_json::to_string(&files[0]).unwrap();
+    assert!(
+        text.contains("\"StampedPose\"") && text.contains("metres"),
+        "{text}"
+    );
+    // Without IDL, catalog.json has no idl key (unchanged for IDL-less catalogues).
+    let j = rtcdoc(&["build", "in", "-f", "json", "-o", "j2"], d);
+    assert!(j.status.success());
+    assert!(!read(&d.join("j2/catalog.json")).contains("\"idl\""));
+    // A missing --idl-path directory is an error (exit 2).
+    let m = rtcdoc(&["build", "in", "-o", "site3", "--idl-path", "nope"], d);
+    assert_eq!(m.status.code(), Some(2), "{}", stderr(&m));
+    assert!(stderr(&m).contains("--idl-path `nope`"), "{}", stderr(&m));
+}
+
+#[test]
+fn idl_findings_are_reported_with_their_position() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(
+        d,
+        "in/a/RTC.xml",
+        &xml_profile("A", &[("DataOutPort", "p", "M::S")]),
+    );
+    write(
+        d,
+        "in/idl/Bad.idl",
+        "module M {\n  struct S { long x }; \n};\n",
+    );
+    let out = rtcdoc(&["check", "in", "--format", "json"], d);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let idl: Vec<&serde_json::Value> = v["diagnostics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|x| x["code"] == "RTC020")
+        .collect();
+    assert_eq!(idl.len(), 1, "{v}");
+    assert_eq!(idl[0]["file"], "in/idl/Bad.idl");
+    assert_eq!(idl[0]["line"], 2);
+    let b = rtcdoc(&["build", "in", "-o", "site"], d);
+    assert!(stderr(&b).contains("in/idl/Bad.idl:2:"), "{}", stderr(&b));
+    // An input of IDL alone is something to document.
+    write(d, "only/X.idl", "module X { struct Y { long z; }; };\n");
+    assert!(rtcdoc(&["check", "only"], d).status.success());
+}
