@@ -171,7 +171,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     diagnostics.extend(idl.diagnostics.iter().cloned());
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
     let mut catalog = Catalog::build(profiles, diagnostics);
-    catalog.idl = idl;
+    catalog.attach_idl(idl);
     Ok(Loaded {
         catalog,
         skipped,

@@ -236,6 +236,10 @@ pub struct DataType {
     pub consumers: Vec<PortRef>,
     /// Other ports carrying it (event ports, unknown port types).
     pub others: Vec<PortRef>,
+    /// Types whose fields (or typedef) hold this one, by canonical name, sorted: filled from
+    /// the IDL ([`Catalog::attach_idl`]).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub contained_in: Vec<String>,
 }
 
 /// A service interface type used by some service port in the catalogue.
@@ -599,6 +603,7 @@ impl Catalog {
                 producers: port(acc.a),
                 consumers: port(acc.b),
                 others: port(acc.other),
+                contained_in: Vec::new(),
             })
             .collect();
         let if_slugs = unique_slugs(
@@ -686,6 +691,141 @@ impl Catalog {
             type_index,
             interface_index,
         }
+    }
+
+    /// Takes in the IDL read for this catalogue. Every struct, union, enum, typedef and
+    /// exception reachable from a port type or an interface (through fields, union cases,
+    /// typedefs, sequences, operation parameters and results) gets a data-type entry of its own
+    /// (so a page: a nested `RTC::Time` is documented, not only the `RTC::TimedLong` a port
+    /// names), and each type learns which types contain it.
+    pub fn attach_idl(&mut self, idl: crate::idl::IdlSet) {
+        use crate::idl::{IdlDefinition, IdlType};
+        self.idl = idl;
+        if self.idl.is_empty() {
+            return;
+        }
+        // The named types a definition refers to (resolved scoped names).
+        fn named(ty: &IdlType, out: &mut Vec<String>) {
+            match ty {
+                IdlType::Sequence { element, .. } => named(element, out),
+                IdlType::Named { name, resolved } => {
+                    out.push(resolved.clone().unwrap_or_else(|| name.clone()))
+                }
+                _ => {}
+            }
+        }
+        fn refs(d: &IdlDefinition) -> Vec<String> {
+            let mut out = Vec::new();
+            match d {
+                IdlDefinition::Struct(s) => s.fields.iter().for_each(|f| named(&f.ty, &mut out)),
+                IdlDefinition::Exception(e) => e.fields.iter().for_each(|f| named(&f.ty, &mut out)),
+                IdlDefinition::Union(u) => {
+                    u.cases.iter().for_each(|c| named(&c.field.ty, &mut out))
+                }
+                IdlDefinition::Typedef(t) => named(&t.ty, &mut out),
+                IdlDefinition::Interface(i) => {
+                    for o in &i.operations {
+                        if let Some(r) = &o.return_type {
+                            named(r, &mut out);
+                        }
+                        o.params.iter().for_each(|p| named(&p.ty, &mut out));
+                        o.raises.iter().for_each(|r| named(r, &mut out));
+                    }
+                    i.attributes.iter().for_each(|a| named(&a.ty, &mut out));
+                }
+                _ => {}
+            }
+            out
+        }
+        let documented = |d: &IdlDefinition| {
+            matches!(
+                d,
+                IdlDefinition::Struct(_)
+                    | IdlDefinition::Union(_)
+                    | IdlDefinition::Enum(_)
+                    | IdlDefinition::Typedef(_)
+                    | IdlDefinition::Exception(_)
+            )
+        };
+        // Breadth first from every port type and interface; `contains` maps a type to the
+        // types holding it.
+        let mut queue: std::collections::VecDeque<String> = self
+            .data_types
+            .iter()
+            .map(|t| t.name.clone())
+            .chain(self.interfaces.iter().map(|t| t.name.clone()))
+            .collect();
+        let mut seen: std::collections::BTreeSet<String> = queue.iter().cloned().collect();
+        let mut contains: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        let mut found: Vec<String> = Vec::new();
+        while let Some(name) = queue.pop_front() {
+            let Some(item) = self.idl.find(&name) else {
+                continue;
+            };
+            let holder = canonical_type(item.definition.scoped_name());
+            let holder_is_type = !matches!(item.definition, IdlDefinition::Interface(_));
+            for r in refs(item.definition) {
+                let Some(target) = self.idl.find(&r) else {
+                    continue;
+                };
+                if !documented(target.definition) {
+                    continue;
+                }
+                let scoped = canonical_type(target.definition.scoped_name());
+                if holder_is_type && scoped != holder {
+                    contains
+                        .entry(scoped.clone())
+                        .or_default()
+                        .push(holder.clone());
+                }
+                if seen.insert(scoped.clone()) {
+                    found.push(scoped.clone());
+                    queue.push_back(scoped);
+                }
+            }
+        }
+        let mut taken: std::collections::HashSet<String> = self
+            .data_types
+            .iter()
+            .map(|t| t.slug.clone())
+            .chain(std::iter::once("index".to_string()))
+            .collect();
+        for name in found {
+            if self.type_index.contains_key(&canonical_type(&name)) {
+                continue;
+            }
+            let base = slugify(&name);
+            let mut slug = base.clone();
+            let mut n = 1;
+            while !taken.insert(slug.clone()) {
+                n += 1;
+                slug = format!("{base}-{n}");
+            }
+            self.data_types.push(DataType {
+                spellings: vec![name.clone()],
+                name,
+                slug,
+                idl_files: Vec::new(),
+                producers: Vec::new(),
+                consumers: Vec::new(),
+                others: Vec::new(),
+                contained_in: Vec::new(),
+            });
+        }
+        self.data_types.sort_by(|a, b| a.name.cmp(&b.name));
+        for t in &mut self.data_types {
+            if let Some(mut by) = contains.remove(&t.name) {
+                by.sort();
+                by.dedup();
+                t.contained_in = by;
+            }
+        }
+        self.type_index = self
+            .data_types
+            .iter()
+            .enumerate()
+            .map(|(i, t)| (t.name.clone(), i))
+            .collect();
     }
 
     /// The data type entry for any spelling of a type name.

@@ -210,6 +210,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("idl_attributes", "Attributes", "属性"),
     ("idl_bases", "Base interfaces", "基底インターフェース"),
     ("idl_cases", "Cases", "ケース"),
+    ("idl_contained_in", "Contained in", "この型を含む型"),
     ("idl_defined_in", "Defined in", "定義"),
     ("idl_definition", "Definition", "定義"),
     ("idl_field", "Field", "フィールド"),

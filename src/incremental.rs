@@ -350,7 +350,7 @@ impl Workspace {
         }
         let diags: Vec<Diagnostic> = self.warnings.values().flatten().cloned().collect();
         let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
-        catalog.idl = idl;
+        catalog.attach_idl(idl);
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;
 

@@ -28,12 +28,12 @@ fn example_type_and_interface_pages_show_their_idl() {
     );
     assert!(t.contains("IDL:Detection/TimedObjectList:1.0"));
     assert!(t.contains("<p>The detections of one processed image.</p>"));
-    assert!(t.contains("<tr id=\"field-tm\"><td><code>tm</code></td><td><code>Example::Time</code></td><td>Capture time of the image</td></tr>"), "{t}");
+    assert!(t.contains("<tr id=\"field-tm\"><td><code>tm</code></td><td><a href=\"../types/example-time.html\"><code>Example::Time</code></a></td><td>Capture time of the image</td></tr>"), "{t}");
     assert!(t.contains("<tr id=\"field-data\">"));
     let i = read(&out.join("interfaces/detection-modelrepository.html"));
     assert!(i.contains("id=\"op-fetch\""), "{i}");
     assert!(i.contains("<code><strong>fetch</strong>(</code><code>in </code><code>string</code> <code>name</code>"), "{i}");
-    assert!(i.contains("<code>raises (</code><code>NotFound</code>"));
+    assert!(i.contains("<code>raises (</code><a href=\"../types/detection-notfound.html\"><code>NotFound</code></a>"));
     assert!(i.contains("<dd>true when the model came from the local cache</dd>"));
     assert!(i.contains("<code>models</code> (read-only)"));
     let c = read(&out.join("interfaces/camera-cameracontrol.html"));
@@ -42,6 +42,32 @@ fn example_type_and_interface_pages_show_their_idl() {
             && c.contains("Sets the exposure time for MANUAL mode."),
         "{c}"
     );
+    // Types reachable through fields have pages of their own, linked both ways.
+    assert!(
+        t.contains("<a href=\"../types/example-time.html\"><code>Example::Time</code></a>"),
+        "{t}"
+    );
+    assert!(
+        t.contains("<a href=\"../types/detection-objectlist.html\"><code>ObjectList</code></a>"),
+        "{t}"
+    );
+    let list = read(&out.join("types/detection-objectlist.html"));
+    assert!(list.contains("<code>typedef</code>") && list.contains("<a href=\"../types/detection-detectedobject.html\"><code>sequence&lt;DetectedObject&gt;</code></a>"), "{list}");
+    assert!(list.contains("<a href=\"detection-timedobjectlist.html\"><code>Detection::TimedObjectList</code></a>"), "{list}");
+    let bbox = read(&out.join("types/detection-boundingbox.html"));
+    assert!(bbox.contains("id=\"contained-in\"") && bbox.contains("Detection::DetectedObject"));
+    assert!(bbox.contains("<td>Left edge</td>"), "{bbox}");
+    // Enum values and exceptions reachable from an interface.
+    let mode = read(&out.join("types/camera-exposuremode.html"));
+    assert!(
+        mode.contains(
+            "<tr id=\"value-AUTO\"><td><code>AUTO</code></td><td>The camera decides</td></tr>"
+        ),
+        "{mode}"
+    );
+    assert!(out.join("types/detection-notfound.html").is_file());
+    let index = read(&out.join("types/index.html"));
+    assert!(index.contains("detection-boundingbox.html"));
     // A type no IDL defines has no definition section.
     let l = read(&out.join("types/rtc-timedlong.html"));
     assert!(!l.contains("id=\"definition\""));

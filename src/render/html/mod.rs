@@ -1184,6 +1184,13 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                         spellings => ctx(&t.spellings),
                         idl_files => ctx(&t.idl_files),
                         def => ctx(&crate::render::idl_view::definition(catalog, &t.name)),
+                        contained_in => ctx(&t.contained_in.iter().map(|n| Link {
+                            href: catalog
+                                .data_type(n)
+                                .map(|c| format!("{}.html", c.slug))
+                                .unwrap_or_default(),
+                            text: n.clone(),
+                        }).collect::<Vec<_>>()),
                         producers => ctx(&uses(&t.producers)),
                         consumers => ctx(&uses(&t.consumers)),
                         others => ctx(&uses(&t.others)),
