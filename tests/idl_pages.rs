@@ -207,3 +207,57 @@ fn idl_findings_are_reported_with_their_position() {
     write(d, "only/X.idl", "module X { struct Y { long z; }; };\n");
     assert!(rtcdoc(&["check", "only"], d).status.success());
 }
+
+/// Markdown and Doxygen pages carry the same definitions, with the same links.
+#[test]
+fn markdown_and_doxygen_show_the_idl_too() {
+    let dir = tempfile::tempdir().unwrap();
+    let md = dir.path().join("md");
+    let b = rtcdoc(
+        &[
+            "build",
+            "examples",
+            "-f",
+            "markdown",
+            "-o",
+            md.to_str().unwrap(),
+        ],
+        &root(),
+    );
+    assert!(b.status.success(), "{}", stderr(&b));
+    let t = read(&md.join("types/detection-timedobjectlist.md"));
+    assert!(t.contains("## Definition (struct)"), "{t}");
+    assert!(t.contains("Defined in idl/Detection.idl:38"));
+    assert!(
+        t.contains(
+            "| tm | [Example::Time](../types/example-time.md) | Capture time of the image |"
+        ),
+        "{t}"
+    );
+    let i = read(&md.join("interfaces/detection-modelrepository.md"));
+    assert!(i.contains("| fetch | boolean | in string name: Model file name, e.g. \\\"yolov5s.onnx\\\"; out [ModelData](../types/detection-modeldata.md) data: The model as bytes | [NotFound](../types/detection-notfound.md) |"), "{i}");
+    assert!(md.join("types/detection-boundingbox.md").is_file());
+    let dox = dir.path().join("dox");
+    let b = rtcdoc(
+        &[
+            "build",
+            "examples",
+            "-f",
+            "doxygen",
+            "-o",
+            dox.to_str().unwrap(),
+        ],
+        &root(),
+    );
+    assert!(b.status.success(), "{}", stderr(&b));
+    let t = read(&dox.join("types/detection-timedobjectlist.dox"));
+    assert!(
+        t.contains("Capture time of the image") && t.contains("\\ref rtc_type_example_time"),
+        "{t}"
+    );
+    let i = read(&dox.join("interfaces/detection-modelrepository.dox"));
+    assert!(
+        i.contains("fetch") && i.contains("\\ref rtc_type_detection_notfound"),
+        "{i}"
+    );
+}

@@ -356,6 +356,9 @@ fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     d!(out, "<p>\\ref index › \\ref rtc_types</p>");
     d!(out);
     names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
+    super::idl_view::write_definition::<Dox>(&mut out, cat, &t.name, lang, &|o, a, text| {
+        section(o, &page, a, text)
+    });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-producers", "producers", &t.producers),
@@ -383,6 +386,9 @@ fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
         d!(out);
     }
     names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
+    super::idl_view::write_definition::<Dox>(&mut out, cat, &t.name, lang, &|o, a, text| {
+        section(o, &page, a, text)
+    });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-providers", "providers", &t.providers),

@@ -3,7 +3,9 @@
 //! interface's operations, attributes and bases — each type linked to its own page when the
 //! catalogue has one. Shared by the renderers; the definitions come from [`crate::idl`].
 
+use super::text::Markup;
 use crate::catalog::Catalog;
+use crate::i18n::Lang;
 use crate::idl::{IdlDefinition, IdlDoc, IdlField, IdlParamDirection, IdlType};
 use serde::Serialize;
 
@@ -14,6 +16,16 @@ pub struct TypeRef {
     /// Relative to the site root (`types/rtc-time.html`), when there is such a page.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub page: Option<String>,
+    /// The catalogue entry of that page (for the Markdown and Doxygen links).
+    #[serde(skip)]
+    pub entry: Option<Entry>,
+}
+
+/// A data type or an interface of the catalogue, by index.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Entry {
+    DataType(usize),
+    Interface(usize),
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -110,13 +122,21 @@ struct Linker<'a> {
 }
 
 impl Linker<'_> {
-    fn page_of(&self, scoped: &str) -> Option<String> {
-        if let Some(t) = self.catalog.data_type(scoped) {
-            return Some(format!("types/{}.html", t.slug));
+    fn entry_of(&self, scoped: &str) -> Option<(Entry, String)> {
+        let c = self.catalog;
+        if let Some(i) = c.data_types.iter().position(|t| t.name == scoped) {
+            return Some((
+                Entry::DataType(i),
+                format!("types/{}.html", c.data_types[i].slug),
+            ));
         }
-        self.catalog
-            .interface(scoped)
-            .map(|i| format!("interfaces/{}.html", i.slug))
+        if let Some(t) = c.data_type(scoped) {
+            let i = c.data_types.iter().position(|x| x.name == t.name)?;
+            return Some((Entry::DataType(i), format!("types/{}.html", t.slug)));
+        }
+        let t = c.interface(scoped)?;
+        let i = c.interfaces.iter().position(|x| x.name == t.name)?;
+        Some((Entry::Interface(i), format!("interfaces/{}.html", t.slug)))
     }
 
     fn type_ref(&self, ty: &IdlType) -> TypeRef {
@@ -124,15 +144,16 @@ impl Linker<'_> {
         while let IdlType::Sequence { element, .. } = inner {
             inner = element;
         }
-        let page = match inner {
+        let found = match inner {
             IdlType::Named { name, resolved } => {
-                self.page_of(resolved.as_deref().unwrap_or(name.as_str()))
+                self.entry_of(resolved.as_deref().unwrap_or(name.as_str()))
             }
             _ => None,
         };
         TypeRef {
             text: ty.to_idl(),
-            page,
+            page: found.as_ref().map(|(_, p)| p.clone()),
+            entry: found.map(|(e, _)| e),
         }
     }
 
@@ -253,6 +274,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                                 TypeRef {
                                     text: "void".into(),
                                     page: None,
+                                    entry: None,
                                 },
                             ),
                             oneway: o.oneway,
@@ -286,4 +308,179 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
         _ => {}
     }
     Some(v)
+}
+
+/// The definition of `name` as Markdown or Doxygen (through [`Markup`]): where it is defined,
+/// its documentation, and tables of its fields, values, operations and attributes, with types
+/// linked to their pages. `heading` writes a level-2 section heading. Nothing when no IDL
+/// defines the type.
+pub fn write_definition<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    name: &str,
+    lang: Lang,
+    heading: &dyn Fn(&mut String, &str, &str),
+) {
+    let Some(d) = definition(cat, name) else {
+        return;
+    };
+    let ty = |r: &TypeRef| -> String {
+        match r.entry {
+            Some(Entry::DataType(i)) => M::link(&r.text, &M::type_target(&cat.data_types[i])),
+            Some(Entry::Interface(i)) => M::link(&r.text, &M::iface_target(&cat.interfaces[i])),
+            None => M::esc(&r.text),
+        }
+    };
+    heading(
+        out,
+        "sec-definition",
+        &format!("{} ({})", lang.t("idl_definition"), d.kind),
+    );
+    let mut at = format!("{} {}:{}", lang.t("idl_defined_in"), d.file, d.line);
+    if !d.repository_id.is_empty() {
+        at.push_str(&format!(" · {}", d.repository_id));
+    }
+    M::paragraph(out, &M::esc(&at));
+    for text in [&d.brief, &d.details] {
+        if !text.is_empty() {
+            M::paragraph(out, &M::esc(text));
+        }
+    }
+    for (key, r) in [("idl_aliases", &d.aliases), ("idl_switch", &d.switch)] {
+        if let Some(r) = r {
+            M::paragraph(out, &format!("{}: {}", M::esc(lang.t(key)), ty(r)));
+        }
+    }
+    if !d.bases.is_empty() {
+        let b: Vec<String> = d.bases.iter().map(ty).collect();
+        M::paragraph(
+            out,
+            &format!("{}: {}", M::esc(lang.t("idl_bases")), b.join(", ")),
+        );
+    }
+    if !d.fields.is_empty() {
+        let union = d.kind == "union";
+        let rows: Vec<Vec<String>> = d
+            .fields
+            .iter()
+            .map(|f| {
+                let mut row = Vec::new();
+                if union {
+                    row.push(M::esc(&f.labels));
+                }
+                row.push(M::esc(&format!("{}{}", f.name, f.array)));
+                row.push(ty(&f.ty));
+                row.push(M::esc(&f.doc));
+                row
+            })
+            .collect();
+        let mut cols = Vec::new();
+        if union {
+            cols.push(lang.t("idl_cases"));
+        }
+        cols.extend([lang.t("idl_field"), lang.t("type"), lang.t("description")]);
+        M::table(out, &cols, &rows);
+    }
+    if !d.values.is_empty() {
+        let rows: Vec<Vec<String>> = d
+            .values
+            .iter()
+            .map(|v| vec![M::esc(&v.name), M::esc(&v.doc)])
+            .collect();
+        M::table(out, &[lang.t("idl_values"), lang.t("description")], &rows);
+    }
+    if !d.operations.is_empty() {
+        let rows: Vec<Vec<String>> = d
+            .operations
+            .iter()
+            .map(|o| {
+                let params: Vec<String> = o
+                    .params
+                    .iter()
+                    .map(|p| {
+                        let mut s =
+                            format!("{} {} {}", M::esc(p.direction), ty(&p.ty), M::esc(&p.name));
+                        if !p.doc.is_empty() {
+                            s.push_str(&format!(": {}", M::esc(&p.doc)));
+                        }
+                        s
+                    })
+                    .collect();
+                let raises: Vec<String> = o.raises.iter().map(ty).collect();
+                let mut doc = M::esc(&o.doc);
+                if !o.returns_doc.is_empty() {
+                    doc.push_str(&format!(
+                        " {}: {}",
+                        M::esc(lang.t("idl_returns")),
+                        M::esc(&o.returns_doc)
+                    ));
+                }
+                let name = if o.oneway {
+                    format!("oneway {}", o.name)
+                } else {
+                    o.name.clone()
+                };
+                vec![
+                    M::esc(&name),
+                    ty(&o.returns),
+                    params.join("; "),
+                    raises.join(", "),
+                    doc,
+                ]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("idl_operations"),
+                lang.t("idl_returns"),
+                lang.t("idl_params"),
+                lang.t("idl_raises"),
+                lang.t("description"),
+            ],
+            &rows,
+        );
+    }
+    if !d.attributes.is_empty() {
+        let rows: Vec<Vec<String>> = d
+            .attributes
+            .iter()
+            .map(|a| {
+                let name = if a.readonly {
+                    format!("{} ({})", a.name, lang.t("idl_readonly"))
+                } else {
+                    a.name.clone()
+                };
+                vec![M::esc(&name), ty(&a.ty), M::esc(&a.doc)]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("idl_attributes"),
+                lang.t("type"),
+                lang.t("description"),
+            ],
+            &rows,
+        );
+    }
+    let t = cat.data_type(name).filter(|t| !t.contained_in.is_empty());
+    if let Some(t) = t {
+        let items: Vec<String> = t
+            .contained_in
+            .iter()
+            .map(|n| match cat.data_type(n) {
+                Some(c) => M::link(n, &M::type_target(c)),
+                None => M::esc(n),
+            })
+            .collect();
+        M::paragraph(
+            out,
+            &format!(
+                "{}: {}",
+                M::esc(lang.t("idl_contained_in")),
+                items.join(", ")
+            ),
+        );
+    }
 }

@@ -381,6 +381,9 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
     );
     w!(out);
     names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
+    super::idl_view::write_definition::<Md>(&mut out, cat, &t.name, lang, &|o, a, text| {
+        heading(o, 2, a, text)
+    });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-producers", "producers", &t.producers),
@@ -413,6 +416,9 @@ fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
         w!(out);
     }
     names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
+    super::idl_view::write_definition::<Md>(&mut out, cat, &t.name, lang, &|o, a, text| {
+        heading(o, 2, a, text)
+    });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
         ("sec-providers", "providers", &t.providers),
