@@ -9,6 +9,7 @@ pub mod check;
 pub mod config;
 pub mod constraint;
 pub mod diagnostic;
+pub mod diff;
 pub mod i18n;
 pub mod incremental;
 pub mod model;

@@ -35,7 +35,10 @@ fn build_prints_rule_errors_and_warnings_like_cargo() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let err = stderr(&out);
     // file:line:col: severity[CODE]: message, with the path as the user can open it.
-    assert!(err.contains("in/bad/RTC.xml:10:95: error[RTC303]:"), "{err}");
+    assert!(
+        err.contains("in/bad/RTC.xml:10:95: error[RTC303]:"),
+        "{err}"
+    );
     assert!(err.contains("in/warn/RTC.xml:"), "{err}");
     assert!(err.contains(": warning[RTC203]:"), "{err}");
     assert!(err.contains("  = help: "), "{err}");
@@ -95,7 +98,10 @@ fn strict_build_exits_1_and_prints_the_errors() {
     let out = rtcdoc(&["build", "in", "-o", "site", "--strict"], d);
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     let err = stderr(&out);
-    assert!(err.contains("in/bad/RTC.xml:10:95: error[RTC303]:"), "{err}");
+    assert!(
+        err.contains("in/bad/RTC.xml:10:95: error[RTC303]:"),
+        "{err}"
+    );
     assert!(err.contains("nothing was written"), "{err}");
     assert!(!d.join("site").exists());
     // Usage errors are 2.
