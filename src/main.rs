@@ -748,8 +748,12 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     opts.skip_dirs.clear();
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;
-    let mut result = diff::diff(&old.loaded.catalog, &new.loaded.catalog);
-    result.map_files(&|f| old.display(f), &|f| new.display(f));
+    let result = diff::diff_named(
+        &old.loaded.catalog,
+        &new.loaded.catalog,
+        &|f| old.display(f),
+        &|f| new.display(f),
+    );
     let fail_on = args.fail_on.level();
     match args.format {
         report::OutputFormat::Json => print_stdout(&serde_json::to_string_pretty(

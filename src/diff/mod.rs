@@ -127,15 +127,6 @@ impl Diff {
     pub fn summary(&self) -> Summary {
         Summary::of(&self.changes)
     }
-
-    /// Rewrites the files of the changes (relative to their catalogue's input) with `old` and
-    /// `new`, e.g. to name them relative to the current directory.
-    pub fn map_files(&mut self, old: &dyn Fn(&str) -> String, new: &dyn Fn(&str) -> String) {
-        for c in &mut self.changes {
-            c.file = c.file.as_deref().map(new);
-            c.old_file = c.old_file.as_deref().map(old);
-        }
-    }
 }
 
 /// The matching key of a component: vendor, category and name of its id (either form), else of
@@ -194,8 +185,17 @@ fn ident(c: &Component) -> Ident {
     }
 }
 
-/// Compares two catalogues.
+/// How the files of a catalogue (relative to its input) are named in the changes.
+pub type Namer<'a> = &'a dyn Fn(&str) -> String;
+
+/// Compares two catalogues; files are named as in the catalogues.
 pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
+    diff_named(old, new, &|f| f.to_string(), &|f| f.to_string())
+}
+
+/// Compares two catalogues, naming the files of OLD with `old_name` and those of NEW with
+/// `new_name` (e.g. relative to the current directory).
+pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer) -> Diff {
     let old_ids: Vec<Ident> = old.components.iter().map(ident).collect();
     let new_ids: Vec<Ident> = new.components.iter().map(ident).collect();
     let mut groups: BTreeMap<&Key, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
@@ -222,7 +222,15 @@ pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
                 format!("{} ({})", id.id, c.source)
             }
         };
-        for (o, n) in pair(olds, news, &old_ids, &new_ids, old, new, &mut out) {
+        let sides = Sides {
+            old,
+            new,
+            old_ids: &old_ids,
+            new_ids: &new_ids,
+            old_name,
+            new_name,
+        };
+        for (o, n) in pair(olds, news, &sides, &mut out) {
             match (o, n) {
                 (Some(o), Some(n)) => {
                     counts.matched += 1;
@@ -230,8 +238,8 @@ pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
                     let before = out.len();
                     compare(
                         &label(&new_ids[n], nc),
-                        (oc, &old_ids[o]),
-                        (nc, &new_ids[n]),
+                        (oc, &old_ids[o], &old_name(&oc.source)),
+                        (nc, &new_ids[n], &new_name(&nc.source)),
                         &mut out,
                     );
                     if out.len() > before {
@@ -242,7 +250,7 @@ pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
                     counts.removed += 1;
                     let c = &old.components[o];
                     out.push(Change {
-                        old_file: Some(c.source.clone()),
+                        old_file: Some(old_name(&c.source)),
                         ..change(
                             codes::COMPONENT_REMOVED,
                             label(&old_ids[o], c),
@@ -257,7 +265,7 @@ pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
                     counts.added += 1;
                     let c = &new.components[n];
                     out.push(Change {
-                        file: Some(c.source.clone()),
+                        file: Some(new_name(&c.source)),
                         line: Some(c.profile.pos.line).filter(|l| *l > 0),
                         column: Some(c.profile.pos.column).filter(|_| c.profile.pos.line > 0),
                         ..change(
@@ -276,23 +284,27 @@ pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
     }
     for (side, cat) in [("OLD", old), ("NEW", new)] {
         for d in cat.diagnostics.iter().filter(|d| d.is_error()) {
-            let mut c = change(
-                codes::UNREADABLE_PROFILE,
-                String::new(),
-                String::new(),
-                None,
-                None,
-                format!(
+            let mut c =
+                change(
+                    codes::UNREADABLE_PROFILE,
+                    String::new(),
+                    String::new(),
+                    None,
+                    None,
+                    format!(
                     "{side}: {} could not be read ({}[{}]: {}); a component in it counts as absent",
-                    d.file, d.severity, d.code, d.message
+                    if side == "NEW" { new_name(&d.file) } else { old_name(&d.file) },
+                    d.severity,
+                    d.code,
+                    d.message
                 ),
-            );
+                );
             if side == "NEW" {
-                c.file = Some(d.file.clone());
+                c.file = Some(new_name(&d.file));
                 c.line = d.pos.map(|p| p.line);
                 c.column = d.pos.map(|p| p.column);
             } else {
-                c.old_file = Some(d.file.clone());
+                c.old_file = Some(old_name(&d.file));
             }
             out.push(c);
         }
@@ -326,19 +338,33 @@ pub fn sort(changes: &mut [Change]) {
     });
 }
 
+/// Both catalogues with their identities and file namers.
+struct Sides<'a> {
+    old: &'a Catalog,
+    new: &'a Catalog,
+    old_ids: &'a [Ident],
+    new_ids: &'a [Ident],
+    old_name: Namer<'a>,
+    new_name: Namer<'a>,
+}
+
 /// Pairs the components of one id: one on each side is a pair; several are paired by language,
 /// then by identical path. What is left on both sides is ambiguous (reported, not compared);
 /// what is left on one side only is added or removed.
-#[allow(clippy::too_many_arguments)]
 fn pair(
     olds: &[usize],
     news: &[usize],
-    old_ids: &[Ident],
-    new_ids: &[Ident],
-    old: &Catalog,
-    new: &Catalog,
+    sides: &Sides,
     out: &mut Vec<Change>,
 ) -> Vec<(Option<usize>, Option<usize>)> {
+    let Sides {
+        old,
+        new,
+        old_ids,
+        new_ids,
+        old_name,
+        new_name,
+    } = *sides;
     if olds.len() <= 1 && news.len() <= 1 {
         return vec![(olds.first().copied(), news.first().copied())];
     }
@@ -377,9 +403,9 @@ fn pair(
             }
         });
         if !lo.is_empty() && !ln.is_empty() {
-            let files = |v: &[usize], cat: &Catalog| {
+            let files = |v: &[usize], cat: &Catalog, name: Namer| {
                 v.iter()
-                    .map(|&i| cat.components[i].source.as_str())
+                    .map(|&i| name(&cat.components[i].source))
                     .collect::<Vec<_>>()
                     .join(", ")
             };
@@ -391,14 +417,14 @@ fn pair(
             };
             let nc = &new.components[ln[0]];
             out.push(Change {
-                file: Some(nc.source.clone()),
-                old_file: Some(old.components[lo[0]].source.clone()),
+                file: Some(new_name(&nc.source)),
+                old_file: Some(old_name(&old.components[lo[0]].source)),
                 ..change(
                     codes::AMBIGUOUS_COMPONENT,
                     id.id.clone(),
                     String::new(),
-                    Some(files(&lo, old)),
-                    Some(files(&ln, new)),
+                    Some(files(&lo, old, old_name)),
+                    Some(files(&ln, new, new_name)),
                     format!(
                         "{} profiles in OLD and {} in NEW declare component `{}`{lang_text}; they cannot be paired and are not compared (give each component its own id)",
                         lo.len(),
@@ -743,8 +769,8 @@ fn is_documentation(path: &[String]) -> bool {
 
 fn compare(
     component: &str,
-    (oc, oi): (&Component, &Ident),
-    (nc, ni): (&Component, &Ident),
+    (oc, oi, old_file): (&Component, &Ident, &str),
+    (nc, ni, file): (&Component, &Ident, &str),
     out: &mut Vec<Change>,
 ) {
     let (ot, nt) = (tree(&oc.profile), tree(&nc.profile));
@@ -760,8 +786,8 @@ fn compare(
         component,
         old: &oc.profile,
         new: &nc.profile,
-        file: &nc.source,
-        old_file: &oc.source,
+        file,
+        old_file,
     };
     let start = out.len();
     let basic_version_changed = found.iter().any(|f| f.path == ["basicInfo", "version"]);
