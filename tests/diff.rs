@@ -624,28 +624,36 @@ fn duplicate_ids_pair_by_language_else_are_ambiguous() {
     );
     assert_eq!(changes(&json)[0]["file"], "new/a/RTC.xml");
 
-    // Two of one id and one language on each side, in other folders: ambiguous, not compared.
+    // Copies in other folders: the copy equal to one of the other side is paired with it, and
+    // the one left on each side with each other.
     let dir = tempfile::tempdir().expect("tempdir");
-    write(
-        dir.path(),
-        "old/a/RTC.xml",
-        &component("Dup", "RTC::TimedLong", "C++"),
+    let dup = |ty: &str| component("Dup", ty, "C++");
+    write(dir.path(), "old/a/RTC.xml", &dup("RTC::TimedLong"));
+    write(dir.path(), "old/b/RTC.xml", &dup("RTC::TimedDouble"));
+    write(dir.path(), "new/c/RTC.xml", &dup("RTC::TimedShort"));
+    write(dir.path(), "new/d/RTC.xml", &dup("RTC::TimedLong"));
+    let (_, json) = run_diff(dir.path(), &[]);
+    assert_eq!(codes_of(&json), ["DIFF104", "DIFF208"], "{json:#}");
+    let c = changes(&json)
+        .into_iter()
+        .find(|c| c["code"] == "DIFF104")
+        .expect("DIFF104");
+    assert_eq!(
+        (c["old"].as_str(), c["new"].as_str()),
+        (Some("RTC::TimedDouble"), Some("RTC::TimedShort"))
     );
-    write(
-        dir.path(),
-        "old/b/RTC.xml",
-        &component("Dup", "RTC::TimedDouble", "C++"),
+    assert_eq!(
+        (c["oldFile"].as_str(), c["file"].as_str()),
+        (Some("old/b/RTC.xml"), Some("new/c/RTC.xml"))
     );
-    write(
-        dir.path(),
-        "new/c/RTC.xml",
-        &component("Dup", "RTC::TimedLong", "C++"),
-    );
-    write(
-        dir.path(),
-        "new/d/RTC.xml",
-        &component("Dup", "RTC::TimedShort", "C++"),
-    );
+
+    // Two of one id and one language on each side, all different, in other folders:
+    // ambiguous, not compared.
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/a/RTC.xml", &dup("RTC::TimedLong"));
+    write(dir.path(), "old/b/RTC.xml", &dup("RTC::TimedDouble"));
+    write(dir.path(), "new/c/RTC.xml", &dup("RTC::TimedShort"));
+    write(dir.path(), "new/d/RTC.xml", &dup("RTC::TimedBoolean"));
     let (exit, json) = run_diff(dir.path(), &[]);
     assert_eq!(exit, 0, "ambiguity is a warning: {json:#}");
     assert_eq!(codes_of(&json), ["DIFF001"], "{json:#}");
@@ -1158,4 +1166,62 @@ fn output_is_deterministic() {
     let mut sorted = keys.clone();
     sorted.sort();
     assert_eq!(keys, sorted, "sorted by component id, then path");
+}
+
+#[test]
+fn profiles_without_any_id_are_matched_by_file_name() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let anonymous = BASE
+        .replace(r#" rtc:id="RTC:Lab:Mobile:Base:1.0.0""#, "")
+        .replace(
+            r#"rtc:name="Base" rtc:vendor="Lab" rtc:category="Mobile" "#,
+            "",
+        );
+    write(dir.path(), "old/x/Fragment.xml", &anonymous);
+    write(dir.path(), "new/y/Fragment.xml", &anonymous);
+    let (exit, json) = run_diff(dir.path(), &["--fail-on", "info"]);
+    assert_eq!(exit, 0, "{json:#}");
+    assert_eq!(json["summary"]["components"]["matched"], 1);
+}
+
+/// The published profiles against themselves, and against a copy with every file moved to
+/// another folder: no change at all.
+#[test]
+fn the_corpus_moved_is_no_change() {
+    let Some(corpus) = common::corpus() else {
+        return;
+    };
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut n = 0;
+    for e in walkdir::WalkDir::new(&corpus)
+        .sort_by_file_name()
+        .into_iter()
+        .flatten()
+    {
+        if e.file_type().is_file() {
+            n += 1;
+            let name = e.file_name().to_string_lossy().to_string();
+            let target = dir.path().join(format!("moved/{n:04}/{name}"));
+            std::fs::create_dir_all(target.parent().expect("parent")).expect("mkdir");
+            std::fs::copy(e.path(), target).expect("copy");
+        }
+    }
+    let corpus = corpus.to_string_lossy().to_string();
+    let moved = dir.path().join("moved").to_string_lossy().to_string();
+    for (old, new) in [(&corpus, &corpus), (&corpus, &moved)] {
+        let out = rtcdoc(
+            &["diff", old, new, "--format", "json", "--fail-on", "info"],
+            dir.path(),
+        );
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{old} → {new}: {}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+        let json: Value = serde_json::from_slice(&out.stdout).expect("json");
+        let s = &json["summary"]["components"];
+        assert!(s["matched"].as_u64().unwrap_or(0) > 100, "{s}");
+        assert_eq!(s["matched"], s["old"]);
+    }
 }

@@ -176,9 +176,23 @@ fn ident(c: &Component) -> Ident {
             language,
         };
     }
-    let id = raw.map_or_else(|| format!("(no id: {})", c.source), str::to_string);
+    // Nothing names the component (a fragment, a test file): its file name is all there is,
+    // so a file moved to another folder is still found.
+    let (id, key) = match raw {
+        Some(id) => (
+            id.to_string(),
+            Key(id.to_string(), String::new(), String::new()),
+        ),
+        None => {
+            let file = c.source.rsplit('/').next().unwrap_or(&c.source).to_string();
+            (
+                format!("(no id: {})", c.source),
+                Key(String::new(), String::new(), file),
+            )
+        }
+    };
     Ident {
-        key: Key(id.clone(), String::new(), String::new()),
+        key,
         id,
         version,
         language,
@@ -349,8 +363,9 @@ struct Sides<'a> {
 }
 
 /// Pairs the components of one id: one on each side is a pair; several are paired by language,
-/// then by identical path. What is left on both sides is ambiguous (reported, not compared);
-/// what is left on one side only is added or removed.
+/// then by identical path, then by identical content (copies), and when one is left on each side
+/// those two. What is left on both sides is ambiguous (reported, not compared); what is left on
+/// one side only is added or removed.
 fn pair(
     olds: &[usize],
     news: &[usize],
@@ -402,6 +417,28 @@ fn pair(
                 None => true,
             }
         });
+        // Copies: a profile equal to one of the other side (positions aside) is that one.
+        lo.retain(|&o| {
+            let ot = tree(&old.components[o].profile);
+            let equal = |n: &usize| {
+                let nt = tree(&new.components[*n].profile);
+                let mut found = Vec::new();
+                walk(&mut Vec::new(), &ot, &nt, None, &mut found);
+                found.is_empty()
+            };
+            match ln.iter().position(equal) {
+                Some(at) => {
+                    result.push((Some(o), Some(ln.remove(at))));
+                    false
+                }
+                None => true,
+            }
+        });
+        // One left on each side: the changed one.
+        if lo.len() == 1 && ln.len() == 1 {
+            result.push((Some(lo[0]), Some(ln[0])));
+            continue;
+        }
         if !lo.is_empty() && !ln.is_empty() {
             let files = |v: &[usize], cat: &Catalog, name: Namer| {
                 v.iter()
