@@ -1225,3 +1225,29 @@ fn the_corpus_moved_is_no_change() {
         assert_eq!(s["matched"], s["old"]);
     }
 }
+
+#[test]
+fn the_markdown_report_stays_below_the_comment_limit() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "new/RTC.xml", BASE);
+    for i in 0..400 {
+        write(
+            dir.path(),
+            &format!("old/{i}/RTC.xml"),
+            &component(&format!("Component{i:03}"), "RTC::TimedLong", "C++"),
+        );
+    }
+    let out = rtcdoc(&["diff", "old", "new", "--format", "markdown"], dir.path());
+    assert_eq!(out.status.code(), Some(1));
+    let md = String::from_utf8_lossy(&out.stdout);
+    assert!(md.len() < 65_536, "{} bytes", md.len());
+    assert!(
+        md.starts_with("## rtcdoc diff: 400 breaking"),
+        "{}",
+        &md[..200]
+    );
+    assert!(
+        md.contains("more component(s): run `rtcdoc diff` locally"),
+        "the rest is counted"
+    );
+}

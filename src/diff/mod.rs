@@ -418,17 +418,26 @@ fn pair(
             }
         });
         // Copies: a profile equal to one of the other side (positions aside) is that one.
+        // Looked up by a fingerprint, so that a thousand copies of one id stay linear.
+        let mut by_print: BTreeMap<u64, Vec<usize>> = BTreeMap::new();
+        for &n in ln.iter().rev() {
+            by_print
+                .entry(fingerprint(&new.components[n].profile))
+                .or_default()
+                .push(n);
+        }
         lo.retain(|&o| {
-            let ot = tree(&old.components[o].profile);
-            let equal = |n: &usize| {
-                let nt = tree(&new.components[*n].profile);
-                let mut found = Vec::new();
-                walk(&mut Vec::new(), &ot, &nt, None, &mut found);
-                found.is_empty()
-            };
-            match ln.iter().position(equal) {
-                Some(at) => {
-                    result.push((Some(o), Some(ln.remove(at))));
+            let op = &old.components[o].profile;
+            let twin = by_print.get_mut(&fingerprint(op)).and_then(|v| {
+                let at = v
+                    .iter()
+                    .rposition(|&n| same_values(op, &new.components[n].profile))?;
+                Some(v.remove(at))
+            });
+            match twin {
+                Some(n) => {
+                    ln.retain(|&x| x != n);
+                    result.push((Some(o), Some(n)));
                     false
                 }
                 None => true,
@@ -545,6 +554,42 @@ fn labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {
             }
         })
         .collect()
+}
+
+/// A hash of a profile's values without positions: equal for copies of one profile (a match
+/// is confirmed by comparing the two, so a collision cannot pair different profiles).
+fn fingerprint(p: &Profile) -> u64 {
+    use std::hash::{Hash, Hasher};
+    fn feed(v: &Value, h: &mut std::collections::hash_map::DefaultHasher) {
+        match v {
+            Value::Null => 0u8.hash(h),
+            Value::Bool(b) => (1u8, b).hash(h),
+            Value::Number(n) => (2u8, n.to_string()).hash(h),
+            Value::String(s) => (3u8, s).hash(h),
+            Value::Array(a) => {
+                (4u8, a.len()).hash(h);
+                a.iter().for_each(|x| feed(x, h));
+            }
+            Value::Object(m) => {
+                5u8.hash(h);
+                for (k, x) in m.iter().filter(|(k, _)| *k != "pos" && *k != "actionsPos") {
+                    k.hash(h);
+                    feed(x, h);
+                }
+            }
+        }
+    }
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    feed(&serde_json::to_value(p).unwrap_or(Value::Null), &mut h);
+    h.finish()
+}
+
+/// Whether two profiles have the same values (positions aside).
+fn same_values(a: &Profile, b: &Profile) -> bool {
+    let (x, y) = (tree(a), tree(b));
+    let mut found = Vec::new();
+    walk(&mut Vec::new(), &x, &y, None, &mut found);
+    found.is_empty()
 }
 
 fn pos_of(v: &Value) -> Option<Pos> {
