@@ -11,6 +11,7 @@ pub mod check;
 pub mod config;
 pub mod constraint;
 pub mod diagnostic;
+pub mod diff;
 pub mod i18n;
 pub mod idl;
 pub mod incremental;

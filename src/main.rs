@@ -44,6 +44,9 @@ enum Command {
     Build(BuildArgs),
     /// Validate profiles (for CI); exits 1 when a profile has an error.
     Check(CheckArgs),
+    /// Compare two versions of a catalogue (directories, profile files or REV:PATH of git) and
+    /// classify every change as breaking, warning or info; exits 1 when one reaches --fail-on.
+    Diff(DiffArgs),
     /// Build into memory, serve on 127.0.0.1, rebuild on changes and live-reload browsers.
     Serve(ServeArgs),
     /// Write an `rtcdoc.toml` with every setting commented out at its default.
@@ -148,6 +151,30 @@ enum CheckFormat {
 enum Deny {
     /// Warnings make the check fail (exit 1).
     Warnings,
+}
+
+#[derive(Args)]
+struct DiffArgs {
+    /// The old side: a directory, a profile file, or REV:PATH (a git revision and a path in the
+    /// current repository, e.g. `origin/main:components`).
+    #[arg(required_unless_present = "explain")]
+    old: Option<String>,
+    /// The new side, like OLD.
+    #[arg(required_unless_present = "explain")]
+    new: Option<String>,
+    /// Output format: human (coloured), json, markdown (a pull-request comment) or github
+    /// (workflow annotations); all on stdout.
+    #[arg(long, value_enum, default_value = "human")]
+    format: rtcdoc::diff::report::OutputFormat,
+    /// The least severe change that makes the exit status 1.
+    #[arg(long, value_enum, value_name = "LEVEL", default_value = "breaking")]
+    fail_on: rtcdoc::diff::report::FailOn,
+    /// Print the classification and reasoning of a change code (e.g. `--explain DIFF104`) and
+    /// exit.
+    #[arg(long, value_name = "CODE")]
+    explain: Option<String>,
+    #[command(flatten)]
+    input_args: InputArgs,
 }
 
 /// `serve` renders HTML into memory: it takes no output directory, format or `--strict`.
@@ -471,6 +498,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Check(args) => check(cli, args),
+        Command::Diff(args) => diff(cli, args),
         Command::Serve(args) => {
             let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
             let cli_over = overrides(&args.input, &args.site, &args.input_args, None);
@@ -680,6 +708,96 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         }
     }
     Ok(if report.failed(deny_warnings) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// `rtcdoc diff`: exit 0 when no change reaches `--fail-on`, 1 when one does, 2 on usage or I/O
+/// problems (an unreadable side, not a git repository, a bad revision).
+fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
+    use rtcdoc::diff::{self, report, side};
+    if let Some(code) = &args.explain {
+        return Ok(match diff::codes::code(code) {
+            Some(c) => {
+                print!("{}", diff::codes::explain(c));
+                ExitCode::SUCCESS
+            }
+            None => {
+                let codes: Vec<&str> = diff::CODES.iter().map(|c| c.code).collect();
+                eprintln!(
+                    "error: no change has the code `{code}`; the codes are {}",
+                    codes.join(", ")
+                );
+                ExitCode::from(2)
+            }
+        });
+    }
+    let (Some(old_arg), Some(new_arg)) = (&args.old, &args.new) else {
+        anyhow::bail!("give OLD and NEW (or --explain CODE)");
+    };
+    let (old_spec, new_spec) = (side::Spec::parse(old_arg), side::Spec::parse(new_arg));
+    // Input options as `check` takes them: rtcdoc.toml (of NEW when it is a directory on disk,
+    // else of the current directory), then the command line; both sides alike.
+    let config_dir = match &new_spec {
+        side::Spec::Local(p) => Some(p.as_path()),
+        side::Spec::Git { .. } => None,
+    };
+    let file = load_config(config_dir, args.input_args.config.as_deref())?;
+    let mut opts = config::build_options(
+        &file,
+        &Overrides {
+            include: args.input_args.include.clone(),
+            exclude: args.input_args.exclude.clone(),
+            max_file_size: args.input_args.max_file_size,
+            max_depth: args.input_args.max_depth,
+            allow_empty: args.input_args.allow_empty,
+            ..Default::default()
+        },
+    )
+    .load;
+    opts.skip_dirs.clear();
+    let old = side::load("OLD", &old_spec, &opts)?;
+    let new = side::load("NEW", &new_spec, &opts)?;
+    let result = diff::diff_named(
+        &old.loaded.catalog,
+        &new.loaded.catalog,
+        &|f| old.display(f),
+        &|f| new.display(f),
+    );
+    let fail_on = args.fail_on.level();
+    match args.format {
+        report::OutputFormat::Json => print_stdout(&serde_json::to_string_pretty(
+            &report::to_json(&result, old_arg, new_arg, fail_on),
+        )?)?,
+        report::OutputFormat::Markdown => {
+            print_stdout(report::to_markdown(&result, old_arg, new_arg, fail_on).trim_end())?
+        }
+        report::OutputFormat::Github => print_stdout(report::to_github(&result).trim_end())?,
+        report::OutputFormat::Human => {
+            let colour = std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+                && std::io::stdout().is_terminal();
+            let choice = if colour {
+                ColorChoice::Auto
+            } else {
+                ColorChoice::Never
+            };
+            let mut stream = BufferedStandardStream::stdout(choice);
+            let verbosity = if cli.quiet {
+                report::Verbosity::Quiet
+            } else {
+                report::Verbosity::Normal
+            };
+            match report::write_human(&mut stream, &result, verbosity)
+                .and_then(|_| std::io::Write::flush(&mut stream))
+            {
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {}
+                r => r?,
+            }
+        }
+    }
+    Ok(if result.summary().fails(fail_on) {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

@@ -57,6 +57,7 @@ fn guide_documents_every_command_and_rule() {
     for cmd in [
         "rtcdoc build",
         "rtcdoc check",
+        "rtcdoc diff",
         "rtcdoc serve",
         "rtcdoc init",
         "rtcdoc completions",
@@ -191,7 +192,7 @@ fn help_flags(sub: &str) -> Vec<String> {
 fn help_guide_and_readme_name_the_same_flags() {
     let cli = std::fs::read_to_string(root().join("book/src/cli.md")).unwrap();
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    for sub in ["build", "check", "serve", "init"] {
+    for sub in ["build", "check", "diff", "serve", "init"] {
         let flags = help_flags(sub);
         assert!(!flags.is_empty(), "{sub}");
         for f in &flags {
@@ -276,4 +277,53 @@ fn check_guide_matches_the_rule_registry() {
         "check.md is out of date:\n{}",
         missing.join("\n")
     );
+}
+
+/// The code table and each code's section of `book/src/diff.md` say what the change registry
+/// says (`RTCDOC_BLESS=1` rewrites them from the registry); SUMMARY.md links the page.
+#[test]
+fn diff_guide_matches_the_code_registry() {
+    let path = root().join("book/src/diff.md");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let mut block = String::from(
+        "<!-- codes:begin -->\n| Code | Severity | Name | Summary |\n|---|---|---|---|\n",
+    );
+    for c in rtcdoc::diff::CODES {
+        block.push_str(&format!(
+            "| [{code}](#{lower}) | {level} | `{name}` | {summary} |\n",
+            code = c.code,
+            lower = c.code.to_lowercase(),
+            level = c.level,
+            name = c.name,
+            summary = c.summary
+        ));
+    }
+    for c in rtcdoc::diff::CODES {
+        block.push_str(&format!(
+            "\n### {code}\n\n**{name}** — {level}. {summary}.\n\n{expl}\n",
+            code = c.code,
+            name = c.name,
+            level = c.level,
+            summary = c.summary,
+            expl = c.explanation
+        ));
+    }
+    block.push_str("<!-- codes:end -->");
+    let start = text
+        .find("<!-- codes:begin -->")
+        .expect("codes:begin marker");
+    let end =
+        text.find("<!-- codes:end -->").expect("codes:end marker") + "<!-- codes:end -->".len();
+    if std::env::var_os("RTCDOC_BLESS").is_some() {
+        let new = format!("{}{block}{}", &text[..start], &text[end..]);
+        std::fs::write(&path, new).unwrap();
+    } else {
+        assert_eq!(
+            &text[start..end],
+            block,
+            "book/src/diff.md is out of date: run RTCDOC_BLESS=1 cargo test --test book"
+        );
+    }
+    let summary = std::fs::read_to_string(root().join("book/src/SUMMARY.md")).unwrap();
+    assert!(summary.contains("(diff.md)"), "SUMMARY.md links diff.md");
 }

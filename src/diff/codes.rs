@@ -1,0 +1,350 @@
+//! The change registry: every code `rtcdoc diff` reports, with its severity, short name and the
+//! reasoning behind the classification (`rtcdoc diff --explain CODE` prints an entry; the guide
+//! `book/src/diff.md` lists them all, held to this table by a test).
+//!
+//! Numbering: DIFF0xx are about the comparison itself, DIFF1xx breaking, DIFF2xx warnings,
+//! DIFF3xx information. Codes are never reused. The IDL-aware codes (struct fields, enum values,
+//! operations) will take DIFF13x / DIFF23x / DIFF33x, RT System connectors DIFF14x.
+
+use serde::Serialize;
+
+/// How much a change matters to the systems and components connected to a component.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Level {
+    /// Existing connections, configurations or peers stop working.
+    Breaking,
+    /// Probably fine, but a user of the component has to look.
+    Warning,
+    /// Nothing connected to the component is affected.
+    Info,
+}
+
+impl std::fmt::Display for Level {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Level::Breaking => "breaking",
+            Level::Warning => "warning",
+            Level::Info => "info",
+        })
+    }
+}
+
+/// One change code and its documentation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Code {
+    /// Stable code, e.g. `DIFF104`.
+    pub code: &'static str,
+    pub level: Level,
+    /// Short kebab-case name (`data-port-type-changed`).
+    pub name: &'static str,
+    /// One-line summary.
+    pub summary: &'static str,
+    /// Why the change is classified the way it is.
+    pub explanation: &'static str,
+}
+
+pub const AMBIGUOUS_COMPONENT: &str = "DIFF001";
+pub const UNREADABLE_PROFILE: &str = "DIFF002";
+pub const COMPONENT_REMOVED: &str = "DIFF101";
+pub const DATA_PORT_REMOVED: &str = "DIFF102";
+pub const DATA_PORT_DIRECTION: &str = "DIFF103";
+pub const DATA_PORT_TYPE: &str = "DIFF104";
+pub const SERVICE_PORT_REMOVED: &str = "DIFF105";
+pub const INTERFACE_REMOVED: &str = "DIFF106";
+pub const INTERFACE_TYPE: &str = "DIFF107";
+pub const INTERFACE_DIRECTION: &str = "DIFF108";
+pub const CONFIGURATION_REMOVED: &str = "DIFF109";
+pub const CONFIGURATION_TYPE: &str = "DIFF110";
+pub const DEFAULT_CHANGED: &str = "DIFF201";
+pub const CONSTRAINT_NARROWED: &str = "DIFF202";
+pub const CONSTRAINT_CHANGED: &str = "DIFF203";
+pub const EXECUTION_TYPE: &str = "DIFF204";
+pub const EXECUTION_RATE: &str = "DIFF205";
+pub const MAX_INSTANCES_LOWERED: &str = "DIFF206";
+pub const ACTION_NOT_IMPLEMENTED: &str = "DIFF207";
+pub const BREAKING_WITHOUT_BUMP: &str = "DIFF208";
+pub const TRANSPORT_NARROWED: &str = "DIFF209";
+pub const UNIT_CHANGED: &str = "DIFF210";
+pub const REQUIRED_INTERFACE_ADDED: &str = "DIFF211";
+pub const PORT_ADDED: &str = "DIFF301";
+pub const INTERFACE_ADDED: &str = "DIFF302";
+pub const CONFIGURATION_ADDED: &str = "DIFF303";
+pub const COMPONENT_ADDED: &str = "DIFF304";
+pub const CONSTRAINT_WIDENED: &str = "DIFF305";
+pub const VERSION_CHANGED: &str = "DIFF306";
+pub const DOCUMENTATION_CHANGED: &str = "DIFF307";
+pub const OTHER_CHANGED: &str = "DIFF308";
+
+use Level::{Breaking, Info, Warning};
+
+/// Every code, in order.
+pub static CODES: &[Code] = &[
+    Code {
+        code: AMBIGUOUS_COMPONENT,
+        level: Warning,
+        name: "ambiguous-component",
+        summary: "several profiles on a side share one component id and cannot be paired",
+        explanation: "Components are matched by vendor, category and name (spec 2.3.1.1: the id names a component uniquely). When one side holds several profiles with that id (rtcdoc check reports them as RTC010), they are paired by implementation language, then by identical file path. Profiles still left on both sides cannot be told apart, so they are not compared at all: this warning names their files instead of guessing a pairing that would report invented changes.",
+    },
+    Code {
+        code: UNREADABLE_PROFILE,
+        level: Warning,
+        name: "unreadable-profile",
+        summary: "a profile file of one side could not be read",
+        explanation: "A file that is not well-formed (or too large, or unreadable) contributes no component, so its component may show up as removed or added. The warning says so, so that a broken file is not mistaken for a deliberate removal; `rtcdoc check` gives the details.",
+    },
+    Code {
+        code: COMPONENT_REMOVED,
+        level: Breaking,
+        name: "component-removed",
+        summary: "a component of OLD is not in NEW",
+        explanation: "RT System profiles, launch scripts and other components name the component by its id; none of them can find it any more (spec 10.6: a replacement must keep what it replaces). A file that only moved is no change: components are matched by id, not by path.",
+    },
+    Code {
+        code: DATA_PORT_REMOVED,
+        level: Breaking,
+        name: "data-port-removed",
+        summary: "a data port was removed",
+        explanation: "Connectors of RT System profiles name ports by `<instance>.<port>`; a connector to a port that no longer exists fails to connect, and the peer loses its data.",
+    },
+    Code {
+        code: DATA_PORT_DIRECTION,
+        level: Breaking,
+        name: "data-port-direction-changed",
+        summary: "a data port changed its kind (DataInPort, DataOutPort, EventPort)",
+        explanation: "A connector joins an out-port to an in-port; flipping the direction turns every existing connection into an out-out or in-in pair, which OpenRTM refuses. Only the meaning of portType counts: `DataInPort` written `datainport` is no change.",
+    },
+    Code {
+        code: DATA_PORT_TYPE,
+        level: Breaking,
+        name: "data-port-type-changed",
+        summary: "a data port carries another data type",
+        explanation: "Connectors require equal data types on both ends, and data are marshalled with CDR, which is positional: a peer built for the old type cannot read the new one. Spellings of one type (`RTC::TimedLong`, `TimedLong`, `IDL:RTC/TimedLong:1.0`) are compared in canonical form and are no change (reported as other-changed when only the spelling differs).",
+    },
+    Code {
+        code: SERVICE_PORT_REMOVED,
+        level: Breaking,
+        name: "service-port-removed",
+        summary: "a service port was removed",
+        explanation: "Service-port connectors name the port; its provided interfaces disappear for every requirer, and its required interfaces are no longer served to the component.",
+    },
+    Code {
+        code: INTERFACE_REMOVED,
+        level: Breaking,
+        name: "interface-removed",
+        summary: "a service interface was removed from a service port that remains",
+        explanation: "A removed provided interface leaves the components that require it without a provider; a removed required interface changes what the port connects to. Interfaces are matched by port and interface name.",
+    },
+    Code {
+        code: INTERFACE_TYPE,
+        level: Breaking,
+        name: "interface-type-changed",
+        summary: "a service interface has another IDL interface type",
+        explanation: "Requirers and providers are connected by interface type; a consumer narrows the object reference to the type it was built for, which fails for another interface. Spellings of one type are compared in canonical form.",
+    },
+    Code {
+        code: INTERFACE_DIRECTION,
+        level: Breaking,
+        name: "interface-direction-changed",
+        summary: "a service interface switched between Provided and Required",
+        explanation: "A provided interface is served to peers, a required one consumed from them: a switch turns every existing provider/requirer pair into two providers or two requirers.",
+    },
+    Code {
+        code: CONFIGURATION_REMOVED,
+        level: Breaking,
+        name: "configuration-removed",
+        summary: "a configuration parameter was removed",
+        explanation: "Configuration sets saved in RT System profiles and rtc.conf files set parameters by name; a removed parameter is silently ignored, so the behaviour it tuned is lost.",
+    },
+    Code {
+        code: CONFIGURATION_TYPE,
+        level: Breaking,
+        name: "configuration-type-changed",
+        summary: "a configuration parameter has another value type",
+        explanation: "Saved values of the old type may not parse for the new one (`1.5` for an `int`), and the component then keeps its default. Spellings of one type (`int` and `long`, `std::string` and `string`, `vector<double>` and `std::vector<double>`) are compared by the type they mean.",
+    },
+    Code {
+        code: DEFAULT_CHANGED,
+        level: Warning,
+        name: "configuration-default-changed",
+        summary: "a configuration parameter has another default value",
+        explanation: "Systems that never set the parameter behave differently after the update; nothing fails to connect, so it is a warning, not breaking.",
+    },
+    Code {
+        code: CONSTRAINT_NARROWED,
+        level: Warning,
+        name: "constraint-narrowed",
+        summary: "a configuration constraint accepts fewer values than before",
+        explanation: "Saved configuration values that the old constraint accepted may be refused now. The message says whether the old default still satisfies the new constraint. Narrowing is decided on a sound approximation: a constraint added where there was none; numeric comparisons and `between` as unions of intervals (new ⊂ old); `=` alternatives as sets of literals; hash and list constraints item by item (a new key or item narrows, a dropped one widens). Anything else that changed is DIFF203.",
+    },
+    Code {
+        code: CONSTRAINT_CHANGED,
+        level: Warning,
+        name: "constraint-changed",
+        summary: "a configuration constraint changed in a way that is neither clearly narrower nor wider",
+        explanation: "Two constraints rtcdoc cannot order (a `like` pattern, `not`, a mix of shapes, intervals that overlap without containment) may refuse values the old one accepted, so the change is treated like a narrowing. The message says whether the old default satisfies the new constraint.",
+    },
+    Code {
+        code: EXECUTION_TYPE,
+        level: Warning,
+        name: "execution-type-changed",
+        summary: "the execution context type changed",
+        explanation: "A periodic component that becomes event-driven (or the reverse) is scheduled differently: systems that relied on its timing, or attached it to an execution context of the old type, behave differently.",
+    },
+    Code {
+        code: EXECUTION_RATE,
+        level: Warning,
+        name: "execution-rate-changed",
+        summary: "the execution rate changed",
+        explanation: "Peers that depend on the output frequency (controllers, filters) see data at another rate. Rates are compared as numbers: `50` and `50.0` are equal.",
+    },
+    Code {
+        code: MAX_INSTANCES_LOWERED,
+        level: Warning,
+        name: "max-instances-lowered",
+        summary: "fewer instances of the component may run",
+        explanation: "A system that starts more instances than the new maximum fails to create the extra ones. An absent or empty maxInstances counts as unlimited; a value that is not a number is treated as lowered (it cannot be compared).",
+    },
+    Code {
+        code: ACTION_NOT_IMPLEMENTED,
+        level: Warning,
+        name: "action-no-longer-implemented",
+        summary: "a lifecycle action is no longer implemented",
+        explanation: "The behaviour the callback had (on_activated opening a device, on_reset clearing a fault) is gone; connections still work, so it is a warning.",
+    },
+    Code {
+        code: BREAKING_WITHOUT_BUMP,
+        level: Warning,
+        name: "breaking-without-version-bump",
+        summary: "a component has breaking changes but kept its version",
+        explanation: "The version in the id (`RTC:vendor:category:name:version`) and in BasicInfo is what repositories and users compare; a breaking change under the same version makes two incompatible components indistinguishable.",
+    },
+    Code {
+        code: TRANSPORT_NARROWED,
+        level: Warning,
+        name: "transport-narrowed",
+        summary: "a data port supports fewer interface, dataflow or subscription types",
+        explanation: "interfaceType, dataflowType and subscriptionType list what a data port offers (`corba_cdr`, `push,pull`, `flush,new,periodic`); a connector asking for a value that was dropped no longer connects. They are compared as comma-separated sets (any case); an empty value means unrestricted. Not breaking: the connector profiles of most systems use the defaults.",
+    },
+    Code {
+        code: UNIT_CHANGED,
+        level: Warning,
+        name: "unit-changed",
+        summary: "the unit of a configuration parameter or data port changed",
+        explanation: "The same number now means something else (`m` to `mm`): saved values and peers that computed with the old unit are off by a factor.",
+    },
+    Code {
+        code: REQUIRED_INTERFACE_ADDED,
+        level: Warning,
+        name: "required-interface-added",
+        summary: "a service port requires a new interface",
+        explanation: "The component now depends on a provider that existing systems do not connect to it.",
+    },
+    Code {
+        code: PORT_ADDED,
+        level: Info,
+        name: "port-added",
+        summary: "a data port or service port was added",
+        explanation: "Existing connections are untouched; the new port is simply unconnected.",
+    },
+    Code {
+        code: INTERFACE_ADDED,
+        level: Info,
+        name: "interface-added",
+        summary: "a provided service interface was added to an existing service port",
+        explanation: "Peers that do not know the interface ignore it.",
+    },
+    Code {
+        code: CONFIGURATION_ADDED,
+        level: Info,
+        name: "configuration-added",
+        summary: "a configuration parameter was added",
+        explanation: "Systems that do not set it get its default.",
+    },
+    Code {
+        code: COMPONENT_ADDED,
+        level: Info,
+        name: "component-added",
+        summary: "a component of NEW is not in OLD",
+        explanation: "Nothing used it before, so nothing can break.",
+    },
+    Code {
+        code: CONSTRAINT_WIDENED,
+        level: Info,
+        name: "constraint-widened",
+        summary: "a configuration constraint accepts more values than before (or was removed)",
+        explanation: "Every value that was valid stays valid. Decided with the same approximation as DIFF202.",
+    },
+    Code {
+        code: VERSION_CHANGED,
+        level: Info,
+        name: "version-changed",
+        summary: "the component version changed",
+        explanation: "A version bump alone changes nothing a peer depends on.",
+    },
+    Code {
+        code: DOCUMENTATION_CHANGED,
+        level: Info,
+        name: "documentation-changed",
+        summary: "a description, doc field or comment changed",
+        explanation: "Documentation (the rtcDoc fields, descriptions, comments, abstract, hardware profile, version-up logs) does not affect behaviour.",
+    },
+    Code {
+        code: OTHER_CHANGED,
+        level: Info,
+        name: "other-changed",
+        summary: "any other value of the profile changed",
+        explanation: "Every value of a profile is compared, so that no change goes unreported; values without a classification of their own (dates, positions on the component box, variable names, properties, values rtcdoc does not know, a type spelled differently) are reported here.",
+    },
+];
+
+/// The registry entry of `code` (any case).
+pub fn code(code: &str) -> Option<&'static Code> {
+    CODES
+        .iter()
+        .find(|c| c.code.eq_ignore_ascii_case(code.trim()))
+}
+
+/// `--explain` text for a code.
+pub fn explain(c: &Code) -> String {
+    format!(
+        "{code} ({name}) — {summary}\n\nSeverity: {level}\n\n{expl}\n",
+        code = c.code,
+        name = c.name,
+        summary = c.summary,
+        level = c.level,
+        expl = c.explanation,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_and_numbered_by_severity() {
+        let mut seen = std::collections::HashSet::new();
+        for c in CODES {
+            assert!(seen.insert(c.code), "duplicate {}", c.code);
+            assert!(
+                c.code.len() == 7 && c.code.starts_with("DIFF"),
+                "{}",
+                c.code
+            );
+            let expected = match &c.code[4..5] {
+                "1" => Some(Level::Breaking),
+                "2" => Some(Level::Warning),
+                "3" => Some(Level::Info),
+                _ => None,
+            };
+            if let Some(l) = expected {
+                assert_eq!(c.level, l, "{}", c.code);
+            }
+        }
+        assert_eq!(
+            code("diff104").map(|c| c.name),
+            Some("data-port-type-changed")
+        );
+    }
+}

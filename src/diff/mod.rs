@@ -1,0 +1,1434 @@
+//! `rtcdoc diff`: what changed between two catalogues, and what it breaks.
+//!
+//! Two [`Catalog`]s in, classified [`Change`]s out. Components are matched by id — vendor,
+//! category and name, in either id form ([`IdParts`]) — never by file path, so a moved file is
+//! no change. Inside a matched pair every value of both profiles is compared: ports,
+//! interfaces, configuration parameters, actions, properties and the other named lists are
+//! matched by name (the n-th of several with one name as `name#n`), everything else by field.
+//! Each difference gets a code from [`codes::CODES`]; a difference no rule classifies is
+//! reported as `other-changed`, so nothing goes unreported.
+//!
+//! The comparison works on the model's JSON form (positions left out), which keeps it complete
+//! as the model grows; the typed model is consulted where the meaning matters (canonical type
+//! names, directions, value types, constraints).
+
+pub mod codes;
+mod constraint;
+pub mod report;
+pub mod side;
+
+pub use codes::{Code, Level, CODES};
+
+use crate::catalog::{Catalog, Component};
+use crate::model::{non_empty, IdParts, Pos, Profile};
+use crate::types::canonical_type;
+use serde::Serialize;
+use serde_json::Value;
+use std::collections::BTreeMap;
+
+/// One classified change.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Change {
+    pub severity: Level,
+    /// Stable code (`DIFF104`).
+    pub code: &'static str,
+    /// The code's short name (`data-port-type-changed`).
+    pub name: &'static str,
+    /// The component id (`RTC:vendor:category:name:version`, NEW's version when both sides
+    /// have the component), with the language or file in parentheses when several profiles
+    /// share the id.
+    pub component: String,
+    /// Slash-separated path to the changed item inside the component
+    /// (`dataPorts/odometry/type`); empty for the component as a whole.
+    pub path: String,
+    pub old: Option<String>,
+    pub new: Option<String>,
+    pub message: String,
+    /// The NEW side's file of the component (as the user can open it), when it has one.
+    pub file: Option<String>,
+    /// Line and column in `file` of the changed item, or of the nearest enclosing one.
+    pub line: Option<u32>,
+    pub column: Option<u32>,
+    /// The OLD side's file of the component.
+    pub old_file: Option<String>,
+}
+
+/// Counts of the components of both sides.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Components {
+    pub old: usize,
+    pub new: usize,
+    /// Components found on both sides.
+    pub matched: usize,
+    /// Matched components with at least one change.
+    pub changed: usize,
+    pub added: usize,
+    pub removed: usize,
+}
+
+/// The result of a comparison.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct Diff {
+    /// Sorted by component, then path, then code.
+    pub changes: Vec<Change>,
+    pub components: Components,
+}
+
+/// Counts of a set of changes.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Summary {
+    pub breaking: usize,
+    pub warning: usize,
+    pub info: usize,
+    pub by_code: BTreeMap<String, usize>,
+}
+
+impl Summary {
+    pub fn of(changes: &[Change]) -> Summary {
+        let mut s = Summary::default();
+        for c in changes {
+            match c.severity {
+                Level::Breaking => s.breaking += 1,
+                Level::Warning => s.warning += 1,
+                Level::Info => s.info += 1,
+            }
+            *s.by_code.entry(c.code.to_string()).or_default() += 1;
+        }
+        s
+    }
+
+    /// `2 breaking, 1 warning, 3 infos`.
+    pub fn counts(&self) -> String {
+        format!(
+            "{} breaking, {} warning{}, {} info{}",
+            self.breaking,
+            self.warning,
+            if self.warning == 1 { "" } else { "s" },
+            self.info,
+            if self.info == 1 { "" } else { "s" }
+        )
+    }
+
+    /// Whether a change reaches `fail_on` (`None`: never fail).
+    pub fn fails(&self, fail_on: Option<Level>) -> bool {
+        match fail_on {
+            None => false,
+            Some(Level::Breaking) => self.breaking > 0,
+            Some(Level::Warning) => self.breaking + self.warning > 0,
+            Some(Level::Info) => self.breaking + self.warning + self.info > 0,
+        }
+    }
+}
+
+impl Diff {
+    pub fn summary(&self) -> Summary {
+        Summary::of(&self.changes)
+    }
+}
+
+/// The matching key of a component: vendor, category and name of its id (either form), else of
+/// its BasicInfo, else the id as written, else its file.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+struct Key(String, String, String);
+
+struct Ident {
+    key: Key,
+    version: String,
+    /// `RTC:vendor:category:name:version`, the colon form whatever the profile wrote.
+    id: String,
+    language: String,
+}
+
+fn ident(c: &Component) -> Ident {
+    let p = &c.profile;
+    let b = &p.basic_info;
+    let language = p
+        .language
+        .as_ref()
+        .and_then(|l| non_empty(&l.kind))
+        .unwrap_or("")
+        .to_string();
+    let raw = non_empty(&p.id);
+    if let Some(parts) = raw.and_then(|id| IdParts::parse(id, b)) {
+        let key = Key(
+            parts.vendor.trim().into(),
+            parts.category.trim().into(),
+            parts.name.trim().into(),
+        );
+        return Ident {
+            id: format!("RTC:{}:{}:{}:{}", key.0, key.1, key.2, parts.version.trim()),
+            version: parts.version.trim().into(),
+            key,
+            language,
+        };
+    }
+    let field = |s: &Option<crate::model::Text>| non_empty(s).unwrap_or("").to_string();
+    let (v, cat, n) = (field(&b.vendor), field(&b.category), field(&b.name));
+    let version = field(&b.version);
+    if !(v.is_empty() && cat.is_empty() && n.is_empty()) {
+        return Ident {
+            id: format!("RTC:{v}:{cat}:{n}:{version}"),
+            key: Key(v, cat, n),
+            version,
+            language,
+        };
+    }
+    // Nothing names the component (a fragment, a test file): its file name is all there is,
+    // so a file moved to another folder is still found.
+    let (id, key) = match raw {
+        Some(id) => (
+            id.to_string(),
+            Key(id.to_string(), String::new(), String::new()),
+        ),
+        None => {
+            let file = c.source.rsplit('/').next().unwrap_or(&c.source).to_string();
+            (
+                format!("(no id: {})", c.source),
+                Key(String::new(), String::new(), file),
+            )
+        }
+    };
+    Ident {
+        key,
+        id,
+        version,
+        language,
+    }
+}
+
+/// How the files of a catalogue (relative to its input) are named in the changes.
+pub type Namer<'a> = &'a dyn Fn(&str) -> String;
+
+/// Compares two catalogues; files are named as in the catalogues.
+pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
+    diff_named(old, new, &|f| f.to_string(), &|f| f.to_string())
+}
+
+/// Compares two catalogues, naming the files of OLD with `old_name` and those of NEW with
+/// `new_name` (e.g. relative to the current directory).
+pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer) -> Diff {
+    let old_ids: Vec<Ident> = old.components.iter().map(ident).collect();
+    let new_ids: Vec<Ident> = new.components.iter().map(ident).collect();
+    let mut groups: BTreeMap<&Key, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
+    for (i, id) in old_ids.iter().enumerate() {
+        groups.entry(&id.key).or_default().0.push(i);
+    }
+    for (i, id) in new_ids.iter().enumerate() {
+        groups.entry(&id.key).or_default().1.push(i);
+    }
+    let mut out = Vec::new();
+    let mut counts = Components {
+        old: old.components.len(),
+        new: new.components.len(),
+        ..Default::default()
+    };
+    for (olds, news) in groups.values() {
+        let shared = olds.len() > 1 || news.len() > 1;
+        let label = |id: &Ident, c: &Component| -> String {
+            if !shared {
+                id.id.clone()
+            } else if !id.language.is_empty() {
+                format!("{} ({})", id.id, id.language)
+            } else {
+                format!("{} ({})", id.id, c.source)
+            }
+        };
+        let sides = Sides {
+            old,
+            new,
+            old_ids: &old_ids,
+            new_ids: &new_ids,
+            old_name,
+            new_name,
+        };
+        for (o, n) in pair(olds, news, &sides, &mut out) {
+            match (o, n) {
+                (Some(o), Some(n)) => {
+                    counts.matched += 1;
+                    let (oc, nc) = (&old.components[o], &new.components[n]);
+                    let before = out.len();
+                    compare(
+                        &label(&new_ids[n], nc),
+                        (oc, &old_ids[o], &old_name(&oc.source)),
+                        (nc, &new_ids[n], &new_name(&nc.source)),
+                        &mut out,
+                    );
+                    if out.len() > before {
+                        counts.changed += 1;
+                    }
+                }
+                (Some(o), None) => {
+                    counts.removed += 1;
+                    let c = &old.components[o];
+                    out.push(Change {
+                        old_file: Some(old_name(&c.source)),
+                        ..change(
+                            codes::COMPONENT_REMOVED,
+                            label(&old_ids[o], c),
+                            String::new(),
+                            Some(old_ids[o].id.clone()),
+                            None,
+                            format!("component `{}` was removed", c.profile.name()),
+                        )
+                    });
+                }
+                (None, Some(n)) => {
+                    counts.added += 1;
+                    let c = &new.components[n];
+                    out.push(Change {
+                        file: Some(new_name(&c.source)),
+                        line: Some(c.profile.pos.line).filter(|l| *l > 0),
+                        column: Some(c.profile.pos.column).filter(|_| c.profile.pos.line > 0),
+                        ..change(
+                            codes::COMPONENT_ADDED,
+                            label(&new_ids[n], c),
+                            String::new(),
+                            None,
+                            Some(new_ids[n].id.clone()),
+                            format!("component `{}` was added", c.profile.name()),
+                        )
+                    });
+                }
+                (None, None) => {}
+            }
+        }
+    }
+    for (side, cat) in [("OLD", old), ("NEW", new)] {
+        for d in cat.diagnostics.iter().filter(|d| d.is_error()) {
+            let mut c =
+                change(
+                    codes::UNREADABLE_PROFILE,
+                    String::new(),
+                    String::new(),
+                    None,
+                    None,
+                    format!(
+                    "{side}: {} could not be read ({}[{}]: {}); a component in it counts as absent",
+                    if side == "NEW" { new_name(&d.file) } else { old_name(&d.file) },
+                    d.severity,
+                    d.code,
+                    d.message
+                ),
+                );
+            if side == "NEW" {
+                c.file = Some(new_name(&d.file));
+                c.line = d.pos.map(|p| p.line);
+                c.column = d.pos.map(|p| p.column);
+            } else {
+                c.old_file = Some(old_name(&d.file));
+            }
+            out.push(c);
+        }
+    }
+    sort(&mut out);
+    Diff {
+        changes: out,
+        components: counts,
+    }
+}
+
+/// Sorts changes by component, path, severity, code and message.
+pub fn sort(changes: &mut [Change]) {
+    changes.sort_by(|a, b| {
+        (
+            &a.component,
+            &a.path,
+            a.severity,
+            a.code,
+            &a.message,
+            &a.file,
+        )
+            .cmp(&(
+                &b.component,
+                &b.path,
+                b.severity,
+                b.code,
+                &b.message,
+                &b.file,
+            ))
+    });
+}
+
+/// Both catalogues with their identities and file namers.
+struct Sides<'a> {
+    old: &'a Catalog,
+    new: &'a Catalog,
+    old_ids: &'a [Ident],
+    new_ids: &'a [Ident],
+    old_name: Namer<'a>,
+    new_name: Namer<'a>,
+}
+
+/// Pairs the components of one id: one on each side is a pair; several are paired by language,
+/// then by identical path, then by identical content (copies), and when one is left on each side
+/// those two. What is left on both sides is ambiguous (reported, not compared); what is left on
+/// one side only is added or removed.
+fn pair(
+    olds: &[usize],
+    news: &[usize],
+    sides: &Sides,
+    out: &mut Vec<Change>,
+) -> Vec<(Option<usize>, Option<usize>)> {
+    let Sides {
+        old,
+        new,
+        old_ids,
+        new_ids,
+        old_name,
+        new_name,
+    } = *sides;
+    if olds.len() <= 1 && news.len() <= 1 {
+        return vec![(olds.first().copied(), news.first().copied())];
+    }
+    let mut result = Vec::new();
+    let mut langs: BTreeMap<String, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
+    for &o in olds {
+        langs
+            .entry(old_ids[o].language.to_lowercase())
+            .or_default()
+            .0
+            .push(o);
+    }
+    for &n in news {
+        langs
+            .entry(new_ids[n].language.to_lowercase())
+            .or_default()
+            .1
+            .push(n);
+    }
+    for (lang, (mut lo, mut ln)) in langs {
+        if lo.len() == 1 && ln.len() == 1 {
+            result.push((Some(lo[0]), Some(ln[0])));
+            continue;
+        }
+        // Same file on both sides: the same component.
+        lo.retain(|&o| {
+            match ln
+                .iter()
+                .position(|&n| new.components[n].source == old.components[o].source)
+            {
+                Some(at) => {
+                    result.push((Some(o), Some(ln.remove(at))));
+                    false
+                }
+                None => true,
+            }
+        });
+        // Copies: a profile equal to one of the other side (positions aside) is that one.
+        // Looked up by a fingerprint, so that a thousand copies of one id stay linear.
+        let mut by_print: BTreeMap<u64, Vec<usize>> = BTreeMap::new();
+        for &n in ln.iter().rev() {
+            by_print
+                .entry(fingerprint(&new.components[n].profile))
+                .or_default()
+                .push(n);
+        }
+        lo.retain(|&o| {
+            let op = &old.components[o].profile;
+            let twin = by_print.get_mut(&fingerprint(op)).and_then(|v| {
+                let at = v
+                    .iter()
+                    .rposition(|&n| same_values(op, &new.components[n].profile))?;
+                Some(v.remove(at))
+            });
+            match twin {
+                Some(n) => {
+                    ln.retain(|&x| x != n);
+                    result.push((Some(o), Some(n)));
+                    false
+                }
+                None => true,
+            }
+        });
+        // One left on each side: the changed one.
+        if lo.len() == 1 && ln.len() == 1 {
+            result.push((Some(lo[0]), Some(ln[0])));
+            continue;
+        }
+        if !lo.is_empty() && !ln.is_empty() {
+            let files = |v: &[usize], cat: &Catalog, name: Namer| {
+                v.iter()
+                    .map(|&i| name(&cat.components[i].source))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            let id = &new_ids[ln[0]];
+            let lang_text = if lang.is_empty() {
+                String::new()
+            } else {
+                format!(" in {}", id.language)
+            };
+            let nc = &new.components[ln[0]];
+            out.push(Change {
+                file: Some(new_name(&nc.source)),
+                old_file: Some(old_name(&old.components[lo[0]].source)),
+                ..change(
+                    codes::AMBIGUOUS_COMPONENT,
+                    id.id.clone(),
+                    String::new(),
+                    Some(files(&lo, old, old_name)),
+                    Some(files(&ln, new, new_name)),
+                    format!(
+                        "{} profiles in OLD and {} in NEW declare component `{}`{lang_text}; they cannot be paired and are not compared (give each component its own id)",
+                        lo.len(),
+                        ln.len(),
+                        id.id
+                    ),
+                )
+            });
+            continue;
+        }
+        result.extend(lo.into_iter().map(|o| (Some(o), None)));
+        result.extend(ln.into_iter().map(|n| (None, Some(n))));
+    }
+    result
+}
+
+fn change(
+    code: &'static str,
+    component: String,
+    path: String,
+    old: Option<String>,
+    new: Option<String>,
+    message: String,
+) -> Change {
+    let c = codes::code(code).expect("every code used is registered");
+    Change {
+        severity: c.level,
+        code: c.code,
+        name: c.name,
+        component,
+        path,
+        old,
+        new,
+        message,
+        file: None,
+        line: None,
+        column: None,
+        old_file: None,
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The value tree both profiles are compared on.
+
+/// A profile as a tree of records (struct fields), keyed lists (items matched by name) and
+/// leaves (compared as a whole). Positions are kept beside the values, not compared.
+#[derive(Debug, Clone, PartialEq)]
+enum Node {
+    Leaf(Value),
+    Record(BTreeMap<String, Node>, Option<Pos>),
+    Keyed(BTreeMap<String, Node>),
+}
+
+/// Lists whose items are matched by name (`actions` by kind); other lists are compared whole.
+fn item_key(list: &str) -> Option<&'static str> {
+    match list {
+        "actions" => Some("kind"),
+        "dataPorts" | "servicePorts" | "interfaces" | "configurations" | "parameters"
+        | "properties" | "events" | "libraries" => Some("name"),
+        _ => None,
+    }
+}
+
+/// The label of each item: its name (`(unnamed)` when empty), `name#2` for the second with the
+/// same name. The typed lookups use the same labels.
+fn labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {
+    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    names
+        .map(|n| {
+            let base = n
+                .map(str::trim)
+                .filter(|s| !s.is_empty())
+                .unwrap_or("(unnamed)")
+                .to_string();
+            let k = seen.entry(base.clone()).or_default();
+            *k += 1;
+            if *k > 1 {
+                format!("{base}#{k}")
+            } else {
+                base
+            }
+        })
+        .collect()
+}
+
+/// A hash of a profile's values without positions: equal for copies of one profile (a match
+/// is confirmed by comparing the two, so a collision cannot pair different profiles).
+fn fingerprint(p: &Profile) -> u64 {
+    use std::hash::{Hash, Hasher};
+    fn feed(v: &Value, h: &mut std::collections::hash_map::DefaultHasher) {
+        match v {
+            Value::Null => 0u8.hash(h),
+            Value::Bool(b) => (1u8, b).hash(h),
+            Value::Number(n) => (2u8, n.to_string()).hash(h),
+            Value::String(s) => (3u8, s).hash(h),
+            Value::Array(a) => {
+                (4u8, a.len()).hash(h);
+                a.iter().for_each(|x| feed(x, h));
+            }
+            Value::Object(m) => {
+                5u8.hash(h);
+                for (k, x) in m.iter().filter(|(k, _)| *k != "pos" && *k != "actionsPos") {
+                    k.hash(h);
+                    feed(x, h);
+                }
+            }
+        }
+    }
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    feed(&serde_json::to_value(p).unwrap_or(Value::Null), &mut h);
+    h.finish()
+}
+
+/// Whether two profiles have the same values (positions aside).
+fn same_values(a: &Profile, b: &Profile) -> bool {
+    let (x, y) = (tree(a), tree(b));
+    let mut found = Vec::new();
+    walk(&mut Vec::new(), &x, &y, None, &mut found);
+    found.is_empty()
+}
+
+fn pos_of(v: &Value) -> Option<Pos> {
+    let line = v.get("line")?.as_u64()? as u32;
+    let column = v.get("column")?.as_u64()? as u32;
+    (line > 0).then_some(Pos::new(line, column))
+}
+
+/// `v` without its `pos` keys, for comparing leaves.
+fn strip_pos(v: Value) -> Value {
+    match v {
+        Value::Object(m) => Value::Object(
+            m.into_iter()
+                .filter(|(k, _)| k != "pos" && k != "actionsPos")
+                .map(|(k, v)| (k, strip_pos(v)))
+                .collect(),
+        ),
+        Value::Array(a) => Value::Array(a.into_iter().map(strip_pos).collect()),
+        other => other,
+    }
+}
+
+fn node(key: &str, v: Value) -> Node {
+    match v {
+        Value::Object(mut m) if key != "constraint" => {
+            let pos = m.get("pos").and_then(pos_of);
+            m.remove("pos");
+            m.remove("actionsPos");
+            Node::Record(
+                m.into_iter()
+                    .map(|(k, v)| (k.clone(), node(&k, v)))
+                    .collect(),
+                pos,
+            )
+        }
+        Value::Array(items) => match item_key(key) {
+            Some(field) if items.iter().all(Value::is_object) => {
+                let names = labels(items.iter().map(|i| i.get(field).and_then(Value::as_str)));
+                Node::Keyed(
+                    names
+                        .into_iter()
+                        .zip(items)
+                        .map(|(n, i)| (n, node("", i)))
+                        .collect(),
+                )
+            }
+            _ => Node::Leaf(strip_pos(Value::Array(items))),
+        },
+        other => Node::Leaf(strip_pos(other)),
+    }
+}
+
+/// The tree of a profile: its JSON form with the configuration parameters lifted to a
+/// top-level `configurations` list (paths read `configurations/max_speed/defaultValue`).
+fn tree(p: &Profile) -> Node {
+    let mut v = serde_json::to_value(p).unwrap_or(Value::Null);
+    if let Some(m) = v.as_object_mut() {
+        let configs = m
+            .get_mut("configurationSet")
+            .and_then(Value::as_object_mut)
+            .and_then(|cs| cs.remove("configurations"))
+            .unwrap_or(Value::Array(Vec::new()));
+        m.insert("configurations".into(), configs);
+    }
+    node("", v)
+}
+
+/// One difference between the trees, before classification.
+enum Raw<'a> {
+    Changed(Value, Value),
+    Added(&'a Node),
+    Removed(&'a Node),
+}
+
+struct Found<'a> {
+    path: Vec<String>,
+    raw: Raw<'a>,
+    /// NEW's position of the item, or of its nearest enclosing record.
+    pos: Option<Pos>,
+}
+
+static EMPTY: std::sync::LazyLock<BTreeMap<String, Node>> = std::sync::LazyLock::new(BTreeMap::new);
+const NULL: Node = Node::Leaf(Value::Null);
+
+fn walk<'a>(
+    path: &mut Vec<String>,
+    o: &'a Node,
+    n: &'a Node,
+    pos: Option<Pos>,
+    out: &mut Vec<Found<'a>>,
+) {
+    match (o, n) {
+        (Node::Leaf(a), Node::Leaf(b)) => {
+            if a != b {
+                out.push(Found {
+                    path: path.clone(),
+                    raw: Raw::Changed(a.clone(), b.clone()),
+                    pos,
+                });
+            }
+        }
+        (Node::Record(a, _), Node::Record(b, np)) => fields(path, a, b, np.or(pos), out),
+        (Node::Record(a, _), Node::Leaf(Value::Null)) => fields(path, a, &EMPTY, pos, out),
+        (Node::Leaf(Value::Null), Node::Record(b, np)) => fields(path, &EMPTY, b, np.or(pos), out),
+        (Node::Keyed(a), Node::Keyed(b)) => items(path, a, b, pos, out),
+        (Node::Keyed(a), Node::Leaf(Value::Null)) => items(path, a, &EMPTY, pos, out),
+        (Node::Leaf(Value::Null), Node::Keyed(b)) => items(path, &EMPTY, b, pos, out),
+        _ => out.push(Found {
+            path: path.clone(),
+            raw: Raw::Changed(plain(o), plain(n)),
+            pos,
+        }),
+    }
+}
+
+fn fields<'a>(
+    path: &mut Vec<String>,
+    a: &'a BTreeMap<String, Node>,
+    b: &'a BTreeMap<String, Node>,
+    pos: Option<Pos>,
+    out: &mut Vec<Found<'a>>,
+) {
+    let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
+    keys.sort();
+    keys.dedup();
+    for k in keys {
+        path.push(k.clone());
+        walk(
+            path,
+            a.get(k).unwrap_or(&NULL),
+            b.get(k).unwrap_or(&NULL),
+            pos,
+            out,
+        );
+        path.pop();
+    }
+}
+
+fn items<'a>(
+    path: &mut Vec<String>,
+    a: &'a BTreeMap<String, Node>,
+    b: &'a BTreeMap<String, Node>,
+    pos: Option<Pos>,
+    out: &mut Vec<Found<'a>>,
+) {
+    let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
+    keys.sort();
+    keys.dedup();
+    for k in keys {
+        path.push(k.clone());
+        match (a.get(k), b.get(k)) {
+            (Some(x), Some(y)) => walk(path, x, y, pos, out),
+            (Some(x), None) => out.push(Found {
+                path: path.clone(),
+                raw: Raw::Removed(x),
+                pos,
+            }),
+            (None, Some(y)) => out.push(Found {
+                path: path.clone(),
+                raw: Raw::Added(y),
+                pos: record_pos(y).or(pos),
+            }),
+            (None, None) => {}
+        }
+        path.pop();
+    }
+}
+
+fn record_pos(n: &Node) -> Option<Pos> {
+    match n {
+        Node::Record(_, p) => *p,
+        _ => None,
+    }
+}
+
+/// A node back as plain JSON (for a value whose shape changed).
+fn plain(n: &Node) -> Value {
+    match n {
+        Node::Leaf(v) => v.clone(),
+        Node::Record(m, _) | Node::Keyed(m) => {
+            Value::Object(m.iter().map(|(k, v)| (k.clone(), plain(v))).collect())
+        }
+    }
+}
+
+/// A leaf as text: strings as written, `null` as absent, anything else as compact JSON.
+fn text(v: &Value) -> Option<String> {
+    match v {
+        Value::Null => None,
+        Value::String(s) => Some(s.clone()),
+        other => Some(other.to_string()),
+    }
+}
+
+/// A field of an item node, as text.
+fn field(n: &Node, name: &str) -> Option<String> {
+    match n {
+        Node::Record(m, _) => match m.get(name) {
+            Some(Node::Leaf(v)) => text(v).filter(|s| !s.trim().is_empty()),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Classification.
+
+struct Ctx<'a> {
+    component: &'a str,
+    old: &'a Profile,
+    new: &'a Profile,
+    file: &'a str,
+    old_file: &'a str,
+}
+
+impl Ctx<'_> {
+    fn push(
+        &self,
+        out: &mut Vec<Change>,
+        code: &'static str,
+        path: &[String],
+        pos: Option<Pos>,
+        (old, new): (Option<String>, Option<String>),
+        message: String,
+    ) {
+        out.push(Change {
+            file: Some(self.file.to_string()),
+            old_file: Some(self.old_file.to_string()),
+            line: pos.map(|p| p.line),
+            column: pos.map(|p| p.column),
+            ..change(
+                code,
+                self.component.to_string(),
+                path.join("/"),
+                old,
+                new,
+                message,
+            )
+        });
+    }
+}
+
+/// Fields whose change is documentation only.
+fn is_documentation(path: &[String]) -> bool {
+    path.iter().any(|s| s == "doc")
+        || matches!(
+            path.last().map(String::as_str),
+            Some(
+                "description"
+                    | "comment"
+                    | "abstract"
+                    | "hardwareProfile"
+                    | "versionUpLogs"
+                    | "ifdescription"
+            )
+        )
+}
+
+fn compare(
+    component: &str,
+    (oc, oi, old_file): (&Component, &Ident, &str),
+    (nc, ni, file): (&Component, &Ident, &str),
+    out: &mut Vec<Change>,
+) {
+    let (ot, nt) = (tree(&oc.profile), tree(&nc.profile));
+    let mut found = Vec::new();
+    walk(
+        &mut Vec::new(),
+        &ot,
+        &nt,
+        Some(nc.profile.pos).filter(|p| !p.is_unknown()),
+        &mut found,
+    );
+    let ctx = Ctx {
+        component,
+        old: &oc.profile,
+        new: &nc.profile,
+        file,
+        old_file,
+    };
+    let start = out.len();
+    let basic_version_changed = found.iter().any(|f| f.path == ["basicInfo", "version"]);
+    for f in &found {
+        classify(&ctx, f, basic_version_changed, oi, ni, out);
+    }
+    let breaking = out[start..].iter().any(|c| c.severity == Level::Breaking);
+    let bumped = oi.version != ni.version || basic_version_changed;
+    if breaking && !bumped {
+        let version = non_empty(&nc.profile.basic_info.version)
+            .map(str::to_string)
+            .or_else(|| Some(ni.version.clone()).filter(|v| !v.is_empty()));
+        let pos = nc
+            .profile
+            .basic_info
+            .attr_pos
+            .get("version")
+            .or(Some(nc.profile.basic_info.pos));
+        ctx.push(
+            out,
+            codes::BREAKING_WITHOUT_BUMP,
+            &["basicInfo".into(), "version".into()],
+            pos.filter(|p| !p.is_unknown()),
+            (version.clone(), version.clone()),
+            format!(
+                "`{}` has breaking changes but keeps version {}; raise the version (in the id and in BasicInfo)",
+                nc.profile.name(),
+                version.as_deref().unwrap_or("(none)")
+            ),
+        );
+    }
+}
+
+fn s(p: &[String], i: usize) -> &str {
+    p.get(i).map(String::as_str).unwrap_or("")
+}
+
+/// The typed item labelled `label` among `items`.
+fn by_label<'a, T>(
+    items: &'a [T],
+    name: impl Fn(&T) -> Option<&str>,
+    label: &str,
+) -> Option<&'a T> {
+    let names = labels(items.iter().map(&name));
+    names.iter().position(|n| n == label).map(|i| &items[i])
+}
+
+fn classify(
+    ctx: &Ctx,
+    f: &Found,
+    basic_version_changed: bool,
+    oi: &Ident,
+    ni: &Ident,
+    out: &mut Vec<Change>,
+) {
+    let p = &f.path;
+    let pos = f.pos;
+    let joined = p.join("/");
+    match &f.raw {
+        Raw::Removed(node) => {
+            let (code, message, old) = match (s(p, 0), p.len()) {
+                ("dataPorts", 2) => (
+                    codes::DATA_PORT_REMOVED,
+                    format!("data port `{}` was removed", p[1]),
+                    field(node, "type"),
+                ),
+                ("servicePorts", 2) => (
+                    codes::SERVICE_PORT_REMOVED,
+                    format!("service port `{}` was removed", p[1]),
+                    None,
+                ),
+                ("servicePorts", 4) if s(p, 2) == "interfaces" => (
+                    codes::INTERFACE_REMOVED,
+                    format!(
+                        "{} interface `{}` of service port `{}` was removed",
+                        field(node, "direction").unwrap_or_else(|| "service".into()),
+                        p[3],
+                        p[1]
+                    ),
+                    field(node, "type"),
+                ),
+                ("configurations", 2) => (
+                    codes::CONFIGURATION_REMOVED,
+                    format!("configuration parameter `{}` was removed", p[1]),
+                    field(node, "type"),
+                ),
+                ("actions", 2)
+                    if crate::model::parse_bool(field(node, "implemented").as_deref())
+                        == Some(true) =>
+                {
+                    (
+                        codes::ACTION_NOT_IMPLEMENTED,
+                        format!("action `{}` is no longer listed (it was implemented)", p[1]),
+                        field(node, "implemented"),
+                    )
+                }
+                _ if is_documentation(p) => (
+                    codes::DOCUMENTATION_CHANGED,
+                    format!("`{joined}` was removed"),
+                    Some(plain(node)).as_ref().and_then(text),
+                ),
+                _ => (
+                    codes::OTHER_CHANGED,
+                    format!("`{joined}` was removed"),
+                    Some(plain(node)).as_ref().and_then(text),
+                ),
+            };
+            // A removed parameter: point at NEW's configuration set, where it was.
+            let pos = match (s(p, 0), &ctx.new.configuration_set) {
+                ("configurations", Some(cs)) if !cs.pos.is_unknown() => Some(cs.pos),
+                _ => pos,
+            };
+            ctx.push(out, code, p, pos, (old, None), message);
+        }
+        Raw::Added(node) => {
+            let (code, message, new) = match (s(p, 0), p.len()) {
+                ("dataPorts", 2) => (
+                    codes::PORT_ADDED,
+                    format!(
+                        "data port `{}` ({}) was added",
+                        p[1],
+                        field(node, "portType").unwrap_or_default()
+                    ),
+                    field(node, "type"),
+                ),
+                ("servicePorts", 2) => (
+                    codes::PORT_ADDED,
+                    format!("service port `{}` was added", p[1]),
+                    None,
+                ),
+                ("servicePorts", 4) if s(p, 2) == "interfaces" => {
+                    let required = field(node, "direction")
+                        .is_some_and(|d| d.trim().eq_ignore_ascii_case("required"));
+                    let code = if required {
+                        codes::REQUIRED_INTERFACE_ADDED
+                    } else {
+                        codes::INTERFACE_ADDED
+                    };
+                    (
+                        code,
+                        format!(
+                            "{} interface `{}` was added to service port `{}`",
+                            field(node, "direction").unwrap_or_else(|| "service".into()),
+                            p[3],
+                            p[1]
+                        ),
+                        field(node, "type"),
+                    )
+                }
+                ("configurations", 2) => (
+                    codes::CONFIGURATION_ADDED,
+                    format!(
+                        "configuration parameter `{}` was added (default {})",
+                        p[1],
+                        field(node, "defaultValue")
+                            .map(|d| format!("`{d}`"))
+                            .unwrap_or_else(|| "empty".into())
+                    ),
+                    field(node, "type"),
+                ),
+                _ if is_documentation(p) => (
+                    codes::DOCUMENTATION_CHANGED,
+                    format!("`{joined}` was added"),
+                    Some(plain(node)).as_ref().and_then(text),
+                ),
+                _ => (
+                    codes::OTHER_CHANGED,
+                    format!("`{joined}` was added"),
+                    Some(plain(node)).as_ref().and_then(text),
+                ),
+            };
+            ctx.push(out, code, p, pos, (None, new), message);
+        }
+        Raw::Changed(a, b) => {
+            let (old, new) = (text(a), text(b));
+            let (code, message) = changed(
+                ctx,
+                p,
+                old.as_deref(),
+                new.as_deref(),
+                basic_version_changed,
+                oi,
+                ni,
+            );
+            let Some(code) = code else { return };
+            let message = message.unwrap_or_else(|| {
+                format!(
+                    "`{joined}` changed from {} to {}",
+                    quoted(old.as_deref()),
+                    quoted(new.as_deref())
+                )
+            });
+            // Constraints are shown as formulas, not as their JSON.
+            let (old, new) = if p.last().map(String::as_str) == Some("constraint")
+                && s(p, 0) == "configurations"
+            {
+                let c = |prof: &Profile| {
+                    by_label(prof.configurations(), |c| c.name.as_deref(), s(p, 1))
+                        .and_then(|c| c.constraint.as_ref())
+                        .map(crate::constraint::describe)
+                };
+                (c(ctx.old), c(ctx.new))
+            } else {
+                (old, new)
+            };
+            ctx.push(out, code, p, pos, (old, new), message);
+        }
+    }
+}
+
+fn quoted(s: Option<&str>) -> String {
+    match s {
+        None => "(absent)".into(),
+        Some(s) => format!("`{s}`"),
+    }
+}
+
+/// The code (and a message, else the generic one) of a changed leaf; `None` to report nothing
+/// (a change already reported under another path).
+fn changed(
+    ctx: &Ctx,
+    p: &[String],
+    old: Option<&str>,
+    new: Option<&str>,
+    basic_version_changed: bool,
+    oi: &Ident,
+    ni: &Ident,
+) -> (Option<&'static str>, Option<String>) {
+    let last = p.last().map(String::as_str).unwrap_or("");
+    let spelled = |what: &str| {
+        Some(format!(
+            "`{}` is spelled differently ({} → {}) but {what}",
+            p.join("/"),
+            quoted(old),
+            quoted(new)
+        ))
+    };
+    match (s(p, 0), p.len(), last) {
+        ("id", 1, _) => {
+            if oi.version != ni.version && oi.key == ni.key {
+                if basic_version_changed {
+                    (None, None)
+                } else {
+                    (
+                        Some(codes::VERSION_CHANGED),
+                        Some(format!("version {} → {}", oi.version, ni.version)),
+                    )
+                }
+            } else {
+                (
+                    Some(codes::OTHER_CHANGED),
+                    spelled("names the same component"),
+                )
+            }
+        }
+        ("basicInfo", 2, "version") => (
+            Some(codes::VERSION_CHANGED),
+            Some(format!("version {} → {}", quoted(old), quoted(new))),
+        ),
+        ("basicInfo", 2, "executionType") => (Some(codes::EXECUTION_TYPE), None),
+        ("basicInfo", 2, "executionRate") => {
+            let num = |s: Option<&str>| s.and_then(|s| s.trim().parse::<f64>().ok());
+            match (num(old), num(new)) {
+                (Some(a), Some(b)) if a == b => {
+                    (Some(codes::OTHER_CHANGED), spelled("is the same rate"))
+                }
+                _ => (
+                    Some(codes::EXECUTION_RATE),
+                    Some(format!("execution rate {} → {}", quoted(old), quoted(new))),
+                ),
+            }
+        }
+        ("basicInfo", 2, "maxInstances") => {
+            // Absent or empty: unlimited.
+            let n = |s: Option<&str>| -> Option<Option<u64>> {
+                match s.map(str::trim).filter(|s| !s.is_empty()) {
+                    None => Some(None),
+                    Some(t) => t.parse::<u64>().ok().map(Some),
+                }
+            };
+            match (n(old), n(new)) {
+                (Some(a), Some(b)) => {
+                    let lowered = match (a, b) {
+                        (None, Some(_)) => true,
+                        (Some(x), Some(y)) => y < x,
+                        _ => false,
+                    };
+                    if lowered {
+                        (
+                            Some(codes::MAX_INSTANCES_LOWERED),
+                            Some(format!(
+                                "at most {} instance(s) now (was {})",
+                                b.map_or("unlimited".into(), |v| v.to_string()),
+                                a.map_or("unlimited".into(), |v| v.to_string())
+                            )),
+                        )
+                    } else {
+                        (Some(codes::OTHER_CHANGED), None)
+                    }
+                }
+                _ => (
+                    Some(codes::MAX_INSTANCES_LOWERED),
+                    Some(format!(
+                        "maxInstances {} → {} cannot be compared as numbers",
+                        quoted(old),
+                        quoted(new)
+                    )),
+                ),
+            }
+        }
+        ("actions", 3, "implemented") => {
+            let b = |s: Option<&str>| crate::model::parse_bool(s).unwrap_or(false);
+            if b(old) && !b(new) {
+                (
+                    Some(codes::ACTION_NOT_IMPLEMENTED),
+                    Some(format!("action `{}` is no longer implemented", p[1])),
+                )
+            } else {
+                (Some(codes::OTHER_CHANGED), None)
+            }
+        }
+        ("dataPorts", 3, "portType") => {
+            let dir = |s: Option<&str>| {
+                crate::model::DataPort {
+                    port_type: s.map(Into::into),
+                    ..Default::default()
+                }
+                .direction()
+            };
+            if dir(old).is_some() && dir(old) == dir(new) {
+                (
+                    Some(codes::OTHER_CHANGED),
+                    spelled("means the same port kind"),
+                )
+            } else {
+                (
+                    Some(codes::DATA_PORT_DIRECTION),
+                    Some(format!(
+                        "data port `{}` changed from {} to {}",
+                        p[1],
+                        quoted(old),
+                        quoted(new)
+                    )),
+                )
+            }
+        }
+        ("dataPorts", 3, "type") => {
+            if same_type(old, new) {
+                (Some(codes::OTHER_CHANGED), spelled("names the same type"))
+            } else {
+                (
+                    Some(codes::DATA_PORT_TYPE),
+                    Some(format!(
+                        "data port `{}` now carries {} instead of {}",
+                        p[1],
+                        quoted(new),
+                        quoted(old)
+                    )),
+                )
+            }
+        }
+        ("dataPorts", 3, "interfaceType" | "dataflowType" | "subscriptionType") => {
+            let set = |s: Option<&str>| -> std::collections::BTreeSet<String> {
+                s.unwrap_or("")
+                    .split(',')
+                    .map(|x| x.trim().to_lowercase())
+                    .filter(|x| !x.is_empty())
+                    .collect()
+            };
+            let (a, b) = (set(old), set(new));
+            // Empty: unrestricted.
+            let narrowed = !b.is_empty() && (a.is_empty() || !a.is_subset(&b));
+            if narrowed {
+                let dropped: Vec<&String> = a.difference(&b).collect();
+                let what = if a.is_empty() {
+                    format!("now restricted to {}", quoted(new))
+                } else {
+                    format!(
+                        "no longer offers {}",
+                        dropped
+                            .iter()
+                            .map(|d| format!("`{d}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    )
+                };
+                (
+                    Some(codes::TRANSPORT_NARROWED),
+                    Some(format!("{last} of data port `{}` {what}", p[1])),
+                )
+            } else {
+                (Some(codes::OTHER_CHANGED), None)
+            }
+        }
+        ("dataPorts" | "configurations", 3, "unit") => (
+            Some(codes::UNIT_CHANGED),
+            Some(format!(
+                "unit of `{}` changed from {} to {}",
+                p[1],
+                quoted(old),
+                quoted(new)
+            )),
+        ),
+        ("servicePorts", 5, "type") if s(p, 2) == "interfaces" => {
+            if same_type(old, new) {
+                (
+                    Some(codes::OTHER_CHANGED),
+                    spelled("names the same interface"),
+                )
+            } else {
+                (
+                    Some(codes::INTERFACE_TYPE),
+                    Some(format!(
+                        "interface `{}` of service port `{}` is now {} instead of {}",
+                        p[3],
+                        p[1],
+                        quoted(new),
+                        quoted(old)
+                    )),
+                )
+            }
+        }
+        ("servicePorts", 5, "direction") if s(p, 2) == "interfaces" => {
+            let dir = |s: Option<&str>| {
+                crate::model::ServiceInterface {
+                    direction: s.map(Into::into),
+                    ..Default::default()
+                }
+                .direction_kind()
+            };
+            if dir(old).is_some() && dir(old) == dir(new) {
+                (
+                    Some(codes::OTHER_CHANGED),
+                    spelled("means the same direction"),
+                )
+            } else {
+                (
+                    Some(codes::INTERFACE_DIRECTION),
+                    Some(format!(
+                        "interface `{}` of service port `{}` changed from {} to {}",
+                        p[3],
+                        p[1],
+                        quoted(old),
+                        quoted(new)
+                    )),
+                )
+            }
+        }
+        ("configurations", 3, "type") => {
+            use crate::value::ValueType;
+            let ty = |s: Option<&str>| ValueType::parse(s.unwrap_or(""));
+            let same = match (ty(old), ty(new)) {
+                (ValueType::Unknown, ValueType::Unknown) => {
+                    old.map(str::trim) == new.map(str::trim)
+                }
+                (a, b) => a == b,
+            };
+            if same {
+                (
+                    Some(codes::OTHER_CHANGED),
+                    spelled("means the same value type"),
+                )
+            } else {
+                (
+                    Some(codes::CONFIGURATION_TYPE),
+                    Some(format!(
+                        "configuration parameter `{}` is now {} instead of {}",
+                        p[1],
+                        quoted(new),
+                        quoted(old)
+                    )),
+                )
+            }
+        }
+        ("configurations", 3, "defaultValue") => (
+            Some(codes::DEFAULT_CHANGED),
+            Some(format!(
+                "default of `{}` changed from {} to {}",
+                p[1],
+                quoted(old),
+                quoted(new)
+            )),
+        ),
+        ("configurations", 3, "constraint") => constraint_change(ctx, &p[1]),
+        _ if is_documentation(p) => (Some(codes::DOCUMENTATION_CHANGED), None),
+        _ => (Some(codes::OTHER_CHANGED), None),
+    }
+}
+
+fn same_type(old: Option<&str>, new: Option<&str>) -> bool {
+    let c = |s: Option<&str>| {
+        s.map(str::trim)
+            .filter(|s| !s.is_empty())
+            .map(canonical_type)
+    };
+    c(old) == c(new)
+}
+
+fn constraint_change(ctx: &Ctx, label: &str) -> (Option<&'static str>, Option<String>) {
+    use constraint::Relation;
+    fn find<'p>(p: &'p Profile, label: &str) -> Option<&'p crate::model::Configuration> {
+        by_label(p.configurations(), |c| c.name.as_deref(), label)
+    }
+    let (Some(oc), Some(nc)) = (find(ctx.old, label), find(ctx.new, label)) else {
+        return (Some(codes::OTHER_CHANGED), None);
+    };
+    let real = |c: &crate::model::Configuration| {
+        c.constraint.clone().filter(|k| k.placeholder().is_none())
+    };
+    let (ok, nk) = (real(oc), real(nc));
+    let rel = constraint::relation(ok.as_ref(), nk.as_ref());
+    let describe = |k: &Option<crate::model::Constraint>| match k {
+        Some(k) => format!("`{}`", crate::constraint::describe(k)),
+        None => "none".to_string(),
+    };
+    let head = format!(
+        "constraint of `{label}` changed from {} to {}",
+        describe(&ok),
+        describe(&nk)
+    );
+    let default_note = || -> String {
+        let Some(k) = &nk else { return String::new() };
+        let Some(d) = oc.default_value.as_deref() else {
+            return "; the old default is empty".into();
+        };
+        let ty = crate::value::ValueType::parse(nc.type_.as_deref().unwrap_or(""));
+        match crate::constraint::evaluate(k, d, ty) {
+            crate::constraint::Verdict::Satisfied => {
+                format!("; the old default `{d}` still satisfies it")
+            }
+            crate::constraint::Verdict::Violated(why) => {
+                format!("; the old default `{d}` no longer satisfies it ({why})")
+            }
+            crate::constraint::Verdict::Unevaluable(why) => {
+                format!("; whether the old default `{d}` satisfies it cannot be decided ({why})")
+            }
+        }
+    };
+    match rel {
+        Relation::Same => (
+            Some(codes::OTHER_CHANGED),
+            Some(format!(
+                "{head}: written differently, accepts the same values"
+            )),
+        ),
+        Relation::Narrower => (
+            Some(codes::CONSTRAINT_NARROWED),
+            Some(format!("{head}: it accepts fewer values{}", default_note())),
+        ),
+        Relation::Wider => (
+            Some(codes::CONSTRAINT_WIDENED),
+            Some(format!("{head}: it accepts more values")),
+        ),
+        Relation::Other => (
+            Some(codes::CONSTRAINT_CHANGED),
+            Some(format!(
+                "{head}: it may refuse values it accepted{}",
+                default_note()
+            )),
+        ),
+    }
+}

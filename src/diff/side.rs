@@ -1,0 +1,309 @@
+//! The two sides of `rtcdoc diff`: a directory (walked like `build`), one profile file, or
+//! `REV:PATH` — a path as it is in a git revision of the current repository, read with
+//! `git ls-tree` and `git cat-file` into a temporary directory, without touching the work tree
+//! or the index.
+
+use crate::build::{self, LoadOptions};
+use anyhow::{bail, Context, Result};
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+/// Where a side comes from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Spec {
+    /// A directory or a file on disk.
+    Local(PathBuf),
+    /// `REV:PATH` of the repository of the current directory.
+    Git { rev: String, path: String },
+}
+
+impl Spec {
+    /// Reads a command-line argument: an existing path is local (so `C:\dir` and files with a
+    /// `:` in their name work), else `REV:PATH` when it has a `:`, else a local path (which
+    /// does not exist: [`load`] says so).
+    pub fn parse(arg: &str) -> Spec {
+        if Path::new(arg).exists() {
+            return Spec::Local(PathBuf::from(arg));
+        }
+        match arg.split_once(':') {
+            Some((rev, path)) if !rev.is_empty() => Spec::Git {
+                rev: rev.to_string(),
+                path: path.to_string(),
+            },
+            _ => Spec::Local(PathBuf::from(arg)),
+        }
+    }
+}
+
+/// A loaded side.
+pub struct Side {
+    pub loaded: build::Loaded,
+    /// What the files of the catalogue are relative to, as the user names them: the input
+    /// directory, the parent of an input file, or the path inside the repository.
+    pub root: PathBuf,
+    /// The temporary copy of a git revision (removed when the side is dropped).
+    _temp: Option<tempfile::TempDir>,
+}
+
+impl Side {
+    /// `file` (relative to the side's input) as the user can find it.
+    pub fn display(&self, file: &str) -> String {
+        let joined = self.root.join(file).to_string_lossy().replace('\\', "/");
+        joined.strip_prefix("./").unwrap_or(&joined).to_string()
+    }
+}
+
+/// Whether `name` looks like a catalogue written by `rtcdoc build --format json`.
+fn is_catalog_json(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+}
+
+const CATALOG_JSON: &str = "catalog.json input needs format 2 (coming with the catalogue redesign); diff the profile directory the catalogue was built from instead";
+
+/// Loads one side (`which` is `OLD` or `NEW`, for messages).
+pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
+    match spec {
+        Spec::Local(p) => {
+            if !p.exists() {
+                bail!(
+                    "{which} `{}` does not exist; give a directory, a profile file or REV:PATH (a git revision and a path, e.g. origin/main:components)",
+                    p.display()
+                );
+            }
+            if p.is_file() && is_catalog_json(p) {
+                bail!("{which} `{}`: {CATALOG_JSON}", p.display());
+            }
+            let loaded =
+                build::load(p, opts).with_context(|| format!("{which} `{}`", p.display()))?;
+            let root = if p.is_file() {
+                p.parent().map(Path::to_path_buf).unwrap_or_default()
+            } else {
+                p.clone()
+            };
+            Ok(Side {
+                loaded,
+                root,
+                _temp: None,
+            })
+        }
+        Spec::Git { rev, path } => {
+            let object = format!("{rev}:{path}");
+            let temp = tempfile::Builder::new()
+                .prefix("rtcdoc-diff-")
+                .tempdir()
+                .context("cannot create a temporary directory for the git revision")?;
+            let kind = git_checkout(which, &object, temp.path())?;
+            let (input, root) = match kind {
+                ObjectKind::Tree => (temp.path().to_path_buf(), PathBuf::from(path)),
+                ObjectKind::Blob(name) => {
+                    if is_catalog_json(Path::new(&name)) {
+                        bail!("{which} `{object}`: {CATALOG_JSON}");
+                    }
+                    (
+                        temp.path().join(&name),
+                        Path::new(path)
+                            .parent()
+                            .map(Path::to_path_buf)
+                            .unwrap_or_default(),
+                    )
+                }
+            };
+            let loaded =
+                build::load(&input, opts).with_context(|| format!("{which} `{object}`"))?;
+            Ok(Side {
+                loaded,
+                root,
+                _temp: Some(temp),
+            })
+        }
+    }
+}
+
+enum ObjectKind {
+    Tree,
+    /// A single file, written as `dest/<name>`.
+    Blob(String),
+}
+
+fn git(args: &[&str]) -> Result<std::process::Output> {
+    Command::new("git")
+        .args(args)
+        .stdin(Stdio::null())
+        .output()
+        .context("cannot run `git` (REV:PATH needs git on the PATH)")
+}
+
+fn stderr_line(out: &std::process::Output) -> String {
+    String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .next()
+        .unwrap_or("")
+        .trim()
+        .to_string()
+}
+
+/// Writes the profile-like files of `object` (`REV:PATH`) below `dest`.
+fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
+    let inside = git(&["rev-parse", "--is-inside-work-tree"])?;
+    if !inside.status.success() {
+        bail!(
+            "{which} `{object}` names a git revision, but the current directory is not in a git repository ({}); run rtcdoc diff inside the repository, or give a directory",
+            stderr_line(&inside)
+        );
+    }
+    let kind = git(&["cat-file", "-t", object])?;
+    if !kind.status.success() {
+        bail!(
+            "{which} `{object}`: git cannot find it ({}); check the revision (`git log`, fetch it with `git fetch`, in CI check out with fetch-depth: 0) and the path (relative to the repository root, or ./ for the current directory)",
+            stderr_line(&kind)
+        );
+    }
+    match String::from_utf8_lossy(&kind.stdout).trim() {
+        "blob" => {
+            let name = object
+                .rsplit(['/', ':'])
+                .next()
+                .filter(|n| !n.is_empty())
+                .unwrap_or("RTC.xml")
+                .to_string();
+            let out = git(&["cat-file", "blob", object])?;
+            if !out.status.success() {
+                bail!("{which} `{object}`: {}", stderr_line(&out));
+            }
+            std::fs::write(dest.join(&name), &out.stdout)?;
+            Ok(ObjectKind::Blob(name))
+        }
+        "tree" => {
+            let list = git(&["ls-tree", "-r", "-z", "--full-tree", object])?;
+            if !list.status.success() {
+                bail!("{which} `{object}`: {}", stderr_line(&list));
+            }
+            let mut files = Vec::new();
+            for entry in list.stdout.split(|b| *b == 0).filter(|e| !e.is_empty()) {
+                let entry = String::from_utf8_lossy(entry);
+                let Some((meta, rel)) = entry.split_once('\t') else {
+                    continue;
+                };
+                let mut meta = meta.split(' ');
+                let (mode, ty, sha) = (meta.next(), meta.next(), meta.next());
+                // Regular files only: symbolic links (120000) and submodules are not followed,
+                // as the walk does not follow them on disk.
+                if ty != Some("blob") || !matches!(mode, Some("100644" | "100755")) {
+                    continue;
+                }
+                if !wanted(rel) {
+                    continue;
+                }
+                if let Some(sha) = sha {
+                    files.push((sha.to_string(), rel.to_string()));
+                }
+            }
+            write_blobs(&files, dest)?;
+            Ok(ObjectKind::Tree)
+        }
+        other => bail!("{which} `{object}` is a git {other}, not a directory or a file"),
+    }
+}
+
+/// The files the walk could take as profiles: `.xml`, `.yaml`, `.yml` and RTCBuilder's backup
+/// names. The others (sources, images) are not copied out of the repository.
+fn wanted(rel: &str) -> bool {
+    let p = Path::new(rel);
+    let safe = p
+        .components()
+        .all(|c| matches!(c, std::path::Component::Normal(_)));
+    let ext = p
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    safe && (matches!(ext.as_deref(), Some("xml" | "yaml" | "yml"))
+        || crate::walk::named_like_profile(p))
+}
+
+/// Writes the blobs `(sha, path)` below `dest` with one `git cat-file --batch`.
+fn write_blobs(files: &[(String, String)], dest: &Path) -> Result<()> {
+    if files.is_empty() {
+        return Ok(());
+    }
+    let mut child = Command::new("git")
+        .args(["cat-file", "--batch"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .context("cannot run `git cat-file`")?;
+    let mut stdin = child.stdin.take().context("git cat-file: no stdin")?;
+    let request: String = files.iter().map(|(sha, _)| format!("{sha}\n")).collect();
+    // Written from another thread: git answers while it reads, and a full pipe both ways
+    // would block.
+    let writer = std::thread::spawn(move || stdin.write_all(request.as_bytes()));
+    let mut stdout =
+        std::io::BufReader::new(child.stdout.take().context("git cat-file: no stdout")?);
+    let result = (|| -> Result<()> {
+        use std::io::BufRead;
+        for (sha, rel) in files {
+            let mut header = String::new();
+            stdout.read_line(&mut header)?;
+            let mut parts = header.split_whitespace();
+            let (got, size) = (
+                parts.next(),
+                parts.nth(1).and_then(|s| s.parse::<u64>().ok()),
+            );
+            let Some(size) = size.filter(|_| got == Some(sha.as_str())) else {
+                bail!("git cat-file answered `{}` for {rel}", header.trim());
+            };
+            let mut body = Vec::with_capacity(size.min(1 << 24) as usize);
+            (&mut stdout).take(size).read_to_end(&mut body)?;
+            let mut newline = [0u8; 1];
+            stdout.read_exact(&mut newline)?;
+            let path = dest.join(rel);
+            if let Some(parent) = path.parent() {
+                std::fs::create_dir_all(parent)?;
+            }
+            std::fs::write(&path, &body)?;
+        }
+        Ok(())
+    })();
+    let _ = writer.join();
+    let _ = child.wait();
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn specs() {
+        assert_eq!(
+            Spec::parse("origin/main:components"),
+            Spec::Git {
+                rev: "origin/main".into(),
+                path: "components".into()
+            }
+        );
+        assert_eq!(
+            Spec::parse("HEAD:"),
+            Spec::Git {
+                rev: "HEAD".into(),
+                path: "".into()
+            }
+        );
+        assert_eq!(
+            Spec::parse("no/such/dir"),
+            Spec::Local("no/such/dir".into())
+        );
+        assert_eq!(Spec::parse("src"), Spec::Local("src".into()));
+    }
+
+    #[test]
+    fn only_profile_like_safe_paths_are_copied() {
+        assert!(wanted("a/RTC.xml"));
+        assert!(wanted("a/b.YAML"));
+        assert!(wanted("a/RTC.xml20230831164412"));
+        assert!(!wanted("a/main.cpp"));
+        assert!(!wanted("../x.xml"));
+    }
+}
