@@ -753,6 +753,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
             max_file_size: args.input_args.max_file_size,
             max_depth: args.input_args.max_depth,
             allow_empty: args.input_args.allow_empty,
+            idl_path: args.input_args.idl_path.clone(),
             ..Default::default()
         },
     )
