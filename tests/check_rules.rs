@@ -56,6 +56,10 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC505", "", 7, 5),
     ("RTC010", "A.xml", 2, 1),
     ("RTC402", "A.xml", 9, 3),
+    ("RTC403", "A.xml", 9, 3),
+    ("RTC404", "A.xml", 9, 3),
+    ("RTC405", "A.xml", 9, 3),
+    ("RTC406", "vendor/Lab.idl", 3, 3),
 ];
 
 #[test]

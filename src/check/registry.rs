@@ -65,6 +65,10 @@ pub const PLACEHOLDER: &str = "RTC306";
 // Catalogue level.
 pub const UNPROVIDED_INTERFACE: &str = "RTC401";
 pub const IDL_CONFLICT: &str = "RTC402";
+pub const TYPE_NOT_IN_IDL: &str = "RTC403";
+pub const IDL_FILE_NOT_FOUND: &str = "RTC404";
+pub const IDL_FILE_MISMATCH: &str = "RTC405";
+pub const IDL_DEFINITIONS_DIFFER: &str = "RTC406";
 // Document coverage.
 pub const DOC_COMPONENT: &str = "RTC501";
 pub const DOC_PORT: &str = "RTC502";
@@ -507,6 +511,42 @@ pub static RULES: &[Rule] = &[
         explanation: "Data ports of the same type should come from the same IDL definition; two different IDL file names for one type usually mean two incompatible definitions under one name. File names are compared, not full paths (IDL paths are often absolute Windows paths).",
         spec: "2.3.9 (dataPort type, idlFile)",
         hint: "use one IDL file for the type, or rename one of the types",
+    },
+    Rule {
+        code: TYPE_NOT_IN_IDL,
+        severity: Warning,
+        name: "type-not-in-idl",
+        summary: "a port type is defined in no IDL file read",
+        explanation: "The page of a data type or interface shows its fields or operations only when an IDL file defines it. Reported once per type, at the first port that uses it, when IDL files were read: a warning when the IDL read declares the type's module (the type is missing from its own files, or its name is misspelt), an info when it does not (the type's IDL — often OpenRTM's own — was not given). A catalogue without any IDL gets no such finding: its type pages list producers and consumers only, as the pages say.",
+        spec: "2.3.9 (dataPort type, idlFile), 2.3.11 (serviceInterface type, idlFile)",
+        hint: "put the IDL file that defines the type below the input, or pass `--idl-path DIR` (e.g. an OpenRTM installation's `rtm/idl`)",
+    },
+    Rule {
+        code: IDL_FILE_NOT_FOUND,
+        severity: Warning,
+        name: "idl-file-not-found",
+        summary: "a port's idlFile names no IDL file that was read",
+        explanation: "`idlFile` is usually an absolute path on the author's machine, so it is matched by file name among the IDL files read (below the input and on the IDL path). When IDL files were read but none has that name, the port's type cannot be checked against its declared file. Not reported when no IDL was read at all.",
+        spec: "2.3.9 (dataPort idlFile), 2.3.11 (serviceInterface idlFile)",
+        hint: "add the IDL file below the input or pass `--idl-path DIR`, or correct the `idlFile` name",
+    },
+    Rule {
+        code: IDL_FILE_MISMATCH,
+        severity: Warning,
+        name: "idl-file-mismatch",
+        summary: "a port type is defined in another IDL file than its idlFile says",
+        explanation: "The type was found, but only in files with another name than the port's `idlFile`: code generated from the profile includes the named file and will not find the type there.",
+        spec: "2.3.9 (dataPort idlFile), 2.3.11 (serviceInterface idlFile)",
+        hint: "set `idlFile` to the file that defines the type",
+    },
+    Rule {
+        code: IDL_DEFINITIONS_DIFFER,
+        severity: Warning,
+        name: "idl-definitions-differ",
+        summary: "one type name has different definitions in two IDL files",
+        explanation: "Repositories often carry their own copies of OpenRTM's IDL files. Equal copies are one type; copies whose definitions of a type differ (a field added, retyped or reordered) describe incompatible data under one name, since CDR is positional. Reported at the second definition, naming the first.",
+        spec: "OMG IDL 3.5 §7.19 (names and scoping)",
+        hint: "keep one definition (delete or update the stale copy), or rename one of the types",
     },
     Rule {
         code: DOC_COMPONENT,

@@ -1003,9 +1003,163 @@ fn idl_file_name(path: &str) -> String {
         .to_ascii_lowercase()
 }
 
-/// RTC401, RTC402: rules over the whole catalogue.
+/// RTC403–RTC406: port types against the IDL read.
+fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
+    let have_idl = !cat.idl.is_empty();
+    let idl_names: std::collections::HashSet<String> = cat
+        .idl
+        .files
+        .iter()
+        .map(|f| idl_file_name(&f.path))
+        .collect();
+    // (type name, idlFile, source file, position, port name) of every port, in catalogue order.
+    let mut uses: Vec<(String, Option<String>, &str, Pos, String)> = Vec::new();
+    for t in &cat.data_types {
+        for pr in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+            if let Some((c, p)) = cat
+                .components
+                .get(pr.component)
+                .and_then(|c| c.profile.data_ports.get(pr.port).map(|p| (c, p)))
+            {
+                uses.push((
+                    t.name.clone(),
+                    non_empty(&p.idl_file).map(str::to_string),
+                    &c.source,
+                    p.pos,
+                    p.name.as_deref().unwrap_or("").to_string(),
+                ));
+            }
+        }
+    }
+    for t in &cat.interfaces {
+        for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
+            if let Some((c, i)) = cat.components.get(r.component).and_then(|c| {
+                c.profile
+                    .service_ports
+                    .get(r.port)
+                    .and_then(|p| p.interfaces.get(r.interface))
+                    .map(|i| (c, i))
+            }) {
+                uses.push((
+                    t.name.clone(),
+                    non_empty(&i.idl_file).map(str::to_string),
+                    &c.source,
+                    i.pos,
+                    i.name.as_deref().unwrap_or("").to_string(),
+                ));
+            }
+        }
+    }
+    let mut reported: std::collections::HashSet<&str> = Default::default();
+    for (name, idl_file, file, pos, port) in &uses {
+        let mut s = Sink {
+            file,
+            out: Vec::new(),
+        };
+        let found = cat.idl.find_all(name);
+        if found.is_empty() {
+            if have_idl && reported.insert(name.as_str()) {
+                s.emit(
+                    r::TYPE_NOT_IN_IDL,
+                    *pos,
+                    format!("type `{name}` of `{port}` is defined in no IDL file read"),
+                );
+                // A warning when the IDL read declares the type's module (the type is missing
+                // from its own files); an info when its module is elsewhere (its IDL, often
+                // OpenRTM's own, was not given).
+                let module = name.rsplit_once("::").map(|(m, _)| m);
+                if module.is_none_or(|m| cat.idl.find(m).is_none()) {
+                    for d in &mut s.out {
+                        d.severity = Severity::Info;
+                    }
+                }
+            }
+        } else if let Some(f) = idl_file.as_deref() {
+            let wanted = idl_file_name(f);
+            if !idl_names.contains(&wanted) {
+                s.emit(
+                    r::IDL_FILE_NOT_FOUND,
+                    *pos,
+                    format!(
+                        "idlFile `{}` of `{port}` names no IDL file that was read",
+                        f.trim()
+                    ),
+                );
+            } else if !found.iter().any(|i| idl_file_name(&i.file.path) == wanted) {
+                s.emit(
+                    r::IDL_FILE_MISMATCH,
+                    *pos,
+                    format!(
+                        "type `{name}` of `{port}` is defined in `{}`, not in its idlFile `{}`",
+                        found[0].file.path,
+                        f.trim()
+                    ),
+                );
+            }
+        }
+        out.extend(s.out);
+    }
+    // Different definitions of one type (vendored copies that drifted apart).
+    let strip = |d: &crate::idl::IdlDefinition| -> serde_json::Value {
+        fn clean(v: &mut serde_json::Value) {
+            match v {
+                serde_json::Value::Object(m) => {
+                    m.remove("pos");
+                    m.remove("file");
+                    m.remove("doc");
+                    m.values_mut().for_each(clean);
+                }
+                serde_json::Value::Array(a) => a.iter_mut().for_each(clean),
+                _ => {}
+            }
+        }
+        let mut v = serde_json::to_value(d).unwrap_or_default();
+        clean(&mut v);
+        v
+    };
+    let names = cat
+        .data_types
+        .iter()
+        .map(|t| &t.name)
+        .chain(cat.interfaces.iter().map(|t| &t.name));
+    for name in names {
+        let all: Vec<_> = cat
+            .idl
+            .find_all(name)
+            .into_iter()
+            .filter(|i| !matches!(i.definition, crate::idl::IdlDefinition::Forward(_)))
+            .collect();
+        let Some(first) = all.first() else {
+            continue;
+        };
+        let reference = strip(first.definition);
+        if let Some(other) = all
+            .iter()
+            .skip(1)
+            .find(|i| strip(i.definition) != reference)
+        {
+            let mut s = Sink {
+                file: &other.file.path,
+                out: Vec::new(),
+            };
+            s.emit(
+                r::IDL_DEFINITIONS_DIFFER,
+                other.definition.pos(),
+                format!(
+                    "`{name}` is defined differently here and in `{}:{}`",
+                    first.file.path,
+                    first.definition.pos().line
+                ),
+            );
+            out.extend(s.out);
+        }
+    }
+}
+
+/// RTC401–RTC406: rules over the whole catalogue.
 pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     let mut out = Vec::new();
+    idl_rules(cat, &mut out);
     for t in cat.interfaces.iter().filter(|t| t.is_unprovided()) {
         for req in &t.requirers {
             let Some(c) = cat.components.get(req.component) else {
