@@ -292,6 +292,20 @@ pub fn facet_of<'a>(facets: &'a [Facet], value: &str) -> Option<&'a Facet> {
     facets.iter().find(|f| facet_key(&f.name) == key)
 }
 
+/// The file names of `idlFile` values, sorted and without repeats: `idlFile` is usually an
+/// absolute path on the author's machine (`C:\Program Files\OpenRTM-aist\1.2.2\rtm\idl\…`),
+/// which type pages do not lead with (the component pages and the JSON keep it as written).
+pub fn idl_file_names(files: &[String]) -> Vec<String> {
+    let mut names: Vec<String> = files
+        .iter()
+        .map(|f| f.rsplit(['/', '\\']).next().unwrap_or(f).trim().to_string())
+        .filter(|n| !n.is_empty())
+        .collect();
+    names.sort();
+    names.dedup();
+    names
+}
+
 /// The whole catalogue.
 #[derive(Debug, Clone, Serialize)]
 #[serde(rename_all = "camelCase")]

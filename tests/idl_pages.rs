@@ -261,3 +261,36 @@ fn markdown_and_doxygen_show_the_idl_too() {
         "{i}"
     );
 }
+
+/// Type pages name the `idlFile`s by file name, not by the authors' absolute paths.
+#[test]
+fn type_pages_do_not_lead_with_absolute_idl_paths() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p = xml_profile("A", &[("DataOutPort", "out", "RTC::TimedLong")]).replace(
+        "rtcExt:position=\"LEFT\"/>",
+        "rtcExt:position=\"LEFT\" rtc:idlFile=\"C:\\Program Files\\OpenRTM-aist\\1.2.2\\rtm\\idl\\BasicDataType.idl\"/>",
+    );
+    write(d, "in/a/RTC.xml", &p);
+    write(
+        d,
+        "in/b/RTC.xml",
+        &p.replace("RTC:Test:Cat:A:", "RTC:Test:Cat:B:")
+            .replace("rtc:name=\"A\"", "rtc:name=\"B\"")
+            .replace(
+                "C:\\Program Files\\OpenRTM-aist\\1.2.2\\rtm\\idl\\",
+                "/usr/include/openrtm-1.2/rtm/idl/",
+            ),
+    );
+    let b = rtcdoc(&["build", "in", "-o", "site"], d);
+    assert!(b.status.success(), "{}", stderr(&b));
+    let t = read(&d.join("site/types/rtc-timedlong.html"));
+    assert!(t.contains("<code>BasicDataType.idl</code></dd>"), "{t}");
+    assert!(
+        !t.contains("Program Files") && !t.contains("/usr/include"),
+        "{t}"
+    );
+    // The component page keeps the value as written.
+    let c = read(&d.join("site/components/a.html"));
+    assert!(c.contains("Program Files"), "{c}");
+}

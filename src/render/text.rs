@@ -109,6 +109,7 @@ pub fn names_facts<M: Markup>(out: &mut String, lang: Lang, spellings: &[String]
     if !spellings.is_empty() {
         f.push(Fact::new(lang.t("fact_spellings"), spellings.join(", ")));
     }
+    let idl = crate::catalog::idl_file_names(idl);
     if !idl.is_empty() {
         f.push(Fact::new(lang.t("fact_idl_files"), idl.join("\n")));
     }

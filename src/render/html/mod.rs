@@ -1182,7 +1182,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                         name => t.name.clone(),
                         crumbs => ctx(&crumbs),
                         spellings => ctx(&t.spellings),
-                        idl_files => ctx(&t.idl_files),
+                        idl_files => ctx(&crate::catalog::idl_file_names(&t.idl_files)),
                         def => ctx(&crate::render::idl_view::definition(catalog, &t.name)),
                         contained_in => ctx(&t.contained_in.iter().map(|n| Link {
                             href: catalog
@@ -1247,7 +1247,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                         name => t.name.clone(),
                         crumbs => ctx(&crumbs),
                         spellings => ctx(&t.spellings),
-                        idl_files => ctx(&t.idl_files),
+                        idl_files => ctx(&crate::catalog::idl_file_names(&t.idl_files)),
                         def => ctx(&crate::render::idl_view::definition(catalog, &t.name)),
                         unprovided => t.is_unprovided(),
                         providers => ctx(&uses(&t.providers)),
