@@ -317,6 +317,15 @@ fn overrides(
     }
 }
 
+/// The load options of `check` and `diff`: the configuration file, then the input flags (no
+/// output directory to skip).
+fn load_options(file: &config::Loaded, i: &InputArgs) -> build::LoadOptions {
+    let mut opts =
+        config::build_options(file, &overrides(&None, &SiteArgs::default(), i, None)).load;
+    opts.skip_dirs.clear();
+    opts
+}
+
 fn build_overrides(args: &BuildArgs) -> Overrides {
     overrides(&args.input, &args.site, &args.input_args, Some(args))
 }
@@ -624,20 +633,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         paths.first().map(PathBuf::as_path),
         args.input_args.config.as_deref(),
     )?;
-    let mut opts = config::build_options(
-        &file,
-        &Overrides {
-            include: args.input_args.include.clone(),
-            exclude: args.input_args.exclude.clone(),
-            max_file_size: args.input_args.max_file_size,
-            max_depth: args.input_args.max_depth,
-            allow_empty: args.input_args.allow_empty,
-            idl_path: args.input_args.idl_path.clone(),
-            ..Default::default()
-        },
-    )
-    .load;
-    opts.skip_dirs.clear();
+    let opts = load_options(&file, &args.input_args);
     let mut reports = Vec::new();
     for p in &paths {
         let loaded = build::load(p, &opts)?;
@@ -745,20 +741,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         side::Spec::Git { .. } => None,
     };
     let file = load_config(config_dir, args.input_args.config.as_deref())?;
-    let mut opts = config::build_options(
-        &file,
-        &Overrides {
-            include: args.input_args.include.clone(),
-            exclude: args.input_args.exclude.clone(),
-            max_file_size: args.input_args.max_file_size,
-            max_depth: args.input_args.max_depth,
-            allow_empty: args.input_args.allow_empty,
-            idl_path: args.input_args.idl_path.clone(),
-            ..Default::default()
-        },
-    )
-    .load;
-    opts.skip_dirs.clear();
+    let opts = load_options(&file, &args.input_args);
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;
     let result = diff::diff_named(
