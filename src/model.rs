@@ -134,7 +134,8 @@ pub struct WrittenAs {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct AttrPos(Vec<(u8, Pos)>);
 
-/// Every field name [`field_name`] gives, in a fixed order (indices of [`AttrPos`]).
+/// The spec field names of the attributes and keys whose positions are kept, in a fixed order
+/// (the indices of [`AttrPos`]); [`field_name`] maps older spellings onto them.
 const FIELDS: &[&str] = &[
     "id",
     "version",
@@ -201,41 +202,15 @@ impl AttrPos {
 /// positions (profile, basic info, ports, interfaces, configurations), with the older
 /// spellings mapped to the field they mean.
 pub fn field_name(local: &str) -> Option<&'static str> {
-    Some(match local {
-        "id" => "id",
-        "version" => "version",
-        "name" => "name",
-        "componentType" => "componentType",
-        "activityType" => "activityType",
-        "componentKind" => "componentKind",
-        "rtcType" => "rtcType",
-        "category" => "category",
-        "description" => "description",
-        "executionRate" => "executionRate",
-        "executionType" => "executionType",
-        "maxInstances" => "maxInstances",
-        "vendor" => "vendor",
-        "abstract" => "abstract",
-        "hardwareProfile" => "hardwareProfile",
-        "creationDate" => "creationDate",
-        "updateDate" => "updateDate",
-        "comment" | "rtcExt::comment" => "comment",
-        "saveProject" | "rtcExt::saveProject" => "saveProject",
-        "portType" => "portType",
-        "type" => "type",
-        "idlFile" => "idlFile",
-        "interfaceType" => "interfaceType",
-        "dataflowType" => "dataflowType",
-        "subscriptionType" | "subscriprionType" => "subscriptionType",
-        "unit" => "unit",
-        "variableName" | "varname" | "rtcExt::variableName" | "rtcExt::varname" => "variableName",
-        "position" | "rtcExt::position" => "position",
-        "direction" => "direction",
-        "instanceName" => "instanceName",
-        "path" => "path",
-        "defaultValue" => "defaultValue",
-        _ => return None,
-    })
+    let canonical = match local {
+        "rtcExt::comment" => "comment",
+        "rtcExt::saveProject" => "saveProject",
+        "subscriprionType" => "subscriptionType",
+        "varname" | "rtcExt::variableName" | "rtcExt::varname" => "variableName",
+        "rtcExt::position" => "position",
+        other => other,
+    };
+    FIELDS.iter().copied().find(|f| *f == canonical)
 }
 
 #[cfg(test)]
