@@ -844,16 +844,22 @@ impl Catalog {
 
     /// The data type entry for any spelling of a type name.
     pub fn data_type(&self, name: &str) -> Option<&DataType> {
-        self.type_index
-            .get(&canonical_type(name))
-            .map(|&i| &self.data_types[i])
+        self.data_type_index(name).map(|i| &self.data_types[i])
+    }
+
+    /// The position in `data_types` of any spelling of a type name.
+    pub fn data_type_index(&self, name: &str) -> Option<usize> {
+        self.type_index.get(&canonical_type(name)).copied()
     }
 
     /// The interface entry for any spelling of an interface type name.
     pub fn interface(&self, name: &str) -> Option<&InterfaceType> {
-        self.interface_index
-            .get(&canonical_type(name))
-            .map(|&i| &self.interfaces[i])
+        self.interface_index_of(name).map(|i| &self.interfaces[i])
+    }
+
+    /// The position in `interfaces` of any spelling of an interface type name.
+    pub fn interface_index_of(&self, name: &str) -> Option<usize> {
+        self.interface_index.get(&canonical_type(name)).copied()
     }
 
     /// Ports of other components that can connect to data port `port` of `component`:

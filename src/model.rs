@@ -219,43 +219,17 @@ mod attr_pos_tests {
 
     #[test]
     fn every_field_name_has_an_index() {
-        for local in [
-            "id",
-            "version",
-            "name",
-            "componentType",
-            "activityType",
-            "componentKind",
-            "rtcType",
-            "category",
-            "description",
-            "executionRate",
-            "executionType",
-            "maxInstances",
-            "vendor",
-            "abstract",
-            "hardwareProfile",
-            "creationDate",
-            "updateDate",
-            "comment",
+        // Every field under its own name, and the older spellings the readers meet.
+        let aliases = [
             "rtcExt::comment",
-            "saveProject",
-            "portType",
-            "type",
-            "idlFile",
-            "interfaceType",
-            "dataflowType",
-            "subscriptionType",
+            "rtcExt::saveProject",
             "subscriprionType",
-            "unit",
             "varname",
-            "variableName",
-            "position",
-            "direction",
-            "instanceName",
-            "path",
-            "defaultValue",
-        ] {
+            "rtcExt::variableName",
+            "rtcExt::varname",
+            "rtcExt::position",
+        ];
+        for local in FIELDS.iter().copied().chain(aliases) {
             let f = field_name(local).expect(local);
             let mut a = AttrPos::default();
             let p = Pos { line: 3, column: 7 };

@@ -97,11 +97,7 @@ pub fn describe_non_profile(bytes: &[u8]) -> String {
             parse::xml::Root::NotXml => "is not well-formed XML before its root element".into(),
         };
     }
-    let top_key = |k: &[u8]| {
-        head.split(|&b| b == b'\n')
-            .any(|l| l.strip_prefix(k).is_some_and(|r| r.first() == Some(&b':')))
-    };
-    if top_key(b"rtsProfile") {
+    if parse::yaml::has_root_key(bytes, "rtsProfile") {
         return "is an RT System profile (YAML rtsProfile), not a component profile".into();
     }
     "is neither XML nor YAML with a top-level `rtcProfile` key".into()

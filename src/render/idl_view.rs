@@ -124,19 +124,17 @@ struct Linker<'a> {
 impl Linker<'_> {
     fn entry_of(&self, scoped: &str) -> Option<(Entry, String)> {
         let c = self.catalog;
-        if let Some(i) = c.data_types.iter().position(|t| t.name == scoped) {
+        if let Some(i) = c.data_type_index(scoped) {
             return Some((
                 Entry::DataType(i),
                 format!("types/{}.html", c.data_types[i].slug),
             ));
         }
-        if let Some(t) = c.data_type(scoped) {
-            let i = c.data_types.iter().position(|x| x.name == t.name)?;
-            return Some((Entry::DataType(i), format!("types/{}.html", t.slug)));
-        }
-        let t = c.interface(scoped)?;
-        let i = c.interfaces.iter().position(|x| x.name == t.name)?;
-        Some((Entry::Interface(i), format!("interfaces/{}.html", t.slug)))
+        let i = c.interface_index_of(scoped)?;
+        Some((
+            Entry::Interface(i),
+            format!("interfaces/{}.html", c.interfaces[i].slug),
+        ))
     }
 
     fn type_ref(&self, ty: &IdlType) -> TypeRef {
