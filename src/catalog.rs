@@ -10,13 +10,20 @@ use crate::model::{Direction, PortDirection, Profile};
 use crate::parse::SourceFormat;
 use crate::types::canonical_type;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, HashMap};
 
 /// One loaded profile and where it came from.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Component {
+    /// The stable id of the entry: the component id in its documented form
+    /// (`RTC:vendor:category:name:version`, also for a profile that wrote the dotted form),
+    /// else BasicInfo's parts in that form; `@source` is appended when several profiles of the
+    /// catalogue share it. Other entries refer to a component by this id; in `catalog.json` it
+    /// is the component's key.
+    #[serde(skip)]
+    pub id: ComponentId,
     /// Path of the profile relative to the input directory, forward slashes.
     pub source: String,
     pub format: SourceFormat,
@@ -26,7 +33,7 @@ pub struct Component {
     pub anchors: Anchors,
     /// What tells this component apart from others of the same name (the C++ and Python
     /// variants of one component, a copy in another folder): its language, else its folder.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub qualifier: Option<String>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
@@ -185,7 +192,7 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
 }
 
 /// Stable fragment ids for the rows of a component page, unique within the page.
-#[derive(Debug, Clone, Default, Serialize)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Anchors {
     /// One per data port, in profile order.
@@ -198,29 +205,63 @@ pub struct Anchors {
     pub configurations: Vec<String>,
 }
 
-/// A reference to a data port of a component.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+/// The id of a component entry ([`Component::id`]); shared by every reference to it.
+pub type ComponentId = std::sync::Arc<str>;
+
+/// The key of a port, service port or interface within its component: its name, and for a
+/// second (third, …) member of the same name `name#2` (`#3`, …): a profile may repeat a name
+/// (RTC302 and its siblings warn about it), and each member keeps an id of its own.
+pub fn member_key<'a>(names: impl Iterator<Item = &'a str>, at: usize) -> Text {
+    let upto: Vec<&str> = names.take(at + 1).collect();
+    let Some((mine, before)) = upto.split_last() else {
+        return Text::default();
+    };
+    match before.iter().filter(|n| *n == mine).count() {
+        0 => Text::from(*mine),
+        n => Text::from(format!("{mine}#{}", n + 1)),
+    }
+}
+
+/// The position of the member with key `key` (see [`member_key`]) among `names`.
+pub fn member_at<'a>(names: impl Iterator<Item = &'a str> + Clone, key: &str) -> Option<usize> {
+    if let Some(i) = names.clone().position(|n| n == key) {
+        return Some(i);
+    }
+    let (name, nth) = key.rsplit_once('#')?;
+    let nth: usize = nth.parse().ok().filter(|&n| n >= 2)?;
+    names
+        .enumerate()
+        .filter(|(_, n)| *n == name)
+        .nth(nth - 1)
+        .map(|(i, _)| i)
+}
+
+use crate::model::Text;
+
+/// A reference to a data port of a component: the component's id and the port's key.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct PortRef {
-    /// Index into [`Catalog::components`].
-    pub component: usize,
-    /// Index into the component's `data_ports`.
-    pub port: usize,
+    /// [`Component::id`].
+    pub component: ComponentId,
+    /// The data port's name ([`member_key`]).
+    pub port: Text,
 }
 
 /// A reference to a service interface of a component.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct InterfaceRef {
-    pub component: usize,
-    /// Index into the component's `service_ports`.
-    pub port: usize,
-    /// Index into that port's `interfaces`.
-    pub interface: usize,
+    /// [`Component::id`].
+    pub component: ComponentId,
+    /// The service port's name ([`member_key`]).
+    pub port: Text,
+    /// The interface's name within that port ([`member_key`]).
+    pub interface: Text,
 }
 
 /// A data type used by some data port in the catalogue.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct DataType {
     /// Canonical name (`RTC::TimedLong`).
@@ -238,12 +279,12 @@ pub struct DataType {
     pub others: Vec<PortRef>,
     /// Types whose fields (or typedef) hold this one, by canonical name, sorted: filled from
     /// the IDL ([`Catalog::attach_idl`]).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub contained_in: Vec<String>,
 }
 
 /// A service interface type used by some service port in the catalogue.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct InterfaceType {
     pub name: String,
@@ -267,14 +308,15 @@ impl InterfaceType {
 /// A category or vendor and its components. Spellings that differ only in case or spacing
 /// ("Hardware Interface" / "Hardware interface") are one facet, named by the most frequent
 /// spelling.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Facet {
     pub name: String,
     pub slug: String,
-    pub components: Vec<usize>,
+    /// The components, by [`Component::id`], in catalogue order.
+    pub components: Vec<ComponentId>,
     /// The other spellings met, sorted (empty when all components agree).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub variants: Vec<String>,
 }
 
@@ -320,10 +362,152 @@ pub struct Catalog {
     /// and service interfaces. Left out of `catalog.json` when there are none.
     #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
     pub idl: crate::idl::IdlSet,
+    /// Every page of the catalogue, computed once ([`Catalog::pages`]).
+    #[serde(skip)]
+    pages: Vec<Page>,
+    #[serde(skip)]
+    page_starts: PageStarts,
+    #[serde(skip)]
+    by_id: HashMap<ComponentId, usize>,
     #[serde(skip)]
     type_index: HashMap<String, usize>,
     #[serde(skip)]
     interface_index: HashMap<String, usize>,
+}
+
+/// What a page documents.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub enum PageKind {
+    /// The front page: every component by category.
+    Index,
+    Search,
+    Diagnostics,
+    /// The page a server shows for a missing path.
+    NotFound,
+    Component,
+    DataTypes,
+    DataType,
+    Interfaces,
+    Interface,
+    Categories,
+    Category,
+    Vendors,
+    Vendor,
+}
+
+/// One page of the documentation: the same list for every output (HTML, Markdown, Doxygen),
+/// which takes the paths from it with its own extension ([`Page::path`]).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Page {
+    pub kind: PageKind,
+    /// The id of the entry the page documents: [`Component::id`], a type's or interface's
+    /// scoped name, a facet's name; empty for the pages of the site itself.
+    pub id: String,
+    /// The path below the output root, without extension, with forward slashes
+    /// (`components/camera`, `types/rtc-timedlong`, `index`).
+    pub stem: String,
+    /// The name of what the page documents (a component's display name, a type's name).
+    pub title: String,
+}
+
+/// The output formats that write pages, each with its own file names for the index pages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    Html,
+    /// An mdBook `src/`.
+    Markdown,
+    /// Doxygen `.dox` input.
+    Doxygen,
+}
+
+impl Page {
+    /// The page's path below the output root in HTML (`components/camera.html`).
+    pub fn path(&self, ext: &str) -> String {
+        format!("{}.{ext}", self.stem)
+    }
+
+    /// The page's path in output `out`. The entry pages have the same stem everywhere; the
+    /// index pages follow each tool's layout: mdBook's `index.md`, `types.md`, `interfaces.md`
+    /// beside `SUMMARY.md`, Doxygen's `mainpage.dox`, `types.dox`, `interfaces.dox`.
+    pub fn path_in(&self, out: Output) -> String {
+        match (out, self.kind) {
+            (Output::Html, _) => self.path("html"),
+            (Output::Markdown, PageKind::DataTypes) => "types.md".into(),
+            (Output::Markdown, PageKind::Interfaces) => "interfaces.md".into(),
+            (Output::Markdown, _) => self.path("md"),
+            (Output::Doxygen, PageKind::Index) => "mainpage.dox".into(),
+            (Output::Doxygen, PageKind::DataTypes) => "types.dox".into(),
+            (Output::Doxygen, PageKind::Interfaces) => "interfaces.dox".into(),
+            (Output::Doxygen, _) => self.path("dox"),
+        }
+    }
+
+    /// The file name alone (`camera.html`), for links between pages of one folder.
+    pub fn file_name(&self, ext: &str) -> String {
+        let name = self.stem.rsplit('/').next().unwrap_or(&self.stem);
+        format!("{name}.{ext}")
+    }
+}
+
+/// Where each kind of entry page starts in [`Catalog::pages`]: entries are listed in the
+/// order of their vectors, so the page of entry `i` is `pages[start + i]`.
+#[derive(Debug, Clone, Copy, Default)]
+struct PageStarts {
+    component: usize,
+    data_type: usize,
+    interface: usize,
+    category: usize,
+    vendor: usize,
+}
+
+/// The name of a member (port, interface) as its key starts: empty when it has none.
+fn name_of(n: &Option<Text>) -> &str {
+    n.as_deref().unwrap_or_default()
+}
+
+/// Ids of the components of `loaded` ([`Component::id`]).
+fn component_ids(loaded: &[LoadedProfile]) -> Vec<ComponentId> {
+    let keys: Vec<String> = loaded
+        .iter()
+        .map(|l| {
+            let p = &l.profile;
+            let written = p.id.as_deref().map(str::trim).filter(|s| !s.is_empty());
+            match written.and_then(|id| crate::model::IdParts::parse(id, &p.basic_info)) {
+                Some(x) => format!("RTC:{}:{}:{}:{}", x.vendor, x.category, x.name, x.version),
+                None => match written {
+                    Some(id) => id.to_string(),
+                    None => {
+                        let b = &p.basic_info;
+                        let part =
+                            |v: &Option<Text>| v.as_deref().unwrap_or_default().trim().to_string();
+                        format!(
+                            "RTC:{}:{}:{}:{}",
+                            part(&b.vendor),
+                            part(&b.category),
+                            part(&b.name),
+                            part(&b.version)
+                        )
+                    }
+                },
+            }
+        })
+        .collect();
+    let mut count: HashMap<&str, usize> = HashMap::new();
+    for k in &keys {
+        *count.entry(k.as_str()).or_default() += 1;
+    }
+    keys.iter()
+        .zip(loaded)
+        .map(|(k, l)| {
+            if count[k.as_str()] > 1 {
+                ComponentId::from(format!("{k}@{}", l.source))
+            } else {
+                ComponentId::from(k.as_str())
+            }
+        })
+        .collect()
 }
 
 /// A profile read from one file, ready for the catalogue.
@@ -470,11 +654,14 @@ impl Catalog {
         // Component slugs from names, disambiguated by language or folder.
         let slugs = component_slugs(&loaded);
         let all_anchors: Vec<Anchors> = loaded.par_iter().map(|l| anchors(&l.profile)).collect();
+        let ids = component_ids(&loaded);
         let components: Vec<Component> = loaded
             .into_iter()
             .zip(slugs)
             .zip(all_anchors)
-            .map(|((l, (slug, qualifier)), anchors)| Component {
+            .zip(ids)
+            .map(|(((l, (slug, qualifier)), anchors), id)| Component {
+                id,
                 anchors,
                 qualifier,
                 source: l.source,
@@ -588,15 +775,28 @@ impl Catalog {
         }
         let port = |v: Vec<(usize, usize, usize)>| {
             v.into_iter()
-                .map(|(component, port, _)| PortRef { component, port })
+                .map(|(ci, pi, _)| {
+                    let c = &components[ci];
+                    PortRef {
+                        component: c.id.clone(),
+                        port: member_key(c.profile.data_ports.iter().map(|p| name_of(&p.name)), pi),
+                    }
+                })
                 .collect()
         };
         let iref = |v: Vec<(usize, usize, usize)>| {
             v.into_iter()
-                .map(|(component, port, interface)| InterfaceRef {
-                    component,
-                    port,
-                    interface,
+                .map(|(ci, pi, ii)| {
+                    let c = &components[ci];
+                    let sp = &c.profile.service_ports[pi];
+                    InterfaceRef {
+                        component: c.id.clone(),
+                        port: member_key(
+                            c.profile.service_ports.iter().map(|p| name_of(&p.name)),
+                            pi,
+                        ),
+                        interface: member_key(sp.interfaces.iter().map(|i| name_of(&i.name)), ii),
+                    }
                 })
                 .collect()
         };
@@ -657,7 +857,7 @@ impl Catalog {
             }
             // Named by the most frequent spelling (the first in sort order on a tie); listed
             // in the order of those names, as before merging.
-            let mut m: BTreeMap<String, (Vec<usize>, Vec<String>)> = BTreeMap::new();
+            let mut m: BTreeMap<String, (Vec<ComponentId>, Vec<String>)> = BTreeMap::new();
             for spellings in groups.into_values() {
                 let name = spellings
                     .iter()
@@ -667,6 +867,10 @@ impl Catalog {
                 let variants = spellings.keys().filter(|s| **s != name).cloned().collect();
                 let mut members: Vec<usize> = spellings.into_values().flatten().collect();
                 members.sort_unstable();
+                let members: Vec<ComponentId> = members
+                    .into_iter()
+                    .map(|i| components[i].id.clone())
+                    .collect();
                 m.insert(name, (members, variants));
             }
             let names: Vec<(String, String)> = m.keys().map(|k| (k.clone(), k.clone())).collect();
@@ -694,7 +898,12 @@ impl Catalog {
             .enumerate()
             .map(|(i, t)| (t.name.clone(), i))
             .collect();
-        Catalog {
+        let by_id = components
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c.id.clone(), i))
+            .collect();
+        let mut catalog = Catalog {
             components,
             data_types,
             interfaces,
@@ -702,9 +911,269 @@ impl Catalog {
             vendors,
             diagnostics,
             idl: Default::default(),
+            pages: Vec::new(),
+            page_starts: PageStarts::default(),
+            by_id,
             type_index,
             interface_index,
+        };
+        catalog.index_pages();
+        catalog
+    }
+
+    /// A catalogue from its entries as `catalog.json` holds them: the lookups and the pages
+    /// are built again. Every reference must name an entry of the catalogue.
+    #[allow(clippy::too_many_arguments)]
+    pub fn from_parts(
+        components: Vec<Component>,
+        data_types: Vec<DataType>,
+        interfaces: Vec<InterfaceType>,
+        categories: Vec<Facet>,
+        vendors: Vec<Facet>,
+        diagnostics: Vec<Diagnostic>,
+        idl: crate::idl::IdlSet,
+    ) -> Result<Catalog, String> {
+        let mut by_id = HashMap::with_capacity(components.len());
+        for (i, c) in components.iter().enumerate() {
+            if by_id.insert(c.id.clone(), i).is_some() {
+                return Err(format!("component id `{}` appears twice", c.id));
+            }
         }
+        let index = |names: &mut dyn Iterator<Item = &String>| -> HashMap<String, usize> {
+            names.enumerate().map(|(i, n)| (n.clone(), i)).collect()
+        };
+        let type_index = index(&mut data_types.iter().map(|t| &t.name));
+        let interface_index = index(&mut interfaces.iter().map(|t| &t.name));
+        let mut catalog = Catalog {
+            components,
+            data_types,
+            interfaces,
+            categories,
+            vendors,
+            diagnostics,
+            idl,
+            pages: Vec::new(),
+            page_starts: PageStarts::default(),
+            by_id,
+            type_index,
+            interface_index,
+        };
+        for t in &catalog.data_types {
+            for r in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+                if catalog.resolve_port(r).is_none() {
+                    return Err(format!(
+                        "data type `{}` names port `{}` of `{}`, which the catalogue does not have",
+                        t.name, r.port, r.component
+                    ));
+                }
+            }
+        }
+        for t in &catalog.interfaces {
+            for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
+                if catalog.resolve_interface(r).is_none() {
+                    return Err(format!(
+                        "interface `{}` names `{}.{}` of `{}`, which the catalogue does not have",
+                        t.name, r.port, r.interface, r.component
+                    ));
+                }
+            }
+        }
+        for f in catalog.categories.iter().chain(&catalog.vendors) {
+            if let Some(id) = f
+                .components
+                .iter()
+                .find(|id| catalog.component(id).is_none())
+            {
+                return Err(format!(
+                    "facet `{}` names component `{id}`, which the catalogue does not have",
+                    f.name
+                ));
+            }
+        }
+        catalog.index_pages();
+        Ok(catalog)
+    }
+
+    /// Computes [`Catalog::pages`] from the entries and their slugs.
+    fn index_pages(&mut self) {
+        let page = |kind, id: &str, stem: String, title: &str| Page {
+            kind,
+            id: id.to_string(),
+            stem,
+            title: title.to_string(),
+        };
+        let site = |kind, stem: &str| page(kind, "", stem.to_string(), "");
+        let mut pages = vec![
+            site(PageKind::Index, "index"),
+            site(PageKind::Search, "search"),
+            site(PageKind::Diagnostics, "diagnostics"),
+            site(PageKind::NotFound, "404"),
+        ];
+        let mut starts = PageStarts {
+            component: pages.len(),
+            ..PageStarts::default()
+        };
+        pages.extend(self.components.iter().map(|c| {
+            page(
+                PageKind::Component,
+                &c.id,
+                format!("components/{}", c.slug),
+                &c.display_name(),
+            )
+        }));
+        pages.push(site(PageKind::DataTypes, "types/index"));
+        starts.data_type = pages.len();
+        pages.extend(self.data_types.iter().map(|t| {
+            page(
+                PageKind::DataType,
+                &t.name,
+                format!("types/{}", t.slug),
+                &t.name,
+            )
+        }));
+        pages.push(site(PageKind::Interfaces, "interfaces/index"));
+        starts.interface = pages.len();
+        pages.extend(self.interfaces.iter().map(|t| {
+            page(
+                PageKind::Interface,
+                &t.name,
+                format!("interfaces/{}", t.slug),
+                &t.name,
+            )
+        }));
+        pages.push(site(PageKind::Categories, "categories/index"));
+        starts.category = pages.len();
+        pages.extend(self.categories.iter().map(|f| {
+            page(
+                PageKind::Category,
+                &f.name,
+                format!("categories/{}", f.slug),
+                &f.name,
+            )
+        }));
+        pages.push(site(PageKind::Vendors, "vendors/index"));
+        starts.vendor = pages.len();
+        pages.extend(self.vendors.iter().map(|f| {
+            page(
+                PageKind::Vendor,
+                &f.name,
+                format!("vendors/{}", f.slug),
+                &f.name,
+            )
+        }));
+        self.pages = pages;
+        self.page_starts = starts;
+    }
+
+    /// Every page of the documentation, in a fixed order: the site's own pages (index, search,
+    /// diagnostics, not-found), then each kind's index page followed by its entries' pages.
+    /// Renderers, the sitemap, the search index and `serve` take page paths from here.
+    pub fn pages(&self) -> &[Page] {
+        &self.pages
+    }
+
+    /// The page of the site itself of kind `kind` (index, search, diagnostics, not found, and
+    /// the index pages of each entry kind).
+    pub fn site_page(&self, kind: PageKind) -> &Page {
+        self.pages
+            .iter()
+            .find(|p| p.kind == kind && p.id.is_empty())
+            .unwrap_or(&self.pages[0])
+    }
+
+    /// The page of component `ci`.
+    pub fn component_page(&self, ci: usize) -> &Page {
+        &self.pages[self.page_starts.component + ci]
+    }
+
+    /// The page of data type `ti` ([`Catalog::data_types`]).
+    pub fn data_type_page(&self, ti: usize) -> &Page {
+        &self.pages[self.page_starts.data_type + ti]
+    }
+
+    /// The page of interface `ii` ([`Catalog::interfaces`]).
+    pub fn interface_page(&self, ii: usize) -> &Page {
+        &self.pages[self.page_starts.interface + ii]
+    }
+
+    /// The page of category `fi` ([`Catalog::categories`]).
+    pub fn category_page(&self, fi: usize) -> &Page {
+        &self.pages[self.page_starts.category + fi]
+    }
+
+    /// The page of vendor `fi` ([`Catalog::vendors`]).
+    pub fn vendor_page(&self, fi: usize) -> &Page {
+        &self.pages[self.page_starts.vendor + fi]
+    }
+
+    /// The position of the component with id `id` in [`Catalog::components`].
+    pub fn component_index(&self, id: &str) -> Option<usize> {
+        self.by_id.get(id).copied()
+    }
+
+    /// The component with id `id`.
+    pub fn component(&self, id: &str) -> Option<&Component> {
+        self.component_index(id).map(|i| &self.components[i])
+    }
+
+    /// The positions in [`Catalog::components`] of a facet's components.
+    pub fn members<'a>(&'a self, f: &'a Facet) -> impl Iterator<Item = usize> + 'a {
+        f.components
+            .iter()
+            .filter_map(|id| self.component_index(id))
+    }
+
+    /// The category facet of each component, by position (every component is in one).
+    pub fn category_of_each(&self) -> Vec<usize> {
+        let mut of = vec![0; self.components.len()];
+        for (fi, f) in self.categories.iter().enumerate() {
+            for ci in self.members(f) {
+                of[ci] = fi;
+            }
+        }
+        of
+    }
+
+    /// The component and data port a reference names: (component index, port index).
+    pub fn resolve_port(&self, r: &PortRef) -> Option<(usize, usize)> {
+        let ci = self.component_index(&r.component)?;
+        let ports = &self.components[ci].profile.data_ports;
+        let pi = member_at(ports.iter().map(|p| name_of(&p.name)), &r.port)?;
+        Some((ci, pi))
+    }
+
+    /// The component, service port and interface a reference names, as indices.
+    pub fn resolve_interface(&self, r: &InterfaceRef) -> Option<(usize, usize, usize)> {
+        let ci = self.component_index(&r.component)?;
+        let sps = &self.components[ci].profile.service_ports;
+        let pi = member_at(sps.iter().map(|p| name_of(&p.name)), &r.port)?;
+        let ii = member_at(
+            sps[pi].interfaces.iter().map(|i| name_of(&i.name)),
+            &r.interface,
+        )?;
+        Some((ci, pi, ii))
+    }
+
+    /// The component and data port a reference names.
+    pub fn port_of(&self, r: &PortRef) -> Option<(&Component, &crate::model::DataPort)> {
+        let (ci, pi) = self.resolve_port(r)?;
+        let c = &self.components[ci];
+        Some((c, &c.profile.data_ports[pi]))
+    }
+
+    /// The component, service port and interface a reference names.
+    pub fn interface_of(
+        &self,
+        r: &InterfaceRef,
+    ) -> Option<(
+        &Component,
+        &crate::model::ServicePort,
+        &crate::model::ServiceInterface,
+    )> {
+        let (ci, pi, ii) = self.resolve_interface(r)?;
+        let c = &self.components[ci];
+        let sp = &c.profile.service_ports[pi];
+        Some((c, sp, &sp.interfaces[ii]))
     }
 
     /// Takes in the IDL read for this catalogue. Every struct, union, enum, typedef and
@@ -840,6 +1309,7 @@ impl Catalog {
             .enumerate()
             .map(|(i, t)| (t.name.clone(), i))
             .collect();
+        self.index_pages();
     }
 
     /// The data type entry for any spelling of a type name.

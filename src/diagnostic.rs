@@ -7,7 +7,9 @@ use crate::model::Pos;
 use serde::Serialize;
 
 /// How serious a diagnostic is.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, serde::Deserialize,
+)]
 #[serde(rename_all = "lowercase")]
 pub enum Severity {
     Error,
@@ -41,6 +43,34 @@ pub struct Diagnostic {
     /// What to do about it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub hint: Option<String>,
+}
+
+/// [`Diagnostic`] as `catalog.json` has it.
+#[derive(serde::Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct DiagnosticRead {
+    severity: Severity,
+    code: String,
+    message: String,
+    file: String,
+    #[serde(default)]
+    pos: Option<Pos>,
+    #[serde(default)]
+    hint: Option<String>,
+}
+
+impl<'de> serde::Deserialize<'de> for Diagnostic {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let r = DiagnosticRead::deserialize(d)?;
+        Ok(Diagnostic {
+            severity: r.severity,
+            code: crate::model::intern(r.code),
+            message: r.message,
+            file: r.file,
+            pos: r.pos,
+            hint: r.hint,
+        })
+    }
 }
 
 impl Diagnostic {

@@ -93,26 +93,26 @@ fn link_signature(c: &Component) -> String {
 /// Pages of the types and interfaces component `ci` of `cat` uses and of the components
 /// connected to it through them.
 fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
+    let component_page = |id: &str| {
+        cat.component_index(id)
+            .map(|ci| cat.component_page(ci).path("html"))
+    };
     for p in &comp.profile.data_ports {
-        if let Some(t) = p.type_.as_deref().and_then(|t| cat.data_type(t)) {
-            set.insert(format!("types/{}.html", t.slug));
+        if let Some(ti) = p.type_.as_deref().and_then(|t| cat.data_type_index(t)) {
+            set.insert(cat.data_type_page(ti).path("html"));
+            let t = &cat.data_types[ti];
             for r in t.producers.iter().chain(&t.consumers).chain(&t.others) {
-                set.insert(format!(
-                    "components/{}.html",
-                    cat.components[r.component].slug
-                ));
+                set.extend(component_page(&r.component));
             }
         }
     }
     for sp in &comp.profile.service_ports {
         for i in &sp.interfaces {
-            if let Some(t) = i.type_.as_deref().and_then(|t| cat.interface(t)) {
-                set.insert(format!("interfaces/{}.html", t.slug));
+            if let Some(ii) = i.type_.as_deref().and_then(|t| cat.interface_index_of(t)) {
+                set.insert(cat.interface_page(ii).path("html"));
+                let t = &cat.interfaces[ii];
                 for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
-                    set.insert(format!(
-                        "components/{}.html",
-                        cat.components[r.component].slug
-                    ));
+                    set.extend(component_page(&r.component));
                 }
             }
         }
@@ -184,21 +184,22 @@ fn affected(before: &Before, new: &Catalog, changed: &[String]) -> Option<BTreeS
             return None;
         }
     }
+    use crate::catalog::PageKind;
     let mut set: BTreeSet<String> = [
-        "index.html",
-        "types/index.html",
-        "interfaces/index.html",
-        "search-index.js",
-        "sitemap.xml",
-        "diagnostics.html",
+        PageKind::Index,
+        PageKind::DataTypes,
+        PageKind::Interfaces,
+        PageKind::Diagnostics,
     ]
     .into_iter()
-    .map(String::from)
+    .map(|k| new.site_page(k).path("html"))
+    .chain(["search-index.js", "sitemap.xml"].map(String::from))
     .collect();
     for src in changed {
-        let comp = new.components.iter().find(|c| &c.source == src)?;
+        let ci = new.components.iter().position(|c| &c.source == src)?;
+        let comp = &new.components[ci];
         let (old_sig, old_peers) = before.changed.get(src)?;
-        set.insert(format!("components/{}.html", comp.slug));
+        set.insert(new.component_page(ci).path("html"));
         if *old_sig != link_signature(comp) {
             // Its ports or name changed: every page listing them, before and after.
             set.extend(old_peers.iter().cloned());

@@ -12,6 +12,25 @@ use serde::{Deserialize, Serialize};
 /// catalogue holds millions of them.
 pub type Text = compact_str::CompactString;
 
+/// Reads a string of a small fixed vocabulary (a dialect name, a diagnostic code) into the
+/// `&'static str` the model keeps, for `catalog.json` read back: each distinct value is
+/// stored once for the rest of the process.
+pub fn intern(s: String) -> &'static str {
+    use std::collections::HashSet;
+    use std::sync::{Mutex, OnceLock};
+    static SEEN: OnceLock<Mutex<HashSet<&'static str>>> = OnceLock::new();
+    let mut seen = SEEN
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap_or_else(|e| e.into_inner());
+    if let Some(&known) = seen.get(s.as_str()) {
+        return known;
+    }
+    let leaked: &'static str = Box::leak(s.into_boxed_str());
+    seen.insert(leaked);
+    leaked
+}
+
 /// A position in a source file: 1-based line and column (columns count characters).
 #[derive(
     Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize,
@@ -47,10 +66,10 @@ pub struct Extra {
     /// Name as written, with its prefix when it had one (`rtc:library`, `"rtcExt::foo"`).
     pub name: Text,
     /// Namespace URI for XML names that have one.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub namespace: Option<Text>,
     /// The attribute value, the element's text, or the YAML scalar.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub value: Option<Text>,
     /// Attributes and child elements of an unknown element; entries of a YAML map or sequence.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -67,19 +86,19 @@ pub enum ExtraKind {
 }
 
 /// `rtcExt:Properties` / `"rtcExt::properties"`: a free name/value pair.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Property {
     pub name: Option<Text>,
     pub value: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// The whole profile (spec 2.2 `rtc_profile`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Profile {
     /// `RTC:<vendor>:<category>:<name>:<version>`.
     pub id: Option<Text>,
@@ -89,7 +108,7 @@ pub struct Profile {
     /// The 14 lifecycle actions, in spec order, as far as the profile lists them.
     pub actions: Vec<Action>,
     /// Position of the `Actions` element / key, when present.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub actions_pos: Option<Pos>,
     /// `ConfigurationSet`; `None` when the profile has none.
     pub configuration_set: Option<ConfigurationSet>,
@@ -100,13 +119,13 @@ pub struct Profile {
     pub language: Option<Language>,
     /// Values read under another writer's spelling (RTCBuilder 0.1, rtc-template) and mapped
     /// to the field they mean; the JSON shows what was written.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub written_as: Vec<WrittenAs>,
     /// Positions of the `id` and `version` attributes / keys.
     #[serde(skip)]
     pub attr_pos: AttrPos,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
@@ -124,6 +143,28 @@ pub struct WrittenAs {
     /// The writer generation that uses this spelling.
     pub dialect: &'static str,
     pub pos: Pos,
+}
+
+/// [`WrittenAs`] as `catalog.json` has it.
+#[derive(Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct WrittenAsRead {
+    field: Text,
+    written_as: Text,
+    dialect: String,
+    pos: Pos,
+}
+
+impl<'de> Deserialize<'de> for WrittenAs {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let w = WrittenAsRead::deserialize(d)?;
+        Ok(WrittenAs {
+            field: w.field,
+            written_as: w.written_as,
+            dialect: intern(w.dialect),
+            pos: w.pos,
+        })
+    }
 }
 
 /// Positions of a node's known attributes (XML) or keys (YAML), by spec field name, for the
@@ -316,8 +357,8 @@ impl<'a> IdParts<'a> {
 }
 
 /// Basic information (spec 2.3.2) with its Document (2.4.1) and Extended (2.5.1) parts.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct BasicInfo {
     pub name: Option<Text>,
     pub component_type: Option<Text>,
@@ -346,13 +387,13 @@ pub struct BasicInfo {
     #[serde(skip)]
     pub attr_pos: AttrPos,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// Document Profile of the component (spec 2.4.2).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct BasicDoc {
     pub description: Option<Text>,
     pub inout: Option<Text>,
@@ -361,12 +402,12 @@ pub struct BasicDoc {
     pub license: Option<Text>,
     pub reference: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// The lifecycle callbacks (spec 2.3.3), in spec order.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum ActionKind {
     OnInitialize,
@@ -473,7 +514,7 @@ impl ActionKind {
 }
 
 /// One lifecycle action (spec 2.3.4 `action_status`, 2.4.3 doc).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Action {
     pub kind: ActionKind,
@@ -481,7 +522,7 @@ pub struct Action {
     pub implemented: Option<Text>,
     pub doc: Option<ActionDoc>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
@@ -492,30 +533,30 @@ impl Action {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ActionDoc {
     pub description: Option<Text>,
     pub pre_condition: Option<Text>,
     pub post_condition: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// `ConfigurationSet` (spec 2.3.5).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ConfigurationSet {
     pub configurations: Vec<Configuration>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// One configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Configuration {
     pub name: Option<Text>,
     #[serde(rename = "type")]
@@ -530,7 +571,7 @@ pub struct Configuration {
     #[serde(skip)]
     pub attr_pos: AttrPos,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
@@ -546,8 +587,8 @@ impl Configuration {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ConfigurationDoc {
     pub dataname: Option<Text>,
     pub default_value: Option<Text>,
@@ -556,13 +597,13 @@ pub struct ConfigurationDoc {
     pub range: Option<Text>,
     pub constraint: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// A data port (spec 2.3.7, 2.4.5 doc, 2.5.3 ext); also FSM `EventPort`s with their events.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct DataPort {
     /// `DataInPort`, `DataOutPort` or `EventPort` as written.
     pub port_type: Option<Text>,
@@ -586,12 +627,12 @@ pub struct DataPort {
     #[serde(skip)]
     pub attr_pos: AttrPos,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// Direction of a data port.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum PortDirection {
     In,
@@ -621,8 +662,8 @@ impl DataPort {
 }
 
 /// An FSM event of an `EventPort`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Event {
     pub name: Option<Text>,
     #[serde(rename = "type")]
@@ -632,14 +673,14 @@ pub struct Event {
     pub condition: Option<Text>,
     pub doc: Option<DataPortDoc>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// Document Profile of a data port (spec 2.4.6). `occurrence` also accepts RTCBuilder's
 /// `occerrence` spelling.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct DataPortDoc {
     pub description: Option<Text>,
     #[serde(rename = "type")]
@@ -650,12 +691,12 @@ pub struct DataPortDoc {
     pub occurrence: Option<Text>,
     pub operation: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// The edge of the component box a port is drawn on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum PortSide {
     Left,
@@ -678,8 +719,8 @@ impl PortSide {
 }
 
 /// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ServicePort {
     pub name: Option<Text>,
     pub interfaces: Vec<ServiceInterface>,
@@ -691,7 +732,7 @@ pub struct ServicePort {
     #[serde(skip)]
     pub attr_pos: AttrPos,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
@@ -702,29 +743,29 @@ impl ServicePort {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ServicePortDoc {
     pub description: Option<Text>,
     pub ifdescription: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// `TransMethods` (spec 2.3.10).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct TransMethod {
     pub kind: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// A service interface of a service port (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ServiceInterface {
     pub name: Option<Text>,
     #[serde(rename = "type")]
@@ -741,12 +782,12 @@ pub struct ServiceInterface {
     #[serde(skip)]
     pub attr_pos: AttrPos,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// Provided or required, for service interfaces.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum Direction {
     Provided,
@@ -770,8 +811,8 @@ impl ServiceInterface {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct ServiceInterfaceDoc {
     pub description: Option<Text>,
     pub doc_argument: Option<Text>,
@@ -780,35 +821,35 @@ pub struct ServiceInterfaceDoc {
     pub doc_pre_condition: Option<Text>,
     pub doc_post_condition: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// A system parameter (spec 2.3.11, 5.4).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Parameter {
     pub name: Option<Text>,
     pub default_value: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// Implementation language (spec 2.3.12) with target environments (2.5.6).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Language {
     pub kind: Option<Text>,
     pub targets: Vec<Target>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// A target environment (spec 2.5.7).
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Target {
     pub lang_version: Option<Text>,
     pub os: Option<Text>,
@@ -818,38 +859,38 @@ pub struct Target {
     pub cpu_other: Option<Text>,
     pub libraries: Vec<Library>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// A library of a target environment (spec 2.5.8). `name` also accepts the PIM's `path`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
 pub struct Library {
     pub name: Option<Text>,
     pub version: Option<Text>,
     pub other: Option<Text>,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
 /// A constraint (spec 2.3.17): a unit, an ordered list, or a keyed hash of constraints.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Constraint {
     pub kind: ConstraintKind,
     pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub extra: Vec<Extra>,
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", tag = "form")]
 pub enum ConstraintKind {
     /// `ConstraintUnitType` (2.3.19): one condition, optionally keyed (inside a hash).
     Unit {
-        #[serde(skip_serializing_if = "Option::is_none")]
+        #[serde(default, skip_serializing_if = "Option::is_none")]
         key: Option<Text>,
         condition: Box<Condition>,
     },
@@ -862,7 +903,7 @@ pub enum ConstraintKind {
 }
 
 /// One condition of a constraint unit (spec 2.3.22–2.3.41).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", tag = "op")]
 pub enum Condition {
     Not {
@@ -876,7 +917,7 @@ pub enum Condition {
     },
     /// `propertyIsNull`: the value must be empty.
     IsNull {
-        #[serde(skip_serializing_if = "Option::is_none")]
+        #[serde(default, skip_serializing_if = "Option::is_none")]
         text: Option<Text>,
     },
     /// `=`, `≠`, `<`, `>`, `≤`, `≥` against a literal.
@@ -900,7 +941,7 @@ pub enum Condition {
     },
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum Comparison {
     EqualTo,

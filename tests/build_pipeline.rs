@@ -166,20 +166,27 @@ fn json_output_holds_components_sources_and_cross_links() {
     assert!(err.pos.is_some(), "errors carry a position");
 
     let v = json(&out.join("catalog.json"));
-    let comps = v["components"].as_array().unwrap();
+    assert_eq!(v["formatVersion"], 2);
+    let keyed = v["components"].as_object().unwrap();
+    let comps: Vec<&serde_json::Value> = keyed.values().collect();
     let sources: Vec<&str> = comps
         .iter()
         .map(|c| c["source"].as_str().unwrap())
         .collect();
     assert_eq!(sources, ["cam/RTC.xml", "view/RTC.xml"]);
+    let ids: Vec<&String> = keyed.keys().collect();
     assert_eq!(comps[0]["basicInfo"]["name"], "Cam");
     assert_eq!(comps[0]["dataPorts"][0]["type"], "RTC::CameraImage");
     // Both spellings are one type, produced by Cam and consumed by Viewer.
-    let types = v["dataTypes"].as_array().unwrap();
+    let types: Vec<&serde_json::Value> = v["dataTypes"].as_object().unwrap().values().collect();
     assert_eq!(types.len(), 1);
     assert_eq!(types[0]["name"], "RTC::CameraImage");
-    assert_eq!(types[0]["producers"][0]["component"], 0);
-    assert_eq!(types[0]["consumers"][0]["component"], 1);
+    assert_eq!(types[0]["producers"][0]["component"], ids[0].as_str());
+    assert_eq!(types[0]["consumers"][0]["component"], ids[1].as_str());
+    assert_eq!(
+        types[0]["producers"][0]["port"],
+        comps[0]["dataPorts"][0]["name"]
+    );
     assert_eq!(v["diagnostics"][0]["file"], "broken/RTC.xml");
     assert!(out.join(".rtcdoc-output").exists());
 }

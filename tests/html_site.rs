@@ -253,13 +253,14 @@ fn every_port_links_to_its_type_or_interface_page_and_peers() {
             for peer in cat
                 .data_port_peers(ci, pi)
                 .iter()
-                .filter(|r| r.component != ci)
+                .filter(|r| r.component != c.id)
                 .take(20)
             {
-                let pc = &cat.components[peer.component];
+                let (pci, ppi) = cat.resolve_port(peer).unwrap();
+                let pc = &cat.components[pci];
                 let href = format!(
                     "../components/{}.html#{}",
-                    pc.slug, pc.anchors.data_ports[peer.port]
+                    pc.slug, pc.anchors.data_ports[ppi]
                 );
                 assert!(
                     row.contains(&href),

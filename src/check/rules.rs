@@ -1016,11 +1016,7 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     let mut uses: Vec<(String, Option<String>, &str, Pos, String)> = Vec::new();
     for t in &cat.data_types {
         for pr in t.producers.iter().chain(&t.consumers).chain(&t.others) {
-            if let Some((c, p)) = cat
-                .components
-                .get(pr.component)
-                .and_then(|c| c.profile.data_ports.get(pr.port).map(|p| (c, p)))
-            {
+            if let Some((c, p)) = cat.port_of(pr) {
                 uses.push((
                     t.name.clone(),
                     non_empty(&p.idl_file).map(str::to_string),
@@ -1033,13 +1029,7 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     }
     for t in &cat.interfaces {
         for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
-            if let Some((c, i)) = cat.components.get(r.component).and_then(|c| {
-                c.profile
-                    .service_ports
-                    .get(r.port)
-                    .and_then(|p| p.interfaces.get(r.interface))
-                    .map(|i| (c, i))
-            }) {
+            if let Some((c, _, i)) = cat.interface_of(r) {
                 uses.push((
                     t.name.clone(),
                     non_empty(&i.idl_file).map(str::to_string),
@@ -1162,15 +1152,7 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     idl_rules(cat, &mut out);
     for t in cat.interfaces.iter().filter(|t| t.is_unprovided()) {
         for req in &t.requirers {
-            let Some(c) = cat.components.get(req.component) else {
-                continue;
-            };
-            let Some(i) = c
-                .profile
-                .service_ports
-                .get(req.port)
-                .and_then(|p| p.interfaces.get(req.interface))
-            else {
+            let Some((c, _, i)) = cat.interface_of(req) else {
                 continue;
             };
             let mut s = Sink {
@@ -1193,18 +1175,12 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
         // file name → ports using it
         let mut by_file: BTreeMap<String, Vec<(usize, usize)>> = BTreeMap::new();
         for pr in t.producers.iter().chain(&t.consumers).chain(&t.others) {
-            let Some(port) = cat
-                .components
-                .get(pr.component)
-                .and_then(|c| c.profile.data_ports.get(pr.port))
-            else {
+            let Some((ci, pi)) = cat.resolve_port(pr) else {
                 continue;
             };
+            let port = &cat.components[ci].profile.data_ports[pi];
             if let Some(f) = non_empty(&port.idl_file) {
-                by_file
-                    .entry(idl_file_name(f))
-                    .or_default()
-                    .push((pr.component, pr.port));
+                by_file.entry(idl_file_name(f)).or_default().push((ci, pi));
             }
         }
         if by_file.len() < 2 {

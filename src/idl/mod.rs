@@ -153,6 +153,24 @@ impl serde::Serialize for IdlSet {
     }
 }
 
+/// Read back from `catalog.json`: the files, with the lookups built again (names were
+/// resolved when the files were read, and are kept in the definitions).
+impl<'de> serde::Deserialize<'de> for IdlSet {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        #[derive(serde::Deserialize)]
+        struct Files {
+            files: Vec<IdlFile>,
+        }
+        let f = Files::deserialize(d)?;
+        let mut set = IdlSet {
+            files: f.files,
+            ..IdlSet::default()
+        };
+        set.build_index(&mut Vec::new());
+        Ok(set)
+    }
+}
+
 /// A definition found by a lookup, with the file it is in.
 #[derive(Debug, Clone, Copy)]
 pub struct IdlItem<'a> {

@@ -45,7 +45,7 @@ impl Default for Limits {
 }
 
 /// The input format of a profile file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SourceFormat {
     Xml,

@@ -25,7 +25,7 @@ use super::text::{
     type_index_table, Markup,
 };
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
+use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -148,6 +148,15 @@ pub fn label(s: &str) -> String {
         .collect()
 }
 
+/// The Doxygen page name of a type's or interface's page: `rtc_type_<slug>`, `rtc_if_<slug>`.
+fn page_label(page: &Page) -> String {
+    let slug = page.stem.rsplit('/').next().unwrap_or(&page.stem);
+    match page.kind {
+        PageKind::Interface => format!("rtc_if_{}", label(slug)),
+        _ => format!("rtc_type_{}", label(slug)),
+    }
+}
+
 fn comp_label(c: &Component) -> String {
     format!("rtc_comp_{}", label(&c.slug))
 }
@@ -208,22 +217,16 @@ impl Markup for Dox {
     fn anchored(c: &Component, anchor: &str, escaped: &str) -> String {
         format!("\\anchor {} {escaped}", anchor_label(c, anchor))
     }
-    fn type_ref(t: &DataType) -> String {
-        format!("\\ref {}", Self::type_target(t))
+    fn page_ref(page: &Page) -> String {
+        format!("\\ref {}", Self::page_target(page))
     }
-    fn type_target(t: &DataType) -> String {
-        format!("rtc_type_{}", label(&t.slug))
+    fn page_target(page: &Page) -> String {
+        page_label(page)
     }
-    fn iface_ref(t: &InterfaceType) -> String {
-        format!("\\ref {}", Self::iface_target(t))
-    }
-    fn iface_target(t: &InterfaceType) -> String {
-        format!("rtc_if_{}", label(&t.slug))
-    }
-    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+    fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
         port_peer(cat, r)
     }
-    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
         iface_peer(cat, r)
     }
 }
@@ -268,27 +271,29 @@ fn paragraphs(out: &mut String, s: &str) {
     d!(out);
 }
 
-fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
-    let pc = &cat.components[r.component];
-    let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
-    (
+fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
+    let (ci, port) = cat.resolve_port(r)?;
+    let pc = &cat.components[ci];
+    let pn = model::non_empty(&pc.profile.data_ports[port].name).unwrap_or("");
+    Some((
         format!("{} / {pn}", pc.profile.name()),
-        anchor_label(pc, &pc.anchors.data_ports[r.port]),
-    )
+        anchor_label(pc, &pc.anchors.data_ports[port]),
+    ))
 }
 
-fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
-    let pc = &cat.components[r.component];
-    let sp = &pc.profile.service_ports[r.port];
-    let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
-    (
+fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
+    let (ci, port, interface) = cat.resolve_interface(r)?;
+    let pc = &cat.components[ci];
+    let sp = &pc.profile.service_ports[port];
+    let iname = model::non_empty(&sp.interfaces[interface].name).unwrap_or("");
+    Some((
         format!(
             "{} / {} / {iname}",
             pc.profile.name(),
             model::non_empty(&sp.name).unwrap_or("")
         ),
-        anchor_label(pc, &pc.anchors.interfaces[r.port][r.interface]),
-    )
+        anchor_label(pc, &pc.anchors.interfaces[port][interface]),
+    ))
 }
 
 fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> String {
@@ -310,31 +315,33 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
 
 fn port_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
     refs.iter()
-        .map(|r| {
-            let c = &cat.components[r.component];
-            let port = &c.profile.data_ports[r.port];
-            vec![
+        .filter_map(|r| {
+            let (ci, pi) = cat.resolve_port(r)?;
+            let c = &cat.components[ci];
+            let port = &c.profile.data_ports[pi];
+            Some(vec![
                 format!("\\ref {}", comp_label(c)),
                 refer(
-                    &anchor_label(c, &c.anchors.data_ports[r.port]),
+                    &anchor_label(c, &c.anchors.data_ports[pi]),
                     model::non_empty(&port.name).unwrap_or("?"),
                 ),
                 opt(&port.type_),
-            ]
+            ])
         })
         .collect()
 }
 
 fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
     refs.iter()
-        .map(|r| {
-            let c = &cat.components[r.component];
-            let sp = &c.profile.service_ports[r.port];
-            let i = &sp.interfaces[r.interface];
-            vec![
+        .filter_map(|r| {
+            let (ci, pi, ii) = cat.resolve_interface(r)?;
+            let c = &cat.components[ci];
+            let sp = &c.profile.service_ports[pi];
+            let i = &sp.interfaces[ii];
+            Some(vec![
                 format!("\\ref {}", comp_label(c)),
                 refer(
-                    &anchor_label(c, &c.anchors.interfaces[r.port][r.interface]),
+                    &anchor_label(c, &c.anchors.interfaces[pi][ii]),
                     &format!(
                         "{} / {}",
                         model::non_empty(&sp.name).unwrap_or("?"),
@@ -342,7 +349,7 @@ fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
                     ),
                 ),
                 opt(&i.type_),
-            ]
+            ])
         })
         .collect()
 }
@@ -483,7 +490,7 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
         table(
             &mut out,
             &component_cols(lang),
-            &component_rows(cat, &f.components, "ref"),
+            &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), "ref"),
         );
     }
     out
@@ -504,7 +511,7 @@ fn category_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
     table(
         &mut out,
         &component_cols(lang),
-        &component_rows(cat, &f.components, "subpage"),
+        &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), "subpage"),
     );
     out
 }
@@ -515,8 +522,8 @@ fn type_index(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index</p>");
     d!(out);
-    type_index_table::<Dox>(&mut out, cat, lang, |t| {
-        format!("\\subpage {}", Dox::type_target(t))
+    type_index_table::<Dox>(&mut out, cat, lang, |page| {
+        format!("\\subpage {}", page_label(page))
     });
     out
 }
@@ -527,8 +534,8 @@ fn interface_index(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     d!(out, "<p>\\ref index</p>");
     d!(out);
-    interface_index_table::<Dox>(&mut out, cat, lang, |t| {
-        format!("\\subpage {}", Dox::iface_target(t))
+    interface_index_table::<Dox>(&mut out, cat, lang, |page| {
+        format!("\\subpage {}", page_label(page))
     });
     out
 }
@@ -606,7 +613,7 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
 
 /// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
 pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
-    let of = category_of(cat);
+    let of = cat.category_of_each();
     let mut out = other_pages(cat, site_title, lang);
     out.par_extend(
         (0..cat.components.len())
@@ -616,19 +623,8 @@ pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String
     out
 }
 
-/// Index of each component's category facet.
-fn category_of(cat: &Catalog) -> Vec<usize> {
-    let mut of = vec![0; cat.components.len()];
-    for (fi, f) in cat.categories.iter().enumerate() {
-        for &ci in &f.components {
-            of[ci] = fi;
-        }
-    }
-    of
-}
-
 fn component_path(cat: &Catalog, ci: usize) -> String {
-    format!("components/{}.dox", cat.components[ci].slug)
+    cat.component_page(ci).path_in(Output::Doxygen)
 }
 
 /// The path and text of component `ci`'s page.
@@ -642,25 +638,34 @@ fn component_entry(cat: &Catalog, of: &[usize], ci: usize, lang: Lang) -> (Strin
 /// Every file but the component pages, the Doxyfile included (its INPUT lists every page).
 fn other_pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
     let mut out = vec![
-        ("mainpage.dox".to_string(), mainpage(cat, site_title, lang)),
-        ("types.dox".to_string(), type_index(cat, lang)),
-        ("interfaces.dox".to_string(), interface_index(cat, lang)),
+        (
+            cat.site_page(PageKind::Index).path_in(Output::Doxygen),
+            mainpage(cat, site_title, lang),
+        ),
+        (
+            cat.site_page(PageKind::DataTypes).path_in(Output::Doxygen),
+            type_index(cat, lang),
+        ),
+        (
+            cat.site_page(PageKind::Interfaces).path_in(Output::Doxygen),
+            interface_index(cat, lang),
+        ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
         (
-            format!("categories/{}.dox", cat.categories[fi].slug),
+            cat.category_page(fi).path_in(Output::Doxygen),
             category_page(cat, fi, lang),
         )
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
-            format!("types/{}.dox", cat.data_types[ti].slug),
+            cat.data_type_page(ti).path_in(Output::Doxygen),
             type_page(cat, ti, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
-            format!("interfaces/{}.dox", cat.interfaces[ii].slug),
+            cat.interface_page(ii).path_in(Output::Doxygen),
             interface_page(cat, ii, lang),
         )
     }));
@@ -686,7 +691,7 @@ impl Renderer for DoxygenRenderer {
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
         // Component pages are the bulk: written as they are rendered, never all held at once.
-        let of = category_of(cat);
+        let of = cat.category_of_each();
         (0..cat.components.len())
             .into_par_iter()
             .try_for_each(|ci| {

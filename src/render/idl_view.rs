@@ -324,8 +324,8 @@ pub fn write_definition<M: Markup>(
     };
     let ty = |r: &TypeRef| -> String {
         match r.entry {
-            Some(Entry::DataType(i)) => M::link(&r.text, &M::type_target(&cat.data_types[i])),
-            Some(Entry::Interface(i)) => M::link(&r.text, &M::iface_target(&cat.interfaces[i])),
+            Some(Entry::DataType(i)) => M::link(&r.text, &M::page_target(cat.data_type_page(i))),
+            Some(Entry::Interface(i)) => M::link(&r.text, &M::page_target(cat.interface_page(i))),
             None => M::esc(&r.text),
         }
     };
@@ -467,8 +467,8 @@ pub fn write_definition<M: Markup>(
         let items: Vec<String> = t
             .contained_in
             .iter()
-            .map(|n| match cat.data_type(n) {
-                Some(c) => M::link(n, &M::type_target(c)),
+            .map(|n| match cat.data_type_index(n) {
+                Some(c) => M::link(n, &M::page_target(cat.data_type_page(c))),
                 None => M::esc(n),
             })
             .collect();

@@ -1,53 +1,108 @@
-//! JSON output: `catalog.json`, the normalized catalogue for other tools.
+//! JSON output: `catalog.json`, the normalized catalogue for other tools, and reading it back.
 //!
-//! Shape (documented in `book/src/json.md`): `{"generator", "formatVersion", "components": [...],
-//! "dataTypes": [...], "interfaces": [...], "categories": [...], "vendors": [...],
-//! "diagnostics": [...]}`; each component is the whole profile model plus `source`, `format`,
-//! `slug` and `anchors`.
+//! Format 2 (documented in `book/src/json.md`) is the keyed catalogue: `{"generator",
+//! "formatVersion": 2, "title", "components": {ID: …}, "dataTypes": {NAME: …}, "interfaces":
+//! {NAME: …}, "categories": {NAME: …}, "vendors": {NAME: …}, "pages": [...], "diagnostics":
+//! [...], "idl"?}`. Each component is the whole profile model plus `source`, `format`, `slug`
+//! and `anchors`, keyed by its id ([`crate::catalog::Component::id`]); references between
+//! entries are ids (`{"component": ID, "port": NAME}`), never positions, so two catalogues can
+//! be compared entry by entry (`rtcdoc diff`) and [`read_catalog`] gives the same catalogue
+//! back (a round trip writes the same bytes).
 
 use super::{RenderContext, Renderer};
-use crate::catalog::Catalog;
+use crate::catalog::{Catalog, Component, DataType, Facet, InterfaceType, Output, PageKind};
+use crate::diagnostic::Diagnostic;
+use crate::idl::IdlSet;
 use crate::output::Sink;
-use serde::Serialize;
+use serde::ser::SerializeMap;
+use serde::{Deserialize, Serialize};
 
-/// Version of the `catalog.json` shape; bumped on incompatible changes.
-pub const FORMAT_VERSION: u32 = 1;
+/// Version of the `catalog.json` shape; bumped on incompatible changes. 1 (before 0.2) listed
+/// entries in arrays and referred to them by position.
+pub const FORMAT_VERSION: u32 = 2;
 
-/// The document as serde would write it from the catalogue's own `Serialize`. Used by the
-/// tests as the reference for [`write_json`].
-#[cfg(test)]
+/// Entries written as one JSON object keyed by each entry's id, in catalogue order.
+struct Keyed<'a, T>(&'a [T], fn(&T) -> &str);
+
+impl<T: Serialize> Serialize for Keyed<'_, T> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for e in self.0 {
+            m.serialize_entry((self.1)(e), e)?;
+        }
+        m.end()
+    }
+}
+
+fn component_key(c: &Component) -> &str {
+    &c.id
+}
+fn type_key(t: &DataType) -> &str {
+    &t.name
+}
+fn interface_key(t: &InterfaceType) -> &str {
+    &t.name
+}
+fn facet_key(f: &Facet) -> &str {
+    &f.name
+}
+
+/// A page of the catalogue in `catalog.json`: where the HTML site has it.
+#[derive(Debug, Serialize, Deserialize, PartialEq)]
+#[serde(rename_all = "camelCase")]
+struct PageEntry {
+    path: String,
+    kind: PageKind,
+    id: String,
+    title: String,
+}
+
+/// The whole document; `components` is left out of the skeleton [`write_json`] fills in.
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
 struct Document<'a> {
     generator: String,
     format_version: u32,
     title: &'a str,
-    #[serde(flatten)]
-    catalog: &'a Catalog,
+    components: Keyed<'a, Component>,
+    data_types: Keyed<'a, DataType>,
+    interfaces: Keyed<'a, InterfaceType>,
+    categories: Keyed<'a, Facet>,
+    vendors: Keyed<'a, Facet>,
+    pages: Vec<PageEntry>,
+    diagnostics: &'a [Diagnostic],
+    #[serde(skip_serializing_if = "IdlSet::is_empty")]
+    idl: &'a IdlSet,
 }
 
-/// The document around the components: every field of [`Catalog`] in its order, with
-/// `components` left empty (filled in by [`write_json`]). A test holds the result to the
-/// catalogue's own serialization, so a field added to `Catalog` but not here fails it.
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Skeleton<'a> {
-    generator: String,
-    format_version: u32,
-    title: &'a str,
-    components: [(); 0],
-    data_types: &'a [crate::catalog::DataType],
-    interfaces: &'a [crate::catalog::InterfaceType],
-    categories: &'a [crate::catalog::Facet],
-    vendors: &'a [crate::catalog::Facet],
-    diagnostics: &'a [crate::diagnostic::Diagnostic],
-    #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
-    idl: &'a crate::idl::IdlSet,
+fn document<'a>(catalog: &'a Catalog, title: &'a str, components: &'a [Component]) -> Document<'a> {
+    Document {
+        generator: super::generator(),
+        format_version: FORMAT_VERSION,
+        title,
+        components: Keyed(components, component_key),
+        data_types: Keyed(&catalog.data_types, type_key),
+        interfaces: Keyed(&catalog.interfaces, interface_key),
+        categories: Keyed(&catalog.categories, facet_key),
+        vendors: Keyed(&catalog.vendors, facet_key),
+        pages: catalog
+            .pages()
+            .iter()
+            .map(|p| PageEntry {
+                path: p.path_in(Output::Html),
+                kind: p.kind,
+                id: p.id.clone(),
+                title: p.title.clone(),
+            })
+            .collect(),
+        diagnostics: &catalog.diagnostics,
+        idl: &catalog.idl,
+    }
 }
 
 /// Where the components go in the pretty-printed skeleton (top-level keys are indented by two
 /// spaces; a string value cannot hold a raw newline or quote, so only the key matches).
-const COMPONENTS_KEY: &[u8] = b"\n  \"components\": []";
+const COMPONENTS_KEY: &[u8] = b"\n  \"components\": {}";
 
 /// Serializes the catalogue as pretty JSON into `w`: the same bytes as
 /// `serde_json::to_writer_pretty` of the whole document, but the components — nearly all of
@@ -58,23 +113,12 @@ pub fn write_json(
     w: &mut dyn std::io::Write,
 ) -> anyhow::Result<()> {
     use rayon::prelude::*;
-    let skeleton = serde_json::to_vec_pretty(&Skeleton {
-        generator: super::generator(),
-        format_version: FORMAT_VERSION,
-        title,
-        components: [],
-        data_types: &catalog.data_types,
-        interfaces: &catalog.interfaces,
-        categories: &catalog.categories,
-        vendors: &catalog.vendors,
-        diagnostics: &catalog.diagnostics,
-        idl: &catalog.idl,
-    })?;
+    let skeleton = serde_json::to_vec_pretty(&document(catalog, title, &[]))?;
     let at = skeleton
         .windows(COMPONENTS_KEY.len())
         .position(|win| win == COMPONENTS_KEY)
         .ok_or_else(|| anyhow::anyhow!("internal error: no components key in catalog.json"))?;
-    let open = at + COMPONENTS_KEY.len() - 1; // the `]` of `[]`
+    let open = at + COMPONENTS_KEY.len() - 1; // the `}` of `{}`
     w.write_all(&skeleton[..open])?;
     if !catalog.components.is_empty() {
         // Chunks of components, so that a 10,000-component catalogue is never in memory as
@@ -85,8 +129,13 @@ pub fn write_json(
                 .par_iter()
                 .map(|c| {
                     let mut buf = Vec::with_capacity(16 * 1024);
-                    serde_json::to_writer_pretty(&mut buf, c)?;
-                    Ok(indented(&buf))
+                    buf.extend_from_slice(b"    ");
+                    serde_json::to_writer(&mut buf, &*c.id)?;
+                    buf.extend_from_slice(b": ");
+                    let mut value = Vec::with_capacity(16 * 1024);
+                    serde_json::to_writer_pretty(&mut value, c)?;
+                    indent_into(&mut buf, &value);
+                    Ok(buf)
                 })
                 .collect::<serde_json::Result<Vec<Vec<u8>>>>()?;
             for part in &parts {
@@ -102,12 +151,10 @@ pub fn write_json(
     Ok(())
 }
 
-/// A component's pretty JSON as an element of a top-level array: every line four spaces
-/// deeper (JSON text has raw line breaks only between tokens).
-fn indented(json: &[u8]) -> Vec<u8> {
+/// Appends a component's pretty JSON as the value of a top-level object entry: every line
+/// after the first four spaces deeper (JSON text has raw line breaks only between tokens).
+fn indent_into(out: &mut Vec<u8>, json: &[u8]) {
     const INDENT: &[u8] = b"    ";
-    let mut out = Vec::with_capacity(json.len() + json.len() / 8);
-    out.extend_from_slice(INDENT);
     let mut start = 0;
     for nl in memchr::memchr_iter(b'\n', json) {
         out.extend_from_slice(&json[start..=nl]);
@@ -115,7 +162,6 @@ fn indented(json: &[u8]) -> Vec<u8> {
         start = nl + 1;
     }
     out.extend_from_slice(&json[start..]);
-    out
 }
 
 /// Writes `catalog.json`.
@@ -134,6 +180,151 @@ impl Renderer for JsonRenderer {
     }
 }
 
+/// Entries of a keyed object, in document order, with their keys.
+fn keyed<'de, D, T>(d: D) -> Result<Vec<(String, T)>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: Deserialize<'de>,
+{
+    struct Visit<T>(std::marker::PhantomData<T>);
+    impl<'de, T: Deserialize<'de>> serde::de::Visitor<'de> for Visit<T> {
+        type Value = Vec<(String, T)>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("an object of entries keyed by id")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(
+            self,
+            mut m: A,
+        ) -> Result<Self::Value, A::Error> {
+            let mut out = Vec::with_capacity(m.size_hint().unwrap_or(0));
+            while let Some(e) = m.next_entry()? {
+                out.push(e);
+            }
+            Ok(out)
+        }
+    }
+    d.deserialize_map(Visit(std::marker::PhantomData))
+}
+
+/// `catalog.json` as read back.
+#[derive(Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct DocumentRead {
+    title: String,
+    #[serde(deserialize_with = "keyed")]
+    components: Vec<(String, Component)>,
+    #[serde(deserialize_with = "keyed")]
+    data_types: Vec<(String, DataType)>,
+    #[serde(deserialize_with = "keyed")]
+    interfaces: Vec<(String, InterfaceType)>,
+    #[serde(deserialize_with = "keyed")]
+    categories: Vec<(String, Facet)>,
+    #[serde(deserialize_with = "keyed")]
+    vendors: Vec<(String, Facet)>,
+    pages: Vec<PageEntry>,
+    diagnostics: Vec<Diagnostic>,
+    #[serde(default)]
+    idl: IdlSet,
+}
+
+/// serde_json's message without the position it appends (the caller puts it in front).
+fn json_error(e: &serde_json::Error) -> String {
+    let text = e.to_string();
+    match text.rfind(" at line ") {
+        Some(at) => text[..at].to_string(),
+        None => text,
+    }
+}
+
+/// A catalogue read back from `catalog.json`, with the title it was written with.
+pub struct ReadCatalog {
+    pub catalog: Catalog,
+    pub title: String,
+}
+
+/// Reads a `catalog.json` written by rtcdoc (format 2). `name` is the file as shown in errors.
+/// A document of another format version, or one whose entries disagree with their keys or
+/// pages, is an error saying so.
+pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
+    #[derive(Deserialize)]
+    #[serde(rename_all = "camelCase")]
+    struct Probe {
+        format_version: Option<u32>,
+        generator: Option<String>,
+    }
+    let probe: Probe = serde_json::from_slice(bytes).map_err(|e| {
+        anyhow::anyhow!(
+            "{name}:{}:{}: not a catalog.json written by rtcdoc: {}",
+            e.line(),
+            e.column(),
+            json_error(&e)
+        )
+    })?;
+    match probe.format_version {
+        Some(FORMAT_VERSION) => {}
+        Some(v) => anyhow::bail!(
+            "{name}: catalog.json format {v} (written by {}); this rtcdoc reads format {FORMAT_VERSION}: build the catalogue again with this rtcdoc",
+            probe.generator.as_deref().unwrap_or("an unknown generator")
+        ),
+        None => anyhow::bail!("{name}: no `formatVersion`: not a catalog.json written by rtcdoc"),
+    }
+    let doc: DocumentRead = serde_json::from_slice(bytes)
+        .map_err(|e| anyhow::anyhow!("{name}:{}:{}: {}", e.line(), e.column(), json_error(&e)))?;
+    let mismatch = |what: &str, key: &str, own: &str| {
+        anyhow::anyhow!("{name}: {what} `{key}` holds the entry of `{own}`: the file was edited; build it again")
+    };
+    for (k, t) in &doc.data_types {
+        if *k != t.name {
+            return Err(mismatch("data type", k, &t.name));
+        }
+    }
+    for (k, t) in &doc.interfaces {
+        if *k != t.name {
+            return Err(mismatch("interface", k, &t.name));
+        }
+    }
+    for (k, f) in doc.categories.iter().chain(&doc.vendors) {
+        if *k != f.name {
+            return Err(mismatch("facet", k, &f.name));
+        }
+    }
+    let components = doc
+        .components
+        .into_iter()
+        .map(|(id, mut c)| {
+            c.id = id.into();
+            c
+        })
+        .collect();
+    let catalog = Catalog::from_parts(
+        components,
+        doc.data_types.into_iter().map(|(_, t)| t).collect(),
+        doc.interfaces.into_iter().map(|(_, t)| t).collect(),
+        doc.categories.into_iter().map(|(_, f)| f).collect(),
+        doc.vendors.into_iter().map(|(_, f)| f).collect(),
+        doc.diagnostics,
+        doc.idl,
+    )
+    .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    let pages: Vec<PageEntry> = catalog
+        .pages()
+        .iter()
+        .map(|p| PageEntry {
+            path: p.path_in(Output::Html),
+            kind: p.kind,
+            id: p.id.clone(),
+            title: p.title.clone(),
+        })
+        .collect();
+    if pages != doc.pages {
+        anyhow::bail!("{name}: the `pages` list does not match the entries' slugs: the file was edited; build it again");
+    }
+    Ok(ReadCatalog {
+        catalog,
+        title: doc.title,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,13 +332,8 @@ mod tests {
     use crate::catalog::LoadedProfile;
 
     fn reference(catalog: &Catalog, title: &str) -> Vec<u8> {
-        let mut out = serde_json::to_vec_pretty(&Document {
-            generator: super::super::generator(),
-            format_version: FORMAT_VERSION,
-            title,
-            catalog,
-        })
-        .unwrap();
+        let mut out =
+            serde_json::to_vec_pretty(&document(catalog, title, &catalog.components)).unwrap();
         out.push(b'\n');
         out
     }
@@ -175,7 +361,7 @@ mod tests {
                 ..Default::default()
             };
             let catalog = load(input, &opts).unwrap().catalog;
-            for title in ["Catalogue", "\n  \"components\": []"] {
+            for title in ["Catalogue", "\n  \"components\": {}"] {
                 let (a, b) = (written(&catalog, title), reference(&catalog, title));
                 assert!(a == b, "{} differs", input.display());
             }
@@ -202,5 +388,117 @@ mod tests {
         assert!(written(&big, "t") == reference(&big, "t"));
         let empty = Catalog::build(vec![], vec![]);
         assert_eq!(written(&empty, "t"), reference(&empty, "t"));
+    }
+
+    /// Inputs with profiles, IDL and diagnostics: the examples, every fixture folder, the
+    /// corpus when present.
+    fn inputs() -> Vec<std::path::PathBuf> {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let mut inputs = vec![root.join("examples"), root.join("../shared/corpus")];
+        for e in std::fs::read_dir(root.join("tests/fixtures")).unwrap() {
+            inputs.push(e.unwrap().path());
+        }
+        inputs.retain(|p| p.is_dir());
+        inputs
+    }
+
+    /// catalog.json read back is the same catalogue: written again, it is the same bytes; the
+    /// references resolve to the same ports; the pages are the same.
+    #[test]
+    fn round_trip_gives_the_same_document() {
+        let mut read = 0;
+        for input in inputs() {
+            let opts = LoadOptions {
+                allow_empty: true,
+                ..Default::default()
+            };
+            let catalog = load(&input, &opts).unwrap().catalog;
+            let first = written(&catalog, "Round trip");
+            let back = read_catalog(&first, "catalog.json")
+                .unwrap_or_else(|e| panic!("{}: {e:#}", input.display()));
+            assert_eq!(back.title, "Round trip");
+            let second = written(&back.catalog, &back.title);
+            assert!(
+                first == second,
+                "{} differs after a round trip",
+                input.display()
+            );
+            assert_eq!(back.catalog.pages(), catalog.pages());
+            for t in &catalog.data_types {
+                for r in t.producers.iter().chain(&t.consumers) {
+                    assert_eq!(back.catalog.resolve_port(r), catalog.resolve_port(r));
+                }
+            }
+            assert_eq!(back.catalog.idl.files.len(), catalog.idl.files.len());
+            read += catalog.components.len();
+        }
+        assert!(read > 20, "{read}");
+    }
+
+    /// References are ids: a port is its component's id and its name.
+    #[test]
+    fn references_are_ids_not_positions() {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let catalog = load(&root.join("examples"), &LoadOptions::default())
+            .unwrap()
+            .catalog;
+        let json: serde_json::Value = serde_json::from_slice(&written(&catalog, "t")).unwrap();
+        assert_eq!(json["formatVersion"], 2);
+        let types = json["dataTypes"].as_object().unwrap();
+        let (name, t) = types
+            .iter()
+            .find(|(_, t)| t["producers"].as_array().is_some_and(|p| !p.is_empty()))
+            .unwrap();
+        assert_eq!(t["name"], name.as_str());
+        let r = &t["producers"][0];
+        let id = r["component"].as_str().unwrap();
+        assert!(id.starts_with("RTC:"), "{id}");
+        let component = &json["components"][id];
+        let ports = component["dataPorts"].as_array().unwrap();
+        assert!(ports.iter().any(|p| p["name"] == r["port"]), "{r}");
+        let pages = json["pages"].as_array().unwrap();
+        assert!(pages
+            .iter()
+            .any(|p| p["kind"] == "component" && p["id"] == id));
+    }
+
+    /// Other versions and edited files are refused with a message saying what to do.
+    #[test]
+    fn other_versions_and_edited_files_are_refused() {
+        let v1 = br#"{"generator": "rtcdoc 0.1.0", "formatVersion": 1, "components": []}"#;
+        let e = read_catalog(v1, "old.json").err().unwrap().to_string();
+        assert!(
+            e.contains("format 1") && e.contains("build the catalogue again"),
+            "{e}"
+        );
+        let e = read_catalog(b"[1, 2]", "x.json").err().unwrap().to_string();
+        assert!(
+            e.starts_with("x.json:1:5: not a catalog.json") && !e.contains(" at line"),
+            "{e}"
+        );
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let catalog = load(&root.join("examples"), &LoadOptions::default())
+            .unwrap()
+            .catalog;
+        let text = String::from_utf8(written(&catalog, "t")).unwrap();
+        let r = catalog
+            .data_types
+            .iter()
+            .find_map(|t| t.producers.first())
+            .unwrap();
+        let edited = text.replacen(
+            &format!("\"port\": \"{}\"", r.port),
+            "\"port\": \"no-such-port\"",
+            1,
+        );
+        assert_ne!(edited, text);
+        let e = read_catalog(edited.as_bytes(), "e.json")
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(
+            e.contains("no-such-port") && e.contains("does not have"),
+            "{e}"
+        );
     }
 }

@@ -18,7 +18,7 @@ use super::text::{
     type_index_table, Markup,
 };
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
+use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -206,22 +206,16 @@ impl Markup for Md {
     fn anchored(_: &Component, anchor: &str, escaped: &str) -> String {
         format!("<a id=\"{anchor}\"></a>{escaped}")
     }
-    fn type_ref(t: &DataType) -> String {
-        link(&t.name, &Self::type_target(t))
+    fn page_ref(page: &Page) -> String {
+        link(&page.title, &Self::page_target(page))
     }
-    fn type_target(t: &DataType) -> String {
-        format!("../types/{}.md", t.slug)
+    fn page_target(page: &Page) -> String {
+        format!("../{}", page.path_in(Output::Markdown))
     }
-    fn iface_ref(t: &InterfaceType) -> String {
-        link(&t.name, &Self::iface_target(t))
-    }
-    fn iface_target(t: &InterfaceType) -> String {
-        format!("../interfaces/{}.md", t.slug)
-    }
-    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
+    fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
         port_peer(cat, r)
     }
-    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
         iface_peer(cat, r)
     }
 }
@@ -255,37 +249,33 @@ fn opt(s: &Option<crate::model::Text>) -> String {
     model::non_empty(s).map(inline).unwrap_or_default()
 }
 
-fn component_href(c: &Component) -> String {
-    format!("../components/{}.md", c.slug)
-}
-
-/// The category facet slug of a component (every component is in exactly one facet).
-fn category_slugs(cat: &Catalog) -> Vec<usize> {
-    let mut of = vec![0; cat.components.len()];
-    for (fi, f) in cat.categories.iter().enumerate() {
-        for &ci in &f.components {
-            of[ci] = fi;
-        }
-    }
-    of
+/// The link to component `ci`'s page from a page one folder below the root.
+fn component_href(cat: &Catalog, ci: usize) -> String {
+    format!("../{}", cat.component_page(ci).path_in(Output::Markdown))
 }
 
 /// A data port peer as (text, link).
-fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String) {
-    let pc = &cat.components[r.component];
-    let pn = model::non_empty(&pc.profile.data_ports[r.port].name).unwrap_or("");
-    (
+fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
+    let (ci, port) = cat.resolve_port(r)?;
+    let pc = &cat.components[ci];
+    let pn = model::non_empty(&pc.profile.data_ports[port].name).unwrap_or("");
+    Some((
         format!("{} / {pn}", pc.profile.name()),
-        format!("{}#{}", component_href(pc), pc.anchors.data_ports[r.port]),
-    )
+        format!(
+            "{}#{}",
+            component_href(cat, ci),
+            pc.anchors.data_ports[port]
+        ),
+    ))
 }
 
 /// A service interface peer as (text, link).
-fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
-    let pc = &cat.components[r.component];
-    let sp = &pc.profile.service_ports[r.port];
-    let iname = model::non_empty(&sp.interfaces[r.interface].name).unwrap_or("");
-    (
+fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
+    let (ci, port, interface) = cat.resolve_interface(r)?;
+    let pc = &cat.components[ci];
+    let sp = &pc.profile.service_ports[port];
+    let iname = model::non_empty(&sp.interfaces[interface].name).unwrap_or("");
+    Some((
         format!(
             "{} / {} / {iname}",
             pc.profile.name(),
@@ -293,13 +283,13 @@ fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String) {
         ),
         format!(
             "{}#{}",
-            component_href(pc),
-            pc.anchors.interfaces[r.port][r.interface]
+            component_href(cat, ci),
+            pc.anchors.interfaces[port][interface]
         ),
-    )
+    ))
 }
 
-fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: Lang) -> String {
+fn component_page(cat: &Catalog, ci: usize, cat_page: &Page, title: &str, lang: Lang) -> String {
     let c = &cat.components[ci];
     let p = &c.profile;
     let mut out = String::with_capacity(4096);
@@ -312,7 +302,7 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
         link(title, "../index.md"),
         link(
             &category_name(category, lang),
-            &format!("../categories/{cat_slug}.md")
+            &format!("../{}", cat_page.path_in(Output::Markdown))
         )
     );
     w!(out);
@@ -327,29 +317,31 @@ fn component_page(cat: &Catalog, ci: usize, cat_slug: &str, title: &str, lang: L
 
 fn port_ref_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
     refs.iter()
-        .map(|r| {
-            let c = &cat.components[r.component];
-            let port = &c.profile.data_ports[r.port];
-            vec![
-                link(&c.display_name(), &component_href(c)),
+        .filter_map(|r| {
+            let (ci, pi) = cat.resolve_port(r)?;
+            let c = &cat.components[ci];
+            let port = &c.profile.data_ports[pi];
+            Some(vec![
+                link(&c.display_name(), &component_href(cat, ci)),
                 link(
                     model::non_empty(&port.name).unwrap_or("?"),
-                    &format!("{}#{}", component_href(c), c.anchors.data_ports[r.port]),
+                    &format!("{}#{}", component_href(cat, ci), c.anchors.data_ports[pi]),
                 ),
                 opt(&port.type_),
-            ]
+            ])
         })
         .collect()
 }
 
 fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
     refs.iter()
-        .map(|r| {
-            let c = &cat.components[r.component];
-            let sp = &c.profile.service_ports[r.port];
-            let i = &sp.interfaces[r.interface];
-            vec![
-                link(&c.display_name(), &component_href(c)),
+        .filter_map(|r| {
+            let (ci, pi, ii) = cat.resolve_interface(r)?;
+            let c = &cat.components[ci];
+            let sp = &c.profile.service_ports[pi];
+            let i = &sp.interfaces[ii];
+            Some(vec![
+                link(&c.display_name(), &component_href(cat, ci)),
                 link(
                     &format!(
                         "{} / {}",
@@ -358,12 +350,12 @@ fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
                     ),
                     &format!(
                         "{}#{}",
-                        component_href(c),
-                        c.anchors.interfaces[r.port][r.interface]
+                        component_href(cat, ci),
+                        c.anchors.interfaces[pi][ii]
                     ),
                 ),
                 opt(&i.type_),
-            ]
+            ])
         })
         .collect()
 }
@@ -443,7 +435,10 @@ fn component_rows(cat: &Catalog, members: &[usize], prefix: &str) -> Vec<Vec<Str
             vec![
                 link(
                     &c.display_name(),
-                    &format!("{prefix}components/{}.md", c.slug),
+                    &format!(
+                        "{prefix}{}",
+                        cat.component_page(ci).path_in(Output::Markdown)
+                    ),
                 ),
                 opt(&b.description),
                 opt(&b.vendor),
@@ -469,20 +464,20 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     );
     w!(out);
     heading(&mut out, 2, "sec-components", lang.t("components"));
-    for f in &cat.categories {
+    for (fi, f) in cat.categories.iter().enumerate() {
         w!(
             out,
             "### {}",
             link(
                 &category_name(&f.name, lang),
-                &format!("categories/{}.md", f.slug)
+                &cat.category_page(fi).path_in(Output::Markdown)
             )
         );
         w!(out);
         table(
             &mut out,
             &component_cols(lang),
-            &component_rows(cat, &f.components, ""),
+            &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), ""),
         );
     }
     out
@@ -513,7 +508,7 @@ fn category_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
     table(
         &mut out,
         &component_cols(lang),
-        &component_rows(cat, &f.components, "../"),
+        &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), "../"),
     );
     out
 }
@@ -524,8 +519,8 @@ fn type_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out);
     w!(out, "{}", link(title, "index.md"));
     w!(out);
-    type_index_table::<Md>(&mut out, cat, lang, |t| {
-        link(&t.name, &format!("types/{}.md", t.slug))
+    type_index_table::<Md>(&mut out, cat, lang, |page| {
+        link(&page.title, &page.path_in(Output::Markdown))
     });
     out
 }
@@ -536,8 +531,8 @@ fn interface_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out);
     w!(out, "{}", link(title, "index.md"));
     w!(out);
-    interface_index_table::<Md>(&mut out, cat, lang, |t| {
-        link(&t.name, &format!("interfaces/{}.md", t.slug))
+    interface_index_table::<Md>(&mut out, cat, lang, |page| {
+        link(&page.title, &page.path_in(Output::Markdown))
     });
     out
 }
@@ -559,41 +554,49 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
     if !cat.components.is_empty() {
         w!(out, "# {}", inline(lang.t("components")));
         w!(out);
-        for f in &cat.categories {
+        for (fi, f) in cat.categories.iter().enumerate() {
             summary_item(
                 &mut out,
                 0,
                 &category_name(&f.name, lang),
-                &format!("categories/{}.md", f.slug),
+                &cat.category_page(fi).path_in(Output::Markdown),
             );
-            for &ci in &f.components {
-                let c = &cat.components[ci];
-                summary_item(
-                    &mut out,
-                    1,
-                    &c.display_name(),
-                    &format!("components/{}.md", c.slug),
-                );
+            for ci in cat.members(f) {
+                let page = cat.component_page(ci);
+                summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
             }
         }
         w!(out);
     }
     w!(out, "# {}", inline(lang.t("fact_catalogue")));
     w!(out);
-    summary_item(&mut out, 0, lang.t("data_types"), "types.md");
-    for t in &cat.data_types {
-        summary_item(&mut out, 1, &t.name, &format!("types/{}.md", t.slug));
+    let index_of = |kind| cat.site_page(kind).path_in(Output::Markdown);
+    summary_item(
+        &mut out,
+        0,
+        lang.t("data_types"),
+        &index_of(PageKind::DataTypes),
+    );
+    for ti in 0..cat.data_types.len() {
+        let page = cat.data_type_page(ti);
+        summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
     }
-    summary_item(&mut out, 0, lang.t("interfaces"), "interfaces.md");
-    for t in &cat.interfaces {
-        summary_item(&mut out, 1, &t.name, &format!("interfaces/{}.md", t.slug));
+    summary_item(
+        &mut out,
+        0,
+        lang.t("interfaces"),
+        &index_of(PageKind::Interfaces),
+    );
+    for ii in 0..cat.interfaces.len() {
+        let page = cat.interface_page(ii);
+        summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
     }
     out
 }
 
 /// Renders every page as (relative path, content), in a fixed order.
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
-    let of = category_slugs(cat);
+    let of = cat.category_of_each();
     let mut out = other_pages(cat, title, lang);
     out.par_extend(
         (0..cat.components.len())
@@ -611,10 +614,9 @@ fn component_entry(
     title: &str,
     lang: Lang,
 ) -> (String, String) {
-    let c = &cat.components[ci];
     (
-        format!("components/{}.md", c.slug),
-        component_page(cat, ci, &cat.categories[of[ci]].slug, title, lang),
+        cat.component_page(ci).path_in(Output::Markdown),
+        component_page(cat, ci, cat.category_page(of[ci]), title, lang),
     )
 }
 
@@ -624,28 +626,35 @@ fn other_pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> 
     let mut out = vec![
         ("SUMMARY.md".to_string(), summary(cat, title, lang)),
         ("README.md".to_string(), index.clone()),
-        ("index.md".to_string(), index),
-        ("types.md".into(), type_index_page(cat, title, lang)),
         (
-            "interfaces.md".into(),
+            cat.site_page(PageKind::Index).path_in(Output::Markdown),
+            index,
+        ),
+        (
+            cat.site_page(PageKind::DataTypes).path_in(Output::Markdown),
+            type_index_page(cat, title, lang),
+        ),
+        (
+            cat.site_page(PageKind::Interfaces)
+                .path_in(Output::Markdown),
             interface_index_page(cat, title, lang),
         ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
         (
-            format!("categories/{}.md", cat.categories[fi].slug),
+            cat.category_page(fi).path_in(Output::Markdown),
             category_page(cat, fi, title, lang),
         )
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
-            format!("types/{}.md", cat.data_types[ti].slug),
+            cat.data_type_page(ti).path_in(Output::Markdown),
             type_page(cat, ti, title, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
-            format!("interfaces/{}.md", cat.interfaces[ii].slug),
+            cat.interface_page(ii).path_in(Output::Markdown),
             interface_page(cat, ii, title, lang),
         )
     }));
@@ -663,7 +672,7 @@ impl Renderer for MarkdownRenderer {
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
         // Component pages are the bulk: written as they are rendered, never all held at once.
-        let of = category_slugs(cat);
+        let of = cat.category_of_each();
         (0..cat.components.len())
             .into_par_iter()
             .try_for_each(|ci| {

@@ -5,7 +5,7 @@
 //! is what a [`Markup`] says.
 
 use super::facts::{self, Fact};
-use crate::catalog::{Catalog, Component, DataType, InterfaceRef, InterfaceType, PortRef};
+use crate::catalog::{Catalog, Component, InterfaceRef, Page, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self, ActionKind, Direction, PortDirection};
 
@@ -33,18 +33,15 @@ pub trait Markup {
     fn heading(out: &mut String, c: &Component, level: usize, anchor: &str, text: &str);
     /// A table cell of already escaped text with the stable `anchor` of `c`'s page.
     fn anchored(c: &Component, anchor: &str, escaped: &str) -> String;
-    /// A link to a data type's page, as a table cell.
-    fn type_ref(t: &DataType) -> String;
-    /// The target of a data type's page, for [`Markup::link`].
-    fn type_target(t: &DataType) -> String;
-    /// A link to an interface's page, as a table cell.
-    fn iface_ref(t: &InterfaceType) -> String;
-    /// The target of an interface's page, for [`Markup::link`].
-    fn iface_target(t: &InterfaceType) -> String;
+    /// A link to a data type's or interface's page ([`Catalog::pages`]), as a table cell.
+    fn page_ref(page: &Page) -> String;
+    /// The target of a data type's or interface's page, for [`Markup::link`], from a page one
+    /// folder below the root.
+    fn page_target(page: &Page) -> String;
     /// A data port peer as (text, target).
-    fn port_peer(cat: &Catalog, r: &PortRef) -> (String, String);
+    fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)>;
     /// A service interface peer as (text, target).
-    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> (String, String);
+    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)>;
 }
 
 /// Facts as a two-column table (label, value).
@@ -161,9 +158,13 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                     Some(PortDirection::Out) => M::esc(lang.t("out")),
                     _ => esc_opt::<M>(&port.port_type),
                 };
-                let dt = port.type_.as_deref().and_then(|t| cat.data_type(t));
+                let dt = port
+                    .type_
+                    .as_deref()
+                    .and_then(|t| cat.data_type_index(t))
+                    .map(|ti| cat.data_type_page(ti));
                 let ty = match dt {
-                    Some(t) => M::type_ref(t),
+                    Some(page) => M::page_ref(page),
                     None => esc_opt::<M>(&port.type_),
                 };
                 let desc = port
@@ -174,9 +175,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                 let peers: Vec<(String, String)> = cat
                     .data_port_peers(ci, pi)
                     .iter()
-                    .map(|r| M::port_peer(cat, r))
+                    .filter_map(|r| M::port_peer(cat, r))
                     .collect();
-                let rest = dt.map(M::type_target);
+                let rest = dt.map(M::page_target);
                 vec![
                     M::anchored(c, &c.anchors.data_ports[pi], &esc_opt::<M>(&port.name)),
                     dir,
@@ -228,9 +229,13 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                         Some(Direction::Required) => M::esc(lang.t("required")),
                         None => esc_opt::<M>(&i.direction),
                     };
-                    let it = i.type_.as_deref().and_then(|t| cat.interface(t));
+                    let it = i
+                        .type_
+                        .as_deref()
+                        .and_then(|t| cat.interface_index_of(t))
+                        .map(|ii| cat.interface_page(ii));
                     let ty = match it {
-                        Some(t) => M::iface_ref(t),
+                        Some(page) => M::page_ref(page),
                         None => esc_opt::<M>(&i.type_),
                     };
                     let desc = i
@@ -241,9 +246,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                     let peers: Vec<(String, String)> = cat
                         .interface_peers(ci, si, ii)
                         .iter()
-                        .map(|r| M::iface_peer(cat, r))
+                        .filter_map(|r| M::iface_peer(cat, r))
                         .collect();
-                    let rest = it.map(M::iface_target);
+                    let rest = it.map(M::page_target);
                     vec![
                         M::anchored(c, &c.anchors.interfaces[si][ii], &esc_opt::<M>(&i.name)),
                         dir,
@@ -404,14 +409,15 @@ pub fn type_index_table<M: Markup>(
     out: &mut String,
     cat: &Catalog,
     lang: Lang,
-    name: impl Fn(&DataType) -> String,
+    name: impl Fn(&Page) -> String,
 ) {
     let rows: Vec<Vec<String>> = cat
         .data_types
         .iter()
-        .map(|t| {
+        .enumerate()
+        .map(|(ti, t)| {
             vec![
-                name(t),
+                name(cat.data_type_page(ti)),
                 t.producers.len().to_string(),
                 t.consumers.len().to_string(),
                 t.others.len().to_string(),
@@ -436,13 +442,14 @@ pub fn interface_index_table<M: Markup>(
     out: &mut String,
     cat: &Catalog,
     lang: Lang,
-    name: impl Fn(&InterfaceType) -> String,
+    name: impl Fn(&Page) -> String,
 ) {
     let rows: Vec<Vec<String>> = cat
         .interfaces
         .iter()
-        .map(|t| {
-            let mut cell = name(t);
+        .enumerate()
+        .map(|(ii, t)| {
+            let mut cell = name(cat.interface_page(ii));
             if t.is_unprovided() {
                 cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
             }

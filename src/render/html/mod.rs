@@ -16,7 +16,7 @@ pub mod svg;
 
 use super::facts::{self, Fact, FactKind};
 use super::{RenderContext, Renderer, SiteOptions};
-use crate::catalog::{Catalog, Component, Facet, InterfaceRef, PortRef};
+use crate::catalog::{Catalog, Facet, InterfaceRef, PageKind, PortRef};
 use crate::i18n::Lang;
 use crate::model::{non_empty, ActionKind, Direction, ExtraKind, PortDirection};
 use crate::output::Sink;
@@ -316,6 +316,8 @@ struct Site<'a> {
     opts: &'a SiteOptions,
     lang: Lang,
     summaries: Vec<ComponentSummary>,
+    /// The category facet of each component ([`Catalog::category_of_each`]).
+    category_of: Vec<usize>,
 }
 
 fn dir_label(
@@ -345,31 +347,39 @@ impl<'a> Site<'a> {
     }
 
     fn component_path(&self, ci: usize) -> String {
-        format!("components/{}.html", self.catalog.components[ci].slug)
+        self.catalog.component_page(ci).path("html")
     }
 
-    fn port_link(&self, root: &str, r: &PortRef) -> PortUse {
-        let c = &self.catalog.components[r.component];
-        let port = &c.profile.data_ports[r.port];
-        let href = format!("{root}{}", self.component_path(r.component));
-        PortUse {
+    /// The position of a referenced component, for [`others_than`] (refs are in catalogue
+    /// order).
+    fn position(&self, id: &str) -> usize {
+        self.catalog.component_index(id).unwrap_or(usize::MAX)
+    }
+
+    fn port_link(&self, root: &str, r: &PortRef) -> Option<PortUse> {
+        let (ci, pi) = self.catalog.resolve_port(r)?;
+        let c = &self.catalog.components[ci];
+        let port = &c.profile.data_ports[pi];
+        let href = format!("{root}{}", self.component_path(ci));
+        Some(PortUse {
             component: Link {
                 text: c.display_name().into_owned(),
                 href: href.clone(),
             },
             port: Link {
                 text: port.name.as_deref().unwrap_or_default().to_string(),
-                href: format!("{href}#{}", c.anchors.data_ports[r.port]),
+                href: format!("{href}#{}", c.anchors.data_ports[pi]),
             },
-        }
+        })
     }
 
-    fn iface_link(&self, root: &str, r: &InterfaceRef) -> PortUse {
-        let c = &self.catalog.components[r.component];
-        let sp = &c.profile.service_ports[r.port];
-        let i = &sp.interfaces[r.interface];
-        let href = format!("{root}{}", self.component_path(r.component));
-        PortUse {
+    fn iface_link(&self, root: &str, r: &InterfaceRef) -> Option<PortUse> {
+        let (ci, pi, ii) = self.catalog.resolve_interface(r)?;
+        let c = &self.catalog.components[ci];
+        let sp = &c.profile.service_ports[pi];
+        let i = &sp.interfaces[ii];
+        let href = format!("{root}{}", self.component_path(ci));
+        Some(PortUse {
             component: Link {
                 text: c.display_name().into_owned(),
                 href: href.clone(),
@@ -380,9 +390,9 @@ impl<'a> Site<'a> {
                     sp.name.as_deref().unwrap_or(""),
                     i.name.as_deref().unwrap_or("")
                 ),
-                href: format!("{href}#{}", c.anchors.interfaces[r.port][r.interface]),
+                href: format!("{href}#{}", c.anchors.interfaces[pi][ii]),
             },
-        }
+        })
     }
 
     /// The "connects to" links of a port of component `ci`: up to [`PEER_CAP`] peers of other
@@ -393,7 +403,7 @@ impl<'a> Site<'a> {
         ci: usize,
         all: &[R],
         component: impl Fn(&R) -> usize,
-        link: impl Fn(&R) -> PortUse,
+        link: impl Fn(&R) -> Option<PortUse>,
         type_ref: &Option<PortTypeRef>,
         more_key: &str,
     ) -> (Vec<Link>, Option<Link>) {
@@ -402,12 +412,12 @@ impl<'a> Site<'a> {
             .iter()
             .filter(|r| component(r) != ci)
             .take(PEER_CAP)
-            .map(|r| {
-                let u = link(r);
-                Link {
+            .filter_map(|r| {
+                let u = link(r)?;
+                Some(Link {
                     text: format!("{}.{}", u.component.text, u.port.text),
                     href: u.port.href,
-                }
+                })
             })
             .collect();
         let more = type_ref
@@ -421,7 +431,8 @@ impl<'a> Site<'a> {
         (peers, more)
     }
 
-    fn summary(&self, c: &Component) -> ComponentSummary {
+    fn summary(&self, ci: usize) -> ComponentSummary {
+        let c = &self.catalog.components[ci];
         let b = &c.profile.basic_info;
         let facet_slug = |facets: &[Facet], v: &Option<crate::model::Text>| {
             let name = non_empty(v).unwrap_or("");
@@ -431,7 +442,7 @@ impl<'a> Site<'a> {
         };
         ComponentSummary {
             name: c.display_name().into_owned(),
-            path: format!("components/{}.html", c.slug),
+            path: self.catalog.component_page(ci).path("html"),
             version: non_empty(&b.version).unwrap_or("").to_string(),
             vendor: non_empty(&b.vendor).unwrap_or("").to_string(),
             vendor_slug: facet_slug(&self.catalog.vendors, &b.vendor),
@@ -464,12 +475,20 @@ impl<'a> Site<'a> {
 
         let mut crumbs = vec![Link {
             text: self.t("catalogue").to_string(),
-            href: format!("{root}index.html"),
+            href: format!(
+                "{root}{}",
+                self.catalog.site_page(PageKind::Index).path("html")
+            ),
         }];
         let sum = &self.summaries[ci];
         crumbs.push(Link {
             text: self.facet_name(&sum.category, "no_category"),
-            href: format!("{root}categories/{}.html", sum.category_slug),
+            href: format!(
+                "{root}{}",
+                self.catalog
+                    .category_page(self.category_of[ci])
+                    .path("html")
+            ),
         });
 
         let header = fields(lang, None, facts::basic_info(c, lang));
@@ -489,8 +508,8 @@ impl<'a> Site<'a> {
                 text: t.to_string(),
                 href: self
                     .catalog
-                    .data_type(t)
-                    .map(|dt| format!("{root}types/{}.html", dt.slug)),
+                    .data_type_index(t)
+                    .map(|ti| format!("{root}{}", self.catalog.data_type_page(ti).path("html"))),
             });
             diagram_data.push(svg::DiagramDataPort {
                 side: dp.side(),
@@ -517,7 +536,7 @@ impl<'a> Site<'a> {
             let (peers, peers_more) = self.peers(
                 ci,
                 self.catalog.data_port_peers(ci, pi),
-                |r| r.component,
+                |r| self.position(&r.component),
                 |r| self.port_link(root, r),
                 &type_ref,
                 "more_on_type_page",
@@ -553,10 +572,9 @@ impl<'a> Site<'a> {
                 };
                 let type_ref = non_empty(&i.type_).map(|t| PortTypeRef {
                     text: t.to_string(),
-                    href: self
-                        .catalog
-                        .interface(t)
-                        .map(|it| format!("{root}interfaces/{}.html", it.slug)),
+                    href: self.catalog.interface_index_of(t).map(|ii| {
+                        format!("{root}{}", self.catalog.interface_page(ii).path("html"))
+                    }),
                 });
                 diagram_ifaces.push(svg::DiagramInterface {
                     provided: i.direction_kind() == Some(Direction::Provided),
@@ -574,7 +592,7 @@ impl<'a> Site<'a> {
                 let (peers, peers_more) = self.peers(
                     ci,
                     self.catalog.interface_peers(ci, si, ii),
-                    |r| r.component,
+                    |r| self.position(&r.component),
                     |r| self.iface_link(root, r),
                     &type_ref,
                     "more_on_interface_page",
@@ -890,8 +908,11 @@ impl HtmlRenderer {
             opts,
             lang,
             summaries: Vec::new(),
+            category_of: catalog.category_of_each(),
         };
-        site.summaries = catalog.components.iter().map(|c| site.summary(c)).collect();
+        site.summaries = (0..catalog.components.len())
+            .map(|ci| site.summary(ci))
+            .collect();
         let site = site;
 
         // Compile every template once, up front (errors surface before any page is written).
@@ -972,12 +993,16 @@ impl HtmlRenderer {
             all_paths.push("sitemap.xml".into());
         }
         if let Some(base_url) = opts.base_url.as_deref().filter(|_| wanted("sitemap.xml")) {
-            let mut urls: Vec<String> = pages
+            let mut urls: Vec<String> = catalog
+                .pages()
                 .iter()
-                .map(|p| p.path.clone())
-                .filter(|p| p != "404.html")
+                .filter(|p| match p.kind {
+                    PageKind::NotFound => false,
+                    PageKind::Diagnostics => !catalog.diagnostics.is_empty(),
+                    _ => true,
+                })
+                .map(|p| p.path("html"))
                 .collect();
-            urls.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
             urls.sort();
             let base = format!("{}/", base_url.trim_end_matches('/'));
             let mut sm = String::from(
@@ -1039,7 +1064,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             name: site.facet_name(&f.name, "no_category"),
             slug: &f.slug,
             components: if full {
-                f.components.iter().map(|&i| &site.summaries[i]).collect()
+                catalog.members(f).map(|i| &site.summaries[i]).collect()
             } else {
                 Vec::new()
             },
@@ -1055,7 +1080,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         })
         .collect();
     pages.push(Page {
-        path: "index.html".into(),
+        path: catalog.site_page(PageKind::Index).path("html"),
         template: "index.html",
         context: PageContext::Ready(minijinja::context! {
             root => "",
@@ -1071,30 +1096,41 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
     });
 
     // Category and vendor pages.
-    for (dir, facets, key, empty_key) in [
+    type PageOf = fn(&Catalog, usize) -> &crate::catalog::Page;
+    for (dir, facets, key, empty_key, index_kind, page_of) in [
         (
             "categories",
             &catalog.categories,
             "categories",
             "no_category",
+            PageKind::Categories,
+            Catalog::category_page as PageOf,
         ),
-        ("vendors", &catalog.vendors, "vendors", "no_vendor"),
+        (
+            "vendors",
+            &catalog.vendors,
+            "vendors",
+            "no_vendor",
+            PageKind::Vendors,
+            Catalog::vendor_page as PageOf,
+        ),
     ] {
         let root = "../";
         let list: Vec<(Link, usize)> = facets
             .iter()
-            .map(|f| {
+            .enumerate()
+            .map(|(fi, f)| {
                 (
                     Link {
                         text: site.facet_name(&f.name, empty_key),
-                        href: format!("{}.html", f.slug),
+                        href: page_of(catalog, fi).file_name("html"),
                     },
                     f.components.len(),
                 )
             })
             .collect();
         pages.push(Page {
-            path: format!("{dir}/index.html"),
+            path: catalog.site_page(index_kind).path("html"),
             template: "facets.html",
             context: PageContext::Ready(minijinja::context! {
                 root => root,
@@ -1104,15 +1140,15 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 facets => ctx(&list),
             }),
         });
-        for f in facets.iter() {
+        for (fi, f) in facets.iter().enumerate() {
             pages.push(Page {
-                path: format!("{dir}/{}.html", f.slug),
+                path: page_of(catalog, fi).path("html"),
                 template: "facet.html",
                 context: PageContext::Lazy(Box::new(move || {
                     let name = site.facet_name(&f.name, empty_key);
                     let crumbs = crumbs_section(lang, root, key);
                     let comps: Vec<&ComponentSummary> =
-                        f.components.iter().map(|&i| &site.summaries[i]).collect();
+                        catalog.members(f).map(|i| &site.summaries[i]).collect();
                     minijinja::context! {
                         root => root,
                         title => page_title(site, &name),
@@ -1143,9 +1179,10 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         let rows: Vec<TypeRow> = catalog
             .data_types
             .iter()
-            .map(|t| TypeRow {
+            .enumerate()
+            .map(|(ti, t)| TypeRow {
                 name: t.name.clone(),
-                href: format!("{}.html", t.slug),
+                href: catalog.data_type_page(ti).file_name("html"),
                 spellings: t
                     .spellings
                     .iter()
@@ -1158,7 +1195,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             })
             .collect();
         pages.push(Page {
-            path: "types/index.html".into(),
+            path: catalog.site_page(PageKind::DataTypes).path("html"),
             template: "types.html",
             context: PageContext::Ready(minijinja::context! {
                 root => root,
@@ -1167,14 +1204,14 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 types => ctx(&rows),
             }),
         });
-        for t in &catalog.data_types {
+        for (ti, t) in catalog.data_types.iter().enumerate() {
             pages.push(Page {
-                path: format!("types/{}.html", t.slug),
+                path: catalog.data_type_page(ti).path("html"),
                 template: "type.html",
                 context: PageContext::Lazy(Box::new(move || {
                     let crumbs = crumbs_section(lang, root, "data_types");
                     let uses = |v: &[PortRef]| -> Vec<PortUse> {
-                        v.iter().map(|r| site.port_link(root, r)).collect()
+                        v.iter().filter_map(|r| site.port_link(root, r)).collect()
                     };
                     minijinja::context! {
                         root => root,
@@ -1186,8 +1223,8 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                         def => ctx(&crate::render::idl_view::definition(catalog, &t.name)),
                         contained_in => ctx(&t.contained_in.iter().map(|n| Link {
                             href: catalog
-                                .data_type(n)
-                                .map(|c| format!("{}.html", c.slug))
+                                .data_type_index(n)
+                                .map(|c| catalog.data_type_page(c).file_name("html"))
                                 .unwrap_or_default(),
                             text: n.clone(),
                         }).collect::<Vec<_>>()),
@@ -1214,16 +1251,17 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         let rows: Vec<IfRow> = catalog
             .interfaces
             .iter()
-            .map(|t| IfRow {
+            .enumerate()
+            .map(|(ii, t)| IfRow {
                 name: t.name.clone(),
-                href: format!("{}.html", t.slug),
+                href: catalog.interface_page(ii).file_name("html"),
                 providers: t.providers.len(),
                 requirers: t.requirers.len(),
                 unprovided: t.is_unprovided(),
             })
             .collect();
         pages.push(Page {
-            path: "interfaces/index.html".into(),
+            path: catalog.site_page(PageKind::Interfaces).path("html"),
             template: "interfaces.html",
             context: PageContext::Ready(minijinja::context! {
                 root => root,
@@ -1232,14 +1270,14 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 interfaces => ctx(&rows),
             }),
         });
-        for t in &catalog.interfaces {
+        for (ii, t) in catalog.interfaces.iter().enumerate() {
             pages.push(Page {
-                path: format!("interfaces/{}.html", t.slug),
+                path: catalog.interface_page(ii).path("html"),
                 template: "interface.html",
                 context: PageContext::Lazy(Box::new(move || {
                     let crumbs = crumbs_section(lang, root, "interfaces");
                     let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
-                        v.iter().map(|r| site.iface_link(root, r)).collect()
+                        v.iter().filter_map(|r| site.iface_link(root, r)).collect()
                     };
                     minijinja::context! {
                         root => root,
@@ -1261,7 +1299,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
 
     // Search, 404 and diagnostics.
     pages.push(Page {
-        path: "search.html".into(),
+        path: catalog.site_page(PageKind::Search).path("html"),
         template: "search.html",
         context: PageContext::Ready(minijinja::context! {
             root => "",
@@ -1277,7 +1315,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         .map(|b| format!("{}/", b.trim_end_matches('/')))
         .unwrap_or_default();
     pages.push(Page {
-        path: "404.html".into(),
+        path: catalog.site_page(PageKind::NotFound).path("html"),
         template: "404.html",
         context: PageContext::Ready(minijinja::context! {
             root => root404,
@@ -1308,7 +1346,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             })
             .collect();
         pages.push(Page {
-            path: "diagnostics.html".into(),
+            path: catalog.site_page(PageKind::Diagnostics).path("html"),
             template: "diagnostics.html",
             context: PageContext::Ready(minijinja::context! {
                 root => "",
