@@ -155,8 +155,9 @@ enum Deny {
 
 #[derive(Args)]
 struct DiffArgs {
-    /// The old side: a directory, a profile file, or REV:PATH (a git revision and a path in the
-    /// current repository, e.g. `origin/main:components`).
+    /// The old side: a directory, a profile file, a catalog.json written by `rtcdoc build
+    /// --format json`, or REV:PATH (a git revision and a path in the current repository, e.g.
+    /// `origin/main:components`).
     #[arg(required_unless_present = "explain")]
     old: Option<String>,
     /// The new side, like OLD.

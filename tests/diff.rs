@@ -896,11 +896,20 @@ fn usage_and_input_errors_exit_2() {
     let out = rtcdoc(&["diff", "old", "missing"], dir.path());
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("NEW `missing` does not exist"));
-    write(dir.path(), "site/catalog.json", "{\"formatVersion\": 1}");
+    write(
+        dir.path(),
+        "site/catalog.json",
+        "{\"generator\": \"rtcdoc 0.1.0\", \"formatVersion\": 1}",
+    );
     let out = rtcdoc(&["diff", "site/catalog.json", "old"], dir.path());
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr)
-        .contains("catalog.json input needs format 2 (coming with the catalogue redesign)"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("OLD `site/catalog.json`")
+            && err.contains("catalog.json format 1 (written by rtcdoc 0.1.0)")
+            && err.contains("build the catalogue again"),
+        "{err}"
+    );
     let out = rtcdoc(&["diff", "old"], dir.path());
     assert_eq!(out.status.code(), Some(2), "NEW is required");
     std::fs::create_dir_all(dir.path().join("empty")).expect("mkdir");
@@ -1250,4 +1259,57 @@ fn the_markdown_report_stays_below_the_comment_limit() {
         md.contains("more component(s): run `rtcdoc diff` locally"),
         "the rest is counted"
     );
+}
+
+/// A catalog.json written by `rtcdoc build --format json` is a side like the profiles it was
+/// built from: against them nothing changed; against a changed profile the change is found,
+/// with the same code, path and exit status as from the directory.
+#[test]
+fn catalog_json_is_a_side() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/RTC.xml", BASE);
+    let out = rtcdoc(
+        &["build", "old", "--format", "json", "-o", "site", "-q"],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let same = rtcdoc(&["diff", "site/catalog.json", "old"], dir.path());
+    assert_eq!(
+        same.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&same.stderr)
+    );
+    let new = BASE.replace("RTC::TimedPose2D", "RTC::TimedPose3D");
+    assert_ne!(new, BASE, "the fixture has a TimedPose2D port");
+    write(dir.path(), "new/RTC.xml", &new);
+    let from_dir = rtcdoc(&["diff", "old", "new", "--format", "json"], dir.path());
+    let from_json = rtcdoc(
+        &["diff", "site/catalog.json", "new", "--format", "json"],
+        dir.path(),
+    );
+    assert_eq!(from_json.status.code(), Some(1));
+    assert_eq!(from_json.status.code(), from_dir.status.code());
+    let a: serde_json::Value = serde_json::from_slice(&from_dir.stdout).expect("json");
+    let b: serde_json::Value = serde_json::from_slice(&from_json.stdout).expect("json");
+    let key = |v: &serde_json::Value| -> Vec<(String, String, String)> {
+        v["changes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| {
+                (
+                    c["code"].as_str().unwrap_or("").to_string(),
+                    c["path"].as_str().unwrap_or("").to_string(),
+                    c["severity"].as_str().unwrap_or("").to_string(),
+                )
+            })
+            .collect()
+    };
+    assert!(!key(&a).is_empty());
+    assert_eq!(key(&a), key(&b));
 }

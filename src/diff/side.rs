@@ -1,5 +1,6 @@
-//! The two sides of `rtcdoc diff`: a directory (walked like `build`), one profile file, or
-//! `REV:PATH` — a path as it is in a git revision of the current repository, read with
+//! The two sides of `rtcdoc diff`: a directory (walked like `build`), one profile file, a
+//! `catalog.json` written by `rtcdoc build --format json` (format 2, read back as the catalogue
+//! it was written from), or `REV:PATH` — a path as it is in a git revision of the current repository, read with
 //! `git ls-tree` and `git cat-file` into a temporary directory, without touching the work tree
 //! or the index.
 
@@ -60,7 +61,19 @@ fn is_catalog_json(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("json"))
 }
 
-const CATALOG_JSON: &str = "catalog.json input needs format 2 (coming with the catalogue redesign); diff the profile directory the catalogue was built from instead";
+/// A side read from a `catalog.json` at `path` (`shown` as the user named it).
+fn from_catalog_json(which: &str, shown: &str, path: &Path) -> Result<build::Loaded> {
+    let bytes =
+        std::fs::read(path).with_context(|| format!("{which} `{shown}`: cannot read it"))?;
+    let read = crate::render::json::read_catalog(&bytes, shown)
+        .with_context(|| format!("{which} `{shown}`"))?;
+    let files = read.catalog.components.len();
+    Ok(build::Loaded {
+        catalog: read.catalog,
+        skipped: Vec::new(),
+        files,
+    })
+}
 
 /// Loads one side (`which` is `OLD` or `NEW`, for messages).
 pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
@@ -73,7 +86,13 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                 );
             }
             if p.is_file() && is_catalog_json(p) {
-                bail!("{which} `{}`: {CATALOG_JSON}", p.display());
+                // Its files are relative to the input it was built from, which it does not
+                // name: they are shown as the catalogue has them.
+                return Ok(Side {
+                    loaded: from_catalog_json(which, &p.display().to_string(), p)?,
+                    root: PathBuf::new(),
+                    _temp: None,
+                });
             }
             let loaded =
                 build::load(p, opts).with_context(|| format!("{which} `{}`", p.display()))?;
@@ -99,7 +118,12 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                 ObjectKind::Tree => (temp.path().to_path_buf(), PathBuf::from(path)),
                 ObjectKind::Blob(name) => {
                     if is_catalog_json(Path::new(&name)) {
-                        bail!("{which} `{object}`: {CATALOG_JSON}");
+                        let loaded = from_catalog_json(which, &object, &temp.path().join(&name))?;
+                        return Ok(Side {
+                            loaded,
+                            root: PathBuf::new(),
+                            _temp: Some(temp),
+                        });
                     }
                     (
                         temp.path().join(&name),
