@@ -1,0 +1,1238 @@
+//! Pass 3 of the XML reader: the element tree → [`Profile`]. Whatever the specification does not
+//! define for a node is kept in that node's `extra` list and reported as a warning.
+
+use super::*;
+// ---------------------------------------------------------------------------------------------
+// Pass 3: tree → model
+// ---------------------------------------------------------------------------------------------
+
+pub(super) struct Mapper<'f> {
+    pub(super) file: &'f str,
+    pub(super) diags: Vec<Diagnostic>,
+    /// Empty unknown attributes (wasanbon writes many): summarised in one note.
+    pub(super) empties: crate::parse::dialect::EmptyUnknowns,
+    /// Values read under an older spelling, for [`Profile::written_as`].
+    pub(super) written_as: Vec<WrittenAs>,
+}
+
+impl Mapper<'_> {
+    pub(super) fn warn(&mut self, pos: Pos, msg: String) {
+        self.diags
+            .push(Diagnostic::warning(codes::UNKNOWN, self.file, msg).at(pos));
+    }
+
+    /// An attribute the spec does not define on `on`. An empty one (`rtcDoc:license=""` on a
+    /// configuration doc, as wasanbon writes them by the dozen) says nothing: it is kept, and
+    /// counted for the profile's one summary note instead of a warning of its own.
+    pub(super) fn unknown_attr(&mut self, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
+        if a.value.trim().is_empty() {
+            self.empties.add(&a.qname);
+            extra.push(attr_extra(a));
+            return;
+        }
+        self.warn(
+            a.pos,
+            format!(
+                "unknown attribute `{}`{} on {on}; kept as an extra property",
+                a.qname,
+                foreign(&a.ns)
+            ),
+        );
+        extra.push(attr_extra(a));
+    }
+
+    /// An element the spec does not define inside `on` (kept with its whole subtree).
+    pub(super) fn unknown_elem(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+        self.warn(
+            n.pos,
+            format!(
+                "unknown element `{}`{} in {on}; kept as an extra property",
+                n.qname,
+                foreign(&n.ns)
+            ),
+        );
+        extra.push(node_extra(n));
+    }
+
+    /// A second occurrence of an element or attribute allowed once.
+    pub(super) fn repeated_elem(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+        self.warn(
+            n.pos,
+            format!(
+                "repeated element `{}` in {on}; only the first is used, this one is kept as an extra property",
+                n.qname
+            ),
+        );
+        extra.push(node_extra(n));
+    }
+
+    /// Sets a known attribute's field; a duplicate (same local name in two namespaces) goes
+    /// to `extra`.
+    pub(super) fn set(
+        &mut self,
+        slot: &mut Option<Text>,
+        a: &Attr,
+        on: &str,
+        extra: &mut Vec<Extra>,
+    ) {
+        if slot.is_some() {
+            self.warn(
+                a.pos,
+                format!(
+                    "repeated attribute `{}` on {on}; the first is used, this one is kept as an extra property",
+                    a.qname
+                ),
+            );
+            extra.push(attr_extra(a));
+        } else {
+            *slot = Some((&*a.value).into());
+        }
+    }
+
+    /// Non-whitespace text directly inside an element that holds no text.
+    pub(super) fn stray_text(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+        if n.has_text() {
+            let pos = n.text_pos.unwrap_or(n.pos);
+            self.warn(
+                pos,
+                format!("unexpected text in {on}; kept as an extra property"),
+            );
+            extra.push(Extra {
+                kind: ExtraKind::Element,
+                name: "#text".into(),
+                namespace: None,
+                value: Some(n.text.as_str().into()),
+                children: Vec::new(),
+                pos,
+            });
+        }
+    }
+
+    /// Text content of a text-only element (`VersionUpLogs`, `cpus`, `Literal`, …). Its
+    /// attributes and child elements are unknown and go to `extra` of the owning node.
+    pub(super) fn text_of(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) -> Text {
+        if !n.attrs.is_empty() || !n.children.is_empty() {
+            let what = format!("`{}` of {on}", n.qname);
+            for a in &n.attrs {
+                self.unknown_attr(a, &what, extra);
+            }
+            for c in &n.children {
+                self.unknown_elem(c, &what, extra);
+            }
+        }
+        n.text.as_str().into()
+    }
+
+    /// Reports every attribute of an element that has none defined.
+    pub(super) fn no_attrs(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+        for a in &n.attrs {
+            self.unknown_attr(a, on, extra);
+        }
+    }
+}
+
+pub(super) fn foreign(ns: &Ns) -> String {
+    match ns {
+        Ns::Other(uri) => format!(" (namespace {uri})"),
+        _ => String::new(),
+    }
+}
+
+pub(super) fn attr_extra(a: &Attr) -> Extra {
+    Extra {
+        kind: ExtraKind::Attribute,
+        name: (&*a.qname).into(),
+        namespace: a.ns.uri(),
+        value: Some((&*a.value).into()),
+        children: Vec::new(),
+        pos: a.pos,
+    }
+}
+
+/// An unknown element with its whole subtree: attributes first, then child elements.
+pub(super) fn node_extra(n: &Node) -> Extra {
+    let mut children: Vec<Extra> = n.attrs.iter().map(attr_extra).collect();
+    children.extend(n.children.iter().map(node_extra));
+    Extra {
+        kind: ExtraKind::Element,
+        name: (&*n.qname).into(),
+        namespace: n.ns.uri(),
+        value: n.has_text().then(|| n.text.as_str().into()),
+        children,
+        pos: n.pos,
+    }
+}
+
+impl Mapper<'_> {
+    /// Records that attribute `a` was read as `field` of `node` under an older spelling.
+    pub(super) fn alias(&mut self, node: &str, field: &str, a: &Attr, dialect: &'static str) {
+        self.written_as.push(WrittenAs {
+            field: compact_str::format_compact!("{node}.{field}"),
+            written_as: (&*a.qname).into(),
+            dialect,
+            pos: a.pos,
+        });
+    }
+}
+
+/// Records the position of a known attribute in `pos` (by its spec field name).
+pub(super) fn note_pos(pos: &mut AttrPos, a: &Attr) {
+    if let Some(f) = a.key().and_then(field_name) {
+        pos.note(f, a.pos);
+    }
+}
+
+/// Non-empty text of a text element (whitespace-only counts as empty).
+pub(super) fn non_blank(s: &str) -> Option<Text> {
+    (!s.trim().is_empty()).then(|| s.into())
+}
+
+/// spec 2.2 `rtc_profile`, XSD 6.1 `RtcProfile`.
+pub(super) fn map_profile(m: &mut Mapper, n: &Node) -> Profile {
+    let on = "profile";
+    let mut p = Profile {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        note_pos(&mut p.attr_pos, a);
+        let slot = match a.key() {
+            Some("id") => &mut p.id,
+            Some("version") => &mut p.version,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    let mut seen_basic = false;
+    for c in &n.children {
+        match c.key() {
+            Some("BasicInfo") if !seen_basic => {
+                seen_basic = true;
+                p.basic_info = map_basic_info(m, c);
+            }
+            Some("Actions") if p.actions_pos.is_none() => {
+                p.actions_pos = Some(c.pos);
+                map_actions(m, c, &mut p.actions, &mut extra);
+            }
+            Some("ConfigurationSet") if p.configuration_set.is_none() => {
+                p.configuration_set = Some(map_configuration_set(m, c));
+            }
+            Some("DataPorts") => p.data_ports.push(map_data_port(m, c)),
+            Some("ServicePorts") => p.service_ports.push(map_service_port(m, c)),
+            Some("Parameters") => p.parameters.push(map_parameter(m, c)),
+            Some("Language") if p.language.is_none() => p.language = Some(map_language(m, c)),
+            Some("BasicInfo" | "Actions" | "ConfigurationSet" | "Language") => {
+                m.repeated_elem(c, on, &mut extra)
+            }
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    p.extra = extra;
+    p
+}
+
+/// spec 2.3.2 basic info, 2.4.1 doc, 2.5.1 ext.
+pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
+    let on = "basic info";
+    let mut b = BasicInfo {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        note_pos(&mut b.attr_pos, a);
+        let slot = match a.key() {
+            Some("name") => &mut b.name,
+            Some("componentType") => &mut b.component_type,
+            Some("activityType") => &mut b.activity_type,
+            Some("componentKind") => &mut b.component_kind,
+            Some("rtcType") => &mut b.rtc_type,
+            Some("category") => &mut b.category,
+            Some("description") => &mut b.description,
+            Some("executionRate") => &mut b.execution_rate,
+            Some("executionType") => &mut b.execution_type,
+            Some("maxInstances") => &mut b.max_instances,
+            Some("vendor") => &mut b.vendor,
+            Some("version") => &mut b.version,
+            Some("abstract") => &mut b.abstract_,
+            Some("hardwareProfile") => &mut b.hardware_profile,
+            Some("creationDate") => &mut b.creation_date,
+            Some("updateDate") => &mut b.update_date,
+            Some("comment") => &mut b.comment,
+            Some("saveProject") => &mut b.save_project,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if b.doc.is_none() => b.doc = Some(map_basic_doc(m, c)),
+            // XSD 6.3 `VersionUpLogs`; the 9.2 sample writes `VersionUpLog`. Empty ones are
+            // common in real files and say nothing.
+            Some("VersionUpLogs" | "VersionUpLog") => {
+                if let Some(t) = non_blank(&m.text_of(c, on, &mut extra)) {
+                    b.version_up_logs.push(t);
+                }
+            }
+            Some("Properties") => b.properties.push(map_property(m, c)),
+            Some("Doc") => m.repeated_elem(c, on, &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    b.extra = extra;
+    b
+}
+
+/// spec 2.4.2 `doc_basic`.
+pub(super) fn map_basic_doc(m: &mut Mapper, n: &Node) -> BasicDoc {
+    let on = "basic info doc";
+    let mut d = BasicDoc {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("description") => &mut d.description,
+            Some("inout") => &mut d.inout,
+            Some("algorithm") => &mut d.algorithm,
+            Some("creator") => &mut d.creator,
+            Some("license") => &mut d.license,
+            Some("reference") => &mut d.reference,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    leaf_children(m, n, on, &mut extra);
+    d.extra = extra;
+    d
+}
+
+/// Child elements and text of a node that has none defined.
+pub(super) fn leaf_children(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+    for c in &n.children {
+        m.unknown_elem(c, on, extra);
+    }
+    m.stray_text(n, on, extra);
+}
+
+/// spec 2.3.3 actions: the 14 callbacks, kept in document order. Unknown content of the
+/// `Actions` element itself goes to the profile's extras.
+pub(super) fn map_actions(
+    m: &mut Mapper,
+    n: &Node,
+    actions: &mut Vec<Action>,
+    extra: &mut Vec<Extra>,
+) {
+    let on = "actions";
+    m.no_attrs(n, on, extra);
+    for c in &n.children {
+        let kind = c.key().and_then(ActionKind::from_xml_name);
+        match kind {
+            Some(k) if actions.iter().all(|a| a.kind != k) => actions.push(map_action(m, c, k)),
+            Some(_) => m.repeated_elem(c, on, extra),
+            None => m.unknown_elem(c, on, extra),
+        }
+    }
+    m.stray_text(n, on, extra);
+}
+
+/// spec 2.3.4 `action_status`, 2.4.3 `doc_action`.
+pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
+    let on = format!("action {}", kind.xml_name());
+    let mut act = Action {
+        kind,
+        implemented: None,
+        doc: None,
+        pos: n.pos,
+        extra: Vec::new(),
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        match a.key() {
+            Some("implemented") => m.set(&mut act.implemented, a, &on, &mut extra),
+            _ => m.unknown_attr(a, &on, &mut extra),
+        }
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if act.doc.is_none() => {
+                let don = format!("{on} doc");
+                let mut d = ActionDoc {
+                    pos: c.pos,
+                    ..Default::default()
+                };
+                let mut dx = Vec::new();
+                for a in &c.attrs {
+                    let slot = match a.key() {
+                        Some("description") => &mut d.description,
+                        Some("preCondition") => &mut d.pre_condition,
+                        Some("postCondition") => &mut d.post_condition,
+                        _ => {
+                            m.unknown_attr(a, &don, &mut dx);
+                            continue;
+                        }
+                    };
+                    m.set(slot, a, &don, &mut dx);
+                }
+                leaf_children(m, c, &don, &mut dx);
+                d.extra = dx;
+                act.doc = Some(d);
+            }
+            Some("Doc") => m.repeated_elem(c, &on, &mut extra),
+            _ => m.unknown_elem(c, &on, &mut extra),
+        }
+    }
+    m.stray_text(n, &on, &mut extra);
+    act.extra = extra;
+    act
+}
+
+/// spec 2.3.5 `configuration_set`.
+pub(super) fn map_configuration_set(m: &mut Mapper, n: &Node) -> ConfigurationSet {
+    let on = "configuration set";
+    let mut cs = ConfigurationSet {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    m.no_attrs(n, on, &mut extra);
+    for c in &n.children {
+        match c.key() {
+            Some("Configuration") => cs.configurations.push(map_configuration(m, c)),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    cs.extra = extra;
+    cs
+}
+
+/// spec 2.3.6 `configuration`, 2.4.4 doc, 2.5.2 ext.
+pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
+    let on = "configuration";
+    let mut cf = Configuration {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    let mut aliases = Vec::new();
+    for a in &n.attrs {
+        note_pos(&mut cf.attr_pos, a);
+        let slot = match a.key() {
+            Some("name") => &mut cf.name,
+            Some("type") => &mut cf.type_,
+            Some("defaultValue") => &mut cf.default_value,
+            Some("unit") => &mut cf.unit,
+            Some("comment") => &mut cf.comment,
+            Some("variableName") => &mut cf.variable_name,
+            // RTCBuilder 0.1 / rtc-template: `varname` is the variable name.
+            Some("varname") => {
+                aliases.push(("variableName", a));
+                &mut cf.variable_name
+            }
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if cf.doc.is_none() => {
+                let don = "configuration doc";
+                let mut d = ConfigurationDoc {
+                    pos: c.pos,
+                    ..Default::default()
+                };
+                let mut dx = Vec::new();
+                for a in &c.attrs {
+                    let slot = match a.key() {
+                        Some("dataname") => &mut d.dataname,
+                        Some("defaultValue") => &mut d.default_value,
+                        Some("description") => &mut d.description,
+                        Some("unit") => &mut d.unit,
+                        Some("range") => &mut d.range,
+                        Some("constraint") => &mut d.constraint,
+                        _ => {
+                            m.unknown_attr(a, don, &mut dx);
+                            continue;
+                        }
+                    };
+                    m.set(slot, a, don, &mut dx);
+                }
+                leaf_children(m, c, don, &mut dx);
+                d.extra = dx;
+                cf.doc = Some(d);
+            }
+            Some("Properties") => cf.properties.push(map_property(m, c)),
+            Some("Constraint") if cf.constraint.is_none() => {
+                cf.constraint = Some(map_constraint(m, c))
+            }
+            Some("Doc" | "Constraint") => m.repeated_elem(c, on, &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    let node = format!("configuration {}", cf.name.as_deref().unwrap_or(""));
+    for (field, a) in aliases {
+        m.alias(&node, field, a, crate::parse::dialect::RTCBUILDER_01);
+    }
+    cf.extra = extra;
+    cf
+}
+
+/// spec 2.5 `property` (`rtcExt:Properties`).
+pub(super) fn map_property(m: &mut Mapper, n: &Node) -> Property {
+    let on = "property";
+    let mut p = Property {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("name") => &mut p.name,
+            Some("value") => &mut p.value,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    leaf_children(m, n, on, &mut extra);
+    p.extra = extra;
+    p
+}
+
+/// spec 2.3.7 `dataport`, 2.4.5 doc, 2.5.3 ext; FSM `EventPort`s carry `Event` children.
+pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
+    let on = "data port";
+    let mut d = DataPort {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    let mut aliases = Vec::new();
+    for a in &n.attrs {
+        note_pos(&mut d.attr_pos, a);
+        let slot = match a.key() {
+            Some("portType") => &mut d.port_type,
+            Some("name") => &mut d.name,
+            Some("type") => &mut d.type_,
+            Some("idlFile") => &mut d.idl_file,
+            Some("interfaceType") => &mut d.interface_type,
+            Some("dataflowType") => &mut d.dataflow_type,
+            Some("subscriptionType") => &mut d.subscription_type,
+            // RTCBuilder 0.1 (2009) misspells it.
+            Some("subscriprionType") => {
+                aliases.push(("subscriptionType", a));
+                &mut d.subscription_type
+            }
+            Some("unit") => &mut d.unit,
+            Some("comment") => &mut d.comment,
+            Some("variableName") => &mut d.variable_name,
+            // RTCBuilder 0.1: `rtcExt:varname` is the variable name.
+            Some("varname") => {
+                aliases.push(("variableName", a));
+                &mut d.variable_name
+            }
+            Some("position") => &mut d.position,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if d.doc.is_none() => {
+                d.doc = Some(map_data_port_doc(m, c, "data port doc"))
+            }
+            Some("Properties") => d.properties.push(map_property(m, c)),
+            Some("Constraint") if d.constraint.is_none() => {
+                d.constraint = Some(map_constraint(m, c))
+            }
+            Some("Event") => d.events.push(map_event(m, c)),
+            Some("Doc" | "Constraint") => m.repeated_elem(c, on, &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    let node = format!("dataPort {}", d.name.as_deref().unwrap_or(""));
+    for (field, a) in aliases {
+        m.alias(&node, field, a, crate::parse::dialect::RTCBUILDER_01);
+    }
+    d.extra = extra;
+    d
+}
+
+/// spec 2.4.6 `doc_dataport` (also used for FSM event docs, `rtcDoc:event_doc`).
+pub(super) fn map_data_port_doc(m: &mut Mapper, n: &Node, on: &str) -> DataPortDoc {
+    let mut d = DataPortDoc {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("description") => &mut d.description,
+            Some("type") => &mut d.type_,
+            Some("number") => &mut d.number,
+            Some("semantics") => &mut d.semantics,
+            Some("unit") => &mut d.unit,
+            // RTCBuilder writes `occerrence`: accepted silently as the same field.
+            Some("occurrence" | "occerrence") => &mut d.occurrence,
+            Some("operation") => &mut d.operation,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    leaf_children(m, n, on, &mut extra);
+    d.extra = extra;
+    d
+}
+
+/// An FSM event of an `EventPort` (RTCBuilder 2.x; not in spec v0.2).
+pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
+    let on = "event";
+    let mut e = Event {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("name") => &mut e.name,
+            Some("type") => &mut e.type_,
+            Some("source") => &mut e.source,
+            Some("target") => &mut e.target,
+            Some("condition") => &mut e.condition,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if e.doc.is_none() => e.doc = Some(map_data_port_doc(m, c, "event doc")),
+            Some("Doc") => m.repeated_elem(c, on, &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    e.extra = extra;
+    e
+}
+
+/// spec 2.3.8 `serviceport`, 2.4.7 doc, 2.5.4 ext.
+pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
+    let on = "service port";
+    let mut s = ServicePort {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        note_pos(&mut s.attr_pos, a);
+        let slot = match a.key() {
+            Some("name") => &mut s.name,
+            Some("comment") => &mut s.comment,
+            Some("position") => &mut s.position,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if s.doc.is_none() => {
+                let don = "service port doc";
+                let mut d = ServicePortDoc {
+                    pos: c.pos,
+                    ..Default::default()
+                };
+                let mut dx = Vec::new();
+                for a in &c.attrs {
+                    let slot = match a.key() {
+                        Some("description") => &mut d.description,
+                        Some("ifdescription") => &mut d.ifdescription,
+                        _ => {
+                            m.unknown_attr(a, don, &mut dx);
+                            continue;
+                        }
+                    };
+                    m.set(slot, a, don, &mut dx);
+                }
+                leaf_children(m, c, don, &mut dx);
+                d.extra = dx;
+                s.doc = Some(d);
+            }
+            Some("Properties") => s.properties.push(map_property(m, c)),
+            Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
+            Some("TransMethods") => {
+                // spec 2.3.10 `transmission_method`
+                let ton = "transmission method";
+                let mut t = TransMethod {
+                    pos: c.pos,
+                    ..Default::default()
+                };
+                let mut tx = Vec::new();
+                for a in &c.attrs {
+                    match a.key() {
+                        Some("kind") => m.set(&mut t.kind, a, ton, &mut tx),
+                        _ => m.unknown_attr(a, ton, &mut tx),
+                    }
+                }
+                leaf_children(m, c, ton, &mut tx);
+                t.extra = tx;
+                s.trans_methods.push(t);
+            }
+            Some("Doc") => m.repeated_elem(c, on, &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    s.extra = extra;
+    s
+}
+
+/// spec 2.3.9 `serviceinterface`, 2.4.8 doc, 2.5.5 ext.
+pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
+    let on = "service interface";
+    let mut s = ServiceInterface {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    let mut aliases = Vec::new();
+    for a in &n.attrs {
+        note_pos(&mut s.attr_pos, a);
+        let slot = match a.key() {
+            Some("name") => &mut s.name,
+            Some("type") => &mut s.type_,
+            Some("direction") => &mut s.direction,
+            Some("instanceName") => &mut s.instance_name,
+            Some("idlFile") => &mut s.idl_file,
+            Some("path") => &mut s.path,
+            Some("comment") => &mut s.comment,
+            Some("variableName") => &mut s.variable_name,
+            // RTCBuilder 0.1: `rtc:varname` is the variable name.
+            Some("varname") => {
+                aliases.push(("variableName", a));
+                &mut s.variable_name
+            }
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("Doc") if s.doc.is_none() => {
+                let don = "service interface doc";
+                let mut d = ServiceInterfaceDoc {
+                    pos: c.pos,
+                    ..Default::default()
+                };
+                let mut dx = Vec::new();
+                for a in &c.attrs {
+                    let slot = match a.key() {
+                        Some("description") => &mut d.description,
+                        Some("docArgument") => &mut d.doc_argument,
+                        Some("docReturn") => &mut d.doc_return,
+                        Some("docException") => &mut d.doc_exception,
+                        Some("docPreCondition") => &mut d.doc_pre_condition,
+                        Some("docPostCondition") => &mut d.doc_post_condition,
+                        _ => {
+                            m.unknown_attr(a, don, &mut dx);
+                            continue;
+                        }
+                    };
+                    m.set(slot, a, don, &mut dx);
+                }
+                leaf_children(m, c, don, &mut dx);
+                d.extra = dx;
+                s.doc = Some(d);
+            }
+            Some("Properties") => s.properties.push(map_property(m, c)),
+            Some("Doc") => m.repeated_elem(c, on, &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    let node = format!("serviceInterface {}", s.name.as_deref().unwrap_or(""));
+    for (field, a) in aliases {
+        m.alias(&node, field, a, crate::parse::dialect::RTCBUILDER_01);
+    }
+    s.extra = extra;
+    s
+}
+
+/// spec 2.3.11 `parameter`.
+pub(super) fn map_parameter(m: &mut Mapper, n: &Node) -> Parameter {
+    let on = "parameter";
+    let mut p = Parameter {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("name") => &mut p.name,
+            Some("defaultValue") => &mut p.default_value,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    leaf_children(m, n, on, &mut extra);
+    p.extra = extra;
+    p
+}
+
+/// spec 2.3.12 `language`, 2.5.6 `language_ext`.
+pub(super) fn map_language(m: &mut Mapper, n: &Node) -> Language {
+    let on = "language";
+    let mut l = Language {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        match a.key() {
+            Some("kind") => m.set(&mut l.kind, a, on, &mut extra),
+            _ => m.unknown_attr(a, on, &mut extra),
+        }
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("targets") => l.targets.push(map_target(m, c)),
+            Some(k) if crate::parse::dialect::language_element(k).is_some() => {
+                map_language_element(m, c, &mut l)
+            }
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    l.extra = extra;
+    l
+}
+
+/// RTCBuilder 0.1's `<rtc:Language>` names the language by a child element (`<rtc:Cxx
+/// rtc:arch="" rtc:os="etc"/>`, `<rtc:Python/>`, `<rtc:Java/>`) instead of `rtc:kind`: that
+/// is the kind, and the child's attributes describe the target (`os`, `arch` → cpus,
+/// `osVersion`, `langVersion`, `library` children).
+pub(super) fn map_language_element(m: &mut Mapper, c: &Node, l: &mut Language) {
+    let Some(kind) = c.key().and_then(crate::parse::dialect::language_element) else {
+        return;
+    };
+    let on = format!("language `{}`", c.qname);
+    if l.kind.is_none() {
+        l.kind = Some(kind.into());
+        m.written_as.push(WrittenAs {
+            field: "language.kind".into(),
+            written_as: (&*c.qname).into(),
+            dialect: crate::parse::dialect::RTCBUILDER_01,
+            pos: c.pos,
+        });
+    }
+    let mut t = Target {
+        pos: c.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &c.attrs {
+        match a.key() {
+            Some("os") => m.set(&mut t.os, a, &on, &mut extra),
+            Some("langVersion") => m.set(&mut t.lang_version, a, &on, &mut extra),
+            Some("other") => m.set(&mut t.other, a, &on, &mut extra),
+            Some("cpuOther") => m.set(&mut t.cpu_other, a, &on, &mut extra),
+            Some("arch" | "cpu") => {
+                if let Some(v) = non_blank(&a.value) {
+                    t.cpus.push(v);
+                }
+            }
+            Some("osVersion" | "osVersions") => {
+                if let Some(v) = non_blank(&a.value) {
+                    t.os_versions.push(v);
+                }
+            }
+            _ => m.unknown_attr(a, &on, &mut extra),
+        }
+    }
+    for lc in &c.children {
+        match lc.key() {
+            Some("library" | "libraries") if lc.attrs.is_empty() => {
+                let name = m.text_of(lc, &on, &mut extra);
+                if let Some(name) = non_blank(&name) {
+                    t.libraries.push(Library {
+                        name: Some(name),
+                        pos: lc.pos,
+                        ..Default::default()
+                    });
+                }
+            }
+            Some("library" | "libraries") => t.libraries.push(map_library(m, lc)),
+            _ => m.unknown_elem(lc, &on, &mut extra),
+        }
+    }
+    m.stray_text(c, &on, &mut extra);
+    t.extra = extra;
+    // An empty `<rtc:Cxx/>` names the language and nothing more.
+    if t != (Target {
+        pos: c.pos,
+        ..Default::default()
+    }) {
+        l.targets.push(t);
+    }
+}
+
+/// spec 2.5.7 `target_environment`.
+pub(super) fn map_target(m: &mut Mapper, n: &Node) -> Target {
+    let on = "target environment";
+    let mut t = Target {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("langVersion") => &mut t.lang_version,
+            Some("os") => &mut t.os,
+            Some("other") => &mut t.other,
+            Some("cpuOther") => &mut t.cpu_other,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    for c in &n.children {
+        match c.key() {
+            Some("osVersions") => {
+                if let Some(v) = non_blank(&m.text_of(c, on, &mut extra)) {
+                    t.os_versions.push(v);
+                }
+            }
+            Some("cpus") => {
+                if let Some(v) = non_blank(&m.text_of(c, on, &mut extra)) {
+                    t.cpus.push(v);
+                }
+            }
+            Some("libraries") => t.libraries.push(map_library(m, c)),
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    t.extra = extra;
+    t
+}
+
+/// spec 2.5.8 `library`: XSD attribute `name`, PIM `path` (accepted silently).
+pub(super) fn map_library(m: &mut Mapper, n: &Node) -> Library {
+    let on = "library";
+    let mut l = Library {
+        pos: n.pos,
+        ..Default::default()
+    };
+    let mut extra = Vec::new();
+    for a in &n.attrs {
+        let slot = match a.key() {
+            Some("name" | "path") => &mut l.name,
+            Some("version") => &mut l.version,
+            Some("other") => &mut l.other,
+            _ => {
+                m.unknown_attr(a, on, &mut extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, &mut extra);
+    }
+    leaf_children(m, n, on, &mut extra);
+    l.extra = extra;
+    l
+}
+
+// --- constraints (spec 2.3.17–2.3.41, XSD 6.1 `constraint_type`, samples 8.1) ------------------
+
+/// `Constraint` → unit | list | hash. Element names are matched case-insensitively: the 8.1
+/// samples write `PropertyIsEqualTo`, the XSD `propertyIsEqualTo`.
+pub(super) fn map_constraint(m: &mut Mapper, n: &Node) -> Constraint {
+    let on = "constraint";
+    let mut extra = Vec::new();
+    m.no_attrs(n, on, &mut extra);
+    let mut kind: Option<ConstraintKind> = None;
+    for c in &n.children {
+        let k = c.key_lower();
+        match k.as_deref() {
+            Some("constraintunittype" | "constraintlisttype" | "constrainthashtype")
+                if kind.is_some() =>
+            {
+                m.repeated_elem(c, on, &mut extra)
+            }
+            Some("constraintunittype") => kind = Some(map_unit(m, c, &mut extra)),
+            Some("constraintlisttype") => {
+                kind = Some(ConstraintKind::List {
+                    items: constraint_children(m, c, "constraint list", &mut extra),
+                })
+            }
+            Some("constrainthashtype") => {
+                kind = Some(ConstraintKind::Hash {
+                    items: constraint_children(m, c, "constraint hash", &mut extra),
+                })
+            }
+            _ => m.unknown_elem(c, on, &mut extra),
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    Constraint {
+        kind: kind.unwrap_or(ConstraintKind::Empty),
+        pos: n.pos,
+        extra,
+    }
+}
+
+/// The `Constraint` children of a list, hash, `And` or `Or`; anything else goes to `extra`.
+pub(super) fn constraint_children(
+    m: &mut Mapper,
+    n: &Node,
+    on: &str,
+    extra: &mut Vec<Extra>,
+) -> Vec<Constraint> {
+    m.no_attrs(n, on, extra);
+    let mut items = Vec::new();
+    for c in &n.children {
+        match c.key_lower().as_deref() {
+            Some("constraint") => items.push(map_constraint(m, c)),
+            _ => m.unknown_elem(c, on, extra),
+        }
+    }
+    m.stray_text(n, on, extra);
+    items
+}
+
+/// spec 2.3.19 `ConstraintUnitType`: an optional `key` and one condition.
+pub(super) fn map_unit(m: &mut Mapper, n: &Node, extra: &mut Vec<Extra>) -> ConstraintKind {
+    let on = "constraint unit";
+    let mut key = None;
+    let mut key_attr = None;
+    for a in &n.attrs {
+        match a.key() {
+            Some("key") if key.is_none() => {
+                key = Some((&*a.value).into());
+                key_attr = Some(a);
+            }
+            _ => m.unknown_attr(a, on, extra),
+        }
+    }
+    let mut condition: Option<Condition> = None;
+    for c in &n.children {
+        let k = c.key_lower();
+        let cond = match k.as_deref() {
+            Some(k) => map_condition(m, c, k, extra),
+            None => None,
+        };
+        match cond {
+            Some(_) if condition.is_some() => m.repeated_elem(c, on, extra),
+            Some(cond) => condition = Some(cond),
+            None => m.unknown_elem(c, on, extra),
+        }
+    }
+    m.stray_text(n, on, extra);
+    match condition {
+        Some(c) => ConstraintKind::Unit {
+            key,
+            condition: Box::new(c),
+        },
+        None => {
+            if let Some(a) = key_attr {
+                m.warn(
+                    a.pos,
+                    format!(
+                        "constraint unit with key `{}` has no condition; the key is kept as an extra property",
+                        a.value
+                    ),
+                );
+                extra.push(attr_extra(a));
+            }
+            ConstraintKind::Empty
+        }
+    }
+}
+
+/// One condition element (lower-cased local name `k`); `None` when `k` is not a condition.
+pub(super) fn map_condition(
+    m: &mut Mapper,
+    n: &Node,
+    k: &str,
+    extra: &mut Vec<Extra>,
+) -> Option<Condition> {
+    let on = format!("`{}`", n.qname);
+    let cond = match k {
+        // spec 2.3.23 Not: exactly one operand.
+        "not" => {
+            let mut ops = constraint_children(m, n, &on, extra).into_iter();
+            let operand = ops.next().unwrap_or(Constraint {
+                kind: ConstraintKind::Empty,
+                pos: n.pos,
+                extra: Vec::new(),
+            });
+            for more in ops {
+                m.warn(
+                    more.pos,
+                    format!(
+                        "`{}` takes one constraint; this extra one is kept as an extra property",
+                        n.qname
+                    ),
+                );
+                extra.push(Extra {
+                    kind: ExtraKind::Element,
+                    name: "Constraint".into(),
+                    namespace: None,
+                    value: None,
+                    children: Vec::new(),
+                    pos: more.pos,
+                });
+            }
+            Condition::Not { operand }
+        }
+        // spec 2.3.24/25 And/Or: the XSD says two operands, samples and real files use more.
+        "and" => Condition::And {
+            operands: constraint_children(m, n, &on, extra),
+        },
+        "or" => Condition::Or {
+            operands: constraint_children(m, n, &on, extra),
+        },
+        // spec 2.3.26 propertyIsNull (XSD: `propertyIsNullType` wrapping `propertyIsNull`).
+        "propertyisnull" => {
+            m.no_attrs(n, &on, extra);
+            for c in &n.children {
+                m.unknown_elem(c, &on, extra);
+            }
+            Condition::IsNull {
+                text: non_blank(&n.text),
+            }
+        }
+        "propertyisnulltype" => {
+            m.no_attrs(n, &on, extra);
+            let mut text = None;
+            for c in &n.children {
+                match c.key_lower().as_deref() {
+                    Some("propertyisnull") if text.is_none() => {
+                        text = Some(non_blank(&m.text_of(c, &on, extra)))
+                    }
+                    _ => m.unknown_elem(c, &on, extra),
+                }
+            }
+            m.stray_text(n, &on, extra);
+            Condition::IsNull {
+                text: text.flatten(),
+            }
+        }
+        // spec 2.3.38 propertyIsLike: wildCard (XSD) / wildChar (PIM) / wildcard (YAML).
+        "propertyislike" => {
+            let (mut wild_card, mut single_char, mut escape_char) = (None, None, None);
+            for a in &n.attrs {
+                let slot = match a.key().map(str::to_ascii_lowercase).as_deref() {
+                    Some("wildcard" | "wildchar") => &mut wild_card,
+                    Some("singlechar") => &mut single_char,
+                    Some("escapechar") => &mut escape_char,
+                    _ => {
+                        m.unknown_attr(a, &on, extra);
+                        continue;
+                    }
+                };
+                m.set(slot, a, &on, extra);
+            }
+            Condition::Like {
+                literal: literal_child(m, n, &on, extra),
+                wild_card,
+                single_char,
+                escape_char,
+            }
+        }
+        // spec 2.3.40 propertyIsBetween: both boundaries inclusive.
+        "propertyisbetween" => {
+            m.no_attrs(n, &on, extra);
+            let (mut lower, mut upper) = (None, None);
+            for c in &n.children {
+                match c.key_lower().as_deref() {
+                    Some("lowerboundary") if lower.is_none() => {
+                        lower = Some(m.text_of(c, &on, extra))
+                    }
+                    Some("upperboundary") if upper.is_none() => {
+                        upper = Some(m.text_of(c, &on, extra))
+                    }
+                    _ => m.unknown_elem(c, &on, extra),
+                }
+            }
+            m.stray_text(n, &on, extra);
+            Condition::Between { lower, upper }
+        }
+        // spec 2.3.27–2.3.37 comparisons: `Literal` + `matchCase` (often absent).
+        _ => {
+            let comparison = k
+                .strip_prefix("propertyis")
+                .and_then(Comparison::from_suffix)?;
+            let mut match_case = None;
+            for a in &n.attrs {
+                match a.key().map(str::to_ascii_lowercase).as_deref() {
+                    Some("matchcase") => m.set(&mut match_case, a, &on, extra),
+                    _ => m.unknown_attr(a, &on, extra),
+                }
+            }
+            Condition::Compare {
+                comparison,
+                literal: literal_child(m, n, &on, extra),
+                match_case,
+            }
+        }
+    };
+    Some(cond)
+}
+
+/// The text of the `Literal` child; other children and stray text go to `extra`.
+pub(super) fn literal_child(
+    m: &mut Mapper,
+    n: &Node,
+    on: &str,
+    extra: &mut Vec<Extra>,
+) -> Option<Text> {
+    let mut literal = None;
+    for c in &n.children {
+        match c.key_lower().as_deref() {
+            Some("literal") if literal.is_none() => literal = Some(m.text_of(c, on, extra)),
+            _ => m.unknown_elem(c, on, extra),
+        }
+    }
+    m.stray_text(n, on, extra);
+    literal
+}
