@@ -1,9 +1,23 @@
-//! The catalogue: every loaded profile plus the cross-references between them.
+//! The catalogue: every document read (component profiles, IDL files) as entries keyed by
+//! stable ids, the cross-references between them, and the one list of pages made from them.
 //!
-//! Built once, in O(n) over the ports of all profiles: the data-type index (who produces and who
-//! consumes each type), the interface index (who provides and who requires each service
-//! interface type), category and vendor facets, and stable slugs and anchors for every page and
-//! row. Renderers only read it; all cross-linking logic lives here.
+//! - **Entries and ids.** A component is keyed by its id (`RTC:vendor:category:name:version`,
+//!   [`Component::id`]), a data type or interface by its canonical scoped name
+//!   (`RTC::TimedLong`), a facet by its name. References are ids, never positions: a data port
+//!   is [`PortRef`] = component id + port name, a service interface [`InterfaceRef`] = component
+//!   id + service port name + interface name ([`member_key`] tells repeated names apart). Maps
+//!   built once resolve them ([`Catalog::component`], [`Catalog::resolve_port`],
+//!   [`Catalog::data_type`]). Ids make two catalogues comparable entry by entry (`rtcdoc diff`)
+//!   and `catalog.json` readable back ([`Catalog::from_parts`], `render::json::read_catalog`).
+//! - **Indexes**, built in O(n) over the ports of all profiles: who produces and who consumes
+//!   each data type, who provides and who requires each service interface, which IDL types hold
+//!   which ([`Catalog::attach_idl`]), category and vendor facets, slugs and row anchors.
+//! - **Pages.** [`Catalog::pages`] is the one list of pages (kind, id, path stem, title),
+//!   computed once; every renderer, the sitemap, the search index and `serve`'s incremental
+//!   rebuild take page paths from it ([`Page::path_in`] gives each output's file name).
+//!
+//! Renderers only read the catalogue; all cross-linking logic lives here. A new kind of
+//! document is a reader (in `parse`), an entry kind with its id here, a [`PageKind`], and views.
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
 use crate::model::{Direction, PortDirection, Profile};

@@ -125,16 +125,10 @@ impl Linker<'_> {
     fn entry_of(&self, scoped: &str) -> Option<(Entry, String)> {
         let c = self.catalog;
         if let Some(i) = c.data_type_index(scoped) {
-            return Some((
-                Entry::DataType(i),
-                format!("types/{}.html", c.data_types[i].slug),
-            ));
+            return Some((Entry::DataType(i), c.data_type_page(i).path("html")));
         }
         let i = c.interface_index_of(scoped)?;
-        Some((
-            Entry::Interface(i),
-            format!("interfaces/{}.html", c.interfaces[i].slug),
-        ))
+        Some((Entry::Interface(i), c.interface_page(i).path("html")))
     }
 
     fn type_ref(&self, ty: &IdlType) -> TypeRef {
