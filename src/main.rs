@@ -568,9 +568,19 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 );
             }
             std::fs::create_dir_all(&args.dir)?;
-            std::fs::write(&path, config::template())?;
+            // An OpenRTM installation's IDL, suggested (commented out) in the file.
+            let idl = rtcdoc::init::detect(&|k| std::env::var_os(k));
+            std::fs::write(&path, config::template_for(idl.as_ref()))?;
             if !cli.quiet {
                 eprintln!("wrote {}", path.display());
+                if let Some(found) = &idl {
+                    eprintln!(
+                        "found OpenRTM's IDL in {} ({}); uncomment `idl-path` in {} to use it",
+                        found.dir.display(),
+                        found.via,
+                        config::FILE_NAME
+                    );
+                }
             }
             Ok(ExitCode::SUCCESS)
         }
