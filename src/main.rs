@@ -656,6 +656,9 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         for c in &mut r.coverage.components {
             c.source = display_path(&root, &c.source);
         }
+        for c in &mut r.coverage.idl {
+            c.file = display_path(&root, &c.file);
+        }
         if cli.verbose {
             print_skipped(&loaded.skipped, &root);
         }
@@ -702,8 +705,13 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 } else {
                     " (infos shown with --verbose)".to_string()
                 };
+                // The IDL members' share, when IDL definitions were counted (RTC506–RTC508).
+                let idl = match report.coverage.idl_counts() {
+                    (_, 0) => String::new(),
+                    (d, t) => format!("; IDL {d}/{t}"),
+                };
                 eprintln!(
-                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{})",
+                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{}{idl})",
                     s.one_line(),
                     report.coverage.components.len(),
                     report.coverage.percent,
