@@ -147,7 +147,43 @@ pub fn load(explicit: Option<&Path>, search: &[&Path]) -> Result<Loaded> {
 
 /// The text `rtcdoc init` writes: every key, commented out, with its default.
 pub fn template() -> String {
+    template_for(None)
+}
+
+/// `s` as a TOML basic string (`C:\\…` keeps its backslashes).
+fn toml_string(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 2);
+    out.push('"');
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if c.is_control() => out.push_str(&format!("\\u{:04X}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// [`template`], with the OpenRTM IDL directory `rtcdoc init` found (if any) as the suggested
+/// `idl-path`, still commented out: a build never depends on what is installed.
+pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
     let d = Limits::default();
+    let idl = match idl {
+        None => "# More directories of IDL files (data types, service interfaces), searched recursively; every
+# *.idl below the input is read anyway. E.g. an OpenRTM installation's IDL:
+# idl-path = [\"/usr/include/openrtm-2.0/rtm/idl\"]"
+            .to_string(),
+        Some(found) => format!(
+            "# More directories of IDL files (data types, service interfaces), searched recursively; every
+# *.idl below the input is read anyway. `rtcdoc init` found OpenRTM's IDL through {}:
+# uncomment the line to document the types and interfaces defined there (RTC::TimedLong, …).
+# idl-path = [{}]",
+            found.via,
+            toml_string(&found.dir.to_string_lossy())
+        ),
+    };
     format!(
         r#"# rtcdoc configuration. Every key is optional; command-line flags override this file.
 # Paths are relative to this file's directory.
@@ -177,9 +213,7 @@ pub fn template() -> String {
 # include = ["**"]
 # exclude = ["**/backup/**", "**/*.xml2*"]
 
-# More directories of IDL files (data types, service interfaces), searched recursively; every
-# *.idl below the input is read anyway. E.g. an OpenRTM installation's IDL:
-# idl-path = ["/usr/include/openrtm-2.0/rtm/idl"]
+{idl}
 
 # Fail without writing anything when a profile has an error.
 # strict = false
@@ -194,7 +228,7 @@ pub fn template() -> String {
 # open = false
 "#,
         size = d.max_file_size,
-        depth = d.max_depth
+        depth = d.max_depth,
     )
 }
 
@@ -220,6 +254,31 @@ mod tests {
         assert_eq!(c.formats, Some(vec![Format::Html]));
         assert_eq!(c.language, Some(Lang::En));
         assert_eq!(c.serve.unwrap().port, Some(3000));
+    }
+
+    #[test]
+    fn template_with_a_detected_idl_directory_suggests_it_commented() {
+        for dir in [
+            r"C:\Program Files\OpenRTM-aist\1.2.2\rtm\idl",
+            "/opt/x \"y\"/include/openrtm-2.0/rtm/idl",
+        ] {
+            let found = crate::init::Detected {
+                dir: PathBuf::from(dir),
+                via: "$RTM_ROOT".into(),
+            };
+            let t = template_for(Some(&found));
+            assert!(t.contains("found OpenRTM's IDL through $RTM_ROOT"), "{t}");
+            // Commented: the file still means the defaults.
+            assert_eq!(parse(&t, Path::new("x")).unwrap(), Config::default());
+            let on = t.replace("# idl-path = ", "idl-path = ");
+            assert_eq!(
+                parse(&on, Path::new("x")).unwrap().idl_path,
+                Some(vec![PathBuf::from(dir)])
+            );
+        }
+        // Nothing found: the template as always.
+        assert_eq!(template_for(None), template());
+        assert!(template().contains("# idl-path = [\"/usr/include/openrtm-2.0/rtm/idl\"]"));
     }
 
     #[test]

@@ -15,6 +15,7 @@ pub mod diff;
 pub mod i18n;
 pub mod idl;
 pub mod incremental;
+pub mod init;
 pub mod model;
 pub mod output;
 pub mod parse;

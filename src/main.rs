@@ -569,9 +569,19 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 );
             }
             std::fs::create_dir_all(&args.dir)?;
-            std::fs::write(&path, config::template())?;
+            // An OpenRTM installation's IDL, suggested (commented out) in the file.
+            let idl = rtcdoc::init::detect(&|k| std::env::var_os(k));
+            std::fs::write(&path, config::template_for(idl.as_ref()))?;
             if !cli.quiet {
                 eprintln!("wrote {}", path.display());
+                if let Some(found) = &idl {
+                    eprintln!(
+                        "found OpenRTM's IDL in {} ({}); uncomment `idl-path` in {} to use it",
+                        found.dir.display(),
+                        found.via,
+                        config::FILE_NAME
+                    );
+                }
             }
             Ok(ExitCode::SUCCESS)
         }
@@ -647,6 +657,9 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         for c in &mut r.coverage.components {
             c.source = display_path(&root, &c.source);
         }
+        for c in &mut r.coverage.idl {
+            c.file = display_path(&root, &c.file);
+        }
         if cli.verbose {
             print_skipped(&loaded.skipped, &root);
         }
@@ -693,8 +706,13 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 } else {
                     " (infos shown with --verbose)".to_string()
                 };
+                // The IDL members' share, when IDL definitions were counted (RTC506–RTC508).
+                let idl = match report.coverage.idl_counts() {
+                    (_, 0) => String::new(),
+                    (d, t) => format!("; IDL {d}/{t}"),
+                };
                 eprintln!(
-                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{})",
+                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{}{idl})",
                     s.one_line(),
                     report.coverage.components.len(),
                     report.coverage.percent,

@@ -60,6 +60,9 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC404", "A.xml", 9, 3),
     ("RTC405", "A.xml", 9, 3),
     ("RTC406", "vendor/Lab.idl", 3, 3),
+    ("RTC506", "idl/Lab.idl", 6, 12),
+    ("RTC507", "idl/Lab.idl", 6, 5),
+    ("RTC508", "idl/Lab.idl", 7, 12),
 ];
 
 #[test]

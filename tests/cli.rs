@@ -2,6 +2,7 @@
 
 mod common;
 use common::*;
+use std::path::Path;
 
 #[test]
 fn init_writes_a_commented_config_and_refuses_to_overwrite() {
@@ -17,6 +18,82 @@ fn init_writes_a_commented_config_and_refuses_to_overwrite() {
     assert!(rtcdoc(&["init", "proj", "--force"], dir.path())
         .status
         .success());
+}
+
+/// `rtcdoc init` with the OpenRTM search confined to `prefixes` (and no OpenRTM variables).
+fn init_with_prefixes(args: &[&str], cwd: &Path, prefixes: &Path) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(args)
+        .current_dir(cwd)
+        .env("NO_COLOR", "1")
+        .env(rtcdoc::init::PREFIXES_VAR, prefixes)
+        .env_remove("RTM_ROOT")
+        .env_remove("OPENRTM_DIR")
+        .env_remove("OpenRTM_DIR")
+        .output()
+        .expect("run rtcdoc")
+}
+
+#[test]
+fn init_suggests_a_detected_openrtm_idl_directory_commented_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // A fake installation: <prefix>/include/openrtm-2.0/rtm/idl with one IDL file.
+    let prefix = d.join("fake-usr");
+    write(
+        &prefix,
+        "include/openrtm-2.0/rtm/idl/BasicDataType.idl",
+        "module RTC {\n  /// A time-stamped integer.\n  struct TimedLong { /** Value */ long data; };\n};\n",
+    );
+    let idl_dir = prefix.join("include/openrtm-2.0/rtm/idl");
+    write(
+        d,
+        "proj/c/RTC.xml",
+        &xml_profile("C", &[("DataOutPort", "out", "RTC::TimedLong")]),
+    );
+    let out = init_with_prefixes(&["init", "proj"], d, &prefix);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("found OpenRTM's IDL in"), "{stderr}");
+    let text = std::fs::read_to_string(d.join("proj/rtcdoc.toml")).unwrap();
+    let line = format!("# idl-path = [\"{}\"]", idl_dir.display());
+    assert!(text.contains(&line), "{text}");
+    assert!(
+        text.contains("found OpenRTM's IDL through the prefix"),
+        "{text}"
+    );
+    // Commented out: a build does not read it ...
+    let out = rtcdoc(&["build", "proj", "-f", "json", "-o", "site1", "-q"], d);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json = std::fs::read_to_string(d.join("site1/catalog.json")).unwrap();
+    assert!(!json.contains("BasicDataType.idl"));
+    // ... and uncommented, the path as written reads the installation's IDL.
+    std::fs::write(d.join("proj/rtcdoc.toml"), text.replace(&line, &line[2..])).unwrap();
+    let out = rtcdoc(&["build", "proj", "-f", "json", "-o", "site2", "-q"], d);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json = std::fs::read_to_string(d.join("site2/catalog.json")).unwrap();
+    assert!(json.contains("BasicDataType.idl"), "{json}");
+
+    // Nothing installed below the prefixes: the usual template, without the sentence.
+    let empty = d.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    let out = init_with_prefixes(&["init", "other"], d, &empty);
+    assert!(out.status.success());
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("found"));
+    let text = std::fs::read_to_string(d.join("other/rtcdoc.toml")).unwrap();
+    assert_eq!(text, rtcdoc::config::template());
 }
 
 #[test]

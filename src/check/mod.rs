@@ -9,10 +9,12 @@
 //! [`run`] returns the rule diagnostics (not the loader's); [`check`] returns a [`Report`] with
 //! the loader's and the rules' diagnostics together, counts and the documentation coverage.
 
+mod idl_coverage;
 pub mod registry;
 pub mod report;
 mod rules;
 
+pub use idl_coverage::IdlCoverage;
 pub use registry::{explain, rule, Rule, RULES};
 pub use rules::check_date_time;
 
@@ -31,6 +33,7 @@ pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
         .flat_map_iter(rules::component)
         .collect();
     out.extend(rules::catalogue(catalog));
+    out.extend(idl_coverage::diagnostics(catalog));
     sort(&mut out);
     out
 }
@@ -51,7 +54,8 @@ pub struct ComponentCoverage {
     pub percent: f64,
 }
 
-/// Documentation coverage of the catalogue.
+/// Documentation coverage of the catalogue: the components' items and the members of the IDL
+/// definitions the ports use (RTC506–RTC508) together.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Coverage {
@@ -59,9 +63,22 @@ pub struct Coverage {
     pub total: usize,
     pub percent: f64,
     pub components: Vec<ComponentCoverage>,
+    /// The IDL definitions counted (left out of the JSON when no IDL was read).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub idl: Vec<IdlCoverage>,
 }
 
-fn percent(documented: usize, total: usize) -> f64 {
+impl Coverage {
+    /// Documented and total members of the IDL definitions alone.
+    pub fn idl_counts(&self) -> (usize, usize) {
+        (
+            self.idl.iter().map(|c| c.documented).sum(),
+            self.idl.iter().map(|c| c.total).sum(),
+        )
+    }
+}
+
+pub(crate) fn percent(documented: usize, total: usize) -> f64 {
     if total == 0 {
         100.0
     } else {
@@ -86,13 +103,17 @@ pub fn coverage(catalog: &Catalog) -> Coverage {
             }
         })
         .collect();
-    let documented = components.iter().map(|c| c.documented).sum();
-    let total = components.iter().map(|c| c.total).sum();
+    let idl = idl_coverage::coverage(catalog);
+    let documented = components.iter().map(|c| c.documented).sum::<usize>()
+        + idl.iter().map(|c| c.documented).sum::<usize>();
+    let total = components.iter().map(|c| c.total).sum::<usize>()
+        + idl.iter().map(|c| c.total).sum::<usize>();
     Coverage {
         documented,
         total,
         percent: percent(documented, total),
         components,
+        idl,
     }
 }
 
@@ -161,12 +182,15 @@ impl Report {
     pub fn merge(reports: Vec<Report>) -> Report {
         let mut diagnostics = Vec::new();
         let mut components = Vec::new();
+        let mut idl = Vec::new();
+        let (mut documented, mut total) = (0, 0);
         for r in reports {
             diagnostics.extend(r.diagnostics);
             components.extend(r.coverage.components);
+            idl.extend(r.coverage.idl);
+            documented += r.coverage.documented;
+            total += r.coverage.total;
         }
-        let documented = components.iter().map(|c| c.documented).sum();
-        let total = components.iter().map(|c| c.total).sum();
         Report {
             summary: Summary::of(&diagnostics),
             coverage: Coverage {
@@ -174,6 +198,7 @@ impl Report {
                 total,
                 percent: percent(documented, total),
                 components,
+                idl,
             },
             diagnostics,
         }

@@ -75,6 +75,9 @@ pub const DOC_PORT: &str = "RTC502";
 pub const DOC_INTERFACE: &str = "RTC503";
 pub const DOC_CONFIGURATION: &str = "RTC504";
 pub const DOC_ACTION: &str = "RTC505";
+pub const DOC_IDL_FIELD: &str = "RTC506";
+pub const DOC_IDL_ENUMERATOR: &str = "RTC507";
+pub const DOC_IDL_OPERATION: &str = "RTC508";
 
 use Severity::{Error, Info, Warning};
 
@@ -592,6 +595,33 @@ pub static RULES: &[Rule] = &[
         explanation: "Implemented callbacks are the component's behaviour; their descriptions document what happens on activation, execution, error …",
         spec: "2.4.2 (doc_action)",
         hint: "add rtcDoc:Doc description to the action",
+    },
+    Rule {
+        code: DOC_IDL_FIELD,
+        severity: Info,
+        name: "doc-idl-field",
+        summary: "a field of an IDL struct, exception or union a port uses has no doc comment",
+        explanation: "The type pages show every field of a port's data type and of the types it contains, with its doc comment: the unit, frame and range of a value live there, not in the profile. Counted (in the documentation coverage too) for every struct, exception and union a port of the catalogue reaches, through fields, sequences, typedefs and the operations of the interfaces it uses; a type defined in several files counts once. A comment documents a field when it is a doc comment: `/** … */` or `/*! … */` before it, `///` lines before it, or `///<` / `//!<` after it on its line. Plain `//` and `/* */` comments are not documentation (Doxygen ignores them too).",
+        spec: "— (documentation coverage; Doxygen doc-comment syntax)",
+        hint: "add a doc comment to the field: `///< what it holds, in which unit`",
+    },
+    Rule {
+        code: DOC_IDL_ENUMERATOR,
+        severity: Info,
+        name: "doc-idl-enumerator",
+        summary: "a value of an IDL enum a port uses has no doc comment",
+        explanation: "An enum's values are what a reader must choose between or interpret; the type page lists them with their doc comments. Counted for every enum a port of the catalogue reaches (directly, through fields, or through the operations of the interfaces it uses), once per enum, like the fields of RTC506.",
+        spec: "— (documentation coverage; Doxygen doc-comment syntax)",
+        hint: "add a doc comment to the value: `VALUE, ///< what it means`",
+    },
+    Rule {
+        code: DOC_IDL_OPERATION,
+        severity: Info,
+        name: "doc-idl-operation",
+        summary: "an operation or attribute of an IDL interface a port uses has no doc comment",
+        explanation: "The interface page lists every operation with its parameters, result and exceptions, and every attribute; the doc comment (with `@param` and `@return`) is what tells a caller what the operation does. Counted for every service interface a port of the catalogue names and for its base interfaces, once each.",
+        spec: "— (documentation coverage; Doxygen doc-comment syntax)",
+        hint: "add a doc comment before the operation: `/** @brief … @param name … @return … */`",
     },
 ];
 
