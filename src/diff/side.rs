@@ -39,6 +39,8 @@ impl Spec {
 /// A loaded side.
 pub struct Side {
     pub loaded: build::Loaded,
+    /// The RT System profiles below the side's input.
+    pub systems: super::systems::Systems,
     /// What the files of the catalogue are relative to, as the user names them: the input
     /// directory, the parent of an input file, or the path inside the repository.
     pub root: PathBuf,
@@ -77,6 +79,7 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             }
             let loaded =
                 build::load(p, opts).with_context(|| format!("{which} `{}`", p.display()))?;
+            let systems = load_systems(p, &loaded, opts);
             let root = if p.is_file() {
                 p.parent().map(Path::to_path_buf).unwrap_or_default()
             } else {
@@ -84,6 +87,7 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             };
             Ok(Side {
                 loaded,
+                systems,
                 root,
                 _temp: None,
             })
@@ -112,13 +116,30 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             };
             let loaded =
                 build::load(&input, opts).with_context(|| format!("{which} `{object}`"))?;
+            let systems = load_systems(&input, &loaded, opts);
             Ok(Side {
                 loaded,
+                systems,
                 root,
                 _temp: Some(temp),
             })
         }
     }
+}
+
+/// The system profiles among the files the component walk skipped.
+fn load_systems(
+    input: &Path,
+    loaded: &build::Loaded,
+    opts: &LoadOptions,
+) -> super::systems::Systems {
+    let skipped: std::collections::BTreeSet<&str> = loaded
+        .skipped
+        .iter()
+        .filter(|s| s.kind == crate::walk::SkipKind::NotAProfile)
+        .map(|s| s.rel.as_str())
+        .collect();
+    super::systems::load(input, &skipped, opts)
 }
 
 enum ObjectKind {
@@ -207,8 +228,9 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
     }
 }
 
-/// The files the walk could take as profiles: `.xml`, `.yaml`, `.yml` and RTCBuilder's backup
-/// names. The others (sources, images) are not copied out of the repository.
+/// The files the walk could take as profiles (component or system): `.xml`, `.yaml`, `.yml`
+/// and RTCBuilder's backup names; and `.idl` files, for the IDL-level comparison. The others
+/// (sources, images) are not copied out of the repository.
 fn wanted(rel: &str) -> bool {
     let p = Path::new(rel);
     let safe = p
@@ -218,7 +240,7 @@ fn wanted(rel: &str) -> bool {
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    safe && (matches!(ext.as_deref(), Some("xml" | "yaml" | "yml"))
+    safe && (matches!(ext.as_deref(), Some("xml" | "yaml" | "yml" | "idl"))
         || crate::walk::named_like_profile(p))
 }
 
@@ -303,6 +325,7 @@ mod tests {
         assert!(wanted("a/RTC.xml"));
         assert!(wanted("a/b.YAML"));
         assert!(wanted("a/RTC.xml20230831164412"));
+        assert!(wanted("idl/Nav.idl"));
         assert!(!wanted("a/main.cpp"));
         assert!(!wanted("../x.xml"));
     }
