@@ -138,7 +138,7 @@ const CASES: &[Case] = &[
         component: NAV,
         all: &["DIFF139", "DIFF208"],
         file: NAV_RTC,
-        says: "it takes 2 parameter(s) instead of 1",
+        says: "it takes 2 parameter(s) instead of 1 (`in double resolution` added)",
     },
     Case {
         code: "DIFF231",
@@ -187,7 +187,7 @@ const CASES: &[Case] = &[
         // The data and the service connector.
         all: &["DIFF101", "DIFF141", "DIFF141"],
         file: SYSTEM,
-        says: "data port connector `odometry_odom` (`Base0.odometry` → `Planner0.odom`) of system `NavSystem` (`RTSystem:Lab:NavSystem:1.0`, new/systems/NavSystem.xml) connects component `RTC:Lab:Mobile:Planner:1.0.0`, which was removed",
+        says: "data port connector `odometry_odom` (`Base0.odometry` → `Planner0.odom`) of system `RTSystem:Lab:NavSystem:1.0` (new/systems/NavSystem.xml) connects component `RTC:Lab:Mobile:Planner:1.0.0`, which was removed",
     },
     Case {
         code: "DIFF142",
@@ -195,7 +195,7 @@ const CASES: &[Case] = &[
         component: "RTC:Lab:Mobile:Base:2.0.0",
         all: &["DIFF102", "DIFF142", "DIFF306"],
         file: SYSTEM,
-        says: "connects port `odometry` of `RTC:Lab:Mobile:Base:2.0.0`, which was removed",
+        says: "connects port `odometry`, which was removed",
     },
     Case {
         code: "DIFF143",
@@ -203,7 +203,7 @@ const CASES: &[Case] = &[
         component: "RTC:Lab:Mobile:Base:2.0.0",
         all: &["DIFF104", "DIFF107", "DIFF143", "DIFF143", "DIFF306"],
         file: SYSTEM,
-        says: "service port connector `Map_Map` (`Base0.Map` → `Planner0.Map`) of system `NavSystem` (`RTSystem:Lab:NavSystem:1.0`, new/systems/NavSystem.xml) connects port `Map` of `RTC:Lab:Mobile:Base:2.0.0`, which changed: DIFF107 interface `map` of service port `Map` is now `Nav::MapService2`",
+        says: "service port connector `Map_Map` (`Base0.Map` → `Planner0.Map`) of system `RTSystem:Lab:NavSystem:1.0` (new/systems/NavSystem.xml) connects port `Map`, which changed incompatibly (DIFF107 `servicePorts/Map/interfaces/map/type`)",
     },
 ];
 

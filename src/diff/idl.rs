@@ -914,10 +914,33 @@ impl<'s> Cmp<'s> {
             ));
         }
         if a.params.len() != b.params.len() {
+            let text = |p: &crate::idl::IdlParam| {
+                format!("`{} {} {}`", dir(p.direction), written(&p.ty), p.name)
+            };
+            let mut detail: Vec<String> = Vec::new();
+            for x in b
+                .params
+                .iter()
+                .filter(|x| !a.params.iter().any(|y| y.name == x.name))
+            {
+                detail.push(format!("{} added", text(x)));
+            }
+            for x in a
+                .params
+                .iter()
+                .filter(|x| !b.params.iter().any(|y| y.name == x.name))
+            {
+                detail.push(format!("{} removed", text(x)));
+            }
             what.push(format!(
-                "it takes {} parameter(s) instead of {}",
+                "it takes {} parameter(s) instead of {}{}",
                 b.params.len(),
-                a.params.len()
+                a.params.len(),
+                if detail.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({})", detail.join(", "))
+                }
             ));
         } else {
             for (i, (x, y)) in a.params.iter().zip(&b.params).enumerate() {
@@ -1236,5 +1259,130 @@ pub(super) fn component(
                 );
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(text: &str) -> IdlSet {
+        crate::idl::read(
+            &[crate::idl::SourceFile::new(
+                "t.idl",
+                text.as_bytes().to_vec(),
+            )],
+            &Default::default(),
+        )
+    }
+
+    /// (kind, path) of every finding of `name` between the two texts.
+    fn found(old: &str, new: &str, name: &str) -> Vec<(Kind, String)> {
+        let (o, n) = (set(old), set(new));
+        compare_type(&o, &n, name)
+            .findings
+            .into_iter()
+            .map(|f| (f.kind, f.path))
+            .collect()
+    }
+
+    fn one(kind: Kind, path: &str) -> Vec<(Kind, String)> {
+        vec![(kind, path.to_string())]
+    }
+
+    #[test]
+    fn inherited_operations_and_attributes() {
+        let old = "interface B { void ping(); attribute long level; }; interface I : B { void go(in long a); };";
+        // ping dropped from the base: removed from I.
+        let new = "interface B { attribute long level; }; interface I : B { void go(in long a); };";
+        assert_eq!(
+            found(old, new, "I"),
+            one(Kind::OperationRemoved, "operations/ping")
+        );
+        // level retyped and made readonly; a parameter's direction changed; oneway.
+        let new = "interface B { void ping(); readonly attribute long level; }; interface I : B { void go(inout long a); };";
+        assert_eq!(
+            found(old, new, "I"),
+            vec![
+                (Kind::OperationChanged, "operations/go".to_string()),
+                (Kind::OperationChanged, "attributes/level".to_string()),
+            ]
+        );
+        let new = "interface B { oneway void ping(); attribute long level; attribute double x; }; interface I : B { void go(in long b); };";
+        assert_eq!(
+            found(old, new, "I"),
+            vec![
+                (Kind::Other, "operations/go".to_string()),
+                (Kind::OperationChanged, "operations/ping".to_string()),
+                (Kind::OperationAdded, "attributes/x".to_string()),
+            ]
+        );
+    }
+
+    #[test]
+    fn struct_parameters_and_raised_exceptions_are_followed() {
+        let old = "struct P { long a; }; exception E { string why; }; interface I { void set(in P p) raises (E); };";
+        let new = "struct P { long a; long b; }; exception E { string why; long code; }; interface I { void set(in P p) raises (E); };";
+        assert_eq!(
+            found(old, new, "I"),
+            vec![
+                (Kind::MemberAdded, "operations/set/params/p.b".to_string()),
+                (
+                    Kind::MemberAdded,
+                    "operations/set/raises/E/fields/code".to_string()
+                ),
+            ]
+        );
+    }
+
+    #[test]
+    fn unions_enums_and_kinds() {
+        let old = "union U switch (long) { case 0: long a; case 1: double b; };";
+        let new = "union U switch (short) { case 1: double b; case 2: string c; };";
+        assert_eq!(
+            found(old, new, "U"),
+            vec![
+                (Kind::Union, "switch".to_string()),
+                (Kind::Union, "cases/a".to_string()),
+                (Kind::Union, "cases/c".to_string()),
+            ]
+        );
+        // Reordering the cases is no change.
+        let new = "union U switch (long) { case 1: double b; case 0: long a; };";
+        assert!(found(old, new, "U").is_empty());
+        // A value inserted renumbers the ones after it.
+        let f = found("enum E { A, B };", "enum E { A, X, B };", "E");
+        assert_eq!(f, one(Kind::EnumRemoved, "values"));
+        // A struct that became a typedef.
+        let f = found("struct S { long a; };", "typedef long S;", "S");
+        assert_eq!(f, one(Kind::Typedef, ""));
+    }
+
+    #[test]
+    fn recursive_types_end_and_one_sided_nested_types_are_noted() {
+        let text =
+            "struct Node; typedef sequence<Node> Nodes; struct Node { long v; Nodes kids; };";
+        assert!(found(text, text, "Node").is_empty());
+        let new = "struct Node; typedef sequence<Node> Nodes; struct Node { long v; Nodes kids; long w; };";
+        assert_eq!(found(text, new, "Node"), one(Kind::MemberAdded, "fields/w"));
+        let (o, n) = (
+            set("struct In { long a; }; struct T { In i; };"),
+            set("struct T { In i; };"),
+        );
+        let out = compare_type(&o, &n, "T");
+        assert_eq!(out.one_side, vec![("In".to_string(), false)]);
+    }
+
+    #[test]
+    fn codes_follow_the_use() {
+        assert_eq!(
+            code_of(Kind::OperationRemoved, false),
+            codes::IDL_OPERATION_REMOVED
+        );
+        assert_eq!(
+            code_of(Kind::OperationRemoved, true),
+            codes::IDL_REQUIRED_OPERATION_REMOVED
+        );
+        assert_eq!(code_of(Kind::Other, true), codes::OTHER_CHANGED);
     }
 }

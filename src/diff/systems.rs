@@ -93,7 +93,7 @@ pub(super) struct Breaks {
     /// Removed components: key → label.
     removed: BTreeMap<Key, String>,
     /// (component key, port name) → the component's label, whether the port was removed, and
-    /// the breaking changes of the port (`CODE message`).
+    /// the breaking changes of the port (``CODE `path` ``).
     ports: BTreeMap<(Key, String), (String, bool, Vec<String>)>,
 }
 
@@ -122,7 +122,10 @@ impl Breaks {
                 .entry((key.clone(), port.to_string()))
                 .or_insert_with(|| (label.to_string(), false, Vec::new()));
             entry.1 |= removed;
-            entry.2.push(format!("{} {}", c.code, c.message));
+            let reason = format!("{} `{}`", c.code, c.path);
+            if !entry.2.contains(&reason) {
+                entry.2.push(reason);
+            }
         }
     }
 
@@ -157,7 +160,7 @@ impl Breaks {
             };
             let sys = &s.system;
             let sys_text = match non_empty(&sys.id) {
-                Some(id) => format!("system `{}` (`{id}`, {file})", sys.name()),
+                Some(id) => format!("system `{id}` ({file})"),
                 None => format!("system `{}` ({file})", sys.name()),
             };
             let data = sys.data_port_connectors.iter().map(|c| {
@@ -198,15 +201,15 @@ impl Breaks {
                             (
                                 codes::CONNECTOR_PORT_REMOVED,
                                 label.clone(),
-                                format!("connects port `{port}` of `{label}`, which was removed"),
+                                format!("connects port `{port}`, which was removed"),
                             )
                         } else {
                             (
                                 codes::CONNECTOR_PORT_CHANGED,
                                 label.clone(),
                                 format!(
-                                    "connects port `{port}` of `{label}`, which changed: {}",
-                                    reasons.join("; ")
+                                    "connects port `{port}`, which changed incompatibly ({})",
+                                    reasons.join(", ")
                                 ),
                             )
                         }
