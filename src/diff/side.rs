@@ -39,8 +39,6 @@ impl Spec {
 /// A loaded side.
 pub struct Side {
     pub loaded: build::Loaded,
-    /// The RT System profiles below the side's input.
-    pub systems: super::systems::Systems,
     /// What the files of the catalogue are relative to, as the user names them: the input
     /// directory, the parent of an input file, or the path inside the repository.
     pub root: PathBuf,
@@ -53,6 +51,27 @@ impl Side {
     pub fn display(&self, file: &str) -> String {
         let joined = self.root.join(file).to_string_lossy().replace('\\', "/");
         joined.strip_prefix("./").unwrap_or(&joined).to_string()
+    }
+}
+
+impl Side {
+    /// The RT System profiles of the side: those among the files the component walk skipped
+    /// (a single profile file, or a catalogue read back, skips none, so it has none).
+    pub fn systems(&self, opts: &LoadOptions) -> super::systems::Systems {
+        let skipped: std::collections::BTreeSet<&str> = self
+            .loaded
+            .skipped
+            .iter()
+            .filter(|s| s.kind == crate::walk::SkipKind::NotAProfile)
+            .map(|s| s.rel.as_str())
+            .collect();
+        // What the walk's paths are relative to: the temporary copy of a revision, else the
+        // input directory.
+        let input = match &self._temp {
+            Some(t) => t.path(),
+            None => self.root.as_path(),
+        };
+        super::systems::load(input, &skipped, opts)
     }
 }
 
@@ -79,7 +98,6 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             }
             let loaded =
                 build::load(p, opts).with_context(|| format!("{which} `{}`", p.display()))?;
-            let systems = load_systems(p, &loaded, opts);
             let root = if p.is_file() {
                 p.parent().map(Path::to_path_buf).unwrap_or_default()
             } else {
@@ -87,7 +105,6 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             };
             Ok(Side {
                 loaded,
-                systems,
                 root,
                 _temp: None,
             })
@@ -116,30 +133,13 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             };
             let loaded =
                 build::load(&input, opts).with_context(|| format!("{which} `{object}`"))?;
-            let systems = load_systems(&input, &loaded, opts);
             Ok(Side {
                 loaded,
-                systems,
                 root,
                 _temp: Some(temp),
             })
         }
     }
-}
-
-/// The system profiles among the files the component walk skipped.
-fn load_systems(
-    input: &Path,
-    loaded: &build::Loaded,
-    opts: &LoadOptions,
-) -> super::systems::Systems {
-    let skipped: std::collections::BTreeSet<&str> = loaded
-        .skipped
-        .iter()
-        .filter(|s| s.kind == crate::walk::SkipKind::NotAProfile)
-        .map(|s| s.rel.as_str())
-        .collect();
-    super::systems::load(input, &skipped, opts)
 }
 
 enum ObjectKind {
