@@ -478,3 +478,30 @@ fn idl_path_applies_to_both_sides() {
         assert!(codes_of(&json).iter().all(|c| c == "DIFF332"), "{json:#}");
     }
 }
+
+/// An IDL file with a syntax error is a DIFF002 about its types, not about a component.
+#[test]
+fn an_idl_syntax_error_is_a_warning_about_its_types() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_tree(&fixture("DIFF131"), dir.path());
+    write(
+        dir.path(),
+        "new/idl/Broken.idl",
+        "module Nav { struct X { long a } };\n",
+    );
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(exit, 1);
+    let c = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF002")
+        .unwrap_or_else(|| panic!("{json:#}"));
+    let message = c["message"].as_str().unwrap_or("");
+    assert!(
+        message.contains("new/idl/Broken.idl could not be read")
+            && message.ends_with("types it defines may be missing from the comparison"),
+        "{message}"
+    );
+    assert_eq!(c["file"], "new/idl/Broken.idl");
+    // The other file is still compared.
+    assert!(codes_of(&json).contains(&"DIFF131".to_string()));
+}

@@ -319,21 +319,29 @@ pub fn diff_with_systems(
     }
     for (side, cat) in [("OLD", old), ("NEW", new)] {
         for d in cat.diagnostics.iter().filter(|d| d.is_error()) {
-            let mut c =
-                change(
-                    codes::UNREADABLE_PROFILE,
-                    String::new(),
-                    String::new(),
-                    None,
-                    None,
-                    format!(
-                    "{side}: {} could not be read ({}[{}]: {}); a component in it counts as absent",
-                    if side == "NEW" { new_name(&d.file) } else { old_name(&d.file) },
+            let mut c = change(
+                codes::UNREADABLE_PROFILE,
+                String::new(),
+                String::new(),
+                None,
+                None,
+                format!(
+                    "{side}: {} could not be read ({}[{}]: {}); {}",
+                    if side == "NEW" {
+                        new_name(&d.file)
+                    } else {
+                        old_name(&d.file)
+                    },
                     d.severity,
                     d.code,
-                    d.message
+                    d.message,
+                    if is_idl_file(&d.file) {
+                        "types it defines may be missing from the comparison"
+                    } else {
+                        "a component in it counts as absent"
+                    }
                 ),
-                );
+            );
             if side == "NEW" {
                 c.file = Some(new_name(&d.file));
                 c.line = d.pos.map(|p| p.line);
@@ -359,6 +367,13 @@ pub fn diff_with_systems(
         changes: out,
         components: counts,
     }
+}
+
+/// An IDL file (its errors leave types undefined rather than components absent).
+fn is_idl_file(file: &str) -> bool {
+    std::path::Path::new(file)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("idl"))
 }
 
 /// Sorts changes by component, path, severity, code and message.
