@@ -505,3 +505,41 @@ fn an_idl_syntax_error_is_a_warning_about_its_types() {
     // The other file is still compared.
     assert!(codes_of(&json).contains(&"DIFF131".to_string()));
 }
+
+/// A system in the YAML form of rtsprofile/rtshell is read like the XML one.
+#[test]
+fn a_yaml_system_profile_is_checked_too() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_tree(&fixture("DIFF142"), dir.path());
+    std::fs::remove_file(dir.path().join("new/systems/NavSystem.xml")).expect("rm");
+    std::fs::remove_file(dir.path().join("old/systems/NavSystem.xml")).expect("rm");
+    write(
+        dir.path(),
+        "new/systems/nav.yaml",
+        r#"rtsProfile:
+  id: "RTSystem:Lab:NavYaml:1.0"
+  version: 0.2
+  dataPortConnectors:
+    - connectorId: y1
+      name: odo
+      dataType: "IDL:RTC/TimedPose2D:1.0"
+      sourceDataPort:
+        componentId: "RTC:Lab:Mobile:Base:1.0.0"
+        instanceName: Base0
+        portName: Base0.odometry
+      targetDataPort:
+        componentId: "RTC:Lab:Mobile:Planner:1.0.0"
+        instanceName: Planner0
+        portName: Planner0.odom
+"#,
+    );
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(exit, 1);
+    let c = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF142")
+        .unwrap_or_else(|| panic!("{json:#}"));
+    assert_eq!(c["path"], "connectors/NavYaml/odo");
+    assert_eq!(c["file"], "new/systems/nav.yaml");
+    assert!(c["line"].as_u64().unwrap_or(0) > 0, "{c:#}");
+}
