@@ -11,6 +11,10 @@
 //! The comparison works on the model's JSON form (positions left out), which keeps it complete
 //! as the model grows; the typed model is consulted where the meaning matters (canonical type
 //! names, directions, value types, constraints).
+//!
+//! With IDL on the sides, the types the ports and interfaces of a matched pair carry are also
+//! compared inside ([`idl`]: members, enum values, union cases, typedefs, operations); with
+//! RT System profiles, the connectors the changes break are reported ([`systems`]).
 
 pub mod codes;
 mod constraint;
