@@ -763,11 +763,12 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     let opts = load_options(&file, &args.input_args);
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;
-    let result = diff::diff_named(
+    let result = diff::diff_with_systems(
         &old.loaded.catalog,
         &new.loaded.catalog,
         &|f| old.display(f),
         &|f| new.display(f),
+        (&old.systems(&opts), &new.systems(&opts)),
     );
     let fail_on = args.fail_on.level();
     match args.format {

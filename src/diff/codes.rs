@@ -3,8 +3,9 @@
 //! `book/src/diff.md` lists them all, held to this table by a test).
 //!
 //! Numbering: DIFF0xx are about the comparison itself, DIFF1xx breaking, DIFF2xx warnings,
-//! DIFF3xx information. Codes are never reused. The IDL-aware codes (struct fields, enum values,
-//! operations) will take DIFF13x / DIFF23x / DIFF33x, RT System connectors DIFF14x.
+//! DIFF3xx information. Codes are never reused. The IDL-level codes (struct members, enum
+//! values, unions, typedefs, operations) are DIFF13x / DIFF23x / DIFF33x, the RT System
+//! connectors a change breaks DIFF14x.
 
 use serde::Serialize;
 
@@ -56,6 +57,19 @@ pub const INTERFACE_TYPE: &str = "DIFF107";
 pub const INTERFACE_DIRECTION: &str = "DIFF108";
 pub const CONFIGURATION_REMOVED: &str = "DIFF109";
 pub const CONFIGURATION_TYPE: &str = "DIFF110";
+pub const IDL_REPOSITORY_ID: &str = "DIFF130";
+pub const IDL_MEMBER_ADDED: &str = "DIFF131";
+pub const IDL_MEMBER_REMOVED: &str = "DIFF132";
+pub const IDL_MEMBERS_REORDERED: &str = "DIFF133";
+pub const IDL_MEMBER_RETYPED: &str = "DIFF134";
+pub const IDL_ENUM_VALUE_REMOVED: &str = "DIFF135";
+pub const IDL_UNION_CHANGED: &str = "DIFF136";
+pub const IDL_TYPEDEF_CHANGED: &str = "DIFF137";
+pub const IDL_OPERATION_REMOVED: &str = "DIFF138";
+pub const IDL_OPERATION_CHANGED: &str = "DIFF139";
+pub const CONNECTOR_COMPONENT_REMOVED: &str = "DIFF141";
+pub const CONNECTOR_PORT_REMOVED: &str = "DIFF142";
+pub const CONNECTOR_PORT_CHANGED: &str = "DIFF143";
 pub const DEFAULT_CHANGED: &str = "DIFF201";
 pub const CONSTRAINT_NARROWED: &str = "DIFF202";
 pub const CONSTRAINT_CHANGED: &str = "DIFF203";
@@ -67,6 +81,8 @@ pub const BREAKING_WITHOUT_BUMP: &str = "DIFF208";
 pub const TRANSPORT_NARROWED: &str = "DIFF209";
 pub const UNIT_CHANGED: &str = "DIFF210";
 pub const REQUIRED_INTERFACE_ADDED: &str = "DIFF211";
+pub const IDL_ENUM_VALUE_APPENDED: &str = "DIFF231";
+pub const IDL_OPERATION_ADDED: &str = "DIFF232";
 pub const PORT_ADDED: &str = "DIFF301";
 pub const INTERFACE_ADDED: &str = "DIFF302";
 pub const CONFIGURATION_ADDED: &str = "DIFF303";
@@ -75,6 +91,9 @@ pub const CONSTRAINT_WIDENED: &str = "DIFF305";
 pub const VERSION_CHANGED: &str = "DIFF306";
 pub const DOCUMENTATION_CHANGED: &str = "DIFF307";
 pub const OTHER_CHANGED: &str = "DIFF308";
+pub const IDL_DOCUMENTATION_CHANGED: &str = "DIFF331";
+pub const IDL_TYPE_ON_ONE_SIDE: &str = "DIFF332";
+pub const IDL_REQUIRED_OPERATION_REMOVED: &str = "DIFF333";
 
 use Level::{Breaking, Info, Warning};
 
@@ -165,6 +184,97 @@ pub static CODES: &[Code] = &[
         explanation: "Saved values of the old type may not parse for the new one (`1.5` for an `int`), and the component then keeps its default. Spellings of one type (`int` and `long`, `std::string` and `string`, `vector<double>` and `std::vector<double>`) are compared by the type they mean.",
     },
     Code {
+        code: IDL_REPOSITORY_ID,
+        level: Breaking,
+        name: "idl-repository-id-changed",
+        summary: "the repository id of a port's data type or of an interface changed",
+        explanation: "OpenRTM connects two data ports only when their `dataport.data_type` — the repository id, `IDL:RTC/TimedLong:1.0` — is equal, and a consumer narrows an object reference to the repository id it was built for. A new `#pragma prefix`, `#pragma version` or `#pragma ID` (or `typeid`/`typeprefix`) makes peers built from the old IDL refuse the connection even when the members are the same. Only the type a port or interface names counts: nested types travel inside it without their id.",
+    },
+    Code {
+        code: IDL_MEMBER_ADDED,
+        level: Breaking,
+        name: "idl-member-added",
+        summary: "a struct (or exception) carried by a port gained a member",
+        explanation: "Data travel as CDR, which is positional and carries no member names or count: a peer built from the old IDL reads the new layout wrongly or fails on the extra bytes. Unlike protobuf there are no optional fields, so even a member appended at the end breaks every existing peer. The path names the member through the nested structs (`dataPorts/odometry/type/fields/pose.heading`), and `[]` marks the element of a sequence or array.",
+    },
+    Code {
+        code: IDL_MEMBER_REMOVED,
+        level: Breaking,
+        name: "idl-member-removed",
+        summary: "a struct (or exception) carried by a port lost a member",
+        explanation: "CDR is positional: without the member every later one is read from the wrong offset by a peer built from the old IDL, and code using the member no longer compiles. A renamed member is reported as removed and added (source code names it).",
+    },
+    Code {
+        code: IDL_MEMBERS_REORDERED,
+        level: Breaking,
+        name: "idl-members-reordered",
+        summary: "the members of a struct (or exception) carried by a port changed their order",
+        explanation: "CDR writes members in declaration order, so a peer built from the old IDL assigns the values to the wrong members (two `double`s swapped still 'work', silently wrong). Reported once per struct, with both orders.",
+    },
+    Code {
+        code: IDL_MEMBER_RETYPED,
+        level: Breaking,
+        name: "idl-member-retyped",
+        summary: "a member of a struct (or exception) carried by a port has another type or array size",
+        explanation: "The member takes another number of bytes or another encoding on the wire (`float` to `double`, `long` to `long long`, a bound or array size changed, another struct). Types are compared after following typedefs, so `typedef double Real; Real x` → `double x` is the same type (reported as DIFF308).",
+    },
+    Code {
+        code: IDL_ENUM_VALUE_REMOVED,
+        level: Breaking,
+        name: "idl-enum-value-removed",
+        summary: "an enum value was removed, moved or had a value inserted before it",
+        explanation: "CDR sends an enum as the ordinal of its value: a removed value is an ordinal peers still send, and a moved or inserted value renumbers the ones after it, so old and new peers mean different values by the same number. Only values appended at the end keep every number (DIFF231).",
+    },
+    Code {
+        code: IDL_UNION_CHANGED,
+        level: Breaking,
+        name: "idl-union-changed",
+        summary: "a union carried by a port changed its discriminator, a case label or a case member",
+        explanation: "A union is sent as the discriminator and then the member its label selects: another discriminator type, a label that selects another member, a case added or removed, or a case member of another type, makes old and new peers decode different members. The order of the cases does not matter.",
+    },
+    Code {
+        code: IDL_TYPEDEF_CHANGED,
+        level: Breaking,
+        name: "idl-typedef-changed",
+        summary: "a typedef carried by a port names another type, or a type changed its kind",
+        explanation: "`typedef sequence<double, 3> Vector3` that becomes `sequence<double, 4>`, or a typedef that becomes a struct, changes what is on the wire under the same name. Typedefs to the same type (after following typedefs) are no change.",
+    },
+    Code {
+        code: IDL_OPERATION_REMOVED,
+        level: Breaking,
+        name: "idl-operation-removed",
+        summary: "an operation or attribute was removed from a provided interface",
+        explanation: "Components requiring the interface call the operation (an attribute is its `_get_`/`_set_` operations) and get `BAD_OPERATION` from the new provider. Operations inherited from base interfaces count as the interface's own. For a required interface the component merely stops calling it (DIFF333).",
+    },
+    Code {
+        code: IDL_OPERATION_CHANGED,
+        level: Breaking,
+        name: "idl-operation-changed",
+        summary: "an operation's signature (parameters, directions, result, raises, oneway) or an attribute's type changed",
+        explanation: "GIOP marshals the parameters of a call positionally by the caller's IDL: another parameter type, count or direction (`in`, `out`, `inout`), result type, `oneway` or exception list, or an attribute's type or `readonly`, makes calls between peers built from the old and the new IDL fail or carry wrong values — for the requirers of a provided interface, and for the component itself calling a required one. Parameter names alone are no change on the wire (DIFF308); struct parameters that changed inside are reported with the struct codes.",
+    },
+    Code {
+        code: CONNECTOR_COMPONENT_REMOVED,
+        level: Breaking,
+        name: "connector-component-removed",
+        summary: "a connector of an RT System profile connects a component that was removed",
+        explanation: "An RT System profile (RTSystemEditor, rtshell) restores its connectors by component id and port name; the component is no longer in NEW, so the connector cannot be made. The change names the system (its id and file) and the connector (its name or id, source → target). Systems are read from both sides (NEW's, and OLD's that NEW does not have by id).",
+    },
+    Code {
+        code: CONNECTOR_PORT_REMOVED,
+        level: Breaking,
+        name: "connector-port-removed",
+        summary: "a connector of an RT System profile connects a port that was removed",
+        explanation: "The system names the port as `<instance>.<port>`; a removed data or service port makes the connector fail when the system is restored (`rtresurrect`, RTSystemEditor's Restore), and the peer loses its data or service.",
+    },
+    Code {
+        code: CONNECTOR_PORT_CHANGED,
+        level: Breaking,
+        name: "connector-port-changed",
+        summary: "a connector of an RT System profile connects a port whose type or direction changed incompatibly",
+        explanation: "The connector still finds the port, but its data type, kind, interfaces or their IDL changed in a breaking way (DIFF103, DIFF104, DIFF106–DIFF108, DIFF13x on the port): OpenRTM refuses the connection (another `data_type`, two out-ports) or the peers exchange data they decode differently. The message lists the changes of the port.",
+    },
+    Code {
         code: DEFAULT_CHANGED,
         level: Warning,
         name: "configuration-default-changed",
@@ -242,6 +352,20 @@ pub static CODES: &[Code] = &[
         explanation: "The component now depends on a provider that existing systems do not connect to it.",
     },
     Code {
+        code: IDL_ENUM_VALUE_APPENDED,
+        level: Warning,
+        name: "idl-enum-value-appended",
+        summary: "an enum carried by a port gained a value at its end",
+        explanation: "Every old value keeps its number, so old peers still read what they knew; but a peer built from the old IDL receives a number it has no value for when the new one is sent, and its behaviour for it is undefined. Not breaking, but the consumers have to look.",
+    },
+    Code {
+        code: IDL_OPERATION_ADDED,
+        level: Warning,
+        name: "idl-operation-added",
+        summary: "an operation or attribute was added to a service interface",
+        explanation: "Added to a provided interface, old requirers are unaffected, but two providers under one repository id now differ, and requirers built from the new IDL get `BAD_OPERATION` from old providers. Added to a required interface, the component may call an operation that existing providers do not implement.",
+    },
+    Code {
         code: PORT_ADDED,
         level: Info,
         name: "port-added",
@@ -296,6 +420,27 @@ pub static CODES: &[Code] = &[
         name: "other-changed",
         summary: "any other value of the profile changed",
         explanation: "Every value of a profile is compared, so that no change goes unreported; values without a classification of their own (dates, positions on the component box, variable names, properties, values rtcdoc does not know, a type spelled differently) are reported here.",
+    },
+    Code {
+        code: IDL_DOCUMENTATION_CHANGED,
+        level: Info,
+        name: "idl-documentation-changed",
+        summary: "the doc comment of an IDL type, member, value, operation or parameter changed",
+        explanation: "Doc comments (`/** … */`, `///`, `///<`) are not part of the wire format or the generated code's interface.",
+    },
+    Code {
+        code: IDL_TYPE_ON_ONE_SIDE,
+        level: Info,
+        name: "idl-type-on-one-side",
+        summary: "a data or interface type used on both sides is defined in one side's IDL only",
+        explanation: "Without both definitions the type cannot be compared, so a change inside it would go unseen: add the IDL file to the side that lacks it (below the input, or with `--idl-path`, which applies to both sides). Reported once per type, naming the components whose ports carry it, not once per port.",
+    },
+    Code {
+        code: IDL_REQUIRED_OPERATION_REMOVED,
+        level: Info,
+        name: "idl-required-operation-removed",
+        summary: "an operation or attribute was removed from an interface the component requires",
+        explanation: "The component calls less than before; the providers it connects to still implement the operation, so nothing fails. (Removed from a provided interface it is DIFF138.)",
     },
 ];
 

@@ -11,11 +11,17 @@
 //! The comparison works on the model's JSON form (positions left out), which keeps it complete
 //! as the model grows; the typed model is consulted where the meaning matters (canonical type
 //! names, directions, value types, constraints).
+//!
+//! With IDL on the sides, the types the ports and interfaces of a matched pair carry are also
+//! compared inside ([`idl`]: members, enum values, union cases, typedefs, operations); with
+//! RT System profiles, the connectors the changes break are reported ([`systems`]).
 
 pub mod codes;
 mod constraint;
+mod idl;
 pub mod report;
 pub mod side;
+pub mod systems;
 
 pub use codes::{Code, Level, CODES};
 
@@ -210,6 +216,21 @@ pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
 /// Compares two catalogues, naming the files of OLD with `old_name` and those of NEW with
 /// `new_name` (e.g. relative to the current directory).
 pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer) -> Diff {
+    let none = systems::Systems::default();
+    diff_with_systems(old, new, old_name, new_name, (&none, &none))
+}
+
+/// [`diff_named`], and the connectors of the RT System profiles of both sides that the changes
+/// break (DIFF14x; see [`systems`]).
+pub fn diff_with_systems(
+    old: &Catalog,
+    new: &Catalog,
+    old_name: Namer,
+    new_name: Namer,
+    (old_systems, new_systems): (&systems::Systems, &systems::Systems),
+) -> Diff {
+    let mut idl = idl::IdlDiff::new(&old.idl, &new.idl);
+    let mut breaks = systems::Breaks::default();
     let old_ids: Vec<Ident> = old.components.iter().map(ident).collect();
     let new_ids: Vec<Ident> = new.components.iter().map(ident).collect();
     let mut groups: BTreeMap<&Key, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
@@ -250,12 +271,15 @@ pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer
                     counts.matched += 1;
                     let (oc, nc) = (&old.components[o], &new.components[n]);
                     let before = out.len();
+                    let component = label(&new_ids[n], nc);
                     compare(
-                        &label(&new_ids[n], nc),
+                        &component,
                         (oc, &old_ids[o], &old_name(&oc.source)),
                         (nc, &new_ids[n], &new_name(&nc.source)),
+                        &mut idl,
                         &mut out,
                     );
+                    breaks.note_ports(&new_ids[n].key, &component, &out[before..]);
                     if out.len() > before {
                         counts.changed += 1;
                     }
@@ -263,6 +287,7 @@ pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer
                 (Some(o), None) => {
                     counts.removed += 1;
                     let c = &old.components[o];
+                    breaks.note_removed(&old_ids[o].key, &label(&old_ids[o], c));
                     out.push(Change {
                         old_file: Some(old_name(&c.source)),
                         ..change(
@@ -298,21 +323,29 @@ pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer
     }
     for (side, cat) in [("OLD", old), ("NEW", new)] {
         for d in cat.diagnostics.iter().filter(|d| d.is_error()) {
-            let mut c =
-                change(
-                    codes::UNREADABLE_PROFILE,
-                    String::new(),
-                    String::new(),
-                    None,
-                    None,
-                    format!(
-                    "{side}: {} could not be read ({}[{}]: {}); a component in it counts as absent",
-                    if side == "NEW" { new_name(&d.file) } else { old_name(&d.file) },
+            let mut c = change(
+                codes::UNREADABLE_PROFILE,
+                String::new(),
+                String::new(),
+                None,
+                None,
+                format!(
+                    "{side}: {} could not be read ({}[{}]: {}); {}",
+                    if side == "NEW" {
+                        new_name(&d.file)
+                    } else {
+                        old_name(&d.file)
+                    },
                     d.severity,
                     d.code,
-                    d.message
+                    d.message,
+                    if is_idl_file(&d.file) {
+                        "types it defines may be missing from the comparison"
+                    } else {
+                        "a component in it counts as absent"
+                    }
                 ),
-                );
+            );
             if side == "NEW" {
                 c.file = Some(new_name(&d.file));
                 c.line = d.pos.map(|p| p.line);
@@ -323,11 +356,28 @@ pub fn diff_named(old: &Catalog, new: &Catalog, old_name: Namer, new_name: Namer
             out.push(c);
         }
     }
+    idl.finish(&mut out);
+    systems::unreadable("OLD", &old_systems.unreadable, old_name, &mut out);
+    systems::unreadable("NEW", &new_systems.unreadable, new_name, &mut out);
+    breaks.connectors(
+        &old_systems.systems,
+        &new_systems.systems,
+        old_name,
+        new_name,
+        &mut out,
+    );
     sort(&mut out);
     Diff {
         changes: out,
         components: counts,
     }
+}
+
+/// An IDL file (its errors leave types undefined rather than components absent).
+fn is_idl_file(file: &str) -> bool {
+    std::path::Path::new(file)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("idl"))
 }
 
 /// Sorts changes by component, path, severity, code and message.
@@ -853,6 +903,7 @@ fn compare(
     component: &str,
     (oc, oi, old_file): (&Component, &Ident, &str),
     (nc, ni, file): (&Component, &Ident, &str),
+    idl: &mut idl::IdlDiff,
     out: &mut Vec<Change>,
 ) {
     let (ot, nt) = (tree(&oc.profile), tree(&nc.profile));
@@ -876,6 +927,7 @@ fn compare(
     for f in &found {
         classify(&ctx, f, basic_version_changed, oi, ni, out);
     }
+    idl::component(idl, &ctx, &oc.profile, &nc.profile, out);
     let breaking = out[start..].iter().any(|c| c.severity == Level::Breaking);
     let bumped = oi.version != ni.version || basic_version_changed;
     if breaking && !bumped {

@@ -55,6 +55,27 @@ impl Side {
     }
 }
 
+impl Side {
+    /// The RT System profiles of the side: those among the files the component walk skipped
+    /// (a single profile file, or a catalogue read back, skips none, so it has none).
+    pub fn systems(&self, opts: &LoadOptions) -> super::systems::Systems {
+        let skipped: std::collections::BTreeSet<&str> = self
+            .loaded
+            .skipped
+            .iter()
+            .filter(|s| s.kind == crate::walk::SkipKind::NotAProfile)
+            .map(|s| s.rel.as_str())
+            .collect();
+        // What the walk's paths are relative to: the temporary copy of a revision, else the
+        // input directory.
+        let input = match &self._temp {
+            Some(t) => t.path(),
+            None => self.root.as_path(),
+        };
+        super::systems::load(input, &skipped, opts)
+    }
+}
+
 /// Whether `name` looks like a catalogue written by `rtcdoc build --format json`.
 fn is_catalog_json(path: &Path) -> bool {
     path.extension()
@@ -231,8 +252,9 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
     }
 }
 
-/// The files the walk could take as profiles: `.xml`, `.yaml`, `.yml` and RTCBuilder's backup
-/// names. The others (sources, images) are not copied out of the repository.
+/// The files the walk could take as profiles (component or system): `.xml`, `.yaml`, `.yml`
+/// and RTCBuilder's backup names; and `.idl` files, for the IDL-level comparison. The others
+/// (sources, images) are not copied out of the repository.
 fn wanted(rel: &str) -> bool {
     let p = Path::new(rel);
     let safe = p
@@ -242,7 +264,7 @@ fn wanted(rel: &str) -> bool {
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    safe && (matches!(ext.as_deref(), Some("xml" | "yaml" | "yml"))
+    safe && (matches!(ext.as_deref(), Some("xml" | "yaml" | "yml" | "idl"))
         || crate::walk::named_like_profile(p))
 }
 
@@ -327,6 +349,7 @@ mod tests {
         assert!(wanted("a/RTC.xml"));
         assert!(wanted("a/b.YAML"));
         assert!(wanted("a/RTC.xml20230831164412"));
+        assert!(wanted("idl/Nav.idl"));
         assert!(!wanted("a/main.cpp"));
         assert!(!wanted("../x.xml"));
     }

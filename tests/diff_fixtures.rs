@@ -1,0 +1,545 @@
+//! `rtcdoc diff` through the binary on the fixture pairs of `tests/fixtures/diff/CODE/{old,new}`:
+//! every IDL-level code (DIFF13x, DIFF23x, DIFF33x) and every RT System connector code
+//! (DIFF14x) with its severity, path, component, file and the exit status; and the IDL and
+//! system cases around them (spellings, a git revision, a system only OLD has, an unreadable
+//! system profile, `--idl-path`).
+
+mod common;
+use common::{root, rtcdoc, write};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+fn fixture(code: &str) -> PathBuf {
+    root().join("tests/fixtures/diff").join(code)
+}
+
+fn run(dir: &Path, args: &[&str]) -> (i32, Value) {
+    let mut all = vec!["diff"];
+    all.extend_from_slice(args);
+    all.extend(["--format", "json"]);
+    let out = rtcdoc(&all, dir);
+    let json: Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "not JSON ({e}): {}\n{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        )
+    });
+    (out.status.code().expect("exit code"), json)
+}
+
+fn changes(json: &Value) -> &Vec<Value> {
+    json["changes"].as_array().expect("changes")
+}
+
+fn codes_of(json: &Value) -> Vec<String> {
+    let mut v: Vec<String> = changes(json)
+        .iter()
+        .map(|c| c["code"].as_str().unwrap_or("").to_string())
+        .collect();
+    v.sort();
+    v
+}
+
+struct Case {
+    code: &'static str,
+    path: &'static str,
+    component: &'static str,
+    /// Every code the pair gives, sorted.
+    all: &'static [&'static str],
+    /// The NEW file the change points at.
+    file: &'static str,
+    says: &'static str,
+}
+
+const NAV: &str = "RTC:Lab:Mobile:Nav:1.0.0";
+const NAV_RTC: &str = "new/Nav/RTC.xml";
+const SYSTEM: &str = "new/systems/NavSystem.xml";
+
+const CASES: &[Case] = &[
+    Case {
+        code: "DIFF130",
+        path: "dataPorts/odometry/type",
+        component: NAV,
+        all: &["DIFF130", "DIFF208"],
+        file: NAV_RTC,
+        says: "`IDL:Nav/TimedOdometry:1.0` to `IDL:Nav/TimedOdometry:1.1`",
+    },
+    Case {
+        code: "DIFF131",
+        path: "dataPorts/odometry/type/fields/speed",
+        component: NAV,
+        all: &["DIFF131", "DIFF208"],
+        file: NAV_RTC,
+        says: "member `speed` (double) was added to `Nav::TimedOdometry` as member 4 of 4",
+    },
+    Case {
+        code: "DIFF132",
+        path: "dataPorts/odometry/type/fields/history",
+        component: NAV,
+        all: &["DIFF132", "DIFF208"],
+        file: NAV_RTC,
+        says: "member `history` (sequence<Nav::Pose2D>) of `Nav::TimedOdometry` was removed",
+    },
+    Case {
+        code: "DIFF133",
+        path: "dataPorts/odometry/type/fields",
+        component: NAV,
+        all: &["DIFF133", "DIFF208"],
+        file: NAV_RTC,
+        says: "tm, pose, history → pose, tm, history",
+    },
+    Case {
+        code: "DIFF134",
+        path: "dataPorts/odometry/type/fields/pose.heading",
+        component: NAV,
+        // odometry's pose and history[], setOrigin's origin, plan's goal and path[].
+        all: &[
+            "DIFF134", "DIFF134", "DIFF134", "DIFF134", "DIFF134", "DIFF208",
+        ],
+        file: NAV_RTC,
+        says: "member `heading` of `Nav::Pose2D` is now `float` instead of `double`",
+    },
+    Case {
+        code: "DIFF135",
+        path: "dataPorts/mode/type/fields/data/values/MANUAL",
+        component: NAV,
+        all: &["DIFF135", "DIFF135", "DIFF208"],
+        file: NAV_RTC,
+        says: "value `MANUAL` (number 1) was removed from enum `Nav::Mode`",
+    },
+    Case {
+        code: "DIFF136",
+        path: "dataPorts/shape/type/cases/box",
+        component: NAV,
+        all: &["DIFF136", "DIFF208"],
+        file: NAV_RTC,
+        says: "case `box` of union `Nav::Shape` is selected by 2 instead of 1",
+    },
+    Case {
+        code: "DIFF137",
+        path: "dataPorts/shape/type/cases/box",
+        component: NAV,
+        all: &["DIFF137", "DIFF208"],
+        file: NAV_RTC,
+        says: "typedef `Nav::Vector3` is now `sequence<double, 4>` instead of `sequence<double, 3>`",
+    },
+    Case {
+        code: "DIFF138",
+        path: "servicePorts/Map/interfaces/map/type/operations/setOrigin",
+        component: NAV,
+        all: &["DIFF138", "DIFF208"],
+        file: NAV_RTC,
+        says: "operation `setOrigin` was removed from interface `Nav::MapService`",
+    },
+    Case {
+        code: "DIFF139",
+        path: "servicePorts/Map/interfaces/map/type/operations/getMap",
+        component: NAV,
+        all: &["DIFF139", "DIFF208"],
+        file: NAV_RTC,
+        says: "it takes 2 parameter(s) instead of 1 (`in double resolution` added)",
+    },
+    Case {
+        code: "DIFF231",
+        path: "dataPorts/mode/type/fields/data/values/DOCKING",
+        component: NAV,
+        all: &["DIFF231"],
+        file: NAV_RTC,
+        says: "value `DOCKING` (number 3) was appended to enum `Nav::Mode`",
+    },
+    Case {
+        code: "DIFF232",
+        path: "servicePorts/Map/interfaces/map/type/operations/clear",
+        component: NAV,
+        all: &["DIFF232"],
+        file: NAV_RTC,
+        says: "operation `clear` was added to interface `Nav::MapService`",
+    },
+    Case {
+        code: "DIFF331",
+        path: "dataPorts/odometry/type",
+        component: NAV,
+        all: &["DIFF331"],
+        file: NAV_RTC,
+        says: "the doc comment of `Nav::TimedOdometry` changed",
+    },
+    Case {
+        code: "DIFF332",
+        path: "idl/Nav::TimedMode",
+        component: "",
+        all: &["DIFF332"],
+        file: "",
+        says: "`Nav::TimedMode` is defined in OLD's IDL only",
+    },
+    Case {
+        code: "DIFF333",
+        path: "servicePorts/Map/interfaces/planner/type/operations/cancel",
+        component: NAV,
+        all: &["DIFF333"],
+        file: NAV_RTC,
+        says: "operation `cancel` was removed from interface `Nav::Planner`",
+    },
+    Case {
+        code: "DIFF141",
+        path: "connectors/NavSystem/odometry_odom",
+        component: "RTC:Lab:Mobile:Planner:1.0.0",
+        // The data and the service connector.
+        all: &["DIFF101", "DIFF141", "DIFF141"],
+        file: SYSTEM,
+        says: "data port connector `odometry_odom` (`Base0.odometry` → `Planner0.odom`) of system `RTSystem:Lab:NavSystem:1.0` (new/systems/NavSystem.xml) connects component `RTC:Lab:Mobile:Planner:1.0.0`, which was removed",
+    },
+    Case {
+        code: "DIFF142",
+        path: "connectors/NavSystem/odometry_odom",
+        component: "RTC:Lab:Mobile:Base:2.0.0",
+        all: &["DIFF102", "DIFF142", "DIFF306"],
+        file: SYSTEM,
+        says: "connects port `odometry`, which was removed",
+    },
+    Case {
+        code: "DIFF143",
+        path: "connectors/NavSystem/Map_Map",
+        component: "RTC:Lab:Mobile:Base:2.0.0",
+        all: &["DIFF104", "DIFF107", "DIFF143", "DIFF143", "DIFF306"],
+        file: SYSTEM,
+        says: "service port connector `Map_Map` (`Base0.Map` → `Planner0.Map`) of system `RTSystem:Lab:NavSystem:1.0` (new/systems/NavSystem.xml) connects port `Map`, which changed incompatibly (DIFF107 `servicePorts/Map/interfaces/map/type`)",
+    },
+];
+
+#[test]
+fn every_idl_and_connector_code_from_its_fixture_pair() {
+    for c in rtcdoc::diff::CODES {
+        let idl_or_connector = ["DIFF13", "DIFF14", "DIFF23", "DIFF33"]
+            .iter()
+            .any(|p| c.code.starts_with(p));
+        assert_eq!(
+            fixture(c.code).is_dir(),
+            idl_or_connector,
+            "{}: a fixture pair exactly for the IDL and connector codes",
+            c.code
+        );
+        if idl_or_connector {
+            assert!(
+                CASES.iter().any(|k| k.code == c.code),
+                "no case for {}",
+                c.code
+            );
+        }
+    }
+    for k in CASES {
+        let (exit, json) = run(&fixture(k.code), &["old", "new"]);
+        assert_eq!(codes_of(&json), k.all, "{}: {json:#}", k.code);
+        let entry = rtcdoc::diff::codes::code(k.code).expect("registered");
+        let found = changes(&json)
+            .iter()
+            .find(|c| c["code"] == k.code && c["path"] == k.path)
+            .unwrap_or_else(|| panic!("{}: no change at {}: {json:#}", k.code, k.path));
+        assert_eq!(found["severity"], entry.level.to_string(), "{}", k.code);
+        assert_eq!(found["name"], entry.name, "{}", k.code);
+        assert_eq!(found["component"], k.component, "{}", k.code);
+        let message = found["message"].as_str().unwrap_or("");
+        assert!(message.contains(k.says), "{}: {message}", k.code);
+        if k.file.is_empty() {
+            assert!(found["file"].is_null(), "{}", k.code);
+        } else {
+            assert_eq!(found["file"], k.file, "{}", k.code);
+            assert!(
+                found["line"].as_u64().unwrap_or(0) > 0,
+                "{}: a line",
+                k.code
+            );
+        }
+        let breaking = k.all.iter().any(|c| c.starts_with("DIFF1"));
+        assert_eq!(exit, i32::from(breaking), "{}: exit status", k.code);
+        assert_eq!(json["summary"]["failed"], breaking, "{}", k.code);
+        // `--fail-on info` fails on every pair (each has a change).
+        let (exit, _) = run(&fixture(k.code), &["old", "new", "--fail-on", "info"]);
+        assert_eq!(exit, 1, "{}", k.code);
+    }
+}
+
+#[test]
+fn the_same_idl_on_both_sides_is_no_change() {
+    for code in ["DIFF131", "DIFF141"] {
+        let (exit, json) = run(&fixture(code), &["old", "old"]);
+        assert_eq!(exit, 0);
+        assert!(changes(&json).is_empty(), "{json:#}");
+    }
+}
+
+/// Each side reads its own IDL: the pair differs only in the IDL, and without it there is no
+/// change at all.
+#[test]
+fn without_idl_files_the_pair_is_no_change() {
+    let (exit, json) = run(
+        &fixture("DIFF134"),
+        &["old", "new", "--exclude", "**/*.idl"],
+    );
+    assert_eq!(exit, 0);
+    assert!(changes(&json).is_empty(), "{json:#}");
+}
+
+const NAV_PROFILE: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:Lab:Mobile:Nav:1.0.0" rtc:version="0.2">
+  <rtc:BasicInfo xsi:type="rtcExt:basic_info_ext" rtc:name="Nav" rtc:vendor="Lab" rtc:category="Mobile" rtc:version="1.0.0"/>
+  <rtc:DataPorts xsi:type="rtcExt:dataport_ext" rtc:portType="DataOutPort" rtc:name="pose" rtc:type="Nav::Pose"/>
+</rtc:RtcProfile>
+"#;
+
+/// A typedef followed to the same type is a respelling (DIFF308), not a retyped member; a
+/// renamed typedef target that means another type is.
+#[test]
+fn typedefs_are_followed_before_types_are_compared() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/Nav/RTC.xml", NAV_PROFILE);
+    write(dir.path(), "new/Nav/RTC.xml", NAV_PROFILE);
+    write(
+        dir.path(),
+        "old/Nav.idl",
+        "module Nav { typedef double Real; struct Pose { double x; Real y; float z; }; };\n",
+    );
+    write(
+        dir.path(),
+        "new/Nav.idl",
+        "module Nav { typedef double Real; struct Pose { Real x; double y; Real z; }; };\n",
+    );
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    let found: std::collections::BTreeSet<(String, String)> = changes(&json)
+        .iter()
+        .map(|c| {
+            (
+                c["code"].as_str().unwrap_or("").to_string(),
+                c["path"].as_str().unwrap_or("").to_string(),
+            )
+        })
+        .collect();
+    let expected: std::collections::BTreeSet<(String, String)> = [
+        ("DIFF308", "dataPorts/pose/type/fields/x"),
+        ("DIFF308", "dataPorts/pose/type/fields/y"),
+        ("DIFF134", "dataPorts/pose/type/fields/z"),
+        ("DIFF208", "basicInfo/version"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    assert_eq!(found, expected, "{json:#}");
+    let codes = codes_of(&json);
+    assert_eq!(
+        codes,
+        ["DIFF134", "DIFF208", "DIFF308", "DIFF308"],
+        "{json:#}"
+    );
+    let z = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF134")
+        .expect("z");
+    assert_eq!(z["path"], "dataPorts/pose/type/fields/z");
+    assert_eq!(
+        (z["old"].as_str(), z["new"].as_str()),
+        (Some("float"), Some("Nav::Real"))
+    );
+    assert_eq!(exit, 1);
+}
+
+fn git(dir: &Path, args: &[&str]) -> bool {
+    std::process::Command::new("git")
+        .args(args)
+        .current_dir(dir)
+        .env("GIT_AUTHOR_NAME", "t")
+        .env("GIT_AUTHOR_EMAIL", "t@example.com")
+        .env("GIT_COMMITTER_NAME", "t")
+        .env("GIT_COMMITTER_EMAIL", "t@example.com")
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
+fn copy_tree(from: &Path, to: &Path) {
+    for entry in std::fs::read_dir(from).expect("read_dir") {
+        let entry = entry.expect("entry");
+        let target = to.join(entry.file_name());
+        if entry.path().is_dir() {
+            std::fs::create_dir_all(&target).expect("mkdir");
+            copy_tree(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), &target).expect("copy");
+        }
+    }
+}
+
+/// `REV:PATH` copies the IDL files and the system profiles of the revision too.
+#[test]
+fn a_git_revision_brings_its_idl_and_systems() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    if !git(dir.path(), &["init", "-q"]) {
+        eprintln!("skipped: git is not available");
+        return;
+    }
+    let work = dir.path().join("components");
+    for (code, expect) in [("DIFF131", "DIFF131"), ("DIFF142", "DIFF142")] {
+        let _ = std::fs::remove_dir_all(&work);
+        std::fs::create_dir_all(&work).expect("mkdir");
+        copy_tree(&fixture(code).join("old"), &work);
+        assert!(git(dir.path(), &["add", "-A"]));
+        assert!(git(dir.path(), &["commit", "-q", "-m", code]));
+        std::fs::remove_dir_all(&work).expect("rm");
+        std::fs::create_dir_all(&work).expect("mkdir");
+        copy_tree(&fixture(code).join("new"), &work);
+        let (exit, json) = run(dir.path(), &["HEAD:components", "components"]);
+        assert_eq!(exit, 1, "{code}: {json:#}");
+        assert!(
+            codes_of(&json).contains(&expect.to_string()),
+            "{code}: {json:#}"
+        );
+    }
+}
+
+/// A system only OLD has is still checked (its file is OLD's); NEW's version of a system wins
+/// over OLD's.
+#[test]
+fn systems_of_old_only_are_checked_and_new_ones_win() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_tree(&fixture("DIFF142"), dir.path());
+    std::fs::remove_dir_all(dir.path().join("new/systems")).expect("rm");
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(exit, 1);
+    let c = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF142")
+        .unwrap_or_else(|| panic!("{json:#}"));
+    assert!(c["file"].is_null(), "{c:#}");
+    assert_eq!(c["oldFile"], "old/systems/NavSystem.xml");
+    // NEW's system without the connector: nothing to report.
+    let system = std::fs::read_to_string(fixture("DIFF142").join("new/systems/NavSystem.xml"))
+        .expect("system");
+    let start = system
+        .find("    <rts:DataPortConnectors")
+        .expect("connector");
+    let end = system.find("</rts:DataPortConnectors>\n").expect("end") + 26;
+    write(
+        dir.path(),
+        "new/systems/NavSystem.xml",
+        &format!("{}{}", &system[..start], &system[end..]),
+    );
+    let (_, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(codes_of(&json), ["DIFF102", "DIFF306"], "{json:#}");
+}
+
+#[test]
+fn an_unreadable_system_profile_is_a_warning() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_tree(&fixture("DIFF142"), dir.path());
+    write(
+        dir.path(),
+        "new/systems/NavSystem.xml",
+        "<?xml version=\"1.0\"?>\n<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\">\n  <rts:DataPortConnectors>\n",
+    );
+    let (_, json) = run(dir.path(), &["old", "new"]);
+    let c = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF002")
+        .unwrap_or_else(|| panic!("{json:#}"));
+    assert!(
+        c["message"]
+            .as_str()
+            .unwrap_or("")
+            .contains("RT System profile new/systems/NavSystem.xml could not be read"),
+        "{c:#}"
+    );
+    assert_eq!(c["file"], "new/systems/NavSystem.xml");
+    // NEW's broken system does not hide OLD's: OLD's is checked (NEW has no system by that id).
+    assert!(codes_of(&json).contains(&"DIFF142".to_string()), "{json:#}");
+}
+
+/// `--idl-path` applies to both sides: a side without IDL of its own finds the types there
+/// (the files below an input come first, so the other side keeps its own definitions).
+#[test]
+fn idl_path_applies_to_both_sides() {
+    for (without, path_from) in [("new", "new"), ("old", "old")] {
+        let dir = tempfile::tempdir().expect("tempdir");
+        copy_tree(&fixture("DIFF131"), dir.path());
+        std::fs::rename(
+            dir.path().join(path_from).join("idl"),
+            dir.path().join("shared-idl"),
+        )
+        .expect("mv");
+        assert!(!dir.path().join(without).join("idl").exists());
+        let (exit, json) = run(dir.path(), &["old", "new", "--idl-path", "shared-idl"]);
+        assert_eq!(exit, 1, "{without}: {json:#}");
+        assert_eq!(
+            codes_of(&json),
+            ["DIFF131", "DIFF208"],
+            "{without}: {json:#}"
+        );
+        // Without it, that side has no IDL: the types are one-sided.
+        let (exit, json) = run(dir.path(), &["old", "new"]);
+        assert_eq!(exit, 0, "{without}: {json:#}");
+        assert!(codes_of(&json).iter().all(|c| c == "DIFF332"), "{json:#}");
+    }
+}
+
+/// An IDL file with a syntax error is a DIFF002 about its types, not about a component.
+#[test]
+fn an_idl_syntax_error_is_a_warning_about_its_types() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_tree(&fixture("DIFF131"), dir.path());
+    write(
+        dir.path(),
+        "new/idl/Broken.idl",
+        "module Nav { struct X { long a } };\n",
+    );
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(exit, 1);
+    let c = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF002")
+        .unwrap_or_else(|| panic!("{json:#}"));
+    let message = c["message"].as_str().unwrap_or("");
+    assert!(
+        message.contains("new/idl/Broken.idl could not be read")
+            && message.ends_with("types it defines may be missing from the comparison"),
+        "{message}"
+    );
+    assert_eq!(c["file"], "new/idl/Broken.idl");
+    // The other file is still compared.
+    assert!(codes_of(&json).contains(&"DIFF131".to_string()));
+}
+
+/// A system in the YAML form of rtsprofile/rtshell is read like the XML one.
+#[test]
+fn a_yaml_system_profile_is_checked_too() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_tree(&fixture("DIFF142"), dir.path());
+    std::fs::remove_file(dir.path().join("new/systems/NavSystem.xml")).expect("rm");
+    std::fs::remove_file(dir.path().join("old/systems/NavSystem.xml")).expect("rm");
+    write(
+        dir.path(),
+        "new/systems/nav.yaml",
+        r#"rtsProfile:
+  id: "RTSystem:Lab:NavYaml:1.0"
+  version: 0.2
+  dataPortConnectors:
+    - connectorId: y1
+      name: odo
+      dataType: "IDL:RTC/TimedPose2D:1.0"
+      sourceDataPort:
+        componentId: "RTC:Lab:Mobile:Base:1.0.0"
+        instanceName: Base0
+        portName: Base0.odometry
+      targetDataPort:
+        componentId: "RTC:Lab:Mobile:Planner:1.0.0"
+        instanceName: Planner0
+        portName: Planner0.odom
+"#,
+    );
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(exit, 1);
+    let c = changes(&json)
+        .iter()
+        .find(|c| c["code"] == "DIFF142")
+        .unwrap_or_else(|| panic!("{json:#}"));
+    assert_eq!(c["path"], "connectors/NavYaml/odo");
+    assert_eq!(c["file"], "new/systems/nav.yaml");
+    assert!(c["line"].as_u64().unwrap_or(0) > 0, "{c:#}");
+}
