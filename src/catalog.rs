@@ -5,6 +5,8 @@
 //! interface type), category and vendor facets, and stable slugs and anchors for every page and
 //! row. Renderers only read it; all cross-linking logic lives here.
 
+pub mod systems;
+
 use crate::diagnostic::{codes, Diagnostic, Severity};
 use crate::model::{Direction, PortDirection, Profile};
 use crate::parse::SourceFormat;
@@ -320,6 +322,10 @@ pub struct Catalog {
     /// and service interfaces. Left out of `catalog.json` when there are none.
     #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
     pub idl: crate::idl::IdlSet,
+    /// The RT System profiles read ([`Catalog::attach_systems`]), by source path. Left out of
+    /// `catalog.json` when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub systems: Vec<systems::System>,
     #[serde(skip)]
     type_index: HashMap<String, usize>,
     #[serde(skip)]
@@ -702,6 +708,7 @@ impl Catalog {
             vendors,
             diagnostics,
             idl: Default::default(),
+            systems: Vec::new(),
             type_index,
             interface_index,
         }
