@@ -230,7 +230,10 @@ fn system_format(path: &Path, bytes: &[u8]) -> parse::SourceFormat {
     match ext.as_deref() {
         Some("yaml" | "yml") => parse::SourceFormat::Yaml,
         Some("xml") => parse::SourceFormat::Xml,
-        _ if first == Some(&b'<') || bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]) => {
+        _ if first == Some(&b'<')
+            || bytes.starts_with(&[0xFF, 0xFE])
+            || bytes.starts_with(&[0xFE, 0xFF]) =>
+        {
             parse::SourceFormat::Xml
         }
         _ => parse::SourceFormat::Yaml,

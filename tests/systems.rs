@@ -3,11 +3,27 @@
 //! the check rules.
 
 mod common;
+mod html_support;
 
+use html_support::{broken_links, build_site, tags};
 use rtcdoc::build::{self, LoadOptions};
 use rtcdoc::catalog::systems::{MatchKind, PortLink};
 use rtcdoc::catalog::Catalog;
+use rtcdoc::render::SiteOptions;
 use std::path::PathBuf;
+
+fn read(p: &std::path::Path) -> String {
+    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+/// The part of `html` from the element with `id` to the end of its section.
+fn section<'a>(html: &'a str, id: &str) -> &'a str {
+    let start = html
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no section {id}"));
+    let rest = &html[start..];
+    &rest[..rest.find("</section>").unwrap_or(rest.len())]
+}
 
 fn site_fixture() -> PathBuf {
     common::root().join("tests/fixtures/systems/site")
@@ -52,7 +68,11 @@ fn systems_are_loaded_and_linked() {
         cat.diagnostics
     );
     // Who uses what.
-    let ci = cat.components.iter().position(|c| c.slug == "planner").unwrap();
+    let ci = cat
+        .components
+        .iter()
+        .position(|c| c.slug == "planner")
+        .unwrap();
     let using = cat.systems_using(ci);
     assert_eq!(using.len(), 1);
     assert_eq!(using[0].1, vec!["Planner0"]);
@@ -66,9 +86,214 @@ fn a_system_alone_is_something_to_document() {
     let cat = load(&site_fixture().join("system/PatrolSystem.xml"));
     assert_eq!(cat.systems.len(), 1);
     assert!(cat.components.is_empty());
-    assert!(cat.systems[0].instances.iter().all(|i| i.component.is_none()));
+    assert!(cat.systems[0]
+        .instances
+        .iter()
+        .all(|i| i.component.is_none()));
     // The ports still come from the system file and its connectors.
     let ports = cat.instance_ports(&cat.systems[0], 1);
     let names: Vec<&str> = ports.iter().map(|p| p.name.as_str()).collect();
     assert_eq!(names, ["image", "path", "camera"]);
+}
+
+#[test]
+fn system_page_shows_every_instance_and_connector_with_named_links() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&site_fixture(), &out, SiteOptions::default());
+    assert_eq!(loaded.catalog.systems.len(), 1);
+    let index = read(&out.join("systems/index.html"));
+    assert!(
+        index.contains(r#"href="patrolsystem.html">PatrolSystem</a>"#),
+        "{index}"
+    );
+    let html = read(&out.join("systems/patrolsystem.html"));
+    let title = &html[html.find("<title>").unwrap() + 7..];
+    assert!(title.starts_with("PatrolSystem "), "{title}");
+    // Every instance, linked to its component; drift flagged.
+    let inst = section(&html, "instances");
+    for (row, comp) in [
+        ("inst-camera0", "../components/camera.html"),
+        ("inst-planner0", "../components/planner.html"),
+    ] {
+        assert!(inst.contains(&format!(r#"<tr id="{row}">"#)), "{row}");
+        assert!(inst.contains(&format!(r#"href="{comp}""#)), "{comp}");
+    }
+    assert!(
+        inst.contains("version drift: the catalogue has 1.1.0"),
+        "{inst}"
+    );
+    // Every connector, ends linked to the ports of the component pages, the type to its page.
+    let data = section(&html, "data-connectors");
+    assert!(
+        data.contains(r#"<a href="../components/camera.html#port-image"><code>image</code></a>"#),
+        "{data}"
+    );
+    assert!(
+        data.contains(r#"<a href="../components/planner.html#port-image"><code>image</code></a>"#),
+        "{data}"
+    );
+    assert!(
+        data.contains(r#"href="../types/rtc-cameraimage.html""#),
+        "{data}"
+    );
+    assert!(data.contains("periodic") && data.contains("0.5") && data.contains("corba_cdr"));
+    let svc = section(&html, "service-connectors");
+    assert!(
+        svc.contains("#sport-camera") && svc.contains("#sport-control"),
+        "{svc}"
+    );
+    assert!(
+        svc.contains(r#"href="../interfaces/cameracontrol.html""#),
+        "{svc}"
+    );
+    // The diagram: a group (not an image) with a named link per instance and per port.
+    let svg = &html[html.find("<svg").unwrap()..html.find("</svg>").unwrap()];
+    assert!(svg.contains(r#"role="group""#) && !svg.contains(r#"role="img""#));
+    let links: Vec<_> = tags(svg).into_iter().filter(|t| t.name == "a").collect();
+    let labels: Vec<&str> = links.iter().filter_map(|t| t.attr("aria-label")).collect();
+    assert_eq!(links.len(), labels.len(), "every link is named");
+    for l in [
+        "Instance Camera0 (Camera)",
+        "Instance Planner0 (Planner)",
+        "out-port Camera0.image",
+        "in-port Planner0.image",
+        "out-port Planner0.path",
+        "service port Planner0.camera",
+        "service port Camera0.control",
+    ] {
+        assert!(labels.contains(&l), "{l} in {labels:?}");
+    }
+    assert_eq!(svg.matches("class=\"connector data\"").count(), 1);
+    assert_eq!(svg.matches("class=\"connector service\"").count(), 1);
+    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connectors, 1 service connectors.</figcaption>"));
+    // Configuration used next to the defaults: differences marked, values checked.
+    let conf = section(&html, "configuration");
+    assert!(
+        conf.contains("<mark>0.02</mark></td><td>0.01</td>"),
+        "{conf}"
+    );
+    assert!(conf.contains("<mark>0.5</mark></td><td>0.3</td>"), "{conf}");
+    // Orders and groups.
+    assert!(section(&html, "orders").contains("after Camera0 (timeout 500 ms, SYNC)"));
+    assert!(section(&html, "groups").contains("Camera0, Planner0"));
+    // The component pages list the system; the type page lists the connector.
+    let planner = read(&out.join("components/planner.html"));
+    let used = section(&planner, "systems");
+    assert!(
+        used.contains(r#"<a href="../systems/patrolsystem.html">PatrolSystem (Planner0)</a>"#),
+        "{used}"
+    );
+    let ty = read(&out.join("types/rtc-cameraimage.html"));
+    assert!(
+        section(&ty, "system-connectors").contains("PatrolSystem: Camera0.image → Planner0.image")
+    );
+    // Navigation and search.
+    assert!(read(&out.join("index.html")).contains(r#"<a href="systems/index.html">Systems</a>"#));
+    assert!(planner.contains(r#"<a href="../systems/index.html">Systems</a>"#));
+    let search = read(&out.join("search-index.js"));
+    assert!(search.contains("\"systems/patrolsystem.html\""), "{search}");
+    let broken = broken_links(&out);
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+}
+
+#[test]
+fn host_data_is_hidden_unless_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let hidden = dir.path().join("hidden");
+    build_site(&site_fixture(), &hidden, SiteOptions::default());
+    let html = read(&hidden.join("systems/patrolsystem.html"));
+    for secret in [
+        "robot-pc.local",
+        "192.168.10.5:2810",
+        "IOR:010000001a",
+        "nameserver.example",
+        "localhost:2809/Camera0.rtc",
+    ] {
+        assert!(!html.contains(secret), "{secret} published");
+    }
+    assert!(
+        html.contains("7 host values hidden"),
+        "the page says what it left out"
+    );
+    assert!(html.contains("lab B"), "other properties stay");
+    let shown = dir.path().join("shown");
+    build_site(
+        &site_fixture(),
+        &shown,
+        SiteOptions {
+            show_host_data: true,
+            ..Default::default()
+        },
+    );
+    let html = read(&shown.join("systems/patrolsystem.html"));
+    for secret in [
+        "robot-pc.local",
+        "192.168.10.5:2810",
+        "IOR:010000001a",
+        "nameserver.example",
+        "localhost:2809/Camera0.rtc",
+    ] {
+        assert!(html.contains(secret), "{secret} shown with show-host-data");
+    }
+    assert!(!html.contains("host values hidden"));
+}
+
+#[test]
+fn show_host_data_is_a_configuration_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("in");
+    std::fs::create_dir_all(&input).unwrap();
+    std::fs::copy(
+        site_fixture().join("system/PatrolSystem.xml"),
+        input.join("PatrolSystem.xml"),
+    )
+    .unwrap();
+    std::fs::write(input.join("rtcdoc.toml"), "show-host-data = true\n").unwrap();
+    let out = common::rtcdoc(&["build", "in", "-o", "site"], d);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(read(&d.join("site/systems/patrolsystem.html")).contains("robot-pc.local"));
+}
+
+#[test]
+fn a_diagram_of_many_instances_without_locations_is_laid_out_in_layers() {
+    // A chain of 24 instances: each box left of the next, none overlapping.
+    let mut comps = String::new();
+    let mut conns = String::new();
+    for i in 0..24 {
+        comps.push_str(&format!(
+            r#"<rts:Components rts:id="RTC:L:C:Stage:1.0" rts:instanceName="S{i}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="S{i}.in"/><rts:DataPorts rts:name="S{i}.out"/></rts:Components>"#
+        ));
+        if i > 0 {
+            conns.push_str(&format!(
+                r#"<rts:DataPortConnectors rts:connectorId="c{i}" rts:name="c{i}" rts:dataType="IDL:RTC/TimedLong:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:L:C:Stage:1.0" rts:instanceName="S{p}" rts:portName="S{p}.out"/><rts:targetDataPort rts:componentId="RTC:L:C:Stage:1.0" rts:instanceName="S{i}" rts:portName="S{i}.in"/></rts:DataPortConnectors>"#,
+                p = i - 1
+            ));
+        }
+    }
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:L:Chain:1.0" rts:version="0.2" rts:creationDate="2024-01-01T00:00:00" rts:updateDate="2024-01-01T00:00:00">{comps}{conns}</rts:RtsProfile>"#
+    );
+    let dir = tempfile::tempdir().unwrap();
+    common::write(dir.path(), "in/Chain.xml", &xml);
+    let out = dir.path().join("site");
+    build_site(&dir.path().join("in"), &out, SiteOptions::default());
+    let html = read(&out.join("systems/chain.html"));
+    let svg = &html[html.find("<svg").unwrap()..html.find("</svg>").unwrap()];
+    let boxes: Vec<f32> = tags(svg)
+        .into_iter()
+        .filter(|t| t.name == "rect" && t.attr("class") == Some("rtc-box"))
+        .map(|t| t.attr("x").unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(boxes.len(), 24);
+    assert!(boxes.windows(2).all(|w| w[1] > w[0] + 150.0), "{boxes:?}");
+    assert_eq!(svg.matches("class=\"connector data\"").count(), 23);
+    // Ports named by the system file, directions from the connectors.
+    assert!(svg.contains(r#"aria-label="out-port S0.out""#));
+    assert!(svg.contains(r#"aria-label="in-port S23.in""#));
 }

@@ -433,3 +433,132 @@ impl Catalog {
         out
     }
 }
+
+/// What a configuration value of an instance is against its component's declaration.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ConfigCheck {
+    /// Of the declared type and within the constraint (or nothing to check it against).
+    Ok,
+    /// The component declares no parameter of this name.
+    Undeclared,
+    /// Not a value of the declared type; the text says why.
+    BadType(String),
+    /// Outside the declared constraint; the text names the constraint and what failed.
+    Violated(String),
+}
+
+/// Checks `value`, given to parameter `name` of component `c` by a system, against the
+/// parameter's declared type and constraint (as `check` does for default values).
+pub fn check_configuration(c: &Component, name: &str, value: &str) -> ConfigCheck {
+    use crate::constraint::{self, Verdict};
+    use crate::value::{self, ValueType};
+    let Some(conf) = c
+        .profile
+        .configurations()
+        .iter()
+        .find(|k| k.name.as_deref().map(str::trim) == Some(name.trim()))
+    else {
+        return ConfigCheck::Undeclared;
+    };
+    let ty = non_empty(&conf.type_).map_or(ValueType::Unknown, ValueType::parse);
+    if let Err(why) = value::check_value(ty, value) {
+        return ConfigCheck::BadType(format!(
+            "not a valid {}: {why}",
+            conf.type_.as_deref().unwrap_or("").trim()
+        ));
+    }
+    let Some(k) = conf
+        .constraint
+        .as_ref()
+        .filter(|k| k.placeholder().is_none())
+    else {
+        return ConfigCheck::Ok;
+    };
+    if !constraint::problems(k, ty).is_empty() {
+        return ConfigCheck::Ok;
+    }
+    let eval_ty = match (conf.widget().map(str::trim), ty) {
+        (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
+        (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
+            ValueType::Vector(value::ScalarType::Text)
+        }
+        _ => ty,
+    };
+    match constraint::evaluate(k, value, eval_ty) {
+        Verdict::Violated(why) => ConfigCheck::Violated(format!(
+            "outside the constraint `{}`: {why}",
+            constraint::describe(k)
+        )),
+        _ => ConfigCheck::Ok,
+    }
+}
+
+/// Every value of the system as (path, value) rows (keys sorted within a node, lists in document
+/// order): the full record that the pages summarise. Reader bookkeeping (positions, derived fields) is left out; so are
+/// host data (private properties, naming paths) unless `show_host`.
+pub fn all_values(p: &RtSystem, show_host: bool) -> Vec<(String, String)> {
+    fn walk(v: &serde_json::Value, path: &str, show_host: bool, out: &mut Vec<(String, String)>) {
+        use serde_json::Value as J;
+        match v {
+            J::Object(m) => {
+                if !show_host
+                    && (m.get("private") == Some(&J::Bool(true))
+                        || m.get("value")
+                            .and_then(J::as_str)
+                            .is_some_and(is_naming_path))
+                {
+                    return;
+                }
+                for (k, x) in m {
+                    if matches!(
+                        k.as_str(),
+                        "pos" | "idParts" | "shortName" | "dataTypeScoped" | "pseudo" | "private"
+                    ) || (!show_host && k == "pathUri")
+                    {
+                        continue;
+                    }
+                    let p = if path.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{path}.{k}")
+                    };
+                    walk(x, &p, show_host, out);
+                }
+            }
+            J::Array(a) => {
+                for (i, x) in a.iter().enumerate() {
+                    walk(x, &format!("{path}[{i}]"), show_host, out);
+                }
+            }
+            J::Null => {}
+            J::String(s) => out.push((path.to_string(), s.clone())),
+            other => out.push((path.to_string(), other.to_string())),
+        }
+    }
+    let mut out = Vec::new();
+    if let Ok(v) = serde_json::to_value(p) {
+        walk(&v, "", show_host, &mut out);
+    }
+    out
+}
+
+/// A naming path with the host in it (`localhost:2809/Camera0.rtc`, the `COMPONENT_PATH_ID` of
+/// connector ends, `pathUri`): host data, like the endpoints the reader flags as private.
+pub fn is_naming_path(v: &str) -> bool {
+    v.trim()
+        .split_once('/')
+        .is_some_and(|(host, _)| crate::system::is_private_property(None, Some(host)))
+}
+
+/// How many host values the pages and the JSON leave out of `p` unless asked to show them:
+/// private properties, properties whose value is a naming path, and instances' `pathUri`.
+pub fn host_values(p: &RtSystem) -> usize {
+    p.all_properties()
+        .iter()
+        .filter(|q| q.private || q.value.as_deref().is_some_and(is_naming_path))
+        .count()
+        + p.components
+            .iter()
+            .filter(|c| non_empty(&c.path_uri).is_some())
+            .count()
+}
