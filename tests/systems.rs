@@ -297,3 +297,113 @@ fn a_diagram_of_many_instances_without_locations_is_laid_out_in_layers() {
     assert!(svg.contains(r#"aria-label="out-port S0.out""#));
     assert!(svg.contains(r#"aria-label="in-port S23.in""#));
 }
+
+#[test]
+fn markdown_doxygen_and_json_carry_systems() {
+    use rtcdoc::render::{doxygen, markdown};
+    let cat = load(&site_fixture());
+    let lang = rtcdoc::i18n::Lang::En;
+    // Markdown: an index, a page per system in SUMMARY, links both ways.
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", lang).into_iter().collect();
+    let page = &md["systems/patrolsystem.md"];
+    for want in [
+        "[Camera](../components/camera.md)",
+        "version drift: the catalogue has 1.1.0",
+        "| Camera0.image\\_Planner0.image | Camera0.image | Planner0.image | [IDL:RTC/CameraImage:1.0](../types/rtc-cameraimage.md) | corba\\_cdr | push | periodic | 0.5 |",
+        "| Planner0.camera\\_Camera0.control | Planner0.camera | Camera0.control | corba |",
+        "7 host values hidden",
+    ] {
+        assert!(page.contains(want), "{want} in\n{page}");
+    }
+    assert!(!page.contains("robot-pc.local"));
+    assert!(md["SUMMARY.md"]
+        .contains("- [Systems](systems.md)\n    - [PatrolSystem](systems/patrolsystem.md)"));
+    assert!(md["systems.md"].contains("[PatrolSystem](systems/patrolsystem.md)"));
+    assert!(md["components/planner.md"]
+        .contains("[PatrolSystem (Planner0)](../systems/patrolsystem.md)"));
+    assert!(md["types/rtc-cameraimage.md"]
+        .contains("[PatrolSystem: Camera0.image → Planner0.image](../systems/patrolsystem.md)"));
+    // Doxygen: pages and references, listed in the Doxyfile.
+    let dox: std::collections::BTreeMap<String, String> =
+        doxygen::pages(&cat, "Cat", lang).into_iter().collect();
+    let page = &dox["systems/patrolsystem.dox"];
+    assert!(
+        page.starts_with("/// \\page rtc_sys_patrolsystem PatrolSystem"),
+        "{page}"
+    );
+    assert!(page.contains("\\ref rtc_comp_camera \"Camera\""), "{page}");
+    assert!(dox["systems.dox"].contains("\\subpage rtc_sys_patrolsystem"));
+    assert!(dox["mainpage.dox"].contains("\\subpage rtc_systems (1)"));
+    assert!(dox["components/camera.dox"]
+        .contains("\\ref rtc_sys_patrolsystem \"PatrolSystem (Camera0)\""));
+    assert!(dox["Doxyfile"].contains("systems/patrolsystem.dox"));
+    // JSON: systems with their links; host data left out by default.
+    let dir = tempfile::tempdir().unwrap();
+    for (show, name) in [(false, "hidden"), (true, "shown")] {
+        let out = dir.path().join(name);
+        build::build(&build::BuildOptions {
+            input: site_fixture(),
+            output: out.clone(),
+            formats: vec![rtcdoc::render::Format::Json],
+            strict: false,
+            load: LoadOptions::default(),
+            site: SiteOptions {
+                show_host_data: show,
+                ..Default::default()
+            },
+        })
+        .expect("build");
+        let text = read(&out.join("catalog.json"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let s = &v["systems"][0];
+        assert_eq!(s["slug"], "patrolsystem");
+        assert_eq!(s["instances"][1]["component"], "planner");
+        assert_eq!(s["instances"][1]["versionDrift"], "1.1.0");
+        assert_eq!(s["instances"][0]["matchedBy"], "exact");
+        assert_eq!(s["dataConnectors"][0]["source"]["instance"], 0);
+        assert_eq!(s["dataConnectors"][0]["target"]["port"]["name"], "image");
+        assert_eq!(
+            s["serviceConnectors"][0]["target"]["port"]["kind"],
+            "service"
+        );
+        assert_eq!(s["profile"]["components"].as_array().unwrap().len(), 2);
+        assert_eq!(text.contains("robot-pc.local"), show, "{name}");
+        assert_eq!(text.contains("localhost:2809/Camera0.rtc"), show, "{name}");
+        // Other properties are kept either way.
+        assert!(text.contains("\"lab B\""));
+    }
+}
+
+#[test]
+fn doxygen_runs_on_a_system_without_warnings() {
+    if !html_support::have("doxygen") {
+        println!("skipped: doxygen is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("dox");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            site_fixture().to_str().unwrap(),
+            "-f",
+            "doxygen",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let d = std::process::Command::new("doxygen")
+        .arg("Doxyfile")
+        .current_dir(&out)
+        .output()
+        .expect("doxygen");
+    let err = String::from_utf8_lossy(&d.stderr);
+    assert!(
+        d.status.success() && err.trim().is_empty(),
+        "doxygen said:\n{err}"
+    );
+    assert!(out.join("html/rtc_sys_patrolsystem.html").is_file());
+}

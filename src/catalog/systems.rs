@@ -562,3 +562,73 @@ pub fn host_values(p: &RtSystem) -> usize {
             .filter(|c| non_empty(&c.path_uri).is_some())
             .count()
 }
+
+/// Calls `f` on every property anywhere in `p` (the nodes of [`RtSystem::all_properties`]).
+fn for_each_property_mut(p: &mut RtSystem, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+    use crate::system::TargetComponent;
+    fn target(t: &mut TargetComponent, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+        t.properties.iter_mut().for_each(&mut *f);
+    }
+    fn end(e: &mut Option<PortEnd>, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+        if let Some(e) = e {
+            e.properties.iter_mut().for_each(&mut *f);
+        }
+    }
+    p.properties.iter_mut().for_each(&mut *f);
+    for c in &mut p.components {
+        c.properties.iter_mut().for_each(&mut *f);
+        for port in c.data_ports.iter_mut().chain(c.service_ports.iter_mut()) {
+            port.properties.iter_mut().for_each(&mut *f);
+        }
+        for ec in &mut c.execution_contexts {
+            ec.properties.iter_mut().for_each(&mut *f);
+            ec.participants.iter_mut().for_each(|t| target(t, f));
+        }
+        c.participants.iter_mut().for_each(|t| target(t, f));
+    }
+    for g in &mut p.groups {
+        g.members.iter_mut().for_each(|t| target(t, f));
+    }
+    for d in &mut p.data_port_connectors {
+        d.properties.iter_mut().for_each(&mut *f);
+        end(&mut d.source, f);
+        end(&mut d.target, f);
+    }
+    for s in &mut p.service_port_connectors {
+        s.properties.iter_mut().for_each(&mut *f);
+        end(&mut s.source, f);
+        end(&mut s.target, f);
+    }
+    for o in &mut p.orders {
+        for t in &mut o.targets {
+            t.properties.iter_mut().for_each(&mut *f);
+            if let Some(tc) = &mut t.target_component {
+                target(tc, f);
+            }
+            if let Some(pr) = &mut t.preceding {
+                pr.preceding_components
+                    .iter_mut()
+                    .for_each(|t| target(t, f));
+            }
+        }
+    }
+}
+
+impl System {
+    /// A copy without host data, for published output: the values of private properties and
+    /// of naming-path properties are dropped (`value` absent; the name and the `private` flag
+    /// stay, so a reader sees that something was there), and so are instances' `pathUri`.
+    pub fn without_host_data(&self) -> System {
+        let mut s = self.clone();
+        for_each_property_mut(&mut s.profile, &mut |q| {
+            if q.private || q.value.as_deref().is_some_and(is_naming_path) {
+                q.private = true;
+                q.value = None;
+            }
+        });
+        for c in &mut s.profile.components {
+            c.path_uri = None;
+        }
+        s
+    }
+}

@@ -3,7 +3,7 @@
 //! Shape (documented in `book/src/json.md`): `{"generator", "formatVersion", "components": [...],
 //! "dataTypes": [...], "interfaces": [...], "categories": [...], "vendors": [...],
 //! "diagnostics": [...]}`; each component is the whole profile model plus `source`, `format`,
-//! `slug` and `anchors`.
+//! `slug` and `anchors`; `systems` (when any) lists the RT System profiles with their links.
 
 use super::{RenderContext, Renderer};
 use crate::catalog::Catalog;
@@ -43,6 +43,8 @@ struct Skeleton<'a> {
     diagnostics: &'a [crate::diagnostic::Diagnostic],
     #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
     idl: &'a crate::idl::IdlSet,
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    systems: &'a [crate::catalog::systems::System],
 }
 
 /// Where the components go in the pretty-printed skeleton (top-level keys are indented by two
@@ -57,7 +59,29 @@ pub fn write_json(
     title: &str,
     w: &mut dyn std::io::Write,
 ) -> anyhow::Result<()> {
+    write_json_with(catalog, title, true, w)
+}
+
+/// [`write_json`], with the host data of RT System profiles left out unless `show_host_data`
+/// ([`crate::catalog::systems::System::without_host_data`]).
+pub fn write_json_with(
+    catalog: &Catalog,
+    title: &str,
+    show_host_data: bool,
+    w: &mut dyn std::io::Write,
+) -> anyhow::Result<()> {
     use rayon::prelude::*;
+    let redacted: Vec<crate::catalog::systems::System>;
+    let systems = if show_host_data {
+        &catalog.systems[..]
+    } else {
+        redacted = catalog
+            .systems
+            .iter()
+            .map(|s| s.without_host_data())
+            .collect();
+        &redacted[..]
+    };
     let skeleton = serde_json::to_vec_pretty(&Skeleton {
         generator: super::generator(),
         format_version: FORMAT_VERSION,
@@ -69,6 +93,7 @@ pub fn write_json(
         vendors: &catalog.vendors,
         diagnostics: &catalog.diagnostics,
         idl: &catalog.idl,
+        systems,
     })?;
     let at = skeleton
         .windows(COMPONENTS_KEY.len())
@@ -128,7 +153,7 @@ impl Renderer for JsonRenderer {
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         // Streamed: at 10,000 components the document is hundreds of megabytes.
         out.write_with("catalog.json", &mut |w| {
-            write_json(ctx.catalog, &ctx.site.title, w)
+            write_json_with(ctx.catalog, &ctx.site.title, ctx.site.show_host_data, w)
         })?;
         Ok(1)
     }
