@@ -182,6 +182,19 @@ impl Catalog {
             let cat = non_empty(&b.category).unwrap_or("");
             let n = non_empty(&b.name).unwrap_or("");
             exact.entry(key3(v, cat, n)).or_default().push(i);
+            // The instance's id is the `rtc:id` of the component's RTC.xml, which may say
+            // another vendor or category than BasicInfo (RTC202): match that too.
+            if let Some(p) = c
+                .profile
+                .id
+                .as_deref()
+                .and_then(|id| crate::model::IdParts::parse(id, b))
+            {
+                let k = key3(p.vendor, p.category, p.name);
+                if k != key3(v, cat, n) {
+                    exact.entry(k).or_default().push(i);
+                }
+            }
             by_vendor_name
                 .entry((facet_key(v), facet_key(n)))
                 .or_default()

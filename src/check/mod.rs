@@ -4,7 +4,8 @@
 //! spec section it comes from and a hint ([`registry::RULES`]). Codes: RTC001–RTC019 come from
 //! the loader and the catalogue; RTC020–RTC029 from the IDL reader ([`crate::idl::codes`]);
 //! RTC1xx schema level (spec chapter 6), RTC2xx spec semantics
-//! (chapter 2), RTC3xx values and constraints, RTC4xx catalogue level, RTC5xx doc coverage.
+//! (chapter 2), RTC3xx values and constraints, RTC4xx catalogue level, RTC5xx doc coverage, RTC6xx RT System
+//! profiles.
 //!
 //! [`run`] returns the rule diagnostics (not the loader's); [`check`] returns a [`Report`] with
 //! the loader's and the rules' diagnostics together, counts and the documentation coverage.
@@ -12,6 +13,7 @@
 pub mod registry;
 pub mod report;
 mod rules;
+mod systems;
 
 pub use registry::{explain, rule, Rule, RULES};
 pub use rules::check_date_time;
@@ -31,6 +33,7 @@ pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
         .flat_map_iter(rules::component)
         .collect();
     out.extend(rules::catalogue(catalog));
+    out.extend(systems::run(catalog));
     sort(&mut out);
     out
 }
