@@ -407,3 +407,49 @@ fn doxygen_runs_on_a_system_without_warnings() {
     );
     assert!(out.join("html/rtc_sys_patrolsystem.html").is_file());
 }
+
+#[test]
+fn serve_picks_up_a_changed_system_and_keeps_systems_on_component_changes() {
+    use rtcdoc::incremental::Workspace;
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    for rel in [
+        "components/Camera/RTC.xml",
+        "components/Planner/RTC.xml",
+        "system/PatrolSystem.xml",
+    ] {
+        let to = input.join(rel);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(site_fixture().join(rel), &to).unwrap();
+    }
+    let opts = build::BuildOptions {
+        input: input.clone(),
+        output: dir.path().join("site"),
+        formats: vec![rtcdoc::render::Format::Html],
+        strict: false,
+        load: LoadOptions::default(),
+        site: SiteOptions::default(),
+    };
+    let mut ws = Workspace::open(&opts).expect("open");
+    let page = |ws: &Workspace| {
+        String::from_utf8(ws.files()["systems/patrolsystem.html"].clone()).unwrap()
+    };
+    assert!(page(&ws).contains("Hand-written test system"));
+    // The system changes: its page follows.
+    let sys = input.join("system/PatrolSystem.xml");
+    let text = read(&sys).replace("Hand-written test system", "Edited while serving");
+    std::fs::write(&sys, text).unwrap();
+    let r = ws.update(std::slice::from_ref(&sys)).expect("update");
+    assert!(r.full);
+    assert!(page(&ws).contains("Edited while serving"));
+    // A component changes (its version now matches): the system stays and loses its drift.
+    let planner = input.join("components/Planner/RTC.xml");
+    let text = read(&planner).replace("1.1.0", "1.2.0");
+    std::fs::write(&planner, text).unwrap();
+    ws.update(std::slice::from_ref(&planner)).expect("update");
+    assert_eq!(ws.catalog().systems.len(), 1);
+    assert!(
+        !page(&ws).contains("version drift"),
+        "re-rendered with the new component"
+    );
+}
