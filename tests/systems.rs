@@ -453,3 +453,56 @@ fn serve_picks_up_a_changed_system_and_keeps_systems_on_component_changes() {
         "re-rendered with the new component"
     );
 }
+
+/// Every RT System profile of the shared corpus (when present) has a page with every instance,
+/// every connector and a diagram; no link of the site is broken. Prints the counts.
+#[test]
+fn every_corpus_system_has_a_complete_page() {
+    let Some(corpus) = common::corpus() else {
+        println!("skipped: ../shared/corpus not present");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&corpus, &out, SiteOptions::default());
+    let cat = &loaded.catalog;
+    assert_eq!(cat.systems.len(), 9);
+    let (mut instances, mut matched, mut connectors) = (0, 0, 0);
+    for s in &cat.systems {
+        let html = read(&out.join(format!("systems/{}.html", s.slug)));
+        assert!(
+            html.contains("class=\"diagram system-diagram\""),
+            "{}",
+            s.source
+        );
+        for l in &s.instances {
+            assert!(
+                html.contains(&format!("<tr id=\"{}\">", l.anchor)),
+                "{}",
+                s.source
+            );
+        }
+        let data = section(&html, "data-connectors");
+        assert_eq!(
+            data.matches("<tr><th scope=\"row\">").count(),
+            s.profile.data_port_connectors.len(),
+            "{}",
+            s.source
+        );
+        let svc = section(&html, "service-connectors");
+        assert_eq!(
+            svc.matches("<tr><th scope=\"row\">").count(),
+            s.profile.service_port_connectors.len(),
+            "{}",
+            s.source
+        );
+        instances += s.instances.len();
+        matched += s.instances.iter().filter(|l| l.component.is_some()).count();
+        connectors +=
+            s.profile.data_port_connectors.len() + s.profile.service_port_connectors.len();
+    }
+    println!("corpus: {} systems, {instances} instances ({matched} matched to catalogue components), {connectors} connectors", cat.systems.len());
+    assert_eq!((instances, connectors), (29, 35));
+    let broken = broken_links(&out);
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+}
