@@ -506,3 +506,22 @@ fn every_corpus_system_has_a_complete_page() {
     let broken = broken_links(&out);
     assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
 }
+
+#[test]
+fn the_yaml_form_is_read_and_linked_like_the_xml_form() {
+    let cat = load(&common::root().join("tests/fixtures/rts"));
+    let by_source = |s: &str| cat.systems.iter().find(|x| x.source == s).unwrap();
+    let (x, y) = (by_source("full.xml"), by_source("full.yaml"));
+    assert_eq!(y.format, rtcdoc::parse::SourceFormat::Yaml);
+    let links = |s: &rtcdoc::catalog::systems::System| -> Vec<Option<String>> {
+        s.instances.iter().map(|i| i.component.clone()).collect()
+    };
+    assert_eq!(links(x), links(y));
+    assert_eq!(links(x), [Some("camera".to_string()), None]);
+    assert_eq!(
+        x.data_connectors[0].source.port,
+        y.data_connectors[0].source.port
+    );
+    // Same name, two files: two pages with their own slugs.
+    assert_ne!(x.slug, y.slug);
+}
