@@ -86,6 +86,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let named = input.is_file();
     enum Outcome {
         NotProfile(String),
+        System(crate::catalog::systems::LoadedSystem, Vec<Diagnostic>),
         Loaded(LoadedProfile, Vec<Diagnostic>),
         Failed(Diagnostic),
     }
@@ -94,6 +95,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         .par_iter()
         .map(|(path, rel)| {
             let outcome = match walk::read_profile(path, opts.limits.max_file_size, named) {
+                Ok(walk::ReadFile::Other(head)) if parse::rts::is_system(&head) => {
+                    match read_system(path, rel, &opts.limits) {
+                        Ok((s, d)) => Outcome::System(s, d),
+                        Err(d) => Outcome::Failed(d),
+                    }
+                }
                 Ok(walk::ReadFile::Other(head)) => {
                     Outcome::NotProfile(walk::describe_non_profile(&head))
                 }
@@ -121,11 +128,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut diagnostics = Vec::new();
     let mut profiles = Vec::with_capacity(outcomes.len());
     let mut files = 0;
+    let mut systems = Vec::new();
     for ((path, rel), outcome) in found.files.into_iter().zip(outcomes) {
         match outcome {
             Outcome::NotProfile(what) if named => {
                 bail!(
-                    "`{}` {what}; name an RTC component profile (RTC.xml or its YAML form)",
+                    "`{}` {what}; name an RTC component profile (RTC.xml or its YAML form) or an RT System profile",
                     input.display()
                 )
             }
@@ -162,21 +170,74 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                 files += 1;
                 diagnostics.push(d);
             }
+            Outcome::System(s, d) => {
+                systems.push(s);
+                diagnostics.extend(d);
+            }
         }
     }
     let idl = read_idl(&found.idl, opts)?;
-    if files == 0 && found.idl.is_empty() && !opts.allow_empty {
+    if files == 0 && systems.is_empty() && found.idl.is_empty() && !opts.allow_empty {
         return Err(NothingToDocument(nothing_found(input, &skipped)).into());
     }
     diagnostics.extend(idl.diagnostics.iter().cloned());
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
     let mut catalog = Catalog::build(profiles, diagnostics);
     catalog.attach_idl(idl);
+    catalog.attach_systems(systems);
     Ok(Loaded {
         catalog,
         skipped,
         files,
     })
+}
+
+/// Reads an RT System profile (its head showed an `RtsProfile` root): at most the size limit
+/// plus one byte, so that an oversized file is reported, not read whole.
+pub fn read_system(
+    path: &Path,
+    rel: &str,
+    limits: &Limits,
+) -> std::result::Result<(crate::catalog::systems::LoadedSystem, Vec<Diagnostic>), Diagnostic> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| {
+            f.take(limits.max_file_size.saturating_add(1))
+                .read_to_end(&mut bytes)
+        })
+        .map_err(|e| Diagnostic::io(rel, &e))?;
+    let format = system_format(path, &bytes);
+    let parsed = parse::rts::parse(format, &bytes, rel, limits)?;
+    Ok((
+        crate::catalog::systems::LoadedSystem {
+            source: rel.to_string(),
+            format,
+            system: Box::new(parsed.system),
+        },
+        parsed.diagnostics,
+    ))
+}
+
+/// XML when the file starts like XML (after a byte order mark and white space), else YAML.
+fn system_format(path: &Path, bytes: &[u8]) -> parse::SourceFormat {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let body = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    let first = body.iter().find(|b| !b.is_ascii_whitespace());
+    match ext.as_deref() {
+        Some("yaml" | "yml") => parse::SourceFormat::Yaml,
+        Some("xml") => parse::SourceFormat::Xml,
+        _ if first == Some(&b'<')
+            || bytes.starts_with(&[0xFF, 0xFE])
+            || bytes.starts_with(&[0xFE, 0xFF]) =>
+        {
+            parse::SourceFormat::Xml
+        }
+        _ => parse::SourceFormat::Yaml,
+    }
 }
 
 /// Reads the IDL files found below the input and on the IDL path (each file once, in order).

@@ -19,6 +19,8 @@
 //! Renderers only read the catalogue; all cross-linking logic lives here. A new kind of
 //! document is a reader (in `parse`), an entry kind with its id here, a [`PageKind`], and views.
 
+pub mod systems;
+
 use crate::diagnostic::{codes, Diagnostic, Severity};
 use crate::model::{Direction, PortDirection, Profile};
 use crate::parse::SourceFormat;
@@ -383,6 +385,10 @@ pub struct Catalog {
     page_starts: PageStarts,
     #[serde(skip)]
     by_id: HashMap<ComponentId, usize>,
+    /// The RT System profiles read ([`Catalog::attach_systems`]), by source path. Left out of
+    /// `catalog.json` when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub systems: Vec<systems::System>,
     #[serde(skip)]
     type_index: HashMap<String, usize>,
     #[serde(skip)]
@@ -408,6 +414,9 @@ pub enum PageKind {
     Category,
     Vendors,
     Vendor,
+    /// The index of RT Systems (only when there are some).
+    Systems,
+    System,
 }
 
 /// One page of the documentation: the same list for every output (HTML, Markdown, Doxygen),
@@ -450,10 +459,12 @@ impl Page {
             (Output::Html, _) => self.path("html"),
             (Output::Markdown, PageKind::DataTypes) => "types.md".into(),
             (Output::Markdown, PageKind::Interfaces) => "interfaces.md".into(),
+            (Output::Markdown, PageKind::Systems) => "systems.md".into(),
             (Output::Markdown, _) => self.path("md"),
             (Output::Doxygen, PageKind::Index) => "mainpage.dox".into(),
             (Output::Doxygen, PageKind::DataTypes) => "types.dox".into(),
             (Output::Doxygen, PageKind::Interfaces) => "interfaces.dox".into(),
+            (Output::Doxygen, PageKind::Systems) => "systems.dox".into(),
             (Output::Doxygen, _) => self.path("dox"),
         }
     }
@@ -474,6 +485,7 @@ struct PageStarts {
     interface: usize,
     category: usize,
     vendor: usize,
+    system: usize,
 }
 
 /// The name of a member (port, interface) as its key starts: empty when it has none.
@@ -928,6 +940,7 @@ impl Catalog {
             pages: Vec::new(),
             page_starts: PageStarts::default(),
             by_id,
+            systems: Vec::new(),
             type_index,
             interface_index,
         };
@@ -969,6 +982,7 @@ impl Catalog {
             pages: Vec::new(),
             page_starts: PageStarts::default(),
             by_id,
+            systems: Vec::new(),
             type_index,
             interface_index,
         };
@@ -1118,6 +1132,21 @@ impl Catalog {
     /// The page of vendor `fi` ([`Catalog::vendors`]).
     pub fn vendor_page(&self, fi: usize) -> &Page {
         &self.pages[self.page_starts.vendor + fi]
+    }
+
+    /// The page of system `si` ([`Catalog::systems`]).
+    pub fn system_page(&self, si: usize) -> &Page {
+        &self.pages[self.page_starts.system + si]
+    }
+
+    /// The page of a system of the catalogue (found by identity; there are few systems).
+    pub fn page_of_system(&self, s: &systems::System) -> &Page {
+        let si = self
+            .systems
+            .iter()
+            .position(|x| std::ptr::eq(x, s))
+            .unwrap_or(0);
+        self.system_page(si)
     }
 
     /// The position of the component with id `id` in [`Catalog::components`].

@@ -46,6 +46,9 @@ pub struct Config {
     pub max_depth: Option<usize>,
     /// Settings of `rtcdoc serve`.
     pub serve: Option<ServeConfig>,
+    /// Publish the host data of RT System profiles (host names, IORs, CORBA endpoints, naming
+    /// paths), e.g. for an internal site.
+    pub show_host_data: Option<bool>,
 }
 
 /// `[serve]` settings.
@@ -222,6 +225,10 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # max-file-size = {size}
 # max-depth = {depth}
 
+# RT System profiles carry the host names, IORs and CORBA endpoints of the machine they were
+# saved on; system pages and catalog.json leave them out unless this is true (an internal site).
+# show-host-data = false
+
 # rtcdoc serve
 # [serve]
 # port = 3000
@@ -392,6 +399,7 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 .clone()
                 .or_else(|| c.theme.as_deref().map(|p| file.resolve(p))),
             language: cli.language.or(c.language).unwrap_or_default(),
+            show_host_data: c.show_host_data.unwrap_or(false),
         },
     }
 }

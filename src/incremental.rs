@@ -274,6 +274,17 @@ impl Workspace {
         changed: &[PathBuf],
     ) -> std::result::Result<UpdateReport, UpdateError> {
         // Read the changed files first: an error leaves everything as it was.
+        // An RT System profile added, changed or removed: everything is read again (systems
+        // link to components and are listed on their pages; they are few).
+        if changed.iter().any(|p| self.is_system_file(p)) {
+            let opts = self.opts.clone();
+            self.reload(&opts)
+                .map_err(|e| UpdateError::Other(format!("{e:#}")))?;
+            return Ok(UpdateReport {
+                rendered: self.files.len(),
+                full: true,
+            });
+        }
         let mut errors = Vec::new();
         let mut replaced: Vec<(String, Option<Reread>)> = Vec::new();
         let load = &self.opts.load;
@@ -323,6 +334,14 @@ impl Workspace {
         let mut old = std::mem::replace(&mut self.catalog, Catalog::build(Vec::new(), Vec::new()));
         // Profiles changed, not IDL (a changed IDL file reloads everything: see `serve`).
         let idl = std::mem::take(&mut old.idl);
+        let systems: Vec<crate::catalog::systems::LoadedSystem> = std::mem::take(&mut old.systems)
+            .into_iter()
+            .map(|s| crate::catalog::systems::LoadedSystem {
+                source: s.source,
+                format: s.format,
+                system: s.profile,
+            })
+            .collect();
         let mut profiles: BTreeMap<String, LoadedProfile> = old
             .components
             .into_iter()
@@ -352,6 +371,7 @@ impl Workspace {
         let diags: Vec<Diagnostic> = self.warnings.values().flatten().cloned().collect();
         let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
         catalog.attach_idl(idl);
+        catalog.attach_systems(systems);
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;
 
@@ -360,7 +380,10 @@ impl Workspace {
         let wanted = |p: &str| match &plan {
             None => true,
             Some(set) => {
-                set.contains(p) || p.starts_with("categories/") || p.starts_with("vendors/")
+                set.contains(p)
+                    || p.starts_with("categories/")
+                    || p.starts_with("vendors/")
+                    || p.starts_with("systems/")
             }
         };
         let (written, all_paths) = render(&self.opts, &self.catalog, &wanted)
@@ -370,6 +393,24 @@ impl Workspace {
         self.files.retain(|k, _| keep.contains(k));
         self.files.extend(written);
         Ok(UpdateReport { rendered, full })
+    }
+
+    /// Whether `path` is (now) an RT System profile or was one of the catalogue's.
+    fn is_system_file(&self, path: &Path) -> bool {
+        let Some(rel) = self.rel(path) else {
+            return false;
+        };
+        if self.catalog.systems.iter().any(|s| s.source == rel) {
+            return true;
+        }
+        let is_candidate = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "xml" | "yaml" | "yml"));
+        is_candidate
+            && std::fs::read(path)
+                .map(|b| parse::rts::is_system(&b))
+                .unwrap_or(false)
     }
 
     /// Re-reads everything (after a configuration or theme change).

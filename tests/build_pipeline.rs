@@ -96,7 +96,17 @@ fn load_takes_and_skips_the_same_files_as_the_walk() {
             .map(|s| (s.rel.clone(), s.reason.clone()))
             .collect()
     };
-    assert_eq!(skipped(&loaded.skipped), skipped(&walked.skipped));
+    // The walk (component profiles only) skips the RT System profile; the load reads it.
+    let mut walk_skipped = skipped(&walked.skipped);
+    walk_skipped.retain(|(rel, _)| rel != "sys.xml");
+    assert_eq!(skipped(&loaded.skipped), walk_skipped);
+    let systems: Vec<&str> = loaded
+        .catalog
+        .systems
+        .iter()
+        .map(|s| s.source.as_str())
+        .collect();
+    assert_eq!(systems, ["sys.xml"]);
     assert_eq!(loaded.files, walked.sources.len());
     let sources: Vec<&str> = loaded
         .catalog
@@ -368,7 +378,12 @@ fn whole_corpus_loads_without_errors() {
     );
     assert_eq!(xml, 139);
     assert_eq!(yaml, 14);
-    assert_eq!(rts, 0, "RT System profiles are skipped");
+    assert_eq!(rts, 0, "RT System profiles are not component profiles");
+    assert_eq!(
+        loaded.catalog.systems.len(),
+        9,
+        "RT System profiles are systems"
+    );
     let mut by_code = std::collections::BTreeMap::new();
     for d in &loaded.catalog.diagnostics {
         *by_code.entry(d.code).or_insert(0) += 1;

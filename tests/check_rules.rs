@@ -63,6 +63,14 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC506", "idl/Lab.idl", 6, 12),
     ("RTC507", "idl/Lab.idl", 6, 5),
     ("RTC508", "idl/Lab.idl", 7, 12),
+    ("RTC601", "System.xml", 8, 5),
+    ("RTC602", "System.xml", 7, 3),
+    ("RTC603", "System.xml", 3, 3),
+    ("RTC604", "System.xml", 5, 3),
+    ("RTC605", "System.xml", 5, 3),
+    ("RTC606", "System.xml", 5, 7),
+    ("RTC607", "System.xml", 5, 7),
+    ("RTC608", "System.xml", 9, 5),
 ];
 
 #[test]

@@ -4,7 +4,8 @@
 //! spec section it comes from and a hint ([`registry::RULES`]). Codes: RTC001–RTC019 come from
 //! the loader and the catalogue; RTC020–RTC029 from the IDL reader ([`crate::idl::codes`]);
 //! RTC1xx schema level (spec chapter 6), RTC2xx spec semantics
-//! (chapter 2), RTC3xx values and constraints, RTC4xx catalogue level, RTC5xx doc coverage.
+//! (chapter 2), RTC3xx values and constraints, RTC4xx catalogue level, RTC5xx doc coverage, RTC6xx RT System
+//! profiles.
 //!
 //! [`run`] returns the rule diagnostics (not the loader's); [`check`] returns a [`Report`] with
 //! the loader's and the rules' diagnostics together, counts and the documentation coverage.
@@ -13,6 +14,7 @@ mod idl_coverage;
 pub mod registry;
 pub mod report;
 mod rules;
+mod systems;
 
 pub use idl_coverage::IdlCoverage;
 pub use registry::{explain, rule, Rule, RULES};
@@ -34,6 +36,7 @@ pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
         .collect();
     out.extend(rules::catalogue(catalog));
     out.extend(idl_coverage::diagnostics(catalog));
+    out.extend(systems::run(catalog));
     sort(&mut out);
     out
 }

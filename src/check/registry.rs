@@ -78,6 +78,15 @@ pub const DOC_ACTION: &str = "RTC505";
 pub const DOC_IDL_FIELD: &str = "RTC506";
 pub const DOC_IDL_ENUMERATOR: &str = "RTC507";
 pub const DOC_IDL_OPERATION: &str = "RTC508";
+// RT System profiles (issue 16).
+pub const SYSTEM_UNKNOWN_PORT: &str = "RTC601";
+pub const SYSTEM_TYPE_MISMATCH: &str = "RTC602";
+pub const SYSTEM_COMPONENT_MISSING: &str = "RTC603";
+pub const SYSTEM_VERSION_DRIFT: &str = "RTC604";
+pub const SYSTEM_DUPLICATE_INSTANCE: &str = "RTC605";
+pub const SYSTEM_CONFIG_INVALID: &str = "RTC606";
+pub const SYSTEM_CONFIG_UNDECLARED: &str = "RTC607";
+pub const SYSTEM_UNKNOWN_INSTANCE: &str = "RTC608";
 
 use Severity::{Error, Info, Warning};
 
@@ -622,6 +631,78 @@ pub static RULES: &[Rule] = &[
         explanation: "The interface page lists every operation with its parameters, result and exceptions, and every attribute; the doc comment (with `@param` and `@return`) is what tells a caller what the operation does. Counted for every service interface a port of the catalogue names and for its base interfaces, once each.",
         spec: "— (documentation coverage; Doxygen doc-comment syntax)",
         hint: "add a doc comment before the operation: `/** @brief … @param name … @return … */`",
+    },
+    Rule {
+        code: SYSTEM_UNKNOWN_PORT,
+        severity: Warning,
+        name: "system-unknown-port",
+        summary: "a connector end names a port the component does not have",
+        explanation: "A connector of an RT System profile joins a port of one instance to a port of another. When the instance's component profile is in the catalogue and has no data or service port of that name (RTSystemEditor's `Instance0.port` and the plain `port` are both read), the connector cannot be restored: the port was renamed or removed since the system was saved, or the system was saved against another version of the component.",
+        spec: "RtsProfile schema (DataPortConnectors, ServicePortConnectors: sourceDataPort/targetDataPort portName), spec 10.4",
+        hint: "reconnect the port in RTSystemEditor and save the system again, or restore the port in the component profile",
+    },
+    Rule {
+        code: SYSTEM_TYPE_MISMATCH,
+        severity: Error,
+        name: "system-type-mismatch",
+        summary: "a data connector's type differs from the types of its ports",
+        explanation: "OpenRTM connects a data out-port to an in-port only when both carry the same data type, and a data port connector records that type (`dataType`, often as a repository id such as `IDL:RTC/TimedLong:1.0`). Types are compared by their scoped IDL names, so `TimedLong`, `RTC::TimedLong` and the repository id are one. Reported when the connector's type differs from the type of its source or target port in the component profiles of the catalogue, or the two ports carry different types.",
+        spec: "RtsProfile schema (DataPortConnectors dataType), spec 2.3.9 (dataPort type)",
+        hint: "connect ports of the same data type, or correct the connector's dataType",
+    },
+    Rule {
+        code: SYSTEM_COMPONENT_MISSING,
+        severity: Info,
+        name: "system-component-missing",
+        summary: "an instance's component is not in the catalogue",
+        explanation: "An instance names its component by the `RTC:vendor:category:name:version` id of the component's profile. No component profile of the input has that vendor, category and name (nor, for a damaged category, that vendor and name alone), so the system page cannot link the instance, and its ports and configuration are not checked.",
+        spec: "RtsProfile schema (Components id), spec 2.3.1 (id)",
+        hint: "add the component's RTC.xml below the input, or correct the instance's component id",
+    },
+    Rule {
+        code: SYSTEM_VERSION_DRIFT,
+        severity: Warning,
+        name: "system-version-drift",
+        summary: "an instance names another version of its component than the catalogue has",
+        explanation: "The instance's component id ends with a version; the component profile of the catalogue with the same vendor, category and name has another. The system was saved against another release of the component: its ports and configuration may have changed since.",
+        spec: "RtsProfile schema (Components id), spec 2.3.2 (basic_info version)",
+        hint: "save the system again with the current component, or document the component version the system needs",
+    },
+    Rule {
+        code: SYSTEM_DUPLICATE_INSTANCE,
+        severity: Error,
+        name: "system-duplicate-instance",
+        summary: "two instances of a system have the same instance name",
+        explanation: "Connectors, orders, groups and execution-context participants name instances by `instanceName`; two instances with one name make every such reference ambiguous, and the naming service registers only one of them.",
+        spec: "RtsProfile schema (Components instanceName)",
+        hint: "give each instance its own instanceName",
+    },
+    Rule {
+        code: SYSTEM_CONFIG_INVALID,
+        severity: Error,
+        name: "system-configuration-invalid",
+        summary: "a system's configuration value is not valid for the component's parameter",
+        explanation: "A configuration set of an instance gives a value to a parameter the component declares. The value is checked as a default value is (RTC301, RTC303): it must parse for the parameter's type and satisfy its constraint. The editor's own sets (`__widget__`, `__constraints__`, any `__name__`) are not configuration and are not checked.",
+        spec: "RtsProfile schema (ConfigurationSets, ConfigurationData), spec 2.3.8 (configuration), 2.3.17–2.3.41 (constraints)",
+        hint: "give a value of the parameter's type within its constraint",
+    },
+    Rule {
+        code: SYSTEM_CONFIG_UNDECLARED,
+        severity: Warning,
+        name: "system-configuration-undeclared",
+        summary: "a system configures a parameter the component does not declare",
+        explanation: "A configuration set of an instance names a parameter that the component profile of the catalogue does not have: it is ignored at run time (a renamed or removed parameter, or a typo).",
+        spec: "RtsProfile schema (ConfigurationData name), spec 2.3.8 (configuration name)",
+        hint: "rename the value to a declared parameter, or remove it",
+    },
+    Rule {
+        code: SYSTEM_UNKNOWN_INSTANCE,
+        severity: Error,
+        name: "system-unknown-instance",
+        summary: "a connector end names no instance of the system",
+        explanation: "Each end of a connector names its instance by `instanceName`; no instance of the system has that name, so the connector joins nothing.",
+        spec: "RtsProfile schema (sourceDataPort, targetDataPort, sourceServicePort, targetServicePort instanceName)",
+        hint: "name an instance of the system, or remove the connector",
     },
 ];
 

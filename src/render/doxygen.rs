@@ -310,6 +310,16 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
     }
 
     component_sections::<Dox>(&mut out, cat, ci, lang);
+    let used = super::system_text::used_in(cat, ci);
+    if !used.is_empty() {
+        section(&mut out, &page, "sec-systems", lang.t("sys_used_by"));
+        d!(out, "<ul>");
+        for (text_, s) in used {
+            d!(out, "<li>{}</li>", refer(&sys_label(s), &text_));
+        }
+        d!(out, "</ul>");
+        d!(out);
+    }
     out
 }
 
@@ -377,6 +387,88 @@ fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
             table(&mut out, &cols, &port_rows(cat, refs));
         }
     }
+    let carried = super::system_text::carrying(cat, &t.name);
+    if !carried.is_empty() {
+        section(
+            &mut out,
+            &page,
+            "sec-system-connectors",
+            lang.t("sys_carried_by"),
+        );
+        d!(out, "<ul>");
+        for (text_, s) in carried {
+            d!(out, "<li>{}</li>", refer(&sys_label(s), &text_));
+        }
+        d!(out, "</ul>");
+        d!(out);
+    }
+    out
+}
+
+fn sys_label(s: &crate::catalog::systems::System) -> String {
+    format!("rtc_sys_{}", label(&s.slug))
+}
+
+/// `systems.dox`: every RT System with its counts.
+fn system_index(cat: &Catalog, lang: Lang) -> String {
+    let mut out = String::new();
+    d!(out, "\\page rtc_systems {}", title(lang.t("systems")));
+    d!(out);
+    d!(out, "<p>\\ref index</p>");
+    d!(out);
+    d!(out, "<p>{}</p>", text(lang.t("systems_intro")));
+    d!(out);
+    let rows: Vec<Vec<String>> = cat
+        .systems
+        .iter()
+        .map(|s| {
+            let parts = s.profile.id_parts.as_ref();
+            vec![
+                format!("\\subpage {}", sys_label(s)),
+                parts.map(|x| opt(&x.version)).unwrap_or_default(),
+                parts.map(|x| opt(&x.vendor)).unwrap_or_default(),
+                s.profile.components.len().to_string(),
+                (s.profile.data_port_connectors.len() + s.profile.service_port_connectors.len())
+                    .to_string(),
+            ]
+        })
+        .collect();
+    table(
+        &mut out,
+        &[
+            lang.t("system"),
+            lang.t("version"),
+            lang.t("vendor"),
+            lang.t("instances"),
+            lang.t("sys_connector"),
+        ],
+        &rows,
+    );
+    out
+}
+
+/// `systems/<slug>.dox`.
+fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String {
+    let s = &cat.systems[si];
+    let page = sys_label(s);
+    let mut out = String::new();
+    d!(out, "\\page {page} {}", title(s.profile.name()));
+    d!(out);
+    d!(out, "<p>\\ref index › \\ref rtc_systems</p>");
+    d!(out);
+    let component = |c: &Component| comp_label(c);
+    let head = |o: &mut String, anchor: &str, text_: &str| section(o, &page, anchor, text_);
+    super::system_text::system_body::<Dox>(
+        &mut out,
+        cat,
+        s,
+        lang,
+        show_host,
+        &super::system_text::Targets {
+            component: &component,
+            heading: &head,
+        },
+    );
     out
 }
 
@@ -471,6 +563,13 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
         "<li>\\subpage rtc_interfaces ({})</li>",
         cat.interfaces.len()
     );
+    if !cat.systems.is_empty() {
+        d!(
+            out,
+            "<li>\\subpage rtc_systems ({})</li>",
+            cat.systems.len()
+        );
+    }
     d!(out, "</ul>");
     d!(out);
     d!(
@@ -614,7 +713,7 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
 /// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
 pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = cat.category_of_each();
-    let mut out = other_pages(cat, site_title, lang);
+    let mut out = other_pages(cat, site_title, lang, false);
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
@@ -636,7 +735,12 @@ fn component_entry(cat: &Catalog, of: &[usize], ci: usize, lang: Lang) -> (Strin
 }
 
 /// Every file but the component pages, the Doxyfile included (its INPUT lists every page).
-fn other_pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
+fn other_pages(
+    cat: &Catalog,
+    site_title: &str,
+    lang: Lang,
+    show_host: bool,
+) -> Vec<(String, String)> {
     let mut out = vec![
         (
             cat.site_page(PageKind::Index).path_in(Output::Doxygen),
@@ -669,6 +773,18 @@ fn other_pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, Stri
             interface_page(cat, ii, lang),
         )
     }));
+    if !cat.systems.is_empty() {
+        out.push((
+            cat.site_page(PageKind::Systems).path_in(Output::Doxygen),
+            system_index(cat, lang),
+        ));
+        out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
+            (
+                cat.system_page(si).path_in(Output::Doxygen),
+                system_page(cat, si, lang, show_host),
+            )
+        }));
+    }
     let mut inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
     // Same order as before: category pages, then components, then types and interfaces.
     let at = 3 + cat.categories.len();
@@ -686,7 +802,7 @@ impl Renderer for DoxygenRenderer {
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         let (cat, lang) = (ctx.catalog, ctx.site.language);
-        let pages = other_pages(cat, &ctx.site.title, lang);
+        let pages = other_pages(cat, &ctx.site.title, lang, ctx.site.show_host_data);
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;

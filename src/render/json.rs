@@ -3,13 +3,14 @@
 //! Format 2 (documented in `book/src/json.md`) is the keyed catalogue: `{"generator",
 //! "formatVersion": 2, "title", "components": {ID: …}, "dataTypes": {NAME: …}, "interfaces":
 //! {NAME: …}, "categories": {NAME: …}, "vendors": {NAME: …}, "pages": [...], "diagnostics":
-//! [...], "idl"?}`. Each component is the whole profile model plus `source`, `format`, `slug`
+//! [...], "idl"?, "systems"?: {SOURCE: …}}`. Each component is the whole profile model plus `source`, `format`, `slug`
 //! and `anchors`, keyed by its id ([`crate::catalog::Component::id`]); references between
 //! entries are ids (`{"component": ID, "port": NAME}`), never positions, so two catalogues can
 //! be compared entry by entry (`rtcdoc diff`) and [`read_catalog`] gives the same catalogue
 //! back (a round trip writes the same bytes).
 
 use super::{RenderContext, Renderer};
+use crate::catalog::systems::System;
 use crate::catalog::{Catalog, Component, DataType, Facet, InterfaceType, Output, PageKind};
 use crate::diagnostic::Diagnostic;
 use crate::idl::IdlSet;
@@ -23,6 +24,12 @@ pub const FORMAT_VERSION: u32 = 2;
 
 /// Entries written as one JSON object keyed by each entry's id, in catalogue order.
 struct Keyed<'a, T>(&'a [T], fn(&T) -> &str);
+
+impl<T> Keyed<'_, T> {
+    fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
 
 impl<T: Serialize> Serialize for Keyed<'_, T> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -45,6 +52,9 @@ fn interface_key(t: &InterfaceType) -> &str {
 }
 fn facet_key(f: &Facet) -> &str {
     &f.name
+}
+fn system_key(s: &System) -> &str {
+    &s.source
 }
 
 /// A page of the catalogue in `catalog.json`: where the HTML site has it.
@@ -73,9 +83,16 @@ struct Document<'a> {
     diagnostics: &'a [Diagnostic],
     #[serde(skip_serializing_if = "IdlSet::is_empty")]
     idl: &'a IdlSet,
+    #[serde(skip_serializing_if = "Keyed::is_empty")]
+    systems: Keyed<'a, System>,
 }
 
-fn document<'a>(catalog: &'a Catalog, title: &'a str, components: &'a [Component]) -> Document<'a> {
+fn document<'a>(
+    catalog: &'a Catalog,
+    title: &'a str,
+    components: &'a [Component],
+    systems: &'a [System],
+) -> Document<'a> {
     Document {
         generator: super::generator(),
         format_version: FORMAT_VERSION,
@@ -97,6 +114,7 @@ fn document<'a>(catalog: &'a Catalog, title: &'a str, components: &'a [Component
             .collect(),
         diagnostics: &catalog.diagnostics,
         idl: &catalog.idl,
+        systems: Keyed(systems, system_key),
     }
 }
 
@@ -112,8 +130,30 @@ pub fn write_json(
     title: &str,
     w: &mut dyn std::io::Write,
 ) -> anyhow::Result<()> {
+    write_json_with(catalog, title, true, w)
+}
+
+/// [`write_json`], with the host data of RT System profiles left out unless `show_host_data`
+/// ([`crate::catalog::systems::System::without_host_data`]).
+pub fn write_json_with(
+    catalog: &Catalog,
+    title: &str,
+    show_host_data: bool,
+    w: &mut dyn std::io::Write,
+) -> anyhow::Result<()> {
     use rayon::prelude::*;
-    let skeleton = serde_json::to_vec_pretty(&document(catalog, title, &[]))?;
+    let redacted: Vec<System>;
+    let systems = if show_host_data {
+        &catalog.systems[..]
+    } else {
+        redacted = catalog
+            .systems
+            .iter()
+            .map(|s| s.without_host_data())
+            .collect();
+        &redacted[..]
+    };
+    let skeleton = serde_json::to_vec_pretty(&document(catalog, title, &[], systems))?;
     let at = skeleton
         .windows(COMPONENTS_KEY.len())
         .position(|win| win == COMPONENTS_KEY)
@@ -174,7 +214,7 @@ impl Renderer for JsonRenderer {
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         // Streamed: at 10,000 components the document is hundreds of megabytes.
         out.write_with("catalog.json", &mut |w| {
-            write_json(ctx.catalog, &ctx.site.title, w)
+            write_json_with(ctx.catalog, &ctx.site.title, ctx.site.show_host_data, w)
         })?;
         Ok(1)
     }
@@ -225,6 +265,17 @@ struct DocumentRead {
     diagnostics: Vec<Diagnostic>,
     #[serde(default)]
     idl: IdlSet,
+    #[serde(default, deserialize_with = "keyed")]
+    systems: Vec<(String, SystemRead)>,
+}
+
+/// An RT System profile as `catalog.json` has it: its links are made again on reading.
+#[derive(Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct SystemRead {
+    source: String,
+    format: crate::parse::SourceFormat,
+    profile: Box<crate::system::RtSystem>,
 }
 
 /// serde_json's message without the position it appends (the caller puts it in front).
@@ -296,7 +347,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
             c
         })
         .collect();
-    let catalog = Catalog::from_parts(
+    let mut catalog = Catalog::from_parts(
         components,
         doc.data_types.into_iter().map(|(_, t)| t).collect(),
         doc.interfaces.into_iter().map(|(_, t)| t).collect(),
@@ -306,6 +357,16 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         doc.idl,
     )
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    catalog.attach_systems(
+        doc.systems
+            .into_iter()
+            .map(|(_, s)| crate::catalog::systems::LoadedSystem {
+                source: s.source,
+                format: s.format,
+                system: s.profile,
+            })
+            .collect(),
+    );
     let pages: Vec<PageEntry> = catalog
         .pages()
         .iter()
@@ -332,8 +393,13 @@ mod tests {
     use crate::catalog::LoadedProfile;
 
     fn reference(catalog: &Catalog, title: &str) -> Vec<u8> {
-        let mut out =
-            serde_json::to_vec_pretty(&document(catalog, title, &catalog.components)).unwrap();
+        let mut out = serde_json::to_vec_pretty(&document(
+            catalog,
+            title,
+            &catalog.components,
+            &catalog.systems,
+        ))
+        .unwrap();
         out.push(b'\n');
         out
     }

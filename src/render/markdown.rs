@@ -312,6 +312,21 @@ fn component_page(cat: &Catalog, ci: usize, cat_page: &Page, title: &str, lang: 
     }
 
     component_sections::<Md>(&mut out, cat, ci, lang);
+    let used = super::system_text::used_in(cat, ci);
+    if !used.is_empty() {
+        heading(&mut out, 2, "sec-systems", lang.t("sys_used_by"));
+        for (text, s) in used {
+            w!(
+                out,
+                "- {}",
+                link(
+                    &text,
+                    &format!("../{}", cat.page_of_system(s).path_in(Output::Markdown))
+                )
+            );
+        }
+        w!(out);
+    }
     out
 }
 
@@ -388,6 +403,26 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
         heading(&mut out, 2, anchor, lang.t(key));
         table(&mut out, &cols, &port_ref_rows(cat, refs));
     }
+    let carried = super::system_text::carrying(cat, &t.name);
+    if !carried.is_empty() {
+        heading(
+            &mut out,
+            2,
+            "sec-system-connectors",
+            lang.t("sys_carried_by"),
+        );
+        for (text, s) in carried {
+            w!(
+                out,
+                "- {}",
+                link(
+                    &text,
+                    &format!("../{}", cat.page_of_system(s).path_in(Output::Markdown))
+                )
+            );
+        }
+        w!(out);
+    }
     out
 }
 
@@ -463,6 +498,15 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
         cat.interfaces.len()
     );
     w!(out);
+    if !cat.systems.is_empty() {
+        w!(
+            out,
+            "{}: {}",
+            link(lang.t("systems"), "systems.md"),
+            cat.systems.len()
+        );
+        w!(out);
+    }
     heading(&mut out, 2, "sec-components", lang.t("components"));
     for (fi, f) in cat.categories.iter().enumerate() {
         w!(
@@ -591,13 +635,96 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
         let page = cat.interface_page(ii);
         summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
     }
+    if !cat.systems.is_empty() {
+        let index = cat.site_page(PageKind::Systems).path_in(Output::Markdown);
+        summary_item(&mut out, 0, lang.t("systems"), &index);
+        for si in 0..cat.systems.len() {
+            let page = cat.system_page(si);
+            summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
+        }
+    }
+    out
+}
+
+/// `systems.md`: every RT System with its counts.
+fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let mut out = String::new();
+    w!(out, "# {}", inline(lang.t("systems")));
+    w!(out);
+    w!(out, "{}", link(title, "index.md"));
+    w!(out);
+    w!(out, "{}", inline(lang.t("systems_intro")));
+    w!(out);
+    let rows: Vec<Vec<String>> = cat
+        .systems
+        .iter()
+        .enumerate()
+        .map(|(si, s)| {
+            let parts = s.profile.id_parts.as_ref();
+            vec![
+                link(
+                    s.profile.name(),
+                    &cat.system_page(si).path_in(Output::Markdown),
+                ),
+                parts.map(|x| opt(&x.version)).unwrap_or_default(),
+                parts.map(|x| opt(&x.vendor)).unwrap_or_default(),
+                s.profile.components.len().to_string(),
+                (s.profile.data_port_connectors.len() + s.profile.service_port_connectors.len())
+                    .to_string(),
+            ]
+        })
+        .collect();
+    table(
+        &mut out,
+        &[
+            lang.t("system"),
+            lang.t("version"),
+            lang.t("vendor"),
+            lang.t("instances"),
+            lang.t("sys_connector"),
+        ],
+        &rows,
+    );
+    out
+}
+
+/// `systems/<slug>.md`.
+fn system_page(cat: &Catalog, si: usize, title: &str, lang: Lang, show_host: bool) -> String {
+    let s = &cat.systems[si];
+    let mut out = String::new();
+    w!(out, "# {}", inline(s.profile.name()));
+    w!(out);
+    w!(
+        out,
+        "{} › {}",
+        link(title, "../index.md"),
+        link(lang.t("systems"), "../systems.md")
+    );
+    w!(out);
+    let component = |c: &Component| match cat.component_index(&c.id) {
+        Some(ci) => component_href(cat, ci),
+        None => String::new(),
+    };
+    let head =
+        |o: &mut String, anchor: &str, text: &str| heading(o, 2, &format!("sec-{anchor}"), text);
+    super::system_text::system_body::<Md>(
+        &mut out,
+        cat,
+        s,
+        lang,
+        show_host,
+        &super::system_text::Targets {
+            component: &component,
+            heading: &head,
+        },
+    );
     out
 }
 
 /// Renders every page as (relative path, content), in a fixed order.
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = cat.category_of_each();
-    let mut out = other_pages(cat, title, lang);
+    let mut out = other_pages(cat, title, lang, false);
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
@@ -621,7 +748,7 @@ fn component_entry(
 }
 
 /// Every page but the component pages.
-fn other_pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
+fn other_pages(cat: &Catalog, title: &str, lang: Lang, show_host: bool) -> Vec<(String, String)> {
     let index = index_page(cat, title, lang);
     let mut out = vec![
         ("SUMMARY.md".to_string(), summary(cat, title, lang)),
@@ -658,6 +785,18 @@ fn other_pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> 
             interface_page(cat, ii, title, lang),
         )
     }));
+    if !cat.systems.is_empty() {
+        out.push((
+            cat.site_page(PageKind::Systems).path_in(Output::Markdown),
+            system_index_page(cat, title, lang),
+        ));
+        out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
+            (
+                cat.system_page(si).path_in(Output::Markdown),
+                system_page(cat, si, title, lang, show_host),
+            )
+        }));
+    }
     out
 }
 
@@ -667,7 +806,7 @@ impl Renderer for MarkdownRenderer {
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         let (cat, title, lang) = (ctx.catalog, &ctx.site.title, ctx.site.language);
-        let pages = other_pages(cat, title, lang);
+        let pages = other_pages(cat, title, lang, ctx.site.show_host_data);
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;

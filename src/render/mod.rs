@@ -9,6 +9,7 @@ pub mod html;
 pub mod idl_view;
 pub mod json;
 pub mod markdown;
+pub mod system_text;
 pub mod text;
 
 use crate::catalog::Catalog;
@@ -48,6 +49,9 @@ pub struct SiteOptions {
     pub theme_dir: Option<PathBuf>,
     /// Language of generated labels.
     pub language: crate::i18n::Lang,
+    /// Publish the host data of RT System profiles (host names, IORs, CORBA endpoints, naming
+    /// paths); hidden by default (`show-host-data` in rtcdoc.toml).
+    pub show_host_data: bool,
 }
 
 impl Default for SiteOptions {
@@ -57,6 +61,7 @@ impl Default for SiteOptions {
             base_url: None,
             theme_dir: None,
             language: crate::i18n::Lang::En,
+            show_host_data: false,
         }
     }
 }

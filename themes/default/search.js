@@ -46,7 +46,7 @@
     if (!cache) {
       cache = (window.RTCDOC_INDEX || []).map(function (e) {
         return { name: e[0], slug: e[1], category: e[2], vendor: e[3], summary: e[4],
-          lname: String(e[0]).toLowerCase(), tokens: String(e[5]).split(' ') };
+          lname: String(e[0]).toLowerCase(), tokens: String(e[5]).split(' '), path: e[6] };
       });
     }
     return cache;
@@ -102,7 +102,8 @@
     list.slice(0, limit).forEach(function (e) {
       var li = el('li');
       var a = el('a');
-      a.href = root + 'components/' + encodeURIComponent(e.slug) + '.html';
+      // Systems carry their page path (7th element); components are found by slug.
+      a.href = root + (e.path || 'components/' + encodeURIComponent(e.slug) + '.html');
       a.appendChild(el('span', 'r-name', e.name));
       var meta = [e.category, e.vendor].filter(Boolean).join(' · ');
       if (meta) { a.appendChild(el('span', 'r-meta', meta)); }

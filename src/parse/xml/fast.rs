@@ -306,6 +306,10 @@ mod tests {
         assert!(files.len() >= 5, "{files:?}");
         for p in files {
             let text = std::fs::read_to_string(&p).expect("example");
+            // The example RT System profile is not an RTC profile: not for this path.
+            if !crate::parse::xml::is_profile(text.as_bytes()) {
+                continue;
+            }
             let v =
                 fast(&text).unwrap_or_else(|| panic!("{} not read by the fast path", p.display()));
             assert_eq!(v, slow(&text), "{}", p.display());

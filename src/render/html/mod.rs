@@ -13,6 +13,8 @@ pub mod markdown;
 mod native;
 pub mod search;
 pub mod svg;
+mod system_svg;
+pub mod systems;
 
 use super::facts::{self, Fact, FactKind};
 use super::{RenderContext, Renderer, SiteOptions};
@@ -90,6 +92,14 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
     (
         "style.css",
         include_str!("../../../themes/default/style.css"),
+    ),
+    (
+        "system.html",
+        include_str!("../../../themes/default/system.html"),
+    ),
+    (
+        "systems.html",
+        include_str!("../../../themes/default/systems.html"),
     ),
     (
         "type.html",
@@ -303,6 +313,8 @@ struct ComponentPage {
     properties: Vec<KeyValue>,
     version_up_logs: Vec<String>,
     extras: Vec<ExtraRow>,
+    /// The systems with an instance of the component.
+    systems: Vec<Link>,
 }
 
 #[derive(Serialize)]
@@ -745,6 +757,15 @@ impl<'a> Site<'a> {
             properties,
             version_up_logs,
             extras,
+            systems: self
+                .catalog
+                .systems_using(ci)
+                .into_iter()
+                .map(|(s, names)| Link {
+                    text: format!("{} ({})", s.profile.name(), names.join(", ")),
+                    href: format!("{root}{}", systems::system_path(self.catalog, s)),
+                })
+                .collect(),
         }
     }
 }
@@ -810,6 +831,7 @@ impl HtmlRenderer {
         env.add_global("lang", opts.language.tag());
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
+        env.add_global("has_systems", !catalog.systems.is_empty());
         env.add_global("generator", super::generator());
         env.add_function("fields", builtins::fields);
         env.add_function("type_link", builtins::type_link);
@@ -941,6 +963,7 @@ impl HtmlRenderer {
             lang,
             site_title: &opts.title,
             has_diagnostics: !catalog.diagnostics.is_empty(),
+            has_systems: !catalog.systems.is_empty(),
             generator: &generator,
         };
         all_paths.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
@@ -1231,6 +1254,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                         producers => ctx(&uses(&t.producers)),
                         consumers => ctx(&uses(&t.consumers)),
                         others => ctx(&uses(&t.others)),
+                        carried_by => ctx(&systems::connectors_carrying(catalog, root, &t.name)),
                     }
                 })),
             });
@@ -1296,6 +1320,8 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             });
         }
     }
+
+    pages.extend(systems::pages(site));
 
     // Search, 404 and diagnostics.
     pages.push(Page {

@@ -19,6 +19,7 @@ pub(super) struct Globals<'a> {
     pub lang: Lang,
     pub site_title: &'a str,
     pub has_diagnostics: bool,
+    pub has_systems: bool,
     pub generator: &'a str,
 }
 
@@ -249,6 +250,13 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
         o.label(key);
         o.raw("</a></li>\n");
     }
+    if o.g.has_systems {
+        o.raw("<li><a href=\"");
+        o.text(root);
+        o.raw("systems/index.html\">");
+        o.label("systems");
+        o.raw("</a></li>\n");
+    }
     if o.g.has_diagnostics {
         o.raw("<li><a href=\"");
         o.text(root);
@@ -323,6 +331,9 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     );
     o.toc_entry(!p.properties.is_empty(), "properties", "properties");
     o.toc_entry(!p.version_up_logs.is_empty(), "history", "version_up_logs");
+    if !p.systems.is_empty() {
+        o.toc_entry(true, "systems", "sys_used_by");
+    }
     o.toc_entry(!p.extras.is_empty(), "extra", "extra");
     o.raw("</ul>\n</nav>\n\n");
 
@@ -578,6 +589,18 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("</ul>\n</section>");
     }
     o.raw("\n\n");
+    if !p.systems.is_empty() {
+        o.section_start("systems", false, "sys_used_by");
+        o.raw("<ul class=\"links\">\n");
+        for l in &p.systems {
+            o.raw("<li><a href=\"");
+            o.text(&l.href);
+            o.raw("\">");
+            o.text(&l.text);
+            o.raw("</a></li>\n");
+        }
+        o.raw("</ul>\n</section>\n\n");
+    }
     if !p.extras.is_empty() {
         o.table_start("extra", "extra", "", &["extra_path", "extra_kind", "value"]);
         for e in &p.extras {

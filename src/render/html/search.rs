@@ -175,6 +175,8 @@ pub fn index_js(catalog: &Catalog) -> String {
             ])
         })
         .collect();
+    let mut entries = entries;
+    entries.extend(system_entries(catalog));
     let json = serde_json::to_string(&entries).unwrap_or_else(|_| "[]".into());
     // 10,000 components make megabytes of each: not all three at once.
     drop(entries);
@@ -183,6 +185,66 @@ pub fn index_js(catalog: &Catalog) -> String {
     push_js_safe_json(&mut out, &json);
     out.push_str(";\n");
     out
+}
+
+/// One entry per RT System, after the components: `[name, slug, "RT System", vendor, comment,
+/// tokens, path]` — the seventh element, the page path, tells `search.js` it is not a component.
+/// Tokens: the system's name, vendor, comment, instance names, component names, port names of
+/// the connectors and their data types.
+fn system_entries(catalog: &Catalog) -> Vec<serde_json::Value> {
+    catalog
+        .systems
+        .iter()
+        .map(|s| {
+            let p = &s.profile;
+            let vendor = p
+                .id_parts
+                .as_ref()
+                .and_then(|x| non_empty(&x.vendor))
+                .unwrap_or("");
+            let types: Vec<String> = p
+                .data_port_connectors
+                .iter()
+                .filter_map(|c| non_empty(&c.data_type).map(canonical_type))
+                .collect();
+            let mut tokens: Vec<Cow<'_, str>> = Vec::new();
+            add(&mut tokens, Some(p.name()));
+            add(&mut tokens, Some(vendor));
+            add(&mut tokens, non_empty(&p.comment));
+            add(&mut tokens, non_empty(&p.abstract_));
+            for c in &p.components {
+                add(&mut tokens, non_empty(&c.instance_name));
+                add(
+                    &mut tokens,
+                    c.id_parts.as_ref().and_then(|x| non_empty(&x.name)),
+                );
+            }
+            for c in &p.data_port_connectors {
+                for e in [&c.source, &c.target].into_iter().flatten() {
+                    add(&mut tokens, non_empty(&e.short_name));
+                }
+            }
+            for t in &types {
+                add(&mut tokens, Some(t));
+            }
+            tokens.push(Cow::Borrowed("system"));
+            tokens.sort_unstable();
+            tokens.dedup();
+            let summary = non_empty(&p.comment)
+                .or_else(|| non_empty(&p.abstract_))
+                .map(|d| super::markdown::first_line(d, 90))
+                .unwrap_or_default();
+            serde_json::json!([
+                p.name(),
+                s.slug,
+                "RT System",
+                vendor,
+                summary,
+                tokens.join(" "),
+                super::systems::system_path(catalog, s),
+            ])
+        })
+        .collect()
 }
 
 /// Escapes characters that could end a script element or break a JS string literal. They only

@@ -1,0 +1,648 @@
+//! RT System profiles in the catalogue: each system with its slug and the links from its
+//! instances to the component profiles of the catalogue and from its connector ends to their
+//! ports (issue 16).
+//!
+//! An instance names its component by the `RTC:vendor:category:name:version` id of the
+//! component's RTC.xml; it is matched by vendor, category and name (compared like facets: case
+//! and white space do not matter), the version is only compared (a different one is *drift*).
+//! Real files truncate or damage categories (`RTC:Vendor:Categ:Name:1.0`), so an instance whose
+//! full key matches nothing is matched by vendor and name when exactly one component has them.
+//! Links are kept by component slug and port name (not by vector index) in what is serialised,
+//! so `catalog.json` stays readable when the component list changes.
+
+use super::{facet_key, slugify, unique_slugs, Catalog, Component};
+use crate::model::{non_empty, PortDirection};
+use crate::parse::SourceFormat;
+use crate::system::{PortEnd, RtSystem, SystemComponent};
+use serde::Serialize;
+use std::collections::HashMap;
+
+/// An RT System profile read from one file, ready for the catalogue.
+#[derive(Debug, Clone)]
+pub struct LoadedSystem {
+    pub source: String,
+    pub format: SourceFormat,
+    pub system: Box<RtSystem>,
+}
+
+/// One RT System profile of the catalogue and its resolved links.
+#[derive(Debug, Clone, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct System {
+    /// Path of the profile relative to the input directory, forward slashes.
+    pub source: String,
+    pub format: SourceFormat,
+    /// File-name-safe, stable identifier of the system's page (`systems/<slug>.html`).
+    pub slug: String,
+    /// One per instance (`system.components`), in the same order.
+    pub instances: Vec<InstanceLink>,
+    /// One per data port connector, in the same order.
+    pub data_connectors: Vec<ConnectorLink>,
+    /// One per service port connector, in the same order.
+    pub service_connectors: Vec<ConnectorLink>,
+    /// The system as read: every value of the file.
+    pub profile: Box<RtSystem>,
+}
+
+/// How an instance was matched to a component profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum MatchKind {
+    /// Vendor, category and name agree.
+    Exact,
+    /// Vendor and name agree, the category does not (a damaged or truncated id); the only
+    /// component with that vendor and name.
+    VendorName,
+}
+
+/// Where an instance's component is in the catalogue.
+#[derive(Debug, Clone, Default, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct InstanceLink {
+    /// Index into [`Catalog::components`]; use [`Catalog::instance_component`].
+    #[serde(skip)]
+    pub component_index: Option<usize>,
+    /// The component's id ([`crate::catalog::Component::id`]), when it is in the catalogue.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub component: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub matched_by: Option<MatchKind>,
+    /// The catalogue component's version when the instance's id names another one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub version_drift: Option<String>,
+    /// Anchor of the instance's row on the system page, unique within the page.
+    pub anchor: String,
+}
+
+/// Which port of a component a connector end names.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase", tag = "kind")]
+pub enum PortLink {
+    /// Index into the component's `data_ports`.
+    Data {
+        #[serde(skip)]
+        index: usize,
+        name: String,
+    },
+    /// Index into the component's `service_ports`.
+    Service {
+        #[serde(skip)]
+        index: usize,
+        name: String,
+    },
+}
+
+/// One end of a connector, resolved.
+#[derive(Debug, Clone, Default, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct EndLink {
+    /// Index into `system.components` of the instance the end names.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub instance: Option<usize>,
+    /// The port of the instance's component profile (when that is in the catalogue and has it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub port: Option<PortLink>,
+}
+
+/// Both ends of a connector, resolved.
+#[derive(Debug, Clone, Default, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ConnectorLink {
+    pub source: EndLink,
+    pub target: EndLink,
+}
+
+/// A port of an instance as the diagram and the tables show it: from the component profile
+/// when it is in the catalogue, else from the system file (its port lists and connector ends).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct InstancePort {
+    /// The port's own name (without `Instance0.`).
+    pub name: String,
+    pub service: bool,
+    /// Data ports: in or out (from the profile, else from the connectors that use it).
+    pub direction: Option<PortDirection>,
+    /// The port of the component profile.
+    pub link: Option<PortLink>,
+    /// Data type (data ports of a profile).
+    pub data_type: Option<String>,
+}
+
+/// The key components are matched on: (vendor, category, name), compared as facets are.
+fn key3(vendor: &str, category: &str, name: &str) -> (String, String, String) {
+    (facet_key(vendor), facet_key(category), facet_key(name))
+}
+
+/// The name of a connector end's port without the instance prefix.
+pub fn end_port_name(e: &PortEnd) -> &str {
+    non_empty(&e.short_name)
+        .or_else(|| non_empty(&e.port_name))
+        .unwrap_or("")
+}
+
+/// The port of component `c` named `name` (its own name or `Instance.name`).
+fn find_port(c: &Component, name: &str) -> Option<PortLink> {
+    let candidates = [name, name.rsplit('.').next().unwrap_or(name)];
+    for n in candidates {
+        if let Some(i) = c
+            .profile
+            .data_ports
+            .iter()
+            .position(|p| p.name.as_deref().map(str::trim) == Some(n))
+        {
+            return Some(PortLink::Data {
+                index: i,
+                name: n.to_string(),
+            });
+        }
+        if let Some(i) = c
+            .profile
+            .service_ports
+            .iter()
+            .position(|p| p.name.as_deref().map(str::trim) == Some(n))
+        {
+            return Some(PortLink::Service {
+                index: i,
+                name: n.to_string(),
+            });
+        }
+    }
+    None
+}
+
+impl Catalog {
+    /// Takes in the RT System profiles read for this catalogue (after [`Catalog::build`]): each
+    /// gets a slug and its links to the components and ports of the catalogue.
+    pub fn attach_systems(&mut self, mut loaded: Vec<LoadedSystem>) {
+        loaded.sort_by(|a, b| a.source.cmp(&b.source));
+        let mut exact: HashMap<(String, String, String), Vec<usize>> = HashMap::new();
+        let mut by_vendor_name: HashMap<(String, String), Vec<usize>> = HashMap::new();
+        for (i, c) in self.components.iter().enumerate() {
+            let b = &c.profile.basic_info;
+            let v = non_empty(&b.vendor).unwrap_or("");
+            let cat = non_empty(&b.category).unwrap_or("");
+            let n = non_empty(&b.name).unwrap_or("");
+            exact.entry(key3(v, cat, n)).or_default().push(i);
+            // The instance's id is the `rtc:id` of the component's RTC.xml, which may say
+            // another vendor or category than BasicInfo (RTC202): match that too.
+            if let Some(p) = c
+                .profile
+                .id
+                .as_deref()
+                .and_then(|id| crate::model::IdParts::parse(id, b))
+            {
+                let k = key3(p.vendor, p.category, p.name);
+                if k != key3(v, cat, n) {
+                    exact.entry(k).or_default().push(i);
+                }
+            }
+            by_vendor_name
+                .entry((facet_key(v), facet_key(n)))
+                .or_default()
+                .push(i);
+        }
+        let names: Vec<(String, String)> = loaded
+            .iter()
+            .map(|l| (l.system.name().to_string(), l.source.clone()))
+            .collect();
+        let slugs = unique_slugs(&names);
+        let mut systems = Vec::with_capacity(loaded.len());
+        for (l, slug) in loaded.into_iter().zip(slugs) {
+            let sys = &l.system;
+            let instances: Vec<InstanceLink> = {
+                let mut seen: HashMap<String, usize> = HashMap::new();
+                sys.components
+                    .iter()
+                    .map(|inst| {
+                        let mut link = self.match_instance(inst, &exact, &by_vendor_name);
+                        let base = format!(
+                            "inst-{}",
+                            slugify(non_empty(&inst.instance_name).unwrap_or("instance"))
+                        );
+                        let n = seen.entry(base.clone()).or_default();
+                        *n += 1;
+                        link.anchor = if *n > 1 { format!("{base}-{n}") } else { base };
+                        link
+                    })
+                    .collect()
+            };
+            let end = |e: &Option<PortEnd>| -> EndLink {
+                let Some(e) = e else {
+                    return EndLink::default();
+                };
+                let instance = non_empty(&e.instance_name).and_then(|n| {
+                    sys.components
+                        .iter()
+                        .position(|c| c.instance_name.as_deref() == Some(n))
+                });
+                let port = instance
+                    .and_then(|i| instances[i].component_index)
+                    .and_then(|ci| find_port(&self.components[ci], end_port_name(e)));
+                EndLink { instance, port }
+            };
+            let data_connectors = sys
+                .data_port_connectors
+                .iter()
+                .map(|c| ConnectorLink {
+                    source: end(&c.source),
+                    target: end(&c.target),
+                })
+                .collect();
+            let service_connectors = sys
+                .service_port_connectors
+                .iter()
+                .map(|c| ConnectorLink {
+                    source: end(&c.source),
+                    target: end(&c.target),
+                })
+                .collect();
+            systems.push(System {
+                source: l.source,
+                format: l.format,
+                slug,
+                instances,
+                data_connectors,
+                service_connectors,
+                profile: l.system,
+            });
+        }
+        self.systems = systems;
+        self.index_pages();
+    }
+
+    fn match_instance(
+        &self,
+        inst: &SystemComponent,
+        exact: &HashMap<(String, String, String), Vec<usize>>,
+        by_vendor_name: &HashMap<(String, String), Vec<usize>>,
+    ) -> InstanceLink {
+        let Some(parts) = &inst.id_parts else {
+            return InstanceLink::default();
+        };
+        let v = non_empty(&parts.vendor).unwrap_or("");
+        let cat = non_empty(&parts.category).unwrap_or("");
+        let n = non_empty(&parts.name).unwrap_or("");
+        let version = non_empty(&parts.version).unwrap_or("").trim();
+        let (found, kind) = match exact.get(&key3(v, cat, n)) {
+            Some(list) => (Some(list), MatchKind::Exact),
+            None => match by_vendor_name.get(&(facet_key(v), facet_key(n))) {
+                Some(list) if list.len() == 1 => (Some(list), MatchKind::VendorName),
+                _ => (None, MatchKind::Exact),
+            },
+        };
+        let Some(list) = found else {
+            return InstanceLink::default();
+        };
+        // Several profiles of one id (the C++ and Python variants): the one of the same
+        // version, else the first by path.
+        let version_of = |ci: usize| {
+            non_empty(&self.components[ci].profile.basic_info.version)
+                .unwrap_or("")
+                .trim()
+                .to_string()
+        };
+        let ci = list
+            .iter()
+            .copied()
+            .find(|&ci| version_of(ci) == version)
+            .unwrap_or(list[0]);
+        let theirs = version_of(ci);
+        InstanceLink {
+            component_index: Some(ci),
+            component: Some(self.components[ci].id.to_string()),
+            matched_by: Some(kind),
+            version_drift: (!version.is_empty() && theirs != version).then_some(theirs),
+            anchor: String::new(),
+        }
+    }
+
+    /// The component profile of instance `i` of `sys`, when it is in the catalogue.
+    pub fn instance_component(&self, sys: &System, i: usize) -> Option<&Component> {
+        sys.instances
+            .get(i)?
+            .component_index
+            .map(|ci| &self.components[ci])
+    }
+
+    /// The systems with an instance of component `ci`, with the instance names, in system order.
+    pub fn systems_using(&self, ci: usize) -> Vec<(&System, Vec<&str>)> {
+        self.systems
+            .iter()
+            .filter_map(|s| {
+                let names: Vec<&str> = s
+                    .instances
+                    .iter()
+                    .zip(&s.profile.components)
+                    .filter(|(l, _)| l.component_index == Some(ci))
+                    .map(|(_, c)| non_empty(&c.instance_name).unwrap_or(""))
+                    .collect();
+                (!names.is_empty()).then_some((s, names))
+            })
+            .collect()
+    }
+
+    /// The data connectors carrying type `name` (any spelling): (system, connector index).
+    pub fn connectors_carrying(&self, name: &str) -> Vec<(&System, usize)> {
+        let want = crate::types::canonical_type(name);
+        let mut out = Vec::new();
+        for s in &self.systems {
+            for (k, c) in s.profile.data_port_connectors.iter().enumerate() {
+                if let Some(t) = non_empty(&c.data_type) {
+                    if crate::types::canonical_type(t) == want {
+                        out.push((s, k));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The ports of instance `i` of `sys`: the component profile's (data ports, then service
+    /// ports) when it is in the catalogue, then any other port the system file names for the
+    /// instance (its port lists, its connector ends), in the order first met.
+    pub fn instance_ports(&self, sys: &System, i: usize) -> Vec<InstancePort> {
+        let mut out: Vec<InstancePort> = Vec::new();
+        if let Some(c) = self.instance_component(sys, i) {
+            for (k, p) in c.profile.data_ports.iter().enumerate() {
+                let name = non_empty(&p.name).unwrap_or("").trim().to_string();
+                out.push(InstancePort {
+                    link: Some(PortLink::Data {
+                        index: k,
+                        name: name.clone(),
+                    }),
+                    name,
+                    service: false,
+                    direction: p.direction(),
+                    data_type: non_empty(&p.type_).map(str::to_string),
+                });
+            }
+            for (k, p) in c.profile.service_ports.iter().enumerate() {
+                let name = non_empty(&p.name).unwrap_or("").trim().to_string();
+                out.push(InstancePort {
+                    link: Some(PortLink::Service {
+                        index: k,
+                        name: name.clone(),
+                    }),
+                    name,
+                    service: true,
+                    direction: None,
+                    data_type: None,
+                });
+            }
+        }
+        let inst = &sys.profile.components[i];
+        let mut add = |name: &str, service: bool, dir: Option<PortDirection>| {
+            if name.is_empty() {
+                return;
+            }
+            match out.iter_mut().find(|p| p.name == name) {
+                Some(p) => {
+                    if p.direction.is_none() && !p.service {
+                        p.direction = dir;
+                    }
+                }
+                None => out.push(InstancePort {
+                    name: name.to_string(),
+                    service,
+                    direction: dir,
+                    link: None,
+                    data_type: None,
+                }),
+            }
+        };
+        let own = |n: &Option<crate::model::Text>, short: &Option<crate::model::Text>| {
+            non_empty(short)
+                .or_else(|| non_empty(n))
+                .unwrap_or("")
+                .to_string()
+        };
+        for p in &inst.data_ports {
+            add(&own(&p.name, &p.short_name), false, None);
+        }
+        for p in &inst.service_ports {
+            add(&own(&p.name, &p.short_name), true, None);
+        }
+        for (k, c) in sys.profile.data_port_connectors.iter().enumerate() {
+            let l = &sys.data_connectors[k];
+            if l.source.instance == Some(i) {
+                if let Some(e) = &c.source {
+                    add(end_port_name(e), false, Some(PortDirection::Out));
+                }
+            }
+            if l.target.instance == Some(i) {
+                if let Some(e) = &c.target {
+                    add(end_port_name(e), false, Some(PortDirection::In));
+                }
+            }
+        }
+        for (k, c) in sys.profile.service_port_connectors.iter().enumerate() {
+            let l = &sys.service_connectors[k];
+            for (e, el) in [(&c.source, &l.source), (&c.target, &l.target)] {
+                if el.instance == Some(i) {
+                    if let Some(e) = e {
+                        add(end_port_name(e), true, None);
+                    }
+                }
+            }
+        }
+        out
+    }
+}
+
+/// What a configuration value of an instance is against its component's declaration.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ConfigCheck {
+    /// Of the declared type and within the constraint (or nothing to check it against).
+    Ok,
+    /// The component declares no parameter of this name.
+    Undeclared,
+    /// Not a value of the declared type; the text says why.
+    BadType(String),
+    /// Outside the declared constraint; the text names the constraint and what failed.
+    Violated(String),
+}
+
+/// Checks `value`, given to parameter `name` of component `c` by a system, against the
+/// parameter's declared type and constraint (as `check` does for default values).
+pub fn check_configuration(c: &Component, name: &str, value: &str) -> ConfigCheck {
+    use crate::constraint::{self, Verdict};
+    use crate::value::{self, ValueType};
+    let Some(conf) = c
+        .profile
+        .configurations()
+        .iter()
+        .find(|k| k.name.as_deref().map(str::trim) == Some(name.trim()))
+    else {
+        return ConfigCheck::Undeclared;
+    };
+    let ty = non_empty(&conf.type_).map_or(ValueType::Unknown, ValueType::parse);
+    if let Err(why) = value::check_value(ty, value) {
+        return ConfigCheck::BadType(format!(
+            "not a valid {}: {why}",
+            conf.type_.as_deref().unwrap_or("").trim()
+        ));
+    }
+    let Some(k) = conf
+        .constraint
+        .as_ref()
+        .filter(|k| k.placeholder().is_none())
+    else {
+        return ConfigCheck::Ok;
+    };
+    if !constraint::problems(k, ty).is_empty() {
+        return ConfigCheck::Ok;
+    }
+    let eval_ty = match (conf.widget().map(str::trim), ty) {
+        (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
+        (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
+            ValueType::Vector(value::ScalarType::Text)
+        }
+        _ => ty,
+    };
+    match constraint::evaluate(k, value, eval_ty) {
+        Verdict::Violated(why) => ConfigCheck::Violated(format!(
+            "outside the constraint `{}`: {why}",
+            constraint::describe(k)
+        )),
+        _ => ConfigCheck::Ok,
+    }
+}
+
+/// Every value of the system as (path, value) rows (keys sorted within a node, lists in document
+/// order): the full record that the pages summarise. Reader bookkeeping (positions, derived fields) is left out; so are
+/// host data (private properties, naming paths) unless `show_host`.
+pub fn all_values(p: &RtSystem, show_host: bool) -> Vec<(String, String)> {
+    fn walk(v: &serde_json::Value, path: &str, show_host: bool, out: &mut Vec<(String, String)>) {
+        use serde_json::Value as J;
+        match v {
+            J::Object(m) => {
+                if !show_host
+                    && (m.get("private") == Some(&J::Bool(true))
+                        || m.get("value")
+                            .and_then(J::as_str)
+                            .is_some_and(is_naming_path))
+                {
+                    return;
+                }
+                for (k, x) in m {
+                    if matches!(
+                        k.as_str(),
+                        "pos" | "idParts" | "shortName" | "dataTypeScoped" | "pseudo" | "private"
+                    ) || (!show_host && k == "pathUri")
+                    {
+                        continue;
+                    }
+                    let p = if path.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{path}.{k}")
+                    };
+                    walk(x, &p, show_host, out);
+                }
+            }
+            J::Array(a) => {
+                for (i, x) in a.iter().enumerate() {
+                    walk(x, &format!("{path}[{i}]"), show_host, out);
+                }
+            }
+            J::Null => {}
+            J::String(s) => out.push((path.to_string(), s.clone())),
+            other => out.push((path.to_string(), other.to_string())),
+        }
+    }
+    let mut out = Vec::new();
+    if let Ok(v) = serde_json::to_value(p) {
+        walk(&v, "", show_host, &mut out);
+    }
+    out
+}
+
+/// A naming path with the host in it (`localhost:2809/Camera0.rtc`, the `COMPONENT_PATH_ID` of
+/// connector ends, `pathUri`): host data, like the endpoints the reader flags as private.
+pub fn is_naming_path(v: &str) -> bool {
+    v.trim()
+        .split_once('/')
+        .is_some_and(|(host, _)| crate::system::is_private_property(None, Some(host)))
+}
+
+/// How many host values the pages and the JSON leave out of `p` unless asked to show them:
+/// private properties, properties whose value is a naming path, and instances' `pathUri`.
+pub fn host_values(p: &RtSystem) -> usize {
+    p.all_properties()
+        .iter()
+        .filter(|q| q.private || q.value.as_deref().is_some_and(is_naming_path))
+        .count()
+        + p.components
+            .iter()
+            .filter(|c| non_empty(&c.path_uri).is_some())
+            .count()
+}
+
+/// Calls `f` on every property anywhere in `p` (the nodes of [`RtSystem::all_properties`]).
+fn for_each_property_mut(p: &mut RtSystem, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+    use crate::system::TargetComponent;
+    fn target(t: &mut TargetComponent, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+        t.properties.iter_mut().for_each(&mut *f);
+    }
+    fn end(e: &mut Option<PortEnd>, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+        if let Some(e) = e {
+            e.properties.iter_mut().for_each(&mut *f);
+        }
+    }
+    p.properties.iter_mut().for_each(&mut *f);
+    for c in &mut p.components {
+        c.properties.iter_mut().for_each(&mut *f);
+        for port in c.data_ports.iter_mut().chain(c.service_ports.iter_mut()) {
+            port.properties.iter_mut().for_each(&mut *f);
+        }
+        for ec in &mut c.execution_contexts {
+            ec.properties.iter_mut().for_each(&mut *f);
+            ec.participants.iter_mut().for_each(|t| target(t, f));
+        }
+        c.participants.iter_mut().for_each(|t| target(t, f));
+    }
+    for g in &mut p.groups {
+        g.members.iter_mut().for_each(|t| target(t, f));
+    }
+    for d in &mut p.data_port_connectors {
+        d.properties.iter_mut().for_each(&mut *f);
+        end(&mut d.source, f);
+        end(&mut d.target, f);
+    }
+    for s in &mut p.service_port_connectors {
+        s.properties.iter_mut().for_each(&mut *f);
+        end(&mut s.source, f);
+        end(&mut s.target, f);
+    }
+    for o in &mut p.orders {
+        for t in &mut o.targets {
+            t.properties.iter_mut().for_each(&mut *f);
+            if let Some(tc) = &mut t.target_component {
+                target(tc, f);
+            }
+            if let Some(pr) = &mut t.preceding {
+                pr.preceding_components
+                    .iter_mut()
+                    .for_each(|t| target(t, f));
+            }
+        }
+    }
+}
+
+impl System {
+    /// A copy without host data, for published output: the values of private properties and
+    /// of naming-path properties are dropped (`value` absent; the name and the `private` flag
+    /// stay, so a reader sees that something was there), and so are instances' `pathUri`.
+    pub fn without_host_data(&self) -> System {
+        let mut s = self.clone();
+        for_each_property_mut(&mut s.profile, &mut |q| {
+            if q.private || q.value.as_deref().is_some_and(is_naming_path) {
+                q.private = true;
+                q.value = None;
+            }
+        });
+        for c in &mut s.profile.components {
+            c.path_uri = None;
+        }
+        s
+    }
+}

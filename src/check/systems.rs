@@ -1,0 +1,185 @@
+//! The rules over RT System profiles (RTC6xx): connector ends against the ports of the
+//! component profiles, connector types against port types, instances against the catalogue,
+//! instance names, and configuration values against the components' declarations.
+
+use super::registry as r;
+use super::rules::Sink;
+use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
+use crate::catalog::Catalog;
+use crate::diagnostic::Diagnostic;
+use crate::model::non_empty;
+use crate::system::PortEnd;
+use crate::types::canonical_type;
+use std::collections::HashMap;
+
+/// Every finding over every system of the catalogue.
+pub fn run(cat: &Catalog) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    for s in &cat.systems {
+        let mut sink = Sink {
+            file: &s.source,
+            out: Vec::new(),
+        };
+        system(cat, s, &mut sink);
+        out.extend(sink.out);
+    }
+    out
+}
+
+fn system(cat: &Catalog, s: &System, sink: &mut Sink<'_>) {
+    let p = &s.profile;
+    // Instance names.
+    let mut first: HashMap<&str, usize> = HashMap::new();
+    for c in &p.components {
+        let Some(n) = non_empty(&c.instance_name) else {
+            continue;
+        };
+        let seen = first.entry(n).or_default();
+        *seen += 1;
+        if *seen == 2 {
+            sink.emit(
+                r::SYSTEM_DUPLICATE_INSTANCE,
+                c.pos,
+                format!("instance name `{n}` is used by more than one instance"),
+            );
+        }
+    }
+    // Instances against the catalogue; their configuration.
+    for (i, c) in p.components.iter().enumerate() {
+        let name = non_empty(&c.instance_name).unwrap_or("");
+        let id = non_empty(&c.id).unwrap_or("");
+        let Some(comp) = cat.instance_component(s, i) else {
+            sink.emit(
+                r::SYSTEM_COMPONENT_MISSING,
+                c.pos,
+                format!(
+                    "instance `{name}`: no component profile of the input has the id `{id}` (vendor, category and name)"
+                ),
+            );
+            continue;
+        };
+        if let Some(theirs) = &s.instances[i].version_drift {
+            let ours = c
+                .id_parts
+                .as_ref()
+                .and_then(|x| non_empty(&x.version))
+                .unwrap_or("");
+            sink.emit(
+                r::SYSTEM_VERSION_DRIFT,
+                c.pos,
+                format!(
+                    "instance `{name}` names version {ours} of `{}`; the catalogue has {theirs} ({})",
+                    comp.profile.name(),
+                    comp.source
+                ),
+            );
+        }
+        for set in c.configuration_sets.iter().filter(|x| !x.pseudo) {
+            let set_id = non_empty(&set.id).unwrap_or("");
+            for d in &set.configuration_data {
+                let n = non_empty(&d.name).unwrap_or("");
+                let v = d.data.as_deref().unwrap_or("");
+                match check_configuration(comp, n, v) {
+                    ConfigCheck::Ok => {}
+                    ConfigCheck::Undeclared => sink.emit(
+                        r::SYSTEM_CONFIG_UNDECLARED,
+                        d.pos,
+                        format!(
+                            "instance `{name}`, set `{set_id}`: `{}` declares no parameter `{n}`",
+                            comp.profile.name()
+                        ),
+                    ),
+                    ConfigCheck::BadType(why) | ConfigCheck::Violated(why) => sink.emit(
+                        r::SYSTEM_CONFIG_INVALID,
+                        d.pos,
+                        format!("instance `{name}`, set `{set_id}`: `{n}` = `{v}` is {why}"),
+                    ),
+                }
+            }
+        }
+    }
+    // Connector ends.
+    let ends = p
+        .data_port_connectors
+        .iter()
+        .zip(&s.data_connectors)
+        .map(|(c, l)| (&c.source, &c.target, l))
+        .chain(
+            p.service_port_connectors
+                .iter()
+                .zip(&s.service_connectors)
+                .map(|(c, l)| (&c.source, &c.target, l)),
+        );
+    for (src, dst, l) in ends {
+        for (e, el) in [(src, &l.source), (dst, &l.target)] {
+            let Some(e) = e else { continue };
+            end(cat, s, e, el, sink);
+        }
+    }
+    // Connector types against port types.
+    for (c, l) in p.data_port_connectors.iter().zip(&s.data_connectors) {
+        let port_type = |el: &crate::catalog::systems::EndLink| -> Option<(String, String)> {
+            let comp = cat.instance_component(s, el.instance?)?;
+            let Some(PortLink::Data { index, name }) = &el.port else {
+                return None;
+            };
+            let t = non_empty(&comp.profile.data_ports[*index].type_)?;
+            Some((canonical_type(t), format!("{}.{name}", comp.profile.name())))
+        };
+        let a = port_type(&l.source);
+        let b = port_type(&l.target);
+        let cname = non_empty(&c.name).unwrap_or("");
+        if let Some(t) = non_empty(&c.data_type) {
+            let want = canonical_type(t);
+            for (pt, port) in [&a, &b].into_iter().flatten() {
+                if *pt != want {
+                    sink.emit(
+                        r::SYSTEM_TYPE_MISMATCH,
+                        c.pos,
+                        format!(
+                            "connector `{cname}` carries `{t}`, but port {port} carries `{pt}`"
+                        ),
+                    );
+                }
+            }
+        } else if let (Some((ta, pa)), Some((tb, pb))) = (&a, &b) {
+            if ta != tb {
+                sink.emit(
+                    r::SYSTEM_TYPE_MISMATCH,
+                    c.pos,
+                    format!("connector `{cname}` joins {pa} (`{ta}`) to {pb} (`{tb}`)"),
+                );
+            }
+        }
+    }
+}
+
+fn end(
+    cat: &Catalog,
+    s: &System,
+    e: &PortEnd,
+    el: &crate::catalog::systems::EndLink,
+    sink: &mut Sink<'_>,
+) {
+    let inst = non_empty(&e.instance_name).unwrap_or("");
+    let port = end_port_name(e);
+    let Some(i) = el.instance else {
+        sink.emit(
+            r::SYSTEM_UNKNOWN_INSTANCE,
+            e.pos,
+            format!("connector end `{inst}.{port}`: the system has no instance `{inst}`"),
+        );
+        return;
+    };
+    if let (Some(comp), None) = (cat.instance_component(s, i), &el.port) {
+        sink.emit(
+            r::SYSTEM_UNKNOWN_PORT,
+            e.pos,
+            format!(
+                "connector end `{inst}.{port}`: component `{}` ({}) has no port `{port}`",
+                comp.profile.name(),
+                comp.source
+            ),
+        );
+    }
+}

@@ -1,0 +1,527 @@
+//! RT System profiles as documented pages (issue 16): loading into the catalogue, links from
+//! instances to components and from connector ends to ports, the pages, the other outputs and
+//! the check rules.
+
+mod common;
+mod html_support;
+
+use html_support::{broken_links, build_site, tags};
+use rtcdoc::build::{self, LoadOptions};
+use rtcdoc::catalog::systems::{MatchKind, PortLink};
+use rtcdoc::catalog::Catalog;
+use rtcdoc::render::SiteOptions;
+use std::path::PathBuf;
+
+fn read(p: &std::path::Path) -> String {
+    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+/// The part of `html` from the element with `id` to the end of its section.
+fn section<'a>(html: &'a str, id: &str) -> &'a str {
+    let start = html
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no section {id}"));
+    let rest = &html[start..];
+    &rest[..rest.find("</section>").unwrap_or(rest.len())]
+}
+
+fn site_fixture() -> PathBuf {
+    common::root().join("tests/fixtures/systems/site")
+}
+
+fn load(path: &std::path::Path) -> Catalog {
+    build::load(path, &LoadOptions::default())
+        .expect("load")
+        .catalog
+}
+
+#[test]
+fn systems_are_loaded_and_linked() {
+    let cat = load(&site_fixture());
+    assert_eq!(cat.components.len(), 2);
+    assert_eq!(cat.systems.len(), 1, "the system is read, not skipped");
+    let s = &cat.systems[0];
+    assert_eq!(s.source, "system/PatrolSystem.xml");
+    assert_eq!(s.slug, "patrolsystem");
+    assert_eq!(s.profile.components.len(), 2);
+    // Camera0 → Camera (same version), Planner0 → Planner (1.2.0 named, 1.1.0 in the catalogue).
+    let cam = &s.instances[0];
+    assert_eq!(cam.component.as_deref(), Some("camera"));
+    assert_eq!(cam.matched_by, Some(MatchKind::Exact));
+    assert_eq!(cam.version_drift, None);
+    let pl = &s.instances[1];
+    assert_eq!(pl.component.as_deref(), Some("planner"));
+    assert_eq!(pl.version_drift.as_deref(), Some("1.1.0"));
+    // Connector ends resolve to the ports of the profiles, `Camera0.image` and `image` alike.
+    let d = &s.data_connectors[0];
+    assert_eq!(d.source.instance, Some(0));
+    assert!(matches!(&d.source.port, Some(PortLink::Data { name, .. }) if name == "image"));
+    assert_eq!(d.target.instance, Some(1));
+    assert!(matches!(&d.target.port, Some(PortLink::Data { name, .. }) if name == "image"));
+    let sc = &s.service_connectors[0];
+    assert!(matches!(&sc.source.port, Some(PortLink::Service { name, .. }) if name == "camera"));
+    assert!(matches!(&sc.target.port, Some(PortLink::Service { name, .. }) if name == "control"));
+    // No "not a component profile" warning for it any more.
+    assert!(
+        !cat.diagnostics.iter().any(|d| d.code == "RTC012"),
+        "{:?}",
+        cat.diagnostics
+    );
+    // Who uses what.
+    let ci = cat
+        .components
+        .iter()
+        .position(|c| c.slug == "planner")
+        .unwrap();
+    let using = cat.systems_using(ci);
+    assert_eq!(using.len(), 1);
+    assert_eq!(using[0].1, vec!["Planner0"]);
+    assert_eq!(cat.connectors_carrying("RTC::CameraImage").len(), 1);
+    assert_eq!(cat.connectors_carrying("IDL:RTC/CameraImage:1.0").len(), 1);
+    assert!(cat.connectors_carrying("RTC::TimedLong").is_empty());
+}
+
+#[test]
+fn a_system_alone_is_something_to_document() {
+    let cat = load(&site_fixture().join("system/PatrolSystem.xml"));
+    assert_eq!(cat.systems.len(), 1);
+    assert!(cat.components.is_empty());
+    assert!(cat.systems[0]
+        .instances
+        .iter()
+        .all(|i| i.component.is_none()));
+    // The ports still come from the system file and its connectors.
+    let ports = cat.instance_ports(&cat.systems[0], 1);
+    let names: Vec<&str> = ports.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["image", "path", "camera"]);
+}
+
+#[test]
+fn system_page_shows_every_instance_and_connector_with_named_links() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&site_fixture(), &out, SiteOptions::default());
+    assert_eq!(loaded.catalog.systems.len(), 1);
+    let index = read(&out.join("systems/index.html"));
+    assert!(
+        index.contains(r#"href="patrolsystem.html">PatrolSystem</a>"#),
+        "{index}"
+    );
+    let html = read(&out.join("systems/patrolsystem.html"));
+    let title = &html[html.find("<title>").unwrap() + 7..];
+    assert!(title.starts_with("PatrolSystem "), "{title}");
+    // Every instance, linked to its component; drift flagged.
+    let inst = section(&html, "instances");
+    for (row, comp) in [
+        ("inst-camera0", "../components/camera.html"),
+        ("inst-planner0", "../components/planner.html"),
+    ] {
+        assert!(inst.contains(&format!(r#"<tr id="{row}">"#)), "{row}");
+        assert!(inst.contains(&format!(r#"href="{comp}""#)), "{comp}");
+    }
+    assert!(
+        inst.contains("version drift: the catalogue has 1.1.0"),
+        "{inst}"
+    );
+    // Every connector, ends linked to the ports of the component pages, the type to its page.
+    let data = section(&html, "data-connectors");
+    assert!(
+        data.contains(r#"<a href="../components/camera.html#port-image"><code>image</code></a>"#),
+        "{data}"
+    );
+    assert!(
+        data.contains(r#"<a href="../components/planner.html#port-image"><code>image</code></a>"#),
+        "{data}"
+    );
+    assert!(
+        data.contains(r#"href="../types/rtc-cameraimage.html""#),
+        "{data}"
+    );
+    assert!(data.contains("periodic") && data.contains("0.5") && data.contains("corba_cdr"));
+    let svc = section(&html, "service-connectors");
+    assert!(
+        svc.contains("#sport-camera") && svc.contains("#sport-control"),
+        "{svc}"
+    );
+    assert!(
+        svc.contains(r#"href="../interfaces/cameracontrol.html""#),
+        "{svc}"
+    );
+    // The diagram: a group (not an image) with a named link per instance and per port.
+    let svg = &html[html.find("<svg").unwrap()..html.find("</svg>").unwrap()];
+    assert!(svg.contains(r#"role="group""#) && !svg.contains(r#"role="img""#));
+    let links: Vec<_> = tags(svg).into_iter().filter(|t| t.name == "a").collect();
+    let labels: Vec<&str> = links.iter().filter_map(|t| t.attr("aria-label")).collect();
+    assert_eq!(links.len(), labels.len(), "every link is named");
+    for l in [
+        "Instance Camera0 (Camera)",
+        "Instance Planner0 (Planner)",
+        "out-port Camera0.image",
+        "in-port Planner0.image",
+        "out-port Planner0.path",
+        "service port Planner0.camera",
+        "service port Camera0.control",
+    ] {
+        assert!(labels.contains(&l), "{l} in {labels:?}");
+    }
+    assert_eq!(svg.matches("class=\"connector data\"").count(), 1);
+    assert_eq!(svg.matches("class=\"connector service\"").count(), 1);
+    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connectors, 1 service connectors.</figcaption>"));
+    // Configuration used next to the defaults: differences marked, values checked.
+    let conf = section(&html, "configuration");
+    assert!(
+        conf.contains("<mark>0.02</mark></td><td>0.01</td>"),
+        "{conf}"
+    );
+    assert!(conf.contains("<mark>0.5</mark></td><td>0.3</td>"), "{conf}");
+    // Orders and groups.
+    assert!(section(&html, "orders").contains("after Camera0 (timeout 500 ms, SYNC)"));
+    assert!(section(&html, "groups").contains("Camera0, Planner0"));
+    // The component pages list the system; the type page lists the connector.
+    let planner = read(&out.join("components/planner.html"));
+    let used = section(&planner, "systems");
+    assert!(
+        used.contains(r#"<a href="../systems/patrolsystem.html">PatrolSystem (Planner0)</a>"#),
+        "{used}"
+    );
+    let ty = read(&out.join("types/rtc-cameraimage.html"));
+    assert!(
+        section(&ty, "system-connectors").contains("PatrolSystem: Camera0.image → Planner0.image")
+    );
+    // Navigation and search.
+    assert!(read(&out.join("index.html")).contains(r#"<a href="systems/index.html">Systems</a>"#));
+    assert!(planner.contains(r#"<a href="../systems/index.html">Systems</a>"#));
+    let search = read(&out.join("search-index.js"));
+    assert!(search.contains("\"systems/patrolsystem.html\""), "{search}");
+    let broken = broken_links(&out);
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+}
+
+#[test]
+fn host_data_is_hidden_unless_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let hidden = dir.path().join("hidden");
+    build_site(&site_fixture(), &hidden, SiteOptions::default());
+    let html = read(&hidden.join("systems/patrolsystem.html"));
+    for secret in [
+        "robot-pc.local",
+        "192.168.10.5:2810",
+        "IOR:010000001a",
+        "nameserver.example",
+        "localhost:2809/Camera0.rtc",
+    ] {
+        assert!(!html.contains(secret), "{secret} published");
+    }
+    assert!(
+        html.contains("7 host values hidden"),
+        "the page says what it left out"
+    );
+    assert!(html.contains("lab B"), "other properties stay");
+    let shown = dir.path().join("shown");
+    build_site(
+        &site_fixture(),
+        &shown,
+        SiteOptions {
+            show_host_data: true,
+            ..Default::default()
+        },
+    );
+    let html = read(&shown.join("systems/patrolsystem.html"));
+    for secret in [
+        "robot-pc.local",
+        "192.168.10.5:2810",
+        "IOR:010000001a",
+        "nameserver.example",
+        "localhost:2809/Camera0.rtc",
+    ] {
+        assert!(html.contains(secret), "{secret} shown with show-host-data");
+    }
+    assert!(!html.contains("host values hidden"));
+}
+
+#[test]
+fn show_host_data_is_a_configuration_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = d.join("in");
+    std::fs::create_dir_all(&input).unwrap();
+    std::fs::copy(
+        site_fixture().join("system/PatrolSystem.xml"),
+        input.join("PatrolSystem.xml"),
+    )
+    .unwrap();
+    std::fs::write(input.join("rtcdoc.toml"), "show-host-data = true\n").unwrap();
+    let out = common::rtcdoc(&["build", "in", "-o", "site"], d);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(read(&d.join("site/systems/patrolsystem.html")).contains("robot-pc.local"));
+}
+
+#[test]
+fn a_diagram_of_many_instances_without_locations_is_laid_out_in_layers() {
+    // A chain of 24 instances: each box left of the next, none overlapping.
+    let mut comps = String::new();
+    let mut conns = String::new();
+    for i in 0..24 {
+        comps.push_str(&format!(
+            r#"<rts:Components rts:id="RTC:L:C:Stage:1.0" rts:instanceName="S{i}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="S{i}.in"/><rts:DataPorts rts:name="S{i}.out"/></rts:Components>"#
+        ));
+        if i > 0 {
+            conns.push_str(&format!(
+                r#"<rts:DataPortConnectors rts:connectorId="c{i}" rts:name="c{i}" rts:dataType="IDL:RTC/TimedLong:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:L:C:Stage:1.0" rts:instanceName="S{p}" rts:portName="S{p}.out"/><rts:targetDataPort rts:componentId="RTC:L:C:Stage:1.0" rts:instanceName="S{i}" rts:portName="S{i}.in"/></rts:DataPortConnectors>"#,
+                p = i - 1
+            ));
+        }
+    }
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:L:Chain:1.0" rts:version="0.2" rts:creationDate="2024-01-01T00:00:00" rts:updateDate="2024-01-01T00:00:00">{comps}{conns}</rts:RtsProfile>"#
+    );
+    let dir = tempfile::tempdir().unwrap();
+    common::write(dir.path(), "in/Chain.xml", &xml);
+    let out = dir.path().join("site");
+    build_site(&dir.path().join("in"), &out, SiteOptions::default());
+    let html = read(&out.join("systems/chain.html"));
+    let svg = &html[html.find("<svg").unwrap()..html.find("</svg>").unwrap()];
+    let boxes: Vec<f32> = tags(svg)
+        .into_iter()
+        .filter(|t| t.name == "rect" && t.attr("class") == Some("rtc-box"))
+        .map(|t| t.attr("x").unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(boxes.len(), 24);
+    assert!(boxes.windows(2).all(|w| w[1] > w[0] + 150.0), "{boxes:?}");
+    assert_eq!(svg.matches("class=\"connector data\"").count(), 23);
+    // Ports named by the system file, directions from the connectors.
+    assert!(svg.contains(r#"aria-label="out-port S0.out""#));
+    assert!(svg.contains(r#"aria-label="in-port S23.in""#));
+}
+
+#[test]
+fn markdown_doxygen_and_json_carry_systems() {
+    use rtcdoc::render::{doxygen, markdown};
+    let cat = load(&site_fixture());
+    let lang = rtcdoc::i18n::Lang::En;
+    // Markdown: an index, a page per system in SUMMARY, links both ways.
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", lang).into_iter().collect();
+    let page = &md["systems/patrolsystem.md"];
+    for want in [
+        "[Camera](../components/camera.md)",
+        "version drift: the catalogue has 1.1.0",
+        "| Camera0.image\\_Planner0.image | Camera0.image | Planner0.image | [IDL:RTC/CameraImage:1.0](../types/rtc-cameraimage.md) | corba\\_cdr | push | periodic | 0.5 |",
+        "| Planner0.camera\\_Camera0.control | Planner0.camera | Camera0.control | corba |",
+        "7 host values hidden",
+    ] {
+        assert!(page.contains(want), "{want} in\n{page}");
+    }
+    assert!(!page.contains("robot-pc.local"));
+    assert!(md["SUMMARY.md"]
+        .contains("- [Systems](systems.md)\n    - [PatrolSystem](systems/patrolsystem.md)"));
+    assert!(md["systems.md"].contains("[PatrolSystem](systems/patrolsystem.md)"));
+    assert!(md["components/planner.md"]
+        .contains("[PatrolSystem (Planner0)](../systems/patrolsystem.md)"));
+    assert!(md["types/rtc-cameraimage.md"]
+        .contains("[PatrolSystem: Camera0.image → Planner0.image](../systems/patrolsystem.md)"));
+    // Doxygen: pages and references, listed in the Doxyfile.
+    let dox: std::collections::BTreeMap<String, String> =
+        doxygen::pages(&cat, "Cat", lang).into_iter().collect();
+    let page = &dox["systems/patrolsystem.dox"];
+    assert!(
+        page.starts_with("/// \\page rtc_sys_patrolsystem PatrolSystem"),
+        "{page}"
+    );
+    assert!(page.contains("\\ref rtc_comp_camera \"Camera\""), "{page}");
+    assert!(dox["systems.dox"].contains("\\subpage rtc_sys_patrolsystem"));
+    assert!(dox["mainpage.dox"].contains("\\subpage rtc_systems (1)"));
+    assert!(dox["components/camera.dox"]
+        .contains("\\ref rtc_sys_patrolsystem \"PatrolSystem (Camera0)\""));
+    assert!(dox["Doxyfile"].contains("systems/patrolsystem.dox"));
+    // JSON: systems with their links; host data left out by default.
+    let dir = tempfile::tempdir().unwrap();
+    for (show, name) in [(false, "hidden"), (true, "shown")] {
+        let out = dir.path().join(name);
+        build::build(&build::BuildOptions {
+            input: site_fixture(),
+            output: out.clone(),
+            formats: vec![rtcdoc::render::Format::Json],
+            strict: false,
+            load: LoadOptions::default(),
+            site: SiteOptions {
+                show_host_data: show,
+                ..Default::default()
+            },
+        })
+        .expect("build");
+        let text = read(&out.join("catalog.json"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let s = &v["systems"][0];
+        assert_eq!(s["slug"], "patrolsystem");
+        assert_eq!(s["instances"][1]["component"], "planner");
+        assert_eq!(s["instances"][1]["versionDrift"], "1.1.0");
+        assert_eq!(s["instances"][0]["matchedBy"], "exact");
+        assert_eq!(s["dataConnectors"][0]["source"]["instance"], 0);
+        assert_eq!(s["dataConnectors"][0]["target"]["port"]["name"], "image");
+        assert_eq!(
+            s["serviceConnectors"][0]["target"]["port"]["kind"],
+            "service"
+        );
+        assert_eq!(s["profile"]["components"].as_array().unwrap().len(), 2);
+        assert_eq!(text.contains("robot-pc.local"), show, "{name}");
+        assert_eq!(text.contains("localhost:2809/Camera0.rtc"), show, "{name}");
+        // Other properties are kept either way.
+        assert!(text.contains("\"lab B\""));
+    }
+}
+
+#[test]
+fn doxygen_runs_on_a_system_without_warnings() {
+    if !html_support::have("doxygen") {
+        println!("skipped: doxygen is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("dox");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            site_fixture().to_str().unwrap(),
+            "-f",
+            "doxygen",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let d = std::process::Command::new("doxygen")
+        .arg("Doxyfile")
+        .current_dir(&out)
+        .output()
+        .expect("doxygen");
+    let err = String::from_utf8_lossy(&d.stderr);
+    assert!(
+        d.status.success() && err.trim().is_empty(),
+        "doxygen said:\n{err}"
+    );
+    assert!(out.join("html/rtc_sys_patrolsystem.html").is_file());
+}
+
+#[test]
+fn serve_picks_up_a_changed_system_and_keeps_systems_on_component_changes() {
+    use rtcdoc::incremental::Workspace;
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    for rel in [
+        "components/Camera/RTC.xml",
+        "components/Planner/RTC.xml",
+        "system/PatrolSystem.xml",
+    ] {
+        let to = input.join(rel);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(site_fixture().join(rel), &to).unwrap();
+    }
+    let opts = build::BuildOptions {
+        input: input.clone(),
+        output: dir.path().join("site"),
+        formats: vec![rtcdoc::render::Format::Html],
+        strict: false,
+        load: LoadOptions::default(),
+        site: SiteOptions::default(),
+    };
+    let mut ws = Workspace::open(&opts).expect("open");
+    let page = |ws: &Workspace| {
+        String::from_utf8(ws.files()["systems/patrolsystem.html"].clone()).unwrap()
+    };
+    assert!(page(&ws).contains("Hand-written test system"));
+    // The system changes: its page follows.
+    let sys = input.join("system/PatrolSystem.xml");
+    let text = read(&sys).replace("Hand-written test system", "Edited while serving");
+    std::fs::write(&sys, text).unwrap();
+    let r = ws.update(std::slice::from_ref(&sys)).expect("update");
+    assert!(r.full);
+    assert!(page(&ws).contains("Edited while serving"));
+    // A component changes (its version now matches): the system stays and loses its drift.
+    let planner = input.join("components/Planner/RTC.xml");
+    let text = read(&planner).replace("1.1.0", "1.2.0");
+    std::fs::write(&planner, text).unwrap();
+    ws.update(std::slice::from_ref(&planner)).expect("update");
+    assert_eq!(ws.catalog().systems.len(), 1);
+    assert!(
+        !page(&ws).contains("version drift"),
+        "re-rendered with the new component"
+    );
+}
+
+/// Every RT System profile of the shared corpus (when present) has a page with every instance,
+/// every connector and a diagram; no link of the site is broken. Prints the counts.
+#[test]
+fn every_corpus_system_has_a_complete_page() {
+    let Some(corpus) = common::corpus() else {
+        println!("skipped: ../shared/corpus not present");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let loaded = build_site(&corpus, &out, SiteOptions::default());
+    let cat = &loaded.catalog;
+    assert_eq!(cat.systems.len(), 9);
+    let (mut instances, mut matched, mut connectors) = (0, 0, 0);
+    for s in &cat.systems {
+        let html = read(&out.join(format!("systems/{}.html", s.slug)));
+        assert!(
+            html.contains("class=\"diagram system-diagram\""),
+            "{}",
+            s.source
+        );
+        for l in &s.instances {
+            assert!(
+                html.contains(&format!("<tr id=\"{}\">", l.anchor)),
+                "{}",
+                s.source
+            );
+        }
+        let data = section(&html, "data-connectors");
+        assert_eq!(
+            data.matches("<tr><th scope=\"row\">").count(),
+            s.profile.data_port_connectors.len(),
+            "{}",
+            s.source
+        );
+        let svc = section(&html, "service-connectors");
+        assert_eq!(
+            svc.matches("<tr><th scope=\"row\">").count(),
+            s.profile.service_port_connectors.len(),
+            "{}",
+            s.source
+        );
+        instances += s.instances.len();
+        matched += s.instances.iter().filter(|l| l.component.is_some()).count();
+        connectors +=
+            s.profile.data_port_connectors.len() + s.profile.service_port_connectors.len();
+    }
+    println!("corpus: {} systems, {instances} instances ({matched} matched to catalogue components), {connectors} connectors", cat.systems.len());
+    assert_eq!((instances, connectors), (29, 35));
+    let broken = broken_links(&out);
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+}
+
+#[test]
+fn the_yaml_form_is_read_and_linked_like_the_xml_form() {
+    let cat = load(&common::root().join("tests/fixtures/rts"));
+    let by_source = |s: &str| cat.systems.iter().find(|x| x.source == s).unwrap();
+    let (x, y) = (by_source("full.xml"), by_source("full.yaml"));
+    assert_eq!(y.format, rtcdoc::parse::SourceFormat::Yaml);
+    let links = |s: &rtcdoc::catalog::systems::System| -> Vec<Option<String>> {
+        s.instances.iter().map(|i| i.component.clone()).collect()
+    };
+    assert_eq!(links(x), links(y));
+    assert_eq!(links(x), [Some("camera".to_string()), None]);
+    assert_eq!(
+        x.data_connectors[0].source.port,
+        y.data_connectors[0].source.port
+    );
+    // Same name, two files: two pages with their own slugs.
+    assert_ne!(x.slug, y.slug);
+}
