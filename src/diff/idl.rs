@@ -703,7 +703,13 @@ impl<'s> Cmp<'s> {
                 format!("{what} is written `{wn}` instead of `{wo}`, the same type (`{en}`){loc}"),
             );
         }
-        self.descend(p, ot, nt, 0);
+        // An array's members are its elements' (`m[]` like a sequence).
+        let p = if na.is_empty() {
+            p.clone()
+        } else {
+            p.element()
+        };
+        self.descend(&p, ot, nt, 0);
     }
 
     /// Follows two types of the same shape into the named definitions they hold.
@@ -1365,6 +1371,13 @@ mod tests {
         assert!(found(text, text, "Node").is_empty());
         let new = "struct Node; typedef sequence<Node> Nodes; struct Node { long v; Nodes kids; long w; };";
         assert_eq!(found(text, new, "Node"), one(Kind::MemberAdded, "fields/w"));
+        // Elements of arrays are marked like those of sequences.
+        let f = found(
+            "struct P { long a; }; struct T { P ps[2]; };",
+            "struct P { short a; }; struct T { P ps[2]; };",
+            "T",
+        );
+        assert_eq!(f, one(Kind::MemberRetyped, "fields/ps[].a"));
         let (o, n) = (
             set("struct In { long a; }; struct T { In i; };"),
             set("struct T { In i; };"),

@@ -13,7 +13,7 @@
 //! names, directions, value types, constraints).
 //!
 //! With IDL on the sides, the types the ports and interfaces of a matched pair carry are also
-//! compared inside ([`idl`]: members, enum values, union cases, typedefs, operations); with
+//! compared inside (`idl`: members, enum values, union cases, typedefs, operations); with
 //! RT System profiles, the connectors the changes break are reported ([`systems`]).
 
 pub mod codes;
