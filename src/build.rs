@@ -48,6 +48,9 @@ pub struct Loaded {
     pub skipped: Vec<Skipped>,
     /// Number of profile files found (loaded or not).
     pub files: usize,
+    /// RT System profiles that could not be read (their errors are among the catalogue's
+    /// diagnostics), by path relative to the input.
+    pub failed_systems: Vec<String>,
 }
 
 /// Receives progress reports of a long build (the CLI draws a progress bar from them).
@@ -89,6 +92,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         System(crate::catalog::systems::LoadedSystem, Vec<Diagnostic>),
         Loaded(LoadedProfile, Vec<Diagnostic>),
         Failed(Diagnostic),
+        SystemFailed(Diagnostic),
     }
     let outcomes: Vec<Outcome> = found
         .files
@@ -98,7 +102,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                 Ok(walk::ReadFile::Other(head)) if parse::rts::is_system(&head) => {
                     match read_system(path, rel, &opts.limits) {
                         Ok((s, d)) => Outcome::System(s, d),
-                        Err(d) => Outcome::Failed(d),
+                        Err(d) => Outcome::SystemFailed(d),
                     }
                 }
                 Ok(walk::ReadFile::Other(head)) => {
@@ -129,6 +133,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut profiles = Vec::with_capacity(outcomes.len());
     let mut files = 0;
     let mut systems = Vec::new();
+    let mut failed_systems = Vec::new();
     for ((path, rel), outcome) in found.files.into_iter().zip(outcomes) {
         match outcome {
             Outcome::NotProfile(what) if named => {
@@ -174,6 +179,10 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                 systems.push(s);
                 diagnostics.extend(d);
             }
+            Outcome::SystemFailed(d) => {
+                failed_systems.push(rel);
+                diagnostics.push(d);
+            }
         }
     }
     let idl = read_idl(&found.idl, opts)?;
@@ -185,10 +194,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut catalog = Catalog::build(profiles, diagnostics);
     catalog.attach_idl(idl);
     catalog.attach_systems(systems);
+    failed_systems.sort();
     Ok(Loaded {
         catalog,
         skipped,
         files,
+        failed_systems,
     })
 }
 

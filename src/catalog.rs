@@ -1089,6 +1089,18 @@ impl Catalog {
                 &f.name,
             )
         }));
+        if !self.systems.is_empty() {
+            pages.push(site(PageKind::Systems, "systems/index"));
+        }
+        starts.system = pages.len();
+        pages.extend(self.systems.iter().map(|s| {
+            page(
+                PageKind::System,
+                &s.source,
+                format!("systems/{}", s.slug),
+                s.profile.name(),
+            )
+        }));
         self.pages = pages;
         self.page_starts = starts;
     }

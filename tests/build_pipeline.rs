@@ -414,3 +414,56 @@ fn oversized_files_are_refused_quickly_with_the_file_named() {
     assert_eq!((d.code, d.file.as_str()), ("RTC002", "big/RTC.xml"));
     assert!(d.to_string().contains("larger than the limit"));
 }
+
+/// Catalog::pages is the site: every page it lists is written at its path, under its own
+/// title, no two share a path, and each output writes the same entry pages with its own
+/// extension.
+#[test]
+fn every_listed_page_is_written_at_its_path() {
+    use rtcdoc::catalog::{Output, PageKind};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = tempfile::tempdir().unwrap();
+    let mut o = opts(
+        &root.join("examples"),
+        &dir.path().join("site"),
+        Format::Html,
+    );
+    o.formats = vec![Format::Html, Format::Markdown, Format::Doxygen];
+    let (loaded, _) = build::build(&o).unwrap();
+    let pages = loaded.catalog.pages();
+    assert!(
+        pages.iter().any(|p| p.kind == PageKind::System),
+        "the examples have a system"
+    );
+    let mut seen = std::collections::HashSet::new();
+    for p in pages {
+        assert!(seen.insert(p.path("html")), "two pages at {}", p.stem);
+        if p.kind == PageKind::Diagnostics && loaded.catalog.diagnostics.is_empty() {
+            continue;
+        }
+        let html = std::fs::read_to_string(dir.path().join("site/html").join(p.path("html")))
+            .unwrap_or_else(|e| panic!("{}: {e}", p.path("html")));
+        if !p.title.is_empty() {
+            let title = html
+                .split("<title>")
+                .nth(1)
+                .and_then(|t| t.split("</title>").next());
+            let escaped = p.title.replace('&', "&amp;").replace('<', "&lt;");
+            assert!(
+                title.is_some_and(|t| t.starts_with(&escaped)),
+                "{}: title {title:?} does not start with {}",
+                p.stem,
+                p.title
+            );
+        }
+        if matches!(
+            p.kind,
+            PageKind::Component | PageKind::DataType | PageKind::Interface | PageKind::System
+        ) {
+            for (out, dir_name) in [(Output::Markdown, "markdown"), (Output::Doxygen, "doxygen")] {
+                let path = dir.path().join("site").join(dir_name).join(p.path_in(out));
+                assert!(path.exists(), "{} missing", path.display());
+            }
+        }
+    }
+}

@@ -321,8 +321,15 @@ pub fn diff_with_systems(
             }
         }
     }
-    for (side, cat) in [("OLD", old), ("NEW", new)] {
-        for d in cat.diagnostics.iter().filter(|d| d.is_error()) {
+    for (side, cat, sys) in [("OLD", old, old_systems), ("NEW", new, new_systems)] {
+        // RT System profiles that could not be read are reported with the systems.
+        let is_system =
+            |d: &crate::diagnostic::Diagnostic| sys.unreadable.iter().any(|u| u.file == d.file);
+        for d in cat
+            .diagnostics
+            .iter()
+            .filter(|d| d.is_error() && !is_system(d))
+        {
             let mut c = change(
                 codes::UNREADABLE_PROFILE,
                 String::new(),

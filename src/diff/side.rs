@@ -56,23 +56,29 @@ impl Side {
 }
 
 impl Side {
-    /// The RT System profiles of the side: those among the files the component walk skipped
-    /// (a single profile file, or a catalogue read back, skips none, so it has none).
-    pub fn systems(&self, opts: &LoadOptions) -> super::systems::Systems {
-        let skipped: std::collections::BTreeSet<&str> = self
-            .loaded
-            .skipped
-            .iter()
-            .filter(|s| s.kind == crate::walk::SkipKind::NotAProfile)
-            .map(|s| s.rel.as_str())
-            .collect();
-        // What the walk's paths are relative to: the temporary copy of a revision, else the
-        // input directory.
-        let input = match &self._temp {
-            Some(t) => t.path(),
-            None => self.root.as_path(),
-        };
-        super::systems::load(input, &skipped, opts)
+    /// The RT System profiles of the side, as the load read them into the catalogue, and the
+    /// load's errors of those it could not read.
+    pub fn systems(&self, _opts: &LoadOptions) -> super::systems::Systems {
+        super::systems::Systems {
+            systems: self
+                .loaded
+                .catalog
+                .systems
+                .iter()
+                .map(|s| super::systems::LoadedSystem {
+                    source: s.source.clone(),
+                    system: (*s.profile).clone(),
+                })
+                .collect(),
+            unreadable: self
+                .loaded
+                .catalog
+                .diagnostics
+                .iter()
+                .filter(|d| d.is_error() && self.loaded.failed_systems.contains(&d.file))
+                .cloned()
+                .collect(),
+        }
     }
 }
 
@@ -93,6 +99,7 @@ fn from_catalog_json(which: &str, shown: &str, path: &Path) -> Result<build::Loa
         catalog: read.catalog,
         skipped: Vec::new(),
         files,
+        failed_systems: Vec::new(),
     })
 }
 

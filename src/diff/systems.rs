@@ -9,12 +9,10 @@
 //! old side is not forgotten; a system NEW updated is judged as NEW has it.
 
 use super::{codes, Change, Key, Level, Namer};
-use crate::build::LoadOptions;
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
 use crate::system::{short_port_name, ComponentIdParts, PortEnd, RtSystem};
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::Path;
 
 /// One system profile of a side.
 #[derive(Debug, Clone)]
@@ -29,62 +27,6 @@ pub struct LoadedSystem {
 pub struct Systems {
     pub systems: Vec<LoadedSystem>,
     pub unreadable: Vec<Diagnostic>,
-}
-
-/// Reads the system profiles below `input`: the candidates of the walk (with the include and
-/// exclude patterns) that the component walk skipped (`skipped`, the `rel` paths of
-/// [`crate::build::Loaded::skipped`]) and whose head is an `RtsProfile`.
-pub fn load(input: &Path, skipped: &BTreeSet<&str>, opts: &LoadOptions) -> Systems {
-    let mut out = Systems::default();
-    if skipped.is_empty() {
-        return out;
-    }
-    let walk_opts = crate::walk::WalkOptions {
-        include: opts.include.clone(),
-        exclude: opts.exclude.clone(),
-        skip_dirs: opts.skip_dirs.clone(),
-    };
-    let Ok(found) = crate::walk::candidates(input, &walk_opts) else {
-        // The component walk of the same input succeeded; a second failure leaves no system.
-        return out;
-    };
-    for (path, rel) in found.files {
-        if !skipped.contains(rel.as_str()) {
-            continue;
-        }
-        let bytes = match read_limited(&path, opts.limits.max_file_size) {
-            Ok(b) => b,
-            Err(e) => {
-                out.unreadable.push(Diagnostic::io(&rel, &e));
-                continue;
-            }
-        };
-        if !crate::parse::rts::is_system(&bytes) {
-            continue;
-        }
-        let format = match crate::parse::xml::root_element(&bytes) {
-            crate::parse::xml::Root::Element(_) => crate::parse::SourceFormat::Xml,
-            _ => crate::parse::SourceFormat::Yaml,
-        };
-        match crate::parse::rts::parse(format, &bytes, &rel, &opts.limits) {
-            Ok(parsed) => out.systems.push(LoadedSystem {
-                source: rel,
-                system: parsed.system,
-            }),
-            Err(d) => out.unreadable.push(d),
-        }
-    }
-    out.systems.sort_by(|a, b| a.source.cmp(&b.source));
-    out
-}
-
-fn read_limited(path: &Path, max: u64) -> std::io::Result<Vec<u8>> {
-    use std::io::Read;
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)?
-        .take(max.saturating_add(1))
-        .read_to_end(&mut bytes)?;
-    Ok(bytes)
 }
 
 /// What the comparison broke, by component and port: filled while components are compared.
