@@ -768,7 +768,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         &new.loaded.catalog,
         &|f| old.display(f),
         &|f| new.display(f),
-        (&old.systems(&opts), &new.systems(&opts)),
+        (&old.systems(), &new.systems()),
     );
     let fail_on = args.fail_on.level();
     match args.format {

@@ -58,7 +58,7 @@ impl Side {
 impl Side {
     /// The RT System profiles of the side, as the load read them into the catalogue, and the
     /// load's errors of those it could not read.
-    pub fn systems(&self, _opts: &LoadOptions) -> super::systems::Systems {
+    pub fn systems(&self) -> super::systems::Systems {
         super::systems::Systems {
             systems: self
                 .loaded
