@@ -29,6 +29,15 @@ fn site_fixture() -> PathBuf {
     common::root().join("tests/fixtures/systems/site")
 }
 
+/// The id of the component whose page slug is `slug`: instances name components by id.
+fn id_of(cat: &Catalog, slug: &str) -> String {
+    cat.components
+        .iter()
+        .find(|c| c.slug == slug)
+        .map(|c| c.id.to_string())
+        .unwrap_or_else(|| panic!("no component {slug}"))
+}
+
 fn load(path: &std::path::Path) -> Catalog {
     build::load(path, &LoadOptions::default())
         .expect("load")
@@ -46,11 +55,11 @@ fn systems_are_loaded_and_linked() {
     assert_eq!(s.profile.components.len(), 2);
     // Camera0 → Camera (same version), Planner0 → Planner (1.2.0 named, 1.1.0 in the catalogue).
     let cam = &s.instances[0];
-    assert_eq!(cam.component.as_deref(), Some("camera"));
+    assert_eq!(cam.component, Some(id_of(&cat, "camera")));
     assert_eq!(cam.matched_by, Some(MatchKind::Exact));
     assert_eq!(cam.version_drift, None);
     let pl = &s.instances[1];
-    assert_eq!(pl.component.as_deref(), Some("planner"));
+    assert_eq!(pl.component, Some(id_of(&cat, "planner")));
     assert_eq!(pl.version_drift.as_deref(), Some("1.1.0"));
     // Connector ends resolve to the ports of the profiles, `Camera0.image` and `image` alike.
     let d = &s.data_connectors[0];
@@ -356,9 +365,10 @@ fn markdown_doxygen_and_json_carry_systems() {
         .expect("build");
         let text = read(&out.join("catalog.json"));
         let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-        let s = &v["systems"][0];
+        let s = &v["systems"]["system/PatrolSystem.xml"];
         assert_eq!(s["slug"], "patrolsystem");
-        assert_eq!(s["instances"][1]["component"], "planner");
+        let planner = s["instances"][1]["component"].as_str().unwrap();
+        assert_eq!(v["components"][planner]["slug"], "planner");
         assert_eq!(s["instances"][1]["versionDrift"], "1.1.0");
         assert_eq!(s["instances"][0]["matchedBy"], "exact");
         assert_eq!(s["dataConnectors"][0]["source"]["instance"], 0);
@@ -517,7 +527,7 @@ fn the_yaml_form_is_read_and_linked_like_the_xml_form() {
         s.instances.iter().map(|i| i.component.clone()).collect()
     };
     assert_eq!(links(x), links(y));
-    assert_eq!(links(x), [Some("camera".to_string()), None]);
+    assert_eq!(links(x), [Some(id_of(&cat, "camera")), None]);
     assert_eq!(
         x.data_connectors[0].source.port,
         y.data_connectors[0].source.port
