@@ -192,6 +192,10 @@ impl AttrPos {
         let i = field_index(field)?;
         self.0.iter().find(|(f, _)| *f == i).map(|(_, p)| *p)
     }
+    /// Gives back spare capacity (the readers push entry by entry).
+    pub fn shrink_to_fit(&mut self) {
+        self.0.shrink_to_fit();
+    }
     /// The position of `field`, else `fallback` (the element or key of the node).
     pub fn or(&self, field: &str, fallback: Pos) -> Pos {
         self.get(field).unwrap_or(fallback)

@@ -7,6 +7,7 @@ pub mod dialect;
 pub mod rts;
 pub mod xml;
 pub mod yaml;
+mod shrink;
 mod yaml_fast;
 
 /// Helpers shared by the readers' property tests.
@@ -89,5 +90,6 @@ pub fn parse(
     // sorts keys alphabetically).
     parsed.profile.actions.sort_by_key(|a| a.kind);
     dialect::annotate(&mut parsed.profile);
+    shrink::profile(&mut parsed.profile);
     Ok(parsed)
 }
