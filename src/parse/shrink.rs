@@ -56,3 +56,51 @@ pub(crate) fn profile(p: &mut Profile) {
     p.parameters.shrink_to_fit();
     p.written_as.shrink_to_fit();
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::parse::{self, Limits, SourceFormat};
+
+    #[test]
+    fn a_read_profile_holds_no_spare_capacity_and_the_same_values() {
+        for (dir, format, file) in [
+            ("Navigator", SourceFormat::Xml, "RTC.xml"),
+            ("UsbCamera", SourceFormat::Yaml, "RTC.yaml"),
+        ] {
+            let path = format!("{}/examples/{dir}/{file}", env!("CARGO_MANIFEST_DIR"));
+            let bytes = std::fs::read(path).unwrap();
+            let limits = Limits::default();
+            let p = parse::parse(format, &bytes, file, &limits).unwrap().profile;
+            assert!(!p.data_ports.is_empty() && !p.basic_info.attr_pos.is_empty());
+            assert_eq!(p.data_ports.capacity(), p.data_ports.len(), "{dir}");
+            assert_eq!(p.actions.capacity(), p.actions.len(), "{dir}");
+            assert_eq!(
+                p.basic_info.attr_pos.capacity(),
+                p.basic_info.attr_pos.len(),
+                "{dir}"
+            );
+            for d in &p.data_ports {
+                assert_eq!(d.attr_pos.capacity(), d.attr_pos.len(), "{dir}");
+            }
+            // The same values as the reader's own result, which had room to spare.
+            let mut raw = match format {
+                SourceFormat::Xml => parse::xml::parse(&bytes, file, &limits),
+                SourceFormat::Yaml => parse::yaml::parse(&bytes, file, &limits),
+            }
+            .unwrap()
+            .profile;
+            raw.actions.sort_by_key(|a| a.kind);
+            parse::dialect::annotate(&mut raw);
+            let spare = raw.data_ports.capacity() - raw.data_ports.len()
+                + raw.basic_info.attr_pos.capacity()
+                - raw.basic_info.attr_pos.len()
+                + raw
+                    .data_ports
+                    .iter()
+                    .map(|d| d.attr_pos.capacity() - d.attr_pos.len())
+                    .sum::<usize>();
+            assert!(spare > 0, "{dir}: nothing to shrink");
+            assert_eq!(raw, p, "{dir}");
+        }
+    }
+}
