@@ -5,9 +5,9 @@
 
 pub mod dialect;
 pub mod rts;
+mod shrink;
 pub mod xml;
 pub mod yaml;
-mod shrink;
 mod yaml_fast;
 
 /// Helpers shared by the readers' property tests.
