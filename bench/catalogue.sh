@@ -4,6 +4,11 @@
 # usage: bench/catalogue.sh [N ...]        (default: 100 1000 10000)
 #        RUNS=5 bench/catalogue.sh 10000    (runs per measurement, Hugo too; default 3)
 #        BENCH_DIR=/dev/shm/b …             (where catalogues and outputs go; default /tmp)
+#        IDL=0 bench/catalogue.sh …         (catalogues without their generated IDL files)
+#
+# The catalogues carry IDL (bench/gen_catalogue.py: one file of structs, enums, sequences,
+# exceptions and interfaces per group of about forty components, named by the ports' idlFile),
+# so every build below reads it and renders the definitions on the type and interface pages.
 #
 # For each N it generates a synthetic catalogue (bench/gen_catalogue.py), then measures with
 # /usr/bin/time -v, for each output format: wall time, profiles/s, files/s and peak RSS;
@@ -92,13 +97,16 @@ echo "| N | what | wall s | profiles/s | files | files/s | peak RSS MB |"
 echo "|---|---|---:|---:|---:|---:|---:|"
 declare -A html_time
 for n in "${sizes[@]}"; do
-  src="$work/cat-$n"
+  idl_flag=()
+  suffix=""
+  if [ "${IDL:-1}" = 0 ]; then idl_flag=(--no-idl); suffix="-noidl"; fi
+  src="$work/cat-$n$suffix"
   # Generated once per N and kept (deterministic; regenerated when the examples or the
   # generator change), so that no run follows the deletion of 10,000 files.
   stamp=$(find bench/gen_catalogue.py examples -type f | sort | xargs cat | sha1sum | cut -c1-16)
   if [ "$(cat "$src/.stamp" 2>/dev/null)" != "$stamp" ]; then
     set_aside "$src"
-    python3 bench/gen_catalogue.py "$n" "$src" >/dev/null
+    python3 bench/gen_catalogue.py "$n" "$src" "${idl_flag[@]}" >/dev/null
     echo "$stamp" >"$src/.stamp"
   fi
   # The HTML build and the cp -r floor of its output run in alternation, so that both see the

@@ -1,12 +1,20 @@
 #!/usr/bin/env python3
 """Generate a synthetic catalogue of N realistic RTC profiles for benchmarks.
 
-usage: gen_catalogue.py N OUT_DIR [--examples DIR]
+usage: gen_catalogue.py N OUT_DIR [--examples DIR] [--no-idl]
 
 Clones the bundled example profiles (examples/) under new component names, vendors and
 categories, and spreads their data and interface types over groups so that cross-links look like
 a real catalogue: each type is shared by a few dozen components (producers and consumers), not
 by all of them and not by none. Deterministic: the same N gives the same files.
+
+Each group's types and interfaces are defined in a generated IDL file, OUT_DIR/idl/BenchNNN.idl
+(module BenchNNN: the port types, the structs, enums, sequences and exceptions they contain,
+the service interfaces with operations), which the ports name as their idlFile; all of them
+include OUT_DIR/idl/BenchCommon.idl (time stamps, geometry). Fields and operations are
+documented or not in a fixed pattern, so that the coverage rules have something to count.
+--no-idl leaves the IDL out and the idlFile attributes as the examples have them: the catalogue
+of earlier versions of this script, byte for byte.
 """
 import os
 import re
@@ -22,12 +30,214 @@ SHARED_TYPES = ["CameraImage", "RangeData", "TimedPose2D", "TimedVelocity2D", "T
                 "OGMapServer", "CameraControl", "ModelRepository"]
 
 
+COMMON_IDL = """// BenchCommon.idl: shared types of the generated benchmark catalogue.
+#ifndef BENCH_COMMON_IDL
+#define BENCH_COMMON_IDL
+
+module BenchCommon
+{
+  /// A time stamp: seconds and nanoseconds since the epoch.
+  struct Time
+  {
+    unsigned long sec;   ///< Seconds
+    unsigned long nsec;  ///< Nanoseconds
+  };
+
+  /// A point in the plane, in metres.
+  struct Point2D
+  {
+    double x;  ///< Along the x axis
+    double y;  ///< Along the y axis
+  };
+
+  /// A position and a heading.
+  struct Pose2D
+  {
+    Point2D position;  ///< Where
+    double heading;    ///< Radians, counter-clockwise from x
+  };
+
+  /// A planar velocity.
+  struct Velocity2D
+  {
+    double vx;  ///< m/s forward
+    double vy;  ///< m/s to the left
+    double va;  ///< rad/s
+  };
+
+  /// How an operation ended.
+  enum ReturnCode
+  {
+    OK,            ///< Done
+    BAD_PARAMETER, ///< A parameter is out of range
+    UNSUPPORTED    ///< Not implemented by this component
+  };
+};
+
+#endif
+"""
+
+
+def doc(g, k, text):
+    """A trailing doc comment, left out for one item in three (varying with the group)."""
+    return "" if (g + k) % 3 == 0 else f"  ///< {text}"
+
+
+def group_idl(g):
+    m = f"Bench{g:03d}"
+    d = lambda k, t: doc(g, k, t)
+    timed = "\n".join(
+        f"""  /// A time-stamped {what}.
+  struct Timed{name}
+  {{
+    BenchCommon::Time tm;{d(i, "Time of the value")}
+    {ty} data;{d(i + 1, "The value")}
+  }};
+"""
+        for i, (name, ty, what) in enumerate([
+            ("Long", "long", "integer"), ("Boolean", "boolean", "flag"),
+            ("String", "string", "text"), ("Double", "double", "number"),
+            ("Pose2D", "BenchCommon::Pose2D", "pose"),
+            ("Velocity2D", "BenchCommon::Velocity2D", "velocity")]))
+    return f"""// {m}.idl: types and interfaces of group {g} of the generated benchmark catalogue.
+#ifndef {m.upper()}_IDL
+#define {m.upper()}_IDL
+
+#include "BenchCommon.idl"
+
+/*!
+ * @brief Data types and service interfaces of benchmark group {g}.
+ */
+module {m}
+{{
+{timed}
+  /// Pixel layouts.
+  enum PixelFormat
+  {{
+    GRAY,{d(1, "One byte a pixel")}
+    RGB,{d(2, "Three bytes a pixel")}
+    JPEG{d(3, "Compressed")}
+  }};
+
+  /// An image with its capture time.
+  struct CameraImage
+  {{
+    BenchCommon::Time tm;{d(0, "Capture time")}
+    unsigned short width;{d(1, "Pixels")}
+    unsigned short height;{d(2, "Pixels")}
+    PixelFormat format;{d(3, "Layout of pixels")}
+    sequence<octet> pixels;{d(4, "Row by row")}
+  }};
+
+  /// Where a range sensor sits and what it sees.
+  struct RangerConfig
+  {{
+    double minAngle;{d(0, "Radians")}
+    double maxAngle;{d(1, "Radians")}
+    double angularRes;{d(2, "Radians between readings")}
+    double minRange;{d(3, "Metres")}
+    double maxRange;{d(4, "Metres")}
+  }};
+
+  typedef sequence<double> RangeList;
+
+  /// One scan of a range sensor.
+  struct RangeData
+  {{
+    BenchCommon::Time tm;{d(0, "Scan time")}
+    RangeList ranges;{d(1, "Metres, one per angle")}
+    RangerConfig config;{d(2, "Sensor geometry")}
+    BenchCommon::Pose2D origin;{d(3, "Sensor pose on the robot")}
+  }};
+
+  /// An axis-aligned box in image coordinates.
+  struct BoundingBox
+  {{
+    long x;{d(0, "Left")}
+    long y;{d(1, "Top")}
+    long width;{d(2, "Width")}
+    long height;{d(3, "Height")}
+  }};
+
+  /// One detected object.
+  struct DetectedObject
+  {{
+    string label;{d(0, "Class")}
+    float confidence;{d(1, "0 to 1")}
+    BoundingBox box;{d(2, "Where")}
+  }};
+
+  typedef sequence<DetectedObject> ObjectList;
+
+  /// Detections of one image.
+  struct TimedObjectList
+  {{
+    BenchCommon::Time tm;{d(0, "Capture time")}
+    ObjectList data;{d(1, "Best first")}
+  }};
+
+  /// An occupancy grid.
+  struct OGMap
+  {{
+    BenchCommon::Pose2D origin;{d(0, "Pose of cell 0,0")}
+    double resolution;{d(1, "Metres a cell")}
+    unsigned long width;{d(2, "Cells")}
+    unsigned long height;{d(3, "Cells")}
+    sequence<octet> cells;{d(4, "0 free to 255 occupied")}
+  }};
+
+  /// A name nobody knows.
+  exception NotFound
+  {{
+    string name;{d(0, "The name asked for")}
+  }};
+
+  /// Serves the map being built.
+  interface OGMapServer
+  {{
+{"" if g % 2 else "    /// The current map." + chr(10)}    BenchCommon::ReturnCode requestCurrentBuiltMap(out OGMap map);
+    /// The map of a named area.
+    BenchCommon::ReturnCode requestMap(in string area, out OGMap map) raises (NotFound);
+  }};
+
+  /// Camera settings.
+  interface CameraControl
+  {{
+    /// Sets the exposure time in microseconds.
+    long setExposure(in long microseconds);
+{"" if g % 3 else "    /// Switches the pixel format." + chr(10)}    void setFormat(in PixelFormat format);
+    readonly attribute PixelFormat format;
+  }};
+
+  typedef sequence<octet> ModelData;
+
+  /// Serves models by name.
+  interface ModelRepository
+  {{
+    /*!
+     * @brief Fetches a model.
+     * @param name File name
+     * @param data The model
+     */
+    boolean fetch(in string name, out ModelData data) raises (NotFound);
+{"" if g % 4 else "    /// Every model name." + chr(10)}    sequence<string> list();
+  }};
+}};
+
+#endif
+"""
+
+
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    argv = sys.argv[1:]
+    if "--examples" in argv:  # its value is not a positional argument
+        del argv[argv.index("--examples") + 1]
+    args = [a for a in argv if not a.startswith("--")]
     if len(args) != 2:
         print(__doc__)
         return 2
     n, out = int(args[0]), args[1]
+    with_idl = "--no-idl" not in sys.argv
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "examples")
     if "--examples" in sys.argv:
@@ -50,19 +260,46 @@ def main():
         name, fname, text = templates[i % len(templates)]
         g = (i // len(templates)) % groups
         new_name = f"{name}{i:05d}"
-        t = text.replace(name, new_name)
+        if with_idl:
+            # Keep the shared type names whole (`OGMapServer` holds the template name
+            # `MapServer`; earlier versions of this script renamed it per component).
+            t = text
+            for k, ty in enumerate(SHARED_TYPES):
+                t = t.replace(ty, f"@TYPE{k}@")
+            t = t.replace(name, new_name)
+            for k, ty in enumerate(SHARED_TYPES):
+                t = t.replace(f"@TYPE{k}@", ty)
+        else:
+            t = text.replace(name, new_name)
         t = re.sub(r"ExampleRobotics( Inc\.)?|Example Robotics", f"Vendor{i % VENDORS:02d}", t)
         cat = CATEGORIES[i % len(CATEGORIES)]
         t = re.sub(r'(rtc:category=")[^"]*(")', r"\g<1>" + cat + r"\g<2>", t)
         t = re.sub(r"(\n\s*category: ).*", r"\g<1>" + cat, t)
         t = re.sub(r"(RTC:[^:\"]*:)[^:\"]*(:" + re.escape(new_name) + ")", r"\g<1>" + cat + r"\g<2>", t)
+        if with_idl:
+            # A repository id names the group's type too (without IDL, as earlier versions of
+            # this script did: the id was rewritten into `IDL:RTC/BenchNNN::TimedPose2D:1.0`).
+            t = t.replace("IDL:RTC/TimedPose2D:1.0", "@REPOSITORY-ID@")
         t = type_re.sub(lambda m: f"Bench{g:03d}::{m.group(1)}", t)
         t = t.replace("IDL:RTC/TimedPose2D:1.0", f"Bench{g:03d}::TimedPose2D")
+        t = t.replace("@REPOSITORY-ID@", f"IDL:Bench{g:03d}/TimedPose2D:1.0")
+        if with_idl:
+            t = re.sub(r'(rtc:idlFile=")[^"]*(")', r"\g<1>" + f"Bench{g:03d}.idl" + r"\g<2>", t)
+            t = re.sub(r"(\n\s*idlFile: ).*", r"\g<1>" + f"Bench{g:03d}.idl", t)
         d = os.path.join(out, f"{i // 1000:02d}", new_name)
         os.makedirs(d)
         with open(os.path.join(d, fname), "w", encoding="utf-8") as fh:
             fh.write(t)
-    print(f"wrote {n} profiles in {groups} type groups to {out}")
+    if with_idl:
+        d = os.path.join(out, "idl")
+        os.makedirs(d)
+        with open(os.path.join(d, "BenchCommon.idl"), "w", encoding="utf-8") as fh:
+            fh.write(COMMON_IDL)
+        for g in range(groups):
+            with open(os.path.join(d, f"Bench{g:03d}.idl"), "w", encoding="utf-8") as fh:
+                fh.write(group_idl(g))
+    print(f"wrote {n} profiles in {groups} type groups to {out}" + (
+        f", {groups + 1} IDL files" if with_idl else ""))
     return 0
 
 

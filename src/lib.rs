@@ -5,6 +5,8 @@
 //! RT System profiles are read by [`parse::rts`] into [`system::RtSystem`] (not yet in the
 //! catalogue).
 
+#[cfg(feature = "alloc-stats")]
+pub mod alloc_stats;
 pub mod build;
 pub mod catalog;
 pub mod check;

@@ -14,8 +14,14 @@ use std::process::ExitCode;
 
 /// mimalloc: the pipeline allocates many small strings in parallel, where it is markedly faster
 /// than the system allocator.
+#[cfg(not(any(feature = "alloc-stats", feature = "system-alloc")))]
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+/// mimalloc with byte counters (memory profiling, feature `alloc-stats`).
+#[cfg(feature = "alloc-stats")]
+#[global_allocator]
+static GLOBAL: rtcdoc::alloc_stats::Counting = rtcdoc::alloc_stats::Counting;
 
 #[derive(Parser)]
 #[command(
@@ -256,6 +262,25 @@ fn peak_rss() -> Option<String> {
     Some(format!("{} MB", kb / 1024))
 }
 
+/// The live heap and the stage's peak heap (feature `alloc-stats`); nothing otherwise.
+#[cfg(feature = "alloc-stats")]
+fn heap_stats() -> String {
+    use rtcdoc::alloc_stats;
+    let mb = |b: usize| b as f64 / (1024.0 * 1024.0);
+    let s = format!(
+        "  heap: {:.1} MB live, stage peak {:.1} MB",
+        mb(alloc_stats::live()),
+        mb(alloc_stats::peak())
+    );
+    alloc_stats::reset_peak();
+    s
+}
+
+#[cfg(not(feature = "alloc-stats"))]
+fn heap_stats() -> &'static str {
+    ""
+}
+
 fn timing() -> Option<std::sync::Mutex<(String, std::time::Instant)>> {
     std::env::var_os("RTCDOC_TIMING")
         .map(|_| std::sync::Mutex::new((String::new(), std::time::Instant::now())))
@@ -267,10 +292,11 @@ impl Progress for Bar {
             let mut t = t.lock().unwrap_or_else(|e| e.into_inner());
             if !t.0.is_empty() {
                 eprintln!(
-                    "timing: {:<20} {:>8.1} ms  (peak RSS so far: {})",
+                    "timing: {:<20} {:>8.1} ms  (peak RSS so far: {}){}",
                     t.0,
                     t.1.elapsed().as_secs_f64() * 1000.0,
-                    peak_rss().unwrap_or_else(|| "?".into())
+                    peak_rss().unwrap_or_else(|| "?".into()),
+                    heap_stats()
                 );
             }
             *t = (name.to_string(), std::time::Instant::now());

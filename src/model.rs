@@ -233,6 +233,22 @@ impl AttrPos {
         let i = field_index(field)?;
         self.0.iter().find(|(f, _)| *f == i).map(|(_, p)| *p)
     }
+    /// Gives back spare capacity (the readers push entry by entry).
+    pub fn shrink_to_fit(&mut self) {
+        self.0.shrink_to_fit();
+    }
+    /// Entries kept.
+    pub fn len(&self) -> usize {
+        self.0.len()
+    }
+    /// No entry kept.
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+    /// Entries the vector has room for (tests of [`AttrPos::shrink_to_fit`]).
+    pub fn capacity(&self) -> usize {
+        self.0.capacity()
+    }
     /// The position of `field`, else `fallback` (the element or key of the node).
     pub fn or(&self, field: &str, fallback: Pos) -> Pos {
         self.get(field).unwrap_or(fallback)

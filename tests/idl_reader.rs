@@ -98,7 +98,7 @@ fn named(ty: &IdlType) -> (&str, Option<&str>) {
     }
 }
 
-fn brief(d: &Option<idl::IdlDoc>) -> &str {
+fn brief(d: &Option<Box<idl::IdlDoc>>) -> &str {
     d.as_ref().map_or("", |d| d.brief.as_str())
 }
 

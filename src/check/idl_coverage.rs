@@ -100,7 +100,7 @@ fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCo
             for f in &x.fields {
                 let what = format!("field `{}` of struct `{scoped}`", f.name);
                 count(
-                    documented(f.doc.as_ref()),
+                    documented(f.doc.as_deref()),
                     r::DOC_IDL_FIELD,
                     f.pos,
                     what,
@@ -112,7 +112,7 @@ fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCo
             for f in &x.fields {
                 let what = format!("field `{}` of exception `{scoped}`", f.name);
                 count(
-                    documented(f.doc.as_ref()),
+                    documented(f.doc.as_deref()),
                     r::DOC_IDL_FIELD,
                     f.pos,
                     what,
@@ -125,7 +125,7 @@ fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCo
                 let f = &c.field;
                 let what = format!("case `{}` of union `{scoped}`", f.name);
                 count(
-                    documented(f.doc.as_ref()),
+                    documented(f.doc.as_deref()),
                     r::DOC_IDL_FIELD,
                     f.pos,
                     what,
@@ -137,7 +137,7 @@ fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCo
             for v in &x.values {
                 let what = format!("value `{}` of enum `{scoped}`", v.name);
                 count(
-                    documented(v.doc.as_ref()),
+                    documented(v.doc.as_deref()),
                     r::DOC_IDL_ENUMERATOR,
                     v.pos,
                     what,
@@ -149,7 +149,7 @@ fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCo
             for o in &x.operations {
                 let what = format!("operation `{}` of interface `{scoped}`", o.name);
                 count(
-                    documented(o.doc.as_ref()),
+                    documented(o.doc.as_deref()),
                     r::DOC_IDL_OPERATION,
                     o.pos,
                     what,
@@ -159,7 +159,7 @@ fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCo
             for a in &x.attributes {
                 let what = format!("attribute `{}` of interface `{scoped}`", a.name);
                 count(
-                    documented(a.doc.as_ref()),
+                    documented(a.doc.as_deref()),
                     r::DOC_IDL_OPERATION,
                     a.pos,
                     what,

@@ -23,7 +23,7 @@ pub struct IdlFile {
     pub encoding: String,
     /// The file's own documentation: a doc comment carrying `@file`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     /// `#include` directives met in active regions, in order.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub includes: Vec<IdlInclude>,
@@ -145,16 +145,16 @@ impl IdlDefinition {
     /// The doc comment attached to the declaration.
     pub fn doc(&self) -> Option<&IdlDoc> {
         match self {
-            IdlDefinition::Module(d) => d.doc.as_ref(),
-            IdlDefinition::Struct(d) => d.doc.as_ref(),
-            IdlDefinition::Union(d) => d.doc.as_ref(),
-            IdlDefinition::Enum(d) => d.doc.as_ref(),
-            IdlDefinition::Typedef(d) => d.doc.as_ref(),
-            IdlDefinition::Const(d) => d.doc.as_ref(),
-            IdlDefinition::Interface(d) => d.doc.as_ref(),
-            IdlDefinition::Exception(d) => d.doc.as_ref(),
-            IdlDefinition::Forward(d) => d.doc.as_ref(),
-            IdlDefinition::Native(d) => d.doc.as_ref(),
+            IdlDefinition::Module(d) => d.doc.as_deref(),
+            IdlDefinition::Struct(d) => d.doc.as_deref(),
+            IdlDefinition::Union(d) => d.doc.as_deref(),
+            IdlDefinition::Enum(d) => d.doc.as_deref(),
+            IdlDefinition::Typedef(d) => d.doc.as_deref(),
+            IdlDefinition::Const(d) => d.doc.as_deref(),
+            IdlDefinition::Interface(d) => d.doc.as_deref(),
+            IdlDefinition::Exception(d) => d.doc.as_deref(),
+            IdlDefinition::Forward(d) => d.doc.as_deref(),
+            IdlDefinition::Native(d) => d.doc.as_deref(),
             IdlDefinition::Skipped(_) => None,
         }
     }
@@ -192,7 +192,7 @@ pub struct IdlModule {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     pub definitions: Vec<IdlDefinition>,
@@ -206,7 +206,7 @@ pub struct IdlStruct {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     pub fields: Vec<IdlField>,
@@ -223,7 +223,7 @@ pub struct IdlField {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub array: Vec<IdlBound>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
 }
 
@@ -244,7 +244,7 @@ pub struct IdlUnion {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     pub switch_type: IdlType,
@@ -270,7 +270,7 @@ pub struct IdlEnum {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     pub values: Vec<IdlEnumerator>,
@@ -282,7 +282,7 @@ pub struct IdlEnum {
 pub struct IdlEnumerator {
     pub name: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
 }
 
@@ -294,7 +294,7 @@ pub struct IdlTypedef {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     #[serde(rename = "type")]
@@ -311,7 +311,7 @@ pub struct IdlConst {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     #[serde(rename = "type")]
@@ -346,7 +346,7 @@ pub struct IdlInterface {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     /// `abstract` or `local`, when written.
@@ -377,7 +377,7 @@ pub struct IdlAttribute {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub raises: Vec<IdlType>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
 }
 
@@ -398,7 +398,7 @@ pub struct IdlOperation {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub context: Vec<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
 }
 
@@ -412,7 +412,7 @@ pub struct IdlParam {
     pub name: String,
     /// A trailing `///<` comment on the parameter.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
 }
 
@@ -433,7 +433,7 @@ pub struct IdlException {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     pub fields: Vec<IdlField>,
@@ -447,7 +447,7 @@ pub struct IdlForward {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
     /// `interface`, `struct` or `union`.
@@ -462,7 +462,7 @@ pub struct IdlNative {
     pub scoped_name: String,
     pub repository_id: String,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub pos: Pos,
     pub file: String,
 }

@@ -38,7 +38,7 @@ struct Override {
 
 pub(crate) struct Parsed {
     pub definitions: Vec<IdlDefinition>,
-    pub doc: Option<IdlDoc>,
+    pub doc: Option<Box<IdlDoc>>,
     pub diagnostics: Vec<Diagnostic>,
 }
 
@@ -57,7 +57,7 @@ struct Parser<'o> {
     overrides: Vec<Override>,
     consts: HashMap<String, Value>,
     depth: usize,
-    file_doc: Option<IdlDoc>,
+    file_doc: Option<Box<IdlDoc>>,
 }
 
 /// Parses one file's preprocessed tokens.
@@ -327,7 +327,7 @@ impl Parser<'_> {
 
     // ----- docs -----
 
-    fn take_doc(&mut self) -> Option<IdlDoc> {
+    fn take_doc(&mut self) -> Option<Box<IdlDoc>> {
         self.skip_trivia();
         let docs = std::mem::take(&mut self.docs_before);
         let mut kept = Vec::new();
@@ -335,13 +335,13 @@ impl Parser<'_> {
             let parsed = parse_doc(&d);
             if parsed.labels.iter().any(|l| l.tag == "file") {
                 if self.file_doc.is_none() {
-                    self.file_doc = Some(parsed);
+                    self.file_doc = Some(Box::new(parsed));
                 }
             } else {
                 kept.push(d);
             }
         }
-        (!kept.is_empty()).then(|| parse_doc(&kept.join("\n")))
+        (!kept.is_empty()).then(|| Box::new(parse_doc(&kept.join("\n"))))
     }
     /// Trailing `//!<` / `///<` / `/**<` comments met since the last token.
     fn take_after(&mut self) -> Option<String> {
@@ -349,12 +349,12 @@ impl Parser<'_> {
         let docs = std::mem::take(&mut self.docs_after);
         (!docs.is_empty()).then(|| docs.join("\n"))
     }
-    fn merge_doc(doc: &mut Option<IdlDoc>, after: &str) {
+    fn merge_doc(doc: &mut Option<Box<IdlDoc>>, after: &str) {
         let text = match doc {
             Some(d) => format!("{}\n{after}", d.text),
             None => after.to_string(),
         };
-        *doc = Some(parse_doc(&text));
+        *doc = Some(Box::new(parse_doc(&text)));
     }
 
     // ----- pragmas and ids -----
@@ -719,7 +719,7 @@ impl Parser<'_> {
     fn module(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -753,7 +753,7 @@ impl Parser<'_> {
     fn structure(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -783,7 +783,7 @@ impl Parser<'_> {
         )
     }
 
-    fn forward(&self, name: String, doc: Option<IdlDoc>, pos: Pos, of: &str) -> IdlDefinition {
+    fn forward(&self, name: String, doc: Option<Box<IdlDoc>>, pos: Pos, of: &str) -> IdlDefinition {
         IdlDefinition::Forward(IdlForward {
             scoped_name: self.scoped(&name),
             repository_id: self.repo_id(&name),
@@ -798,7 +798,7 @@ impl Parser<'_> {
     fn exception(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -887,7 +887,7 @@ impl Parser<'_> {
     fn union(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -992,7 +992,7 @@ impl Parser<'_> {
     fn enumeration(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -1065,7 +1065,7 @@ impl Parser<'_> {
     fn typedef(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -1105,7 +1105,7 @@ impl Parser<'_> {
     fn constant(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
     ) -> PResult<()> {
         self.bump();
@@ -1143,7 +1143,7 @@ impl Parser<'_> {
     fn interface(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<IdlDoc>,
+        doc: Option<Box<IdlDoc>>,
         pos: Pos,
         modifier: Option<String>,
     ) -> PResult<()> {

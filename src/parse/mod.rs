@@ -5,6 +5,7 @@
 
 pub mod dialect;
 pub mod rts;
+mod shrink;
 pub mod xml;
 pub mod yaml;
 mod yaml_fast;
@@ -89,5 +90,6 @@ pub fn parse(
     // sorts keys alphabetically).
     parsed.profile.actions.sort_by_key(|a| a.kind);
     dialect::annotate(&mut parsed.profile);
+    shrink::profile(&mut parsed.profile);
     Ok(parsed)
 }

@@ -154,7 +154,7 @@ impl Linker<'_> {
             name: f.name.clone(),
             ty: self.type_ref(&f.ty),
             array: f.array.iter().map(|b| format!("[{}]", b.expr)).collect(),
-            doc: brief(f.doc.as_ref()),
+            doc: brief(f.doc.as_deref()),
             labels,
         }
     }
@@ -212,7 +212,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                 .iter()
                 .map(|x| ValueView {
                     name: x.name.clone(),
-                    doc: brief(x.doc.as_ref()),
+                    doc: brief(x.doc.as_deref()),
                 })
                 .collect()
         }
@@ -247,7 +247,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                     name: a.name.clone(),
                     ty: l.type_ref(&a.ty),
                     readonly: a.readonly,
-                    doc: brief(a.doc.as_ref()),
+                    doc: brief(a.doc.as_deref()),
                 })
                 .collect();
             v.operations =
@@ -287,7 +287,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                                 })
                                 .collect(),
                             raises: o.raises.iter().map(|t| l.type_ref(t)).collect(),
-                            doc: brief(o.doc.as_ref()),
+                            doc: brief(o.doc.as_deref()),
                             returns_doc: o
                                 .doc
                                 .as_ref()
