@@ -48,6 +48,9 @@ pub struct SiteOptions {
     pub theme_dir: Option<PathBuf>,
     /// Language of generated labels.
     pub language: crate::i18n::Lang,
+    /// `source-url`: a URL template with `{path}` (the profile's input-relative path) that
+    /// makes "Source" on component pages a link to the file in its repository.
+    pub source_url: Option<String>,
 }
 
 impl Default for SiteOptions {
@@ -57,6 +60,7 @@ impl Default for SiteOptions {
             base_url: None,
             theme_dir: None,
             language: crate::i18n::Lang::En,
+            source_url: None,
         }
     }
 }

@@ -1,9 +1,12 @@
 /* rtcdoc search: offline, no libraries. The index (search-index.js) assigns
-   window.RTCDOC_INDEX = [[name, slug, category, vendor, summary, tokens], ...]; it is loaded
-   with a <script> tag on first use, which works from file:// too. Queries are tokenized like
+   window.RTCDOC_INDEX = {kinds: {c: label, ...}, e: [[kind, name, href, meta, summary,
+   "name|ids|text"], ...]}; it is loaded with a <script> tag on first use, which works from
+   file:// too. Entries are components, data types and interfaces. Queries are tokenized like
    the index: lower-case words, and overlapping bigrams for CJK text. Every query token must be
-   a prefix of some token of a component. Results are built with DOM APIs (textContent), never
-   from HTML strings. */
+   a prefix of some token of an entry; a match in the name ranks before one in an identifier
+   (port, field, type), before one in prose. Results are built with DOM APIs (textContent),
+   never from HTML strings. The search page keeps ?q= in step with the box (history
+   .replaceState) and Enter opens the first result. */
 (function () {
   'use strict';
   var body = document.body;
@@ -15,6 +18,7 @@
   var loading = false;
   var pending = null;
   var cache = null;
+  var last = [];
 
   function isCjk(n) {
     return (n >= 0x3040 && n <= 0x30FF) || (n >= 0x3400 && n <= 0x4DBF) ||
@@ -44,12 +48,35 @@
 
   function entries() {
     if (!cache) {
-      cache = (window.RTCDOC_INDEX || []).map(function (e) {
-        return { name: e[0], slug: e[1], category: e[2], vendor: e[3], summary: e[4],
-          lname: String(e[0]).toLowerCase(), tokens: String(e[5]).split(' ') };
+      var ix = window.RTCDOC_INDEX || {};
+      var kinds = ix.kinds || {};
+      cache = (ix.e || []).map(function (e) {
+        var g = String(e[5]).split('|');
+        var name = String(e[1]);
+        var lname = name.toLowerCase();
+        return { kind: kinds[e[0]] || '', name: name, href: e[2], meta: e[3], summary: e[4],
+          lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1),
+          groups: [0, 1, 2].map(function (i) { return g[i] ? g[i].split(' ') : []; }) };
       });
     }
     return cache;
+  }
+
+  // Score of a query token in a group: [exact, prefix] for name, identifiers, prose.
+  var WEIGHT = [[30, 20], [10, 7], [3, 2]];
+
+  function tokenScore(e, q) {
+    for (var g = 0; g < 3; g++) {
+      var list = e.groups[g];
+      var prefix = false;
+      for (var j = 0; j < list.length; j++) {
+        var tok = list[j];
+        if (tok === q) { return WEIGHT[g][0]; }
+        if (!prefix && tok.lastIndexOf(q, 0) === 0) { prefix = true; }
+      }
+      if (prefix) { return WEIGHT[g][1]; }
+    }
+    return 0;
   }
 
   function search(q) {
@@ -57,23 +84,21 @@
     if (!qt.length) { return []; }
     var lq = q.trim().toLowerCase();
     var hits = [];
-    entries().forEach(function (e) {
+    var all = entries();
+    for (var n = 0; n < all.length; n++) {
+      var e = all[n];
       var score = 0;
       for (var i = 0; i < qt.length; i++) {
-        var best = 0;
-        for (var j = 0; j < e.tokens.length; j++) {
-          var tok = e.tokens[j];
-          if (tok === qt[i]) { best = 2; break; }
-          if (best === 0 && tok.lastIndexOf(qt[i], 0) === 0) { best = 1; }
-        }
-        if (!best) { return; }
-        score += best;
+        var s = tokenScore(e, qt[i]);
+        if (!s) { score = 0; break; }
+        score += s;
       }
-      if (e.lname === lq) { score += 20; } else if (e.lname.indexOf(lq) >= 0) { score += 10; }
+      if (!score) { continue; }
+      if (e.lname === lq || e.short === lq) { score += 100; } else if (e.lname.indexOf(lq) >= 0) { score += 40; }
       hits.push({ e: e, score: score });
-    });
+    }
     hits.sort(function (a, b) {
-      return b.score - a.score || (a.e.name < b.e.name ? -1 : a.e.name > b.e.name ? 1 : 0);
+      return b.score - a.score || (a.e.lname < b.e.lname ? -1 : a.e.lname > b.e.lname ? 1 : 0);
     });
     return hits.map(function (h) { return h.e; });
   }
@@ -102,10 +127,12 @@
     list.slice(0, limit).forEach(function (e) {
       var li = el('li');
       var a = el('a');
-      a.href = root + 'components/' + encodeURIComponent(e.slug) + '.html';
-      a.appendChild(el('span', 'r-name', e.name));
-      var meta = [e.category, e.vendor].filter(Boolean).join(' · ');
-      if (meta) { a.appendChild(el('span', 'r-meta', meta)); }
+      a.href = root + e.href;
+      var head = el('span', 'r-head');
+      head.appendChild(el('span', 'r-name', e.name));
+      if (e.kind) { head.appendChild(el('span', 'r-kind', e.kind)); }
+      a.appendChild(head);
+      if (e.meta) { a.appendChild(el('span', 'r-meta', e.meta)); }
       if (e.summary) { a.appendChild(el('span', 'r-summary', e.summary)); }
       li.appendChild(a);
       ul.appendChild(li);
@@ -116,9 +143,15 @@
   function render() {
     var q = input.value;
     var results = q.trim() ? search(q) : [];
+    last = results;
     var target = page || popup;
     if (!target) { return; }
     if (page) {
+      if (window.history && window.history.replaceState) {
+        var u = new URL(window.location.href);
+        if (q.trim()) { u.searchParams.set('q', q); } else { u.searchParams.delete('q'); }
+        try { window.history.replaceState(null, '', u.href); } catch (err) { /* file:// in some browsers */ }
+      }
       while (page.children.length > 1) { page.removeChild(page.lastChild); }
       var status = el('p', 'status');
       status.id = 'search-status';
@@ -157,7 +190,14 @@
   });
   var form = input.form;
   if (form && page) {
-    form.addEventListener('submit', function (ev) { ev.preventDefault(); ensureIndex(render); });
+    // Enter on the search page opens the first result.
+    form.addEventListener('submit', function (ev) {
+      ev.preventDefault();
+      ensureIndex(function () {
+        render();
+        if (last.length) { window.location.href = root + last[0].href; }
+      });
+    });
   }
   document.addEventListener('keydown', function (ev) {
     var t = ev.target;

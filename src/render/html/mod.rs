@@ -9,8 +9,10 @@
 //! pages are rendered in parallel. Links are relative, so the site works from `file://`.
 
 mod builtins;
+mod diagnostics;
 pub mod markdown;
 mod native;
+pub mod repo;
 pub mod search;
 pub mod svg;
 
@@ -27,9 +29,12 @@ use rayon::prelude::*;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
-/// At most this many "connects to" peers are listed inline per port; the rest are on the
+/// At most this many components are listed under "connects to" per port; the rest are on the
 /// type or interface page (a common type can be used by hundreds of components).
-pub const PEER_CAP: usize = 20;
+pub const PEER_COMPONENTS_CAP: usize = 5;
+
+/// Port names shown per connected component (then "+N").
+pub const PEER_PORTS_SHOWN: usize = 3;
 
 /// Above this many components the index page lists categories with counts instead of every
 /// component (each category page still lists all of its components).
@@ -39,6 +44,10 @@ pub const INDEX_FULL_LIST_MAX: usize = 2000;
 /// copied to the site root.
 pub const DEFAULT_THEME: &[(&str, &str)] = &[
     ("404.html", include_str!("../../../themes/default/404.html")),
+    (
+        "favicon.svg",
+        include_str!("../../../themes/default/favicon.svg"),
+    ),
     (
         "base.html",
         include_str!("../../../themes/default/base.html"),
@@ -102,7 +111,7 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
 ];
 
 /// Assets written to the site root (after theme overrides).
-const ASSETS: &[&str] = &["style.css", "search.js", "filter.js"];
+const ASSETS: &[&str] = &["style.css", "search.js", "filter.js", "favicon.svg"];
 
 /// Reads theme file `name`: the user's theme directory wins, else the built-in file.
 fn theme_file(dir: Option<&Path>, name: &str) -> Result<Option<String>> {
@@ -286,6 +295,8 @@ struct ExtraRow {
 struct ComponentPage {
     root: &'static str,
     title: String,
+    /// `<meta name="description">`: the first line of the description, else what it is.
+    description: String,
     crumbs: Vec<Link>,
     name: String,
     summary_html: Option<String>,
@@ -329,14 +340,6 @@ fn dir_label(
         Some(PortDirection::Event) => (lang.t("event").to_string(), "event"),
         None => (non_empty(raw).unwrap_or("").to_string(), "other"),
     }
-}
-
-/// Number of entries of `refs` (sorted by component, as the catalogue builds them) that belong
-/// to components other than `ci`; a port never "connects to" its own component.
-fn others_than<T>(refs: &[T], ci: usize, component: impl Fn(&T) -> usize) -> usize {
-    let lo = refs.partition_point(|r| component(r) < ci);
-    let hi = refs.partition_point(|r| component(r) <= ci);
-    refs.len() - (hi - lo)
 }
 
 impl<'a> Site<'a> {
@@ -385,9 +388,11 @@ impl<'a> Site<'a> {
         }
     }
 
-    /// The "connects to" links of a port of component `ci`: up to [`PEER_CAP`] peers of other
-    /// components (`all`, sorted by component), then a link to the type or interface page
-    /// (`type_ref`) saying how many more there are (`more_key`).
+    /// The "connects to" answer of a port of component `ci`: the peers of other components
+    /// (`all`, sorted by component) grouped by component, one link each (to its first port,
+    /// naming up to [`PEER_PORTS_SHOWN`] ports), at most [`PEER_COMPONENTS_CAP`] components;
+    /// then a link to the type or interface page (`type_ref`) saying how many more components
+    /// there are (`more_key`). A popular type has hundreds of users: the page stays short.
     fn peers<R>(
         &self,
         ci: usize,
@@ -397,25 +402,42 @@ impl<'a> Site<'a> {
         type_ref: &Option<PortTypeRef>,
         more_key: &str,
     ) -> (Vec<Link>, Option<Link>) {
-        let others = others_than(all, ci, &component);
-        let peers = all
+        let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
+        for r in all.iter().filter(|r| component(r) != ci) {
+            match groups.last_mut() {
+                Some((c, list)) if *c == component(r) => list.push(r),
+                _ => groups.push((component(r), vec![r])),
+            }
+        }
+        let total = groups.len();
+        let peers = groups
             .iter()
-            .filter(|r| component(r) != ci)
-            .take(PEER_CAP)
-            .map(|r| {
-                let u = link(r);
-                Link {
-                    text: format!("{}.{}", u.component.text, u.port.text),
-                    href: u.port.href,
+            .take(PEER_COMPONENTS_CAP)
+            .filter_map(|(_, list)| {
+                let uses: Vec<PortUse> = list.iter().map(|r| link(r)).collect();
+                let first = uses.first()?;
+                let mut names: Vec<&str> = uses
+                    .iter()
+                    .take(PEER_PORTS_SHOWN)
+                    .map(|u| u.port.text.as_str())
+                    .collect();
+                let rest = uses.len().saturating_sub(PEER_PORTS_SHOWN);
+                let more = format!("+{rest}");
+                if rest > 0 {
+                    names.push(&more);
                 }
+                Some(Link {
+                    text: format!("{} · {}", first.component.text, names.join(", ")),
+                    href: first.port.href.clone(),
+                })
             })
             .collect();
         let more = type_ref
             .as_ref()
             .and_then(|t| t.href.clone())
-            .filter(|_| others > PEER_CAP)
+            .filter(|_| total > PEER_COMPONENTS_CAP)
             .map(|href| Link {
-                text: format!("+{} — {}", others - PEER_CAP, self.t(more_key)),
+                text: format!("+{} — {}", total - PEER_COMPONENTS_CAP, self.t(more_key)),
                 href,
             });
         (peers, more)
@@ -446,6 +468,18 @@ impl<'a> Site<'a> {
         }
     }
 
+    /// The summaries of `components`, sorted by name case-insensitively (real catalogues mix
+    /// `camera`, `Camera` and `CAMERA_rtc`), then by page path (same-named components).
+    fn sorted_summaries(&self, components: &[usize]) -> Vec<&ComponentSummary> {
+        let mut list: Vec<(String, &ComponentSummary)> = components
+            .iter()
+            .filter_map(|&i| self.summaries.get(i))
+            .map(|s| (s.name.to_lowercase(), s))
+            .collect();
+        list.sort_by(|a, b| a.0.cmp(&b.0).then_with(|| a.1.path.cmp(&b.1.path)));
+        list.into_iter().map(|(_, s)| s).collect()
+    }
+
     fn facet_name(&self, name: &str, empty_key: &str) -> String {
         if name.is_empty() {
             self.t(empty_key).to_string()
@@ -472,7 +506,20 @@ impl<'a> Site<'a> {
             href: format!("{root}categories/{}.html", sum.category_slug),
         });
 
-        let header = fields(lang, None, facts::basic_info(c, lang));
+        let mut header = fields(lang, None, facts::basic_info(c, lang));
+        // `source-url`: "Source" links to the file in its repository.
+        if let Some(url) = self
+            .opts
+            .source_url
+            .as_deref()
+            .and_then(|t| repo::source_url(t, &c.source))
+        {
+            let label = lang.t("source");
+            if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
+                f.html = Some(repo::source_link_html(&url, &c.source));
+                f.text = None;
+            }
+        }
         let document = b
             .doc
             .as_ref()
@@ -707,9 +754,14 @@ impl<'a> Site<'a> {
 
         // Components sharing a name show what tells them apart (language or folder).
         let name = c.display_name().into_owned();
+        let description = match non_empty(&b.description) {
+            Some(d) => markdown::first_line(d, 160),
+            None => format!("{name}: {} — {}", self.t("component"), self.opts.title),
+        };
         ComponentPage {
             root,
             title: format!("{name} — {}", self.opts.title),
+            description,
             crumbs,
             summary_html: non_empty(&b.description).map(markdown::to_html),
             name,
@@ -928,7 +980,10 @@ impl HtmlRenderer {
                 if !wanted("search-index.js") {
                     return Ok(0);
                 }
-                out.write("search-index.js", search::index_js(catalog).as_bytes())?;
+                out.write(
+                    "search-index.js",
+                    search::index_js(catalog, lang).as_bytes(),
+                )?;
                 Ok(1)
             },
             || {
@@ -1039,7 +1094,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             name: site.facet_name(&f.name, "no_category"),
             slug: &f.slug,
             components: if full {
-                f.components.iter().map(|&i| &site.summaries[i]).collect()
+                site.sorted_summaries(&f.components)
             } else {
                 Vec::new()
             },
@@ -1111,8 +1166,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 context: PageContext::Lazy(Box::new(move || {
                     let name = site.facet_name(&f.name, empty_key);
                     let crumbs = crumbs_section(lang, root, key);
-                    let comps: Vec<&ComponentSummary> =
-                        f.components.iter().map(|&i| &site.summaries[i]).collect();
+                    let comps = site.sorted_summaries(&f.components);
                     minijinja::context! {
                         root => root,
                         title => page_title(site, &name),
@@ -1275,7 +1329,11 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         .base_url
         .as_deref()
         .map(|b| format!("{}/", b.trim_end_matches('/')))
-        .unwrap_or_default();
+        // Without a base URL the mount point is unknown: links from the site root ("/") work
+        // at any depth when the site is served at the root of its host (`rtcdoc serve`, a
+        // custom domain, a user or organisation page). A site in a sub-path sets base-url; a
+        // `<base>` element cannot help, it needs the same unknown.
+        .unwrap_or_else(|| "/".to_string());
     pages.push(Page {
         path: "404.html".into(),
         template: "404.html",
@@ -1285,28 +1343,6 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         }),
     });
     if !catalog.diagnostics.is_empty() {
-        #[derive(Serialize)]
-        struct DiagRow<'a> {
-            location: String,
-            severity: String,
-            code: &'a str,
-            message: &'a str,
-            hint: &'a str,
-        }
-        let rows: Vec<DiagRow<'_>> = catalog
-            .diagnostics
-            .iter()
-            .map(|d| DiagRow {
-                location: match d.pos {
-                    Some(p) => format!("{}:{}:{}", d.file, p.line, p.column),
-                    None => d.file.clone(),
-                },
-                severity: d.severity.to_string(),
-                code: d.code,
-                message: &d.message,
-                hint: d.hint.as_deref().unwrap_or(""),
-            })
-            .collect();
         pages.push(Page {
             path: "diagnostics.html".into(),
             template: "diagnostics.html",
@@ -1314,7 +1350,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 root => "",
                 title => title(lang.t("diagnostics")),
                 crumbs => ctx(&crumbs_home(lang, "")),
-                diagnostics => ctx(&rows),
+                d => ctx(&diagnostics::view(catalog)),
             }),
         });
     }
