@@ -46,54 +46,80 @@
     return out;
   }
 
+  // On first use the entries are read into an inverted index: the sorted distinct tokens
+  // (`keys`) and for each the postings `entry * 3 + group`. A query token's matches are the
+  // keys it is a prefix of, found by binary search: 10,000 components answer in a few ms.
+  var keys = null;
+  var postings = null;
+
   function entries() {
     if (!cache) {
       var ix = window.RTCDOC_INDEX || {};
       var kinds = ix.kinds || {};
-      cache = (ix.e || []).map(function (e) {
+      var map = new Map();
+      cache = (ix.e || []).map(function (e, n) {
         var g = String(e[5]).split('|');
+        for (var gi = 0; gi < 3; gi++) {
+          if (!g[gi]) { continue; }
+          var toks = g[gi].split(' ');
+          for (var j = 0; j < toks.length; j++) {
+            var list = map.get(toks[j]);
+            if (!list) { list = []; map.set(toks[j], list); }
+            list.push(n * 3 + gi);
+          }
+        }
         var name = String(e[1]);
         var lname = name.toLowerCase();
         return { kind: kinds[e[0]] || '', name: name, href: e[2], meta: e[3], summary: e[4],
-          lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1),
-          groups: [0, 1, 2].map(function (i) { return g[i] ? g[i].split(' ') : []; }) };
+          lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1) };
       });
+      keys = Array.from(map.keys()).sort();
+      postings = keys.map(function (k) { return map.get(k); });
     }
     return cache;
   }
 
-  // Score of a query token in a group: [exact, prefix] for name, identifiers, prose.
+  // Score of a query token by where it matched: [exact, prefix] for name, identifiers, prose.
   var WEIGHT = [[30, 20], [10, 7], [3, 2]];
 
-  function tokenScore(e, q) {
-    for (var g = 0; g < 3; g++) {
-      var list = e.groups[g];
-      var prefix = false;
-      for (var j = 0; j < list.length; j++) {
-        var tok = list[j];
-        if (tok === q) { return WEIGHT[g][0]; }
-        if (!prefix && tok.lastIndexOf(q, 0) === 0) { prefix = true; }
-      }
-      if (prefix) { return WEIGHT[g][1]; }
+  /** The best score of query token `q` per entry (0: no match), in `best`. */
+  function tokenScores(q, best) {
+    var lo = 0;
+    var hi = keys.length;
+    while (lo < hi) {
+      var mid = (lo + hi) >> 1;
+      if (keys[mid] < q) { lo = mid + 1; } else { hi = mid; }
     }
-    return 0;
+    for (var k = lo; k < keys.length && keys[k].lastIndexOf(q, 0) === 0; k++) {
+      var exact = keys[k].length === q.length ? 0 : 1;
+      var list = postings[k];
+      for (var j = 0; j < list.length; j++) {
+        var p = list[j];
+        var n = (p / 3) | 0;
+        var s = WEIGHT[p - n * 3][exact];
+        if (s > best[n]) { best[n] = s; }
+      }
+    }
   }
 
   function search(q) {
     var qt = tokenize(q);
     if (!qt.length) { return []; }
     var lq = q.trim().toLowerCase();
-    var hits = [];
     var all = entries();
-    for (var n = 0; n < all.length; n++) {
-      var e = all[n];
-      var score = 0;
-      for (var i = 0; i < qt.length; i++) {
-        var s = tokenScore(e, qt[i]);
-        if (!s) { score = 0; break; }
-        score += s;
-      }
-      if (!score) { continue; }
+    var total = null;
+    for (var i = 0; i < qt.length; i++) {
+      var best = new Int32Array(all.length);
+      tokenScores(qt[i], best);
+      if (!total) { total = best; continue; }
+      // Every query token must match: an entry without this one drops out.
+      for (var n = 0; n < all.length; n++) { total[n] = best[n] && total[n] ? total[n] + best[n] : 0; }
+    }
+    var hits = [];
+    for (var m = 0; m < all.length; m++) {
+      if (!total[m]) { continue; }
+      var e = all[m];
+      var score = total[m];
       if (e.lname === lq || e.short === lq) { score += 100; } else if (e.lname.indexOf(lq) >= 0) { score += 40; }
       hits.push({ e: e, score: score });
     }
@@ -110,7 +136,11 @@
     loading = true;
     var s = document.createElement('script');
     s.src = root + 'search-index.js';
-    s.onload = function () { cache = null; if (pending) { var p = pending; pending = null; p(); } };
+    s.onload = function () {
+      cache = null;
+      entries();
+      if (pending) { var p = pending; pending = null; p(); }
+    };
     document.head.appendChild(s);
   }
 
@@ -157,7 +187,7 @@
       status.id = 'search-status';
       status.textContent = q.trim() ? (results.length ? results.length + ' · ' + q : page.getAttribute('data-no-results')) : '—';
       page.appendChild(status);
-      if (results.length) { page.appendChild(resultList(results, 200)); }
+      if (results.length) { page.appendChild(resultList(results, 100)); }
       return;
     }
     popup.textContent = '';

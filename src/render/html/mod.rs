@@ -548,11 +548,19 @@ impl<'a> Site<'a> {
                 class: dir_class,
                 anchor: anchor.clone(),
             });
-            let details = fields(
-                lang,
-                dp.doc.as_ref().map(|d| &d.description),
-                facts::data_port_attributes(dp, lang),
-            );
+            // No fact twice in a row: the unit has its column, and a documented type or unit
+            // equal to the port's is not repeated under Description.
+            let mut attrs = facts::data_port_attributes(dp, lang);
+            let port_type = non_empty(&dp.type_).map(canonical_type);
+            let unit = non_empty(&dp.unit);
+            attrs.retain(|f| {
+                let label = f.label.as_ref();
+                !(label == lang.t("unit")
+                    || (label == lang.t("fact_doc_type")
+                        && port_type.as_deref() == Some(canonical_type(&f.value).as_str()))
+                    || (label == lang.t("fact_doc_unit") && unit == Some(f.value.as_str())))
+            });
+            let details = fields(lang, dp.doc.as_ref().map(|d| &d.description), attrs);
             let events = dp
                 .events
                 .iter()
