@@ -75,6 +75,10 @@
       });
       keys = Array.from(map.keys()).sort();
       postings = keys.map(function (k) { return map.get(k); });
+      // Ties are broken by name: the rank of each entry in name order, an integer compare.
+      cache.map(function (e, n) { return n; })
+        .sort(function (a, b) { return cache[a].lname < cache[b].lname ? -1 : cache[a].lname > cache[b].lname ? 1 : a - b; })
+        .forEach(function (n, rank) { cache[n].rank = rank; });
     }
     return cache;
   }
@@ -121,12 +125,11 @@
       var e = all[m];
       var score = total[m];
       if (e.lname === lq || e.short === lq) { score += 100; } else if (e.lname.indexOf(lq) >= 0) { score += 40; }
-      hits.push({ e: e, score: score });
+      hits.push(m);
+      total[m] = score;
     }
-    hits.sort(function (a, b) {
-      return b.score - a.score || (a.e.lname < b.e.lname ? -1 : a.e.lname > b.e.lname ? 1 : 0);
-    });
-    return hits.map(function (h) { return h.e; });
+    hits.sort(function (a, b) { return total[b] - total[a] || all[a].rank - all[b].rank; });
+    return hits.map(function (n) { return all[n]; });
   }
 
   function ensureIndex(then) {

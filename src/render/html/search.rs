@@ -177,11 +177,8 @@ impl Groups<'_> {
 /// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
 pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
     // Entries are built in parallel; the indexed collect keeps catalogue order.
-    let mut entries: Vec<serde_json::Value> = catalog
-        .components
-        .par_iter()
-        .map(|c| component_entry(c))
-        .collect();
+    let mut entries: Vec<serde_json::Value> =
+        catalog.components.par_iter().map(component_entry).collect();
     entries.extend(
         catalog
             .data_types
