@@ -622,3 +622,49 @@ fn search_index_is_compact() {
     // A port description is indexed (Japanese as bigrams).
     assert!(groups("Localization")[2].contains(&"車輪".to_string()));
 }
+
+/// A data port row says each fact once: the unit is in its column (not again under
+/// Description), and a documented type or unit equal to the port's is not repeated; one that
+/// differs is kept (nothing lost). `source-url` links "Source" to the file.
+#[test]
+fn port_rows_say_each_fact_once_and_source_links_to_the_repository() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let mut c = component("Odometry", "Sensor");
+    let mut same = data_port("DataOutPort", "pose", "RTC::TimedPose2D");
+    same.unit = s("m");
+    same.doc = Some(rtcdoc::model::DataPortDoc {
+        type_: s("TimedPose2D"),
+        unit: s("m"),
+        ..Default::default()
+    });
+    let mut differs = data_port("DataOutPort", "speed", "RTC::TimedDouble");
+    differs.doc = Some(rtcdoc::model::DataPortDoc {
+        unit: s("m/s"),
+        ..Default::default()
+    });
+    c.data_ports = vec![same, differs];
+    let site = SiteOptions {
+        source_url: Some("https://github.com/lab/robots/blob/main/{path}".into()),
+        ..Default::default()
+    };
+    let cat = render_catalog(vec![c], &out, &site);
+    let html = read(&out.join(format!("components/{}.html", cat.components[0].slug)));
+    let row = |anchor: &str| {
+        let start = html.find(&format!("<tr id=\"{anchor}\">")).unwrap();
+        html[start..start + html[start..].find("</tr>").unwrap()].to_string()
+    };
+    let pose = row(&cat.components[0].anchors.data_ports[0]);
+    assert!(pose.contains("<td data-label=\"Unit\">m</td>"), "{pose}");
+    assert!(!pose.contains("<dt>Unit</dt>"), "unit twice: {pose}");
+    assert!(!pose.contains("Documented type"), "type twice: {pose}");
+    assert!(!pose.contains("Documented unit"), "unit twice: {pose}");
+    let speed = row(&cat.components[0].anchors.data_ports[1]);
+    assert!(
+        speed.contains("<dt>Documented unit</dt><dd><p>m/s</p>"),
+        "{speed}"
+    );
+    assert!(html.contains(
+        "<dt>Source</dt><dd><a href=\"https://github.com/lab/robots/blob/main/c000/RTC.xml\"><code>c000/RTC.xml</code></a></dd>"
+    ));
+}
