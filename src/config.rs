@@ -49,6 +49,8 @@ pub struct Config {
     /// Publish the host data of RT System profiles (host names, IORs, CORBA endpoints, naming
     /// paths), e.g. for an internal site.
     pub show_host_data: Option<bool>,
+    /// URL template of a profile in its repository, with `{path}` (the input-relative path).
+    pub source_url: Option<String>,
 }
 
 /// `[serve]` settings.
@@ -194,8 +196,13 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # Title of the catalogue (index page, book title, Doxygen project name).
 # title = "RT-Component catalogue"
 
-# URL the site is published at; used for absolute links in sitemap.xml.
+# URL the site is published at; used for absolute links in sitemap.xml and the 404 page.
 # base-url = "https://example.org/components/"
+
+# Link "Source" on component pages to the file in its repository; {{path}} is the profile's
+# path relative to the input directory. GitHub: https://github.com/ORG/REPO/blob/main/{{path}}
+# GitLab: https://gitlab.com/ORG/REPO/-/blob/main/{{path}}
+# source-url = "https://github.com/ORG/REPO/blob/main/{{path}}"
 
 # Directory searched for profiles (RTC.xml and the YAML form), recursively.
 # input = "."
@@ -400,6 +407,7 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 .or_else(|| c.theme.as_deref().map(|p| file.resolve(p))),
             language: cli.language.or(c.language).unwrap_or_default(),
             show_host_data: c.show_host_data.unwrap_or(false),
+            source_url: c.source_url.clone(),
         },
     }
 }

@@ -129,3 +129,161 @@ fn no_payload_of_the_xss_fixture_is_live_in_the_browser() {
         }
     }
 }
+
+/// The audit harness of `tests/browser` (puppeteer-core driving this chromium, axe-core):
+/// node and its `npm ci` install (done by `.ci/run`). `None`, with a "skipped" message, when
+/// either is missing.
+fn audit(site: &Path, searches: &[&str]) -> Option<serde_json::Value> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
+    if !dir.join("node_modules/axe-core").is_dir()
+        || !dir.join("node_modules/puppeteer-core").is_dir()
+    {
+        println!("skipped: tests/browser/node_modules missing (run `npm ci` in tests/browser)");
+        return None;
+    }
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(dir.join("audit.mjs")).arg(site);
+    for s in searches {
+        cmd.arg("--search").arg(s);
+    }
+    let o = match cmd.output() {
+        Ok(o) => o,
+        Err(e) => {
+            println!("skipped: cannot run node: {e}");
+            return None;
+        }
+    };
+    assert!(
+        o.status.success(),
+        "audit.mjs failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    Some(serde_json::from_slice(&o.stdout).expect("audit.mjs prints one JSON object"))
+}
+
+/// Every page kind × {light, dark, 390 px}: no axe-core violation (WCAG 2.0–2.2 A/AA and best
+/// practice), at 390 px no page wider than the screen and no region that scrolls sideways;
+/// each search's first result is the expected page, shows its kind, `?q=` follows the box and
+/// Enter opens the first result.
+fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
+    let errors = report["errors"].as_array().expect("errors");
+    assert!(errors.is_empty(), "script errors: {errors:?}");
+    let pages = report["pages"].as_array().expect("pages");
+    for kind in kinds {
+        for mode in ["light", "dark", "phone"] {
+            assert!(
+                pages
+                    .iter()
+                    .any(|p| p["page"].as_str().is_some_and(|s| s.starts_with(kind))
+                        && p["mode"] == mode),
+                "no {kind} page audited in {mode}"
+            );
+        }
+    }
+    let mut problems = Vec::new();
+    for p in pages {
+        let (page, mode) = (&p["page"], &p["mode"]);
+        for v in p["violations"].as_array().into_iter().flatten() {
+            problems.push(format!(
+                "{page} {mode}: {} ({} nodes) {}",
+                v["id"], v["nodes"], v["sample"]
+            ));
+        }
+        if mode == "phone" {
+            let w = p["width"].as_u64().unwrap_or(u64::MAX);
+            if w > 390 {
+                problems.push(format!("{page}: {w} px wide at 390 px"));
+            }
+            for s in p["scrollers"].as_array().into_iter().flatten() {
+                problems.push(format!("{page}: sideways-scrolling region {s}"));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    for s in report["searches"].as_array().into_iter().flatten() {
+        let expect = s["expect"].as_str().unwrap_or("");
+        let first = &s["results"][0];
+        assert!(
+            first["href"].as_str().is_some_and(|h| h.contains(expect)),
+            "search {}: first result {first} is not {expect}",
+            s["q"]
+        );
+        assert!(
+            first["kind"].as_str().is_some_and(|k| !k.is_empty()),
+            "kind shown: {s}"
+        );
+        assert_eq!(s["url_q"], s["q"], "?q= follows the box");
+        assert!(
+            s["opened"].as_str().is_some_and(|u| u.contains(expect)),
+            "Enter opens the first result: {s}"
+        );
+    }
+}
+
+/// One page of every kind the site has (a page is audited when its path starts so).
+const PAGE_KINDS: &[&str] = &[
+    "index.html",
+    "search.html",
+    "no/such/deep/page.html",
+    "diagnostics.html",
+    "components/",
+    "types/index.html",
+    "types/",
+    "interfaces/index.html",
+    "interfaces/",
+    "categories/index.html",
+    "categories/",
+    "vendors/index.html",
+    "vendors/",
+];
+
+#[test]
+fn every_page_kind_passes_axe_and_fits_a_phone_and_search_ranks_and_opens() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let searches = [
+        // A Japanese word of a port description (車輪オドメトリ, the odometry port).
+        "車輪=components/localization",
+        // Name before type: the type page first, then the components using it.
+        "TimedPose2D=types/rtc-timedpose2d",
+        // An IDL field name finds its struct, an operation name its interface.
+        "confidence=types/detection-detectedobject",
+        "setExposure=interfaces/camera-cameracontrol",
+    ];
+    let Some(report) = audit(&out, &searches) else {
+        return;
+    };
+    assert_audit(&report, PAGE_KINDS);
+}
+
+#[test]
+fn the_corpus_site_passes_axe_and_fits_a_phone() {
+    if !chromium() {
+        return;
+    }
+    let Some(corpus) = common::corpus() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&corpus, &out, SiteOptions::default());
+    // 温度センサ occurs in one file of the corpus, in a data port's description only.
+    let searches = [
+        "温度センサ=components/accandmagnsensor",
+        "TimedDoubleSeq=types/rtc-timeddoubleseq",
+        "ManipulatorCommonInterface_Middle=interfaces/jara-arm-manipulatorcommoninterface-middle",
+    ];
+    let Some(report) = audit(&out, &searches) else {
+        return;
+    };
+    assert_audit(&report, PAGE_KINDS);
+    // The diagnostics page of the corpus stays small (it was 990 KB, a row per finding).
+    let diag = std::fs::metadata(out.join("diagnostics.html"))
+        .unwrap()
+        .len();
+    assert!(diag <= 300_000, "diagnostics.html is {diag} bytes");
+}

@@ -249,12 +249,18 @@ fn every_port_links_to_its_type_or_interface_page_and_peers() {
                 "{}.{anchor} links to its type",
                 c.slug
             );
-            // Peers are other components (a port never "connects to" its own component).
-            for peer in cat
+            // Peers are other components (a port never "connects to" its own component),
+            // grouped by component: one link each, to its first port, at most
+            // PEER_COMPONENTS_CAP components.
+            let mut firsts = cat
                 .data_port_peers(ci, pi)
                 .iter()
                 .filter(|r| r.component != c.id)
-                .take(20)
+                .collect::<Vec<_>>();
+            firsts.dedup_by_key(|r| r.component.clone());
+            for peer in firsts
+                .into_iter()
+                .take(rtcdoc::render::html::PEER_COMPONENTS_CAP)
             {
                 let (pci, ppi) = cat.resolve_port(peer).unwrap();
                 let pc = &cat.components[pci];
@@ -362,13 +368,15 @@ fn big_components_grow_the_diagram_and_cap_peer_lists() {
     for a in &big.anchors.data_ports {
         assert!(html.contains(&format!("<a href=\"#{a}\"")));
     }
-    // An out port with 30 consumers lists 20 and links to the type page for the rest.
+    // An out port with 30 consumers lists the first 5 components and links to the type page
+    // for the other 25.
     let row_start = html
         .find(&format!("<tr id=\"{}\">", big.anchors.data_ports[1]))
         .unwrap();
     let row = &html[row_start..row_start + html[row_start..].find("</tr>").unwrap()];
-    assert_eq!(row.matches("<li><a href=\"../components/sink").count(), 20);
+    assert_eq!(row.matches("<li><a href=\"../components/sink").count(), 5);
     assert!(row.contains("class=\"more\"") && row.contains("../types/rtc-timedlong.html"));
+    assert!(row.contains(">+25 — "), "the count of the rest");
     let t = read(&out.join("types/rtc-timedlong.html"));
     assert_eq!(section_links(&t, "consumers").len(), 30 + 22);
     // The unprovided interface is flagged; the Japanese component got a safe slug and page.
@@ -444,7 +452,9 @@ fn no_payload_of_the_xss_fixture_survives() {
                 "iframe" | "object" | "embed" | "style" | "base" | "form"
                     if t.name != "form" || t.attr("role") != Some("search") =>
                 {
-                    if t.name == "form" && t.attr("id") == Some("catalog-filter") {
+                    if t.name == "form"
+                        && matches!(t.attr("id"), Some("catalog-filter" | "diag-filter"))
+                    {
                         continue;
                     }
                     panic!("{rel}: forbidden element {t:?}");
@@ -460,10 +470,13 @@ fn no_payload_of_the_xss_fixture_survives() {
                 assert!(!k.starts_with("on"), "{rel}: event handler {t:?}");
                 assert!(k != "style", "{rel}: style attribute {t:?}");
                 let v = v.trim().to_ascii_lowercase();
+                // The description of a page is text (a vendor named `javascript:…`), no URL.
+                let text_only = t.name == "meta" && t.attr("name") == Some("description");
                 assert!(
-                    !(v.starts_with("javascript:")
-                        || v.starts_with("data:")
-                        || v.starts_with("vbscript:")),
+                    text_only
+                        || !(v.starts_with("javascript:")
+                            || v.starts_with("data:")
+                            || v.starts_with("vbscript:")),
                     "{rel}: script URL {t:?}"
                 );
             }
@@ -577,5 +590,82 @@ fn search_index_is_compact() {
     println!("search index: {bytes} bytes, {per:.0} bytes per component");
     assert!(per <= 1536.0, "{per} bytes per component");
     let idx = read(&out.join("search-index.js"));
-    assert!(idx.contains("\"usbcamera\""));
+    let json: serde_json::Value = serde_json::from_str(
+        idx.trim_end()
+            .strip_prefix("window.RTCDOC_INDEX=")
+            .and_then(|s| s.strip_suffix(';'))
+            .expect("window.RTCDOC_INDEX=…;"),
+    )
+    .unwrap();
+    let entries = json["e"].as_array().unwrap();
+    let groups = |name: &str| -> Vec<Vec<String>> {
+        let e = entries
+            .iter()
+            .find(|e| e[1] == name)
+            .unwrap_or_else(|| panic!("{name} indexed"));
+        e[5].as_str()
+            .unwrap()
+            .split('|')
+            .map(|g| g.split(' ').map(str::to_string).collect())
+            .collect()
+    };
+    // Name, identifiers, prose: the name keeps all its tokens.
+    assert!(groups("UsbCamera")[0].contains(&"usbcamera".to_string()));
+    // Every document kind: types carry their IDL field names, interfaces their operations.
+    let ty = groups("Detection::DetectedObject");
+    assert!(ty[1].contains(&"confidence".to_string()), "{ty:?}");
+    let iface = groups("Camera::CameraControl");
+    assert!(
+        iface[1].iter().any(|t| t.starts_with("setexposure")),
+        "{iface:?}"
+    );
+    assert_eq!(json["kinds"]["t"], "Data type");
+    // A port description is indexed (Japanese as bigrams).
+    assert!(groups("Localization")[2].contains(&"車輪".to_string()));
+}
+
+/// A data port row says each fact once: the unit is in its column (not again under
+/// Description), and a documented type or unit equal to the port's is not repeated; one that
+/// differs is kept (nothing lost). `source-url` links "Source" to the file.
+#[test]
+fn port_rows_say_each_fact_once_and_source_links_to_the_repository() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let mut c = component("Odometry", "Sensor");
+    let mut same = data_port("DataOutPort", "pose", "RTC::TimedPose2D");
+    same.unit = s("m");
+    same.doc = Some(rtcdoc::model::DataPortDoc {
+        type_: s("TimedPose2D"),
+        unit: s("m"),
+        ..Default::default()
+    });
+    let mut differs = data_port("DataOutPort", "speed", "RTC::TimedDouble");
+    differs.doc = Some(rtcdoc::model::DataPortDoc {
+        unit: s("m/s"),
+        ..Default::default()
+    });
+    c.data_ports = vec![same, differs];
+    let site = SiteOptions {
+        source_url: Some("https://github.com/lab/robots/blob/main/{path}".into()),
+        ..Default::default()
+    };
+    let cat = render_catalog(vec![c], &out, &site);
+    let html = read(&out.join(format!("components/{}.html", cat.components[0].slug)));
+    let row = |anchor: &str| {
+        let start = html.find(&format!("<tr id=\"{anchor}\">")).unwrap();
+        html[start..start + html[start..].find("</tr>").unwrap()].to_string()
+    };
+    let pose = row(&cat.components[0].anchors.data_ports[0]);
+    assert!(pose.contains("<td data-label=\"Unit\">m</td>"), "{pose}");
+    assert!(!pose.contains("<dt>Unit</dt>"), "unit twice: {pose}");
+    assert!(!pose.contains("Documented type"), "type twice: {pose}");
+    assert!(!pose.contains("Documented unit"), "unit twice: {pose}");
+    let speed = row(&cat.components[0].anchors.data_ports[1]);
+    assert!(
+        speed.contains("<dt>Documented unit</dt><dd><p>m/s</p>"),
+        "{speed}"
+    );
+    assert!(html.contains(
+        "<dt>Source</dt><dd><a href=\"https://github.com/lab/robots/blob/main/c000/RTC.xml\"><code>c000/RTC.xml</code></a></dd>"
+    ));
 }

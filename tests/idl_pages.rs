@@ -28,7 +28,7 @@ fn example_type_and_interface_pages_show_their_idl() {
     );
     assert!(t.contains("IDL:Detection/TimedObjectList:1.0"));
     assert!(t.contains("<p>The detections of one processed image.</p>"));
-    assert!(t.contains("<tr id=\"field-tm\"><td><code>tm</code></td><td><a href=\"../types/example-time.html\"><code>Example::Time</code></a></td><td>Capture time of the image</td></tr>"), "{t}");
+    assert!(t.contains("<tr id=\"field-tm\"><td data-label=\"Field\"><code>tm</code></td><td data-label=\"Type\"><a href=\"../types/example-time.html\"><code>Example::Time</code></a></td><td data-label=\"Description\">Capture time of the image</td></tr>"), "{t}");
     assert!(t.contains("<tr id=\"field-data\">"));
     let i = read(&out.join("interfaces/detection-modelrepository.html"));
     assert!(i.contains("id=\"op-fetch\""), "{i}");
@@ -56,12 +56,15 @@ fn example_type_and_interface_pages_show_their_idl() {
     assert!(list.contains("<a href=\"detection-timedobjectlist.html\"><code>Detection::TimedObjectList</code></a>"), "{list}");
     let bbox = read(&out.join("types/detection-boundingbox.html"));
     assert!(bbox.contains("id=\"contained-in\"") && bbox.contains("Detection::DetectedObject"));
-    assert!(bbox.contains("<td>Left edge</td>"), "{bbox}");
+    assert!(
+        bbox.contains("<td data-label=\"Description\">Left edge</td>"),
+        "{bbox}"
+    );
     // Enum values and exceptions reachable from an interface.
     let mode = read(&out.join("types/camera-exposuremode.html"));
     assert!(
         mode.contains(
-            "<tr id=\"value-AUTO\"><td><code>AUTO</code></td><td>The camera decides</td></tr>"
+            "<tr id=\"value-AUTO\"><td data-label=\"Name\"><code>AUTO</code></td><td data-label=\"Description\">The camera decides</td></tr>"
         ),
         "{mode}"
     );
@@ -135,7 +138,8 @@ fn idl_path_types_are_resolved_and_linked() {
     );
     let p = read(&out.join("types/lab-pose.html"));
     assert!(
-        p.contains("<p>A position.</p>") && p.contains("<td>metres</td>"),
+        p.contains("<p>A position.</p>")
+            && p.contains("<td data-label=\"Description\">metres</td>"),
         "{p}"
     );
     // Without the IDL path: no definition, and the build says nothing about it.

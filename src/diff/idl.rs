@@ -415,8 +415,8 @@ impl<'s> Cmp<'s> {
                         self.doc(
                             &p.seg(&format!("values/{}", v.name)),
                             &format!("value `{}` of `{name}`", v.name),
-                            ov.doc.as_ref(),
-                            v.doc.as_ref(),
+                            ov.doc.as_deref(),
+                            v.doc.as_deref(),
                         );
                     }
                 }
@@ -497,8 +497,8 @@ impl<'s> Cmp<'s> {
                     self.doc(
                         &cp,
                         &format!("case `{}` of `{name}`", c.field.name),
-                        oc.field.doc.as_ref(),
-                        c.field.doc.as_ref(),
+                        oc.field.doc.as_deref(),
+                        c.field.doc.as_deref(),
                     );
                 }
             }
@@ -609,8 +609,8 @@ impl<'s> Cmp<'s> {
             self.doc(
                 &mp,
                 &format!("member `{}` of `{owner}`", f.name),
-                of.doc.as_ref(),
-                f.doc.as_ref(),
+                of.doc.as_deref(),
+                f.doc.as_deref(),
             );
         }
     }
@@ -884,8 +884,8 @@ impl<'s> Cmp<'s> {
                 self.doc(
                     &ap,
                     &format!("attribute `{}` of `{name}`", nat.name),
-                    oat.doc.as_ref(),
-                    nat.doc.as_ref(),
+                    oat.doc.as_deref(),
+                    nat.doc.as_deref(),
                 );
             }
         }
@@ -1010,8 +1010,8 @@ impl<'s> Cmp<'s> {
         self.doc(
             opath,
             &format!("operation `{}` of `{iface}`", b.name),
-            a.doc.as_ref(),
-            b.doc.as_ref(),
+            a.doc.as_deref(),
+            b.doc.as_deref(),
         );
         for (x, y) in a.params.iter().zip(&b.params) {
             let pp = opath.slot(&format!("params/{}", y.name));
@@ -1019,8 +1019,8 @@ impl<'s> Cmp<'s> {
             self.doc(
                 &pp,
                 &format!("parameter `{}` of `{}`", y.name, b.name),
-                x.doc.as_ref(),
-                y.doc.as_ref(),
+                x.doc.as_deref(),
+                y.doc.as_deref(),
             );
         }
         if let (Some(x), Some(y)) = (&a.return_type, &b.return_type) {

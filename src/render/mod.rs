@@ -52,6 +52,9 @@ pub struct SiteOptions {
     /// Publish the host data of RT System profiles (host names, IORs, CORBA endpoints, naming
     /// paths); hidden by default (`show-host-data` in rtcdoc.toml).
     pub show_host_data: bool,
+    /// `source-url`: a URL template with `{path}` (the profile's input-relative path) that
+    /// makes "Source" on component pages a link to the file in its repository.
+    pub source_url: Option<String>,
 }
 
 impl Default for SiteOptions {
@@ -62,6 +65,7 @@ impl Default for SiteOptions {
             theme_dir: None,
             language: crate::i18n::Lang::En,
             show_host_data: false,
+            source_url: None,
         }
     }
 }

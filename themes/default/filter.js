@@ -1,7 +1,26 @@
 /* Index page filter: by text, category and vendor. The full list is in the HTML; this only
-   hides rows and empty category sections. */
+   hides rows and empty category sections. The diagnostics page: by severity and code. */
 (function () {
   'use strict';
+  var diag = document.getElementById('diag-filter');
+  if (diag) {
+    var sev = document.getElementById('f-sev');
+    var code = document.getElementById('f-code');
+    diag.addEventListener('submit', function (ev) { ev.preventDefault(); });
+    var applyDiag = function () {
+      document.querySelectorAll('section.diag-file').forEach(function (sec) {
+        var shown = 0;
+        sec.querySelectorAll('li[data-sev]').forEach(function (li) {
+          var ok = (!sev.value || li.getAttribute('data-sev') === sev.value) &&
+            (!code.value || li.getAttribute('data-code') === code.value);
+          li.hidden = !ok;
+          if (ok) { shown++; }
+        });
+        sec.hidden = shown === 0;
+      });
+    };
+    [sev, code].forEach(function (e) { e.addEventListener('change', applyDiag); });
+  }
   var form = document.getElementById('catalog-filter');
   if (!form) { return; }
   var text = document.getElementById('f-text');

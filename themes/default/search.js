@@ -1,9 +1,12 @@
 /* rtcdoc search: offline, no libraries. The index (search-index.js) assigns
-   window.RTCDOC_INDEX = [[name, slug, category, vendor, summary, tokens], ...]; it is loaded
-   with a <script> tag on first use, which works from file:// too. Queries are tokenized like
+   window.RTCDOC_INDEX = {kinds: {c: label, ...}, e: [[kind, name, href, meta, summary,
+   "name|ids|text"], ...]}; it is loaded with a <script> tag on first use, which works from
+   file:// too. Entries are components, data types and interfaces. Queries are tokenized like
    the index: lower-case words, and overlapping bigrams for CJK text. Every query token must be
-   a prefix of some token of a component. Results are built with DOM APIs (textContent), never
-   from HTML strings. */
+   a prefix of some token of an entry; a match in the name ranks before one in an identifier
+   (port, field, type), before one in prose. Results are built with DOM APIs (textContent),
+   never from HTML strings. The search page keeps ?q= in step with the box (history
+   .replaceState) and Enter opens the first result. */
 (function () {
   'use strict';
   var body = document.body;
@@ -15,6 +18,7 @@
   var loading = false;
   var pending = null;
   var cache = null;
+  var last = [];
 
   function isCjk(n) {
     return (n >= 0x3040 && n <= 0x30FF) || (n >= 0x3400 && n <= 0x4DBF) ||
@@ -42,40 +46,90 @@
     return out;
   }
 
+  // On first use the entries are read into an inverted index: the sorted distinct tokens
+  // (`keys`) and for each the postings `entry * 3 + group`. A query token's matches are the
+  // keys it is a prefix of, found by binary search: 10,000 components answer in a few ms.
+  var keys = null;
+  var postings = null;
+
   function entries() {
     if (!cache) {
-      cache = (window.RTCDOC_INDEX || []).map(function (e) {
-        return { name: e[0], slug: e[1], category: e[2], vendor: e[3], summary: e[4],
-          lname: String(e[0]).toLowerCase(), tokens: String(e[5]).split(' '), path: e[6] };
+      var ix = window.RTCDOC_INDEX || {};
+      var kinds = ix.kinds || {};
+      var map = new Map();
+      cache = (ix.e || []).map(function (e, n) {
+        var g = String(e[5]).split('|');
+        for (var gi = 0; gi < 3; gi++) {
+          if (!g[gi]) { continue; }
+          var toks = g[gi].split(' ');
+          for (var j = 0; j < toks.length; j++) {
+            var list = map.get(toks[j]);
+            if (!list) { list = []; map.set(toks[j], list); }
+            list.push(n * 3 + gi);
+          }
+        }
+        var name = String(e[1]);
+        var lname = name.toLowerCase();
+        return { kind: kinds[e[0]] || '', name: name, href: e[2], meta: e[3], summary: e[4],
+          lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1) };
       });
+      keys = Array.from(map.keys()).sort();
+      postings = keys.map(function (k) { return map.get(k); });
+      // Ties are broken by name: the rank of each entry in name order, an integer compare.
+      cache.map(function (e, n) { return n; })
+        .sort(function (a, b) { return cache[a].lname < cache[b].lname ? -1 : cache[a].lname > cache[b].lname ? 1 : a - b; })
+        .forEach(function (n, rank) { cache[n].rank = rank; });
     }
     return cache;
+  }
+
+  // Score of a query token by where it matched: [exact, prefix] for name, identifiers, prose.
+  var WEIGHT = [[30, 20], [10, 7], [3, 2]];
+
+  /** The best score of query token `q` per entry (0: no match), in `best`. */
+  function tokenScores(q, best) {
+    var lo = 0;
+    var hi = keys.length;
+    while (lo < hi) {
+      var mid = (lo + hi) >> 1;
+      if (keys[mid] < q) { lo = mid + 1; } else { hi = mid; }
+    }
+    for (var k = lo; k < keys.length && keys[k].lastIndexOf(q, 0) === 0; k++) {
+      var exact = keys[k].length === q.length ? 0 : 1;
+      var list = postings[k];
+      for (var j = 0; j < list.length; j++) {
+        var p = list[j];
+        var n = (p / 3) | 0;
+        var s = WEIGHT[p - n * 3][exact];
+        if (s > best[n]) { best[n] = s; }
+      }
+    }
   }
 
   function search(q) {
     var qt = tokenize(q);
     if (!qt.length) { return []; }
     var lq = q.trim().toLowerCase();
+    var all = entries();
+    var total = null;
+    for (var i = 0; i < qt.length; i++) {
+      var best = new Int32Array(all.length);
+      tokenScores(qt[i], best);
+      if (!total) { total = best; continue; }
+      // Every query token must match: an entry without this one drops out.
+      for (var n = 0; n < all.length; n++) { total[n] = best[n] && total[n] ? total[n] + best[n] : 0; }
+    }
     var hits = [];
-    entries().forEach(function (e) {
-      var score = 0;
-      for (var i = 0; i < qt.length; i++) {
-        var best = 0;
-        for (var j = 0; j < e.tokens.length; j++) {
-          var tok = e.tokens[j];
-          if (tok === qt[i]) { best = 2; break; }
-          if (best === 0 && tok.lastIndexOf(qt[i], 0) === 0) { best = 1; }
-        }
-        if (!best) { return; }
-        score += best;
-      }
-      if (e.lname === lq) { score += 20; } else if (e.lname.indexOf(lq) >= 0) { score += 10; }
-      hits.push({ e: e, score: score });
-    });
-    hits.sort(function (a, b) {
-      return b.score - a.score || (a.e.name < b.e.name ? -1 : a.e.name > b.e.name ? 1 : 0);
-    });
-    return hits.map(function (h) { return h.e; });
+    for (var m = 0; m < all.length; m++) {
+      if (!total[m]) { continue; }
+      var e = all[m];
+      var score = total[m];
+      if (e.lname === lq || e.short === lq) { score += 100; } else if (e.lname.indexOf(lq) >= 0) { score += 40; }
+      hits.push(m);
+      total[m] = score;
+    }
+    hits.sort(function (a, b) { return total[b] - total[a] || all[a].rank - all[b].rank; });
+    return hits.map(function (n) { return all[n]; });
   }
 
   function ensureIndex(then) {
@@ -85,7 +139,11 @@
     loading = true;
     var s = document.createElement('script');
     s.src = root + 'search-index.js';
-    s.onload = function () { cache = null; if (pending) { var p = pending; pending = null; p(); } };
+    s.onload = function () {
+      cache = null;
+      entries();
+      if (pending) { var p = pending; pending = null; p(); }
+    };
     document.head.appendChild(s);
   }
 
@@ -102,11 +160,12 @@
     list.slice(0, limit).forEach(function (e) {
       var li = el('li');
       var a = el('a');
-      // Systems carry their page path (7th element); components are found by slug.
-      a.href = root + (e.path || 'components/' + encodeURIComponent(e.slug) + '.html');
-      a.appendChild(el('span', 'r-name', e.name));
-      var meta = [e.category, e.vendor].filter(Boolean).join(' · ');
-      if (meta) { a.appendChild(el('span', 'r-meta', meta)); }
+      a.href = root + e.href;
+      var head = el('span', 'r-head');
+      head.appendChild(el('span', 'r-name', e.name));
+      if (e.kind) { head.appendChild(el('span', 'r-kind', e.kind)); }
+      a.appendChild(head);
+      if (e.meta) { a.appendChild(el('span', 'r-meta', e.meta)); }
       if (e.summary) { a.appendChild(el('span', 'r-summary', e.summary)); }
       li.appendChild(a);
       ul.appendChild(li);
@@ -117,15 +176,21 @@
   function render() {
     var q = input.value;
     var results = q.trim() ? search(q) : [];
+    last = results;
     var target = page || popup;
     if (!target) { return; }
     if (page) {
+      if (window.history && window.history.replaceState) {
+        var u = new URL(window.location.href);
+        if (q.trim()) { u.searchParams.set('q', q); } else { u.searchParams.delete('q'); }
+        try { window.history.replaceState(null, '', u.href); } catch (err) { /* file:// in some browsers */ }
+      }
       while (page.children.length > 1) { page.removeChild(page.lastChild); }
       var status = el('p', 'status');
       status.id = 'search-status';
       status.textContent = q.trim() ? (results.length ? results.length + ' · ' + q : page.getAttribute('data-no-results')) : '—';
       page.appendChild(status);
-      if (results.length) { page.appendChild(resultList(results, 200)); }
+      if (results.length) { page.appendChild(resultList(results, 100)); }
       return;
     }
     popup.textContent = '';
@@ -158,7 +223,14 @@
   });
   var form = input.form;
   if (form && page) {
-    form.addEventListener('submit', function (ev) { ev.preventDefault(); ensureIndex(render); });
+    // Enter on the search page opens the first result.
+    form.addEventListener('submit', function (ev) {
+      ev.preventDefault();
+      ensureIndex(function () {
+        render();
+        if (last.length) { window.location.href = root + last[0].href; }
+      });
+    });
   }
   document.addEventListener('keydown', function (ev) {
     var t = ev.target;

@@ -9,8 +9,10 @@
 //! pages are rendered in parallel. Links are relative, so the site works from `file://`.
 
 mod builtins;
+mod diagnostics;
 pub mod markdown;
 mod native;
+pub mod repo;
 pub mod search;
 pub mod svg;
 mod system_svg;
@@ -29,9 +31,12 @@ use rayon::prelude::*;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
-/// At most this many "connects to" peers are listed inline per port; the rest are on the
+/// At most this many components are listed under "connects to" per port; the rest are on the
 /// type or interface page (a common type can be used by hundreds of components).
-pub const PEER_CAP: usize = 20;
+pub const PEER_COMPONENTS_CAP: usize = 5;
+
+/// Port names shown per connected component (then "+N").
+pub const PEER_PORTS_SHOWN: usize = 3;
 
 /// Above this many components the index page lists categories with counts instead of every
 /// component (each category page still lists all of its components).
@@ -41,6 +46,10 @@ pub const INDEX_FULL_LIST_MAX: usize = 2000;
 /// copied to the site root.
 pub const DEFAULT_THEME: &[(&str, &str)] = &[
     ("404.html", include_str!("../../../themes/default/404.html")),
+    (
+        "favicon.svg",
+        include_str!("../../../themes/default/favicon.svg"),
+    ),
     (
         "base.html",
         include_str!("../../../themes/default/base.html"),
@@ -112,7 +121,7 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
 ];
 
 /// Assets written to the site root (after theme overrides).
-const ASSETS: &[&str] = &["style.css", "search.js", "filter.js"];
+const ASSETS: &[&str] = &["style.css", "search.js", "filter.js", "favicon.svg"];
 
 /// Reads theme file `name`: the user's theme directory wins, else the built-in file.
 fn theme_file(dir: Option<&Path>, name: &str) -> Result<Option<String>> {
@@ -296,6 +305,8 @@ struct ExtraRow {
 struct ComponentPage {
     root: &'static str,
     title: String,
+    /// `<meta name="description">`: the first line of the description, else what it is.
+    description: String,
     crumbs: Vec<Link>,
     name: String,
     summary_html: Option<String>,
@@ -343,14 +354,6 @@ fn dir_label(
         Some(PortDirection::Event) => (lang.t("event").to_string(), "event"),
         None => (non_empty(raw).unwrap_or("").to_string(), "other"),
     }
-}
-
-/// Number of entries of `refs` (sorted by component, as the catalogue builds them) that belong
-/// to components other than `ci`; a port never "connects to" its own component.
-fn others_than<T>(refs: &[T], ci: usize, component: impl Fn(&T) -> usize) -> usize {
-    let lo = refs.partition_point(|r| component(r) < ci);
-    let hi = refs.partition_point(|r| component(r) <= ci);
-    refs.len() - (hi - lo)
 }
 
 impl<'a> Site<'a> {
@@ -407,9 +410,11 @@ impl<'a> Site<'a> {
         })
     }
 
-    /// The "connects to" links of a port of component `ci`: up to [`PEER_CAP`] peers of other
-    /// components (`all`, sorted by component), then a link to the type or interface page
-    /// (`type_ref`) saying how many more there are (`more_key`).
+    /// The "connects to" answer of a port of component `ci`: the peers of other components
+    /// (`all`, sorted by component) grouped by component, one link each (to its first port,
+    /// naming up to [`PEER_PORTS_SHOWN`] ports), at most [`PEER_COMPONENTS_CAP`] components;
+    /// then a link to the type or interface page (`type_ref`) saying how many more components
+    /// there are (`more_key`). A popular type has hundreds of users: the page stays short.
     fn peers<R>(
         &self,
         ci: usize,
@@ -419,25 +424,42 @@ impl<'a> Site<'a> {
         type_ref: &Option<PortTypeRef>,
         more_key: &str,
     ) -> (Vec<Link>, Option<Link>) {
-        let others = others_than(all, ci, &component);
-        let peers = all
+        let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
+        for r in all.iter().filter(|r| component(r) != ci) {
+            match groups.last_mut() {
+                Some((c, list)) if *c == component(r) => list.push(r),
+                _ => groups.push((component(r), vec![r])),
+            }
+        }
+        let total = groups.len();
+        let peers = groups
             .iter()
-            .filter(|r| component(r) != ci)
-            .take(PEER_CAP)
-            .filter_map(|r| {
-                let u = link(r)?;
+            .take(PEER_COMPONENTS_CAP)
+            .filter_map(|(_, list)| {
+                let uses: Vec<PortUse> = list.iter().filter_map(|r| link(r)).collect();
+                let first = uses.first()?;
+                let mut names: Vec<&str> = uses
+                    .iter()
+                    .take(PEER_PORTS_SHOWN)
+                    .map(|u| u.port.text.as_str())
+                    .collect();
+                let rest = uses.len().saturating_sub(PEER_PORTS_SHOWN);
+                let more = format!("+{rest}");
+                if rest > 0 {
+                    names.push(&more);
+                }
                 Some(Link {
-                    text: format!("{}.{}", u.component.text, u.port.text),
-                    href: u.port.href,
+                    text: format!("{} · {}", first.component.text, names.join(", ")),
+                    href: first.port.href.clone(),
                 })
             })
             .collect();
         let more = type_ref
             .as_ref()
             .and_then(|t| t.href.clone())
-            .filter(|_| others > PEER_CAP)
+            .filter(|_| total > PEER_COMPONENTS_CAP)
             .map(|href| Link {
-                text: format!("+{} — {}", others - PEER_CAP, self.t(more_key)),
+                text: format!("+{} — {}", total - PEER_COMPONENTS_CAP, self.t(more_key)),
                 href,
             });
         (peers, more)
@@ -467,6 +489,18 @@ impl<'a> Site<'a> {
             service_ports: c.profile.service_ports.len(),
             configurations: c.profile.configurations().len(),
         }
+    }
+
+    /// The summaries of `components`, sorted by name case-insensitively (real catalogues mix
+    /// `camera`, `Camera` and `CAMERA_rtc`), then by page path (same-named components).
+    fn sorted_summaries(&self, components: &[usize]) -> Vec<&ComponentSummary> {
+        let mut list: Vec<(String, &ComponentSummary)> = components
+            .iter()
+            .filter_map(|&i| self.summaries.get(i))
+            .map(|s| (s.name.to_lowercase(), s))
+            .collect();
+        list.sort_by(|a, b| a.0.cmp(&b.0).then_with(|| a.1.path.cmp(&b.1.path)));
+        list.into_iter().map(|(_, s)| s).collect()
     }
 
     fn facet_name(&self, name: &str, empty_key: &str) -> String {
@@ -503,7 +537,20 @@ impl<'a> Site<'a> {
             ),
         });
 
-        let header = fields(lang, None, facts::basic_info(c, lang));
+        let mut header = fields(lang, None, facts::basic_info(c, lang));
+        // `source-url`: "Source" links to the file in its repository.
+        if let Some(url) = self
+            .opts
+            .source_url
+            .as_deref()
+            .and_then(|t| repo::source_url(t, &c.source))
+        {
+            let label = lang.t("source");
+            if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
+                f.html = Some(repo::source_link_html(&url, &c.source));
+                f.text = None;
+            }
+        }
         let document = b
             .doc
             .as_ref()
@@ -532,11 +579,19 @@ impl<'a> Site<'a> {
                 class: dir_class,
                 anchor: anchor.clone(),
             });
-            let details = fields(
-                lang,
-                dp.doc.as_ref().map(|d| &d.description),
-                facts::data_port_attributes(dp, lang),
-            );
+            // No fact twice in a row: the unit has its column, and a documented type or unit
+            // equal to the port's is not repeated under Description.
+            let mut attrs = facts::data_port_attributes(dp, lang);
+            let port_type = non_empty(&dp.type_).map(canonical_type);
+            let unit = non_empty(&dp.unit);
+            attrs.retain(|f| {
+                let label = f.label.as_ref();
+                !(label == lang.t("unit")
+                    || (label == lang.t("fact_doc_type")
+                        && port_type.as_deref() == Some(canonical_type(&f.value).as_str()))
+                    || (label == lang.t("fact_doc_unit") && unit == Some(f.value.as_str())))
+            });
+            let details = fields(lang, dp.doc.as_ref().map(|d| &d.description), attrs);
             let events = dp
                 .events
                 .iter()
@@ -737,9 +792,14 @@ impl<'a> Site<'a> {
 
         // Components sharing a name show what tells them apart (language or folder).
         let name = c.display_name().into_owned();
+        let description = match non_empty(&b.description) {
+            Some(d) => markdown::first_line(d, 160),
+            None => format!("{name}: {} — {}", self.t("component"), self.opts.title),
+        };
         ComponentPage {
             root,
             title: format!("{name} — {}", self.opts.title),
+            description,
             crumbs,
             summary_html: non_empty(&b.description).map(markdown::to_html),
             name,
@@ -972,7 +1032,10 @@ impl HtmlRenderer {
                 if !wanted("search-index.js") {
                     return Ok(0);
                 }
-                out.write("search-index.js", search::index_js(catalog).as_bytes())?;
+                out.write(
+                    "search-index.js",
+                    search::index_js(catalog, lang).as_bytes(),
+                )?;
                 Ok(1)
             },
             || {
@@ -1087,7 +1150,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             name: site.facet_name(&f.name, "no_category"),
             slug: &f.slug,
             components: if full {
-                catalog.members(f).map(|i| &site.summaries[i]).collect()
+                site.sorted_summaries(&catalog.members(f).collect::<Vec<_>>())
             } else {
                 Vec::new()
             },
@@ -1170,8 +1233,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 context: PageContext::Lazy(Box::new(move || {
                     let name = site.facet_name(&f.name, empty_key);
                     let crumbs = crumbs_section(lang, root, key);
-                    let comps: Vec<&ComponentSummary> =
-                        catalog.members(f).map(|i| &site.summaries[i]).collect();
+                    let comps = site.sorted_summaries(&catalog.members(f).collect::<Vec<_>>());
                     minijinja::context! {
                         root => root,
                         title => page_title(site, &name),
@@ -1339,7 +1401,11 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         .base_url
         .as_deref()
         .map(|b| format!("{}/", b.trim_end_matches('/')))
-        .unwrap_or_default();
+        // Without a base URL the mount point is unknown: links from the site root ("/") work
+        // at any depth when the site is served at the root of its host (`rtcdoc serve`, a
+        // custom domain, a user or organisation page). A site in a sub-path sets base-url; a
+        // `<base>` element cannot help, it needs the same unknown.
+        .unwrap_or_else(|| "/".to_string());
     pages.push(Page {
         path: catalog.site_page(PageKind::NotFound).path("html"),
         template: "404.html",
@@ -1349,28 +1415,6 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         }),
     });
     if !catalog.diagnostics.is_empty() {
-        #[derive(Serialize)]
-        struct DiagRow<'a> {
-            location: String,
-            severity: String,
-            code: &'a str,
-            message: &'a str,
-            hint: &'a str,
-        }
-        let rows: Vec<DiagRow<'_>> = catalog
-            .diagnostics
-            .iter()
-            .map(|d| DiagRow {
-                location: match d.pos {
-                    Some(p) => format!("{}:{}:{}", d.file, p.line, p.column),
-                    None => d.file.clone(),
-                },
-                severity: d.severity.to_string(),
-                code: d.code,
-                message: &d.message,
-                hint: d.hint.as_deref().unwrap_or(""),
-            })
-            .collect();
         pages.push(Page {
             path: catalog.site_page(PageKind::Diagnostics).path("html"),
             template: "diagnostics.html",
@@ -1378,7 +1422,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 root => "",
                 title => title(lang.t("diagnostics")),
                 crumbs => ctx(&crumbs_home(lang, "")),
-                diagnostics => ctx(&rows),
+                d => ctx(&diagnostics::view(catalog)),
             }),
         });
     }

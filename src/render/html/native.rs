@@ -100,8 +100,9 @@ impl Out<'_> {
         self.raw("</ul>");
     }
 
-    /// The cells a data port row and a service interface row share: direction, name and type,
-    /// up to the opening of the next cell.
+    /// The cells a data port row and a service interface row share: direction, name and type
+    /// (labelled `type_key`), up to the opening of the next cell (labelled `next_key`).
+    #[allow(clippy::too_many_arguments)]
     fn port_row_start(
         &mut self,
         anchor: &str,
@@ -109,18 +110,31 @@ impl Out<'_> {
         direction: &str,
         name: &str,
         type_ref: &Option<PortTypeRef>,
+        type_key: &str,
+        next_key: &str,
     ) {
         self.raw("<tr id=\"");
         self.text(anchor);
-        self.raw("\">\n<td><span class=\"dir ");
+        self.raw("\">\n");
+        self.td("direction");
+        self.raw("<span class=\"dir ");
         self.text(dir_class);
         self.raw("\">");
         self.text(direction);
         self.raw("</span></td>\n<th scope=\"row\"><code>");
         self.text(name);
-        self.raw("</code></th>\n<td>");
+        self.raw("</code></th>\n");
+        self.td(type_key);
         self.type_link(type_ref);
-        self.raw("</td>\n<td>");
+        self.raw("</td>\n");
+        self.td(next_key);
+    }
+
+    /// `<td data-label="{{ t.key }}">`: the label stacked rows (cards) show at narrow widths.
+    fn td(&mut self, key: &str) {
+        self.raw("<td data-label=\"");
+        self.label(key);
+        self.raw("\">");
     }
 
     /// `<li[ class="more"]><a href="href">text</a></li>` and a line break.
@@ -221,7 +235,15 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
     o.text(o.g.generator);
     o.raw("\">\n<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data:; object-src 'none'; base-uri 'none'; form-action 'self'\">\n<title>");
     o.text(&page.title);
-    o.raw("</title>\n<link rel=\"stylesheet\" href=\"");
+    o.raw("</title>\n<meta name=\"description\" content=\"");
+    o.text(if page.description.is_empty() {
+        &page.title
+    } else {
+        &page.description
+    });
+    o.raw("\">\n<link rel=\"icon\" href=\"");
+    o.text(root);
+    o.raw("favicon.svg\" type=\"image/svg+xml\">\n<link rel=\"stylesheet\" href=\"");
     o.text(root);
     o.raw("style.css\">\n<script src=\"");
     o.text(root);
@@ -383,9 +405,18 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
         ],
     );
     for r in &p.data_ports {
-        o.port_row_start(&r.anchor, r.dir_class, &r.direction, &r.name, &r.type_ref);
+        o.port_row_start(
+            &r.anchor,
+            r.dir_class,
+            &r.direction,
+            &r.name,
+            &r.type_ref,
+            "type",
+            "unit",
+        );
         o.text(&r.unit);
-        o.raw("</td>\n<td>");
+        o.raw("</td>\n");
+        o.td("description");
         o.fields(&r.details);
         if !r.events.is_empty() {
             o.raw("<div class=\"events\"><strong>");
@@ -400,7 +431,8 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             }
             o.raw("</ul>\n</div>");
         }
-        o.raw("</td>\n<td>");
+        o.raw("</td>\n");
+        o.td("connects_to");
         o.peers(&r.peers, &r.peers_more);
         o.raw("</td>\n</tr>\n");
     }
@@ -436,9 +468,18 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.fields(&sp.details);
         o.raw("</th></tr>\n");
         for i in &sp.interfaces {
-            o.port_row_start(&i.anchor, i.dir_class, &i.direction, &i.name, &i.type_ref);
+            o.port_row_start(
+                &i.anchor,
+                i.dir_class,
+                &i.direction,
+                &i.name,
+                &i.type_ref,
+                "interface_type",
+                "description",
+            );
             o.fields(&i.details);
-            o.raw("</td>\n<td>");
+            o.raw("</td>\n");
+            o.td("connects_to");
             o.peers(&i.peers, &i.peers_more);
             o.raw("</td>\n</tr>\n");
         }
@@ -470,15 +511,22 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
         o.text(&c.anchor);
         o.raw("\">\n<th scope=\"row\"><code>");
         o.text(&c.name);
-        o.raw("</code></th>\n<td><code>");
+        o.raw("</code></th>\n");
+        o.td("type");
+        o.raw("<code>");
         o.text(&c.type_);
-        o.raw("</code></td>\n<td><code>");
+        o.raw("</code></td>\n");
+        o.td("default_value");
+        o.raw("<code>");
         o.text(&c.default);
-        o.raw("</code></td>\n<td>");
+        o.raw("</code></td>\n");
+        o.td("unit");
         o.text(&c.unit);
-        o.raw("</td>\n<td>");
+        o.raw("</td>\n");
+        o.td("constraint");
         o.text(&c.constraint);
-        o.raw("</td>\n<td>");
+        o.raw("</td>\n");
+        o.td("widget");
         o.text(&c.widget);
         if !c.step.is_empty() {
             o.raw(" (");
@@ -487,7 +535,8 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
             o.text(&c.step);
             o.raw(")");
         }
-        o.raw("</td>\n<td>");
+        o.raw("</td>\n");
+        o.td("description");
         o.fields(&c.details);
         o.raw("</td>\n</tr>\n");
     }
@@ -510,7 +559,8 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
             "\" class=\"not-impl\">\n<th scope=\"row\"><code>"
         });
         o.text(a.name);
-        o.raw("</code></th>\n<td>");
+        o.raw("</code></th>\n");
+        o.td("implemented");
         if a.implemented {
             o.raw("<span class=\"yes\">✔ ");
             o.label("yes");
@@ -518,7 +568,8 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
             o.raw("<span class=\"no\">");
             o.label("no");
         }
-        o.raw("</span></td>\n<td>");
+        o.raw("</span></td>\n");
+        o.td("description");
         o.fields(&a.details);
         o.raw("</td>\n</tr>\n");
     }
@@ -526,7 +577,7 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
 }
 
 /// The parameters or properties section (`id` is also its label key): nothing when `rows` is
-/// empty; values in `<code>` when `code`.
+/// empty; values in `<code>` when `code`; the value cells labelled as `heads[1]`.
 fn key_value_table(o: &mut Out<'_>, id: &str, heads: &[&str], rows: &[KeyValue], code: bool) {
     if rows.is_empty() {
         return;
@@ -535,11 +586,11 @@ fn key_value_table(o: &mut Out<'_>, id: &str, heads: &[&str], rows: &[KeyValue],
     for kv in rows {
         o.raw("<tr><th scope=\"row\"><code>");
         o.text(&kv.key);
-        o.raw(if code {
-            "</code></th><td><code>"
-        } else {
-            "</code></th><td>"
-        });
+        o.raw("</code></th>");
+        o.td(heads[1]);
+        if code {
+            o.raw("<code>");
+        }
         o.text(&kv.value);
         o.raw(if code {
             "</code></td></tr>\n"
@@ -606,9 +657,11 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         for e in &p.extras {
             o.raw("<tr><th scope=\"row\"><code>");
             o.text(&e.name);
-            o.raw("</code></th><td>");
+            o.raw("</code></th>");
+            o.td("extra_kind");
             o.text(e.kind);
-            o.raw("</td><td>");
+            o.raw("</td>");
+            o.td("value");
             o.text(&e.value);
             o.raw("</td></tr>\n");
         }

@@ -1,19 +1,20 @@
 //! The client-side search index, built once at build time.
 //!
-//! `search-index.js` assigns one array to `window.RTCDOC_INDEX`; loading it with a `<script>`
-//! tag works from `file://` (where `fetch()` is forbidden). Each entry is
-//! `[name, slug, category, vendor, summary, tokens]`; `tokens` is a space-separated, de-duplicated
-//! list of lower-case words from the name, description, port, interface and parameter names,
-//! data and interface types, category and vendor. Latin words are also split at camelCase and
+//! `search-index.js` assigns one object to `window.RTCDOC_INDEX` (see [`index_js`]); loading
+//! it with a `<script>` tag works from `file://` (where `fetch()` is forbidden). Every
+//! document kind has entries: components, data types, interfaces and RT Systems. Tokens are lower-case
+//! words in three ranked groups (name, identifiers, prose: see [`Groups`]). Latin words are also split at camelCase and
 //! `::` boundaries; runs of CJK characters become overlapping bigrams (a lone character stays a
 //! unigram), so Japanese text needs no dictionary. `search.js` tokenizes queries the same way
 //! and matches each query token as a prefix of some entry token.
 
 use crate::catalog::Catalog;
+use crate::i18n::Lang;
 use crate::model::non_empty;
 use crate::types::canonical_type;
 use rayon::prelude::*;
 use std::borrow::Cow;
+use std::ops::Bound::{Included, Unbounded};
 
 /// Whether `c` is written without spaces between words (kana, CJK ideographs, full-width forms).
 pub fn is_cjk(c: char) -> bool {
@@ -115,71 +116,93 @@ fn add<'a>(tokens: &mut Vec<Cow<'a, str>>, s: Option<&'a str>) {
     }
 }
 
-/// Longest description text indexed per component, in characters (keeps entries small).
+/// Longest description text indexed per description, in characters (keeps entries small).
 const MAX_DESCRIPTION: usize = 400;
 
-/// Builds the contents of `search-index.js`. The JSON is escaped so that no `<`, `>` or `&`
-/// appears literally (a `</script>` in a profile cannot end a script element).
-pub fn index_js(catalog: &Catalog) -> String {
+/// The three token groups of an entry, ranked: the entry's name; identifiers (port,
+/// configuration, field and operation names, data and interface types); prose (descriptions,
+/// category, vendor). A match in an earlier group ranks higher.
+#[derive(Default)]
+struct Groups<'a> {
+    name: Vec<Cow<'a, str>>,
+    ids: Vec<Cow<'a, str>>,
+    text: Vec<Cow<'a, str>>,
+}
+
+impl Groups<'_> {
+    /// `name|ids|text`, each a space-separated sorted list. A token is left out of a group when
+    /// it is a prefix of a token of the same or an earlier group: queries match tokens by
+    /// prefix, so it would find nothing more (this halves Japanese prose, whose bigrams
+    /// repeat).
+    fn encode(mut self) -> String {
+        let mut earlier: std::collections::BTreeSet<String> = Default::default();
+        let mut out = String::new();
+        for (gi, g) in [&mut self.name, &mut self.ids, &mut self.text]
+            .into_iter()
+            .enumerate()
+        {
+            g.sort_unstable();
+            g.dedup();
+            if gi > 0 {
+                out.push('|');
+            }
+            let mut first = true;
+            for (i, t) in g.iter().enumerate() {
+                // The name keeps every token (an exact name match ranks first).
+                let covered = gi > 0
+                    && (g.get(i + 1).is_some_and(|n| n.starts_with(t.as_ref()))
+                        || earlier
+                            .range::<str, _>((Included(t.as_ref()), Unbounded))
+                            .next()
+                            .is_some_and(|n| n.starts_with(t.as_ref())));
+                if covered {
+                    continue;
+                }
+                if !first {
+                    out.push(' ');
+                }
+                first = false;
+                out.push_str(t);
+            }
+            earlier.extend(g.iter().map(|t| t.to_string()));
+        }
+        out
+    }
+}
+
+/// Builds the contents of `search-index.js`: `window.RTCDOC_INDEX = {kinds, e}` where `kinds`
+/// maps a kind letter to its label and each entry of `e` is
+/// `[kind, name, href, meta, summary, "name|ids|text"]` (see [`Groups::encode`]). Entries are
+/// components (`c`), data types (`t`), interfaces (`i`) and RT Systems (`s`); `href` is the
+/// page's path from [`Catalog::pages`]. The JSON is escaped so that no
+/// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
+pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
     // Entries are built in parallel; the indexed collect keeps catalogue order.
-    let entries: Vec<serde_json::Value> = catalog
-        .components
-        .par_iter()
-        .map(|c| {
-            let p = &c.profile;
-            let b = &p.basic_info;
-            // Canonical type names are made first: tokens borrow from them.
-            let types: Vec<String> = p
-                .port_types()
-                .filter_map(|t| non_empty(t).map(canonical_type))
-                .collect();
-            let mut tokens: Vec<Cow<'_, str>> = Vec::new();
-            add(&mut tokens, Some(p.name()));
-            add(&mut tokens, c.qualifier.as_deref());
-            add(&mut tokens, non_empty(&b.category));
-            add(&mut tokens, non_empty(&b.vendor));
-            add(&mut tokens, non_empty(&b.description));
-            if let Some(d) = &b.doc {
-                add(&mut tokens, non_empty(&d.description));
-            }
-            for d in &p.data_ports {
-                add(&mut tokens, non_empty(&d.name));
-                for e in &d.events {
-                    add(&mut tokens, non_empty(&e.name));
-                }
-            }
-            for s in &p.service_ports {
-                add(&mut tokens, non_empty(&s.name));
-                for i in &s.interfaces {
-                    add(&mut tokens, non_empty(&i.name));
-                }
-            }
-            for t in &types {
-                add(&mut tokens, Some(t));
-            }
-            for conf in p.configurations() {
-                add(&mut tokens, non_empty(&conf.name));
-            }
-            tokens.sort_unstable();
-            tokens.dedup();
-            let summary = non_empty(&b.description)
-                .map(|d| super::markdown::first_line(d, 90))
-                .unwrap_or_default();
-            serde_json::json!([
-                c.display_name(),
-                c.slug,
-                non_empty(&b.category).unwrap_or(""),
-                non_empty(&b.vendor).unwrap_or(""),
-                summary,
-                tokens.join(" "),
-            ])
-        })
+    let mut entries: Vec<serde_json::Value> = (0..catalog.components.len())
+        .into_par_iter()
+        .map(|ci| component_entry(catalog, ci))
         .collect();
-    let mut entries = entries;
+    entries.extend(catalog.data_types.iter().enumerate().map(|(ti, t)| {
+        let page = catalog.data_type_page(ti).path("html");
+        idl_entry(catalog, "t", &page, &t.name, &t.spellings)
+    }));
+    entries.extend(catalog.interfaces.iter().enumerate().map(|(ii, t)| {
+        let page = catalog.interface_page(ii).path("html");
+        idl_entry(catalog, "i", &page, &t.name, &t.spellings)
+    }));
     entries.extend(system_entries(catalog));
-    let json = serde_json::to_string(&entries).unwrap_or_else(|_| "[]".into());
+    let index = serde_json::json!({
+        "kinds": {
+            "c": lang.t("component"),
+            "t": lang.t("data_type"),
+            "i": lang.t("interface"),
+            "s": lang.t("system"),
+        },
+        "e": entries,
+    });
+    let json = serde_json::to_string(&index).unwrap_or_else(|_| "{\"e\":[]}".into());
     // 10,000 components make megabytes of each: not all three at once.
-    drop(entries);
+    drop(index);
     let mut out = String::with_capacity(json.len() + 64);
     out.push_str("window.RTCDOC_INDEX=");
     push_js_safe_json(&mut out, &json);
@@ -187,15 +210,129 @@ pub fn index_js(catalog: &Catalog) -> String {
     out
 }
 
-/// One entry per RT System, after the components: `[name, slug, "RT System", vendor, comment,
-/// tokens, path]` — the seventh element, the page path, tells `search.js` it is not a component.
-/// Tokens: the system's name, vendor, comment, instance names, component names, port names of
-/// the connectors and their data types.
+/// The search entry of component `ci`.
+fn component_entry(catalog: &Catalog, ci: usize) -> serde_json::Value {
+    let c = &catalog.components[ci];
+    let p = &c.profile;
+    let b = &p.basic_info;
+    // Canonical type names are made first: tokens borrow from them.
+    let types: Vec<String> = p
+        .port_types()
+        .filter_map(|t| non_empty(t).map(canonical_type))
+        .collect();
+    let mut g = Groups::default();
+    add(&mut g.name, Some(p.name()));
+    add(&mut g.name, c.qualifier.as_deref());
+    add(&mut g.text, non_empty(&b.category));
+    add(&mut g.text, non_empty(&b.vendor));
+    add(&mut g.text, non_empty(&b.description));
+    if let Some(d) = &b.doc {
+        add(&mut g.text, non_empty(&d.description));
+    }
+    for d in &p.data_ports {
+        add(&mut g.ids, non_empty(&d.name));
+        if let Some(doc) = &d.doc {
+            add(&mut g.text, non_empty(&doc.description));
+        }
+        for e in &d.events {
+            add(&mut g.ids, non_empty(&e.name));
+        }
+    }
+    for s in &p.service_ports {
+        add(&mut g.ids, non_empty(&s.name));
+        if let Some(doc) = &s.doc {
+            add(&mut g.text, non_empty(&doc.description));
+        }
+        for i in &s.interfaces {
+            add(&mut g.ids, non_empty(&i.name));
+            if let Some(doc) = &i.doc {
+                add(&mut g.text, non_empty(&doc.description));
+            }
+        }
+    }
+    for t in &types {
+        add(&mut g.ids, Some(t));
+    }
+    for conf in p.configurations() {
+        add(&mut g.ids, non_empty(&conf.name));
+        if let Some(doc) = &conf.doc {
+            add(&mut g.text, non_empty(&doc.description));
+        }
+    }
+    let summary = non_empty(&b.description)
+        .map(|d| super::markdown::first_line(d, 90))
+        .unwrap_or_default();
+    let meta = [non_empty(&b.category), non_empty(&b.vendor)]
+        .into_iter()
+        .flatten()
+        .collect::<Vec<_>>()
+        .join(" · ");
+    serde_json::json!([
+        "c",
+        c.display_name(),
+        catalog.component_page(ci).path("html"),
+        meta,
+        summary,
+        g.encode(),
+    ])
+}
+
+/// The search entry of a data type (`kind` `t`) or interface (`i`): its spellings, and from
+/// its IDL definition (when the catalogue has it) field, value, operation, parameter and
+/// attribute names and their documentation.
+fn idl_entry(
+    catalog: &Catalog,
+    kind: &str,
+    page: &str,
+    name: &str,
+    spellings: &[String],
+) -> serde_json::Value {
+    let def = crate::render::idl_view::definition(catalog, name);
+    let mut g = Groups::default();
+    add(&mut g.name, Some(name));
+    for s in spellings {
+        add(&mut g.ids, Some(s));
+    }
+    let mut summary = String::new();
+    if let Some(d) = &def {
+        add(&mut g.text, Some(&d.brief));
+        add(&mut g.text, Some(&d.details));
+        for f in &d.fields {
+            add(&mut g.ids, Some(&f.name));
+            add(&mut g.text, Some(&f.doc));
+        }
+        for v in &d.values {
+            add(&mut g.ids, Some(&v.name));
+            add(&mut g.text, Some(&v.doc));
+        }
+        for o in &d.operations {
+            add(&mut g.ids, Some(&o.name));
+            add(&mut g.text, Some(&o.doc));
+            for p in &o.params {
+                add(&mut g.ids, Some(&p.name));
+            }
+        }
+        for a in &d.attributes {
+            add(&mut g.ids, Some(&a.name));
+            add(&mut g.text, Some(&a.doc));
+        }
+        summary = super::markdown::first_line(&d.brief, 90);
+    }
+    let meta = def
+        .as_ref()
+        .map(|d| format!("{} · {}", d.kind, d.file))
+        .unwrap_or_default();
+    serde_json::json!([kind, name, page, meta, summary, g.encode(),])
+}
+
+/// One entry per RT System (`kind` `s`): its name; the instance and component names, the
+/// connected ports and their data types; the vendor, comment and abstract as text.
 fn system_entries(catalog: &Catalog) -> Vec<serde_json::Value> {
     catalog
         .systems
         .iter()
-        .map(|s| {
+        .enumerate()
+        .map(|(si, s)| {
             let p = &s.profile;
             let vendor = p
                 .id_parts
@@ -207,41 +344,37 @@ fn system_entries(catalog: &Catalog) -> Vec<serde_json::Value> {
                 .iter()
                 .filter_map(|c| non_empty(&c.data_type).map(canonical_type))
                 .collect();
-            let mut tokens: Vec<Cow<'_, str>> = Vec::new();
-            add(&mut tokens, Some(p.name()));
-            add(&mut tokens, Some(vendor));
-            add(&mut tokens, non_empty(&p.comment));
-            add(&mut tokens, non_empty(&p.abstract_));
+            let mut g = Groups::default();
+            add(&mut g.name, Some(p.name()));
+            add(&mut g.text, Some(vendor));
+            add(&mut g.text, non_empty(&p.comment));
+            add(&mut g.text, non_empty(&p.abstract_));
             for c in &p.components {
-                add(&mut tokens, non_empty(&c.instance_name));
+                add(&mut g.ids, non_empty(&c.instance_name));
                 add(
-                    &mut tokens,
+                    &mut g.ids,
                     c.id_parts.as_ref().and_then(|x| non_empty(&x.name)),
                 );
             }
             for c in &p.data_port_connectors {
                 for e in [&c.source, &c.target].into_iter().flatten() {
-                    add(&mut tokens, non_empty(&e.short_name));
+                    add(&mut g.ids, non_empty(&e.short_name));
                 }
             }
             for t in &types {
-                add(&mut tokens, Some(t));
+                add(&mut g.ids, Some(t));
             }
-            tokens.push(Cow::Borrowed("system"));
-            tokens.sort_unstable();
-            tokens.dedup();
             let summary = non_empty(&p.comment)
                 .or_else(|| non_empty(&p.abstract_))
                 .map(|d| super::markdown::first_line(d, 90))
                 .unwrap_or_default();
             serde_json::json!([
+                "s",
                 p.name(),
-                s.slug,
-                "RT System",
+                catalog.system_page(si).path("html"),
                 vendor,
                 summary,
-                tokens.join(" "),
-                super::systems::system_path(catalog, s),
+                g.encode(),
             ])
         })
         .collect()

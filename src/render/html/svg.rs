@@ -59,10 +59,23 @@ pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::
     out.write_str(&s[start..])
 }
 
-/// Approximate rendered width of `s` in pixels at 12 px sans-serif (CJK glyphs are square).
+/// Approximate rendered width of `s` in pixels at `px` sans-serif, erring wide so that no
+/// label is cut at the SVG edge: CJK glyphs are square, capitals and `m`/`w` wider than the
+/// average letter (DejaVu Sans, the Debian default, sets `TimedRGBDCameraImage` at ~0.66 em a
+/// character), narrow letters and punctuation narrower.
 fn text_width(s: &str, px: f32) -> f32 {
     s.chars()
-        .map(|c| if (c as u32) >= 0x2E80 { px } else { px * 0.6 })
+        .map(|c| {
+            let em = match c {
+                _ if (c as u32) >= 0x2E80 => 1.0,
+                'M' | 'W' | 'm' | 'w' => 0.9,
+                'I' => 0.4,
+                'A'..='Z' => 0.74,
+                'i' | 'j' | 'l' | 't' | 'f' | 'r' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.4,
+                _ => 0.62,
+            };
+            px * em
+        })
         .sum()
 }
 
@@ -221,7 +234,7 @@ pub fn component_diagram(
     let mut s = String::with_capacity(4096);
     let _ = write!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram component-diagram" viewBox="0 0 {width} {height}" width="{width}" height="{height}" role="img" aria-label="{}"><title>{}</title>"#,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram component-diagram" viewBox="0 0 {width} {height}" width="{width}" height="{height}" role="group" aria-label="{}"><title>{}</title>"#,
         esc(title),
         esc(title)
     );
@@ -267,8 +280,9 @@ pub fn component_diagram(
                     };
                     let _ = write!(
                         s,
-                        r##"<a href="#{}" class="port service"><rect class="port-square" x="{rx}" y="{ry}" width="{rw}" height="{rh}"/></a>"##,
-                        esc(&port.anchor)
+                        r##"<a href="#{}" class="port service" aria-label="{}"><rect class="port-square" x="{rx}" y="{ry}" width="{rw}" height="{rh}"/></a>"##,
+                        esc(&port.anchor),
+                        esc(&port.name)
                     );
                     for k in 0..span {
                         let (px, py) = edge_point(*side, i + k, bx, by, box_w, box_h);

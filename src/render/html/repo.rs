@@ -1,0 +1,68 @@
+//! The repository around the profiles: the `source-url` setting, a template such as
+//! `https://github.com/org/repo/blob/main/{path}` that turns the "Source" of a component page
+//! into a link to the file in its repository.
+
+/// The URL of `path` (input-relative, `/`-separated) under `template`: every `{path}` is
+/// replaced by the path with each segment percent-encoded (RFC 3986 unreserved characters and
+/// `/` stay as they are). `None` when the template has no `{path}` (a link to the same page
+/// for every component would be wrong) or is not an http(s) URL (a `javascript:` URL must
+/// never reach a page).
+pub fn source_url(template: &str, path: &str) -> Option<String> {
+    let t = template.trim();
+    let scheme_ok = t.starts_with("https://") || t.starts_with("http://");
+    if !scheme_ok || !t.contains("{path}") {
+        return None;
+    }
+    let mut enc = String::with_capacity(path.len());
+    for b in path.replace('\\', "/").bytes() {
+        match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                enc.push(b as char)
+            }
+            _ => enc.push_str(&format!("%{b:02X}")),
+        }
+    }
+    Some(t.replace("{path}", enc.trim_start_matches('/')))
+}
+
+/// The HTML of a "Source" value linked to `url` (both escaped).
+pub fn source_link_html(url: &str, path: &str) -> String {
+    format!(
+        "<a href=\"{}\"><code>{}</code></a>",
+        super::svg::esc(url),
+        super::svg::esc(path)
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn github_and_gitlab_templates() {
+        assert_eq!(
+            source_url(
+                "https://github.com/org/repo/blob/main/{path}",
+                "vision/Usb Camera/RTC.xml"
+            )
+            .as_deref(),
+            Some("https://github.com/org/repo/blob/main/vision/Usb%20Camera/RTC.xml")
+        );
+        assert_eq!(
+            source_url(
+                "https://gitlab.com/org/repo/-/blob/main/profiles/{path}",
+                "画像/RTC.xml"
+            )
+            .as_deref(),
+            Some("https://gitlab.com/org/repo/-/blob/main/profiles/%E7%94%BB%E5%83%8F/RTC.xml")
+        );
+    }
+
+    #[test]
+    fn unsafe_or_pathless_templates_give_no_link() {
+        assert_eq!(source_url("javascript:alert(1)//{path}", "a.xml"), None);
+        assert_eq!(source_url("https://github.com/org/repo", "a.xml"), None);
+        let h = source_link_html("https://x.org/?a=1&b=\"2\"", "<a>.xml");
+        assert!(h.contains("&amp;b=&quot;2&quot;") && h.contains("&lt;a&gt;.xml"));
+    }
+}

@@ -1,0 +1,154 @@
+// Audits a generated rtcdoc site in headless Chromium (puppeteer-core driving the system
+// chromium): axe-core on one page of every kind in light, dark and at 390 px, the page width
+// and sideways-scrolling regions at 390 px, and the search (kinds, ranking, ?q=, Enter).
+//
+//   node tests/browser/audit.mjs SITE_DIR [--search QUERY=EXPECTED_HREF_PART ...] [--page REL ...]
+//
+// Prints one JSON object on stdout: {pages:[{page, mode, violations:[...], width, scrollers:[...]}],
+// searches:[...], errors:[...]} and exits 0; the Rust test (tests/html_browser.rs) asserts on it.
+import puppeteer from 'puppeteer-core';
+import fs from 'node:fs';
+import path from 'node:path';
+import http from 'node:http';
+import { createRequire } from 'node:module';
+
+const require = createRequire(import.meta.url);
+const axeSource = fs.readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
+const CHROMIUM = process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium';
+const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa', 'best-practice'];
+
+const args = process.argv.slice(2);
+const site = path.resolve(args.shift() || '.');
+const searches = [];
+const extraPages = [];
+for (let i = 0; i < args.length; i++) {
+  if (args[i] === '--search') { searches.push(args[++i]); }
+  else if (args[i] === '--page') { extraPages.push(args[++i]); }
+}
+
+/** The largest file of a folder (the page with the most content of its kind). */
+function largest(dir, skip) {
+  const d = path.join(site, dir);
+  if (!fs.existsSync(d)) { return null; }
+  let best = null;
+  for (const f of fs.readdirSync(d)) {
+    if (!f.endsWith('.html') || f === skip) { continue; }
+    const s = fs.statSync(path.join(d, f)).size;
+    if (!best || s > best.s) { best = { f, s }; }
+  }
+  return best ? `${dir}/${best.f}` : null;
+}
+
+/** One page of every kind the site has. */
+function pageKinds() {
+  // The 404 page as a server sends it for a missing page deep below the root.
+  const pages = ['index.html', 'search.html?q=camera', 'no/such/deep/page.html'];
+  if (fs.existsSync(path.join(site, 'diagnostics.html'))) { pages.push('diagnostics.html'); }
+  for (const dir of ['components', 'types', 'interfaces', 'categories', 'vendors', 'systems']) {
+    if (fs.existsSync(path.join(site, dir, 'index.html'))) { pages.push(`${dir}/index.html`); }
+    const p = largest(dir, 'index.html');
+    if (p) { pages.push(p); }
+  }
+  return pages.concat(extraPages);
+}
+
+const MODES = [
+  { name: 'light', width: 1280, height: 900, scheme: 'light' },
+  { name: 'dark', width: 1280, height: 900, scheme: 'dark' },
+  { name: 'phone', width: 390, height: 844, scheme: 'light' },
+];
+
+// The site is served over HTTP on loopback, as a static host would: a missing file gets
+// 404.html with status 404 (how GitHub Pages, GitLab Pages and `rtcdoc serve` answer).
+const TYPES = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.css': 'text/css', '.svg': 'image/svg+xml' };
+const server = http.createServer((req, res) => {
+  let rel = decodeURIComponent(new URL(req.url, 'http://x').pathname).replace(/^\/+/, '');
+  if (rel === '' || rel.endsWith('/')) { rel += 'index.html'; }
+  let file = path.join(site, path.normalize(rel));
+  let status = 200;
+  if (!file.startsWith(site) || !fs.existsSync(file) || !fs.statSync(file).isFile()) {
+    file = path.join(site, '404.html');
+    status = 404;
+  }
+  res.writeHead(status, { 'content-type': TYPES[path.extname(file)] || 'application/octet-stream' });
+  res.end(fs.readFileSync(file));
+});
+await new Promise((r) => server.listen(0, '127.0.0.1', r));
+const origin = `http://127.0.0.1:${server.address().port}/`;
+const url = (rel) => origin + rel;
+
+const report = { pages: [], searches: [], errors: [] };
+const browser = await puppeteer.launch({
+  executablePath: CHROMIUM,
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
+});
+try {
+  const page = await browser.newPage();
+  page.on('pageerror', (e) => report.errors.push(String(e)));
+  for (const rel of pageKinds()) {
+    for (const m of MODES) {
+      await page.setViewport({ width: m.width, height: m.height, isMobile: m.width < 500 });
+      await page.emulateMediaFeatures([{ name: 'prefers-color-scheme', value: m.scheme }]);
+      await page.goto(url(rel), { waitUntil: 'load' });
+      // The search page fills its results after the index script loaded.
+      await new Promise((r) => setTimeout(r, rel.startsWith('search') ? 300 : 30));
+      await page.evaluate(axeSource);
+      const res = await page.evaluate(async (tags) => {
+        // eslint-disable-next-line no-undef
+        const r = await axe.run(document, { runOnly: { type: 'tag', values: tags }, resultTypes: ['violations'] });
+        return r.violations.map((v) => ({
+          id: v.id, impact: v.impact, help: v.help,
+          nodes: v.nodes.length,
+          sample: v.nodes.slice(0, 3).map((n) => ({ target: n.target.join(' '), summary: n.failureSummary })),
+        }));
+      }, TAGS);
+      const layout = await page.evaluate(() => {
+        const width = document.documentElement.scrollWidth;
+        const scrollers = [];
+        for (const el of document.querySelectorAll('body *')) {
+          if (el.scrollWidth > el.clientWidth + 1) {
+            const ox = getComputedStyle(el).overflowX;
+            if (ox === 'auto' || ox === 'scroll') {
+              scrollers.push({ tag: el.tagName.toLowerCase(), cls: String(el.className && el.className.baseVal !== undefined ? el.className.baseVal : el.className), by: el.scrollWidth - el.clientWidth });
+            }
+          }
+        }
+        return { width, scrollers };
+      });
+      report.pages.push({ page: rel, mode: m.name, violations: res, width: layout.width, scrollers: m.width < 500 ? layout.scrollers : [] });
+    }
+  }
+  // Search: type QUERY into the search page, wait for results; check ?q= and Enter.
+  for (const s of searches) {
+    const [q, expect] = s.split('=');
+    await page.setViewport({ width: 1280, height: 900 });
+    await page.goto(url('search.html'), { waitUntil: 'load' });
+    await page.focus('#search-input');
+    await page.keyboard.type(q);
+    await page.waitForFunction(() => document.querySelectorAll('#search-results a').length > 0
+      || /0|—/.test((document.getElementById('search-status') || {}).textContent || ''), { timeout: 3000 }).catch(() => {});
+    const got = await page.evaluate(() => ({
+      query: new URLSearchParams(location.search).get('q'),
+      results: Array.from(document.querySelectorAll('#search-results a')).map((a) => ({
+        href: a.getAttribute('href'),
+        name: (a.querySelector('.r-name') || {}).textContent || '',
+        kind: (a.querySelector('.r-kind') || {}).textContent || '',
+      })),
+    }));
+    let opened = null;
+    if (got.results.length) {
+      await page.focus('#search-input');
+      await page.keyboard.press('Enter');
+      await page.waitForFunction(() => !/search\.html/.test(location.pathname), { timeout: 3000 }).catch(() => {});
+      opened = page.url().replace(origin, '');
+    }
+    report.searches.push({ q, expect, url_q: got.query, results: got.results.slice(0, 20), count: got.results.length, opened });
+  }
+} catch (e) {
+  report.errors.push(String(e && e.stack || e));
+} finally {
+  await browser.close();
+  server.close();
+}
+process.stdout.write(JSON.stringify(report) + '\n');
