@@ -268,7 +268,7 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
         let (x, y) = pos[i];
         let _ = write!(
             s,
-            r#"<g class="instance"><a href="{}" aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+            r#"<g class="instance"><a href="{}" aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{}" y="{}" text-anchor="middle">{}"#,
             esc(&it.href),
             g.w,
             g.h,
@@ -277,16 +277,17 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
             esc(&clip(&it.name, 40)),
             l = esc(&it.label),
         );
+        // The component's name is a second line of the same text, after a space: the link's
+        // visible text reads "instance component", as its accessible name begins.
         if !it.component.is_empty() {
             let _ = write!(
                 s,
-                r#"<text class="stereotype" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+                r#"<tspan class="stereotype" x="{}" dy="16"> {}</tspan>"#,
                 x + g.w / 2.0,
-                y + 34.0,
                 esc(&clip(&it.component, 40))
             );
         }
-        s.push_str("</a>");
+        s.push_str("</text></a>");
         for (side, list) in [(false, &g.left), (true, &g.right)] {
             for &k in list.iter() {
                 let p = &it.ports[k];

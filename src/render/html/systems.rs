@@ -502,20 +502,23 @@ impl Site<'_> {
                     }
                 })
                 .collect();
+            let component = comp
+                .map(|k| k.display_name().into_owned())
+                .or_else(|| {
+                    c.id_parts
+                        .as_ref()
+                        .and_then(|x| non_empty(&x.name))
+                        .map(str::to_string)
+                })
+                .unwrap_or_default();
             wire.push(WireInstance {
-                label: match comp {
-                    Some(k) => format!("{} {iname} ({})", lang.t("instance"), k.display_name()),
-                    None => format!("{} {iname}", lang.t("instance")),
+                // The accessible name starts with the box's visible text (WCAG 2.5.3).
+                label: if component.is_empty() {
+                    format!("{iname} ({})", lang.t("instance"))
+                } else {
+                    format!("{iname} {component} ({})", lang.t("instance"))
                 },
-                component: comp
-                    .map(|k| k.display_name().into_owned())
-                    .or_else(|| {
-                        c.id_parts
-                            .as_ref()
-                            .and_then(|x| non_empty(&x.name))
-                            .map(str::to_string)
-                    })
-                    .unwrap_or_default(),
+                component,
                 name: iname,
                 href: format!("#{anchor}"),
                 ports,
