@@ -1024,83 +1024,92 @@ impl Catalog {
 
     /// Computes [`Catalog::pages`] from the entries and their slugs.
     fn index_pages(&mut self) {
-        let page = |kind, id: &str, stem: String, title: &str| Page {
+        let site = |kind, stem: &str| Page {
             kind,
-            id: id.to_string(),
-            stem,
-            title: title.to_string(),
+            id: String::new(),
+            stem: stem.to_string(),
+            title: String::new(),
         };
-        let site = |kind, stem: &str| page(kind, "", stem.to_string(), "");
         let mut pages = vec![
             site(PageKind::Index, "index"),
             site(PageKind::Search, "search"),
             site(PageKind::Diagnostics, "diagnostics"),
             site(PageKind::NotFound, "404"),
         ];
-        let mut starts = PageStarts {
-            component: pages.len(),
-            ..PageStarts::default()
-        };
-        pages.extend(self.components.iter().map(|c| {
-            page(
-                PageKind::Component,
-                &c.id,
-                format!("components/{}", c.slug),
-                &c.display_name(),
-            )
-        }));
-        pages.push(site(PageKind::DataTypes, "types/index"));
-        starts.data_type = pages.len();
-        pages.extend(self.data_types.iter().map(|t| {
-            page(
-                PageKind::DataType,
-                &t.name,
-                format!("types/{}", t.slug),
-                &t.name,
-            )
-        }));
-        pages.push(site(PageKind::Interfaces, "interfaces/index"));
-        starts.interface = pages.len();
-        pages.extend(self.interfaces.iter().map(|t| {
-            page(
-                PageKind::Interface,
-                &t.name,
-                format!("interfaces/{}", t.slug),
-                &t.name,
-            )
-        }));
-        pages.push(site(PageKind::Categories, "categories/index"));
-        starts.category = pages.len();
-        pages.extend(self.categories.iter().map(|f| {
-            page(
-                PageKind::Category,
-                &f.name,
-                format!("categories/{}", f.slug),
-                &f.name,
-            )
-        }));
-        pages.push(site(PageKind::Vendors, "vendors/index"));
-        starts.vendor = pages.len();
-        pages.extend(self.vendors.iter().map(|f| {
-            page(
-                PageKind::Vendor,
-                &f.name,
-                format!("vendors/{}", f.slug),
-                &f.name,
-            )
-        }));
-        if !self.systems.is_empty() {
-            pages.push(site(PageKind::Systems, "systems/index"));
+        // One kind of entry: its index page (when it has one), then a page per entry, as
+        // (id, slug, title) in the entries' order; gives where the entries' pages start.
+        fn section<'a>(
+            pages: &mut Vec<Page>,
+            index: Option<Page>,
+            kind: PageKind,
+            dir: &str,
+            entries: impl Iterator<Item = (&'a str, &'a str, std::borrow::Cow<'a, str>)>,
+        ) -> usize {
+            pages.extend(index);
+            let start = pages.len();
+            pages.extend(entries.map(|(id, slug, title)| Page {
+                kind,
+                id: id.to_string(),
+                stem: format!("{dir}/{slug}"),
+                title: title.into_owned(),
+            }));
+            start
         }
-        starts.system = pages.len();
-        pages.extend(self.systems.iter().map(|s| {
-            page(
+        fn facet(f: &Facet) -> (&str, &str, std::borrow::Cow<'_, str>) {
+            (&f.name, &f.slug, f.name.as_str().into())
+        }
+        let starts = PageStarts {
+            component: section(
+                &mut pages,
+                None,
+                PageKind::Component,
+                "components",
+                self.components
+                    .iter()
+                    .map(|c| (&*c.id, c.slug.as_str(), c.display_name())),
+            ),
+            data_type: section(
+                &mut pages,
+                Some(site(PageKind::DataTypes, "types/index")),
+                PageKind::DataType,
+                "types",
+                self.data_types
+                    .iter()
+                    .map(|t| (t.name.as_str(), t.slug.as_str(), t.name.as_str().into())),
+            ),
+            interface: section(
+                &mut pages,
+                Some(site(PageKind::Interfaces, "interfaces/index")),
+                PageKind::Interface,
+                "interfaces",
+                self.interfaces
+                    .iter()
+                    .map(|t| (t.name.as_str(), t.slug.as_str(), t.name.as_str().into())),
+            ),
+            category: section(
+                &mut pages,
+                Some(site(PageKind::Categories, "categories/index")),
+                PageKind::Category,
+                "categories",
+                self.categories.iter().map(facet),
+            ),
+            vendor: section(
+                &mut pages,
+                Some(site(PageKind::Vendors, "vendors/index")),
+                PageKind::Vendor,
+                "vendors",
+                self.vendors.iter().map(facet),
+            ),
+            system: section(
+                &mut pages,
+                (!self.systems.is_empty()).then(|| site(PageKind::Systems, "systems/index")),
                 PageKind::System,
-                &s.source,
-                format!("systems/{}", s.slug),
-                s.profile.name(),
-            )
-        }));
+                "systems",
+                self.systems
+                    .iter()
+                    .map(|s| (s.source.as_str(), s.slug.as_str(), s.profile.name().into())),
+            ),
+        };
         self.pages = pages;
         self.page_starts = starts;
     }

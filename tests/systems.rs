@@ -163,8 +163,8 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     let labels: Vec<&str> = links.iter().filter_map(|t| t.attr("aria-label")).collect();
     assert_eq!(links.len(), labels.len(), "every link is named");
     for l in [
-        "Instance Camera0 (Camera)",
-        "Instance Planner0 (Planner)",
+        "Camera0 Camera (Instance)",
+        "Planner0 Planner (Instance)",
         "out-port Camera0.image",
         "in-port Planner0.image",
         "out-port Planner0.path",
