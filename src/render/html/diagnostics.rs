@@ -63,10 +63,11 @@ fn rank(s: Severity) -> u8 {
 /// The view of `catalog.diagnostics`: files with errors first (most errors first, then by
 /// path), within a file errors before warnings in position order.
 pub(super) fn view(catalog: &Catalog) -> DiagnosticsView<'_> {
-    let pages: HashMap<&str, &str> = catalog
+    let pages: HashMap<&str, String> = catalog
         .components
         .iter()
-        .map(|c| (c.source.as_str(), c.slug.as_str()))
+        .enumerate()
+        .map(|(ci, c)| (c.source.as_str(), catalog.component_page(ci).path("html")))
         .collect();
     let count = |s: Severity| {
         catalog
@@ -92,7 +93,7 @@ pub(super) fn view(catalog: &Catalog) -> DiagnosticsView<'_> {
             list.sort_by_key(|d| (rank(d.severity), d.pos.map(|p| (p.line, p.column))));
             FileGroup {
                 file,
-                href: pages.get(file).map(|s| format!("components/{s}.html")),
+                href: pages.get(file).cloned(),
                 errors: list
                     .iter()
                     .filter(|d| d.severity == Severity::Error)

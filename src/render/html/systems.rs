@@ -258,7 +258,13 @@ impl Site<'_> {
                     name: txt(&c.instance_name),
                     component: comp.map(|k| Link {
                         text: k.display_name().into_owned(),
-                        href: format!("{ROOT}components/{}.html", k.slug),
+                        href: self
+                            .catalog
+                            .component_index(&k.id)
+                            .map(|ci| {
+                                format!("{ROOT}{}", self.catalog.component_page(ci).path("html"))
+                            })
+                            .unwrap_or_default(),
                     }),
                     id: txt(&c.id),
                     drift: s.instances[i].version_drift.clone(),
@@ -357,8 +363,8 @@ impl Site<'_> {
                     text: t.to_string(),
                     href: self
                         .catalog
-                        .data_type(t)
-                        .map(|d| format!("{ROOT}types/{}.html", d.slug))
+                        .data_type_index(t)
+                        .map(|d| format!("{ROOT}{}", self.catalog.data_type_page(d).path("html")))
                         .unwrap_or_default(),
                 }),
                 interface_type: txt(&c.interface_type),
@@ -394,8 +400,10 @@ impl Site<'_> {
                             text: t.to_string(),
                             href: self
                                 .catalog
-                                .interface(t)
-                                .map(|d| format!("{ROOT}interfaces/{}.html", d.slug))
+                                .interface_index_of(t)
+                                .map(|d| {
+                                    format!("{ROOT}{}", self.catalog.interface_page(d).path("html"))
+                                })
                                 .unwrap_or_default(),
                         });
                     }
