@@ -1160,14 +1160,10 @@ impl Catalog {
         &self.pages[self.page_starts.system + si]
     }
 
-    /// The page of a system of the catalogue (found by identity; there are few systems).
-    pub fn page_of_system(&self, s: &systems::System) -> &Page {
-        let si = self
-            .systems
-            .iter()
-            .position(|x| std::ptr::eq(x, s))
-            .unwrap_or(0);
-        self.system_page(si)
+    /// The page of a system of the catalogue, found by its key (its file).
+    pub fn page_of_system(&self, s: &systems::System) -> Option<&Page> {
+        let si = self.systems.iter().position(|x| x.source == s.source)?;
+        Some(self.system_page(si))
     }
 
     /// The position of the component with id `id` in [`Catalog::components`].

@@ -67,6 +67,20 @@ struct PageEntry {
     title: String,
 }
 
+/// [`Catalog::pages`] as `catalog.json` lists them.
+fn page_entries(catalog: &Catalog) -> Vec<PageEntry> {
+    catalog
+        .pages()
+        .iter()
+        .map(|p| PageEntry {
+            path: p.path_in(Output::Html),
+            kind: p.kind,
+            id: p.id.clone(),
+            title: p.title.clone(),
+        })
+        .collect()
+}
+
 /// The whole document; `components` is left out of the skeleton [`write_json`] fills in.
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
@@ -102,16 +116,7 @@ fn document<'a>(
         interfaces: Keyed(&catalog.interfaces, interface_key),
         categories: Keyed(&catalog.categories, facet_key),
         vendors: Keyed(&catalog.vendors, facet_key),
-        pages: catalog
-            .pages()
-            .iter()
-            .map(|p| PageEntry {
-                path: p.path_in(Output::Html),
-                kind: p.kind,
-                id: p.id.clone(),
-                title: p.title.clone(),
-            })
-            .collect(),
+        pages: page_entries(catalog),
         diagnostics: &catalog.diagnostics,
         idl: &catalog.idl,
         systems: Keyed(systems, system_key),
@@ -367,17 +372,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
             })
             .collect(),
     );
-    let pages: Vec<PageEntry> = catalog
-        .pages()
-        .iter()
-        .map(|p| PageEntry {
-            path: p.path_in(Output::Html),
-            kind: p.kind,
-            id: p.id.clone(),
-            title: p.title.clone(),
-        })
-        .collect();
-    if pages != doc.pages {
+    if page_entries(&catalog) != doc.pages {
         anyhow::bail!("{name}: the `pages` list does not match the entries' slugs: the file was edited; build it again");
     }
     Ok(ReadCatalog {

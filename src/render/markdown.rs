@@ -316,14 +316,10 @@ fn component_page(cat: &Catalog, ci: usize, cat_page: &Page, title: &str, lang: 
     if !used.is_empty() {
         heading(&mut out, 2, "sec-systems", lang.t("sys_used_by"));
         for (text, s) in used {
-            w!(
-                out,
-                "- {}",
-                link(
-                    &text,
-                    &format!("../{}", cat.page_of_system(s).path_in(Output::Markdown))
-                )
-            );
+            if let Some(page) = cat.page_of_system(s) {
+                let href = format!("../{}", page.path_in(Output::Markdown));
+                w!(out, "- {}", link(&text, &href));
+            }
         }
         w!(out);
     }
@@ -412,14 +408,10 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
             lang.t("sys_carried_by"),
         );
         for (text, s) in carried {
-            w!(
-                out,
-                "- {}",
-                link(
-                    &text,
-                    &format!("../{}", cat.page_of_system(s).path_in(Output::Markdown))
-                )
-            );
+            if let Some(page) = cat.page_of_system(s) {
+                let href = format!("../{}", page.path_in(Output::Markdown));
+                w!(out, "- {}", link(&text, &href));
+            }
         }
         w!(out);
     }

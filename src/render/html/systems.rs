@@ -16,7 +16,9 @@ const ROOT: &str = "../";
 
 /// The page path of a system ([`Catalog::pages`]).
 pub fn system_path(cat: &crate::catalog::Catalog, s: &System) -> String {
-    cat.page_of_system(s).path("html")
+    cat.page_of_system(s)
+        .map(|p| p.path("html"))
+        .unwrap_or_default()
 }
 
 fn txt(v: &Option<Text>) -> String {
