@@ -625,8 +625,9 @@ fn search_index_is_compact() {
 }
 
 /// A data port row says each fact once: the unit is in its column (not again under
-/// Description), and a documented type or unit equal to the port's is not repeated; one that
-/// differs is kept (nothing lost). `source-url` links "Source" to the file.
+/// Description), a port without a unit of its own shows its documented unit there, and a
+/// documented type or unit equal to the port's is not repeated; one that differs is kept
+/// (nothing lost). `source-url` links "Source" to the file.
 #[test]
 fn port_rows_say_each_fact_once_and_source_links_to_the_repository() {
     let dir = tempfile::tempdir().unwrap();
@@ -639,12 +640,19 @@ fn port_rows_say_each_fact_once_and_source_links_to_the_repository() {
         unit: s("m"),
         ..Default::default()
     });
-    let mut differs = data_port("DataOutPort", "speed", "RTC::TimedDouble");
-    differs.doc = Some(rtcdoc::model::DataPortDoc {
+    let mut documented = data_port("DataOutPort", "speed", "RTC::TimedDouble");
+    documented.doc = Some(rtcdoc::model::DataPortDoc {
         unit: s("m/s"),
         ..Default::default()
     });
-    c.data_ports = vec![same, differs];
+    let mut differs = data_port("DataOutPort", "heading", "RTC::TimedDouble");
+    differs.unit = s("rad");
+    differs.doc = Some(rtcdoc::model::DataPortDoc {
+        type_: s("RTC::TimedFloat"),
+        unit: s("deg"),
+        ..Default::default()
+    });
+    c.data_ports = vec![same, documented, differs];
     let site = SiteOptions {
         source_url: Some("https://github.com/lab/robots/blob/main/{path}".into()),
         ..Default::default()
@@ -661,11 +669,151 @@ fn port_rows_say_each_fact_once_and_source_links_to_the_repository() {
     assert!(!pose.contains("Documented type"), "type twice: {pose}");
     assert!(!pose.contains("Documented unit"), "unit twice: {pose}");
     let speed = row(&cat.components[0].anchors.data_ports[1]);
+    assert!(speed.contains("<td data-label=\"Unit\">m/s</td>"), "{speed}");
+    assert!(!speed.contains("Documented unit"), "unit twice: {speed}");
+    let heading = row(&cat.components[0].anchors.data_ports[2]);
+    assert!(heading.contains("<td data-label=\"Unit\">rad</td>"), "{heading}");
     assert!(
-        speed.contains("<dt>Documented unit</dt><dd><p>m/s</p>"),
-        "{speed}"
+        heading.contains("<dt>Documented unit</dt><dd><p>deg</p>"),
+        "{heading}"
+    );
+    assert!(
+        heading.contains("<dt>Documented type</dt><dd><p>RTC::TimedFloat</p>"),
+        "{heading}"
     );
     assert!(html.contains(
         "<dt>Source</dt><dd><a href=\"https://github.com/lab/robots/blob/main/c000/RTC.xml\"><code>c000/RTC.xml</code></a></dd>"
     ));
+}
+
+/// A component page leaves out a table column that is empty in every row (no Unit column
+/// without units, no Description column for a lifecycle nobody described), shows the editor
+/// widget once (in its column, with its meaning and step; not again under Description), a
+/// documented default equal to the default once, and each target environment in a block of its
+/// own. The Markdown page leaves out the same empty columns.
+#[test]
+fn component_tables_have_no_empty_column_and_say_the_widget_once() {
+    use rtcdoc::model::{
+        Configuration, ConfigurationDoc, ConfigurationSet, Language, Property, Target,
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let mut c = component("Arm", "Manipulator");
+    c.data_ports = vec![data_port("DataInPort", "joints", "RTC::TimedDoubleSeq")];
+    let widget = |w: &str| Property {
+        name: s("__widget__"),
+        value: s(w),
+        ..Default::default()
+    };
+    c.configuration_set = Some(ConfigurationSet {
+        configurations: vec![
+            Configuration {
+                name: s("gain"),
+                type_: s("double"),
+                default_value: s("0.5"),
+                doc: Some(ConfigurationDoc {
+                    default_value: s("0.5"),
+                    description: s("Gain of the controller."),
+                    ..Default::default()
+                }),
+                properties: vec![
+                    widget("slider"),
+                    Property {
+                        name: s("__step__"),
+                        value: s("0.1"),
+                        ..Default::default()
+                    },
+                ],
+                ..Default::default()
+            },
+            Configuration {
+                name: s("port"),
+                type_: s("string"),
+                default_value: s("COM1"),
+                properties: vec![widget("text")],
+                ..Default::default()
+            },
+        ],
+        ..Default::default()
+    });
+    c.language = Some(Language {
+        kind: s("C++"),
+        targets: vec![
+            Target {
+                os: s("Linux"),
+                os_versions: vec!["Ubuntu 22.04".into()],
+                ..Default::default()
+            },
+            Target {
+                os: s("Windows"),
+                cpus: vec!["x86_64".into()],
+                ..Default::default()
+            },
+        ],
+        ..Default::default()
+    });
+    let cat = render_catalog(vec![c], &out, &SiteOptions::default());
+    let html = read(&out.join(format!("components/{}.html", cat.components[0].slug)));
+    let table = |id: &str| {
+        let start = html.find(&format!("<section id=\"{id}\"")).unwrap();
+        html[start..start + html[start..].find("</section>").unwrap()].to_string()
+    };
+    let heads = |t: &str| -> Vec<String> {
+        t.split("<th scope=\"col\">")
+            .skip(1)
+            .map(|h| h[..h.find("</th>").unwrap()].to_string())
+            .collect()
+    };
+    let ports = table("data-ports");
+    assert_eq!(heads(&ports), ["Direction", "Name", "Type"], "{ports}");
+    let conf = table("configuration");
+    assert_eq!(
+        heads(&conf),
+        ["Name", "Type", "Default", "Widget", "Description"],
+        "{conf}"
+    );
+    assert!(
+        conf.contains("<td data-label=\"Widget\">slider (slider), Step 0.1</td>"),
+        "{conf}"
+    );
+    assert!(
+        conf.contains("<td data-label=\"Widget\">text (text box)</td>"),
+        "{conf}"
+    );
+    assert!(!conf.contains("<dt>Widget</dt>"), "widget twice: {conf}");
+    assert!(!conf.contains("<dt>Step</dt>"), "step twice: {conf}");
+    assert!(!conf.contains("Documented default"), "default twice: {conf}");
+    assert!(conf.contains("Gain of the controller."), "{conf}");
+    let life = table("lifecycle");
+    assert_eq!(heads(&life), ["Callback", "Implemented"], "{life}");
+    let lang = table("language");
+    assert_eq!(lang.matches("<div class=\"target\">").count(), 2, "{lang}");
+    assert!(lang.contains("<h4>Target environment 1</h4>"), "{lang}");
+    assert!(lang.contains("<h4>Target environment 2</h4>"), "{lang}");
+    let second = &lang[lang.find("Target environment 2").unwrap()..];
+    assert!(second.contains("x86_64") && !second.contains("Ubuntu"), "{lang}");
+
+    // The Markdown page: the same columns are left out.
+    let md_out = dir.path().join("md");
+    let staging = Staging::new(&md_out).expect("staging");
+    rtcdoc::render::markdown::MarkdownRenderer
+        .render(
+            &RenderContext {
+                catalog: &cat,
+                site: &SiteOptions::default(),
+            },
+            &staging,
+        )
+        .expect("render");
+    staging.commit().expect("commit");
+    let md = read(&md_out.join(format!("components/{}.md", cat.components[0].slug)));
+    assert!(
+        md.contains("| Name | Direction | Data type |\n"),
+        "data port columns: {md}"
+    );
+    assert!(
+        md.contains("| Name | Type | Default | Description | Details |\n"),
+        "configuration columns: {md}"
+    );
+    assert!(md.contains("| Callback | Implemented |\n"), "lifecycle: {md}");
 }

@@ -16,6 +16,7 @@ use crate::model::{
     self, Action, BasicDoc, Configuration, DataPort, Extra, ExtraKind, Language, Parameter,
     Profile, Property, ServiceInterface, ServicePort, Target,
 };
+use crate::types::canonical_type;
 use std::borrow::Cow;
 
 /// What kind of value a [`Fact`] holds, for renderers that present the two differently.
@@ -116,14 +117,33 @@ impl Facts {
         }
         self
     }
-    /// The Document Profile of a data port or an FSM event, except its description.
-    fn data_doc(&mut self, d: &model::DataPortDoc) -> &mut Self {
-        self.md("fact_doc_type", &d.type_)
+    /// The Document Profile of a data port or an FSM event, except its description. A
+    /// documented type equal to `type_` and a documented unit equal to `unit` (the values shown
+    /// already) are not repeated.
+    fn data_doc(
+        &mut self,
+        d: &model::DataPortDoc,
+        type_: Option<&str>,
+        unit: Option<&str>,
+    ) -> &mut Self {
+        let doc_type = model::non_empty(&d.type_)
+            .filter(|t| type_.map(canonical_type) != Some(canonical_type(t)));
+        let doc_unit = model::non_empty(&d.unit).filter(|u| unit != Some(*u));
+        self.md_str("fact_doc_type", doc_type)
             .md("fact_number", &d.number)
             .md("fact_semantics", &d.semantics)
-            .md("fact_doc_unit", &d.unit)
+            .md_str("fact_doc_unit", doc_unit)
             .md("fact_occurrence", &d.occurrence)
             .md("fact_operation", &d.operation)
+    }
+    /// [`Facts::md`] for a value already trimmed and checked non-empty.
+    fn md_str(&mut self, key: &'static str, v: Option<&str>) -> &mut Self {
+        if let Some(s) = v {
+            let mut f = Fact::new(self.lang.t(key), s);
+            f.kind = FactKind::Text;
+            self.out.push(f);
+        }
+        self
     }
     fn done(&mut self) -> Vec<Fact> {
         std::mem::take(&mut self.out)
@@ -201,18 +221,29 @@ pub fn data_port(p: &DataPort, lang: Lang) -> Vec<Fact> {
 /// [`data_port`] without the FSM events, for renderers that list events on their own
 /// (see [`event`]).
 pub fn data_port_attributes(p: &DataPort, lang: Lang) -> Vec<Fact> {
+    data_port_facts(p, lang, true)
+}
+
+/// [`data_port_attributes`] without the unit, for renderers that show it in a column of its
+/// own ([`data_port_unit`]).
+pub fn data_port_attributes_without_unit(p: &DataPort, lang: Lang) -> Vec<Fact> {
+    data_port_facts(p, lang, false)
+}
+
+fn data_port_facts(p: &DataPort, lang: Lang, with_unit: bool) -> Vec<Fact> {
     let mut f = Facts::new(lang);
+    let unit = data_port_unit(p);
     f.opt("fact_idl_file", &p.idl_file)
         .opt("fact_interface_type", &p.interface_type)
         .opt("fact_dataflow_type", &p.dataflow_type)
         .opt("fact_subscription_type", &p.subscription_type)
-        .opt("unit", &p.unit);
+        .text("unit", unit.filter(|_| with_unit).unwrap_or(""));
     // RTCBuilder's `dp_constraint` placeholder constrains nothing (RTC306): not shown.
     if let Some(c) = p.constraint.as_ref().filter(|c| c.placeholder().is_none()) {
         f.text("constraint", &constraint::describe(c));
     }
     if let Some(d) = &p.doc {
-        f.data_doc(d);
+        f.data_doc(d, model::non_empty(&p.type_), unit);
     }
     f.md("fact_comment", &p.comment)
         .opt("fact_variable_name", &p.variable_name)
@@ -230,7 +261,8 @@ pub fn event(e: &model::Event, lang: Lang) -> Vec<Fact> {
         .opt("event_target", &e.target)
         .opt("condition", &e.condition);
     if let Some(d) = &e.doc {
-        f.md("description", &d.description).data_doc(d);
+        f.md("description", &d.description)
+            .data_doc(d, model::non_empty(&e.type_), None);
     }
     f.done()
 }
@@ -261,6 +293,35 @@ fn event_text(e: &model::Event) -> String {
         s.push_str(&format!(" {d}"));
     }
     s
+}
+
+/// The unit of a data port: its own (`rtcExt:unit`), else the one its Document Profile gives.
+/// Shown once, as the unit; a documented unit that differs from the port's own is listed as
+/// well.
+pub fn data_port_unit(p: &DataPort) -> Option<&str> {
+    model::non_empty(&p.unit).or_else(|| p.doc.as_ref().and_then(|d| model::non_empty(&d.unit)))
+}
+
+/// The unit of a configuration parameter: its own, else the one its Document Profile gives.
+pub fn configuration_unit(c: &Configuration) -> Option<&str> {
+    model::non_empty(&c.unit).or_else(|| c.doc.as_ref().and_then(|d| model::non_empty(&d.unit)))
+}
+
+/// The editor widget of a configuration parameter with its meaning and step, for a Widget
+/// column: `slider.0.1 (slider, step 0.1)`, `radio (radio buttons)`.
+pub fn configuration_widget(c: &Configuration, lang: Lang) -> Option<String> {
+    let w = c.widget().map(str::trim).filter(|w| !w.is_empty());
+    let step = c.step().map(str::trim).filter(|s| !s.is_empty());
+    match (w, step) {
+        (Some(w), Some(s)) => Some(format!(
+            "{}, {} {s}",
+            widget_text(w, lang),
+            lang.t("fact_step")
+        )),
+        (Some(w), None) => Some(widget_text(w, lang)),
+        (None, Some(s)) => Some(format!("{} {s}", lang.t("fact_step"))),
+        (None, None) => None,
+    }
 }
 
 /// Port-level facts of a service port (its interfaces are listed separately).
@@ -314,24 +375,52 @@ pub fn configuration_constraint(c: &Configuration) -> Option<String> {
 /// constraint and description: the rest of its Document Profile, the editor widget and step
 /// (`__widget__`, `__step__`, with their meaning), extended attributes and other properties.
 pub fn configuration(c: &Configuration, lang: Lang) -> Vec<Fact> {
-    let mut f = Facts::new(lang);
-    if let Some(d) = &c.doc {
-        f.md("fact_dataname", &d.dataname)
-            .md("fact_doc_default", &d.default_value)
-            .md("fact_doc_unit", &d.unit)
-            .md("fact_range", &d.range)
-            .md("fact_doc_constraint", &d.constraint);
-    }
+    let mut f = configuration_doc(c, lang);
     if let Some(w) = c.widget().map(str::trim).filter(|w| !w.is_empty()) {
         f.text("fact_widget", &widget_text(w, lang));
     }
     if let Some(s) = c.step() {
         f.text("fact_step", s);
     }
-    f.md("fact_comment", &c.comment)
-        .opt("fact_variable_name", &c.variable_name)
-        .properties(&c.properties, &["__widget__", "__step__"])
-        .done()
+    f.configuration_rest(c).done()
+}
+
+/// [`configuration`] without the widget and its step, for renderers that show them in a
+/// column of their own ([`configuration_widget`]).
+pub fn configuration_without_widget(c: &Configuration, lang: Lang) -> Vec<Fact> {
+    configuration_doc(c, lang).configuration_rest(c).done()
+}
+
+/// The Document Profile of a configuration parameter except its description; a documented
+/// default equal to the default value and a documented unit equal to the unit shown
+/// ([`configuration_unit`]) are not repeated.
+fn configuration_doc(c: &Configuration, lang: Lang) -> Facts {
+    let mut f = Facts::new(lang);
+    if let Some(d) = &c.doc {
+        let default = model::non_empty(&c.default_value);
+        let unit = configuration_unit(c);
+        f.md("fact_dataname", &d.dataname)
+            .md_str(
+                "fact_doc_default",
+                model::non_empty(&d.default_value).filter(|v| default != Some(*v)),
+            )
+            .md_str(
+                "fact_doc_unit",
+                model::non_empty(&d.unit).filter(|u| unit != Some(*u)),
+            )
+            .md("fact_range", &d.range)
+            .md("fact_doc_constraint", &d.constraint);
+    }
+    f
+}
+
+impl Facts {
+    /// The end of a configuration parameter's facts: comment, variable name, properties.
+    fn configuration_rest(&mut self, c: &Configuration) -> &mut Self {
+        self.md("fact_comment", &c.comment)
+            .opt("fact_variable_name", &c.variable_name)
+            .properties(&c.properties, &["__widget__", "__step__"])
+    }
 }
 
 /// `slider.0.1` → `slider.0.1 (slider, step 0.1)`; `radio` → `radio (radio buttons)`.

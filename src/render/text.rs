@@ -53,6 +53,28 @@ pub fn facts_table<M: Markup>(out: &mut String, lang: Lang, facts: &[Fact]) {
     M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
 }
 
+/// A table whose columns from `keep` on are left out when they are empty in every row (a
+/// component without units gets no Unit column).
+fn sparse_table<M: Markup>(out: &mut String, keep: usize, headers: &[&str], rows: &[Vec<String>]) {
+    let shown: Vec<usize> = (0..headers.len())
+        .filter(|&i| i < keep || rows.iter().any(|r| r.get(i).is_some_and(|c| !c.is_empty())))
+        .collect();
+    if shown.len() == headers.len() {
+        return M::table(out, headers, rows);
+    }
+    let heads: Vec<&str> = shown.iter().map(|&i| headers[i]).collect();
+    let rows: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            shown
+                .iter()
+                .map(|&i| r.get(i).cloned().unwrap_or_default())
+                .collect()
+        })
+        .collect();
+    M::table(out, &heads, &rows);
+}
+
 /// Facts inside one cell: bold label, colon, value; one line each.
 pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
     let mut out = String::new();
@@ -188,8 +210,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                 ]
             })
             .collect();
-        M::table(
+        sparse_table::<M>(
             out,
+            3,
             &[
                 lang.t("name"),
                 lang.t("direction"),
@@ -259,8 +282,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                     ]
                 })
                 .collect();
-            M::table(
+            sparse_table::<M>(
                 out,
+                3,
                 &[
                     lang.t("interface"),
                     lang.t("direction"),
@@ -285,7 +309,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                     M::anchored(c, &c.anchors.configurations[k], &esc_opt::<M>(&cf.name)),
                     esc_opt::<M>(&cf.type_),
                     esc_opt::<M>(&cf.default_value),
-                    esc_opt::<M>(&cf.unit),
+                    facts::configuration_unit(cf)
+                        .map(M::esc)
+                        .unwrap_or_default(),
                     facts::configuration_constraint(cf)
                         .map(|s| M::esc(&s))
                         .unwrap_or_default(),
@@ -297,8 +323,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                 ]
             })
             .collect();
-        M::table(
+        sparse_table::<M>(
             out,
+            3,
             &[
                 lang.t("name"),
                 lang.t("type"),
@@ -331,8 +358,9 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
             ]
         })
         .collect();
-    M::table(
+    sparse_table::<M>(
         out,
+        2,
         &[
             lang.t("fact_callback"),
             lang.t("implemented"),

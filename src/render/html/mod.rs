@@ -277,8 +277,45 @@ struct ConfigurationRow {
     unit: String,
     constraint: String,
     widget: String,
-    step: String,
     details: Vec<Field>,
+}
+
+/// Which optional columns of a component page's table have a value in some row: a column
+/// empty in every row is left out.
+#[derive(Serialize, Default)]
+struct Columns {
+    unit: bool,
+    constraint: bool,
+    widget: bool,
+    description: bool,
+    peers: bool,
+    /// The number of columns shown (the `colspan` of a row spanning the table).
+    span: usize,
+}
+
+impl Columns {
+    /// `span` from the `always` columns shown in any case and the optional ones.
+    fn counted(mut self, always: usize) -> Columns {
+        self.span = always
+            + [
+                self.unit,
+                self.constraint,
+                self.widget,
+                self.description,
+                self.peers,
+            ]
+            .iter()
+            .filter(|b| **b)
+            .count();
+        self
+    }
+}
+
+/// One target environment: its number (1-based, as listed) and facts.
+#[derive(Serialize)]
+struct TargetBlock {
+    number: usize,
+    fields: Vec<Field>,
 }
 
 #[derive(Serialize)]
@@ -314,13 +351,17 @@ struct ComponentPage {
     document: Vec<Field>,
     diagram_svg: String,
     data_ports: Vec<DataPortRow>,
+    data_cols: Columns,
     service_ports: Vec<ServicePortRow>,
+    service_cols: Columns,
     configurations: Vec<ConfigurationRow>,
+    config_cols: Columns,
     actions: Vec<ActionRow>,
+    action_cols: Columns,
     lifecycle_svg: String,
     parameters: Vec<KeyValue>,
     language: Vec<Field>,
-    targets: Vec<Vec<Field>>,
+    targets: Vec<TargetBlock>,
     properties: Vec<KeyValue>,
     version_up_logs: Vec<String>,
     extras: Vec<ExtraRow>,
@@ -579,18 +620,9 @@ impl<'a> Site<'a> {
                 class: dir_class,
                 anchor: anchor.clone(),
             });
-            // No fact twice in a row: the unit has its column, and a documented type or unit
-            // equal to the port's is not repeated under Description.
-            let mut attrs = facts::data_port_attributes(dp, lang);
-            let port_type = non_empty(&dp.type_).map(canonical_type);
-            let unit = non_empty(&dp.unit);
-            attrs.retain(|f| {
-                let label = f.label.as_ref();
-                !(label == lang.t("unit")
-                    || (label == lang.t("fact_doc_type")
-                        && port_type.as_deref() == Some(canonical_type(&f.value).as_str()))
-                    || (label == lang.t("fact_doc_unit") && unit == Some(f.value.as_str())))
-            });
+            // No fact twice in a row: the unit has its column (facts leave out a documented
+            // type or unit equal to the port's).
+            let attrs = facts::data_port_attributes_without_unit(dp, lang);
             let details = fields(lang, dp.doc.as_ref().map(|d| &d.description), attrs);
             let events = dp
                 .events
@@ -614,7 +646,7 @@ impl<'a> Site<'a> {
                 dir_class,
                 name: dp.name.as_deref().unwrap_or_default().to_string(),
                 type_ref,
-                unit: non_empty(&dp.unit).unwrap_or("").to_string(),
+                unit: facts::data_port_unit(dp).unwrap_or("").to_string(),
                 details,
                 events,
                 peers,
@@ -690,7 +722,7 @@ impl<'a> Site<'a> {
         }
 
         // Configuration parameters.
-        let configurations = p
+        let configurations: Vec<ConfigurationRow> = p
             .configurations()
             .iter()
             .enumerate()
@@ -703,14 +735,13 @@ impl<'a> Site<'a> {
                     .as_deref()
                     .unwrap_or_default()
                     .to_string(),
-                unit: non_empty(&conf.unit).unwrap_or("").to_string(),
+                unit: facts::configuration_unit(conf).unwrap_or("").to_string(),
                 constraint: facts::configuration_constraint(conf).unwrap_or_default(),
-                widget: conf.widget().unwrap_or("").to_string(),
-                step: conf.step().unwrap_or("").to_string(),
+                widget: facts::configuration_widget(conf, lang).unwrap_or_default(),
                 details: fields(
                     lang,
                     conf.doc.as_ref().map(|d| &d.description),
-                    facts::configuration(conf, lang),
+                    facts::configuration_without_widget(conf, lang),
                 ),
             })
             .collect();
@@ -766,8 +797,12 @@ impl<'a> Site<'a> {
                 fields(lang, None, facts::language(l, lang)),
                 l.targets
                     .iter()
-                    .map(|t| fields(lang, None, facts::target(t, lang)))
-                    .filter(|v| !v.is_empty())
+                    .enumerate()
+                    .map(|(k, t)| TargetBlock {
+                        number: k + 1,
+                        fields: fields(lang, None, facts::target(t, lang)),
+                    })
+                    .filter(|t| !t.fields.is_empty())
                     .collect(),
             ),
             None => (Vec::new(), Vec::new()),
@@ -806,9 +841,40 @@ impl<'a> Site<'a> {
             header,
             document,
             diagram_svg,
+            data_cols: Columns {
+                unit: data_ports.iter().any(|r| !r.unit.is_empty()),
+                description: data_ports
+                    .iter()
+                    .any(|r| !r.details.is_empty() || !r.events.is_empty()),
+                peers: data_ports.iter().any(|r| !r.peers.is_empty()),
+                ..Columns::default()
+            }
+            .counted(3),
             data_ports,
+            service_cols: {
+                let rows = || service_ports.iter().flat_map(|sp| &sp.interfaces);
+                Columns {
+                    description: rows().any(|r| !r.details.is_empty()),
+                    peers: rows().any(|r| !r.peers.is_empty()),
+                    ..Columns::default()
+                }
+                .counted(3)
+            },
             service_ports,
+            config_cols: Columns {
+                unit: configurations.iter().any(|r| !r.unit.is_empty()),
+                constraint: configurations.iter().any(|r| !r.constraint.is_empty()),
+                widget: configurations.iter().any(|r| !r.widget.is_empty()),
+                description: configurations.iter().any(|r| !r.details.is_empty()),
+                ..Columns::default()
+            }
+            .counted(3),
             configurations,
+            action_cols: Columns {
+                description: actions.iter().any(|r| !r.details.is_empty()),
+                ..Columns::default()
+            }
+            .counted(2),
             actions,
             lifecycle_svg,
             parameters,

@@ -101,8 +101,7 @@ impl Out<'_> {
     }
 
     /// The cells a data port row and a service interface row share: direction, name and type
-    /// (labelled `type_key`), up to the opening of the next cell (labelled `next_key`).
-    #[allow(clippy::too_many_arguments)]
+    /// (labelled `type_key`).
     fn port_row_start(
         &mut self,
         anchor: &str,
@@ -111,7 +110,6 @@ impl Out<'_> {
         name: &str,
         type_ref: &Option<PortTypeRef>,
         type_key: &str,
-        next_key: &str,
     ) {
         self.raw("<tr id=\"");
         self.text(anchor);
@@ -127,7 +125,16 @@ impl Out<'_> {
         self.td(type_key);
         self.type_link(type_ref);
         self.raw("</td>\n");
-        self.td(next_key);
+    }
+
+    /// The "connects to" cell when `shown`, and the end of the row.
+    fn peers_cell(&mut self, shown: bool, peers: &[super::Link], more: &Option<super::Link>) {
+        if shown {
+            self.td("connects_to");
+            self.peers(peers, more);
+            self.raw("</td>\n");
+        }
+        self.raw("</tr>\n");
     }
 
     /// `<td data-label="{{ t.key }}">`: the label stacked rows (cards) show at narrow widths.
@@ -391,19 +398,12 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
     if p.data_ports.is_empty() {
         return;
     }
-    o.table_start(
-        "data-ports",
-        "data_ports",
-        "ports",
-        &[
-            "direction",
-            "name",
-            "type",
-            "unit",
-            "description",
-            "connects_to",
-        ],
-    );
+    let cols = &p.data_cols;
+    let mut heads = vec!["direction", "name", "type"];
+    heads.extend(cols.unit.then_some("unit"));
+    heads.extend(cols.description.then_some("description"));
+    heads.extend(cols.peers.then_some("connects_to"));
+    o.table_start("data-ports", "data_ports", "ports", &heads);
     for r in &p.data_ports {
         o.port_row_start(
             &r.anchor,
@@ -412,10 +412,16 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             &r.name,
             &r.type_ref,
             "type",
-            "unit",
         );
-        o.text(&r.unit);
-        o.raw("</td>\n");
+        if cols.unit {
+            o.td("unit");
+            o.text(&r.unit);
+            o.raw("</td>\n");
+        }
+        if !cols.description {
+            o.peers_cell(cols.peers, &r.peers, &r.peers_more);
+            continue;
+        }
         o.td("description");
         o.fields(&r.details);
         if !r.events.is_empty() {
@@ -432,9 +438,7 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             o.raw("</ul>\n</div>");
         }
         o.raw("</td>\n");
-        o.td("connects_to");
-        o.peers(&r.peers, &r.peers_more);
-        o.raw("</td>\n</tr>\n");
+        o.peers_cell(cols.peers, &r.peers, &r.peers_more);
     }
     o.table_end();
 }
@@ -445,22 +449,17 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
     }
     o.section_start("service-ports", false, "service_ports");
     o.raw("<div class=\"table-wrap\">\n");
-    o.table_head(
-        "ports",
-        &[
-            "direction",
-            "name",
-            "interface_type",
-            "description",
-            "connects_to",
-        ],
-    );
+    let cols = &p.service_cols;
+    let mut heads = vec!["direction", "name", "interface_type"];
+    heads.extend(cols.description.then_some("description"));
+    heads.extend(cols.peers.then_some("connects_to"));
+    o.table_head("ports", &heads);
     for sp in &p.service_ports {
         o.raw("<tbody>\n<tr id=\"");
         o.text(&sp.anchor);
-        o.raw(
-            "\" class=\"sport\"><th scope=\"rowgroup\" colspan=\"5\"><span class=\"dir service\">",
-        );
+        o.raw("\" class=\"sport\"><th scope=\"rowgroup\" colspan=\"");
+        o.raw(&cols.span.to_string());
+        o.raw("\"><span class=\"dir service\">");
         o.label("port");
         o.raw("</span> <code>");
         o.text(&sp.name);
@@ -475,13 +474,13 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
                 &i.name,
                 &i.type_ref,
                 "interface_type",
-                "description",
             );
-            o.fields(&i.details);
-            o.raw("</td>\n");
-            o.td("connects_to");
-            o.peers(&i.peers, &i.peers_more);
-            o.raw("</td>\n</tr>\n");
+            if cols.description {
+                o.td("description");
+                o.fields(&i.details);
+                o.raw("</td>\n");
+            }
+            o.peers_cell(cols.peers, &i.peers, &i.peers_more);
         }
         o.raw("</tbody>\n");
     }
@@ -492,20 +491,13 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
     if p.configurations.is_empty() {
         return;
     }
-    o.table_start(
-        "configuration",
-        "configuration",
-        "config",
-        &[
-            "name",
-            "type",
-            "default_value",
-            "unit",
-            "constraint",
-            "widget",
-            "description",
-        ],
-    );
+    let cols = &p.config_cols;
+    let mut heads = vec!["name", "type", "default_value"];
+    heads.extend(cols.unit.then_some("unit"));
+    heads.extend(cols.constraint.then_some("constraint"));
+    heads.extend(cols.widget.then_some("widget"));
+    heads.extend(cols.description.then_some("description"));
+    o.table_start("configuration", "configuration", "config", &heads);
     for c in &p.configurations {
         o.raw("<tr id=\"");
         o.text(&c.anchor);
@@ -520,25 +512,23 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("<code>");
         o.text(&c.default);
         o.raw("</code></td>\n");
-        o.td("unit");
-        o.text(&c.unit);
-        o.raw("</td>\n");
-        o.td("constraint");
-        o.text(&c.constraint);
-        o.raw("</td>\n");
-        o.td("widget");
-        o.text(&c.widget);
-        if !c.step.is_empty() {
-            o.raw(" (");
-            o.label("step");
-            o.raw(" ");
-            o.text(&c.step);
-            o.raw(")");
+        for (shown, key, value) in [
+            (cols.unit, "unit", &c.unit),
+            (cols.constraint, "constraint", &c.constraint),
+            (cols.widget, "widget", &c.widget),
+        ] {
+            if shown {
+                o.td(key);
+                o.text(value);
+                o.raw("</td>\n");
+            }
         }
-        o.raw("</td>\n");
-        o.td("description");
-        o.fields(&c.details);
-        o.raw("</td>\n</tr>\n");
+        if cols.description {
+            o.td("description");
+            o.fields(&c.details);
+            o.raw("</td>\n");
+        }
+        o.raw("</tr>\n");
     }
     o.table_end();
 }
@@ -548,7 +538,12 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
     o.raw("<div class=\"diagram-wrap\">");
     o.raw(&p.lifecycle_svg);
     o.raw("</div>\n<div class=\"table-wrap\">\n");
-    o.table_head("actions", &["callback", "implemented", "description"]);
+    let heads: &[&str] = if p.action_cols.description {
+        &["callback", "implemented", "description"]
+    } else {
+        &["callback", "implemented"]
+    };
+    o.table_head("actions", heads);
     o.raw("<tbody>\n");
     for a in &p.actions {
         o.raw("<tr id=\"action-");
@@ -569,9 +564,12 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
             o.label("no");
         }
         o.raw("</span></td>\n");
-        o.td("description");
-        o.fields(&a.details);
-        o.raw("</td>\n</tr>\n");
+        if p.action_cols.description {
+            o.td("description");
+            o.fields(&a.details);
+            o.raw("</td>\n");
+        }
+        o.raw("</tr>\n");
     }
     o.table_end();
 }
@@ -620,8 +618,13 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
             o.label("targets");
             o.raw("</h3>\n");
             for tg in &p.targets {
-                o.fields(tg);
-                o.raw("\n");
+                o.raw("<div class=\"target\">\n<h4>");
+                o.label("fact_target");
+                o.raw(" ");
+                o.raw(&tg.number.to_string());
+                o.raw("</h4>\n");
+                o.fields(&tg.fields);
+                o.raw("\n</div>\n");
             }
         }
         o.raw("\n</section>");
