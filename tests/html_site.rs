@@ -669,10 +669,16 @@ fn port_rows_say_each_fact_once_and_source_links_to_the_repository() {
     assert!(!pose.contains("Documented type"), "type twice: {pose}");
     assert!(!pose.contains("Documented unit"), "unit twice: {pose}");
     let speed = row(&cat.components[0].anchors.data_ports[1]);
-    assert!(speed.contains("<td data-label=\"Unit\">m/s</td>"), "{speed}");
+    assert!(
+        speed.contains("<td data-label=\"Unit\">m/s</td>"),
+        "{speed}"
+    );
     assert!(!speed.contains("Documented unit"), "unit twice: {speed}");
     let heading = row(&cat.components[0].anchors.data_ports[2]);
-    assert!(heading.contains("<td data-label=\"Unit\">rad</td>"), "{heading}");
+    assert!(
+        heading.contains("<td data-label=\"Unit\">rad</td>"),
+        "{heading}"
+    );
     assert!(
         heading.contains("<dt>Documented unit</dt><dd><p>deg</p>"),
         "{heading}"
@@ -782,7 +788,10 @@ fn component_tables_have_no_empty_column_and_say_the_widget_once() {
     );
     assert!(!conf.contains("<dt>Widget</dt>"), "widget twice: {conf}");
     assert!(!conf.contains("<dt>Step</dt>"), "step twice: {conf}");
-    assert!(!conf.contains("Documented default"), "default twice: {conf}");
+    assert!(
+        !conf.contains("Documented default"),
+        "default twice: {conf}"
+    );
     assert!(conf.contains("Gain of the controller."), "{conf}");
     let life = table("lifecycle");
     assert_eq!(heads(&life), ["Callback", "Implemented"], "{life}");
@@ -791,7 +800,10 @@ fn component_tables_have_no_empty_column_and_say_the_widget_once() {
     assert!(lang.contains("<h4>Target environment 1</h4>"), "{lang}");
     assert!(lang.contains("<h4>Target environment 2</h4>"), "{lang}");
     let second = &lang[lang.find("Target environment 2").unwrap()..];
-    assert!(second.contains("x86_64") && !second.contains("Ubuntu"), "{lang}");
+    assert!(
+        second.contains("x86_64") && !second.contains("Ubuntu"),
+        "{lang}"
+    );
 
     // The Markdown page: the same columns are left out.
     let md_out = dir.path().join("md");
@@ -815,5 +827,8 @@ fn component_tables_have_no_empty_column_and_say_the_widget_once() {
         md.contains("| Name | Type | Default | Description | Details |\n"),
         "configuration columns: {md}"
     );
-    assert!(md.contains("| Callback | Implemented |\n"), "lifecycle: {md}");
+    assert!(
+        md.contains("| Callback | Implemented |\n"),
+        "lifecycle: {md}"
+    );
 }

@@ -111,7 +111,7 @@ impl Facts {
             let label = if name.is_empty() {
                 Cow::Borrowed(self.lang.t("properties"))
             } else {
-                Cow::Owned(name.to_string())
+                property_label(name, self.lang)
             };
             self.out.push(Fact::new(label, value));
         }
@@ -147,6 +147,26 @@ impl Facts {
     }
     fn done(&mut self) -> Vec<Fact> {
         std::mem::take(&mut self.out)
+    }
+}
+
+/// The label of a property: a translated one for the keys RTCBuilder gives a meaning (`FSM`,
+/// `FSMType`, `__container__lib_N`, the `__iso__` keys of ISO 22166-202 profiles, whose
+/// name is kept after the standard's), the name as written for any other.
+pub fn property_label(name: &str, lang: Lang) -> Cow<'static, str> {
+    if let Some(rest) = name.strip_prefix("__iso__").filter(|r| !r.is_empty()) {
+        return Cow::Owned(format!("{}: {rest}", lang.t("prop_iso")));
+    }
+    if let Some(n) = name
+        .strip_prefix("__container__lib_")
+        .filter(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+    {
+        return Cow::Owned(format!("{} {n}", lang.t("prop_container_lib")));
+    }
+    match name {
+        "FSM" => Cow::Borrowed(lang.t("prop_fsm")),
+        "FSMType" => Cow::Borrowed(lang.t("prop_fsm_type")),
+        _ => Cow::Owned(name.to_string()),
     }
 }
 
@@ -574,5 +594,33 @@ mod tests {
             f.iter().all(|f| f.label != "__widget__"),
             "widget is shown once"
         );
+    }
+
+    #[test]
+    fn known_property_keys_get_labels() {
+        for (key, en, ja) in [
+            ("FSM", "Finite state machine (FSM)", "有限状態機械 (FSM)"),
+            ("FSMType", "FSM type", "FSM の種類"),
+            (
+                "__container__lib_2",
+                "Container library 2",
+                "コンテナライブラリ 2",
+            ),
+            (
+                "__iso__exeType_hardRT",
+                "ISO 22166-202: exeType_hardRT",
+                "ISO 22166-202: exeType_hardRT",
+            ),
+            (
+                "__container__lib_x",
+                "__container__lib_x",
+                "__container__lib_x",
+            ),
+            ("__iso__", "__iso__", "__iso__"),
+            ("SIM_Version", "SIM_Version", "SIM_Version"),
+        ] {
+            assert_eq!(property_label(key, Lang::En), en);
+            assert_eq!(property_label(key, Lang::Ja), ja);
+        }
     }
 }
