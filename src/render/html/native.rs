@@ -144,6 +144,13 @@ impl Out<'_> {
         self.raw("\">");
     }
 
+    /// The description cell of a port or parameter row: `<td class="desc" data-label>`.
+    fn td_desc(&mut self) {
+        self.raw("<td class=\"desc\" data-label=\"");
+        self.label("description");
+        self.raw("\">");
+    }
+
     /// `<li[ class="more"]><a href="href">text</a></li>` and a line break.
     fn link_item(&mut self, more: bool, href: &str, text: &str) {
         self.raw(if more {
@@ -422,7 +429,7 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             o.peers_cell(cols.peers, &r.peers, &r.peers_more);
             continue;
         }
-        o.td("description");
+        o.td_desc();
         o.fields(&r.details);
         if !r.events.is_empty() {
             o.raw("<div class=\"events\"><strong>");
@@ -476,7 +483,7 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
                 "interface_type",
             );
             if cols.description {
-                o.td("description");
+                o.td_desc();
                 o.fields(&i.details);
                 o.raw("</td>\n");
             }
@@ -524,7 +531,7 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
             }
         }
         if cols.description {
-            o.td("description");
+            o.td_desc();
             o.fields(&c.details);
             o.raw("</td>\n");
         }
