@@ -293,6 +293,11 @@ fn finish(html: &str) -> String {
                             ));
                         }
                     }
+                    // An image needs a text alternative: none written, it is decoration.
+                    Some(_) if get("alt").is_none() => {
+                        out.push_str(&tag[..tag.len() - 1]);
+                        out.push_str(" alt=\"\">");
+                    }
                     Some(_) => out.push_str(tag),
                     None => out.push_str(&attr_as_text(alt.unwrap_or(""))),
                 }
