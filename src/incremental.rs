@@ -409,19 +409,13 @@ impl Workspace {
                 .unwrap_or(false)
     }
 
-    /// Whether `path` is named like a README, or is an image a README of the catalogue shows.
+    /// Whether `path` is named like a README, or is an image (a README may show it, or have
+    /// been missing it).
     fn is_readme_file(&self, path: &Path) -> bool {
-        if crate::readme::is_readme_path(path) {
-            return true;
-        }
-        let Some(rel) = self.rel(path) else {
-            return false;
-        };
-        self.catalog
-            .components
-            .iter()
-            .flat_map(|c| c.readme.iter().flat_map(|r| &r.images))
-            .any(|i| i.path == rel)
+        let image = path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+            crate::readme::IMAGE_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str())
+        });
+        (image || crate::readme::is_readme_path(path)) && self.rel(path).is_some()
     }
 
     /// Re-reads everything (after a configuration or theme change).
