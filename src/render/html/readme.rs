@@ -25,10 +25,13 @@ use std::sync::{Arc, Mutex};
 /// HTML entity decoding) and returns the URL to write, or `None` to drop it.
 pub struct Resolve {
     /// A link's `href` that is not a fragment.
-    pub link: Box<dyn Fn(&str) -> Option<String> + Send + Sync>,
+    pub link: Rewrite,
     /// An image's `src`.
-    pub image: Box<dyn Fn(&str) -> Option<String> + Send + Sync>,
+    pub image: Rewrite,
 }
+
+/// A URL as written → the URL to write, or `None` to drop it.
+pub type Rewrite = Box<dyn Fn(&str) -> Option<String> + Send + Sync>;
 
 fn options() -> Options {
     Options::ENABLE_TABLES
