@@ -30,6 +30,19 @@ fn read(p: &Path) -> String {
     std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
 }
 
+/// A kept link as the page writes it.
+fn link(href: &str, text: &str) -> String {
+    format!("<a href=\"{href}\" rel=\"noopener noreferrer\">{text}</a>")
+}
+
+/// Builds the fixture set in `formats` into a new temporary directory: (it, the output).
+fn build_fixture(formats: Vec<Format>, site: SiteOptions) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    build_into(&fixture(), &out, formats, site);
+    (dir, out)
+}
+
 /// The README section of a component page.
 fn readme_section(html: &str) -> &str {
     let start = html
@@ -53,9 +66,7 @@ fn assets(dir: &Path) -> Vec<String> {
 
 #[test]
 fn the_component_page_shows_the_readme_sanitised_with_links_and_images_resolved() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("site");
-    build_into(&fixture(), &out, vec![Format::Html], SiteOptions::default());
+    let (_dir, out) = build_fixture(vec![Format::Html], SiteOptions::default());
     let page = read(&out.join("components/camera.html"));
     let s = readme_section(&page);
 
@@ -75,9 +86,7 @@ fn the_component_page_shows_the_readme_sanitised_with_links_and_images_resolved(
     assert!(s.contains("<h4 id=\"readme-wiring-and-ports\">"), "{s}");
     // A fragment link goes to the heading; one to no heading keeps only its text.
     assert!(
-        s.contains(
-            "<a href=\"#readme-wiring-and-ports\" rel=\"noopener noreferrer\">the wiring</a>"
-        ),
+        s.contains(&link("#readme-wiring-and-ports", "the wiring")),
         "{s}"
     );
     assert!(
@@ -117,16 +126,14 @@ fn the_component_page_shows_the_readme_sanitised_with_links_and_images_resolved(
         "{s}"
     );
     assert!(
-        s.contains(
-            "<a href=\"https://example.org/logo.png\" rel=\"noopener noreferrer\">Remote logo</a>"
-        ),
+        s.contains(&link("https://example.org/logo.png", "Remote logo")),
         "{s}"
     );
     assert!(!s.contains("<img src=\"http"), "{s}");
     // Links: another component's profile → its page; outside the input and, without
     // source-url, other files → text only; https kept.
     assert!(
-        s.contains("<a href=\"../components/filter.html\" rel=\"noopener noreferrer\">filter</a>"),
+        s.contains(&link("../components/filter.html", "filter")),
         "{s}"
     );
     assert!(
@@ -138,9 +145,7 @@ fn the_component_page_shows_the_readme_sanitised_with_links_and_images_resolved(
         "{s}"
     );
     assert!(
-        s.contains(
-            "<a href=\"https://example.org/camera\" rel=\"noopener noreferrer\">the project</a>"
-        ),
+        s.contains(&link("https://example.org/camera", "the project")),
         "{s}"
     );
 
@@ -204,7 +209,10 @@ fn source_url_links_the_readmes_other_files_to_the_repository() {
     let s = read(&out.join("components/camera.html"));
     let s = readme_section(&s);
     assert!(
-        s.contains("<a href=\"https://example.org/repo/blob/main/cam/docs/manual.md#setup\" rel=\"noopener noreferrer\">manual</a>"),
+        s.contains(&link(
+            "https://example.org/repo/blob/main/cam/docs/manual.md#setup",
+            "manual"
+        )),
         "{s}"
     );
     // A catalogued profile still goes to its page; outside the input still nothing.
@@ -346,9 +354,7 @@ fn images_outside_the_input_of_other_types_or_too_large_are_text_with_a_warning(
 
 #[test]
 fn json_keeps_the_readme_path_and_raw_text_and_reads_back() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("json");
-    build_into(&fixture(), &out, vec![Format::Json], SiteOptions::default());
+    let (_dir, out) = build_fixture(vec![Format::Json], SiteOptions::default());
     let bytes = std::fs::read(out.join("catalog.json")).unwrap();
     let doc: serde_json::Value = serde_json::from_slice(&bytes).unwrap();
     let comps = doc["components"].as_object().unwrap();
@@ -381,14 +387,7 @@ fn json_keeps_the_readme_path_and_raw_text_and_reads_back() {
 
 #[test]
 fn markdown_embeds_the_readme_as_one_html_block_with_its_images() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("md");
-    build_into(
-        &fixture(),
-        &out,
-        vec![Format::Markdown],
-        SiteOptions::default(),
-    );
+    let (_dir, out) = build_fixture(vec![Format::Markdown], SiteOptions::default());
     let page = read(&out.join("components/camera.md"));
     let at = page.find("<div class=\"readme\">").expect("README block");
     assert!(page[..at].contains("## README"), "{page}");
@@ -421,14 +420,7 @@ fn markdown_embeds_the_readme_as_one_html_block_with_its_images() {
 
 #[test]
 fn doxygen_shows_the_readme_source_as_plain_paragraphs() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("dox");
-    build_into(
-        &fixture(),
-        &out,
-        vec![Format::Doxygen],
-        SiteOptions::default(),
-    );
+    let (_dir, out) = build_fixture(vec![Format::Doxygen], SiteOptions::default());
     let page = read(&out.join("components/camera.dox"));
     assert!(
         page.contains("\\section rtc_comp_camera__sec_readme README"),
