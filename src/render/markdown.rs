@@ -355,12 +355,15 @@ fn readme_targets(cat: &Catalog, source_url: Option<&str>) -> Readmes {
 }
 
 /// A README's sanitised HTML as one Markdown HTML block (mdBook and GitHub show it as is): no
-/// blank line inside, which would end the block (a blank line's break is written `&#10;`), and
-/// braces as character references, so `{{#include …}}` is no mdBook directive.
+/// blank line inside, which would end the block (a blank line's break is written `&#10;`);
+/// braces as character references, so `{{#include …}}` is no mdBook directive, and brackets,
+/// so that no text of it reads as a Markdown link to a renderer that looked inside the block.
 fn readme_block(html: &str) -> String {
     let body = format!("<div class=\"readme\">\n{}</div>", html.trim_end())
         .replace('{', "&#123;")
-        .replace('}', "&#125;");
+        .replace('}', "&#125;")
+        .replace('[', "&#91;")
+        .replace(']', "&#93;");
     let mut out = String::with_capacity(body.len() + 64);
     for (i, line) in body.split('\n').enumerate() {
         if i > 0 && line.trim().is_empty() {
