@@ -71,12 +71,21 @@ fn collect_ids(events: &[Event<'_>]) -> Ids {
     let mut text: Option<String> = None;
     let mut next_note = 1;
     let mut note_ids: HashSet<String> = HashSet::new();
+    let mut note_slugs: HashMap<String, usize> = HashMap::new();
     let mut note = |label: &str, ids: &mut Ids| {
         let key = label.to_lowercase();
         if ids.footnotes.contains_key(&key) {
             return;
         }
-        let mut id = format!("readme-fn-{}", github_slug(label));
+        // Labels with the same slug (`a!`, `a?`) are numbered, as headings are.
+        let slug = github_slug(label);
+        let n = note_slugs.entry(slug.clone()).or_default();
+        let mut id = if *n == 0 {
+            format!("readme-fn-{slug}")
+        } else {
+            format!("readme-fn-{slug}-{n}")
+        };
+        *n += 1;
         while !note_ids.insert(id.clone()) {
             id.push('_');
         }
