@@ -194,7 +194,11 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut catalog = Catalog::build(profiles, diagnostics);
     catalog.attach_idl(idl);
     catalog.attach_systems(systems);
-    crate::readme::attach(&mut catalog, &input_root(input));
+    crate::readme::attach(
+        &mut catalog,
+        &input_root(input),
+        &walk::exclude_matcher(&opts.exclude),
+    );
     failed_systems.sort();
     Ok(Loaded {
         catalog,

@@ -367,7 +367,11 @@ impl Workspace {
         let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
         catalog.attach_idl(idl);
         catalog.attach_systems(systems);
-        crate::readme::attach(&mut catalog, &self.input_root);
+        crate::readme::attach(
+            &mut catalog,
+            &self.input_root,
+            &walk::exclude_matcher(&self.opts.load.exclude),
+        );
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;
 

@@ -423,8 +423,9 @@ fn images(root: &Path, file: &str, text: &str, dir: &str) -> (Vec<Image>, Vec<Di
 }
 
 /// Reads the README of every component folder of `catalog` (below the input at `root`),
-/// attaches it to the components of that folder and adds the findings (once per README).
-pub fn attach(catalog: &mut Catalog, root: &Path) {
+/// attaches it to the components of that folder and adds the findings (once per README). A
+/// README whose path `excluded` accepts (`--exclude`) is not read.
+pub fn attach(catalog: &mut Catalog, root: &Path, excluded: &(dyn Fn(&str) -> bool + Sync)) {
     let mut folders: BTreeMap<String, Vec<usize>> = BTreeMap::new();
     for (ci, c) in catalog.components.iter().enumerate() {
         let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
@@ -442,6 +443,9 @@ pub fn attach(catalog: &mut Catalog, root: &Path) {
             } else {
                 format!("{dir}/{name}")
             };
+            if excluded(&file) {
+                return (members, None, Vec::new());
+            }
             match read(&path) {
                 Read::Shown(text) => {
                     let (images, diags) = images(root, &file, &text, &dir);

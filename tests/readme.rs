@@ -307,6 +307,17 @@ fn oversized_invalid_utf8_bom_and_linked_readmes() {
         assert!(readme_of("link").is_none());
         assert!(warn("link/README.md").message.contains("symbolic link"));
     }
+    // `--exclude` leaves a README out like any file.
+    let opts = LoadOptions {
+        exclude: vec!["bom/README.md".into()],
+        ..LoadOptions::default()
+    };
+    let excluded = build::load(&input, &opts).expect("load");
+    assert!(excluded
+        .catalog
+        .components
+        .iter()
+        .all(|c| c.readme.as_ref().is_none_or(|r| r.file != "bom/README.md")));
     // The site still builds, and shows what could be shown.
     let out = dir.path().join("site");
     build_into(&input, &out, vec![Format::Html], SiteOptions::default());
