@@ -194,6 +194,11 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut catalog = Catalog::build(profiles, diagnostics);
     catalog.attach_idl(idl);
     catalog.attach_systems(systems);
+    crate::readme::attach(
+        &mut catalog,
+        &input_root(input),
+        &walk::exclude_matcher(&opts.exclude),
+    );
     failed_systems.sort();
     Ok(Loaded {
         catalog,
@@ -201,6 +206,18 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         files,
         failed_systems,
     })
+}
+
+/// The directory profile paths are relative to: `input`, or the folder of a file named.
+pub fn input_root(input: &Path) -> PathBuf {
+    if input.is_file() {
+        input
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
+    } else {
+        input.to_path_buf()
+    }
 }
 
 /// Reads an RT System profile (its head showed an `RtsProfile` root): at most the size limit

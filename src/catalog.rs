@@ -51,6 +51,9 @@ pub struct Component {
     /// variants of one component, a copy in another folder): its language, else its folder.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub qualifier: Option<String>,
+    /// The hand-written README of the profile's folder ([`crate::readme`]), when it has one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub readme: Option<crate::readme::Readme>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
 }
@@ -690,6 +693,7 @@ impl Catalog {
                 id,
                 anchors,
                 qualifier,
+                readme: None,
                 source: l.source,
                 format: l.format,
                 slug,

@@ -199,8 +199,9 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # URL the site is published at; used for absolute links in sitemap.xml and the 404 page.
 # base-url = "https://example.org/components/"
 
-# Link "Source" on component pages to the file in its repository; {{path}} is the profile's
-# path relative to the input directory. GitHub: https://github.com/ORG/REPO/blob/main/{{path}}
+# Link "Source" on component pages to the file in its repository (and a component README's
+# links to other files); {{path}} is the file's path relative to the input directory.
+# GitHub: https://github.com/ORG/REPO/blob/main/{{path}}
 # GitLab: https://gitlab.com/ORG/REPO/-/blob/main/{{path}}
 # source-url = "https://github.com/ORG/REPO/blob/main/{{path}}"
 

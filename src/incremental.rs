@@ -213,23 +213,14 @@ impl Workspace {
     /// Loads and renders everything.
     pub fn open(opts: &BuildOptions) -> Result<Workspace> {
         let loaded = load(&opts.input, &opts.load)?;
-        let input_root = if opts.input.is_file() {
-            opts.input
-                .parent()
-                .map(Path::to_path_buf)
-                .unwrap_or_default()
-        } else {
-            opts.input.clone()
-        };
+        let input_root = crate::build::input_root(&opts.input);
         let mut warnings: BTreeMap<String, Vec<Diagnostic>> = BTreeMap::new();
         // Only the readers' diagnostics are kept per file: the catalogue adds its own
-        // (duplicate ids) again whenever it is rebuilt.
-        for d in loaded
-            .catalog
-            .diagnostics
-            .iter()
-            .filter(|d| d.code != crate::diagnostic::codes::DUPLICATE_ID)
-        {
+        // (duplicate ids) and the READMEs' again whenever it is rebuilt.
+        for d in loaded.catalog.diagnostics.iter().filter(|d| {
+            d.code != crate::diagnostic::codes::DUPLICATE_ID
+                && !crate::readme::CODES.contains(&d.code)
+        }) {
             warnings.entry(d.file.clone()).or_default().push(d.clone());
         }
         let mut catalog = loaded.catalog;
@@ -276,7 +267,11 @@ impl Workspace {
         // Read the changed files first: an error leaves everything as it was.
         // An RT System profile added, changed or removed: everything is read again (systems
         // link to components and are listed on their pages; they are few).
-        if changed.iter().any(|p| self.is_system_file(p)) {
+        // A README or an image one shows: the same (READMEs are read for every folder).
+        if changed
+            .iter()
+            .any(|p| self.is_system_file(p) || self.is_readme_file(p))
+        {
             let opts = self.opts.clone();
             self.reload(&opts)
                 .map_err(|e| UpdateError::Other(format!("{e:#}")))?;
@@ -372,6 +367,11 @@ impl Workspace {
         let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
         catalog.attach_idl(idl);
         catalog.attach_systems(systems);
+        crate::readme::attach(
+            &mut catalog,
+            &self.input_root,
+            &walk::exclude_matcher(&self.opts.load.exclude),
+        );
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;
 
@@ -411,6 +411,15 @@ impl Workspace {
             && std::fs::read(path)
                 .map(|b| parse::rts::is_system(&b))
                 .unwrap_or(false)
+    }
+
+    /// Whether `path` is named like a README, or is an image (a README may show it, or have
+    /// been missing it).
+    fn is_readme_file(&self, path: &Path) -> bool {
+        let image = path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+            crate::readme::IMAGE_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str())
+        });
+        (image || crate::readme::is_readme_path(path)) && self.rel(path).is_some()
     }
 
     /// Re-reads everything (after a configuration or theme change).

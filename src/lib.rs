@@ -21,6 +21,7 @@ pub mod init;
 pub mod model;
 pub mod output;
 pub mod parse;
+pub mod readme;
 pub mod render;
 pub mod serve;
 pub mod system;

@@ -169,6 +169,14 @@ fn build_globs(patterns: &[String]) -> Result<GlobSet, WalkError> {
     })
 }
 
+/// Whether an input-relative path is left out by the `--exclude` patterns `patterns` (for files
+/// the walk does not list itself, such as a component folder's README). A bad pattern, which
+/// the walk reports, matches nothing here.
+pub fn exclude_matcher(patterns: &[String]) -> impl Fn(&str) -> bool + Sync {
+    let set = build_globs(patterns).unwrap_or_else(|_| GlobSet::empty());
+    move |rel: &str| set.is_match(rel)
+}
+
 /// `path` relative to `root`, with forward slashes (its file name when it is `root` itself).
 pub(crate) fn rel_path(root: &Path, path: &Path) -> String {
     let rel = path.strip_prefix(root).unwrap_or(path);

@@ -130,10 +130,10 @@ fn no_payload_of_the_xss_fixture_is_live_in_the_browser() {
     }
 }
 
-/// The audit harness of `tests/browser` (puppeteer-core driving this chromium, axe-core):
-/// node and its `npm ci` install (done by `.ci/run`). `None`, with a "skipped" message, when
-/// either is missing.
-fn audit(site: &Path, searches: &[&str]) -> Option<serde_json::Value> {
+/// The audit harness of `tests/browser` (puppeteer-core driving this chromium, axe-core) on
+/// `site`: one page of each kind, and `pages`. Needs node and its `npm ci` install (done by
+/// `.ci/run`). `None`, with a "skipped" message, when either is missing.
+fn audit(site: &Path, searches: &[&str], pages: &[&str]) -> Option<serde_json::Value> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
     if !dir.join("node_modules/axe-core").is_dir()
         || !dir.join("node_modules/puppeteer-core").is_dir()
@@ -145,6 +145,9 @@ fn audit(site: &Path, searches: &[&str]) -> Option<serde_json::Value> {
     cmd.arg(dir.join("audit.mjs")).arg(site);
     for s in searches {
         cmd.arg("--search").arg(s);
+    }
+    for p in pages {
+        cmd.arg("--page").arg(p);
     }
     let o = match cmd.output() {
         Ok(o) => o,
@@ -254,10 +257,17 @@ fn every_page_kind_passes_axe_and_fits_a_phone_and_search_ranks_and_opens() {
         "confidence=types/detection-detectedobject",
         "setExposure=interfaces/camera-cameracontrol",
     ];
-    let Some(report) = audit(&out, &searches) else {
+    // The Navigator has a README (a table, an SVG image, fragment and component links).
+    let readme_page = "components/navigator.html";
+    let Some(report) = audit(&out, &searches, &[readme_page]) else {
         return;
     };
     assert_audit(&report, PAGE_KINDS);
+    let audited = report["pages"].as_array().expect("pages");
+    assert!(
+        audited.iter().filter(|p| p["page"] == readme_page).count() == 3,
+        "{readme_page} audited in every mode"
+    );
 }
 
 #[test]
@@ -277,7 +287,7 @@ fn the_corpus_site_passes_axe_and_fits_a_phone() {
         "TimedDoubleSeq=types/rtc-timeddoubleseq",
         "ManipulatorCommonInterface_Middle=interfaces/jara-arm-manipulatorcommoninterface-middle",
     ];
-    let Some(report) = audit(&out, &searches) else {
+    let Some(report) = audit(&out, &searches, &[]) else {
         return;
     };
     assert_audit(&report, PAGE_KINDS);

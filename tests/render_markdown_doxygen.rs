@@ -343,6 +343,20 @@ fn doxygen_builds_the_examples_without_warnings() {
     );
 }
 
+/// The README fixture (hostile raw HTML, Doxygen metacharacters) keeps Doxygen at 0 warnings.
+#[test]
+fn doxygen_builds_the_readme_fixture_without_warnings() {
+    if !have("doxygen") {
+        return;
+    }
+    let input = root().join("tests/fixtures/readme");
+    let (_t, out) = render(&input, Format::Doxygen, Lang::En);
+    run_doxygen(&out);
+    let page = std::fs::read_to_string(out.join("html/rtc_comp_camera.html")).expect("page");
+    assert!(page.contains("Camera component"), "README shown");
+    assert!(!page.contains("<script>alert"), "no script");
+}
+
 #[test]
 fn doxygen_builds_the_examples_in_japanese() {
     if !have("doxygen") {
@@ -506,6 +520,28 @@ fn mdbook_builds_the_examples_without_warnings_or_broken_links() {
     for t in &cat.interfaces {
         assert!(book.join(format!("interfaces/{}.html", t.slug)).is_file());
     }
+}
+
+/// A component folder's README (hostile raw HTML, a table, images, links to another component,
+/// a `{{#include}}` line) builds into the book: no warning, no broken link, its image copied, the
+/// link to the other component a link to its chapter.
+#[test]
+fn mdbook_builds_the_readme_fixture() {
+    if !have("mdbook") {
+        return;
+    }
+    let input = root().join("tests/fixtures/readme");
+    let (_t, out) = render(&input, Format::Markdown, Lang::En);
+    let (_b, book) = run_mdbook(&out);
+    let page = std::fs::read_to_string(book.join("components/camera.html")).expect("page");
+    assert!(
+        page.contains("<h3 id=\"readme-camera-component\">"),
+        "README shown"
+    );
+    assert!(page.contains("../assets/readme/diagram-"), "image shown");
+    assert!(book.join("assets/readme").is_dir(), "image copied");
+    assert!(!page.contains("root:x:0"), "no file included");
+    assert!(!page.contains("<script>alert"), "no script");
 }
 
 #[test]

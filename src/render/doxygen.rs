@@ -320,6 +320,12 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
         d!(out, "</ul>");
         d!(out);
     }
+    // The README as plain paragraphs of its Markdown source: Doxygen's own Markdown and HTML
+    // would read it differently from the site, and its commands are not to be run.
+    if let Some(r) = c.readme.as_ref().filter(|r| !r.text.trim().is_empty()) {
+        section(&mut out, &page, "sec-readme", lang.t("readme"));
+        paragraphs(&mut out, &r.text);
+    }
     out
 }
 

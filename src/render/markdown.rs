@@ -289,7 +289,14 @@ fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
     ))
 }
 
-fn component_page(cat: &Catalog, ci: usize, cat_page: &Page, title: &str, lang: Lang) -> String {
+fn component_page(
+    cat: &Catalog,
+    ci: usize,
+    cat_page: &Page,
+    title: &str,
+    lang: Lang,
+    readme: &Readmes,
+) -> String {
     let c = &cat.components[ci];
     let p = &c.profile;
     let mut out = String::with_capacity(4096);
@@ -322,6 +329,49 @@ fn component_page(cat: &Catalog, ci: usize, cat_page: &Page, title: &str, lang: 
             }
         }
         w!(out);
+    }
+    if let Some(r) = &c.readme {
+        let html = crate::render::html::readme::readme_html(r, readme);
+        if !html.trim().is_empty() {
+            heading(&mut out, 2, "sec-readme", lang.t("readme"));
+            w!(out, "{}", readme_block(&html));
+            w!(out);
+        }
+    }
+    out
+}
+
+/// Where the links of the READMEs go in the Markdown output.
+type Readmes = std::sync::Arc<crate::render::html::readme::Targets>;
+
+/// The targets of README links from a component page (`components/x.md`).
+fn readme_targets(cat: &Catalog, source_url: Option<&str>) -> Readmes {
+    std::sync::Arc::new(crate::render::html::readme::Targets::new(
+        cat,
+        source_url,
+        "../",
+        |ci| cat.component_page(ci).path_in(Output::Markdown),
+    ))
+}
+
+/// A README's sanitised HTML as one Markdown HTML block (mdBook and GitHub show it as is): no
+/// blank line inside, which would end the block (a blank line's break is written `&#10;`);
+/// braces as character references, so `{{#include …}}` is no mdBook directive, and brackets,
+/// so that no text of it reads as a Markdown link to a renderer that looked inside the block.
+fn readme_block(html: &str) -> String {
+    let body = format!("<div class=\"readme\">\n{}</div>", html.trim_end())
+        .replace('{', "&#123;")
+        .replace('}', "&#125;")
+        .replace('[', "&#91;")
+        .replace(']', "&#93;");
+    let mut out = String::with_capacity(body.len() + 64);
+    for (i, line) in body.split('\n').enumerate() {
+        if i > 0 && line.trim().is_empty() {
+            out.push_str("&#10;");
+        } else if i > 0 {
+            out.push('\n');
+        }
+        out.push_str(line);
     }
     out
 }
@@ -716,11 +766,12 @@ fn system_page(cat: &Catalog, si: usize, title: &str, lang: Lang, show_host: boo
 /// Renders every page as (relative path, content), in a fixed order.
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = cat.category_of_each();
+    let readme = readme_targets(cat, None);
     let mut out = other_pages(cat, title, lang, false);
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
-            .map(|ci| component_entry(cat, &of, ci, title, lang)),
+            .map(|ci| component_entry(cat, &of, ci, title, lang, &readme)),
     );
     out
 }
@@ -732,10 +783,11 @@ fn component_entry(
     ci: usize,
     title: &str,
     lang: Lang,
+    readme: &Readmes,
 ) -> (String, String) {
     (
         cat.component_page(ci).path_in(Output::Markdown),
-        component_page(cat, ci, cat.category_page(of[ci]), title, lang),
+        component_page(cat, ci, cat.category_page(of[ci]), title, lang, readme),
     )
 }
 
@@ -804,13 +856,19 @@ impl Renderer for MarkdownRenderer {
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
         // Component pages are the bulk: written as they are rendered, never all held at once.
         let of = cat.category_of_each();
+        let readme = readme_targets(cat, ctx.site.source_url.as_deref());
         (0..cat.components.len())
             .into_par_iter()
             .try_for_each(|ci| {
-                let (path, text) = component_entry(cat, &of, ci, title, lang);
+                let (path, text) = component_entry(cat, &of, ci, title, lang, &readme);
                 out.write(&path, text.as_bytes())
             })?;
-        Ok(pages.len() + cat.components.len())
+        // The images the READMEs show, each copied once (mdBook copies them into the book).
+        let assets = crate::readme::assets(cat);
+        for (asset, abs) in &assets {
+            out.write_owned(asset, crate::readme::read_asset(abs)?)?;
+        }
+        Ok(pages.len() + cat.components.len() + assets.len())
     }
 }
 

@@ -12,6 +12,7 @@ mod builtins;
 mod diagnostics;
 pub mod markdown;
 mod native;
+pub mod readme;
 pub mod repo;
 pub mod search;
 pub mod svg;
@@ -349,6 +350,8 @@ struct ComponentPage {
     summary_html: Option<String>,
     header: Vec<Field>,
     document: Vec<Field>,
+    /// The folder's README, sanitised ([`readme`]); `None` when there is none or it is blank.
+    readme_html: Option<String>,
     diagram_svg: String,
     data_ports: Vec<DataPortRow>,
     data_cols: Columns,
@@ -382,6 +385,8 @@ struct Site<'a> {
     summaries: Vec<ComponentSummary>,
     /// The category facet of each component ([`Catalog::category_of_each`]).
     category_of: Vec<usize>,
+    /// Where README links go ([`readme::Targets`]).
+    readme_targets: std::sync::Arc<readme::Targets>,
 }
 
 fn dir_label(
@@ -840,6 +845,11 @@ impl<'a> Site<'a> {
             name,
             header,
             document,
+            readme_html: c
+                .readme
+                .as_ref()
+                .map(|r| readme::readme_html(r, &self.readme_targets))
+                .filter(|h| !h.trim().is_empty()),
             diagram_svg,
             data_cols: Columns {
                 unit: data_ports.iter().any(|r| !r.unit.is_empty()),
@@ -1057,6 +1067,12 @@ impl HtmlRenderer {
             lang,
             summaries: Vec::new(),
             category_of: catalog.category_of_each(),
+            readme_targets: std::sync::Arc::new(readme::Targets::new(
+                catalog,
+                opts.source_url.as_deref(),
+                "../",
+                |ci| catalog.component_page(ci).path("html"),
+            )),
         };
         site.summaries = (0..catalog.components.len())
             .map(|ci| site.summary(ci))
@@ -1076,6 +1092,14 @@ impl HtmlRenderer {
             if wanted(asset) {
                 let body = theme_file(opts.theme_dir.as_deref(), asset)?.unwrap_or_default();
                 out.write(asset, body.as_bytes())?;
+                written += 1;
+            }
+        }
+        // The images the READMEs show, each copied once.
+        for (asset, abs) in crate::readme::assets(catalog) {
+            all_paths.push(asset.to_string());
+            if wanted(asset) {
+                out.write_owned(asset, crate::readme::read_asset(abs)?)?;
                 written += 1;
             }
         }

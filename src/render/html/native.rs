@@ -175,6 +175,12 @@ impl Out<'_> {
 
     /// `{% if cond %}<li><a href="#id">{{ t.key }}</a></li>{% endif %}` and its line break.
     fn toc_entry(&mut self, cond: bool, id: &str, key: &str) {
+        self.toc_item(cond, id, key);
+        self.raw("\n");
+    }
+
+    /// [`Out::toc_entry`] without the line break.
+    fn toc_item(&mut self, cond: bool, id: &str, key: &str) {
         if cond {
             self.raw("<li><a href=\"#");
             self.raw(id);
@@ -182,7 +188,6 @@ impl Out<'_> {
             self.label(key);
             self.raw("</a></li>");
         }
-        self.raw("\n");
     }
 
     /// A section holding one table: `<section id>`, `<h2>`, the table-wrap `<div>`, `<table>`
@@ -345,7 +350,8 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     o.raw("\n<nav class=\"toc\" aria-label=\"");
     o.label("component");
     o.raw("\">\n<ul>\n");
-    o.toc_entry(!p.document.is_empty(), "document", "document");
+    o.toc_item(!p.document.is_empty(), "document", "document");
+    o.toc_entry(p.readme_html.is_some(), "readme", "readme");
     o.toc_entry(true, "diagram", "component_diagram");
     o.toc_entry(!p.data_ports.is_empty(), "data-ports", "data_ports");
     o.toc_entry(
@@ -381,6 +387,13 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
         o.section_start("document", true, "document");
         o.fields(&p.document);
         o.raw("\n</section>");
+    }
+    if let Some(h) = &p.readme_html {
+        o.raw("\n\n");
+        o.section_start("readme", true, "readme");
+        o.raw("<div class=\"readme\">");
+        o.raw(h);
+        o.raw("</div>\n</section>");
     }
     o.raw("\n\n");
 
