@@ -2,8 +2,8 @@
 //! the Markdown output, which embeds the same HTML).
 //!
 //! pulldown-cmark (tables, strikethrough, task lists, footnotes) then ammonia. Headings are
-//! shifted so that the README's `#` is an `<h3>` (under the page's "README" `<h2>`), capped at
-//! `<h6>`, and get ids `readme-<GitHub-style slug>`, unique within the page; a fragment link
+//! shifted so that the README's top level is an `<h3>` (under the page's "README" `<h2>`) and
+//! the levels it uses follow without a gap, capped at `<h6>` ([`Levels`]), and get ids `readme-<GitHub-style slug>`, unique within the page; a fragment link
 //! `#foo` goes to the heading whose slug is `foo`, or is dropped (its text kept). Raw HTML goes
 //! through the same sanitiser: no script, style, iframe, form, event handler, `javascript:` or
 //! `data:` URL; `<h1>`/`<h2>` of raw HTML keep only their text (the page has its own).
@@ -138,12 +138,39 @@ fn collect_ids(events: &[Event<'_>]) -> Ids {
     ids
 }
 
-fn shift(level: HeadingLevel) -> HeadingLevel {
-    match level {
-        HeadingLevel::H1 => HeadingLevel::H3,
-        HeadingLevel::H2 => HeadingLevel::H4,
-        HeadingLevel::H3 => HeadingLevel::H5,
-        _ => HeadingLevel::H6,
+/// The page level of each README heading level: the levels the README uses, in order, become
+/// h3, h4, … (capped at h6), so the README's top heading sits right under the section's h2 and
+/// no level is skipped (a README starting at `##`, or jumping from `#` to `###`, reads as
+/// h3, h4).
+struct Levels([HeadingLevel; 6]);
+
+impl Levels {
+    fn of(events: &[Event<'_>]) -> Levels {
+        let mut used = [false; 6];
+        for e in events {
+            if let Event::Start(Tag::Heading { level, .. }) = e {
+                used[*level as usize - 1] = true;
+            }
+        }
+        let page = [
+            HeadingLevel::H3,
+            HeadingLevel::H4,
+            HeadingLevel::H5,
+            HeadingLevel::H6,
+        ];
+        let mut map = [HeadingLevel::H6; 6];
+        let mut rank = 0;
+        for (i, u) in used.iter().enumerate() {
+            map[i] = page[rank.min(page.len() - 1)];
+            if *u {
+                rank += 1;
+            }
+        }
+        Levels(map)
+    }
+
+    fn shift(&self, level: HeadingLevel) -> HeadingLevel {
+        self.0[level as usize - 1]
     }
 }
 
@@ -152,6 +179,8 @@ fn shift(level: HeadingLevel) -> HeadingLevel {
 fn raw_html(text: &str) -> (String, Ids) {
     let events: Vec<Event<'_>> = Parser::new_ext(text, options()).collect();
     let ids = collect_ids(&events);
+    let levels = Levels::of(&events);
+    let shift = |l| levels.shift(l);
     let mut heading = ids.headings.iter();
     let note = |l: &str| ids.footnotes.get(&l.to_lowercase()).cloned();
     let out = events.into_iter().map(|e| match e {
@@ -462,9 +491,38 @@ mod tests {
         assert!(h.contains("<h3 id=\"readme-camera\">Camera</h3>"), "{h}");
         assert!(h.contains("<h4 id=\"readme-usage\">"), "{h}");
         assert!(h.contains("<h4 id=\"readme-usage-1\">"), "{h}");
-        assert!(h.contains("<h6 id=\"readme-deep\">"), "{h}");
+        assert!(h.contains("<h5 id=\"readme-deep\">"), "{h}");
         assert!(h.contains("<h6 id=\"readme-deeper\">"), "{h}");
         assert!(!h.contains("<h1") && !h.contains("<h2"), "{h}");
+    }
+
+    #[test]
+    fn headings_skip_no_level() {
+        // A README that starts at `##` and jumps to `####`: h3, h4 on the page.
+        let h = html(
+            "## Build
+#### Linux
+## Run
+",
+        );
+        assert!(h.contains("<h3 id=\"readme-build\">"), "{h}");
+        assert!(h.contains("<h4 id=\"readme-linux\">"), "{h}");
+        assert!(h.contains("<h3 id=\"readme-run\">"), "{h}");
+        // Seven levels deep would need h9: the deepest share h6.
+        let d = html(
+            "# a
+## b
+### c
+#### d
+##### e
+###### f
+",
+        );
+        assert!(d.contains("<h5 id=\"readme-c\">"), "{d}");
+        assert!(
+            d.contains("<h6 id=\"readme-d\">") && d.contains("<h6 id=\"readme-f\">"),
+            "{d}"
+        );
     }
 
     #[test]
