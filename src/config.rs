@@ -93,25 +93,11 @@ impl Loaded {
 /// Parses configuration text. Errors name the file, the line and column, and the key.
 pub fn parse(text: &str, file: &Path) -> Result<Config> {
     toml::from_str::<Config>(text).map_err(|e| {
-        let (line, col) = e.span().map(|s| line_col(text, s.start)).unwrap_or((1, 1));
-        anyhow::anyhow!(
-            "{}:{line}:{col}: {}",
-            file.display(),
-            e.message().trim_end()
-        )
+        let pos = e.span().map_or(crate::model::Pos::new(1, 1), |s| {
+            crate::model::Pos::at_offset(text, s.start)
+        });
+        anyhow::anyhow!("{}:{pos}: {}", file.display(), e.message().trim_end())
     })
-}
-
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let col = before
-        .rsplit('\n')
-        .next()
-        .map(|l| l.chars().count())
-        .unwrap_or(0)
-        + 1;
-    (line, col)
 }
 
 /// Reads `explicit` when given (it must exist), else the first `rtcdoc.toml` found in

@@ -44,6 +44,21 @@ impl Pos {
     pub fn new(line: u32, column: u32) -> Self {
         Pos { line, column }
     }
+    /// The line and column (1-based, columns in characters) of byte `offset` of `text`; an
+    /// offset past the end or inside a character counts up to the last whole character before.
+    pub fn at_offset(text: &str, offset: usize) -> Self {
+        let mut end = offset.min(text.len());
+        while !text.is_char_boundary(end) {
+            end -= 1;
+        }
+        let before = &text[..end];
+        let line = before.matches('\n').count() + 1;
+        let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        Pos::new(
+            u32::try_from(line).unwrap_or(u32::MAX),
+            u32::try_from(col).unwrap_or(u32::MAX),
+        )
+    }
     /// True when no position is known (line 0).
     pub fn is_unknown(&self) -> bool {
         self.line == 0
@@ -273,6 +288,18 @@ pub fn field_name(local: &str) -> Option<&'static str> {
 #[cfg(test)]
 mod attr_pos_tests {
     use super::*;
+
+    #[test]
+    fn positions_of_offsets_count_characters() {
+        let t = "ab\nカメラx";
+        assert_eq!(Pos::at_offset(t, 0), Pos::new(1, 1));
+        assert_eq!(Pos::at_offset(t, 3), Pos::new(2, 1));
+        // `x` after three 3-byte characters is column 4.
+        assert_eq!(Pos::at_offset(t, 12), Pos::new(2, 4));
+        // Inside a character, or past the end: up to the last whole character.
+        assert_eq!(Pos::at_offset(t, 4), Pos::new(2, 1));
+        assert_eq!(Pos::at_offset(t, 99), Pos::new(2, 5));
+    }
 
     #[test]
     fn every_field_name_has_an_index() {

@@ -220,18 +220,12 @@ pub fn read(path: &Path) -> Read {
             None => Read::Shown(t.to_string()),
         },
         Err(e) => {
-            let at = e.valid_up_to();
-            // The valid prefix is UTF-8: count its lines and the characters of the last one.
-            let prefix = std::str::from_utf8(&body[..at]).unwrap_or_default();
-            let line = prefix.matches('\n').count() + 1;
-            let col = prefix.rsplit('\n').next().unwrap_or("").chars().count() + 1;
+            // The valid prefix is UTF-8: the position is where it ends.
+            let prefix = std::str::from_utf8(&body[..e.valid_up_to()]).unwrap_or_default();
             Read::Unreadable(
                 "the README is not valid UTF-8; it is not shown".into(),
                 "save it as UTF-8",
-                Pos::new(
-                    u32::try_from(line).unwrap_or(u32::MAX),
-                    u32::try_from(col).unwrap_or(u32::MAX),
-                ),
+                Pos::at_offset(prefix, prefix.len()),
             )
         }
     }
@@ -338,18 +332,8 @@ pub fn asset_path(path: &str, ext: &str) -> String {
 
 /// The line and column of the first occurrence of `needle` in `text` (unknown when absent).
 fn position_of(text: &str, needle: &str) -> Pos {
-    match text.find(needle) {
-        Some(at) => {
-            let before = &text[..at];
-            let line = before.matches('\n').count() + 1;
-            let col = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
-            Pos::new(
-                u32::try_from(line).unwrap_or(u32::MAX),
-                u32::try_from(col).unwrap_or(u32::MAX),
-            )
-        }
-        None => Pos::default(),
-    }
+    text.find(needle)
+        .map_or_else(Pos::default, |at| Pos::at_offset(text, at))
 }
 
 /// Checks the local images of README `file` (in folder `dir` of the input at `root`): the

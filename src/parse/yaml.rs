@@ -132,14 +132,12 @@ fn source<'b>(bytes: &'b [u8], file: &str, limits: &Limits) -> Result<&'b str, D
             let valid = &bytes[..e.valid_up_to()];
             // The prefix is valid UTF-8 by construction.
             let prefix = std::str::from_utf8(valid).unwrap_or("");
-            let line = prefix.matches('\n').count() + 1;
-            let col = prefix.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
             return Err(Diagnostic::error(
                 codes::ENCODING,
                 file,
                 format!("invalid UTF-8 byte sequence at byte {}", e.valid_up_to()),
             )
-            .at(Pos::new(to_u32(line), to_u32(col)))
+            .at(Pos::at_offset(prefix, prefix.len()))
             .with_hint("YAML profiles must be UTF-8; re-save the file as UTF-8"));
         }
     };

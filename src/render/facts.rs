@@ -73,12 +73,7 @@ impl Facts {
     }
     /// Like [`Facts::opt`], for free text ([`FactKind::Text`]).
     fn md(&mut self, key: &'static str, v: &Option<crate::model::Text>) -> &mut Self {
-        if let Some(s) = model::non_empty(v) {
-            let mut f = Fact::new(self.lang.t(key), s);
-            f.kind = FactKind::Text;
-            self.out.push(f);
-        }
-        self
+        self.md_str(key, model::non_empty(v))
     }
     fn text(&mut self, key: &'static str, v: &str) -> &mut Self {
         let v = v.trim();

@@ -438,26 +438,24 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             o.text(&r.unit);
             o.raw("</td>\n");
         }
-        if !cols.description {
-            o.peers_cell(cols.peers, &r.peers, &r.peers_more);
-            continue;
-        }
-        o.td_desc();
-        o.fields(&r.details);
-        if !r.events.is_empty() {
-            o.raw("<div class=\"events\"><strong>");
-            o.label("events");
-            o.raw("</strong>\n<ul>\n");
-            for e in &r.events {
-                o.raw("<li><code>");
-                o.text(&e.name);
-                o.raw("</code>");
-                o.fields(&e.fields);
-                o.raw("</li>\n");
+        if cols.description {
+            o.td_desc();
+            o.fields(&r.details);
+            if !r.events.is_empty() {
+                o.raw("<div class=\"events\"><strong>");
+                o.label("events");
+                o.raw("</strong>\n<ul>\n");
+                for e in &r.events {
+                    o.raw("<li><code>");
+                    o.text(&e.name);
+                    o.raw("</code>");
+                    o.fields(&e.fields);
+                    o.raw("</li>\n");
+                }
+                o.raw("</ul>\n</div>");
             }
-            o.raw("</ul>\n</div>");
+            o.raw("</td>\n");
         }
-        o.raw("</td>\n");
         o.peers_cell(cols.peers, &r.peers, &r.peers_more);
     }
     o.table_end();
