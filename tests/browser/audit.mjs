@@ -126,8 +126,14 @@ try {
     await page.goto(url('search.html'), { waitUntil: 'load' });
     await page.focus('#search-input');
     await page.keyboard.type(q);
-    await page.waitForFunction(() => document.querySelectorAll('#search-results a').length > 0
-      || /0|—/.test((document.getElementById('search-status') || {}).textContent || ''), { timeout: 3000 }).catch(() => {});
+    // Wait for the results of the whole query: results of a prefix typed earlier may already
+    // be on the page (each keystroke renders); the status line names the query it answers.
+    await page.waitForFunction((typed) => {
+      const st = document.getElementById('search-status');
+      const box = document.getElementById('search-page');
+      const text = (st && st.textContent) || '';
+      return text.endsWith(' · ' + typed) || (box && text === box.getAttribute('data-no-results'));
+    }, { timeout: 5000 }, q).catch(() => {});
     const got = await page.evaluate(() => ({
       query: new URLSearchParams(location.search).get('q'),
       results: Array.from(document.querySelectorAll('#search-results a')).map((a) => ({
