@@ -1,6 +1,6 @@
 //! The pipeline behind `rtcdoc build`: walk → parse (in parallel) → catalogue → render → swap.
 
-use crate::catalog::{Catalog, LoadedProfile};
+use crate::catalog::{backups::Backup, Catalog, LoadedProfile};
 use crate::diagnostic::Diagnostic;
 use crate::output::{absolute, Sink, Staging, WriterThread};
 use crate::parse::{self, Limits};
@@ -134,7 +134,29 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut files = 0;
     let mut systems = Vec::new();
     let mut failed_systems = Vec::new();
+    let mut backups = Vec::new();
     for ((path, rel), outcome) in found.files.into_iter().zip(outcomes) {
+        // RTCBuilder's backups are older versions of the profile beside them, not components:
+        // kept apart, whatever they hold (a file named on the command line is read as is).
+        let outcome = if !named && walk::is_backup(&path) {
+            match outcome {
+                Outcome::Loaded(p, _) => {
+                    backups.push(Backup::read(rel, p.profile));
+                    continue;
+                }
+                Outcome::Failed(d) => {
+                    backups.push(Backup::unreadable(rel, d.message));
+                    continue;
+                }
+                Outcome::NotProfile(what) => {
+                    backups.push(Backup::unreadable(rel, what));
+                    continue;
+                }
+                other => other,
+            }
+        } else {
+            outcome
+        };
         match outcome {
             Outcome::NotProfile(what) if named => {
                 bail!(
@@ -187,16 +209,18 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     }
     let idl = read_idl(&found.idl, opts)?;
     if files == 0 && systems.is_empty() && found.idl.is_empty() && !opts.allow_empty {
-        return Err(NothingToDocument(nothing_found(input, &skipped)).into());
+        return Err(NothingToDocument(nothing_found(input, &skipped, &backups)).into());
     }
     diagnostics.extend(idl.diagnostics.iter().cloned());
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
     let mut catalog = Catalog::build(profiles, diagnostics);
     catalog.attach_idl(idl);
     catalog.attach_systems(systems);
+    let root = input_root(input);
+    catalog.attach_backups(backups, &|rel| root.join(rel).is_file());
     crate::readme::attach(
         &mut catalog,
-        &input_root(input),
+        &root,
         &walk::exclude_matcher(&opts.exclude),
     );
     failed_systems.sort();
@@ -311,7 +335,7 @@ fn read_idl(found: &[(PathBuf, String)], opts: &LoadOptions) -> Result<crate::id
 }
 
 /// The message of [`NothingToDocument`]: the directory and what the walk left out, by kind.
-fn nothing_found(input: &Path, skipped: &[walk::Skipped]) -> String {
+fn nothing_found(input: &Path, skipped: &[walk::Skipped], backups: &[Backup]) -> String {
     use walk::SkipKind;
     let count = |k: SkipKind| skipped.iter().filter(|s| s.kind == k).count();
     let mut parts = Vec::new();
@@ -330,6 +354,14 @@ fn nothing_found(input: &Path, skipped: &[walk::Skipped]) -> String {
         if n > 0 {
             parts.push(format!("{n} {what}"));
         }
+    }
+    if let Some(newest) = backups.iter().max_by(|a, b| a.file.cmp(&b.file)) {
+        parts.push(format!(
+            "{} RTCBuilder backup(s) without their RTC.xml (to document the newest, copy `{}` to `{}`)",
+            backups.len(),
+            newest.file,
+            newest.profile_path()
+        ));
     }
     let looked = if parts.is_empty() {
         "it holds no files".to_string()

@@ -19,6 +19,7 @@
 //! Renderers only read the catalogue; all cross-linking logic lives here. A new kind of
 //! document is a reader (in `parse`), an entry kind with its id here, a [`PageKind`], and views.
 
+pub mod backups;
 pub mod systems;
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
@@ -54,6 +55,10 @@ pub struct Component {
     /// The hand-written README of the profile's folder ([`crate::readme`]), when it has one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub readme: Option<crate::readme::Readme>,
+    /// RTCBuilder's backups of this profile (`RTC.xml<timestamp>` beside it), oldest first:
+    /// older versions of it, not components ([`backups`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub backups: Vec<backups::Backup>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
 }
@@ -392,6 +397,10 @@ pub struct Catalog {
     /// `catalog.json` when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub systems: Vec<systems::System>,
+    /// RTCBuilder backups whose `RTC.xml` is no component of the catalogue (it failed to read,
+    /// was excluded or is gone): older versions kept for the history, not documented.
+    #[serde(skip)]
+    pub detached_backups: Vec<backups::Backup>,
     #[serde(skip)]
     type_index: HashMap<String, usize>,
     #[serde(skip)]
@@ -694,6 +703,7 @@ impl Catalog {
                 anchors,
                 qualifier,
                 readme: None,
+                backups: Vec::new(),
                 source: l.source,
                 format: l.format,
                 slug,
@@ -945,6 +955,7 @@ impl Catalog {
             page_starts: PageStarts::default(),
             by_id,
             systems: Vec::new(),
+            detached_backups: Vec::new(),
             type_index,
             interface_index,
         };
@@ -987,6 +998,7 @@ impl Catalog {
             page_starts: PageStarts::default(),
             by_id,
             systems: Vec::new(),
+            detached_backups: Vec::new(),
             type_index,
             interface_index,
         };

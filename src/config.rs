@@ -208,7 +208,7 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 
 # Globs (relative to input) of files to take, and to leave out.
 # include = ["**"]
-# exclude = ["**/backup/**", "**/*.xml2*"]
+# exclude = ["**/backup/**"]
 
 {idl}
 

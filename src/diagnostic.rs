@@ -164,4 +164,6 @@ pub mod codes {
     pub const EMPTY_UNKNOWN: &str = "RTC011";
     /// A file named like a profile (`RTC.xml`, a backup `RTC.xml<timestamp>`) is not one.
     pub const NOT_A_PROFILE: &str = "RTC012";
+    /// RTCBuilder backups (`RTC.xml<timestamp>`) whose `RTC.xml` is gone.
+    pub const ORPHAN_BACKUP: &str = "RTC013";
 }

@@ -219,6 +219,7 @@ impl Workspace {
         // (duplicate ids) and the READMEs' again whenever it is rebuilt.
         for d in loaded.catalog.diagnostics.iter().filter(|d| {
             d.code != crate::diagnostic::codes::DUPLICATE_ID
+                && d.code != crate::diagnostic::codes::ORPHAN_BACKUP
                 && !crate::readme::CODES.contains(&d.code)
         }) {
             warnings.entry(d.file.clone()).or_default().push(d.clone());
@@ -268,9 +269,10 @@ impl Workspace {
         // An RT System profile added, changed or removed: everything is read again (systems
         // link to components and are listed on their pages; they are few).
         // A README or an image one shows: the same (READMEs are read for every folder).
+        // An RTCBuilder backup: the same (a save in RTCBuilder writes one beside the profile).
         if changed
             .iter()
-            .any(|p| self.is_system_file(p) || self.is_readme_file(p))
+            .any(|p| self.is_system_file(p) || self.is_readme_file(p) || walk::is_backup(p))
         {
             let opts = self.opts.clone();
             self.reload(&opts)
@@ -337,10 +339,12 @@ impl Workspace {
                 system: s.profile,
             })
             .collect();
+        let mut backups = std::mem::take(&mut old.detached_backups);
         let mut profiles: BTreeMap<String, LoadedProfile> = old
             .components
             .into_iter()
-            .map(|c| {
+            .map(|mut c| {
+                backups.append(&mut c.backups);
                 (
                     c.source.clone(),
                     LoadedProfile {
@@ -367,6 +371,8 @@ impl Workspace {
         let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
         catalog.attach_idl(idl);
         catalog.attach_systems(systems);
+        let root = &self.input_root;
+        catalog.attach_backups(backups, &|rel| root.join(rel).is_file());
         crate::readme::attach(
             &mut catalog,
             &self.input_root,

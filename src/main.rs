@@ -514,13 +514,16 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 if html && opts.site.base_url.is_none() {
                     eprintln!("note: no sitemap.xml: it needs absolute URLs; pass --base-url URL (or set base-url in rtcdoc.toml)");
                 }
+                if let Some(note) = loaded.catalog.backup_note() {
+                    eprintln!("note: {note}");
+                }
                 eprintln!(
                     "{} (details: {check_cmd})",
                     rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
                 );
                 eprintln!(
-                    "built {} profile(s) into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
-                    report.profiles,
+                    "built {} into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
+                    loaded.catalog.documented(),
                     opts.output.display(),
                     report.files_written,
                     report.errors,
@@ -672,8 +675,15 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     )?;
     let opts = load_options(&file, &args.input_args);
     let mut reports = Vec::new();
+    let mut counts = (0, 0, 0);
     for p in &paths {
         let loaded = build::load(p, &opts)?;
+        counts.0 += loaded.catalog.components.len();
+        counts.1 += loaded.catalog.systems.len();
+        counts.2 += loaded.catalog.idl.files.len();
+        if let (Some(note), false) = (loaded.catalog.backup_note(), cli.quiet) {
+            eprintln!("note: {note}");
+        }
         let mut r = check::check(&loaded.catalog);
         // Name files as the user can open them: relative to the current directory.
         let root = input_root(p);
@@ -737,14 +747,18 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                     (_, 0) => String::new(),
                     (d, t) => format!("; IDL {d}/{t}"),
                 };
-                eprintln!(
-                    "{}{hidden}; {} profile(s), documentation coverage {:.1}% ({}/{}{idl})",
-                    s.one_line(),
-                    report.coverage.components.len(),
-                    report.coverage.percent,
-                    report.coverage.documented,
-                    report.coverage.total
-                );
+                let documented = rtcdoc::catalog::backups::documented(counts.0, counts.1, counts.2);
+                let coverage = if report.coverage.total == 0 {
+                    String::new()
+                } else {
+                    format!(
+                        ", documentation coverage {:.1}% ({}/{}{idl})",
+                        report.coverage.percent,
+                        report.coverage.documented,
+                        report.coverage.total
+                    )
+                };
+                eprintln!("{}{hidden}; {documented}{coverage}", s.one_line());
             }
         }
     }

@@ -63,13 +63,14 @@ pub fn named_like_profile(path: &Path) -> bool {
     is_backup_name(name)
 }
 
-/// `RTC.xml` followed by a timestamp of digits, optionally ending in `.xml` (RTCBuilder's backup).
-fn is_backup_name(name: &str) -> bool {
-    let Some(rest) = name.strip_prefix("RTC.xml") else {
-        return false;
-    };
-    let digits = rest.strip_suffix(".xml").unwrap_or(rest);
-    (8..=17).contains(&digits.len()) && digits.bytes().all(|b| b.is_ascii_digit())
+pub use crate::catalog::backups::is_backup_name;
+
+/// Whether `path` is one of RTCBuilder's backups (`RTC.xml<timestamp>`): an older version of
+/// the `RTC.xml` beside it, never a component of its own ([`crate::catalog::backups`]).
+pub fn is_backup(path: &Path) -> bool {
+    path.file_name()
+        .and_then(|n| n.to_str())
+        .is_some_and(is_backup_name)
 }
 
 /// What a file that is not an RTC component profile is, for a message ("is empty: a failed
@@ -142,11 +143,7 @@ pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
     match ext.as_deref() {
         Some("xml") if parse::xml::is_profile(bytes) => Some(SourceFormat::Xml),
         Some("yaml") | Some("yml") if parse::yaml::is_profile(bytes) => Some(SourceFormat::Yaml),
-        _ if path
-            .file_name()
-            .and_then(|n| n.to_str())
-            .is_some_and(is_backup_name)
-            && parse::xml::is_profile(bytes) =>
+        _ if is_backup(path) && parse::xml::is_profile(bytes) =>
         {
             Some(SourceFormat::Xml)
         }

@@ -163,7 +163,7 @@ fn quiet_and_verbose() {
         err.contains("skipped 1 other file(s), not .xml/.yaml/.yml: 1 .txt"),
         "{err}"
     );
-    assert!(err.contains("built 1 profile(s)"));
+    assert!(err.contains("built 1 component profile into"));
     let q = rtcdoc(&["build", "in", "-f", "json", "-o", "o2", "--quiet"], d);
     assert!(q.status.success());
     assert!(

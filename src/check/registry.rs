@@ -184,7 +184,7 @@ pub static RULES: &[Rule] = &[
         summary: "two profiles declare the same component id",
         explanation: "The id identifies a component uniquely (`RTC:<vendor>:<category>:<name>:<version>`). Two profiles with the same id are ambiguous for repositories and tools that look components up by id; rtcdoc renders both on separate pages. Reported by the catalogue for every profile involved.",
         spec: "2.3.1.1 (id)",
-        hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy (e.g. an RTCBuilder backup RTC.xml2023…)",
+        hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy of the profile",
     },
     Rule {
         code: "RTC011",
@@ -200,9 +200,18 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "not-a-profile",
         summary: "a file named like a profile cannot be read as one",
-        explanation: "Files named `RTC.xml`, `RTC.yaml`, `*.rtc.xml` or `RTC.xml<timestamp>` (RTCBuilder's backups) are component profiles by convention. One that is empty, binary, not XML, has another root element or ends before its root is not documented; the warning says which, because it is usually a failed save or a file put in the wrong place, and skipping it silently would leave a component out of the catalogue unnoticed.",
+        explanation: "Files named `RTC.xml`, `RTC.yaml` or `*.rtc.xml` are component profiles by convention (RTCBuilder's backups `RTC.xml<timestamp>` are listed on their component's page instead, with the reason when one cannot be read). One that is empty, binary, not XML, has another root element or ends before its root is not documented; the warning says which, because it is usually a failed save or a file put in the wrong place, and skipping it silently would leave a component out of the catalogue unnoticed.",
         spec: "3.1 (XML mapping)",
         hint: "restore the profile from version control or RTCBuilder, or rename or exclude the file (`--exclude PATH`)",
+    },
+    Rule {
+        code: "RTC013",
+        severity: Warning,
+        name: "orphan-backup",
+        summary: "RTCBuilder backups whose RTC.xml is gone",
+        explanation: "Every save in RTCBuilder keeps the previous profile beside the new one as `RTC.xml<yyyymmddhhmmss>`. rtcdoc reads such a backup as an older version of the `RTC.xml` in its folder, never as a component of its own (it is listed on that component's page). When a folder holds backups but no `RTC.xml`, the profile was deleted or renamed: the backups are not documented, and this warning (one per folder, at the newest backup) says so instead of dropping them silently.",
+        spec: "3.1 (XML mapping); RTCBuilder's save behaviour",
+        hint: "copy the newest backup to `RTC.xml` in its folder to document the component, or delete the backups",
     },
     Rule {
         code: IDL_SYNTAX,

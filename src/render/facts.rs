@@ -619,3 +619,32 @@ mod tests {
         }
     }
 }
+
+/// A row of the backups table: the file, when it was saved, what it declares (or why it could
+/// not be read).
+#[derive(serde::Serialize)]
+pub struct BackupRow {
+    pub file: String,
+    pub saved: String,
+    pub declares: String,
+}
+
+impl BackupRow {
+    pub fn of(c: &crate::catalog::Component, lang: Lang) -> Vec<BackupRow> {
+        c.backups
+            .iter()
+            .map(|b| BackupRow {
+                file: b.file_name().to_string(),
+                saved: b.saved.clone().unwrap_or_default(),
+                declares: match &b.error {
+                    Some(e) => format!("{}: {e}", lang.t("backup_unreadable")),
+                    None => [b.name.as_deref(), b.version.as_deref()]
+                        .into_iter()
+                        .flatten()
+                        .collect::<Vec<_>>()
+                        .join(" "),
+                },
+            })
+            .collect()
+    }
+}

@@ -424,6 +424,25 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
         M::list(out, &logs);
     }
 
+    let backups = facts::BackupRow::of(c, lang);
+    if !backups.is_empty() {
+        M::heading(out, c, 2, "sec-backups", lang.t("backups"));
+        M::paragraph(out, &M::esc(lang.t("backups_intro")));
+        let rows: Vec<Vec<String>> = backups
+            .iter()
+            .map(|b| vec![M::code(&b.file), M::esc(&b.saved), M::esc(&b.declares)])
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("backup_file"),
+                lang.t("backup_saved"),
+                lang.t("backup_declares"),
+            ],
+            &rows,
+        );
+    }
+
     let extras = facts::extras(p);
     if !extras.is_empty() {
         M::heading(out, c, 2, "sec-extra", lang.t("extra"));

@@ -370,7 +370,10 @@ struct ComponentPage {
     extras: Vec<ExtraRow>,
     /// The systems with an instance of the component.
     systems: Vec<Link>,
+    /// RTCBuilder's backups of the profile: older versions, not components.
+    backups: Vec<facts::BackupRow>,
 }
+
 
 #[derive(Serialize)]
 struct PortUse {
@@ -902,6 +905,7 @@ impl<'a> Site<'a> {
                     href: format!("{root}{}", systems::system_path(self.catalog, s)),
                 })
                 .collect(),
+            backups: facts::BackupRow::of(c, self.lang),
         }
     }
 }
@@ -1268,6 +1272,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             component_count => catalog.components.len(),
             type_count => catalog.data_types.len(),
             interface_count => catalog.interfaces.len(),
+            system_count => catalog.systems.len(),
         }),
     });
 

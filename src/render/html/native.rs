@@ -376,6 +376,9 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     if !p.systems.is_empty() {
         o.toc_entry(true, "systems", "sys_used_by");
     }
+    if !p.backups.is_empty() {
+        o.toc_entry(true, "backups", "backups");
+    }
     o.toc_entry(!p.extras.is_empty(), "extra", "extra");
     o.raw("</ul>\n</nav>\n\n");
 
@@ -672,6 +675,26 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
             o.raw("</a></li>\n");
         }
         o.raw("</ul>\n</section>\n\n");
+    }
+    if !p.backups.is_empty() {
+        o.section_start("backups", false, "backups");
+        o.raw("<p>");
+        o.label("backups_intro");
+        o.raw("</p>\n<div class=\"table-wrap\">\n");
+        o.table_head("", &["backup_file", "backup_saved", "backup_declares"]);
+        o.raw("<tbody>\n");
+        for b in &p.backups {
+            o.raw("<tr><th scope=\"row\"><code>");
+            o.text(&b.file);
+            o.raw("</code></th>");
+            o.td("backup_saved");
+            o.text(&b.saved);
+            o.raw("</td>");
+            o.td("backup_declares");
+            o.text(&b.declares);
+            o.raw("</td></tr>\n");
+        }
+        o.raw("</tbody>\n</table>\n</div>\n</section>\n\n");
     }
     if !p.extras.is_empty() {
         o.table_start("extra", "extra", "", &["extra_path", "extra_kind", "value"]);

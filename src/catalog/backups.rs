@@ -1,0 +1,253 @@
+//! RTCBuilder's backups: every save keeps the previous profile beside the new one as
+//! `RTC.xml<yyyymmddhhmmss>` (local time of the save, e.g. `RTC.xml20150726072022`). A backup
+//! is an older *version* of the `RTC.xml` in its folder, never a component of its own: it is
+//! read once (its model kept here for the history of the component), listed on the component
+//! page, and otherwise left out of the index, the search, the peers, the type pages, the counts,
+//! `check` and `diff`. A backup whose `RTC.xml` is gone is reported (RTC013), not dropped.
+
+use crate::model::Profile;
+use serde::{Deserialize, Serialize};
+
+/// One backup file of a component profile.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub struct Backup {
+    /// Path relative to the input directory, forward slashes.
+    pub file: String,
+    /// When RTCBuilder saved it, from the file name: `2015-07-26 07:20:22` (local time of the
+    /// save; the name has no time zone). `None` when the digits are not a date.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub saved: Option<String>,
+    /// The component name and version the backup declares (its BasicInfo then).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub version: Option<String>,
+    /// Why the backup could not be read (a Shift_JIS file declaring UTF-8, a truncated save):
+    /// shown beside it instead of an error about the component.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    /// The profile as the backup holds it (kept for the component's history; not in the JSON,
+    /// where the profile beside it is the component).
+    #[serde(skip)]
+    pub profile: Option<Box<Profile>>,
+}
+
+impl Backup {
+    /// A backup read as a profile.
+    pub fn read(file: String, profile: Box<Profile>) -> Backup {
+        let non_empty = |s| crate::model::non_empty(s).map(str::to_string);
+        Backup {
+            saved: saved_at(&file),
+            name: non_empty(&profile.basic_info.name),
+            version: non_empty(&profile.basic_info.version),
+            error: None,
+            profile: Some(profile),
+            file,
+        }
+    }
+
+    /// A backup that could not be read as a profile, with the reason.
+    pub fn unreadable(file: String, error: String) -> Backup {
+        Backup {
+            saved: saved_at(&file),
+            name: None,
+            version: None,
+            error: Some(error),
+            profile: None,
+            file,
+        }
+    }
+
+    /// The file name alone (`RTC.xml20150726072022`).
+    pub fn file_name(&self) -> &str {
+        self.file.rsplit('/').next().unwrap_or(&self.file)
+    }
+
+    /// The input-relative path of the profile this is a backup of: `RTC.xml` in its folder.
+    pub fn profile_path(&self) -> String {
+        match self.file.rsplit_once('/') {
+            Some((dir, _)) => format!("{dir}/RTC.xml"),
+            None => "RTC.xml".to_string(),
+        }
+    }
+}
+
+/// Whether a file name is one of RTCBuilder's backups: `RTC.xml` followed by a timestamp of
+/// digits, optionally ending in `.xml` (`RTC.xml20230831164412.xml` occurs too).
+pub fn is_backup_name(name: &str) -> bool {
+    timestamp(name).is_some()
+}
+
+/// The digits after `RTC.xml` in a backup's name.
+fn timestamp(name: &str) -> Option<&str> {
+    let rest = name.strip_prefix("RTC.xml")?;
+    let digits = rest.strip_suffix(".xml").unwrap_or(rest);
+    ((8..=17).contains(&digits.len()) && digits.bytes().all(|b| b.is_ascii_digit()))
+        .then_some(digits)
+}
+
+/// The save time a backup's name encodes (`yyyymmddhhmmss`, or just `yyyymmdd`), as
+/// `YYYY-MM-DD hh:mm:ss`; `None` when the digits are not a plausible date.
+pub fn saved_at(path: &str) -> Option<String> {
+    let name = path.rsplit('/').next().unwrap_or(path);
+    let d = timestamp(name)?;
+    let num = |r: std::ops::Range<usize>| d.get(r).and_then(|s| s.parse::<u32>().ok());
+    let (y, mo, day) = (num(0..4)?, num(4..6)?, num(6..8)?);
+    if !(1990..=2999).contains(&y) || !(1..=12).contains(&mo) || !(1..=31).contains(&day) {
+        return None;
+    }
+    match d.len() {
+        8 => Some(format!("{y:04}-{mo:02}-{day:02}")),
+        14 => {
+            let (h, mi, s) = (num(8..10)?, num(10..12)?, num(12..14)?);
+            (h < 24 && mi < 60 && s < 61)
+                .then(|| format!("{y:04}-{mo:02}-{day:02} {h:02}:{mi:02}:{s:02}"))
+        }
+        _ => None,
+    }
+}
+
+impl crate::catalog::Catalog {
+    /// Takes in the backups read (after [`crate::catalog::Catalog::build`]): each joins the
+    /// component whose profile is the `RTC.xml` beside it, oldest first. One whose `RTC.xml`
+    /// does not exist (`exists` says, by input-relative path) is reported once per folder
+    /// (RTC013); one whose `RTC.xml` exists but is no component (it failed to read, or was
+    /// excluded) is kept in [`crate::catalog::Catalog::detached_backups`].
+    pub fn attach_backups(&mut self, mut backups: Vec<Backup>, exists: &dyn Fn(&str) -> bool) {
+        backups.sort_by(|a, b| a.file.cmp(&b.file));
+        let by_source: std::collections::HashMap<&str, usize> = self
+            .components
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c.source.as_str(), i))
+            .collect();
+        let mut attach: Vec<(usize, Backup)> = Vec::new();
+        let mut orphans: std::collections::BTreeMap<String, Vec<String>> = Default::default();
+        let mut detached = Vec::new();
+        for b in backups {
+            let of = b.profile_path();
+            match by_source.get(of.as_str()) {
+                Some(&i) => attach.push((i, b)),
+                None => {
+                    if !exists(&of) {
+                        orphans.entry(of).or_default().push(b.file.clone());
+                    }
+                    detached.push(b);
+                }
+            }
+        }
+        for (i, b) in attach {
+            self.components[i].backups.push(b);
+        }
+        for c in &mut self.components {
+            // Oldest first: by the date in the name (the names sort as the dates do).
+            c.backups.sort_by(|a, b| a.file_name().cmp(b.file_name()));
+        }
+        for (of, files) in orphans {
+            let newest = files.iter().max().cloned().unwrap_or_default();
+            let names: Vec<&str> = files
+                .iter()
+                .map(|f| f.rsplit('/').next().unwrap_or(f))
+                .collect();
+            self.diagnostics.push(
+                crate::diagnostic::Diagnostic::warning(
+                    crate::diagnostic::codes::ORPHAN_BACKUP,
+                    &newest,
+                    format!(
+                        "{} RTCBuilder backup(s) ({}) but no {of} beside them: the profile was deleted or renamed, and the backups are not documented",
+                        files.len(),
+                        names.join(", ")
+                    ),
+                )
+                .with_hint(format!(
+                    "to document the component, copy the newest backup `{}` to `RTC.xml` in the same folder; otherwise delete the backups",
+                    newest.rsplit('/').next().unwrap_or(&newest)
+                )),
+            );
+        }
+        crate::diagnostic::sort(&mut self.diagnostics);
+        self.detached_backups = detached;
+    }
+
+    /// What the catalogue documents, for a summary line: `83 component profiles, 1 RT System
+    /// and 66 IDL files` (kinds with none left out; `nothing` when empty).
+    pub fn documented(&self) -> String {
+        documented(
+            self.components.len(),
+            self.systems.len(),
+            self.idl.files.len(),
+        )
+    }
+
+    /// `106 RTCBuilder backups (older versions of 41 profiles) are not documented as
+    /// components`, when there are any.
+    pub fn backup_note(&self) -> Option<String> {
+        let mut profiles: std::collections::BTreeSet<String> = self
+            .components
+            .iter()
+            .filter(|c| !c.backups.is_empty())
+            .map(|c| c.source.clone())
+            .collect();
+        profiles.extend(self.detached_backups.iter().map(Backup::profile_path));
+        let files = self
+            .components
+            .iter()
+            .map(|c| c.backups.len())
+            .sum::<usize>()
+            + self.detached_backups.len();
+        (files > 0).then(|| {
+            format!(
+                "{files} RTCBuilder backup{} (older versions of {} profile{}) {} not documented as components",
+                if files == 1 { "" } else { "s" },
+                profiles.len(),
+                if profiles.len() == 1 { "" } else { "s" },
+                if files == 1 { "is" } else { "are" },
+            )
+        })
+    }
+}
+
+/// [`crate::catalog::Catalog::documented`] from the counts (several inputs of `check` add up).
+pub fn documented(components: usize, systems: usize, idl_files: usize) -> String {
+    let plural = |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    let mut parts = Vec::new();
+    if components > 0 || (systems == 0 && idl_files == 0) {
+        parts.push(plural(components, "component profile", "component profiles"));
+    }
+    if systems > 0 {
+        parts.push(plural(systems, "RT System", "RT Systems"));
+    }
+    if idl_files > 0 {
+        parts.push(plural(idl_files, "IDL file", "IDL files"));
+    }
+    match parts.pop() {
+        Some(last) if !parts.is_empty() => format!("{} and {last}", parts.join(", ")),
+        Some(last) => last,
+        None => String::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_and_dates() {
+        assert!(is_backup_name("RTC.xml20150726072022"));
+        assert!(is_backup_name("RTC.xml20230831164412.xml"));
+        assert!(!is_backup_name("RTC.xml"));
+        assert!(!is_backup_name("RTC.xml.bak"));
+        assert!(!is_backup_name("RTC.xml2015a"));
+        assert_eq!(
+            saved_at("a/b/RTC.xml20150726072022").as_deref(),
+            Some("2015-07-26 07:20:22")
+        );
+        assert_eq!(saved_at("RTC.xml20150726").as_deref(), Some("2015-07-26"));
+        assert_eq!(saved_at("RTC.xml20151399072022"), None);
+        assert_eq!(saved_at("RTC.xml201507260720"), None);
+        let b = Backup::unreadable("x/RTC.xml20150726072022".into(), "bad".into());
+        assert_eq!(b.profile_path(), "x/RTC.xml");
+        assert_eq!(b.file_name(), "RTC.xml20150726072022");
+    }
+}
