@@ -218,11 +218,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     catalog.attach_systems(systems);
     let root = input_root(input);
     catalog.attach_backups(backups, &|rel| root.join(rel).is_file());
-    crate::readme::attach(
-        &mut catalog,
-        &root,
-        &walk::exclude_matcher(&opts.exclude),
-    );
+    crate::readme::attach(&mut catalog, &root, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();
     Ok(Loaded {
         catalog,

@@ -753,9 +753,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 } else {
                     format!(
                         ", documentation coverage {:.1}% ({}/{}{idl})",
-                        report.coverage.percent,
-                        report.coverage.documented,
-                        report.coverage.total
+                        report.coverage.percent, report.coverage.documented, report.coverage.total
                     )
                 };
                 eprintln!("{}{hidden}; {documented}{coverage}", s.one_line());

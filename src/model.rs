@@ -1085,6 +1085,59 @@ pub fn property_value<'a>(props: &'a [Property], name: &str) -> Option<&'a str> 
         .and_then(|p| p.value.as_deref())
 }
 
+/// Profile prose as it means: RTCBuilder stores a line break inside a text field as the tag
+/// `<br/>` (escaped in the XML as `&lt;br/&gt;`; `<br>`, `<BR>` and `<br />` occur too, and
+/// the doubly escaped `&lt;br/&gt;` after a round trip through another tool). Each becomes a
+/// line break; everything else is unchanged. Every output renders prose through this one
+/// function (HTML, Markdown, Doxygen, the search index); the JSON keeps the value as written.
+pub fn prose(s: &str) -> std::borrow::Cow<'_, str> {
+    if memchr::memchr2(b'<', b'&', s.as_bytes()).is_none() {
+        return std::borrow::Cow::Borrowed(s);
+    }
+    // The length of a line-break tag at the start of `rest`, if one starts there.
+    fn tag_len(rest: &str) -> Option<usize> {
+        let (open, close) = if rest.starts_with('<') {
+            ("<", ">")
+        } else if rest.starts_with("&lt;") {
+            ("&lt;", "&gt;")
+        } else {
+            return None;
+        };
+        let after = &rest[open.len()..];
+        if !after.get(..2)?.eq_ignore_ascii_case("br") {
+            return None;
+        }
+        let tail = &after[2..];
+        let trimmed = tail.trim_start_matches([' ', '\t']);
+        let trimmed = trimmed.strip_prefix('/').unwrap_or(trimmed);
+        let end = trimmed.strip_prefix(close)?;
+        Some(rest.len() - end.len())
+    }
+    let mut out = String::with_capacity(s.len());
+    let mut last = 0;
+    let mut i = 0;
+    let b = s.as_bytes();
+    let mut changed = false;
+    while i < b.len() {
+        if b[i] == b'<' || b[i] == b'&' {
+            if let Some(n) = tag_len(&s[i..]) {
+                out.push_str(&s[last..i]);
+                out.push('\n');
+                i += n;
+                last = i;
+                changed = true;
+                continue;
+            }
+        }
+        i += 1;
+    }
+    if !changed {
+        return std::borrow::Cow::Borrowed(s);
+    }
+    out.push_str(&s[last..]);
+    std::borrow::Cow::Owned(out)
+}
+
 /// A non-empty, trimmed view of an optional string: empty attributes count as absent when
 /// rendering (NOTES: "treat empty as absent when rendering, but keep it in JSON as given").
 pub fn non_empty(s: &Option<Text>) -> Option<&str> {

@@ -143,10 +143,7 @@ pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
     match ext.as_deref() {
         Some("xml") if parse::xml::is_profile(bytes) => Some(SourceFormat::Xml),
         Some("yaml") | Some("yml") if parse::yaml::is_profile(bytes) => Some(SourceFormat::Yaml),
-        _ if is_backup(path) && parse::xml::is_profile(bytes) =>
-        {
-            Some(SourceFormat::Xml)
-        }
+        _ if is_backup(path) && parse::xml::is_profile(bytes) => Some(SourceFormat::Xml),
         _ => None,
     }
 }

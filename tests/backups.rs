@@ -52,7 +52,10 @@ fn backups_are_versions_not_components() {
     let ids: Vec<&String> = json["components"].as_object().unwrap().keys().collect();
     assert_eq!(
         ids,
-        ["RTC:Lab:Control:Motor:1.0.0", "RTC:Lab:Control:PIDController:1.1.0"]
+        [
+            "RTC:Lab:Control:Motor:1.0.0",
+            "RTC:Lab:Control:PIDController:1.1.0"
+        ]
     );
     let backups = &json["components"]["RTC:Lab:Control:PIDController:1.1.0"]["backups"];
     assert_eq!(backups[0]["file"], "PIDController/RTC.xml20150701100000");
@@ -72,7 +75,13 @@ fn backups_are_versions_not_components() {
         "types/rtc-timeddouble.html",
     ] {
         let text = read(&html.join(page));
-        for bad in ["ModuleName", "VenderName", "RTC.xml2015", "RTC.xml2014", "Gone"] {
+        for bad in [
+            "ModuleName",
+            "VenderName",
+            "RTC.xml2015",
+            "RTC.xml2014",
+            "Gone",
+        ] {
             assert!(!text.contains(bad), "{page} mentions {bad}");
         }
     }
@@ -105,7 +114,9 @@ fn check_and_diff_ignore_backups() {
     assert!(err.contains("note: 4 RTCBuilder backups"), "{err}");
     // The hint works when followed: copying the newest backup to RTC.xml documents it.
     assert!(
-        err.contains("copy the newest backup `RTC.xml20140202000000.xml` to `RTC.xml` in the same folder"),
+        err.contains(
+            "copy the newest backup `RTC.xml20140202000000.xml` to `RTC.xml` in the same folder"
+        ),
         "{err}"
     );
     let copy = dir.path().join("lab");
@@ -135,7 +146,13 @@ fn check_and_diff_ignore_backups() {
     )
     .unwrap();
     let o = rtcdoc(
-        &["diff", fixture().to_str().unwrap(), "new", "--format", "json"],
+        &[
+            "diff",
+            fixture().to_str().unwrap(),
+            "new",
+            "--format",
+            "json",
+        ],
         dir.path(),
     );
     assert!(o.status.success(), "{}", stderr(&o));
@@ -156,7 +173,11 @@ fn a_backup_with_the_profiles_id_is_no_duplicate_and_never_stands_in_for_a_broke
     assert!(err.contains("1 component profile"), "{err}");
 
     // The real RTC.xml is broken: the error is reported; the stale backup is not shown instead.
-    write(&input, "Arm/RTC.xml", "<rtc:RtcProfile xmlns:rtc=\"x\"><unclosed>");
+    write(
+        &input,
+        "Arm/RTC.xml",
+        "<rtc:RtcProfile xmlns:rtc=\"x\"><unclosed>",
+    );
     let o = rtcdoc(
         &["build", "in", "-o", "site", "-f", "json", "--allow-empty"],
         dir.path(),
@@ -170,11 +191,7 @@ fn a_backup_with_the_profiles_id_is_no_duplicate_and_never_stands_in_for_a_broke
 
     // A backup named on the command line is read as a profile, whatever its name.
     let o = rtcdoc(&["check", "in/Arm/RTC.xml20200101120000"], dir.path());
-    assert!(
-        stderr(&o).contains("1 component profile"),
-        "{}",
-        stderr(&o)
-    );
+    assert!(stderr(&o).contains("1 component profile"), "{}", stderr(&o));
 }
 
 #[test]

@@ -84,6 +84,33 @@ fn search_finds_english_and_japanese_words_from_file_urls() {
     assert!(!result_names(&dom).is_empty(), "type search");
 }
 
+/// RTCBuilder users often write their only Japanese summary in the abstract: the browser's
+/// search finds a component by it as well as by its description.
+#[test]
+fn search_finds_a_japanese_summary_written_only_in_the_abstract() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(
+        &common::root().join("tests/fixtures/prose"),
+        &out,
+        SiteOptions::default(),
+    );
+    // 四足歩行
+    let dom = dump_dom(
+        &format!(
+            "{}?q=%E5%9B%9B%E8%B6%B3%E6%AD%A9%E8%A1%8C",
+            file_url(&out.join("search.html"))
+        ),
+        &dir.path().join("chromium"),
+    );
+    let mut names = result_names(&dom);
+    names.sort();
+    assert_eq!(names, ["GaitPlanner", "Walker"], "四足歩行 → {names:?}");
+}
+
 #[test]
 fn no_payload_of_the_xss_fixture_is_live_in_the_browser() {
     if !chromium() {

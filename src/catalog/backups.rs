@@ -210,10 +210,15 @@ impl crate::catalog::Catalog {
 
 /// [`crate::catalog::Catalog::documented`] from the counts (several inputs of `check` add up).
 pub fn documented(components: usize, systems: usize, idl_files: usize) -> String {
-    let plural = |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    let plural =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
     let mut parts = Vec::new();
     if components > 0 || (systems == 0 && idl_files == 0) {
-        parts.push(plural(components, "component profile", "component profiles"));
+        parts.push(plural(
+            components,
+            "component profile",
+            "component profiles",
+        ));
     }
     if systems > 0 {
         parts.push(plural(systems, "RT System", "RT Systems"));

@@ -118,6 +118,7 @@ fn push_escaped_chars(s: &str, out: &mut String, full: bool) {
 /// `\ @ < > & % $ " #`, `::` and dash runs are escaped, line breaks become `<br>`; the result is
 /// one physical line.
 pub fn text(s: &str) -> String {
+    let s = crate::model::prose(s);
     let mut out = String::with_capacity(s.len() + 8);
     for (i, line) in s.trim().lines().enumerate() {
         if i > 0 {

@@ -214,8 +214,8 @@ pub fn document(d: &BasicDoc, lang: Lang) -> Vec<Fact> {
         .md("description", &d.description)
         .md("inout", &d.inout)
         .md("algorithm", &d.algorithm)
-        .opt("creator", &d.creator)
-        .opt("license", &d.license)
+        .md("creator", &d.creator)
+        .md("license", &d.license)
         .md("reference", &d.reference)
         .done()
 }

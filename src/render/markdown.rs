@@ -123,6 +123,7 @@ fn escape_line_chars(line: &str, out: &mut String) {
 /// Escapes profile text for an inline context (table cell, heading, link text, list item):
 /// one physical line; line breaks become `<br>`.
 pub fn inline(s: &str) -> String {
+    let s = crate::model::prose(s);
     let mut out = String::with_capacity(s.len() + 8);
     let s = s.trim();
     for (i, line) in s.lines().enumerate() {
@@ -138,7 +139,9 @@ pub fn inline(s: &str) -> String {
 /// other line breaks are kept as `<br>`.
 pub fn block(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 8);
-    let norm = s.replace("\r\n", "\n").replace('\r', "\n");
+    let norm = crate::model::prose(s)
+        .replace("\r\n", "\n")
+        .replace('\r', "\n");
     let mut para: Vec<&str> = Vec::new();
     fn flush(para: &mut Vec<&str>, out: &mut String) {
         if para.is_empty() {

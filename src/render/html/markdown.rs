@@ -27,9 +27,10 @@ fn sanitizer() -> &'static ammonia::Builder<'static> {
 /// pulldown-cmark's own output is already safe (it escapes all text and emits only formatting
 /// tags), so the HTML parse of the sanitiser is skipped; anything else goes through ammonia.
 pub fn to_html(text: &str) -> String {
-    match prose_html(text) {
+    let text = crate::model::prose(text);
+    match prose_html(&text) {
         Some(html) => html,
-        None => parsed_html(text),
+        None => parsed_html(&text),
     }
 }
 
@@ -128,6 +129,7 @@ fn parsed_html(text: &str) -> String {
 /// The first line of `text`, trimmed and cut to at most `max` characters (with `…`), for
 /// one-line summaries. Plain text: the caller escapes it.
 pub fn first_line(text: &str, max: usize) -> String {
+    let text = crate::model::prose(text);
     let line = text
         .lines()
         .map(str::trim)
@@ -144,6 +146,21 @@ pub fn first_line(text: &str, max: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rtcbuilder_line_break_tags_are_line_breaks() {
+        for tag in ["<br/>", "<br>", "<BR>", "<br />", "&lt;br/&gt;"] {
+            let text = format!("aist.go.jp{tag}産業技術総合研究所");
+            assert_eq!(
+                to_html(&text),
+                "<p>aist.go.jp<br>\n産業技術総合研究所</p>\n",
+                "{tag}"
+            );
+            assert_eq!(first_line(&text, 90), "aist.go.jp", "{tag}");
+        }
+        assert_eq!(to_html("a <b>c"), to_html(&crate::model::prose("a <b>c")));
+        assert_eq!(crate::model::prose("x <brick> & y"), "x <brick> & y");
+    }
 
     #[test]
     fn line_breaks_are_kept() {

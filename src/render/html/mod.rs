@@ -374,7 +374,6 @@ struct ComponentPage {
     backups: Vec<facts::BackupRow>,
 }
 
-
 #[derive(Serialize)]
 struct PortUse {
     component: Link,

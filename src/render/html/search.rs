@@ -105,14 +105,22 @@ fn lower(s: &str) -> Cow<'_, str> {
     }
 }
 
-/// Tokenizes the first [`MAX_DESCRIPTION`] characters of `s`.
+/// Tokenizes the first [`MAX_DESCRIPTION`] characters of `s`, read as prose
+/// ([`crate::model::prose`]: RTCBuilder's `<br/>` is a line break, not a word).
 fn add<'a>(tokens: &mut Vec<Cow<'a, str>>, s: Option<&'a str>) {
-    if let Some(s) = s {
-        let end = s
-            .char_indices()
+    let Some(s) = s else { return };
+    let head = |s: &str| {
+        s.char_indices()
             .nth(MAX_DESCRIPTION)
-            .map_or(s.len(), |(i, _)| i);
-        tokenize(&s[..end], tokens);
+            .map_or(s.len(), |(i, _)| i)
+    };
+    match crate::model::prose(s) {
+        Cow::Borrowed(s) => tokenize(&s[..head(s)], tokens),
+        Cow::Owned(o) => {
+            let mut own = Vec::new();
+            tokenize(&o[..head(&o)], &mut own);
+            tokens.extend(own.into_iter().map(|t| Cow::Owned(t.into_owned())));
+        }
     }
 }
 
@@ -226,8 +234,28 @@ fn component_entry(catalog: &Catalog, ci: usize) -> serde_json::Value {
     add(&mut g.text, non_empty(&b.category));
     add(&mut g.text, non_empty(&b.vendor));
     add(&mut g.text, non_empty(&b.description));
+    // Everything else the page shows as prose: the abstract (for many RTCBuilder users the
+    // only Japanese summary), the Document Profile, the comment, the lifecycle's documentation.
+    add(&mut g.text, non_empty(&b.abstract_));
+    add(&mut g.text, non_empty(&b.comment));
     if let Some(d) = &b.doc {
-        add(&mut g.text, non_empty(&d.description));
+        for t in [
+            &d.description,
+            &d.inout,
+            &d.algorithm,
+            &d.creator,
+            &d.license,
+            &d.reference,
+        ] {
+            add(&mut g.text, non_empty(t));
+        }
+    }
+    for a in &p.actions {
+        if let Some(doc) = &a.doc {
+            for t in [&doc.description, &doc.pre_condition, &doc.post_condition] {
+                add(&mut g.text, non_empty(t));
+            }
+        }
     }
     for d in &p.data_ports {
         add(&mut g.ids, non_empty(&d.name));
