@@ -157,11 +157,122 @@ pub fn generated_at(text: &str) -> Option<Pos> {
     None
 }
 
+/// The headings of RTCBuilder 2.x's README template that it fills from the profile (the
+/// component page shows all of it): `# Name`, then these.
+const RTCBUILDER2_GENERATED: &[&str] = &[
+    "overview",
+    "description",
+    "input and output",
+    "algorithm etc",
+    "basic information",
+    "activity definition",
+    "inports definition",
+    "outports definition",
+    "service port definition",
+    "configuration definition",
+];
+
+/// An RTCBuilder 2.x README: recognised by its structure (the template's headings in order,
+/// `### Basic Information` with its `| Module Name | … |` table), not by one marker string.
+struct Rtcbuilder2 {
+    /// Where `### Basic Information` is (the finding's position).
+    at: Pos,
+    /// The author's part: every section after the generated ones (`## Demo`, `## Usage`,
+    /// `## Setup`, …), when any of them has text; `None` when they are all empty.
+    authored: Option<String>,
+}
+
+/// Reads `text` as RTCBuilder 2.x's README template; `None` when it is not one.
+fn rtcbuilder2(text: &str) -> Option<Rtcbuilder2> {
+    // ATX headings outside fenced code: (line index, level, lower-cased title).
+    let lines: Vec<&str> = text.lines().collect();
+    let mut headings = Vec::new();
+    let mut fence = false;
+    for (i, l) in lines.iter().enumerate() {
+        let t = l.trim_start();
+        if t.starts_with("```") || t.starts_with("~~~") {
+            fence = !fence;
+        }
+        if fence {
+            continue;
+        }
+        let level = t.bytes().take_while(|&b| b == b'#').count();
+        if (1..=6).contains(&level) && t[level..].starts_with([' ', '\t']) {
+            headings.push((
+                i,
+                level,
+                t[level..]
+                    .trim()
+                    .trim_end_matches('#')
+                    .trim()
+                    .to_lowercase(),
+            ));
+        }
+    }
+    let generated = |h: &str| RTCBUILDER2_GENERATED.contains(&h);
+    let basic = headings
+        .iter()
+        .position(|(_, _, h)| h == "basic information")?;
+    let basic_line = headings[basic].0;
+    let table_end = headings.get(basic + 1).map_or(lines.len(), |h| h.0);
+    let module_row = lines[basic_line..table_end].iter().any(|l| {
+        let l = l.trim().to_lowercase();
+        l.starts_with('|')
+            && l.trim_start_matches('|')
+                .trim_start()
+                .starts_with("module name")
+    });
+    let known = headings.iter().filter(|(_, _, h)| generated(h)).count();
+    if !module_row || known < 4 {
+        return None;
+    }
+    // The author's part starts at the first heading after the last generated one.
+    let last_generated = headings.iter().rposition(|(_, _, h)| generated(h))?;
+    // Of the author's part, the sections with text (a heading is kept when it or a section
+    // below it has text: the template's empty `## Demo` says nothing).
+    let own = &headings[last_generated + 1..];
+    let text_in = |from: usize, to: usize| {
+        lines[from..to].iter().any(|l| {
+            let t = l.trim();
+            !t.is_empty() && !(t.starts_with("<!--") && t.ends_with("-->"))
+        })
+    };
+    let ends: Vec<usize> = (0..own.len())
+        .map(|k| own.get(k + 1).map_or(lines.len(), |h| h.0))
+        .collect();
+    let mut keep = vec![false; own.len()];
+    for k in (0..own.len()).rev() {
+        let (start, level, _) = own[k];
+        let child = own[k + 1..]
+            .iter()
+            .zip(&keep[k + 1..])
+            .take_while(|((_, l, _), _)| *l > level)
+            .any(|(_, &kept)| kept);
+        keep[k] = child || text_in(start + 1, ends[k]);
+    }
+    let mut part = String::new();
+    for (k, &(start, _, _)) in own.iter().enumerate() {
+        if keep[k] {
+            part.push_str(&lines[start..ends[k]].join("\n"));
+            part.push('\n');
+        }
+    }
+    let authored = (!part.is_empty()).then_some(part);
+    Some(Rtcbuilder2 {
+        at: Pos::new(
+            u32::try_from(basic_line + 1).unwrap_or(u32::MAX),
+            u32::try_from(lines[basic_line].len() - lines[basic_line].trim_start().len() + 1)
+                .unwrap_or(1),
+        ),
+        authored,
+    })
+}
+
 /// What reading a README gave.
 pub enum Read {
     Shown(String),
-    /// Generated; where its marker is.
-    Generated(Pos),
+    /// Generated; where its marker is, and by what it was recognised.
+    Generated(Pos, &'static str),
     /// Not shown: why, what to do, and where (bad UTF-8).
     Unreadable(String, &'static str, Pos),
 }
@@ -215,9 +326,17 @@ pub fn read(path: &Path) -> Read {
     }
     let body = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(&bytes);
     match std::str::from_utf8(body) {
-        Ok(t) => match generated_at(t) {
-            Some(pos) => Read::Generated(pos),
-            None => Read::Shown(t.to_string()),
+        Ok(t) => match (generated_at(t), rtcbuilder2(t)) {
+            (Some(pos), _) => Read::Generated(pos, "rtc-template / RTCBuilder markers"),
+            (None, Some(Rtcbuilder2 {
+                authored: Some(own),
+                ..
+            })) => Read::Shown(own),
+            (None, Some(g)) => Read::Generated(
+                g.at,
+                "RTCBuilder 2.x's template, with its sections for the author (Usage, Setup, …) empty",
+            ),
+            (None, None) => Read::Shown(t.to_string()),
         },
         Err(e) => {
             // The valid prefix is UTF-8: the position is where it ends.
@@ -435,14 +554,14 @@ pub fn attach(catalog: &mut Catalog, root: &Path, excluded: &(dyn Fn(&str) -> bo
                     let (images, diags) = images(root, &file, &text, &dir);
                     (members, Some(Readme { file, text, images }), diags)
                 }
-                Read::Generated(pos) => {
+                Read::Generated(pos, by) => {
                     let d = Diagnostic::info(
                         GENERATED,
                         &file,
-                        "the README was generated from the profile (rtc-template / RTCBuilder markers); it repeats the page and is not shown",
+                        format!("the README was generated from the profile ({by}); it repeats the page and is not shown"),
                     )
                     .at(pos)
-                    .with_hint("write a README.md of your own (what the component is for, how to run it) to have it shown");
+                    .with_hint("write what the component is for and how to run it (in RTCBuilder's sections Usage, Setup, … or a README.md of your own) to have it shown");
                     (members, None, vec![d])
                 }
                 Read::Unreadable(why, hint, pos) => (

@@ -530,3 +530,53 @@ fn serve_rebuilds_the_component_page_when_its_readme_changes() {
     ws.update(&[input.join("c/README.md")]).expect("update");
     assert!(!page(&ws).contains("id=\"readme\""));
 }
+
+/// RTCBuilder 2.x writes a README.md from its template (often with a BOM): recognised by its
+/// structure. Left as generated, it repeats the page (RTC701); filled in by the author, its
+/// author's sections are shown and the generated tables are not.
+#[test]
+fn rtcbuilder2_readmes_are_recognised_by_their_structure() {
+    let input = common::root().join("tests/fixtures/readme-rtcbuilder2");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_into(&input, &out, vec![Format::Html], SiteOptions::default());
+    let blank = read(&out.join("components/blank.html"));
+    assert!(!blank.contains("id=\"readme\""), "{blank}");
+    let filled = read(&out.join("components/filled.html"));
+    let section = readme_section(&filled);
+    assert!(
+        section.contains("<h3 id=\"readme-usage\">Usage</h3>"),
+        "{section}"
+    );
+    assert!(section.contains("OpenRTM-aist 1.2 or newer."), "{section}");
+    for generated in [
+        "Module Name",
+        "Basic Information",
+        "Activity definition",
+        "Overview",
+        "Demo",
+    ] {
+        assert!(!section.contains(generated), "{generated} shown: {section}");
+    }
+    let o = common::rtcdoc(&["check", input.to_str().unwrap(), "--verbose"], dir.path());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains(
+            "note[RTC701]: the README was generated from the profile (RTCBuilder 2.x's template"
+        ),
+        "{err}"
+    );
+    assert!(err.contains("Blank/README.md:19:1"), "{err}");
+    assert!(!err.contains("Filled/README.md"), "{err}");
+    // Not a template: a hand-written README with a `Basic Information` heading but no table.
+    let own = dir.path().join("own");
+    common::write(&own, "c/RTC.xml", &common::xml_profile("c", &[]));
+    common::write(
+        &own,
+        "c/README.md",
+        "# c\n\n## Overview\n\nText.\n\n## Description\n\nMore.\n\n### Basic Information\n\nIt runs.\n\n### Algorithm etc\n\nKalman.\n",
+    );
+    let site = dir.path().join("own-site");
+    build_into(&own, &site, vec![Format::Html], SiteOptions::default());
+    assert!(readme_section(&read(&site.join("components/c.html"))).contains("Kalman."));
+}
