@@ -412,7 +412,7 @@ impl Workspace {
         let is_candidate = path
             .extension()
             .and_then(|e| e.to_str())
-            .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "xml" | "yaml" | "yml"));
+            .is_some_and(|e| walk::is_document_extension(&e.to_ascii_lowercase()));
         is_candidate
             && std::fs::read(path)
                 .map(|b| parse::rts::is_system(&b))

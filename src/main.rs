@@ -469,7 +469,7 @@ fn print_skipped(skipped: &[rtcdoc::walk::Skipped], root: &Path) {
             list.push(format!("{rest} of {} other kinds", by.len() - KINDS));
         }
         eprintln!(
-            "skipped {total} other file(s), not .xml/.yaml/.yml: {}",
+            "skipped {total} other file(s), not .xml/.yaml/.yml/.rtsys: {}",
             list.join(", ")
         );
     }

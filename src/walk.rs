@@ -65,6 +65,13 @@ pub fn named_like_profile(path: &Path) -> bool {
 
 pub use crate::catalog::backups::is_backup_name;
 
+/// Whether a (lower-case) extension is one a document may have: `.xml`, `.yaml`, `.yml`, and
+/// `.rtsys` (RTSystemEditor's own save dialog offers it for RT System profiles). What the file
+/// is, is decided by its content.
+pub fn is_document_extension(ext: &str) -> bool {
+    matches!(ext, "xml" | "yaml" | "yml" | "rtsys")
+}
+
 /// Whether `path` is one of RTCBuilder's backups (`RTC.xml<timestamp>`): an older version of
 /// the `RTC.xml` beside it, never a component of its own ([`crate::catalog::backups`]).
 pub fn is_backup(path: &Path) -> bool {
@@ -529,13 +536,12 @@ impl<'a> Walker<'a> {
             .and_then(|e| e.to_str())
             .map(|e| e.to_ascii_lowercase());
         let idl = ext.as_deref() == Some("idl");
-        let candidate = idl
-            || matches!(ext.as_deref(), Some("xml" | "yaml" | "yml"))
-            || named_like_profile(path);
+        let candidate =
+            idl || ext.as_deref().is_some_and(is_document_extension) || named_like_profile(path);
         if !candidate {
             out.skipped.push(Skipped {
                 rel,
-                reason: "not an .xml/.yaml/.yml file".into(),
+                reason: "not an .xml/.yaml/.yml/.rtsys file".into(),
                 kind: SkipKind::OtherFile,
             });
             return;

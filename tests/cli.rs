@@ -160,7 +160,7 @@ fn quiet_and_verbose() {
     // Files that cannot be profiles are counted by kind, not listed one by one.
     assert!(!err.contains("skipped notes.txt"), "{err}");
     assert!(
-        err.contains("skipped 1 other file(s), not .xml/.yaml/.yml: 1 .txt"),
+        err.contains("skipped 1 other file(s), not .xml/.yaml/.yml/.rtsys: 1 .txt"),
         "{err}"
     );
     assert!(err.contains("built 1 component profile into"));

@@ -535,3 +535,43 @@ fn the_yaml_form_is_read_and_linked_like_the_xml_form() {
     // Same name, two files: two pages with their own slugs.
     assert_ne!(x.slug, y.slug);
 }
+
+/// RTSystemEditor's save dialog offers the extension `.rtsys`: such a file is a system like any
+/// other (found by its content), counted in the summaries; an empty configuration set says
+/// "none" instead of an empty table.
+#[test]
+fn an_rtsys_file_is_a_system_and_an_empty_configuration_set_says_none() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = common::root().join("tests/fixtures/rtsys");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            input.to_str().unwrap(),
+            "-o",
+            "site",
+            "-f",
+            "html,markdown,doxygen",
+        ],
+        dir.path(),
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert!(err.contains("built 1 RT System into"), "{err}");
+    let html = read(&dir.path().join("site/html/systems/wiring.html"));
+    assert!(
+        html.contains("<p class=\"sys-config-empty\"><code>default</code> (Active configuration set): none</p>"),
+        "{html}"
+    );
+    assert!(!html.contains("<table class=\"sys-config\">"), "{html}");
+    let index = read(&dir.path().join("site/html/index.html"));
+    assert!(
+        index.contains("<a href=\"systems/index.html\"><strong>1</strong> Systems</a>"),
+        "{index}"
+    );
+    let md = read(&dir.path().join("site/markdown/systems/wiring.md"));
+    assert!(md.contains("| Motor0 | default |   | none |"), "{md}");
+    let o = common::rtcdoc(&["check", input.to_str().unwrap()], dir.path());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("; 1 RT System\n"), "{err}");
+    assert!(!err.contains("coverage"), "{err}");
+}

@@ -271,7 +271,9 @@ fn wanted(rel: &str) -> bool {
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    safe && (matches!(ext.as_deref(), Some("xml" | "yaml" | "yml" | "idl"))
+    safe && (ext
+        .as_deref()
+        .is_some_and(|e| e == "idl" || crate::walk::is_document_extension(e))
         || crate::walk::named_like_profile(p))
 }
 

@@ -147,6 +147,17 @@ pub fn system_body<M: Markup>(
     for (i, c) in p.components.iter().enumerate() {
         let comp = cat.instance_component(s, i);
         for set in &c.configuration_sets {
+            // An empty set says so (it is a value of the file, not nothing).
+            if set.configuration_data.is_empty() {
+                rows.push(vec![
+                    M::esc(&txt(&c.instance_name)),
+                    M::esc(&txt(&set.id)),
+                    String::new(),
+                    M::esc(lang.t("fact_none")),
+                    String::new(),
+                    String::new(),
+                ]);
+            }
             for d in &set.configuration_data {
                 let n = txt(&d.name);
                 let v = d.data.as_deref().unwrap_or("").to_string();
