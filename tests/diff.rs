@@ -1316,3 +1316,32 @@ fn catalog_json_is_a_side() {
     assert!(!key(&a).is_empty());
     assert_eq!(key(&a), key(&b));
 }
+
+/// A revision is data, never an option of git: `rtcdoc diff -- '--output=/tmp/x:dir' dir` is
+/// refused by rtcdoc itself, and git never sees it.
+#[test]
+fn a_revision_that_looks_like_an_option_is_refused() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    assert!(git(d, &["init", "-q"]), "git is needed");
+    assert!(git(d, &["config", "user.name", "Test"]));
+    assert!(git(d, &["config", "user.email", "test@example.org"]));
+    write(d, "components/Base/RTC.xml", BASE);
+    assert!(git(d, &["add", "-A"]));
+    assert!(git(d, &["commit", "-q", "-m", "first"]));
+    let target = d.join("written-by-git");
+    let arg = format!("--output={}:components", target.display());
+    let out = rtcdoc(&["diff", "--", &arg, "components"], d);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("starts with `-`"), "{err}");
+    assert!(!target.exists());
+    // An ordinary revision still works (passed after --end-of-options).
+    let out = rtcdoc(&["diff", "HEAD:components", "components"], d);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -196,8 +196,15 @@ fn stderr_line(out: &std::process::Output) -> String {
         .to_string()
 }
 
-/// Writes the profile-like files of `object` (`REV:PATH`) below `dest`.
+/// Writes the profile-like files of `object` (`REV:PATH`) below `dest`. The object is data,
+/// never an option: it is refused when it starts with `-`, and passed after
+/// `--end-of-options` to every git command.
 fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
+    if object.starts_with('-') {
+        bail!(
+            "{which} `{object}` starts with `-`: a git revision never does, and rtcdoc does not pass options to git; name the revision (`HEAD~1:profiles`) or a directory"
+        );
+    }
     let inside = git(&["rev-parse", "--is-inside-work-tree"])?;
     if !inside.status.success() {
         bail!(
@@ -205,7 +212,7 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
             stderr_line(&inside)
         );
     }
-    let kind = git(&["cat-file", "-t", object])?;
+    let kind = git(&["cat-file", "-t", "--end-of-options", object])?;
     if !kind.status.success() {
         bail!(
             "{which} `{object}`: git cannot find it ({}); check the revision (`git log`, fetch it with `git fetch`, in CI check out with fetch-depth: 0) and the path (relative to the repository root, or ./ for the current directory)",
@@ -220,7 +227,7 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
                 .filter(|n| !n.is_empty())
                 .unwrap_or("RTC.xml")
                 .to_string();
-            let out = git(&["cat-file", "blob", object])?;
+            let out = git(&["cat-file", "blob", "--end-of-options", object])?;
             if !out.status.success() {
                 bail!("{which} `{object}`: {}", stderr_line(&out));
             }
@@ -228,7 +235,14 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
             Ok(ObjectKind::Blob(name))
         }
         "tree" => {
-            let list = git(&["ls-tree", "-r", "-z", "--full-tree", object])?;
+            let list = git(&[
+                "ls-tree",
+                "-r",
+                "-z",
+                "--full-tree",
+                "--end-of-options",
+                object,
+            ])?;
             if !list.status.success() {
                 bail!("{which} `{object}`: {}", stderr_line(&list));
             }

@@ -258,7 +258,9 @@ impl Parser<'_> {
                 ),
             )
             .at(pos)
-            .with_hint("raise the nesting limit if the file is genuine");
+            .with_hint(
+                "if the file is genuine, raise `max-depth` in rtcdoc.toml or pass --max-depth N",
+            );
             self.diags.push(d);
             self.depth -= 1;
             // Nothing sensible can follow inside: skip to the end of the file.

@@ -117,7 +117,7 @@ impl<'a> Sources<'a> {
                         self.opts.max_file_size
                     ),
                 )
-                .with_hint("raise the maximum file size if the file is genuine"),
+                .with_hint("if the file is genuine, raise `max-file-size` in rtcdoc.toml or pass --max-file-size BYTES"),
             );
             Lexed {
                 encoding: "UTF-8",
@@ -148,7 +148,7 @@ impl<'a> Sources<'a> {
             if let Some((pos, msg, limit)) = out.fatal {
                 let code = if limit { codes::LIMIT } else { codes::SYNTAX };
                 let hint = if limit {
-                    "raise the token limit if the file is genuine"
+                    "no real IDL file comes near this fixed limit: look for a macro that expands without end, or split the file"
                 } else {
                     "close the comment with `*/`"
                 };
@@ -673,7 +673,8 @@ impl Pp<'_, '_> {
                         self.src.opts.max_include_depth
                     ),
                 )
-                .at(pos),
+                .at(pos)
+                .with_hint("an include chain this deep is a loop the guards miss: add include guards (#ifndef X / #define X / #endif)"),
             );
             return;
         }

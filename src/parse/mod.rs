@@ -79,7 +79,7 @@ pub fn parse(
             ),
         )
         .with_hint(
-            "raise `max_file_size` in rtcdoc.toml or --max-file-size if the file is genuine",
+            "if the file is genuine, raise `max-file-size` in rtcdoc.toml or pass --max-file-size BYTES",
         ));
     }
     let mut parsed = match format {

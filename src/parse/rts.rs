@@ -39,7 +39,7 @@ pub fn parse(
             ),
         )
         .with_hint(
-            "raise `max_file_size` in rtcdoc.toml or --max-file-size if the file is genuine",
+            "if the file is genuine, raise `max-file-size` in rtcdoc.toml or pass --max-file-size BYTES",
         ));
     }
     let (system, diagnostics) = match format {

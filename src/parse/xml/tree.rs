@@ -200,7 +200,7 @@ pub(super) fn build_any_tree<'t>(
                         b.max_depth
                     ),
                 )
-                .with_hint("raise `max_depth` if the file is genuine"));
+                .with_hint("if the file is genuine, raise `max-depth` in rtcdoc.toml or pass --max-depth N (up to 1024)"));
         }
         let qname = sub(text, e.name().as_ref());
         if !is_name(&qname) {
