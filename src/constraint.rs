@@ -140,19 +140,7 @@ fn describe_condition(cond: &Condition, nested: bool) -> String {
             _ => format!("not ({})", describe_kind(operand, false)),
         },
         Condition::Or { operands } => {
-            // An Or of plain equalities is an enumeration.
-            let literals: Option<Vec<&str>> = operands
-                .iter()
-                .map(|o| match unit_condition(o) {
-                    Some(Condition::Compare {
-                        comparison: Comparison::EqualTo,
-                        literal,
-                        ..
-                    }) => Some(text(literal)),
-                    _ => None,
-                })
-                .collect();
-            let s = match literals {
+            let s = match enumeration(operands) {
                 Some(l) if l.len() > 1 => format!("one of: {}", l.join(", ")),
                 _ => operands
                     .iter()
@@ -547,6 +535,13 @@ impl Eval<'_> {
                 if operands.is_empty() {
                     return Truth::Unknown("`or` has no operands".into());
                 }
+                // An enumeration (an Or of equalities) that fails says so once.
+                let one_of = match (enumeration(operands), subject) {
+                    (Some(l), Subject::One(v)) if l.len() > 1 => {
+                        Some(format!("`{}` is not one of: {}", v.trim(), l.join(", ")))
+                    }
+                    _ => None,
+                };
                 let mut unknown = None;
                 let mut reasons = Vec::new();
                 for o in operands {
@@ -558,7 +553,7 @@ impl Eval<'_> {
                 }
                 match unknown {
                     Some(w) => Truth::Unknown(w),
-                    None => Truth::False(reasons.join("; and ")),
+                    None => Truth::False(one_of.unwrap_or_else(|| reasons.join("; and "))),
                 }
             }
             Condition::IsNull { .. } => {
@@ -678,6 +673,21 @@ impl Eval<'_> {
             _ => Truth::Unknown("unexpected condition".into()),
         }
     }
+}
+
+/// The literals of an Or of plain equalities (an enumeration: `one of: RGB, GRAY`), in order.
+fn enumeration(operands: &[Constraint]) -> Option<Vec<&str>> {
+    operands
+        .iter()
+        .map(|o| match unit_condition(o) {
+            Some(Condition::Compare {
+                comparison: Comparison::EqualTo,
+                literal,
+                ..
+            }) => Some(text(literal)),
+            _ => None,
+        })
+        .collect()
 }
 
 fn ordering_holds(c: Comparison, ord: Option<std::cmp::Ordering>) -> bool {

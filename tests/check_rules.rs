@@ -674,3 +674,25 @@ fn corpus_component_descriptions_and_dialects() {
         assert_ne!(d.code, "RTC201", "{}: {}", d.file, d.message);
     }
 }
+
+/// An enumeration (an Or of equalities) that a value fails says so once, with the allowed
+/// values, instead of one "is not =" per value.
+#[test]
+fn a_failed_enumeration_names_the_allowed_values_once() {
+    use Comparison::*;
+    let e = or(vec![
+        cmp(EqualTo, "RGB"),
+        cmp(EqualTo, "GRAY"),
+        cmp(EqualTo, "JPEG"),
+    ]);
+    match evaluate(&e, "PNG", ValueType::parse("string")) {
+        Verdict::Violated(w) => assert_eq!(w, "`PNG` is not one of: RGB, GRAY, JPEG"),
+        other => panic!("{other:?}"),
+    }
+    // Other alternatives keep their reasons.
+    let mixed = or(vec![cmp(LessThan, "0"), cmp(GreaterThan, "10")]);
+    match evaluate(&mixed, "5", ValueType::parse("long")) {
+        Verdict::Violated(w) => assert!(w.contains("; and "), "{w}"),
+        other => panic!("{other:?}"),
+    }
+}

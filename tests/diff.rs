@@ -431,11 +431,14 @@ fn every_code_from_a_one_edit_pair() {
             found["message"]
         );
         assert_eq!(found["file"], "new/Base/RTC.xml", "{}", k.code);
-        assert!(
-            found["line"].as_u64().unwrap_or(0) > 0,
-            "{}: a line",
-            k.code
-        );
+        // A removed item is located in OLD, where it exists; anything else in NEW.
+        let line = if found["line"].is_null() {
+            assert_eq!(found["oldFile"], "old/Base/RTC.xml", "{}", k.code);
+            &found["oldLine"]
+        } else {
+            &found["line"]
+        };
+        assert!(line.as_u64().unwrap_or(0) > 0, "{}: a line", k.code);
         let breaking = expected.iter().any(|c| c.starts_with("DIFF1"));
         assert_eq!(exit, i32::from(breaking), "{}: exit status", k.code);
         assert_eq!(json["summary"]["failed"], breaking, "{}", k.code);
@@ -1344,4 +1347,42 @@ fn a_revision_that_looks_like_an_option_is_refused() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// A removed port is located where it exists: in OLD's file, at the port.
+#[test]
+fn a_removed_port_points_at_the_port_in_the_old_file() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    let profile = |ports: &[(&str, &str, &str)]| common::xml_profile("Base", ports);
+    write(
+        d,
+        "old/Base/RTC.xml",
+        &profile(&[
+            ("DataInPort", "cmd", "RTC::TimedLong"),
+            ("DataOutPort", "odometry", "RTC::TimedPose2D"),
+        ]),
+    );
+    write(
+        d,
+        "new/Base/RTC.xml",
+        &profile(&[("DataInPort", "cmd", "RTC::TimedLong")]),
+    );
+    let out = rtcdoc(&["diff", "old", "new", "--format", "json"], d);
+    let json: Value = serde_json::from_slice(&out.stdout).expect("json");
+    let c = changes(&json)
+        .into_iter()
+        .find(|c| c["code"] == "DIFF102")
+        .expect("DIFF102");
+    assert_eq!(c["oldFile"], "old/Base/RTC.xml");
+    assert_eq!(
+        (c["oldLine"].as_u64(), c["oldColumn"].as_u64()),
+        (Some(8), Some(3)),
+        "{c:#}"
+    );
+    assert!(c["line"].is_null(), "{c:#}");
+    let out = rtcdoc(&["diff", "old", "new"], d);
+    let text =
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    assert!(text.contains("--> old/Base/RTC.xml:8:3"), "{text}");
 }

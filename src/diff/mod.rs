@@ -58,6 +58,12 @@ pub struct Change {
     pub column: Option<u32>,
     /// The OLD side's file of the component.
     pub old_file: Option<String>,
+    /// Line and column in `old_file` of an item that exists only there (a removed port,
+    /// interface, parameter or component).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub old_line: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub old_column: Option<u32>,
 }
 
 /// Counts of the components of both sides.
@@ -288,8 +294,11 @@ pub fn diff_with_systems(
                     counts.removed += 1;
                     let c = &old.components[o];
                     breaks.note_removed(&old_ids[o].key, &label(&old_ids[o], c));
+                    let at = Some(c.profile.pos).filter(|p| !p.is_unknown());
                     out.push(Change {
                         old_file: Some(old_name(&c.source)),
+                        old_line: at.map(|p| p.line),
+                        old_column: at.map(|p| p.column),
                         ..change(
                             codes::COMPONENT_REMOVED,
                             label(&old_ids[o], c),
@@ -566,6 +575,8 @@ fn change(
         line: None,
         column: None,
         old_file: None,
+        old_line: None,
+        old_column: None,
     }
 }
 
@@ -1036,12 +1047,18 @@ fn classify(
                     Some(plain(node)).as_ref().and_then(text),
                 ),
             };
-            // A removed parameter: point at NEW's configuration set, where it was.
-            let pos = match (s(p, 0), &ctx.new.configuration_set) {
+            // Where it was: in OLD, the side where it exists; in NEW, a removed parameter's
+            // configuration set (an annotation of NEW's file needs a line there), else nothing
+            // (NEW's enclosing record is not where the item was).
+            let in_new = match (s(p, 0), &ctx.new.configuration_set) {
                 ("configurations", Some(cs)) if !cs.pos.is_unknown() => Some(cs.pos),
-                _ => pos,
+                _ => None,
             };
-            ctx.push(out, code, p, pos, (old, None), message);
+            ctx.push(out, code, p, in_new, (old, None), message);
+            if let (Some(last), Some(at)) = (out.last_mut(), record_pos(node)) {
+                last.old_line = Some(at.line);
+                last.old_column = Some(at.column);
+            }
         }
         Raw::Added(node) => {
             let (code, message, new) = match (s(p, 0), p.len()) {

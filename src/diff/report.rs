@@ -7,7 +7,8 @@
 //!  "old": "…", "new": "…",
 //!  "changes": [{"severity": "breaking|warning|info", "code", "name", "component", "path",
 //!               "old": s|null, "new": s|null, "message",
-//!               "file": s|null, "line": n|null, "column": n|null, "oldFile": s|null}],
+//!               "file": s|null, "line": n|null, "column": n|null, "oldFile": s|null,
+//!               "oldLine"?: n, "oldColumn"?: n}],
 //!  "summary": {"breaking", "warning", "info", "byCode": {"DIFF104": n, …},
 //!              "components": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "failOn": "breaking|warning|info|never", "failed": bool}}
@@ -335,7 +336,16 @@ pub fn write_human(
                 let v = |s: &Option<String>| s.clone().unwrap_or_else(|| "(absent)".into());
                 writeln!(out, "      {} → {}", v(&c.old), v(&c.new))?;
             }
-            if let Some(f) = &c.file {
+            // An item that exists only in OLD is shown where it is there.
+            let in_old = match (&c.old_file, c.old_line) {
+                (Some(f), Some(l)) if c.line.is_none() => Some((f, l)),
+                _ => None,
+            };
+            if let Some((f, l)) = in_old {
+                out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
+                writeln!(out, "      --> {f}:{l}:{}", c.old_column.unwrap_or(1))?;
+                out.reset()?;
+            } else if let Some(f) = &c.file {
                 out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
                 match c.line {
                     Some(l) => writeln!(out, "      --> {f}:{l}:{}", c.column.unwrap_or(1))?,
