@@ -62,6 +62,7 @@ pub const CONSTRAINT_VIOLATED: &str = "RTC303";
 pub const CONSTRAINT_LITERAL: &str = "RTC304";
 pub const CONSTRAINT_MALFORMED: &str = "RTC305";
 pub const PLACEHOLDER: &str = "RTC306";
+pub const DATANAME_MISMATCH: &str = "RTC307";
 // Catalogue level.
 pub const UNPROVIDED_INTERFACE: &str = "RTC401";
 pub const IDL_CONFLICT: &str = "RTC402";
@@ -518,6 +519,15 @@ pub static RULES: &[Rule] = &[
         explanation: "RTCBuilder pre-fills fields with placeholders until the user edits them: the constraints `conf_constraint` (configuration) and `dp_constraint` (data port), vendor `VenderName`, category `Category`, name `ModuleName`, description `ModuleDescription`, and `$`-variables such as `$VenderName`. They are kept in the JSON as written, but a placeholder constraint is neither evaluated (no RTC303/RTC304) nor rendered, and a placeholder description does not count as documentation (RTC501).",
         spec: "2.3.2 (basic_info), 2.3.17 (constraint)",
         hint: "fill the field in RTCBuilder (or remove the placeholder constraint)",
+    },
+    Rule {
+        code: DATANAME_MISMATCH,
+        severity: Warning,
+        name: "dataname-mismatch",
+        summary: "a configuration's documentation names another parameter",
+        explanation: "RTCBuilder's documentation of a configuration parameter carries the name of the data it describes (`rtcDoc:dataname`), normally the parameter's own name. When it names another one, the documentation was usually copied from a neighbouring parameter and not updated (real profiles document `dir_lf0` under `dir_rf1`): the description, unit and range shown for the parameter may belong to the other one.",
+        spec: "2.4.4 (configuration documentation: dataname)",
+        hint: "correct the documentation's data name (and its text) to the parameter's own name",
     },
     Rule {
         code: UNPROVIDED_INTERFACE,

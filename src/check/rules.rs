@@ -46,6 +46,7 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
     names(p, &mut s);
     known_values(p, &mut s);
     configuration_values(p, &mut s);
+    configuration_datanames(p, &mut s);
     placeholders(p, &mut s);
     documentation(p, &mut s);
     s.out
@@ -726,6 +727,27 @@ fn known_values(p: &Profile, s: &mut Sink) {
             SUBSCRIPTION_TYPES,
             d.attr_pos.or("subscriptionType", d.pos),
         );
+    }
+}
+
+/// RTC307: a configuration whose documentation says it describes another parameter.
+fn configuration_datanames(p: &Profile, s: &mut Sink) {
+    for c in p.configurations() {
+        let (Some(name), Some(doc)) = (non_empty(&c.name), &c.doc) else {
+            continue;
+        };
+        let Some(documented) = non_empty(&doc.dataname) else {
+            continue;
+        };
+        if documented != name {
+            s.emit(
+                r::DATANAME_MISMATCH,
+                if doc.pos.is_unknown() { c.pos } else { doc.pos },
+                format!(
+                    "the documentation of configuration `{name}` names the data `{documented}` (rtcDoc:dataname): it may describe another parameter"
+                ),
+            );
+        }
     }
 }
 
