@@ -1441,6 +1441,17 @@ impl Catalog {
         }
     }
 
+    /// The data types and interfaces of the catalogue that no IDL file read defines (their
+    /// pages show no definition), in catalogue order.
+    pub fn undefined_types(&self) -> Vec<&str> {
+        self.data_types
+            .iter()
+            .map(|t| t.name.as_str())
+            .chain(self.interfaces.iter().map(|t| t.name.as_str()))
+            .filter(|n| self.idl.find_all(n).is_empty())
+            .collect()
+    }
+
     /// Counts of diagnostics by severity: (errors, warnings, infos).
     pub fn counts(&self) -> (usize, usize, usize) {
         let mut c = (0, 0, 0);

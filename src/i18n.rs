@@ -241,6 +241,11 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("idl_field", "Field", "フィールド"),
     ("idl_file", "IDL file", "IDLファイル"),
     ("idl_files", "IDL files", "IDLファイル"),
+    (
+        "idl_no_definition",
+        "Defined in no IDL file read, so its definition is not shown: add the IDL file below the input, pass --idl-path DIR, or let rtcdoc init find an OpenRTM installation.",
+        "読み込んだ IDL ファイルのどれにも定義がないため、定義を表示できません。入力ディレクトリの下に IDL ファイルを置くか、--idl-path DIR を指定するか、rtcdoc init で OpenRTM のインストールを探してください。",
+    ),
     ("idl_oneway", "oneway", "oneway"),
     ("idl_operations", "Operations", "オペレーション"),
     ("idl_params", "Parameters", "引数"),

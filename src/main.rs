@@ -517,6 +517,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 if let Some(note) = loaded.catalog.backup_note() {
                     eprintln!("note: {note}");
                 }
+                if let Some(note) = rtcdoc::check::undefined_types_note(&loaded.catalog) {
+                    eprintln!("note: {note}");
+                }
                 eprintln!(
                     "{} (details: {check_cmd})",
                     rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
@@ -682,6 +685,13 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         counts.1 += loaded.catalog.systems.len();
         counts.2 += loaded.catalog.idl.files.len();
         if let (Some(note), false) = (loaded.catalog.backup_note(), cli.quiet) {
+            eprintln!("note: {note}");
+        }
+        let human = matches!(args.format, CheckFormat::Human);
+        if let (Some(note), true) = (
+            rtcdoc::check::undefined_types_note(&loaded.catalog),
+            human && !cli.quiet,
+        ) {
             eprintln!("note: {note}");
         }
         let mut r = check::check(&loaded.catalog);

@@ -298,3 +298,48 @@ fn type_pages_do_not_lead_with_absolute_idl_paths() {
     let c = read(&d.join("site/components/a.html"));
     assert!(c.contains("Program Files"), "{c}");
 }
+
+/// A type that no IDL file read defines: its page says where the definition would come from, in
+/// every output, and `check` names it at default verbosity.
+#[test]
+fn a_type_without_idl_says_where_its_definition_would_come_from() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write(
+        &input,
+        "c/RTC.xml",
+        &xml_profile("c", &[("DataInPort", "pose", "RTC::TimedPose2D")]),
+    );
+    let o = rtcdoc(
+        &["build", "in", "-o", "site", "-f", "html,markdown,doxygen"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let hint = "Defined in no IDL file read, so its definition is not shown: add the IDL file below the input, pass --idl-path DIR, or let rtcdoc init find an OpenRTM installation.";
+    let html = read(&dir.path().join("site/html/types/rtc-timedpose2d.html"));
+    assert!(
+        html.contains(&format!("<p class=\"no-definition\">{hint}</p>")),
+        "{html}"
+    );
+    let md = read(&dir.path().join("site/markdown/types/rtc-timedpose2d.md"));
+    assert!(md.contains("Defined in no IDL file read"), "{md}");
+    let dox = std::fs::read_dir(dir.path().join("site/doxygen/types"))
+        .unwrap()
+        .map(|e| read(&e.unwrap().path()))
+        .collect::<String>();
+    assert!(dox.contains("Defined in no IDL file read"), "{dox}");
+    let o = rtcdoc(&["check", "in"], dir.path());
+    let err = stderr(&o);
+    assert!(
+        err.contains("note: no IDL file was read: the pages of 1 data type(s) and interface(s) show no definition (RTC::TimedPose2D)"),
+        "{err}"
+    );
+    // With IDL that defines it, the note and the sentence go.
+    write(
+        &input,
+        "idl/Pose.idl",
+        "module RTC { struct Time { unsigned long sec; unsigned long nsec; }; struct Pose2D { double x; }; struct TimedPose2D { Time tm; Pose2D data; }; };\n",
+    );
+    let o = rtcdoc(&["check", "in"], dir.path());
+    assert!(!stderr(&o).contains("show no definition"), "{}", stderr(&o));
+}

@@ -212,3 +212,33 @@ impl Report {
         self.summary.errors > 0 || (deny_warnings && self.summary.warnings > 0)
     }
 }
+
+/// One line naming the types whose pages show no definition, for the summary at default
+/// verbosity (the per-use findings, RTC5xx infos, need `--verbose`): `note: 3 data types and
+/// interfaces are defined in no IDL file read: RTC::TimedLong, … ; add …`. `None` when every
+/// type is defined.
+pub fn undefined_types_note(cat: &crate::catalog::Catalog) -> Option<String> {
+    const SHOWN: usize = 5;
+    let names = cat.undefined_types();
+    if names.is_empty() {
+        return None;
+    }
+    let mut list = names
+        .iter()
+        .take(SHOWN)
+        .copied()
+        .collect::<Vec<_>>()
+        .join(", ");
+    if names.len() > SHOWN {
+        list.push_str(&format!(" and {} more", names.len() - SHOWN));
+    }
+    let what = if cat.idl.is_empty() {
+        "no IDL file was read: the pages of".to_string()
+    } else {
+        "the pages of".to_string()
+    };
+    Some(format!(
+        "{what} {} data type(s) and interface(s) show no definition ({list}); add their IDL files below the input, pass --idl-path DIR (an OpenRTM installation's rtm/idl), or run `rtcdoc init` to find one",
+        names.len()
+    ))
+}

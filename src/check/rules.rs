@@ -730,8 +730,16 @@ fn known_values(p: &Profile, s: &mut Sink) {
     }
 }
 
-/// RTC307: a configuration whose documentation says it describes another parameter.
+/// RTC307: a configuration whose documentation names another parameter of the component as
+/// the data it describes: a copy-paste slip (real profiles document `dir_lf0` under `dir_rf1`).
+/// A data name that is a human label (`wheel base`, `画像幅`) is what RTCBuilder's form asks
+/// for and is not reported.
 fn configuration_datanames(p: &Profile, s: &mut Sink) {
+    let names: std::collections::HashSet<&str> = p
+        .configurations()
+        .iter()
+        .filter_map(|c| non_empty(&c.name))
+        .collect();
     for c in p.configurations() {
         let (Some(name), Some(doc)) = (non_empty(&c.name), &c.doc) else {
             continue;
@@ -739,12 +747,12 @@ fn configuration_datanames(p: &Profile, s: &mut Sink) {
         let Some(documented) = non_empty(&doc.dataname) else {
             continue;
         };
-        if documented != name {
+        if documented != name && names.contains(documented) {
             s.emit(
                 r::DATANAME_MISMATCH,
                 if doc.pos.is_unknown() { c.pos } else { doc.pos },
                 format!(
-                    "the documentation of configuration `{name}` names the data `{documented}` (rtcDoc:dataname): it may describe another parameter"
+                    "the documentation of configuration `{name}` names the parameter `{documented}` (rtcDoc:dataname): it was probably copied from `{documented}` and describes that one"
                 ),
             );
         }

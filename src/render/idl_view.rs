@@ -314,6 +314,7 @@ pub fn write_definition<M: Markup>(
     heading: &dyn Fn(&mut String, &str, &str),
 ) {
     let Some(d) = definition(cat, name) else {
+        M::paragraph(out, &M::esc(lang.t("idl_no_definition")));
         return;
     };
     let ty = |r: &TypeRef| -> String {
