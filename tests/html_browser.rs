@@ -219,6 +219,9 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
                 v["id"], v["nodes"], v["sample"]
             ));
         }
+        for c in p["clipped"].as_array().into_iter().flatten() {
+            problems.push(format!("{page} {mode}: text past its cell: {c}"));
+        }
         if mode == "phone" {
             let w = p["width"].as_u64().unwrap_or(u64::MAX);
             if w > 390 {
@@ -314,7 +317,8 @@ fn the_corpus_site_passes_axe_and_fits_a_phone() {
         "TimedDoubleSeq=types/rtc-timeddoubleseq",
         "ManipulatorCommonInterface_Middle=interfaces/jara-arm-manipulatorcommoninterface-middle",
     ];
-    let Some(report) = audit(&out, &searches, &[]) else {
+    // A page whose service ports connect to many long port names.
+    let Some(report) = audit(&out, &searches, &["components/armcontroller.html"]) else {
         return;
     };
     assert_audit(&report, PAGE_KINDS);
@@ -323,4 +327,24 @@ fn the_corpus_site_passes_axe_and_fits_a_phone() {
         .unwrap()
         .len();
     assert!(diag <= 300_000, "diagnostics.html is {diag} bytes");
+}
+
+/// Long port and interface names (`ManipulatorCommonInterface_Common.JARA_ARM_…`) wrap inside
+/// their cells at every width, never past them.
+#[test]
+fn long_names_wrap_inside_their_cells() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(
+        &common::root().join("tests/fixtures/long-names"),
+        &out,
+        SiteOptions::default(),
+    );
+    let Some(report) = audit(&out, &[], &["components/armcontroller.html"]) else {
+        return;
+    };
+    assert_audit(&report, &[]);
 }

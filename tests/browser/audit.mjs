@@ -114,9 +114,20 @@ try {
             }
           }
         }
-        return { width, scrollers };
+        // Text that runs past the right edge of its table cell (cut off by the cell or the
+        // table's scrolling box): links and code in cells must wrap inside them.
+        const clipped = [];
+        for (const el of document.querySelectorAll('td a, td code, th code, th a')) {
+          const cell = el.closest('td, th');
+          const wrap = el.closest('.table-wrap') || cell;
+          const edge = Math.min(cell.getBoundingClientRect().right, wrap.getBoundingClientRect().right);
+          if (el.getBoundingClientRect().right > edge + 1) {
+            clipped.push(el.textContent.slice(0, 80));
+          }
+        }
+        return { width, scrollers, clipped };
       });
-      report.pages.push({ page: rel, mode: m.name, violations: res, width: layout.width, scrollers: m.width < 500 ? layout.scrollers : [] });
+      report.pages.push({ page: rel, mode: m.name, violations: res, width: layout.width, scrollers: m.width < 500 ? layout.scrollers : [], clipped: layout.clipped });
     }
   }
   // Search: type QUERY into the search page, wait for results; check ?q= and Enter.
