@@ -144,6 +144,8 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("default_value", "Default", "デフォルト値"),
     ("description", "Description", "概要"),
     ("diag_files", "Files", "ファイル"),
+    ("diag_page", "page", "ページ"),
+    ("diag_pages", "Pages of the diagnostics (files with errors first)", "診断のページ (エラーのあるファイルが先)"),
     ("diag_intro", "Errors and warnings by file, then the infos summarised by code. Every finding: rtcdoc check.", "ファイルごとのエラーと警告、続いてコード別の情報の要約。すべての指摘は rtcdoc check で。"),
     ("diagnostics", "Diagnostics", "診断"),
     ("direction", "Direction", "方向"),

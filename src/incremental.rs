@@ -387,6 +387,7 @@ impl Workspace {
             None => true,
             Some(set) => {
                 set.contains(p)
+                    || p.starts_with("diagnostics/")
                     || p.starts_with("categories/")
                     || p.starts_with("vendors/")
                     || p.starts_with("systems/")

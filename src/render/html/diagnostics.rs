@@ -1,7 +1,10 @@
 //! The diagnostics page: counts at the top, errors and warnings grouped by file (errors
 //! first, each file linking its component page), infos summarised by code. On the real-world
 //! corpus (1,800 findings, 1,500 of them infos) a row per finding made a 990 KB table; the
-//! full list stays what `rtcdoc check` prints.
+//! full list stays what `rtcdoc check` prints. A large catalogue's files are split into pages
+//! of [`FILES_PER_PAGE`] files (`diagnostics.html`, then `diagnostics/2.html`, …, files with
+//! errors first), so that no page grows with the catalogue: 10,000 profiles with warnings
+//! made an 11 MB page.
 
 use crate::catalog::Catalog;
 use crate::diagnostic::{Diagnostic, Severity};
@@ -40,7 +43,28 @@ pub(super) struct InfoCode<'a> {
     example: &'a str,
 }
 
-/// What the diagnostics template shows.
+/// Files (with their errors and warnings) per diagnostics page.
+pub(super) const FILES_PER_PAGE: usize = 200;
+
+/// The path of diagnostics page `n` (1-based) below the site root, the first being `first`
+/// (`diagnostics.html`; then `diagnostics/2.html`, …).
+fn page_path(first: &str, n: usize) -> String {
+    if n <= 1 {
+        first.to_string()
+    } else {
+        format!("{}/{n}.html", first.trim_end_matches(".html"))
+    }
+}
+
+/// A link to one page of the diagnostics.
+#[derive(Serialize, Clone)]
+pub(super) struct PageLink {
+    number: usize,
+    href: String,
+    current: bool,
+}
+
+/// What the diagnostics template shows (one page of it).
 #[derive(Serialize)]
 pub(super) struct DiagnosticsView<'a> {
     errors: usize,
@@ -48,8 +72,16 @@ pub(super) struct DiagnosticsView<'a> {
     infos: usize,
     /// Codes of errors and warnings, sorted (the code filter).
     codes: Vec<&'a str>,
+    /// Files in all (on every page).
+    file_count: usize,
     files: Vec<FileGroup<'a>>,
+    /// The infos, on the first page.
     info_codes: Vec<InfoCode<'a>>,
+    /// Every page, when there are several.
+    pages: Vec<PageLink>,
+    /// This page's number (1-based) and the first page's path from here.
+    pub(super) page: usize,
+    overview: String,
 }
 
 fn rank(s: Severity) -> u8 {
@@ -60,9 +92,70 @@ fn rank(s: Severity) -> u8 {
     }
 }
 
-/// The view of `catalog.diagnostics`: files with errors first (most errors first, then by
-/// path), within a file errors before warnings in position order.
-pub(super) fn view(catalog: &Catalog) -> DiagnosticsView<'_> {
+/// The pages of `catalog.diagnostics`: (path, root, view), the first at `diagnostics.html`.
+pub(super) fn views<'a>(
+    catalog: &'a Catalog,
+    first: &str,
+) -> Vec<(String, &'static str, DiagnosticsView<'a>)> {
+    let all = view(catalog);
+    let count = all.files.len().div_ceil(FILES_PER_PAGE).max(1);
+    let links = |current: usize, root: &str| -> Vec<PageLink> {
+        if count == 1 {
+            return Vec::new();
+        }
+        (1..=count)
+            .map(|n| PageLink {
+                number: n,
+                href: format!("{root}{}", page_path(first, n)),
+                current: n == current,
+            })
+            .collect()
+    };
+    let DiagnosticsView {
+        errors,
+        warnings,
+        infos,
+        codes,
+        file_count,
+        files,
+        info_codes,
+        ..
+    } = all;
+    let mut files = files.into_iter();
+    let mut info_codes = Some(info_codes);
+    (1..=count)
+        .map(|n| {
+            let root = if n == 1 { "" } else { "../" };
+            let mut chunk: Vec<FileGroup<'_>> = files.by_ref().take(FILES_PER_PAGE).collect();
+            for f in &mut chunk {
+                if let Some(h) = &mut f.href {
+                    h.insert_str(0, root);
+                }
+            }
+            let view = DiagnosticsView {
+                errors,
+                warnings,
+                infos,
+                codes: codes.clone(),
+                file_count,
+                files: chunk,
+                info_codes: info_codes.take().unwrap_or_default(),
+                pages: links(n, root),
+                page: n,
+                overview: if n == 1 {
+                    String::new()
+                } else {
+                    format!("{root}{}", page_path(first, 1))
+                },
+            };
+            (page_path(first, n), root, view)
+        })
+        .collect()
+}
+
+/// The view of `catalog.diagnostics` on one page: files with errors first (most errors first,
+/// then by path), within a file errors before warnings in position order.
+fn view(catalog: &Catalog) -> DiagnosticsView<'_> {
     let pages: HashMap<&str, String> = catalog
         .components
         .iter()
@@ -145,7 +238,11 @@ pub(super) fn view(catalog: &Catalog) -> DiagnosticsView<'_> {
         warnings: count(Severity::Warning),
         infos: count(Severity::Info),
         codes,
+        file_count: files.len(),
         files,
         info_codes,
+        pages: Vec::new(),
+        page: 1,
+        overview: String::new(),
     }
 }

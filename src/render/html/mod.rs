@@ -1509,16 +1509,29 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         }),
     });
     if !catalog.diagnostics.is_empty() {
-        pages.push(Page {
-            path: catalog.site_page(PageKind::Diagnostics).path("html"),
-            template: "diagnostics.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => "",
-                title => title(lang.t("diagnostics")),
-                crumbs => ctx(&crumbs_home(lang, "")),
-                d => ctx(&diagnostics::view(catalog)),
-            }),
-        });
+        let first = catalog.site_page(PageKind::Diagnostics).path("html");
+        for (path, root, view) in diagnostics::views(catalog, &first) {
+            let heading = if view.page == 1 {
+                lang.t("diagnostics").to_string()
+            } else {
+                format!(
+                    "{} ({} {})",
+                    lang.t("diagnostics"),
+                    lang.t("diag_page"),
+                    view.page
+                )
+            };
+            pages.push(Page {
+                path,
+                template: "diagnostics.html",
+                context: PageContext::Ready(minijinja::context! {
+                    root => root,
+                    title => title(&heading),
+                    crumbs => ctx(&crumbs_home(lang, root)),
+                    d => ctx(&view),
+                }),
+            });
+        }
     }
     pages
 }
