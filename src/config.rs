@@ -384,7 +384,10 @@ mod tests {
             assert_eq!(c.serve.unwrap().port, Some(3000));
         }
         let ja = template_in(Lang::Ja, Some(&found));
-        assert!(ja.contains("プレフィックス /usr から OpenRTM の IDL"), "{ja}");
+        assert!(
+            ja.contains("プレフィックス /usr から OpenRTM の IDL"),
+            "{ja}"
+        );
         assert!(ja.contains("# idl-path = [\"/usr/include/openrtm-2.0/rtm/idl\"]"));
     }
 
