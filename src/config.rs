@@ -157,6 +157,16 @@ fn toml_string(s: &str) -> String {
     out
 }
 
+/// The text `rtcdoc init --language LANG` writes: [`template_for`] for English; for Japanese the
+/// same keys in the same order, with Japanese comments and `language = "ja"` set (not commented
+/// out), so that a Japanese project starts in Japanese.
+pub fn template_in(lang: Lang, idl: Option<&crate::init::Detected>) -> String {
+    match lang {
+        Lang::En => template_for(idl),
+        Lang::Ja => template_ja(idl),
+    }
+}
+
 /// [`template`], with the OpenRTM IDL directory `rtcdoc init` found (if any) as the suggested
 /// `idl-path`, still commented out: a build never depends on what is installed.
 pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
@@ -233,9 +243,153 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
     )
 }
 
+/// The Japanese [`template_in`]: every key of [`template_for`], in its order, with the comments
+/// in Japanese and `language = "ja"` uncommented.
+fn template_ja(idl: Option<&crate::init::Detected>) -> String {
+    let d = Limits::default();
+    let idl = match idl {
+        None => "# 追加で読み込む IDL ファイル (データ型、サービスインターフェース) のディレクトリ。再帰的に探索します。
+# 入力以下の *.idl はこの設定がなくても読み込みます。例: OpenRTM のインストール先の IDL
+# idl-path = [\"/usr/include/openrtm-2.0/rtm/idl\"]"
+            .to_string(),
+        Some(found) => {
+            // `via` is `$RTM_ROOT`, `$OPENRTM_DIR` or `the prefix /usr`.
+            let via = match found.via.strip_prefix("the prefix ") {
+                Some(prefix) => format!("プレフィックス {prefix}"),
+                None => found.via.clone(),
+            };
+            format!(
+                "# 追加で読み込む IDL ファイル (データ型、サービスインターフェース) のディレクトリ。再帰的に探索します。
+# 入力以下の *.idl はこの設定がなくても読み込みます。`rtcdoc init` が {via} から OpenRTM の IDL を
+# 見つけました。そこで定義された型とインターフェース (RTC::TimedLong など) をドキュメントにするには、
+# 次の行のコメントを外してください。
+# idl-path = [{}]",
+                toml_string(&found.dir.to_string_lossy())
+            )
+        }
+    };
+    format!(
+        r#"# rtcdoc の設定ファイル。どのキーも省略でき、コマンドラインのフラグはこのファイルより優先されます。
+# パスはこのファイルのあるディレクトリからの相対パスです。
+
+# カタログのタイトル (索引ページ、ブックのタイトル、Doxygen のプロジェクト名)。
+# title = "RTコンポーネント カタログ"
+
+# サイトを公開する URL。sitemap.xml と 404 ページの絶対リンクに使います。
+# base-url = "https://example.org/components/"
+
+# コンポーネントページの「ソース」を、リポジトリにあるそのファイルへのリンクにします (コンポーネントの
+# README から他のファイルへのリンクにも使います)。{{path}} は入力ディレクトリからのファイルの相対パスです。
+# GitHub: https://github.com/ORG/REPO/blob/main/{{path}}
+# GitLab: https://gitlab.com/ORG/REPO/-/blob/main/{{path}}
+# source-url = "https://github.com/ORG/REPO/blob/main/{{path}}"
+
+# プロファイル (RTC.xml と YAML 形式) を再帰的に探すディレクトリ。
+# input = "."
+
+# 出力ディレクトリ。ビルドが成功するたびに置き換えられます。
+# output = "site"
+
+# 出力形式: "html"、"markdown"、"doxygen"、"json"。複数指定すると output/<形式>/ に出力します。
+# formats = ["html"]
+
+# テーマのディレクトリ。ここにあるファイルが、同じ名前の組み込みテンプレート・アセットを置き換えます。
+# theme = "my-theme"
+
+# 生成するラベル (見出し、表の項目名、図、検索画面) の言語: "en" または "ja"。
+# プロファイルの文章は常に書かれたとおりに表示します。
+language = "ja"
+
+# 読み込むファイルと除外するファイルの glob (input からの相対パス)。
+# include = ["**"]
+# exclude = ["**/backup/**", "**/*.xml2*"]
+
+{idl}
+
+# プロファイルにエラーが 1 つでもあれば、何も書き出さずに失敗します。
+# strict = false
+
+# 悪意のある入力に対する上限。
+# max-file-size = {size}
+# max-depth = {depth}
+
+# RTシステムのプロファイルには、保存したマシンのホスト名、IOR、CORBA のエンドポイントが含まれます。
+# システムのページと catalog.json は、これを true にしない限りそれらを公開しません (社内向けサイトなどで使用)。
+# show-host-data = false
+
+# rtcdoc serve の設定
+# [serve]
+# port = 3000
+# open = false
+"#,
+        size = d.max_file_size,
+        depth = d.max_depth,
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The keys a template sets or suggests (`key = ` lines, commented or not) and its tables.
+    fn template_keys(t: &str) -> Vec<String> {
+        t.lines()
+            .map(|l| l.strip_prefix("# ").unwrap_or(l))
+            .filter_map(|l| {
+                if l.starts_with('[') {
+                    Some(l.to_string())
+                } else {
+                    l.split_once(" = ")
+                        .map(|(k, _)| k)
+                        .filter(|k| !k.contains(' '))
+                        .map(str::to_string)
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn japanese_template_has_every_key_and_starts_in_japanese() {
+        let found = crate::init::Detected {
+            dir: PathBuf::from("/usr/include/openrtm-2.0/rtm/idl"),
+            via: "the prefix /usr".into(),
+        };
+        for idl in [None, Some(&found)] {
+            let en = template_in(Lang::En, idl);
+            let ja = template_in(Lang::Ja, idl);
+            assert_eq!(en, template_for(idl));
+            // The same keys, in the same order.
+            assert_eq!(template_keys(&ja), template_keys(&en), "{ja}");
+            // Only `language` is set.
+            let c = parse(&ja, Path::new("x")).unwrap();
+            assert_eq!(
+                c,
+                Config {
+                    language: Some(Lang::Ja),
+                    ..Config::default()
+                }
+            );
+            // Uncommenting every key gives a valid file too.
+            let on: String = ja
+                .lines()
+                .map(|l| {
+                    l.strip_prefix("# ")
+                        .filter(|r| r.contains(" = ") || r.starts_with('['))
+                        .unwrap_or(l)
+                })
+                .collect::<Vec<_>>()
+                .join("\n");
+            let c = parse(&on, Path::new("x")).unwrap();
+            assert_eq!(c.title.as_deref(), Some("RTコンポーネント カタログ"));
+            assert_eq!(c.serve.unwrap().port, Some(3000));
+        }
+        let ja = template_in(Lang::Ja, Some(&found));
+        assert!(
+            ja.contains("プレフィックス /usr から OpenRTM の IDL"),
+            "{ja}"
+        );
+        assert!(ja.contains("# idl-path = [\"/usr/include/openrtm-2.0/rtm/idl\"]"));
+    }
 
     #[test]
     fn template_parses_to_defaults_and_uncommented_template_is_valid() {

@@ -209,6 +209,10 @@ struct InitArgs {
     /// Overwrite an existing `rtcdoc.toml`.
     #[arg(long)]
     force: bool,
+    /// Language of the file's comments; `ja` also sets `language = "ja"` (generated labels in
+    /// Japanese) [default: en].
+    #[arg(long, value_enum)]
+    language: Option<Lang>,
 }
 
 fn main() -> ExitCode {
@@ -603,7 +607,8 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             std::fs::create_dir_all(&args.dir)?;
             // An OpenRTM installation's IDL, suggested (commented out) in the file.
             let idl = rtcdoc::init::detect(&|k| std::env::var_os(k));
-            std::fs::write(&path, config::template_for(idl.as_ref()))?;
+            let lang = args.language.unwrap_or_default();
+            std::fs::write(&path, config::template_in(lang, idl.as_ref()))?;
             if !cli.quiet {
                 eprintln!("wrote {}", path.display());
                 if let Some(found) = &idl {

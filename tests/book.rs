@@ -41,6 +41,20 @@ fn guide_builds_with_mdbook_without_warnings() {
         assert!(dir.path().join(page).exists(), "{page}");
     }
     assert!(dir.path().join("images/component-page.png").exists());
+    // The English introduction links the Japanese guide, published beside it at `ja/`
+    // (tests/book_ja.rs checks that book itself).
+    let ja = std::process::Command::new("mdbook")
+        .arg("build")
+        .arg(root().join("book/ja"))
+        .arg("-d")
+        .arg(dir.path().join("ja"))
+        .output()
+        .unwrap();
+    assert!(
+        ja.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ja.stderr)
+    );
     if let Some(tool) = shared_tool("linkcheck.py") {
         let r = std::process::Command::new("python3")
             .arg(tool)

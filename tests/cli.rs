@@ -20,6 +20,54 @@ fn init_writes_a_commented_config_and_refuses_to_overwrite() {
         .success());
 }
 
+/// `rtcdoc init --language ja` starts a Japanese project: Japanese comments, `language = "ja"`
+/// set, the same keys as the English file; `--language en` is the English file, unchanged.
+#[test]
+fn init_language_ja_writes_japanese_comments_and_sets_the_language() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let empty = d.join("no-openrtm");
+    for (args, name) in [
+        (&["init", "en"][..], "en"),
+        (&["init", "en-flag", "--language", "en"][..], "en-flag"),
+        (&["init", "ja", "--language", "ja"][..], "ja"),
+    ] {
+        let out = init_with_prefixes(args, d, &empty);
+        assert!(out.status.success(), "{args:?}: {out:?}");
+        // Messages stay English.
+        assert!(
+            String::from_utf8_lossy(&out.stderr).starts_with("wrote "),
+            "{name}"
+        );
+    }
+    let read = |name: &str| std::fs::read_to_string(d.join(name).join("rtcdoc.toml")).unwrap();
+    let (en, en_flag, ja) = (read("en"), read("en-flag"), read("ja"));
+    assert_eq!(en, rtcdoc::config::template());
+    assert_eq!(en_flag, en);
+    assert!(ja.contains("# rtcdoc の設定ファイル。"), "{ja}");
+    assert!(ja.lines().any(|l| l == "language = \"ja\""), "{ja}");
+    assert!(!ja.contains("Title of the catalogue"), "{ja}");
+    // Every key of the English file, commented or not, is in the Japanese one.
+    let keys = |t: &str| -> Vec<String> {
+        t.lines()
+            .map(|l| l.strip_prefix("# ").unwrap_or(l))
+            .filter_map(|l| l.split_once(" = ").map(|(k, _)| k.to_string()))
+            .filter(|k| !k.contains(' '))
+            .collect()
+    };
+    assert_eq!(keys(&ja), keys(&en));
+    assert!(!keys(&en).is_empty());
+    // It is a valid configuration: a build in the folder labels its pages in Japanese.
+    write(&d.join("ja"), "Cam/RTC.xml", &xml_profile("Cam", &[]));
+    let out = rtcdoc(&["build", "ja", "-o", "site", "-q"], d);
+    assert!(out.status.success(), "{out:?}");
+    let index = std::fs::read_to_string(d.join("site/index.html")).unwrap();
+    assert!(index.contains("<html lang=\"ja\""), "{index}");
+    // An unknown language is a usage error.
+    let bad = rtcdoc(&["init", "fr", "--language", "fr"], d);
+    assert_eq!(bad.status.code(), Some(2));
+}
+
 /// `rtcdoc init` with the OpenRTM search confined to `prefixes` (and no OpenRTM variables).
 fn init_with_prefixes(args: &[&str], cwd: &Path, prefixes: &Path) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
