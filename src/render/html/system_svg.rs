@@ -11,38 +11,8 @@
 
 use super::svg::esc;
 use crate::layout::wiring::{layout, Edge, Node, Port, PortKind, Side, WiringLayout};
+use crate::render::wiring::{WireConnector, WireInstance};
 use std::fmt::Write;
-
-/// A port as drawn.
-pub struct WirePort {
-    pub name: String,
-    /// `in`, `out`, `service` or `other` (CSS class and side).
-    pub class: &'static str,
-    /// Where the port's link goes (the component page's port row, or the instance row).
-    pub href: String,
-    /// Accessible name of the link.
-    pub label: String,
-}
-
-/// An instance as drawn.
-pub struct WireInstance {
-    pub name: String,
-    /// The component's name (second line), when known.
-    pub component: String,
-    pub href: String,
-    pub label: String,
-    pub ports: Vec<WirePort>,
-    /// `rtsExt:Location` x/y, when given as integers.
-    pub location: Option<(i64, i64)>,
-}
-
-/// A connector between two ports: (instance, port) indices into the drawn instances.
-pub struct WireConnector {
-    pub from: (usize, usize),
-    pub to: (usize, usize),
-    pub service: bool,
-    pub label: String,
-}
 
 impl WireInstance {
     /// The layout's view of this instance.
@@ -236,6 +206,30 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
     }
     s.push_str("</svg>");
     s
+}
+
+/// Colours of a drawing opened on its own (no site style sheet): the light theme's.
+const STANDALONE_STYLE: &str = "<style>text{font-family:system-ui,sans-serif;font-size:12px;fill:#1f2328}.rtc-box{fill:#f3f6fb;stroke:#33415c;stroke-width:1.6}.rtc-name{font-size:15px;font-weight:700}.stereotype{fill:#5b6472;font-size:12px;font-weight:400}.port-name{font-size:11px}.port-square{stroke:#33415c;stroke-width:1.2;fill:#fff}a.in .port-square{fill:#1f7a4d}a.out .port-square{fill:#b8561c}a.service .port-square{fill:#5b6472}.connector{fill:none;stroke:#33415c;stroke-width:1.6}.connector.service{stroke-dasharray:6 4}</style>";
+
+/// The wiring diagram as a file of its own (`rtcdoc graph --format svg`): the same drawing
+/// with its colours in a `<style>` element.
+pub fn standalone_system_diagram(
+    title: &str,
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+) -> String {
+    let svg = system_diagram(title, inst, conns);
+    match svg.find("</title>") {
+        Some(i) => {
+            let at = i + "</title>".len();
+            format!(
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n{}{STANDALONE_STYLE}{}\n",
+                &svg[..at],
+                &svg[at..]
+            )
+        }
+        None => svg,
+    }
 }
 
 #[cfg(test)]
