@@ -14,6 +14,7 @@ fn txt(v: &Option<Text>) -> String {
 }
 
 /// A port as drawn.
+#[derive(Clone)]
 pub struct WirePort {
     pub name: String,
     /// `in`, `out`, `service` or `other` (CSS class and side).
@@ -25,6 +26,7 @@ pub struct WirePort {
 }
 
 /// An instance as drawn.
+#[derive(Clone)]
 pub struct WireInstance {
     pub name: String,
     /// The component's name (second line), when known.

@@ -56,6 +56,15 @@ pub fn wiring_layout(inst: &[WireInstance], conns: &[WireConnector]) -> WiringLa
     layout(&nodes, &edges)
 }
 
+/// ` href="…"`, or nothing for an empty link (a drawing on its own).
+fn href_attr(h: &str) -> String {
+    if h.is_empty() {
+        String::new()
+    } else {
+        format!(" href=\"{}\"", esc(h))
+    }
+}
+
 /// -1, 0 or 1 (`f32::signum` gives 1 for 0).
 fn sign(v: f32) -> f32 {
     if v > 0.0 {
@@ -128,8 +137,8 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
         let cx = x + b.w / 2.0;
         let _ = write!(
             s,
-            r#"<g class="instance"><a href="{}" aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{cx}" y="{}" text-anchor="middle">"#,
-            esc(&it.href),
+            r#"<g class="instance"><a{} aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{cx}" y="{}" text-anchor="middle">"#,
+            href_attr(&it.href),
             b.w,
             b.h,
             b.title_y,
@@ -161,8 +170,8 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
             let (px, py) = (pl.x, pl.y);
             let _ = write!(
                 s,
-                r#"<a href="{}" class="port {}" aria-label="{l}"><title>{l}</title>"#,
-                esc(&p.href),
+                r#"<a{} class="port {}" aria-label="{l}"><title>{l}</title>"#,
+                href_attr(&p.href),
                 p.class,
                 l = esc(&p.label)
             );
@@ -218,7 +227,19 @@ pub fn standalone_system_diagram(
     inst: &[WireInstance],
     conns: &[WireConnector],
 ) -> String {
-    let svg = system_diagram(title, inst, conns);
+    // No links: the pages they would point to are not beside the file.
+    let bare: Vec<WireInstance> = inst
+        .iter()
+        .map(|i| {
+            let mut i = i.clone();
+            i.href.clear();
+            for p in &mut i.ports {
+                p.href.clear();
+            }
+            i
+        })
+        .collect();
+    let svg = system_diagram(title, &bare, conns);
     match svg.find("</title>") {
         Some(i) => {
             let at = i + "</title>".len();
