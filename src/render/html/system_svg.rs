@@ -256,6 +256,7 @@ pub fn standalone_system_diagram(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::wiring::WirePort;
 
     fn inst(name: &str, ports: &[(&str, &'static str)], loc: Option<(i64, i64)>) -> WireInstance {
         WireInstance {
