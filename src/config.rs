@@ -51,6 +51,16 @@ pub struct Config {
     pub show_host_data: Option<bool>,
     /// URL template of a profile in its repository, with `{path}` (the input-relative path).
     pub source_url: Option<String>,
+    /// Settings of the Markdown output.
+    pub markdown: Option<MarkdownConfig>,
+}
+
+/// `[markdown]` settings.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct MarkdownConfig {
+    /// System diagrams as SVG files (`svg`) or Mermaid blocks (`mermaid`).
+    pub diagrams: Option<crate::render::DiagramFormat>,
 }
 
 /// `[serve]` settings.
@@ -232,6 +242,11 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # RT System profiles carry the host names, IORs and CORBA endpoints of the machine they were
 # saved on; system pages and catalog.json leave them out unless this is true (an internal site).
 # show-host-data = false
+
+# Markdown output: system wiring diagrams as SVG files beside the pages ("svg") or as Mermaid
+# blocks in them ("mermaid").
+# [markdown]
+# diagrams = "svg"
 
 # rtcdoc serve
 # [serve]
@@ -548,6 +563,11 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 .or_else(|| c.theme.as_deref().map(|p| file.resolve(p))),
             language: cli.language.or(c.language).unwrap_or_default(),
             show_host_data: c.show_host_data.unwrap_or(false),
+            markdown_diagrams: c
+                .markdown
+                .as_ref()
+                .and_then(|m| m.diagrams)
+                .unwrap_or_default(),
             source_url: c.source_url.clone(),
         },
     }

@@ -18,6 +18,7 @@ pub mod i18n;
 pub mod idl;
 pub mod incremental;
 pub mod init;
+pub mod layout;
 pub mod model;
 pub mod output;
 pub mod parse;

@@ -55,6 +55,8 @@ enum Command {
     Diff(DiffArgs),
     /// Build into memory, serve on 127.0.0.1, rebuild on changes and live-reload browsers.
     Serve(ServeArgs),
+    /// Write the wiring of an RT System as Graphviz DOT, Mermaid or SVG (to stdout or -o FILE).
+    Graph(GraphArgs),
     /// Write an `rtcdoc.toml` with every setting commented out at its default.
     Init(InitArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
@@ -199,6 +201,32 @@ struct ServeArgs {
     /// Open the site in the default browser.
     #[arg(long)]
     open: bool,
+}
+
+#[derive(Args)]
+struct GraphArgs {
+    /// Directory or file holding the system profile (and the component profiles its instances
+    /// use) [default: `.`].
+    input: Option<PathBuf>,
+    /// The system to draw, by name, page slug or input-relative file path; needed when the
+    /// input holds several.
+    #[arg(long, value_name = "NAME")]
+    system: Option<String>,
+    /// Output format: dot (Graphviz), mermaid (`flowchart LR`) or svg (the site's drawing).
+    #[arg(short, long, value_enum, default_value = "dot")]
+    format: GraphFormat,
+    /// Write to FILE instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+    #[command(flatten)]
+    input_args: InputArgs,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum GraphFormat {
+    Dot,
+    Mermaid,
+    Svg,
 }
 
 #[derive(Args)]
@@ -635,7 +663,69 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             clap_mangen::Man::new(Cli::command()).render(&mut std::io::stdout())?;
             Ok(ExitCode::SUCCESS)
         }
+        Command::Graph(args) => graph(args),
     }
+}
+
+/// `rtcdoc graph`: the wiring of one system of the input as DOT, Mermaid or SVG.
+fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
+    let input = args.input.clone().unwrap_or_else(|| PathBuf::from("."));
+    let file = load_config(Some(&input), args.input_args.config.as_deref())?;
+    let mut opts = load_options(&file, &args.input_args);
+    // A folder holding only a system profile is a fine input here.
+    opts.allow_empty = true;
+    let loaded = build::load(&input, &opts)?;
+    let systems = &loaded.catalog.systems;
+    let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
+        Some(want) => systems
+            .iter()
+            .filter(|s| s.profile.name() == want || &s.slug == want || &s.source == want)
+            .collect(),
+        None => systems.iter().collect(),
+    };
+    let names = || {
+        systems
+            .iter()
+            .map(|s| format!("{} ({})", s.profile.name(), s.source))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let s = match chosen.as_slice() {
+        [one] => *one,
+        [] if systems.is_empty() => {
+            anyhow::bail!("no RT System profile in {}", input.display())
+        }
+        [] => anyhow::bail!(
+            "no system named {:?} in {}; the systems are: {}",
+            args.system.as_deref().unwrap_or(""),
+            input.display(),
+            names()
+        ),
+        _ => anyhow::bail!(
+            "{} holds {} systems; choose one with --system NAME: {}",
+            input.display(),
+            chosen.len(),
+            names()
+        ),
+    };
+    let lang = file.config.language.unwrap_or_default();
+    let (inst, conns) = rtcdoc::render::wiring::system_wiring(&loaded.catalog, s, lang, "");
+    let name = s.profile.name();
+    let text = match args.format {
+        GraphFormat::Dot => rtcdoc::render::wiring::to_dot(name, &inst, &conns),
+        GraphFormat::Mermaid => rtcdoc::render::wiring::to_mermaid(name, &inst, &conns),
+        GraphFormat::Svg => rtcdoc::render::html::standalone_system_diagram(
+            &format!("{} {name}", lang.t("sys_wiring")),
+            &inst,
+            &conns,
+        ),
+    };
+    match &args.output {
+        Some(path) => std::fs::write(path, text.as_bytes())
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?,
+        None => print_stdout(text.trim_end())?,
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Where the files of an input live: the input directory, or the parent of an input file

@@ -73,6 +73,7 @@ fn guide_documents_every_command_and_rule() {
         "rtcdoc check",
         "rtcdoc diff",
         "rtcdoc serve",
+        "rtcdoc graph",
         "rtcdoc init",
         "rtcdoc completions",
         "rtcdoc man",
@@ -206,7 +207,7 @@ fn help_flags(sub: &str) -> Vec<String> {
 fn help_guide_and_readme_name_the_same_flags() {
     let cli = std::fs::read_to_string(root().join("book/src/cli.md")).unwrap();
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    for sub in ["build", "check", "diff", "serve", "init"] {
+    for sub in ["build", "check", "diff", "serve", "graph", "init"] {
         let flags = help_flags(sub);
         assert!(!flags.is_empty(), "{sub}");
         for f in &flags {

@@ -227,8 +227,11 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
             if w > 390 {
                 problems.push(format!("{page}: {w} px wide at 390 px"));
             }
+            // A diagram scrolls in its own box rather than shrink below legible text (#26).
             for s in p["scrollers"].as_array().into_iter().flatten() {
-                problems.push(format!("{page}: sideways-scrolling region {s}"));
+                if s["cls"] != "diagram-scroll" {
+                    problems.push(format!("{page}: sideways-scrolling region {s}"));
+                }
             }
         }
     }

@@ -733,8 +733,17 @@ fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     out
 }
 
-/// `systems/<slug>.md`.
-fn system_page(cat: &Catalog, si: usize, title: &str, lang: Lang, show_host: bool) -> String {
+/// `systems/<slug>.md`, and its wiring diagram as an SVG file (written at `svg_path`) unless
+/// it is drawn as a Mermaid block.
+fn system_page(
+    cat: &Catalog,
+    si: usize,
+    title: &str,
+    lang: Lang,
+    show_host: bool,
+    diagrams: super::DiagramFormat,
+    svg_path: &str,
+) -> (String, Option<String>) {
     let s = &cat.systems[si];
     let mut out = String::new();
     w!(out, "# {}", inline(s.profile.name()));
@@ -763,14 +772,34 @@ fn system_page(cat: &Catalog, si: usize, title: &str, lang: Lang, show_host: boo
             heading: &head,
         },
     );
-    out
+    // The wiring diagram, after the body's sections.
+    let (inst, conns) = super::wiring::system_wiring(cat, s, lang, "../");
+    let name = s.profile.name();
+    let caption = format!("{} {name}", lang.t("sys_wiring"));
+    heading(&mut out, 2, "sec-wiring", &caption);
+    let svg = match diagrams {
+        super::DiagramFormat::Mermaid => {
+            w!(out, "```mermaid");
+            out.push_str(&super::wiring::to_mermaid(name, &inst, &conns));
+            w!(out, "```");
+            None
+        }
+        super::DiagramFormat::Svg => {
+            let file = svg_path.rsplit('/').next().unwrap_or(svg_path);
+            w!(out, "![{}]({})", inline(&caption), file);
+            Some(super::html::standalone_system_diagram(
+                &caption, &inst, &conns,
+            ))
+        }
+    };
+    (out, svg)
 }
 
 /// Renders every page as (relative path, content), in a fixed order.
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = cat.category_of_each();
     let readme = readme_targets(cat, None);
-    let mut out = other_pages(cat, title, lang, false);
+    let mut out = other_pages(cat, title, lang, false, super::DiagramFormat::Svg);
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
@@ -795,7 +824,13 @@ fn component_entry(
 }
 
 /// Every page but the component pages.
-fn other_pages(cat: &Catalog, title: &str, lang: Lang, show_host: bool) -> Vec<(String, String)> {
+fn other_pages(
+    cat: &Catalog,
+    title: &str,
+    lang: Lang,
+    show_host: bool,
+    diagrams: super::DiagramFormat,
+) -> Vec<(String, String)> {
     let index = index_page(cat, title, lang);
     let mut out = vec![
         ("SUMMARY.md".to_string(), summary(cat, title, lang)),
@@ -837,11 +872,11 @@ fn other_pages(cat: &Catalog, title: &str, lang: Lang, show_host: bool) -> Vec<(
             cat.site_page(PageKind::Systems).path_in(Output::Markdown),
             system_index_page(cat, title, lang),
         ));
-        out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
-            (
-                cat.system_page(si).path_in(Output::Markdown),
-                system_page(cat, si, title, lang, show_host),
-            )
+        out.par_extend((0..cat.systems.len()).into_par_iter().flat_map_iter(|si| {
+            let path = cat.system_page(si).path_in(Output::Markdown);
+            let svg_path = format!("{}.svg", path.trim_end_matches(".md"));
+            let (page, svg) = system_page(cat, si, title, lang, show_host, diagrams, &svg_path);
+            std::iter::once((path, page)).chain(svg.map(|s| (svg_path, s)))
         }));
     }
     out
@@ -853,7 +888,13 @@ impl Renderer for MarkdownRenderer {
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         let (cat, title, lang) = (ctx.catalog, &ctx.site.title, ctx.site.language);
-        let pages = other_pages(cat, title, lang, ctx.site.show_host_data);
+        let pages = other_pages(
+            cat,
+            title,
+            lang,
+            ctx.site.show_host_data,
+            ctx.site.markdown_diagrams,
+        );
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;

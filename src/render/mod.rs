@@ -11,6 +11,7 @@ pub mod json;
 pub mod markdown;
 pub mod system_text;
 pub mod text;
+pub mod wiring;
 
 use crate::catalog::Catalog;
 use crate::output::Sink;
@@ -38,6 +39,17 @@ pub(crate) const fn byte_set(controls: bool, bytes: &[u8]) -> [bool; 256] {
     t
 }
 
+/// How the Markdown output carries a system's wiring diagram: an SVG file beside the page
+/// (`svg`, the default) or a Mermaid block in it (`mermaid`, drawn by GitHub, GitLab and
+/// mdBook with its Mermaid preprocessor).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DiagramFormat {
+    #[default]
+    Svg,
+    Mermaid,
+}
+
 /// Site-wide settings every renderer can use.
 #[derive(Debug, Clone)]
 pub struct SiteOptions {
@@ -52,6 +64,8 @@ pub struct SiteOptions {
     /// Publish the host data of RT System profiles (host names, IORs, CORBA endpoints, naming
     /// paths); hidden by default (`show-host-data` in rtcdoc.toml).
     pub show_host_data: bool,
+    /// How the Markdown output draws system diagrams (`[markdown] diagrams`).
+    pub markdown_diagrams: DiagramFormat,
     /// `source-url`: a URL template with `{path}` (the profile's input-relative path) that
     /// makes "Source" on component pages a link to the file in its repository.
     pub source_url: Option<String>,
@@ -65,6 +79,7 @@ impl Default for SiteOptions {
             theme_dir: None,
             language: crate::i18n::Lang::En,
             show_host_data: false,
+            markdown_diagrams: DiagramFormat::Svg,
             source_url: None,
         }
     }

@@ -17,6 +17,7 @@ pub mod repo;
 pub mod search;
 pub mod svg;
 mod system_svg;
+pub use system_svg::standalone_system_diagram;
 pub mod systems;
 
 use super::facts::{self, Fact, FactKind};

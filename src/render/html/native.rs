@@ -401,9 +401,9 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     o.raw("\n\n");
 
     o.section_start("diagram", false, "component_diagram");
-    o.raw("<div class=\"diagram-wrap\">");
+    o.raw("<div class=\"diagram-wrap\"><div class=\"diagram-scroll\">");
     o.raw(&p.diagram_svg);
-    o.raw("</div>\n</section>\n\n");
+    o.raw("</div></div>\n</section>\n\n");
 
     data_ports(o, p);
     o.raw("\n\n");

@@ -59,36 +59,7 @@ pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::
     out.write_str(&s[start..])
 }
 
-/// Approximate rendered width of `s` in pixels at `px` sans-serif, erring wide so that no
-/// label is cut at the SVG edge: CJK glyphs are square, capitals and `m`/`w` wider than the
-/// average letter (DejaVu Sans, the Debian default, sets `TimedRGBDCameraImage` at ~0.66 em a
-/// character), narrow letters and punctuation narrower.
-fn text_width(s: &str, px: f32) -> f32 {
-    s.chars()
-        .map(|c| {
-            let em = match c {
-                _ if (c as u32) >= 0x2E80 => 1.0,
-                'M' | 'W' | 'm' | 'w' => 0.9,
-                'I' => 0.4,
-                'A'..='Z' => 0.74,
-                'i' | 'j' | 'l' | 't' | 'f' | 'r' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.4,
-                _ => 0.62,
-            };
-            px * em
-        })
-        .sum()
-}
-
-/// Cuts a label to `max` characters so one absurd name cannot blow up the drawing.
-fn clip(s: &str, max: usize) -> String {
-    if s.chars().count() <= max {
-        s.to_string()
-    } else {
-        let mut c: String = s.chars().take(max - 1).collect();
-        c.push('…');
-        c
-    }
-}
+use crate::layout::text::{text_width, wrap};
 
 /// A data port as drawn on the component box.
 pub struct DiagramDataPort {
@@ -126,11 +97,12 @@ enum Slot<'a> {
     },
 }
 
-const SLOT_V: f32 = 38.0; // slot height on the left and right edges
+const SLOT_V: f32 = 38.0; // least slot height on the left and right edges
 const SLOT_H: f32 = 26.0; // slot width on the top and bottom edges
 const HEADER: f32 = 50.0;
 const STEM: f32 = 30.0; // distance from the edge to an interface symbol
-const MAX_LABEL: usize = 48;
+/// Widest line of a label on the left or right before it wraps (names are never cut).
+const MAX_LINE: f32 = 250.0;
 
 fn slots_on<'a>(
     side: PortSide,
@@ -150,27 +122,62 @@ fn slots_on<'a>(
     v
 }
 
-fn slot_lines(s: &Slot<'_>) -> (String, String) {
+/// The label of a slot: the name (port, or `port.interface`) and the type, unwrapped.
+fn slot_text(s: &Slot<'_>) -> (String, String) {
     match s {
-        Slot::Data(p) => (clip(&p.name, MAX_LABEL), clip(&p.type_label, MAX_LABEL)),
+        Slot::Data(p) => (p.name.clone(), p.type_label.clone()),
         Slot::Service { port, index } => match port.interfaces.get(*index) {
-            Some(i) => (
-                clip(&format!("{}.{}", port.name, i.label), MAX_LABEL),
-                clip(&i.type_label, MAX_LABEL),
-            ),
-            None => (clip(&port.name, MAX_LABEL), String::new()),
+            Some(i) => (format!("{}.{}", port.name, i.label), i.type_label.clone()),
+            None => (port.name.clone(), String::new()),
         },
     }
 }
 
-fn slot_label_width(side: PortSide, s: &Slot<'_>) -> f32 {
-    let (a, b) = slot_lines(s);
+/// The label's lines as drawn on `side`: on the left and right the name and the type, each
+/// wrapped at [`MAX_LINE`] (`true` marks a type line); on the top and bottom one rotated
+/// line `name : Type`.
+fn slot_lines(side: PortSide, s: &Slot<'_>) -> Vec<(String, bool)> {
+    let (a, b) = slot_text(s);
     match side {
-        // Top and bottom labels are one rotated line: `name : Type`.
-        PortSide::Top | PortSide::Bottom if !b.is_empty() => {
-            text_width(&a, 12.0) + text_width(" : ", 12.0) + text_width(&b, 12.0)
+        PortSide::Top | PortSide::Bottom => {
+            if b.is_empty() {
+                vec![(a, false)]
+            } else {
+                vec![(format!("{a} : {b}"), false)]
+            }
         }
-        _ => text_width(&a, 12.0).max(text_width(&b, 11.0)),
+        _ => {
+            let mut v: Vec<(String, bool)> = wrap(&a, MAX_LINE, &|t| text_width(t, 12.0))
+                .into_iter()
+                .map(|l| (l, false))
+                .collect();
+            if !b.is_empty() {
+                v.extend(
+                    wrap(&b, MAX_LINE, &|t| text_width(t, 11.0))
+                        .into_iter()
+                        .map(|l| (l, true)),
+                );
+            }
+            v
+        }
+    }
+}
+
+fn slot_label_width(side: PortSide, s: &Slot<'_>) -> f32 {
+    slot_lines(side, s)
+        .iter()
+        .map(|(l, ty)| text_width(l, if *ty { 11.0 } else { 12.0 }))
+        .fold(0.0, f32::max)
+}
+
+/// Slot height on a side: room for the most lines any of its labels has.
+fn slot_height(side: PortSide, list: &[Slot<'_>]) -> f32 {
+    match side {
+        PortSide::Top | PortSide::Bottom => SLOT_H,
+        _ => list
+            .iter()
+            .map(|s| 13.0 * slot_lines(side, s).len() as f32 + 12.0)
+            .fold(SLOT_V, f32::max),
     }
 }
 
@@ -208,7 +215,12 @@ pub fn component_diagram(
         }
     };
     let (ml, mr, mt, mb) = (margin(0), margin(1), margin(2), margin(3));
-    let name_c = clip(name, 60);
+    let name_c = name.to_string();
+    let slot_v: Vec<f32> = sides
+        .iter()
+        .zip(&slots)
+        .map(|(side, l)| slot_height(*side, l))
+        .collect();
     let box_w = [
         200.0,
         text_width(&name_c, 15.0) + 40.0,
@@ -220,8 +232,8 @@ pub fn component_diagram(
     .ceil();
     let box_h = [
         110.0,
-        HEADER + slots[0].len() as f32 * SLOT_V + 10.0,
-        HEADER + slots[1].len() as f32 * SLOT_V + 10.0,
+        HEADER + slots[0].len() as f32 * slot_v[0] + 10.0,
+        HEADER + slots[1].len() as f32 * slot_v[1] + 10.0,
     ]
     .into_iter()
     .fold(0.0, f32::max)
@@ -253,7 +265,7 @@ pub fn component_diagram(
         // Service ports are drawn as one rectangle spanning their slots.
         let mut i = 0;
         while i < list.len() {
-            let (ex, ey) = edge_point(*side, i, bx, by, box_w, box_h);
+            let (ex, ey) = edge_point(*side, slot_v[si], i, bx, by, box_w, box_h);
             match &list[i] {
                 Slot::Data(p) => {
                     let _ = write!(
@@ -264,14 +276,15 @@ pub fn component_diagram(
                         ex - 6.0,
                         ey - 6.0
                     );
-                    let (l1, l2) = slot_lines(&list[i]);
-                    label(&mut s, *side, ex, ey, 14.0, &l1, &l2);
+                    let lines = slot_lines(*side, &list[i]);
+                    label(&mut s, *side, ex, ey, 14.0, &lines);
                     s.push_str("</a>");
                     i += 1;
                 }
                 Slot::Service { port, .. } => {
                     let span = port.interfaces.len().max(1);
-                    let (fx, fy) = edge_point(*side, i + span - 1, bx, by, box_w, box_h);
+                    let (fx, fy) =
+                        edge_point(*side, slot_v[si], i + span - 1, bx, by, box_w, box_h);
                     let (rx, ry, rw, rh) = match side {
                         PortSide::Left | PortSide::Right => {
                             (ex - 6.0, ey - 6.0, 12.0, fy - ey + 12.0)
@@ -285,8 +298,8 @@ pub fn component_diagram(
                         esc(&port.name)
                     );
                     for k in 0..span {
-                        let (px, py) = edge_point(*side, i + k, bx, by, box_w, box_h);
-                        let (l1, l2) = slot_lines(&list[i + k]);
+                        let (px, py) = edge_point(*side, slot_v[si], i + k, bx, by, box_w, box_h);
+                        let lines = slot_lines(*side, &list[i + k]);
                         match port.interfaces.get(k) {
                             Some(iface) => {
                                 let _ = write!(
@@ -300,7 +313,7 @@ pub fn component_diagram(
                                     }
                                 );
                                 symbol(&mut s, *side, px, py, iface.provided);
-                                label(&mut s, *side, px, py, STEM + 14.0, &l1, &l2);
+                                label(&mut s, *side, px, py, STEM + 14.0, &lines);
                                 s.push_str("</a>");
                             }
                             None => {
@@ -309,7 +322,7 @@ pub fn component_diagram(
                                     r##"<a href="#{}" class="port service">"##,
                                     esc(&port.anchor)
                                 );
-                                label(&mut s, *side, px, py, 14.0, &l1, &l2);
+                                label(&mut s, *side, px, py, 14.0, &lines);
                                 s.push_str("</a>");
                             }
                         }
@@ -324,8 +337,17 @@ pub fn component_diagram(
 }
 
 /// Centre of slot `i` on `side`'s edge.
-fn edge_point(side: PortSide, i: usize, bx: f32, by: f32, box_w: f32, box_h: f32) -> (f32, f32) {
-    let along_v = by + HEADER + SLOT_V * i as f32 + SLOT_V / 2.0 - 4.0;
+fn edge_point(
+    side: PortSide,
+    sv: f32,
+    i: usize,
+    bx: f32,
+    by: f32,
+    box_w: f32,
+    box_h: f32,
+) -> (f32, f32) {
+    // The port sits at the first line of its label (as with one-line labels in a 38 px slot).
+    let along_v = by + HEADER + sv * i as f32 + SLOT_V / 2.0 - 4.0;
     let along_h = bx + 20.0 + SLOT_H * i as f32 + SLOT_H / 2.0;
     match side {
         PortSide::Left => (bx, along_v),
@@ -365,9 +387,10 @@ fn symbol(s: &mut String, side: PortSide, x: f32, y: f32, provided: bool) {
     }
 }
 
-/// Two-line label outside the edge, `gap` pixels away from it; top and bottom labels are
+/// Label outside the edge, `gap` pixels away from it: on the left and right the name's lines
+/// then the type's (`port-type`), one under the other; top and bottom labels are one line
 /// rotated to read upwards so many ports still fit.
-fn label(s: &mut String, side: PortSide, x: f32, y: f32, gap: f32, l1: &str, l2: &str) {
+fn label(s: &mut String, side: PortSide, x: f32, y: f32, gap: f32, lines: &[(String, bool)]) {
     match side {
         PortSide::Left | PortSide::Right => {
             let (tx, anchor) = if side == PortSide::Left {
@@ -375,27 +398,18 @@ fn label(s: &mut String, side: PortSide, x: f32, y: f32, gap: f32, l1: &str, l2:
             } else {
                 (x + gap, "start")
             };
-            let _ = write!(
-                s,
-                r#"<text class="port-name" x="{tx}" y="{}" text-anchor="{anchor}">{}</text>"#,
-                y + 1.0,
-                esc(l1)
-            );
-            if !l2.is_empty() {
+            for (k, (line, ty)) in lines.iter().enumerate() {
                 let _ = write!(
                     s,
-                    r#"<text class="port-type" x="{tx}" y="{}" text-anchor="{anchor}">{}</text>"#,
-                    y + 14.0,
-                    esc(l2)
+                    r#"<text class="{}" x="{tx}" y="{}" text-anchor="{anchor}">{}</text>"#,
+                    if *ty { "port-type" } else { "port-name" },
+                    y + 1.0 + 13.0 * k as f32,
+                    esc(line)
                 );
             }
         }
         PortSide::Top | PortSide::Bottom => {
-            let text = if l2.is_empty() {
-                l1.to_string()
-            } else {
-                format!("{l1} : {l2}")
-            };
+            let text = lines.first().map(|l| l.0.as_str()).unwrap_or("");
             let (ty, anchor) = if side == PortSide::Top {
                 (y - gap, "start")
             } else {
@@ -406,7 +420,7 @@ fn label(s: &mut String, side: PortSide, x: f32, y: f32, gap: f32, l1: &str, l2:
                 r#"<text class="port-name" x="{}" y="{ty}" text-anchor="{anchor}" transform="rotate(-90 {} {ty})">{}</text>"#,
                 x + 4.0,
                 x + 4.0,
-                esc(&text)
+                esc(text)
             );
         }
     }

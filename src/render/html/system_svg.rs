@@ -1,234 +1,118 @@
 //! The wiring diagram of an RT System: each instance a box with its ports on the sides (data
-//! in-ports on the left, out-ports and service ports on the right, as the component diagram
-//! draws a component), data connectors as lines from out-port to in-port, service connectors as
-//! dashed lines from the required side to the provided side.
+//! in-ports on the left, out-ports on the right, service ports on the side facing their
+//! partners), data connectors as lines from out-port to in-port, service connectors as dashed
+//! lines, routed around the boxes with rounded bends. The geometry comes from
+//! [`crate::layout::wiring`]; this module only draws it.
 //!
-//! Placed where RTSystemEditor drew the instances (`rtsExt:Location`) when every instance has a
-//! location and the boxes, scaled to fit, do not overlap; otherwise by a layered layout (longest
-//! path over the data connectors, left to right). The drawing is a `role="group"` (not
-//! `role="img"`: it holds links), each instance and port a link named by `aria-label` and a
-//! `<title>`.
+//! Hooks for styles and tests (documented in `book/src/themes.md`): `svg.system-diagram`, each
+//! instance a `g.instance` whose `rect.rtc-box` is its box, each connector a `path.connector`
+//! with `data` or `service`. The drawing is a `role="group"` (not `role="img"`: it holds links),
+//! each instance and port a link named by `aria-label` and a `<title>`.
 
 use super::svg::esc;
+use crate::layout::wiring::{layout, Edge, Node, Port, PortKind, Side, WiringLayout};
+use crate::render::wiring::{WireConnector, WireInstance};
 use std::fmt::Write;
 
-/// A port as drawn.
-pub struct WirePort {
-    pub name: String,
-    /// `in`, `out`, `service` or `other` (CSS class and side).
-    pub class: &'static str,
-    /// Where the port's link goes (the component page's port row, or the instance row).
-    pub href: String,
-    /// Accessible name of the link.
-    pub label: String,
+impl WireInstance {
+    /// The layout's view of this instance.
+    pub fn node(&self) -> Node {
+        Node {
+            name: self.name.clone(),
+            component: self.component.clone(),
+            ports: self
+                .ports
+                .iter()
+                .map(|p| Port {
+                    name: p.name.clone(),
+                    kind: match p.class {
+                        "in" => PortKind::In,
+                        "out" => PortKind::Out,
+                        "service" => PortKind::Service,
+                        _ => PortKind::Other,
+                    },
+                })
+                .collect(),
+            location: self.location,
+        }
+    }
 }
 
-/// An instance as drawn.
-pub struct WireInstance {
-    pub name: String,
-    /// The component's name (second line), when known.
-    pub component: String,
-    pub href: String,
-    pub label: String,
-    pub ports: Vec<WirePort>,
-    /// `rtsExt:Location` x/y, when given as integers.
-    pub location: Option<(i64, i64)>,
+impl WireConnector {
+    /// The layout's view of this connector.
+    pub fn edge(&self) -> Edge {
+        Edge {
+            from: self.from,
+            to: self.to,
+            service: self.service,
+        }
+    }
 }
 
-/// A connector between two ports: (instance, port) indices into the drawn instances.
-pub struct WireConnector {
-    pub from: (usize, usize),
-    pub to: (usize, usize),
-    pub service: bool,
-    pub label: String,
+/// The layout of a wiring.
+pub fn wiring_layout(inst: &[WireInstance], conns: &[WireConnector]) -> WiringLayout {
+    let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
+    let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
+    layout(&nodes, &edges)
 }
 
-const ROW: f32 = 22.0;
-const HEADER: f32 = 44.0;
-const GAP_X: f32 = 140.0;
-const GAP_Y: f32 = 40.0;
-const MARGIN: f32 = 20.0;
-
-fn text_width(s: &str, px: f32) -> f32 {
-    s.chars()
-        .map(|c| if (c as u32) >= 0x2E80 { px } else { px * 0.6 })
-        .sum()
-}
-
-fn clip(s: &str, max: usize) -> String {
-    if s.chars().count() <= max {
-        s.to_string()
+/// ` href="…"`, or nothing for an empty link (a drawing on its own).
+fn href_attr(h: &str) -> String {
+    if h.is_empty() {
+        String::new()
     } else {
-        let mut c: String = s.chars().take(max - 1).collect();
-        c.push('…');
-        c
+        format!(" href=\"{}\"", esc(h))
     }
 }
 
-struct BoxGeom {
-    w: f32,
-    h: f32,
-    /// Ports on the left, on the right: indices into the instance's ports.
-    left: Vec<usize>,
-    right: Vec<usize>,
+/// -1, 0 or 1 (`f32::signum` gives 1 for 0).
+fn sign(v: f32) -> f32 {
+    if v > 0.0 {
+        1.0
+    } else if v < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
 }
 
-fn geometry(i: &WireInstance) -> BoxGeom {
-    let mut left = Vec::new();
-    let mut right = Vec::new();
-    for (k, p) in i.ports.iter().enumerate() {
-        if p.class == "in" {
-            left.push(k);
+/// An orthogonal polyline as a path with rounded bends (radius up to 6, less where a segment
+/// is short).
+fn rounded_path(pts: &[(f32, f32)]) -> String {
+    let mut d = String::new();
+    let Some(&(x0, y0)) = pts.first() else {
+        return d;
+    };
+    let _ = write!(d, "M{x0},{y0}");
+    for k in 1..pts.len() {
+        let (x, y) = pts[k];
+        if k + 1 < pts.len() {
+            let (px, py) = pts[k - 1];
+            let (nx, ny) = pts[k + 1];
+            let len_in = (x - px).abs() + (y - py).abs();
+            let len_out = (nx - x).abs() + (ny - y).abs();
+            let r = 6.0f32.min(len_in / 2.0).min(len_out / 2.0);
+            let (ix, iy) = (sign(x - px), sign(y - py));
+            let (ox, oy) = (sign(nx - x), sign(ny - y));
+            let _ = write!(
+                d,
+                " L{},{} Q{x},{y} {},{}",
+                x - ix * r,
+                y - iy * r,
+                x + ox * r,
+                y + oy * r
+            );
         } else {
-            right.push(k);
+            let _ = write!(d, " L{x},{y}");
         }
     }
-    let label_w = |v: &[usize]| {
-        v.iter()
-            .map(|&k| text_width(&clip(&i.ports[k].name, 28), 11.0))
-            .fold(0.0, f32::max)
-    };
-    let w = [
-        150.0,
-        text_width(&clip(&i.name, 40), 13.0) + 24.0,
-        text_width(&clip(&i.component, 40), 11.0) + 24.0,
-        label_w(&left) + label_w(&right) + 40.0,
-    ]
-    .into_iter()
-    .fold(0.0, f32::max)
-    .ceil();
-    let h = (HEADER + left.len().max(right.len()) as f32 * ROW + 8.0).ceil();
-    BoxGeom { w, h, left, right }
-}
-
-/// Top-left corners from the instances' locations, scaled apart until no boxes overlap (at
-/// most 4×); `None` when an instance has no location or they overlap even then.
-fn from_locations(inst: &[WireInstance], geo: &[BoxGeom]) -> Option<Vec<(f32, f32)>> {
-    let locs: Vec<(i64, i64)> = inst.iter().map(|i| i.location).collect::<Option<_>>()?;
-    let minx = locs.iter().map(|l| l.0).min()? as f32;
-    let miny = locs.iter().map(|l| l.1).min()? as f32;
-    for step in 0..=12 {
-        let f = 1.0 + step as f32 * 0.25;
-        let pos: Vec<(f32, f32)> = locs
-            .iter()
-            .map(|&(x, y)| {
-                (
-                    MARGIN + 90.0 + (x as f32 - minx) * f,
-                    MARGIN + (y as f32 - miny) * f,
-                )
-            })
-            .collect();
-        let overlap = (0..pos.len()).any(|a| {
-            (a + 1..pos.len()).any(|b| {
-                let (ax, ay) = pos[a];
-                let (bx, by) = pos[b];
-                ax < bx + geo[b].w + 20.0
-                    && bx < ax + geo[a].w + 20.0
-                    && ay < by + geo[b].h + 20.0
-                    && by < ay + geo[a].h + 20.0
-            })
-        });
-        if !overlap {
-            return Some(pos);
-        }
-    }
-    None
-}
-
-/// Layers by longest path over the data connectors (a cycle is cut where a search meets an
-/// instance already on its path); each layer a column, instances stacked in input order.
-fn layered(inst: &[WireInstance], geo: &[BoxGeom], conns: &[WireConnector]) -> Vec<(f32, f32)> {
-    let n = inst.len();
-    let mut succ: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for c in conns.iter().filter(|c| !c.service) {
-        if c.from.0 != c.to.0 && c.from.0 < n && c.to.0 < n {
-            succ[c.from.0].push(c.to.0);
-        }
-    }
-    // Depth-first order, then longest path on the acyclic part.
-    let mut layer = vec![0usize; n];
-    let mut state = vec![0u8; n]; // 0 new, 1 on the path, 2 done
-    let mut order = Vec::with_capacity(n);
-    for start in 0..n {
-        if state[start] != 0 {
-            continue;
-        }
-        let mut stack = vec![(start, 0usize)];
-        state[start] = 1;
-        while let Some(&mut (v, ref mut next)) = stack.last_mut() {
-            if *next < succ[v].len() {
-                let w = succ[v][*next];
-                *next += 1;
-                if state[w] == 0 {
-                    state[w] = 1;
-                    stack.push((w, 0));
-                }
-            } else {
-                state[v] = 2;
-                order.push(v);
-                stack.pop();
-            }
-        }
-    }
-    order.reverse();
-    let rank: Vec<usize> = {
-        let mut r = vec![0; n];
-        for (k, &v) in order.iter().enumerate() {
-            r[v] = k;
-        }
-        r
-    };
-    for &v in &order {
-        for &w in &succ[v] {
-            if rank[w] > rank[v] {
-                layer[w] = layer[w].max(layer[v] + 1);
-            }
-        }
-    }
-    let layers = layer.iter().copied().max().map_or(0, |m| m + 1);
-    let mut col_w = vec![0.0f32; layers];
-    for (v, &l) in layer.iter().enumerate() {
-        col_w[l] = col_w[l].max(geo[v].w);
-    }
-    let mut col_x = Vec::with_capacity(layers);
-    let mut x = MARGIN + 90.0;
-    for w in &col_w {
-        col_x.push(x);
-        x += w + GAP_X + 90.0;
-    }
-    let mut col_y = vec![MARGIN; layers];
-    let mut pos = vec![(0.0, 0.0); n];
-    for v in 0..n {
-        let l = layer[v];
-        pos[v] = (col_x[l], col_y[l]);
-        col_y[l] += geo[v].h + GAP_Y;
-    }
-    pos
+    d
 }
 
 /// The wiring diagram. `title` names the drawing for assistive technology.
 pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
-    let geo: Vec<BoxGeom> = inst.iter().map(geometry).collect();
-    let pos = from_locations(inst, &geo).unwrap_or_else(|| layered(inst, &geo, conns));
-    // Port anchor points.
-    let point = |i: usize, k: usize| -> (f32, f32) {
-        let g = &geo[i];
-        let (x, y) = pos[i];
-        if let Some(r) = g.left.iter().position(|&p| p == k) {
-            (x, y + HEADER + r as f32 * ROW + ROW / 2.0)
-        } else {
-            let r = g.right.iter().position(|&p| p == k).unwrap_or(0);
-            (x + g.w, y + HEADER + r as f32 * ROW + ROW / 2.0)
-        }
-    };
-    let width = (0..inst.len())
-        .map(|i| pos[i].0 + geo[i].w + 110.0)
-        .fold(300.0, f32::max)
-        .ceil();
-    let height = (0..inst.len())
-        .map(|i| pos[i].1 + geo[i].h + MARGIN)
-        .fold(100.0, f32::max)
-        .ceil();
+    let l = wiring_layout(inst, conns);
+    let (width, height) = (l.width, l.height);
     let mut s = String::with_capacity(4096 + inst.len() * 1024);
     let _ = write!(
         s,
@@ -237,93 +121,95 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
     );
     // Connectors first, under the boxes.
     s.push_str(r#"<g class="connectors">"#);
-    for c in conns {
-        let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {
-            continue;
-        };
-        if c.from.1 >= a.ports.len() || c.to.1 >= b.ports.len() {
-            continue;
-        }
-        let (x1, y1) = point(c.from.0, c.from.1);
-        let (x2, y2) = point(c.to.0, c.to.1);
-        let out1 = if x1 >= pos[c.from.0].0 + geo[c.from.0].w - 0.5 {
-            1.0
-        } else {
-            -1.0
-        };
-        let out2 = if x2 <= pos[c.to.0].0 + 0.5 { -1.0 } else { 1.0 };
-        let bend = ((x2 - x1).abs() / 2.0).max(60.0);
+    for (c, route) in conns.iter().zip(&l.routes) {
+        let Some(route) = route else { continue };
         let _ = write!(
             s,
-            r#"<path class="connector{}" d="M{x1},{y1} C{},{y1} {},{y2} {x2},{y2}"><title>{}</title></path>"#,
+            r#"<path class="connector{}" d="{}"><title>{}</title></path>"#,
             if c.service { " service" } else { " data" },
-            x1 + out1 * bend,
-            x2 + out2 * bend,
+            rounded_path(route),
             esc(&c.label)
         );
     }
     s.push_str("</g>");
-    for (i, it) in inst.iter().enumerate() {
-        let g = &geo[i];
-        let (x, y) = pos[i];
+    for (it, b) in inst.iter().zip(&l.nodes) {
+        let (x, y) = (b.x, b.y);
+        let cx = x + b.w / 2.0;
         let _ = write!(
             s,
-            r#"<g class="instance"><a href="{}" aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{}" y="{}" text-anchor="middle">{}"#,
-            esc(&it.href),
-            g.w,
-            g.h,
-            x + g.w / 2.0,
-            y + 18.0,
-            esc(&clip(&it.name, 40)),
+            r#"<g class="instance"><a{} aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{cx}" y="{}" text-anchor="middle">"#,
+            href_attr(&it.href),
+            b.w,
+            b.h,
+            b.title_y,
             l = esc(&it.label),
         );
-        // The component's name is a second line of the same text, after a space: the link's
+        for (k, line) in b.title.iter().enumerate() {
+            if k == 0 {
+                s.push_str(&esc(line));
+            } else {
+                let _ = write!(s, r#"<tspan x="{cx}" dy="18">{}</tspan>"#, esc(line));
+            }
+        }
+        // The component's name is a further line of the same text, after a space: the link's
         // visible text reads "instance component", as its accessible name begins.
-        if !it.component.is_empty() {
+        let mut prev_y = b.title_y + 18.0 * (b.title.len() as f32 - 1.0);
+        for (k, line) in b.subtitle.iter().enumerate() {
+            let ty = b.subtitle_y + 15.0 * k as f32;
             let _ = write!(
                 s,
-                r#"<tspan class="stereotype" x="{}" dy="16"> {}</tspan>"#,
-                x + g.w / 2.0,
-                esc(&clip(&it.component, 40))
+                r#"<tspan class="stereotype" x="{cx}" dy="{}">{}{}</tspan>"#,
+                ty - prev_y,
+                if k == 0 { " " } else { "" },
+                esc(line)
             );
+            prev_y = ty;
         }
         s.push_str("</text></a>");
-        for (side, list) in [(false, &g.left), (true, &g.right)] {
-            for &k in list.iter() {
-                let p = &it.ports[k];
-                let (px, py) = point(i, k);
+        for (p, pl) in it.ports.iter().zip(&b.ports) {
+            let (px, py) = (pl.x, pl.y);
+            let _ = write!(
+                s,
+                r#"<a{} class="port {}" aria-label="{l}"><title>{l}</title>"#,
+                href_attr(&p.href),
+                p.class,
+                l = esc(&p.label)
+            );
+            if p.class == "service" {
                 let _ = write!(
                     s,
-                    r#"<a href="{}" class="port {}" aria-label="{l}"><title>{l}</title>"#,
-                    esc(&p.href),
-                    p.class,
-                    l = esc(&p.label)
+                    r#"<circle class="port-square" cx="{px}" cy="{py}" r="6"/>"#
                 );
-                if p.class == "service" {
-                    let _ = write!(
-                        s,
-                        r#"<circle class="port-square" cx="{px}" cy="{py}" r="6"/>"#
-                    );
-                } else {
-                    let _ = write!(
-                        s,
-                        r#"<rect class="port-square" x="{}" y="{}" width="12" height="12"/>"#,
-                        px - 6.0,
-                        py - 6.0
-                    );
-                }
-                let (tx, anchor) = if side {
-                    (px - 10.0, "end")
-                } else {
-                    (px + 10.0, "start")
-                };
+            } else {
                 let _ = write!(
                     s,
-                    r#"<text class="port-name" x="{tx}" y="{}" text-anchor="{anchor}">{}</text></a>"#,
-                    py + 4.0,
-                    esc(&clip(&p.name, 28))
+                    r#"<rect class="port-square" x="{}" y="{}" width="12" height="12"/>"#,
+                    px - 6.0,
+                    py - 6.0
                 );
             }
+            let anchor = match pl.side {
+                Side::Left => "start",
+                Side::Right => "end",
+            };
+            let _ = write!(
+                s,
+                r#"<text class="port-name" x="{}" y="{}" text-anchor="{anchor}">"#,
+                pl.text_x, pl.text_y
+            );
+            for (k, line) in pl.lines.iter().enumerate() {
+                if k == 0 {
+                    s.push_str(&esc(line));
+                } else {
+                    let _ = write!(
+                        s,
+                        r#"<tspan x="{}" dy="13">{}</tspan>"#,
+                        pl.text_x,
+                        esc(line)
+                    );
+                }
+            }
+            s.push_str("</text></a>");
         }
         s.push_str("</g>");
     }
@@ -331,9 +217,46 @@ pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector
     s
 }
 
+/// Colours of a drawing opened on its own (no site style sheet): the light theme's.
+const STANDALONE_STYLE: &str = "<style>text{font-family:system-ui,sans-serif;font-size:12px;fill:#1f2328}.rtc-box{fill:#f3f6fb;stroke:#33415c;stroke-width:1.6}.rtc-name{font-size:15px;font-weight:700}.stereotype{fill:#5b6472;font-size:12px;font-weight:400}.port-name{font-size:11px}.port-square{stroke:#33415c;stroke-width:1.2;fill:#fff}a.in .port-square{fill:#1f7a4d}a.out .port-square{fill:#b8561c}a.service .port-square{fill:#5b6472}.connector{fill:none;stroke:#33415c;stroke-width:1.6}.connector.service{stroke-dasharray:6 4}</style>";
+
+/// The wiring diagram as a file of its own (`rtcdoc graph --format svg`): the same drawing
+/// with its colours in a `<style>` element.
+pub fn standalone_system_diagram(
+    title: &str,
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+) -> String {
+    // No links: the pages they would point to are not beside the file.
+    let bare: Vec<WireInstance> = inst
+        .iter()
+        .map(|i| {
+            let mut i = i.clone();
+            i.href.clear();
+            for p in &mut i.ports {
+                p.href.clear();
+            }
+            i
+        })
+        .collect();
+    let svg = system_diagram(title, &bare, conns);
+    match svg.find("</title>") {
+        Some(i) => {
+            let at = i + "</title>".len();
+            format!(
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n{}{STANDALONE_STYLE}{}\n",
+                &svg[..at],
+                &svg[at..]
+            )
+        }
+        None => svg,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::wiring::WirePort;
 
     fn inst(name: &str, ports: &[(&str, &'static str)], loc: Option<(i64, i64)>) -> WireInstance {
         WireInstance {
@@ -374,9 +297,10 @@ mod tests {
                 label: "b.o → a.i".into(),
             },
         ];
-        let geo: Vec<BoxGeom> = v.iter().map(geometry).collect();
-        let pos = layered(&v, &geo, &c);
-        assert!(pos[1].0 > pos[0].0, "{pos:?}");
+        let l = wiring_layout(&v, &c);
+        assert!(l.nodes[1].x > l.nodes[0].x, "{l:?}");
+        let p = crate::layout::wiring::problems(&l);
+        assert!(p.is_empty(), "{p:?}");
         let svg = system_diagram("sys", &v, &c);
         assert!(svg.contains(r#"role="group""#) && !svg.contains("role=\"img\""));
         assert_eq!(svg.matches("<path class=\"connector data\"").count(), 2);
@@ -385,14 +309,13 @@ mod tests {
     }
 
     #[test]
-    fn locations_are_used_and_scaled_apart() {
-        let v = vec![inst("a", &[], Some((0, 0))), inst("b", &[], Some((100, 0)))];
-        let geo: Vec<BoxGeom> = v.iter().map(geometry).collect();
-        let pos = from_locations(&v, &geo).expect("fits");
-        assert!(pos[1].0 - pos[0].0 >= geo[0].w, "{pos:?}");
-        // Two instances at the same place cannot be scaled apart: laid out instead.
+    fn locations_keep_the_arrangement_unless_they_coincide() {
+        // b saved left of a: kept left of it.
+        let v = vec![inst("a", &[], Some((300, 0))), inst("b", &[], Some((0, 0)))];
+        let l = wiring_layout(&v, &[]);
+        assert!(l.from_locations && l.nodes[1].x < l.nodes[0].x, "{l:?}");
+        // Two instances at the same place: laid out instead.
         let same = vec![inst("a", &[], Some((5, 5))), inst("b", &[], Some((5, 5)))];
-        let geo: Vec<BoxGeom> = same.iter().map(geometry).collect();
-        assert!(from_locations(&same, &geo).is_none());
+        assert!(!wiring_layout(&same, &[]).from_locations);
     }
 }

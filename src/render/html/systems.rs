@@ -3,12 +3,12 @@
 //! file). Host data (host names, IORs, endpoints, naming paths) is left out unless the site is
 //! built with `show-host-data = true`; the page says how many values were left out.
 
-use super::system_svg::{system_diagram, WireConnector, WireInstance, WirePort};
+use super::system_svg::system_diagram;
 use super::{
     crumbs_home, crumbs_section, ctx, page_title, KeyValue, Link, Page, PageContext, Site,
 };
 use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
-use crate::model::{non_empty, PortDirection, Text};
+use crate::model::{non_empty, Text};
 use crate::system::{PortEnd, RtSystem};
 use serde::Serialize;
 
@@ -472,118 +472,7 @@ impl Site<'_> {
             .collect();
 
         // The diagram.
-        let mut wire: Vec<WireInstance> = Vec::with_capacity(p.components.len());
-        for (i, c) in p.components.iter().enumerate() {
-            let (iname, comp) = self.instance_label(s, i);
-            let anchor = &s.instances[i].anchor;
-            let ports = self
-                .catalog
-                .instance_ports(s, i)
-                .into_iter()
-                .map(|pt| {
-                    let class = match (pt.service, pt.direction) {
-                        (true, _) => "service",
-                        (false, Some(PortDirection::In)) => "in",
-                        (false, Some(PortDirection::Out)) => "out",
-                        _ => "other",
-                    };
-                    let href = match (comp, &pt.link) {
-                        (Some(k), Some(PortLink::Data { index, .. })) => format!(
-                            "{ROOT}components/{}.html#{}",
-                            k.slug, k.anchors.data_ports[*index]
-                        ),
-                        (Some(k), Some(PortLink::Service { index, .. })) => format!(
-                            "{ROOT}components/{}.html#{}",
-                            k.slug, k.anchors.service_ports[*index]
-                        ),
-                        _ => format!("#{anchor}"),
-                    };
-                    let kind = match class {
-                        "in" => lang.t("sys_in_port"),
-                        "out" => lang.t("sys_out_port"),
-                        "service" => lang.t("sys_service_port"),
-                        _ => lang.t("port"),
-                    };
-                    WirePort {
-                        label: format!("{kind} {iname}.{}", pt.name),
-                        name: pt.name,
-                        class,
-                        href,
-                    }
-                })
-                .collect();
-            let component = comp
-                .map(|k| k.display_name().into_owned())
-                .or_else(|| {
-                    c.id_parts
-                        .as_ref()
-                        .and_then(|x| non_empty(&x.name))
-                        .map(str::to_string)
-                })
-                .unwrap_or_default();
-            wire.push(WireInstance {
-                // The accessible name starts with the box's visible text (WCAG 2.5.3).
-                label: if component.is_empty() {
-                    format!("{iname} ({})", lang.t("instance"))
-                } else {
-                    format!("{iname} {component} ({})", lang.t("instance"))
-                },
-                component,
-                name: iname,
-                href: format!("#{anchor}"),
-                ports,
-                location: c.location.as_ref().and_then(|l| l.xy()),
-            });
-        }
-        let port_at = |i: usize, name: &str| wire.get(i)?.ports.iter().position(|q| q.name == name);
-        let mut conns: Vec<WireConnector> = Vec::new();
-        for (c, l) in p.data_port_connectors.iter().zip(&s.data_connectors) {
-            let (Some(a), Some(b), Some(se), Some(te)) =
-                (l.source.instance, l.target.instance, &c.source, &c.target)
-            else {
-                continue;
-            };
-            if let (Some(pa), Some(pb)) =
-                (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
-            {
-                conns.push(WireConnector {
-                    from: (a, pa),
-                    to: (b, pb),
-                    service: false,
-                    label: format!(
-                        "{}.{} → {}.{} ({})",
-                        txt(&se.instance_name),
-                        end_port_name(se),
-                        txt(&te.instance_name),
-                        end_port_name(te),
-                        txt(&c.data_type)
-                    ),
-                });
-            }
-        }
-        for (c, l) in p.service_port_connectors.iter().zip(&s.service_connectors) {
-            let (Some(a), Some(b), Some(se), Some(te)) =
-                (l.source.instance, l.target.instance, &c.source, &c.target)
-            else {
-                continue;
-            };
-            if let (Some(pa), Some(pb)) =
-                (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
-            {
-                conns.push(WireConnector {
-                    from: (a, pa),
-                    to: (b, pb),
-                    service: true,
-                    label: format!(
-                        "{}.{} — {}.{}",
-                        txt(&se.instance_name),
-                        end_port_name(se),
-                        txt(&te.instance_name),
-                        end_port_name(te)
-                    ),
-                });
-            }
-        }
+        let (wire, conns) = crate::render::wiring::system_wiring(self.catalog, s, lang, ROOT);
         let diagram_title = format!("{} {name}", lang.t("sys_wiring"));
         let diagram_svg = system_diagram(&diagram_title, &wire, &conns);
         let diagram_text = format!(

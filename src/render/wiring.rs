@@ -1,0 +1,356 @@
+//! The wiring of an RT System as the diagrams draw it: instances with their ports and the
+//! connectors between them, built once from the catalogue and drawn by each renderer — SVG
+//! (`html::system_svg`, laid out by [`crate::layout::wiring`]), Graphviz DOT and Mermaid
+//! (`rtcdoc graph`, the Markdown output's `diagrams = "mermaid"`).
+
+use crate::catalog::systems::{end_port_name, PortLink, System};
+use crate::catalog::Catalog;
+use crate::i18n::Lang;
+use crate::model::{non_empty, PortDirection, Text};
+use std::fmt::Write as _;
+
+fn txt(v: &Option<Text>) -> String {
+    non_empty(v).unwrap_or("").to_string()
+}
+
+/// A port as drawn.
+#[derive(Clone)]
+pub struct WirePort {
+    pub name: String,
+    /// `in`, `out`, `service` or `other` (CSS class and side).
+    pub class: &'static str,
+    /// Where the port's link goes (the component page's port row, or the instance row).
+    pub href: String,
+    /// Accessible name of the link.
+    pub label: String,
+}
+
+/// An instance as drawn.
+#[derive(Clone)]
+pub struct WireInstance {
+    pub name: String,
+    /// The component's name (second line), when known.
+    pub component: String,
+    pub href: String,
+    pub label: String,
+    pub ports: Vec<WirePort>,
+    /// `rtsExt:Location` x/y, when given as integers.
+    pub location: Option<(i64, i64)>,
+}
+
+/// A connector between two ports: (instance, port) indices into the drawn instances.
+pub struct WireConnector {
+    pub from: (usize, usize),
+    pub to: (usize, usize),
+    pub service: bool,
+    pub label: String,
+}
+
+/// The instances and connectors of system `s`; links (`href`) are relative to a page in a
+/// folder below the site root (`root` is the way up, e.g. `../`).
+pub fn system_wiring(
+    catalog: &Catalog,
+    s: &System,
+    lang: Lang,
+    root: &str,
+) -> (Vec<WireInstance>, Vec<WireConnector>) {
+    let p = &s.profile;
+    let mut wire: Vec<WireInstance> = Vec::with_capacity(p.components.len());
+    for (i, c) in p.components.iter().enumerate() {
+        let (iname, comp) = (txt(&c.instance_name), catalog.instance_component(s, i));
+        let anchor = &s.instances[i].anchor;
+        let ports = catalog
+            .instance_ports(s, i)
+            .into_iter()
+            .map(|pt| {
+                let class = match (pt.service, pt.direction) {
+                    (true, _) => "service",
+                    (false, Some(PortDirection::In)) => "in",
+                    (false, Some(PortDirection::Out)) => "out",
+                    _ => "other",
+                };
+                let href = match (comp, &pt.link) {
+                    (Some(k), Some(PortLink::Data { index, .. })) => format!(
+                        "{root}components/{}.html#{}",
+                        k.slug, k.anchors.data_ports[*index]
+                    ),
+                    (Some(k), Some(PortLink::Service { index, .. })) => format!(
+                        "{root}components/{}.html#{}",
+                        k.slug, k.anchors.service_ports[*index]
+                    ),
+                    _ => format!("#{anchor}"),
+                };
+                let kind = match class {
+                    "in" => lang.t("sys_in_port"),
+                    "out" => lang.t("sys_out_port"),
+                    "service" => lang.t("sys_service_port"),
+                    _ => lang.t("port"),
+                };
+                WirePort {
+                    label: format!("{kind} {iname}.{}", pt.name),
+                    name: pt.name,
+                    class,
+                    href,
+                }
+            })
+            .collect();
+        let component = comp
+            .map(|k| k.display_name().into_owned())
+            .or_else(|| {
+                c.id_parts
+                    .as_ref()
+                    .and_then(|x| non_empty(&x.name))
+                    .map(str::to_string)
+            })
+            .unwrap_or_default();
+        wire.push(WireInstance {
+            // The accessible name starts with the box's visible text (WCAG 2.5.3).
+            label: if component.is_empty() {
+                format!("{iname} ({})", lang.t("instance"))
+            } else {
+                format!("{iname} {component} ({})", lang.t("instance"))
+            },
+            component,
+            name: iname,
+            href: format!("#{anchor}"),
+            ports,
+            location: c.location.as_ref().and_then(|l| l.xy()),
+        });
+    }
+    let port_at = |i: usize, name: &str| wire.get(i)?.ports.iter().position(|q| q.name == name);
+    let mut conns: Vec<WireConnector> = Vec::new();
+    for (c, l) in p.data_port_connectors.iter().zip(&s.data_connectors) {
+        let (Some(a), Some(b), Some(se), Some(te)) =
+            (l.source.instance, l.target.instance, &c.source, &c.target)
+        else {
+            continue;
+        };
+        if let (Some(pa), Some(pb)) = (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
+        {
+            conns.push(WireConnector {
+                from: (a, pa),
+                to: (b, pb),
+                service: false,
+                label: format!(
+                    "{}.{} → {}.{} ({})",
+                    txt(&se.instance_name),
+                    end_port_name(se),
+                    txt(&te.instance_name),
+                    end_port_name(te),
+                    txt(&c.data_type)
+                ),
+            });
+        }
+    }
+    for (c, l) in p.service_port_connectors.iter().zip(&s.service_connectors) {
+        let (Some(a), Some(b), Some(se), Some(te)) =
+            (l.source.instance, l.target.instance, &c.source, &c.target)
+        else {
+            continue;
+        };
+        if let (Some(pa), Some(pb)) = (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
+        {
+            conns.push(WireConnector {
+                from: (a, pa),
+                to: (b, pb),
+                service: true,
+                label: format!(
+                    "{}.{} — {}.{}",
+                    txt(&se.instance_name),
+                    end_port_name(se),
+                    txt(&te.instance_name),
+                    end_port_name(te)
+                ),
+            });
+        }
+    }
+    (wire, conns)
+}
+
+/// Escapes text for a Graphviz HTML-like label.
+fn dot_html(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => o.push_str("&amp;"),
+            '<' => o.push_str("&lt;"),
+            '>' => o.push_str("&gt;"),
+            '"' => o.push_str("&quot;"),
+            c if c.is_control() => o.push(' '),
+            c => o.push(c),
+        }
+    }
+    o
+}
+
+/// Escapes text for a quoted Graphviz string.
+fn dot_str(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '"' | '\\' => {
+                o.push('\\');
+                o.push(c);
+            }
+            c if c.is_control() => o.push(' '),
+            c => o.push(c),
+        }
+    }
+    o
+}
+
+/// The wiring as a Graphviz DOT digraph (data flowing left to right): each instance a table
+/// with its name, its component and its ports (in-ports in the left column, the others in the
+/// right one, each a DOT port `pK`); data connectors as arrows between ports, service
+/// connectors dashed without arrowheads. `rtstodot` parity: `dot -Tsvg` draws it.
+pub fn to_dot(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "digraph \"{}\" {{", dot_str(name));
+    s.push_str("  rankdir=LR;\n  node [shape=plaintext, fontname=\"sans-serif\", fontsize=11];\n  edge [fontname=\"sans-serif\", fontsize=9];\n");
+    for (i, it) in inst.iter().enumerate() {
+        let left: Vec<usize> = (0..it.ports.len())
+            .filter(|&k| it.ports[k].class == "in")
+            .collect();
+        let right: Vec<usize> = (0..it.ports.len())
+            .filter(|&k| it.ports[k].class != "in")
+            .collect();
+        let _ = write!(
+            s,
+            "  n{i} [label=<<table border=\"1\" cellborder=\"0\" cellspacing=\"0\" cellpadding=\"3\"><tr><td colspan=\"2\"><b>{}</b>",
+            dot_html(&it.name)
+        );
+        if !it.component.is_empty() {
+            let _ = write!(
+                s,
+                "<br/><font point-size=\"9\">{}</font>",
+                dot_html(&it.component)
+            );
+        }
+        s.push_str("</td></tr>");
+        for r in 0..left.len().max(right.len()) {
+            s.push_str("<tr>");
+            for (list, align) in [(&left, "left"), (&right, "right")] {
+                match list.get(r) {
+                    Some(&k) => {
+                        let p = &it.ports[k];
+                        let mark = match p.class {
+                            "in" => "▶ ",
+                            "service" => "◯ ",
+                            _ => "",
+                        };
+                        let _ = write!(
+                            s,
+                            "<td port=\"p{k}\" align=\"{align}\">{}{}{}</td>",
+                            if align == "left" { mark } else { "" },
+                            dot_html(&p.name),
+                            if align == "right" && p.class == "out" {
+                                " ▶"
+                            } else if align == "right" && p.class == "service" {
+                                " ◯"
+                            } else {
+                                ""
+                            }
+                        );
+                    }
+                    None => s.push_str("<td></td>"),
+                }
+            }
+            s.push_str("</tr>");
+        }
+        s.push_str("</table>>];\n");
+    }
+    for c in conns {
+        let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {
+            continue;
+        };
+        if c.from.1 >= a.ports.len() || c.to.1 >= b.ports.len() {
+            continue;
+        }
+        let side = |class: &str| if class == "in" { "w" } else { "e" };
+        let _ = writeln!(
+            s,
+            "  n{}:p{}:{} -> n{}:p{}:{} [tooltip=\"{}\"{}];",
+            c.from.0,
+            c.from.1,
+            side(a.ports[c.from.1].class),
+            c.to.0,
+            c.to.1,
+            side(b.ports[c.to.1].class),
+            dot_str(&c.label),
+            if c.service {
+                ", style=dashed, dir=none"
+            } else {
+                ""
+            }
+        );
+    }
+    s.push_str("}\n");
+    s
+}
+
+/// Escapes text for a quoted Mermaid label: Mermaid's entity codes for the characters that
+/// would end the label or be read as markup.
+fn mermaid_str(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '#' => o.push_str("#35;"),
+            '"' => o.push_str("#quot;"),
+            '<' => o.push_str("#lt;"),
+            '>' => o.push_str("#gt;"),
+            '&' => o.push_str("#amp;"),
+            c if c.is_control() => o.push(' '),
+            c => o.push(c),
+        }
+    }
+    o
+}
+
+/// The wiring as a Mermaid flowchart (`flowchart LR`): each instance a node named by the
+/// instance and its component, each data connector an arrow labelled `out → in`, each service
+/// connector a dotted line labelled with its two ports. Mermaid has no ports: the labels carry
+/// them.
+pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
+    let mut s = String::from("flowchart LR\n");
+    let _ = writeln!(s, "  %% {}", name.replace(['\n', '\r'], " "));
+    for (i, it) in inst.iter().enumerate() {
+        let label = if it.component.is_empty() {
+            mermaid_str(&it.name)
+        } else {
+            format!(
+                "{}<br/><small>{}</small>",
+                mermaid_str(&it.name),
+                mermaid_str(&it.component)
+            )
+        };
+        let _ = writeln!(s, "  n{i}[\"{label}\"]");
+    }
+    for c in conns {
+        let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {
+            continue;
+        };
+        let (Some(pa), Some(pb)) = (a.ports.get(c.from.1), b.ports.get(c.to.1)) else {
+            continue;
+        };
+        if c.service {
+            let _ = writeln!(
+                s,
+                "  n{} -. \"{} — {}\" .- n{}",
+                c.from.0,
+                mermaid_str(&pa.name),
+                mermaid_str(&pb.name),
+                c.to.0
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "  n{} -- \"{} → {}\" --> n{}",
+                c.from.0,
+                mermaid_str(&pa.name),
+                mermaid_str(&pb.name),
+                c.to.0
+            );
+        }
+    }
+    s
+}

@@ -1,0 +1,355 @@
+//! Diagrams a reader can trust (#26): the wiring layout's geometry on hand-made systems (no
+//! browser), the exports run through the real tools (Graphviz `dot`, Mermaid's own parser),
+//! and every diagram of the example and corpus sites measured in headless Chromium.
+
+mod common;
+
+use rtcdoc::layout::wiring::{layout, problems, Edge, Node, Port, PortKind};
+use std::path::Path;
+
+fn node(name: &str, ports: &[(&str, PortKind)], location: Option<(i64, i64)>) -> Node {
+    Node {
+        name: name.into(),
+        component: format!("{name}Component"),
+        ports: ports
+            .iter()
+            .map(|(n, k)| Port {
+                name: n.to_string(),
+                kind: *k,
+            })
+            .collect(),
+        location,
+    }
+}
+
+fn edge(from: (usize, usize), to: (usize, usize), service: bool) -> Edge {
+    Edge { from, to, service }
+}
+
+#[test]
+fn a_generated_40_instance_system_is_sound() {
+    use PortKind::*;
+    // Stages fed by earlier ones (some far back, some cycles), a service bus, isolated nodes.
+    let n = 40;
+    let nodes: Vec<Node> = (0..n)
+        .map(|i| {
+            node(
+                &format!("Stage{i}"),
+                &[("in", In), ("aux", In), ("out", Out), ("svc", Service)],
+                None,
+            )
+        })
+        .collect();
+    let mut edges = Vec::new();
+    for i in 1..n {
+        edges.push(edge((i / 2, 2), (i, 0), false));
+        if i % 7 == 0 {
+            edges.push(edge((i, 2), (i / 3, 1), false)); // back edge
+        }
+        if i % 5 == 0 {
+            edges.push(edge((i, 3), ((i + 3) % n, 3), true));
+        }
+    }
+    let l = layout(&nodes, &edges);
+    let p = problems(&l);
+    assert!(p.is_empty(), "{p:#?}");
+    assert!(l.routes.iter().all(Option::is_some));
+    // Readable: text is not shrunk, the drawing grows instead.
+    assert!(l.width > 600.0 && l.height > 300.0);
+}
+
+#[test]
+fn a_service_connector_between_two_right_hand_ports_goes_around() {
+    use PortKind::*;
+    // a and b in one column (no data between them), both with their service port on the right.
+    let nodes = vec![
+        node("src", &[("out", Out)], None),
+        node("a", &[("in", In), ("svc", Service)], None),
+        node("b", &[("in", In), ("svc", Service)], None),
+    ];
+    let edges = vec![
+        edge((0, 0), (1, 0), false),
+        edge((0, 0), (2, 0), false),
+        edge((1, 1), (2, 1), true),
+    ];
+    let l = layout(&nodes, &edges);
+    assert!(problems(&l).is_empty(), "{:?}", problems(&l));
+    assert_eq!(l.nodes[1].x, l.nodes[2].x, "same column");
+    let r = l.routes[2].as_ref().expect("routed");
+    // Out to the right and back: every point at or right of the boxes' right edge.
+    let right = l.nodes[1].x + l.nodes[1].w;
+    assert!(r.iter().all(|p| p.0 >= right - 0.01), "{r:?}");
+}
+
+#[test]
+fn very_long_names_are_whole_and_inside_their_box() {
+    use PortKind::*;
+    let long = "ManipulatorCommonInterface_Middle.ManipulatorCommonInterface_Middle";
+    let nodes = vec![
+        node(
+            "ManipulatorControllerWithAnUnusuallyLongInstanceName0",
+            &[
+                (long, Service),
+                ("jointPositionsMeasuredByTheEncodersInRadians", Out),
+            ],
+            None,
+        ),
+        node("画像ビューア0", &[("入力画像", In)], None),
+    ];
+    let edges = vec![edge((0, 1), (1, 0), false)];
+    let l = layout(&nodes, &edges);
+    assert!(problems(&l).is_empty(), "{:?}", problems(&l));
+    let b = &l.nodes[0];
+    assert!(b.title.len() >= 2, "wrapped: {:?}", b.title);
+    assert_eq!(b.title.concat(), nodes[0].name);
+    assert_eq!(b.ports[0].lines.concat(), long);
+    assert!(b.ports[0].lines.len() >= 2);
+    assert!(!format!("{l:?}").contains('…'));
+}
+
+#[test]
+fn saved_locations_keep_the_arrangement_and_connectors_go_around() {
+    use PortKind::*;
+    // The consumer saved left of its producer: the connector must pass around both boxes.
+    let nodes = vec![
+        node("consumer", &[("in", In)], Some((0, 0))),
+        node("producer", &[("out", Out)], Some((400, 0))),
+        node("below", &[("in", In), ("out", Out)], Some((0, 300))),
+    ];
+    let edges = vec![
+        edge((1, 0), (0, 0), false),
+        edge((1, 0), (2, 0), false),
+        edge((2, 1), (0, 0), false),
+    ];
+    let l = layout(&nodes, &edges);
+    assert!(l.from_locations);
+    assert!(problems(&l).is_empty(), "{:?}", problems(&l));
+    assert!(l.nodes[0].x < l.nodes[1].x, "consumer stays left");
+    assert!(l.nodes[2].y > l.nodes[0].y, "below stays below");
+}
+
+#[test]
+fn the_layout_is_deterministic() {
+    use PortKind::*;
+    let nodes: Vec<Node> = (0..12)
+        .map(|i| node(&format!("n{i}"), &[("in", In), ("out", Out)], None))
+        .collect();
+    let edges: Vec<Edge> = (1..12)
+        .map(|i| edge(((i * 5) % 12, 1), (i, 0), false))
+        .collect();
+    assert_eq!(
+        format!("{:?}", layout(&nodes, &edges)),
+        format!("{:?}", layout(&nodes, &edges))
+    );
+}
+
+/// The system inputs the export tests run on: the fixture, the example, the corpus systems.
+fn system_inputs() -> Vec<(std::path::PathBuf, Option<String>)> {
+    let root = common::root();
+    let mut v = vec![
+        (root.join("tests/fixtures/diagrams"), None),
+        (root.join("examples"), None),
+    ];
+    if let Some(c) = common::corpus() {
+        let dir = c.join("rts-xml");
+        let loaded = rtcdoc::build::load(
+            &dir,
+            &rtcdoc::build::LoadOptions {
+                allow_empty: true,
+                ..Default::default()
+            },
+        )
+        .expect("load corpus systems");
+        for s in &loaded.catalog.systems {
+            v.push((dir.clone(), Some(s.source.clone())));
+        }
+    }
+    v
+}
+
+fn graph(input: &Path, system: &Option<String>, format: &str, out: &Path) {
+    let mut args = vec![
+        "graph".to_string(),
+        input.display().to_string(),
+        "-f".into(),
+        format.into(),
+        "-o".into(),
+        out.display().to_string(),
+    ];
+    if let Some(s) = system {
+        args.push("--system".into());
+        args.push(s.clone());
+    }
+    let a: Vec<&str> = args.iter().map(String::as_str).collect();
+    let o = common::rtcdoc(&a, &common::root());
+    assert!(
+        o.status.success(),
+        "rtcdoc {args:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+#[test]
+fn graphviz_dot_accepts_every_dot_export() {
+    if !common::tool_available("dot") && !Path::new("/usr/bin/dot").exists() {
+        println!("skipped: Graphviz dot not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let mut n = 0;
+    for (k, (input, system)) in system_inputs().iter().enumerate() {
+        let f = dir.path().join(format!("{k}.dot"));
+        graph(input, system, "dot", &f);
+        let o = std::process::Command::new("dot")
+            .arg("-Tsvg")
+            .arg(&f)
+            .output()
+            .expect("run dot");
+        assert!(
+            o.status.success() && o.stdout.starts_with(b"<?xml"),
+            "dot rejects {input:?} {system:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        n += 1;
+    }
+    println!("dot accepted {n} DOT exports");
+    assert!(n >= 2);
+}
+
+/// Runs tests/browser/mermaid-parse.mjs on `files`; `None` (with a visible "skipped") when
+/// node, its npm install or chromium is missing.
+fn mermaid_parse(files: &[std::path::PathBuf]) -> Option<serde_json::Value> {
+    let dir = common::root().join("tests/browser");
+    if !dir.join("node_modules/mermaid").is_dir() || !Path::new("/usr/bin/chromium").exists() {
+        println!("skipped: tests/browser/node_modules/mermaid or chromium missing (npm ci)");
+        return None;
+    }
+    let o = std::process::Command::new("node")
+        .arg(dir.join("mermaid-parse.mjs"))
+        .args(files)
+        .output()
+        .ok()?;
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    Some(serde_json::from_slice(&o.stdout).expect("json"))
+}
+
+#[test]
+fn mermaids_parser_accepts_every_mermaid_export_and_markdown_block() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut files = Vec::new();
+    for (k, (input, system)) in system_inputs().iter().enumerate() {
+        let f = dir.path().join(format!("{k}.mmd"));
+        graph(input, system, "mermaid", &f);
+        files.push(f);
+    }
+    // The Markdown output with `[markdown] diagrams = "mermaid"`.
+    let cfg = dir.path().join("rtcdoc.toml");
+    std::fs::write(&cfg, "[markdown]\ndiagrams = \"mermaid\"\n").unwrap();
+    let md = dir.path().join("md");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            "examples",
+            "-f",
+            "markdown",
+            "-o",
+            &md.display().to_string(),
+            "--config",
+            &cfg.display().to_string(),
+        ],
+        &common::root(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let page = md.join("systems/patrolrobot.md");
+    let text = std::fs::read_to_string(&page).unwrap();
+    assert!(text.contains("```mermaid\nflowchart LR\n"), "{text}");
+    assert!(!md.join("systems/patrolrobot.svg").exists());
+    files.push(page);
+    let Some(r) = mermaid_parse(&files) else {
+        return;
+    };
+    let results = r["results"].as_array().expect("results");
+    assert_eq!(results.len(), files.len(), "{r}");
+    for x in results {
+        assert_eq!(x["ok"], true, "{x}");
+    }
+    println!("mermaid parsed {} blocks", results.len());
+}
+
+#[test]
+fn markdown_writes_the_wiring_as_svg_by_default() {
+    let dir = tempfile::tempdir().unwrap();
+    let md = dir.path().join("md");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            "examples",
+            "-f",
+            "markdown",
+            "-o",
+            &md.display().to_string(),
+        ],
+        &common::root(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(md.join("systems/patrolrobot.md")).unwrap();
+    assert!(text.contains("](patrolrobot.svg)"), "{text}");
+    let svg = std::fs::read_to_string(md.join("systems/patrolrobot.svg")).unwrap();
+    assert!(svg.contains("class=\"diagram system-diagram\"") && svg.contains("<style>"));
+}
+
+/// Every system and component diagram of a site, measured in headless Chromium.
+fn audit_site(site: &Path) -> Option<serde_json::Value> {
+    let dir = common::root().join("tests/browser");
+    if !dir.join("node_modules/puppeteer-core").is_dir() || !Path::new("/usr/bin/chromium").exists()
+    {
+        println!("skipped: tests/browser/node_modules or chromium missing (npm ci)");
+        return None;
+    }
+    let o = std::process::Command::new("node")
+        .arg(dir.join("diagrams.mjs"))
+        .arg(site)
+        .output()
+        .ok()?;
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    Some(serde_json::from_slice(&o.stdout).expect("json"))
+}
+
+#[test]
+fn rendered_diagrams_have_no_connector_through_a_box_and_every_name_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut inputs = vec![
+        common::root().join("examples"),
+        common::root().join("tests/fixtures/diagrams"),
+    ];
+    if let Some(c) = common::corpus() {
+        inputs.push(c.join("rts-xml"));
+    }
+    let mut measured = 0;
+    for (k, input) in inputs.iter().enumerate() {
+        let site = dir.path().join(format!("site{k}"));
+        let o = common::rtcdoc(
+            &[
+                "build",
+                &input.display().to_string(),
+                "-o",
+                &site.display().to_string(),
+                "--allow-empty",
+            ],
+            &common::root(),
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let Some(r) = audit_site(&site) else {
+            return;
+        };
+        assert!(r["errors"].as_array().is_some_and(Vec::is_empty), "{r}");
+        for d in r["diagrams"].as_array().expect("diagrams") {
+            for key in ["through", "outsideBox", "cut", "outsideDrawing"] {
+                assert_eq!(d[key], 0, "{} {key}: {}", d["page"], d["details"]);
+            }
+            measured += 1;
+        }
+    }
+    println!("measured {measured} diagrams");
+    assert!(measured > 3);
+}
