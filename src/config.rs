@@ -317,7 +317,7 @@ language = "ja"
 
 # 読み込むファイルと除外するファイルの glob (input からの相対パス)。
 # include = ["**"]
-# exclude = ["**/backup/**", "**/*.xml2*"]
+# exclude = ["**/backup/**"]
 
 {idl}
 
@@ -331,6 +331,11 @@ language = "ja"
 # RTシステムのプロファイルには、保存したマシンのホスト名、IOR、CORBA のエンドポイントが含まれます。
 # システムのページと catalog.json は、これを true にしない限りそれらを公開しません (社内向けサイトなどで使用)。
 # show-host-data = false
+
+# Markdown 出力: RTシステムの接続図を、ページの横の SVG ファイル ("svg") にするか、
+# ページ内の Mermaid のブロック ("mermaid") にするか。
+# [markdown]
+# diagrams = "svg"
 
 # rtcdoc serve の設定
 # [serve]
