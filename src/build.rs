@@ -351,11 +351,11 @@ fn nothing_found(input: &Path, skipped: &[walk::Skipped], backups: &[Backup]) ->
             parts.push(format!("{n} {what}"));
         }
     }
-    if let Some(newest) = backups.iter().max_by(|a, b| a.file.cmp(&b.file)) {
+    if let Some(newest) = backups.iter().max_by(|a, b| a.source.cmp(&b.source)) {
         parts.push(format!(
             "{} RTCBuilder backup(s) without their RTC.xml (to document the newest, copy `{}` to `{}`)",
             backups.len(),
-            newest.file,
+            newest.source,
             newest.profile_path()
         ));
     }

@@ -58,14 +58,17 @@ fn backups_are_versions_not_components() {
         ]
     );
     let backups = &json["components"]["RTC:Lab:Control:PIDController:1.1.0"]["backups"];
-    assert_eq!(backups[0]["file"], "PIDController/RTC.xml20150701100000");
+    assert_eq!(backups[0]["source"], "PIDController/RTC.xml20150701100000");
     assert_eq!(backups[0]["saved"], "2015-07-01 10:00:00");
     assert!(backups[0]["error"]
         .as_str()
         .unwrap()
         .contains("not valid UTF-8"));
     assert_eq!(backups[1]["saved"], "2015-07-26 07:20:22");
-    assert_eq!(backups[1]["version"], "1.0.0");
+    // A readable backup is a document of its own in the JSON: its whole profile.
+    assert_eq!(backups[1]["profile"]["basicInfo"]["version"], "1.0.0");
+    assert_eq!(backups[1]["profile"]["dataPorts"][1]["name"], "output");
+    assert!(backups[0]["profile"].is_null());
     // The backup's port `output` and placeholders appear nowhere as a component.
     let html = out.join("html");
     for page in [
@@ -187,7 +190,7 @@ fn a_backup_with_the_profiles_id_is_no_duplicate_and_never_stands_in_for_a_broke
     let json: serde_json::Value =
         serde_json::from_str(&read(&dir.path().join("site/catalog.json"))).unwrap();
     assert_eq!(json["components"].as_object().map(|m| m.len()), Some(0));
-    assert!(err.contains("note: 1 RTCBuilder backup (older versions of 1 profile) is"));
+    assert!(err.contains("note: 1 RTCBuilder backup (an older version of 1 profile) is not documented as a component"));
 
     // A backup named on the command line is read as a profile, whatever its name.
     let o = rtcdoc(&["check", "in/Arm/RTC.xml20200101120000"], dir.path());

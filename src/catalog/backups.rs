@@ -8,65 +8,66 @@
 use crate::model::Profile;
 use serde::{Deserialize, Serialize};
 
-/// One backup file of a component profile.
+/// One backup file of a component profile. In the JSON a backup is a document of its own:
+/// its path as `source` and, when it could be read, its whole `profile` (nothing is lost).
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 #[serde(rename_all = "camelCase")]
 pub struct Backup {
     /// Path relative to the input directory, forward slashes.
-    pub file: String,
+    pub source: String,
     /// When RTCBuilder saved it, from the file name: `2015-07-26 07:20:22` (local time of the
     /// save; the name has no time zone). `None` when the digits are not a date.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub saved: Option<String>,
-    /// The component name and version the backup declares (its BasicInfo then).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub name: Option<String>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub version: Option<String>,
     /// Why the backup could not be read (a Shift_JIS file declaring UTF-8, a truncated save):
     /// shown beside it instead of an error about the component.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
-    /// The profile as the backup holds it (kept for the component's history; not in the JSON,
-    /// where the profile beside it is the component).
-    #[serde(skip)]
+    /// The profile as the backup holds it (for the component's history, and in the JSON).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub profile: Option<Box<Profile>>,
 }
 
 impl Backup {
     /// A backup read as a profile.
-    pub fn read(file: String, profile: Box<Profile>) -> Backup {
-        let non_empty = |s| crate::model::non_empty(s).map(str::to_string);
+    pub fn read(source: String, profile: Box<Profile>) -> Backup {
         Backup {
-            saved: saved_at(&file),
-            name: non_empty(&profile.basic_info.name),
-            version: non_empty(&profile.basic_info.version),
+            saved: saved_at(&source),
             error: None,
             profile: Some(profile),
-            file,
+            source,
         }
     }
 
     /// A backup that could not be read as a profile, with the reason.
-    pub fn unreadable(file: String, error: String) -> Backup {
+    pub fn unreadable(source: String, error: String) -> Backup {
         Backup {
-            saved: saved_at(&file),
-            name: None,
-            version: None,
+            saved: saved_at(&source),
             error: Some(error),
             profile: None,
-            file,
+            source,
+        }
+    }
+
+    /// The component name and version the backup declares (its BasicInfo then).
+    pub fn declares(&self) -> (Option<&str>, Option<&str>) {
+        match &self.profile {
+            Some(p) => (
+                crate::model::non_empty(&p.basic_info.name),
+                crate::model::non_empty(&p.basic_info.version),
+            ),
+            None => (None, None),
         }
     }
 
     /// The file name alone (`RTC.xml20150726072022`).
     pub fn file_name(&self) -> &str {
-        self.file.rsplit('/').next().unwrap_or(&self.file)
+        self.source.rsplit('/').next().unwrap_or(&self.source)
     }
 
     /// The input-relative path of the profile this is a backup of: `RTC.xml` in its folder.
     pub fn profile_path(&self) -> String {
-        match self.file.rsplit_once('/') {
+        match self.source.rsplit_once('/') {
             Some((dir, _)) => format!("{dir}/RTC.xml"),
             None => "RTC.xml".to_string(),
         }
@@ -115,7 +116,7 @@ impl crate::catalog::Catalog {
     /// (RTC013); one whose `RTC.xml` exists but is no component (it failed to read, or was
     /// excluded) is kept in [`crate::catalog::Catalog::detached_backups`].
     pub fn attach_backups(&mut self, mut backups: Vec<Backup>, exists: &dyn Fn(&str) -> bool) {
-        backups.sort_by(|a, b| a.file.cmp(&b.file));
+        backups.sort_by(|a, b| a.source.cmp(&b.source));
         let by_source: std::collections::HashMap<&str, usize> = self
             .components
             .iter()
@@ -131,7 +132,7 @@ impl crate::catalog::Catalog {
                 Some(&i) => attach.push((i, b)),
                 None => {
                     if !exists(&of) {
-                        orphans.entry(of).or_default().push(b.file.clone());
+                        orphans.entry(of).or_default().push(b.source.clone());
                     }
                     detached.push(b);
                 }
@@ -196,14 +197,10 @@ impl crate::catalog::Catalog {
             .map(|c| c.backups.len())
             .sum::<usize>()
             + self.detached_backups.len();
-        (files > 0).then(|| {
-            format!(
-                "{files} RTCBuilder backup{} (older versions of {} profile{}) {} not documented as components",
-                if files == 1 { "" } else { "s" },
-                profiles.len(),
-                if profiles.len() == 1 { "" } else { "s" },
-                if files == 1 { "is" } else { "are" },
-            )
+        (files > 0).then(|| match (files, profiles.len()) {
+            (1, _) => "1 RTCBuilder backup (an older version of 1 profile) is not documented as a component".to_string(),
+            (f, 1) => format!("{f} RTCBuilder backups (older versions of 1 profile) are not documented as components"),
+            (f, p) => format!("{f} RTCBuilder backups (older versions of {p} profiles) are not documented as components"),
         })
     }
 }

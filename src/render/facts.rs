@@ -638,11 +638,14 @@ impl BackupRow {
                 saved: b.saved.clone().unwrap_or_default(),
                 declares: match &b.error {
                     Some(e) => format!("{}: {e}", lang.t("backup_unreadable")),
-                    None => [b.name.as_deref(), b.version.as_deref()]
-                        .into_iter()
-                        .flatten()
-                        .collect::<Vec<_>>()
-                        .join(" "),
+                    None => {
+                        let (name, version) = b.declares();
+                        [name, version]
+                            .into_iter()
+                            .flatten()
+                            .collect::<Vec<_>>()
+                            .join(" ")
+                    }
                 },
             })
             .collect()

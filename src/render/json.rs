@@ -3,7 +3,8 @@
 //! Format 2 (documented in `book/src/json.md`) is the keyed catalogue: `{"generator",
 //! "formatVersion": 2, "title", "components": {ID: …}, "dataTypes": {NAME: …}, "interfaces":
 //! {NAME: …}, "categories": {NAME: …}, "vendors": {NAME: …}, "pages": [...], "diagnostics":
-//! [...], "idl"?, "systems"?: {SOURCE: …}}`. Each component is the whole profile model plus `source`, `format`, `slug`
+//! [...], "idl"?, "systems"?: {SOURCE: …}, "backups"?: [...]}` (`backups`: RTCBuilder
+//! backups whose `RTC.xml` is no component; the others are in their component). Each component is the whole profile model plus `source`, `format`, `slug`
 //! and `anchors`, keyed by its id ([`crate::catalog::Component::id`]); references between
 //! entries are ids (`{"component": ID, "port": NAME}`), never positions, so two catalogues can
 //! be compared entry by entry (`rtcdoc diff`) and [`read_catalog`] gives the same catalogue
@@ -99,6 +100,10 @@ struct Document<'a> {
     idl: &'a IdlSet,
     #[serde(skip_serializing_if = "Keyed::is_empty")]
     systems: Keyed<'a, System>,
+    /// RTCBuilder backups whose `RTC.xml` is no component of the catalogue (gone, excluded or
+    /// unreadable): documents too, so they are kept.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    backups: &'a [crate::catalog::backups::Backup],
 }
 
 fn document<'a>(
@@ -120,6 +125,7 @@ fn document<'a>(
         diagnostics: &catalog.diagnostics,
         idl: &catalog.idl,
         systems: Keyed(systems, system_key),
+        backups: &catalog.detached_backups,
     }
 }
 
@@ -272,6 +278,8 @@ struct DocumentRead {
     idl: IdlSet,
     #[serde(default, deserialize_with = "keyed")]
     systems: Vec<(String, SystemRead)>,
+    #[serde(default)]
+    backups: Vec<crate::catalog::backups::Backup>,
 }
 
 /// An RT System profile as `catalog.json` has it: its links are made again on reading.
@@ -372,6 +380,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
             })
             .collect(),
     );
+    catalog.detached_backups = doc.backups;
     if page_entries(&catalog) != doc.pages {
         anyhow::bail!("{name}: the `pages` list does not match the entries' slugs: the file was edited; build it again");
     }
