@@ -556,7 +556,10 @@ fn an_rtsys_file_is_a_system_and_an_empty_configuration_set_says_none() {
     );
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
-    assert!(err.contains("built 1 RT System into"), "{err}");
+    assert!(
+        err.contains("built 1 component profile and 1 RT System into"),
+        "{err}"
+    );
     let html = read(&dir.path().join("site/html/systems/wiring.html"));
     assert!(
         html.contains("<p class=\"sys-config-empty\"><code>default</code> (Active configuration set): none</p>"),
@@ -572,6 +575,22 @@ fn an_rtsys_file_is_a_system_and_an_empty_configuration_set_says_none() {
     assert!(md.contains("| Motor0 | default |   | none |"), "{md}");
     let o = common::rtcdoc(&["check", input.to_str().unwrap()], dir.path());
     let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("; 1 component profile and 1 RT System, documentation coverage"),
+        "{err}"
+    );
+    // A system alone: no coverage of nothing.
+    let alone = dir.path().join("alone");
+    std::fs::create_dir_all(&alone).unwrap();
+    std::fs::copy(input.join("Wiring.rtsys"), alone.join("Wiring.rtsys")).unwrap();
+    let o = common::rtcdoc(&["check", "alone"], dir.path());
+    let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("; 1 RT System\n"), "{err}");
     assert!(!err.contains("coverage"), "{err}");
+    let o = common::rtcdoc(&["build", "alone", "-o", "alone-site"], dir.path());
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("built 1 RT System into"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
 }
