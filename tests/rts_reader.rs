@@ -805,7 +805,7 @@ fn hostile_and_broken_input_is_refused_with_a_position() {
     };
     let d = err(SourceFormat::Xml, &fixture("full.xml"), &tiny);
     assert_eq!(d.code, codes::TOO_LARGE);
-    assert!(d.hint.unwrap().contains("max_file_size"));
+    assert!(d.hint.unwrap().contains("`max-file-size` in rtcdoc.toml"));
     // Alias bomb.
     let mut bomb = String::from("a: &a [x, x, x, x, x, x, x, x, x, x]\n");
     for i in 1..9 {
