@@ -366,6 +366,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_interface_type", "Interface type", "インターフェース型"),
     ("sys_members", "Members", "メンバー"),
     ("sys_not_in_catalogue", "not in the catalogue", "カタログにない"),
+    ("sys_open_drawing", "Open the drawing on its own", "図だけを開く"),
     ("sys_orders", "Orders", "実行順序"),
     ("sys_out_port", "out-port", "出力ポート"),
     ("sys_path_uri", "Naming path", "ネーミングパス"),

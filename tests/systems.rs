@@ -594,3 +594,39 @@ fn an_rtsys_file_is_a_system_and_an_empty_configuration_set_says_none() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// The wiring drawing opens on its own: the site writes it beside the system page, as a
+/// well-formed SVG without links, and the page's caption links it.
+#[test]
+fn the_wiring_drawing_opens_on_its_own() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(
+        &common::root().join("examples"),
+        &out,
+        SiteOptions::default(),
+    );
+    let page = read(&out.join("systems/patrolrobot.html"));
+    assert!(
+        page.contains("<a href=\"patrolrobot.svg\">Open the drawing on its own</a></figcaption>"),
+        "{page}"
+    );
+    let svg = read(&out.join("systems/patrolrobot.svg"));
+    assert!(
+        svg.contains("<svg xmlns=\"http://www.w3.org/2000/svg\""),
+        "{svg}"
+    );
+    assert!(svg.contains("class=\"connector"), "{svg}");
+    assert!(
+        !svg.contains("href="),
+        "no links: the pages are not beside a saved file"
+    );
+    let mut reader = quick_xml::Reader::from_str(&svg);
+    loop {
+        match reader.read_event() {
+            Ok(quick_xml::events::Event::Eof) => break,
+            Ok(_) => {}
+            Err(e) => panic!("not well-formed at {}: {e}", reader.buffer_position()),
+        }
+    }
+}

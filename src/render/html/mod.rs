@@ -1107,6 +1107,15 @@ impl HtmlRenderer {
                 written += 1;
             }
         }
+        // Each wiring diagram as a file of its own, which the system page links (a large
+        // system is easier to read opened alone, zoomed by the browser).
+        for (path, svg) in systems::drawings(&site) {
+            all_paths.push(path.clone());
+            if wanted(&path) {
+                out.write_owned(&path, svg.into_bytes())?;
+                written += 1;
+            }
+        }
         all_paths.push("search-index.js".into());
         // Component pages: the bulk of the work, rendered and written in parallel; the search
         // index is built alongside (its JSON serialisation is serial).

@@ -3,7 +3,7 @@
 //! file). Host data (host names, IORs, endpoints, naming paths) is left out unless the site is
 //! built with `show-host-data = true`; the page says how many values were left out.
 
-use super::system_svg::system_diagram;
+use super::system_svg::{standalone_system_diagram, system_diagram};
 use super::{
     crumbs_home, crumbs_section, ctx, page_title, KeyValue, Link, Page, PageContext, Site,
 };
@@ -498,6 +498,7 @@ impl Site<'_> {
             hidden => hidden,
             diagram_svg => diagram_svg,
             diagram_text => diagram_text,
+            diagram_file => drawing_path(self.catalog, s).rsplit('/').next().unwrap_or_default().to_string(),
             instances => ctx(&instances),
             show_path => show_host,
             configs => ctx(&configs),
@@ -536,6 +537,29 @@ pub(super) fn connectors_carrying(
                 ),
                 href: format!("{root}{}#data-connectors", system_path(catalog, s)),
             }
+        })
+        .collect()
+}
+
+/// The path of a system's wiring drawing as a file of its own: beside its page, `.svg`.
+fn drawing_path(catalog: &crate::catalog::Catalog, s: &crate::catalog::systems::System) -> String {
+    let page = system_path(catalog, s);
+    format!("{}.svg", page.trim_end_matches(".html"))
+}
+
+/// Every system's wiring drawing as a file of its own: (path, SVG).
+pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
+    site.catalog
+        .systems
+        .iter()
+        .map(|s| {
+            let (wire, conns) =
+                crate::render::wiring::system_wiring(site.catalog, s, site.lang, ROOT);
+            let title = format!("{} {}", site.lang.t("sys_wiring"), s.profile.name());
+            (
+                drawing_path(site.catalog, s),
+                standalone_system_diagram(&title, &wire, &conns),
+            )
         })
         .collect()
 }
