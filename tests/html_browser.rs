@@ -351,3 +351,28 @@ fn long_names_wrap_inside_their_cells() {
     };
     assert_audit(&report, &[]);
 }
+
+/// A component page listing RTCBuilder backups, and a system page with an empty configuration
+/// set, pass the audit in every mode.
+#[test]
+fn backups_and_empty_configuration_sets_pass_the_audit() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for (fixture, page) in [
+        ("backups", "components/pidcontroller.html"),
+        ("rtsys", "systems/wiring.html"),
+    ] {
+        let out = dir.path().join(fixture);
+        build_site(
+            &common::root().join("tests/fixtures").join(fixture),
+            &out,
+            SiteOptions::default(),
+        );
+        let Some(report) = audit(&out, &[], &[page]) else {
+            return;
+        };
+        assert_audit(&report, &[]);
+    }
+}
