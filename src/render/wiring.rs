@@ -119,50 +119,40 @@ pub fn system_wiring(
     }
     let port_at = |i: usize, name: &str| wire.get(i)?.ports.iter().position(|q| q.name == name);
     let mut conns: Vec<WireConnector> = Vec::new();
-    for (c, l) in p.data_port_connectors.iter().zip(&s.data_connectors) {
-        let (Some(a), Some(b), Some(se), Some(te)) =
-            (l.source.instance, l.target.instance, &c.source, &c.target)
+    // Both kinds of connector: the ends' instances (resolved by the catalogue) and ports.
+    let ends = p
+        .data_port_connectors
+        .iter()
+        .zip(&s.data_connectors)
+        .map(|(c, l)| (l, &c.source, &c.target, Some(txt(&c.data_type))))
+        .chain(
+            p.service_port_connectors
+                .iter()
+                .zip(&s.service_connectors)
+                .map(|(c, l)| (l, &c.source, &c.target, None)),
+        );
+    for (l, se, te, data_type) in ends {
+        let (Some(a), Some(b), Some(se), Some(te)) = (l.source.instance, l.target.instance, se, te)
         else {
             continue;
         };
-        if let (Some(pa), Some(pb)) = (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
-        {
-            conns.push(WireConnector {
-                from: (a, pa),
-                to: (b, pb),
-                service: false,
-                label: format!(
-                    "{}.{} → {}.{} ({})",
-                    txt(&se.instance_name),
-                    end_port_name(se),
-                    txt(&te.instance_name),
-                    end_port_name(te),
-                    txt(&c.data_type)
-                ),
-            });
-        }
-    }
-    for (c, l) in p.service_port_connectors.iter().zip(&s.service_connectors) {
-        let (Some(a), Some(b), Some(se), Some(te)) =
-            (l.source.instance, l.target.instance, &c.source, &c.target)
+        let (Some(pa), Some(pb)) = (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
         else {
             continue;
         };
-        if let (Some(pa), Some(pb)) = (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
-        {
-            conns.push(WireConnector {
-                from: (a, pa),
-                to: (b, pb),
-                service: true,
-                label: format!(
-                    "{}.{} — {}.{}",
-                    txt(&se.instance_name),
-                    end_port_name(se),
-                    txt(&te.instance_name),
-                    end_port_name(te)
-                ),
-            });
-        }
+        let (source, target) = (
+            format!("{}.{}", txt(&se.instance_name), end_port_name(se)),
+            format!("{}.{}", txt(&te.instance_name), end_port_name(te)),
+        );
+        conns.push(WireConnector {
+            from: (a, pa),
+            to: (b, pb),
+            service: data_type.is_none(),
+            label: match data_type {
+                Some(t) => format!("{source} → {target} ({t})"),
+                None => format!("{source} — {target}"),
+            },
+        });
     }
     (wire, conns)
 }
