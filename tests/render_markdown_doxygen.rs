@@ -495,6 +495,9 @@ fn doxygen_labels_are_unique_and_every_page_has_one_subpage() {
                 + cat.data_types.len()
                 + cat.interfaces.len()
                 + cat.categories.len()
+                // The vendors index and a page per vendor.
+                + 1
+                + cat.vendors.len()
                 + 2
                 // The systems index and a page per RT System.
                 + if cat.systems.is_empty() { 0 } else { 1 + cat.systems.len() }
