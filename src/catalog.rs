@@ -14,7 +14,9 @@
 //!   which ([`Catalog::attach_idl`]), category and vendor facets, slugs and row anchors.
 //! - **Pages.** [`Catalog::pages`] is the one list of pages (kind, id, path stem, title),
 //!   computed once; every renderer, the sitemap, the search index and `serve`'s incremental
-//!   rebuild take page paths from it ([`Page::path_in`] gives each output's file name).
+//!   rebuild take page paths from it ([`Page::path_in`] gives each output's file name,
+//!   [`Output::carries`] which kinds an output writes). Links between pages come from
+//!   [`Catalog::href`] ([`pages`]).
 //!
 //! Renderers only read the catalogue; all cross-linking logic lives here. A new kind of
 //! document is a reader (in `parse`), an entry kind with its id here, a [`PageKind`], and views.

@@ -8,6 +8,13 @@
 
 use super::{Catalog, Output, Page, PageKind};
 
+/// mdBook's table of contents, beside the Markdown pages (no page of the catalogue itself).
+pub const MARKDOWN_SUMMARY: &str = "SUMMARY.md";
+
+/// The Markdown front page once more, under the name GitHub shows for a folder (not in the
+/// book: `SUMMARY.md` lists `index.md`).
+pub const MARKDOWN_README: &str = "README.md";
+
 impl Output {
     /// Every output that writes pages.
     pub const ALL: [Output; 3] = [Output::Html, Output::Markdown, Output::Doxygen];
@@ -81,11 +88,17 @@ impl Page {
     /// The name anchor `anchor` (a section or row anchor, `[a-z0-9-]`) of this page is defined
     /// under in `out`: as is in HTML and Markdown; `<page label>__<anchor label>` in Doxygen,
     /// whose labels are global (a double underscore, which no slug holds, so a row anchor can
-    /// never equal another page's label).
+    /// never equal another page's label). The `\mainpage`'s sections are `rtc_main__<anchor>`.
     pub fn anchor_in(&self, anchor: &str, out: Output) -> String {
         match out {
             Output::Html | Output::Markdown => anchor.to_string(),
-            Output::Doxygen => format!("{}__{}", self.doxygen_label(), doxygen_label(anchor)),
+            Output::Doxygen => {
+                let page = match self.kind {
+                    PageKind::Index => "rtc_main".to_string(),
+                    _ => self.doxygen_label(),
+                };
+                format!("{page}__{}", doxygen_label(anchor))
+            }
         }
     }
 }
@@ -179,6 +192,7 @@ mod tests {
             cat.href(&vendor, &comp, Some("port-image"), dox),
             "rtc_comp_camera__port_image"
         );
+        assert_eq!(index.anchor_in("catalogue", dox), "rtc_main__catalogue");
         assert_eq!(cat.root_from(&comp, md), "../");
         assert_eq!(cat.root_from(&index, md), "");
     }

@@ -3,16 +3,20 @@
 //!
 //! Layout: `Doxyfile`, `mainpage.dox` (`\mainpage`), `categories/<slug>.dox`,
 //! `components/<slug>.dox`, `types.dox` + `types/<slug>.dox`, `interfaces.dox` +
-//! `interfaces/<slug>.dox`. Running `doxygen` in the folder writes `html/`, `latex/`, `man/` and
+//! `interfaces/<slug>.dox`, `vendors.dox` + `vendors/<slug>.dox`, `systems.dox` +
+//! `systems/<slug>.dox`. Running `doxygen` in the folder writes `html/`, `latex/`, `man/` and
 //! the tag file `rtcdoc.tag`.
 //!
-//! Labels are globally unique, prefixed and `[a-z0-9_]` only: `rtc_comp_<slug>`,
-//! `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`, `rtc_types`, `rtc_interfaces`; section
-//! and row anchors are `<page label>__<anchor>` (a double underscore, which no slug contains, so
-//! a row anchor can never equal another page's label). The page tree is
-//! mainpage → category pages → component pages, mainpage → type index → type pages and
-//! mainpage → interface index → interface pages: every page is the target of exactly one
-//! `\subpage`; all other links are `\ref`.
+//! Labels ([`Page::doxygen_label`], [`Page::anchor_in`]) are globally unique, prefixed and
+//! `[a-z0-9_]` only: `rtc_comp_<slug>`, `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`,
+//! `rtc_vendor_<slug>`, `rtc_sys_<slug>`, `rtc_types`, `rtc_interfaces`, `rtc_vendors`,
+//! `rtc_systems`; section and row anchors are `<page label>__<anchor>` (a double underscore,
+//! which no slug contains, so a row anchor can never equal another page's label). Every link
+//! is [`Catalog::href`]: nothing here spells a label. The page tree is mainpage → category
+//! pages → component pages, mainpage → type index → type pages, mainpage → interface index →
+//! interface pages, mainpage → vendor index → vendor pages and mainpage → system index →
+//! system pages: every page is the target of exactly one `\subpage`; all other links are
+//! `\ref`.
 //!
 //! Escaping choices: pages are written as `///` comment blocks, so a `*/` in profile text cannot
 //! end the comment; the Doxyfile sets `MARKDOWN_SUPPORT = NO` (no Markdown syntax to neutralise;
@@ -549,7 +553,8 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     d!(out);
     d!(
         out,
-        "\\section rtc_main__catalogue {}",
+        "\\section {} {}",
+        page.anchor_in("catalogue", DOX),
         title(lang.t("fact_catalogue"))
     );
     d!(out);
@@ -585,15 +590,17 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     d!(out);
     d!(
         out,
-        "\\section rtc_main__components {}",
+        "\\section {} {}",
+        page.anchor_in("components", DOX),
         title(lang.t("components"))
     );
     d!(out);
     for (fi, f) in cat.categories.iter().enumerate() {
+        // The section of a category is named after its page (`rtc_main__rtc_cat_<slug>`).
         d!(
             out,
-            "\\subsection rtc_main__{} {}",
-            target(cat, cat.category_page(fi)),
+            "\\subsection {} {}",
+            page.anchor_in(&target(cat, cat.category_page(fi)), DOX),
             title(&category_name(&f.name, lang))
         );
         d!(out);

@@ -4,10 +4,15 @@
 //! - `index.md` — the catalogue (components by category, links to the type and interface
 //!   indexes); `README.md` is the same page, for GitHub's folder view (it is not in the book);
 //! - `SUMMARY.md` — the mdBook table of contents: components nested under their category page,
-//!   data types under the type index, interfaces under the interface index;
+//!   data types under the type index, interfaces under the interface index, vendors under the
+//!   vendor index;
 //! - `categories/<slug>.md`, `components/<slug>.md`, `types.md`, `types/<slug>.md`,
-//!   `interfaces.md`, `interfaces/<slug>.md` (the indexes sit at the root so that no type slug
-//!   can collide with them).
+//!   `interfaces.md`, `interfaces/<slug>.md`, `vendors.md`, `vendors/<slug>.md`,
+//!   `systems.md`, `systems/<slug>.md` (the indexes sit at the root so that no slug can collide
+//!   with them).
+//!
+//! Paths and links come from the catalogue ([`Page::path_in`], [`Catalog::href`]): nothing
+//! here spells a page path.
 //!
 //! Rows carry explicit `<a id="…"></a>` anchors from [`Component::anchors`], so links never
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
@@ -18,6 +23,7 @@ use super::text::{
     names_facts, type_index_table, Markup,
 };
 use super::{RenderContext, Renderer};
+use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
 use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self};
@@ -796,8 +802,8 @@ fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     out
 }
 
-/// `systems/<slug>.md`, and its wiring diagram as an SVG file (written at `svg_path`) unless
-/// it is drawn as a Mermaid block.
+/// `systems/<slug>.md`, and its wiring diagram as an SVG file (written beside it, with the
+/// page's stem: [`Page::path`]) unless it is drawn as a Mermaid block.
 fn system_page(
     cat: &Catalog,
     si: usize,
@@ -805,7 +811,6 @@ fn system_page(
     lang: Lang,
     show_host: bool,
     diagrams: super::DiagramFormat,
-    svg_path: &str,
 ) -> (String, Option<String>) {
     let s = &cat.systems[si];
     let page = cat.system_page(si);
@@ -850,7 +855,7 @@ fn system_page(
             None
         }
         super::DiagramFormat::Svg => {
-            let file = svg_path.rsplit('/').next().unwrap_or(svg_path);
+            let file = page.file_name("svg");
             w!(out, "![{}]({})", inline(&caption), file);
             Some(super::html::standalone_system_diagram(
                 &caption, &inst, &conns,
@@ -898,8 +903,8 @@ fn other_pages(
 ) -> Vec<(String, String)> {
     let index = index_page(cat, title, lang);
     let mut out = vec![
-        ("SUMMARY.md".to_string(), summary(cat, title, lang)),
-        ("README.md".to_string(), index.clone()),
+        (MARKDOWN_SUMMARY.to_string(), summary(cat, title, lang)),
+        (MARKDOWN_README.to_string(), index.clone()),
         (cat.site_page(PageKind::Index).path_in(MD), index),
         (
             cat.site_page(PageKind::DataTypes).path_in(MD),
@@ -944,10 +949,12 @@ fn other_pages(
             system_index_page(cat, title, lang),
         ));
         out.par_extend((0..cat.systems.len()).into_par_iter().flat_map_iter(|si| {
-            let path = cat.system_page(si).path_in(MD);
-            let svg_path = format!("{}.svg", path.trim_end_matches(".md"));
-            let (page, svg) = system_page(cat, si, title, lang, show_host, diagrams, &svg_path);
-            std::iter::once((path, page)).chain(svg.map(|s| (svg_path, s)))
+            let page = cat.system_page(si);
+            let path = page.path_in(MD);
+            // The wiring diagram beside the page, with its stem.
+            let svg_path = page.path("svg");
+            let (text, svg) = system_page(cat, si, title, lang, show_host, diagrams);
+            std::iter::once((path, text)).chain(svg.map(|s| (svg_path, s)))
         }));
     }
     out
