@@ -14,12 +14,15 @@
 //!   which ([`Catalog::attach_idl`]), category and vendor facets, slugs and row anchors.
 //! - **Pages.** [`Catalog::pages`] is the one list of pages (kind, id, path stem, title),
 //!   computed once; every renderer, the sitemap, the search index and `serve`'s incremental
-//!   rebuild take page paths from it ([`Page::path_in`] gives each output's file name).
+//!   rebuild take page paths from it ([`Page::path_in`] gives each output's file name,
+//!   [`Output::carries`] which kinds an output writes). Links between pages come from
+//!   [`Catalog::href`] ([`pages`]).
 //!
 //! Renderers only read the catalogue; all cross-linking logic lives here. A new kind of
 //! document is a reader (in `parse`), an entry kind with its id here, a [`PageKind`], and views.
 
 pub mod backups;
+pub mod pages;
 pub mod systems;
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
@@ -464,18 +467,24 @@ impl Page {
     }
 
     /// The page's path in output `out`. The entry pages have the same stem everywhere; the
-    /// index pages follow each tool's layout: mdBook's `index.md`, `types.md`, `interfaces.md`
-    /// beside `SUMMARY.md`, Doxygen's `mainpage.dox`, `types.dox`, `interfaces.dox`.
+    /// index pages follow each tool's layout: mdBook's `index.md`, `types.md`, `interfaces.md`,
+    /// `vendors.md` beside `SUMMARY.md` (so that no entry slug can collide with them),
+    /// Doxygen's `mainpage.dox`, `types.dox`, `interfaces.dox`, `vendors.dox`. Links between
+    /// pages come from [`Catalog::href`]; which pages an output writes, [`Output::carries`].
     pub fn path_in(&self, out: Output) -> String {
         match (out, self.kind) {
             (Output::Html, _) => self.path("html"),
             (Output::Markdown, PageKind::DataTypes) => "types.md".into(),
             (Output::Markdown, PageKind::Interfaces) => "interfaces.md".into(),
+            (Output::Markdown, PageKind::Categories) => "categories.md".into(),
+            (Output::Markdown, PageKind::Vendors) => "vendors.md".into(),
             (Output::Markdown, PageKind::Systems) => "systems.md".into(),
             (Output::Markdown, _) => self.path("md"),
             (Output::Doxygen, PageKind::Index) => "mainpage.dox".into(),
             (Output::Doxygen, PageKind::DataTypes) => "types.dox".into(),
             (Output::Doxygen, PageKind::Interfaces) => "interfaces.dox".into(),
+            (Output::Doxygen, PageKind::Categories) => "categories.dox".into(),
+            (Output::Doxygen, PageKind::Vendors) => "vendors.dox".into(),
             (Output::Doxygen, PageKind::Systems) => "systems.dox".into(),
             (Output::Doxygen, _) => self.path("dox"),
         }

@@ -3,16 +3,20 @@
 //!
 //! Layout: `Doxyfile`, `mainpage.dox` (`\mainpage`), `categories/<slug>.dox`,
 //! `components/<slug>.dox`, `types.dox` + `types/<slug>.dox`, `interfaces.dox` +
-//! `interfaces/<slug>.dox`. Running `doxygen` in the folder writes `html/`, `latex/`, `man/` and
+//! `interfaces/<slug>.dox`, `vendors.dox` + `vendors/<slug>.dox`, `systems.dox` +
+//! `systems/<slug>.dox`. Running `doxygen` in the folder writes `html/`, `latex/`, `man/` and
 //! the tag file `rtcdoc.tag`.
 //!
-//! Labels are globally unique, prefixed and `[a-z0-9_]` only: `rtc_comp_<slug>`,
-//! `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`, `rtc_types`, `rtc_interfaces`; section
-//! and row anchors are `<page label>__<anchor>` (a double underscore, which no slug contains, so
-//! a row anchor can never equal another page's label). The page tree is
-//! mainpage → category pages → component pages, mainpage → type index → type pages and
-//! mainpage → interface index → interface pages: every page is the target of exactly one
-//! `\subpage`; all other links are `\ref`.
+//! Labels ([`Page::doxygen_label`], [`Page::anchor_in`]) are globally unique, prefixed and
+//! `[a-z0-9_]` only: `rtc_comp_<slug>`, `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`,
+//! `rtc_vendor_<slug>`, `rtc_sys_<slug>`, `rtc_types`, `rtc_interfaces`, `rtc_vendors`,
+//! `rtc_systems`; section and row anchors are `<page label>__<anchor>` (a double underscore,
+//! which no slug contains, so a row anchor can never equal another page's label). Every link
+//! is [`Catalog::href`]: nothing here spells a label. The page tree is mainpage → category
+//! pages → component pages, mainpage → type index → type pages, mainpage → interface index →
+//! interface pages, mainpage → vendor index → vendor pages and mainpage → system index →
+//! system pages: every page is the target of exactly one `\subpage`; all other links are
+//! `\ref`.
 //!
 //! Escaping choices: pages are written as `///` comment blocks, so a `*/` in profile text cannot
 //! end the comment; the Doxyfile sets `MARKDOWN_SUPPORT = NO` (no Markdown syntax to neutralise;
@@ -21,8 +25,8 @@
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
 use super::text::{
-    category_name, component_cols, component_sections, interface_index_table, names_facts,
-    type_index_table, Markup,
+    category_name, component_cols, component_sections, facets_of_each, interface_index_table,
+    names_facts, type_index_table, Markup,
 };
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
@@ -143,27 +147,14 @@ pub fn title(s: &str) -> String {
 }
 
 /// A Doxygen label from any slug or anchor: `[a-z0-9-]` → `[a-z0-9_]`.
-pub fn label(s: &str) -> String {
-    s.chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect()
-}
+pub use crate::catalog::pages::doxygen_label as label;
 
-/// The Doxygen page name of a type's or interface's page: `rtc_type_<slug>`, `rtc_if_<slug>`.
-fn page_label(page: &Page) -> String {
-    let slug = page.stem.rsplit('/').next().unwrap_or(&page.stem);
-    match page.kind {
-        PageKind::Interface => format!("rtc_if_{}", label(slug)),
-        _ => format!("rtc_type_{}", label(slug)),
-    }
-}
+/// The output this module writes.
+const DOX: Output = Output::Doxygen;
 
-fn comp_label(c: &Component) -> String {
-    format!("rtc_comp_{}", label(&c.slug))
-}
-
-fn anchor_label(c: &Component, anchor: &str) -> String {
-    format!("{}__{}", comp_label(c), label(anchor))
+/// The label of page `to` for `\ref` / `\subpage` ([`Catalog::href`]).
+fn target(cat: &Catalog, to: &Page) -> String {
+    cat.href(to, to, None, DOX)
 }
 
 /// `\ref label "text"` with escaped text.
@@ -179,6 +170,7 @@ fn opt(s: &Option<crate::model::Text>) -> String {
 struct Dox;
 
 impl Markup for Dox {
+    const OUTPUT: Output = Output::Doxygen;
     fn esc(s: &str) -> String {
         text(s)
     }
@@ -205,30 +197,21 @@ impl Markup for Dox {
         d!(out, "</ul>");
         d!(out);
     }
-    fn heading(out: &mut String, c: &Component, level: usize, anchor: &str, text: &str) {
+    fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str) {
         let command = if level <= 2 { "section" } else { "subsection" };
         d!(
             out,
             "\\{command} {} {}",
-            anchor_label(c, anchor),
+            page.anchor_in(anchor, DOX),
             title(text)
         );
         d!(out);
     }
-    fn anchored(c: &Component, anchor: &str, escaped: &str) -> String {
-        format!("\\anchor {} {escaped}", anchor_label(c, anchor))
+    fn anchored(page: &Page, anchor: &str, escaped: &str) -> String {
+        format!("\\anchor {} {escaped}", page.anchor_in(anchor, DOX))
     }
-    fn page_ref(page: &Page) -> String {
-        format!("\\ref {}", Self::page_target(page))
-    }
-    fn page_target(page: &Page) -> String {
-        page_label(page)
-    }
-    fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
-        port_peer(cat, r)
-    }
-    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
-        iface_peer(cat, r)
+    fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String {
+        format!("\\ref {}", cat.href(from, to, None, DOX))
     }
 }
 
@@ -253,11 +236,11 @@ fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
     d!(out);
 }
 
-fn section(out: &mut String, page: &str, anchor: &str, heading: &str) {
+fn section(out: &mut String, page: &Page, anchor: &str, heading: &str) {
     d!(
         out,
-        "\\section {page}__{} {}",
-        label(anchor),
+        "\\section {} {}",
+        page.anchor_in(anchor, DOX),
         title(heading)
     );
     d!(out);
@@ -272,51 +255,34 @@ fn paragraphs(out: &mut String, s: &str) {
     d!(out);
 }
 
-fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
-    let (ci, port) = cat.resolve_port(r)?;
-    let pc = &cat.components[ci];
-    let pn = model::non_empty(&pc.profile.data_ports[port].name).unwrap_or("");
-    Some((
-        format!("{} / {pn}", pc.profile.name()),
-        anchor_label(pc, &pc.anchors.data_ports[port]),
-    ))
-}
-
-fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
-    let (ci, port, interface) = cat.resolve_interface(r)?;
-    let pc = &cat.components[ci];
-    let sp = &pc.profile.service_ports[port];
-    let iname = model::non_empty(&sp.interfaces[interface].name).unwrap_or("");
-    Some((
-        format!(
-            "{} / {} / {iname}",
-            pc.profile.name(),
-            model::non_empty(&sp.name).unwrap_or("")
-        ),
-        anchor_label(pc, &pc.anchors.interfaces[port][interface]),
-    ))
-}
-
-fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> String {
+fn component_page(cat: &Catalog, ci: usize, facets: (usize, usize), lang: Lang) -> String {
     let c = &cat.components[ci];
     let p = &c.profile;
-    let page = comp_label(c);
+    let page = cat.component_page(ci);
+    let (category_fi, vendor_fi) = facets;
     let mut out = String::with_capacity(4096);
-    d!(out, "\\page {page} {}", title(p.name()));
+    d!(out, "\\page {} {}", target(cat, page), title(p.name()));
     d!(out);
-    d!(out, "<p>\\ref index › \\ref {cat_label}</p>");
+    d!(
+        out,
+        "<p>\\ref {} › \\ref {}</p>",
+        home(cat),
+        target(cat, cat.category_page(category_fi))
+    );
     d!(out);
     if let Some(desc) = model::non_empty(&p.basic_info.description) {
         paragraphs(&mut out, desc);
     }
 
-    component_sections::<Dox>(&mut out, cat, ci, lang);
+    component_sections::<Dox>(&mut out, cat, ci, vendor_fi, lang);
     let used = super::system_text::used_in(cat, ci);
     if !used.is_empty() {
-        section(&mut out, &page, "sec-systems", lang.t("sys_used_by"));
+        section(&mut out, page, "sec-systems", lang.t("sys_used_by"));
         d!(out, "<ul>");
         for (text_, s) in used {
-            d!(out, "<li>{}</li>", refer(&sys_label(s), &text_));
+            if let Some(to) = cat.page_of_system(s) {
+                d!(out, "<li>{}</li>", refer(&target(cat, to), &text_));
+            }
         }
         d!(out, "</ul>");
         d!(out);
@@ -324,22 +290,32 @@ fn component_page(cat: &Catalog, ci: usize, cat_label: &str, lang: Lang) -> Stri
     // The README as plain paragraphs of its Markdown source: Doxygen's own Markdown and HTML
     // would read it differently from the site, and its commands are not to be run.
     if let Some(r) = c.readme.as_ref().filter(|r| !r.text.trim().is_empty()) {
-        section(&mut out, &page, "sec-readme", lang.t("readme"));
+        section(&mut out, page, "sec-readme", lang.t("readme"));
         paragraphs(&mut out, &r.text);
     }
     out
 }
 
-fn port_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
+/// The label of the front page (`\mainpage`).
+fn home(cat: &Catalog) -> String {
+    target(cat, cat.site_page(PageKind::Index))
+}
+
+/// `\ref` to component `ci`'s page (to its `anchor` if given) from page `from`.
+fn component_ref(cat: &Catalog, from: &Page, ci: usize, anchor: Option<&str>) -> String {
+    cat.href(from, cat.component_page(ci), anchor, DOX)
+}
+
+fn port_rows(cat: &Catalog, from: &Page, refs: &[PortRef]) -> Vec<Vec<String>> {
     refs.iter()
         .filter_map(|r| {
             let (ci, pi) = cat.resolve_port(r)?;
             let c = &cat.components[ci];
             let port = &c.profile.data_ports[pi];
             Some(vec![
-                format!("\\ref {}", comp_label(c)),
+                format!("\\ref {}", component_ref(cat, from, ci, None)),
                 refer(
-                    &anchor_label(c, &c.anchors.data_ports[pi]),
+                    &component_ref(cat, from, ci, Some(&c.anchors.data_ports[pi])),
                     model::non_empty(&port.name).unwrap_or("?"),
                 ),
                 opt(&port.type_),
@@ -348,7 +324,7 @@ fn port_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
         .collect()
 }
 
-fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
+fn iface_rows(cat: &Catalog, from: &Page, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
     refs.iter()
         .filter_map(|r| {
             let (ci, pi, ii) = cat.resolve_interface(r)?;
@@ -356,9 +332,9 @@ fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
             let sp = &c.profile.service_ports[pi];
             let i = &sp.interfaces[ii];
             Some(vec![
-                format!("\\ref {}", comp_label(c)),
+                format!("\\ref {}", component_ref(cat, from, ci, None)),
                 refer(
-                    &anchor_label(c, &c.anchors.interfaces[pi][ii]),
+                    &component_ref(cat, from, ci, Some(&c.anchors.interfaces[pi][ii])),
                     &format!(
                         "{} / {}",
                         model::non_empty(&sp.name).unwrap_or("?"),
@@ -371,17 +347,33 @@ fn iface_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
         .collect()
 }
 
+/// The line under an entry page's title: the front page › the index of `kind`.
+fn crumbs(out: &mut String, cat: &Catalog, kind: PageKind) {
+    d!(
+        out,
+        "<p>\\ref {} › \\ref {}</p>",
+        home(cat),
+        target(cat, cat.site_page(kind))
+    );
+    d!(out);
+}
+
+/// The line under an index page's title: the front page.
+fn crumb_home(out: &mut String, cat: &Catalog) {
+    d!(out, "<p>\\ref {}</p>", home(cat));
+    d!(out);
+}
+
 fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     let t = &cat.data_types[ti];
-    let page = format!("rtc_type_{}", label(&t.slug));
+    let page = cat.data_type_page(ti);
     let mut out = String::new();
-    d!(out, "\\page {page} {}", title(&t.name));
+    d!(out, "\\page {} {}", target(cat, page), title(&t.name));
     d!(out);
-    d!(out, "<p>\\ref index › \\ref rtc_types</p>");
-    d!(out);
+    crumbs(&mut out, cat, PageKind::DataTypes);
     names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Dox>(&mut out, cat, &t.name, lang, &|o, a, text| {
-        section(o, &page, a, text)
+    super::idl_view::write_definition::<Dox>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
+        section(o, page, a, text)
     });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
@@ -390,21 +382,23 @@ fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
         ("sec-others", "fact_others", &t.others),
     ] {
         if !refs.is_empty() {
-            section(&mut out, &page, anchor, lang.t(key));
-            table(&mut out, &cols, &port_rows(cat, refs));
+            section(&mut out, page, anchor, lang.t(key));
+            table(&mut out, &cols, &port_rows(cat, page, refs));
         }
     }
     let carried = super::system_text::carrying(cat, &t.name);
     if !carried.is_empty() {
         section(
             &mut out,
-            &page,
+            page,
             "sec-system-connectors",
             lang.t("sys_carried_by"),
         );
         d!(out, "<ul>");
         for (text_, s) in carried {
-            d!(out, "<li>{}</li>", refer(&sys_label(s), &text_));
+            if let Some(to) = cat.page_of_system(s) {
+                d!(out, "<li>{}</li>", refer(&target(cat, to), &text_));
+            }
         }
         d!(out, "</ul>");
         d!(out);
@@ -412,26 +406,28 @@ fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
     out
 }
 
-fn sys_label(s: &crate::catalog::systems::System) -> String {
-    format!("rtc_sys_{}", label(&s.slug))
-}
-
 /// `systems.dox`: every RT System with its counts.
 fn system_index(cat: &Catalog, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Systems);
     let mut out = String::new();
-    d!(out, "\\page rtc_systems {}", title(lang.t("systems")));
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(lang.t("systems"))
+    );
     d!(out);
-    d!(out, "<p>\\ref index</p>");
-    d!(out);
+    crumb_home(&mut out, cat);
     d!(out, "<p>{}</p>", text(lang.t("systems_intro")));
     d!(out);
     let rows: Vec<Vec<String>> = cat
         .systems
         .iter()
-        .map(|s| {
+        .enumerate()
+        .map(|(si, s)| {
             let parts = s.profile.id_parts.as_ref();
             vec![
-                format!("\\subpage {}", sys_label(s)),
+                format!("\\subpage {}", target(cat, cat.system_page(si))),
                 parts.map(|x| opt(&x.version)).unwrap_or_default(),
                 parts.map(|x| opt(&x.vendor)).unwrap_or_default(),
                 s.profile.components.len().to_string(),
@@ -457,17 +453,25 @@ fn system_index(cat: &Catalog, lang: Lang) -> String {
 /// `systems/<slug>.dox`.
 fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String {
     let s = &cat.systems[si];
-    let page = sys_label(s);
+    let page = cat.system_page(si);
     let mut out = String::new();
-    d!(out, "\\page {page} {}", title(s.profile.name()));
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(s.profile.name())
+    );
     d!(out);
-    d!(out, "<p>\\ref index › \\ref rtc_systems</p>");
-    d!(out);
-    let component = |c: &Component| comp_label(c);
-    let head = |o: &mut String, anchor: &str, text_: &str| section(o, &page, anchor, text_);
+    crumbs(&mut out, cat, PageKind::Systems);
+    let component = |c: &Component| match cat.component_index(&c.id) {
+        Some(ci) => component_ref(cat, page, ci, None),
+        None => String::new(),
+    };
+    let head = |o: &mut String, anchor: &str, text_: &str| section(o, page, anchor, text_);
     super::system_text::system_body::<Dox>(
         &mut out,
         cat,
+        page,
         s,
         lang,
         show_host,
@@ -481,19 +485,18 @@ fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String 
 
 fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
     let t = &cat.interfaces[ii];
-    let page = format!("rtc_if_{}", label(&t.slug));
+    let page = cat.interface_page(ii);
     let mut out = String::new();
-    d!(out, "\\page {page} {}", title(&t.name));
+    d!(out, "\\page {} {}", target(cat, page), title(&t.name));
     d!(out);
-    d!(out, "<p>\\ref index › \\ref rtc_interfaces</p>");
-    d!(out);
+    crumbs(&mut out, cat, PageKind::Interfaces);
     if t.is_unprovided() {
         d!(out, "<p><b>{}</b></p>", text(lang.t("not_provided")));
         d!(out);
     }
     names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Dox>(&mut out, cat, &t.name, lang, &|o, a, text| {
-        section(o, &page, a, text)
+    super::idl_view::write_definition::<Dox>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
+        section(o, page, a, text)
     });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for (anchor, key, refs) in [
@@ -502,22 +505,28 @@ fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
         ("sec-others", "fact_others", &t.others),
     ] {
         if !refs.is_empty() {
-            section(&mut out, &page, anchor, lang.t(key));
-            table(&mut out, &cols, &iface_rows(cat, refs));
+            section(&mut out, page, anchor, lang.t(key));
+            table(&mut out, &cols, &iface_rows(cat, page, refs));
         }
     }
     out
 }
 
-/// Component rows; the first cell is `\subpage` on category pages, `\ref` elsewhere.
-fn component_rows(cat: &Catalog, members: &[usize], command: &str) -> Vec<Vec<String>> {
+/// Component rows on page `from`; the first cell is `\subpage` on category pages, `\ref`
+/// elsewhere.
+fn component_rows(
+    cat: &Catalog,
+    from: &Page,
+    members: &[usize],
+    command: &str,
+) -> Vec<Vec<String>> {
     members
         .iter()
         .map(|&ci| {
             let c = &cat.components[ci];
             let b = &c.profile.basic_info;
             vec![
-                format!("\\{command} {}", comp_label(c)),
+                format!("\\{command} {}", component_ref(cat, from, ci, None)),
                 opt(&b.description),
                 opt(&b.vendor),
                 opt(&b.version),
@@ -526,11 +535,8 @@ fn component_rows(cat: &Catalog, members: &[usize], command: &str) -> Vec<Vec<St
         .collect()
 }
 
-fn cat_label(slug: &str) -> String {
-    format!("rtc_cat_{}", label(slug))
-}
-
 fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Index);
     let mut out = String::new();
     d!(out, "\\mainpage {}", title(site_title));
     d!(out);
@@ -547,33 +553,36 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     d!(out);
     d!(
         out,
-        "\\section rtc_main__catalogue {}",
+        "\\section {} {}",
+        page.anchor_in("catalogue", DOX),
         title(lang.t("fact_catalogue"))
     );
     d!(out);
     d!(out, "<ul>");
-    for f in &cat.categories {
+    for (fi, f) in cat.categories.iter().enumerate() {
         d!(
             out,
             "<li>\\subpage {} ({})</li>",
-            cat_label(&f.slug),
+            target(cat, cat.category_page(fi)),
             f.components.len()
         );
     }
-    d!(
-        out,
-        "<li>\\subpage rtc_types ({})</li>",
-        cat.data_types.len()
-    );
-    d!(
-        out,
-        "<li>\\subpage rtc_interfaces ({})</li>",
-        cat.interfaces.len()
-    );
+    for (kind, count) in [
+        (PageKind::DataTypes, cat.data_types.len()),
+        (PageKind::Interfaces, cat.interfaces.len()),
+        (PageKind::Vendors, cat.vendors.len()),
+    ] {
+        d!(
+            out,
+            "<li>\\subpage {} ({count})</li>",
+            target(cat, cat.site_page(kind))
+        );
+    }
     if !cat.systems.is_empty() {
         d!(
             out,
-            "<li>\\subpage rtc_systems ({})</li>",
+            "<li>\\subpage {} ({})</li>",
+            target(cat, cat.site_page(PageKind::Systems)),
             cat.systems.len()
         );
     }
@@ -581,67 +590,136 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     d!(out);
     d!(
         out,
-        "\\section rtc_main__components {}",
+        "\\section {} {}",
+        page.anchor_in("components", DOX),
         title(lang.t("components"))
     );
     d!(out);
-    for f in &cat.categories {
+    for (fi, f) in cat.categories.iter().enumerate() {
+        // The section of a category is named after its page (`rtc_main__rtc_cat_<slug>`).
         d!(
             out,
-            "\\subsection rtc_main__{} {}",
-            cat_label(&f.slug),
+            "\\subsection {} {}",
+            page.anchor_in(&target(cat, cat.category_page(fi)), DOX),
             title(&category_name(&f.name, lang))
         );
         d!(out);
         table(
             &mut out,
             &component_cols(lang),
-            &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), "ref"),
+            &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "ref"),
         );
     }
     out
 }
 
+/// The name of a vendor; the empty vendor has a translated name.
+fn vendor_name(name: &str, lang: Lang) -> String {
+    if name.is_empty() {
+        lang.t("no_vendor").to_string()
+    } else {
+        name.to_string()
+    }
+}
+
 fn category_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
     let f = &cat.categories[fi];
+    let page = cat.category_page(fi);
     let mut out = String::new();
     d!(
         out,
         "\\page {} {}",
-        cat_label(&f.slug),
+        target(cat, page),
         title(&category_name(&f.name, lang))
     );
     d!(out);
-    d!(out, "<p>\\ref index</p>");
-    d!(out);
+    crumb_home(&mut out, cat);
     table(
         &mut out,
         &component_cols(lang),
-        &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), "subpage"),
+        &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "subpage"),
     );
     out
 }
 
-fn type_index(cat: &Catalog, lang: Lang) -> String {
+/// `vendors/<slug>.dox`: the vendor's components, as a category page lists its own (linked
+/// with `\ref`: each component page is the `\subpage` of its category page).
+fn vendor_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
+    let f = &cat.vendors[fi];
+    let page = cat.vendor_page(fi);
     let mut out = String::new();
-    d!(out, "\\page rtc_types {}", title(lang.t("data_types")));
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(&vendor_name(&f.name, lang))
+    );
     d!(out);
-    d!(out, "<p>\\ref index</p>");
+    crumbs(&mut out, cat, PageKind::Vendors);
+    table(
+        &mut out,
+        &component_cols(lang),
+        &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "ref"),
+    );
+    out
+}
+
+/// `vendors.dox`: every vendor with its number of components.
+fn vendor_index(cat: &Catalog, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Vendors);
+    let mut out = String::new();
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(lang.t("vendors"))
+    );
     d!(out);
-    type_index_table::<Dox>(&mut out, cat, lang, |page| {
-        format!("\\subpage {}", page_label(page))
+    crumb_home(&mut out, cat);
+    d!(out, "<ul>");
+    for (fi, f) in cat.vendors.iter().enumerate() {
+        d!(
+            out,
+            "<li>\\subpage {} ({})</li>",
+            target(cat, cat.vendor_page(fi)),
+            f.components.len()
+        );
+    }
+    d!(out, "</ul>");
+    d!(out);
+    out
+}
+
+fn type_index(cat: &Catalog, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::DataTypes);
+    let mut out = String::new();
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(lang.t("data_types"))
+    );
+    d!(out);
+    crumb_home(&mut out, cat);
+    type_index_table::<Dox>(&mut out, cat, lang, |to| {
+        format!("\\subpage {}", cat.href(page, to, None, DOX))
     });
     out
 }
 
 fn interface_index(cat: &Catalog, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Interfaces);
     let mut out = String::new();
-    d!(out, "\\page rtc_interfaces {}", title(lang.t("interfaces")));
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(lang.t("interfaces"))
+    );
     d!(out);
-    d!(out, "<p>\\ref index</p>");
-    d!(out);
-    interface_index_table::<Dox>(&mut out, cat, lang, |page| {
-        format!("\\subpage {}", page_label(page))
+    crumb_home(&mut out, cat);
+    interface_index_table::<Dox>(&mut out, cat, lang, |to| {
+        format!("\\subpage {}", cat.href(page, to, None, DOX))
     });
     out
 }
@@ -719,7 +797,7 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
 
 /// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
 pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
-    let of = cat.category_of_each();
+    let of = facets_of_each(cat);
     let mut out = other_pages(cat, site_title, lang, false);
     out.par_extend(
         (0..cat.components.len())
@@ -730,14 +808,19 @@ pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String
 }
 
 fn component_path(cat: &Catalog, ci: usize) -> String {
-    cat.component_page(ci).path_in(Output::Doxygen)
+    cat.component_page(ci).path_in(DOX)
 }
 
 /// The path and text of component `ci`'s page.
-fn component_entry(cat: &Catalog, of: &[usize], ci: usize, lang: Lang) -> (String, String) {
+fn component_entry(
+    cat: &Catalog,
+    of: &[(usize, usize)],
+    ci: usize,
+    lang: Lang,
+) -> (String, String) {
     (
         component_path(cat, ci),
-        component_page(cat, ci, &cat_label(&cat.categories[of[ci]].slug), lang),
+        component_page(cat, ci, of[ci], lang),
     )
 }
 
@@ -750,44 +833,53 @@ fn other_pages(
 ) -> Vec<(String, String)> {
     let mut out = vec![
         (
-            cat.site_page(PageKind::Index).path_in(Output::Doxygen),
+            cat.site_page(PageKind::Index).path_in(DOX),
             mainpage(cat, site_title, lang),
         ),
         (
-            cat.site_page(PageKind::DataTypes).path_in(Output::Doxygen),
+            cat.site_page(PageKind::DataTypes).path_in(DOX),
             type_index(cat, lang),
         ),
         (
-            cat.site_page(PageKind::Interfaces).path_in(Output::Doxygen),
+            cat.site_page(PageKind::Interfaces).path_in(DOX),
             interface_index(cat, lang),
         ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
         (
-            cat.category_page(fi).path_in(Output::Doxygen),
+            cat.category_page(fi).path_in(DOX),
             category_page(cat, fi, lang),
         )
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
-            cat.data_type_page(ti).path_in(Output::Doxygen),
+            cat.data_type_page(ti).path_in(DOX),
             type_page(cat, ti, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
-            cat.interface_page(ii).path_in(Output::Doxygen),
+            cat.interface_page(ii).path_in(DOX),
             interface_page(cat, ii, lang),
         )
     }));
+    out.push((
+        cat.site_page(PageKind::Vendors).path_in(DOX),
+        vendor_index(cat, lang),
+    ));
+    out.par_extend(
+        (0..cat.vendors.len())
+            .into_par_iter()
+            .map(|fi| (cat.vendor_page(fi).path_in(DOX), vendor_page(cat, fi, lang))),
+    );
     if !cat.systems.is_empty() {
         out.push((
-            cat.site_page(PageKind::Systems).path_in(Output::Doxygen),
+            cat.site_page(PageKind::Systems).path_in(DOX),
             system_index(cat, lang),
         ));
         out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
             (
-                cat.system_page(si).path_in(Output::Doxygen),
+                cat.system_page(si).path_in(DOX),
                 system_page(cat, si, lang, show_host),
             )
         }));
@@ -814,7 +906,7 @@ impl Renderer for DoxygenRenderer {
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
         // Component pages are the bulk: written as they are rendered, never all held at once.
-        let of = cat.category_of_each();
+        let of = facets_of_each(cat);
         (0..cat.components.len())
             .into_par_iter()
             .try_for_each(|ci| {

@@ -4,7 +4,7 @@
 //! catalogue has one. Shared by the renderers; the definitions come from [`crate::idl`].
 
 use super::text::Markup;
-use crate::catalog::Catalog;
+use crate::catalog::{Catalog, Page};
 use crate::i18n::Lang;
 use crate::idl::{IdlDefinition, IdlDoc, IdlField, IdlParamDirection, IdlType};
 use serde::Serialize;
@@ -304,11 +304,12 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
 
 /// The definition of `name` as Markdown or Doxygen (through [`Markup`]): where it is defined,
 /// its documentation, and tables of its fields, values, operations and attributes, with types
-/// linked to their pages. `heading` writes a level-2 section heading. Nothing when no IDL
+/// linked to their pages from page `from`. `heading` writes a level-2 section heading. Nothing when no IDL
 /// defines the type.
 pub fn write_definition<M: Markup>(
     out: &mut String,
     cat: &Catalog,
+    from: &Page,
     name: &str,
     lang: Lang,
     heading: &dyn Fn(&mut String, &str, &str),
@@ -319,8 +320,12 @@ pub fn write_definition<M: Markup>(
     };
     let ty = |r: &TypeRef| -> String {
         match r.entry {
-            Some(Entry::DataType(i)) => M::link(&r.text, &M::page_target(cat.data_type_page(i))),
-            Some(Entry::Interface(i)) => M::link(&r.text, &M::page_target(cat.interface_page(i))),
+            Some(Entry::DataType(i)) => {
+                M::link(&r.text, &M::page_target(cat, from, cat.data_type_page(i)))
+            }
+            Some(Entry::Interface(i)) => {
+                M::link(&r.text, &M::page_target(cat, from, cat.interface_page(i)))
+            }
             None => M::esc(&r.text),
         }
     };
@@ -463,7 +468,7 @@ pub fn write_definition<M: Markup>(
             .contained_in
             .iter()
             .map(|n| match cat.data_type_index(n) {
-                Some(c) => M::link(n, &M::page_target(cat.data_type_page(c))),
+                Some(c) => M::link(n, &M::page_target(cat, from, cat.data_type_page(c))),
                 None => M::esc(n),
             })
             .collect();

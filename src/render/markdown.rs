@@ -4,20 +4,26 @@
 //! - `index.md` — the catalogue (components by category, links to the type and interface
 //!   indexes); `README.md` is the same page, for GitHub's folder view (it is not in the book);
 //! - `SUMMARY.md` — the mdBook table of contents: components nested under their category page,
-//!   data types under the type index, interfaces under the interface index;
+//!   data types under the type index, interfaces under the interface index, vendors under the
+//!   vendor index;
 //! - `categories/<slug>.md`, `components/<slug>.md`, `types.md`, `types/<slug>.md`,
-//!   `interfaces.md`, `interfaces/<slug>.md` (the indexes sit at the root so that no type slug
-//!   can collide with them).
+//!   `interfaces.md`, `interfaces/<slug>.md`, `vendors.md`, `vendors/<slug>.md`,
+//!   `systems.md`, `systems/<slug>.md` (the indexes sit at the root so that no slug can collide
+//!   with them).
+//!
+//! Paths and links come from the catalogue ([`Page::path_in`], [`Catalog::href`]): nothing
+//! here spells a page path.
 //!
 //! Rows carry explicit `<a id="…"></a>` anchors from [`Component::anchors`], so links never
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
 use super::text::{
-    category_name, component_cols, component_sections, interface_index_table, names_facts,
-    type_index_table, Markup,
+    category_name, component_cols, component_sections, facets_of_each, interface_index_table,
+    names_facts, type_index_table, Markup,
 };
 use super::{RenderContext, Renderer};
+use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
 use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self};
@@ -178,6 +184,7 @@ fn link(text: &str, href: &str) -> String {
 struct Md;
 
 impl Markup for Md {
+    const OUTPUT: Output = Output::Markdown;
     fn esc(s: &str) -> String {
         inline(s)
     }
@@ -203,25 +210,19 @@ impl Markup for Md {
         }
         w!(out);
     }
-    fn heading(out: &mut String, _: &Component, level: usize, anchor: &str, text: &str) {
-        heading(out, level, anchor, text)
+    fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str) {
+        heading(out, level, &page.anchor_in(anchor, MD), text)
     }
-    fn anchored(_: &Component, anchor: &str, escaped: &str) -> String {
-        format!("<a id=\"{anchor}\"></a>{escaped}")
+    fn anchored(page: &Page, anchor: &str, escaped: &str) -> String {
+        format!("<a id=\"{}\"></a>{escaped}", page.anchor_in(anchor, MD))
     }
-    fn page_ref(page: &Page) -> String {
-        link(&page.title, &Self::page_target(page))
-    }
-    fn page_target(page: &Page) -> String {
-        format!("../{}", page.path_in(Output::Markdown))
-    }
-    fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
-        port_peer(cat, r)
-    }
-    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
-        iface_peer(cat, r)
+    fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String {
+        link(&to.title, &cat.href(from, to, None, MD))
     }
 }
+
+/// The output this module writes.
+const MD: Output = Output::Markdown;
 
 /// A GFM table; cells are already escaped. An empty cell becomes a space.
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
@@ -252,56 +253,23 @@ fn opt(s: &Option<crate::model::Text>) -> String {
     model::non_empty(s).map(inline).unwrap_or_default()
 }
 
-/// The link to component `ci`'s page from a page one folder below the root.
-fn component_href(cat: &Catalog, ci: usize) -> String {
-    format!("../{}", cat.component_page(ci).path_in(Output::Markdown))
-}
-
-/// A data port peer as (text, link).
-fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)> {
-    let (ci, port) = cat.resolve_port(r)?;
-    let pc = &cat.components[ci];
-    let pn = model::non_empty(&pc.profile.data_ports[port].name).unwrap_or("");
-    Some((
-        format!("{} / {pn}", pc.profile.name()),
-        format!(
-            "{}#{}",
-            component_href(cat, ci),
-            pc.anchors.data_ports[port]
-        ),
-    ))
-}
-
-/// A service interface peer as (text, link).
-fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)> {
-    let (ci, port, interface) = cat.resolve_interface(r)?;
-    let pc = &cat.components[ci];
-    let sp = &pc.profile.service_ports[port];
-    let iname = model::non_empty(&sp.interfaces[interface].name).unwrap_or("");
-    Some((
-        format!(
-            "{} / {} / {iname}",
-            pc.profile.name(),
-            model::non_empty(&sp.name).unwrap_or("")
-        ),
-        format!(
-            "{}#{}",
-            component_href(cat, ci),
-            pc.anchors.interfaces[port][interface]
-        ),
-    ))
+/// The link on page `from` to component `ci`'s page (to its `anchor` if given).
+fn component_href(cat: &Catalog, from: &Page, ci: usize, anchor: Option<&str>) -> String {
+    cat.href(from, cat.component_page(ci), anchor, MD)
 }
 
 fn component_page(
     cat: &Catalog,
     ci: usize,
-    cat_page: &Page,
+    facets: (usize, usize),
     title: &str,
     lang: Lang,
     readme: &Readmes,
 ) -> String {
     let c = &cat.components[ci];
     let p = &c.profile;
+    let page = cat.component_page(ci);
+    let (category_fi, vendor_fi) = facets;
     let mut out = String::with_capacity(4096);
     w!(out, "# {}", inline(p.name()));
     w!(out);
@@ -309,10 +277,10 @@ fn component_page(
     w!(
         out,
         "{} › {}",
-        link(title, "../index.md"),
+        link(title, &home(cat, page)),
         link(
             &category_name(category, lang),
-            &format!("../{}", cat_page.path_in(Output::Markdown))
+            &cat.href(page, cat.category_page(category_fi), None, MD)
         )
     );
     w!(out);
@@ -321,14 +289,13 @@ fn component_page(
         w!(out);
     }
 
-    component_sections::<Md>(&mut out, cat, ci, lang);
+    component_sections::<Md>(&mut out, cat, ci, vendor_fi, lang);
     let used = super::system_text::used_in(cat, ci);
     if !used.is_empty() {
         heading(&mut out, 2, "sec-systems", lang.t("sys_used_by"));
         for (text, s) in used {
-            if let Some(page) = cat.page_of_system(s) {
-                let href = format!("../{}", page.path_in(Output::Markdown));
-                w!(out, "- {}", link(&text, &href));
+            if let Some(to) = cat.page_of_system(s) {
+                w!(out, "- {}", link(&text, &cat.href(page, to, None, MD)));
             }
         }
         w!(out);
@@ -349,12 +316,28 @@ type Readmes = std::sync::Arc<crate::render::html::readme::Targets>;
 
 /// The targets of README links from a component page (`components/x.md`).
 fn readme_targets(cat: &Catalog, source_url: Option<&str>) -> Readmes {
+    let root = cat.site_page(PageKind::Index);
+    let up = cat
+        .components
+        .first()
+        .map(|_| cat.root_from(cat.component_page(0), MD))
+        .unwrap_or_default();
     std::sync::Arc::new(crate::render::html::readme::Targets::new(
         cat,
         source_url,
-        "../",
-        |ci| cat.component_page(ci).path_in(Output::Markdown),
+        &up,
+        |ci| cat.href(root, cat.component_page(ci), None, MD),
     ))
+}
+
+/// The link on page `from` to the front page.
+fn home(cat: &Catalog, from: &Page) -> String {
+    cat.href(from, cat.site_page(PageKind::Index), None, MD)
+}
+
+/// The link on page `from` to the index page of `kind` (types, interfaces, vendors, systems).
+fn index_href(cat: &Catalog, from: &Page, kind: PageKind) -> String {
+    cat.href(from, cat.site_page(kind), None, MD)
 }
 
 /// A README's sanitised HTML as one Markdown HTML block (mdBook and GitHub show it as is): no
@@ -379,17 +362,17 @@ fn readme_block(html: &str) -> String {
     out
 }
 
-fn port_ref_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
+fn port_ref_rows(cat: &Catalog, from: &Page, refs: &[PortRef]) -> Vec<Vec<String>> {
     refs.iter()
         .filter_map(|r| {
             let (ci, pi) = cat.resolve_port(r)?;
             let c = &cat.components[ci];
             let port = &c.profile.data_ports[pi];
             Some(vec![
-                link(&c.display_name(), &component_href(cat, ci)),
+                link(&c.display_name(), &component_href(cat, from, ci, None)),
                 link(
                     model::non_empty(&port.name).unwrap_or("?"),
-                    &format!("{}#{}", component_href(cat, ci), c.anchors.data_ports[pi]),
+                    &component_href(cat, from, ci, Some(&c.anchors.data_ports[pi])),
                 ),
                 opt(&port.type_),
             ])
@@ -397,7 +380,7 @@ fn port_ref_rows(cat: &Catalog, refs: &[PortRef]) -> Vec<Vec<String>> {
         .collect()
 }
 
-fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
+fn iface_ref_rows(cat: &Catalog, from: &Page, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
     refs.iter()
         .filter_map(|r| {
             let (ci, pi, ii) = cat.resolve_interface(r)?;
@@ -405,18 +388,14 @@ fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
             let sp = &c.profile.service_ports[pi];
             let i = &sp.interfaces[ii];
             Some(vec![
-                link(&c.display_name(), &component_href(cat, ci)),
+                link(&c.display_name(), &component_href(cat, from, ci, None)),
                 link(
                     &format!(
                         "{} / {}",
                         model::non_empty(&sp.name).unwrap_or("?"),
                         model::non_empty(&i.name).unwrap_or("?")
                     ),
-                    &format!(
-                        "{}#{}",
-                        component_href(cat, ci),
-                        c.anchors.interfaces[pi][ii]
-                    ),
+                    &component_href(cat, from, ci, Some(&c.anchors.interfaces[pi][ii])),
                 ),
                 opt(&i.type_),
             ])
@@ -426,18 +405,22 @@ fn iface_ref_rows(cat: &Catalog, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
 
 fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
     let t = &cat.data_types[ti];
+    let page = cat.data_type_page(ti);
     let mut out = String::new();
     w!(out, "# {}", inline(&t.name));
     w!(out);
     w!(
         out,
         "{} › {}",
-        link(title, "../index.md"),
-        link(lang.t("data_types"), "../types.md")
+        link(title, &home(cat, page)),
+        link(
+            lang.t("data_types"),
+            &index_href(cat, page, PageKind::DataTypes)
+        )
     );
     w!(out);
     names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Md>(&mut out, cat, &t.name, lang, &|o, a, text| {
+    super::idl_view::write_definition::<Md>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
         heading(o, 2, a, text)
     });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
@@ -450,7 +433,7 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
             continue;
         }
         heading(&mut out, 2, anchor, lang.t(key));
-        table(&mut out, &cols, &port_ref_rows(cat, refs));
+        table(&mut out, &cols, &port_ref_rows(cat, page, refs));
     }
     let carried = super::system_text::carrying(cat, &t.name);
     if !carried.is_empty() {
@@ -461,9 +444,8 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
             lang.t("sys_carried_by"),
         );
         for (text, s) in carried {
-            if let Some(page) = cat.page_of_system(s) {
-                let href = format!("../{}", page.path_in(Output::Markdown));
-                w!(out, "- {}", link(&text, &href));
+            if let Some(to) = cat.page_of_system(s) {
+                w!(out, "- {}", link(&text, &cat.href(page, to, None, MD)));
             }
         }
         w!(out);
@@ -473,14 +455,18 @@ fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
 
 fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
     let t = &cat.interfaces[ii];
+    let page = cat.interface_page(ii);
     let mut out = String::new();
     w!(out, "# {}", inline(&t.name));
     w!(out);
     w!(
         out,
         "{} › {}",
-        link(title, "../index.md"),
-        link(lang.t("interfaces"), "../interfaces.md")
+        link(title, &home(cat, page)),
+        link(
+            lang.t("interfaces"),
+            &index_href(cat, page, PageKind::Interfaces)
+        )
     );
     w!(out);
     if t.is_unprovided() {
@@ -488,7 +474,7 @@ fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
         w!(out);
     }
     names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Md>(&mut out, cat, &t.name, lang, &|o, a, text| {
+    super::idl_view::write_definition::<Md>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
         heading(o, 2, a, text)
     });
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
@@ -501,25 +487,20 @@ fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
             continue;
         }
         heading(&mut out, 2, anchor, lang.t(key));
-        table(&mut out, &cols, &iface_ref_rows(cat, refs));
+        table(&mut out, &cols, &iface_ref_rows(cat, page, refs));
     }
     out
 }
 
-fn component_rows(cat: &Catalog, members: &[usize], prefix: &str) -> Vec<Vec<String>> {
+/// The rows of a component list on page `from`.
+fn component_rows(cat: &Catalog, from: &Page, members: &[usize]) -> Vec<Vec<String>> {
     members
         .iter()
         .map(|&ci| {
             let c = &cat.components[ci];
             let b = &c.profile.basic_info;
             vec![
-                link(
-                    &c.display_name(),
-                    &format!(
-                        "{prefix}{}",
-                        cat.component_page(ci).path_in(Output::Markdown)
-                    ),
-                ),
+                link(&c.display_name(), &component_href(cat, from, ci, None)),
                 opt(&b.description),
                 opt(&b.vendor),
                 opt(&b.version),
@@ -529,25 +510,34 @@ fn component_rows(cat: &Catalog, members: &[usize], prefix: &str) -> Vec<Vec<Str
 }
 
 fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Index);
     let mut out = String::new();
     w!(out, "# {}", inline(title));
     w!(out);
     w!(
         out,
-        "{}: {} · {}: {} · {}: {}",
+        "{}: {} · {}: {} · {}: {} · {}: {}",
         inline(lang.t("components")),
         cat.components.len(),
-        link(lang.t("data_types"), "types.md"),
+        link(
+            lang.t("data_types"),
+            &index_href(cat, page, PageKind::DataTypes)
+        ),
         cat.data_types.len(),
-        link(lang.t("interfaces"), "interfaces.md"),
-        cat.interfaces.len()
+        link(
+            lang.t("interfaces"),
+            &index_href(cat, page, PageKind::Interfaces)
+        ),
+        cat.interfaces.len(),
+        link(lang.t("vendors"), &index_href(cat, page, PageKind::Vendors)),
+        cat.vendors.len()
     );
     w!(out);
     if !cat.systems.is_empty() {
         w!(
             out,
             "{}: {}",
-            link(lang.t("systems"), "systems.md"),
+            link(lang.t("systems"), &index_href(cat, page, PageKind::Systems)),
             cat.systems.len()
         );
         w!(out);
@@ -559,31 +549,88 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
             "### {}",
             link(
                 &category_name(&f.name, lang),
-                &cat.category_page(fi).path_in(Output::Markdown)
+                &cat.href(page, cat.category_page(fi), None, MD)
             )
         );
         w!(out);
         table(
             &mut out,
             &component_cols(lang),
-            &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), ""),
+            &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>()),
         );
     }
     out
 }
 
+/// The name of a vendor; the empty vendor has a translated name.
+fn vendor_name(name: &str, lang: Lang) -> String {
+    if name.is_empty() {
+        lang.t("no_vendor").to_string()
+    } else {
+        name.to_string()
+    }
+}
+
 fn category_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
     let f = &cat.categories[fi];
+    let page = cat.category_page(fi);
     let mut out = String::new();
     w!(out, "# {}", inline(&category_name(&f.name, lang)));
     w!(out);
     w!(
         out,
         "{} › {}",
-        link(title, "../index.md"),
+        link(title, &home(cat, page)),
         inline(lang.t("categories"))
     );
     w!(out);
+    facet_body(&mut out, cat, page, f, lang);
+    out
+}
+
+/// `vendors/<slug>.md`: the vendor's components, as a category page lists its own.
+fn vendor_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
+    let f = &cat.vendors[fi];
+    let page = cat.vendor_page(fi);
+    let mut out = String::new();
+    w!(out, "# {}", inline(&vendor_name(&f.name, lang)));
+    w!(out);
+    w!(
+        out,
+        "{} › {}",
+        link(title, &home(cat, page)),
+        link(lang.t("vendors"), &index_href(cat, page, PageKind::Vendors))
+    );
+    w!(out);
+    facet_body(&mut out, cat, page, f, lang);
+    out
+}
+
+/// `vendors.md`: every vendor with its number of components.
+fn vendor_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Vendors);
+    let mut out = String::new();
+    w!(out, "# {}", inline(lang.t("vendors")));
+    w!(out);
+    w!(out, "{}", link(title, &home(cat, page)));
+    w!(out);
+    for (fi, f) in cat.vendors.iter().enumerate() {
+        w!(
+            out,
+            "- {} ({})",
+            link(
+                &vendor_name(&f.name, lang),
+                &cat.href(page, cat.vendor_page(fi), None, MD)
+            ),
+            f.components.len()
+        );
+    }
+    w!(out);
+    out
+}
+
+/// The body of a category or vendor page: the other spellings met, then the components.
+fn facet_body(out: &mut String, cat: &Catalog, page: &Page, f: &crate::catalog::Facet, lang: Lang) {
     if !f.variants.is_empty() {
         let v: Vec<String> = f.variants.iter().map(|v| inline(v)).collect();
         w!(
@@ -595,97 +642,118 @@ fn category_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
         w!(out);
     }
     table(
-        &mut out,
+        out,
         &component_cols(lang),
-        &component_rows(cat, &cat.members(f).collect::<Vec<_>>(), "../"),
+        &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>()),
     );
-    out
 }
 
 fn type_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::DataTypes);
     let mut out = String::new();
     w!(out, "# {}", inline(lang.t("data_types")));
     w!(out);
-    w!(out, "{}", link(title, "index.md"));
+    w!(out, "{}", link(title, &home(cat, page)));
     w!(out);
-    type_index_table::<Md>(&mut out, cat, lang, |page| {
-        link(&page.title, &page.path_in(Output::Markdown))
+    type_index_table::<Md>(&mut out, cat, lang, |to| {
+        link(&to.title, &cat.href(page, to, None, MD))
     });
     out
 }
 
 fn interface_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Interfaces);
     let mut out = String::new();
     w!(out, "# {}", inline(lang.t("interfaces")));
     w!(out);
-    w!(out, "{}", link(title, "index.md"));
+    w!(out, "{}", link(title, &home(cat, page)));
     w!(out);
-    interface_index_table::<Md>(&mut out, cat, lang, |page| {
-        link(&page.title, &page.path_in(Output::Markdown))
+    interface_index_table::<Md>(&mut out, cat, lang, |to| {
+        link(&to.title, &cat.href(page, to, None, MD))
     });
     out
 }
 
-/// Link text for `SUMMARY.md`: one line, escaped like everything else.
-fn summary_item(out: &mut String, indent: usize, text: &str, href: &str) {
-    w!(out, "{}- {}", "    ".repeat(indent), link(text, href));
+/// An item of `SUMMARY.md` (at the root, beside `index.md`): one line, escaped like
+/// everything else.
+fn summary_item(out: &mut String, cat: &Catalog, indent: usize, text: &str, to: &Page) {
+    let href = cat.href(cat.site_page(PageKind::Index), to, None, MD);
+    w!(out, "{}- {}", "    ".repeat(indent), link(text, &href));
 }
 
 /// The mdBook table of contents. Every page appears exactly once (a page missing from
 /// `SUMMARY.md` is not built by mdBook and links to it would break); components are nested
-/// under their category so the navigation stays foldable.
+/// under their category so the navigation stays foldable, vendors under the vendor index.
 fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
     let mut out = String::new();
     w!(out, "# Summary");
     w!(out);
-    w!(out, "{}", link(title, "index.md"));
+    w!(
+        out,
+        "{}",
+        link(title, &home(cat, cat.site_page(PageKind::Index)))
+    );
     w!(out);
     if !cat.components.is_empty() {
         w!(out, "# {}", inline(lang.t("components")));
         w!(out);
         for (fi, f) in cat.categories.iter().enumerate() {
-            summary_item(
-                &mut out,
-                0,
-                &category_name(&f.name, lang),
-                &cat.category_page(fi).path_in(Output::Markdown),
-            );
+            let text = category_name(&f.name, lang);
+            summary_item(&mut out, cat, 0, &text, cat.category_page(fi));
             for ci in cat.members(f) {
                 let page = cat.component_page(ci);
-                summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
+                summary_item(&mut out, cat, 1, &page.title, page);
             }
         }
         w!(out);
     }
     w!(out, "# {}", inline(lang.t("fact_catalogue")));
     w!(out);
-    let index_of = |kind| cat.site_page(kind).path_in(Output::Markdown);
+    let index = |kind| cat.site_page(kind);
     summary_item(
         &mut out,
+        cat,
         0,
         lang.t("data_types"),
-        &index_of(PageKind::DataTypes),
+        index(PageKind::DataTypes),
     );
     for ti in 0..cat.data_types.len() {
         let page = cat.data_type_page(ti);
-        summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
+        summary_item(&mut out, cat, 1, &page.title, page);
     }
     summary_item(
         &mut out,
+        cat,
         0,
         lang.t("interfaces"),
-        &index_of(PageKind::Interfaces),
+        index(PageKind::Interfaces),
     );
     for ii in 0..cat.interfaces.len() {
         let page = cat.interface_page(ii);
-        summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
+        summary_item(&mut out, cat, 1, &page.title, page);
+    }
+    summary_item(
+        &mut out,
+        cat,
+        0,
+        lang.t("vendors"),
+        index(PageKind::Vendors),
+    );
+    for (fi, f) in cat.vendors.iter().enumerate() {
+        let text = vendor_name(&f.name, lang);
+        summary_item(&mut out, cat, 1, &text, cat.vendor_page(fi));
     }
     if !cat.systems.is_empty() {
-        let index = cat.site_page(PageKind::Systems).path_in(Output::Markdown);
-        summary_item(&mut out, 0, lang.t("systems"), &index);
+        summary_item(
+            &mut out,
+            cat,
+            0,
+            lang.t("systems"),
+            index(PageKind::Systems),
+        );
         for si in 0..cat.systems.len() {
             let page = cat.system_page(si);
-            summary_item(&mut out, 1, &page.title, &page.path_in(Output::Markdown));
+            summary_item(&mut out, cat, 1, &page.title, page);
         }
     }
     out
@@ -693,10 +761,11 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
 
 /// `systems.md`: every RT System with its counts.
 fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::Systems);
     let mut out = String::new();
     w!(out, "# {}", inline(lang.t("systems")));
     w!(out);
-    w!(out, "{}", link(title, "index.md"));
+    w!(out, "{}", link(title, &home(cat, page)));
     w!(out);
     w!(out, "{}", inline(lang.t("systems_intro")));
     w!(out);
@@ -709,7 +778,7 @@ fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
             vec![
                 link(
                     s.profile.name(),
-                    &cat.system_page(si).path_in(Output::Markdown),
+                    &cat.href(page, cat.system_page(si), None, MD),
                 ),
                 parts.map(|x| opt(&x.version)).unwrap_or_default(),
                 parts.map(|x| opt(&x.vendor)).unwrap_or_default(),
@@ -733,8 +802,8 @@ fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     out
 }
 
-/// `systems/<slug>.md`, and its wiring diagram as an SVG file (written at `svg_path`) unless
-/// it is drawn as a Mermaid block.
+/// `systems/<slug>.md`, and its wiring diagram as an SVG file (written beside it, with the
+/// page's stem: [`Page::path`]) unless it is drawn as a Mermaid block.
 fn system_page(
     cat: &Catalog,
     si: usize,
@@ -742,21 +811,21 @@ fn system_page(
     lang: Lang,
     show_host: bool,
     diagrams: super::DiagramFormat,
-    svg_path: &str,
 ) -> (String, Option<String>) {
     let s = &cat.systems[si];
+    let page = cat.system_page(si);
     let mut out = String::new();
     w!(out, "# {}", inline(s.profile.name()));
     w!(out);
     w!(
         out,
         "{} › {}",
-        link(title, "../index.md"),
-        link(lang.t("systems"), "../systems.md")
+        link(title, &home(cat, page)),
+        link(lang.t("systems"), &index_href(cat, page, PageKind::Systems))
     );
     w!(out);
     let component = |c: &Component| match cat.component_index(&c.id) {
-        Some(ci) => component_href(cat, ci),
+        Some(ci) => component_href(cat, page, ci, None),
         None => String::new(),
     };
     let head =
@@ -764,6 +833,7 @@ fn system_page(
     super::system_text::system_body::<Md>(
         &mut out,
         cat,
+        page,
         s,
         lang,
         show_host,
@@ -773,7 +843,7 @@ fn system_page(
         },
     );
     // The wiring diagram, after the body's sections.
-    let (inst, conns) = super::wiring::system_wiring(cat, s, lang, "../");
+    let (inst, conns) = super::wiring::system_wiring(cat, s, lang, &cat.root_from(page, MD));
     let name = s.profile.name();
     let caption = format!("{} {name}", lang.t("sys_wiring"));
     heading(&mut out, 2, "sec-wiring", &caption);
@@ -785,7 +855,7 @@ fn system_page(
             None
         }
         super::DiagramFormat::Svg => {
-            let file = svg_path.rsplit('/').next().unwrap_or(svg_path);
+            let file = page.file_name("svg");
             w!(out, "![{}]({})", inline(&caption), file);
             Some(super::html::standalone_system_diagram(
                 &caption, &inst, &conns,
@@ -797,7 +867,7 @@ fn system_page(
 
 /// Renders every page as (relative path, content), in a fixed order.
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
-    let of = cat.category_of_each();
+    let of = facets_of_each(cat);
     let readme = readme_targets(cat, None);
     let mut out = other_pages(cat, title, lang, false, super::DiagramFormat::Svg);
     out.par_extend(
@@ -811,15 +881,15 @@ pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
 /// The path and text of component `ci`'s page.
 fn component_entry(
     cat: &Catalog,
-    of: &[usize],
+    of: &[(usize, usize)],
     ci: usize,
     title: &str,
     lang: Lang,
     readme: &Readmes,
 ) -> (String, String) {
     (
-        cat.component_page(ci).path_in(Output::Markdown),
-        component_page(cat, ci, cat.category_page(of[ci]), title, lang, readme),
+        cat.component_page(ci).path_in(MD),
+        component_page(cat, ci, of[ci], title, lang, readme),
     )
 }
 
@@ -833,50 +903,58 @@ fn other_pages(
 ) -> Vec<(String, String)> {
     let index = index_page(cat, title, lang);
     let mut out = vec![
-        ("SUMMARY.md".to_string(), summary(cat, title, lang)),
-        ("README.md".to_string(), index.clone()),
+        (MARKDOWN_SUMMARY.to_string(), summary(cat, title, lang)),
+        (MARKDOWN_README.to_string(), index.clone()),
+        (cat.site_page(PageKind::Index).path_in(MD), index),
         (
-            cat.site_page(PageKind::Index).path_in(Output::Markdown),
-            index,
-        ),
-        (
-            cat.site_page(PageKind::DataTypes).path_in(Output::Markdown),
+            cat.site_page(PageKind::DataTypes).path_in(MD),
             type_index_page(cat, title, lang),
         ),
         (
-            cat.site_page(PageKind::Interfaces)
-                .path_in(Output::Markdown),
+            cat.site_page(PageKind::Interfaces).path_in(MD),
             interface_index_page(cat, title, lang),
+        ),
+        (
+            cat.site_page(PageKind::Vendors).path_in(MD),
+            vendor_index_page(cat, title, lang),
         ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
         (
-            cat.category_page(fi).path_in(Output::Markdown),
+            cat.category_page(fi).path_in(MD),
             category_page(cat, fi, title, lang),
+        )
+    }));
+    out.par_extend((0..cat.vendors.len()).into_par_iter().map(|fi| {
+        (
+            cat.vendor_page(fi).path_in(MD),
+            vendor_page(cat, fi, title, lang),
         )
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
-            cat.data_type_page(ti).path_in(Output::Markdown),
+            cat.data_type_page(ti).path_in(MD),
             type_page(cat, ti, title, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
-            cat.interface_page(ii).path_in(Output::Markdown),
+            cat.interface_page(ii).path_in(MD),
             interface_page(cat, ii, title, lang),
         )
     }));
     if !cat.systems.is_empty() {
         out.push((
-            cat.site_page(PageKind::Systems).path_in(Output::Markdown),
+            cat.site_page(PageKind::Systems).path_in(MD),
             system_index_page(cat, title, lang),
         ));
         out.par_extend((0..cat.systems.len()).into_par_iter().flat_map_iter(|si| {
-            let path = cat.system_page(si).path_in(Output::Markdown);
-            let svg_path = format!("{}.svg", path.trim_end_matches(".md"));
-            let (page, svg) = system_page(cat, si, title, lang, show_host, diagrams, &svg_path);
-            std::iter::once((path, page)).chain(svg.map(|s| (svg_path, s)))
+            let page = cat.system_page(si);
+            let path = page.path_in(MD);
+            // The wiring diagram beside the page, with its stem.
+            let svg_path = page.path("svg");
+            let (text, svg) = system_page(cat, si, title, lang, show_host, diagrams);
+            std::iter::once((path, text)).chain(svg.map(|s| (svg_path, s)))
         }));
     }
     out
@@ -899,7 +977,7 @@ impl Renderer for MarkdownRenderer {
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
         // Component pages are the bulk: written as they are rendered, never all held at once.
-        let of = cat.category_of_each();
+        let of = facets_of_each(cat);
         let readme = readme_targets(cat, ctx.site.source_url.as_deref());
         (0..cat.components.len())
             .into_par_iter()

@@ -8,7 +8,7 @@ use crate::catalog::systems::{
     all_values, check_configuration, end_port_name, host_values, is_naming_path, ConfigCheck,
     System,
 };
-use crate::catalog::{Catalog, Component};
+use crate::catalog::{Catalog, Component, Page};
 use crate::i18n::Lang;
 use crate::model::{non_empty, Text};
 use crate::system::PortEnd;
@@ -31,10 +31,11 @@ fn end(e: &Option<PortEnd>) -> String {
         .unwrap_or_default()
 }
 
-/// Writes the sections of system `s`'s page.
+/// Writes the sections of system `s`'s page (`from`, for its links).
 pub fn system_body<M: Markup>(
     out: &mut String,
     cat: &Catalog,
+    from: &Page,
     s: &System,
     lang: Lang,
     show_host: bool,
@@ -220,7 +221,7 @@ pub fn system_body<M: Markup>(
         .map(|c| {
             let ty = match non_empty(&c.data_type) {
                 Some(x) => match cat.data_type_index(x) {
-                    Some(d) => M::link(x, &M::page_target(cat.data_type_page(d))),
+                    Some(d) => M::link(x, &M::page_target(cat, from, cat.data_type_page(d))),
                     None => M::esc(x),
                 },
                 None => String::new(),

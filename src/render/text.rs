@@ -5,7 +5,7 @@
 //! is what a [`Markup`] says.
 
 use super::facts::{self, Fact};
-use crate::catalog::{Catalog, Component, InterfaceRef, Page, PortRef};
+use crate::catalog::{Catalog, InterfaceRef, Output, Page, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self, ActionKind, Direction, PortDirection};
 
@@ -15,6 +15,8 @@ pub const PEER_CAP: usize = 12;
 
 /// The syntax of one text output format.
 pub trait Markup {
+    /// The output whose pages this syntax writes: links come from [`Catalog::href`] for it.
+    const OUTPUT: Output;
     /// Escapes plain text for an inline position (a table cell, a heading).
     fn esc(s: &str) -> String;
     /// A cross-reference with plain `text`; `target` (a URL or a label) is generated and safe.
@@ -29,19 +31,57 @@ pub trait Markup {
     fn paragraph(out: &mut String, escaped: &str);
     /// A bulleted list of plain-text items.
     fn list(out: &mut String, items: &[&str]);
-    /// A heading of `level` (2 or 3) on component `c`'s page, with the stable `anchor`.
-    fn heading(out: &mut String, c: &Component, level: usize, anchor: &str, text: &str);
-    /// A table cell of already escaped text with the stable `anchor` of `c`'s page.
-    fn anchored(c: &Component, anchor: &str, escaped: &str) -> String;
-    /// A link to a data type's or interface's page ([`Catalog::pages`]), as a table cell.
-    fn page_ref(page: &Page) -> String;
-    /// The target of a data type's or interface's page, for [`Markup::link`], from a page one
-    /// folder below the root.
-    fn page_target(page: &Page) -> String;
-    /// A data port peer as (text, target).
-    fn port_peer(cat: &Catalog, r: &PortRef) -> Option<(String, String)>;
-    /// A service interface peer as (text, target).
-    fn iface_peer(cat: &Catalog, r: &InterfaceRef) -> Option<(String, String)>;
+    /// A heading of `level` (2 or 3) on `page`, with the stable `anchor`.
+    fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str);
+    /// A table cell of already escaped text with the stable `anchor` of `page`.
+    fn anchored(page: &Page, anchor: &str, escaped: &str) -> String;
+    /// A link on page `from` to page `to` (a data type's or interface's), as a table cell.
+    fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String;
+    /// The target of a link on page `from` to page `to`, for [`Markup::link`].
+    fn page_target(cat: &Catalog, from: &Page, to: &Page) -> String {
+        cat.href(from, to, None, Self::OUTPUT)
+    }
+}
+
+/// A data port peer as (text, target), linked from page `from`.
+pub fn port_peer<M: Markup>(cat: &Catalog, from: &Page, r: &PortRef) -> Option<(String, String)> {
+    let (ci, port) = cat.resolve_port(r)?;
+    let pc = &cat.components[ci];
+    let pn = model::non_empty(&pc.profile.data_ports[port].name).unwrap_or("");
+    Some((
+        format!("{} / {pn}", pc.profile.name()),
+        cat.href(
+            from,
+            cat.component_page(ci),
+            Some(&pc.anchors.data_ports[port]),
+            M::OUTPUT,
+        ),
+    ))
+}
+
+/// A service interface peer as (text, target), linked from page `from`.
+pub fn iface_peer<M: Markup>(
+    cat: &Catalog,
+    from: &Page,
+    r: &InterfaceRef,
+) -> Option<(String, String)> {
+    let (ci, port, interface) = cat.resolve_interface(r)?;
+    let pc = &cat.components[ci];
+    let sp = &pc.profile.service_ports[port];
+    let iname = model::non_empty(&sp.interfaces[interface].name).unwrap_or("");
+    Some((
+        format!(
+            "{} / {} / {iname}",
+            pc.profile.name(),
+            model::non_empty(&sp.name).unwrap_or("")
+        ),
+        cat.href(
+            from,
+            cat.component_page(ci),
+            Some(&pc.anchors.interfaces[port][interface]),
+            M::OUTPUT,
+        ),
+    ))
 }
 
 /// Facts as a two-column table (label, value).
@@ -112,6 +152,15 @@ pub fn peers_cell<M: Markup>(
     parts.join("<br>")
 }
 
+/// The category and vendor facets of each component ([`Catalog::category_of_each`],
+/// [`Catalog::vendor_of_each`]), computed once per render.
+pub fn facets_of_each(cat: &Catalog) -> Vec<(usize, usize)> {
+    cat.category_of_each()
+        .into_iter()
+        .zip(cat.vendor_of_each())
+        .collect()
+}
+
 /// A category's display name; the empty category has a translated name.
 pub fn category_name(name: &str, lang: Lang) -> String {
     if name.is_empty() {
@@ -154,22 +203,45 @@ fn esc_opt<M: Markup>(s: &Option<crate::model::Text>) -> String {
 /// The sections of a component page after its title and lead text: basic info, Document
 /// Profile, data ports, service ports, configuration, lifecycle, system parameters, language,
 /// properties, version history and extras — the same tables in every text format.
-pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize, lang: Lang) {
+///
+/// The vendor in the basic info links to the page of `vendor` ([`Catalog::vendor_of_each`]).
+pub fn component_sections<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    ci: usize,
+    vendor: usize,
+    lang: Lang,
+) {
     let c = &cat.components[ci];
     let p = &c.profile;
-    M::heading(out, c, 2, "sec-basic-info", lang.t("fact_basic_info"));
-    facts_table::<M>(out, lang, &facts::basic_info(c, lang));
+    let page = cat.component_page(ci);
+    M::heading(out, page, 2, "sec-basic-info", lang.t("fact_basic_info"));
+    let vendor_label = lang.t("vendor");
+    let rows: Vec<Vec<String>> = facts::basic_info(c, lang)
+        .iter()
+        .map(|f| {
+            let value = match cat.vendors.get(vendor) {
+                Some(_) if f.label == vendor_label => M::link(
+                    &f.value,
+                    &M::page_target(cat, page, cat.vendor_page(vendor)),
+                ),
+                _ => M::esc(&f.value),
+            };
+            vec![M::esc(&f.label), value]
+        })
+        .collect();
+    M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
 
     if let Some(doc) = &p.basic_info.doc {
         let f = facts::document(doc, lang);
         if !f.is_empty() {
-            M::heading(out, c, 2, "sec-document", lang.t("fact_document"));
+            M::heading(out, page, 2, "sec-document", lang.t("fact_document"));
             facts_table::<M>(out, lang, &f);
         }
     }
 
     if !p.data_ports.is_empty() {
-        M::heading(out, c, 2, "sec-data-ports", lang.t("data_ports"));
+        M::heading(out, page, 2, "sec-data-ports", lang.t("data_ports"));
         let rows: Vec<Vec<String>> = p
             .data_ports
             .iter()
@@ -186,7 +258,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                     .and_then(|t| cat.data_type_index(t))
                     .map(|ti| cat.data_type_page(ti));
                 let ty = match dt {
-                    Some(page) => M::page_ref(page),
+                    Some(to) => M::page_ref(cat, page, to),
                     None => esc_opt::<M>(&port.type_),
                 };
                 let desc = port
@@ -197,11 +269,11 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                 let peers: Vec<(String, String)> = cat
                     .data_port_peers(ci, pi)
                     .iter()
-                    .filter_map(|r| M::port_peer(cat, r))
+                    .filter_map(|r| port_peer::<M>(cat, page, r))
                     .collect();
-                let rest = dt.map(M::page_target);
+                let rest = dt.map(|to| M::page_target(cat, page, to));
                 vec![
-                    M::anchored(c, &c.anchors.data_ports[pi], &esc_opt::<M>(&port.name)),
+                    M::anchored(page, &c.anchors.data_ports[pi], &esc_opt::<M>(&port.name)),
                     dir,
                     ty,
                     desc,
@@ -226,11 +298,11 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
     }
 
     if !p.service_ports.is_empty() {
-        M::heading(out, c, 2, "sec-service-ports", lang.t("service_ports"));
+        M::heading(out, page, 2, "sec-service-ports", lang.t("service_ports"));
         for (si, sp) in p.service_ports.iter().enumerate() {
             M::heading(
                 out,
-                c,
+                page,
                 3,
                 &c.anchors.service_ports[si],
                 model::non_empty(&sp.name).unwrap_or("?"),
@@ -258,7 +330,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                         .and_then(|t| cat.interface_index_of(t))
                         .map(|ii| cat.interface_page(ii));
                     let ty = match it {
-                        Some(page) => M::page_ref(page),
+                        Some(to) => M::page_ref(cat, page, to),
                         None => esc_opt::<M>(&i.type_),
                     };
                     let desc = i
@@ -269,11 +341,11 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
                     let peers: Vec<(String, String)> = cat
                         .interface_peers(ci, si, ii)
                         .iter()
-                        .filter_map(|r| M::iface_peer(cat, r))
+                        .filter_map(|r| iface_peer::<M>(cat, page, r))
                         .collect();
-                    let rest = it.map(M::page_target);
+                    let rest = it.map(|to| M::page_target(cat, page, to));
                     vec![
-                        M::anchored(c, &c.anchors.interfaces[si][ii], &esc_opt::<M>(&i.name)),
+                        M::anchored(page, &c.anchors.interfaces[si][ii], &esc_opt::<M>(&i.name)),
                         dir,
                         ty,
                         desc,
@@ -300,13 +372,13 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
 
     let confs = p.configurations();
     if !confs.is_empty() {
-        M::heading(out, c, 2, "sec-configuration", lang.t("configuration"));
+        M::heading(out, page, 2, "sec-configuration", lang.t("configuration"));
         let rows: Vec<Vec<String>> = confs
             .iter()
             .enumerate()
             .map(|(k, cf)| {
                 vec![
-                    M::anchored(c, &c.anchors.configurations[k], &esc_opt::<M>(&cf.name)),
+                    M::anchored(page, &c.anchors.configurations[k], &esc_opt::<M>(&cf.name)),
                     esc_opt::<M>(&cf.type_),
                     esc_opt::<M>(&cf.default_value),
                     facts::configuration_unit(cf)
@@ -339,7 +411,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
         );
     }
 
-    M::heading(out, c, 2, "sec-lifecycle", lang.t("actions"));
+    M::heading(out, page, 2, "sec-lifecycle", lang.t("actions"));
     let rows: Vec<Vec<String>> = ActionKind::ALL
         .iter()
         .map(|&k| {
@@ -372,7 +444,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
     );
 
     if !p.parameters.is_empty() {
-        M::heading(out, c, 2, "sec-system-parameters", lang.t("parameters"));
+        M::heading(out, page, 2, "sec-system-parameters", lang.t("parameters"));
         let rows: Vec<Vec<String>> = p
             .parameters
             .iter()
@@ -394,7 +466,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
             .filter(|(_, f)| !f.is_empty())
             .collect();
         if !lf.is_empty() || !targets.is_empty() {
-            M::heading(out, c, 2, "sec-language", lang.t("language"));
+            M::heading(out, page, 2, "sec-language", lang.t("language"));
             if !lf.is_empty() {
                 facts_table::<M>(out, lang, &lf);
             }
@@ -410,7 +482,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
 
     let props = facts::component_properties(p, lang);
     if !props.is_empty() {
-        M::heading(out, c, 2, "sec-properties", lang.t("properties"));
+        M::heading(out, page, 2, "sec-properties", lang.t("properties"));
         let rows: Vec<Vec<String>> = props
             .iter()
             .map(|f| vec![M::esc(&f.label), M::esc(&f.value)])
@@ -420,13 +492,19 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
 
     let logs = facts::version_up_logs(p);
     if !logs.is_empty() {
-        M::heading(out, c, 2, "sec-version-history", lang.t("version_up_logs"));
+        M::heading(
+            out,
+            page,
+            2,
+            "sec-version-history",
+            lang.t("version_up_logs"),
+        );
         M::list(out, &logs);
     }
 
     let backups = facts::BackupRow::of(c, lang);
     if !backups.is_empty() {
-        M::heading(out, c, 2, "sec-backups", lang.t("backups"));
+        M::heading(out, page, 2, "sec-backups", lang.t("backups"));
         M::paragraph(out, &M::esc(lang.t("backups_intro")));
         let rows: Vec<Vec<String>> = backups
             .iter()
@@ -445,7 +523,7 @@ pub fn component_sections<M: Markup>(out: &mut String, cat: &Catalog, ci: usize,
 
     let extras = facts::extras(p);
     if !extras.is_empty() {
-        M::heading(out, c, 2, "sec-extra", lang.t("extra"));
+        M::heading(out, page, 2, "sec-extra", lang.t("extra"));
         facts_table::<M>(out, lang, &extras);
     }
 }

@@ -1,0 +1,199 @@
+//! Where each page of [`Catalog::pages`] is in each output, and how one page links another.
+//!
+//! The renderers never spell a page path or a Doxygen label: they ask for
+//! [`Catalog::href`] (a link from one page to another, to a row anchor if given),
+//! [`Page::anchor_in`] (the name an anchor is defined under) and [`Catalog::root_from`] (the
+//! way up to the output root, for the links of a README or a wiring diagram). Which page kinds
+//! an output writes at all is [`Output::carries`].
+
+use super::{Catalog, Output, Page, PageKind};
+
+/// mdBook's table of contents, beside the Markdown pages (no page of the catalogue itself).
+pub const MARKDOWN_SUMMARY: &str = "SUMMARY.md";
+
+/// The Markdown front page once more, under the name GitHub shows for a folder (not in the
+/// book: `SUMMARY.md` lists `index.md`).
+pub const MARKDOWN_README: &str = "README.md";
+
+impl Output {
+    /// Every output that writes pages.
+    pub const ALL: [Output; 3] = [Output::Html, Output::Markdown, Output::Doxygen];
+
+    /// The output's name, as `--format` spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Output::Html => "html",
+            Output::Markdown => "markdown",
+            Output::Doxygen => "doxygen",
+        }
+    }
+
+    /// Whether the output writes the pages of `kind`. The HTML site writes every page. Markdown
+    /// and Doxygen leave out the site's own machinery (the search page, the page a server shows
+    /// for a missing path) and, for now, the diagnostics page and the categories index: their
+    /// category pages hang from the front page (mdBook's `SUMMARY.md`, Doxygen's `\mainpage`).
+    pub fn carries(self, kind: PageKind) -> bool {
+        match self {
+            Output::Html => true,
+            Output::Markdown | Output::Doxygen => !matches!(
+                kind,
+                PageKind::Search
+                    | PageKind::NotFound
+                    | PageKind::Diagnostics
+                    | PageKind::Categories
+            ),
+        }
+    }
+}
+
+/// A Doxygen label from any slug or anchor: `[a-z0-9-]` → `[a-z0-9_]` (every other character
+/// becomes `_` as well).
+pub fn doxygen_label(s: &str) -> String {
+    s.chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
+}
+
+impl Page {
+    /// The last part of the stem: the slug of an entry page.
+    fn slug(&self) -> &str {
+        self.stem.rsplit('/').next().unwrap_or(&self.stem)
+    }
+
+    /// The page's Doxygen name (what `\page` declares and `\ref` names): `index` for the
+    /// `\mainpage`, `rtc_types` and the like for the index pages, a prefix and the slug for the
+    /// entry pages (`rtc_comp_<slug>`, `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`,
+    /// `rtc_vendor_<slug>`, `rtc_sys_<slug>`). Labels are globally unique and `[a-z0-9_]` only.
+    pub fn doxygen_label(&self) -> String {
+        let prefix = match self.kind {
+            PageKind::Index => return "index".into(),
+            PageKind::DataTypes => return "rtc_types".into(),
+            PageKind::Interfaces => return "rtc_interfaces".into(),
+            PageKind::Categories => return "rtc_categories".into(),
+            PageKind::Vendors => return "rtc_vendors".into(),
+            PageKind::Systems => return "rtc_systems".into(),
+            PageKind::Search => return "rtc_search".into(),
+            PageKind::Diagnostics => return "rtc_diagnostics".into(),
+            PageKind::NotFound => return "rtc_not_found".into(),
+            PageKind::Component => "rtc_comp_",
+            PageKind::DataType => "rtc_type_",
+            PageKind::Interface => "rtc_if_",
+            PageKind::Category => "rtc_cat_",
+            PageKind::Vendor => "rtc_vendor_",
+            PageKind::System => "rtc_sys_",
+        };
+        format!("{prefix}{}", doxygen_label(self.slug()))
+    }
+
+    /// The name anchor `anchor` (a section or row anchor, `[a-z0-9-]`) of this page is defined
+    /// under in `out`: as is in HTML and Markdown; `<page label>__<anchor label>` in Doxygen,
+    /// whose labels are global (a double underscore, which no slug holds, so a row anchor can
+    /// never equal another page's label). The `\mainpage`'s sections are `rtc_main__<anchor>`.
+    pub fn anchor_in(&self, anchor: &str, out: Output) -> String {
+        match out {
+            Output::Html | Output::Markdown => anchor.to_string(),
+            Output::Doxygen => {
+                let page = match self.kind {
+                    PageKind::Index => "rtc_main".to_string(),
+                    _ => self.doxygen_label(),
+                };
+                format!("{page}__{}", doxygen_label(anchor))
+            }
+        }
+    }
+}
+
+impl Catalog {
+    /// The way up from page `from` to the root of output `out`: `../` from a page one folder
+    /// down, nothing from a page at the root (Doxygen, whose links are labels, has none).
+    pub fn root_from(&self, from: &Page, out: Output) -> String {
+        match out {
+            Output::Doxygen => String::new(),
+            Output::Html | Output::Markdown => "../".repeat(from.path_in(out).matches('/').count()),
+        }
+    }
+
+    /// The target of a link on page `from` to page `to` (to its `anchor` if given) in output
+    /// `out`: a relative path in HTML and Markdown (`../vendors/acme.md#x`), a label for
+    /// Doxygen's `\ref` (`rtc_vendor_acme`, `rtc_comp_camera__port_image`).
+    pub fn href(&self, from: &Page, to: &Page, anchor: Option<&str>, out: Output) -> String {
+        match out {
+            Output::Doxygen => match anchor {
+                Some(a) => to.anchor_in(a, out),
+                None => to.doxygen_label(),
+            },
+            Output::Html | Output::Markdown => {
+                let mut href = self.root_from(from, out);
+                href.push_str(&to.path_in(out));
+                if let Some(a) = anchor {
+                    href.push('#');
+                    href.push_str(a);
+                }
+                href
+            }
+        }
+    }
+
+    /// The vendor facet of each component ([`Catalog::vendors`]), by position in
+    /// [`Catalog::components`], as [`Catalog::category_of_each`] for categories.
+    pub fn vendor_of_each(&self) -> Vec<usize> {
+        let mut of = vec![0; self.components.len()];
+        for (fi, f) in self.vendors.iter().enumerate() {
+            for ci in self.members(f) {
+                of[ci] = fi;
+            }
+        }
+        of
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn page(kind: PageKind, stem: &str) -> Page {
+        Page {
+            kind,
+            id: String::new(),
+            stem: stem.into(),
+            title: String::new(),
+        }
+    }
+
+    #[test]
+    fn links_go_up_to_the_root_and_down() {
+        let cat = Catalog::from_parts(
+            Vec::new(),
+            Vec::new(),
+            Vec::new(),
+            Vec::new(),
+            Vec::new(),
+            Vec::new(),
+            crate::idl::IdlSet::default(),
+        )
+        .expect("empty catalogue");
+        let comp = page(PageKind::Component, "components/camera");
+        let vendor = page(PageKind::Vendor, "vendors/acme-inc");
+        let index = page(PageKind::Index, "index");
+        let vendors = page(PageKind::Vendors, "vendors/index");
+        let md = Output::Markdown;
+        assert_eq!(cat.href(&comp, &vendor, None, md), "../vendors/acme-inc.md");
+        assert_eq!(cat.href(&index, &vendors, None, md), "vendors.md");
+        assert_eq!(cat.href(&vendor, &index, None, md), "../index.md");
+        assert_eq!(
+            cat.href(&vendor, &comp, Some("port-image"), Output::Html),
+            "../components/camera.html#port-image"
+        );
+        let dox = Output::Doxygen;
+        assert_eq!(cat.href(&comp, &vendor, None, dox), "rtc_vendor_acme_inc");
+        assert_eq!(cat.href(&comp, &index, None, dox), "index");
+        assert_eq!(cat.href(&comp, &vendors, None, dox), "rtc_vendors");
+        assert_eq!(
+            cat.href(&vendor, &comp, Some("port-image"), dox),
+            "rtc_comp_camera__port_image"
+        );
+        assert_eq!(index.anchor_in("catalogue", dox), "rtc_main__catalogue");
+        assert_eq!(cat.root_from(&comp, md), "../");
+        assert_eq!(cat.root_from(&index, md), "");
+    }
+}
