@@ -175,7 +175,7 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     }
     assert_eq!(svg.matches("class=\"connector data\"").count(), 1);
     assert_eq!(svg.matches("class=\"connector service\"").count(), 1);
-    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connectors, 1 service connectors.</figcaption>"));
+    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connectors, 1 service connectors. <a href=\"patrolsystem.svg\">Open the drawing on its own</a></figcaption>"), "{html}");
     // Configuration used next to the defaults: differences marked, values checked.
     let conf = section(&html, "configuration");
     assert!(
