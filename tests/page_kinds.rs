@@ -349,3 +349,42 @@ fn text_renderers_format_no_page_path() {
         found.join("\n")
     );
 }
+
+/// "Connects to" says the same in every output: the ports of *other* components, grouped by
+/// component (a filter whose in- and out-port carry the same type is not its own peer).
+#[test]
+fn connects_to_is_the_same_in_every_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = common::rtcdoc(
+        &[
+            "build",
+            common::root().join("examples").to_str().unwrap(),
+            "-o",
+            "out",
+            "-f",
+            "html,markdown,doxygen",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let read = |p: &str| std::fs::read_to_string(dir.path().join("out").join(p)).unwrap();
+    let html = read("html/components/imagefilter.html");
+    let md = read("markdown/components/imagefilter.md");
+    let dox = read("doxygen/components/imagefilter.dox");
+    assert!(html.contains(">UsbCamera · image</a>"), "{html}");
+    assert!(
+        md.contains("[UsbCamera · image](../components/usbcamera.md#port-image)"),
+        "{md}"
+    );
+    assert!(dox.contains("\"UsbCamera · image\""), "{dox}");
+    for (name, text) in [("html", &html), ("markdown", &md), ("doxygen", &dox)] {
+        assert!(
+            !text.contains("ImageFilter · dst"),
+            "{name} lists the component's own port"
+        );
+        assert!(
+            !text.contains("ImageFilter / dst"),
+            "{name} lists the component's own port"
+        );
+    }
+}

@@ -37,7 +37,6 @@ use rayon::prelude::*;
 use std::fmt::Write as _;
 
 /// At most this many "connects to" peers are listed per port (shared with Markdown).
-pub use super::text::PEER_CAP;
 
 /// Writes the `.dox` pages and the `Doxyfile`.
 pub struct DoxygenRenderer;

@@ -651,3 +651,43 @@ impl BackupRow {
             .collect()
     }
 }
+
+/// At most this many peer components are named in a port's "connects to" answer, in every
+/// output; the rest are counted and linked to the type or interface page.
+pub const PEER_COMPONENTS_CAP: usize = 5;
+/// At most this many ports of one peer component are named.
+pub const PEER_PORTS_SHOWN: usize = 3;
+
+/// The peers of a port of component `ci` as every output shows them: the ports of *other*
+/// components (`all`, in catalogue order, so sorted by component) grouped by component, and
+/// the number of groups (components) in all. A component's own ports are never its peers.
+pub fn peer_groups<R>(
+    ci: usize,
+    all: &[R],
+    component: impl Fn(&R) -> usize,
+) -> (Vec<(usize, Vec<&R>)>, usize) {
+    let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
+    for r in all.iter().filter(|r| component(r) != ci) {
+        match groups.last_mut() {
+            Some((c, list)) if *c == component(r) => list.push(r),
+            _ => groups.push((component(r), vec![r])),
+        }
+    }
+    let total = groups.len();
+    groups.truncate(PEER_COMPONENTS_CAP);
+    (groups, total)
+}
+
+/// `Camera · image, depth, +2`: a peer component and up to [`PEER_PORTS_SHOWN`] of its ports.
+pub fn peer_text(component: &str, ports: &[&str], sep: &str) -> String {
+    let mut names: Vec<String> = ports
+        .iter()
+        .take(PEER_PORTS_SHOWN)
+        .map(|p| p.to_string())
+        .collect();
+    let rest = ports.len().saturating_sub(PEER_PORTS_SHOWN);
+    if rest > 0 {
+        names.push(format!("+{rest}"));
+    }
+    format!("{component}{sep}{}", names.join(", "))
+}

@@ -32,7 +32,6 @@ use rayon::prelude::*;
 use std::fmt::Write as _;
 
 /// At most this many "connects to" peers are listed per port (shared with Doxygen).
-pub use super::text::PEER_CAP;
 
 /// Writes the Markdown pages.
 pub struct MarkdownRenderer;

@@ -9,10 +9,6 @@ use crate::catalog::{Catalog, InterfaceRef, Output, Page, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self, ActionKind, Direction, PortDirection};
 
-/// At most this many "connects to" peers are listed per port; the rest are on the type or
-/// interface page.
-pub const PEER_CAP: usize = 12;
-
 /// The syntax of one text output format.
 pub trait Markup {
     /// The output whose pages this syntax writes: links come from [`Catalog::href`] for it.
@@ -43,45 +39,54 @@ pub trait Markup {
     }
 }
 
-/// A data port peer as (text, target), linked from page `from`.
-pub fn port_peer<M: Markup>(cat: &Catalog, from: &Page, r: &PortRef) -> Option<(String, String)> {
+/// One port of a peer component: its component, the component's name, the port's label and
+/// the link target from the page being written.
+pub struct PeerPort {
+    pub component: usize,
+    pub component_name: String,
+    pub port: String,
+    pub target: String,
+}
+
+/// A data port peer, linked from page `from`.
+pub fn port_peer<M: Markup>(cat: &Catalog, from: &Page, r: &PortRef) -> Option<PeerPort> {
     let (ci, port) = cat.resolve_port(r)?;
     let pc = &cat.components[ci];
-    let pn = model::non_empty(&pc.profile.data_ports[port].name).unwrap_or("");
-    Some((
-        format!("{} / {pn}", pc.profile.name()),
-        cat.href(
+    Some(PeerPort {
+        component: ci,
+        component_name: pc.profile.name().to_string(),
+        port: model::non_empty(&pc.profile.data_ports[port].name)
+            .unwrap_or("")
+            .to_string(),
+        target: cat.href(
             from,
             cat.component_page(ci),
             Some(&pc.anchors.data_ports[port]),
             M::OUTPUT,
         ),
-    ))
+    })
 }
 
-/// A service interface peer as (text, target), linked from page `from`.
-pub fn iface_peer<M: Markup>(
-    cat: &Catalog,
-    from: &Page,
-    r: &InterfaceRef,
-) -> Option<(String, String)> {
+/// A service interface peer (`port / interface`), linked from page `from`.
+pub fn iface_peer<M: Markup>(cat: &Catalog, from: &Page, r: &InterfaceRef) -> Option<PeerPort> {
     let (ci, port, interface) = cat.resolve_interface(r)?;
     let pc = &cat.components[ci];
     let sp = &pc.profile.service_ports[port];
-    let iname = model::non_empty(&sp.interfaces[interface].name).unwrap_or("");
-    Some((
-        format!(
-            "{} / {} / {iname}",
-            pc.profile.name(),
-            model::non_empty(&sp.name).unwrap_or("")
+    Some(PeerPort {
+        component: ci,
+        component_name: pc.profile.name().to_string(),
+        port: format!(
+            "{} / {}",
+            model::non_empty(&sp.name).unwrap_or(""),
+            model::non_empty(&sp.interfaces[interface].name).unwrap_or("")
         ),
-        cat.href(
+        target: cat.href(
             from,
             cat.component_page(ci),
             Some(&pc.anchors.interfaces[port][interface]),
             M::OUTPUT,
         ),
-    ))
+    })
 }
 
 /// Facts as a two-column table (label, value).
@@ -129,21 +134,30 @@ pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
     out
 }
 
-/// Links to up to [`PEER_CAP`] peers, given as (text, target), then "… +N more" pointing at
-/// `rest` (the type or interface page), if there is one.
+/// The "connects to" cell of a port of component `ci`, as the HTML site has it
+/// ([`facts::peer_groups`]): the other components' ports grouped by component, one link each
+/// (to its first port), at most [`facts::PEER_COMPONENTS_CAP`] components, then a link to the
+/// type or interface page (`rest`) saying how many more there are.
 pub fn peers_cell<M: Markup>(
-    items: Vec<(String, String)>,
+    ci: usize,
+    items: Vec<PeerPort>,
     rest: Option<String>,
+    more_key: &str,
     lang: Lang,
 ) -> String {
-    let total = items.len();
-    let mut parts: Vec<String> = items
-        .into_iter()
-        .take(PEER_CAP)
-        .map(|(text, target)| M::link(&text, &target))
+    let (groups, total) = facts::peer_groups(ci, &items, |p| p.component);
+    let mut parts: Vec<String> = groups
+        .iter()
+        .map(|(_, list)| {
+            let ports: Vec<&str> = list.iter().map(|p| p.port.as_str()).collect();
+            M::link(
+                &facts::peer_text(&list[0].component_name, &ports, " · "),
+                &list[0].target,
+            )
+        })
         .collect();
-    if total > PEER_CAP {
-        let more = format!("… +{} {}", total - PEER_CAP, lang.t("fact_more"));
+    if total > groups.len() {
+        let more = format!("+{} — {}", total - groups.len(), lang.t(more_key));
         parts.push(match rest {
             Some(target) => M::link(&more, &target),
             None => M::esc(&more),
@@ -266,7 +280,7 @@ pub fn component_sections<M: Markup>(
                     .as_ref()
                     .map(|d| esc_opt::<M>(&d.description))
                     .unwrap_or_default();
-                let peers: Vec<(String, String)> = cat
+                let peers: Vec<PeerPort> = cat
                     .data_port_peers(ci, pi)
                     .iter()
                     .filter_map(|r| port_peer::<M>(cat, page, r))
@@ -278,7 +292,7 @@ pub fn component_sections<M: Markup>(
                     ty,
                     desc,
                     facts_cell::<M>(&facts::data_port(port, lang)),
-                    peers_cell::<M>(peers, rest, lang),
+                    peers_cell::<M>(ci, peers, rest, "more_on_type_page", lang),
                 ]
             })
             .collect();
@@ -338,7 +352,7 @@ pub fn component_sections<M: Markup>(
                         .as_ref()
                         .map(|d| esc_opt::<M>(&d.description))
                         .unwrap_or_default();
-                    let peers: Vec<(String, String)> = cat
+                    let peers: Vec<PeerPort> = cat
                         .interface_peers(ci, si, ii)
                         .iter()
                         .filter_map(|r| iface_peer::<M>(cat, page, r))
@@ -350,7 +364,7 @@ pub fn component_sections<M: Markup>(
                         ty,
                         desc,
                         facts_cell::<M>(&facts::service_interface(i, lang)),
-                        peers_cell::<M>(peers, rest, lang),
+                        peers_cell::<M>(ci, peers, rest, "more_on_interface_page", lang),
                     ]
                 })
                 .collect();

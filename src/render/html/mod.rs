@@ -35,10 +35,10 @@ use std::path::{Path, PathBuf};
 
 /// At most this many components are listed under "connects to" per port; the rest are on the
 /// type or interface page (a common type can be used by hundreds of components).
-pub const PEER_COMPONENTS_CAP: usize = 5;
+pub use super::facts::PEER_COMPONENTS_CAP;
 
 /// Port names shown per connected component (then "+N").
-pub const PEER_PORTS_SHOWN: usize = 3;
+pub use super::facts::PEER_PORTS_SHOWN;
 
 /// Above this many components the index page lists categories with counts instead of every
 /// component (each category page still lists all of its components).
@@ -473,32 +473,15 @@ impl<'a> Site<'a> {
         type_ref: &Option<PortTypeRef>,
         more_key: &str,
     ) -> (Vec<Link>, Option<Link>) {
-        let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
-        for r in all.iter().filter(|r| component(r) != ci) {
-            match groups.last_mut() {
-                Some((c, list)) if *c == component(r) => list.push(r),
-                _ => groups.push((component(r), vec![r])),
-            }
-        }
-        let total = groups.len();
+        let (groups, total) = facts::peer_groups(ci, all, component);
         let peers = groups
             .iter()
-            .take(PEER_COMPONENTS_CAP)
             .filter_map(|(_, list)| {
                 let uses: Vec<PortUse> = list.iter().filter_map(|r| link(r)).collect();
                 let first = uses.first()?;
-                let mut names: Vec<&str> = uses
-                    .iter()
-                    .take(PEER_PORTS_SHOWN)
-                    .map(|u| u.port.text.as_str())
-                    .collect();
-                let rest = uses.len().saturating_sub(PEER_PORTS_SHOWN);
-                let more = format!("+{rest}");
-                if rest > 0 {
-                    names.push(&more);
-                }
+                let names: Vec<&str> = uses.iter().map(|u| u.port.text.as_str()).collect();
                 Some(Link {
-                    text: format!("{} · {}", first.component.text, names.join(", ")),
+                    text: facts::peer_text(&first.component.text, &names, " · "),
                     href: first.port.href.clone(),
                 })
             })
