@@ -36,8 +36,6 @@ use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 
-/// At most this many "connects to" peers are listed per port (shared with Markdown).
-
 /// Writes the `.dox` pages and the `Doxyfile`.
 pub struct DoxygenRenderer;
 

@@ -31,8 +31,6 @@ use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
 
-/// At most this many "connects to" peers are listed per port (shared with Doxygen).
-
 /// Writes the Markdown pages.
 pub struct MarkdownRenderer;
 
