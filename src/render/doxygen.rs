@@ -51,7 +51,7 @@ macro_rules! d {
 /// Bytes after which [`push_escaped_chars`] may write something other than the byte itself:
 /// the always-escaped characters, `#` and `:` (escaped in full mode), `-` (dash runs), and
 /// control characters (ASCII, DEL, and 0xC2, the lead byte of U+0080–U+009F).
-static DOX_SPECIAL: [bool; 256] = super::byte_set(true, b"\\@<>&%$\"#:-\x7f\xc2");
+static DOX_SPECIAL: [bool; 256] = super::byte_set(true, b"\\@<>&%$\"#:-`\x7f\xc2");
 
 /// Whether `s` comes out of [`push_escaped_chars`] unchanged, decided bytewise: true for most
 /// profile text (a single `-` or `:` is plain; two in a row are not).
@@ -73,9 +73,23 @@ fn push_escaped(s: &str, out: &mut String, full: bool) {
 
 fn push_escaped_chars(s: &str, out: &mut String, full: bool) {
     let chars: Vec<char> = s.chars().collect();
+    // Code spans become `<tt>` (Markdown is off in the Doxyfile): code, as the site shows it.
+    let spans = super::text::code_spans(&chars, true);
+    let mut span = spans.iter().peekable();
     let mut i = 0;
     while i < chars.len() {
         let ch = chars[i];
+        if let Some(&&(start, end)) = span.peek() {
+            if i == start {
+                out.push_str("<tt>");
+                let inner: String = chars[start + 1..end].iter().collect();
+                push_escaped_chars(&inner, out, full);
+                out.push_str("</tt>");
+                span.next();
+                i = end + 1;
+                continue;
+            }
+        }
         match ch {
             '\\' | '@' | '<' | '>' | '&' | '%' | '$' | '"' => {
                 out.push('\\');

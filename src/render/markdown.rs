@@ -102,7 +102,23 @@ fn escape_line_chars(line: &str, out: &mut String) {
     // on by default) turns `--`, `---` into dashes and `...` into an ellipsis; a backslash before
     // the second hyphen or the third dot keeps the text as written, for 0.4 alike.
     let (mut hyphens, mut dots) = (0, 0);
+    // Code spans are kept as code spans (their content is literal in Markdown).
+    let spans = super::text::code_spans(&chars, false);
+    let mut span = spans.iter().peekable();
+    let mut skip_to = 0;
     for (i, &ch) in chars.iter().enumerate() {
+        if i < skip_to {
+            continue;
+        }
+        if let Some(&&(start, end)) = span.peek() {
+            if i == start {
+                out.extend(&chars[start..=end]);
+                skip_to = end + 1;
+                span.next();
+                (hyphens, dots) = (0, 0);
+                continue;
+            }
+        }
         let at_marker = (i == 0 && matches!(ch, '-' | '+' | '=')) || (ordered && i == digits);
         let smart = (ch == '-' && hyphens == 1) || (ch == '.' && dots == 2);
         (hyphens, dots) = match ch {

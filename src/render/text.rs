@@ -9,6 +9,31 @@ use crate::catalog::{Catalog, InterfaceRef, Output, Page, PortRef};
 use crate::i18n::Lang;
 use crate::model::{self, ActionKind, Direction, PortDirection};
 
+/// The code spans of a line of profile text, as HTML renders them (Markdown's single-backtick
+/// spans): `(start, end)` char indices of each opening and closing backtick, the content
+/// between them not blank, and free of `|` unless `pipes` (a Markdown table cell would split
+/// at it). Every output shows them as code, so a profile's `` `count` `` reads the same
+/// everywhere.
+pub fn code_spans(chars: &[char], pipes: bool) -> Vec<(usize, usize)> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        if chars[i] == '`' {
+            if let Some(len) = chars[i + 1..].iter().position(|&c| c == '`') {
+                let content = &chars[i + 1..i + 1 + len];
+                if (pipes || !content.contains(&'|')) && content.iter().any(|c| !c.is_whitespace())
+                {
+                    out.push((i, i + 1 + len));
+                    i += len + 2;
+                    continue;
+                }
+            }
+        }
+        i += 1;
+    }
+    out
+}
+
 /// The syntax of one text output format.
 pub trait Markup {
     /// The output whose pages this syntax writes: links come from [`Catalog::href`] for it.
