@@ -488,9 +488,7 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     std::thread::scope(|scope| -> Result<()> {
         let writer = WriterThread::start(scope, &staging);
         for f in &formats {
-            let renderer = f.renderer().with_context(|| {
-                format!("the {} format is not available in this version", f.name())
-            })?;
+            let renderer = f.renderer();
             let written = if formats.len() == 1 {
                 renderer.render(&ctx, &writer)?
             } else {

@@ -1,9 +1,10 @@
 //! rtcdoc: documentation for OpenRTM RT-Component profiles.
 //!
-//! Pipeline: files → [`walk`] → [`parse`] → [`model::Profile`] → [`catalog::Catalog`]
-//! (cross-references) → [`render`]ers (HTML, Markdown, Doxygen, JSON), driven by [`build`].
-//! RT System profiles are read by [`parse::rts`] into [`system::RtSystem`] (not yet in the
-//! catalogue).
+//! Pipeline: files → [`walk`] → [`parse`] → documents (component profiles [`model::Profile`],
+//! RT Systems [`system::RtSystem`], IDL files [`idl`]) → [`catalog::Catalog`] (entries,
+//! cross-references, RTCBuilder backups, the page list) → [`check`] / [`diff`] →
+//! [`render`]ers (HTML, Markdown, Doxygen, JSON), driven by [`build`] (and [`incremental`] for
+//! `serve`). `ARCHITECTURE.md` is the map.
 
 #[cfg(feature = "alloc-stats")]
 pub mod alloc_stats;

@@ -132,13 +132,13 @@ impl Format {
         }
     }
 
-    /// The renderer for this format, or `None` when this build of rtcdoc does not have it yet.
-    pub fn renderer(self) -> Option<Box<dyn Renderer>> {
+    /// The renderer for this format.
+    pub fn renderer(self) -> Box<dyn Renderer> {
         match self {
-            Format::Html => Some(Box::new(html::HtmlRenderer)),
-            Format::Json => Some(Box::new(json::JsonRenderer)),
-            Format::Markdown => Some(Box::new(markdown::MarkdownRenderer)),
-            Format::Doxygen => Some(Box::new(doxygen::DoxygenRenderer)),
+            Format::Html => Box::new(html::HtmlRenderer),
+            Format::Json => Box::new(json::JsonRenderer),
+            Format::Markdown => Box::new(markdown::MarkdownRenderer),
+            Format::Doxygen => Box::new(doxygen::DoxygenRenderer),
         }
     }
 }
