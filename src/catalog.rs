@@ -22,6 +22,7 @@
 //! document is a reader (in `parse`), an entry kind with its id here, a [`PageKind`], and views.
 
 pub mod backups;
+pub mod dataflow;
 pub mod pages;
 pub mod systems;
 
@@ -432,6 +433,8 @@ pub enum PageKind {
     /// The index of RT Systems (only when there are some).
     Systems,
     System,
+    /// Which groups of components can feed which ([`dataflow`]).
+    DataFlow,
 }
 
 /// One page of the documentation: the same list for every output (HTML, Markdown, Doxygen),
@@ -1060,6 +1063,7 @@ impl Catalog {
             site(PageKind::Search, "search"),
             site(PageKind::Diagnostics, "diagnostics"),
             site(PageKind::NotFound, "404"),
+            site(PageKind::DataFlow, "dataflow"),
         ];
         // One kind of entry: its index page (when it has one), then a page per entry, as
         // (id, slug, title) in the entries' order; gives where the entries' pages start.

@@ -190,6 +190,7 @@ fn affected(before: &Before, new: &Catalog, changed: &[String]) -> Option<BTreeS
         PageKind::DataTypes,
         PageKind::Interfaces,
         PageKind::Diagnostics,
+        PageKind::DataFlow,
     ]
     .into_iter()
     .map(|k| new.site_page(k).path("html"))

@@ -210,8 +210,12 @@ struct GraphArgs {
     input: Option<PathBuf>,
     /// The system to draw, by name, page slug or input-relative file path; needed when the
     /// input holds several.
-    #[arg(long, value_name = "NAME")]
+    #[arg(long, value_name = "NAME", conflicts_with = "dataflow")]
     system: Option<String>,
+    /// Instead of a system: the catalogue's data flow between its categories or vendors (which
+    /// groups can feed which, each flow with its port pairs), every group and flow.
+    #[arg(long, value_enum, value_name = "GROUPING")]
+    dataflow: Option<DataflowGrouping>,
     /// Output format: dot (Graphviz), mermaid (`flowchart LR`) or svg (the site's drawing).
     #[arg(short, long, value_enum, default_value = "dot")]
     format: GraphFormat,
@@ -220,6 +224,12 @@ struct GraphArgs {
     output: Option<PathBuf>,
     #[command(flatten)]
     input_args: InputArgs,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum DataflowGrouping {
+    Category,
+    Vendor,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -675,6 +685,20 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
     // A folder holding only a system profile is a fine input here.
     opts.allow_empty = true;
     let loaded = build::load(&input, &opts)?;
+    let lang = file.config.language.unwrap_or_default();
+    if let Some(grouping) = args.dataflow {
+        use rtcdoc::catalog::dataflow::Grouping;
+        let (grouping, key) = match grouping {
+            DataflowGrouping::Category => (Grouping::Category, "dataflow_by_category"),
+            DataflowGrouping::Vendor => (Grouping::Vendor, "dataflow_by_vendor"),
+        };
+        let rows = rtcdoc::render::facts::dataflow_rows(&loaded.catalog, grouping, lang);
+        // Every group and flow (an export is for post-processing), no links.
+        let (inst, conns, _, _) =
+            rtcdoc::render::wiring::dataflow_wiring(&rows, lang, &|_| String::new(), None);
+        let name = format!("{} — {}", lang.t("dataflow"), lang.t(key));
+        return write_graph(args, &name, &name, &inst, &conns);
+    }
     let systems = &loaded.catalog.systems;
     let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
         Some(want) => systems
@@ -708,17 +732,29 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
             names()
         ),
     };
-    let lang = file.config.language.unwrap_or_default();
     let (inst, conns) = rtcdoc::render::wiring::system_wiring(&loaded.catalog, s, lang, "");
     let name = s.profile.name();
+    write_graph(
+        args,
+        name,
+        &format!("{} {name}", lang.t("sys_wiring")),
+        &inst,
+        &conns,
+    )
+}
+
+/// Writes a graph (a system's wiring, the data flow) in the chosen format.
+fn write_graph(
+    args: &GraphArgs,
+    name: &str,
+    title: &str,
+    inst: &[rtcdoc::render::wiring::WireInstance],
+    conns: &[rtcdoc::render::wiring::WireConnector],
+) -> anyhow::Result<ExitCode> {
     let text = match args.format {
-        GraphFormat::Dot => rtcdoc::render::wiring::to_dot(name, &inst, &conns),
-        GraphFormat::Mermaid => rtcdoc::render::wiring::to_mermaid(name, &inst, &conns),
-        GraphFormat::Svg => rtcdoc::render::html::standalone_system_diagram(
-            &format!("{} {name}", lang.t("sys_wiring")),
-            &inst,
-            &conns,
-        ),
+        GraphFormat::Dot => rtcdoc::render::wiring::to_dot(name, inst, conns),
+        GraphFormat::Mermaid => rtcdoc::render::wiring::to_mermaid(name, inst, conns),
+        GraphFormat::Svg => rtcdoc::render::html::standalone_system_diagram(title, inst, conns),
     };
     match &args.output {
         Some(path) => std::fs::write(path, text.as_bytes())

@@ -189,6 +189,35 @@ fn graph(input: &Path, system: &Option<String>, format: &str, out: &Path) {
     );
 }
 
+/// `rtcdoc graph --dataflow category|vendor -f FORMAT` of the example and, when present, the
+/// corpus: the files written.
+fn dataflow_exports(format: &str, dir: &Path) -> Vec<std::path::PathBuf> {
+    let mut inputs = vec![common::root().join("examples")];
+    inputs.extend(common::corpus());
+    let mut out = Vec::new();
+    for (k, input) in inputs.iter().enumerate() {
+        for grouping in ["category", "vendor"] {
+            let f = dir.join(format!("dataflow-{k}-{grouping}.{format}"));
+            let o = common::rtcdoc(
+                &[
+                    "graph",
+                    input.to_str().unwrap(),
+                    "--dataflow",
+                    grouping,
+                    "-f",
+                    format,
+                    "-o",
+                    f.to_str().unwrap(),
+                ],
+                &common::root(),
+            );
+            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            out.push(f);
+        }
+    }
+    out
+}
+
 #[test]
 fn graphviz_dot_accepts_every_dot_export() {
     if !common::tool_available("dot") && !Path::new("/usr/bin/dot").exists() {
@@ -208,6 +237,21 @@ fn graphviz_dot_accepts_every_dot_export() {
         assert!(
             o.status.success() && o.stdout.starts_with(b"<?xml"),
             "dot rejects {input:?} {system:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        n += 1;
+    }
+    for f in dataflow_exports("dot", dir.path()) {
+        let text = std::fs::read_to_string(&f).unwrap();
+        assert!(text.contains("port pairs"), "{text}");
+        let o = std::process::Command::new("dot")
+            .arg("-Tsvg")
+            .arg(&f)
+            .output()
+            .expect("run dot");
+        assert!(
+            o.status.success() && o.stdout.starts_with(b"<?xml"),
+            "dot rejects {f:?}: {}",
             String::from_utf8_lossy(&o.stderr)
         );
         n += 1;
@@ -242,6 +286,7 @@ fn mermaids_parser_accepts_every_mermaid_export_and_markdown_block() {
         graph(input, system, "mermaid", &f);
         files.push(f);
     }
+    files.extend(dataflow_exports("mermaid", dir.path()));
     // The Markdown output with `[markdown] diagrams = "mermaid"`.
     let cfg = dir.path().join("rtcdoc.toml");
     std::fs::write(&cfg, "[markdown]\ndiagrams = \"mermaid\"\n").unwrap();

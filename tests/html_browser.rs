@@ -262,6 +262,7 @@ const PAGE_KINDS: &[&str] = &[
     "search.html",
     "no/such/deep/page.html",
     "diagnostics.html",
+    "dataflow.html",
     "components/",
     "types/index.html",
     "types/",

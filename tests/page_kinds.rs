@@ -138,6 +138,7 @@ fn every_page_is_written_in_every_output_that_carries_its_kind() {
         "Vendor",
         "Systems",
         "System",
+        "DataFlow",
     ] {
         assert!(kinds_seen.contains(kind), "no {kind} page in the inputs");
     }
@@ -161,7 +162,7 @@ fn the_text_outputs_leave_out_only_the_listed_kinds() {
         let listed: BTreeSet<String> = NOT_IN_TEXT.iter().map(|k| format!("{k:?}")).collect();
         assert_eq!(left_out, listed, "page kinds {} leaves out", o.name());
     }
-    assert!(Output::ALL.len() == 3 && kinds.len() == 15);
+    assert!(Output::ALL.len() == 3 && kinds.len() == 16);
     for page in cat.pages() {
         assert!(Output::Html.carries(page.kind), "html writes every page");
     }
@@ -387,4 +388,50 @@ fn connects_to_is_the_same_in_every_output() {
             "{name} lists the component's own port"
         );
     }
+}
+
+/// The data-flow page in every output: which categories and vendors can feed which, with the
+/// port pairs counted as the catalogue has them.
+#[test]
+fn the_data_flow_page_counts_port_pairs_between_groups() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = common::rtcdoc(
+        &[
+            "build",
+            common::root().join("examples").to_str().unwrap(),
+            "-o",
+            "out",
+            "-f",
+            "html,markdown,doxygen",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let read = |p: &str| std::fs::read_to_string(dir.path().join("out").join(p)).unwrap();
+    let (html, md, dox) = (
+        read("html/dataflow.html"),
+        read("markdown/dataflow.md"),
+        read("doxygen/dataflow.dox"),
+    );
+    // UsbCamera (Sensor) → ImageFilter and ObjectDetector (ImageProcessing): 2 CameraImage pairs.
+    assert!(
+        html.contains("<tr><th scope=\"row\"><a href=\"categories/sensor.html\">Sensor</a></th><td data-label=\"To\"><a href=\"categories/imageprocessing.html\">ImageProcessing</a></td><td class=\"num\" data-label=\"Port pairs\">2</td>"),
+        "{html}"
+    );
+    assert!(
+        md.contains("| [Sensor](categories/sensor.md) | [ImageProcessing](categories/imageprocessing.md) | 2 | [RTC::CameraImage](types/rtc-cameraimage.md) |"),
+        "{md}"
+    );
+    assert!(dox.contains("\\page rtc_dataflow "), "{dox}");
+    assert!(dox.contains("\\ref rtc_cat_sensor \"Sensor\""), "{dox}");
+    // The drawing: one box per group, connectors between groups, links to the group pages.
+    let svg = html.split("<svg").nth(1).expect("a drawing");
+    assert!(svg.contains("href=\"categories/sensor.html\""), "{svg}");
+    assert!(
+        svg.matches("class=\"connector data\"").count() >= 8,
+        "{svg}"
+    );
+    // Linked from every page's navigation and the Markdown front page and summary.
+    assert!(read("html/index.html").contains("<a href=\"dataflow.html\">Data flow</a>"));
+    assert!(read("markdown/SUMMARY.md").contains("[Data flow](dataflow.md)"));
 }

@@ -75,6 +75,7 @@ impl Page {
             PageKind::Search => return "rtc_search".into(),
             PageKind::Diagnostics => return "rtc_diagnostics".into(),
             PageKind::NotFound => return "rtc_not_found".into(),
+            PageKind::DataFlow => return "rtc_dataflow".into(),
             PageKind::Component => "rtc_comp_",
             PageKind::DataType => "rtc_type_",
             PageKind::Interface => "rtc_if_",

@@ -597,6 +597,11 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
             cat.systems.len()
         );
     }
+    d!(
+        out,
+        "<li>\\subpage {}</li>",
+        target(cat, cat.site_page(PageKind::DataFlow))
+    );
     d!(out, "</ul>");
     d!(out);
     d!(
@@ -672,6 +677,22 @@ fn vendor_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
         &component_cols(lang),
         &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "ref"),
     );
+    out
+}
+
+/// `dataflow.dox`: which groups of components can feed which.
+fn dataflow_page(cat: &Catalog, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::DataFlow);
+    let mut out = String::new();
+    d!(
+        out,
+        "\\page {} {}",
+        target(cat, page),
+        title(lang.t("dataflow"))
+    );
+    d!(out);
+    crumb_home(&mut out, cat);
+    super::text::dataflow_body::<Dox>(&mut out, cat, page, lang);
     out
 }
 
@@ -877,6 +898,10 @@ fn other_pages(
     out.push((
         cat.site_page(PageKind::Vendors).path_in(DOX),
         vendor_index(cat, lang),
+    ));
+    out.push((
+        cat.site_page(PageKind::DataFlow).path_in(DOX),
+        dataflow_page(cat, lang),
     ));
     out.par_extend(
         (0..cat.vendors.len())

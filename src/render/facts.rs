@@ -691,3 +691,75 @@ pub fn peer_text(component: &str, ports: &[&str], sep: &str) -> String {
     }
     format!("{component}{sep}{}", names.join(", "))
 }
+
+/// The data-flow page's sections, in order: (grouping, anchor, heading label).
+pub const DATAFLOW_SECTIONS: [(crate::catalog::dataflow::Grouping, &str, &str); 2] = [
+    (
+        crate::catalog::dataflow::Grouping::Category,
+        "by-category",
+        "dataflow_by_category",
+    ),
+    (
+        crate::catalog::dataflow::Grouping::Vendor,
+        "by-vendor",
+        "dataflow_by_vendor",
+    ),
+];
+
+/// At most this many data types are named on a row of the data-flow table; the rest counted.
+pub const DATAFLOW_TYPES_SHOWN: usize = 3;
+
+/// One row of a data-flow table: from which group to which, how many port pairs, over which
+/// data types (the first [`DATAFLOW_TYPES_SHOWN`]) and how many more types.
+pub struct FlowRow<'a> {
+    /// The group's name as shown (the empty category or vendor has a translated name).
+    pub from: (String, &'a crate::catalog::Page),
+    pub to: (String, &'a crate::catalog::Page),
+    pub pairs: u64,
+    pub types: Vec<(&'a str, &'a crate::catalog::Page)>,
+    pub more_types: usize,
+}
+
+/// The rows of the data-flow table of `grouping`, the most port pairs first.
+pub fn dataflow_rows(
+    cat: &crate::catalog::Catalog,
+    grouping: crate::catalog::dataflow::Grouping,
+    lang: Lang,
+) -> Vec<FlowRow<'_>> {
+    use crate::catalog::dataflow::Grouping;
+    let shown = |name: &str, empty: &str| {
+        if name.is_empty() {
+            lang.t(empty).to_string()
+        } else {
+            name.to_string()
+        }
+    };
+    let group = |fi: usize| match grouping {
+        Grouping::Category => (
+            shown(&cat.categories[fi].name, "fact_uncategorized"),
+            cat.category_page(fi),
+        ),
+        Grouping::Vendor => (
+            shown(&cat.vendors[fi].name, "no_vendor"),
+            cat.vendor_page(fi),
+        ),
+    };
+    let mut rows: Vec<FlowRow<'_>> = cat
+        .data_flow(grouping)
+        .into_iter()
+        .map(|e| FlowRow {
+            from: group(e.from),
+            to: group(e.to),
+            pairs: e.pairs,
+            more_types: e.types.len().saturating_sub(DATAFLOW_TYPES_SHOWN),
+            types: e
+                .types
+                .iter()
+                .take(DATAFLOW_TYPES_SHOWN)
+                .map(|&ti| (cat.data_types[ti].name.as_str(), cat.data_type_page(ti)))
+                .collect(),
+        })
+        .collect();
+    rows.sort_by_key(|r| std::cmp::Reverse(r.pairs));
+    rows
+}

@@ -555,6 +555,15 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
         );
         w!(out);
     }
+    w!(
+        out,
+        "{}",
+        link(
+            lang.t("dataflow"),
+            &index_href(cat, page, PageKind::DataFlow)
+        )
+    );
+    w!(out);
     heading(&mut out, 2, "sec-components", lang.t("components"));
     for (fi, f) in cat.categories.iter().enumerate() {
         w!(
@@ -769,6 +778,25 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
             summary_item(&mut out, cat, 1, &page.title, page);
         }
     }
+    summary_item(
+        &mut out,
+        cat,
+        0,
+        lang.t("dataflow"),
+        index(PageKind::DataFlow),
+    );
+    out
+}
+
+/// `dataflow.md`: which groups of components can feed which.
+fn dataflow_page(cat: &Catalog, title: &str, lang: Lang) -> String {
+    let page = cat.site_page(PageKind::DataFlow);
+    let mut out = String::new();
+    w!(out, "# {}", inline(lang.t("dataflow")));
+    w!(out);
+    w!(out, "{}", link(title, &home(cat, page)));
+    w!(out);
+    super::text::dataflow_body::<Md>(&mut out, cat, page, lang);
     out
 }
 
@@ -930,6 +958,10 @@ fn other_pages(
         (
             cat.site_page(PageKind::Vendors).path_in(MD),
             vendor_index_page(cat, title, lang),
+        ),
+        (
+            cat.site_page(PageKind::DataFlow).path_in(MD),
+            dataflow_page(cat, title, lang),
         ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {

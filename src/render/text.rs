@@ -636,3 +636,48 @@ pub fn interface_index_table<M: Markup>(
         &rows,
     );
 }
+
+/// The data-flow page's body for Markdown and Doxygen: the explanation, then for categories and
+/// vendors a table of every flow between groups (the most port pairs first).
+pub fn dataflow_body<M: Markup>(out: &mut String, cat: &Catalog, page: &Page, lang: Lang) {
+    M::paragraph(out, &M::esc(lang.t("dataflow_intro")));
+    for (grouping, anchor, key) in facts::DATAFLOW_SECTIONS {
+        M::heading(out, page, 2, anchor, lang.t(key));
+        let rows = facts::dataflow_rows(cat, grouping, lang);
+        if rows.is_empty() {
+            M::paragraph(out, &M::esc(lang.t("dataflow_none")));
+            continue;
+        }
+        let cells: Vec<Vec<String>> = rows
+            .iter()
+            .map(|r| {
+                let mut types: Vec<String> = r
+                    .types
+                    .iter()
+                    .map(|(name, to)| M::link(name, &M::page_target(cat, page, to)))
+                    .collect();
+                if r.more_types > 0 {
+                    types.push(M::esc(&format!("+{}", r.more_types)));
+                }
+                let group =
+                    |(name, to): &(String, &Page)| M::link(name, &M::page_target(cat, page, to));
+                vec![
+                    group(&r.from),
+                    group(&r.to),
+                    r.pairs.to_string(),
+                    types.join(", "),
+                ]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("dataflow_from"),
+                lang.t("dataflow_to"),
+                lang.t("dataflow_pairs"),
+                lang.t("data_types"),
+            ],
+            &cells,
+        );
+    }
+}

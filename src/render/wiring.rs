@@ -344,3 +344,117 @@ pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) ->
     }
     s
 }
+
+/// The catalogue's data flow between groups (`rows`, heaviest first) as instances and
+/// connectors to draw or export: with `caps` (groups, flows), the groups with the most port
+/// pairs between groups and the heaviest flows between those, and how many groups and
+/// flows that leaves out; without, every group and every flow between two groups. Each group
+/// has an out-port and an in-port as needed, one connector per flow.
+pub fn dataflow_wiring(
+    rows: &[crate::render::facts::FlowRow<'_>],
+    lang: Lang,
+    href: &dyn Fn(&crate::catalog::Page) -> String,
+    caps: Option<(usize, usize)>,
+) -> (Vec<WireInstance>, Vec<WireConnector>, usize, usize) {
+    use crate::render::facts::FlowRow;
+    use std::collections::BTreeMap;
+    let (max_groups, max_flows) = caps.unwrap_or((usize::MAX, usize::MAX));
+    let between: Vec<&FlowRow<'_>> = rows.iter().filter(|r| r.from.1 != r.to.1).collect();
+    let mut weight: BTreeMap<&str, (u64, &str)> = BTreeMap::new();
+    for r in &between {
+        for (name, page) in [&r.from, &r.to] {
+            weight.entry(page.stem.as_str()).or_insert((0, name)).0 += r.pairs;
+        }
+    }
+    let mut groups: Vec<(&str, u64, &str)> =
+        weight.iter().map(|(s, (w, n))| (*s, *w, *n)).collect();
+    groups.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(b.0)));
+    let not_drawn = groups.len().saturating_sub(max_groups);
+    groups.truncate(max_groups);
+    groups.sort_by(|a, b| a.0.cmp(b.0));
+    let index: BTreeMap<&str, usize> = groups.iter().enumerate().map(|(i, g)| (g.0, i)).collect();
+    let mut inst: Vec<WireInstance> = groups
+        .iter()
+        .map(|(stem, _, name)| {
+            let page = rows
+                .iter()
+                .flat_map(|r| [r.from.1, r.to.1])
+                .find(|p| p.stem == *stem);
+            WireInstance {
+                name: name.to_string(),
+                component: String::new(),
+                href: page.map(href).unwrap_or_default(),
+                label: name.to_string(),
+                ports: Vec::new(),
+                location: None,
+            }
+        })
+        .collect();
+    // Ports: "out" for a group that feeds another, "in" for one that is fed.
+    let port = |inst: &mut Vec<WireInstance>, i: usize, class: &'static str| -> usize {
+        if let Some(p) = inst[i].ports.iter().position(|p| p.class == class) {
+            return p;
+        }
+        let label = format!("{} {class}", inst[i].name);
+        inst[i].ports.push(WirePort {
+            name: class.to_string(),
+            class,
+            href: String::new(),
+            label,
+        });
+        inst[i].ports.len() - 1
+    };
+    let mut conns = Vec::new();
+    // `rows` come heaviest first: the flows between drawn groups, up to the cap.
+    let drawn: Vec<(&FlowRow<'_>, usize, usize)> = between
+        .iter()
+        .filter_map(|r| {
+            Some((
+                *r,
+                *index.get(r.from.1.stem.as_str())?,
+                *index.get(r.to.1.stem.as_str())?,
+            ))
+        })
+        .collect();
+    let flows_not_drawn = between.len() - drawn.len().min(max_flows);
+    for (r, a, b) in drawn.into_iter().take(max_flows) {
+        let (pa, pb) = (port(&mut inst, a, "out"), port(&mut inst, b, "in"));
+        let types: Vec<&str> = r.types.iter().map(|(n, _)| *n).collect();
+        conns.push(WireConnector {
+            from: (a, pa),
+            to: (b, pb),
+            service: false,
+            label: format!(
+                "{} → {}: {} {} ({}{})",
+                r.from.0,
+                r.to.0,
+                r.pairs,
+                lang.t("dataflow_pair_count"),
+                types.join(", "),
+                if r.more_types > 0 {
+                    format!(", +{}", r.more_types)
+                } else {
+                    String::new()
+                }
+            ),
+        });
+    }
+    // A group whose flows were all left out is not drawn either.
+    let used: Vec<bool> = (0..inst.len())
+        .map(|i| conns.iter().any(|c| c.from.0 == i || c.to.0 == i))
+        .collect();
+    let mut renumber = vec![0; inst.len()];
+    let mut kept = Vec::new();
+    for (i, g) in inst.into_iter().enumerate() {
+        if used[i] {
+            renumber[i] = kept.len();
+            kept.push(g);
+        }
+    }
+    let not_drawn = not_drawn + used.iter().filter(|u| !**u).count();
+    for c in &mut conns {
+        c.from.0 = renumber[c.from.0];
+        c.to.0 = renumber[c.to.0];
+    }
+    (kept, conns, not_drawn, flows_not_drawn)
+}

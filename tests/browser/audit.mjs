@@ -44,6 +44,7 @@ function pageKinds() {
   // The 404 page as a server sends it for a missing page deep below the root.
   const pages = ['index.html', 'search.html?q=camera', 'no/such/deep/page.html'];
   if (fs.existsSync(path.join(site, 'diagnostics.html'))) { pages.push('diagnostics.html'); }
+  if (fs.existsSync(path.join(site, 'dataflow.html'))) { pages.push('dataflow.html'); }
   for (const dir of ['components', 'types', 'interfaces', 'categories', 'vendors', 'systems']) {
     if (fs.existsSync(path.join(site, dir, 'index.html'))) { pages.push(`${dir}/index.html`); }
     const p = largest(dir, 'index.html');

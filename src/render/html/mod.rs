@@ -9,6 +9,7 @@
 //! pages are rendered in parallel. Links are relative, so the site works from `file://`.
 
 mod builtins;
+mod dataflow;
 mod diagnostics;
 pub mod markdown;
 mod native;
@@ -91,6 +92,10 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
     (
         "macros.html",
         include_str!("../../../themes/default/macros.html"),
+    ),
+    (
+        "dataflow.html",
+        include_str!("../../../themes/default/dataflow.html"),
     ),
     (
         "search.html",
@@ -1471,6 +1476,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
     }
 
     pages.extend(systems::pages(site));
+    pages.push(dataflow::page(site));
 
     // Search, 404 and diagnostics.
     pages.push(Page {

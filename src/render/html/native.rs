@@ -283,6 +283,7 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
         ("interfaces/index.html", "interfaces"),
         ("categories/index.html", "categories"),
         ("vendors/index.html", "vendors"),
+        ("dataflow.html", "dataflow"),
     ] {
         o.raw("<li><a href=\"");
         o.text(root);
