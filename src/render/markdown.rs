@@ -1063,7 +1063,12 @@ mod tests {
         assert_eq!(inline("a|b"), "a\\|b");
         assert_eq!(inline("<b>x</b>"), "&lt;b&gt;x&lt;/b&gt;");
         assert_eq!(inline("A & B"), "A &amp; B");
-        assert_eq!(inline("`code`"), "\\`code\\`");
+        // A code span stays a code span (code on the HTML site too); a lone backtick, or a span
+        // holding a table's `|`, is escaped.
+        assert_eq!(inline("`code`"), "`code`");
+        assert_eq!(inline("`<b>` and `x`"), "`<b>` and `x`");
+        assert_eq!(inline("a ` b"), "a \\` b");
+        assert_eq!(inline("`a|b`"), "\\`a\\|b\\`");
         assert_eq!(inline("*em* _u_"), "\\*em\\* \\_u\\_");
         assert_eq!(inline("[x](y)"), "\\[x\\](y)");
         assert_eq!(inline("![i](y)"), "\\!\\[i\\](y)");
