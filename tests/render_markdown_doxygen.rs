@@ -354,6 +354,8 @@ fn doxygen_labels_are_unique_and_every_page_has_one_subpage() {
                 + 1
                 + cat.vendors.len()
                 + 2
+                // The data-flow page.
+                + 1
                 // The systems index and a page per RT System.
                 + if cat.systems.is_empty() { 0 } else { 1 + cat.systems.len() }
         );
