@@ -414,12 +414,6 @@ impl<'a> Site<'a> {
         self.catalog.component_page(ci).path("html")
     }
 
-    /// The position of a referenced component, for [`others_than`] (refs are in catalogue
-    /// order).
-    fn position(&self, id: &str) -> usize {
-        self.catalog.component_index(id).unwrap_or(usize::MAX)
-    }
-
     fn port_link(&self, root: &str, r: &PortRef) -> Option<PortUse> {
         let (ci, pi) = self.catalog.resolve_port(r)?;
         let c = &self.catalog.components[ci];
@@ -473,14 +467,29 @@ impl<'a> Site<'a> {
         type_ref: &Option<PortTypeRef>,
         more_key: &str,
     ) -> (Vec<Link>, Option<Link>) {
+        // Only the groups shown are collected; the others are counted (a popular type's list
+        // holds thousands of references, and every one of its ports asks).
         let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
-        for r in all.iter().filter(|r| component(r) != ci) {
-            match groups.last_mut() {
-                Some((c, list)) if *c == component(r) => list.push(r),
-                _ => groups.push((component(r), vec![r])),
+        let mut total = 0;
+        let mut last = None;
+        for r in all {
+            let c = component(r);
+            if c == ci {
+                continue;
+            }
+            if last != Some(c) {
+                last = Some(c);
+                total += 1;
+                if total <= PEER_COMPONENTS_CAP {
+                    groups.push((c, Vec::new()));
+                }
+            }
+            if total <= PEER_COMPONENTS_CAP {
+                if let Some((_, list)) = groups.last_mut() {
+                    list.push(r);
+                }
             }
         }
-        let total = groups.len();
         let peers = groups
             .iter()
             .take(PEER_COMPONENTS_CAP)
@@ -643,7 +652,7 @@ impl<'a> Site<'a> {
             let (peers, peers_more) = self.peers(
                 ci,
                 self.catalog.data_port_peers(ci, pi),
-                |r| self.position(&r.component),
+                |r| self.catalog.port_component(r).unwrap_or(usize::MAX),
                 |r| self.port_link(root, r),
                 &type_ref,
                 "more_on_type_page",
@@ -699,7 +708,7 @@ impl<'a> Site<'a> {
                 let (peers, peers_more) = self.peers(
                     ci,
                     self.catalog.interface_peers(ci, si, ii),
-                    |r| self.position(&r.component),
+                    |r| self.catalog.interface_component(r).unwrap_or(usize::MAX),
                     |r| self.iface_link(root, r),
                     &type_ref,
                     "more_on_interface_page",
