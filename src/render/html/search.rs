@@ -14,7 +14,6 @@ use crate::model::non_empty;
 use crate::types::canonical_type;
 use rayon::prelude::*;
 use std::borrow::Cow;
-use std::ops::Bound::{Included, Unbounded};
 
 /// Whether `c` is written without spaces between words (kana, CJK ideographs, full-width forms).
 pub fn is_cjk(c: char) -> bool {
@@ -143,14 +142,14 @@ impl Groups<'_> {
     /// prefix, so it would find nothing more (this halves Japanese prose, whose bigrams
     /// repeat).
     fn encode(mut self) -> String {
-        let mut earlier: std::collections::BTreeSet<String> = Default::default();
-        let mut out = String::new();
-        for (gi, g) in [&mut self.name, &mut self.ids, &mut self.text]
-            .into_iter()
-            .enumerate()
-        {
+        for g in [&mut self.name, &mut self.ids, &mut self.text] {
             g.sort_unstable();
             g.dedup();
+        }
+        // The tokens of the earlier groups, sorted (borrowed: no copy of any token).
+        let mut earlier: Vec<&str> = Vec::new();
+        let mut out = String::new();
+        for (gi, g) in [&self.name, &self.ids, &self.text].into_iter().enumerate() {
             if gi > 0 {
                 out.push('|');
             }
@@ -160,8 +159,7 @@ impl Groups<'_> {
                 let covered = gi > 0
                     && (g.get(i + 1).is_some_and(|n| n.starts_with(t.as_ref()))
                         || earlier
-                            .range::<str, _>((Included(t.as_ref()), Unbounded))
-                            .next()
+                            .get(earlier.partition_point(|e| *e < t.as_ref()))
                             .is_some_and(|n| n.starts_with(t.as_ref())));
                 if covered {
                     continue;
@@ -172,7 +170,10 @@ impl Groups<'_> {
                 first = false;
                 out.push_str(t);
             }
-            earlier.extend(g.iter().map(|t| t.to_string()));
+            if gi < 2 {
+                earlier.extend(g.iter().map(|t| t.as_ref()));
+                earlier.sort_unstable();
+            }
         }
         out
     }
