@@ -1301,9 +1301,18 @@ impl Catalog {
 
     /// The category facet of each component, by position (every component is in one).
     pub fn category_of_each(&self) -> Vec<usize> {
-        let mut of = vec![0; self.components.len()];
-        for (fi, f) in self.categories.iter().enumerate() {
-            for ci in self.members(f) {
+        Self::facet_of_each(&self.categories, self.components.len(), self)
+    }
+
+    /// The vendor facet of each component, by position (every component is in one).
+    pub fn vendor_of_each(&self) -> Vec<usize> {
+        Self::facet_of_each(&self.vendors, self.components.len(), self)
+    }
+
+    fn facet_of_each(facets: &[Facet], n: usize, cat: &Catalog) -> Vec<usize> {
+        let mut of = vec![0; n];
+        for (fi, f) in facets.iter().enumerate() {
+            for ci in cat.members(f) {
                 of[ci] = fi;
             }
         }

@@ -388,6 +388,8 @@ struct Site<'a> {
     summaries: Vec<ComponentSummary>,
     /// The category facet of each component ([`Catalog::category_of_each`]).
     category_of: Vec<usize>,
+    /// The vendor facet of each component ([`Catalog::vendor_of_each`]).
+    vendor_of: Vec<usize>,
     /// Where README links go ([`readme::Targets`]).
     readme_targets: std::sync::Arc<readme::Targets>,
 }
@@ -526,9 +528,11 @@ impl<'a> Site<'a> {
     fn summary(&self, ci: usize) -> ComponentSummary {
         let c = &self.catalog.components[ci];
         let b = &c.profile.basic_info;
-        let facet_slug = |facets: &[Facet], v: &Option<crate::model::Text>| {
-            let name = non_empty(v).unwrap_or("");
-            crate::catalog::facet_of(facets, name)
+        // Every component is in one category and one vendor facet (computed once, not
+        // looked up by name for each component).
+        let facet_slug = |facets: &[Facet], of: &[usize]| {
+            of.get(ci)
+                .and_then(|&fi| facets.get(fi))
                 .map(|f| f.slug.clone())
                 .unwrap_or_default()
         };
@@ -537,9 +541,9 @@ impl<'a> Site<'a> {
             path: self.catalog.component_page(ci).path("html"),
             version: non_empty(&b.version).unwrap_or("").to_string(),
             vendor: non_empty(&b.vendor).unwrap_or("").to_string(),
-            vendor_slug: facet_slug(&self.catalog.vendors, &b.vendor),
+            vendor_slug: facet_slug(&self.catalog.vendors, &self.vendor_of),
             category: non_empty(&b.category).unwrap_or("").to_string(),
-            category_slug: facet_slug(&self.catalog.categories, &b.category),
+            category_slug: facet_slug(&self.catalog.categories, &self.category_of),
             summary: non_empty(&b.description)
                 .map(|d| markdown::first_line(d, 160))
                 .unwrap_or_default(),
@@ -1080,6 +1084,7 @@ impl HtmlRenderer {
             lang,
             summaries: Vec::new(),
             category_of: catalog.category_of_each(),
+            vendor_of: catalog.vendor_of_each(),
             readme_targets: std::sync::Arc::new(readme::Targets::new(
                 catalog,
                 opts.source_url.as_deref(),
