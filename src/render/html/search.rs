@@ -171,12 +171,29 @@ impl Groups<'_> {
                 out.push_str(t);
             }
             if gi < 2 {
-                earlier.extend(g.iter().map(|t| t.as_ref()));
-                earlier.sort_unstable();
+                earlier = merge_sorted(&earlier, g);
             }
         }
         out
     }
+}
+
+/// The tokens of two sorted lists, sorted (a merge: both are sorted already).
+fn merge_sorted<'s>(a: &[&'s str], b: &'s [Cow<'_, str>]) -> Vec<&'s str> {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        if a[i] <= b[j].as_ref() {
+            out.push(a[i]);
+            i += 1;
+        } else {
+            out.push(b[j].as_ref());
+            j += 1;
+        }
+    }
+    out.extend_from_slice(&a[i..]);
+    out.extend(b[j..].iter().map(|t| t.as_ref()));
+    out
 }
 
 /// Builds the contents of `search-index.js`: `window.RTCDOC_INDEX = {kinds, e}` where `kinds`
