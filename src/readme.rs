@@ -234,7 +234,7 @@ fn rtcbuilder2(text: &str) -> Option<Rtcbuilder2> {
     let text_in = |from: usize, to: usize| {
         lines[from..to].iter().any(|l| {
             let t = l.trim();
-            !t.is_empty() && !(t.starts_with("<!--") && t.ends_with("-->"))
+            !(t.is_empty() || t.starts_with("<!--") && t.ends_with("-->"))
         })
     };
     let ends: Vec<usize> = (0..own.len())
