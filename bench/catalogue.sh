@@ -9,6 +9,7 @@
 #                                            the examples; CORPUS=DIR, default ../shared/corpus/rtc-xml)
 #        OPENRTM_IDL=DIR SHAPE=corpus …     (with the *.idl of an OpenRTM installation's IDL directory)
 #        BASELINE=/path/to/rtcdoc …         (also an older binary's HTML build, in the same pairs)
+#        HUGO=0 bench/catalogue.sh 30000    (without Hugo: it needs about 0.5 GB per 1,000 pages)
 #
 # The catalogues carry IDL (bench/gen_catalogue.py: one file of structs, enums, sequences,
 # exceptions and interfaces per group of about forty components, named by the ports' idlFile),
@@ -178,7 +179,7 @@ print(f"{med([r[0] for r in rows]):.2f} {med([r[1] for r in rows]):.2f} {max(r[2
   echo "|   | paired: rtcdoc HTML time ÷ floor, median of the per-run ratios = $paired (HTML/cp s: $runs_txt) | | | | | |"
 
   # Hugo on rtcdoc's Markdown output, minimal layout.
-  if command -v hugo >/dev/null; then
+  if [ "${HUGO:-1}" != 0 ] && command -v hugo >/dev/null; then
     site="$work/hugo-$n"
     set_aside "$site"
     mkdir -p "$site/layouts/_default"
