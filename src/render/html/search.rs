@@ -203,36 +203,50 @@ fn merge_sorted<'s>(a: &[&'s str], b: &'s [Cow<'_, str>]) -> Vec<&'s str> {
 /// page's path from [`Catalog::pages`]. The JSON is escaped so that no
 /// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
 pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
-    // Entries are built in parallel; the indexed collect keeps catalogue order.
-    let mut entries: Vec<serde_json::Value> = (0..catalog.components.len())
+    // Each entry is built and written out as escaped JSON in parallel (the indexed collect
+    // keeps catalogue order); only the entries' text is held, never all their JSON values.
+    let mut entries: Vec<String> = (0..catalog.components.len())
         .into_par_iter()
-        .map(|ci| component_entry(catalog, ci))
+        .map(|ci| entry_js(&component_entry(catalog, ci)))
         .collect();
     entries.extend(catalog.data_types.iter().enumerate().map(|(ti, t)| {
         let page = catalog.data_type_page(ti).path("html");
-        idl_entry(catalog, "t", &page, &t.name, &t.spellings)
+        entry_js(&idl_entry(catalog, "t", &page, &t.name, &t.spellings))
     }));
     entries.extend(catalog.interfaces.iter().enumerate().map(|(ii, t)| {
         let page = catalog.interface_page(ii).path("html");
-        idl_entry(catalog, "i", &page, &t.name, &t.spellings)
+        entry_js(&idl_entry(catalog, "i", &page, &t.name, &t.spellings))
     }));
-    entries.extend(system_entries(catalog));
-    let index = serde_json::json!({
-        "kinds": {
-            "c": lang.t("component"),
-            "t": lang.t("data_type"),
-            "i": lang.t("interface"),
-            "s": lang.t("system"),
-        },
-        "e": entries,
+    entries.extend(system_entries(catalog).iter().map(entry_js));
+    let kinds = serde_json::json!({
+        "c": lang.t("component"),
+        "t": lang.t("data_type"),
+        "i": lang.t("interface"),
+        "s": lang.t("system"),
     });
-    let json = serde_json::to_string(&index).unwrap_or_else(|_| "{\"e\":[]}".into());
-    // 10,000 components make megabytes of each: not all three at once.
-    drop(index);
-    let mut out = String::with_capacity(json.len() + 64);
-    out.push_str("window.RTCDOC_INDEX=");
+    // `{"e":[…],"kinds":{…}}`: the object serde_json writes for these two keys (sorted).
+    let len: usize = entries.iter().map(|e| e.len() + 1).sum();
+    let mut out = String::with_capacity(len + 256);
+    out.push_str("window.RTCDOC_INDEX={\"e\":[");
+    for (i, e) in entries.iter().enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        out.push_str(e);
+    }
+    drop(entries);
+    out.push_str("],\"kinds\":");
+    push_js_safe_json(&mut out, &serde_json::to_string(&kinds).unwrap_or_default());
+    out.push_str("};\n");
+    out
+}
+
+/// One entry as JSON, escaped ([`push_js_safe_json`]: escaping works character by character,
+/// so escaping each entry is escaping the whole).
+fn entry_js(entry: &serde_json::Value) -> String {
+    let json = serde_json::to_string(entry).unwrap_or_else(|_| "null".into());
+    let mut out = String::with_capacity(json.len());
     push_js_safe_json(&mut out, &json);
-    out.push_str(";\n");
     out
 }
 
