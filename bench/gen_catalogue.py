@@ -2,6 +2,7 @@
 """Generate a synthetic catalogue of N realistic RTC profiles for benchmarks.
 
 usage: gen_catalogue.py N OUT_DIR [--examples DIR] [--no-idl]
+       gen_catalogue.py N OUT_DIR --shape corpus [--corpus DIR] [--openrtm-idl DIR]
 
 Clones the bundled example profiles (examples/) under new component names, vendors and
 categories, and spreads their data and interface types over groups so that cross-links look like
@@ -15,6 +16,16 @@ include OUT_DIR/idl/BenchCommon.idl (time stamps, geometry). Fields and operatio
 documented or not in a fixed pattern, so that the coverage rules have something to count.
 --no-idl leaves the IDL out and the idlFile attributes as the examples have them: the catalogue
 of earlier versions of this script, byte for byte.
+
+--shape corpus clones the real-world profiles of the shared corpus instead (every RTC*.xml
+profile under ../shared/corpus/rtc-xml beside the repository, or --corpus DIR; read at run time,
+never copied into the repository), as labs write them: long Japanese descriptions, many
+configuration parameters, OpenRTM's data types (RTC::TimedLong, RTC::CameraImage, …) shared by
+the whole catalogue. Each clone gets a new name (the original name and the clone's number), one
+of VENDORS vendors, and the id built from them; everything else is the original's, byte for
+byte. --openrtm-idl DIR copies the *.idl files of an OpenRTM installation's IDL directory
+(BasicDataType.idl, ExtendedDataTypes.idl, InterfaceDataTypes.idl, …) into OUT_DIR/idl, so the
+build reads and renders OpenRTM's IDL as a catalogue with `idl-path` pointing there would.
 """
 import os
 import re
@@ -228,17 +239,96 @@ module {m}
 """
 
 
+# A backup RTCBuilder leaves beside a profile (RTC.xml20230831164412.xml): not a profile of its own.
+BACKUP_RE = re.compile(r"\.xml\d{14}\.xml$")
+
+
+def corpus_templates(corpus):
+    """The corpus's XML profiles, in a fixed order: (name, file name, text)."""
+    templates = []
+    for root, dirs, files in os.walk(corpus):
+        dirs.sort()
+        for f in sorted(files):
+            if not f.endswith(".xml") or BACKUP_RE.search(f):
+                continue
+            with open(os.path.join(root, f), encoding="utf-8") as fh:
+                text = fh.read()
+            m = re.search(r"<rtc:BasicInfo\b[^>]*\srtc:name=\"([^\"]*)\"", text)
+            if "<rtc:RtcProfile" not in text or not m:
+                continue
+            templates.append((m.group(1), f, text))
+    return templates
+
+
+def gen_corpus(n, out, corpus, idl_dir):
+    templates = corpus_templates(corpus)
+    if not templates:
+        print(f"no profiles in {corpus}", file=sys.stderr)
+        return 1
+    os.makedirs(out)
+    attr = lambda name: re.compile(r"(\s" + name + r"=\")[^\"]*(\")")
+    name_re, vendor_re, id_re = attr("rtc:name"), attr("rtc:vendor"), attr("rtc:id")
+    basic_re = re.compile(r"<rtc:BasicInfo\b[^>]*>")
+    head_re = re.compile(r"<rtc:RtcProfile\b[^>]*>")
+    for i in range(n):
+        name, fname, text = templates[i % len(templates)]
+        new_name = f"{name}{i:05d}"
+        vendor = f"Lab{i % VENDORS:02d}"
+        # Only the BasicInfo element's name and vendor and the profile's id change: the same
+        # words in descriptions, port names and paths stay as the lab wrote them.
+        t = basic_re.sub(lambda m: vendor_re.sub(
+            lambda a: a.group(1) + vendor + a.group(2),
+            name_re.sub(lambda a: a.group(1) + new_name + a.group(2), m.group(0), count=1),
+            count=1), text, count=1)
+
+        def new_id(a):
+            parts = a.group(0)[len(a.group(1)):-1].split(":")
+            if len(parts) == 5:
+                parts[1], parts[3] = vendor, new_name
+            else:
+                parts = ["RTC", vendor, "Category", new_name, "1.0.0"]
+            return a.group(1) + ":".join(parts) + a.group(2)
+
+        t = head_re.sub(lambda m: id_re.sub(new_id, m.group(0), count=1), t, count=1)
+        d = os.path.join(out, f"{i // 1000:02d}", new_name)
+        os.makedirs(d)
+        with open(os.path.join(d, fname), "w", encoding="utf-8") as fh:
+            fh.write(t)
+    idl_files = 0
+    if idl_dir:
+        d = os.path.join(out, "idl")
+        os.makedirs(d)
+        for f in sorted(os.listdir(idl_dir)):
+            if f.endswith(".idl") and os.path.isfile(os.path.join(idl_dir, f)):
+                shutil.copyfile(os.path.join(idl_dir, f), os.path.join(d, f))
+                idl_files += 1
+    print(f"wrote {n} profiles cloned from {len(templates)} corpus profiles to {out}"
+          + (f", {idl_files} IDL files" if idl_dir else ""))
+    return 0
+
+
 def main():
     argv = sys.argv[1:]
-    if "--examples" in argv:  # its value is not a positional argument
-        del argv[argv.index("--examples") + 1]
+    for opt in ("--examples", "--shape", "--corpus", "--openrtm-idl"):
+        if opt in argv:  # its value is not a positional argument
+            del argv[argv.index(opt) + 1]
     args = [a for a in argv if not a.startswith("--")]
     if len(args) != 2:
         print(__doc__)
         return 2
     n, out = int(args[0]), args[1]
-    with_idl = "--no-idl" not in sys.argv
     here = os.path.dirname(os.path.abspath(__file__))
+    opt = lambda o, default=None: sys.argv[sys.argv.index(o) + 1] if o in sys.argv else default
+    shape = opt("--shape", "example")
+    if shape not in ("example", "corpus"):
+        print(f"unknown shape {shape!r} (example or corpus)", file=sys.stderr)
+        return 2
+    if shape == "corpus":
+        if os.path.exists(out):
+            shutil.rmtree(out)
+        corpus = opt("--corpus", os.path.join(here, "..", "..", "shared", "corpus", "rtc-xml"))
+        return gen_corpus(n, out, corpus, opt("--openrtm-idl"))
+    with_idl = "--no-idl" not in sys.argv
     examples = os.path.join(here, "..", "examples")
     if "--examples" in sys.argv:
         examples = sys.argv[sys.argv.index("--examples") + 1]

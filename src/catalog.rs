@@ -266,18 +266,81 @@ pub fn member_at<'a>(names: impl Iterator<Item = &'a str> + Clone, key: &str) ->
 
 use crate::model::Text;
 
+/// A dense handle of a component inside the build: its position in [`Catalog::components`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct ComponentIx(u32);
+
+impl ComponentIx {
+    /// No component (a reference not resolved by the catalogue it is used with).
+    pub const NONE: ComponentIx = ComponentIx(u32::MAX);
+
+    /// The handle of position `i` ([`ComponentIx::NONE`] past `u32::MAX`).
+    pub fn new(i: usize) -> ComponentIx {
+        u32::try_from(i).map_or(ComponentIx::NONE, ComponentIx)
+    }
+
+    /// The position in [`Catalog::components`] (`usize::MAX` for [`ComponentIx::NONE`]).
+    pub fn get(self) -> usize {
+        if self == ComponentIx::NONE {
+            usize::MAX
+        } else {
+            self.0 as usize
+        }
+    }
+}
+
+impl RefHandle {
+    fn new(ci: usize, port: usize, interface: usize) -> RefHandle {
+        RefHandle {
+            component: ComponentIx::new(ci),
+            port: u32::try_from(port).unwrap_or(u32::MAX),
+            interface: u32::try_from(interface).unwrap_or(u32::MAX),
+        }
+    }
+}
+
+impl Default for ComponentIx {
+    fn default() -> ComponentIx {
+        ComponentIx::NONE
+    }
+}
+
+/// Where a [`PortRef`] or [`InterfaceRef`] points in the catalogue that resolved it: the
+/// component's handle and the port's (and interface's) position in it, so that rendering
+/// never looks a component up by its id string. Not part of `catalog.json` (ids are strings at
+/// the boundary) nor of a reference's equality; a handle is trusted only by the catalogue whose
+/// component entry holds the very id the reference holds ([`std::sync::Arc::ptr_eq`]), and any
+/// other reference is resolved by id.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RefHandle {
+    pub component: ComponentIx,
+    port: u32,
+    interface: u32,
+}
+
 /// A reference to a data port of a component: the component's id and the port's key.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct PortRef {
     /// [`Component::id`].
     pub component: ComponentId,
     /// The data port's name ([`member_key`]).
     pub port: Text,
+    /// Where it points in the catalogue that made it ([`RefHandle`]).
+    #[serde(skip)]
+    pub at: RefHandle,
 }
 
+impl PartialEq for PortRef {
+    fn eq(&self, other: &PortRef) -> bool {
+        self.component == other.component && self.port == other.port
+    }
+}
+
+impl Eq for PortRef {}
+
 /// A reference to a service interface of a component.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct InterfaceRef {
     /// [`Component::id`].
@@ -286,7 +349,20 @@ pub struct InterfaceRef {
     pub port: Text,
     /// The interface's name within that port ([`member_key`]).
     pub interface: Text,
+    /// Where it points in the catalogue that made it ([`RefHandle`]).
+    #[serde(skip)]
+    pub at: RefHandle,
 }
+
+impl PartialEq for InterfaceRef {
+    fn eq(&self, other: &InterfaceRef) -> bool {
+        self.component == other.component
+            && self.port == other.port
+            && self.interface == other.interface
+    }
+}
+
+impl Eq for InterfaceRef {}
 
 /// A data type used by some data port in the catalogue.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -832,6 +908,7 @@ impl Catalog {
                     PortRef {
                         component: c.id.clone(),
                         port: member_key(c.profile.data_ports.iter().map(|p| name_of(&p.name)), pi),
+                        at: RefHandle::new(ci, pi, 0),
                     }
                 })
                 .collect()
@@ -848,6 +925,7 @@ impl Catalog {
                             pi,
                         ),
                         interface: member_key(sp.interfaces.iter().map(|i| name_of(&i.name)), ii),
+                        at: RefHandle::new(ci, pi, ii),
                     }
                 })
                 .collect()
@@ -1014,26 +1092,48 @@ impl Catalog {
             type_index,
             interface_index,
         };
-        for t in &catalog.data_types {
-            for r in t.producers.iter().chain(&t.consumers).chain(&t.others) {
-                if catalog.resolve_port(r).is_none() {
+        // Each reference gets its handle, and shares its id with the component entry (same
+        // text: the handle is trusted only for that entry's id).
+        let mut data_types = std::mem::take(&mut catalog.data_types);
+        for t in &mut data_types {
+            let name = &t.name;
+            for r in t
+                .producers
+                .iter_mut()
+                .chain(&mut t.consumers)
+                .chain(&mut t.others)
+            {
+                let Some((ci, pi)) = catalog.resolve_port(r) else {
                     return Err(format!(
-                        "data type `{}` names port `{}` of `{}`, which the catalogue does not have",
-                        t.name, r.port, r.component
+                        "data type `{name}` names port `{}` of `{}`, which the catalogue does not have",
+                        r.port, r.component
                     ));
-                }
+                };
+                r.component = catalog.components[ci].id.clone();
+                r.at = RefHandle::new(ci, pi, 0);
             }
         }
-        for t in &catalog.interfaces {
-            for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
-                if catalog.resolve_interface(r).is_none() {
+        catalog.data_types = data_types;
+        let mut interfaces = std::mem::take(&mut catalog.interfaces);
+        for t in &mut interfaces {
+            let name = &t.name;
+            for r in t
+                .providers
+                .iter_mut()
+                .chain(&mut t.requirers)
+                .chain(&mut t.others)
+            {
+                let Some((ci, pi, ii)) = catalog.resolve_interface(r) else {
                     return Err(format!(
-                        "interface `{}` names `{}.{}` of `{}`, which the catalogue does not have",
-                        t.name, r.port, r.interface, r.component
+                        "interface `{name}` names `{}.{}` of `{}`, which the catalogue does not have",
+                        r.port, r.interface, r.component
                     ));
-                }
+                };
+                r.component = catalog.components[ci].id.clone();
+                r.at = RefHandle::new(ci, pi, ii);
             }
         }
+        catalog.interfaces = interfaces;
         for f in catalog.categories.iter().chain(&catalog.vendors) {
             if let Some(id) = f
                 .components
@@ -1214,17 +1314,61 @@ impl Catalog {
 
     /// The category facet of each component, by position (every component is in one).
     pub fn category_of_each(&self) -> Vec<usize> {
-        let mut of = vec![0; self.components.len()];
-        for (fi, f) in self.categories.iter().enumerate() {
-            for ci in self.members(f) {
+        Self::facet_of_each(&self.categories, self.components.len(), self)
+    }
+
+    /// The vendor facet of each component, by position (every component is in one).
+    pub fn vendor_of_each(&self) -> Vec<usize> {
+        Self::facet_of_each(&self.vendors, self.components.len(), self)
+    }
+
+    fn facet_of_each(facets: &[Facet], n: usize, cat: &Catalog) -> Vec<usize> {
+        let mut of = vec![0; n];
+        for (fi, f) in facets.iter().enumerate() {
+            for ci in cat.members(f) {
                 of[ci] = fi;
             }
         }
         of
     }
 
+    /// The component entry a handle points at, when it is the entry of id `id` (the very
+    /// allocation: a handle made by this catalogue, or by a clone of its entry).
+    fn handled(&self, id: &ComponentId, at: ComponentIx) -> Option<(usize, &Component)> {
+        let c = self.components.get(at.get())?;
+        std::sync::Arc::ptr_eq(&c.id, id).then_some((at.get(), c))
+    }
+
+    /// The position in [`Catalog::components`] of the component a port reference names: O(1)
+    /// through its handle ([`RefHandle`]), by id otherwise.
+    pub fn port_component(&self, r: &PortRef) -> Option<usize> {
+        match self.handled(&r.component, r.at.component) {
+            Some((ci, _)) => Some(ci),
+            None => self.component_index(&r.component),
+        }
+    }
+
+    /// The position in [`Catalog::components`] of the component an interface reference names:
+    /// O(1) through its handle, by id otherwise.
+    pub fn interface_component(&self, r: &InterfaceRef) -> Option<usize> {
+        match self.handled(&r.component, r.at.component) {
+            Some((ci, _)) => Some(ci),
+            None => self.component_index(&r.component),
+        }
+    }
+
     /// The component and data port a reference names: (component index, port index).
     pub fn resolve_port(&self, r: &PortRef) -> Option<(usize, usize)> {
+        if let Some((ci, c)) = self.handled(&r.component, r.at.component) {
+            let pi = r.at.port as usize;
+            if c.profile
+                .data_ports
+                .get(pi)
+                .is_some_and(|p| name_of(&p.name) == r.port.as_str())
+            {
+                return Some((ci, pi));
+            }
+        }
         let ci = self.component_index(&r.component)?;
         let ports = &self.components[ci].profile.data_ports;
         let pi = member_at(ports.iter().map(|p| name_of(&p.name)), &r.port)?;
@@ -1233,6 +1377,19 @@ impl Catalog {
 
     /// The component, service port and interface a reference names, as indices.
     pub fn resolve_interface(&self, r: &InterfaceRef) -> Option<(usize, usize, usize)> {
+        if let Some((ci, c)) = self.handled(&r.component, r.at.component) {
+            let (pi, ii) = (r.at.port as usize, r.at.interface as usize);
+            if let Some(sp) = c.profile.service_ports.get(pi) {
+                if name_of(&sp.name) == r.port.as_str()
+                    && sp
+                        .interfaces
+                        .get(ii)
+                        .is_some_and(|i| name_of(&i.name) == r.interface.as_str())
+                {
+                    return Some((ci, pi, ii));
+                }
+            }
+        }
         let ci = self.component_index(&r.component)?;
         let sps = &self.components[ci].profile.service_ports;
         let pi = member_at(sps.iter().map(|p| name_of(&p.name)), &r.port)?;

@@ -134,18 +134,6 @@ impl Catalog {
             }
         }
     }
-
-    /// The vendor facet of each component ([`Catalog::vendors`]), by position in
-    /// [`Catalog::components`], as [`Catalog::category_of_each`] for categories.
-    pub fn vendor_of_each(&self) -> Vec<usize> {
-        let mut of = vec![0; self.components.len()];
-        for (fi, f) in self.vendors.iter().enumerate() {
-            for ci in self.members(f) {
-                of[ci] = fi;
-            }
-        }
-        of
-    }
 }
 
 #[cfg(test)]

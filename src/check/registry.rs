@@ -757,6 +757,18 @@ pub static RULES: &[Rule] = &[
 ];
 
 /// The registry entry of `code` (any case).
+/// The rule of a code as the registry spells it (`RTC101`): one hash lookup, for the rules
+/// emitting findings; anything else goes through [`rule`].
+pub fn rule_exact(code: &str) -> Option<&'static Rule> {
+    static BY_CODE: std::sync::OnceLock<std::collections::HashMap<&'static str, &'static Rule>> =
+        std::sync::OnceLock::new();
+    BY_CODE
+        .get_or_init(|| RULES.iter().rev().map(|r| (r.code, r)).collect())
+        .get(code)
+        .copied()
+        .or_else(|| rule(code))
+}
+
 pub fn rule(code: &str) -> Option<&'static Rule> {
     RULES
         .iter()

@@ -2,7 +2,7 @@
 //! and over the catalogue. Each rule emits diagnostics with the code, default severity and hint
 //! of its [`registry`](super::registry) entry.
 
-use super::registry::{self as r, rule};
+use super::registry::{self as r, rule_exact};
 use crate::catalog::{Catalog, Component};
 use crate::constraint::{self, Problem, Verdict};
 use crate::diagnostic::{Diagnostic, Severity};
@@ -19,7 +19,8 @@ pub(crate) struct Sink<'a> {
 impl Sink<'_> {
     /// Emits `code` at `pos` with the registry's severity and hint.
     pub fn emit(&mut self, code: &'static str, pos: Pos, message: impl Into<String>) {
-        let (severity, hint) = rule(code).map_or((Severity::Warning, ""), |r| (r.severity, r.hint));
+        let (severity, hint) =
+            rule_exact(code).map_or((Severity::Warning, ""), |r| (r.severity, r.hint));
         let mut d = Diagnostic::new(severity, code, self.file, message).at(pos);
         if !hint.is_empty() {
             d = d.with_hint(hint);

@@ -666,15 +666,29 @@ pub fn peer_groups<R>(
     all: &[R],
     component: impl Fn(&R) -> usize,
 ) -> (Vec<(usize, Vec<&R>)>, usize) {
+    // Only the groups shown are collected; the others are counted (a popular type's list holds
+    // thousands of references, and every one of its ports asks).
     let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
-    for r in all.iter().filter(|r| component(r) != ci) {
-        match groups.last_mut() {
-            Some((c, list)) if *c == component(r) => list.push(r),
-            _ => groups.push((component(r), vec![r])),
+    let mut total = 0;
+    let mut last = None;
+    for r in all {
+        let c = component(r);
+        if c == ci {
+            continue;
+        }
+        if last != Some(c) {
+            last = Some(c);
+            total += 1;
+            if total <= PEER_COMPONENTS_CAP {
+                groups.push((c, Vec::new()));
+            }
+        }
+        if total <= PEER_COMPONENTS_CAP {
+            if let Some((_, list)) = groups.last_mut() {
+                list.push(r);
+            }
         }
     }
-    let total = groups.len();
-    groups.truncate(PEER_COMPONENTS_CAP);
     (groups, total)
 }
 

@@ -163,22 +163,27 @@ pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
 /// ([`facts::peer_groups`]): the other components' ports grouped by component, one link each
 /// (to its first port), at most [`facts::PEER_COMPONENTS_CAP`] components, then a link to the
 /// type or interface page (`rest`) saying how many more there are.
-pub fn peers_cell<M: Markup>(
+pub fn peers_cell<M: Markup, R>(
     ci: usize,
-    items: Vec<PeerPort>,
+    refs: &[R],
+    component: impl Fn(&R) -> usize,
+    resolve: impl Fn(&R) -> Option<PeerPort>,
     rest: Option<String>,
     more_key: &str,
     lang: Lang,
 ) -> String {
-    let (groups, total) = facts::peer_groups(ci, &items, |p| p.component);
+    // Grouped by the references' component handles first: only the groups shown are resolved.
+    let (groups, total) = facts::peer_groups(ci, refs, component);
     let mut parts: Vec<String> = groups
         .iter()
-        .map(|(_, list)| {
-            let ports: Vec<&str> = list.iter().map(|p| p.port.as_str()).collect();
-            M::link(
-                &facts::peer_text(&list[0].component_name, &ports, " · "),
-                &list[0].target,
-            )
+        .filter_map(|(_, list)| {
+            let ports: Vec<PeerPort> = list.iter().filter_map(|r| resolve(r)).collect();
+            let first = ports.first()?;
+            let names: Vec<&str> = ports.iter().map(|p| p.port.as_str()).collect();
+            Some(M::link(
+                &facts::peer_text(&first.component_name, &names, " · "),
+                &first.target,
+            ))
         })
         .collect();
     if total > groups.len() {
@@ -305,11 +310,7 @@ pub fn component_sections<M: Markup>(
                     .as_ref()
                     .map(|d| esc_opt::<M>(&d.description))
                     .unwrap_or_default();
-                let peers: Vec<PeerPort> = cat
-                    .data_port_peers(ci, pi)
-                    .iter()
-                    .filter_map(|r| port_peer::<M>(cat, page, r))
-                    .collect();
+                let peers = cat.data_port_peers(ci, pi);
                 let rest = dt.map(|to| M::page_target(cat, page, to));
                 vec![
                     M::anchored(page, &c.anchors.data_ports[pi], &esc_opt::<M>(&port.name)),
@@ -317,7 +318,15 @@ pub fn component_sections<M: Markup>(
                     ty,
                     desc,
                     facts_cell::<M>(&facts::data_port(port, lang)),
-                    peers_cell::<M>(ci, peers, rest, "more_on_type_page", lang),
+                    peers_cell::<M, _>(
+                        ci,
+                        peers,
+                        |r| cat.port_component(r).unwrap_or(usize::MAX),
+                        |r| port_peer::<M>(cat, page, r),
+                        rest,
+                        "more_on_type_page",
+                        lang,
+                    ),
                 ]
             })
             .collect();
@@ -377,11 +386,7 @@ pub fn component_sections<M: Markup>(
                         .as_ref()
                         .map(|d| esc_opt::<M>(&d.description))
                         .unwrap_or_default();
-                    let peers: Vec<PeerPort> = cat
-                        .interface_peers(ci, si, ii)
-                        .iter()
-                        .filter_map(|r| iface_peer::<M>(cat, page, r))
-                        .collect();
+                    let peers = cat.interface_peers(ci, si, ii);
                     let rest = it.map(|to| M::page_target(cat, page, to));
                     vec![
                         M::anchored(page, &c.anchors.interfaces[si][ii], &esc_opt::<M>(&i.name)),
@@ -389,7 +394,15 @@ pub fn component_sections<M: Markup>(
                         ty,
                         desc,
                         facts_cell::<M>(&facts::service_interface(i, lang)),
-                        peers_cell::<M>(ci, peers, rest, "more_on_interface_page", lang),
+                        peers_cell::<M, _>(
+                            ci,
+                            peers,
+                            |r| cat.interface_component(r).unwrap_or(usize::MAX),
+                            |r| iface_peer::<M>(cat, page, r),
+                            rest,
+                            "more_on_interface_page",
+                            lang,
+                        ),
                     ]
                 })
                 .collect();

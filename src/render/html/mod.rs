@@ -393,6 +393,8 @@ struct Site<'a> {
     summaries: Vec<ComponentSummary>,
     /// The category facet of each component ([`Catalog::category_of_each`]).
     category_of: Vec<usize>,
+    /// The vendor facet of each component ([`Catalog::vendor_of_each`]).
+    vendor_of: Vec<usize>,
     /// Where README links go ([`readme::Targets`]).
     readme_targets: std::sync::Arc<readme::Targets>,
 }
@@ -417,12 +419,6 @@ impl<'a> Site<'a> {
 
     fn component_path(&self, ci: usize) -> String {
         self.catalog.component_page(ci).path("html")
-    }
-
-    /// The position of a referenced component, for [`others_than`] (refs are in catalogue
-    /// order).
-    fn position(&self, id: &str) -> usize {
-        self.catalog.component_index(id).unwrap_or(usize::MAX)
     }
 
     fn port_link(&self, root: &str, r: &PortRef) -> Option<PortUse> {
@@ -505,9 +501,11 @@ impl<'a> Site<'a> {
     fn summary(&self, ci: usize) -> ComponentSummary {
         let c = &self.catalog.components[ci];
         let b = &c.profile.basic_info;
-        let facet_slug = |facets: &[Facet], v: &Option<crate::model::Text>| {
-            let name = non_empty(v).unwrap_or("");
-            crate::catalog::facet_of(facets, name)
+        // Every component is in one category and one vendor facet (computed once, not
+        // looked up by name for each component).
+        let facet_slug = |facets: &[Facet], of: &[usize]| {
+            of.get(ci)
+                .and_then(|&fi| facets.get(fi))
                 .map(|f| f.slug.clone())
                 .unwrap_or_default()
         };
@@ -516,9 +514,9 @@ impl<'a> Site<'a> {
             path: self.catalog.component_page(ci).path("html"),
             version: non_empty(&b.version).unwrap_or("").to_string(),
             vendor: non_empty(&b.vendor).unwrap_or("").to_string(),
-            vendor_slug: facet_slug(&self.catalog.vendors, &b.vendor),
+            vendor_slug: facet_slug(&self.catalog.vendors, &self.vendor_of),
             category: non_empty(&b.category).unwrap_or("").to_string(),
-            category_slug: facet_slug(&self.catalog.categories, &b.category),
+            category_slug: facet_slug(&self.catalog.categories, &self.category_of),
             summary: non_empty(&b.description)
                 .map(|d| markdown::first_line(d, 160))
                 .unwrap_or_default(),
@@ -631,7 +629,7 @@ impl<'a> Site<'a> {
             let (peers, peers_more) = self.peers(
                 ci,
                 self.catalog.data_port_peers(ci, pi),
-                |r| self.position(&r.component),
+                |r| self.catalog.port_component(r).unwrap_or(usize::MAX),
                 |r| self.port_link(root, r),
                 &type_ref,
                 "more_on_type_page",
@@ -687,7 +685,7 @@ impl<'a> Site<'a> {
                 let (peers, peers_more) = self.peers(
                     ci,
                     self.catalog.interface_peers(ci, si, ii),
-                    |r| self.position(&r.component),
+                    |r| self.catalog.interface_component(r).unwrap_or(usize::MAX),
                     |r| self.iface_link(root, r),
                     &type_ref,
                     "more_on_interface_page",
@@ -1059,6 +1057,7 @@ impl HtmlRenderer {
             lang,
             summaries: Vec::new(),
             category_of: catalog.category_of_each(),
+            vendor_of: catalog.vendor_of_each(),
             readme_targets: std::sync::Arc::new(readme::Targets::new(
                 catalog,
                 opts.source_url.as_deref(),

@@ -14,7 +14,6 @@ use crate::model::non_empty;
 use crate::types::canonical_type;
 use rayon::prelude::*;
 use std::borrow::Cow;
-use std::ops::Bound::{Included, Unbounded};
 
 /// Whether `c` is written without spaces between words (kana, CJK ideographs, full-width forms).
 pub fn is_cjk(c: char) -> bool {
@@ -143,14 +142,14 @@ impl Groups<'_> {
     /// prefix, so it would find nothing more (this halves Japanese prose, whose bigrams
     /// repeat).
     fn encode(mut self) -> String {
-        let mut earlier: std::collections::BTreeSet<String> = Default::default();
-        let mut out = String::new();
-        for (gi, g) in [&mut self.name, &mut self.ids, &mut self.text]
-            .into_iter()
-            .enumerate()
-        {
+        for g in [&mut self.name, &mut self.ids, &mut self.text] {
             g.sort_unstable();
             g.dedup();
+        }
+        // The tokens of the earlier groups, sorted (borrowed: no copy of any token).
+        let mut earlier: Vec<&str> = Vec::new();
+        let mut out = String::new();
+        for (gi, g) in [&self.name, &self.ids, &self.text].into_iter().enumerate() {
             if gi > 0 {
                 out.push('|');
             }
@@ -160,8 +159,7 @@ impl Groups<'_> {
                 let covered = gi > 0
                     && (g.get(i + 1).is_some_and(|n| n.starts_with(t.as_ref()))
                         || earlier
-                            .range::<str, _>((Included(t.as_ref()), Unbounded))
-                            .next()
+                            .get(earlier.partition_point(|e| *e < t.as_ref()))
                             .is_some_and(|n| n.starts_with(t.as_ref())));
                 if covered {
                     continue;
@@ -172,10 +170,30 @@ impl Groups<'_> {
                 first = false;
                 out.push_str(t);
             }
-            earlier.extend(g.iter().map(|t| t.to_string()));
+            if gi < 2 {
+                earlier = merge_sorted(&earlier, g);
+            }
         }
         out
     }
+}
+
+/// The tokens of two sorted lists, sorted (a merge: both are sorted already).
+fn merge_sorted<'s>(a: &[&'s str], b: &'s [Cow<'_, str>]) -> Vec<&'s str> {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        if a[i] <= b[j].as_ref() {
+            out.push(a[i]);
+            i += 1;
+        } else {
+            out.push(b[j].as_ref());
+            j += 1;
+        }
+    }
+    out.extend_from_slice(&a[i..]);
+    out.extend(b[j..].iter().map(|t| t.as_ref()));
+    out
 }
 
 /// Builds the contents of `search-index.js`: `window.RTCDOC_INDEX = {kinds, e}` where `kinds`
@@ -185,36 +203,50 @@ impl Groups<'_> {
 /// page's path from [`Catalog::pages`]. The JSON is escaped so that no
 /// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
 pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
-    // Entries are built in parallel; the indexed collect keeps catalogue order.
-    let mut entries: Vec<serde_json::Value> = (0..catalog.components.len())
+    // Each entry is built and written out as escaped JSON in parallel (the indexed collect
+    // keeps catalogue order); only the entries' text is held, never all their JSON values.
+    let mut entries: Vec<String> = (0..catalog.components.len())
         .into_par_iter()
-        .map(|ci| component_entry(catalog, ci))
+        .map(|ci| entry_js(&component_entry(catalog, ci)))
         .collect();
     entries.extend(catalog.data_types.iter().enumerate().map(|(ti, t)| {
         let page = catalog.data_type_page(ti).path("html");
-        idl_entry(catalog, "t", &page, &t.name, &t.spellings)
+        entry_js(&idl_entry(catalog, "t", &page, &t.name, &t.spellings))
     }));
     entries.extend(catalog.interfaces.iter().enumerate().map(|(ii, t)| {
         let page = catalog.interface_page(ii).path("html");
-        idl_entry(catalog, "i", &page, &t.name, &t.spellings)
+        entry_js(&idl_entry(catalog, "i", &page, &t.name, &t.spellings))
     }));
-    entries.extend(system_entries(catalog));
-    let index = serde_json::json!({
-        "kinds": {
-            "c": lang.t("component"),
-            "t": lang.t("data_type"),
-            "i": lang.t("interface"),
-            "s": lang.t("system"),
-        },
-        "e": entries,
+    entries.extend(system_entries(catalog).iter().map(entry_js));
+    let kinds = serde_json::json!({
+        "c": lang.t("component"),
+        "t": lang.t("data_type"),
+        "i": lang.t("interface"),
+        "s": lang.t("system"),
     });
-    let json = serde_json::to_string(&index).unwrap_or_else(|_| "{\"e\":[]}".into());
-    // 10,000 components make megabytes of each: not all three at once.
-    drop(index);
-    let mut out = String::with_capacity(json.len() + 64);
-    out.push_str("window.RTCDOC_INDEX=");
+    // `{"e":[…],"kinds":{…}}`: the object serde_json writes for these two keys (sorted).
+    let len: usize = entries.iter().map(|e| e.len() + 1).sum();
+    let mut out = String::with_capacity(len + 256);
+    out.push_str("window.RTCDOC_INDEX={\"e\":[");
+    for (i, e) in entries.iter().enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        out.push_str(e);
+    }
+    drop(entries);
+    out.push_str("],\"kinds\":");
+    push_js_safe_json(&mut out, &serde_json::to_string(&kinds).unwrap_or_default());
+    out.push_str("};\n");
+    out
+}
+
+/// One entry as JSON, escaped ([`push_js_safe_json`]: escaping works character by character,
+/// so escaping each entry is escaping the whole).
+fn entry_js(entry: &serde_json::Value) -> String {
+    let json = serde_json::to_string(entry).unwrap_or_else(|_| "null".into());
+    let mut out = String::with_capacity(json.len());
     push_js_safe_json(&mut out, &json);
-    out.push_str(";\n");
     out
 }
 
