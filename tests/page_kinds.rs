@@ -351,10 +351,8 @@ fn text_renderers_format_no_page_path() {
     );
 }
 
-/// "Connects to" says the same in every output: the ports of *other* components, grouped by
-/// component (a filter whose in- and out-port carry the same type is not its own peer).
-#[test]
-fn connects_to_is_the_same_in_every_output() {
+/// The example built in HTML, Markdown and Doxygen, and a reader of its files (`html/…`).
+fn examples_in_every_format() -> (tempfile::TempDir, impl Fn(&str) -> String) {
     let dir = tempfile::tempdir().unwrap();
     let o = common::rtcdoc(
         &[
@@ -368,7 +366,17 @@ fn connects_to_is_the_same_in_every_output() {
         dir.path(),
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let read = |p: &str| std::fs::read_to_string(dir.path().join("out").join(p)).unwrap();
+    let out = dir.path().join("out");
+    (dir, move |p: &str| {
+        std::fs::read_to_string(out.join(p)).unwrap()
+    })
+}
+
+/// "Connects to" says the same in every output: the ports of *other* components, grouped by
+/// component (a filter whose in- and out-port carry the same type is not its own peer).
+#[test]
+fn connects_to_is_the_same_in_every_output() {
+    let (_dir, read) = examples_in_every_format();
     let html = read("html/components/imagefilter.html");
     let md = read("markdown/components/imagefilter.md");
     let dox = read("doxygen/components/imagefilter.dox");
@@ -394,20 +402,7 @@ fn connects_to_is_the_same_in_every_output() {
 /// port pairs counted as the catalogue has them.
 #[test]
 fn the_data_flow_page_counts_port_pairs_between_groups() {
-    let dir = tempfile::tempdir().unwrap();
-    let o = common::rtcdoc(
-        &[
-            "build",
-            common::root().join("examples").to_str().unwrap(),
-            "-o",
-            "out",
-            "-f",
-            "html,markdown,doxygen",
-        ],
-        dir.path(),
-    );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let read = |p: &str| std::fs::read_to_string(dir.path().join("out").join(p)).unwrap();
+    let (_dir, read) = examples_in_every_format();
     let (html, md, dox) = (
         read("html/dataflow.html"),
         read("markdown/dataflow.md"),
