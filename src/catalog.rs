@@ -644,6 +644,31 @@ pub struct LoadedProfile {
     pub profile: Box<Profile>,
 }
 
+/// [`crate::catalog::Catalog::documented`] from the counts (several inputs of `check` add up).
+pub fn documented(components: usize, systems: usize, idl_files: usize) -> String {
+    let plural =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    let mut parts = Vec::new();
+    if components > 0 || (systems == 0 && idl_files == 0) {
+        parts.push(plural(
+            components,
+            "component profile",
+            "component profiles",
+        ));
+    }
+    if systems > 0 {
+        parts.push(plural(systems, "RT System", "RT Systems"));
+    }
+    if idl_files > 0 {
+        parts.push(plural(idl_files, "IDL file", "IDL files"));
+    }
+    match parts.pop() {
+        Some(last) if !parts.is_empty() => format!("{} and {last}", parts.join(", ")),
+        Some(last) => last,
+        None => String::new(),
+    }
+}
+
 /// Turns any text into a file-name-safe slug: lower-case ASCII letters, digits and `-`; never
 /// empty, never `.`/`..`, at most 64 characters.
 pub fn slugify(text: &str) -> String {
@@ -1609,6 +1634,16 @@ impl Catalog {
             Some(Direction::Required) => &t.providers,
             None => &[],
         }
+    }
+
+    /// What the catalogue documents, for a summary line: `83 component profiles, 1 RT System
+    /// and 66 IDL files` (kinds with none left out; `nothing` when empty).
+    pub fn documented(&self) -> String {
+        documented(
+            self.components.len(),
+            self.systems.len(),
+            self.idl.files.len(),
+        )
     }
 
     /// The data types and interfaces of the catalogue that no IDL file read defines (their

@@ -888,7 +888,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                     (_, 0) => String::new(),
                     (d, t) => format!("; IDL {d}/{t}"),
                 };
-                let documented = rtcdoc::catalog::backups::documented(counts.0, counts.1, counts.2);
+                let documented = rtcdoc::catalog::documented(counts.0, counts.1, counts.2);
                 let coverage = if report.coverage.total == 0 {
                     String::new()
                 } else {

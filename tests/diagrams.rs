@@ -168,20 +168,19 @@ fn system_inputs() -> Vec<(std::path::PathBuf, Option<String>)> {
 }
 
 fn graph(input: &Path, system: &Option<String>, format: &str, out: &Path) {
-    let mut args = vec![
-        "graph".to_string(),
-        input.display().to_string(),
-        "-f".into(),
-        format.into(),
-        "-o".into(),
-        out.display().to_string(),
-    ];
-    if let Some(s) = system {
-        args.push("--system".into());
-        args.push(s.clone());
-    }
-    let a: Vec<&str> = args.iter().map(String::as_str).collect();
-    let o = common::rtcdoc(&a, &common::root());
+    let select: Vec<&str> = match system {
+        Some(s) => vec!["--system", s],
+        None => Vec::new(),
+    };
+    graph_with(input, &select, format, out);
+}
+
+/// `rtcdoc graph INPUT SELECT… -f FORMAT -o OUT`, which must succeed.
+fn graph_with(input: &Path, select: &[&str], format: &str, out: &Path) {
+    let (input, out) = (input.display().to_string(), out.display().to_string());
+    let mut args = vec!["graph", &input, "-f", format, "-o", &out];
+    args.extend_from_slice(select);
+    let o = common::rtcdoc(&args, &common::root());
     assert!(
         o.status.success(),
         "rtcdoc {args:?}: {}",
@@ -198,20 +197,7 @@ fn dataflow_exports(format: &str, dir: &Path) -> Vec<std::path::PathBuf> {
     for (k, input) in inputs.iter().enumerate() {
         for grouping in ["category", "vendor"] {
             let f = dir.join(format!("dataflow-{k}-{grouping}.{format}"));
-            let o = common::rtcdoc(
-                &[
-                    "graph",
-                    input.to_str().unwrap(),
-                    "--dataflow",
-                    grouping,
-                    "-f",
-                    format,
-                    "-o",
-                    f.to_str().unwrap(),
-                ],
-                &common::root(),
-            );
-            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            graph_with(input, &["--dataflow", grouping], format, &f);
             out.push(f);
         }
     }

@@ -171,16 +171,6 @@ impl crate::catalog::Catalog {
         self.detached_backups = detached;
     }
 
-    /// What the catalogue documents, for a summary line: `83 component profiles, 1 RT System
-    /// and 66 IDL files` (kinds with none left out; `nothing` when empty).
-    pub fn documented(&self) -> String {
-        documented(
-            self.components.len(),
-            self.systems.len(),
-            self.idl.files.len(),
-        )
-    }
-
     /// `106 RTCBuilder backups (older versions of 41 profiles) are not documented as
     /// components`, when there are any.
     pub fn backup_note(&self) -> Option<String> {
@@ -202,31 +192,6 @@ impl crate::catalog::Catalog {
             (f, 1) => format!("{f} RTCBuilder backups (older versions of 1 profile) are not documented as components"),
             (f, p) => format!("{f} RTCBuilder backups (older versions of {p} profiles) are not documented as components"),
         })
-    }
-}
-
-/// [`crate::catalog::Catalog::documented`] from the counts (several inputs of `check` add up).
-pub fn documented(components: usize, systems: usize, idl_files: usize) -> String {
-    let plural =
-        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
-    let mut parts = Vec::new();
-    if components > 0 || (systems == 0 && idl_files == 0) {
-        parts.push(plural(
-            components,
-            "component profile",
-            "component profiles",
-        ));
-    }
-    if systems > 0 {
-        parts.push(plural(systems, "RT System", "RT Systems"));
-    }
-    if idl_files > 0 {
-        parts.push(plural(idl_files, "IDL file", "IDL files"));
-    }
-    match parts.pop() {
-        Some(last) if !parts.is_empty() => format!("{} and {last}", parts.join(", ")),
-        Some(last) => last,
-        None => String::new(),
     }
 }
 

@@ -40,7 +40,7 @@ impl Catalog {
             let count = |refs: &[super::PortRef]| {
                 let mut by_component: BTreeMap<usize, u64> = BTreeMap::new();
                 for r in refs {
-                    if let Some((ci, _)) = self.resolve_port(r) {
+                    if let Some(ci) = self.port_component(r) {
                         *by_component.entry(ci).or_default() += 1;
                     }
                 }
