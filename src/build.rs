@@ -213,12 +213,18 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     }
     diagnostics.extend(idl.diagnostics.iter().cloned());
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
-    let mut catalog = Catalog::build(profiles, diagnostics);
-    catalog.attach_idl(idl);
-    catalog.attach_systems(systems);
-    let root = input_root(input);
-    catalog.attach_backups(backups, &|rel| root.join(rel).is_file());
-    crate::readme::attach(&mut catalog, &root, &walk::exclude_matcher(&opts.exclude));
+    let docs = crate::catalog::Documents {
+        profiles,
+        diagnostics,
+        idl,
+        systems,
+        backups,
+    };
+    let catalog = Catalog::assemble(
+        docs,
+        &input_root(input),
+        &walk::exclude_matcher(&opts.exclude),
+    );
     failed_systems.sort();
     Ok(Loaded {
         catalog,

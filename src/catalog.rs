@@ -24,11 +24,13 @@
 pub mod backups;
 pub mod dataflow;
 pub mod pages;
+pub mod readmes;
 pub mod systems;
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
 use crate::model::{Direction, PortDirection, Profile};
 use crate::parse::SourceFormat;
+pub use crate::slug::{fnv1a, slugify};
 use crate::types::canonical_type;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -669,49 +671,6 @@ pub fn documented(components: usize, systems: usize, idl_files: usize) -> String
     }
 }
 
-/// Turns any text into a file-name-safe slug: lower-case ASCII letters, digits and `-`; never
-/// empty, never `.`/`..`, at most 64 characters.
-pub fn slugify(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut dash = false;
-    for ch in text.chars() {
-        if ch.is_ascii_alphanumeric() {
-            out.push(ch.to_ascii_lowercase());
-            dash = false;
-        } else if !dash && !out.is_empty() {
-            out.push('-');
-            dash = true;
-        }
-        if out.len() >= 64 {
-            break;
-        }
-    }
-    while out.ends_with('-') {
-        out.pop();
-    }
-    if out.is_empty() || !text.is_ascii() {
-        // Non-ASCII names (Japanese component names) get a stable hash so two of them never
-        // collide on the same ASCII remainder.
-        let h = format!("{:08x}", fnv1a(text.as_bytes()) as u32);
-        if out.is_empty() {
-            return format!("x-{h}");
-        }
-        out.push('-');
-        out.push_str(&h);
-    }
-    out
-}
-
-/// 64-bit FNV-1a: a tiny, stable hash for deterministic slugs (not for security).
-pub fn fnv1a(bytes: &[u8]) -> u64 {
-    let mut h: u64 = 0xcbf29ce484222325;
-    for b in bytes {
-        h ^= u64::from(*b);
-        h = h.wrapping_mul(0x100000001b3);
-    }
-    h
-}
-
 /// Assigns unique slugs: the plain slug when it is unique, else slug + hash of `disambiguator`
 /// (stable: adding another component never renames an existing page unless it collides).
 fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
@@ -794,6 +753,35 @@ fn sorted_unique(mut v: Vec<String>) -> Vec<String> {
     v.sort();
     v.dedup();
     v
+}
+
+/// Everything read from one input, before it is a catalogue ([`Catalog::assemble`]).
+pub struct Documents {
+    pub profiles: Vec<LoadedProfile>,
+    /// The load diagnostics: reader warnings, files that could not be read, IDL findings.
+    pub diagnostics: Vec<Diagnostic>,
+    pub idl: crate::idl::IdlSet,
+    pub systems: Vec<systems::LoadedSystem>,
+    pub backups: Vec<backups::Backup>,
+}
+
+impl Catalog {
+    /// The one assembly of a catalogue from its documents, used by `build`, `check`, `diff` and
+    /// `serve`'s rebuild alike: components, then IDL, systems, RTCBuilder backups (`exists`
+    /// says whether an input-relative file is there) and READMEs (read below `root`, unless
+    /// `excluded` names them). The `check` findings are not added here.
+    pub fn assemble(
+        docs: Documents,
+        root: &std::path::Path,
+        excluded: &(dyn Fn(&str) -> bool + Sync),
+    ) -> Catalog {
+        let mut catalog = Catalog::build(docs.profiles, docs.diagnostics);
+        catalog.attach_idl(docs.idl);
+        catalog.attach_systems(docs.systems);
+        catalog.attach_backups(docs.backups, &|rel| root.join(rel).is_file());
+        catalog.attach_readmes(root, excluded);
+        catalog
+    }
 }
 
 impl Catalog {

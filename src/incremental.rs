@@ -369,13 +369,15 @@ impl Workspace {
             }
         }
         let diags: Vec<Diagnostic> = self.warnings.values().flatten().cloned().collect();
-        let mut catalog = Catalog::build(profiles.into_values().collect(), diags);
-        catalog.attach_idl(idl);
-        catalog.attach_systems(systems);
-        let root = &self.input_root;
-        catalog.attach_backups(backups, &|rel| root.join(rel).is_file());
-        crate::readme::attach(
-            &mut catalog,
+        let docs = crate::catalog::Documents {
+            profiles: profiles.into_values().collect(),
+            diagnostics: diags,
+            idl,
+            systems,
+            backups,
+        };
+        let mut catalog = Catalog::assemble(
+            docs,
             &self.input_root,
             &walk::exclude_matcher(&self.opts.load.exclude),
         );

@@ -1,10 +1,10 @@
 //! rtcdoc: documentation for OpenRTM RT-Component profiles.
 //!
-//! Pipeline: files → [`walk`] → [`parse`] → documents (component profiles [`model::Profile`],
-//! RT Systems [`system::RtSystem`], IDL files [`idl`]) → [`catalog::Catalog`] (entries,
-//! cross-references, RTCBuilder backups, the page list) → [`check`] / [`diff`] →
-//! [`render`]ers (HTML, Markdown, Doxygen, JSON), driven by [`build`] (and [`incremental`] for
-//! `serve`). `ARCHITECTURE.md` is the map.
+//! Pipeline: files → [`walk`] → [`parse`] / [`idl`] → documents ([`model`]: component profiles,
+//! RT Systems, IDL files) → [`catalog::Catalog::assemble`] (entries, cross-references, systems,
+//! RTCBuilder backups, READMEs, the page list) → [`check`] / [`diff`] → [`render`]ers (HTML,
+//! Markdown, Doxygen, JSON), driven by [`build`] (and [`incremental`] for `serve`).
+//! `ARCHITECTURE.md` is the map.
 
 #[cfg(feature = "alloc-stats")]
 pub mod alloc_stats;
@@ -26,7 +26,8 @@ pub mod parse;
 pub mod readme;
 pub mod render;
 pub mod serve;
-pub mod system;
+pub mod slug;
+
 pub mod types;
 pub mod value;
 pub mod walk;

@@ -63,7 +63,19 @@ pub fn named_like_profile(path: &Path) -> bool {
     is_backup_name(name)
 }
 
-pub use crate::catalog::backups::is_backup_name;
+/// Whether a file name is one of RTCBuilder's backups: `RTC.xml` followed by a timestamp of
+/// digits, optionally ending in `.xml` (`RTC.xml20230831164412.xml` occurs too).
+pub fn is_backup_name(name: &str) -> bool {
+    backup_timestamp(name).is_some()
+}
+
+/// The digits after `RTC.xml` in a backup's name.
+pub fn backup_timestamp(name: &str) -> Option<&str> {
+    let rest = name.strip_prefix("RTC.xml")?;
+    let digits = rest.strip_suffix(".xml").unwrap_or(rest);
+    ((8..=17).contains(&digits.len()) && digits.bytes().all(|b| b.is_ascii_digit()))
+        .then_some(digits)
+}
 
 /// Whether a (lower-case) extension is one a document may have: `.xml`, `.yaml`, `.yml`, and
 /// `.rtsys` (RTSystemEditor's own save dialog offers it for RT System profiles). What the file

@@ -4,10 +4,10 @@
 //! real RTSystemEditor files read with no lost value and no RTC006 warning.
 
 use rtcdoc::diagnostic::{codes, Diagnostic, Severity};
+use rtcdoc::model::system::*;
 use rtcdoc::model::{Extra, ExtraKind, Pos};
 use rtcdoc::parse::rts::{is_system, parse, ParsedSystem};
 use rtcdoc::parse::{Limits, SourceFormat};
-use rtcdoc::system::*;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 

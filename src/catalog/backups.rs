@@ -74,19 +74,8 @@ impl Backup {
     }
 }
 
-/// Whether a file name is one of RTCBuilder's backups: `RTC.xml` followed by a timestamp of
-/// digits, optionally ending in `.xml` (`RTC.xml20230831164412.xml` occurs too).
-pub fn is_backup_name(name: &str) -> bool {
-    timestamp(name).is_some()
-}
-
-/// The digits after `RTC.xml` in a backup's name.
-fn timestamp(name: &str) -> Option<&str> {
-    let rest = name.strip_prefix("RTC.xml")?;
-    let digits = rest.strip_suffix(".xml").unwrap_or(rest);
-    ((8..=17).contains(&digits.len()) && digits.bytes().all(|b| b.is_ascii_digit()))
-        .then_some(digits)
-}
+use crate::walk::backup_timestamp as timestamp;
+pub use crate::walk::is_backup_name;
 
 /// The save time a backup's name encodes (`yyyymmddhhmmss`, or just `yyyymmdd`), as
 /// `YYYY-MM-DD hh:mm:ss`; `None` when the digits are not a plausible date.

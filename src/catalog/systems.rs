@@ -11,9 +11,9 @@
 //! so `catalog.json` stays readable when the component list changes.
 
 use super::{facet_key, slugify, unique_slugs, Catalog, Component};
+use crate::model::system::{PortEnd, RtSystem, SystemComponent};
 use crate::model::{non_empty, PortDirection};
 use crate::parse::SourceFormat;
-use crate::system::{PortEnd, RtSystem, SystemComponent};
 use serde::Serialize;
 use std::collections::HashMap;
 
@@ -561,7 +561,7 @@ pub fn all_values(p: &RtSystem, show_host: bool) -> Vec<(String, String)> {
 pub fn is_naming_path(v: &str) -> bool {
     v.trim()
         .split_once('/')
-        .is_some_and(|(host, _)| crate::system::is_private_property(None, Some(host)))
+        .is_some_and(|(host, _)| crate::model::system::is_private_property(None, Some(host)))
 }
 
 /// How many host values the pages and the JSON leave out of `p` unless asked to show them:
@@ -578,12 +578,18 @@ pub fn host_values(p: &RtSystem) -> usize {
 }
 
 /// Calls `f` on every property anywhere in `p` (the nodes of [`RtSystem::all_properties`]).
-fn for_each_property_mut(p: &mut RtSystem, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
-    use crate::system::TargetComponent;
-    fn target(t: &mut TargetComponent, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+fn for_each_property_mut(
+    p: &mut RtSystem,
+    f: &mut dyn FnMut(&mut crate::model::system::SystemProperty),
+) {
+    use crate::model::system::TargetComponent;
+    fn target(
+        t: &mut TargetComponent,
+        f: &mut dyn FnMut(&mut crate::model::system::SystemProperty),
+    ) {
         t.properties.iter_mut().for_each(&mut *f);
     }
-    fn end(e: &mut Option<PortEnd>, f: &mut dyn FnMut(&mut crate::system::SystemProperty)) {
+    fn end(e: &mut Option<PortEnd>, f: &mut dyn FnMut(&mut crate::model::system::SystemProperty)) {
         if let Some(e) = e {
             e.properties.iter_mut().for_each(&mut *f);
         }

@@ -8,7 +8,7 @@ use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, P
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
-use crate::system::PortEnd;
+use crate::model::system::PortEnd;
 use crate::types::canonical_type;
 use std::collections::HashMap;
 

@@ -11,7 +11,7 @@
 use super::{codes, Change, Key, Level, Namer};
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
-use crate::system::{short_port_name, ComponentIdParts, PortEnd, RtSystem};
+use crate::model::system::{short_port_name, ComponentIdParts, PortEnd, RtSystem};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// One system profile of a side.

@@ -4,7 +4,7 @@
 //! untagged text), `@param[dir] name`, `@return`, `@exception`, `@note`, `@see`, `@section`,
 //! structural labels (`@struct X`) and any other tag, kept as (tag, text).
 
-use super::model::{IdlDoc, IdlDocLanguage, IdlDocParam, IdlDocSection, IdlDocTag};
+use crate::model::idl::{IdlDoc, IdlDocLanguage, IdlDocParam, IdlDocSection, IdlDocTag};
 
 /// A command found in the text: byte range of `@cmd`, and its name.
 struct Cmd<'a> {

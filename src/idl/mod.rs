@@ -35,11 +35,10 @@ mod decode;
 mod doc;
 mod expr;
 mod lex;
-mod model;
 mod parse;
 mod pp;
 
-pub use model::*;
+pub use crate::model::idl::*;
 
 use crate::diagnostic::Diagnostic;
 use crate::model::Pos;

@@ -14,9 +14,9 @@
 use super::doc::parse_doc;
 use super::expr::{text_of, Eval, Value};
 use super::lex::{lex_line, Tok, Token};
-use super::model::*;
 use super::{codes, IdlOptions};
 use crate::diagnostic::Diagnostic;
+use crate::model::idl::*;
 use crate::model::Pos;
 use std::collections::HashMap;
 

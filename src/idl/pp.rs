@@ -12,9 +12,9 @@
 use super::decode::decode;
 use super::expr::{Eval, Value};
 use super::lex::{lex, lex_line, Tok, Token};
-use super::model::{IdlInclude, IdlPragma};
 use super::{codes, IdlOptions, SourceFile};
 use crate::diagnostic::Diagnostic;
+use crate::model::idl::{IdlInclude, IdlPragma};
 use crate::model::Pos;
 use std::collections::{HashMap, HashSet};
 use std::rc::Rc;

@@ -4,7 +4,7 @@
 
 use super::{Limits, SourceFormat};
 use crate::diagnostic::{codes, Diagnostic};
-use crate::system::RtSystem;
+use crate::model::system::RtSystem;
 
 pub use super::xml::rts::{NS_RTS, NS_RTS_EXT};
 

@@ -9,9 +9,9 @@
 
 use super::{slow_value_with_root, source, untag, untag_ref, Locator, Reader};
 use crate::diagnostic::{codes, Diagnostic};
+use crate::model::system::*;
 use crate::model::{Extra, Pos};
 use crate::parse::Limits;
-use crate::system::*;
 use serde_norway::{Mapping, Value};
 
 const ROOT: &str = "rtsProfile";

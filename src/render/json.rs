@@ -288,7 +288,7 @@ struct DocumentRead {
 struct SystemRead {
     source: String,
     format: crate::parse::SourceFormat,
-    profile: Box<crate::system::RtSystem>,
+    profile: Box<crate::model::system::RtSystem>,
 }
 
 /// serde_json's message without the position it appends (the caller puts it in front).

@@ -1031,7 +1031,7 @@ impl Renderer for MarkdownRenderer {
                 out.write(&path, text.as_bytes())
             })?;
         // The images the READMEs show, each copied once (mdBook copies them into the book).
-        let assets = crate::readme::assets(cat);
+        let assets = cat.readme_assets();
         for (asset, abs) in &assets {
             out.write_owned(asset, crate::readme::read_asset(abs)?)?;
         }

@@ -10,8 +10,8 @@ use crate::catalog::systems::{
 };
 use crate::catalog::{Catalog, Component, Page};
 use crate::i18n::Lang;
+use crate::model::system::PortEnd;
 use crate::model::{non_empty, Text};
-use crate::system::PortEnd;
 
 /// How a page links and heads its sections.
 pub struct Targets<'a> {

@@ -9,9 +9,9 @@
 
 use super::{attr_extra, build_any_tree, decode, node_extra, Attr, Mapper, Node, Ns};
 use crate::diagnostic::{codes, Diagnostic};
+use crate::model::system::*;
 use crate::model::{Extra, Text};
 use crate::parse::Limits;
-use crate::system::*;
 
 /// Namespace URI of the basic system profile (`RtsProfile.xsd`).
 pub const NS_RTS: &str = "http://www.openrtp.org/namespaces/rts";

@@ -1087,7 +1087,7 @@ impl HtmlRenderer {
             }
         }
         // The images the READMEs show, each copied once.
-        for (asset, abs) in crate::readme::assets(catalog) {
+        for (asset, abs) in catalog.readme_assets() {
             all_paths.push(asset.to_string());
             if wanted(asset) {
                 out.write_owned(asset, crate::readme::read_asset(abs)?)?;

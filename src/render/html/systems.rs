@@ -8,8 +8,8 @@ use super::{
     crumbs_home, crumbs_section, ctx, page_title, KeyValue, Link, Page, PageContext, Site,
 };
 use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
+use crate::model::system::{PortEnd, RtSystem};
 use crate::model::{non_empty, Text};
-use crate::system::{PortEnd, RtSystem};
 use serde::Serialize;
 
 const ROOT: &str = "../";
@@ -191,7 +191,7 @@ impl Site<'_> {
         let p: &RtSystem = &s.profile;
         let name = p.name().to_string();
         let parts = p.id_parts.as_ref();
-        let part = |f: fn(&crate::system::SystemIdParts) -> &Option<Text>| {
+        let part = |f: fn(&crate::model::system::SystemIdParts) -> &Option<Text>| {
             parts.map(|x| txt(f(x))).unwrap_or_default()
         };
         let kv = |k: &str, v: String| KeyValue {

@@ -17,11 +17,11 @@
 //! Rendering is the renderers' (`render::html::readme`); this module reads, classifies and
 //! resolves paths.
 
-use crate::catalog::Catalog;
+pub mod html;
+
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::model::Pos;
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// A README larger than this (1 MiB) is not shown.
@@ -441,11 +441,11 @@ pub fn asset_path(path: &str, ext: &str) -> String {
         .next()
         .and_then(|n| n.rsplit_once('.').map(|(s, _)| s))
         .unwrap_or("image");
-    let slug = crate::catalog::slugify(stem);
+    let slug = crate::slug::slugify(stem);
     let slug = slug.get(..32).unwrap_or(&slug).trim_end_matches('-');
     format!(
         "{ASSET_DIR}/{slug}-{:016x}.{ext}",
-        crate::catalog::fnv1a(path.as_bytes())
+        crate::slug::fnv1a(path.as_bytes())
     )
 }
 
@@ -460,7 +460,7 @@ fn position_of(text: &str, needle: &str) -> Pos {
 fn images(root: &Path, file: &str, text: &str, dir: &str) -> (Vec<Image>, Vec<Diagnostic>) {
     let mut found = Vec::new();
     let mut diags = Vec::new();
-    for src in crate::render::html::readme::image_sources(text) {
+    for src in html::image_sources(text) {
         let Target::Relative(path, _) = classify(&src) else {
             continue;
         };
@@ -525,76 +525,46 @@ fn images(root: &Path, file: &str, text: &str, dir: &str) -> (Vec<Image>, Vec<Di
     (found, diags)
 }
 
-/// Reads the README of every component folder of `catalog` (below the input at `root`),
-/// attaches it to the components of that folder and adds the findings (once per README). A
-/// README whose path `excluded` accepts (`--exclude`) is not read.
-pub fn attach(catalog: &mut Catalog, root: &Path, excluded: &(dyn Fn(&str) -> bool + Sync)) {
-    let mut folders: BTreeMap<String, Vec<usize>> = BTreeMap::new();
-    for (ci, c) in catalog.components.iter().enumerate() {
-        let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
-        folders.entry(dir.to_string()).or_default().push(ci);
+/// Reads the README of input folder `dir` (below the input at `root`), if it has one that
+/// `excluded` (`--exclude`) does not name: the README to show, if any, and the findings.
+pub fn read_folder(
+    root: &Path,
+    dir: &str,
+    excluded: &(dyn Fn(&str) -> bool + Sync),
+) -> (Option<Readme>, Vec<Diagnostic>) {
+    let Some((path, name)) = find(&root.join(dir)) else {
+        return (None, Vec::new());
+    };
+    let file = if dir.is_empty() {
+        name
+    } else {
+        format!("{dir}/{name}")
+    };
+    if excluded(&file) {
+        return (None, Vec::new());
     }
-    use rayon::prelude::*;
-    let read: Vec<(Vec<usize>, Option<Readme>, Vec<Diagnostic>)> = folders
-        .into_par_iter()
-        .map(|(dir, members)| {
-            let Some((path, name)) = find(&root.join(&dir)) else {
-                return (members, None, Vec::new());
-            };
-            let file = if dir.is_empty() {
-                name
-            } else {
-                format!("{dir}/{name}")
-            };
-            if excluded(&file) {
-                return (members, None, Vec::new());
-            }
-            match read(&path) {
-                Read::Shown(text) => {
-                    let (images, diags) = images(root, &file, &text, &dir);
-                    (members, Some(Readme { file, text, images }), diags)
-                }
-                Read::Generated(pos, by) => {
-                    let d = Diagnostic::info(
-                        GENERATED,
-                        &file,
-                        format!("the README was generated from the profile ({by}); it repeats the page and is not shown"),
-                    )
-                    .at(pos)
-                    .with_hint("write what the component is for and how to run it (in RTCBuilder's sections Usage, Setup, … or a README.md of your own) to have it shown");
-                    (members, None, vec![d])
-                }
-                Read::Unreadable(why, hint, pos) => (
-                    members,
-                    None,
-                    vec![Diagnostic::warning(UNREADABLE, &file, why)
-                        .at(pos)
-                        .with_hint(hint)],
-                ),
-            }
-        })
-        .collect();
-    for (members, readme, diags) in read {
-        if let Some(r) = readme {
-            for &ci in &members {
-                catalog.components[ci].readme = Some(r.clone());
-            }
+    match read(&path) {
+        Read::Shown(text) => {
+            let (images, diags) = images(root, &file, &text, dir);
+            (Some(Readme { file, text, images }), diags)
         }
-        catalog.diagnostics.extend(diags);
-    }
-    crate::diagnostic::sort(&mut catalog.diagnostics);
-}
-
-/// Every image file the READMEs of `catalog` show: (site path of the copy, file), each once,
-/// sorted by site path.
-pub fn assets(catalog: &Catalog) -> Vec<(&str, &Path)> {
-    let mut all: BTreeMap<&str, &Path> = BTreeMap::new();
-    for c in &catalog.components {
-        for i in c.readme.iter().flat_map(|r| &r.images) {
-            all.insert(&i.asset, &i.abs);
+        Read::Generated(pos, by) => {
+            let d = Diagnostic::info(
+                GENERATED,
+                &file,
+                format!("the README was generated from the profile ({by}); it repeats the page and is not shown"),
+            )
+            .at(pos)
+            .with_hint("write what the component is for and how to run it (in RTCBuilder's sections Usage, Setup, … or a README.md of your own) to have it shown");
+            (None, vec![d])
         }
+        Read::Unreadable(why, hint, pos) => (
+            None,
+            vec![Diagnostic::warning(UNREADABLE, &file, why)
+                .at(pos)
+                .with_hint(hint)],
+        ),
     }
-    all.into_iter().collect()
 }
 
 /// Reads image `abs` for its copy (at most [`MAX_IMAGE`] bytes; it was checked when loaded).
