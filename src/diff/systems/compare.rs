@@ -314,7 +314,7 @@ impl Cx<'_> {
                     .to_string()
             } else {
                 format!(
-                    "{} lose the data and services it exchanged with them, and the system no longer starts it",
+                    "the instances connected to it ({}) lose the data and services it exchanged with them, and the system no longer starts it",
                     peers.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ")
                 )
             };
@@ -847,7 +847,7 @@ impl Cx<'_> {
         }
         self.connector_properties(&base, label, &a.properties, &b.properties, &reported, b.pos);
         let skip_ends: &[&str] = if ends_changed {
-            &["instanceName", "portName"]
+            &["instanceName", "portName", "componentId"]
         } else {
             &["instanceName"]
         };
@@ -932,7 +932,7 @@ impl Cx<'_> {
                         b.pos,
                     );
                     let skip: &[&str] = if changed {
-                        &["instanceName", "portName"]
+                        &["instanceName", "portName", "componentId"]
                     } else {
                         &["instanceName"]
                     };
@@ -977,7 +977,11 @@ impl Cx<'_> {
             base.to_string(),
             (Some(was.clone()), Some(now.clone())),
             format!(
-                "{kind} `{label}` now connects {now} instead of {was}: {} no longer connected by it",
+                "{kind} `{label}` now connects `{}` → `{}` instead of `{}` → `{}`: {} no longer connected by it",
+                end_text(ns),
+                end_text(nt),
+                end_text(os),
+                end_text(ot),
                 left.iter()
                     .map(|l| format!("`{l}` is"))
                     .collect::<Vec<_>>()
