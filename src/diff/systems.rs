@@ -256,8 +256,10 @@ fn system_key(s: &LoadedSystem) -> String {
 }
 
 /// Compares the systems of both sides: each pair with [`compare_systems`], a system of one side
-/// only as removed (DIFF151) or added (DIFF351); several systems with one id that cannot be
-/// paired are DIFF003. Returns the counts.
+/// only as removed (DIFF151) or added (DIFF351). Several systems with one id (RTSystemEditor's
+/// `DefaultSystem`) are paired by identical file path, then by identical values (copies), and
+/// when one is left on each side, those two; what is still left on both sides is DIFF003.
+/// Returns the counts.
 pub(super) fn compare_all(
     old: &[LoadedSystem],
     new: &[LoadedSystem],
@@ -303,6 +305,29 @@ pub(super) fn compare_all(
                 None => true,
             },
         );
+        // Copies: a system equal to one of the other side (positions aside) is that one.
+        if !lo.is_empty() && !ln.is_empty() {
+            let mut by_print: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+            for &n in ln.iter().rev() {
+                by_print
+                    .entry(compare::fingerprint(&new[n].system))
+                    .or_default()
+                    .push(n);
+            }
+            lo.retain(|&o| {
+                match by_print
+                    .get_mut(&compare::fingerprint(&old[o].system))
+                    .and_then(Vec::pop)
+                {
+                    Some(n) => {
+                        ln.retain(|&x| x != n);
+                        pairs.push((o, n));
+                        false
+                    }
+                    None => true,
+                }
+            });
+        }
         if lo.len() == 1 && ln.len() == 1 {
             pairs.push((lo[0], ln[0]));
             lo.clear();

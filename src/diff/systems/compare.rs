@@ -53,6 +53,12 @@ pub fn compare_systems_as(label: &str, old: &RtSystem, new: &RtSystem) -> Vec<Ch
     cx.out
 }
 
+/// A system's values without positions, derived values and host data, as text: equal for
+/// copies of one system (which [`compare_systems`] finds no change between).
+pub(super) fn fingerprint(s: &RtSystem) -> String {
+    without(s, &[]).to_string()
+}
+
 /// How changes name a system: its id as written, else `(no id)`.
 pub fn system_label(s: &RtSystem) -> String {
     non_empty(&s.id).unwrap_or("(no id)").to_string()
