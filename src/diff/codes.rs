@@ -138,7 +138,7 @@ pub static CODES: &[Code] = &[
         level: Warning,
         name: "ambiguous-system",
         summary: "several RT System profiles on a side share one system id and cannot be paired",
-        explanation: "Systems are matched by the vendor and name of their id (`RTSystem:vendor:name:version`, the version left out), else by file. RTSystemEditor saves every new system as `DefaultSystem` unless renamed, so unrelated systems often share an id; those are paired by identical file path, and when one is left on each side, those two. Systems still left on both sides cannot be told apart, so they are not compared: this warning names their files instead of guessing a pairing that would report invented changes. Give each system its own id (RTSystemEditor: Save As, or the `id` of the profile).",
+        explanation: "Systems are matched by the vendor and name of their id (`RTSystem:vendor:name:version`, the version left out), else by file. RTSystemEditor saves every new system as `DefaultSystem` unless renamed, so unrelated systems often share an id; those are paired by identical file path, then by identical values (copies), and when one is left on each side, those two. Systems still left on both sides cannot be told apart, so they are not compared: this warning names their files instead of guessing a pairing that would report invented changes. Give each system its own id (RTSystemEditor: Save As, or the `id` of the profile).",
     },
     Code {
         code: COMPONENT_REMOVED,
