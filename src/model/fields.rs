@@ -420,6 +420,10 @@ impl Node {
     pub fn child(self, json: &str) -> Option<&'static Child> {
         CHILDREN.iter().find(|c| c.parent == self && c.json == json)
     }
+    /// The child nodes of this node.
+    pub fn children(self) -> impl Iterator<Item = &'static Child> {
+        CHILDREN.iter().filter(move |c| c.parent == self)
+    }
     /// Whether the node is a documentation node (`rtcDoc:Doc`).
     pub fn is_doc(self) -> bool {
         matches!(
@@ -507,4 +511,225 @@ pub fn item_key(list: &str) -> Option<&'static str> {
         Holds::Keyed(k) if c.json == list => Some(k),
         _ => None,
     })
+}
+
+/// Whether the value under JSON key `key` is compared whole (a constraint, a list of unnamed
+/// items or of texts), whatever node holds it.
+pub fn compared_whole(key: &str) -> bool {
+    CHILDREN
+        .iter()
+        .any(|c| c.json == key && c.holds == Holds::Whole)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::Value;
+
+    #[test]
+    fn the_table_is_in_field_order_and_every_field_has_its_line() {
+        for (i, &f) in Field::ALL.iter().enumerate() {
+            assert_eq!(f as usize, i);
+            assert_eq!(Field::from_index(u8::try_from(i).expect("u8")), Some(f));
+            let d = f.def();
+            assert_eq!((d.field, d.node), (f, f.node()), "{f:?}");
+        }
+        assert!(Field::ALL.len() <= usize::from(u8::MAX));
+    }
+
+    #[test]
+    fn names_and_spellings_are_unique_on_each_node() {
+        for &f in Field::ALL {
+            let d = f.def();
+            let node = f.node();
+            assert_eq!(node.json_field(d.json), Some(f), "{f:?} json");
+            for s in d.xml {
+                assert_eq!(node.xml(s.name).map(|(x, _)| x.field), Some(f), "{f:?} xml");
+            }
+            for s in d.yaml {
+                assert_eq!(node.yaml(s.name).map(|(x, _)| x.field), Some(f), "{f:?} yaml");
+            }
+            // The spec's spelling comes first and is not an older writer's.
+            for list in [d.xml, d.yaml] {
+                assert!(list.first().is_none_or(|s| s.dialect.is_none()), "{f:?}");
+            }
+        }
+    }
+
+    /// The node of `f` with only `f` set, as JSON.
+    fn json_with(f: Field) -> Value {
+        fn set<T: Fields + serde::Serialize>(mut t: T, f: Field) -> Value {
+            *t.slot(f).expect("a field of the node") = Some("set-by-test".into());
+            serde_json::to_value(&t).expect("json")
+        }
+        match f.node() {
+            Node::Profile => set(Profile::default(), f),
+            Node::BasicInfo => set(BasicInfo::default(), f),
+            Node::BasicDoc => set(BasicDoc::default(), f),
+            Node::Action => set(
+                Action {
+                    kind: ActionKind::OnExecute,
+                    implemented: None,
+                    doc: None,
+                    pos: Pos::default(),
+                    extra: Vec::new(),
+                },
+                f,
+            ),
+            Node::ActionDoc => set(ActionDoc::default(), f),
+            Node::Configuration => set(Configuration::default(), f),
+            Node::ConfigurationDoc => set(ConfigurationDoc::default(), f),
+            Node::DataPort => set(DataPort::default(), f),
+            Node::DataPortDoc => set(DataPortDoc::default(), f),
+            Node::Event => set(Event::default(), f),
+            Node::ServicePort => set(ServicePort::default(), f),
+            Node::ServicePortDoc => set(ServicePortDoc::default(), f),
+            Node::TransMethod => set(TransMethod::default(), f),
+            Node::ServiceInterface => set(ServiceInterface::default(), f),
+            Node::ServiceInterfaceDoc => set(ServiceInterfaceDoc::default(), f),
+            Node::Parameter => set(Parameter::default(), f),
+            Node::Property => set(Property::default(), f),
+            Node::Language => set(Language::default(), f),
+            Node::Target => set(Target::default(), f),
+            Node::Library => set(Library::default(), f),
+            Node::ConfigurationSet | Node::Constraint | Node::TextList => {
+                panic!("{f:?} on a node without fields")
+            }
+        }
+    }
+
+    /// Renaming a serde field without its line here fails this test: `diff` and the positions
+    /// find fields by the table's JSON name.
+    #[test]
+    fn every_json_name_is_the_serde_name() {
+        for &f in Field::ALL {
+            let v = json_with(f);
+            let set: Vec<&String> = v
+                .as_object()
+                .expect("an object")
+                .iter()
+                .filter(|(_, x)| x.as_str() == Some("set-by-test"))
+                .map(|(k, _)| k)
+                .collect();
+            assert_eq!(set, [f.json()], "{f:?}");
+        }
+    }
+
+    /// A profile with one of every node.
+    fn full_profile() -> Profile {
+        let constraint = || Constraint {
+            kind: ConstraintKind::Empty,
+            pos: Pos::default(),
+            extra: Vec::new(),
+        };
+        let property = || Property {
+            name: Some("p".into()),
+            ..Default::default()
+        };
+        Profile {
+            basic_info: BasicInfo {
+                doc: Some(BasicDoc::default()),
+                version_up_logs: vec!["log".into()],
+                properties: vec![property()],
+                ..Default::default()
+            },
+            actions: vec![Action {
+                kind: ActionKind::OnExecute,
+                implemented: None,
+                doc: Some(ActionDoc::default()),
+                pos: Pos::default(),
+                extra: Vec::new(),
+            }],
+            configuration_set: Some(ConfigurationSet {
+                configurations: vec![Configuration {
+                    name: Some("c".into()),
+                    doc: Some(ConfigurationDoc::default()),
+                    constraint: Some(constraint()),
+                    properties: vec![property()],
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }),
+            data_ports: vec![DataPort {
+                name: Some("d".into()),
+                doc: Some(DataPortDoc::default()),
+                constraint: Some(constraint()),
+                properties: vec![property()],
+                events: vec![Event {
+                    name: Some("e".into()),
+                    doc: Some(DataPortDoc::default()),
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }],
+            service_ports: vec![ServicePort {
+                name: Some("s".into()),
+                doc: Some(ServicePortDoc::default()),
+                properties: vec![property()],
+                trans_methods: vec![TransMethod::default()],
+                interfaces: vec![ServiceInterface {
+                    name: Some("i".into()),
+                    doc: Some(ServiceInterfaceDoc::default()),
+                    properties: vec![property()],
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }],
+            parameters: vec![Parameter {
+                name: Some("x".into()),
+                ..Default::default()
+            }],
+            language: Some(Language {
+                targets: vec![Target {
+                    libraries: vec![Library {
+                        name: Some("l".into()),
+                        ..Default::default()
+                    }],
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }),
+            ..Default::default()
+        }
+    }
+
+    /// Every child of the table is under its JSON key in the serialised model, and the items
+    /// of a keyed list carry their key.
+    #[test]
+    fn every_child_is_under_its_serde_name() {
+        fn check(node: Node, v: &Value, seen: &mut Vec<(Node, &'static str)>) {
+            for c in node.children() {
+                let x = v
+                    .get(c.json)
+                    .unwrap_or_else(|| panic!("{node:?} has no `{}` in {v}", c.json));
+                seen.push((node, c.json));
+                match c.holds {
+                    Holds::One => check(c.node, x, seen),
+                    Holds::Keyed(key) => {
+                        let item = &x.as_array().expect("a list")[0];
+                        assert!(item.get(key).is_some(), "{node:?}.{} items: {key}", c.json);
+                        check(c.node, item, seen);
+                    }
+                    Holds::Whole => {
+                        assert!(!x.is_null(), "{node:?}.{}", c.json);
+                        let first = x.as_array().and_then(|a| a.first());
+                        if let Some(item) = first.filter(|i| i.is_object()) {
+                            check(c.node, item, seen);
+                        }
+                    }
+                }
+            }
+        }
+        let v = serde_json::to_value(full_profile()).expect("json");
+        let mut seen = Vec::new();
+        check(Node::Profile, &v, &mut seen);
+        for c in CHILDREN {
+            assert!(
+                seen.contains(&(c.parent, c.json)),
+                "{:?}.{} not reached",
+                c.parent,
+                c.json
+            );
+        }
+    }
 }
