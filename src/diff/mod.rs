@@ -1584,3 +1584,181 @@ fn constraint_change(ctx: &Ctx, label: &str) -> (Option<&'static str>, Option<St
         ),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::fields::Fields;
+    use crate::model::{Configuration, ConfigurationSet, DataPort, ServiceInterface, ServicePort};
+
+    fn profile() -> Profile {
+        Profile {
+            id: Some("RTC:v:c:n:1.0".into()),
+            data_ports: vec![DataPort {
+                name: Some("out".into()),
+                port_type: Some("DataOutPort".into()),
+                ..Default::default()
+            }],
+            configuration_set: Some(ConfigurationSet {
+                configurations: vec![Configuration {
+                    name: Some("gain".into()),
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }),
+            service_ports: vec![ServicePort {
+                name: Some("svc".into()),
+                interfaces: vec![ServiceInterface {
+                    name: Some("if".into()),
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }],
+            ..Default::default()
+        }
+    }
+
+    /// Sets `f` on the first node of its kind in `p` (by the table's slot, not by a name).
+    fn set(p: &mut Profile, f: Field, v: &str) {
+        let slot = match f.node() {
+            Kind::Profile => p.slot(f),
+            Kind::BasicInfo => p.basic_info.slot(f),
+            Kind::DataPort => p.data_ports[0].slot(f),
+            Kind::ServicePort => p.service_ports[0].slot(f),
+            Kind::ServiceInterface => p.service_ports[0].interfaces[0].slot(f),
+            Kind::Configuration => p
+                .configuration_set
+                .as_mut()
+                .and_then(|cs| cs.configurations.first_mut())
+                .and_then(|c| c.slot(f)),
+            other => panic!("{other:?} not in the test profile"),
+        };
+        *slot.expect("a field of the node") = Some(v.into());
+    }
+
+    /// The places and codes of the changes from `old` to `new`.
+    fn classified(old: &Profile, new: &Profile) -> Vec<(Place, &'static str)> {
+        let (ot, nt) = (tree(old), tree(new));
+        let mut found = Vec::new();
+        walk(&mut Vec::new(), &ot, &nt, None, &mut found);
+        let ctx = Ctx {
+            component: "n",
+            old,
+            new,
+            file: "new.xml",
+            old_file: "old.xml",
+        };
+        let ident = |v: &str| Ident {
+            key: Key("v".into(), "c".into(), "n".into()),
+            version: v.into(),
+            id: format!("RTC:v:c:n:{v}"),
+            language: String::new(),
+        };
+        let (oi, ni) = (ident("1.0"), ident("1.0"));
+        let mut out = Vec::new();
+        let mut places = Vec::new();
+        for f in &found {
+            let before = out.len();
+            classify(&ctx, f, false, &oi, &ni, &mut out);
+            places.extend(out[before..].iter().map(|c| (place(&f.path).0, c.code)));
+        }
+        places
+    }
+
+    /// Every field of the nodes `diff` classifies is found at its typed place when only it
+    /// changes: the path the JSON tree gives resolves through the table to the same field.
+    #[test]
+    fn every_field_change_is_found_at_its_field() {
+        let nodes = [
+            Kind::Profile,
+            Kind::BasicInfo,
+            Kind::DataPort,
+            Kind::ServicePort,
+            Kind::ServiceInterface,
+            Kind::Configuration,
+        ];
+        for node in nodes {
+            for d in node.fields() {
+                // The names match the items: a renamed item is a removal and an addition.
+                if d.json == "name" || d.field == Field::ProfileId {
+                    continue;
+                }
+                let (mut old, mut new) = (profile(), profile());
+                set(&mut old, d.field, "1");
+                set(&mut new, d.field, "2");
+                let got = classified(&old, &new);
+                assert_eq!(got.len(), 1, "{:?}: {got:?}", d.field);
+                assert_eq!(got[0].0, Place::Field(d.field), "{:?}", d.field);
+                if d.doc {
+                    assert_eq!(got[0].1, codes::DOCUMENTATION_CHANGED, "{:?}", d.field);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_unit_change_is_unit_changed() {
+        for f in [Field::DataPortUnit, Field::ConfigurationUnit] {
+            let (mut old, mut new) = (profile(), profile());
+            set(&mut old, f, "m");
+            set(&mut new, f, "mm");
+            assert_eq!(
+                classified(&old, &new),
+                [(Place::Field(f), codes::UNIT_CHANGED)],
+                "{f:?}"
+            );
+        }
+        // A unit of the documentation is not the port's unit.
+        let (old, mut new) = (profile(), profile());
+        new.data_ports[0].doc = Some(crate::model::DataPortDoc {
+            unit: Some("mm".into()),
+            ..Default::default()
+        });
+        assert_eq!(
+            classified(&old, &new),
+            [(
+                Place::Field(Field::DataPortDocUnit),
+                codes::DOCUMENTATION_CHANGED
+            )]
+        );
+    }
+
+    #[test]
+    fn paths_resolve_to_places() {
+        let p = |s: &str| s.split('/').map(String::from).collect::<Vec<_>>();
+        assert_eq!(
+            place(&p("dataPorts/out")),
+            (Place::Item(Kind::DataPort), false)
+        );
+        assert_eq!(
+            place(&p("servicePorts/svc/interfaces/if/type")),
+            (Place::Field(Field::InterfaceType), false)
+        );
+        assert_eq!(
+            place(&p("configurations/gain/constraint")),
+            (
+                Place::Child {
+                    parent: Kind::Configuration,
+                    node: Kind::Constraint
+                },
+                false
+            )
+        );
+        assert_eq!(
+            place(&p("basicInfo/versionUpLogs")),
+            (
+                Place::Child {
+                    parent: Kind::BasicInfo,
+                    node: Kind::TextList
+                },
+                true
+            )
+        );
+        assert_eq!(
+            place(&p("dataPorts/out/events/e/doc/description")),
+            (Place::Field(Field::DataPortDocDescription), true)
+        );
+        assert_eq!(place(&p("dataPorts/out/extra")), (Place::Other, false));
+        assert_eq!(place(&p("writtenAs")), (Place::Other, false));
+    }
+}

@@ -547,7 +547,11 @@ mod tests {
                 assert_eq!(node.xml(s.name).map(|(x, _)| x.field), Some(f), "{f:?} xml");
             }
             for s in d.yaml {
-                assert_eq!(node.yaml(s.name).map(|(x, _)| x.field), Some(f), "{f:?} yaml");
+                assert_eq!(
+                    node.yaml(s.name).map(|(x, _)| x.field),
+                    Some(f),
+                    "{f:?} yaml"
+                );
             }
             // The spec's spelling comes first and is not an older writer's.
             for list in [d.xml, d.yaml] {
