@@ -209,6 +209,11 @@ impl AttrPos {
     /// The position of the field whose JSON name is `name` (the spec's name: `portType`), when
     /// it was written. The entries of one node have distinct names.
     pub fn get(&self, name: &str) -> Option<Pos> {
+        // A name no field has (a field renamed in the table, not in a rule) is a bug.
+        debug_assert!(
+            Field::ALL.iter().any(|f| f.json() == name),
+            "no field is called `{name}`"
+        );
         self.0
             .iter()
             .find(|(f, _)| Field::from_index(*f).is_some_and(|f| f.json() == name))

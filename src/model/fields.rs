@@ -108,6 +108,8 @@ macro_rules! table {
         impl Field {
             /// Every field, in table order (`Field::ALL[f as usize] == f`).
             pub const ALL: &'static [Field] = &[$($(Field::$var,)*)*];
+            /// The JSON name of each field, in table order.
+            const JSON: &'static [&'static str] = &[$($($json,)*)*];
             /// The node the field belongs to.
             pub fn node(self) -> Node {
                 match self { $($(Field::$var => Node::$node,)*)* }
@@ -388,7 +390,7 @@ impl Field {
     }
     /// The serde (JSON) name.
     pub fn json(self) -> &'static str {
-        self.def().json
+        Field::JSON[self as usize]
     }
     /// The field of index `i` (`Field::ALL[i]`).
     pub fn from_index(i: u8) -> Option<Field> {
@@ -533,6 +535,7 @@ mod tests {
             assert_eq!(Field::from_index(u8::try_from(i).expect("u8")), Some(f));
             let d = f.def();
             assert_eq!((d.field, d.node), (f, f.node()), "{f:?}");
+            assert_eq!(d.json, f.json(), "{f:?}");
         }
         assert!(Field::ALL.len() <= usize::from(u8::MAX));
     }
