@@ -28,6 +28,7 @@ pub mod systems;
 pub use codes::{Code, Level, CODES};
 
 use crate::catalog::{Catalog, Component};
+use crate::model::fields::{self, Field, Holds, Node as Kind};
 use crate::model::{non_empty, IdParts, Pos, Profile};
 use crate::types::canonical_type;
 use serde::Serialize;
@@ -617,14 +618,79 @@ enum Node {
     Keyed(BTreeMap<String, Node>),
 }
 
-/// Lists whose items are matched by name (`actions` by kind); other lists are compared whole.
+/// Lists whose items are matched by name (`actions` by kind), from the field table; other
+/// lists are compared whole.
 fn item_key(list: &str) -> Option<&'static str> {
-    match list {
-        "actions" => Some("kind"),
-        "dataPorts" | "servicePorts" | "interfaces" | "configurations" | "parameters"
-        | "properties" | "events" | "libraries" => Some("name"),
-        _ => None,
+    fields::item_key(list)
+}
+
+/// The JSON keys of the configuration set on the profile and of its parameters on the set:
+/// the tree lifts the parameters to the top level under the second.
+fn configuration_keys() -> (&'static str, &'static str) {
+    let key = |parent: Kind, node: Kind| {
+        fields::CHILDREN
+            .iter()
+            .find(|c| c.parent == parent && c.node == node)
+            .map_or("", |c| c.json)
+    };
+    (
+        key(Kind::Profile, Kind::ConfigurationSet),
+        key(Kind::ConfigurationSet, Kind::Configuration),
+    )
+}
+
+/// What a path of the tree points at, by the field table: a typed field path, so that a
+/// renamed serde field cannot silently change a change's code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Place {
+    /// A scalar field (`dataPorts/<name>/unit` → [`Field::DataPortUnit`]).
+    Field(Field),
+    /// An item of a list matched by name (`dataPorts/<name>`).
+    Item(Kind),
+    /// A child node or a value compared whole, on its parent (`…/<name>/constraint`).
+    Child { parent: Kind, node: Kind },
+    /// Anything else (`extra`, `writtenAs`, an unknown key).
+    Other,
+}
+
+/// The [`Place`] of a path, and whether a change there is documentation only (inside a doc
+/// node, or a field the table marks as documentation).
+fn place(p: &[String]) -> (Place, bool) {
+    let (_, configurations) = configuration_keys();
+    let mut node = Kind::Profile;
+    let mut doc = false;
+    let mut at = Place::Other;
+    let mut i = 0;
+    while i < p.len() {
+        let seg = p[i].as_str();
+        // The parameters are lifted to the top level (see [`tree`]).
+        let child = if node == Kind::Profile && seg == configurations {
+            Kind::ConfigurationSet.child(seg)
+        } else {
+            node.child(seg)
+        };
+        if let Some(c) = child {
+            doc |= c.doc || c.node.is_doc();
+            i += 1;
+            at = match c.holds {
+                Holds::Keyed(_) if i < p.len() => {
+                    i += 1;
+                    Place::Item(c.node)
+                }
+                _ => Place::Child {
+                    parent: node,
+                    node: c.node,
+                },
+            };
+            node = c.node;
+            continue;
+        }
+        return match node.json_field(seg) {
+            Some(f) if i + 1 == p.len() => (Place::Field(f), doc || f.def().doc),
+            _ => (Place::Other, doc),
+        };
     }
+    (at, doc)
 }
 
 /// The label of each item: its name (`(unnamed)` when empty), `name#2` for the second with the
@@ -707,7 +773,8 @@ fn strip_pos(v: Value) -> Value {
 
 fn node(key: &str, v: Value) -> Node {
     match v {
-        Value::Object(mut m) if key != "constraint" => {
+        // A constraint is compared whole (as a formula, by the classification).
+        Value::Object(mut m) if !fields::compared_whole(key) => {
             let pos = m.get("pos").and_then(pos_of);
             m.remove("pos");
             m.remove("actionsPos");
@@ -739,13 +806,14 @@ fn node(key: &str, v: Value) -> Node {
 /// top-level `configurations` list (paths read `configurations/max_speed/defaultValue`).
 fn tree(p: &Profile) -> Node {
     let mut v = serde_json::to_value(p).unwrap_or(Value::Null);
+    let (set, configurations) = configuration_keys();
     if let Some(m) = v.as_object_mut() {
         let configs = m
-            .get_mut("configurationSet")
+            .get_mut(set)
             .and_then(Value::as_object_mut)
-            .and_then(|cs| cs.remove("configurations"))
+            .and_then(|cs| cs.remove(configurations))
             .unwrap_or(Value::Array(Vec::new()));
-        m.insert("configurations".into(), configs);
+        m.insert(configurations.into(), configs);
     }
     node("", v)
 }
@@ -878,9 +946,9 @@ fn text(v: &Value) -> Option<String> {
 }
 
 /// A field of an item node, as text.
-fn field(n: &Node, name: &str) -> Option<String> {
+fn field(n: &Node, f: Field) -> Option<String> {
     match n {
-        Node::Record(m, _) => match m.get(name) {
+        Node::Record(m, _) => match m.get(f.json()) {
             Some(Node::Leaf(v)) => text(v).filter(|s| !s.trim().is_empty()),
             _ => None,
         },
@@ -926,22 +994,6 @@ impl Ctx<'_> {
     }
 }
 
-/// Fields whose change is documentation only.
-fn is_documentation(path: &[String]) -> bool {
-    path.iter().any(|s| s == "doc")
-        || matches!(
-            path.last().map(String::as_str),
-            Some(
-                "description"
-                    | "comment"
-                    | "abstract"
-                    | "hardwareProfile"
-                    | "versionUpLogs"
-                    | "ifdescription"
-            )
-        )
-}
-
 fn compare(
     component: &str,
     (oc, oi, old_file): (&Component, &Ident, &str),
@@ -966,7 +1018,9 @@ fn compare(
         old_file,
     };
     let start = out.len();
-    let basic_version_changed = found.iter().any(|f| f.path == ["basicInfo", "version"]);
+    let basic_version_changed = found
+        .iter()
+        .any(|f| place(&f.path).0 == Place::Field(Field::BasicVersion));
     for f in &found {
         classify(&ctx, f, basic_version_changed, oi, ni, out);
     }
@@ -981,12 +1035,19 @@ fn compare(
             .profile
             .basic_info
             .attr_pos
-            .get("version")
+            .field(Field::BasicVersion)
             .or(Some(nc.profile.basic_info.pos));
         ctx.push(
             out,
             codes::BREAKING_WITHOUT_BUMP,
-            &["basicInfo".into(), "version".into()],
+            &[
+                Kind::Profile
+                    .children()
+                    .find(|c| c.node == Kind::BasicInfo)
+                    .map_or("", |c| c.json)
+                    .into(),
+                Field::BasicVersion.json().into(),
+            ],
             pos.filter(|p| !p.is_unknown()),
             (version.clone(), version.clone()),
             format!(
@@ -1023,45 +1084,47 @@ fn classify(
     let p = &f.path;
     let pos = f.pos;
     let joined = p.join("/");
+    let (at, documentation) = place(p);
     match &f.raw {
         Raw::Removed(node) => {
-            let (code, message, old) = match (s(p, 0), p.len()) {
-                ("dataPorts", 2) => (
+            let (code, message, old) = match at {
+                Place::Item(Kind::DataPort) => (
                     codes::DATA_PORT_REMOVED,
                     format!("data port `{}` was removed", p[1]),
-                    field(node, "type"),
+                    field(node, Field::DataPortType),
                 ),
-                ("servicePorts", 2) => (
+                Place::Item(Kind::ServicePort) => (
                     codes::SERVICE_PORT_REMOVED,
                     format!("service port `{}` was removed", p[1]),
                     None,
                 ),
-                ("servicePorts", 4) if s(p, 2) == "interfaces" => (
+                Place::Item(Kind::ServiceInterface) => (
                     codes::INTERFACE_REMOVED,
                     format!(
                         "{} interface `{}` of service port `{}` was removed",
-                        field(node, "direction").unwrap_or_else(|| "service".into()),
+                        field(node, Field::InterfaceDirection).unwrap_or_else(|| "service".into()),
                         p[3],
                         p[1]
                     ),
-                    field(node, "type"),
+                    field(node, Field::InterfaceType),
                 ),
-                ("configurations", 2) => (
+                Place::Item(Kind::Configuration) => (
                     codes::CONFIGURATION_REMOVED,
                     format!("configuration parameter `{}` was removed", p[1]),
-                    field(node, "type"),
+                    field(node, Field::ConfigurationType),
                 ),
-                ("actions", 2)
-                    if crate::model::parse_bool(field(node, "implemented").as_deref())
-                        == Some(true) =>
+                Place::Item(Kind::Action)
+                    if crate::model::parse_bool(
+                        field(node, Field::ActionImplemented).as_deref(),
+                    ) == Some(true) =>
                 {
                     (
                         codes::ACTION_NOT_IMPLEMENTED,
                         format!("action `{}` is no longer listed (it was implemented)", p[1]),
-                        field(node, "implemented"),
+                        field(node, Field::ActionImplemented),
                     )
                 }
-                _ if is_documentation(p) => (
+                _ if documentation => (
                     codes::DOCUMENTATION_CHANGED,
                     format!("`{joined}` was removed"),
                     Some(plain(node)).as_ref().and_then(text),
@@ -1075,8 +1138,10 @@ fn classify(
             // Where it was: in OLD, the side where it exists; in NEW, a removed parameter's
             // configuration set (an annotation of NEW's file needs a line there), else nothing
             // (NEW's enclosing record is not where the item was).
-            let in_new = match (s(p, 0), &ctx.new.configuration_set) {
-                ("configurations", Some(cs)) if !cs.pos.is_unknown() => Some(cs.pos),
+            let in_new = match (p.first(), &ctx.new.configuration_set) {
+                (Some(k), Some(cs)) if k == configuration_keys().1 && !cs.pos.is_unknown() => {
+                    Some(cs.pos)
+                }
                 _ => None,
             };
             ctx.push(out, code, p, in_new, (old, None), message);
@@ -1086,23 +1151,23 @@ fn classify(
             }
         }
         Raw::Added(node) => {
-            let (code, message, new) = match (s(p, 0), p.len()) {
-                ("dataPorts", 2) => (
+            let (code, message, new) = match at {
+                Place::Item(Kind::DataPort) => (
                     codes::PORT_ADDED,
                     format!(
                         "data port `{}` ({}) was added",
                         p[1],
-                        field(node, "portType").unwrap_or_default()
+                        field(node, Field::DataPortPortType).unwrap_or_default()
                     ),
-                    field(node, "type"),
+                    field(node, Field::DataPortType),
                 ),
-                ("servicePorts", 2) => (
+                Place::Item(Kind::ServicePort) => (
                     codes::PORT_ADDED,
                     format!("service port `{}` was added", p[1]),
                     None,
                 ),
-                ("servicePorts", 4) if s(p, 2) == "interfaces" => {
-                    let required = field(node, "direction")
+                Place::Item(Kind::ServiceInterface) => {
+                    let required = field(node, Field::InterfaceDirection)
                         .is_some_and(|d| d.trim().eq_ignore_ascii_case("required"));
                     let code = if required {
                         codes::REQUIRED_INTERFACE_ADDED
@@ -1113,25 +1178,26 @@ fn classify(
                         code,
                         format!(
                             "{} interface `{}` was added to service port `{}`",
-                            field(node, "direction").unwrap_or_else(|| "service".into()),
+                            field(node, Field::InterfaceDirection)
+                                .unwrap_or_else(|| "service".into()),
                             p[3],
                             p[1]
                         ),
-                        field(node, "type"),
+                        field(node, Field::InterfaceType),
                     )
                 }
-                ("configurations", 2) => (
+                Place::Item(Kind::Configuration) => (
                     codes::CONFIGURATION_ADDED,
                     format!(
                         "configuration parameter `{}` was added (default {})",
                         p[1],
-                        field(node, "defaultValue")
+                        field(node, Field::ConfigurationDefaultValue)
                             .map(|d| format!("`{d}`"))
                             .unwrap_or_else(|| "empty".into())
                     ),
-                    field(node, "type"),
+                    field(node, Field::ConfigurationType),
                 ),
-                _ if is_documentation(p) => (
+                _ if documentation => (
                     codes::DOCUMENTATION_CHANGED,
                     format!("`{joined}` was added"),
                     Some(plain(node)).as_ref().and_then(text),
@@ -1164,9 +1230,11 @@ fn classify(
                 )
             });
             // Constraints are shown as formulas, not as their JSON.
-            let (old, new) = if p.last().map(String::as_str) == Some("constraint")
-                && s(p, 0) == "configurations"
-            {
+            let (old, new) = if at
+                == (Place::Child {
+                    parent: Kind::Configuration,
+                    node: Kind::Constraint,
+                }) {
                 let c = |prof: &Profile| {
                     by_label(prof.configurations(), |c| c.name.as_deref(), s(p, 1))
                         .and_then(|c| c.constraint.as_ref())
@@ -1200,6 +1268,7 @@ fn changed(
     ni: &Ident,
 ) -> (Option<&'static str>, Option<String>) {
     let last = p.last().map(String::as_str).unwrap_or("");
+    let (at, documentation) = place(p);
     let spelled = |what: &str| {
         Some(format!(
             "`{}` is spelled differently ({} → {}) but {what}",
@@ -1208,8 +1277,8 @@ fn changed(
             quoted(new)
         ))
     };
-    match (s(p, 0), p.len(), last) {
-        ("id", 1, _) => {
+    match at {
+        Place::Field(Field::ProfileId) => {
             if oi.version != ni.version && oi.key == ni.key {
                 if basic_version_changed {
                     (None, None)
@@ -1226,12 +1295,12 @@ fn changed(
                 )
             }
         }
-        ("basicInfo", 2, "version") => (
+        Place::Field(Field::BasicVersion) => (
             Some(codes::VERSION_CHANGED),
             Some(format!("version {} → {}", quoted(old), quoted(new))),
         ),
-        ("basicInfo", 2, "executionType") => (Some(codes::EXECUTION_TYPE), None),
-        ("basicInfo", 2, "executionRate") => {
+        Place::Field(Field::BasicExecutionType) => (Some(codes::EXECUTION_TYPE), None),
+        Place::Field(Field::BasicExecutionRate) => {
             let num = |s: Option<&str>| s.and_then(|s| s.trim().parse::<f64>().ok());
             match (num(old), num(new)) {
                 (Some(a), Some(b)) if a == b => {
@@ -1243,7 +1312,7 @@ fn changed(
                 ),
             }
         }
-        ("basicInfo", 2, "maxInstances") => {
+        Place::Field(Field::BasicMaxInstances) => {
             // Absent or empty: unlimited.
             let n = |s: Option<&str>| -> Option<Option<u64>> {
                 match s.map(str::trim).filter(|s| !s.is_empty()) {
@@ -1281,7 +1350,7 @@ fn changed(
                 ),
             }
         }
-        ("actions", 3, "implemented") => {
+        Place::Field(Field::ActionImplemented) => {
             let b = |s: Option<&str>| crate::model::parse_bool(s).unwrap_or(false);
             if b(old) && !b(new) {
                 (
@@ -1292,7 +1361,7 @@ fn changed(
                 (Some(codes::OTHER_CHANGED), None)
             }
         }
-        ("dataPorts", 3, "portType") => {
+        Place::Field(Field::DataPortPortType) => {
             let dir = |s: Option<&str>| {
                 crate::model::DataPort {
                     port_type: s.map(Into::into),
@@ -1317,7 +1386,7 @@ fn changed(
                 )
             }
         }
-        ("dataPorts", 3, "type") => {
+        Place::Field(Field::DataPortType) => {
             if same_type(old, new) {
                 (Some(codes::OTHER_CHANGED), spelled("names the same type"))
             } else {
@@ -1332,7 +1401,11 @@ fn changed(
                 )
             }
         }
-        ("dataPorts", 3, "interfaceType" | "dataflowType" | "subscriptionType") => {
+        Place::Field(
+            Field::DataPortInterfaceType
+            | Field::DataPortDataflowType
+            | Field::DataPortSubscriptionType,
+        ) => {
             let set = |s: Option<&str>| -> std::collections::BTreeSet<String> {
                 s.unwrap_or("")
                     .split(',')
@@ -1365,7 +1438,7 @@ fn changed(
                 (Some(codes::OTHER_CHANGED), None)
             }
         }
-        ("dataPorts" | "configurations", 3, "unit") => (
+        Place::Field(Field::DataPortUnit | Field::ConfigurationUnit) => (
             Some(codes::UNIT_CHANGED),
             Some(format!(
                 "unit of `{}` changed from {} to {}",
@@ -1374,7 +1447,7 @@ fn changed(
                 quoted(new)
             )),
         ),
-        ("servicePorts", 5, "type") if s(p, 2) == "interfaces" => {
+        Place::Field(Field::InterfaceType) => {
             if same_type(old, new) {
                 (
                     Some(codes::OTHER_CHANGED),
@@ -1393,7 +1466,7 @@ fn changed(
                 )
             }
         }
-        ("servicePorts", 5, "direction") if s(p, 2) == "interfaces" => {
+        Place::Field(Field::InterfaceDirection) => {
             let dir = |s: Option<&str>| {
                 crate::model::ServiceInterface {
                     direction: s.map(Into::into),
@@ -1419,7 +1492,7 @@ fn changed(
                 )
             }
         }
-        ("configurations", 3, "type") => {
+        Place::Field(Field::ConfigurationType) => {
             use crate::value::ValueType;
             let ty = |s: Option<&str>| ValueType::parse(s.unwrap_or(""));
             let same = match (ty(old), ty(new)) {
@@ -1445,7 +1518,7 @@ fn changed(
                 )
             }
         }
-        ("configurations", 3, "defaultValue") => (
+        Place::Field(Field::ConfigurationDefaultValue) => (
             Some(codes::DEFAULT_CHANGED),
             Some(format!(
                 "default of `{}` changed from {} to {}",
@@ -1454,8 +1527,11 @@ fn changed(
                 quoted(new)
             )),
         ),
-        ("configurations", 3, "constraint") => constraint_change(ctx, &p[1]),
-        _ if is_documentation(p) => (Some(codes::DOCUMENTATION_CHANGED), None),
+        Place::Child {
+            parent: Kind::Configuration,
+            node: Kind::Constraint,
+        } => constraint_change(ctx, &p[1]),
+        _ if documentation => (Some(codes::DOCUMENTATION_CHANGED), None),
         _ => (Some(codes::OTHER_CHANGED), None),
     }
 }
@@ -1531,5 +1607,183 @@ fn constraint_change(ctx: &Ctx, label: &str) -> (Option<&'static str>, Option<St
                 default_note()
             )),
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::fields::Fields;
+    use crate::model::{Configuration, ConfigurationSet, DataPort, ServiceInterface, ServicePort};
+
+    fn profile() -> Profile {
+        Profile {
+            id: Some("RTC:v:c:n:1.0".into()),
+            data_ports: vec![DataPort {
+                name: Some("out".into()),
+                port_type: Some("DataOutPort".into()),
+                ..Default::default()
+            }],
+            configuration_set: Some(ConfigurationSet {
+                configurations: vec![Configuration {
+                    name: Some("gain".into()),
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }),
+            service_ports: vec![ServicePort {
+                name: Some("svc".into()),
+                interfaces: vec![ServiceInterface {
+                    name: Some("if".into()),
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }],
+            ..Default::default()
+        }
+    }
+
+    /// Sets `f` on the first node of its kind in `p` (by the table's slot, not by a name).
+    fn set(p: &mut Profile, f: Field, v: &str) {
+        let slot = match f.node() {
+            Kind::Profile => p.slot(f),
+            Kind::BasicInfo => p.basic_info.slot(f),
+            Kind::DataPort => p.data_ports[0].slot(f),
+            Kind::ServicePort => p.service_ports[0].slot(f),
+            Kind::ServiceInterface => p.service_ports[0].interfaces[0].slot(f),
+            Kind::Configuration => p
+                .configuration_set
+                .as_mut()
+                .and_then(|cs| cs.configurations.first_mut())
+                .and_then(|c| c.slot(f)),
+            other => panic!("{other:?} not in the test profile"),
+        };
+        *slot.expect("a field of the node") = Some(v.into());
+    }
+
+    /// The places and codes of the changes from `old` to `new`.
+    fn classified(old: &Profile, new: &Profile) -> Vec<(Place, &'static str)> {
+        let (ot, nt) = (tree(old), tree(new));
+        let mut found = Vec::new();
+        walk(&mut Vec::new(), &ot, &nt, None, &mut found);
+        let ctx = Ctx {
+            component: "n",
+            old,
+            new,
+            file: "new.xml",
+            old_file: "old.xml",
+        };
+        let ident = |v: &str| Ident {
+            key: Key("v".into(), "c".into(), "n".into()),
+            version: v.into(),
+            id: format!("RTC:v:c:n:{v}"),
+            language: String::new(),
+        };
+        let (oi, ni) = (ident("1.0"), ident("1.0"));
+        let mut out = Vec::new();
+        let mut places = Vec::new();
+        for f in &found {
+            let before = out.len();
+            classify(&ctx, f, false, &oi, &ni, &mut out);
+            places.extend(out[before..].iter().map(|c| (place(&f.path).0, c.code)));
+        }
+        places
+    }
+
+    /// Every field of the nodes `diff` classifies is found at its typed place when only it
+    /// changes: the path the JSON tree gives resolves through the table to the same field.
+    #[test]
+    fn every_field_change_is_found_at_its_field() {
+        let nodes = [
+            Kind::Profile,
+            Kind::BasicInfo,
+            Kind::DataPort,
+            Kind::ServicePort,
+            Kind::ServiceInterface,
+            Kind::Configuration,
+        ];
+        for node in nodes {
+            for d in node.fields() {
+                // The names match the items: a renamed item is a removal and an addition.
+                if d.json == "name" || d.field == Field::ProfileId {
+                    continue;
+                }
+                let (mut old, mut new) = (profile(), profile());
+                set(&mut old, d.field, "1");
+                set(&mut new, d.field, "2");
+                let got = classified(&old, &new);
+                assert_eq!(got.len(), 1, "{:?}: {got:?}", d.field);
+                assert_eq!(got[0].0, Place::Field(d.field), "{:?}", d.field);
+                if d.doc {
+                    assert_eq!(got[0].1, codes::DOCUMENTATION_CHANGED, "{:?}", d.field);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_unit_change_is_unit_changed() {
+        for f in [Field::DataPortUnit, Field::ConfigurationUnit] {
+            let (mut old, mut new) = (profile(), profile());
+            set(&mut old, f, "m");
+            set(&mut new, f, "mm");
+            assert_eq!(
+                classified(&old, &new),
+                [(Place::Field(f), codes::UNIT_CHANGED)],
+                "{f:?}"
+            );
+        }
+        // A unit of the documentation is not the port's unit.
+        let (old, mut new) = (profile(), profile());
+        new.data_ports[0].doc = Some(crate::model::DataPortDoc {
+            unit: Some("mm".into()),
+            ..Default::default()
+        });
+        assert_eq!(
+            classified(&old, &new),
+            [(
+                Place::Field(Field::DataPortDocUnit),
+                codes::DOCUMENTATION_CHANGED
+            )]
+        );
+    }
+
+    #[test]
+    fn paths_resolve_to_places() {
+        let p = |s: &str| s.split('/').map(String::from).collect::<Vec<_>>();
+        assert_eq!(
+            place(&p("dataPorts/out")),
+            (Place::Item(Kind::DataPort), false)
+        );
+        assert_eq!(
+            place(&p("servicePorts/svc/interfaces/if/type")),
+            (Place::Field(Field::InterfaceType), false)
+        );
+        assert_eq!(
+            place(&p("configurations/gain/constraint")),
+            (
+                Place::Child {
+                    parent: Kind::Configuration,
+                    node: Kind::Constraint
+                },
+                false
+            )
+        );
+        assert_eq!(
+            place(&p("basicInfo/versionUpLogs")),
+            (
+                Place::Child {
+                    parent: Kind::BasicInfo,
+                    node: Kind::TextList
+                },
+                true
+            )
+        );
+        assert_eq!(
+            place(&p("dataPorts/out/events/e/doc/description")),
+            (Place::Field(Field::DataPortDocDescription), true)
+        );
+        assert_eq!(place(&p("dataPorts/out/extra")), (Place::Other, false));
+        assert_eq!(place(&p("writtenAs")), (Place::Other, false));
     }
 }

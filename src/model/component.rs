@@ -5,6 +5,7 @@
 //! the source said; typed views (`ActionKind`, `Direction`, `PortSide`, …) are offered as methods.
 //! Values the spec does not define are kept in an `extra` list on the nearest node.
 
+use super::fields::Field;
 use serde::{Deserialize, Serialize};
 
 /// A string value of a profile. Most values are short (names, types, numbers, `true`), and a
@@ -182,71 +183,41 @@ impl<'de> Deserialize<'de> for WrittenAs {
     }
 }
 
-/// Positions of a node's known attributes (XML) or keys (YAML), by spec field name, for the
-/// rules: RTCBuilder writes an element on one long line, so the element's start can be
-/// hundreds of columns away from the attribute that is wrong. Not part of the JSON.
-/// Each entry is a field's index in [`FIELDS`] and its position: 12 bytes, not the 24 of a
+/// Positions of a node's known attributes (XML) or keys (YAML), by field, for the rules:
+/// RTCBuilder writes an element on one long line, so the element's start can be hundreds of
+/// columns away from the attribute that is wrong. Not part of the JSON.
+/// Each entry is a field's index in [`Field::ALL`] and its position: 12 bytes, not the 24 of a
 /// `&str` and a position (at 10,000 profiles the positions are millions of entries).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct AttrPos(Vec<(u8, Pos)>);
 
-/// The spec field names of the attributes and keys whose positions are kept, in a fixed order
-/// (the indices of [`AttrPos`]); [`field_name`] maps older spellings onto them.
-const FIELDS: &[&str] = &[
-    "id",
-    "version",
-    "name",
-    "componentType",
-    "activityType",
-    "componentKind",
-    "rtcType",
-    "category",
-    "description",
-    "executionRate",
-    "executionType",
-    "maxInstances",
-    "vendor",
-    "abstract",
-    "hardwareProfile",
-    "creationDate",
-    "updateDate",
-    "comment",
-    "saveProject",
-    "portType",
-    "type",
-    "idlFile",
-    "interfaceType",
-    "dataflowType",
-    "subscriptionType",
-    "unit",
-    "variableName",
-    "position",
-    "direction",
-    "instanceName",
-    "path",
-    "defaultValue",
-];
-
-fn field_index(field: &str) -> Option<u8> {
-    FIELDS
-        .iter()
-        .position(|f| *f == field)
-        .and_then(|i| u8::try_from(i).ok())
-}
-
 impl AttrPos {
     /// Records the position of `field` (the first one wins, as for the value).
-    pub fn note(&mut self, field: &'static str, pos: Pos) {
-        if let Some(i) = field_index(field) {
-            if !self.0.iter().any(|(f, _)| *f == i) {
-                self.0.push((i, pos));
-            }
+    pub fn note(&mut self, field: Field, pos: Pos) {
+        let Ok(i) = u8::try_from(field as usize) else {
+            return;
+        };
+        if !self.0.iter().any(|(f, _)| *f == i) {
+            self.0.push((i, pos));
         }
     }
     /// The position of `field`, when it was written.
-    pub fn get(&self, field: &str) -> Option<Pos> {
-        let i = field_index(field)?;
+    pub fn field(&self, field: Field) -> Option<Pos> {
+        let i = u8::try_from(field as usize).ok()?;
         self.0.iter().find(|(f, _)| *f == i).map(|(_, p)| *p)
+    }
+    /// The position of the field whose JSON name is `name` (the spec's name: `portType`), when
+    /// it was written. The entries of one node have distinct names.
+    pub fn get(&self, name: &str) -> Option<Pos> {
+        // A name no field has (a field renamed in the table, not in a rule) is a bug.
+        debug_assert!(
+            Field::ALL.iter().any(|f| f.json() == name),
+            "no field is called `{name}`"
+        );
+        self.0
+            .iter()
+            .find(|(f, _)| Field::from_index(*f).is_some_and(|f| f.json() == name))
+            .map(|(_, p)| *p)
     }
     /// Gives back spare capacity (the readers push entry by entry).
     pub fn shrink_to_fit(&mut self) {
@@ -270,21 +241,6 @@ impl AttrPos {
     }
 }
 
-/// The spec field name of an attribute or key the readers know on the nodes that keep
-/// positions (profile, basic info, ports, interfaces, configurations), with the older
-/// spellings mapped to the field they mean.
-pub fn field_name(local: &str) -> Option<&'static str> {
-    let canonical = match local {
-        "rtcExt::comment" => "comment",
-        "rtcExt::saveProject" => "saveProject",
-        "subscriprionType" => "subscriptionType",
-        "varname" | "rtcExt::variableName" | "rtcExt::varname" => "variableName",
-        "rtcExt::position" => "position",
-        other => other,
-    };
-    FIELDS.iter().copied().find(|f| *f == canonical)
-}
-
 #[cfg(test)]
 mod attr_pos_tests {
     use super::*;
@@ -302,23 +258,15 @@ mod attr_pos_tests {
     }
 
     #[test]
-    fn every_field_name_has_an_index() {
-        // Every field under its own name, and the older spellings the readers meet.
-        let aliases = [
-            "rtcExt::comment",
-            "rtcExt::saveProject",
-            "subscriprionType",
-            "varname",
-            "rtcExt::variableName",
-            "rtcExt::varname",
-            "rtcExt::position",
-        ];
-        for local in FIELDS.iter().copied().chain(aliases) {
-            let f = field_name(local).expect(local);
+    fn every_field_has_a_position_by_its_name() {
+        for &f in Field::ALL {
             let mut a = AttrPos::default();
             let p = Pos { line: 3, column: 7 };
             a.note(f, p);
-            assert_eq!(a.get(f), Some(p), "{local}");
+            a.note(f, Pos::new(9, 9));
+            assert_eq!(a.get(f.json()), Some(p), "{f:?}");
+            assert_eq!(a.field(f), Some(p), "{f:?}");
+            assert_eq!(a.len(), 1);
         }
         assert_eq!(AttrPos::default().get("name"), None);
     }

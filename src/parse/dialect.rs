@@ -9,12 +9,7 @@
 use crate::diagnostic::{codes, Diagnostic};
 use crate::model::{IdParts, Pos, Profile, Text, WrittenAs};
 
-/// The writer generation of the dotted id, `varname`, `subscriprionType`, the language
-/// elements and `EVENT_DRIVEN`.
-pub const RTCBUILDER_01: &str = "RTCBuilder 0.1";
-/// OpenRTM-aist-Python's rtc-template and the old OpenRTP YAML samples: unprefixed `doc`,
-/// `position`, `varname`, `versionUpLog` keys.
-pub const RTC_TEMPLATE: &str = "rtc-template";
+pub use crate::model::fields::{RTCBUILDER_01, RTC_TEMPLATE};
 
 /// The language a child element of `<rtc:Language>` names (RTCBuilder 0.1), or the key of
 /// the YAML `language` map names (rtc-template: `java: {library: […]}`).

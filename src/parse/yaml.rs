@@ -18,6 +18,7 @@
 
 use super::{Limits, Parsed};
 use crate::diagnostic::{codes, Diagnostic};
+use crate::model::fields::{Fields, Kind};
 use crate::model::*;
 use serde::de::{DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde_norway::{Mapping, Value};
@@ -609,8 +610,15 @@ struct Reader<'a> {
     written_as: Vec<WrittenAs>,
 }
 
-/// Keys of one node read under an older spelling: (field, key as written, position).
-type Aliases = Vec<(&'static str, String, Pos)>;
+/// Keys of one node read under an older spelling: (field, key as written, position, writer).
+type Aliases = Vec<(&'static str, String, Pos, &'static str)>;
+
+/// rtc-template writes `doc` for `"rtcDoc::doc"`: recorded in `al`.
+fn doc_alias(n: &str, kp: Pos, al: &mut Aliases) {
+    if n == "doc" {
+        al.push(("rtcDoc::doc", n.into(), kp, super::dialect::RTC_TEMPLATE));
+    }
+}
 
 /// Text of a scalar key (keys are normally strings).
 fn key_text(k: &Value) -> String {
@@ -768,14 +776,49 @@ impl Reader<'_> {
         sink.push(e);
     }
 
+    /// A key the field table lists for `T`: its value read into `t`, its position noted where
+    /// `T` keeps positions, an older spelling recorded in `al`. False for any other key.
+    fn scalar<T: Fields>(
+        &mut self,
+        t: &mut T,
+        n: &str,
+        v: &Value,
+        kp: Pos,
+        al: &mut Aliases,
+    ) -> bool {
+        let Some((def, spelling)) = T::NODE.yaml(n) else {
+            return false;
+        };
+        if let Some(p) = t.attr_pos() {
+            p.note(def.field, kp);
+        }
+        if let Some(d) = spelling.dialect {
+            al.push((def.json, n.to_string(), kp, d));
+        }
+        let value = match def.kind {
+            Kind::Text => self.text(v, n, kp, t.extra_mut()),
+            Kind::Date => self.date(v, n, kp, t.extra_mut()),
+        };
+        if let Some(slot) = t.slot(def.field) {
+            *slot = value;
+        }
+        true
+    }
+
+    /// A node of scalars only (a doc, a property, a parameter, a library): each key the field
+    /// table lists for `T` read into `t`, any other unknown in `place`.
+    fn scalars<T: Fields>(&mut self, m: &Mapping, t: &mut T, place: &str) {
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            if !self.scalar(t, &n, v, kp, &mut Aliases::new()) {
+                self.unknown(&n, v, kp, place, t.extra_mut());
+            }
+        }
+    }
+
     /// Moves the aliases of a node into [`Profile::written_as`] as `node.field`.
     fn flush(&mut self, node: &str, aliases: Aliases) {
-        for (field, written, pos) in aliases {
-            let dialect = if written == "subscriprionType" {
-                super::dialect::RTCBUILDER_01
-            } else {
-                super::dialect::RTC_TEMPLATE
-            };
+        for (field, written, pos, dialect) in aliases {
             self.written_as.push(WrittenAs {
                 field: compact_str::format_compact!("{node}.{field}"),
                 written_as: written.into(),
@@ -954,14 +997,7 @@ impl Reader<'_> {
                 pos: p,
                 ..Property::default()
             };
-            for (k, v) in m {
-                let (n, kp) = self.key(k);
-                match n.as_str() {
-                    "name" => prop.name = self.text(v, &n, kp, &mut prop.extra),
-                    "value" => prop.value = self.text(v, &n, kp, &mut prop.extra),
-                    _ => self.unknown(&n, v, kp, "a property", &mut prop.extra),
-                }
-            }
+            self.scalars(m, &mut prop, "a property");
             out.push(prop);
         }
         out
@@ -974,12 +1010,10 @@ impl Reader<'_> {
         };
         for (k, v) in m {
             let (n, kp) = self.key(k);
-            if let Some(f) = field_name(&n) {
-                p.attr_pos.note(f, kp);
+            if self.scalar(p, &n, v, kp, &mut Aliases::new()) {
+                continue;
             }
             match n.as_str() {
-                "id" => p.id = self.text(v, &n, kp, &mut p.extra),
-                "version" => p.version = self.text(v, &n, kp, &mut p.extra),
                 "basicInfo" => {
                     p.basic_info.pos = kp;
                     self.basic_info(v, kp, &mut p.basic_info, &mut p.extra);
@@ -1038,8 +1072,8 @@ impl Reader<'_> {
         let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
-            if let Some(f) = field_name(&n) {
-                b.attr_pos.note(f, kp);
+            if self.scalar(b, &n, v, kp, &mut al) {
+                continue;
             }
             if matches!(n.as_str(), "doc" | "versionUpLog") {
                 al.push((
@@ -1050,28 +1084,11 @@ impl Reader<'_> {
                     },
                     n.clone(),
                     kp,
+                    super::dialect::RTC_TEMPLATE,
                 ));
             }
             let x = &mut b.extra;
             match n.as_str() {
-                "name" => b.name = self.text(v, &n, kp, x),
-                "componentType" => b.component_type = self.text(v, &n, kp, x),
-                "activityType" => b.activity_type = self.text(v, &n, kp, x),
-                "componentKind" => b.component_kind = self.text(v, &n, kp, x),
-                "rtcType" => b.rtc_type = self.text(v, &n, kp, x),
-                "category" => b.category = self.text(v, &n, kp, x),
-                "description" => b.description = self.text(v, &n, kp, x),
-                "executionRate" => b.execution_rate = self.text(v, &n, kp, x),
-                "executionType" => b.execution_type = self.text(v, &n, kp, x),
-                "maxInstances" => b.max_instances = self.text(v, &n, kp, x),
-                "vendor" => b.vendor = self.text(v, &n, kp, x),
-                "version" => b.version = self.text(v, &n, kp, x),
-                "abstract" => b.abstract_ = self.text(v, &n, kp, x),
-                "hardwareProfile" => b.hardware_profile = self.text(v, &n, kp, x),
-                "creationDate" => b.creation_date = self.date(v, &n, kp, x),
-                "updateDate" => b.update_date = self.date(v, &n, kp, x),
-                "rtcExt::comment" => b.comment = self.text(v, &n, kp, x),
-                "rtcExt::saveProject" => b.save_project = self.text(v, &n, kp, x),
                 "rtcExt::versionUpLogs" | "rtcExt::versionUpLog" | "versionUpLog" => {
                     b.version_up_logs = self.texts(v, &n, kp, x)
                 }
@@ -1084,19 +1101,7 @@ impl Reader<'_> {
                             pos: kp,
                             ..BasicDoc::default()
                         };
-                        for (k, v) in m {
-                            let (n, kp) = self.key(k);
-                            let x = &mut d.extra;
-                            match n.as_str() {
-                                "description" => d.description = self.text(v, &n, kp, x),
-                                "inout" => d.inout = self.text(v, &n, kp, x),
-                                "algorithm" => d.algorithm = self.text(v, &n, kp, x),
-                                "creator" => d.creator = self.text(v, &n, kp, x),
-                                "license" => d.license = self.text(v, &n, kp, x),
-                                "reference" => d.reference = self.text(v, &n, kp, x),
-                                _ => self.unknown(&n, v, kp, "basicInfo rtcDoc::doc", x),
-                            }
-                        }
+                        self.scalars(m, &mut d, "basicInfo rtcDoc::doc");
                         b.doc = Some(d);
                     }
                 }
@@ -1202,29 +1207,18 @@ impl Reader<'_> {
             if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
                 for (k, v) in m {
                     let (n, kp) = self.key(k);
-                    if n == "doc" {
-                        al.push(("rtcDoc::doc", n.clone(), kp));
+                    if self.scalar(&mut a, &n, v, kp, &mut al) {
+                        continue;
                     }
+                    doc_alias(&n, kp, &mut al);
                     match n.as_str() {
-                        "implemented" => a.implemented = self.text(v, &n, kp, &mut a.extra),
                         "rtcDoc::doc" | "doc" => {
                             if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
                                 let mut d = ActionDoc {
                                     pos: kp,
                                     ..ActionDoc::default()
                                 };
-                                for (k, v) in m {
-                                    let (n, kp) = self.key(k);
-                                    let x = &mut d.extra;
-                                    match n.as_str() {
-                                        "description" => d.description = self.text(v, &n, kp, x),
-                                        "preCondition" => d.pre_condition = self.text(v, &n, kp, x),
-                                        "postCondition" => {
-                                            d.post_condition = self.text(v, &n, kp, x)
-                                        }
-                                        _ => self.unknown(&n, v, kp, "an action's rtcDoc::doc", x),
-                                    }
-                                }
+                                self.scalars(m, &mut d, "an action's rtcDoc::doc");
                                 a.doc = Some(d);
                             }
                         }
@@ -1260,25 +1254,13 @@ impl Reader<'_> {
                 let mut al = Aliases::new();
                 for (k, v) in m {
                     let (n, kp) = self.key(k);
-                    if let Some(f) = field_name(&n) {
-                        c.attr_pos.note(f, kp);
+                    if self.scalar(&mut c, &n, v, kp, &mut al) {
+                        continue;
                     }
-                    match n.as_str() {
-                        "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
-                        "varname" | "rtcExt::varname" => al.push(("variableName", n.clone(), kp)),
-                        _ => {}
-                    }
+                    doc_alias(&n, kp, &mut al);
                     let x = &mut c.extra;
                     match n.as_str() {
-                        "name" => c.name = self.text(v, &n, kp, x),
-                        "type" => c.type_ = self.text(v, &n, kp, x),
-                        "defaultValue" => c.default_value = self.text(v, &n, kp, x),
-                        "unit" => c.unit = self.text(v, &n, kp, x),
                         "constraint" => c.constraint = self.constraint_root(v, kp, x),
-                        "rtcExt::comment" => c.comment = self.text(v, &n, kp, x),
-                        "rtcExt::variableName" | "rtcExt::varname" | "varname" => {
-                            c.variable_name = self.text(v, &n, kp, x)
-                        }
                         "rtcExt::property" | "rtcExt::properties" => {
                             c.properties = self.properties(v, &n, kp, x)
                         }
@@ -1288,25 +1270,7 @@ impl Reader<'_> {
                                     pos: kp,
                                     ..ConfigurationDoc::default()
                                 };
-                                for (k, v) in m {
-                                    let (n, kp) = self.key(k);
-                                    let x = &mut d.extra;
-                                    match n.as_str() {
-                                        "dataname" => d.dataname = self.text(v, &n, kp, x),
-                                        "defaultValue" => d.default_value = self.text(v, &n, kp, x),
-                                        "description" => d.description = self.text(v, &n, kp, x),
-                                        "unit" => d.unit = self.text(v, &n, kp, x),
-                                        "range" => d.range = self.text(v, &n, kp, x),
-                                        "constraint" => d.constraint = self.text(v, &n, kp, x),
-                                        _ => self.unknown(
-                                            &n,
-                                            v,
-                                            kp,
-                                            "a configuration's rtcDoc::doc",
-                                            x,
-                                        ),
-                                    }
-                                }
+                                self.scalars(m, &mut d, "a configuration's rtcDoc::doc");
                                 c.doc = Some(d);
                             }
                         }
@@ -1332,34 +1296,13 @@ impl Reader<'_> {
         let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
-            if let Some(f) = field_name(&n) {
-                d.attr_pos.note(f, kp);
+            if self.scalar(&mut d, &n, v, kp, &mut al) {
+                continue;
             }
-            match n.as_str() {
-                "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
-                "position" => al.push(("position", n.clone(), kp)),
-                "varname" | "rtcExt::varname" => al.push(("variableName", n.clone(), kp)),
-                "subscriprionType" => al.push(("subscriptionType", n.clone(), kp)),
-                _ => {}
-            }
+            doc_alias(&n, kp, &mut al);
             let x = &mut d.extra;
             match n.as_str() {
-                "portType" => d.port_type = self.text(v, &n, kp, x),
-                "name" => d.name = self.text(v, &n, kp, x),
-                "type" => d.type_ = self.text(v, &n, kp, x),
-                "idlFile" => d.idl_file = self.text(v, &n, kp, x),
-                "interfaceType" => d.interface_type = self.text(v, &n, kp, x),
-                "dataflowType" => d.dataflow_type = self.text(v, &n, kp, x),
-                "subscriptionType" | "subscriprionType" => {
-                    d.subscription_type = self.text(v, &n, kp, x)
-                }
-                "unit" => d.unit = self.text(v, &n, kp, x),
                 "constraint" => d.constraint = self.constraint_root(v, kp, x),
-                "rtcExt::comment" => d.comment = self.text(v, &n, kp, x),
-                "rtcExt::variableName" | "rtcExt::varname" | "varname" => {
-                    d.variable_name = self.text(v, &n, kp, x)
-                }
-                "rtcExt::position" | "position" => d.position = self.text(v, &n, kp, x),
                 "rtcExt::property" | "rtcExt::properties" => {
                     d.properties = self.properties(v, &n, kp, x)
                 }
@@ -1369,23 +1312,7 @@ impl Reader<'_> {
                             pos: kp,
                             ..DataPortDoc::default()
                         };
-                        for (k, v) in m {
-                            let (n, kp) = self.key(k);
-                            let x = &mut doc.extra;
-                            match n.as_str() {
-                                "description" => doc.description = self.text(v, &n, kp, x),
-                                "type" => doc.type_ = self.text(v, &n, kp, x),
-                                "number" => doc.number = self.text(v, &n, kp, x),
-                                "semantics" => doc.semantics = self.text(v, &n, kp, x),
-                                "unit" => doc.unit = self.text(v, &n, kp, x),
-                                // RTCBuilder spells it `occerrence`.
-                                "occurrence" | "occerrence" => {
-                                    doc.occurrence = self.text(v, &n, kp, x)
-                                }
-                                "operation" => doc.operation = self.text(v, &n, kp, x),
-                                _ => self.unknown(&n, v, kp, "a data port's rtcDoc::doc", x),
-                            }
-                        }
+                        self.scalars(m, &mut doc, "a data port's rtcDoc::doc");
                         d.doc = Some(doc);
                     }
                 }
@@ -1405,19 +1332,12 @@ impl Reader<'_> {
         let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
-            if let Some(f) = field_name(&n) {
-                s.attr_pos.note(f, kp);
+            if self.scalar(&mut s, &n, v, kp, &mut al) {
+                continue;
             }
-            match n.as_str() {
-                "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
-                "position" => al.push(("position", n.clone(), kp)),
-                _ => {}
-            }
+            doc_alias(&n, kp, &mut al);
             let x = &mut s.extra;
             match n.as_str() {
-                "name" => s.name = self.text(v, &n, kp, x),
-                "rtcExt::comment" => s.comment = self.text(v, &n, kp, x),
-                "rtcExt::position" | "position" => s.position = self.text(v, &n, kp, x),
                 "rtcExt::property" | "rtcExt::properties" => {
                     s.properties = self.properties(v, &n, kp, x)
                 }
@@ -1430,13 +1350,7 @@ impl Reader<'_> {
                             pos: ip,
                             ..TransMethod::default()
                         };
-                        for (k, v) in m {
-                            let (n, kp) = self.key(k);
-                            match n.as_str() {
-                                "kind" => t.kind = self.text(v, &n, kp, &mut t.extra),
-                                _ => self.unknown(&n, v, kp, "a transMethod", &mut t.extra),
-                            }
-                        }
+                        self.scalars(m, &mut t, "a transMethod");
                         s.trans_methods.push(t);
                     }
                 }
@@ -1455,15 +1369,7 @@ impl Reader<'_> {
                             pos: kp,
                             ..ServicePortDoc::default()
                         };
-                        for (k, v) in m {
-                            let (n, kp) = self.key(k);
-                            let x = &mut d.extra;
-                            match n.as_str() {
-                                "description" => d.description = self.text(v, &n, kp, x),
-                                "ifdescription" => d.ifdescription = self.text(v, &n, kp, x),
-                                _ => self.unknown(&n, v, kp, "a service port's rtcDoc::doc", x),
-                            }
-                        }
+                        self.scalars(m, &mut d, "a service port's rtcDoc::doc");
                         s.doc = Some(d);
                     }
                 }
@@ -1486,26 +1392,12 @@ impl Reader<'_> {
         let mut al = Aliases::new();
         for (k, v) in m {
             let (n, kp) = self.key(k);
-            if let Some(f) = field_name(&n) {
-                i.attr_pos.note(f, kp);
+            if self.scalar(&mut i, &n, v, kp, &mut al) {
+                continue;
             }
-            match n.as_str() {
-                "doc" => al.push(("rtcDoc::doc", n.clone(), kp)),
-                "varname" | "rtcExt::varname" => al.push(("variableName", n.clone(), kp)),
-                _ => {}
-            }
+            doc_alias(&n, kp, &mut al);
             let x = &mut i.extra;
             match n.as_str() {
-                "name" => i.name = self.text(v, &n, kp, x),
-                "type" => i.type_ = self.text(v, &n, kp, x),
-                "direction" => i.direction = self.text(v, &n, kp, x),
-                "instanceName" => i.instance_name = self.text(v, &n, kp, x),
-                "idlFile" => i.idl_file = self.text(v, &n, kp, x),
-                "path" => i.path = self.text(v, &n, kp, x),
-                "rtcExt::comment" => i.comment = self.text(v, &n, kp, x),
-                "rtcExt::variableName" | "rtcExt::varname" | "varname" => {
-                    i.variable_name = self.text(v, &n, kp, x)
-                }
                 "rtcExt::property" | "rtcExt::properties" => {
                     i.properties = self.properties(v, &n, kp, x)
                 }
@@ -1515,23 +1407,7 @@ impl Reader<'_> {
                             pos: kp,
                             ..ServiceInterfaceDoc::default()
                         };
-                        for (k, v) in m {
-                            let (n, kp) = self.key(k);
-                            let x = &mut d.extra;
-                            match n.as_str() {
-                                "description" => d.description = self.text(v, &n, kp, x),
-                                "docArgument" => d.doc_argument = self.text(v, &n, kp, x),
-                                "docReturn" => d.doc_return = self.text(v, &n, kp, x),
-                                "docException" => d.doc_exception = self.text(v, &n, kp, x),
-                                "docPreCondition" => d.doc_pre_condition = self.text(v, &n, kp, x),
-                                "docPostCondition" => {
-                                    d.doc_post_condition = self.text(v, &n, kp, x)
-                                }
-                                _ => {
-                                    self.unknown(&n, v, kp, "a service interface's rtcDoc::doc", x)
-                                }
-                            }
-                        }
+                        self.scalars(m, &mut d, "a service interface's rtcDoc::doc");
                         i.doc = Some(d);
                     }
                 }
@@ -1551,15 +1427,7 @@ impl Reader<'_> {
             pos,
             ..Parameter::default()
         };
-        for (k, v) in m {
-            let (n, kp) = self.key(k);
-            let x = &mut p.extra;
-            match n.as_str() {
-                "name" => p.name = self.text(v, &n, kp, x),
-                "defaultValue" => p.default_value = self.text(v, &n, kp, x),
-                _ => self.unknown(&n, v, kp, "a parameter", x),
-            }
-        }
+        self.scalars(m, &mut p, "a parameter");
         p
     }
 
@@ -1571,8 +1439,10 @@ impl Reader<'_> {
         };
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if self.scalar(&mut l, &n, v, kp, &mut Aliases::new()) {
+                continue;
+            }
             match n.as_str() {
-                "kind" => l.kind = self.text(v, &n, kp, &mut l.extra),
                 "rtcExt::targets" | "rtcExt::target" => {
                     for (idx, it) in self.seq(v, &n, kp, &mut l.extra).iter().enumerate() {
                         let Some((m, ip)) = self.map_item(it, &n, idx, &mut l.extra) else {
@@ -1615,12 +1485,11 @@ impl Reader<'_> {
         };
         for (k, v) in m {
             let (kn, kp) = self.key(k);
+            if self.scalar(&mut t, &kn, v, kp, &mut Aliases::new()) {
+                continue;
+            }
             let x = &mut t.extra;
             match kn.as_str() {
-                "os" => t.os = self.text(v, &kn, kp, x),
-                "langVersion" => t.lang_version = self.text(v, &kn, kp, x),
-                "other" => t.other = self.text(v, &kn, kp, x),
-                "cpuOther" => t.cpu_other = self.text(v, &kn, kp, x),
                 "arch" | "cpus" => t.cpus.extend(self.texts_or_text(v, &kn, kp, x)),
                 "osVersion" | "osVersions" => {
                     t.os_versions.extend(self.texts_or_text(v, &kn, kp, x))
@@ -1679,14 +1548,13 @@ impl Reader<'_> {
         };
         for (k, v) in m {
             let (n, kp) = self.key(k);
+            if self.scalar(&mut t, &n, v, kp, &mut Aliases::new()) {
+                continue;
+            }
             let x = &mut t.extra;
             match n.as_str() {
-                "langVersion" => t.lang_version = self.text(v, &n, kp, x),
-                "os" => t.os = self.text(v, &n, kp, x),
                 "osVersions" => t.os_versions = self.texts(v, &n, kp, x),
-                "other" => t.other = self.text(v, &n, kp, x),
                 "cpus" => t.cpus = self.texts(v, &n, kp, x),
-                "cpuOther" => t.cpu_other = self.text(v, &n, kp, x),
                 "libraries" => {
                     for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
                         let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
@@ -1696,17 +1564,7 @@ impl Reader<'_> {
                             pos: ip,
                             ..Library::default()
                         };
-                        for (k, v) in m {
-                            let (n, kp) = self.key(k);
-                            let x = &mut lib.extra;
-                            match n.as_str() {
-                                // The PIM calls the name `path` (NOTES).
-                                "name" | "path" => lib.name = self.text(v, &n, kp, x),
-                                "version" => lib.version = self.text(v, &n, kp, x),
-                                "other" => lib.other = self.text(v, &n, kp, x),
-                                _ => self.unknown(&n, v, kp, "a library", x),
-                            }
-                        }
+                        self.scalars(m, &mut lib, "a library");
                         t.libraries.push(lib);
                     }
                 }

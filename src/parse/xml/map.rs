@@ -2,6 +2,7 @@
 //! define for a node is kept in that node's `extra` list and reported as a warning.
 
 use super::*;
+use crate::model::fields::Fields;
 // ---------------------------------------------------------------------------------------------
 // Pass 3: tree → model
 // ---------------------------------------------------------------------------------------------
@@ -175,11 +176,52 @@ impl Mapper<'_> {
     }
 }
 
-/// Records the position of a known attribute in `pos` (by its spec field name).
-pub(super) fn note_pos(pos: &mut AttrPos, a: &Attr) {
-    if let Some(f) = a.key().and_then(field_name) {
-        pos.note(f, a.pos);
+/// An attribute read under an older spelling: the field's JSON name, the attribute and the
+/// writer of the spelling, for [`Profile::written_as`].
+pub(super) type Alias<'n, 't> = (&'static str, &'n Attr<'t>, &'static str);
+
+/// Reads the attributes of `n` that the field table lists for `T` into `t` (noting their
+/// positions where `T` keeps them); every other attribute is unknown on `on`. Returns the
+/// attributes read under an older spelling.
+pub(super) fn scalar_attrs<'n, 't, T: Fields>(
+    m: &mut Mapper,
+    n: &'n Node<'t>,
+    t: &mut T,
+    on: &str,
+    extra: &mut Vec<Extra>,
+) -> Vec<Alias<'n, 't>> {
+    let mut aliases = Vec::new();
+    for a in &n.attrs {
+        if !scalar_attr(m, a, t, on, extra, &mut aliases) {
+            m.unknown_attr(a, on, extra);
+        }
     }
+    aliases
+}
+
+/// Reads attribute `a` into `t` when the field table lists it for `T`; false otherwise.
+pub(super) fn scalar_attr<'n, 't, T: Fields>(
+    m: &mut Mapper,
+    a: &'n Attr<'t>,
+    t: &mut T,
+    on: &str,
+    extra: &mut Vec<Extra>,
+    aliases: &mut Vec<Alias<'n, 't>>,
+) -> bool {
+    let Some((def, spelling)) = a.key().and_then(|k| T::NODE.xml(k)) else {
+        return false;
+    };
+    if let Some(p) = t.attr_pos() {
+        p.note(def.field, a.pos);
+    }
+    if let Some(d) = spelling.dialect {
+        aliases.push((def.json, a, d));
+    }
+    match t.slot(def.field) {
+        Some(slot) => m.set(slot, a, on, extra),
+        None => return false,
+    }
+    true
 }
 
 /// Non-empty text of a text element (whitespace-only counts as empty).
@@ -195,18 +237,7 @@ pub(super) fn map_profile(m: &mut Mapper, n: &Node) -> Profile {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        note_pos(&mut p.attr_pos, a);
-        let slot = match a.key() {
-            Some("id") => &mut p.id,
-            Some("version") => &mut p.version,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut p, on, &mut extra);
     let mut seen_basic = false;
     for c in &n.children {
         match c.key() {
@@ -244,34 +275,7 @@ pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        note_pos(&mut b.attr_pos, a);
-        let slot = match a.key() {
-            Some("name") => &mut b.name,
-            Some("componentType") => &mut b.component_type,
-            Some("activityType") => &mut b.activity_type,
-            Some("componentKind") => &mut b.component_kind,
-            Some("rtcType") => &mut b.rtc_type,
-            Some("category") => &mut b.category,
-            Some("description") => &mut b.description,
-            Some("executionRate") => &mut b.execution_rate,
-            Some("executionType") => &mut b.execution_type,
-            Some("maxInstances") => &mut b.max_instances,
-            Some("vendor") => &mut b.vendor,
-            Some("version") => &mut b.version,
-            Some("abstract") => &mut b.abstract_,
-            Some("hardwareProfile") => &mut b.hardware_profile,
-            Some("creationDate") => &mut b.creation_date,
-            Some("updateDate") => &mut b.update_date,
-            Some("comment") => &mut b.comment,
-            Some("saveProject") => &mut b.save_project,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut b, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if b.doc.is_none() => b.doc = Some(map_basic_doc(m, c)),
@@ -300,21 +304,7 @@ pub(super) fn map_basic_doc(m: &mut Mapper, n: &Node) -> BasicDoc {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("description") => &mut d.description,
-            Some("inout") => &mut d.inout,
-            Some("algorithm") => &mut d.algorithm,
-            Some("creator") => &mut d.creator,
-            Some("license") => &mut d.license,
-            Some("reference") => &mut d.reference,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut d, on, &mut extra);
     leaf_children(m, n, on, &mut extra);
     d.extra = extra;
     d
@@ -360,12 +350,7 @@ pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
         extra: Vec::new(),
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        match a.key() {
-            Some("implemented") => m.set(&mut act.implemented, a, &on, &mut extra),
-            _ => m.unknown_attr(a, &on, &mut extra),
-        }
-    }
+    scalar_attrs(m, n, &mut act, &on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if act.doc.is_none() => {
@@ -375,18 +360,7 @@ pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
                     ..Default::default()
                 };
                 let mut dx = Vec::new();
-                for a in &c.attrs {
-                    let slot = match a.key() {
-                        Some("description") => &mut d.description,
-                        Some("preCondition") => &mut d.pre_condition,
-                        Some("postCondition") => &mut d.post_condition,
-                        _ => {
-                            m.unknown_attr(a, &don, &mut dx);
-                            continue;
-                        }
-                    };
-                    m.set(slot, a, &don, &mut dx);
-                }
+                scalar_attrs(m, c, &mut d, &don, &mut dx);
                 leaf_children(m, c, &don, &mut dx);
                 d.extra = dx;
                 act.doc = Some(d);
@@ -428,28 +402,7 @@ pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    let mut aliases = Vec::new();
-    for a in &n.attrs {
-        note_pos(&mut cf.attr_pos, a);
-        let slot = match a.key() {
-            Some("name") => &mut cf.name,
-            Some("type") => &mut cf.type_,
-            Some("defaultValue") => &mut cf.default_value,
-            Some("unit") => &mut cf.unit,
-            Some("comment") => &mut cf.comment,
-            Some("variableName") => &mut cf.variable_name,
-            // RTCBuilder 0.1 / rtc-template: `varname` is the variable name.
-            Some("varname") => {
-                aliases.push(("variableName", a));
-                &mut cf.variable_name
-            }
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    let aliases = scalar_attrs(m, n, &mut cf, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if cf.doc.is_none() => {
@@ -459,21 +412,7 @@ pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
                     ..Default::default()
                 };
                 let mut dx = Vec::new();
-                for a in &c.attrs {
-                    let slot = match a.key() {
-                        Some("dataname") => &mut d.dataname,
-                        Some("defaultValue") => &mut d.default_value,
-                        Some("description") => &mut d.description,
-                        Some("unit") => &mut d.unit,
-                        Some("range") => &mut d.range,
-                        Some("constraint") => &mut d.constraint,
-                        _ => {
-                            m.unknown_attr(a, don, &mut dx);
-                            continue;
-                        }
-                    };
-                    m.set(slot, a, don, &mut dx);
-                }
+                scalar_attrs(m, c, &mut d, don, &mut dx);
                 leaf_children(m, c, don, &mut dx);
                 d.extra = dx;
                 cf.doc = Some(d);
@@ -488,8 +427,8 @@ pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
     }
     m.stray_text(n, on, &mut extra);
     let node = format!("configuration {}", cf.name.as_deref().unwrap_or(""));
-    for (field, a) in aliases {
-        m.alias(&node, field, a, crate::parse::dialect::RTCBUILDER_01);
+    for (field, a, dialect) in aliases {
+        m.alias(&node, field, a, dialect);
     }
     cf.extra = extra;
     cf
@@ -503,17 +442,7 @@ pub(super) fn map_property(m: &mut Mapper, n: &Node) -> Property {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("name") => &mut p.name,
-            Some("value") => &mut p.value,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut p, on, &mut extra);
     leaf_children(m, n, on, &mut extra);
     p.extra = extra;
     p
@@ -527,38 +456,7 @@ pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    let mut aliases = Vec::new();
-    for a in &n.attrs {
-        note_pos(&mut d.attr_pos, a);
-        let slot = match a.key() {
-            Some("portType") => &mut d.port_type,
-            Some("name") => &mut d.name,
-            Some("type") => &mut d.type_,
-            Some("idlFile") => &mut d.idl_file,
-            Some("interfaceType") => &mut d.interface_type,
-            Some("dataflowType") => &mut d.dataflow_type,
-            Some("subscriptionType") => &mut d.subscription_type,
-            // RTCBuilder 0.1 (2009) misspells it.
-            Some("subscriprionType") => {
-                aliases.push(("subscriptionType", a));
-                &mut d.subscription_type
-            }
-            Some("unit") => &mut d.unit,
-            Some("comment") => &mut d.comment,
-            Some("variableName") => &mut d.variable_name,
-            // RTCBuilder 0.1: `rtcExt:varname` is the variable name.
-            Some("varname") => {
-                aliases.push(("variableName", a));
-                &mut d.variable_name
-            }
-            Some("position") => &mut d.position,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    let aliases = scalar_attrs(m, n, &mut d, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if d.doc.is_none() => {
@@ -575,8 +473,8 @@ pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
     }
     m.stray_text(n, on, &mut extra);
     let node = format!("dataPort {}", d.name.as_deref().unwrap_or(""));
-    for (field, a) in aliases {
-        m.alias(&node, field, a, crate::parse::dialect::RTCBUILDER_01);
+    for (field, a, dialect) in aliases {
+        m.alias(&node, field, a, dialect);
     }
     d.extra = extra;
     d
@@ -589,23 +487,7 @@ pub(super) fn map_data_port_doc(m: &mut Mapper, n: &Node, on: &str) -> DataPortD
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("description") => &mut d.description,
-            Some("type") => &mut d.type_,
-            Some("number") => &mut d.number,
-            Some("semantics") => &mut d.semantics,
-            Some("unit") => &mut d.unit,
-            // RTCBuilder writes `occerrence`: accepted silently as the same field.
-            Some("occurrence" | "occerrence") => &mut d.occurrence,
-            Some("operation") => &mut d.operation,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut d, on, &mut extra);
     leaf_children(m, n, on, &mut extra);
     d.extra = extra;
     d
@@ -619,20 +501,7 @@ pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("name") => &mut e.name,
-            Some("type") => &mut e.type_,
-            Some("source") => &mut e.source,
-            Some("target") => &mut e.target,
-            Some("condition") => &mut e.condition,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut e, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if e.doc.is_none() => e.doc = Some(map_data_port_doc(m, c, "event doc")),
@@ -653,19 +522,7 @@ pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        note_pos(&mut s.attr_pos, a);
-        let slot = match a.key() {
-            Some("name") => &mut s.name,
-            Some("comment") => &mut s.comment,
-            Some("position") => &mut s.position,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut s, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if s.doc.is_none() => {
@@ -675,17 +532,7 @@ pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
                     ..Default::default()
                 };
                 let mut dx = Vec::new();
-                for a in &c.attrs {
-                    let slot = match a.key() {
-                        Some("description") => &mut d.description,
-                        Some("ifdescription") => &mut d.ifdescription,
-                        _ => {
-                            m.unknown_attr(a, don, &mut dx);
-                            continue;
-                        }
-                    };
-                    m.set(slot, a, don, &mut dx);
-                }
+                scalar_attrs(m, c, &mut d, don, &mut dx);
                 leaf_children(m, c, don, &mut dx);
                 d.extra = dx;
                 s.doc = Some(d);
@@ -700,12 +547,7 @@ pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
                     ..Default::default()
                 };
                 let mut tx = Vec::new();
-                for a in &c.attrs {
-                    match a.key() {
-                        Some("kind") => m.set(&mut t.kind, a, ton, &mut tx),
-                        _ => m.unknown_attr(a, ton, &mut tx),
-                    }
-                }
+                scalar_attrs(m, c, &mut t, ton, &mut tx);
                 leaf_children(m, c, ton, &mut tx);
                 t.extra = tx;
                 s.trans_methods.push(t);
@@ -727,30 +569,7 @@ pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterfac
         ..Default::default()
     };
     let mut extra = Vec::new();
-    let mut aliases = Vec::new();
-    for a in &n.attrs {
-        note_pos(&mut s.attr_pos, a);
-        let slot = match a.key() {
-            Some("name") => &mut s.name,
-            Some("type") => &mut s.type_,
-            Some("direction") => &mut s.direction,
-            Some("instanceName") => &mut s.instance_name,
-            Some("idlFile") => &mut s.idl_file,
-            Some("path") => &mut s.path,
-            Some("comment") => &mut s.comment,
-            Some("variableName") => &mut s.variable_name,
-            // RTCBuilder 0.1: `rtc:varname` is the variable name.
-            Some("varname") => {
-                aliases.push(("variableName", a));
-                &mut s.variable_name
-            }
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    let aliases = scalar_attrs(m, n, &mut s, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("Doc") if s.doc.is_none() => {
@@ -760,21 +579,7 @@ pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterfac
                     ..Default::default()
                 };
                 let mut dx = Vec::new();
-                for a in &c.attrs {
-                    let slot = match a.key() {
-                        Some("description") => &mut d.description,
-                        Some("docArgument") => &mut d.doc_argument,
-                        Some("docReturn") => &mut d.doc_return,
-                        Some("docException") => &mut d.doc_exception,
-                        Some("docPreCondition") => &mut d.doc_pre_condition,
-                        Some("docPostCondition") => &mut d.doc_post_condition,
-                        _ => {
-                            m.unknown_attr(a, don, &mut dx);
-                            continue;
-                        }
-                    };
-                    m.set(slot, a, don, &mut dx);
-                }
+                scalar_attrs(m, c, &mut d, don, &mut dx);
                 leaf_children(m, c, don, &mut dx);
                 d.extra = dx;
                 s.doc = Some(d);
@@ -786,8 +591,8 @@ pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterfac
     }
     m.stray_text(n, on, &mut extra);
     let node = format!("serviceInterface {}", s.name.as_deref().unwrap_or(""));
-    for (field, a) in aliases {
-        m.alias(&node, field, a, crate::parse::dialect::RTCBUILDER_01);
+    for (field, a, dialect) in aliases {
+        m.alias(&node, field, a, dialect);
     }
     s.extra = extra;
     s
@@ -801,17 +606,7 @@ pub(super) fn map_parameter(m: &mut Mapper, n: &Node) -> Parameter {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("name") => &mut p.name,
-            Some("defaultValue") => &mut p.default_value,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut p, on, &mut extra);
     leaf_children(m, n, on, &mut extra);
     p.extra = extra;
     p
@@ -825,12 +620,7 @@ pub(super) fn map_language(m: &mut Mapper, n: &Node) -> Language {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        match a.key() {
-            Some("kind") => m.set(&mut l.kind, a, on, &mut extra),
-            _ => m.unknown_attr(a, on, &mut extra),
-        }
-    }
+    scalar_attrs(m, n, &mut l, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("targets") => l.targets.push(map_target(m, c)),
@@ -869,11 +659,10 @@ pub(super) fn map_language_element(m: &mut Mapper, c: &Node, l: &mut Language) {
     };
     let mut extra = Vec::new();
     for a in &c.attrs {
+        if scalar_attr(m, a, &mut t, &on, &mut extra, &mut Vec::new()) {
+            continue;
+        }
         match a.key() {
-            Some("os") => m.set(&mut t.os, a, &on, &mut extra),
-            Some("langVersion") => m.set(&mut t.lang_version, a, &on, &mut extra),
-            Some("other") => m.set(&mut t.other, a, &on, &mut extra),
-            Some("cpuOther") => m.set(&mut t.cpu_other, a, &on, &mut extra),
             Some("arch" | "cpu") => {
                 if let Some(v) = non_blank(&a.value) {
                     t.cpus.push(v);
@@ -922,19 +711,7 @@ pub(super) fn map_target(m: &mut Mapper, n: &Node) -> Target {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("langVersion") => &mut t.lang_version,
-            Some("os") => &mut t.os,
-            Some("other") => &mut t.other,
-            Some("cpuOther") => &mut t.cpu_other,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut t, on, &mut extra);
     for c in &n.children {
         match c.key() {
             Some("osVersions") => {
@@ -964,18 +741,7 @@ pub(super) fn map_library(m: &mut Mapper, n: &Node) -> Library {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match a.key() {
-            Some("name" | "path") => &mut l.name,
-            Some("version") => &mut l.version,
-            Some("other") => &mut l.other,
-            _ => {
-                m.unknown_attr(a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    scalar_attrs(m, n, &mut l, on, &mut extra);
     leaf_children(m, n, on, &mut extra);
     l.extra = extra;
     l

@@ -1,0 +1,742 @@
+//! The model field table: every scalar field of every node of a component profile, described
+//! once — its node, its Rust field, its JSON (serde) name, the XML attribute names and YAML keys
+//! it is read from (with the older spellings and the writer that uses each), whether it is a
+//! date and whether it is documentation only.
+//!
+//! The readers (`parse::xml::map`, `parse::yaml`), the attribute positions ([`AttrPos`]) and
+//! `diff` read this table; none of them lists a field's names itself. A new scalar field is one
+//! line here (plus the `Option<Text>` in `component.rs` and its view in `render/facts.rs`).
+//!
+//! Nodes are also linked to their children ([`CHILDREN`]): which JSON key holds which node, and
+//! by which key the items of a list are matched. `diff` turns a JSON path into a typed
+//! [`Place`] with it.
+
+use super::component::*;
+
+/// The writer generation of the dotted id, `varname`, `subscriprionType`, the language
+/// elements and `EVENT_DRIVEN`.
+pub const RTCBUILDER_01: &str = "RTCBuilder 0.1";
+/// OpenRTM-aist-Python's rtc-template and the old OpenRTP YAML samples: unprefixed `doc`,
+/// `position`, `varname`, `versionUpLog` keys.
+pub const RTC_TEMPLATE: &str = "rtc-template";
+
+/// One way a field is written: an XML attribute's local name or a YAML key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Spelling {
+    pub name: &'static str,
+    /// The writer of an older spelling, recorded in [`Profile::written_as`] when read; `None`
+    /// for the spec's spelling and for misspellings accepted silently (`occerrence`).
+    pub dialect: Option<&'static str>,
+}
+
+/// How the YAML reader reads a field's value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A scalar, kept as written.
+    Text,
+    /// A scalar, or a chapter 7 date map turned into ISO 8601 (`creationDate`, `updateDate`).
+    Date,
+}
+
+/// One line of the table.
+#[derive(Debug)]
+pub struct FieldDef {
+    pub field: Field,
+    pub node: Node,
+    /// The Rust field of the node's struct.
+    pub rust: &'static str,
+    /// The serde name: the key in `catalog.json`, and the path segment of `diff`.
+    pub json: &'static str,
+    /// XML attribute local names (any RTC namespace), the spec's first.
+    pub xml: &'static [Spelling],
+    /// YAML keys, the spec's first.
+    pub yaml: &'static [Spelling],
+    pub kind: Kind,
+    /// A change of it is a documentation change (`diff`).
+    pub doc: bool,
+}
+
+/// A node of the model with the fields of the table.
+pub trait Fields {
+    const NODE: Node;
+    /// The field `f` of this node (`None` for a field of another node).
+    fn slot(&mut self, f: Field) -> Option<&mut Option<Text>>;
+    /// The value of field `f` of this node (`None` for a field of another node).
+    fn value(&self, f: Field) -> Option<&Option<Text>>;
+    /// The node's unknown values.
+    fn extra_mut(&mut self) -> &mut Vec<Extra>;
+    /// The positions of its attributes / keys, on the nodes that keep them.
+    fn attr_pos(&mut self) -> Option<&mut AttrPos> {
+        None
+    }
+}
+
+macro_rules! dialect {
+    () => {
+        None
+    };
+    ($d:ident) => {
+        Some($d)
+    };
+}
+
+/// `["name", "old" @ DIALECT]` → `&[Spelling]`; a constant's name stands for itself.
+macro_rules! spellings {
+    ([$($name:literal $(@ $d:ident)?),* $(,)?]) => {
+        &[$(Spelling { name: $name, dialect: dialect!($($d)?) }),*]
+    };
+    ($list:ident) => {
+        $list
+    };
+}
+
+macro_rules! table {
+    ($(
+        $node:ident $([$pos:ident])? {
+            $( $var:ident : $acc:ident = $json:literal, $kind:ident, $doc:literal,
+               xml $xml:tt, yaml $yaml:tt; )*
+        }
+    )*) => {
+        /// The nodes of a component profile.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum Node { $($node,)* ConfigurationSet, Constraint, TextList }
+
+        /// Every scalar field of every node.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum Field { $($($var,)*)* }
+
+        impl Field {
+            /// Every field, in table order (`Field::ALL[f as usize] == f`).
+            pub const ALL: &'static [Field] = &[$($(Field::$var,)*)*];
+            /// The JSON name of each field, in table order.
+            const JSON: &'static [&'static str] = &[$($($json,)*)*];
+            /// The node the field belongs to.
+            pub fn node(self) -> Node {
+                match self { $($(Field::$var => Node::$node,)*)* }
+            }
+        }
+
+        #[allow(non_upper_case_globals)]
+        mod per_node {
+            use super::*;
+            $(pub static $node: &[FieldDef] = &[$(FieldDef {
+                field: Field::$var,
+                node: Node::$node,
+                rust: stringify!($acc),
+                json: $json,
+                xml: spellings!($xml),
+                yaml: spellings!($yaml),
+                kind: Kind::$kind,
+                doc: $doc,
+            },)*];)*
+        }
+
+        impl Node {
+            /// The fields of the node, in table order.
+            pub fn fields(self) -> &'static [FieldDef] {
+                match self {
+                    $(Node::$node => per_node::$node,)*
+                    Node::ConfigurationSet | Node::Constraint | Node::TextList => &[],
+                }
+            }
+        }
+
+        $(impl Fields for $node {
+            const NODE: Node = Node::$node;
+            fn slot(&mut self, f: Field) -> Option<&mut Option<Text>> {
+                match f {
+                    $(Field::$var => Some(&mut self.$acc),)*
+                    #[allow(unreachable_patterns)]
+                    _ => None,
+                }
+            }
+            fn value(&self, f: Field) -> Option<&Option<Text>> {
+                match f {
+                    $(Field::$var => Some(&self.$acc),)*
+                    #[allow(unreachable_patterns)]
+                    _ => None,
+                }
+            }
+            fn extra_mut(&mut self) -> &mut Vec<Extra> {
+                &mut self.extra
+            }
+            $(fn attr_pos(&mut self) -> Option<&mut AttrPos> {
+                let _ = stringify!($pos);
+                Some(&mut self.attr_pos)
+            })?
+        })*
+    };
+}
+
+/// `variableName` as RTCBuilder writes it in XML (0.1: `varname`).
+const VARIABLE_NAME_XML: &[Spelling] = spellings!(["variableName", "varname" @ RTCBUILDER_01]);
+/// `variableName` in YAML (rtc-template: `varname`, `rtcExt::varname`).
+const VARIABLE_NAME_YAML: &[Spelling] = spellings!([
+    "rtcExt::variableName",
+    "rtcExt::varname" @ RTC_TEMPLATE,
+    "varname" @ RTC_TEMPLATE,
+]);
+/// `rtcExt:position` in YAML (rtc-template: `position`).
+const POSITION_YAML: &[Spelling] = spellings!(["rtcExt::position", "position" @ RTC_TEMPLATE]);
+/// `rtcExt:comment` in YAML.
+const COMMENT_YAML: &[Spelling] = spellings!(["rtcExt::comment"]);
+
+// node [keeps positions] { Variant: rust_field = "json", Text|Date, documentation?,
+//                          xml [attribute names], yaml [keys]; }
+table! {
+    Profile [pos] {
+        ProfileId: id = "id", Text, false, xml ["id"], yaml ["id"];
+        ProfileVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
+    }
+    BasicInfo [pos] {
+        BasicName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        BasicComponentType: component_type = "componentType", Text, false,
+            xml ["componentType"], yaml ["componentType"];
+        BasicActivityType: activity_type = "activityType", Text, false,
+            xml ["activityType"], yaml ["activityType"];
+        BasicComponentKind: component_kind = "componentKind", Text, false,
+            xml ["componentKind"], yaml ["componentKind"];
+        BasicRtcType: rtc_type = "rtcType", Text, false, xml ["rtcType"], yaml ["rtcType"];
+        BasicCategory: category = "category", Text, false, xml ["category"], yaml ["category"];
+        BasicDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        BasicExecutionRate: execution_rate = "executionRate", Text, false,
+            xml ["executionRate"], yaml ["executionRate"];
+        BasicExecutionType: execution_type = "executionType", Text, false,
+            xml ["executionType"], yaml ["executionType"];
+        BasicMaxInstances: max_instances = "maxInstances", Text, false,
+            xml ["maxInstances"], yaml ["maxInstances"];
+        BasicVendor: vendor = "vendor", Text, false, xml ["vendor"], yaml ["vendor"];
+        BasicVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
+        BasicAbstract: abstract_ = "abstract", Text, true, xml ["abstract"], yaml ["abstract"];
+        BasicHardwareProfile: hardware_profile = "hardwareProfile", Text, true,
+            xml ["hardwareProfile"], yaml ["hardwareProfile"];
+        BasicCreationDate: creation_date = "creationDate", Date, false,
+            xml ["creationDate"], yaml ["creationDate"];
+        BasicUpdateDate: update_date = "updateDate", Date, false,
+            xml ["updateDate"], yaml ["updateDate"];
+        BasicComment: comment = "comment", Text, true, xml ["comment"], yaml COMMENT_YAML;
+        BasicSaveProject: save_project = "saveProject", Text, false,
+            xml ["saveProject"], yaml ["rtcExt::saveProject"];
+    }
+    BasicDoc {
+        BasicDocDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        BasicDocInout: inout = "inout", Text, true, xml ["inout"], yaml ["inout"];
+        BasicDocAlgorithm: algorithm = "algorithm", Text, true,
+            xml ["algorithm"], yaml ["algorithm"];
+        BasicDocCreator: creator = "creator", Text, true, xml ["creator"], yaml ["creator"];
+        BasicDocLicense: license = "license", Text, true, xml ["license"], yaml ["license"];
+        BasicDocReference: reference = "reference", Text, true,
+            xml ["reference"], yaml ["reference"];
+    }
+    Action {
+        ActionImplemented: implemented = "implemented", Text, false,
+            xml ["implemented"], yaml ["implemented"];
+    }
+    ActionDoc {
+        ActionDocDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        ActionDocPreCondition: pre_condition = "preCondition", Text, true,
+            xml ["preCondition"], yaml ["preCondition"];
+        ActionDocPostCondition: post_condition = "postCondition", Text, true,
+            xml ["postCondition"], yaml ["postCondition"];
+    }
+    Configuration [pos] {
+        ConfigurationName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        ConfigurationType: type_ = "type", Text, false, xml ["type"], yaml ["type"];
+        ConfigurationDefaultValue: default_value = "defaultValue", Text, false,
+            xml ["defaultValue"], yaml ["defaultValue"];
+        ConfigurationUnit: unit = "unit", Text, false, xml ["unit"], yaml ["unit"];
+        ConfigurationComment: comment = "comment", Text, true,
+            xml ["comment"], yaml COMMENT_YAML;
+        ConfigurationVariableName: variable_name = "variableName", Text, false,
+            xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
+    }
+    ConfigurationDoc {
+        ConfigurationDocDataname: dataname = "dataname", Text, true,
+            xml ["dataname"], yaml ["dataname"];
+        ConfigurationDocDefaultValue: default_value = "defaultValue", Text, true,
+            xml ["defaultValue"], yaml ["defaultValue"];
+        ConfigurationDocDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        ConfigurationDocUnit: unit = "unit", Text, true, xml ["unit"], yaml ["unit"];
+        ConfigurationDocRange: range = "range", Text, true, xml ["range"], yaml ["range"];
+        ConfigurationDocConstraint: constraint = "constraint", Text, true,
+            xml ["constraint"], yaml ["constraint"];
+    }
+    DataPort [pos] {
+        DataPortPortType: port_type = "portType", Text, false,
+            xml ["portType"], yaml ["portType"];
+        DataPortName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        DataPortType: type_ = "type", Text, false, xml ["type"], yaml ["type"];
+        DataPortIdlFile: idl_file = "idlFile", Text, false, xml ["idlFile"], yaml ["idlFile"];
+        DataPortInterfaceType: interface_type = "interfaceType", Text, false,
+            xml ["interfaceType"], yaml ["interfaceType"];
+        DataPortDataflowType: dataflow_type = "dataflowType", Text, false,
+            xml ["dataflowType"], yaml ["dataflowType"];
+        // RTCBuilder 0.1 (2009) misspells it.
+        DataPortSubscriptionType: subscription_type = "subscriptionType", Text, false,
+            xml ["subscriptionType", "subscriprionType" @ RTCBUILDER_01],
+            yaml ["subscriptionType", "subscriprionType" @ RTCBUILDER_01];
+        DataPortUnit: unit = "unit", Text, false, xml ["unit"], yaml ["unit"];
+        DataPortComment: comment = "comment", Text, true, xml ["comment"], yaml COMMENT_YAML;
+        DataPortVariableName: variable_name = "variableName", Text, false,
+            xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
+        DataPortPosition: position = "position", Text, false,
+            xml ["position"], yaml POSITION_YAML;
+    }
+    DataPortDoc {
+        DataPortDocDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        DataPortDocType: type_ = "type", Text, true, xml ["type"], yaml ["type"];
+        DataPortDocNumber: number = "number", Text, true, xml ["number"], yaml ["number"];
+        DataPortDocSemantics: semantics = "semantics", Text, true,
+            xml ["semantics"], yaml ["semantics"];
+        DataPortDocUnit: unit = "unit", Text, true, xml ["unit"], yaml ["unit"];
+        // RTCBuilder writes `occerrence`: accepted silently as the same field.
+        DataPortDocOccurrence: occurrence = "occurrence", Text, true,
+            xml ["occurrence", "occerrence"], yaml ["occurrence", "occerrence"];
+        DataPortDocOperation: operation = "operation", Text, true,
+            xml ["operation"], yaml ["operation"];
+    }
+    Event {
+        EventName: name = "name", Text, false, xml ["name"], yaml [];
+        EventType: type_ = "type", Text, false, xml ["type"], yaml [];
+        EventSource: source = "source", Text, false, xml ["source"], yaml [];
+        EventTarget: target = "target", Text, false, xml ["target"], yaml [];
+        EventCondition: condition = "condition", Text, false, xml ["condition"], yaml [];
+    }
+    ServicePort [pos] {
+        ServicePortName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        ServicePortComment: comment = "comment", Text, true,
+            xml ["comment"], yaml COMMENT_YAML;
+        ServicePortPosition: position = "position", Text, false,
+            xml ["position"], yaml POSITION_YAML;
+    }
+    ServicePortDoc {
+        ServicePortDocDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        ServicePortDocIfdescription: ifdescription = "ifdescription", Text, true,
+            xml ["ifdescription"], yaml ["ifdescription"];
+    }
+    TransMethod {
+        TransMethodKind: kind = "kind", Text, false, xml ["kind"], yaml ["kind"];
+    }
+    ServiceInterface [pos] {
+        InterfaceName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        InterfaceType: type_ = "type", Text, false, xml ["type"], yaml ["type"];
+        InterfaceDirection: direction = "direction", Text, false,
+            xml ["direction"], yaml ["direction"];
+        InterfaceInstanceName: instance_name = "instanceName", Text, false,
+            xml ["instanceName"], yaml ["instanceName"];
+        InterfaceIdlFile: idl_file = "idlFile", Text, false, xml ["idlFile"], yaml ["idlFile"];
+        InterfacePath: path = "path", Text, false, xml ["path"], yaml ["path"];
+        InterfaceComment: comment = "comment", Text, true, xml ["comment"], yaml COMMENT_YAML;
+        InterfaceVariableName: variable_name = "variableName", Text, false,
+            xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
+    }
+    ServiceInterfaceDoc {
+        InterfaceDocDescription: description = "description", Text, true,
+            xml ["description"], yaml ["description"];
+        InterfaceDocArgument: doc_argument = "docArgument", Text, true,
+            xml ["docArgument"], yaml ["docArgument"];
+        InterfaceDocReturn: doc_return = "docReturn", Text, true,
+            xml ["docReturn"], yaml ["docReturn"];
+        InterfaceDocException: doc_exception = "docException", Text, true,
+            xml ["docException"], yaml ["docException"];
+        InterfaceDocPreCondition: doc_pre_condition = "docPreCondition", Text, true,
+            xml ["docPreCondition"], yaml ["docPreCondition"];
+        InterfaceDocPostCondition: doc_post_condition = "docPostCondition", Text, true,
+            xml ["docPostCondition"], yaml ["docPostCondition"];
+    }
+    Parameter {
+        ParameterName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        ParameterDefaultValue: default_value = "defaultValue", Text, false,
+            xml ["defaultValue"], yaml ["defaultValue"];
+    }
+    Property {
+        PropertyName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        PropertyValue: value = "value", Text, false, xml ["value"], yaml ["value"];
+    }
+    Language {
+        LanguageKind: kind = "kind", Text, false, xml ["kind"], yaml ["kind"];
+    }
+    Target {
+        TargetLangVersion: lang_version = "langVersion", Text, false,
+            xml ["langVersion"], yaml ["langVersion"];
+        TargetOs: os = "os", Text, false, xml ["os"], yaml ["os"];
+        TargetOther: other = "other", Text, false, xml ["other"], yaml ["other"];
+        TargetCpuOther: cpu_other = "cpuOther", Text, false,
+            xml ["cpuOther"], yaml ["cpuOther"];
+    }
+    // The PIM calls the library's name `path`: accepted silently.
+    Library {
+        LibraryName: name = "name", Text, false, xml ["name", "path"], yaml ["name", "path"];
+        LibraryVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
+        LibraryOther: other = "other", Text, false, xml ["other"], yaml ["other"];
+    }
+}
+
+impl Field {
+    /// The field's line of the table.
+    pub fn def(self) -> &'static FieldDef {
+        let fields = self.node().fields();
+        // Every field is in its node's list (held by a test).
+        fields
+            .iter()
+            .find(|d| d.field == self)
+            .unwrap_or(&fields[0])
+    }
+    /// The serde (JSON) name.
+    pub fn json(self) -> &'static str {
+        Field::JSON[self as usize]
+    }
+    /// The field of index `i` (`Field::ALL[i]`).
+    pub fn from_index(i: u8) -> Option<Field> {
+        Field::ALL.get(usize::from(i)).copied()
+    }
+}
+
+impl Node {
+    /// The field read from XML attribute `local` on this node, and the spelling it had.
+    pub fn xml(self, local: &str) -> Option<(&'static FieldDef, &'static Spelling)> {
+        self.fields()
+            .iter()
+            .find_map(|d| d.xml.iter().find(|s| s.name == local).map(|s| (d, s)))
+    }
+    /// The field read from YAML key `key` on this node, and the spelling it had.
+    pub fn yaml(self, key: &str) -> Option<(&'static FieldDef, &'static Spelling)> {
+        self.fields()
+            .iter()
+            .find_map(|d| d.yaml.iter().find(|s| s.name == key).map(|s| (d, s)))
+    }
+    /// The field whose JSON name is `json` on this node.
+    pub fn json_field(self, json: &str) -> Option<Field> {
+        self.fields()
+            .iter()
+            .find(|d| d.json == json)
+            .map(|d| d.field)
+    }
+    /// The child node under JSON key `json` of this node, with how its items are matched.
+    pub fn child(self, json: &str) -> Option<&'static Child> {
+        CHILDREN.iter().find(|c| c.parent == self && c.json == json)
+    }
+    /// The child nodes of this node.
+    pub fn children(self) -> impl Iterator<Item = &'static Child> {
+        CHILDREN.iter().filter(move |c| c.parent == self)
+    }
+    /// Whether the node is a documentation node (`rtcDoc:Doc`).
+    pub fn is_doc(self) -> bool {
+        matches!(
+            self,
+            Node::BasicDoc
+                | Node::ActionDoc
+                | Node::ConfigurationDoc
+                | Node::DataPortDoc
+                | Node::ServicePortDoc
+                | Node::ServiceInterfaceDoc
+        )
+    }
+}
+
+/// How a node holds a child node in the JSON.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Holds {
+    /// One record (`basicInfo`, `doc`).
+    One,
+    /// A list whose items are matched by the JSON key given (`dataPorts` by `name`).
+    Keyed(&'static str),
+    /// A value compared whole (a list of unnamed items, a constraint, a list of texts).
+    Whole,
+}
+
+/// A child node of a node, by the JSON key that holds it.
+#[derive(Debug)]
+pub struct Child {
+    pub parent: Node,
+    pub json: &'static str,
+    pub node: Node,
+    pub holds: Holds,
+    /// A change of it is a documentation change.
+    pub doc: bool,
+}
+
+macro_rules! children {
+    ($($parent:ident . $json:literal => $node:ident $holds:ident $(($key:literal))? $(, $doc:literal)?;)*) => {
+        /// The child nodes of each node, by JSON key.
+        pub static CHILDREN: &[Child] = &[$(Child {
+            parent: Node::$parent,
+            json: $json,
+            node: Node::$node,
+            holds: Holds::$holds $(($key))?,
+            doc: false $(|| $doc)?,
+        },)*];
+    };
+}
+
+children! {
+    Profile."basicInfo" => BasicInfo One;
+    Profile."actions" => Action Keyed("kind");
+    Profile."configurationSet" => ConfigurationSet One;
+    Profile."dataPorts" => DataPort Keyed("name");
+    Profile."servicePorts" => ServicePort Keyed("name");
+    Profile."parameters" => Parameter Keyed("name");
+    Profile."language" => Language One;
+    BasicInfo."doc" => BasicDoc One;
+    BasicInfo."properties" => Property Keyed("name");
+    BasicInfo."versionUpLogs" => TextList Whole, true;
+    Action."doc" => ActionDoc One;
+    ConfigurationSet."configurations" => Configuration Keyed("name");
+    Configuration."doc" => ConfigurationDoc One;
+    Configuration."properties" => Property Keyed("name");
+    Configuration."constraint" => Constraint Whole;
+    DataPort."doc" => DataPortDoc One;
+    DataPort."properties" => Property Keyed("name");
+    DataPort."constraint" => Constraint Whole;
+    DataPort."events" => Event Keyed("name");
+    Event."doc" => DataPortDoc One;
+    ServicePort."doc" => ServicePortDoc One;
+    ServicePort."properties" => Property Keyed("name");
+    ServicePort."interfaces" => ServiceInterface Keyed("name");
+    ServicePort."transMethods" => TransMethod Whole;
+    ServiceInterface."doc" => ServiceInterfaceDoc One;
+    ServiceInterface."properties" => Property Keyed("name");
+    Language."targets" => Target Whole;
+    Target."libraries" => Library Keyed("name");
+}
+
+/// The JSON key of a list whose items are matched by a key, and that key (`dataPorts` →
+/// `name`), for any node.
+pub fn item_key(list: &str) -> Option<&'static str> {
+    CHILDREN.iter().find_map(|c| match c.holds {
+        Holds::Keyed(k) if c.json == list => Some(k),
+        _ => None,
+    })
+}
+
+/// Whether the value under JSON key `key` is compared whole (a constraint, a list of unnamed
+/// items or of texts), whatever node holds it.
+pub fn compared_whole(key: &str) -> bool {
+    CHILDREN
+        .iter()
+        .any(|c| c.json == key && c.holds == Holds::Whole)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::Value;
+
+    #[test]
+    fn the_table_is_in_field_order_and_every_field_has_its_line() {
+        for (i, &f) in Field::ALL.iter().enumerate() {
+            assert_eq!(f as usize, i);
+            assert_eq!(Field::from_index(u8::try_from(i).expect("u8")), Some(f));
+            let d = f.def();
+            assert_eq!((d.field, d.node), (f, f.node()), "{f:?}");
+            assert_eq!(d.json, f.json(), "{f:?}");
+        }
+        assert!(Field::ALL.len() <= usize::from(u8::MAX));
+    }
+
+    #[test]
+    fn names_and_spellings_are_unique_on_each_node() {
+        for &f in Field::ALL {
+            let d = f.def();
+            let node = f.node();
+            assert_eq!(node.json_field(d.json), Some(f), "{f:?} json");
+            for s in d.xml {
+                assert_eq!(node.xml(s.name).map(|(x, _)| x.field), Some(f), "{f:?} xml");
+            }
+            for s in d.yaml {
+                assert_eq!(
+                    node.yaml(s.name).map(|(x, _)| x.field),
+                    Some(f),
+                    "{f:?} yaml"
+                );
+            }
+            // The spec's spelling comes first and is not an older writer's.
+            for list in [d.xml, d.yaml] {
+                assert!(list.first().is_none_or(|s| s.dialect.is_none()), "{f:?}");
+            }
+        }
+    }
+
+    /// The node of `f` with only `f` set, as JSON.
+    fn json_with(f: Field) -> Value {
+        fn set<T: Fields + serde::Serialize>(mut t: T, f: Field) -> Value {
+            *t.slot(f).expect("a field of the node") = Some("set-by-test".into());
+            serde_json::to_value(&t).expect("json")
+        }
+        match f.node() {
+            Node::Profile => set(Profile::default(), f),
+            Node::BasicInfo => set(BasicInfo::default(), f),
+            Node::BasicDoc => set(BasicDoc::default(), f),
+            Node::Action => set(
+                Action {
+                    kind: ActionKind::OnExecute,
+                    implemented: None,
+                    doc: None,
+                    pos: Pos::default(),
+                    extra: Vec::new(),
+                },
+                f,
+            ),
+            Node::ActionDoc => set(ActionDoc::default(), f),
+            Node::Configuration => set(Configuration::default(), f),
+            Node::ConfigurationDoc => set(ConfigurationDoc::default(), f),
+            Node::DataPort => set(DataPort::default(), f),
+            Node::DataPortDoc => set(DataPortDoc::default(), f),
+            Node::Event => set(Event::default(), f),
+            Node::ServicePort => set(ServicePort::default(), f),
+            Node::ServicePortDoc => set(ServicePortDoc::default(), f),
+            Node::TransMethod => set(TransMethod::default(), f),
+            Node::ServiceInterface => set(ServiceInterface::default(), f),
+            Node::ServiceInterfaceDoc => set(ServiceInterfaceDoc::default(), f),
+            Node::Parameter => set(Parameter::default(), f),
+            Node::Property => set(Property::default(), f),
+            Node::Language => set(Language::default(), f),
+            Node::Target => set(Target::default(), f),
+            Node::Library => set(Library::default(), f),
+            Node::ConfigurationSet | Node::Constraint | Node::TextList => {
+                panic!("{f:?} on a node without fields")
+            }
+        }
+    }
+
+    /// Renaming a serde field without its line here fails this test: `diff` and the positions
+    /// find fields by the table's JSON name.
+    #[test]
+    fn every_json_name_is_the_serde_name() {
+        for &f in Field::ALL {
+            let v = json_with(f);
+            let set: Vec<&String> = v
+                .as_object()
+                .expect("an object")
+                .iter()
+                .filter(|(_, x)| x.as_str() == Some("set-by-test"))
+                .map(|(k, _)| k)
+                .collect();
+            assert_eq!(set, [f.json()], "{f:?}");
+        }
+    }
+
+    /// A profile with one of every node.
+    fn full_profile() -> Profile {
+        let constraint = || Constraint {
+            kind: ConstraintKind::Empty,
+            pos: Pos::default(),
+            extra: Vec::new(),
+        };
+        let property = || Property {
+            name: Some("p".into()),
+            ..Default::default()
+        };
+        Profile {
+            basic_info: BasicInfo {
+                doc: Some(BasicDoc::default()),
+                version_up_logs: vec!["log".into()],
+                properties: vec![property()],
+                ..Default::default()
+            },
+            actions: vec![Action {
+                kind: ActionKind::OnExecute,
+                implemented: None,
+                doc: Some(ActionDoc::default()),
+                pos: Pos::default(),
+                extra: Vec::new(),
+            }],
+            configuration_set: Some(ConfigurationSet {
+                configurations: vec![Configuration {
+                    name: Some("c".into()),
+                    doc: Some(ConfigurationDoc::default()),
+                    constraint: Some(constraint()),
+                    properties: vec![property()],
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }),
+            data_ports: vec![DataPort {
+                name: Some("d".into()),
+                doc: Some(DataPortDoc::default()),
+                constraint: Some(constraint()),
+                properties: vec![property()],
+                events: vec![Event {
+                    name: Some("e".into()),
+                    doc: Some(DataPortDoc::default()),
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }],
+            service_ports: vec![ServicePort {
+                name: Some("s".into()),
+                doc: Some(ServicePortDoc::default()),
+                properties: vec![property()],
+                trans_methods: vec![TransMethod::default()],
+                interfaces: vec![ServiceInterface {
+                    name: Some("i".into()),
+                    doc: Some(ServiceInterfaceDoc::default()),
+                    properties: vec![property()],
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }],
+            parameters: vec![Parameter {
+                name: Some("x".into()),
+                ..Default::default()
+            }],
+            language: Some(Language {
+                targets: vec![Target {
+                    libraries: vec![Library {
+                        name: Some("l".into()),
+                        ..Default::default()
+                    }],
+                    ..Default::default()
+                }],
+                ..Default::default()
+            }),
+            ..Default::default()
+        }
+    }
+
+    /// Every child of the table is under its JSON key in the serialised model, and the items
+    /// of a keyed list carry their key.
+    #[test]
+    fn every_child_is_under_its_serde_name() {
+        fn check(node: Node, v: &Value, seen: &mut Vec<(Node, &'static str)>) {
+            for c in node.children() {
+                let x = v
+                    .get(c.json)
+                    .unwrap_or_else(|| panic!("{node:?} has no `{}` in {v}", c.json));
+                seen.push((node, c.json));
+                match c.holds {
+                    Holds::One => check(c.node, x, seen),
+                    Holds::Keyed(key) => {
+                        let item = &x.as_array().expect("a list")[0];
+                        assert!(item.get(key).is_some(), "{node:?}.{} items: {key}", c.json);
+                        check(c.node, item, seen);
+                    }
+                    Holds::Whole => {
+                        assert!(!x.is_null(), "{node:?}.{}", c.json);
+                        let first = x.as_array().and_then(|a| a.first());
+                        if let Some(item) = first.filter(|i| i.is_object()) {
+                            check(c.node, item, seen);
+                        }
+                    }
+                }
+            }
+        }
+        let v = serde_json::to_value(full_profile()).expect("json");
+        let mut seen = Vec::new();
+        check(Node::Profile, &v, &mut seen);
+        for c in CHILDREN {
+            assert!(
+                seen.contains(&(c.parent, c.json)),
+                "{:?}.{} not reached",
+                c.parent,
+                c.json
+            );
+        }
+    }
+}
