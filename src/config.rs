@@ -53,6 +53,9 @@ pub struct Config {
     pub source_url: Option<String>,
     /// Settings of the Markdown output.
     pub markdown: Option<MarkdownConfig>,
+    /// `[[source]]` tables: git repositories documented at a pinned commit
+    /// ([`crate::sources`]).
+    pub source: Option<Vec<crate::sources::SourceConfig>>,
 }
 
 /// `[markdown]` settings.
@@ -474,6 +477,46 @@ mod tests {
     }
 }
 
+/// The `[[source]]` repositories of the configuration, pinned ([`crate::sources::prepare`]):
+/// at the commits of `rtcdoc.lock` beside the file, fetched into the cache as needed, the lock
+/// written when it changed. `update`: the sources to move to their current rev (`Some(&[])`:
+/// all). No sources: nothing is done (and no lock is written).
+pub fn pin_sources(
+    file: &Loaded,
+    mode: &crate::sources::Mode,
+    update: Option<&[String]>,
+) -> Result<(Vec<crate::sources::Pinned>, crate::sources::lock::Changes)> {
+    let configs = file.config.source.as_deref().unwrap_or_default();
+    let base = file.dir.clone().unwrap_or_else(|| PathBuf::from("."));
+    if configs.is_empty() {
+        if update.is_some() {
+            anyhow::bail!(
+                "{} has no [[source]] table: there is nothing to update or lock",
+                file.path.as_deref().map_or_else(
+                    || "there is no rtcdoc.toml; it".to_string(),
+                    |p| format!("`{}`", p.display())
+                )
+            );
+        }
+        return Ok((Vec::new(), Default::default()));
+    }
+    let sources = crate::sources::check_all(configs, &base).with_context(|| {
+        format!(
+            "{}",
+            file.path
+                .as_deref()
+                .unwrap_or(Path::new(FILE_NAME))
+                .display()
+        )
+    })?;
+    crate::sources::prepare(
+        &sources,
+        &base.join(crate::sources::lock::FILE_NAME),
+        mode,
+        update,
+    )
+}
+
 /// Values given on the command line; each one that is set wins over the file.
 #[derive(Debug, Clone, Default)]
 pub struct Overrides {
@@ -545,6 +588,12 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
             },
             skip_dirs: vec![],
             allow_empty: cli.allow_empty,
+            // Filled by [`pin_sources`]: fetching is not a matter of combining settings.
+            sources: Vec::new(),
+            // Sources configured and no input directory named: only the sources are read.
+            sources_only: c.source.as_ref().is_some_and(|s| !s.is_empty())
+                && cli.input.is_none()
+                && c.input.is_none(),
             idl_path: if cli.idl_path.is_empty() {
                 c.idl_path
                     .iter()

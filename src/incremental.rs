@@ -41,6 +41,8 @@ pub enum UpdateError {
 pub struct Workspace {
     opts: BuildOptions,
     input_root: PathBuf,
+    /// Where the catalogue's files are (with the sources' folder, kept alive).
+    roots: crate::catalog::sources::Roots,
     catalog: Catalog,
     files: BTreeMap<String, Vec<u8>>,
     /// Load diagnostics of files that are not profiles any more are dropped; these are the
@@ -231,6 +233,7 @@ impl Workspace {
         Ok(Workspace {
             opts: opts.clone(),
             input_root,
+            roots: loaded.roots,
             catalog,
             files,
             warnings,
@@ -378,7 +381,7 @@ impl Workspace {
         };
         let mut catalog = Catalog::assemble(
             docs,
-            &self.input_root,
+            &self.roots,
             &walk::exclude_matcher(&self.opts.load.exclude),
         );
         add_check_diagnostics(&mut catalog);

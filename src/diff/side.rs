@@ -100,6 +100,7 @@ fn from_catalog_json(which: &str, shown: &str, path: &Path) -> Result<build::Loa
         skipped: Vec::new(),
         files,
         failed_systems: Vec::new(),
+        roots: Default::default(),
     })
 }
 

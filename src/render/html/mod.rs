@@ -573,13 +573,23 @@ impl<'a> Site<'a> {
         });
 
         let mut header = fields(lang, None, facts::basic_info(c, lang));
-        // `source-url`: "Source" links to the file in its repository.
-        if let Some(url) = self
-            .opts
-            .source_url
-            .as_deref()
-            .and_then(|t| repo::source_url(t, &c.source))
-        {
+        // `source-url`: "Source" links to the file in its repository; a profile of a
+        // `[[source]]` repository links into that repository at the pinned commit.
+        let url = match &c.origin {
+            Some(o) => self
+                .catalog
+                .sources
+                .iter()
+                .find(|s| s.name == o.source)
+                .and_then(|s| s.source_url.as_deref())
+                .and_then(|t| repo::pinned_source_url(t, &o.commit, &o.path)),
+            None => self
+                .opts
+                .source_url
+                .as_deref()
+                .and_then(|t| repo::source_url(t, &c.source)),
+        };
+        if let Some(url) = url {
             let label = lang.t("source");
             if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
                 f.html = Some(repo::source_link_html(&url, &c.source));
