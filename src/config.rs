@@ -255,6 +255,19 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # [serve]
 # port = 3000
 # open = false
+
+# Git repositories to document besides (or, without `input`, instead of) the input directory,
+# each pinned at a commit in rtcdoc.lock (`rtcdoc update` moves them). One table per repository.
+# git: https://, ssh://, git@host:path, file:// or a local path. rev: a branch, tag or commit
+# (default: the remote's default branch). path: the sub-folder to document. name: the first
+# folder of its files in the catalogue (default: from the URL). source-url: the link of a file,
+# with {{commit}} and {{path}} (derived for GitHub and GitLab https URLs).
+# [[source]]
+# git = "https://github.com/ORG/REPO.git"
+# rev = "main"
+# path = "components"
+# name = "REPO"
+# source-url = "https://git.example.org/ORG/REPO/blob/{{commit}}/{{path}}"
 "#,
         size = d.max_file_size,
         depth = d.max_depth,
@@ -344,6 +357,19 @@ language = "ja"
 # [serve]
 # port = 3000
 # open = false
+
+# 入力ディレクトリに加えて (`input` がなければその代わりに) ドキュメントにする git リポジトリ。
+# それぞれ rtcdoc.lock のコミットに固定します (`rtcdoc update` で進めます)。リポジトリごとに 1 つの表を書きます。
+# git: https://、ssh://、git@host:path、file:// またはローカルのパス。rev: ブランチ、タグまたはコミット
+# (省略時はリモートのデフォルトブランチ)。path: ドキュメントにするサブフォルダ。name: カタログでのファイルの
+# 最初のフォルダ名 (省略時は URL から)。source-url: ファイルへのリンク。{{commit}} と {{path}} を含めます
+# (GitHub と GitLab の https の URL からは自動で作ります)。
+# [[source]]
+# git = "https://github.com/ORG/REPO.git"
+# rev = "main"
+# path = "components"
+# name = "REPO"
+# source-url = "https://git.example.org/ORG/REPO/blob/{{commit}}/{{path}}"
 "#,
         size = d.max_file_size,
         depth = d.max_depth,

@@ -466,6 +466,9 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
         "fetch",
         "--quiet",
         "--prune",
+        // A shallow clone's refs are taken (the mirror becomes shallow; a commit it lacks is
+        // reported with a note saying why) rather than silently rejected.
+        "--update-shallow",
         "--no-tags",
         "--no-write-fetch-head",
         "--end-of-options",
