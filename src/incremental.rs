@@ -223,6 +223,7 @@ impl Workspace {
         for d in loaded.catalog.diagnostics.iter().filter(|d| {
             d.code != crate::diagnostic::codes::DUPLICATE_ID
                 && d.code != crate::diagnostic::codes::ORPHAN_BACKUP
+                && d.code != crate::diagnostic::codes::DUPLICATE_ACROSS_SOURCES
                 && !crate::readme::CODES.contains(&d.code)
         }) {
             warnings.entry(d.file.clone()).or_default().push(d.clone());

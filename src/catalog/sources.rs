@@ -130,7 +130,7 @@ impl Catalog {
                         ),
                     )
                     .at(c.profile.pos)
-                    .with_hint("both are documented on separate pages; if they are the same component, document it from one source only (`path` or --exclude), else give each its own id"),
+                    .with_hint("if they are the same component, document it from one source only (its `path`, or --exclude); else give each its own id"),
                 );
             }
         }

@@ -754,7 +754,7 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
                         &shown,
                         "a symbolic link in the repository; not followed (as in a directory)",
                     )
-                    .with_hint("commit the file itself instead of a link to have it read"),
+                    .with_hint("commit the file itself instead of a link"),
                 ),
                 (_, Some("commit")) => notes.push(
                     Diagnostic::info(
