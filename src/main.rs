@@ -1057,11 +1057,17 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     // else of the current directory), then the command line; both sides alike.
     let config_dir = match &new_spec {
         side::Spec::Local(p) => Some(p.as_path()),
-        side::Spec::Git { .. } => None,
+        side::Spec::Git { .. } | side::Spec::Source(_) => None,
     };
     let file = load_config(config_dir, args.input_args.config.as_deref())?;
     let mut opts = load_options(&file, &args.input_args);
     opts.sources_only = false;
+    // `NAME` or `NAME@REV` of a `[[source]]` (not a path on disk): that source alone, at its
+    // locked commit or at REV.
+    let (old_spec, new_spec) = (
+        source_spec(&file, old_arg, old_spec, &args.sources)?,
+        source_spec(&file, new_arg, new_spec, &args.sources)?,
+    );
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;
     let result = diff::diff_with_systems(
@@ -1107,6 +1113,41 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// A side of `rtcdoc diff` named `NAME` or `NAME@REV` of a `[[source]]` of the configuration
+/// (when no such path exists): that source pinned at its locked commit, or at REV.
+fn source_spec(
+    file: &config::Loaded,
+    arg: &str,
+    spec: rtcdoc::diff::side::Spec,
+    s: &SourceArgs,
+) -> anyhow::Result<rtcdoc::diff::side::Spec> {
+    use rtcdoc::diff::side::Spec;
+    let configs = file.config.source.as_deref().unwrap_or_default();
+    if !matches!(&spec, Spec::Local(p) if !p.exists()) || configs.is_empty() {
+        return Ok(spec);
+    }
+    let (name, rev) = match arg.split_once('@') {
+        Some((n, r)) => (n, Some(r)),
+        None => (arg, None),
+    };
+    let base = file.dir.clone().unwrap_or_else(|| PathBuf::from("."));
+    let sources = rtcdoc::sources::check_all(configs, &base)?;
+    let Some(source) = sources.iter().find(|x| x.name == name) else {
+        return Ok(spec);
+    };
+    let pinned = match rev {
+        Some(rev) => rtcdoc::sources::pin_rev(source, rev, &s.mode())?,
+        None => {
+            let (all, _) = config::pin_sources(file, &s.mode(), None)?;
+            all.into_iter()
+                .find(|p| p.source.name == name)
+                .ok_or_else(|| anyhow::anyhow!("source `{name}` was not pinned"))?
+        }
+    };
+    let _ = SOURCE_NAMES.set(sources.iter().map(|x| x.name.clone()).collect());
+    Ok(Spec::Source(Box::new(pinned)))
 }
 
 /// `root/rel` with forward slashes and without a leading `./`.

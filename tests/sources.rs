@@ -515,3 +515,48 @@ fn the_same_component_id_in_two_sources_names_both_and_keeps_both() {
     );
     assert!(!err.contains("RTC010"), "{err}");
 }
+
+#[test]
+fn diff_compares_a_source_at_two_revs() {
+    let p = Project::new();
+    let repo = p.root.join("repo");
+    commit(
+        &repo,
+        &[(
+            "A/RTC.xml",
+            xml_profile("A", &[("DataOutPort", "out", "RTC::TimedLong")]),
+        )],
+        Some("v1"),
+    );
+    commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
+    let o = rtcdoc(
+        &["diff", "repo@v1", "repo@main", "--cache-dir", &p.cache],
+        &p.proj,
+    );
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("breaking[DIFF102] dataPorts/out"), "{out}");
+    assert!(out.contains("--> repo/A/RTC.xml:"), "{out}");
+    // The locked commit (written by this first use) against itself: no change.
+    let o = rtcdoc(
+        &["diff", "repo", "repo@main", "--cache-dir", &p.cache],
+        &p.proj,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = rtcdoc(
+        &["diff", "repo@v7", "repo", "--cache-dir", &p.cache],
+        &p.proj,
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        err.contains("source `repo`: no branch, tag or commit `v7`"),
+        "{err}"
+    );
+}

@@ -656,6 +656,41 @@ pub fn prepare(
     Ok((pinned, changes))
 }
 
+/// One source at `rev` (a branch, tag or commit), whatever the lock says: for `rtcdoc diff
+/// NAME@REV`. Fetched unless `--offline`; the lock is neither read nor written.
+pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
+    check_rev(rev).with_context(|| format!("`{}@{rev}`", s.name))?;
+    let mut s = s.clone();
+    s.rev = Some(rev.to_string());
+    let mirror = mirror_path(&cache_dir(mode)?, &s);
+    if mode.offline {
+        if !is_mirror(&mirror) {
+            bail!(
+                "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline to fill the cache",
+                s.name,
+                s.git,
+                mirror.display()
+            );
+        }
+    } else {
+        fetch(&s, &mirror, None)?;
+    }
+    let Some(commit) = resolve(&mirror, Some(rev))? else {
+        bail!(
+            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `git ls-remote {}`",
+            s.name,
+            s.git,
+            shallow_note(&mirror),
+            s.git
+        );
+    };
+    Ok(Pinned {
+        source: s,
+        commit,
+        mirror,
+    })
+}
+
 /// The files of the pinned sources, below a temporary folder.
 pub struct Materialized {
     pub dir: tempfile::TempDir,
