@@ -191,6 +191,22 @@ fn sources_are_pinned_in_the_lock_and_linked_at_their_commit() {
         )),
         "{page}"
     );
+    // The index can be filtered by source; the search finds a source's components by its name.
+    let index = std::fs::read_to_string(p.proj.join("site/html/index.html")).unwrap();
+    assert!(
+        index.contains("<option value=\"nav\">nav</option>"),
+        "{index}"
+    );
+    assert!(
+        index.contains("data-category=\"cat\" data-source=\"camera\">"),
+        "{index}"
+    );
+    // Three components from sources; the local one has none.
+    assert_eq!(index.matches(" data-source=").count(), 3, "{index}");
+    let search = std::fs::read_to_string(p.proj.join("site/html/search-index.js"))
+        .or_else(|_| std::fs::read_to_string(p.proj.join("site/html/search-index.json")))
+        .unwrap_or_default();
+    assert!(search.contains("Cat · Test · camera"), "{search}");
     // catalog.json reads back (diff of the catalogue with itself: no change).
     let o = rtcdoc(
         &["diff", "site/json/catalog.json", "site/json/catalog.json"],
