@@ -130,7 +130,13 @@ fn two_repos(p: &Project) -> (PathBuf, String, PathBuf, String) {
     let cam = p.root.join("cam");
     let c1 = commit(
         &cam,
-        &[("Camera/RTC.xml", xml_profile("Camera", &[]))],
+        &[
+            ("Camera/RTC.xml", xml_profile("Camera", &[])),
+            (
+                "Camera/README.md",
+                "# Camera\n\nThe driver is [main.cpp](src/main.cpp).\n".to_string(),
+            ),
+        ],
         None,
     );
     (nav, v1, cam, c1)
@@ -188,6 +194,13 @@ fn sources_are_pinned_in_the_lock_and_linked_at_their_commit() {
     assert!(
         page.contains(&format!(
             "<a href=\"https://git.example.org/cam/blob/{c1}/Camera/RTC.xml\"><code>camera/Camera/RTC.xml</code></a>"
+        )),
+        "{page}"
+    );
+    // Its README is read from the repository, its links go into the repository at the commit.
+    assert!(
+        page.contains(&format!(
+            "<a href=\"https://git.example.org/cam/blob/{c1}/Camera/src/main.cpp\" rel=\"noopener noreferrer\">main.cpp</a>"
         )),
         "{page}"
     );
