@@ -931,8 +931,11 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     }
     let mut reports = Vec::new();
     let mut counts = (0, 0, 0);
+    // The sources' files, kept for the snippets of the human report.
+    let mut source_dirs = Vec::new();
     for p in &paths {
         let loaded = build::load(p, &opts)?;
+        source_dirs.extend(loaded.roots.sources_dir.clone());
         counts.0 += loaded.catalog.components.len();
         counts.1 += loaded.catalog.systems.len();
         counts.2 += loaded.catalog.idl.files.len();
@@ -993,7 +996,17 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 report::Verbosity::Normal
             };
             report::write_human(&mut stream, &report.diagnostics, verbosity, &mut |f| {
-                let bytes = std::fs::read(f).ok()?;
+                let first = f.split('/').next().unwrap_or_default();
+                let bytes = if SOURCE_NAMES
+                    .get()
+                    .is_some_and(|n| n.iter().any(|n| n == first))
+                {
+                    source_dirs
+                        .iter()
+                        .find_map(|d| std::fs::read(d.path().join(f)).ok())?
+                } else {
+                    std::fs::read(f).ok()?
+                };
                 String::from_utf8(bytes).ok()
             })?;
             std::io::Write::flush(&mut stream)?;
