@@ -514,9 +514,8 @@ pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
 /// [`build`] with progress reports.
 pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loaded, BuildReport)> {
     let start = Instant::now();
-    if !opts.load.sources_only {
-        check_output_location(&opts.input, &opts.output)?;
-    }
+    // With sources only, `input` is the configuration's folder: it is protected the same way.
+    check_output_location(&opts.input, &opts.output)?;
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());
     let mut loaded = load_with(&opts.input, &load_opts, progress)?;
