@@ -1,8 +1,9 @@
 //! `rtcdoc diff` through the binary on the fixture pairs of `tests/fixtures/diff/CODE/{old,new}`:
-//! every IDL-level code (DIFF13x, DIFF23x, DIFF33x) and every RT System connector code
-//! (DIFF14x) with its severity, path, component, file and the exit status; and the IDL and
-//! system cases around them (spellings, a git revision, a system only OLD has, an unreadable
-//! system profile, `--idl-path`).
+//! every IDL-level code (DIFF13x, DIFF23x, DIFF33x), every RT System connector code (DIFF14x)
+//! and every code of the RT Systems compared (DIFF003, DIFF15x, DIFF25x, DIFF35x) with its
+//! severity, path, component, file and the exit status; and the IDL and system cases around
+//! them (spellings, a git revision, a system only OLD has, an unreadable system profile,
+//! `--idl-path`, two system files, a reformatted system).
 
 mod common;
 use common::{root, rtcdoc, write};
@@ -55,6 +56,7 @@ struct Case {
 const NAV: &str = "RTC:Lab:Mobile:Nav:1.0.0";
 const NAV_RTC: &str = "new/Nav/RTC.xml";
 const SYSTEM: &str = "new/systems/NavSystem.xml";
+const NAV_SYSTEM: &str = "RTSystem:Lab:NavSystem:1.0";
 
 const CASES: &[Case] = &[
     Case {
@@ -205,14 +207,162 @@ const CASES: &[Case] = &[
         file: SYSTEM,
         says: "service port connector `Map_Map` (`Base0.Map` → `Planner0.Map`) of system `RTSystem:Lab:NavSystem:1.0` (new/systems/NavSystem.xml) connects port `Map`, which changed incompatibly (DIFF107 `servicePorts/Map/interfaces/map/type`)",
     },
+    Case {
+        code: "DIFF003",
+        path: "",
+        component: NAV_SYSTEM,
+        all: &["DIFF003"],
+        file: "new/field-2024/NavSystem.xml",
+        says: "2 RT System profiles in OLD and 2 in NEW have the id `RTSystem:Lab:NavSystem:1.0`; they cannot be paired and are not compared",
+    },
+    Case {
+        code: "DIFF151",
+        path: "",
+        component: NAV_SYSTEM,
+        all: &["DIFF151"],
+        file: "",
+        says: "RT System `NavSystem` (old/systems/NavSystem.xml, 3 instance(s), 3 connector(s)) was removed",
+    },
+    Case {
+        code: "DIFF152",
+        path: "components/Logger0",
+        component: NAV_SYSTEM,
+        all: &["DIFF152", "DIFF154"],
+        file: SYSTEM,
+        says: "instance `Logger0` of component `RTC:Lab:Util:Logger:1.0.0` was removed: the instances connected to it (`Base0`) lose the data and services it exchanged with them",
+    },
+    Case {
+        code: "DIFF153",
+        path: "components/Logger0/id",
+        component: NAV_SYSTEM,
+        all: &["DIFF153"],
+        file: SYSTEM,
+        says: "instance `Logger0` now runs component `RTC:Lab:Util:Recorder:1.0.0` instead of `RTC:Lab:Util:Logger:1.0.0`",
+    },
+    Case {
+        code: "DIFF154",
+        path: "dataPortConnectors/odometry_log",
+        component: NAV_SYSTEM,
+        all: &["DIFF154"],
+        file: SYSTEM,
+        says: "data port connector `odometry_log` (`Base0.odometry` → `Logger0.in`, IDL:RTC/TimedPose2D:1.0) was removed: `Logger0.in` no longer receives data from `Base0.odometry`",
+    },
+    Case {
+        code: "DIFF155",
+        path: "dataPortConnectors/odometry_log",
+        component: NAV_SYSTEM,
+        all: &["DIFF155"],
+        file: SYSTEM,
+        says: "now connects `Base0.odometry` → `Planner0.goal` instead of `Base0.odometry` → `Logger0.in`: `Logger0.in` is no longer connected by it",
+    },
+    Case {
+        code: "DIFF156",
+        path: "dataPortConnectors/odometry_odom/dataType",
+        component: NAV_SYSTEM,
+        // The `dataport.data_type` property changed with the attribute: said once.
+        all: &["DIFF156"],
+        file: SYSTEM,
+        says: "now carries `IDL:RTC/TimedPose3D:1.0` instead of `IDL:RTC/TimedPose2D:1.0`",
+    },
+    Case {
+        code: "DIFF251",
+        path: "components/Base0/id",
+        component: NAV_SYSTEM,
+        all: &["DIFF251"],
+        file: SYSTEM,
+        says: "instance `Base0` now names version `2.0.0` of its component instead of `1.0.0`",
+    },
+    Case {
+        code: "DIFF252",
+        path: "components/Base0/activeConfigurationSet",
+        component: NAV_SYSTEM,
+        all: &["DIFF252"],
+        file: SYSTEM,
+        says: "instance `Base0` now runs with configuration set `slow` instead of `default`",
+    },
+    Case {
+        code: "DIFF253",
+        path: "components/Base0/executionContexts/0/rate",
+        component: NAV_SYSTEM,
+        all: &["DIFF253"],
+        file: SYSTEM,
+        says: "instance `Base0` now runs at 50 Hz instead of 100.0 Hz",
+    },
+    Case {
+        code: "DIFF254",
+        path: "components/Planner0/executionContexts/0/kind",
+        component: NAV_SYSTEM,
+        all: &["DIFF254"],
+        file: SYSTEM,
+        says: "execution context `0` of instance `Planner0` is now `EVENT_DRIVEN` instead of `PERIODIC`",
+    },
+    Case {
+        code: "DIFF255",
+        path: "dataPortConnectors/odometry_odom/interfaceType",
+        component: NAV_SYSTEM,
+        all: &["DIFF255"],
+        file: SYSTEM,
+        says: "the interface type of data port connector `odometry_odom` changed from `corba_cdr` to `shared_memory`",
+    },
+    Case {
+        code: "DIFF256",
+        path: "dataPortConnectors/odometry_odom/properties/dataport.publisher.push_policy",
+        component: NAV_SYSTEM,
+        // The subscription type (its property folded into it) and the push policy.
+        all: &["DIFF256", "DIFF256"],
+        file: SYSTEM,
+        says: "property `dataport.publisher.push_policy` of connector `odometry_odom` changed from `all` to `skip`",
+    },
+    Case {
+        code: "DIFF351",
+        path: "",
+        component: NAV_SYSTEM,
+        all: &["DIFF351"],
+        file: SYSTEM,
+        says: "RT System `NavSystem` (new/systems/NavSystem.xml, 3 instance(s)) was added",
+    },
+    Case {
+        code: "DIFF352",
+        path: "components/Camera0",
+        component: NAV_SYSTEM,
+        all: &["DIFF352"],
+        file: SYSTEM,
+        says: "instance `Camera0` of component `RTC:Lab:Sensor:Camera:1.0.0` was added",
+    },
+    Case {
+        code: "DIFF353",
+        path: "dataPortConnectors/odometry_goal",
+        component: NAV_SYSTEM,
+        all: &["DIFF353"],
+        file: SYSTEM,
+        says: "data port connector `odometry_goal` (`Base0.odometry` → `Planner0.goal`) was added",
+    },
+    Case {
+        code: "DIFF354",
+        path: "components/Base0/configurationSets/default/gain",
+        component: NAV_SYSTEM,
+        all: &["DIFF354"],
+        file: SYSTEM,
+        says: "`gain` in configuration set `default` (the active set) of instance `Base0` changed from `5.0` to `2.5`",
+    },
+    Case {
+        code: "DIFF355",
+        path: "components/Logger0/location/y",
+        component: NAV_SYSTEM,
+        all: &["DIFF355"],
+        file: SYSTEM,
+        says: "`components/Logger0/location/y` changed from `140` to `160`",
+    },
 ];
 
 #[test]
 fn every_idl_and_connector_code_from_its_fixture_pair() {
     for c in rtcdoc::diff::CODES {
-        let idl_or_connector = ["DIFF13", "DIFF14", "DIFF23", "DIFF33"]
-            .iter()
-            .any(|p| c.code.starts_with(p));
+        let idl_or_connector = [
+            "DIFF003", "DIFF13", "DIFF14", "DIFF15", "DIFF23", "DIFF25", "DIFF33", "DIFF35",
+        ]
+        .iter()
+        .any(|p| c.code.starts_with(p));
         assert_eq!(
             fixture(c.code).is_dir(),
             idl_or_connector,
@@ -244,12 +394,19 @@ fn every_idl_and_connector_code_from_its_fixture_pair() {
             assert!(found["file"].is_null(), "{}", k.code);
         } else {
             assert_eq!(found["file"], k.file, "{}", k.code);
-            assert!(
-                found["line"].as_u64().unwrap_or(0) > 0,
-                "{}: a line",
-                k.code
-            );
         }
+        // Located in NEW, or (what exists only there) in OLD; DIFF003 names files only, and
+        // DIFF332 no file.
+        let line = if found["line"].is_null() {
+            &found["oldLine"]
+        } else {
+            &found["line"]
+        };
+        assert!(
+            line.as_u64().unwrap_or(0) > 0 || ["DIFF003", "DIFF332"].contains(&k.code),
+            "{}: a line: {found:#}",
+            k.code
+        );
         let breaking = k.all.iter().any(|c| c.starts_with("DIFF1"));
         assert_eq!(exit, i32::from(breaking), "{}: exit status", k.code);
         assert_eq!(json["summary"]["failed"], breaking, "{}", k.code);
@@ -422,8 +579,13 @@ fn systems_of_old_only_are_checked_and_new_ones_win() {
         "new/systems/NavSystem.xml",
         &format!("{}{}", &system[..start], &system[end..]),
     );
+    // The system itself lost the connector (DIFF154); none of NEW's connectors is broken.
     let (_, json) = run(dir.path(), &["old", "new"]);
-    assert_eq!(codes_of(&json), ["DIFF102", "DIFF306"], "{json:#}");
+    assert_eq!(
+        codes_of(&json),
+        ["DIFF102", "DIFF154", "DIFF306"],
+        "{json:#}"
+    );
 }
 
 #[test]
@@ -542,4 +704,240 @@ fn a_yaml_system_profile_is_checked_too() {
     assert_eq!(c["path"], "connectors/NavYaml/odo");
     assert_eq!(c["file"], "new/systems/nav.yaml");
     assert!(c["line"].as_u64().unwrap_or(0) > 0, "{c:#}");
+}
+
+/// The old NavSystem of the DIFF15x/25x/35x pairs.
+fn nav_system() -> PathBuf {
+    fixture("DIFF154").join("old/systems/NavSystem.xml")
+}
+
+/// A system compared with itself, with a copy in another folder, and with itself reformatted
+/// (attributes in another order, one a line, tabs) gives no change.
+#[test]
+fn identical_and_reformatted_systems_are_no_change() {
+    let reformatted = root().join("tests/fixtures/diff/reformatted/NavSystem.xml");
+    let original = std::fs::read_to_string(nav_system()).expect("system");
+    let other = std::fs::read_to_string(&reformatted).expect("reformatted");
+    assert_ne!(original, other, "the reformatted file differs as text");
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/NavSystem.xml", &original);
+    write(dir.path(), "new/moved/NavSystem.xml", &other);
+    for (a, b) in [
+        (nav_system(), nav_system()),
+        (nav_system(), reformatted.clone()),
+        (reformatted.clone(), nav_system()),
+        (dir.path().join("old"), dir.path().join("new")),
+    ] {
+        let (exit, json) = run(
+            dir.path(),
+            &[
+                &a.to_string_lossy(),
+                &b.to_string_lossy(),
+                "--fail-on",
+                "info",
+            ],
+        );
+        assert_eq!(exit, 0, "{a:?} {b:?}: {json:#}");
+        assert!(changes(&json).is_empty(), "{a:?} {b:?}: {json:#}");
+        assert_eq!(json["summary"]["systems"]["matched"], 1, "{json:#}");
+        assert_eq!(json["summary"]["systems"]["changed"], 0, "{json:#}");
+    }
+}
+
+/// Two system files are compared (the issue: they reported "0 of 0 matched components", exit 0),
+/// in every output format, with the exit status of `--fail-on`.
+#[test]
+fn two_system_files_in_every_format() {
+    let dir = fixture("DIFF152");
+    let (old, new) = ("old/systems/NavSystem.xml", "new/systems/NavSystem.xml");
+    let (exit, json) = run(&dir, &[old, new]);
+    assert_eq!(exit, 1, "{json:#}");
+    assert_eq!(codes_of(&json), ["DIFF152", "DIFF154"]);
+    let c = &changes(&json)[0];
+    assert_eq!(c["file"], "new/systems/NavSystem.xml");
+    assert_eq!(c["oldFile"], "old/systems/NavSystem.xml");
+    assert_eq!(c["oldLine"], 28, "{c:#}");
+    assert_eq!(
+        json["summary"]["systems"],
+        serde_json::json!({"old": 1, "new": 1, "matched": 1, "changed": 1, "added": 0, "removed": 0})
+    );
+    let (exit, _) = run(&dir, &[old, new, "--fail-on", "never"]);
+    assert_eq!(exit, 0);
+    let text = |format: &str| {
+        let out = rtcdoc(&["diff", old, new, "--format", format], &dir);
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        String::from_utf8_lossy(&out.stdout).to_string()
+    };
+    let human = text("human");
+    assert!(human.starts_with("RTSystem:Lab:NavSystem:1.0\n  breaking[DIFF152] components/Logger0: instance `Logger0`"), "{human}");
+    assert!(
+        human.contains("--> old/systems/NavSystem.xml:28:5"),
+        "{human}"
+    );
+    assert!(
+        human.trim_end().ends_with("2 breaking, 0 warnings, 0 infos in 0 of 0 matched component(s); 0 added, 0 removed; 1 of 1 matched system(s) changed, 0 added, 0 removed"),
+        "{human}"
+    );
+    let markdown = text("markdown");
+    assert!(
+        markdown.contains("### `RTSystem:Lab:NavSystem:1.0`"),
+        "{markdown}"
+    );
+    assert!(markdown.contains("| 🔴 breaking | DIFF154 `system-connector-removed` | `dataPortConnectors/odometry_log` |"), "{markdown}");
+    let github = text("github");
+    assert!(
+        github.contains("::error file=new/systems/NavSystem.xml,title=DIFF152 system-instance-removed::RTSystem:Lab:NavSystem:1.0 components/Logger0: instance `Logger0`"),
+        "{github}"
+    );
+}
+
+/// A warning and an info from the systems: `--fail-on` decides the exit status as for components.
+#[test]
+fn system_warnings_and_infos_follow_fail_on() {
+    for (code, level) in [("DIFF253", "warning"), ("DIFF354", "info")] {
+        for (fail_on, fails) in [
+            ("breaking", false),
+            ("warning", level == "warning"),
+            ("info", true),
+        ] {
+            let (exit, json) = run(&fixture(code), &["old", "new", "--fail-on", fail_on]);
+            assert_eq!(
+                exit,
+                i32::from(fails),
+                "{code} --fail-on {fail_on}: {json:#}"
+            );
+            assert_eq!(json["summary"][level], 1, "{code}");
+        }
+    }
+}
+
+/// A service connector removed, a connector matched by its ends when its id changed, a data
+/// type and an execution context respelled, and an instance's component version: each said as
+/// what it is.
+#[test]
+fn connectors_match_by_ends_and_respellings_are_info() {
+    let base = std::fs::read_to_string(nav_system()).expect("system");
+    let edit = |pairs: &[(&str, &str)]| {
+        let mut s = base.clone();
+        for (a, b) in pairs {
+            assert!(s.contains(a), "{a}");
+            s = s.replacen(a, b, 1);
+        }
+        s
+    };
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/NavSystem.xml", &base);
+    write(
+        dir.path(),
+        "new/NavSystem.xml",
+        &edit(&[
+            // Drawn again between the same ports: a new id, the same connector.
+            ("rts:connectorId=\"c3\"", "rts:connectorId=\"c9\""),
+            // `RTC::TimedPose2D` is `IDL:RTC/TimedPose2D:1.0`.
+            (
+                "rts:dataType=\"IDL:RTC/TimedPose2D:1.0\" rts:name=\"odometry_log\"",
+                "rts:dataType=\"RTC::TimedPose2D\" rts:name=\"odometry_log\"",
+            ),
+            (
+                "rts:kind=\"PERIODIC\" rts:rate=\"1.0\"",
+                "rts:kind=\"PeriodicExecutionContext\" rts:rate=\"1\"",
+            ),
+            (
+                "rts:portName=\"Planner0.Map\"",
+                "rts:portName=\"Planner0.Nav\"",
+            ),
+        ]),
+    );
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    let found: Vec<(String, String)> = changes(&json)
+        .iter()
+        .map(|c| {
+            (
+                c["code"].as_str().unwrap_or("").to_string(),
+                c["path"].as_str().unwrap_or("").to_string(),
+            )
+        })
+        .collect();
+    let expected: Vec<(String, String)> = [
+        ("DIFF355", "components/Logger0/executionContexts/0/kind"),
+        ("DIFF355", "components/Logger0/executionContexts/0/rate"),
+        ("DIFF355", "dataPortConnectors/odometry_log/connectorId"),
+        ("DIFF355", "dataPortConnectors/odometry_log/dataType"),
+        ("DIFF155", "servicePortConnectors/Map_Map"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    assert_eq!(found, expected, "{json:#}");
+    assert_eq!(exit, 1);
+    // The service connector removed: its requirers lose their provider.
+    let without = {
+        let start = base
+            .find("    <rts:ServicePortConnectors")
+            .expect("service connector");
+        let end = base.find("</rts:ServicePortConnectors>\n").expect("end") + 29;
+        format!("{}{}", &base[..start], &base[end..])
+    };
+    write(dir.path(), "new/NavSystem.xml", &without);
+    let (exit, json) = run(dir.path(), &["old", "new"]);
+    assert_eq!(exit, 1);
+    assert_eq!(codes_of(&json), ["DIFF154"], "{json:#}");
+    let c = &changes(&json)[0];
+    assert_eq!(c["path"], "servicePortConnectors/Map_Map");
+    assert!(
+        c["message"].as_str().unwrap_or("").contains("(`Base0.Map` — `Planner0.Map`) was removed: the interfaces these ports require from each other lose their provider"),
+        "{c:#}"
+    );
+}
+
+/// `REV:PATH` sides bring their systems, which are compared too.
+#[test]
+fn a_git_revision_compares_its_systems() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    if !git(dir.path(), &["init", "-q"]) {
+        eprintln!("skipped: git is not available");
+        return;
+    }
+    let work = dir.path().join("robot");
+    std::fs::create_dir_all(&work).expect("mkdir");
+    copy_tree(&fixture("DIFF253").join("old"), &work);
+    assert!(git(dir.path(), &["add", "-A"]));
+    assert!(git(dir.path(), &["commit", "-q", "-m", "old"]));
+    copy_tree(&fixture("DIFF253").join("new"), &work);
+    let (exit, json) = run(dir.path(), &["HEAD:robot", "robot", "--fail-on", "warning"]);
+    assert_eq!(exit, 1, "{json:#}");
+    assert_eq!(codes_of(&json), ["DIFF253"], "{json:#}");
+    let c = &changes(&json)[0];
+    assert_eq!(c["file"], "robot/systems/NavSystem.xml");
+    assert_eq!(c["oldFile"], "robot/systems/NavSystem.xml");
+    // Both revisions the same: nothing.
+    let (exit, json) = run(
+        dir.path(),
+        &["HEAD:robot", "HEAD:robot", "--fail-on", "info"],
+    );
+    assert_eq!(exit, 0, "{json:#}");
+}
+
+/// The library function a history of one system calls per pair of versions.
+#[test]
+fn compare_systems_is_callable_per_pair_of_versions() {
+    let read = |p: &Path| {
+        let bytes = std::fs::read(p).expect("read");
+        rtcdoc::parse::rts::parse(
+            rtcdoc::parse::SourceFormat::Xml,
+            &bytes,
+            &p.to_string_lossy(),
+            &rtcdoc::parse::Limits::default(),
+        )
+        .expect("parses")
+        .system
+    };
+    let old = read(&fixture("DIFF253").join("old/systems/NavSystem.xml"));
+    let new = read(&fixture("DIFF253").join("new/systems/NavSystem.xml"));
+    assert!(rtcdoc::diff::systems::compare_systems(&old, &old).is_empty());
+    let found = rtcdoc::diff::systems::compare_systems(&old, &new);
+    assert_eq!(found.len(), 1);
+    assert_eq!(found[0].code, "DIFF253");
+    assert_eq!(found[0].component, "RTSystem:Lab:NavSystem:1.0");
+    assert!(found[0].file.is_none() && found[0].line.is_some());
 }

@@ -5,7 +5,9 @@
 //! Numbering: DIFF0xx are about the comparison itself, DIFF1xx breaking, DIFF2xx warnings,
 //! DIFF3xx information. Codes are never reused. The IDL-level codes (struct members, enum
 //! values, unions, typedefs, operations) are DIFF13x / DIFF23x / DIFF33x, the RT System
-//! connectors a change breaks DIFF14x.
+//! connectors a component change breaks DIFF14x, and the changes of the RT System profiles
+//! themselves (instances, connectors, configuration, execution contexts) DIFF15x / DIFF25x /
+//! DIFF35x.
 
 use serde::Serialize;
 
@@ -47,6 +49,7 @@ pub struct Code {
 
 pub const AMBIGUOUS_COMPONENT: &str = "DIFF001";
 pub const UNREADABLE_PROFILE: &str = "DIFF002";
+pub const AMBIGUOUS_SYSTEM: &str = "DIFF003";
 pub const COMPONENT_REMOVED: &str = "DIFF101";
 pub const DATA_PORT_REMOVED: &str = "DIFF102";
 pub const DATA_PORT_DIRECTION: &str = "DIFF103";
@@ -70,6 +73,12 @@ pub const IDL_OPERATION_CHANGED: &str = "DIFF139";
 pub const CONNECTOR_COMPONENT_REMOVED: &str = "DIFF141";
 pub const CONNECTOR_PORT_REMOVED: &str = "DIFF142";
 pub const CONNECTOR_PORT_CHANGED: &str = "DIFF143";
+pub const SYSTEM_REMOVED: &str = "DIFF151";
+pub const SYSTEM_INSTANCE_REMOVED: &str = "DIFF152";
+pub const SYSTEM_INSTANCE_COMPONENT: &str = "DIFF153";
+pub const SYSTEM_CONNECTOR_REMOVED: &str = "DIFF154";
+pub const SYSTEM_CONNECTOR_ENDS: &str = "DIFF155";
+pub const SYSTEM_CONNECTOR_DATA_TYPE: &str = "DIFF156";
 pub const DEFAULT_CHANGED: &str = "DIFF201";
 pub const CONSTRAINT_NARROWED: &str = "DIFF202";
 pub const CONSTRAINT_CHANGED: &str = "DIFF203";
@@ -83,6 +92,12 @@ pub const UNIT_CHANGED: &str = "DIFF210";
 pub const REQUIRED_INTERFACE_ADDED: &str = "DIFF211";
 pub const IDL_ENUM_VALUE_APPENDED: &str = "DIFF231";
 pub const IDL_OPERATION_ADDED: &str = "DIFF232";
+pub const SYSTEM_INSTANCE_VERSION: &str = "DIFF251";
+pub const SYSTEM_ACTIVE_CONFIGURATION: &str = "DIFF252";
+pub const SYSTEM_EXECUTION_RATE: &str = "DIFF253";
+pub const SYSTEM_EXECUTION_CONTEXT: &str = "DIFF254";
+pub const SYSTEM_CONNECTOR_TRANSPORT: &str = "DIFF255";
+pub const SYSTEM_CONNECTOR_POLICY: &str = "DIFF256";
 pub const PORT_ADDED: &str = "DIFF301";
 pub const INTERFACE_ADDED: &str = "DIFF302";
 pub const CONFIGURATION_ADDED: &str = "DIFF303";
@@ -94,6 +109,11 @@ pub const OTHER_CHANGED: &str = "DIFF308";
 pub const IDL_DOCUMENTATION_CHANGED: &str = "DIFF331";
 pub const IDL_TYPE_ON_ONE_SIDE: &str = "DIFF332";
 pub const IDL_REQUIRED_OPERATION_REMOVED: &str = "DIFF333";
+pub const SYSTEM_ADDED: &str = "DIFF351";
+pub const SYSTEM_INSTANCE_ADDED: &str = "DIFF352";
+pub const SYSTEM_CONNECTOR_ADDED: &str = "DIFF353";
+pub const SYSTEM_CONFIGURATION: &str = "DIFF354";
+pub const SYSTEM_OTHER: &str = "DIFF355";
 
 use Level::{Breaking, Info, Warning};
 
@@ -112,6 +132,13 @@ pub static CODES: &[Code] = &[
         name: "unreadable-profile",
         summary: "a profile file of one side could not be read",
         explanation: "A file that is not well-formed (or too large, or unreadable) contributes no component, so its component may show up as removed or added. The warning says so, so that a broken file is not mistaken for a deliberate removal; `rtcdoc check` gives the details.",
+    },
+    Code {
+        code: AMBIGUOUS_SYSTEM,
+        level: Warning,
+        name: "ambiguous-system",
+        summary: "several RT System profiles on a side share one system id and cannot be paired",
+        explanation: "Systems are matched by the vendor and name of their id (`RTSystem:vendor:name:version`, the version left out), else by file. RTSystemEditor saves every new system as `DefaultSystem` unless renamed, so unrelated systems often share an id; those are paired by identical file path, then by identical values (copies), and when one is left on each side, those two. Systems still left on both sides cannot be told apart, so they are not compared: this warning names their files instead of guessing a pairing that would report invented changes. Give each system its own id (RTSystemEditor: Save As, or the `id` of the profile).",
     },
     Code {
         code: COMPONENT_REMOVED,
@@ -275,6 +302,48 @@ pub static CODES: &[Code] = &[
         explanation: "The connector still finds the port, but its data type, kind, interfaces or their IDL changed in a breaking way (DIFF103, DIFF104, DIFF106–DIFF108, DIFF13x on the port): OpenRTM refuses the connection (another `data_type`, two out-ports) or the peers exchange data they decode differently. The message lists the changes of the port.",
     },
     Code {
+        code: SYSTEM_REMOVED,
+        level: Breaking,
+        name: "system-removed",
+        summary: "an RT System profile of OLD is not in NEW",
+        explanation: "Whoever deploys the system (RTSystemEditor's Open and Restore, `rtresurrect`, `rtstart`, a launch script naming the file) can no longer restore its connections, configuration and start order. Systems are matched by id (vendor and name), else by file: a file that only moved is no change.",
+    },
+    Code {
+        code: SYSTEM_INSTANCE_REMOVED,
+        level: Breaking,
+        name: "system-instance-removed",
+        summary: "a component instance was removed from an RT System",
+        explanation: "The system no longer starts, connects or configures the instance: the instances whose in-ports it fed stop receiving data, those whose required interfaces it provided lose their provider, and start-up orders that named it skip it. Instances are matched by instance name. (Its connectors, when NEW dropped them too, are reported as DIFF154.)",
+    },
+    Code {
+        code: SYSTEM_INSTANCE_COMPONENT,
+        level: Breaking,
+        name: "system-instance-component-changed",
+        summary: "an instance of an RT System now names another component",
+        explanation: "The instance keeps its name, but its `id` names another component (another vendor, category or name): the connectors and configuration sets saved for the instance were made for the old component's ports and parameters, so restoring the system connects ports that may not exist or carry other data, and sets parameters the new component does not declare. Another version of the same component is DIFF251; the id written in the other form (dotted or colon) is DIFF355.",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_REMOVED,
+        level: Breaking,
+        name: "system-connector-removed",
+        summary: "a data or service port connector was removed from an RT System",
+        explanation: "For a data connector, the consumer (the target in-port) stops receiving the data the producer sends; for a service connector, the port requiring an interface loses its provider and its calls fail. Connectors are matched by connector id, else by their two ends (instance and port, with or without the `<instance>.` prefix), so a connector that was deleted and drawn again between the same ports is no removal.",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_ENDS,
+        level: Breaking,
+        name: "system-connector-ends-changed",
+        summary: "a connector of an RT System now joins other ports",
+        explanation: "The connector (matched by its id) now starts or ends at another instance or port: the port it left stops receiving (or providing), and the port it reaches gets data or calls it did not get before. The message names both ends before and after.",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_DATA_TYPE,
+        level: Breaking,
+        name: "system-connector-data-type-changed",
+        summary: "a data connector of an RT System carries another data type",
+        explanation: "OpenRTM connects two data ports only when the connector's `dataport.data_type` equals the types of both ports: a connector saved with another type is refused when the system is restored, or joins peers built for different types (CDR is positional, so they decode each other's data wrongly). Spellings of one type (`RTC::TimedLong`, `IDL:RTC/TimedLong:1.0`) are compared in canonical form and are DIFF355 when only the spelling changed. The `dataport.data_type` property is folded into the attribute when both changed.",
+    },
+    Code {
         code: DEFAULT_CHANGED,
         level: Warning,
         name: "configuration-default-changed",
@@ -366,6 +435,48 @@ pub static CODES: &[Code] = &[
         explanation: "Added to a provided interface, old requirers are unaffected, but two providers under one repository id now differ, and requirers built from the new IDL get `BAD_OPERATION` from old providers. Added to a required interface, the component may call an operation that existing providers do not implement.",
     },
     Code {
+        code: SYSTEM_INSTANCE_VERSION,
+        level: Warning,
+        name: "system-instance-version-changed",
+        summary: "an instance of an RT System names another version of its component",
+        explanation: "The instance still names the same component (vendor, category and name), but another version: the system was saved against the new version, so hosts still running the old one restore it with the ports and parameters of the old version (`rtcdoc check` reports the mismatch with the catalogue as RTC604). Not breaking by itself; the component's own diff says what the versions differ in.",
+    },
+    Code {
+        code: SYSTEM_ACTIVE_CONFIGURATION,
+        level: Warning,
+        name: "system-active-configuration-changed",
+        summary: "an instance of an RT System activates another configuration set",
+        explanation: "The instance now runs with the values of another set (`activeConfigurationSet`): everything it tunes (gains, limits, device names) may take other values, so its peers see other behaviour, though every connection still works.",
+    },
+    Code {
+        code: SYSTEM_EXECUTION_RATE,
+        level: Warning,
+        name: "system-execution-rate-changed",
+        summary: "an execution context of an RT System instance runs at another rate",
+        explanation: "The instance executes at another frequency: its consumers see data at another rate, and controllers and filters tuned to the old period behave differently. Rates are compared as numbers (`1000` and `1000.0` are equal).",
+    },
+    Code {
+        code: SYSTEM_EXECUTION_CONTEXT,
+        level: Warning,
+        name: "system-execution-context-changed",
+        summary: "an execution context of an RT System instance changed its kind, or was added or removed",
+        explanation: "A periodic context that becomes event-driven (or the reverse), or a context added or removed, changes when and how often the instance runs, and which instances share a thread. Kinds are compared by meaning: `PERIODIC`, `Periodic` and `PeriodicExecutionContext` are the same. Execution contexts are matched by id.",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_TRANSPORT,
+        level: Warning,
+        name: "system-connector-transport-changed",
+        summary: "a data connector of an RT System uses another interface type or dataflow type",
+        explanation: "The connector asks for another transport (`corba_cdr`, `shared_memory`, `direct`, …) or dataflow (`push`, `pull`): it connects only when both ports offer it, and a consumer that pulled now receives pushes (or must pull). Compared in any case; the `dataport.interface_type` and `dataport.dataflow_type` properties are folded into the attributes when both changed.",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_POLICY,
+        level: Warning,
+        name: "system-connector-policy-changed",
+        summary: "a data connector of an RT System delivers data under another policy",
+        explanation: "The subscription type (`flush`, `new`, `periodic`), push interval, push policy (`all`, `fifo`, `skip`, `new`), skip count or buffer settings of the connector changed: every connection still works, but the consumer may receive fewer, later or other samples (a `new` subscription drops samples the consumer is too slow for). The connector's `dataport.subscription_type`, `dataport.publisher.*`, `dataport.push_rate` and `dataport.*buffer*` properties count too.",
+    },
+    Code {
         code: PORT_ADDED,
         level: Info,
         name: "port-added",
@@ -441,6 +552,41 @@ pub static CODES: &[Code] = &[
         name: "idl-required-operation-removed",
         summary: "an operation or attribute was removed from an interface the component requires",
         explanation: "The component calls less than before; the providers it connects to still implement the operation, so nothing fails. (Removed from a provided interface it is DIFF138.)",
+    },
+    Code {
+        code: SYSTEM_ADDED,
+        level: Info,
+        name: "system-added",
+        summary: "an RT System profile of NEW is not in OLD",
+        explanation: "Nothing deployed it before, so nothing can break.",
+    },
+    Code {
+        code: SYSTEM_INSTANCE_ADDED,
+        level: Info,
+        name: "system-instance-added",
+        summary: "a component instance was added to an RT System",
+        explanation: "The existing instances and their connections are untouched; the new instance is started and connected as the system says (its connectors are DIFF353).",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_ADDED,
+        level: Info,
+        name: "system-connector-added",
+        summary: "a data or service port connector was added to an RT System",
+        explanation: "Existing connections are untouched; a port may now receive data or a provider it did not have, which is what the author intended.",
+    },
+    Code {
+        code: SYSTEM_CONFIGURATION,
+        level: Info,
+        name: "system-configuration-changed",
+        summary: "a configuration value of an RT System instance changed, or a value or set was added or removed",
+        explanation: "Configuration values tune an instance without changing what it connects to; the message says whether the value is in the active set (the one the instance runs with). Which set is active is DIFF252. RTSystemEditor's own sets (`__widget__`, `__constraints__`) are DIFF355.",
+    },
+    Code {
+        code: SYSTEM_OTHER,
+        level: Info,
+        name: "system-other-changed",
+        summary: "any other value of an RT System profile changed",
+        explanation: "Every value of a system profile is compared, so that no change goes unreported; values without a classification of their own (the system's version, dates, comments, the boxes' positions in RTSystemEditor, naming paths, start-up orders, groups, properties, values rtcdoc does not know, a type spelled differently) are reported here. Host data (IORs, host names, CORBA endpoints, which change with every save and are not published) is not compared.",
     },
 ];
 

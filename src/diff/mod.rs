@@ -14,7 +14,9 @@
 //!
 //! With IDL on the sides, the types the ports and interfaces of a matched pair carry are also
 //! compared inside (`idl`: members, enum values, union cases, typedefs, operations); with
-//! RT System profiles, the connectors the changes break are reported ([`systems`]).
+//! RT System profiles, the systems themselves are compared (instances, connectors,
+//! configuration, execution contexts) and the connectors the component changes break are
+//! reported ([`systems`]).
 
 pub mod codes;
 mod constraint;
@@ -80,12 +82,27 @@ pub struct Components {
     pub removed: usize,
 }
 
+/// Counts of the RT System profiles of both sides.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct SystemCounts {
+    pub old: usize,
+    pub new: usize,
+    /// Systems found on both sides.
+    pub matched: usize,
+    /// Matched systems with at least one change.
+    pub changed: usize,
+    pub added: usize,
+    pub removed: usize,
+}
+
 /// The result of a comparison.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct Diff {
     /// Sorted by component, then path, then code.
     pub changes: Vec<Change>,
     pub components: Components,
+    pub systems: SystemCounts,
 }
 
 /// Counts of a set of changes.
@@ -382,10 +399,18 @@ pub fn diff_with_systems(
         new_name,
         &mut out,
     );
+    let system_counts = systems::compare_all(
+        &old_systems.systems,
+        &new_systems.systems,
+        old_name,
+        new_name,
+        &mut out,
+    );
     sort(&mut out);
     Diff {
         changes: out,
         components: counts,
+        systems: system_counts,
     }
 }
 

@@ -11,6 +11,7 @@
 //!               "oldLine"?: n, "oldColumn"?: n}],
 //!  "summary": {"breaking", "warning", "info", "byCode": {"DIFF104": n, …},
 //!              "components": {"old", "new", "matched", "changed", "added", "removed"},
+//!              "systems": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "failOn": "breaking|warning|info|never", "failed": bool}}
 //! ```
 
@@ -41,22 +42,38 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
             "info": s.info,
             "byCode": s.by_code,
             "components": diff.components,
+            "systems": diff.systems,
             "failOn": fail_on_name(fail_on),
             "failed": s.fails(fail_on),
         },
     })
 }
 
-/// The one-line summary: `rtcdoc diff: 1 breaking, 2 warnings, 3 infos in 2 of 11 components (1 added, 0 removed)`.
+/// The one-line summary: `1 breaking, 2 warnings, 3 infos in 2 of 11 matched component(s); 1
+/// added, 0 removed`, and when a side has RT System profiles `; 1 of 2 matched system(s)
+/// changed, 0 added, 0 removed`.
 pub fn one_line(diff: &Diff) -> String {
     let c = &diff.components;
     format!(
-        "{} in {} of {} matched component(s); {} added, {} removed",
+        "{} in {} of {} matched component(s); {} added, {} removed{}",
         diff.summary().counts(),
         c.changed,
         c.matched,
         c.added,
-        c.removed
+        c.removed,
+        systems_line(diff)
+    )
+}
+
+/// `; 1 of 2 matched system(s) changed, 0 added, 0 removed`, or nothing without systems.
+fn systems_line(diff: &Diff) -> String {
+    let s = &diff.systems;
+    if s.old + s.new == 0 {
+        return String::new();
+    }
+    format!(
+        "; {} of {} matched system(s) changed, {} added, {} removed",
+        s.changed, s.matched, s.added, s.removed
     )
 }
 
@@ -137,13 +154,14 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
     let c = &diff.components;
     let _ = writeln!(
         out,
-        "Comparing `{}` → `{}`: {} of {} matched component(s) changed, {} added, {} removed; the check {verdict}.\n",
+        "Comparing `{}` → `{}`: {} of {} matched component(s) changed, {} added, {} removed{}; the check {verdict}.\n",
         cell(old),
         cell(new),
         c.changed,
         c.matched,
         c.added,
-        c.removed
+        c.removed,
+        systems_line(diff)
     );
     if diff.changes.is_empty() {
         out.push_str("No changes.\n");

@@ -1,18 +1,27 @@
-//! RT System profiles of the two sides, and the connectors of theirs that a change breaks.
+//! RT System profiles of the two sides: the systems themselves compared, and the connectors of
+//! theirs that a component change breaks.
 //!
 //! The systems of a side are the `RtsProfile` files the walk found below it (the component
 //! walk skips them as "not a component profile"; they are read here with
-//! [`crate::parse::rts::parse`]). Systems themselves are not compared: a connector is reported
-//! (DIFF14x) when one of its ends is a component that was removed, or a port of a matched
-//! component that was removed or changed in a breaking way. NEW's systems are checked, and
-//! OLD's systems that NEW does not have (by id, else by file), so a system kept only on the
-//! old side is not forgotten; a system NEW updated is judged as NEW has it.
+//! [`crate::parse::rts::parse`]).
+//!
+//! - [`compare_all`] pairs the systems of the two sides (by the vendor and name of their id,
+//!   else by file) and compares each pair with [`compare_systems`] (DIFF15x / DIFF25x /
+//!   DIFF35x, see `compare.rs`); a system on one side only is removed or added.
+//! - [`Breaks::connectors`] reports a connector (DIFF14x) when one of its ends is a component
+//!   that was removed, or a port of a matched component that was removed or changed in a
+//!   breaking way. NEW's systems are checked, and OLD's systems that NEW does not have (by id,
+//!   else by file), so a system kept only on the old side is not forgotten; a system NEW
+//!   updated is judged as NEW has it.
 
 use super::{codes, Change, Key, Level, Namer};
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
 use crate::model::system::{short_port_name, ComponentIdParts, PortEnd, RtSystem};
 use std::collections::{BTreeMap, BTreeSet};
+
+mod compare;
+pub use compare::{compare_systems, compare_systems_as, system_label};
 
 /// One system profile of a side.
 #[derive(Debug, Clone)]
@@ -228,4 +237,186 @@ pub(super) fn unreadable(side: &str, diags: &[Diagnostic], name: Namer, out: &mu
         }
         out.push(c);
     }
+}
+
+/// How systems are matched: the vendor and name of the id (the version left out, like a
+/// component's), else the id as written, else the file.
+fn system_key(s: &LoadedSystem) -> String {
+    let parts = s.system.id_parts.as_ref();
+    let name = parts.and_then(|p| non_empty(&p.name));
+    match (name, non_empty(&s.system.id)) {
+        (Some(n), _) => format!(
+            "id:{}:{}",
+            parts.and_then(|p| non_empty(&p.vendor)).unwrap_or(""),
+            n
+        ),
+        (None, Some(id)) => format!("id:{id}"),
+        (None, None) => format!("file:{}", s.source),
+    }
+}
+
+/// Compares the systems of both sides: each pair with [`compare_systems`], a system of one side
+/// only as removed (DIFF151) or added (DIFF351). Several systems with one id (RTSystemEditor's
+/// `DefaultSystem`) are paired by identical file path, then by identical values (copies), and
+/// when one is left on each side, those two; what is still left on both sides is DIFF003.
+/// Returns the counts.
+pub(super) fn compare_all(
+    old: &[LoadedSystem],
+    new: &[LoadedSystem],
+    old_name: Namer,
+    new_name: Namer,
+    out: &mut Vec<Change>,
+) -> super::SystemCounts {
+    let mut counts = super::SystemCounts {
+        old: old.len(),
+        new: new.len(),
+        ..Default::default()
+    };
+    let mut groups: BTreeMap<String, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
+    for (i, s) in old.iter().enumerate() {
+        groups.entry(system_key(s)).or_default().0.push(i);
+    }
+    for (i, s) in new.iter().enumerate() {
+        groups.entry(system_key(s)).or_default().1.push(i);
+    }
+    for (olds, news) in groups.into_values() {
+        let shared = olds.len() > 1 || news.len() > 1;
+        let label = |s: &LoadedSystem, file: &str| -> String {
+            match (non_empty(&s.system.id), shared) {
+                (Some(id), false) => id.to_string(),
+                (Some(id), true) => format!("{id} ({file})"),
+                (None, _) => format!("(no id: {file})"),
+            }
+        };
+        let mut pairs = Vec::new();
+        let (mut lo, mut ln) = (olds, news);
+        if lo.len() == 1 && ln.len() == 1 {
+            pairs.push((lo[0], ln[0]));
+            lo.clear();
+            ln.clear();
+        }
+        // Same file on both sides: the same system.
+        lo.retain(
+            |&o| match ln.iter().position(|&n| new[n].source == old[o].source) {
+                Some(at) => {
+                    pairs.push((o, ln.remove(at)));
+                    false
+                }
+                None => true,
+            },
+        );
+        // Copies: a system equal to one of the other side (positions aside) is that one.
+        if !lo.is_empty() && !ln.is_empty() {
+            let mut by_print: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+            for &n in ln.iter().rev() {
+                by_print
+                    .entry(compare::fingerprint(&new[n].system))
+                    .or_default()
+                    .push(n);
+            }
+            lo.retain(|&o| {
+                match by_print
+                    .get_mut(&compare::fingerprint(&old[o].system))
+                    .and_then(Vec::pop)
+                {
+                    Some(n) => {
+                        ln.retain(|&x| x != n);
+                        pairs.push((o, n));
+                        false
+                    }
+                    None => true,
+                }
+            });
+        }
+        if lo.len() == 1 && ln.len() == 1 {
+            pairs.push((lo[0], ln[0]));
+            lo.clear();
+            ln.clear();
+        }
+        if !lo.is_empty() && !ln.is_empty() {
+            let files = |v: &[usize], s: &[LoadedSystem], name: Namer| {
+                v.iter()
+                    .map(|&i| name(&s[i].source))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            let id = non_empty(&new[ln[0]].system.id).unwrap_or("(no id)");
+            let mut c = super::change(
+                codes::AMBIGUOUS_SYSTEM,
+                id.to_string(),
+                String::new(),
+                Some(files(&lo, old, old_name)),
+                Some(files(&ln, new, new_name)),
+                format!(
+                    "{} RT System profiles in OLD and {} in NEW have the id `{id}`; they cannot be paired and are not compared (give each system its own id)",
+                    lo.len(),
+                    ln.len()
+                ),
+            );
+            c.file = Some(new_name(&new[ln[0]].source));
+            c.old_file = Some(old_name(&old[lo[0]].source));
+            out.push(c);
+            lo.clear();
+            ln.clear();
+        }
+        for (o, n) in pairs {
+            counts.matched += 1;
+            let (os, ns) = (&old[o], &new[n]);
+            let (of, nf) = (old_name(&os.source), new_name(&ns.source));
+            let found = compare_systems_as(&label(ns, &nf), &os.system, &ns.system);
+            if !found.is_empty() {
+                counts.changed += 1;
+            }
+            out.extend(found.into_iter().map(|mut c| {
+                c.file = Some(nf.clone());
+                c.old_file = Some(of.clone());
+                c
+            }));
+        }
+        for o in lo {
+            counts.removed += 1;
+            let s = &old[o];
+            let file = old_name(&s.source);
+            let at = Some(s.system.pos).filter(|p| p.line > 0);
+            let mut c = super::change(
+                codes::SYSTEM_REMOVED,
+                label(s, &file),
+                String::new(),
+                non_empty(&s.system.id).map(str::to_string),
+                None,
+                format!(
+                    "RT System `{}` ({file}, {} instance(s), {} connector(s)) was removed: it can no longer be restored",
+                    s.system.name(),
+                    s.system.components.len(),
+                    s.system.data_port_connectors.len() + s.system.service_port_connectors.len()
+                ),
+            );
+            c.old_file = Some(file);
+            c.old_line = at.map(|p| p.line);
+            c.old_column = at.map(|p| p.column);
+            out.push(c);
+        }
+        for n in ln {
+            counts.added += 1;
+            let s = &new[n];
+            let file = new_name(&s.source);
+            let mut c = super::change(
+                codes::SYSTEM_ADDED,
+                label(s, &file),
+                String::new(),
+                None,
+                non_empty(&s.system.id).map(str::to_string),
+                format!(
+                    "RT System `{}` ({file}, {} instance(s)) was added",
+                    s.system.name(),
+                    s.system.components.len()
+                ),
+            );
+            c.file = Some(file);
+            c.line = Some(s.system.pos.line).filter(|l| *l > 0);
+            c.column = Some(s.system.pos.column).filter(|_| s.system.pos.line > 0);
+            out.push(c);
+        }
+    }
+    counts
 }

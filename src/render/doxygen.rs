@@ -28,6 +28,7 @@ use super::text::{
     category_name, component_cols, component_sections, facets_of_each, interface_index_table,
     names_facts, type_index_table, Markup,
 };
+use super::view::component::component_view;
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
 use crate::i18n::Lang;
@@ -208,6 +209,14 @@ impl Markup for Dox {
         d!(out, "</ul>");
         d!(out);
     }
+    fn linked_list(out: &mut String, items: &[String]) {
+        d!(out, "<ul>");
+        for l in items {
+            d!(out, "<li>{l}</li>");
+        }
+        d!(out, "</ul>");
+        d!(out);
+    }
     fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str) {
         let command = if level <= 2 { "section" } else { "subsection" };
         d!(
@@ -266,41 +275,32 @@ fn paragraphs(out: &mut String, s: &str) {
     d!(out);
 }
 
-fn component_page(cat: &Catalog, ci: usize, facets: (usize, usize), lang: Lang) -> String {
-    let c = &cat.components[ci];
-    let p = &c.profile;
-    let page = cat.component_page(ci);
-    let (category_fi, vendor_fi) = facets;
+fn component_page(
+    cat: &Catalog,
+    ci: usize,
+    facets: (usize, usize),
+    source_url: Option<&str>,
+    lang: Lang,
+) -> String {
+    let v = component_view(cat, ci, facets, source_url, lang);
+    let page = v.page;
     let mut out = String::with_capacity(4096);
-    d!(out, "\\page {} {}", target(cat, page), title(p.name()));
+    d!(out, "\\page {} {}", target(cat, page), title(&v.name));
     d!(out);
     d!(
         out,
-        "<p>\\ref {} › \\ref {}</p>",
+        "<p>\\ref {} › {}</p>",
         home(cat),
-        target(cat, cat.category_page(category_fi))
+        super::text::linked::<Dox>(cat, page, &v.category)
     );
     d!(out);
-    if let Some(desc) = model::non_empty(&p.basic_info.description) {
+    if let Some(desc) = v.lead {
         paragraphs(&mut out, desc);
     }
-
-    component_sections::<Dox>(&mut out, cat, ci, vendor_fi, lang);
-    let used = super::system_text::used_in(cat, ci);
-    if !used.is_empty() {
-        section(&mut out, page, "sec-systems", lang.t("sys_used_by"));
-        d!(out, "<ul>");
-        for (text_, s) in used {
-            if let Some(to) = cat.page_of_system(s) {
-                d!(out, "<li>{}</li>", refer(&target(cat, to), &text_));
-            }
-        }
-        d!(out, "</ul>");
-        d!(out);
-    }
+    component_sections::<Dox>(&mut out, cat, &v, lang);
     // The README as plain paragraphs of its Markdown source: Doxygen's own Markdown and HTML
     // would read it differently from the site, and its commands are not to be run.
-    if let Some(r) = c.readme.as_ref().filter(|r| !r.text.trim().is_empty()) {
+    if let Some(r) = v.readme.filter(|r| !r.text.trim().is_empty()) {
         section(&mut out, page, "sec-readme", lang.t("readme"));
         paragraphs(&mut out, &r.text);
     }
@@ -834,7 +834,7 @@ pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
-            .map(|ci| component_entry(cat, &of, ci, lang)),
+            .map(|ci| component_entry(cat, &of, ci, lang, None)),
     );
     out
 }
@@ -849,10 +849,11 @@ fn component_entry(
     of: &[(usize, usize)],
     ci: usize,
     lang: Lang,
+    source_url: Option<&str>,
 ) -> (String, String) {
     (
         component_path(cat, ci),
-        component_page(cat, ci, of[ci], lang),
+        component_page(cat, ci, of[ci], source_url, lang),
     )
 }
 
@@ -946,7 +947,8 @@ impl Renderer for DoxygenRenderer {
         (0..cat.components.len())
             .into_par_iter()
             .try_for_each(|ci| {
-                let (path, text) = component_entry(cat, &of, ci, lang);
+                let (path, text) =
+                    component_entry(cat, &of, ci, lang, ctx.site.source_url.as_deref());
                 out.write(&path, text.as_bytes())
             })?;
         Ok(pages.len() + cat.components.len())

@@ -470,17 +470,6 @@ pub fn action(a: Option<&Action>, lang: Lang) -> Vec<Fact> {
     f.done()
 }
 
-/// Facts of a lifecycle action beyond implemented/description/pre/post: nothing in the spec,
-/// so this is the place for future extended attributes. Kept for symmetry with the others.
-pub fn action_description(a: Option<&Action>) -> (Option<&str>, Option<&str>, Option<&str>) {
-    let d = a.and_then(|a| a.doc.as_ref());
-    (
-        d.and_then(|d| model::non_empty(&d.description)),
-        d.and_then(|d| model::non_empty(&d.pre_condition)),
-        d.and_then(|d| model::non_empty(&d.post_condition)),
-    )
-}
-
 /// A system parameter as (name, default value).
 pub fn parameter(p: &Parameter) -> (&str, &str) {
     (

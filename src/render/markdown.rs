@@ -22,6 +22,7 @@ use super::text::{
     category_name, component_cols, component_sections, facets_of_each, interface_index_table,
     names_facts, type_index_table, Markup,
 };
+use super::view::component::component_view;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
 use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
@@ -223,6 +224,12 @@ impl Markup for Md {
         }
         w!(out);
     }
+    fn linked_list(out: &mut String, items: &[String]) {
+        for l in items {
+            w!(out, "- {l}");
+        }
+        w!(out);
+    }
     fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str) {
         heading(out, level, &page.anchor_in(anchor, MD), text)
     }
@@ -278,42 +285,26 @@ fn component_page(
     title: &str,
     lang: Lang,
     readme: &Readmes,
+    source_url: Option<&str>,
 ) -> String {
-    let c = &cat.components[ci];
-    let p = &c.profile;
-    let page = cat.component_page(ci);
-    let (category_fi, vendor_fi) = facets;
+    let v = component_view(cat, ci, facets, source_url, lang);
+    let page = v.page;
     let mut out = String::with_capacity(4096);
-    w!(out, "# {}", inline(p.name()));
+    w!(out, "# {}", inline(&v.name));
     w!(out);
-    let category = model::non_empty(&p.basic_info.category).unwrap_or("");
     w!(
         out,
         "{} › {}",
         link(title, &home(cat, page)),
-        link(
-            &category_name(category, lang),
-            &cat.href(page, cat.category_page(category_fi), None, MD)
-        )
+        super::text::linked::<Md>(cat, page, &v.category)
     );
     w!(out);
-    if let Some(d) = model::non_empty(&p.basic_info.description) {
+    if let Some(d) = v.lead {
         w!(out, "{}", block(d));
         w!(out);
     }
-
-    component_sections::<Md>(&mut out, cat, ci, vendor_fi, lang);
-    let used = super::system_text::used_in(cat, ci);
-    if !used.is_empty() {
-        heading(&mut out, 2, "sec-systems", lang.t("sys_used_by"));
-        for (text, s) in used {
-            if let Some(to) = cat.page_of_system(s) {
-                w!(out, "- {}", link(&text, &cat.href(page, to, None, MD)));
-            }
-        }
-        w!(out);
-    }
-    if let Some(r) = &c.readme {
+    component_sections::<Md>(&mut out, cat, &v, lang);
+    if let Some(r) = v.readme {
         let html = crate::render::html::readme::readme_html(r, readme);
         if !html.trim().is_empty() {
             heading(&mut out, 2, "sec-readme", lang.t("readme"));
@@ -914,7 +905,7 @@ pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
-            .map(|ci| component_entry(cat, &of, ci, title, lang, &readme)),
+            .map(|ci| component_entry(cat, &of, ci, title, lang, &readme, None)),
     );
     out
 }
@@ -927,10 +918,11 @@ fn component_entry(
     title: &str,
     lang: Lang,
     readme: &Readmes,
+    source_url: Option<&str>,
 ) -> (String, String) {
     (
         cat.component_page(ci).path_in(MD),
-        component_page(cat, ci, of[ci], title, lang, readme),
+        component_page(cat, ci, of[ci], title, lang, readme, source_url),
     )
 }
 
@@ -1023,11 +1015,12 @@ impl Renderer for MarkdownRenderer {
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
         // Component pages are the bulk: written as they are rendered, never all held at once.
         let of = facets_of_each(cat);
-        let readme = readme_targets(cat, ctx.site.source_url.as_deref());
+        let source_url = ctx.site.source_url.as_deref();
+        let readme = readme_targets(cat, source_url);
         (0..cat.components.len())
             .into_par_iter()
             .try_for_each(|ci| {
-                let (path, text) = component_entry(cat, &of, ci, title, lang, &readme);
+                let (path, text) = component_entry(cat, &of, ci, title, lang, &readme, source_url);
                 out.write(&path, text.as_bytes())
             })?;
         // The images the READMEs show, each copied once (mdBook copies them into the book).

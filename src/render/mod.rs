@@ -11,6 +11,7 @@ pub mod json;
 pub mod markdown;
 pub mod system_text;
 pub mod text;
+pub mod view;
 pub mod wiring;
 
 use crate::catalog::Catalog;

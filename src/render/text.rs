@@ -5,9 +5,10 @@
 //! is what a [`Markup`] says.
 
 use super::facts::{self, Fact};
-use crate::catalog::{Catalog, InterfaceRef, Output, Page, PortRef};
+use super::view::component::ComponentView;
+use super::view::{Linked, Peers};
+use crate::catalog::{Catalog, Output, Page};
 use crate::i18n::Lang;
-use crate::model::{self, ActionKind, Direction, PortDirection};
 
 /// The code spans of a line of profile text, as HTML renders them (Markdown's single-backtick
 /// spans): `(start, end)` char indices of each opening and closing backtick, the content
@@ -52,6 +53,8 @@ pub trait Markup {
     fn paragraph(out: &mut String, escaped: &str);
     /// A bulleted list of plain-text items.
     fn list(out: &mut String, items: &[&str]);
+    /// A bulleted list of already escaped items (links).
+    fn linked_list(out: &mut String, items: &[String]);
     /// A heading of `level` (2 or 3) on `page`, with the stable `anchor`.
     fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str);
     /// A table cell of already escaped text with the stable `anchor` of `page`.
@@ -62,56 +65,6 @@ pub trait Markup {
     fn page_target(cat: &Catalog, from: &Page, to: &Page) -> String {
         cat.href(from, to, None, Self::OUTPUT)
     }
-}
-
-/// One port of a peer component: its component, the component's name, the port's label and
-/// the link target from the page being written.
-pub struct PeerPort {
-    pub component: usize,
-    pub component_name: String,
-    pub port: String,
-    pub target: String,
-}
-
-/// A data port peer, linked from page `from`.
-pub fn port_peer<M: Markup>(cat: &Catalog, from: &Page, r: &PortRef) -> Option<PeerPort> {
-    let (ci, port) = cat.resolve_port(r)?;
-    let pc = &cat.components[ci];
-    Some(PeerPort {
-        component: ci,
-        component_name: pc.profile.name().to_string(),
-        port: model::non_empty(&pc.profile.data_ports[port].name)
-            .unwrap_or("")
-            .to_string(),
-        target: cat.href(
-            from,
-            cat.component_page(ci),
-            Some(&pc.anchors.data_ports[port]),
-            M::OUTPUT,
-        ),
-    })
-}
-
-/// A service interface peer (`port / interface`), linked from page `from`.
-pub fn iface_peer<M: Markup>(cat: &Catalog, from: &Page, r: &InterfaceRef) -> Option<PeerPort> {
-    let (ci, port, interface) = cat.resolve_interface(r)?;
-    let pc = &cat.components[ci];
-    let sp = &pc.profile.service_ports[port];
-    Some(PeerPort {
-        component: ci,
-        component_name: pc.profile.name().to_string(),
-        port: format!(
-            "{} / {}",
-            model::non_empty(&sp.name).unwrap_or(""),
-            model::non_empty(&sp.interfaces[interface].name).unwrap_or("")
-        ),
-        target: cat.href(
-            from,
-            cat.component_page(ci),
-            Some(&pc.anchors.interfaces[port][interface]),
-            M::OUTPUT,
-        ),
-    })
 }
 
 /// Facts as a two-column table (label, value).
@@ -159,43 +112,6 @@ pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
     out
 }
 
-/// The "connects to" cell of a port of component `ci`, as the HTML site has it
-/// ([`facts::peer_groups`]): the other components' ports grouped by component, one link each
-/// (to its first port), at most [`facts::PEER_COMPONENTS_CAP`] components, then a link to the
-/// type or interface page (`rest`) saying how many more there are.
-pub fn peers_cell<M: Markup, R>(
-    ci: usize,
-    refs: &[R],
-    component: impl Fn(&R) -> usize,
-    resolve: impl Fn(&R) -> Option<PeerPort>,
-    rest: Option<String>,
-    more_key: &str,
-    lang: Lang,
-) -> String {
-    // Grouped by the references' component handles first: only the groups shown are resolved.
-    let (groups, total) = facts::peer_groups(ci, refs, component);
-    let mut parts: Vec<String> = groups
-        .iter()
-        .filter_map(|(_, list)| {
-            let ports: Vec<PeerPort> = list.iter().filter_map(|r| resolve(r)).collect();
-            let first = ports.first()?;
-            let names: Vec<&str> = ports.iter().map(|p| p.port.as_str()).collect();
-            Some(M::link(
-                &facts::peer_text(&first.component_name, &names, " · "),
-                &first.target,
-            ))
-        })
-        .collect();
-    if total > groups.len() {
-        let more = format!("+{} — {}", total - groups.len(), lang.t(more_key));
-        parts.push(match rest {
-            Some(target) => M::link(&more, &target),
-            None => M::esc(&more),
-        });
-    }
-    parts.join("<br>")
-}
-
 /// The category and vendor facets of each component ([`Catalog::category_of_each`],
 /// [`Catalog::vendor_of_each`]), computed once per render.
 pub fn facets_of_each(cat: &Catalog) -> Vec<(usize, usize)> {
@@ -240,35 +156,62 @@ pub fn component_cols(lang: Lang) -> [&'static str; 4] {
     ]
 }
 
-fn esc_opt<M: Markup>(s: &Option<crate::model::Text>) -> String {
-    model::non_empty(s).map(M::esc).unwrap_or_default()
+/// A view's link as a cell: linked when it has a target, else plain.
+pub fn linked<M: Markup>(cat: &Catalog, from: &Page, l: &Linked<'_>) -> String {
+    match l.target(cat, from, M::OUTPUT) {
+        Some(t) => M::link(&l.text, &t),
+        None => M::esc(&l.text),
+    }
 }
 
-/// The sections of a component page after its title and lead text: basic info, Document
-/// Profile, data ports, service ports, configuration, lifecycle, system parameters, language,
-/// properties, version history and extras — the same tables in every text format.
-///
-/// The vendor in the basic info links to the page of `vendor` ([`Catalog::vendor_of_each`]).
+/// A port's "connects to" cell from its view: one link per peer component, then "+N — …".
+fn peers_cell<M: Markup>(cat: &Catalog, from: &Page, p: &Peers<'_>) -> String {
+    p.shown
+        .iter()
+        .chain(&p.more)
+        .map(|l| linked::<M>(cat, from, l))
+        .collect::<Vec<_>>()
+        .join("<br>")
+}
+
+/// Facts inside one cell, after the row's description and before its events.
+fn details_cell<M: Markup>(facts: &[Fact], events: &[(&str, Vec<Fact>)]) -> String {
+    let mut cell = facts_cell::<M>(facts);
+    for (name, f) in events {
+        if !cell.is_empty() {
+            cell.push_str("<br>");
+        }
+        cell.push_str(&M::bold(&M::esc(name)));
+        if !f.is_empty() {
+            cell.push_str("<br>");
+            cell.push_str(&facts_cell::<M>(f));
+        }
+    }
+    cell
+}
+
+/// The sections of a component page after its title and lead text, from its view: basic
+/// info, Document Profile, data ports, service ports, configuration, lifecycle, system
+/// parameters, language, properties, version history, backups, extras and the systems using
+/// it — the same tables in every text format.
 pub fn component_sections<M: Markup>(
     out: &mut String,
     cat: &Catalog,
-    ci: usize,
-    vendor: usize,
+    v: &ComponentView<'_>,
     lang: Lang,
 ) {
-    let c = &cat.components[ci];
-    let p = &c.profile;
-    let page = cat.component_page(ci);
+    let page = v.page;
     M::heading(out, page, 2, "sec-basic-info", lang.t("fact_basic_info"));
-    let vendor_label = lang.t("vendor");
-    let rows: Vec<Vec<String>> = facts::basic_info(c, lang)
+    let (vendor_label, source_label) = (lang.t("vendor"), lang.t("source"));
+    let rows: Vec<Vec<String>> = v
+        .basic
         .iter()
         .map(|f| {
-            let value = match cat.vendors.get(vendor) {
-                Some(_) if f.label == vendor_label => M::link(
-                    &f.value,
-                    &M::page_target(cat, page, cat.vendor_page(vendor)),
-                ),
+            let value = match (v.vendor, &v.source_url) {
+                (Some(to), _) if f.label == vendor_label => {
+                    M::link(&f.value, &M::page_target(cat, page, to))
+                }
+                (_, Some(url)) if f.label == source_label => M::link(&f.value, url),
                 _ => M::esc(&f.value),
             };
             vec![M::esc(&f.label), value]
@@ -276,209 +219,24 @@ pub fn component_sections<M: Markup>(
         .collect();
     M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
 
-    if let Some(doc) = &p.basic_info.doc {
-        let f = facts::document(doc, lang);
-        if !f.is_empty() {
-            M::heading(out, page, 2, "sec-document", lang.t("fact_document"));
-            facts_table::<M>(out, lang, &f);
-        }
+    if !v.document.is_empty() {
+        M::heading(out, page, 2, "sec-document", lang.t("fact_document"));
+        facts_table::<M>(out, lang, &v.document);
     }
-
-    if !p.data_ports.is_empty() {
-        M::heading(out, page, 2, "sec-data-ports", lang.t("data_ports"));
-        let rows: Vec<Vec<String>> = p
-            .data_ports
-            .iter()
-            .enumerate()
-            .map(|(pi, port)| {
-                let dir = match port.direction() {
-                    Some(PortDirection::In) => M::esc(lang.t("in")),
-                    Some(PortDirection::Out) => M::esc(lang.t("out")),
-                    _ => esc_opt::<M>(&port.port_type),
-                };
-                let dt = port
-                    .type_
-                    .as_deref()
-                    .and_then(|t| cat.data_type_index(t))
-                    .map(|ti| cat.data_type_page(ti));
-                let ty = match dt {
-                    Some(to) => M::page_ref(cat, page, to),
-                    None => esc_opt::<M>(&port.type_),
-                };
-                let desc = port
-                    .doc
-                    .as_ref()
-                    .map(|d| esc_opt::<M>(&d.description))
-                    .unwrap_or_default();
-                let peers = cat.data_port_peers(ci, pi);
-                let rest = dt.map(|to| M::page_target(cat, page, to));
-                vec![
-                    M::anchored(page, &c.anchors.data_ports[pi], &esc_opt::<M>(&port.name)),
-                    dir,
-                    ty,
-                    desc,
-                    facts_cell::<M>(&facts::data_port(port, lang)),
-                    peers_cell::<M, _>(
-                        ci,
-                        peers,
-                        |r| cat.port_component(r).unwrap_or(usize::MAX),
-                        |r| port_peer::<M>(cat, page, r),
-                        rest,
-                        "more_on_type_page",
-                        lang,
-                    ),
-                ]
-            })
-            .collect();
-        sparse_table::<M>(
-            out,
-            3,
-            &[
-                lang.t("name"),
-                lang.t("direction"),
-                lang.t("data_type"),
-                lang.t("description"),
-                lang.t("fact_details"),
-                lang.t("connects_to"),
-            ],
-            &rows,
-        );
-    }
-
-    if !p.service_ports.is_empty() {
-        M::heading(out, page, 2, "sec-service-ports", lang.t("service_ports"));
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            M::heading(
-                out,
-                page,
-                3,
-                &c.anchors.service_ports[si],
-                model::non_empty(&sp.name).unwrap_or("?"),
-            );
-            let pf = facts::service_port(sp, lang);
-            if !pf.is_empty() {
-                facts_table::<M>(out, lang, &pf);
-            }
-            if sp.interfaces.is_empty() {
-                continue;
-            }
-            let rows: Vec<Vec<String>> = sp
-                .interfaces
-                .iter()
-                .enumerate()
-                .map(|(ii, i)| {
-                    let dir = match i.direction_kind() {
-                        Some(Direction::Provided) => M::esc(lang.t("provided")),
-                        Some(Direction::Required) => M::esc(lang.t("required")),
-                        None => esc_opt::<M>(&i.direction),
-                    };
-                    let it = i
-                        .type_
-                        .as_deref()
-                        .and_then(|t| cat.interface_index_of(t))
-                        .map(|ii| cat.interface_page(ii));
-                    let ty = match it {
-                        Some(to) => M::page_ref(cat, page, to),
-                        None => esc_opt::<M>(&i.type_),
-                    };
-                    let desc = i
-                        .doc
-                        .as_ref()
-                        .map(|d| esc_opt::<M>(&d.description))
-                        .unwrap_or_default();
-                    let peers = cat.interface_peers(ci, si, ii);
-                    let rest = it.map(|to| M::page_target(cat, page, to));
-                    vec![
-                        M::anchored(page, &c.anchors.interfaces[si][ii], &esc_opt::<M>(&i.name)),
-                        dir,
-                        ty,
-                        desc,
-                        facts_cell::<M>(&facts::service_interface(i, lang)),
-                        peers_cell::<M, _>(
-                            ci,
-                            peers,
-                            |r| cat.interface_component(r).unwrap_or(usize::MAX),
-                            |r| iface_peer::<M>(cat, page, r),
-                            rest,
-                            "more_on_interface_page",
-                            lang,
-                        ),
-                    ]
-                })
-                .collect();
-            sparse_table::<M>(
-                out,
-                3,
-                &[
-                    lang.t("interface"),
-                    lang.t("direction"),
-                    lang.t("type"),
-                    lang.t("description"),
-                    lang.t("fact_details"),
-                    lang.t("connects_to"),
-                ],
-                &rows,
-            );
-        }
-    }
-
-    let confs = p.configurations();
-    if !confs.is_empty() {
-        M::heading(out, page, 2, "sec-configuration", lang.t("configuration"));
-        let rows: Vec<Vec<String>> = confs
-            .iter()
-            .enumerate()
-            .map(|(k, cf)| {
-                vec![
-                    M::anchored(page, &c.anchors.configurations[k], &esc_opt::<M>(&cf.name)),
-                    esc_opt::<M>(&cf.type_),
-                    esc_opt::<M>(&cf.default_value),
-                    facts::configuration_unit(cf)
-                        .map(M::esc)
-                        .unwrap_or_default(),
-                    facts::configuration_constraint(cf)
-                        .map(|s| M::esc(&s))
-                        .unwrap_or_default(),
-                    cf.doc
-                        .as_ref()
-                        .map(|d| esc_opt::<M>(&d.description))
-                        .unwrap_or_default(),
-                    facts_cell::<M>(&facts::configuration(cf, lang)),
-                ]
-            })
-            .collect();
-        sparse_table::<M>(
-            out,
-            3,
-            &[
-                lang.t("name"),
-                lang.t("type"),
-                lang.t("default_value"),
-                lang.t("unit"),
-                lang.t("constraint"),
-                lang.t("description"),
-                lang.t("fact_details"),
-            ],
-            &rows,
-        );
-    }
+    data_ports_section::<M>(out, cat, v, lang);
+    service_ports_section::<M>(out, cat, v, lang);
+    configuration_section::<M>(out, v, lang);
 
     M::heading(out, page, 2, "sec-lifecycle", lang.t("actions"));
-    let rows: Vec<Vec<String>> = ActionKind::ALL
+    let rows: Vec<Vec<String>> = v
+        .actions
         .iter()
-        .map(|&k| {
-            let a = p.action(k);
-            let (d, pre, post) = facts::action_description(a);
-            let implemented = match a {
-                Some(a) if a.is_implemented() => lang.t("yes"),
-                _ => lang.t("no"),
-            };
+        .map(|a| {
+            let implemented = lang.t(if a.implemented { "yes" } else { "no" });
             vec![
-                M::code(k.callback_name()),
+                M::code(a.kind.callback_name()),
                 M::esc(implemented),
-                d.map(M::esc).unwrap_or_default(),
-                pre.map(M::esc).unwrap_or_default(),
-                post.map(M::esc).unwrap_or_default(),
+                facts_cell::<M>(&a.details),
             ]
         })
         .collect();
@@ -488,62 +246,46 @@ pub fn component_sections<M: Markup>(
         &[
             lang.t("fact_callback"),
             lang.t("implemented"),
-            lang.t("description"),
-            lang.t("pre_condition"),
-            lang.t("post_condition"),
+            lang.t("fact_details"),
         ],
         &rows,
     );
 
-    if !p.parameters.is_empty() {
+    if !v.parameters.is_empty() {
         M::heading(out, page, 2, "sec-system-parameters", lang.t("parameters"));
-        let rows: Vec<Vec<String>> = p
+        let rows: Vec<Vec<String>> = v
             .parameters
             .iter()
-            .map(|par| {
-                let (n, v) = facts::parameter(par);
-                vec![M::esc(n), M::esc(v)]
-            })
+            .map(|(n, val)| vec![M::esc(n), M::esc(val)])
             .collect();
         M::table(out, &[lang.t("name"), lang.t("default_value")], &rows);
     }
 
-    if let Some(l) = &p.language {
-        let lf = facts::language(l, lang);
-        let targets: Vec<(usize, Vec<Fact>)> = l
-            .targets
-            .iter()
-            .map(|t| facts::target(t, lang))
-            .enumerate()
-            .filter(|(_, f)| !f.is_empty())
-            .collect();
-        if !lf.is_empty() || !targets.is_empty() {
-            M::heading(out, page, 2, "sec-language", lang.t("language"));
-            if !lf.is_empty() {
-                facts_table::<M>(out, lang, &lf);
-            }
-            for (ti, tf) in &targets {
-                M::paragraph(
-                    out,
-                    &M::bold(&format!("{} {}", M::esc(lang.t("fact_target")), ti + 1)),
-                );
-                facts_table::<M>(out, lang, tf);
-            }
+    if !v.language.is_empty() || !v.targets.is_empty() {
+        M::heading(out, page, 2, "sec-language", lang.t("language"));
+        if !v.language.is_empty() {
+            facts_table::<M>(out, lang, &v.language);
+        }
+        for (number, tf) in &v.targets {
+            M::paragraph(
+                out,
+                &M::bold(&format!("{} {number}", M::esc(lang.t("fact_target")))),
+            );
+            facts_table::<M>(out, lang, tf);
         }
     }
 
-    let props = facts::component_properties(p, lang);
-    if !props.is_empty() {
+    if !v.properties.is_empty() {
         M::heading(out, page, 2, "sec-properties", lang.t("properties"));
-        let rows: Vec<Vec<String>> = props
+        let rows: Vec<Vec<String>> = v
+            .properties
             .iter()
             .map(|f| vec![M::esc(&f.label), M::esc(&f.value)])
             .collect();
         M::table(out, &[lang.t("name"), lang.t("fact_value")], &rows);
     }
 
-    let logs = facts::version_up_logs(p);
-    if !logs.is_empty() {
+    if !v.version_up_logs.is_empty() {
         M::heading(
             out,
             page,
@@ -551,14 +293,14 @@ pub fn component_sections<M: Markup>(
             "sec-version-history",
             lang.t("version_up_logs"),
         );
-        M::list(out, &logs);
+        M::list(out, &v.version_up_logs);
     }
 
-    let backups = facts::BackupRow::of(c, lang);
-    if !backups.is_empty() {
+    if !v.backups.is_empty() {
         M::heading(out, page, 2, "sec-backups", lang.t("backups"));
         M::paragraph(out, &M::esc(lang.t("backups_intro")));
-        let rows: Vec<Vec<String>> = backups
+        let rows: Vec<Vec<String>> = v
+            .backups
             .iter()
             .map(|b| vec![M::code(&b.file), M::esc(&b.saved), M::esc(&b.declares)])
             .collect();
@@ -573,11 +315,163 @@ pub fn component_sections<M: Markup>(
         );
     }
 
-    let extras = facts::extras(p);
-    if !extras.is_empty() {
+    if !v.extras.is_empty() {
         M::heading(out, page, 2, "sec-extra", lang.t("extra"));
+        let extras: Vec<Fact> = v.extras.iter().map(|(f, _)| f.clone()).collect();
         facts_table::<M>(out, lang, &extras);
     }
+
+    if !v.systems.is_empty() {
+        M::heading(out, page, 2, "sec-systems", lang.t("sys_used_by"));
+        let items: Vec<String> = v
+            .systems
+            .iter()
+            .map(|l| linked::<M>(cat, page, l))
+            .collect();
+        M::linked_list(out, &items);
+    }
+}
+
+fn data_ports_section<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    v: &ComponentView<'_>,
+    lang: Lang,
+) {
+    if v.data_ports.is_empty() {
+        return;
+    }
+    let page = v.page;
+    M::heading(out, page, 2, "sec-data-ports", lang.t("data_ports"));
+    let rows: Vec<Vec<String>> = v
+        .data_ports
+        .iter()
+        .map(|dp| {
+            vec![
+                M::anchored(page, dp.anchor, &M::esc(dp.name)),
+                M::esc(&dp.direction.label),
+                dp.type_
+                    .as_ref()
+                    .map(|t| linked::<M>(cat, page, t))
+                    .unwrap_or_default(),
+                M::esc(dp.unit),
+                dp.description.map(M::esc).unwrap_or_default(),
+                details_cell::<M>(&dp.details, &dp.events),
+                peers_cell::<M>(cat, page, &dp.peers),
+            ]
+        })
+        .collect();
+    sparse_table::<M>(
+        out,
+        3,
+        &[
+            lang.t("name"),
+            lang.t("direction"),
+            lang.t("data_type"),
+            lang.t("unit"),
+            lang.t("description"),
+            lang.t("fact_details"),
+            lang.t("connects_to"),
+        ],
+        &rows,
+    );
+}
+
+fn service_ports_section<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    v: &ComponentView<'_>,
+    lang: Lang,
+) {
+    if v.service_ports.is_empty() {
+        return;
+    }
+    let page = v.page;
+    M::heading(out, page, 2, "sec-service-ports", lang.t("service_ports"));
+    for sp in &v.service_ports {
+        M::heading(
+            out,
+            page,
+            3,
+            sp.anchor,
+            if sp.name.is_empty() { "?" } else { sp.name },
+        );
+        if !sp.details.is_empty() {
+            facts_table::<M>(out, lang, &sp.details);
+        }
+        if sp.interfaces.is_empty() {
+            continue;
+        }
+        let rows: Vec<Vec<String>> = sp
+            .interfaces
+            .iter()
+            .map(|i| {
+                vec![
+                    M::anchored(page, i.anchor, &M::esc(i.name)),
+                    M::esc(&i.direction.label),
+                    i.type_
+                        .as_ref()
+                        .map(|t| linked::<M>(cat, page, t))
+                        .unwrap_or_default(),
+                    i.description.map(M::esc).unwrap_or_default(),
+                    facts_cell::<M>(&i.details),
+                    peers_cell::<M>(cat, page, &i.peers),
+                ]
+            })
+            .collect();
+        sparse_table::<M>(
+            out,
+            3,
+            &[
+                lang.t("interface"),
+                lang.t("direction"),
+                lang.t("type"),
+                lang.t("description"),
+                lang.t("fact_details"),
+                lang.t("connects_to"),
+            ],
+            &rows,
+        );
+    }
+}
+
+fn configuration_section<M: Markup>(out: &mut String, v: &ComponentView<'_>, lang: Lang) {
+    if v.configurations.is_empty() {
+        return;
+    }
+    let page = v.page;
+    M::heading(out, page, 2, "sec-configuration", lang.t("configuration"));
+    let rows: Vec<Vec<String>> = v
+        .configurations
+        .iter()
+        .map(|cf| {
+            vec![
+                M::anchored(page, cf.anchor, &M::esc(cf.name)),
+                M::esc(cf.type_),
+                M::esc(cf.default),
+                M::esc(cf.unit),
+                M::esc(&cf.constraint),
+                M::esc(&cf.widget),
+                cf.description.map(M::esc).unwrap_or_default(),
+                facts_cell::<M>(&cf.details),
+            ]
+        })
+        .collect();
+    sparse_table::<M>(
+        out,
+        3,
+        &[
+            lang.t("name"),
+            lang.t("type"),
+            lang.t("default_value"),
+            lang.t("unit"),
+            lang.t("constraint"),
+            lang.t("fact_widget"),
+            lang.t("description"),
+            lang.t("fact_details"),
+        ],
+        &rows,
+    );
 }
 
 /// The table of every data type with its producer, consumer and other counts; `name` makes

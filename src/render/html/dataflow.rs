@@ -5,7 +5,7 @@
 //! flows it leaves out, and the table lists every flow (never dropped silently).
 
 use super::system_svg::system_diagram;
-use super::{crumbs_home, ctx, page_title, Link, Page, PageContext, Site};
+use super::{crumbs_home, ctx, page_title, Job, Link, PageContext, Site};
 use crate::catalog::{Output, PageKind};
 use crate::render::facts::{self, FlowRow};
 use serde::Serialize;
@@ -55,7 +55,7 @@ fn drawing(site: &Site<'_>, title: &str, rows: &[FlowRow<'_>]) -> (String, usize
 }
 
 /// `dataflow.html`.
-pub(super) fn page<'a>(site: &'a Site<'a>) -> Page<'a> {
+pub(super) fn page<'a>(site: &'a Site<'a>) -> Job<'a> {
     let cat = site.catalog;
     let lang = site.lang;
     let here = cat.site_page(PageKind::DataFlow);
@@ -88,7 +88,7 @@ pub(super) fn page<'a>(site: &'a Site<'a>) -> Page<'a> {
             }
         })
         .collect();
-    Page {
+    Job {
         path: here.path_in(Output::Html),
         template: "dataflow.html",
         context: PageContext::Ready(minijinja::context! {

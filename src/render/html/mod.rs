@@ -22,12 +22,13 @@ pub use system_svg::standalone_system_diagram;
 pub mod systems;
 
 use super::facts::{self, Fact, FactKind};
+use super::view::{self, component::ComponentView, Linked};
 use super::{RenderContext, Renderer, SiteOptions};
-use crate::catalog::{Catalog, Facet, InterfaceRef, PageKind, PortRef};
+use crate::catalog::{Catalog, Facet, InterfaceRef, Output, Page, PageKind, PortRef};
 use crate::i18n::Lang;
-use crate::model::{non_empty, ActionKind, Direction, ExtraKind, PortDirection};
+use crate::model::{non_empty, ExtraKind};
 use crate::output::Sink;
-use crate::types::{canonical_type, short_name};
+
 use anyhow::{Context, Result};
 use minijinja::{Environment, Value};
 use rayon::prelude::*;
@@ -198,6 +199,18 @@ fn fields(
     });
     lead.into_iter()
         .chain(facts.into_iter().map(Field::from))
+        .collect()
+}
+
+/// [`fields`] of a view's row: its free-text description first, then its facts.
+fn lead_fields(lang: Lang, description: Option<&str>, facts: &[Fact]) -> Vec<Field> {
+    let lead = description.map(|d| Field {
+        label: lang.t("description").to_string(),
+        text: None,
+        html: Some(markdown::to_html(d)),
+    });
+    lead.into_iter()
+        .chain(facts.iter().cloned().map(Field::from))
         .collect()
 }
 
@@ -401,19 +414,6 @@ struct Site<'a> {
     readme_targets: std::sync::Arc<readme::Targets>,
 }
 
-fn dir_label(
-    lang: Lang,
-    d: Option<PortDirection>,
-    raw: &Option<crate::model::Text>,
-) -> (String, &'static str) {
-    match d {
-        Some(PortDirection::In) => (lang.t("in").to_string(), "in"),
-        Some(PortDirection::Out) => (lang.t("out").to_string(), "out"),
-        Some(PortDirection::Event) => (lang.t("event").to_string(), "event"),
-        None => (non_empty(raw).unwrap_or("").to_string(), "other"),
-    }
-}
-
 impl<'a> Site<'a> {
     fn t(&self, key: &str) -> &'static str {
         self.lang.t(key)
@@ -460,44 +460,6 @@ impl<'a> Site<'a> {
                 href: format!("{href}#{}", c.anchors.interfaces[pi][ii]),
             },
         })
-    }
-
-    /// The "connects to" answer of a port of component `ci`: the peers of other components
-    /// (`all`, sorted by component) grouped by component, one link each (to its first port,
-    /// naming up to [`PEER_PORTS_SHOWN`] ports), at most [`PEER_COMPONENTS_CAP`] components;
-    /// then a link to the type or interface page (`type_ref`) saying how many more components
-    /// there are (`more_key`). A popular type has hundreds of users: the page stays short.
-    fn peers<R>(
-        &self,
-        ci: usize,
-        all: &[R],
-        component: impl Fn(&R) -> usize,
-        link: impl Fn(&R) -> Option<PortUse>,
-        type_ref: &Option<PortTypeRef>,
-        more_key: &str,
-    ) -> (Vec<Link>, Option<Link>) {
-        let (groups, total) = facts::peer_groups(ci, all, component);
-        let peers = groups
-            .iter()
-            .filter_map(|(_, list)| {
-                let uses: Vec<PortUse> = list.iter().filter_map(|r| link(r)).collect();
-                let first = uses.first()?;
-                let names: Vec<&str> = uses.iter().map(|u| u.port.text.as_str()).collect();
-                Some(Link {
-                    text: facts::peer_text(&first.component.text, &names, " · "),
-                    href: first.port.href.clone(),
-                })
-            })
-            .collect();
-        let more = type_ref
-            .as_ref()
-            .and_then(|t| t.href.clone())
-            .filter(|_| total > PEER_COMPONENTS_CAP)
-            .map(|href| Link {
-                text: format!("+{} — {}", total - PEER_COMPONENTS_CAP, self.t(more_key)),
-                href,
-            });
-        (peers, more)
     }
 
     fn summary(&self, ci: usize) -> ComponentSummary {
@@ -553,307 +515,157 @@ impl<'a> Site<'a> {
         }
     }
 
+    /// A link of a view as the site writes it, from component pages (one folder down).
+    fn link(&self, from: &Page, l: &Linked<'_>) -> Option<Link> {
+        Some(Link {
+            text: l.text.clone(),
+            href: l.target(self.catalog, from, Output::Html)?,
+        })
+    }
+
+    fn peers(&self, from: &Page, p: &view::Peers<'_>) -> (Vec<Link>, Option<Link>) {
+        (
+            p.shown.iter().filter_map(|l| self.link(from, l)).collect(),
+            p.more.as_ref().and_then(|l| self.link(from, l)),
+        )
+    }
+
+    fn type_ref(&self, from: &Page, t: &Option<Linked<'_>>) -> Option<PortTypeRef> {
+        t.as_ref().map(|t| PortTypeRef {
+            text: t.text.clone(),
+            href: t.target(self.catalog, from, Output::Html),
+        })
+    }
+
     fn component_page(&self, ci: usize) -> ComponentPage {
+        let v = view::component::component_view(
+            self.catalog,
+            ci,
+            (self.category_of[ci], self.vendor_of[ci]),
+            self.opts.source_url.as_deref(),
+            self.lang,
+        );
+        self.component_context(&v)
+    }
+
+    /// The template context of a component page, from its view.
+    fn component_context(&self, v: &ComponentView<'_>) -> ComponentPage {
         let lang = self.lang;
-        let root = "../";
-        let c = &self.catalog.components[ci];
-        let p = &c.profile;
-        let b = &p.basic_info;
-        let name = p.name().to_string();
-
-        let mut crumbs = vec![Link {
-            text: self.t("catalogue").to_string(),
-            href: format!(
-                "{root}{}",
-                self.catalog.site_page(PageKind::Index).path("html")
-            ),
-        }];
-        let sum = &self.summaries[ci];
-        crumbs.push(Link {
-            text: self.facet_name(&sum.category, "no_category"),
-            href: format!(
-                "{root}{}",
-                self.catalog
-                    .category_page(self.category_of[ci])
-                    .path("html")
-            ),
-        });
-
-        let mut header = fields(lang, None, facts::basic_info(c, lang));
-        // `source-url`: "Source" links to the file in its repository; a profile of a
-        // `[[source]]` repository links into that repository at the pinned commit.
-        let url = match &c.origin {
-            Some(o) => self
-                .catalog
-                .sources
-                .iter()
-                .find(|s| s.name == o.source)
-                .and_then(|s| s.source_url.as_deref())
-                .and_then(|t| repo::pinned_source_url(t, &o.commit, &o.path)),
-            None => self
-                .opts
-                .source_url
-                .as_deref()
-                .and_then(|t| repo::source_url(t, &c.source)),
-        };
-        if let Some(url) = url {
+        let page = v.page;
+        let index = self.catalog.site_page(PageKind::Index);
+        let crumbs = vec![
+            Link {
+                text: self.t("catalogue").to_string(),
+                href: self.catalog.href(page, index, None, Output::Html),
+            },
+            Link {
+                text: v.category.text.clone(),
+                href: v
+                    .category
+                    .target(self.catalog, page, Output::Html)
+                    .unwrap_or_default(),
+            },
+        ];
+        let mut header = fields(lang, None, v.basic.clone());
+        // `source-url`: "Source" links to the file in its repository.
+        if let Some(url) = &v.source_url {
             let label = lang.t("source");
             if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
-                f.html = Some(repo::source_link_html(&url, &c.source));
-                f.text = None;
+                let path = f.text.take().unwrap_or_default();
+                f.html = Some(repo::source_link_html(url, &path));
             }
         }
-        let document = b
-            .doc
-            .as_ref()
-            .map(|d| fields(lang, None, facts::document(d, lang)))
-            .unwrap_or_default();
-
-        // Data ports.
-        let mut diagram_data = Vec::new();
-        let mut data_ports = Vec::new();
-        for (pi, dp) in p.data_ports.iter().enumerate() {
-            let anchor = c.anchors.data_ports[pi].clone();
-            let (direction, dir_class) = dir_label(lang, dp.direction(), &dp.port_type);
-            let type_ref = non_empty(&dp.type_).map(|t| PortTypeRef {
-                text: t.to_string(),
-                href: self
-                    .catalog
-                    .data_type_index(t)
-                    .map(|ti| format!("{root}{}", self.catalog.data_type_page(ti).path("html"))),
-            });
-            diagram_data.push(svg::DiagramDataPort {
-                side: dp.side(),
-                name: dp.name.as_deref().unwrap_or_default().to_string(),
-                type_label: non_empty(&dp.type_)
-                    .map(|t| short_name(&canonical_type(t)).to_string())
-                    .unwrap_or_default(),
-                class: dir_class,
-                anchor: anchor.clone(),
-            });
-            // No fact twice in a row: the unit has its column (facts leave out a documented
-            // type or unit equal to the port's).
-            let attrs = facts::data_port_attributes_without_unit(dp, lang);
-            let details = fields(lang, dp.doc.as_ref().map(|d| &d.description), attrs);
-            let events = dp
-                .events
-                .iter()
-                .map(|e| EventRow {
-                    name: e.name.as_deref().unwrap_or_default().to_string(),
-                    fields: fields(lang, None, facts::event(e, lang)),
-                })
-                .collect();
-            let (peers, peers_more) = self.peers(
-                ci,
-                self.catalog.data_port_peers(ci, pi),
-                |r| self.catalog.port_component(r).unwrap_or(usize::MAX),
-                |r| self.port_link(root, r),
-                &type_ref,
-                "more_on_type_page",
-            );
-            data_ports.push(DataPortRow {
-                anchor,
-                direction,
-                dir_class,
-                name: dp.name.as_deref().unwrap_or_default().to_string(),
-                type_ref,
-                unit: facts::data_port_unit(dp).unwrap_or("").to_string(),
-                details,
-                events,
-                peers,
-                peers_more,
-            });
-        }
-
-        // Service ports.
-        let mut diagram_service = Vec::new();
-        let mut service_ports = Vec::new();
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            let anchor = c.anchors.service_ports[si].clone();
-            let details = fields(lang, None, facts::service_port(sp, lang));
-            let mut interfaces = Vec::new();
-            let mut diagram_ifaces = Vec::new();
-            for (ii, i) in sp.interfaces.iter().enumerate() {
-                let ianchor = c.anchors.interfaces[si][ii].clone();
-                let (direction, dir_class) = match i.direction_kind() {
-                    Some(Direction::Provided) => (self.t("provided").to_string(), "provided"),
-                    Some(Direction::Required) => (self.t("required").to_string(), "required"),
-                    None => (non_empty(&i.direction).unwrap_or("").to_string(), "other"),
-                };
-                let type_ref = non_empty(&i.type_).map(|t| PortTypeRef {
-                    text: t.to_string(),
-                    href: self.catalog.interface_index_of(t).map(|ii| {
-                        format!("{root}{}", self.catalog.interface_page(ii).path("html"))
-                    }),
-                });
-                diagram_ifaces.push(svg::DiagramInterface {
-                    provided: i.direction_kind() == Some(Direction::Provided),
-                    label: i.name.as_deref().unwrap_or_default().to_string(),
-                    type_label: non_empty(&i.type_)
-                        .map(|t| short_name(&canonical_type(t)).to_string())
-                        .unwrap_or_default(),
-                    anchor: ianchor.clone(),
-                });
-                let details = fields(
-                    lang,
-                    i.doc.as_ref().map(|d| &d.description),
-                    facts::service_interface(i, lang),
-                );
-                let (peers, peers_more) = self.peers(
-                    ci,
-                    self.catalog.interface_peers(ci, si, ii),
-                    |r| self.catalog.interface_component(r).unwrap_or(usize::MAX),
-                    |r| self.iface_link(root, r),
-                    &type_ref,
-                    "more_on_interface_page",
-                );
-                interfaces.push(InterfaceRow {
-                    anchor: ianchor,
-                    direction,
-                    dir_class,
-                    name: i.name.as_deref().unwrap_or_default().to_string(),
-                    type_ref,
-                    details,
+        let data_ports: Vec<DataPortRow> = v
+            .data_ports
+            .iter()
+            .map(|dp| {
+                let (peers, peers_more) = self.peers(page, &dp.peers);
+                DataPortRow {
+                    anchor: dp.anchor.to_string(),
+                    direction: dp.direction.label.clone(),
+                    dir_class: dp.direction.class,
+                    name: dp.name.to_string(),
+                    type_ref: self.type_ref(page, &dp.type_),
+                    unit: dp.unit.to_string(),
+                    details: lead_fields(lang, dp.description, &dp.details),
+                    events: dp
+                        .events
+                        .iter()
+                        .map(|(name, f)| EventRow {
+                            name: name.to_string(),
+                            fields: fields(lang, None, f.clone()),
+                        })
+                        .collect(),
                     peers,
                     peers_more,
-                });
-            }
-            diagram_service.push(svg::DiagramServicePort {
-                side: sp.side(),
-                name: sp.name.as_deref().unwrap_or_default().to_string(),
-                anchor: anchor.clone(),
-                interfaces: diagram_ifaces,
-            });
-            service_ports.push(ServicePortRow {
-                anchor,
-                name: sp.name.as_deref().unwrap_or_default().to_string(),
-                details,
-                interfaces,
-            });
-        }
-
-        // Configuration parameters.
-        let configurations: Vec<ConfigurationRow> = p
-            .configurations()
-            .iter()
-            .enumerate()
-            .map(|(k, conf)| ConfigurationRow {
-                anchor: c.anchors.configurations[k].clone(),
-                name: conf.name.as_deref().unwrap_or_default().to_string(),
-                type_: non_empty(&conf.type_).unwrap_or("").to_string(),
-                default: conf
-                    .default_value
-                    .as_deref()
-                    .unwrap_or_default()
-                    .to_string(),
-                unit: facts::configuration_unit(conf).unwrap_or("").to_string(),
-                constraint: facts::configuration_constraint(conf).unwrap_or_default(),
-                widget: facts::configuration_widget(conf, lang).unwrap_or_default(),
-                details: fields(
-                    lang,
-                    conf.doc.as_ref().map(|d| &d.description),
-                    facts::configuration_without_widget(conf, lang),
-                ),
-            })
-            .collect();
-
-        // Lifecycle.
-        let actions: Vec<ActionRow> = ActionKind::ALL
-            .iter()
-            .map(|&k| {
-                let a = p.action(k);
-                ActionRow {
-                    name: k.callback_name(),
-                    implemented: a.map(|a| a.is_implemented()).unwrap_or(false),
-                    details: fields(lang, None, facts::action(a, lang)),
                 }
             })
             .collect();
-        let implemented = |name: &str| actions.iter().any(|a| a.name == name && a.implemented);
-        let lifecycle_svg = svg::lifecycle_diagram(
-            &svg::LifecycleLabels {
-                title: self.t("lifecycle_diagram"),
-                created: self.t("state_created"),
-                inactive: self.t("state_inactive"),
-                active: self.t("state_active"),
-                error: self.t("state_error"),
-                finalized: self.t("state_finalized"),
-                ec_events: self.t("ec_events"),
-                fsm: self.t("fsm_actions"),
-                implemented: self.t("legend_implemented"),
-                not_implemented: self.t("legend_not_implemented"),
-            },
-            &implemented,
-        );
-        let diagram_svg = svg::component_diagram(
-            &name,
-            &format!("{} — {}", self.t("component_diagram"), name),
-            &diagram_data,
-            &diagram_service,
-        );
-
-        let parameters = p
-            .parameters
+        let service_ports: Vec<ServicePortRow> = v
+            .service_ports
             .iter()
-            .map(|par| {
-                let (key, value) = facts::parameter(par);
-                KeyValue {
-                    key: key.to_string(),
-                    value: value.to_string(),
-                }
-            })
-            .collect();
-        let (language, targets) = match &p.language {
-            Some(l) => (
-                fields(lang, None, facts::language(l, lang)),
-                l.targets
+            .map(|sp| ServicePortRow {
+                anchor: sp.anchor.to_string(),
+                name: sp.name.to_string(),
+                details: fields(lang, None, sp.details.clone()),
+                interfaces: sp
+                    .interfaces
                     .iter()
-                    .enumerate()
-                    .map(|(k, t)| TargetBlock {
-                        number: k + 1,
-                        fields: fields(lang, None, facts::target(t, lang)),
+                    .map(|i| {
+                        let (peers, peers_more) = self.peers(page, &i.peers);
+                        InterfaceRow {
+                            anchor: i.anchor.to_string(),
+                            direction: i.direction.label.clone(),
+                            dir_class: i.direction.class,
+                            name: i.name.to_string(),
+                            type_ref: self.type_ref(page, &i.type_),
+                            details: lead_fields(lang, i.description, &i.details),
+                            peers,
+                            peers_more,
+                        }
                     })
-                    .filter(|t| !t.fields.is_empty())
                     .collect(),
-            ),
-            None => (Vec::new(), Vec::new()),
-        };
-        let properties = key_values(facts::component_properties(p, lang));
-        let version_up_logs = facts::version_up_logs(p)
-            .into_iter()
-            .map(str::to_string)
-            .collect();
-        let extras = facts::extras_with_kind(p)
-            .into_iter()
-            .map(|(f, kind)| ExtraRow {
-                kind: match kind {
-                    ExtraKind::Attribute => "attribute",
-                    ExtraKind::Element => "element",
-                    ExtraKind::Key => "key",
-                },
-                name: f.label.into_owned(),
-                value: f.value,
             })
             .collect();
-
-        // Components sharing a name show what tells them apart (language or folder).
-        let name = c.display_name().into_owned();
-        let description = match non_empty(&b.description) {
+        let configurations: Vec<ConfigurationRow> = v
+            .configurations
+            .iter()
+            .map(|conf| ConfigurationRow {
+                anchor: conf.anchor.to_string(),
+                name: conf.name.to_string(),
+                type_: conf.type_.to_string(),
+                default: conf.default.to_string(),
+                unit: conf.unit.to_string(),
+                constraint: conf.constraint.clone(),
+                widget: conf.widget.clone(),
+                details: lead_fields(lang, conf.description, &conf.details),
+            })
+            .collect();
+        let actions: Vec<ActionRow> = v
+            .actions
+            .iter()
+            .map(|a| ActionRow {
+                name: a.kind.callback_name(),
+                implemented: a.implemented,
+                details: fields(lang, None, a.details.clone()),
+            })
+            .collect();
+        let (diagram_svg, lifecycle_svg) = self.component_diagrams(v, &actions);
+        let description = match v.lead {
             Some(d) => markdown::first_line(d, 160),
-            None => format!("{name}: {} — {}", self.t("component"), self.opts.title),
+            None => format!("{}: {} — {}", v.name, self.t("component"), self.opts.title),
         };
         ComponentPage {
-            root,
-            title: format!("{name} — {}", self.opts.title),
+            root: "../",
+            title: format!("{} — {}", v.name, self.opts.title),
             description,
             crumbs,
-            summary_html: non_empty(&b.description).map(markdown::to_html),
-            name,
+            summary_html: v.lead.map(markdown::to_html),
+            name: v.name.clone(),
             header,
-            document,
-            readme_html: c
+            document: fields(lang, None, v.document.clone()),
+            readme_html: v
                 .readme
-                .as_ref()
                 .map(|r| readme::readme_html(r, &self.readme_targets))
                 .filter(|h| !h.trim().is_empty()),
             diagram_svg,
@@ -893,30 +705,109 @@ impl<'a> Site<'a> {
             .counted(2),
             actions,
             lifecycle_svg,
-            parameters,
-            language,
-            targets,
-            properties,
-            version_up_logs,
-            extras,
-            systems: self
-                .catalog
-                .systems_using(ci)
-                .into_iter()
-                .map(|(s, names)| Link {
-                    text: format!("{} ({})", s.profile.name(), names.join(", ")),
-                    href: format!("{root}{}", systems::system_path(self.catalog, s)),
+            parameters: v
+                .parameters
+                .iter()
+                .map(|(key, value)| KeyValue {
+                    key: key.to_string(),
+                    value: value.to_string(),
                 })
                 .collect(),
-            backups: facts::BackupRow::of(c, self.lang),
+            language: fields(lang, None, v.language.clone()),
+            targets: v
+                .targets
+                .iter()
+                .map(|(number, f)| TargetBlock {
+                    number: *number,
+                    fields: fields(lang, None, f.clone()),
+                })
+                .collect(),
+            properties: key_values(v.properties.clone()),
+            version_up_logs: v.version_up_logs.iter().map(|s| s.to_string()).collect(),
+            extras: v
+                .extras
+                .iter()
+                .map(|(f, kind)| ExtraRow {
+                    kind: match kind {
+                        ExtraKind::Attribute => "attribute",
+                        ExtraKind::Element => "element",
+                        ExtraKind::Key => "key",
+                    },
+                    name: f.label.to_string(),
+                    value: f.value.clone(),
+                })
+                .collect(),
+            systems: v
+                .systems
+                .iter()
+                .filter_map(|l| self.link(page, l))
+                .collect(),
+            backups: facts::BackupRow::of(&self.catalog.components[v.ci], lang),
         }
+    }
+
+    /// The component diagram and the lifecycle diagram of a component page.
+    fn component_diagrams(&self, v: &ComponentView<'_>, actions: &[ActionRow]) -> (String, String) {
+        let data: Vec<svg::DiagramDataPort> = v
+            .data_ports
+            .iter()
+            .map(|dp| svg::DiagramDataPort {
+                side: dp.side,
+                name: dp.name.to_string(),
+                type_label: dp.type_short.clone(),
+                class: dp.direction.class,
+                anchor: dp.anchor.to_string(),
+            })
+            .collect();
+        let service: Vec<svg::DiagramServicePort> = v
+            .service_ports
+            .iter()
+            .map(|sp| svg::DiagramServicePort {
+                side: sp.side,
+                name: sp.name.to_string(),
+                anchor: sp.anchor.to_string(),
+                interfaces: sp
+                    .interfaces
+                    .iter()
+                    .map(|i| svg::DiagramInterface {
+                        provided: i.provided,
+                        label: i.name.to_string(),
+                        type_label: i.type_short.clone(),
+                        anchor: i.anchor.to_string(),
+                    })
+                    .collect(),
+            })
+            .collect();
+        let diagram = svg::component_diagram(
+            v.profile_name,
+            &format!("{} — {}", self.t("component_diagram"), v.profile_name),
+            &data,
+            &service,
+        );
+        let implemented = |name: &str| actions.iter().any(|a| a.name == name && a.implemented);
+        let lifecycle = svg::lifecycle_diagram(
+            &svg::LifecycleLabels {
+                title: self.t("lifecycle_diagram"),
+                created: self.t("state_created"),
+                inactive: self.t("state_inactive"),
+                active: self.t("state_active"),
+                error: self.t("state_error"),
+                finalized: self.t("state_finalized"),
+                ec_events: self.t("ec_events"),
+                fsm: self.t("fsm_actions"),
+                implemented: self.t("legend_implemented"),
+                not_implemented: self.t("legend_not_implemented"),
+            },
+            &implemented,
+        );
+        (diagram, lifecycle)
     }
 }
 
 /// A page to render: output path, template and context. The context of the many per-item
 /// pages (facets, types, interfaces) is built only when the page is rendered, so that their
 /// contexts are never all in memory at once.
-struct Page<'a> {
+struct Job<'a> {
     path: String,
     template: &'static str,
     context: PageContext<'a>,
@@ -1235,7 +1126,7 @@ fn page_title(site: &Site<'_>, s: &str) -> String {
     format!("{s} — {}", site.opts.title)
 }
 
-fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
+fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
     let catalog = site.catalog;
     let lang = site.lang;
     let title = |s: &str| page_title(site, s);
@@ -1272,7 +1163,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             href: f.slug.clone(),
         })
         .collect();
-    pages.push(Page {
+    pages.push(Job {
         path: catalog.site_page(PageKind::Index).path("html"),
         template: "index.html",
         context: PageContext::Ready(minijinja::context! {
@@ -1324,7 +1215,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 )
             })
             .collect();
-        pages.push(Page {
+        pages.push(Job {
             path: catalog.site_page(index_kind).path("html"),
             template: "facets.html",
             context: PageContext::Ready(minijinja::context! {
@@ -1336,7 +1227,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             }),
         });
         for (fi, f) in facets.iter().enumerate() {
-            pages.push(Page {
+            pages.push(Job {
                 path: page_of(catalog, fi).path("html"),
                 template: "facet.html",
                 context: PageContext::Lazy(Box::new(move || {
@@ -1388,7 +1279,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 others: t.others.len(),
             })
             .collect();
-        pages.push(Page {
+        pages.push(Job {
             path: catalog.site_page(PageKind::DataTypes).path("html"),
             template: "types.html",
             context: PageContext::Ready(minijinja::context! {
@@ -1399,7 +1290,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             }),
         });
         for (ti, t) in catalog.data_types.iter().enumerate() {
-            pages.push(Page {
+            pages.push(Job {
                 path: catalog.data_type_page(ti).path("html"),
                 template: "type.html",
                 context: PageContext::Lazy(Box::new(move || {
@@ -1455,7 +1346,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                 unprovided: t.is_unprovided(),
             })
             .collect();
-        pages.push(Page {
+        pages.push(Job {
             path: catalog.site_page(PageKind::Interfaces).path("html"),
             template: "interfaces.html",
             context: PageContext::Ready(minijinja::context! {
@@ -1466,7 +1357,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             }),
         });
         for (ii, t) in catalog.interfaces.iter().enumerate() {
-            pages.push(Page {
+            pages.push(Job {
                 path: catalog.interface_page(ii).path("html"),
                 template: "interface.html",
                 context: PageContext::Lazy(Box::new(move || {
@@ -1496,7 +1387,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
     pages.push(dataflow::page(site));
 
     // Search, 404 and diagnostics.
-    pages.push(Page {
+    pages.push(Job {
         path: catalog.site_page(PageKind::Search).path("html"),
         template: "search.html",
         context: PageContext::Ready(minijinja::context! {
@@ -1516,7 +1407,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         // custom domain, a user or organisation page). A site in a sub-path sets base-url; a
         // `<base>` element cannot help, it needs the same unknown.
         .unwrap_or_else(|| "/".to_string());
-    pages.push(Page {
+    pages.push(Job {
         path: catalog.site_page(PageKind::NotFound).path("html"),
         template: "404.html",
         context: PageContext::Ready(minijinja::context! {
@@ -1537,7 +1428,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
                     view.page
                 )
             };
-            pages.push(Page {
+            pages.push(Job {
                 path,
                 template: "diagnostics.html",
                 context: PageContext::Ready(minijinja::context! {

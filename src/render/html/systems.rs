@@ -4,9 +4,7 @@
 //! built with `show-host-data = true`; the page says how many values were left out.
 
 use super::system_svg::{standalone_system_diagram, system_diagram};
-use super::{
-    crumbs_home, crumbs_section, ctx, page_title, KeyValue, Link, Page, PageContext, Site,
-};
+use super::{crumbs_home, crumbs_section, ctx, page_title, Job, KeyValue, Link, PageContext, Site};
 use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
 use crate::model::system::{PortEnd, RtSystem};
 use crate::model::{non_empty, Text};
@@ -565,7 +563,7 @@ pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
 }
 
 /// `systems/index.html` and one page per system; nothing when there are no systems.
-pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
+pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
     let catalog = site.catalog;
     if catalog.systems.is_empty() {
         return Vec::new();
@@ -587,7 +585,7 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
             }
         })
         .collect();
-    let mut pages = vec![Page {
+    let mut pages = vec![Job {
         path: "systems/index.html".into(),
         template: "systems.html",
         context: PageContext::Ready(minijinja::context! {
@@ -598,7 +596,7 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Page<'a>> {
         }),
     }];
     for s in &catalog.systems {
-        pages.push(Page {
+        pages.push(Job {
             path: system_path(catalog, s),
             template: "system.html",
             context: PageContext::Lazy(Box::new(move || site.system_page(s))),

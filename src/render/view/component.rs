@@ -1,0 +1,341 @@
+//! The component page's view: everything the page says, built once per component and handed
+//! to every output (the HTML page context in `render::html`, the Markdown and Doxygen
+//! sections in `render::text`). Renderers decide how it looks, never what it says.
+
+use super::{Dir, Linked, Peers};
+use crate::catalog::{Catalog, Page};
+use crate::i18n::Lang;
+use crate::model::{self, non_empty, ActionKind, Direction, PortDirection};
+use crate::readme::Readme;
+use crate::render::facts::{self, BackupRow, Fact};
+use crate::types::{canonical_type, short_name};
+
+/// A data port row.
+pub struct DataPortView<'a> {
+    pub anchor: &'a str,
+    pub name: &'a str,
+    pub direction: Dir,
+    /// The data type as written, linked to its type page when the catalogue has one.
+    pub type_: Option<Linked<'a>>,
+    /// The short type name the component diagram shows (`TimedLong` for `RTC::TimedLong`).
+    pub type_short: String,
+    pub side: model::PortSide,
+    pub unit: &'a str,
+    pub description: Option<&'a str>,
+    /// The port's other facts (not its name, direction, type, unit or description).
+    pub details: Vec<Fact>,
+    /// Its events: name and facts.
+    pub events: Vec<(&'a str, Vec<Fact>)>,
+    pub peers: Peers<'a>,
+}
+
+/// A service interface row of a service port.
+pub struct InterfaceView<'a> {
+    pub anchor: &'a str,
+    pub name: &'a str,
+    pub direction: Dir,
+    pub provided: bool,
+    pub type_: Option<Linked<'a>>,
+    pub type_short: String,
+    pub description: Option<&'a str>,
+    pub details: Vec<Fact>,
+    pub peers: Peers<'a>,
+}
+
+/// A service port with its interfaces.
+pub struct ServicePortView<'a> {
+    pub anchor: &'a str,
+    pub name: &'a str,
+    pub side: model::PortSide,
+    pub details: Vec<Fact>,
+    pub interfaces: Vec<InterfaceView<'a>>,
+}
+
+/// A configuration parameter row.
+pub struct ConfigurationView<'a> {
+    pub anchor: &'a str,
+    pub name: &'a str,
+    pub type_: &'a str,
+    pub default: &'a str,
+    pub unit: &'a str,
+    pub constraint: String,
+    pub widget: String,
+    pub description: Option<&'a str>,
+    /// Its other facts (not the columns above).
+    pub details: Vec<Fact>,
+}
+
+/// A lifecycle action row.
+pub struct ActionView {
+    pub kind: ActionKind,
+    pub implemented: bool,
+    /// Its Document Profile: description, pre- and post-condition.
+    pub details: Vec<Fact>,
+}
+
+/// Everything a component page says.
+pub struct ComponentView<'a> {
+    pub ci: usize,
+    pub page: &'a Page,
+    /// The name shown (with what tells components of one name apart).
+    pub name: String,
+    /// The name the profile declares (the component diagram's box).
+    pub profile_name: &'a str,
+    /// The category, linked to its page.
+    pub category: Linked<'a>,
+    /// The description: the page's lead text (free text).
+    pub lead: Option<&'a str>,
+    /// Basic information; the vendor's fact links to [`ComponentView::vendor`], the source's
+    /// to [`ComponentView::source_url`].
+    pub basic: Vec<Fact>,
+    pub vendor: Option<&'a Page>,
+    /// The URL of the profile in its repository (`source-url`).
+    pub source_url: Option<String>,
+    /// The Document Profile.
+    pub document: Vec<Fact>,
+    pub readme: Option<&'a Readme>,
+    pub data_ports: Vec<DataPortView<'a>>,
+    pub service_ports: Vec<ServicePortView<'a>>,
+    pub configurations: Vec<ConfigurationView<'a>>,
+    pub actions: Vec<ActionView>,
+    /// System parameters: (name, default value).
+    pub parameters: Vec<(&'a str, &'a str)>,
+    pub language: Vec<Fact>,
+    /// The target environments with facts: (number from 1, facts).
+    pub targets: Vec<(usize, Vec<Fact>)>,
+    pub properties: Vec<Fact>,
+    pub version_up_logs: Vec<&'a str>,
+    pub extras: Vec<(Fact, model::ExtraKind)>,
+    /// The systems with an instance of the component, linked, naming the instances.
+    pub systems: Vec<Linked<'a>>,
+    pub backups: Vec<BackupRow>,
+}
+
+/// The data port's direction: label and class (`in`, `out`, `event`, `other`).
+fn port_dir(lang: Lang, p: &model::DataPort) -> Dir {
+    match p.direction() {
+        Some(PortDirection::In) => Dir::new(lang.t("in"), "in"),
+        Some(PortDirection::Out) => Dir::new(lang.t("out"), "out"),
+        Some(PortDirection::Event) => Dir::new(lang.t("event"), "event"),
+        None => Dir::new(non_empty(&p.port_type).unwrap_or(""), "other"),
+    }
+}
+
+fn short(t: &Option<model::Text>) -> String {
+    non_empty(t)
+        .map(|t| short_name(&canonical_type(t)).to_string())
+        .unwrap_or_default()
+}
+
+/// Builds the view of component `ci`. `category` and `vendor` are its facets
+/// ([`Catalog::category_of_each`], [`Catalog::vendor_of_each`]); `source_url` the
+/// `source-url` template (a component of a `[[source]]` uses its source's instead).
+pub fn component_view<'a>(
+    cat: &'a Catalog,
+    ci: usize,
+    (category, vendor): (usize, usize),
+    source_url: Option<&str>,
+    lang: Lang,
+) -> ComponentView<'a> {
+    let c = &cat.components[ci];
+    let p = &c.profile;
+    let page = cat.component_page(ci);
+    let data_ports = p
+        .data_ports
+        .iter()
+        .enumerate()
+        .map(|(pi, dp)| {
+            let ti = non_empty(&dp.type_).and_then(|t| cat.data_type_index(t));
+            let type_page = ti.map(|ti| cat.data_type_page(ti));
+            DataPortView {
+                anchor: &c.anchors.data_ports[pi],
+                name: dp.name.as_deref().unwrap_or_default(),
+                direction: port_dir(lang, dp),
+                type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
+                type_short: short(&dp.type_),
+                side: dp.side(),
+                unit: facts::data_port_unit(dp).unwrap_or(""),
+                description: dp.doc.as_ref().and_then(|d| non_empty(&d.description)),
+                details: facts::data_port_attributes_without_unit(dp, lang),
+                events: dp
+                    .events
+                    .iter()
+                    .map(|e| (e.name.as_deref().unwrap_or_default(), facts::event(e, lang)))
+                    .collect(),
+                peers: Peers::of(
+                    ci,
+                    cat.data_port_peers(ci, pi),
+                    |r| cat.port_component(r).unwrap_or(usize::MAX),
+                    |r| {
+                        let (pc, port) = cat.resolve_port(r)?;
+                        let comp = &cat.components[pc];
+                        Some((
+                            pc,
+                            comp.profile.data_ports[port]
+                                .name
+                                .as_deref()
+                                .unwrap_or_default()
+                                .to_string(),
+                            comp.anchors.data_ports[port].as_str(),
+                        ))
+                    },
+                    cat,
+                    type_page,
+                    lang.t("more_on_type_page"),
+                ),
+            }
+        })
+        .collect();
+    let service_ports = p
+        .service_ports
+        .iter()
+        .enumerate()
+        .map(|(si, sp)| ServicePortView {
+            anchor: &c.anchors.service_ports[si],
+            name: sp.name.as_deref().unwrap_or_default(),
+            side: sp.side(),
+            details: facts::service_port(sp, lang),
+            interfaces: sp
+                .interfaces
+                .iter()
+                .enumerate()
+                .map(|(ii, i)| {
+                    let it = non_empty(&i.type_)
+                        .and_then(|t| cat.interface_index_of(t))
+                        .map(|x| cat.interface_page(x));
+                    InterfaceView {
+                        anchor: &c.anchors.interfaces[si][ii],
+                        name: i.name.as_deref().unwrap_or_default(),
+                        direction: match i.direction_kind() {
+                            Some(Direction::Provided) => Dir::new(lang.t("provided"), "provided"),
+                            Some(Direction::Required) => Dir::new(lang.t("required"), "required"),
+                            None => Dir::new(non_empty(&i.direction).unwrap_or(""), "other"),
+                        },
+                        provided: i.direction_kind() == Some(Direction::Provided),
+                        type_: non_empty(&i.type_).map(|t| Linked::new(t, it, None)),
+                        type_short: short(&i.type_),
+                        description: i.doc.as_ref().and_then(|d| non_empty(&d.description)),
+                        details: facts::service_interface(i, lang),
+                        peers: Peers::of(
+                            ci,
+                            cat.interface_peers(ci, si, ii),
+                            |r| cat.interface_component(r).unwrap_or(usize::MAX),
+                            |r| {
+                                let (pc, port, x) = cat.resolve_interface(r)?;
+                                let comp = &cat.components[pc];
+                                let sp = &comp.profile.service_ports[port];
+                                Some((
+                                    pc,
+                                    format!(
+                                        "{}.{}",
+                                        sp.name.as_deref().unwrap_or(""),
+                                        sp.interfaces[x].name.as_deref().unwrap_or("")
+                                    ),
+                                    comp.anchors.interfaces[port][x].as_str(),
+                                ))
+                            },
+                            cat,
+                            it,
+                            lang.t("more_on_interface_page"),
+                        ),
+                    }
+                })
+                .collect(),
+        })
+        .collect();
+    let configurations = p
+        .configurations()
+        .iter()
+        .enumerate()
+        .map(|(k, conf)| ConfigurationView {
+            anchor: &c.anchors.configurations[k],
+            name: conf.name.as_deref().unwrap_or_default(),
+            type_: non_empty(&conf.type_).unwrap_or(""),
+            default: conf.default_value.as_deref().unwrap_or_default(),
+            unit: facts::configuration_unit(conf).unwrap_or(""),
+            constraint: facts::configuration_constraint(conf).unwrap_or_default(),
+            widget: facts::configuration_widget(conf, lang).unwrap_or_default(),
+            description: conf.doc.as_ref().and_then(|d| non_empty(&d.description)),
+            details: facts::configuration_without_widget(conf, lang),
+        })
+        .collect();
+    let actions = ActionKind::ALL
+        .iter()
+        .map(|&kind| {
+            let a = p.action(kind);
+            ActionView {
+                kind,
+                implemented: a.is_some_and(|a| a.is_implemented()),
+                details: facts::action(a, lang),
+            }
+        })
+        .collect();
+    let (language, targets) = match &p.language {
+        Some(l) => (
+            facts::language(l, lang),
+            l.targets
+                .iter()
+                .enumerate()
+                .map(|(k, t)| (k + 1, facts::target(t, lang)))
+                .filter(|(_, f)| !f.is_empty())
+                .collect(),
+        ),
+        None => (Vec::new(), Vec::new()),
+    };
+    ComponentView {
+        ci,
+        page,
+        name: c.display_name().into_owned(),
+        profile_name: p.name(),
+        category: Linked::new(
+            non_empty(&p.basic_info.category).unwrap_or(lang.t("no_category")),
+            cat.categories
+                .get(category)
+                .map(|_| cat.category_page(category)),
+            None,
+        ),
+        lead: non_empty(&p.basic_info.description),
+        basic: facts::basic_info(c, lang),
+        vendor: cat.vendors.get(vendor).map(|_| cat.vendor_page(vendor)),
+        // A profile of a `[[source]]` repository links into that repository at the pinned
+        // commit, with the source's template.
+        source_url: match &c.origin {
+            Some(o) => cat
+                .sources
+                .iter()
+                .find(|s| s.name == o.source)
+                .and_then(|s| s.source_url.as_deref())
+                .and_then(|t| crate::render::html::repo::pinned_source_url(t, &o.commit, &o.path)),
+            None => source_url.and_then(|t| crate::render::html::repo::source_url(t, &c.source)),
+        },
+        document: p
+            .basic_info
+            .doc
+            .as_ref()
+            .map(|d| facts::document(d, lang))
+            .unwrap_or_default(),
+        readme: c.readme.as_ref(),
+        data_ports,
+        service_ports,
+        configurations,
+        actions,
+        parameters: p.parameters.iter().map(facts::parameter).collect(),
+        language,
+        targets,
+        properties: facts::component_properties(p, lang),
+        version_up_logs: facts::version_up_logs(p),
+        extras: facts::extras_with_kind(p),
+        systems: cat
+            .systems_using(ci)
+            .into_iter()
+            .map(|(s, names)| {
+                Linked::new(
+                    &format!("{} ({})", s.profile.name(), names.join(", ")),
+                    cat.page_of_system(s),
+                    None,
+                )
+            })
+            .collect(),
+        backups: BackupRow::of(c, lang),
+    }
+}
