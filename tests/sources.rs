@@ -232,6 +232,16 @@ fn sources_are_pinned_in_the_lock_and_linked_at_their_commit() {
     assert_eq!(code, 0, "{err}");
     assert!(!err.contains("rtcdoc.lock:"), "{err}");
     assert_eq!(tree(&p.proj.join("site")), before);
+    // Markdown links the Source the same way.
+    let (code, err) = p.run(&["build", "-f", "markdown", "-o", "md"]);
+    assert_eq!(code, 0, "{err}");
+    let md = std::fs::read_to_string(p.proj.join("md/components/camera.md")).unwrap();
+    assert!(
+        md.contains(&format!(
+            "[camera/Camera/RTC.xml](https://git.example.org/cam/blob/{c1}/Camera/RTC.xml)"
+        )),
+        "{md}"
+    );
     // `check` reads the same sources.
     let (code, err) = p.run(&["check"]);
     assert_eq!(code, 0, "{err}");
