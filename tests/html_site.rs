@@ -805,7 +805,8 @@ fn component_tables_have_no_empty_column_and_say_the_widget_once() {
         "{lang}"
     );
 
-    // The Markdown page: the same columns are left out.
+    // The Markdown page: the same view, so the same columns (the widget in its own column,
+    // said once) and the same ones left out.
     let md_out = dir.path().join("md");
     let staging = Staging::new(&md_out).expect("staging");
     rtcdoc::render::markdown::MarkdownRenderer
@@ -824,9 +825,11 @@ fn component_tables_have_no_empty_column_and_say_the_widget_once() {
         "data port columns: {md}"
     );
     assert!(
-        md.contains("| Name | Type | Default | Description | Details |\n"),
+        md.contains("| Name | Type | Default | Widget | Description |\n"),
         "configuration columns: {md}"
     );
+    assert!(md.contains("| slider (slider), Step 0.1 |"), "{md}");
+    assert!(!md.contains("**Widget**"), "widget twice: {md}");
     assert!(
         md.contains("| Callback | Implemented |\n"),
         "lifecycle: {md}"

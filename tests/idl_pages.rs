@@ -53,7 +53,7 @@ fn example_type_and_interface_pages_show_their_idl() {
     );
     let list = read(&out.join("types/detection-objectlist.html"));
     assert!(list.contains("<code>typedef</code>") && list.contains("<a href=\"../types/detection-detectedobject.html\"><code>sequence&lt;DetectedObject&gt;</code></a>"), "{list}");
-    assert!(list.contains("<a href=\"detection-timedobjectlist.html\"><code>Detection::TimedObjectList</code></a>"), "{list}");
+    assert!(list.contains("<a href=\"../types/detection-timedobjectlist.html\"><code>Detection::TimedObjectList</code></a>"), "{list}");
     let bbox = read(&out.join("types/detection-boundingbox.html"));
     assert!(bbox.contains("id=\"contained-in\"") && bbox.contains("Detection::DetectedObject"));
     assert!(

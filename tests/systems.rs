@@ -332,7 +332,7 @@ fn markdown_doxygen_and_json_carry_systems() {
     assert!(md["components/planner.md"]
         .contains("[PatrolSystem (Planner0)](../systems/patrolsystem.md)"));
     assert!(md["types/rtc-cameraimage.md"]
-        .contains("[PatrolSystem: Camera0.image → Planner0.image](../systems/patrolsystem.md)"));
+        .contains("[PatrolSystem: Camera0.image → Planner0.image](../systems/patrolsystem.md#data-connectors)"));
     // Doxygen: pages and references, listed in the Doxyfile.
     let dox: std::collections::BTreeMap<String, String> =
         doxygen::pages(&cat, "Cat", lang).into_iter().collect();

@@ -10,7 +10,7 @@
 //! port uses it, like the catalogue's own files: its documentation is what the pages show.
 
 use super::registry as r;
-use super::rules::Sink;
+use super::rules::Findings;
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
 use crate::idl::{IdlDefinition, IdlDoc, IdlItem};
@@ -80,13 +80,13 @@ fn counted(cat: &Catalog) -> Vec<IdlItem<'_>> {
 fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCoverage> {
     let d = item.definition;
     let scoped = d.scoped_name();
-    let mut sink = Sink {
+    let mut sink = Findings {
         file: &item.file.path,
         out: Vec::new(),
     };
     let mut documented_n = 0;
     let mut total = 0;
-    let mut count = |ok: bool, code: &'static str, pos, what: String, s: &mut Sink| {
+    let mut count = |ok: bool, code: &'static str, pos, what: String, s: &mut Findings| {
         total += 1;
         if ok {
             documented_n += 1;

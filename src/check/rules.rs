@@ -11,12 +11,12 @@ use crate::value::{self, ValueType};
 use std::collections::{BTreeMap, HashMap};
 
 /// Collects the diagnostics of one file.
-pub(crate) struct Sink<'a> {
+pub(crate) struct Findings<'a> {
     pub file: &'a str,
     pub out: Vec<Diagnostic>,
 }
 
-impl Sink<'_> {
+impl Findings<'_> {
     /// Emits `code` at `pos` with the registry's severity and hint.
     pub fn emit(&mut self, code: &'static str, pos: Pos, message: impl Into<String>) {
         let (severity, hint) =
@@ -35,7 +35,7 @@ fn blank(s: &Option<crate::model::Text>) -> bool {
 
 /// Runs every per-component rule on `c`.
 pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
-    let mut s = Sink {
+    let mut s = Findings {
         file: &c.source,
         out: Vec::new(),
     };
@@ -54,9 +54,9 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
 }
 
 /// RTC101: required attributes (XSD `use="required"`).
-fn required(p: &Profile, s: &mut Sink) {
+fn required(p: &Profile, s: &mut Findings) {
     // An empty attribute is pointed at; a missing one at its element.
-    let miss = |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
+    let miss = |s: &mut Findings, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
         if blank(v) {
             let how = if v.is_some() {
                 "is empty"
@@ -199,10 +199,10 @@ fn required(p: &Profile, s: &mut Sink) {
 }
 
 /// RTC102: enumerations of the XSD.
-fn enumerations(p: &Profile, s: &mut Sink) {
+fn enumerations(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     let exact =
-        |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, allowed: &[&str], pos: Pos| {
+        |s: &mut Findings, what: &str, v: &Option<crate::model::Text>, allowed: &[&str], pos: Pos| {
             if let Some(v) = non_empty(v) {
                 if !allowed.contains(&v) {
                     let hint = allowed
@@ -278,7 +278,7 @@ fn enumerations(p: &Profile, s: &mut Sink) {
     }
 }
 
-fn position(s: &mut Sink, v: &Option<crate::model::Text>, port: Option<&str>, pos: Pos) {
+fn position(s: &mut Findings, v: &Option<crate::model::Text>, port: Option<&str>, pos: Pos) {
     if let Some(v) = non_empty(v) {
         if crate::model::PortSide::parse(Some(v)).is_none() {
             s.emit(
@@ -294,7 +294,7 @@ fn position(s: &mut Sink, v: &Option<crate::model::Text>, port: Option<&str>, po
 }
 
 /// RTC103–RTC106: executionRate, maxInstances, dates, booleans.
-fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
+fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     if let Some(rate) = b.execution_rate.as_deref().filter(|v| !v.trim().is_empty()) {
         let at = b.attr_pos.or("executionRate", b.pos);
@@ -343,7 +343,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Sink) {
             }
         }
     }
-    let boolean = |s: &mut Sink, what: String, v: &Option<crate::model::Text>, pos: Pos| {
+    let boolean = |s: &mut Findings, what: String, v: &Option<crate::model::Text>, pos: Pos| {
         if let Some(t) = v {
             if parse_bool(Some(t)).is_none() {
                 s.emit(
@@ -434,7 +434,7 @@ pub fn check_date_time(s: &str) -> Result<(), String> {
 }
 
 /// RTC201–RTC203: the id and the parts it is built from.
-fn identity(p: &Profile, s: &mut Sink) {
+fn identity(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     let bpos = if b.pos.is_unknown() { p.pos } else { b.pos };
     for (name, v) in [("vendor", &b.vendor), ("version", &b.version)] {
@@ -502,8 +502,8 @@ fn identity(p: &Profile, s: &mut Sink) {
 }
 
 /// RTC204–RTC207: names without whitespace, unique where they must be.
-fn names<'a>(p: &'a Profile, s: &mut Sink) {
-    let ws = |s: &mut Sink, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
+fn names<'a>(p: &'a Profile, s: &mut Findings) {
+    let ws = |s: &mut Findings, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
         if let Some(n) = v.as_deref().filter(|n| !n.trim().is_empty()) {
             if n.chars().any(char::is_whitespace) {
                 s.emit(
@@ -517,7 +517,7 @@ fn names<'a>(p: &'a Profile, s: &mut Sink) {
     // Ports: data and service ports share one namespace.
     let mut ports: HashMap<&str, (Pos, &str)> = HashMap::new();
     let mut port =
-        |s: &mut Sink, kind: &'static str, v: &'a Option<crate::model::Text>, pos: Pos| {
+        |s: &mut Findings, kind: &'static str, v: &'a Option<crate::model::Text>, pos: Pos| {
             let Some(n) = non_empty(v) else { return };
             match ports.get(n) {
                 Some((first, first_kind)) => s.emit(
@@ -664,10 +664,10 @@ fn unknown_items<'a>(v: &'a str, known: &[&str]) -> Vec<&'a str> {
 }
 
 /// RTC208–RTC212: componentKind, executionType and the data-port transport attributes.
-fn known_values(p: &Profile, s: &mut Sink) {
+fn known_values(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     let check =
-        |s: &mut Sink, code, what: &str, v: &Option<crate::model::Text>, known: &[&str], pos| {
+        |s: &mut Findings, code, what: &str, v: &Option<crate::model::Text>, known: &[&str], pos| {
             let Some(t) = non_empty(v) else { return };
             let bad = unknown_items(t, known);
             if !bad.is_empty() {
@@ -735,7 +735,7 @@ fn known_values(p: &Profile, s: &mut Sink) {
 /// the data it describes: a copy-paste slip (real profiles document `dir_lf0` under `dir_rf1`).
 /// A data name that is a human label (`wheel base`, `画像幅`) is what RTCBuilder's form asks
 /// for and is not reported.
-fn configuration_datanames(p: &Profile, s: &mut Sink) {
+fn configuration_datanames(p: &Profile, s: &mut Findings) {
     let names: std::collections::HashSet<&str> = p
         .configurations()
         .iter()
@@ -761,7 +761,7 @@ fn configuration_datanames(p: &Profile, s: &mut Sink) {
 }
 
 /// RTC301–RTC305: configuration default values against their types and constraints.
-fn configuration_values(p: &Profile, s: &mut Sink) {
+fn configuration_values(p: &Profile, s: &mut Findings) {
     for c in p.configurations() {
         let name = c.name.as_deref().unwrap_or("");
         let ty = match non_empty(&c.type_) {
@@ -864,10 +864,10 @@ fn configuration_values(p: &Profile, s: &mut Sink) {
 
 /// Document coverage of one component: (documented, total) items, emitting RTC501–RTC505 for
 /// the undocumented ones when `s` is given.
-pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Sink>) -> (usize, usize) {
+pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Findings>) -> (usize, usize) {
     let mut documented = 0;
     let mut total = 0;
-    let mut item = |s: &mut Option<&mut Sink>,
+    let mut item = |s: &mut Option<&mut Findings>,
                     desc: Option<&Option<crate::model::Text>>,
                     code,
                     pos,
@@ -957,7 +957,7 @@ pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Sink>) -> (usize, usize)
 }
 
 /// RTC306: placeholders RTCBuilder pre-fills and nobody edited.
-fn placeholders(p: &Profile, s: &mut Sink) {
+fn placeholders(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     for (field, v) in [
         ("vendor", &b.vendor),
@@ -1021,7 +1021,7 @@ fn placeholders(p: &Profile, s: &mut Sink) {
     }
 }
 
-fn documentation(p: &Profile, s: &mut Sink) {
+fn documentation(p: &Profile, s: &mut Findings) {
     doc_items(p, Some(s));
 }
 
@@ -1073,7 +1073,7 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     }
     let mut reported: std::collections::HashSet<&str> = Default::default();
     for (name, idl_file, file, pos, port) in &uses {
-        let mut s = Sink {
+        let mut s = Findings {
             file,
             out: Vec::new(),
         };
@@ -1159,7 +1159,7 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
             .skip(1)
             .find(|i| strip(i.definition) != reference)
         {
-            let mut s = Sink {
+            let mut s = Findings {
                 file: &other.file.path,
                 out: Vec::new(),
             };
@@ -1186,7 +1186,7 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
             let Some((c, _, i)) = cat.interface_of(req) else {
                 continue;
             };
-            let mut s = Sink {
+            let mut s = Findings {
                 file: &c.source,
                 out: Vec::new(),
             };
@@ -1226,7 +1226,7 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
             for &(ci, pi) in ports {
                 let c = &cat.components[ci];
                 let port = &c.profile.data_ports[pi];
-                let mut s = Sink {
+                let mut s = Findings {
                     file: &c.source,
                     out: Vec::new(),
                 };

@@ -3,7 +3,7 @@
 //! instance names, and configuration values against the components' declarations.
 
 use super::registry as r;
-use super::rules::Sink;
+use super::rules::Findings;
 use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
@@ -16,7 +16,7 @@ use std::collections::HashMap;
 pub fn run(cat: &Catalog) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     for s in &cat.systems {
-        let mut sink = Sink {
+        let mut sink = Findings {
             file: &s.source,
             out: Vec::new(),
         };
@@ -26,7 +26,7 @@ pub fn run(cat: &Catalog) -> Vec<Diagnostic> {
     out
 }
 
-fn system(cat: &Catalog, s: &System, sink: &mut Sink<'_>) {
+fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
     let p = &s.profile;
     // Instance names.
     let mut first: HashMap<&str, usize> = HashMap::new();
@@ -159,7 +159,7 @@ fn end(
     s: &System,
     e: &PortEnd,
     el: &crate::catalog::systems::EndLink,
-    sink: &mut Sink<'_>,
+    sink: &mut Findings<'_>,
 ) {
     let inst = non_empty(&e.instance_name).unwrap_or("");
     let port = end_port_name(e);

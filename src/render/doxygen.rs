@@ -24,13 +24,16 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
+use super::text::type_page;
 use super::text::{
     category_name, component_cols, component_sections, facets_of_each, interface_index_table,
-    names_facts, type_index_table, Markup,
+    type_index_table, Markup,
 };
 use super::view::component::component_view;
+use super::view::types::{data_type_view, interface_view};
+use super::view::Linked;
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
+use crate::catalog::{Catalog, Component, Output, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -233,6 +236,18 @@ impl Markup for Dox {
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String {
         format!("\\ref {}", cat.href(from, to, None, DOX))
     }
+    /// Doxygen writes each `\\ref`ed page's own title: the crumbs' texts are not needed.
+    fn page_head(out: &mut String, cat: &Catalog, page: &Page, text_: &str, crumbs: &[Linked<'_>]) {
+        d!(out, "\\page {} {}", target(cat, page), title(text_));
+        d!(out);
+        let refs: Vec<String> = crumbs
+            .iter()
+            .filter_map(|l| l.target(cat, page, DOX))
+            .map(|t| format!("\\ref {t}"))
+            .collect();
+        d!(out, "<p>{}</p>", refs.join(" › "));
+        d!(out);
+    }
 }
 
 fn table(out: &mut String, headers: &[&str], rows: &[Vec<String>]) {
@@ -317,47 +332,6 @@ fn component_ref(cat: &Catalog, from: &Page, ci: usize, anchor: Option<&str>) ->
     cat.href(from, cat.component_page(ci), anchor, DOX)
 }
 
-fn port_rows(cat: &Catalog, from: &Page, refs: &[PortRef]) -> Vec<Vec<String>> {
-    refs.iter()
-        .filter_map(|r| {
-            let (ci, pi) = cat.resolve_port(r)?;
-            let c = &cat.components[ci];
-            let port = &c.profile.data_ports[pi];
-            Some(vec![
-                format!("\\ref {}", component_ref(cat, from, ci, None)),
-                refer(
-                    &component_ref(cat, from, ci, Some(&c.anchors.data_ports[pi])),
-                    model::non_empty(&port.name).unwrap_or("?"),
-                ),
-                opt(&port.type_),
-            ])
-        })
-        .collect()
-}
-
-fn iface_rows(cat: &Catalog, from: &Page, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
-    refs.iter()
-        .filter_map(|r| {
-            let (ci, pi, ii) = cat.resolve_interface(r)?;
-            let c = &cat.components[ci];
-            let sp = &c.profile.service_ports[pi];
-            let i = &sp.interfaces[ii];
-            Some(vec![
-                format!("\\ref {}", component_ref(cat, from, ci, None)),
-                refer(
-                    &component_ref(cat, from, ci, Some(&c.anchors.interfaces[pi][ii])),
-                    &format!(
-                        "{} / {}",
-                        model::non_empty(&sp.name).unwrap_or("?"),
-                        model::non_empty(&i.name).unwrap_or("?")
-                    ),
-                ),
-                opt(&i.type_),
-            ])
-        })
-        .collect()
-}
-
 /// The line under an entry page's title: the front page › the index of `kind`.
 fn crumbs(out: &mut String, cat: &Catalog, kind: PageKind) {
     d!(
@@ -373,48 +347,6 @@ fn crumbs(out: &mut String, cat: &Catalog, kind: PageKind) {
 fn crumb_home(out: &mut String, cat: &Catalog) {
     d!(out, "<p>\\ref {}</p>", home(cat));
     d!(out);
-}
-
-fn type_page(cat: &Catalog, ti: usize, lang: Lang) -> String {
-    let t = &cat.data_types[ti];
-    let page = cat.data_type_page(ti);
-    let mut out = String::new();
-    d!(out, "\\page {} {}", target(cat, page), title(&t.name));
-    d!(out);
-    crumbs(&mut out, cat, PageKind::DataTypes);
-    names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Dox>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
-        section(o, page, a, text)
-    });
-    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
-    for (anchor, key, refs) in [
-        ("sec-producers", "producers", &t.producers),
-        ("sec-consumers", "consumers", &t.consumers),
-        ("sec-others", "fact_others", &t.others),
-    ] {
-        if !refs.is_empty() {
-            section(&mut out, page, anchor, lang.t(key));
-            table(&mut out, &cols, &port_rows(cat, page, refs));
-        }
-    }
-    let carried = super::system_text::carrying(cat, &t.name);
-    if !carried.is_empty() {
-        section(
-            &mut out,
-            page,
-            "sec-system-connectors",
-            lang.t("sys_carried_by"),
-        );
-        d!(out, "<ul>");
-        for (text_, s) in carried {
-            if let Some(to) = cat.page_of_system(s) {
-                d!(out, "<li>{}</li>", refer(&target(cat, to), &text_));
-            }
-        }
-        d!(out, "</ul>");
-        d!(out);
-    }
-    out
 }
 
 /// `systems.dox`: every RT System with its counts.
@@ -491,35 +423,6 @@ fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String 
             heading: &head,
         },
     );
-    out
-}
-
-fn interface_page(cat: &Catalog, ii: usize, lang: Lang) -> String {
-    let t = &cat.interfaces[ii];
-    let page = cat.interface_page(ii);
-    let mut out = String::new();
-    d!(out, "\\page {} {}", target(cat, page), title(&t.name));
-    d!(out);
-    crumbs(&mut out, cat, PageKind::Interfaces);
-    if t.is_unprovided() {
-        d!(out, "<p><b>{}</b></p>", text(lang.t("not_provided")));
-        d!(out);
-    }
-    names_facts::<Dox>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Dox>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
-        section(o, page, a, text)
-    });
-    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
-    for (anchor, key, refs) in [
-        ("sec-providers", "providers", &t.providers),
-        ("sec-requirers", "requirers", &t.requirers),
-        ("sec-others", "fact_others", &t.others),
-    ] {
-        if !refs.is_empty() {
-            section(&mut out, page, anchor, lang.t(key));
-            table(&mut out, &cols, &iface_rows(cat, page, refs));
-        }
-    }
     out
 }
 
@@ -887,13 +790,13 @@ fn other_pages(
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(DOX),
-            type_page(cat, ti, lang),
+            type_page::<Dox>(cat, &data_type_view(cat, ti, lang), "", lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
             cat.interface_page(ii).path_in(DOX),
-            interface_page(cat, ii, lang),
+            type_page::<Dox>(cat, &interface_view(cat, ii, lang), "", lang),
         )
     }));
     out.push((

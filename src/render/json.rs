@@ -51,7 +51,7 @@ fn type_key(t: &DataType) -> &str {
 fn interface_key(t: &InterfaceType) -> &str {
     &t.name
 }
-fn facet_key(f: &Facet) -> &str {
+fn facet_name(f: &Facet) -> &str {
     &f.name
 }
 fn system_key(s: &System) -> &str {
@@ -123,8 +123,8 @@ fn document<'a>(
         components: Keyed(components, component_key),
         data_types: Keyed(&catalog.data_types, type_key),
         interfaces: Keyed(&catalog.interfaces, interface_key),
-        categories: Keyed(&catalog.categories, facet_key),
-        vendors: Keyed(&catalog.vendors, facet_key),
+        categories: Keyed(&catalog.categories, facet_name),
+        vendors: Keyed(&catalog.vendors, facet_name),
         pages: page_entries(catalog),
         diagnostics: &catalog.diagnostics,
         idl: &catalog.idl,

@@ -18,14 +18,17 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
+use super::text::type_page;
 use super::text::{
     category_name, component_cols, component_sections, facets_of_each, interface_index_table,
-    names_facts, type_index_table, Markup,
+    type_index_table, Markup,
 };
 use super::view::component::component_view;
+use super::view::types::{data_type_view, interface_view};
+use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
-use crate::catalog::{Catalog, Component, InterfaceRef, Output, Page, PageKind, PortRef};
+use crate::catalog::{Catalog, Component, Output, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -239,6 +242,20 @@ impl Markup for Md {
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String {
         link(&to.title, &cat.href(from, to, None, MD))
     }
+    fn page_head(out: &mut String, cat: &Catalog, page: &Page, title: &str, crumbs: &[Linked<'_>]) {
+        w!(out, "# {}", inline(title));
+        w!(out);
+        let links: Vec<String> = crumbs
+            .iter()
+            .map(|l| super::text::linked::<Md>(cat, page, l))
+            .collect();
+        w!(out, "{}", links.join(" › "));
+        w!(out);
+    }
+    fn note(out: &mut String, text: &str) {
+        w!(out, "> **{}**", inline(text));
+        w!(out);
+    }
 }
 
 /// The output this module writes.
@@ -362,136 +379,6 @@ fn readme_block(html: &str) -> String {
             out.push('\n');
         }
         out.push_str(line);
-    }
-    out
-}
-
-fn port_ref_rows(cat: &Catalog, from: &Page, refs: &[PortRef]) -> Vec<Vec<String>> {
-    refs.iter()
-        .filter_map(|r| {
-            let (ci, pi) = cat.resolve_port(r)?;
-            let c = &cat.components[ci];
-            let port = &c.profile.data_ports[pi];
-            Some(vec![
-                link(&c.display_name(), &component_href(cat, from, ci, None)),
-                link(
-                    model::non_empty(&port.name).unwrap_or("?"),
-                    &component_href(cat, from, ci, Some(&c.anchors.data_ports[pi])),
-                ),
-                opt(&port.type_),
-            ])
-        })
-        .collect()
-}
-
-fn iface_ref_rows(cat: &Catalog, from: &Page, refs: &[InterfaceRef]) -> Vec<Vec<String>> {
-    refs.iter()
-        .filter_map(|r| {
-            let (ci, pi, ii) = cat.resolve_interface(r)?;
-            let c = &cat.components[ci];
-            let sp = &c.profile.service_ports[pi];
-            let i = &sp.interfaces[ii];
-            Some(vec![
-                link(&c.display_name(), &component_href(cat, from, ci, None)),
-                link(
-                    &format!(
-                        "{} / {}",
-                        model::non_empty(&sp.name).unwrap_or("?"),
-                        model::non_empty(&i.name).unwrap_or("?")
-                    ),
-                    &component_href(cat, from, ci, Some(&c.anchors.interfaces[pi][ii])),
-                ),
-                opt(&i.type_),
-            ])
-        })
-        .collect()
-}
-
-fn type_page(cat: &Catalog, ti: usize, title: &str, lang: Lang) -> String {
-    let t = &cat.data_types[ti];
-    let page = cat.data_type_page(ti);
-    let mut out = String::new();
-    w!(out, "# {}", inline(&t.name));
-    w!(out);
-    w!(
-        out,
-        "{} › {}",
-        link(title, &home(cat, page)),
-        link(
-            lang.t("data_types"),
-            &index_href(cat, page, PageKind::DataTypes)
-        )
-    );
-    w!(out);
-    names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Md>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
-        heading(o, 2, a, text)
-    });
-    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
-    for (anchor, key, refs) in [
-        ("sec-producers", "producers", &t.producers),
-        ("sec-consumers", "consumers", &t.consumers),
-        ("sec-others", "fact_others", &t.others),
-    ] {
-        if refs.is_empty() {
-            continue;
-        }
-        heading(&mut out, 2, anchor, lang.t(key));
-        table(&mut out, &cols, &port_ref_rows(cat, page, refs));
-    }
-    let carried = super::system_text::carrying(cat, &t.name);
-    if !carried.is_empty() {
-        heading(
-            &mut out,
-            2,
-            "sec-system-connectors",
-            lang.t("sys_carried_by"),
-        );
-        for (text, s) in carried {
-            if let Some(to) = cat.page_of_system(s) {
-                w!(out, "- {}", link(&text, &cat.href(page, to, None, MD)));
-            }
-        }
-        w!(out);
-    }
-    out
-}
-
-fn interface_page(cat: &Catalog, ii: usize, title: &str, lang: Lang) -> String {
-    let t = &cat.interfaces[ii];
-    let page = cat.interface_page(ii);
-    let mut out = String::new();
-    w!(out, "# {}", inline(&t.name));
-    w!(out);
-    w!(
-        out,
-        "{} › {}",
-        link(title, &home(cat, page)),
-        link(
-            lang.t("interfaces"),
-            &index_href(cat, page, PageKind::Interfaces)
-        )
-    );
-    w!(out);
-    if t.is_unprovided() {
-        w!(out, "> **{}**", inline(lang.t("not_provided")));
-        w!(out);
-    }
-    names_facts::<Md>(&mut out, lang, &t.spellings, &t.idl_files);
-    super::idl_view::write_definition::<Md>(&mut out, cat, page, &t.name, lang, &|o, a, text| {
-        heading(o, 2, a, text)
-    });
-    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
-    for (anchor, key, refs) in [
-        ("sec-providers", "providers", &t.providers),
-        ("sec-requirers", "requirers", &t.requirers),
-        ("sec-others", "fact_others", &t.others),
-    ] {
-        if refs.is_empty() {
-            continue;
-        }
-        heading(&mut out, 2, anchor, lang.t(key));
-        table(&mut out, &cols, &iface_ref_rows(cat, page, refs));
     }
     out
 }
@@ -971,13 +858,13 @@ fn other_pages(
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(MD),
-            type_page(cat, ti, title, lang),
+            type_page::<Md>(cat, &data_type_view(cat, ti, lang), title, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
             cat.interface_page(ii).path_in(MD),
-            interface_page(cat, ii, title, lang),
+            type_page::<Md>(cat, &interface_view(cat, ii, lang), title, lang),
         )
     }));
     if !cat.systems.is_empty() {

@@ -6,6 +6,7 @@
 
 use super::facts::{self, Fact};
 use super::view::component::ComponentView;
+use super::view::types::{TypeKind, TypeView};
 use super::view::{Linked, Peers};
 use crate::catalog::{Catalog, Output, Page};
 use crate::i18n::Lang;
@@ -59,6 +60,12 @@ pub trait Markup {
     fn heading(out: &mut String, page: &Page, level: usize, anchor: &str, text: &str);
     /// A table cell of already escaped text with the stable `anchor` of `page`.
     fn anchored(page: &Page, anchor: &str, escaped: &str) -> String;
+    /// The page's title and, under it, the way back (`crumbs`: the front page, then an index).
+    fn page_head(out: &mut String, cat: &Catalog, page: &Page, title: &str, crumbs: &[Linked<'_>]);
+    /// A short paragraph that stands out (a warning about the page's subject).
+    fn note(out: &mut String, text: &str) {
+        Self::paragraph(out, &Self::bold(&Self::esc(text)));
+    }
     /// A link on page `from` to page `to` (a data type's or interface's), as a table cell.
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String;
     /// The target of a link on page `from` to page `to`, for [`Markup::link`].
@@ -472,6 +479,86 @@ fn configuration_section<M: Markup>(out: &mut String, v: &ComponentView<'_>, lan
         ],
         &rows,
     );
+}
+
+/// A data type's or interface's page from its view: title and crumbs, spellings and IDL
+/// files, the IDL definition, the ports using it by role, and the system connectors carrying
+/// it. One function for both kinds and for Markdown and Doxygen.
+pub fn type_page<M: Markup>(
+    cat: &Catalog,
+    v: &TypeView<'_>,
+    site_title: &str,
+    lang: Lang,
+) -> String {
+    let page = v.page;
+    let mut out = String::new();
+    let index_key = match v.kind {
+        TypeKind::Data => "data_types",
+        TypeKind::Interface => "interfaces",
+    };
+    let crumbs = [
+        Linked::new(
+            site_title,
+            Some(cat.site_page(crate::catalog::PageKind::Index)),
+            None,
+        ),
+        Linked::new(lang.t(index_key), Some(v.index), None),
+    ];
+    M::page_head(&mut out, cat, page, v.name, &crumbs);
+    if v.unprovided {
+        M::note(&mut out, lang.t("not_provided"));
+    }
+    names_facts::<M>(&mut out, lang, v.spellings, v.idl_files);
+    super::idl_view::write_definition::<M>(&mut out, cat, page, v.name, lang, &|o, a, text| {
+        M::heading(o, page, 2, a, text)
+    });
+    if !v.contained_in.is_empty() {
+        M::heading(
+            &mut out,
+            page,
+            2,
+            "contained-in",
+            lang.t("idl_contained_in"),
+        );
+        let items: Vec<String> = v
+            .contained_in
+            .iter()
+            .map(|l| linked::<M>(cat, page, l))
+            .collect();
+        M::linked_list(&mut out, &items);
+    }
+    let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
+    for g in &v.uses {
+        M::heading(&mut out, page, 2, g.anchor, g.label);
+        let rows: Vec<Vec<String>> = g
+            .rows
+            .iter()
+            .map(|r| {
+                vec![
+                    linked::<M>(cat, page, &r.component),
+                    linked::<M>(cat, page, &r.port),
+                    M::esc(&r.written),
+                ]
+            })
+            .collect();
+        M::table(&mut out, &cols, &rows);
+    }
+    if !v.carried_by.is_empty() {
+        M::heading(
+            &mut out,
+            page,
+            2,
+            "sec-system-connectors",
+            lang.t("sys_carried_by"),
+        );
+        let items: Vec<String> = v
+            .carried_by
+            .iter()
+            .map(|l| linked::<M>(cat, page, l))
+            .collect();
+        M::linked_list(&mut out, &items);
+    }
+    out
 }
 
 /// The table of every data type with its producer, consumer and other counts; `name` makes

@@ -24,7 +24,7 @@ pub mod systems;
 use super::facts::{self, Fact, FactKind};
 use super::view::{self, component::ComponentView, Linked};
 use super::{RenderContext, Renderer, SiteOptions};
-use crate::catalog::{Catalog, Facet, InterfaceRef, Output, Page, PageKind, PortRef};
+use crate::catalog::{Catalog, Facet, Output, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::{non_empty, ExtraKind};
 use crate::output::Sink;
@@ -421,45 +421,6 @@ impl<'a> Site<'a> {
 
     fn component_path(&self, ci: usize) -> String {
         self.catalog.component_page(ci).path("html")
-    }
-
-    fn port_link(&self, root: &str, r: &PortRef) -> Option<PortUse> {
-        let (ci, pi) = self.catalog.resolve_port(r)?;
-        let c = &self.catalog.components[ci];
-        let port = &c.profile.data_ports[pi];
-        let href = format!("{root}{}", self.component_path(ci));
-        Some(PortUse {
-            component: Link {
-                text: c.display_name().into_owned(),
-                href: href.clone(),
-            },
-            port: Link {
-                text: port.name.as_deref().unwrap_or_default().to_string(),
-                href: format!("{href}#{}", c.anchors.data_ports[pi]),
-            },
-        })
-    }
-
-    fn iface_link(&self, root: &str, r: &InterfaceRef) -> Option<PortUse> {
-        let (ci, pi, ii) = self.catalog.resolve_interface(r)?;
-        let c = &self.catalog.components[ci];
-        let sp = &c.profile.service_ports[pi];
-        let i = &sp.interfaces[ii];
-        let href = format!("{root}{}", self.component_path(ci));
-        Some(PortUse {
-            component: Link {
-                text: c.display_name().into_owned(),
-                href: href.clone(),
-            },
-            port: Link {
-                text: format!(
-                    "{}.{}",
-                    sp.name.as_deref().unwrap_or(""),
-                    i.name.as_deref().unwrap_or("")
-                ),
-                href: format!("{href}#{}", c.anchors.interfaces[pi][ii]),
-            },
-        })
     }
 
     fn summary(&self, ci: usize) -> ComponentSummary {
@@ -1121,6 +1082,57 @@ fn ctx<S: Serialize>(v: &S) -> Value {
 }
 
 /// Every page except component pages.
+/// The template context of a data type's or interface's page (`type.html`,
+/// `interface.html`), from its view.
+fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
+    use view::types::TypeKind;
+    let (catalog, lang) = (site.catalog, site.lang);
+    let link = |l: &Linked<'_>| Link {
+        text: l.text.clone(),
+        href: l.target(catalog, v.page, Output::Html).unwrap_or_default(),
+    };
+    let uses = |anchor: &str| -> Vec<PortUse> {
+        v.uses
+            .iter()
+            .filter(|g| g.anchor == anchor)
+            .flat_map(|g| &g.rows)
+            .map(|r| PortUse {
+                component: link(&r.component),
+                port: link(&r.port),
+            })
+            .collect()
+    };
+    let (key, crumbs_key) = match v.kind {
+        TypeKind::Data => ("data_type", "data_types"),
+        TypeKind::Interface => ("interface", "interfaces"),
+    };
+    let root = "../";
+    let common = minijinja::context! {
+        root => root,
+        title => page_title(site, &format!("{} {}", v.name, lang.t(key))),
+        name => v.name,
+        crumbs => ctx(&crumbs_section(lang, root, crumbs_key)),
+        spellings => ctx(&v.spellings),
+        idl_files => ctx(&crate::catalog::idl_file_names(v.idl_files)),
+        def => ctx(&crate::render::idl_view::definition(catalog, v.name)),
+        others => ctx(&uses("sec-others")),
+    };
+    let own = match v.kind {
+        TypeKind::Data => minijinja::context! {
+            contained_in => ctx(&v.contained_in.iter().map(link).collect::<Vec<_>>()),
+            producers => ctx(&uses("sec-producers")),
+            consumers => ctx(&uses("sec-consumers")),
+            carried_by => ctx(&v.carried_by.iter().map(link).collect::<Vec<_>>()),
+        },
+        TypeKind::Interface => minijinja::context! {
+            unprovided => v.unprovided,
+            providers => ctx(&uses("sec-providers")),
+            requirers => ctx(&uses("sec-requirers")),
+        },
+    };
+    minijinja::context! { ..common, ..own }
+}
+
 /// `<title>` of a page: its own title, then the site's.
 fn page_title(site: &Site<'_>, s: &str) -> String {
     format!("{s} — {}", site.opts.title)
@@ -1289,35 +1301,12 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
                 types => ctx(&rows),
             }),
         });
-        for (ti, t) in catalog.data_types.iter().enumerate() {
+        for ti in 0..catalog.data_types.len() {
             pages.push(Job {
                 path: catalog.data_type_page(ti).path("html"),
                 template: "type.html",
                 context: PageContext::Lazy(Box::new(move || {
-                    let crumbs = crumbs_section(lang, root, "data_types");
-                    let uses = |v: &[PortRef]| -> Vec<PortUse> {
-                        v.iter().filter_map(|r| site.port_link(root, r)).collect()
-                    };
-                    minijinja::context! {
-                        root => root,
-                        title => page_title(site, &format!("{} {}", t.name, lang.t("data_type"))),
-                        name => t.name.clone(),
-                        crumbs => ctx(&crumbs),
-                        spellings => ctx(&t.spellings),
-                        idl_files => ctx(&crate::catalog::idl_file_names(&t.idl_files)),
-                        def => ctx(&crate::render::idl_view::definition(catalog, &t.name)),
-                        contained_in => ctx(&t.contained_in.iter().map(|n| Link {
-                            href: catalog
-                                .data_type_index(n)
-                                .map(|c| catalog.data_type_page(c).file_name("html"))
-                                .unwrap_or_default(),
-                            text: n.clone(),
-                        }).collect::<Vec<_>>()),
-                        producers => ctx(&uses(&t.producers)),
-                        consumers => ctx(&uses(&t.consumers)),
-                        others => ctx(&uses(&t.others)),
-                        carried_by => ctx(&systems::connectors_carrying(catalog, root, &t.name)),
-                    }
+                    type_context(site, &view::types::data_type_view(catalog, ti, lang))
                 })),
             });
         }
@@ -1356,28 +1345,12 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
                 interfaces => ctx(&rows),
             }),
         });
-        for (ii, t) in catalog.interfaces.iter().enumerate() {
+        for ii in 0..catalog.interfaces.len() {
             pages.push(Job {
                 path: catalog.interface_page(ii).path("html"),
                 template: "interface.html",
                 context: PageContext::Lazy(Box::new(move || {
-                    let crumbs = crumbs_section(lang, root, "interfaces");
-                    let uses = |v: &[InterfaceRef]| -> Vec<PortUse> {
-                        v.iter().filter_map(|r| site.iface_link(root, r)).collect()
-                    };
-                    minijinja::context! {
-                        root => root,
-                        title => page_title(site, &format!("{} {}", t.name, lang.t("interface"))),
-                        name => t.name.clone(),
-                        crumbs => ctx(&crumbs),
-                        spellings => ctx(&t.spellings),
-                        idl_files => ctx(&crate::catalog::idl_file_names(&t.idl_files)),
-                        def => ctx(&crate::render::idl_view::definition(catalog, &t.name)),
-                        unprovided => t.is_unprovided(),
-                        providers => ctx(&uses(&t.providers)),
-                        requirers => ctx(&uses(&t.requirers)),
-                        others => ctx(&uses(&t.others)),
-                    }
+                    type_context(site, &view::types::interface_view(catalog, ii, lang))
                 })),
             });
         }

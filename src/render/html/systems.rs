@@ -509,36 +509,6 @@ impl Site<'_> {
     }
 }
 
-/// The system connectors carrying data type `name`, as links to their systems' connector tables:
-/// `System: Inst.port → Inst.port`.
-pub(super) fn connectors_carrying(
-    catalog: &crate::catalog::Catalog,
-    root: &str,
-    name: &str,
-) -> Vec<Link> {
-    catalog
-        .connectors_carrying(name)
-        .into_iter()
-        .map(|(s, k)| {
-            let c = &s.profile.data_port_connectors[k];
-            let end = |e: &Option<PortEnd>| {
-                e.as_ref()
-                    .map(|e| format!("{}.{}", txt(&e.instance_name), end_port_name(e)))
-                    .unwrap_or_default()
-            };
-            Link {
-                text: format!(
-                    "{}: {} → {}",
-                    s.profile.name(),
-                    end(&c.source),
-                    end(&c.target)
-                ),
-                href: format!("{root}{}#data-connectors", system_path(catalog, s)),
-            }
-        })
-        .collect()
-}
-
 /// The path of a system's wiring drawing as a file of its own: beside its page, `.svg`.
 fn drawing_path(catalog: &crate::catalog::Catalog, s: &crate::catalog::systems::System) -> String {
     let page = system_path(catalog, s);

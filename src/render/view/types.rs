@@ -1,0 +1,187 @@
+//! The page of a data type or a service interface: one view for both ("a type"), with its
+//! uses grouped by role (producers/consumers for a data type, providers/requirers for an
+//! interface, and ports of other kinds).
+
+use super::Linked;
+use crate::catalog::{Catalog, InterfaceRef, Page, PageKind, PortRef};
+use crate::i18n::Lang;
+use crate::model::non_empty;
+
+/// Which of the two a type page documents.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TypeKind {
+    Data,
+    Interface,
+}
+
+/// One port (or interface of a service port) using the type: its component, the port, and
+/// the type as that profile spells it.
+pub struct UseRow<'a> {
+    pub component: Linked<'a>,
+    pub port: Linked<'a>,
+    pub written: String,
+}
+
+/// The uses of one role, under a heading with a stable anchor.
+pub struct UseGroup<'a> {
+    pub anchor: &'static str,
+    pub label: &'static str,
+    pub rows: Vec<UseRow<'a>>,
+}
+
+/// Everything a type page says.
+pub struct TypeView<'a> {
+    pub kind: TypeKind,
+    pub page: &'a Page,
+    /// The index page of its kind (data types or interfaces).
+    pub index: &'a Page,
+    pub name: &'a str,
+    /// An interface some component requires and none provides.
+    pub unprovided: bool,
+    pub spellings: &'a [String],
+    pub idl_files: &'a [String],
+    /// The non-empty role groups, in order.
+    pub uses: Vec<UseGroup<'a>>,
+    /// The connectors of RT Systems carrying a data type, linked to their system.
+    pub carried_by: Vec<Linked<'a>>,
+    /// The data types whose fields (or typedef) hold this one, linked to their pages.
+    pub contained_in: Vec<Linked<'a>>,
+}
+
+fn port_rows<'a>(cat: &'a Catalog, refs: &[PortRef]) -> Vec<UseRow<'a>> {
+    refs.iter()
+        .filter_map(|r| {
+            let (ci, pi) = cat.resolve_port(r)?;
+            let c = &cat.components[ci];
+            let port = &c.profile.data_ports[pi];
+            let page = cat.component_page(ci);
+            Some(UseRow {
+                component: Linked::new(&c.display_name(), Some(page), None),
+                port: Linked::new(
+                    port.name.as_deref().unwrap_or_default(),
+                    Some(page),
+                    Some(&c.anchors.data_ports[pi]),
+                ),
+                written: non_empty(&port.type_).unwrap_or("").to_string(),
+            })
+        })
+        .collect()
+}
+
+fn interface_rows<'a>(cat: &'a Catalog, refs: &[InterfaceRef]) -> Vec<UseRow<'a>> {
+    refs.iter()
+        .filter_map(|r| {
+            let (ci, pi, ii) = cat.resolve_interface(r)?;
+            let c = &cat.components[ci];
+            let sp = &c.profile.service_ports[pi];
+            let i = &sp.interfaces[ii];
+            let page = cat.component_page(ci);
+            Some(UseRow {
+                component: Linked::new(&c.display_name(), Some(page), None),
+                port: Linked::new(
+                    &format!(
+                        "{}.{}",
+                        sp.name.as_deref().unwrap_or(""),
+                        i.name.as_deref().unwrap_or("")
+                    ),
+                    Some(page),
+                    Some(&c.anchors.interfaces[pi][ii]),
+                ),
+                written: non_empty(&i.type_).unwrap_or("").to_string(),
+            })
+        })
+        .collect()
+}
+
+fn groups<'a>(list: [(&'static str, &'static str, Vec<UseRow<'a>>); 3]) -> Vec<UseGroup<'a>> {
+    list.into_iter()
+        .filter(|(_, _, rows)| !rows.is_empty())
+        .map(|(anchor, label, rows)| UseGroup {
+            anchor,
+            label,
+            rows,
+        })
+        .collect()
+}
+
+/// The view of data type `ti` ([`Catalog::data_types`]).
+pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
+    let t = &cat.data_types[ti];
+    TypeView {
+        kind: TypeKind::Data,
+        page: cat.data_type_page(ti),
+        index: cat.site_page(PageKind::DataTypes),
+        name: &t.name,
+        unprovided: false,
+        spellings: &t.spellings,
+        idl_files: &t.idl_files,
+        uses: groups([
+            (
+                "sec-producers",
+                lang.t("producers"),
+                port_rows(cat, &t.producers),
+            ),
+            (
+                "sec-consumers",
+                lang.t("consumers"),
+                port_rows(cat, &t.consumers),
+            ),
+            (
+                "sec-others",
+                lang.t("fact_others"),
+                port_rows(cat, &t.others),
+            ),
+        ]),
+        carried_by: crate::render::system_text::carrying(cat, &t.name)
+            .into_iter()
+            .filter_map(|(text, s)| {
+                let page = cat.page_of_system(s)?;
+                Some(Linked::new(&text, Some(page), Some("data-connectors")))
+            })
+            .collect(),
+        contained_in: t
+            .contained_in
+            .iter()
+            .map(|n| {
+                Linked::new(
+                    n,
+                    cat.data_type_index(n).map(|c| cat.data_type_page(c)),
+                    None,
+                )
+            })
+            .collect(),
+    }
+}
+
+/// The view of interface `ii` ([`Catalog::interfaces`]).
+pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
+    let t = &cat.interfaces[ii];
+    TypeView {
+        kind: TypeKind::Interface,
+        page: cat.interface_page(ii),
+        index: cat.site_page(PageKind::Interfaces),
+        name: &t.name,
+        unprovided: t.is_unprovided(),
+        spellings: &t.spellings,
+        idl_files: &t.idl_files,
+        uses: groups([
+            (
+                "sec-providers",
+                lang.t("providers"),
+                interface_rows(cat, &t.providers),
+            ),
+            (
+                "sec-requirers",
+                lang.t("requirers"),
+                interface_rows(cat, &t.requirers),
+            ),
+            (
+                "sec-others",
+                lang.t("fact_others"),
+                interface_rows(cat, &t.others),
+            ),
+        ]),
+        carried_by: Vec::new(),
+        contained_in: Vec::new(),
+    }
+}
