@@ -24,6 +24,11 @@ pub struct LoadOptions {
     /// More directories of IDL files (`--idl-path`, `idl-path`), searched recursively, e.g. an
     /// OpenRTM installation's `rtm/idl`.
     pub idl_path: Vec<PathBuf>,
+    /// `[[source]]` repositories pinned at their commits, read besides (or instead of) the
+    /// input directory ([`crate::sources`]).
+    pub sources: Vec<crate::sources::Pinned>,
+    /// Read only the sources, not the input directory (sources configured, no `input`).
+    pub sources_only: bool,
 }
 
 /// `--strict` and a profile has an error: nothing was written. Carries the findings so the
@@ -51,6 +56,9 @@ pub struct Loaded {
     /// RT System profiles that could not be read (their errors are among the catalogue's
     /// diagnostics), by path relative to the input.
     pub failed_systems: Vec<String>,
+    /// Where the catalogue's files are (the input directory, the sources' temporary folder,
+    /// kept while the catalogue is in use).
+    pub roots: crate::catalog::sources::Roots,
 }
 
 /// Receives progress reports of a long build (the CLI draws a progress bar from them).
@@ -74,19 +82,58 @@ pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
 /// [`load`] with progress reports.
 pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> Result<Loaded> {
     progress.stage("finding profiles", 0);
-    let found = walk::candidates(
-        input,
-        &WalkOptions {
-            include: opts.include.clone(),
-            exclude: opts.exclude.clone(),
-            skip_dirs: opts.skip_dirs.clone(),
-        },
-    )?;
+    let walk_opts = WalkOptions {
+        include: opts.include.clone(),
+        exclude: opts.exclude.clone(),
+        skip_dirs: opts.skip_dirs.clone(),
+    };
+    let mut found = if opts.sources_only {
+        walk::Candidates::default()
+    } else {
+        walk::candidates(input, &walk_opts)?
+    };
+    let mut roots = crate::catalog::sources::Roots::local(&input_root(input));
+    let mut source_notes = Vec::new();
+    if !opts.sources.is_empty() {
+        progress.stage("reading sources", 0);
+        let m = crate::sources::materialize(&opts.sources, opts.limits.max_file_size)?;
+        let names: Vec<&str> = opts
+            .sources
+            .iter()
+            .map(|p| p.source.name.as_str())
+            .collect();
+        if let Some((_, rel)) = found
+            .files
+            .iter()
+            .chain(&found.idl)
+            .find(|(_, rel)| rel.split('/').next().is_some_and(|f| names.contains(&f)))
+        {
+            bail!(
+                "`{rel}` of the input directory `{}` is in a folder named like a source (`{}`); rename that [[source]] (`name = \"…\"`) or exclude the folder",
+                input.display(),
+                rel.split('/').next().unwrap_or_default()
+            );
+        }
+        let mut from_sources = walk::candidates(
+            m.dir.path(),
+            &WalkOptions {
+                skip_dirs: Vec::new(),
+                ..walk_opts
+            },
+        )?;
+        found.files.append(&mut from_sources.files);
+        found.idl.append(&mut from_sources.idl);
+        found.idl.sort_by(|a, b| a.1.cmp(&b.1));
+        found.skipped.append(&mut from_sources.skipped);
+        source_notes = m.notes;
+        roots.sources = opts.sources.iter().map(|p| p.info()).collect();
+        roots.sources_dir = Some(std::sync::Arc::new(m.dir));
+    }
     // Each candidate is read once: its head tells whether it is a profile (as `walk::walk`
     // decides), and a profile is parsed from the same bytes.
     progress.stage("reading profiles", found.files.len());
     // A file named on the command line is read as a profile whatever its name.
-    let named = input.is_file();
+    let named = !opts.sources_only && input.is_file();
     enum Outcome {
         NotProfile(String),
         System(crate::catalog::systems::LoadedSystem, Vec<Diagnostic>),
@@ -209,9 +256,22 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     }
     let idl = read_idl(&found.idl, opts)?;
     if files == 0 && systems.is_empty() && found.idl.is_empty() && !opts.allow_empty {
+        if opts.sources_only {
+            let names: Vec<&str> = opts
+                .sources
+                .iter()
+                .map(|p| p.source.name.as_str())
+                .collect();
+            return Err(NothingToDocument(format!(
+                "nothing to document: no RTC component profile, RT System profile or IDL file in the sources {} at their pinned commits; check each source's `path` and the --include/--exclude patterns, or pass --allow-empty",
+                names.join(", ")
+            ))
+            .into());
+        }
         return Err(NothingToDocument(nothing_found(input, &skipped, &backups)).into());
     }
     diagnostics.extend(idl.diagnostics.iter().cloned());
+    diagnostics.extend(source_notes);
     // `Catalog::build` orders the profiles by path and the diagnostics by file and position.
     let docs = crate::catalog::Documents {
         profiles,
@@ -220,17 +280,14 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         systems,
         backups,
     };
-    let catalog = Catalog::assemble(
-        docs,
-        &input_root(input),
-        &walk::exclude_matcher(&opts.exclude),
-    );
+    let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();
     Ok(Loaded {
         catalog,
         skipped,
         files,
         failed_systems,
+        roots,
     })
 }
 
@@ -457,6 +514,7 @@ pub fn build(opts: &BuildOptions) -> Result<(Loaded, BuildReport)> {
 /// [`build`] with progress reports.
 pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loaded, BuildReport)> {
     let start = Instant::now();
+    // With sources only, `input` is the configuration's folder: it is protected the same way.
     check_output_location(&opts.input, &opts.output)?;
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());

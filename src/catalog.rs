@@ -25,6 +25,7 @@ pub mod backups;
 pub mod dataflow;
 pub mod pages;
 pub mod readmes;
+pub mod sources;
 pub mod systems;
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
@@ -47,8 +48,12 @@ pub struct Component {
     /// is the component's key.
     #[serde(skip)]
     pub id: ComponentId,
-    /// Path of the profile relative to the input directory, forward slashes.
+    /// Path of the profile relative to the input directory, forward slashes; for a profile of a
+    /// `[[source]]` repository `<name>/<path in the repository>`.
     pub source: String,
+    /// The `[[source]]` repository the profile was read from (none: the input directory).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub origin: Option<crate::model::Origin>,
     pub format: SourceFormat,
     /// File-name-safe, stable identifier of the component's pages.
     pub slug: String,
@@ -483,6 +488,9 @@ pub struct Catalog {
     /// was excluded or is gone): older versions kept for the history, not documented.
     #[serde(skip)]
     pub detached_backups: Vec<backups::Backup>,
+    /// The `[[source]]` repositories read ([`Catalog::attach_sources`]), by name.
+    #[serde(skip)]
+    pub sources: Vec<crate::model::SourceInfo>,
     #[serde(skip)]
     type_index: HashMap<String, usize>,
     #[serde(skip)]
@@ -772,14 +780,15 @@ impl Catalog {
     /// `excluded` names them). The `check` findings are not added here.
     pub fn assemble(
         docs: Documents,
-        root: &std::path::Path,
+        root: &sources::Roots,
         excluded: &(dyn Fn(&str) -> bool + Sync),
     ) -> Catalog {
         let mut catalog = Catalog::build(docs.profiles, docs.diagnostics);
         catalog.attach_idl(docs.idl);
         catalog.attach_systems(docs.systems);
-        catalog.attach_backups(docs.backups, &|rel| root.join(rel).is_file());
+        catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
         catalog.attach_readmes(root, excluded);
+        catalog.attach_sources(root.sources.clone());
         catalog
     }
 }
@@ -805,6 +814,7 @@ impl Catalog {
                 qualifier,
                 readme: None,
                 backups: Vec::new(),
+                origin: None,
                 source: l.source,
                 format: l.format,
                 slug,
@@ -1059,6 +1069,7 @@ impl Catalog {
             by_id,
             systems: Vec::new(),
             detached_backups: Vec::new(),
+            sources: Vec::new(),
             type_index,
             interface_index,
         };
@@ -1102,6 +1113,7 @@ impl Catalog {
             by_id,
             systems: Vec::new(),
             detached_backups: Vec::new(),
+            sources: Vec::new(),
             type_index,
             interface_index,
         };

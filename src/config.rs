@@ -53,6 +53,9 @@ pub struct Config {
     pub source_url: Option<String>,
     /// Settings of the Markdown output.
     pub markdown: Option<MarkdownConfig>,
+    /// `[[source]]` tables: git repositories documented at a pinned commit
+    /// ([`crate::sources`]).
+    pub source: Option<Vec<crate::sources::SourceConfig>>,
 }
 
 /// `[markdown]` settings.
@@ -252,6 +255,19 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # [serve]
 # port = 3000
 # open = false
+
+# Git repositories to document besides (or, without `input`, instead of) the input directory,
+# each pinned at a commit in rtcdoc.lock (`rtcdoc update` moves them). One table per repository.
+# git: https://, ssh://, git@host:path, file:// or a local path. rev: a branch, tag or commit
+# (default: the remote's default branch). path: the sub-folder to document. name: the first
+# folder of its files in the catalogue (default: from the URL). source-url: the link of a file,
+# with {{commit}} and {{path}} (derived for GitHub and GitLab https URLs).
+# [[source]]
+# git = "https://github.com/ORG/REPO.git"
+# rev = "main"
+# path = "components"
+# name = "REPO"
+# source-url = "https://git.example.org/ORG/REPO/blob/{{commit}}/{{path}}"
 "#,
         size = d.max_file_size,
         depth = d.max_depth,
@@ -341,6 +357,19 @@ language = "ja"
 # [serve]
 # port = 3000
 # open = false
+
+# 入力ディレクトリに加えて (`input` がなければその代わりに) ドキュメントにする git リポジトリ。
+# それぞれ rtcdoc.lock のコミットに固定します (`rtcdoc update` で進めます)。リポジトリごとに 1 つの表を書きます。
+# git: https://、ssh://、git@host:path、file:// またはローカルのパス。rev: ブランチ、タグまたはコミット
+# (省略時はリモートのデフォルトブランチ)。path: ドキュメントにするサブフォルダ。name: カタログでのファイルの
+# 最初のフォルダ名 (省略時は URL から)。source-url: ファイルへのリンク。{{commit}} と {{path}} を含めます
+# (GitHub と GitLab の https の URL からは自動で作ります)。
+# [[source]]
+# git = "https://github.com/ORG/REPO.git"
+# rev = "main"
+# path = "components"
+# name = "REPO"
+# source-url = "https://git.example.org/ORG/REPO/blob/{{commit}}/{{path}}"
 "#,
         size = d.max_file_size,
         depth = d.max_depth,
@@ -474,6 +503,46 @@ mod tests {
     }
 }
 
+/// The `[[source]]` repositories of the configuration, pinned ([`crate::sources::prepare`]):
+/// at the commits of `rtcdoc.lock` beside the file, fetched into the cache as needed, the lock
+/// written when it changed. `update`: the sources to move to their current rev (`Some(&[])`:
+/// all). No sources: nothing is done (and no lock is written).
+pub fn pin_sources(
+    file: &Loaded,
+    mode: &crate::sources::Mode,
+    update: Option<&[String]>,
+) -> Result<(Vec<crate::sources::Pinned>, crate::sources::lock::Changes)> {
+    let configs = file.config.source.as_deref().unwrap_or_default();
+    let base = file.dir.clone().unwrap_or_else(|| PathBuf::from("."));
+    if configs.is_empty() {
+        if update.is_some() {
+            anyhow::bail!(
+                "{} has no [[source]] table: there is nothing to update or lock",
+                file.path.as_deref().map_or_else(
+                    || "there is no rtcdoc.toml; it".to_string(),
+                    |p| format!("`{}`", p.display())
+                )
+            );
+        }
+        return Ok((Vec::new(), Default::default()));
+    }
+    let sources = crate::sources::check_all(configs, &base).with_context(|| {
+        format!(
+            "{}",
+            file.path
+                .as_deref()
+                .unwrap_or(Path::new(FILE_NAME))
+                .display()
+        )
+    })?;
+    crate::sources::prepare(
+        &sources,
+        &base.join(crate::sources::lock::FILE_NAME),
+        mode,
+        update,
+    )
+}
+
 /// Values given on the command line; each one that is set wins over the file.
 #[derive(Debug, Clone, Default)]
 pub struct Overrides {
@@ -545,6 +614,12 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
             },
             skip_dirs: vec![],
             allow_empty: cli.allow_empty,
+            // Filled by [`pin_sources`]: fetching is not a matter of combining settings.
+            sources: Vec::new(),
+            // Sources configured and no input directory named: only the sources are read.
+            sources_only: c.source.as_ref().is_some_and(|s| !s.is_empty())
+                && cli.input.is_none()
+                && c.input.is_none(),
             idl_path: if cli.idl_path.is_empty() {
                 c.idl_path
                     .iter()

@@ -166,4 +166,9 @@ pub mod codes {
     pub const NOT_A_PROFILE: &str = "RTC012";
     /// RTCBuilder backups (`RTC.xml<timestamp>`) whose `RTC.xml` is gone.
     pub const ORPHAN_BACKUP: &str = "RTC013";
+    /// Two `[[source]]` repositories (or one and the input directory) declare the same
+    /// component id.
+    pub const DUPLICATE_ACROSS_SOURCES: &str = "RTC014";
+    /// A file of a `[[source]]` repository that is not read: a symbolic link or a submodule.
+    pub const SOURCE_SKIPPED: &str = "RTC015";
 }

@@ -94,6 +94,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("all_categories", "All categories", "すべてのカテゴリ"),
     ("all_codes", "All codes", "すべてのコード"),
     ("all_severities", "All severities", "すべての重大度"),
+    ("all_sources", "All sources", "すべてのソース"),
     ("all_vendors", "All vendors", "すべてのベンダー"),
     ("argument", "Arguments", "引数"),
     (

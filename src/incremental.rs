@@ -41,6 +41,8 @@ pub enum UpdateError {
 pub struct Workspace {
     opts: BuildOptions,
     input_root: PathBuf,
+    /// Where the catalogue's files are (with the sources' folder, kept alive).
+    roots: crate::catalog::sources::Roots,
     catalog: Catalog,
     files: BTreeMap<String, Vec<u8>>,
     /// Load diagnostics of files that are not profiles any more are dropped; these are the
@@ -221,6 +223,7 @@ impl Workspace {
         for d in loaded.catalog.diagnostics.iter().filter(|d| {
             d.code != crate::diagnostic::codes::DUPLICATE_ID
                 && d.code != crate::diagnostic::codes::ORPHAN_BACKUP
+                && d.code != crate::diagnostic::codes::DUPLICATE_ACROSS_SOURCES
                 && !crate::readme::CODES.contains(&d.code)
         }) {
             warnings.entry(d.file.clone()).or_default().push(d.clone());
@@ -231,6 +234,7 @@ impl Workspace {
         Ok(Workspace {
             opts: opts.clone(),
             input_root,
+            roots: loaded.roots,
             catalog,
             files,
             warnings,
@@ -378,7 +382,7 @@ impl Workspace {
         };
         let mut catalog = Catalog::assemble(
             docs,
-            &self.input_root,
+            &self.roots,
             &walk::exclude_matcher(&self.opts.load.exclude),
         );
         add_check_diagnostics(&mut catalog);

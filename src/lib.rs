@@ -27,6 +27,7 @@ pub mod readme;
 pub mod render;
 pub mod serve;
 pub mod slug;
+pub mod sources;
 
 pub mod types;
 pub mod value;

@@ -59,6 +59,9 @@ enum Command {
     Graph(GraphArgs),
     /// Write an `rtcdoc.toml` with every setting commented out at its default.
     Init(InitArgs),
+    /// Move the `[[source]]` repositories of rtcdoc.toml (all, or those named) to the current
+    /// commit of their `rev` and write rtcdoc.lock.
+    Update(UpdateArgs),
     /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
     Completions {
         /// The shell.
@@ -95,6 +98,45 @@ struct InputArgs {
     idl_path: Vec<PathBuf>,
 }
 
+/// How the `[[source]]` repositories of rtcdoc.toml are fetched: shared by `build`, `check`,
+/// `diff`, `serve` and `update`.
+#[derive(Args, Clone, Default)]
+struct SourceArgs {
+    /// Where the repositories are cached [default: rtcdoc/ in the user's cache directory,
+    /// e.g. ~/.cache/rtcdoc].
+    #[arg(long, value_name = "DIR")]
+    cache_dir: Option<PathBuf>,
+    /// Fail (exit 2) when rtcdoc.lock is missing or would have to change (a source added,
+    /// removed or edited).
+    #[arg(long)]
+    locked: bool,
+    /// Never fetch: use the cached repositories only.
+    #[arg(long)]
+    offline: bool,
+}
+
+impl SourceArgs {
+    fn mode(&self) -> rtcdoc::sources::Mode {
+        rtcdoc::sources::Mode {
+            cache_dir: self.cache_dir.clone(),
+            locked: self.locked,
+            offline: self.offline,
+        }
+    }
+}
+
+#[derive(Args)]
+struct UpdateArgs {
+    /// The sources to move, by name [default: all].
+    names: Vec<String>,
+    /// Configuration file [default: rtcdoc.toml in the current directory].
+    #[arg(long, value_name = "FILE")]
+    config: Option<PathBuf>,
+    /// Where the repositories are cached [default: rtcdoc/ in the user's cache directory].
+    #[arg(long, value_name = "DIR")]
+    cache_dir: Option<PathBuf>,
+}
+
 /// What the pages look like: shared by `build` and `serve`.
 #[derive(Args, Clone, Default)]
 struct SiteArgs {
@@ -129,6 +171,8 @@ struct BuildArgs {
     site: SiteArgs,
     #[command(flatten)]
     input_args: InputArgs,
+    #[command(flatten)]
+    sources: SourceArgs,
 }
 
 #[derive(Args)]
@@ -146,6 +190,8 @@ struct CheckArgs {
     explain: Option<String>,
     #[command(flatten)]
     input_args: InputArgs,
+    #[command(flatten)]
+    sources: SourceArgs,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -184,6 +230,8 @@ struct DiffArgs {
     explain: Option<String>,
     #[command(flatten)]
     input_args: InputArgs,
+    #[command(flatten)]
+    sources: SourceArgs,
 }
 
 /// `serve` renders HTML into memory: it takes no output directory, format or `--strict`.
@@ -195,6 +243,8 @@ struct ServeArgs {
     site: SiteArgs,
     #[command(flatten)]
     input_args: InputArgs,
+    #[command(flatten)]
+    sources: SourceArgs,
     /// Port on 127.0.0.1 [default: 3000; 0 picks a free one].
     #[arg(short, long)]
     port: Option<u16>,
@@ -352,6 +402,27 @@ impl Progress for Bar {
     }
 }
 
+/// The names of the `[[source]]` repositories read: their files are shown as the catalogue has
+/// them (`<name>/<path>`), not below the input directory.
+static SOURCE_NAMES: std::sync::OnceLock<Vec<String>> = std::sync::OnceLock::new();
+
+/// Pins the `[[source]]` repositories of the configuration into `load` (fetching as needed,
+/// writing rtcdoc.lock when it changed, which is reported unless `quiet`).
+fn pin(
+    file: &config::Loaded,
+    s: &SourceArgs,
+    load: &mut build::LoadOptions,
+    quiet: bool,
+) -> anyhow::Result<()> {
+    let (pinned, changes) = config::pin_sources(file, &s.mode(), None)?;
+    if !changes.is_empty() && !quiet {
+        eprintln!("rtcdoc.lock: {}", changes.describe());
+    }
+    let _ = SOURCE_NAMES.set(pinned.iter().map(|p| p.source.name.clone()).collect());
+    load.sources = pinned;
+    Ok(())
+}
+
 fn load_config(input: Option<&Path>, explicit: Option<&Path>) -> anyhow::Result<config::Loaded> {
     let cwd = PathBuf::from(".");
     let mut search: Vec<&Path> = Vec::new();
@@ -467,6 +538,18 @@ fn check_command(input: &Path, i: &InputArgs) -> String {
     cmd
 }
 
+/// `rtcdoc check` of a configuration with sources only (no input directory).
+fn check_command_sources(file: &config::Loaded, i: &InputArgs) -> String {
+    let mut cmd = check_command(Path::new("."), i);
+    if i.config.is_none() {
+        if let Some(p) = &file.path {
+            cmd = format!("{} --config {}", cmd, shell_quote(&p.to_string_lossy()));
+        }
+    }
+    cmd.replacen("rtcdoc check . ", "rtcdoc check ", 1)
+        .replacen("rtcdoc check .", "rtcdoc check", 1)
+}
+
 /// `s` as one POSIX shell word.
 fn shell_quote(s: &str) -> String {
     let plain = !s.is_empty()
@@ -521,9 +604,14 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
         Command::Build(args) => {
             let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
-            let opts = config::build_options(&file, &build_overrides(args));
+            let mut opts = config::build_options(&file, &build_overrides(args));
+            pin(&file, &args.sources, &mut opts.load, cli.quiet)?;
             let root = input_root(&opts.input);
-            let check_cmd = check_command(&opts.input, &args.input_args);
+            let check_cmd = if opts.load.sources_only {
+                check_command_sources(&file, &args.input_args)
+            } else {
+                check_command(&opts.input, &args.input_args)
+            };
             let bar = Bar::new(!cli.quiet);
             let result = build::build_with(&opts, &bar);
             bar.0.finish_and_clear();
@@ -588,6 +676,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             let cli_over = overrides(&args.input, &args.site, &args.input_args, None);
             let mut build = config::build_options(&file, &cli_over);
             build.formats = vec![Format::Html];
+            pin(&file, &args.sources, &mut build.load, cli.quiet)?;
             let serve_cfg = file.config.serve.clone().unwrap_or_default();
             let mut watch = Vec::new();
             if let Some(t) = &build.site.theme_dir {
@@ -600,10 +689,12 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             let root = input_root(&build.input);
             let check_cmd = check_command(&build.input, &args.input_args);
             let (input, explicit) = (args.input.clone(), args.input_args.config.clone());
+            let source_args = args.sources.clone();
             let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
                 let file = load_config(input.as_deref(), explicit.as_deref())?;
                 let mut b = config::build_options(&file, &cli_over);
                 b.formats = vec![Format::Html];
+                pin(&file, &source_args, &mut b.load, quiet)?;
                 Ok(b)
             });
             let handle = rtcdoc::serve::start(
@@ -674,6 +765,22 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Graph(args) => graph(args),
+        Command::Update(args) => {
+            let file = load_config(None, args.config.as_deref())?;
+            let mode = rtcdoc::sources::Mode {
+                cache_dir: args.cache_dir.clone(),
+                ..Default::default()
+            };
+            let (pinned, changes) = config::pin_sources(&file, &mode, Some(&args.names))?;
+            if !cli.quiet {
+                if changes.is_empty() {
+                    eprintln!("rtcdoc.lock is up to date ({} source(s))", pinned.len());
+                } else {
+                    eprintln!("rtcdoc.lock: {}", changes.describe());
+                }
+            }
+            Ok(ExitCode::SUCCESS)
+        }
     }
 }
 
@@ -682,6 +789,11 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
     let input = args.input.clone().unwrap_or_else(|| PathBuf::from("."));
     let file = load_config(Some(&input), args.input_args.config.as_deref())?;
     let mut opts = load_options(&file, &args.input_args);
+    if args.input.is_none() {
+        pin(&file, &SourceArgs::default(), &mut opts, true)?;
+    } else {
+        opts.sources_only = false;
+    }
     // A folder holding only a system profile is a fine input here.
     opts.allow_empty = true;
     let loaded = build::load(&input, &opts)?;
@@ -797,7 +909,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             }
         });
     }
-    let paths = if args.paths.is_empty() {
+    let mut paths = if args.paths.is_empty() {
         vec![PathBuf::from(".")]
     } else {
         args.paths.clone()
@@ -807,11 +919,23 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         paths.first().map(PathBuf::as_path),
         args.input_args.config.as_deref(),
     )?;
-    let opts = load_options(&file, &args.input_args);
+    let mut opts = load_options(&file, &args.input_args);
+    if args.paths.is_empty() {
+        // The configuration's input (its `input`, or its sources only) as `build` reads it.
+        pin(&file, &args.sources, &mut opts, cli.quiet)?;
+        if let (true, Some(d)) = (opts.sources_only, &file.dir) {
+            paths = vec![d.clone()];
+        }
+    } else {
+        opts.sources_only = false;
+    }
     let mut reports = Vec::new();
     let mut counts = (0, 0, 0);
+    // The sources' files, kept for the snippets of the human report.
+    let mut source_dirs = Vec::new();
     for p in &paths {
         let loaded = build::load(p, &opts)?;
+        source_dirs.extend(loaded.roots.sources_dir.clone());
         counts.0 += loaded.catalog.components.len();
         counts.1 += loaded.catalog.systems.len();
         counts.2 += loaded.catalog.idl.files.len();
@@ -872,7 +996,17 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 report::Verbosity::Normal
             };
             report::write_human(&mut stream, &report.diagnostics, verbosity, &mut |f| {
-                let bytes = std::fs::read(f).ok()?;
+                let first = f.split('/').next().unwrap_or_default();
+                let bytes = if SOURCE_NAMES
+                    .get()
+                    .is_some_and(|n| n.iter().any(|n| n == first))
+                {
+                    source_dirs
+                        .iter()
+                        .find_map(|d| std::fs::read(d.path().join(f)).ok())?
+                } else {
+                    std::fs::read(f).ok()?
+                };
                 String::from_utf8(bytes).ok()
             })?;
             std::io::Write::flush(&mut stream)?;
@@ -936,10 +1070,17 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     // else of the current directory), then the command line; both sides alike.
     let config_dir = match &new_spec {
         side::Spec::Local(p) => Some(p.as_path()),
-        side::Spec::Git { .. } => None,
+        side::Spec::Git { .. } | side::Spec::Source(_) => None,
     };
     let file = load_config(config_dir, args.input_args.config.as_deref())?;
-    let opts = load_options(&file, &args.input_args);
+    let mut opts = load_options(&file, &args.input_args);
+    opts.sources_only = false;
+    // `NAME` or `NAME@REV` of a `[[source]]` (not a path on disk): that source alone, at its
+    // locked commit or at REV.
+    let (old_spec, new_spec) = (
+        source_spec(&file, old_arg, old_spec, &args.sources)?,
+        source_spec(&file, new_arg, new_spec, &args.sources)?,
+    );
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;
     let result = diff::diff_with_systems(
@@ -987,8 +1128,50 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     })
 }
 
+/// A side of `rtcdoc diff` named `NAME` or `NAME@REV` of a `[[source]]` of the configuration
+/// (when no such path exists): that source pinned at its locked commit, or at REV.
+fn source_spec(
+    file: &config::Loaded,
+    arg: &str,
+    spec: rtcdoc::diff::side::Spec,
+    s: &SourceArgs,
+) -> anyhow::Result<rtcdoc::diff::side::Spec> {
+    use rtcdoc::diff::side::Spec;
+    let configs = file.config.source.as_deref().unwrap_or_default();
+    if !matches!(&spec, Spec::Local(p) if !p.exists()) || configs.is_empty() {
+        return Ok(spec);
+    }
+    let (name, rev) = match arg.split_once('@') {
+        Some((n, r)) => (n, Some(r)),
+        None => (arg, None),
+    };
+    let base = file.dir.clone().unwrap_or_else(|| PathBuf::from("."));
+    let sources = rtcdoc::sources::check_all(configs, &base)?;
+    let Some(source) = sources.iter().find(|x| x.name == name) else {
+        return Ok(spec);
+    };
+    let pinned = match rev {
+        Some(rev) => rtcdoc::sources::pin_rev(source, rev, &s.mode())?,
+        None => {
+            let (all, _) = config::pin_sources(file, &s.mode(), None)?;
+            all.into_iter()
+                .find(|p| p.source.name == name)
+                .ok_or_else(|| anyhow::anyhow!("source `{name}` was not pinned"))?
+        }
+    };
+    let _ = SOURCE_NAMES.set(sources.iter().map(|x| x.name.clone()).collect());
+    Ok(Spec::Source(Box::new(pinned)))
+}
+
 /// `root/rel` with forward slashes and without a leading `./`.
 fn display_path(root: &std::path::Path, rel: &str) -> String {
+    let first = rel.split('/').next().unwrap_or_default();
+    if SOURCE_NAMES
+        .get()
+        .is_some_and(|n| n.iter().any(|n| n == first))
+    {
+        return rel.to_string();
+    }
     let joined = root.join(rel).to_string_lossy().replace('\\', "/");
     joined.strip_prefix("./").unwrap_or(&joined).to_string()
 }

@@ -248,7 +248,7 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
 /// The files a walk considers: every `.xml`/`.yaml`/`.yml` file the patterns let through, in
 /// walk order, before their content is looked at; and the files left out on the way.
 #[derive(Default)]
-pub(crate) struct Candidates {
+pub struct Candidates {
     pub files: Vec<(PathBuf, String)>,
     /// `*.idl` files (data types and service interfaces), read by [`crate::idl`].
     pub idl: Vec<(PathBuf, String)>,
@@ -323,7 +323,7 @@ pub(crate) fn read_profile(path: &Path, limit: u64, named: bool) -> std::io::Res
 /// The traversal part of [`walk`]: which files are candidates, without reading any. The
 /// entries of the input directory are walked in parallel, each subtree in order, so the result
 /// is the same as one sorted walk of the whole tree ([`Walker::subtree`] of the input).
-pub(crate) fn candidates(input: &Path, opts: &WalkOptions) -> Result<Candidates, WalkError> {
+pub fn candidates(input: &Path, opts: &WalkOptions) -> Result<Candidates, WalkError> {
     if !input.exists() {
         return Err(WalkError::Missing(input.to_path_buf()));
     }

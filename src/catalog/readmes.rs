@@ -10,7 +10,11 @@ impl Catalog {
     /// Reads the README of every component folder (below the input at `root`), attaches it to
     /// the components of that folder and adds the findings (once per README). A README whose
     /// path `excluded` accepts (`--exclude`) is not read.
-    pub fn attach_readmes(&mut self, root: &Path, excluded: &(dyn Fn(&str) -> bool + Sync)) {
+    pub fn attach_readmes(
+        &mut self,
+        root: &super::sources::Roots,
+        excluded: &(dyn Fn(&str) -> bool + Sync),
+    ) {
         let mut folders: BTreeMap<String, Vec<usize>> = BTreeMap::new();
         for (ci, c) in self.components.iter().enumerate() {
             let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
@@ -20,7 +24,7 @@ impl Catalog {
         let read: Vec<(Vec<usize>, Option<Readme>, Vec<Diagnostic>)> = folders
             .into_par_iter()
             .map(|(dir, members)| {
-                let (readme, diags) = read_folder(root, &dir, excluded);
+                let (readme, diags) = read_folder(root.dir_of(&dir), &dir, excluded);
                 (members, readme, diags)
             })
             .collect();

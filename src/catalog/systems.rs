@@ -31,6 +31,9 @@ pub struct LoadedSystem {
 pub struct System {
     /// Path of the profile relative to the input directory, forward slashes.
     pub source: String,
+    /// The `[[source]]` repository the profile was read from (none: the input directory).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub origin: Option<crate::model::Origin>,
     pub format: SourceFormat,
     /// File-name-safe, stable identifier of the system's page (`systems/<slug>.html`).
     pub slug: String,
@@ -257,6 +260,7 @@ impl Catalog {
                 .collect();
             systems.push(System {
                 source: l.source,
+                origin: None,
                 format: l.format,
                 slug,
                 instances,

@@ -201,23 +201,26 @@ fn required(p: &Profile, s: &mut Findings) {
 /// RTC102: enumerations of the XSD.
 fn enumerations(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
-    let exact =
-        |s: &mut Findings, what: &str, v: &Option<crate::model::Text>, allowed: &[&str], pos: Pos| {
-            if let Some(v) = non_empty(v) {
-                if !allowed.contains(&v) {
-                    let hint = allowed
-                        .iter()
-                        .find(|a| a.eq_ignore_ascii_case(v))
-                        .map(|a| format!(" (write `{a}`: the value is case-sensitive)"))
-                        .unwrap_or_default();
-                    s.emit(
-                        r::INVALID_ENUM,
-                        pos,
-                        format!("{what} `{v}` is not one of {}{hint}", allowed.join(", ")),
-                    );
-                }
+    let exact = |s: &mut Findings,
+                 what: &str,
+                 v: &Option<crate::model::Text>,
+                 allowed: &[&str],
+                 pos: Pos| {
+        if let Some(v) = non_empty(v) {
+            if !allowed.contains(&v) {
+                let hint = allowed
+                    .iter()
+                    .find(|a| a.eq_ignore_ascii_case(v))
+                    .map(|a| format!(" (write `{a}`: the value is case-sensitive)"))
+                    .unwrap_or_default();
+                s.emit(
+                    r::INVALID_ENUM,
+                    pos,
+                    format!("{what} `{v}` is not one of {}{hint}", allowed.join(", ")),
+                );
             }
-        };
+        }
+    };
     exact(
         s,
         "componentType",
@@ -666,26 +669,30 @@ fn unknown_items<'a>(v: &'a str, known: &[&str]) -> Vec<&'a str> {
 /// RTC208–RTC212: componentKind, executionType and the data-port transport attributes.
 fn known_values(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
-    let check =
-        |s: &mut Findings, code, what: &str, v: &Option<crate::model::Text>, known: &[&str], pos| {
-            let Some(t) = non_empty(v) else { return };
-            let bad = unknown_items(t, known);
-            if !bad.is_empty() {
-                s.emit(
-                    code,
-                    pos,
-                    format!(
-                        "{what} `{}` is not a known value{}",
-                        bad.join("`, `"),
-                        if bad.len() == 1 && bad[0] == t {
-                            String::new()
-                        } else {
-                            format!(" (in `{t}`)")
-                        }
-                    ),
-                );
-            }
-        };
+    let check = |s: &mut Findings,
+                 code,
+                 what: &str,
+                 v: &Option<crate::model::Text>,
+                 known: &[&str],
+                 pos| {
+        let Some(t) = non_empty(v) else { return };
+        let bad = unknown_items(t, known);
+        if !bad.is_empty() {
+            s.emit(
+                code,
+                pos,
+                format!(
+                    "{what} `{}` is not a known value{}",
+                    bad.join("`, `"),
+                    if bad.len() == 1 && bad[0] == t {
+                        String::new()
+                    } else {
+                        format!(" (in `{t}`)")
+                    }
+                ),
+            );
+        }
+    };
     check(
         s,
         r::COMPONENT_KIND,

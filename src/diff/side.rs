@@ -17,6 +17,8 @@ pub enum Spec {
     Local(PathBuf),
     /// `REV:PATH` of the repository of the current directory.
     Git { rev: String, path: String },
+    /// A `[[source]]` of rtcdoc.toml at a commit (`NAME` or `NAME@REV` on the command line).
+    Source(Box<crate::sources::Pinned>),
 }
 
 impl Spec {
@@ -100,6 +102,7 @@ fn from_catalog_json(which: &str, shown: &str, path: &Path) -> Result<build::Loa
         skipped: Vec::new(),
         files,
         failed_systems: Vec::new(),
+        roots: Default::default(),
     })
 }
 
@@ -132,6 +135,19 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             Ok(Side {
                 loaded,
                 root,
+                _temp: None,
+            })
+        }
+        Spec::Source(pinned) => {
+            let mut o = opts.clone();
+            o.sources = vec![(**pinned).clone()];
+            o.sources_only = true;
+            let shown = format!("{}@{}", pinned.source.name, pinned.commit);
+            let loaded =
+                build::load(Path::new("."), &o).with_context(|| format!("{which} `{shown}`"))?;
+            Ok(Side {
+                loaded,
+                root: PathBuf::new(),
                 _temp: None,
             })
         }

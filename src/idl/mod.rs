@@ -189,6 +189,7 @@ pub fn read(files: &[SourceFile], opts: &IdlOptions) -> IdlSet {
         }
         out.push(IdlFile {
             path: f.path.clone(),
+            origin: None,
             encoding: pre.encoding.to_string(),
             doc: parsed.doc,
             includes: pre.includes,

@@ -19,6 +19,9 @@ fn is_false(b: &bool) -> bool {
 pub struct IdlFile {
     /// The path as given (for display).
     pub path: String,
+    /// The `[[source]]` repository the file was read from (none: the input directory).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub origin: Option<super::Origin>,
     /// The encoding the bytes were decoded from: `UTF-8`, `EUC-JP` or `Shift_JIS`.
     pub encoding: String,
     /// The file's own documentation: a doc comment carrying `@file`.

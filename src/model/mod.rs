@@ -17,3 +17,48 @@ pub mod idl;
 pub mod system;
 
 pub use component::*;
+
+/// Where a document came from when it was read from a `[[source]]` repository of
+/// `rtcdoc.toml` (not from the input directory): the source's name, the commit it is pinned
+/// at and the file's path in that repository.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Origin {
+    /// The source's `name`.
+    pub source: String,
+    /// The commit read (40 hex digits).
+    pub commit: String,
+    /// The file's path in the repository, `/`-separated.
+    pub path: String,
+}
+
+/// A `[[source]]` repository as a catalogue records it.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct SourceInfo {
+    pub name: String,
+    /// The repository as `rtcdoc.toml` names it.
+    pub git: String,
+    /// The branch, tag or commit asked for; `None`: the remote's default branch.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rev: Option<String>,
+    /// The commit `rev` was pinned to (`rtcdoc.lock`).
+    pub commit: String,
+    /// The sub-folder documented (`""`: the whole repository).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub path: String,
+    /// The template of a file's URL in the repository (`{commit}`, `{path}`), when known.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub source_url: Option<String>,
+}
+
+impl SourceInfo {
+    /// The origin of a catalogue path (`<name>/<path in the repository>`) of this source.
+    pub fn origin_of(&self, rel: &str) -> Option<Origin> {
+        let path = rel.strip_prefix(self.name.as_str())?.strip_prefix('/')?;
+        Some(Origin {
+            source: self.name.clone(),
+            commit: self.commit.clone(),
+            path: path.to_string(),
+        })
+    }
+}

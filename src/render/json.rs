@@ -104,6 +104,10 @@ struct Document<'a> {
     /// unreadable): documents too, so they are kept.
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     backups: &'a [crate::catalog::backups::Backup],
+    /// The `[[source]]` repositories read, each pinned at its commit (the entries read from
+    /// one carry an `origin`).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    sources: &'a [crate::model::SourceInfo],
 }
 
 fn document<'a>(
@@ -126,6 +130,7 @@ fn document<'a>(
         idl: &catalog.idl,
         systems: Keyed(systems, system_key),
         backups: &catalog.detached_backups,
+        sources: &catalog.sources,
     }
 }
 
@@ -280,6 +285,8 @@ struct DocumentRead {
     systems: Vec<(String, SystemRead)>,
     #[serde(default)]
     backups: Vec<crate::catalog::backups::Backup>,
+    #[serde(default)]
+    sources: Vec<crate::model::SourceInfo>,
 }
 
 /// An RT System profile as `catalog.json` has it: its links are made again on reading.
@@ -381,6 +388,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
             .collect(),
     );
     catalog.detached_backups = doc.backups;
+    catalog.set_origins(doc.sources);
     if page_entries(&catalog) != doc.pages {
         anyhow::bail!("{name}: the `pages` list does not match the entries' slugs: the file was edited; build it again");
     }

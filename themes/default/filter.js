@@ -1,4 +1,4 @@
-/* Index page filter: by text, category and vendor. The full list is in the HTML; this only
+/* Index page filter: by text, category, vendor and source (with [[source]] repositories). The full list is in the HTML; this only
    hides rows and empty category sections. The diagnostics page: by severity and code. */
 (function () {
   'use strict';
@@ -26,16 +26,19 @@
   var text = document.getElementById('f-text');
   var cat = document.getElementById('f-category');
   var ven = document.getElementById('f-vendor');
+  var src = document.getElementById('f-source');
   form.addEventListener('submit', function (ev) { ev.preventDefault(); });
   function apply() {
     var q = text.value.trim().toLowerCase();
     var c = cat.value;
     var v = ven.value;
+    var s = src ? src.value : '';
     document.querySelectorAll('section.category').forEach(function (sec) {
       var shown = 0;
       var catOk = !c || sec.getAttribute('data-category') === c;
       sec.querySelectorAll('tbody tr').forEach(function (tr) {
         var ok = catOk && (!v || tr.getAttribute('data-vendor') === v) &&
+          (!s || tr.getAttribute('data-source') === s) &&
           (!q || tr.textContent.toLowerCase().indexOf(q) >= 0);
         tr.hidden = !ok;
         if (ok) { shown++; }
@@ -43,7 +46,8 @@
       sec.hidden = shown === 0;
     });
   }
-  [text, cat, ven].forEach(function (e) {
+  [text, cat, ven, src].forEach(function (e) {
+    if (!e) { return; }
     e.addEventListener('input', apply);
     e.addEventListener('change', apply);
   });

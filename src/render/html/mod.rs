@@ -236,6 +236,8 @@ pub struct ComponentSummary {
     pub vendor_slug: String,
     pub category: String,
     pub category_slug: String,
+    /// The `[[source]]` the profile was read from (empty: the input directory).
+    pub source: String,
     pub summary: String,
     pub data_ports: usize,
     pub service_ports: usize,
@@ -440,6 +442,11 @@ impl<'a> Site<'a> {
             vendor_slug: facet_slug(&self.catalog.vendors, &self.vendor_of),
             category: non_empty(&b.category).unwrap_or("").to_string(),
             category_slug: facet_slug(&self.catalog.categories, &self.category_of),
+            source: c
+                .origin
+                .as_ref()
+                .map(|o| o.source.clone())
+                .unwrap_or_default(),
             summary: non_empty(&b.description)
                 .map(|d| markdown::first_line(d, 160))
                 .unwrap_or_default(),
@@ -1177,6 +1184,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             is_home => true,
             groups => ctx(&groups),
             vendors => ctx(&vendors),
+            sources => catalog.sources.iter().map(|s| s.name.clone()).collect::<Vec<_>>(),
             full_list => full,
             component_count => catalog.components.len(),
             type_count => catalog.data_types.len(),

@@ -12,6 +12,8 @@ pub struct Targets {
     /// Profile path (input-relative) → URL of its page from a component page.
     pub pages: HashMap<String, String>,
     pub source_url: Option<String>,
+    /// The `[[source]]` repositories: a file of one links into it at the pinned commit.
+    pub sources: Vec<crate::model::SourceInfo>,
     /// From a component page to the output root (`../`).
     pub root: String,
 }
@@ -33,6 +35,7 @@ impl Targets {
                 .map(|(ci, c)| (c.source.clone(), format!("{root}{}", page(ci))))
                 .collect(),
             source_url: source_url.map(str::to_string),
+            sources: catalog.sources.clone(),
             root: root.to_string(),
         }
     }
@@ -50,6 +53,12 @@ pub fn readme_html(r: &crate::readme::Readme, targets: &Arc<Targets>) -> String 
                 let to = resolve(&dir, &path)?;
                 if let Some(page) = t.pages.get(&to) {
                     return Some(page.clone());
+                }
+                let (name, in_repo) = to.split_once('/').unwrap_or(("", ""));
+                if let Some(s) = t.sources.iter().find(|s| s.name == name) {
+                    let tmpl = s.source_url.as_deref()?;
+                    return super::repo::pinned_source_url(tmpl, &s.commit, in_repo)
+                        .map(|u| format!("{u}{suffix}"));
                 }
                 let tmpl = t.source_url.as_deref()?;
                 super::repo::source_url(tmpl, &to).map(|u| format!("{u}{suffix}"))

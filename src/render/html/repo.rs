@@ -25,6 +25,15 @@ pub fn source_url(template: &str, path: &str) -> Option<String> {
     Some(t.replace("{path}", enc.trim_start_matches('/')))
 }
 
+/// The URL of a file of a `[[source]]` repository: `template` with `{commit}` (40 hex digits,
+/// else no link) and `{path}` (the path in the repository) replaced as [`source_url`] does.
+pub fn pinned_source_url(template: &str, commit: &str, path: &str) -> Option<String> {
+    if commit.len() != 40 || !commit.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return None;
+    }
+    source_url(&template.replace("{commit}", commit), path)
+}
+
 /// The HTML of a "Source" value linked to `url` (both escaped).
 pub fn source_link_html(url: &str, path: &str) -> String {
     format!(

@@ -265,6 +265,9 @@ fn component_entry(catalog: &Catalog, ci: usize) -> serde_json::Value {
     add(&mut g.name, c.qualifier.as_deref());
     add(&mut g.text, non_empty(&b.category));
     add(&mut g.text, non_empty(&b.vendor));
+    // The `[[source]]` it was read from: searching its name finds its components.
+    let source = c.origin.as_ref().map(|o| o.source.as_str());
+    add(&mut g.text, source);
     add(&mut g.text, non_empty(&b.description));
     // Everything else the page shows as prose: the abstract (for many RTCBuilder users the
     // only Japanese summary), the Document Profile, the comment, the lifecycle's documentation.
@@ -322,7 +325,7 @@ fn component_entry(catalog: &Catalog, ci: usize) -> serde_json::Value {
     let summary = non_empty(&b.description)
         .map(|d| super::markdown::first_line(d, 90))
         .unwrap_or_default();
-    let meta = [non_empty(&b.category), non_empty(&b.vendor)]
+    let meta = [non_empty(&b.category), non_empty(&b.vendor), source]
         .into_iter()
         .flatten()
         .collect::<Vec<_>>()

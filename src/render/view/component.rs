@@ -129,7 +129,7 @@ fn short(t: &Option<model::Text>) -> String {
 
 /// Builds the view of component `ci`. `category` and `vendor` are its facets
 /// ([`Catalog::category_of_each`], [`Catalog::vendor_of_each`]); `source_url` the
-/// `source-url` template.
+/// `source-url` template (a component of a `[[source]]` uses its source's instead).
 pub fn component_view<'a>(
     cat: &'a Catalog,
     ci: usize,
@@ -297,7 +297,17 @@ pub fn component_view<'a>(
         lead: non_empty(&p.basic_info.description),
         basic: facts::basic_info(c, lang),
         vendor: cat.vendors.get(vendor).map(|_| cat.vendor_page(vendor)),
-        source_url: source_url.and_then(|t| crate::render::html::repo::source_url(t, &c.source)),
+        // A profile of a `[[source]]` repository links into that repository at the pinned
+        // commit, with the source's template.
+        source_url: match &c.origin {
+            Some(o) => cat
+                .sources
+                .iter()
+                .find(|s| s.name == o.source)
+                .and_then(|s| s.source_url.as_deref())
+                .and_then(|t| crate::render::html::repo::pinned_source_url(t, &o.commit, &o.path)),
+            None => source_url.and_then(|t| crate::render::html::repo::source_url(t, &c.source)),
+        },
         document: p
             .basic_info
             .doc

@@ -1,0 +1,941 @@
+//! `[[source]]` repositories of `rtcdoc.toml`: documented at a pinned commit.
+//!
+//! - **Configuration** ([`SourceConfig`]): `git` (https, ssh, `user@host:path`, `file://` or a
+//!   local path), `rev`, `path`, `name`, `source-url`. Anything else is refused before git
+//!   runs ([`check_url`], [`check_rev`]): a URL or rev starting with `-`, transport helpers
+//!   (`ext::`, `fd::`, any `x::`), `http://`, `git://`.
+//! - **Cache** ([`cache_dir`]): one bare mirror per URL, `<cache>/<name>-<hash>.git`, filled
+//!   with `git fetch` (branches, tags and the remote's `HEAD`).
+//! - **Lock** ([`lock`]): `rtcdoc.lock` beside `rtcdoc.toml`, every source's URL, rev and
+//!   commit; [`prepare`] uses the locked commits, resolves the new or edited sources and writes
+//!   the lock; `--locked` refuses to change it; `--offline` never fetches.
+//! - **Reading** ([`materialize`]): `git ls-tree -r -z --long` of the pinned commit and one
+//!   `git cat-file --batch` for the blobs rtcdoc can read (profiles, IDL, READMEs and their
+//!   images), written below a temporary folder as `<name>/<path in the repository>`. Git
+//!   objects only: no checkout, so no hooks, filters or submodules run; symbolic links and
+//!   submodules are reported, not followed; a file above the size limit is cut at the limit
+//!   plus one byte, so that it is reported as too large like one on disk.
+//!
+//! The `git` command is used (as `rtcdoc diff REV:PATH` does) rather than a Rust git library:
+//! it is the reference implementation of every transport and of the user's credentials (ssh
+//! agent, credential helpers, `insteadOf`), and it adds nothing to the build. It runs without
+//! the system configuration, without hooks, without a terminal prompt and with only the
+//! `file`, `https` and `ssh` protocols allowed (`GIT_ALLOW_PROTOCOL`).
+
+pub mod lock;
+
+use crate::diagnostic::{codes, Diagnostic};
+use crate::model::SourceInfo;
+use anyhow::{bail, Context, Result};
+use serde::Deserialize;
+use std::io::{BufRead, Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+/// A `[[source]]` table of `rtcdoc.toml`, as written.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct SourceConfig {
+    /// The repository: an https or ssh URL, `git@host:path`, a `file://` URL or a local path.
+    pub git: String,
+    /// A branch, tag or commit; default the remote's default branch.
+    pub rev: Option<String>,
+    /// The sub-folder to document; default the whole repository.
+    pub path: Option<String>,
+    /// A label (the first folder of the source's files in the catalogue); default from the URL.
+    pub name: Option<String>,
+    /// The URL template of a file in the repository, with `{commit}` and `{path}`; derived for
+    /// GitHub and GitLab https URLs.
+    pub source_url: Option<String>,
+}
+
+/// A source, checked: what to fetch and what to call it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Source {
+    pub name: String,
+    /// As written in `rtcdoc.toml` (and in the lock).
+    pub git: String,
+    /// What git is given: a local path made absolute against the configuration's folder.
+    pub url: String,
+    pub rev: Option<String>,
+    /// `/`-separated, without leading or trailing `/`; `""` is the whole repository.
+    pub path: String,
+    pub source_url: Option<String>,
+}
+
+/// A source pinned at a commit, its objects in the cache.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Pinned {
+    pub source: Source,
+    pub commit: String,
+    /// The bare mirror holding the commit.
+    pub mirror: PathBuf,
+}
+
+impl Pinned {
+    /// The record of the catalogue.
+    pub fn info(&self) -> SourceInfo {
+        SourceInfo {
+            name: self.source.name.clone(),
+            git: self.source.git.clone(),
+            rev: self.source.rev.clone(),
+            commit: self.commit.clone(),
+            path: self.source.path.clone(),
+            source_url: self
+                .source
+                .source_url
+                .clone()
+                .or_else(|| derived_source_url(&self.source.git)),
+        }
+    }
+}
+
+/// How sources are fetched: `--cache-dir`, `--locked`, `--offline`.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Mode {
+    pub cache_dir: Option<PathBuf>,
+    pub locked: bool,
+    pub offline: bool,
+}
+
+/// The sources of a configuration, checked: names unique, URLs, revs and paths safe. `base`
+/// is the configuration's folder (local paths are relative to it).
+pub fn check_all(configs: &[SourceConfig], base: &Path) -> Result<Vec<Source>> {
+    let mut out: Vec<Source> = Vec::with_capacity(configs.len());
+    for (i, c) in configs.iter().enumerate() {
+        let which = format!("[[source]] #{} (`{}`)", i + 1, c.git);
+        let url = check_url(&c.git, base).with_context(|| which.clone())?;
+        if let Some(rev) = &c.rev {
+            check_rev(rev).with_context(|| which.clone())?;
+        }
+        let path = check_path(c.path.as_deref().unwrap_or("")).with_context(|| which.clone())?;
+        let name = match &c.name {
+            Some(n) => n.clone(),
+            None => name_from_url(&c.git),
+        };
+        check_name(&name).with_context(|| which.clone())?;
+        if let Some(other) = out.iter().find(|s| s.name == name) {
+            bail!(
+                "{which}: the name `{name}` is taken by the source `{}`; give one of them another `name = \"…\"`",
+                other.git
+            );
+        }
+        if let Some(t) = &c.source_url {
+            if !(t.starts_with("https://") || t.starts_with("http://")) || !t.contains("{path}") {
+                bail!("{which}: source-url `{t}` must be an http(s) URL with `{{path}}` (and usually `{{commit}}`)");
+            }
+        }
+        out.push(Source {
+            name,
+            git: c.git.clone(),
+            url,
+            rev: c.rev.clone(),
+            path,
+            source_url: c.source_url.clone(),
+        });
+    }
+    Ok(out)
+}
+
+/// What git is given for `git` (a URL as is, a local path made absolute), or why it is refused.
+pub fn check_url(git: &str, base: &Path) -> Result<String> {
+    let g = git.trim();
+    if g.is_empty() {
+        bail!("`git` is empty; give the repository's URL or path");
+    }
+    if g != git || g.chars().any(char::is_control) {
+        bail!("`git = {git:?}` has white space or control characters around or in it");
+    }
+    if g.starts_with('-') {
+        bail!("`git = \"{g}\"` starts with `-`: rtcdoc never passes options to git; give a URL (https://, ssh://, git@host:path, file://) or a path");
+    }
+    if let Some((scheme, _)) = g.split_once("::") {
+        bail!("`git = \"{g}\"` uses the git transport `{scheme}::`, which runs commands; rtcdoc reads https://, ssh://, git@host:path, file:// and local paths only");
+    }
+    if let Some((scheme, rest)) = g.split_once("://") {
+        return match scheme.to_ascii_lowercase().as_str() {
+            "https" | "ssh" if !rest.is_empty() => Ok(g.to_string()),
+            "file" if !rest.is_empty() => Ok(g.to_string()),
+            s => bail!("`git = \"{g}\"`: the transport `{s}://` is not supported; rtcdoc reads https://, ssh://, git@host:path, file:// and local paths only"),
+        };
+    }
+    // scp-like `[user@]host:path` (not a Windows drive `C:\…`).
+    if let Some((host, path)) = g.split_once(':') {
+        let drive = host.len() == 1 && host.chars().all(|c| c.is_ascii_alphabetic());
+        if !drive && !host.contains('/') && !host.contains('\\') {
+            if host.is_empty() || path.is_empty() || host.ends_with('@') {
+                bail!("`git = \"{g}\"` is neither a URL nor a path; write git@host:path, ssh://host/path, https://… or a path");
+            }
+            return Ok(g.to_string());
+        }
+    }
+    let p = Path::new(g);
+    let abs = if p.is_absolute() {
+        p.to_path_buf()
+    } else {
+        base.join(p)
+    };
+    Ok(abs.to_string_lossy().into_owned())
+}
+
+/// A rev rtcdoc accepts: a branch, tag or commit name, never an option or a revision
+/// expression.
+pub fn check_rev(rev: &str) -> Result<()> {
+    if rev.is_empty() {
+        bail!("`rev` is empty; leave it out for the remote's default branch");
+    }
+    if rev.starts_with('-') {
+        bail!("`rev = \"{rev}\"` starts with `-`: a branch, tag or commit never does, and rtcdoc does not pass options to git");
+    }
+    let bad = rev.chars().any(|c| {
+        c.is_control() || c.is_whitespace() || matches!(c, '~' | '^' | ':' | '?' | '*' | '[' | '\\')
+    });
+    if bad
+        || rev.contains("..")
+        || rev.contains("@{")
+        || rev.ends_with('/')
+        || rev.ends_with(".lock")
+    {
+        bail!("`rev = \"{rev}\"` is not a branch, tag or commit name (no spaces, `~ ^ : ? * [ \\`, `..` or `@{{`); name a branch (`main`), a tag (`v1.2.0`) or a commit");
+    }
+    Ok(())
+}
+
+/// `path` checked and normalised: relative, inside the repository.
+fn check_path(path: &str) -> Result<String> {
+    let p = path.trim_matches('/');
+    if path.starts_with('/') || path.contains('\\') {
+        bail!("`path = \"{path}\"` must be relative to the repository's root, with `/`");
+    }
+    let mut parts = Vec::new();
+    for seg in p.split('/') {
+        match seg {
+            "" | "." => {}
+            ".." => bail!("`path = \"{path}\"` leaves the repository (`..`)"),
+            s if s.chars().any(char::is_control) => {
+                bail!("`path = {path:?}` has control characters")
+            }
+            s => parts.push(s),
+        }
+    }
+    Ok(parts.join("/"))
+}
+
+/// A source's default name: the last segment of its URL or path, without `.git`.
+pub fn name_from_url(git: &str) -> String {
+    let trimmed = git.trim_end_matches(['/', '\\']);
+    let last = trimmed.rsplit(['/', '\\', ':']).next().unwrap_or(trimmed);
+    let last = last.strip_suffix(".git").unwrap_or(last);
+    let name: String = last
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    let name = name.trim_start_matches(['.', '-']).to_string();
+    if name.is_empty() {
+        "source".into()
+    } else {
+        name
+    }
+}
+
+fn check_name(name: &str) -> Result<()> {
+    let ok = !name.is_empty()
+        && !name.starts_with(['.', '-'])
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'));
+    if !ok {
+        bail!("the source name `{name}` must be letters, digits, `-`, `_` or `.`, not starting with `.` or `-` (it is the first folder of the source's files); set `name = \"…\"`");
+    }
+    Ok(())
+}
+
+/// The file URL template of a GitHub or GitLab repository (https or `git@` form).
+pub fn derived_source_url(git: &str) -> Option<String> {
+    let g = git.trim().trim_end_matches('/');
+    let g = g.strip_suffix(".git").unwrap_or(g);
+    let (host, repo) = if let Some(rest) = g.strip_prefix("https://") {
+        rest.split_once('/')?
+    } else if let Some(rest) = g.strip_prefix("git@") {
+        rest.split_once(':')?
+    } else {
+        return None;
+    };
+    let host = host.rsplit('@').next()?.to_ascii_lowercase();
+    let ok = |s: &str| {
+        !s.is_empty()
+            && s.split('/').all(|p| {
+                !p.is_empty()
+                    && p != ".."
+                    && p.chars()
+                        .all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'))
+            })
+    };
+    if !ok(repo) {
+        return None;
+    }
+    match host.as_str() {
+        "github.com" if repo.split('/').count() == 2 => Some(format!(
+            "https://github.com/{repo}/blob/{{commit}}/{{path}}"
+        )),
+        "gitlab.com" if repo.split('/').count() >= 2 => Some(format!(
+            "https://gitlab.com/{repo}/-/blob/{{commit}}/{{path}}"
+        )),
+        _ => None,
+    }
+}
+
+/// The default cache: `$XDG_CACHE_HOME/rtcdoc`, `~/.cache/rtcdoc` (Linux), `~/Library/Caches/
+/// rtcdoc` (macOS), `%LOCALAPPDATA%\rtcdoc\cache` (Windows).
+pub fn default_cache_dir() -> Result<PathBuf> {
+    let env = |k: &str| {
+        std::env::var_os(k)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    };
+    let dir = if cfg!(windows) {
+        env("LOCALAPPDATA").map(|d| d.join("rtcdoc").join("cache"))
+    } else if cfg!(target_os = "macos") {
+        env("HOME").map(|h| h.join("Library/Caches/rtcdoc"))
+    } else {
+        env("XDG_CACHE_HOME")
+            .map(|d| d.join("rtcdoc"))
+            .or_else(|| env("HOME").map(|h| h.join(".cache/rtcdoc")))
+    };
+    dir.context("no cache directory: HOME (or XDG_CACHE_HOME, LOCALAPPDATA) is not set; pass --cache-dir DIR")
+}
+
+/// The cache directory of `mode`.
+pub fn cache_dir(mode: &Mode) -> Result<PathBuf> {
+    match &mode.cache_dir {
+        Some(d) => Ok(d.clone()),
+        None => default_cache_dir(),
+    }
+}
+
+/// FNV-1a, 64 bits: a stable name for a URL's mirror (not a security boundary).
+fn fnv(s: &str) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in s.bytes() {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0100_0000_01b3);
+    }
+    h
+}
+
+/// The bare mirror of a source below `cache`.
+pub fn mirror_path(cache: &Path, s: &Source) -> PathBuf {
+    cache.join(format!(
+        "{}-{:016x}.git",
+        name_from_url(&s.git),
+        fnv(&s.url)
+    ))
+}
+
+/// `git` with the safe environment: no system configuration, no prompt, no hooks, only the
+/// `file`, `https` and `ssh` protocols, nothing of a repository around the current directory.
+fn git_command(git_dir: Option<&Path>) -> Command {
+    let mut c = Command::new("git");
+    for k in [
+        "GIT_DIR",
+        "GIT_WORK_TREE",
+        "GIT_INDEX_FILE",
+        "GIT_OBJECT_DIRECTORY",
+        "GIT_ALTERNATE_OBJECT_DIRECTORIES",
+        "GIT_NAMESPACE",
+        "GIT_CEILING_DIRECTORIES",
+    ] {
+        c.env_remove(k);
+    }
+    c.env("GIT_CONFIG_NOSYSTEM", "1")
+        .env("GIT_TERMINAL_PROMPT", "0")
+        .env("GIT_ALLOW_PROTOCOL", "file:https:ssh")
+        .env("GIT_PROTOCOL_FROM_USER", "0")
+        .stdin(Stdio::null());
+    if std::env::var_os("GIT_SSH_COMMAND").is_none() && std::env::var_os("GIT_SSH").is_none() {
+        c.env("GIT_SSH_COMMAND", "ssh -o BatchMode=yes");
+    }
+    c.args([
+        "-c",
+        "core.hooksPath=/dev/null",
+        "-c",
+        "core.fsmonitor=false",
+        "-c",
+        "protocol.ext.allow=never",
+        "-c",
+        "protocol.fd.allow=never",
+        "-c",
+        "submodule.recurse=false",
+        "-c",
+        "fetch.recurseSubmodules=false",
+    ]);
+    if let Some(d) = git_dir {
+        c.arg("--git-dir").arg(d);
+    }
+    c
+}
+
+fn run(mut c: Command) -> Result<std::process::Output> {
+    c.output()
+        .context("cannot run `git` ([[source]] repositories need git on the PATH)")
+}
+
+fn first_error_line(out: &std::process::Output) -> String {
+    let text = String::from_utf8_lossy(&out.stderr);
+    text.lines()
+        .map(str::trim)
+        .find(|l| l.starts_with("fatal:") || l.starts_with("error:"))
+        .or_else(|| text.lines().map(str::trim).find(|l| !l.is_empty()))
+        .unwrap_or("no message")
+        .to_string()
+}
+
+/// The commit `what` names in `mirror`, if any (`what` never starts with `-`).
+fn rev_parse(mirror: &Path, what: &str) -> Result<Option<String>> {
+    let mut c = git_command(Some(mirror));
+    c.args(["rev-parse", "--verify", "--quiet", "--end-of-options"])
+        .arg(format!("{what}^{{commit}}"));
+    let out = run(c)?;
+    Ok(out
+        .status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+        .filter(|s| s.len() == 40 && s.bytes().all(|b| b.is_ascii_hexdigit())))
+}
+
+/// The commit `rev` names in the mirror: a branch, else a tag, else a commit (full or
+/// abbreviated hex); `None`: the remote's default branch.
+fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
+    let Some(rev) = rev else {
+        return rev_parse(mirror, DEFAULT_REF);
+    };
+    for r in [format!("refs/heads/{rev}"), format!("refs/tags/{rev}")] {
+        if let Some(c) = rev_parse(mirror, &r)? {
+            return Ok(Some(c));
+        }
+    }
+    if rev.len() >= 7 && rev.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return rev_parse(mirror, rev);
+    }
+    Ok(None)
+}
+
+/// Where the remote's default branch is kept in a mirror.
+const DEFAULT_REF: &str = "refs/rtcdoc/default";
+
+fn is_mirror(mirror: &Path) -> bool {
+    mirror.join("HEAD").is_file() && mirror.join("objects").is_dir()
+}
+
+/// Fetches a source's branches, tags and default branch into its mirror (created if needed);
+/// `commit`, when given and still missing, is asked for by name.
+fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
+    if !is_mirror(mirror) {
+        if let Some(parent) = mirror.parent() {
+            std::fs::create_dir_all(parent).with_context(|| {
+                format!("cannot create the cache directory `{}`", parent.display())
+            })?;
+        }
+        let mut c = git_command(None);
+        c.args(["init", "--bare", "--quiet"]).arg(mirror);
+        let out = run(c)?;
+        if !out.status.success() {
+            bail!(
+                "cannot create the cache of source `{}` in `{}`: {}",
+                s.name,
+                mirror.display(),
+                first_error_line(&out)
+            );
+        }
+    }
+    let mut specs = vec![
+        "+refs/heads/*:refs/heads/*".to_string(),
+        "+refs/tags/*:refs/tags/*".to_string(),
+    ];
+    if s.rev.is_none() {
+        specs.push(format!("+HEAD:{DEFAULT_REF}"));
+    }
+    let mut c = git_command(Some(mirror));
+    c.args([
+        "fetch",
+        "--quiet",
+        "--prune",
+        // A shallow clone's refs are taken (the mirror becomes shallow; a commit it lacks is
+        // reported with a note saying why) rather than silently rejected.
+        "--update-shallow",
+        "--no-tags",
+        "--no-write-fetch-head",
+        "--end-of-options",
+    ])
+    .arg(&s.url)
+    .args(&specs);
+    let out = run(c)?;
+    if !out.status.success() {
+        bail!(
+            "source `{}`: git cannot fetch `{}` ({}); check the URL or path and your access to it (ssh key, token), or build with --offline from the cache",
+            s.name,
+            s.git,
+            first_error_line(&out)
+        );
+    }
+    if let Some(commit) = commit {
+        if rev_parse(mirror, commit)?.is_none() {
+            // Not on a branch or tag any more: ask for it by name (servers allow it when it
+            // is reachable; otherwise the caller reports it missing).
+            let mut c = git_command(Some(mirror));
+            c.args([
+                "fetch",
+                "--quiet",
+                "--no-tags",
+                "--no-write-fetch-head",
+                "--end-of-options",
+            ])
+            .arg(&s.url)
+            .arg(commit);
+            let _ = run(c)?;
+        }
+    }
+    Ok(())
+}
+
+/// A hint for a missing commit or rev: a shallow mirror (fetched from a shallow clone) lacks
+/// history.
+fn shallow_note(mirror: &Path) -> &'static str {
+    if mirror.join("shallow").is_file() {
+        " (the repository fetched from is a shallow clone without that history: fetch it whole with `git fetch --unshallow` there, or use the full repository's URL)"
+    } else {
+        ""
+    }
+}
+
+/// Pins every source: locked commits where the lock has the source unchanged, the current
+/// commit of `rev` for the others (and every source named in `update`, all when it is
+/// `Some(&[])`); fetches what the cache lacks (never with `--offline`) and writes the lock when
+/// it changed (refused with `--locked`). `lock_path` is `rtcdoc.lock` beside the configuration.
+pub fn prepare(
+    sources: &[Source],
+    lock_path: &Path,
+    mode: &Mode,
+    update: Option<&[String]>,
+) -> Result<(Vec<Pinned>, lock::Changes)> {
+    let old = lock::read(lock_path)?;
+    if let Some(names) = update {
+        for n in names {
+            if !sources.iter().any(|s| &s.name == n) {
+                let all: Vec<&str> = sources.iter().map(|s| s.name.as_str()).collect();
+                bail!(
+                    "no source is named `{n}`; the sources are: {}",
+                    if all.is_empty() {
+                        "(none)".to_string()
+                    } else {
+                        all.join(", ")
+                    }
+                );
+            }
+        }
+    }
+    let wanted_update = |s: &Source| match update {
+        None => false,
+        Some([]) => true,
+        Some(names) => names.contains(&s.name),
+    };
+    let cache = cache_dir(mode)?;
+    let mut pinned = Vec::with_capacity(sources.len());
+    let mut new_lock = lock::Lock::default();
+    for s in sources {
+        let locked = old
+            .as_ref()
+            .and_then(|l| l.find(&s.name))
+            .filter(|e| e.git == s.git && e.rev == s.rev)
+            .map(|e| e.commit.clone());
+        if mode.locked {
+            if old.is_none() {
+                bail!(
+                    "--locked: there is no `{}`; run `rtcdoc update` (or a build without --locked) to write it, and commit it",
+                    lock_path.display()
+                );
+            }
+            if locked.is_none() || update.is_some() {
+                bail!(
+                    "--locked: `{}` would have to change: the source `{}` is new or its `git` or `rev` was edited; run `rtcdoc update {}` and commit the lock",
+                    lock_path.display(),
+                    s.name,
+                    s.name
+                );
+            }
+        }
+        let mirror = mirror_path(&cache, s);
+        let commit = match locked.filter(|_| !wanted_update(s)) {
+            Some(commit) => {
+                if rev_parse(&mirror, &commit)?.is_none() {
+                    if mode.offline {
+                        bail!(
+                            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `rtcdoc update`) to fill the cache",
+                            s.name,
+                            mirror.display()
+                        );
+                    }
+                    fetch(s, &mirror, Some(&commit))?;
+                    if rev_parse(&mirror, &commit)?.is_none() {
+                        bail!(
+                            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `rtcdoc update {}` to move to the current `{}`",
+                            s.name,
+                            s.git,
+                            lock_path.display(),
+                            shallow_note(&mirror),
+                            s.name,
+                            s.rev.as_deref().unwrap_or("default branch")
+                        );
+                    }
+                }
+                commit
+            }
+            None => {
+                if mode.offline {
+                    if !is_mirror(&mirror) {
+                        bail!(
+                            "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `rtcdoc update`) to fill the cache",
+                            s.name,
+                            s.git,
+                            mirror.display()
+                        );
+                    }
+                } else {
+                    fetch(s, &mirror, None)?;
+                }
+                match resolve(&mirror, s.rev.as_deref())? {
+                    Some(c) => c,
+                    None => match &s.rev {
+                        Some(rev) => bail!(
+                            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `git ls-remote {}` and fix `rev` in rtcdoc.toml",
+                            s.name,
+                            s.git,
+                            shallow_note(&mirror),
+                            if mode.offline { " (as cached: run without --offline to fetch)" } else { "" },
+                            s.git
+                        ),
+                        None => bail!(
+                            "source `{}`: `{}` has no default branch (an empty repository?); push a commit or set `rev`",
+                            s.name,
+                            s.git
+                        ),
+                    },
+                }
+            }
+        };
+        new_lock.sources.push(lock::Entry {
+            name: s.name.clone(),
+            git: s.git.clone(),
+            rev: s.rev.clone(),
+            commit: commit.clone(),
+        });
+        pinned.push(Pinned {
+            source: s.clone(),
+            commit,
+            mirror,
+        });
+    }
+    new_lock.sort();
+    let changes = lock::changes(old.as_ref(), &new_lock);
+    if old.as_ref() != Some(&new_lock) {
+        if mode.locked {
+            bail!(
+                "--locked: `{}` would have to change ({}); run `rtcdoc update` and commit the lock",
+                lock_path.display(),
+                changes.describe()
+            );
+        }
+        lock::write(lock_path, &new_lock)?;
+    }
+    Ok((pinned, changes))
+}
+
+/// One source at `rev` (a branch, tag or commit), whatever the lock says: for `rtcdoc diff
+/// NAME@REV`. Fetched unless `--offline`; the lock is neither read nor written.
+pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
+    check_rev(rev).with_context(|| format!("`{}@{rev}`", s.name))?;
+    let mut s = s.clone();
+    s.rev = Some(rev.to_string());
+    let mirror = mirror_path(&cache_dir(mode)?, &s);
+    if mode.offline {
+        if !is_mirror(&mirror) {
+            bail!(
+                "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline to fill the cache",
+                s.name,
+                s.git,
+                mirror.display()
+            );
+        }
+    } else {
+        fetch(&s, &mirror, None)?;
+    }
+    let Some(commit) = resolve(&mirror, Some(rev))? else {
+        bail!(
+            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `git ls-remote {}`",
+            s.name,
+            s.git,
+            shallow_note(&mirror),
+            s.git
+        );
+    };
+    Ok(Pinned {
+        source: s,
+        commit,
+        mirror,
+    })
+}
+
+/// The files of the pinned sources, below a temporary folder.
+pub struct Materialized {
+    pub dir: tempfile::TempDir,
+    /// Symbolic links and submodules not followed (RTC015).
+    pub notes: Vec<Diagnostic>,
+}
+
+/// Whether rtcdoc may read a repository file: a profile-like or IDL file, a README, an image.
+fn wanted(rel: &str) -> bool {
+    let p = Path::new(rel);
+    let ext = p
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let ext = ext.as_deref().unwrap_or("");
+    ext == "idl"
+        || crate::walk::is_document_extension(ext)
+        || crate::walk::named_like_profile(p)
+        || crate::readme::is_readme_path(p)
+        || crate::readme::IMAGE_EXTENSIONS.contains(&ext)
+        || crate::walk::is_backup(p)
+}
+
+/// A repository path safe to write below the temporary folder.
+fn safe(rel: &str) -> bool {
+    !rel.is_empty()
+        && rel.split('/').all(|seg| {
+            !seg.is_empty()
+                && seg != "."
+                && seg != ".."
+                && !seg.contains('\\')
+                && !seg.contains('\0')
+        })
+}
+
+/// Writes the readable files of every pinned source (at its commit, below its `path`) into a
+/// new temporary folder as `<name>/<path in the repository>`. `max_file_size` bounds what is
+/// kept of each file (one byte more, so that the readers report it as too large).
+pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized> {
+    let dir = tempfile::Builder::new()
+        .prefix("rtcdoc-sources-")
+        .tempdir()
+        .context("cannot create a temporary directory for the sources")?;
+    let mut notes = Vec::new();
+    for p in pinned {
+        let s = &p.source;
+        let root = dir.path().join(&s.name);
+        std::fs::create_dir_all(&root)?;
+        let mut c = git_command(Some(&p.mirror));
+        c.args([
+            "ls-tree",
+            "-r",
+            "-z",
+            "--long",
+            "--full-tree",
+            "--end-of-options",
+        ])
+        .arg(&p.commit);
+        if !s.path.is_empty() {
+            c.arg("--").arg(&s.path);
+        }
+        let out = run(c)?;
+        if !out.status.success() {
+            bail!(
+                "source `{}`: cannot list commit {} ({}); delete the cache `{}` and build again",
+                s.name,
+                p.commit,
+                first_error_line(&out),
+                p.mirror.display()
+            );
+        }
+        let mut blobs = Vec::new();
+        let mut any = false;
+        for entry in out.stdout.split(|b| *b == 0).filter(|e| !e.is_empty()) {
+            let entry = String::from_utf8_lossy(entry);
+            let Some((meta, rel)) = entry.split_once('\t') else {
+                continue;
+            };
+            any = true;
+            let mut meta = meta.split_whitespace();
+            let (mode, ty, sha, size) = (meta.next(), meta.next(), meta.next(), meta.next());
+            let shown = format!("{}/{rel}", s.name);
+            if !wanted(rel) || !safe(rel) {
+                continue;
+            }
+            match (mode, ty) {
+                (Some("100644" | "100755"), Some("blob")) => {
+                    if let (Some(sha), Some(size)) = (sha, size.and_then(|n| n.parse::<u64>().ok()))
+                    {
+                        blobs.push((sha.to_string(), size, rel.to_string()));
+                    }
+                }
+                (Some("120000"), _) => notes.push(
+                    Diagnostic::info(
+                        codes::SOURCE_SKIPPED,
+                        &shown,
+                        "a symbolic link in the repository; not followed (as in a directory)",
+                    )
+                    .with_hint("commit the file itself instead of a link"),
+                ),
+                (_, Some("commit")) => notes.push(
+                    Diagnostic::info(
+                        codes::SOURCE_SKIPPED,
+                        &shown,
+                        "a submodule; its files are not read",
+                    )
+                    .with_hint("add the submodule's repository as a [[source]] of its own"),
+                ),
+                _ => {}
+            }
+        }
+        if !any && !s.path.is_empty() {
+            bail!(
+                "source `{}`: no folder `{}` at commit {} of `{}`; fix `path` in rtcdoc.toml (relative to the repository's root)",
+                s.name,
+                s.path,
+                p.commit,
+                s.git
+            );
+        }
+        write_blobs(&p.mirror, &blobs, &root, max_file_size).with_context(|| {
+            format!("source `{}`: cannot read its files from the cache", s.name)
+        })?;
+    }
+    Ok(Materialized { dir, notes })
+}
+
+/// Writes the blobs `(sha, size, path)` below `dest` with one `git cat-file --batch`, each cut
+/// at `max + 1` bytes.
+fn write_blobs(
+    mirror: &Path,
+    files: &[(String, u64, String)],
+    dest: &Path,
+    max: u64,
+) -> Result<()> {
+    if files.is_empty() {
+        return Ok(());
+    }
+    let mut c = git_command(Some(mirror));
+    c.args(["cat-file", "--batch"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null());
+    let mut child = c.spawn().context("cannot run `git cat-file`")?;
+    let mut stdin = child.stdin.take().context("git cat-file: no stdin")?;
+    let request: String = files.iter().map(|(sha, _, _)| format!("{sha}\n")).collect();
+    // Written from another thread: git answers while it reads.
+    let writer = std::thread::spawn(move || stdin.write_all(request.as_bytes()));
+    let mut stdout =
+        std::io::BufReader::new(child.stdout.take().context("git cat-file: no stdout")?);
+    let result = (|| -> Result<()> {
+        for (sha, _, rel) in files {
+            let mut header = String::new();
+            stdout.read_line(&mut header)?;
+            let mut parts = header.split_whitespace();
+            let (got, size) = (
+                parts.next(),
+                parts.nth(1).and_then(|s| s.parse::<u64>().ok()),
+            );
+            let Some(size) = size.filter(|_| got == Some(sha.as_str())) else {
+                bail!("git cat-file answered `{}` for {rel}", header.trim());
+            };
+            let keep = size.min(max.saturating_add(1));
+            let mut body = Vec::with_capacity(usize::try_from(keep.min(1 << 24)).unwrap_or(0));
+            (&mut stdout).take(keep).read_to_end(&mut body)?;
+            std::io::copy(&mut (&mut stdout).take(size - keep), &mut std::io::sink())?;
+            let mut newline = [0u8; 1];
+            stdout.read_exact(&mut newline)?;
+            let path = dest.join(rel);
+            if let Some(parent) = path.parent() {
+                std::fs::create_dir_all(parent)?;
+            }
+            std::fs::write(&path, &body)?;
+        }
+        Ok(())
+    })();
+    let _ = writer.join();
+    let _ = child.wait();
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn urls() {
+        let base = Path::new("/proj");
+        for ok in [
+            "https://github.com/o/r.git",
+            "ssh://git@host/r.git",
+            "git@github.com:o/r.git",
+            "file:///srv/r.git",
+        ] {
+            assert_eq!(check_url(ok, base).unwrap(), ok);
+        }
+        assert_eq!(check_url("../r", base).unwrap(), "/proj/../r");
+        for bad in [
+            "-uhack",
+            "ext::sh -c touch% /tmp/x",
+            "fd::3",
+            "http://x/r",
+            "git://x/r",
+            "",
+            " x",
+        ] {
+            assert!(check_url(bad, base).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn revs_paths_and_names() {
+        for ok in ["main", "v1.2.0", "release/1.x", "0123456789abcdef"] {
+            check_rev(ok).unwrap();
+        }
+        for bad in [
+            "-x",
+            "--upload-pack=x",
+            "a..b",
+            "HEAD~1",
+            "a b",
+            "x^{tree}",
+            "@{-1}",
+        ] {
+            assert!(check_rev(bad).is_err(), "{bad}");
+        }
+        assert!(check_path("/a").is_err());
+        assert_eq!(check_path("a/./b/").unwrap(), "a/b");
+        assert!(check_path("a/../../b").is_err());
+        assert_eq!(name_from_url("https://github.com/o/Camera.git"), "Camera");
+        assert_eq!(name_from_url("git@host:o/nav-stack"), "nav-stack");
+        assert_eq!(name_from_url("/srv/repos/arm/"), "arm");
+    }
+
+    #[test]
+    fn derived_templates() {
+        assert_eq!(
+            derived_source_url("https://github.com/o/r.git").as_deref(),
+            Some("https://github.com/o/r/blob/{commit}/{path}")
+        );
+        assert_eq!(
+            derived_source_url("git@gitlab.com:g/sub/r.git").as_deref(),
+            Some("https://gitlab.com/g/sub/r/-/blob/{commit}/{path}")
+        );
+        assert_eq!(derived_source_url("file:///srv/r"), None);
+        assert_eq!(derived_source_url("https://example.org/r.git"), None);
+    }
+}
