@@ -302,7 +302,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("nb_used_by", "used by", "利用元"),
     ("nb_uses", "uses", "利用先"),
     ("neighbourhood", "Neighbourhood", "接続できるコンポーネント"),
-    ("neighbourhood_intro", "The other components of this catalogue that can connect to each port, one hop: those that feed it (or use its provided interface) on the left, those it feeds (or whose interface it uses) on the right. At most 5 are named per port; the rest are counted and listed on the type or interface page.", "各ポートに直接接続できる、このカタログのほかのコンポーネントです。左はそのポートへデータを送る(提供インターフェースを利用する)もの、右はそのポートがデータを送る(インターフェースを利用される)ものです。ポートごとに最大 5 件を挙げ、残りは件数を示して型またはインターフェースのページで一覧します。"),
+    ("neighbourhood_intro", "The other components of this catalogue that can connect to each port, one hop: in the drawing, those that feed it (or use its provided interface) on the left, those it feeds (or whose interface it uses) on the right. At most 5 are named per port; the rest are counted and listed on the type or interface page.", "各ポートに直接接続できる、このカタログのほかのコンポーネントです(図では、そのポートへデータを送るもの・提供インターフェースを利用するものが左、そのポートがデータを送る先・利用するインターフェースの提供元が右)。ポートごとに最大 5 件を挙げ、残りは件数を示して型またはインターフェースのページで一覧します。"),
     ("neighbourhood_none", "No other component in this catalogue connects to it.", "このカタログには、これと接続できるほかのコンポーネントがありません。"),
     ("neighbourhood_of", "Neighbourhood of", "接続できるコンポーネント:"),
     ("no", "no", "いいえ"),
