@@ -301,3 +301,14 @@ pub fn wiring(
     }
     (inst, conns)
 }
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_intro_states_the_cap_in_use() {
+        for lang in [crate::i18n::Lang::En, crate::i18n::Lang::Ja] {
+            let cap = super::PEER_COMPONENTS_CAP.to_string();
+            assert!(lang.t("neighbourhood_intro").contains(&cap));
+        }
+    }
+}

@@ -523,6 +523,8 @@ fn neighbourhood(o: &mut Out<'_>, p: &ComponentPage) {
     }
     o.raw("<p>");
     o.label("neighbourhood_intro");
+    o.raw(" ");
+    o.label("neighbourhood_drawing");
     o.raw("</p>\n<div class=\"diagram-wrap\"><div class=\"diagram-scroll\">");
     o.raw(&p.neighbourhood_svg);
     o.raw("</div></div>\n<ul class=\"neighbourhood\">\n");
