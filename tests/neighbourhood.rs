@@ -6,40 +6,11 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-/// A catalogue around `Hub`: 8 sources of its in-port (5 named, +3), 2 sinks of its out-port
-/// (one of them also a source: one box, two ports), and `Lonely`, whom nobody connects to.
-pub fn hub_input(dir: &Path) -> PathBuf {
-    let input = dir.join("in");
-    let t = "RTC::TimedLong";
-    common::write(
-        &input,
-        "Hub/RTC.xml",
-        &common::xml_profile("Hub", &[("DataInPort", "in", t), ("DataOutPort", "out", t)]),
-    );
-    for k in 0..7 {
-        let name = format!("Src{k}");
-        common::write(
-            &input,
-            &format!("{name}/RTC.xml"),
-            &common::xml_profile(&name, &[("DataOutPort", "value", t)]),
-        );
-    }
-    common::write(
-        &input,
-        "Both/RTC.xml",
-        &common::xml_profile("Both", &[("DataOutPort", "o", t), ("DataInPort", "i", t)]),
-    );
-    common::write(
-        &input,
-        "Sink/RTC.xml",
-        &common::xml_profile("Sink", &[("DataInPort", "i", t)]),
-    );
-    common::write(
-        &input,
-        "Lonely/RTC.xml",
-        &common::xml_profile("Lonely", &[("DataInPort", "x", "RTC::TimedNothing")]),
-    );
-    input
+/// A catalogue around `Hub` (`tests/fixtures/neighbourhood`): 8 sources of its in-port (5
+/// named, +3), 2 sinks of its out-port (one of them, `Both`, also a source: one box, two
+/// ports), a map server for its required interface, and `Lonely`, whom nobody connects to.
+pub fn hub_input(_dir: &Path) -> PathBuf {
+    common::root().join("tests/fixtures/neighbourhood")
 }
 
 fn run(args: &[&str]) -> std::process::Output {
@@ -67,15 +38,13 @@ fn html_page_draws_and_lists_the_neighbourhood_with_caps_stated() {
     // The drawing: system-diagram conventions, inside the scrolling wrapper.
     assert!(sec.contains("<div class=\"diagram-scroll\"><svg"), "{sec}");
     assert!(sec.contains("class=\"diagram system-diagram neighbourhood-diagram\""));
-    // Hub, 7 of the 8 feeders of `in` (5 named + the +N box counts them)… one box each:
-    // Hub + 5 sources + "+3 more" + Both (feeds `in`? no: 5 named are the first 5 in order)
-    // — count the boxes against the list instead of by hand.
+    // One box per neighbour component named, plus Hub and the "+3 more" box.
     let boxes = sec.matches("<g class=\"instance\">").count();
     let list = &sec[sec.find("<ul class=\"neighbourhood\">").expect("list")..];
     // The list: by port, capped with the exact rest linked to the type page.
-    assert_eq!(list.matches("<li><a href=\"#port-").count(), 2, "{list}");
+    assert_eq!(list.matches("<li><a href=\"#").count(), 3, "{list}");
     assert!(
-        list.contains("fed by:") && list.contains("feeds:"),
+        list.contains("fed by:") && list.contains("feeds:") && list.contains("uses:"),
         "{list}"
     );
     assert!(
@@ -86,8 +55,10 @@ fn html_page_draws_and_lists_the_neighbourhood_with_caps_stated() {
         sec.contains(">+3 more<"),
         "the drawing says what it caps: {sec}"
     );
-    // Named neighbours: 5 on `in`, 2 on `out` (Both, Sink); Both is on both ports but one box.
-    assert_eq!(list.matches("../components/").count(), 7, "{list}");
+    // Named neighbours: 5 on `in`, 2 on `out` (Both, Sink), the map server; Both is on both
+    // ports but one box.
+    assert_eq!(list.matches("../components/").count(), 8, "{list}");
+    assert_eq!(sec.matches("<path class=\"connector service\"").count(), 1);
     let named: std::collections::BTreeSet<&str> = list
         .split("../components/")
         .skip(1)
