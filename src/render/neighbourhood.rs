@@ -299,7 +299,29 @@ pub fn wiring(
             connect(&inst, b, 0, &mut conns);
         }
     }
+    place_in_columns(&mut inst, &conns);
     (inst, conns)
+}
+
+/// Fixes the arrangement the layout keeps (as it keeps RTSystemEditor's saved positions): the
+/// component in the middle column, a neighbour on the left when its first connector feeds the
+/// component and on the right otherwise, each column in the order met. Cheaper than the layered
+/// layout's ordering sweeps (every component page draws one) and the same picture every time.
+fn place_in_columns(inst: &mut [WireInstance], conns: &[WireConnector]) {
+    let mut rows = [0i64; 3];
+    for i in 0..inst.len() {
+        let col: usize = if i == 0 {
+            1
+        } else {
+            match conns.iter().find(|c| c.from.0 == i || c.to.0 == i) {
+                // Feeds the component (data), or uses its provided interface.
+                Some(c) if c.from.0 == i => 0,
+                _ => 2,
+            }
+        };
+        inst[i].location = Some((col as i64 * 1000, rows[col] * 40));
+        rows[col] += 1;
+    }
 }
 
 #[cfg(test)]
