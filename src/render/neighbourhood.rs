@@ -309,7 +309,7 @@ pub fn wiring(
 /// layout's ordering sweeps (every component page draws one) and the same picture every time.
 fn place_in_columns(inst: &mut [WireInstance], conns: &[WireConnector]) {
     let mut rows = [0i64; 3];
-    for i in 0..inst.len() {
+    for (i, it) in inst.iter_mut().enumerate() {
         let col: usize = if i == 0 {
             1
         } else {
@@ -319,7 +319,7 @@ fn place_in_columns(inst: &mut [WireInstance], conns: &[WireConnector]) {
                 _ => 2,
             }
         };
-        inst[i].location = Some((col as i64 * 1000, rows[col] * 40));
+        it.location = Some((col as i64 * 1000, rows[col] * 40));
         rows[col] += 1;
     }
 }
