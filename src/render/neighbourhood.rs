@@ -276,14 +276,14 @@ pub fn wiring(
         }
         if row.more > 0 {
             let name = format!("+{} {}", row.more, lang.t("nb_more"));
-            let text = more_text(row, lang);
             let class = match (row.service, row.upstream) {
                 (true, _) => "service",
                 (false, true) => "out",
                 (false, false) => "in",
             };
             inst.push(WireInstance {
-                label: format!("{name} ({}): {text}", row.type_name),
+                // The accessible name starts with the box's visible text (WCAG 2.5.3).
+                label: format!("{name} {} — {}", row.type_name, lang.t(row.more_key)),
                 component: row.type_name.to_string(),
                 href: href(row.type_page, None),
                 ports: vec![WirePort {
