@@ -23,6 +23,7 @@
 
 pub mod backups;
 pub mod dataflow;
+pub mod neighbourhood;
 pub mod pages;
 pub mod readmes;
 pub mod sources;

@@ -55,7 +55,8 @@ enum Command {
     Diff(DiffArgs),
     /// Build into memory, serve on 127.0.0.1, rebuild on changes and live-reload browsers.
     Serve(ServeArgs),
-    /// Write the wiring of an RT System as Graphviz DOT, Mermaid or SVG (to stdout or -o FILE).
+    /// Write the wiring of an RT System, a component's neighbourhood or the catalogue's data
+    /// flow as Graphviz DOT, Mermaid or SVG (to stdout or -o FILE).
     Graph(GraphArgs),
     /// Write an `rtcdoc.toml` with every setting commented out at its default.
     Init(InitArgs),
@@ -260,8 +261,13 @@ struct GraphArgs {
     input: Option<PathBuf>,
     /// The system to draw, by name, page slug or input-relative file path; needed when the
     /// input holds several.
-    #[arg(long, value_name = "NAME", conflicts_with = "dataflow")]
+    #[arg(long, value_name = "NAME", conflicts_with_all = ["dataflow", "component"])]
     system: Option<String>,
+    /// Instead of a system: the neighbourhood of one component, by name, id or page slug (the
+    /// components that can feed each of its ports and those it can feed, one hop, at most 5
+    /// per port and the rest counted in a "+N more" box).
+    #[arg(long, value_name = "NAME|ID", conflicts_with = "dataflow")]
+    component: Option<String>,
     /// Instead of a system: the catalogue's data flow between its categories or vendors (which
     /// groups can feed which, each flow with its port pairs), every group and flow.
     #[arg(long, value_enum, value_name = "GROUPING")]
@@ -811,6 +817,18 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let name = format!("{} — {}", lang.t("dataflow"), lang.t(key));
         return write_graph(args, &name, &name, &inst, &conns);
     }
+    if let Some(want) = &args.component {
+        let cat = &loaded.catalog;
+        let ci = find_component(cat, want, &input)?;
+        use rtcdoc::render::neighbourhood as nb;
+        let n = nb::neighbourhood(cat, ci);
+        let rows = nb::rows(cat, ci, &n);
+        // No links: the pages they would point to are not beside the export.
+        let (inst, conns) = nb::wiring(cat, ci, &rows, lang, &|_, _| String::new());
+        let name = cat.components[ci].display_name();
+        let title = format!("{} {name}", lang.t("neighbourhood_of"));
+        return write_graph(args, &title, &title, &inst, &conns);
+    }
     let systems = &loaded.catalog.systems;
     let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
         Some(want) => systems
@@ -855,7 +873,81 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
     )
 }
 
-/// Writes a graph (a system's wiring, the data flow) in the chosen format.
+/// The component `want` names (its name, id or page slug; exactly one), or an error naming
+/// the closest names of the catalogue.
+fn find_component(
+    cat: &rtcdoc::catalog::Catalog,
+    want: &str,
+    input: &std::path::Path,
+) -> anyhow::Result<usize> {
+    let found: Vec<usize> = (0..cat.components.len())
+        .filter(|&ci| {
+            let c = &cat.components[ci];
+            c.profile.name() == want || &*c.id == want || c.slug == want || c.display_name() == want
+        })
+        .collect();
+    match found.as_slice() {
+        [one] => Ok(*one),
+        [] if cat.components.is_empty() => {
+            anyhow::bail!("no component profile in {}", input.display())
+        }
+        [] => {
+            let want_l = want.to_lowercase();
+            let mut near: Vec<(usize, String)> = cat
+                .components
+                .iter()
+                .map(|c| {
+                    let n = c.display_name().into_owned();
+                    let l = n.to_lowercase();
+                    let d = if l.contains(&want_l) || want_l.contains(&l) {
+                        0
+                    } else {
+                        strsim_distance(&l, &want_l)
+                    };
+                    (d, n)
+                })
+                .collect();
+            near.sort();
+            near.dedup_by(|a, b| a.1 == b.1);
+            let names: Vec<String> = near.into_iter().take(5).map(|(_, n)| n).collect();
+            anyhow::bail!(
+                "no component named {want:?} in {}; the closest names are: {} (give a name, an id or a page slug)",
+                input.display(),
+                names.join(", ")
+            )
+        }
+        many => anyhow::bail!(
+            "{} components match {want:?}; choose one by id: {}",
+            many.len(),
+            many.iter()
+                .map(|&ci| format!(
+                    "{} ({})",
+                    cat.components[ci].display_name(),
+                    cat.components[ci].id
+                ))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
+/// The Levenshtein distance between two strings, by characters.
+fn strsim_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// Writes a graph (a system's wiring, the data flow, a neighbourhood) in the chosen format.
 fn write_graph(
     args: &GraphArgs,
     name: &str,

@@ -204,6 +204,27 @@ fn dataflow_exports(format: &str, dir: &Path) -> Vec<std::path::PathBuf> {
     out
 }
 
+/// `rtcdoc graph --component NAME -f FORMAT` of every component of the example, of the
+/// neighbourhood fixture (capped ports) and of the first corpus components: the files written.
+fn neighbourhood_exports(format: &str, dir: &Path) -> Vec<std::path::PathBuf> {
+    let mut inputs = vec![
+        common::root().join("examples"),
+        common::root().join("tests/fixtures/neighbourhood"),
+    ];
+    inputs.extend(common::corpus().map(|c| c.join("rtc-xml")));
+    let mut out = Vec::new();
+    for (k, input) in inputs.iter().enumerate() {
+        let loaded = rtcdoc::build::load(input, &rtcdoc::build::LoadOptions::default())
+            .expect("load components");
+        for (ci, c) in loaded.catalog.components.iter().enumerate().take(40) {
+            let f = dir.join(format!("nb-{k}-{ci}.{format}"));
+            graph_with(input, &["--component", &c.id], format, &f);
+            out.push(f);
+        }
+    }
+    out
+}
+
 #[test]
 fn graphviz_dot_accepts_every_dot_export() {
     if !common::tool_available("dot") && !Path::new("/usr/bin/dot").exists() {
@@ -230,6 +251,19 @@ fn graphviz_dot_accepts_every_dot_export() {
     for f in dataflow_exports("dot", dir.path()) {
         let text = std::fs::read_to_string(&f).unwrap();
         assert!(text.contains("port pairs"), "{text}");
+        let o = std::process::Command::new("dot")
+            .arg("-Tsvg")
+            .arg(&f)
+            .output()
+            .expect("run dot");
+        assert!(
+            o.status.success() && o.stdout.starts_with(b"<?xml"),
+            "dot rejects {f:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        n += 1;
+    }
+    for f in neighbourhood_exports("dot", dir.path()) {
         let o = std::process::Command::new("dot")
             .arg("-Tsvg")
             .arg(&f)
@@ -273,6 +307,7 @@ fn mermaids_parser_accepts_every_mermaid_export_and_markdown_block() {
         files.push(f);
     }
     files.extend(dataflow_exports("mermaid", dir.path()));
+    files.extend(neighbourhood_exports("mermaid", dir.path()));
     // The Markdown output with `[markdown] diagrams = "mermaid"`.
     let cfg = dir.path().join("rtcdoc.toml");
     std::fs::write(&cfg, "[markdown]\ndiagrams = \"mermaid\"\n").unwrap();
@@ -352,11 +387,12 @@ fn rendered_diagrams_have_no_connector_through_a_box_and_every_name_whole() {
     let mut inputs = vec![
         common::root().join("examples"),
         common::root().join("tests/fixtures/diagrams"),
+        common::root().join("tests/fixtures/neighbourhood"),
     ];
     if let Some(c) = common::corpus() {
         inputs.push(c.join("rts-xml"));
     }
-    let mut measured = 0;
+    let (mut measured, mut neighbourhoods) = (0, 0);
     for (k, input) in inputs.iter().enumerate() {
         let site = dir.path().join(format!("site{k}"));
         let o = common::rtcdoc(
@@ -379,8 +415,13 @@ fn rendered_diagrams_have_no_connector_through_a_box_and_every_name_whole() {
                 assert_eq!(d[key], 0, "{} {key}: {}", d["page"], d["details"]);
             }
             measured += 1;
+            neighbourhoods += usize::from(d["kind"] == "neighbourhood");
         }
     }
-    println!("measured {measured} diagrams");
+    println!("measured {measured} diagrams, {neighbourhoods} neighbourhoods");
     assert!(measured > 3);
+    assert!(
+        neighbourhoods > 3,
+        "the neighbourhood drawings are measured too"
+    );
 }

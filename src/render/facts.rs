@@ -642,44 +642,11 @@ impl BackupRow {
 }
 
 /// At most this many peer components are named in a port's "connects to" answer, in every
-/// output; the rest are counted and linked to the type or interface page.
-pub const PEER_COMPONENTS_CAP: usize = 5;
+/// output (and in the neighbourhood); the rest are counted and linked to the type or interface
+/// page.
+pub use crate::catalog::neighbourhood::{peer_groups, PEER_COMPONENTS_CAP};
 /// At most this many ports of one peer component are named.
 pub const PEER_PORTS_SHOWN: usize = 3;
-
-/// The peers of a port of component `ci` as every output shows them: the ports of *other*
-/// components (`all`, in catalogue order, so sorted by component) grouped by component, and
-/// the number of groups (components) in all. A component's own ports are never its peers.
-pub fn peer_groups<R>(
-    ci: usize,
-    all: &[R],
-    component: impl Fn(&R) -> usize,
-) -> (Vec<(usize, Vec<&R>)>, usize) {
-    // Only the groups shown are collected; the others are counted (a popular type's list holds
-    // thousands of references, and every one of its ports asks).
-    let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
-    let mut total = 0;
-    let mut last = None;
-    for r in all {
-        let c = component(r);
-        if c == ci {
-            continue;
-        }
-        if last != Some(c) {
-            last = Some(c);
-            total += 1;
-            if total <= PEER_COMPONENTS_CAP {
-                groups.push((c, Vec::new()));
-            }
-        }
-        if total <= PEER_COMPONENTS_CAP {
-            if let Some((_, list)) = groups.last_mut() {
-                list.push(r);
-            }
-        }
-    }
-    (groups, total)
-}
 
 /// `Camera · image, depth, +2`: a peer component and up to [`PEER_PORTS_SHOWN`] of its ports.
 pub fn peer_text(component: &str, ports: &[&str], sep: &str) -> String {

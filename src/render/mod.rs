@@ -9,6 +9,7 @@ pub mod html;
 pub mod idl_view;
 pub mod json;
 pub mod markdown;
+pub mod neighbourhood;
 pub mod system_text;
 pub mod text;
 pub mod view;

@@ -119,6 +119,60 @@ pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
     out
 }
 
+/// The neighbourhood section of component `ci` ([`crate::render::neighbourhood`]): a table by
+/// port — the port, its type, `fed by` / `feeds` / `used by` / `uses`, and the neighbour
+/// components, each linked, with a `+N` link to the type or interface page when capped; or
+/// the sentence saying no component connects to it.
+pub fn neighbourhood_section<M: Markup>(out: &mut String, cat: &Catalog, ci: usize, lang: Lang) {
+    use crate::render::neighbourhood as nb;
+    let page = cat.component_page(ci);
+    M::heading(out, page, 2, "sec-neighbourhood", lang.t("neighbourhood"));
+    let n = nb::neighbourhood(cat, ci);
+    if n.is_empty() {
+        M::paragraph(out, &M::esc(lang.t("neighbourhood_none")));
+        return;
+    }
+    M::paragraph(out, &M::esc(lang.t("neighbourhood_intro")));
+    let rows: Vec<Vec<String>> = nb::rows(cat, ci, &n)
+        .iter()
+        .map(|r| {
+            let mut parts: Vec<String> = r
+                .neighbours
+                .iter()
+                .map(|k| {
+                    let names: Vec<&str> = k.ports.iter().map(String::as_str).collect();
+                    M::link(
+                        &facts::peer_text(&k.name, &names, " · "),
+                        &cat.href(page, k.page, Some(k.anchor), M::OUTPUT),
+                    )
+                })
+                .collect();
+            if r.more > 0 {
+                parts.push(M::link(
+                    &nb::more_text(r, lang),
+                    &M::page_target(cat, page, r.type_page),
+                ));
+            }
+            vec![
+                M::link(&r.port, &cat.href(page, page, Some(r.anchor), M::OUTPUT)),
+                M::page_ref(cat, page, r.type_page),
+                M::esc(lang.t(r.relation)),
+                parts.join("<br>"),
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("port"),
+            lang.t("type"),
+            lang.t("direction"),
+            lang.t("connects_to"),
+        ],
+        &rows,
+    );
+}
+
 /// The category and vendor facets of each component ([`Catalog::category_of_each`],
 /// [`Catalog::vendor_of_each`]), computed once per render.
 pub fn facets_of_each(cat: &Catalog) -> Vec<(usize, usize)> {
@@ -232,6 +286,7 @@ pub fn component_sections<M: Markup>(
     }
     data_ports_section::<M>(out, cat, v, lang);
     service_ports_section::<M>(out, cat, v, lang);
+    neighbourhood_section::<M>(out, cat, v.ci, lang);
     configuration_section::<M>(out, v, lang);
 
     M::heading(out, page, 2, "sec-lifecycle", lang.t("actions"));

@@ -39,7 +39,7 @@ function measure() {
   const inside = (p, r, m) => p.x > r.x + m && p.x < r.x + r.width - m && p.y > r.y + m && p.y < r.y + r.height - m;
   const within = (a, b, tol) => a.left >= b.left - tol && a.right <= b.right + tol && a.top >= b.top - tol && a.bottom <= b.bottom + tol;
   for (const svg of document.querySelectorAll('svg.system-diagram, svg.component-diagram')) {
-    const kind = svg.classList.contains('system-diagram') ? 'system' : 'component';
+    const kind = svg.classList.contains('neighbourhood-diagram') ? 'neighbourhood' : svg.classList.contains('system-diagram') ? 'system' : 'component';
     const d = { kind, through: 0, outsideBox: 0, cut: 0, outsideDrawing: 0, crossings: 0, connectors: 0, minFontPx: 99, details: [] };
     const sr = svg.getBoundingClientRect();
     const scale = sr.width / svg.viewBox.baseVal.width;

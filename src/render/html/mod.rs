@@ -393,6 +393,21 @@ struct ComponentPage {
     systems: Vec<Link>,
     /// RTCBuilder's backups of the profile: older versions, not components.
     backups: Vec<facts::BackupRow>,
+    /// The neighbourhood drawing (empty when no component connects to this one).
+    neighbourhood_svg: String,
+    /// The neighbourhood as a list, by port.
+    neighbourhood: Vec<NeighbourhoodRow>,
+}
+
+/// One port of the neighbourhood list: the port, its relation (`fed by`, `feeds`, …), the
+/// type, and its neighbours as `peers` / `peers_more` (shown like a "connects to" cell).
+#[derive(Serialize)]
+struct NeighbourhoodRow {
+    port: Link,
+    relation: &'static str,
+    type_ref: Option<PortTypeRef>,
+    peers: Vec<Link>,
+    peers_more: Option<Link>,
 }
 
 #[derive(Serialize)]
@@ -421,6 +436,68 @@ impl<'a> Site<'a> {
 
     fn component_path(&self, ci: usize) -> String {
         self.catalog.component_page(ci).path("html")
+    }
+
+    /// The neighbourhood of component `ci` ([`crate::render::neighbourhood`]): its drawing
+    /// (empty when it has none) and its list.
+    fn neighbourhood(&self, ci: usize) -> (String, Vec<NeighbourhoodRow>) {
+        use crate::render::neighbourhood as nb;
+        let cat = self.catalog;
+        let n = nb::neighbourhood(cat, ci);
+        if n.is_empty() {
+            return (String::new(), Vec::new());
+        }
+        let here = cat.component_page(ci);
+        let href = |to: &crate::catalog::Page, anchor: Option<&str>| {
+            if std::ptr::eq(to, here) {
+                anchor.map(|a| format!("#{a}")).unwrap_or_default()
+            } else {
+                cat.href(here, to, anchor, crate::catalog::Output::Html)
+            }
+        };
+        let rows = nb::rows(cat, ci, &n);
+        let (inst, conns) = nb::wiring(cat, ci, &rows, self.lang, &href);
+        let me = cat.components[ci].display_name();
+        let svg = system_svg::system_diagram(
+            &format!("{} {me}", self.t("neighbourhood_of")),
+            &inst,
+            &conns,
+        )
+        .replacen(
+            "class=\"diagram system-diagram\"",
+            "class=\"diagram system-diagram neighbourhood-diagram\"",
+            1,
+        );
+        let list = rows
+            .iter()
+            .map(|r| NeighbourhoodRow {
+                port: Link {
+                    text: r.port.clone(),
+                    href: format!("#{}", r.anchor),
+                },
+                relation: self.t(r.relation),
+                type_ref: Some(PortTypeRef {
+                    text: r.type_name.to_string(),
+                    href: Some(href(r.type_page, None)),
+                }),
+                peers: r
+                    .neighbours
+                    .iter()
+                    .map(|n| {
+                        let names: Vec<&str> = n.ports.iter().map(String::as_str).collect();
+                        Link {
+                            text: facts::peer_text(&n.name, &names, " · "),
+                            href: href(n.page, Some(n.anchor)),
+                        }
+                    })
+                    .collect(),
+                peers_more: (r.more > 0).then(|| Link {
+                    text: nb::more_text(r, self.lang),
+                    href: href(r.type_page, None),
+                }),
+            })
+            .collect();
+        (svg, list)
     }
 
     fn summary(&self, ci: usize) -> ComponentSummary {
@@ -612,6 +689,7 @@ impl<'a> Site<'a> {
             })
             .collect();
         let (diagram_svg, lifecycle_svg) = self.component_diagrams(v, &actions);
+        let (neighbourhood_svg, neighbourhood) = self.neighbourhood(v.ci);
         let description = match v.lead {
             Some(d) => markdown::first_line(d, 160),
             None => format!("{}: {} — {}", v.name, self.t("component"), self.opts.title),
@@ -630,6 +708,8 @@ impl<'a> Site<'a> {
                 .map(|r| readme::readme_html(r, &self.readme_targets))
                 .filter(|h| !h.trim().is_empty()),
             diagram_svg,
+            neighbourhood_svg,
+            neighbourhood,
             data_cols: Columns {
                 unit: data_ports.iter().any(|r| !r.unit.is_empty()),
                 description: data_ports

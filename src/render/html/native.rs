@@ -360,6 +360,7 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
         "service-ports",
         "service_ports",
     );
+    o.toc_entry(true, "neighbourhood", "neighbourhood");
     o.toc_entry(
         !p.configurations.is_empty(),
         "configuration",
@@ -409,6 +410,8 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     data_ports(o, p);
     o.raw("\n\n");
     service_ports(o, p);
+    o.raw("\n\n");
+    neighbourhood(o, p);
     o.raw("\n\n");
     configurations(o, p);
     o.raw("\n\n");
@@ -507,6 +510,38 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("</tbody>\n");
     }
     o.raw("</table>\n</div>\n</section>");
+}
+
+/// The neighbourhood: its drawing and list, or the sentence saying there is none.
+fn neighbourhood(o: &mut Out<'_>, p: &ComponentPage) {
+    o.section_start("neighbourhood", false, "neighbourhood");
+    if p.neighbourhood.is_empty() {
+        o.raw("<p class=\"none\">");
+        o.label("neighbourhood_none");
+        o.raw("</p>\n</section>");
+        return;
+    }
+    o.raw("<p>");
+    o.label("neighbourhood_intro");
+    o.raw(" ");
+    o.label("neighbourhood_drawing");
+    o.raw("</p>\n<div class=\"diagram-wrap\"><div class=\"diagram-scroll\">");
+    o.raw(&p.neighbourhood_svg);
+    o.raw("</div></div>\n<ul class=\"neighbourhood\">\n");
+    for r in &p.neighbourhood {
+        o.raw("<li><a href=\"");
+        o.text(&r.port.href);
+        o.raw("\"><code>");
+        o.text(&r.port.text);
+        o.raw("</code></a> (");
+        o.type_link(&r.type_ref);
+        o.raw(") ");
+        o.text(r.relation);
+        o.raw(":");
+        o.peers(&r.peers, &r.peers_more);
+        o.raw("</li>\n");
+    }
+    o.raw("</ul>\n</section>");
 }
 
 fn configurations(o: &mut Out<'_>, p: &ComponentPage) {

@@ -1,0 +1,323 @@
+//! A component's neighbourhood (issue #26): for each of its ports, the other components of the
+//! catalogue that can connect to it, one hop — the producers of an in-port's data type, the
+//! consumers of an out-port's, the providers of a required interface and the requirers of a
+//! provided one. Read from the cross-references the catalogue already keeps
+//! ([`Catalog::data_port_peers`], [`Catalog::interface_peers`]), grouped by component, capped
+//! per port at [`PEER_COMPONENTS_CAP`] with the exact number left out: nothing is dropped
+//! without saying so. Every component page asks, so it costs one pass over each port's peer
+//! list and no lookup by name.
+
+use super::Catalog;
+use crate::model::{Direction, PortDirection};
+
+/// At most this many peer components are named per port, in every output: in a port's
+/// "connects to" answer and in the neighbourhood; the rest are counted and linked to the type
+/// or interface page.
+pub const PEER_COMPONENTS_CAP: usize = 5;
+
+/// The peers of a port of component `ci` as every output shows them: the ports of *other*
+/// components (`all`, in catalogue order, so sorted by component) grouped by component, and
+/// the number of groups (components) in all. A component's own ports are never its peers.
+pub fn peer_groups<R>(
+    ci: usize,
+    all: &[R],
+    component: impl Fn(&R) -> usize,
+) -> (Vec<(usize, Vec<&R>)>, usize) {
+    capped_groups(ci, all, PEER_COMPONENTS_CAP, component)
+}
+
+/// [`peer_groups`] with at most `cap` groups collected.
+fn capped_groups<R>(
+    ci: usize,
+    all: &[R],
+    cap: usize,
+    component: impl Fn(&R) -> usize,
+) -> (Vec<(usize, Vec<&R>)>, usize) {
+    // Only the groups shown are collected; the others are counted (a popular type's list holds
+    // thousands of references, and every one of its ports asks).
+    let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
+    let mut total = 0;
+    let mut last = None;
+    for r in all {
+        let c = component(r);
+        if c == ci {
+            continue;
+        }
+        if last != Some(c) {
+            last = Some(c);
+            total += 1;
+            if total <= cap {
+                groups.push((c, Vec::new()));
+            }
+        }
+        if total <= cap {
+            if let Some((_, list)) = groups.last_mut() {
+                list.push(r);
+            }
+        }
+    }
+    (groups, total)
+}
+
+/// A port of a component: a data port, or an interface of a service port (indices into the
+/// component's profile).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum PortAt {
+    Data(usize),
+    Interface(usize, usize),
+}
+
+/// One neighbour of a port: a component and its ports that connect to the port.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Neighbour {
+    /// Index into [`Catalog::components`].
+    pub component: usize,
+    /// Its matching ports, in profile order.
+    pub ports: Vec<PortAt>,
+}
+
+/// The neighbours of one port of the component.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PortNeighbours {
+    /// The component's own port.
+    pub port: PortAt,
+    /// True when the neighbours are upstream (drawn on the left): they feed this in-port or
+    /// call this provided interface; false when this out-port feeds them or this required
+    /// interface calls them.
+    pub upstream: bool,
+    /// The data type ([`Catalog::data_types`]) or interface ([`Catalog::interfaces`]) index:
+    /// the page that lists every neighbour when some are left out.
+    pub type_index: usize,
+    /// The first neighbours, in catalogue order, at most the cap.
+    pub shown: Vec<Neighbour>,
+    /// How many neighbour components there are in all (`shown.len()` when none is left out).
+    pub total: usize,
+}
+
+impl PortNeighbours {
+    /// How many neighbour components are counted but not named.
+    pub fn more(&self) -> usize {
+        self.total - self.shown.len()
+    }
+
+    /// True for a service interface (the data type index is an interface index).
+    pub fn is_service(&self) -> bool {
+        matches!(self.port, PortAt::Interface(..))
+    }
+}
+
+/// A component's neighbourhood: its ports with at least one neighbour, data ports first, in
+/// profile order.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Neighbourhood {
+    pub ports: Vec<PortNeighbours>,
+}
+
+impl Neighbourhood {
+    /// True when no other component of the catalogue connects to any port.
+    pub fn is_empty(&self) -> bool {
+        self.ports.is_empty()
+    }
+
+    /// The neighbour components named (on any port), each once, in the order first met.
+    pub fn components(&self) -> Vec<usize> {
+        let mut seen = Vec::new();
+        for p in &self.ports {
+            for n in &p.shown {
+                if !seen.contains(&n.component) {
+                    seen.push(n.component);
+                }
+            }
+        }
+        seen
+    }
+}
+
+impl Catalog {
+    /// The neighbourhood of component `ci`, at most `cap` neighbours named per port (the rest
+    /// counted in [`PortNeighbours::total`]). Event ports and interfaces of no known direction
+    /// have none; the component is never its own neighbour.
+    pub fn neighbourhood(&self, ci: usize, cap: usize) -> Neighbourhood {
+        let mut ports = Vec::new();
+        let Some(c) = self.components.get(ci) else {
+            return Neighbourhood { ports };
+        };
+        let p = &c.profile;
+        for (pi, port) in p.data_ports.iter().enumerate() {
+            let upstream = match port.direction() {
+                Some(PortDirection::In) => true,
+                Some(PortDirection::Out) => false,
+                _ => continue,
+            };
+            let Some(ti) = port.type_.as_deref().and_then(|t| self.data_type_index(t)) else {
+                continue;
+            };
+            let refs = self.data_port_peers(ci, pi);
+            let (groups, total) = capped_groups(ci, refs, cap, |r| {
+                self.port_component(r).unwrap_or(usize::MAX)
+            });
+            let shown = groups
+                .into_iter()
+                .map(|(k, list)| Neighbour {
+                    component: k,
+                    ports: list
+                        .iter()
+                        .filter_map(|r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)))
+                        .collect(),
+                })
+                .collect();
+            if total > 0 {
+                ports.push(PortNeighbours {
+                    port: PortAt::Data(pi),
+                    upstream,
+                    type_index: ti,
+                    shown,
+                    total,
+                });
+            }
+        }
+        for (si, sp) in p.service_ports.iter().enumerate() {
+            for (ii, i) in sp.interfaces.iter().enumerate() {
+                let upstream = match i.direction_kind() {
+                    Some(Direction::Provided) => true,
+                    Some(Direction::Required) => false,
+                    None => continue,
+                };
+                let Some(ti) = i.type_.as_deref().and_then(|t| self.interface_index_of(t)) else {
+                    continue;
+                };
+                let refs = self.interface_peers(ci, si, ii);
+                let (groups, total) = capped_groups(ci, refs, cap, |r| {
+                    self.interface_component(r).unwrap_or(usize::MAX)
+                });
+                let shown = groups
+                    .into_iter()
+                    .map(|(k, list)| Neighbour {
+                        component: k,
+                        ports: list
+                            .iter()
+                            .filter_map(|r| {
+                                self.resolve_interface(r)
+                                    .map(|(_, q, j)| PortAt::Interface(q, j))
+                            })
+                            .collect(),
+                    })
+                    .collect();
+                if total > 0 {
+                    ports.push(PortNeighbours {
+                        port: PortAt::Interface(si, ii),
+                        upstream,
+                        type_index: ti,
+                        shown,
+                        total,
+                    });
+                }
+            }
+        }
+        Neighbourhood { ports }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::catalog::LoadedProfile;
+
+    fn profile(name: &str, ports: &[(&str, &str)], services: &[(&str, &str)]) -> LoadedProfile {
+        let mut xml = format!(
+            r#"<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:V:C:{name}:1" rtc:version="0.2"><rtc:BasicInfo rtc:name="{name}" rtc:vendor="V" rtc:category="C" rtc:version="1"/>"#
+        );
+        for (i, (dir, ty)) in ports.iter().enumerate() {
+            xml.push_str(&format!(
+                r#"<rtc:DataPorts rtc:portType="{dir}" rtc:name="p{i}" rtc:type="{ty}"/>"#
+            ));
+        }
+        for (i, (dir, ty)) in services.iter().enumerate() {
+            xml.push_str(&format!(
+                r#"<rtc:ServicePorts rtc:name="s{i}"><rtc:ServiceInterface rtc:direction="{dir}" rtc:name="i{i}" rtc:type="{ty}"/></rtc:ServicePorts>"#
+            ));
+        }
+        xml.push_str("</rtc:RtcProfile>");
+        let parsed = crate::parse::parse(
+            crate::parse::SourceFormat::Xml,
+            xml.as_bytes(),
+            name,
+            &crate::parse::Limits::default(),
+        )
+        .expect("profile");
+        LoadedProfile {
+            source: format!("{name}/RTC.xml"),
+            format: crate::parse::SourceFormat::Xml,
+            profile: Box::new(parsed.profile),
+        }
+    }
+
+    fn index(cat: &Catalog, name: &str) -> usize {
+        cat.components
+            .iter()
+            .position(|c| c.profile.name() == name)
+            .expect("component")
+    }
+
+    #[test]
+    fn feeders_fed_services_caps_and_never_itself() {
+        let mut loaded = vec![
+            // A filter: in and out of the same type (its own out-port is no feeder).
+            profile(
+                "Filter",
+                &[
+                    ("DataInPort", "RTC::TimedLong"),
+                    ("DataOutPort", "RTC::TimedLong"),
+                    ("DataInPort", "RTC::TimedNothing"),
+                ],
+                &[("Required", "Map"), ("Provided", "Ctl")],
+            ),
+            profile("Log", &[("DataInPort", "RTC::TimedLong")], &[]),
+            profile("MapServer", &[], &[("Provided", "Map")]),
+            profile("Gui", &[], &[("Required", "Ctl")]),
+        ];
+        for k in 0..7 {
+            loaded.push(profile(
+                &format!("Src{k}"),
+                &[
+                    ("DataOutPort", "RTC::TimedLong"),
+                    ("DataOutPort", "RTC::TimedLong"),
+                ],
+                &[],
+            ));
+        }
+        let cat = Catalog::build(loaded, Vec::new());
+        let f = index(&cat, "Filter");
+        let n = cat.neighbourhood(f, 3);
+        // p0 (in): 7 sources, 3 named, each with both its out-ports; p1 (out): Log; p2: nothing.
+        assert_eq!(n.ports.len(), 4, "{n:?}");
+        let p0 = &n.ports[0];
+        assert_eq!(
+            (p0.port, p0.upstream, p0.total, p0.more()),
+            (PortAt::Data(0), true, 7, 4)
+        );
+        assert_eq!(p0.shown.len(), 3);
+        assert!(p0.shown.iter().all(|s| s.component != f));
+        assert_eq!(p0.shown[0].ports, vec![PortAt::Data(0), PortAt::Data(1)]);
+        let p1 = &n.ports[1];
+        assert_eq!(
+            (p1.port, p1.upstream, p1.total),
+            (PortAt::Data(1), false, 1)
+        );
+        assert_eq!(p1.shown[0].component, index(&cat, "Log"));
+        let (req, prov) = (&n.ports[2], &n.ports[3]);
+        assert_eq!((req.port, req.upstream), (PortAt::Interface(0, 0), false));
+        assert_eq!(req.shown[0].component, index(&cat, "MapServer"));
+        assert_eq!((prov.port, prov.upstream), (PortAt::Interface(1, 0), true));
+        assert_eq!(prov.shown[0].component, index(&cat, "Gui"));
+        assert!(req.is_service() && !p0.is_service());
+        // Merged once per component across ports.
+        assert_eq!(n.components().len(), 3 + 1 + 1 + 1);
+        // A component nobody connects to.
+        let lonely = Catalog::build(
+            vec![profile("Alone", &[("DataInPort", "RTC::TimedLong")], &[])],
+            Vec::new(),
+        );
+        assert!(lonely.neighbourhood(0, 5).is_empty());
+    }
+}
