@@ -345,6 +345,21 @@ fn compact(layer: &mut [usize]) -> usize {
 
 /// Lays the wiring out.
 pub fn layout(nodes: &[Node], edges: &[Edge]) -> WiringLayout {
+    layout_with(nodes, edges, Effort::Full)
+}
+
+/// How hard the ordering works on a drawing with saved positions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Effort {
+    /// Connectors that pass a column are moved to where they cross fewest others (sifting).
+    Full,
+    /// Saved positions as they are, no sifting: for the many small drawings of a catalogue
+    /// (every component page's neighbourhood), where sifting would cost more than the page.
+    Quick,
+}
+
+/// [`layout`] with a given [`Effort`].
+pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayout {
     let locs = usable_locations(nodes);
     let mut layer = match &locs {
         Some(l) => location_layers(l),
@@ -448,7 +463,7 @@ pub fn layout(nodes: &[Node], edges: &[Edge]) -> WiringLayout {
         g.order[l].push(it);
     }
     match &locs {
-        Some(l) => order_by_locations(&mut g, l),
+        Some(l) => order_by_locations(&mut g, l, effort),
         None => order_by_barycentres(&mut g),
     }
 
@@ -1058,7 +1073,7 @@ fn best_ports_fallback(g: &mut Graph<'_>, best_n: usize) -> Vec<[Vec<usize>; 2]>
 }
 
 /// Orders each layer by the saved y of its instances; dummies go where their neighbours are.
-fn order_by_locations(g: &mut Graph<'_>, locs: &[(i64, i64)]) {
+fn order_by_locations(g: &mut Graph<'_>, locs: &[(i64, i64)], effort: Effort) {
     let mut y = vec![0.0f32; g.items.len()];
     for (v, &(_, ly)) in locs.iter().enumerate() {
         y[g.node_item[v]] = ly as f32;
@@ -1088,7 +1103,9 @@ fn order_by_locations(g: &mut Graph<'_>, locs: &[(i64, i64)]) {
         });
     }
     sort_ports(g);
-    sift(g, true);
+    if effort == Effort::Full {
+        sift(g, true);
+    }
 }
 
 /// Tops of all items (dummies: the height their connector passes at).

@@ -458,10 +458,11 @@ impl<'a> Site<'a> {
         let rows = nb::rows(cat, ci, &n);
         let (inst, conns) = nb::wiring(cat, ci, &rows, self.lang, &href);
         let me = cat.components[ci].display_name();
-        let svg = system_svg::system_diagram(
+        let svg = system_svg::system_diagram_with(
             &format!("{} {me}", self.t("neighbourhood_of")),
             &inst,
             &conns,
+            crate::layout::wiring::Effort::Quick,
         )
         .replacen(
             "class=\"diagram system-diagram\"",

@@ -10,7 +10,7 @@
 //! each instance and port a link named by `aria-label` and a `<title>`.
 
 use super::svg::esc;
-use crate::layout::wiring::{layout, Edge, Node, Port, PortKind, Side, WiringLayout};
+use crate::layout::wiring::{layout_with, Edge, Effort, Node, Port, PortKind, Side};
 use crate::render::wiring::{WireConnector, WireInstance};
 use std::fmt::Write;
 
@@ -50,10 +50,14 @@ impl WireConnector {
 }
 
 /// The layout of a wiring.
-pub fn wiring_layout(inst: &[WireInstance], conns: &[WireConnector]) -> WiringLayout {
+#[cfg(test)]
+pub fn wiring_layout(
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+) -> crate::layout::wiring::WiringLayout {
     let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
     let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
-    layout(&nodes, &edges)
+    crate::layout::wiring::layout(&nodes, &edges)
 }
 
 /// ` href="…"`, or nothing for an empty link (a drawing on its own).
@@ -111,7 +115,19 @@ fn rounded_path(pts: &[(f32, f32)]) -> String {
 
 /// The wiring diagram. `title` names the drawing for assistive technology.
 pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
-    let l = wiring_layout(inst, conns);
+    system_diagram_with(title, inst, conns, Effort::Full)
+}
+
+/// [`system_diagram`] laid out with the given [`Effort`].
+pub fn system_diagram_with(
+    title: &str,
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+    effort: Effort,
+) -> String {
+    let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
+    let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
+    let l = layout_with(&nodes, &edges, effort);
     let (width, height) = (l.width, l.height);
     let mut s = String::with_capacity(4096 + inst.len() * 1024);
     let _ = write!(
