@@ -8,7 +8,7 @@
 //! leaves the last good site in place and reports its diagnostics.
 
 use crate::build::{add_check_diagnostics, load, BuildOptions};
-use crate::catalog::{Catalog, Component, LoadedProfile};
+use crate::catalog::{Catalog, Component, LoadedProfile, PageKind};
 use crate::diagnostic::Diagnostic;
 use crate::output::MemorySink;
 use crate::parse;
@@ -390,15 +390,35 @@ impl Workspace {
 
         let plan = affected(&before, &self.catalog, &touched);
         let full = plan.is_none();
+        // Re-rendered on every change: the diagnostics pages and the category, vendor and
+        // system pages (and the files beside them), by the folders the page list puts them in.
+        let folders: Vec<String> = self
+            .catalog
+            .pages()
+            .iter()
+            .filter(|pg| {
+                matches!(
+                    pg.kind,
+                    PageKind::Diagnostics
+                        | PageKind::Category
+                        | PageKind::Vendor
+                        | PageKind::System
+                )
+            })
+            .map(|pg| match pg.kind {
+                PageKind::Diagnostics => format!("{}/", pg.stem),
+                _ => pg
+                    .stem
+                    .rsplit_once('/')
+                    .map_or(String::new(), |(d, _)| format!("{d}/")),
+            })
+            .filter(|f| !f.is_empty())
+            .collect::<std::collections::BTreeSet<_>>()
+            .into_iter()
+            .collect();
         let wanted = |p: &str| match &plan {
             None => true,
-            Some(set) => {
-                set.contains(p)
-                    || p.starts_with("diagnostics/")
-                    || p.starts_with("categories/")
-                    || p.starts_with("vendors/")
-                    || p.starts_with("systems/")
-            }
+            Some(set) => set.contains(p) || folders.iter().any(|f| p.starts_with(f.as_str())),
         };
         let (written, all_paths) = render(&self.opts, &self.catalog, &wanted)
             .map_err(|e| UpdateError::Other(format!("{e:#}")))?;

@@ -862,7 +862,11 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
             names()
         ),
     };
-    let (inst, conns) = rtcdoc::render::wiring::system_wiring(&loaded.catalog, s, lang, "");
+    // Links as from the site's root (the drawing stands on its own).
+    let cat = &loaded.catalog;
+    let (inst, conns) = rtcdoc::render::wiring::system_wiring(cat, s, lang, &|to, a| {
+        cat.href_from_root(to, Some(a), rtcdoc::catalog::Output::Html)
+    });
     let name = s.profile.name();
     write_graph(
         args,

@@ -114,6 +114,23 @@ impl Catalog {
         }
     }
 
+    /// A link to page `to` (to its `anchor` if given) from the root of output `out`, for a
+    /// drawing that stands on its own (`rtcdoc graph`).
+    pub fn href_from_root(&self, to: &Page, anchor: Option<&str>, out: Output) -> String {
+        let root = self.site_page(PageKind::Index);
+        match out {
+            Output::Doxygen => self.href(root, to, anchor, out),
+            Output::Html | Output::Markdown => {
+                let mut href = to.path_in(out);
+                if let Some(a) = anchor {
+                    href.push('#');
+                    href.push_str(a);
+                }
+                href
+            }
+        }
+    }
+
     /// The target of a link on page `from` to page `to` (to its `anchor` if given) in output
     /// `out`: a relative path in HTML and Markdown (`../vendors/acme.md#x`), a label for
     /// Doxygen's `\ref` (`rtc_vendor_acme`, `rtc_comp_camera__port_image`).

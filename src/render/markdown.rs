@@ -762,7 +762,8 @@ fn system_page(
         },
     );
     // The wiring diagram, after the body's sections.
-    let (inst, conns) = super::wiring::system_wiring(cat, s, lang, &cat.root_from(page, MD));
+    let (inst, conns) =
+        super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
     let name = s.profile.name();
     let caption = format!("{} {name}", lang.t("sys_wiring"));
     heading(&mut out, 2, "sec-wiring", &caption);

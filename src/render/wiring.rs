@@ -46,13 +46,14 @@ pub struct WireConnector {
     pub label: String,
 }
 
-/// The instances and connectors of system `s`; links (`href`) are relative to a page in a
-/// folder below the site root (`root` is the way up, e.g. `../`).
+/// The instances and connectors of system `s`. A port of a component in the catalogue links
+/// to its row on the component's page through `link(page, anchor)` (the caller's
+/// [`Catalog::href`] from where the drawing is shown); an instance links to its row (`#…`).
 pub fn system_wiring(
     catalog: &Catalog,
     s: &System,
     lang: Lang,
-    root: &str,
+    link: &dyn Fn(&crate::catalog::Page, &str) -> String,
 ) -> (Vec<WireInstance>, Vec<WireConnector>) {
     let p = &s.profile;
     let mut wire: Vec<WireInstance> = Vec::with_capacity(p.components.len());
@@ -69,15 +70,16 @@ pub fn system_wiring(
                     (false, Some(PortDirection::Out)) => "out",
                     _ => "other",
                 };
-                let href = match (comp, &pt.link) {
-                    (Some(k), Some(PortLink::Data { index, .. })) => format!(
-                        "{root}components/{}.html#{}",
-                        k.slug, k.anchors.data_ports[*index]
-                    ),
-                    (Some(k), Some(PortLink::Service { index, .. })) => format!(
-                        "{root}components/{}.html#{}",
-                        k.slug, k.anchors.service_ports[*index]
-                    ),
+                let page = comp
+                    .and_then(|k| catalog.component_index(&k.id))
+                    .map(|ci| catalog.component_page(ci));
+                let href = match (comp, page, &pt.link) {
+                    (Some(k), Some(to), Some(PortLink::Data { index, .. })) => {
+                        link(to, &k.anchors.data_ports[*index])
+                    }
+                    (Some(k), Some(to), Some(PortLink::Service { index, .. })) => {
+                        link(to, &k.anchors.service_ports[*index])
+                    }
                     _ => format!("#{anchor}"),
                 };
                 let kind = match class {

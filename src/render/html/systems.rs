@@ -158,16 +158,23 @@ impl Site<'_> {
         };
         let anchor = &s.instances[i].anchor;
         let (name, comp) = self.instance_label(s, i);
-        let port_href = match (comp, &link.port) {
-            (Some(c), Some(PortLink::Data { index, .. })) => {
-                format!(
-                    "{ROOT}components/{}.html#{}",
-                    c.slug, c.anchors.data_ports[*index]
-                )
-            }
-            (Some(c), Some(PortLink::Service { index, .. })) => format!(
-                "{ROOT}components/{}.html#{}",
-                c.slug, c.anchors.service_ports[*index]
+        let cat = self.catalog;
+        let to = comp
+            .and_then(|c| cat.component_index(&c.id))
+            .map(|ci| cat.component_page(ci));
+        let from = cat.page_of_system(s);
+        let port_href = match (comp, to, from, &link.port) {
+            (Some(c), Some(to), Some(from), Some(PortLink::Data { index, .. })) => cat.href(
+                from,
+                to,
+                Some(&c.anchors.data_ports[*index]),
+                crate::catalog::Output::Html,
+            ),
+            (Some(c), Some(to), Some(from), Some(PortLink::Service { index, .. })) => cat.href(
+                from,
+                to,
+                Some(&c.anchors.service_ports[*index]),
+                crate::catalog::Output::Html,
             ),
             _ => format!("#{anchor}"),
         };
@@ -470,7 +477,13 @@ impl Site<'_> {
             .collect();
 
         // The diagram.
-        let (wire, conns) = crate::render::wiring::system_wiring(self.catalog, s, lang, ROOT);
+        let cat = self.catalog;
+        let here = cat.page_of_system(s);
+        let link = |to: &crate::catalog::Page, a: &str| match here {
+            Some(from) => cat.href(from, to, Some(a), crate::catalog::Output::Html),
+            None => String::new(),
+        };
+        let (wire, conns) = crate::render::wiring::system_wiring(cat, s, lang, &link);
         let diagram_title = format!("{} {name}", lang.t("sys_wiring"));
         let diagram_svg = system_diagram(&diagram_title, &wire, &conns);
         let diagram_text = format!(
@@ -521,8 +534,13 @@ pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
         .systems
         .iter()
         .map(|s| {
-            let (wire, conns) =
-                crate::render::wiring::system_wiring(site.catalog, s, site.lang, ROOT);
+            let cat = site.catalog;
+            let here = cat.page_of_system(s);
+            let link = |to: &crate::catalog::Page, a: &str| match here {
+                Some(from) => cat.href(from, to, Some(a), crate::catalog::Output::Html),
+                None => String::new(),
+            };
+            let (wire, conns) = crate::render::wiring::system_wiring(cat, s, site.lang, &link);
             let title = format!("{} {}", site.lang.t("sys_wiring"), s.profile.name());
             (
                 drawing_path(site.catalog, s),
@@ -556,7 +574,10 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
         })
         .collect();
     let mut pages = vec![Job {
-        path: "systems/index.html".into(),
+        path: site
+            .catalog
+            .site_page(crate::catalog::PageKind::Systems)
+            .path("html"),
         template: "systems.html",
         context: PageContext::Ready(minijinja::context! {
             root => ROOT,
