@@ -33,7 +33,7 @@ use super::view::component::component_view;
 use super::view::types::{data_type_view, interface_view};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Component, Output, Page, PageKind};
+use crate::catalog::{Catalog, Output, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -233,6 +233,22 @@ impl Markup for Dox {
     fn anchored(page: &Page, anchor: &str, escaped: &str) -> String {
         format!("\\anchor {} {escaped}", page.anchor_in(anchor, DOX))
     }
+    /// A link to a whole page whose text is its title is a bare `\\ref`: Doxygen writes the
+    /// title itself (a quoted link text is shown as written, escapes and all).
+    fn page_link(
+        cat: &Catalog,
+        from: &Page,
+        to: &Page,
+        anchor: Option<&str>,
+        text_: &str,
+    ) -> String {
+        let label = cat.href(from, to, anchor, DOX);
+        if anchor.is_none() && text_ == to.title {
+            format!("\\ref {label}")
+        } else {
+            refer(&label, text_)
+        }
+    }
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String {
         format!("\\ref {}", cat.href(from, to, None, DOX))
     }
@@ -406,22 +422,14 @@ fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String 
     );
     d!(out);
     crumbs(&mut out, cat, PageKind::Systems);
-    let component = |c: &Component| match cat.component_index(&c.id) {
-        Some(ci) => component_ref(cat, page, ci, None),
-        None => String::new(),
-    };
     let head = |o: &mut String, anchor: &str, text_: &str| section(o, page, anchor, text_);
     super::system_text::system_body::<Dox>(
         &mut out,
         cat,
-        page,
         s,
         lang,
         show_host,
-        &super::system_text::Targets {
-            component: &component,
-            heading: &head,
-        },
+        &super::system_text::Targets { heading: &head },
     );
     out
 }

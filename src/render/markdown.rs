@@ -28,7 +28,7 @@ use super::view::types::{data_type_view, interface_view};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
-use crate::catalog::{Catalog, Component, Output, Page, PageKind};
+use crate::catalog::{Catalog, Output, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -743,23 +743,15 @@ fn system_page(
         link(lang.t("systems"), &index_href(cat, page, PageKind::Systems))
     );
     w!(out);
-    let component = |c: &Component| match cat.component_index(&c.id) {
-        Some(ci) => component_href(cat, page, ci, None),
-        None => String::new(),
-    };
-    let head =
-        |o: &mut String, anchor: &str, text: &str| heading(o, 2, &format!("sec-{anchor}"), text);
+    // The section anchors are the HTML page's (`data-connectors`, …): type pages link them.
+    let head = |o: &mut String, anchor: &str, text: &str| heading(o, 2, anchor, text);
     super::system_text::system_body::<Md>(
         &mut out,
         cat,
-        page,
         s,
         lang,
         show_host,
-        &super::system_text::Targets {
-            component: &component,
-            heading: &head,
-        },
+        &super::system_text::Targets { heading: &head },
     );
     // The wiring diagram, after the body's sections.
     let (inst, conns) =

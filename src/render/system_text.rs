@@ -4,19 +4,15 @@
 //! pages.
 
 use super::text::Markup;
-use crate::catalog::systems::{
-    all_values, check_configuration, end_port_name, host_values, is_naming_path, ConfigCheck,
-    System,
-};
-use crate::catalog::{Catalog, Component, Page};
+use super::view::system::{system_view, EndView, Link, SystemView};
+use crate::catalog::systems::{end_port_name, System};
+use crate::catalog::Catalog;
 use crate::i18n::Lang;
 use crate::model::system::PortEnd;
 use crate::model::{non_empty, Text};
 
 /// How a page links and heads its sections.
 pub struct Targets<'a> {
-    /// The link target of a component's page.
-    pub component: &'a dyn Fn(&Component) -> String,
     /// Writes a section heading: (out, anchor, text).
     pub heading: &'a dyn Fn(&mut String, &str, &str),
 }
@@ -31,44 +27,44 @@ fn end(e: &Option<PortEnd>) -> String {
         .unwrap_or_default()
 }
 
-/// Writes the sections of system `s`'s page (`from`, for its links).
+/// A view link as text of `M`: linked when it has a target.
+fn link<M: Markup>(l: &Link) -> String {
+    if l.href.is_empty() {
+        M::esc(&l.text)
+    } else {
+        M::link(&l.text, &l.href)
+    }
+}
+
+/// A connector end as text: `instance.port`, the port linked to its component's row.
+fn end_text<M: Markup>(e: &EndView) -> String {
+    let port = link::<M>(&e.port);
+    match &e.instance {
+        Some(i) => format!("{}.{port}", M::esc(&i.text)),
+        None => port,
+    }
+}
+
+/// Writes the sections of system `s`'s page (`from`, for its links) from its view
+/// ([`system_view`]), the same values the HTML page shows.
 pub fn system_body<M: Markup>(
     out: &mut String,
     cat: &Catalog,
-    from: &Page,
     s: &System,
     lang: Lang,
     show_host: bool,
     t: &Targets<'_>,
 ) {
+    let v = system_view(cat, s, lang, show_host, M::OUTPUT);
     let p = &s.profile;
-    let parts = p.id_parts.as_ref();
-    let mut facts: Vec<Vec<String>> = [
-        ("sys_id", txt(&p.id)),
-        ("vendor", parts.map(|x| txt(&x.vendor)).unwrap_or_default()),
-        (
-            "version",
-            parts.map(|x| txt(&x.version)).unwrap_or_default(),
-        ),
-        ("sys_format_version", txt(&p.version)),
-        ("sys_abstract", txt(&p.abstract_)),
-        ("creation_date", txt(&p.creation_date)),
-        ("update_date", txt(&p.update_date)),
-        ("comment", txt(&p.comment)),
-        ("source", s.source.clone()),
-    ]
-    .into_iter()
-    .filter(|(_, v)| !v.is_empty())
-    .map(|(k, v)| vec![M::esc(lang.t(k)), M::esc(&v)])
-    .collect();
-    for q in &p.properties {
-        let host = q.private || q.value.as_deref().is_some_and(is_naming_path);
-        if show_host || !host {
-            facts.push(vec![M::esc(&txt(&q.name)), M::esc(&txt(&q.value))]);
-        }
-    }
-    for v in &p.version_up_logs {
-        facts.push(vec![M::esc(lang.t("version_up_logs")), M::esc(v)]);
+    let mut facts: Vec<Vec<String>> = v
+        .summary
+        .iter()
+        .chain(&v.properties)
+        .map(|kv| vec![M::esc(&kv.key), M::esc(&kv.value)])
+        .collect();
+    for l in &p.version_up_logs {
+        facts.push(vec![M::esc(lang.t("version_up_logs")), M::esc(l)]);
     }
     for x in &p.systems {
         facts.push(vec![
@@ -77,54 +73,56 @@ pub fn system_body<M: Markup>(
         ]);
     }
     M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &facts);
-    let hidden = host_values(p);
-    if !show_host && hidden > 0 {
+    if v.hidden > 0 {
         M::paragraph(
             out,
-            &M::esc(&format!("{hidden} {}", lang.t("sys_host_hidden"))),
+            &M::esc(&format!("{} {}", v.hidden, lang.t("sys_host_hidden"))),
         );
     }
-
-    // Instances.
-    (t.heading)(out, "instances", lang.t("instances"));
-    let rows: Vec<Vec<String>> = p
-        .components
+    instances::<M>(out, &v, lang, show_host, t);
+    configuration::<M>(out, &v, lang, t);
+    connectors::<M>(out, &v, lang, t);
+    orders_and_groups::<M>(out, &v, lang, t);
+    (t.heading)(out, "all-values", lang.t("sys_all_values"));
+    let rows: Vec<Vec<String>> = v
+        .all_values
         .iter()
-        .enumerate()
-        .map(|(i, c)| {
-            let comp = match cat.instance_component(s, i) {
-                Some(k) => M::link(&k.display_name(), &(t.component)(k)),
-                None => M::esc(lang.t("sys_not_in_catalogue")),
-            };
-            let drift = s.instances[i]
-                .version_drift
-                .as_ref()
-                .map(|v| M::esc(&format!("{} {v}", lang.t("sys_drift"))))
-                .unwrap_or_default();
-            let ecs = c
-                .execution_contexts
-                .iter()
-                .map(|ec| {
-                    let rate = txt(&ec.rate);
-                    let mut x = format!("{}: {}", txt(&ec.id), txt(&ec.kind));
-                    if !rate.is_empty() {
-                        x.push_str(&format!(" {rate} Hz"));
-                    }
-                    x
-                })
-                .collect::<Vec<_>>()
-                .join("; ");
+        .map(|kv| vec![M::esc(&kv.key), M::esc(&kv.value)])
+        .collect();
+    M::table(out, &[lang.t("extra_path"), lang.t("value")], &rows);
+}
+
+fn instances<M: Markup>(
+    out: &mut String,
+    v: &SystemView,
+    lang: Lang,
+    show_host: bool,
+    t: &Targets<'_>,
+) {
+    (t.heading)(out, "instances", lang.t("instances"));
+    let rows: Vec<Vec<String>> = v
+        .instances
+        .iter()
+        .map(|r| {
             let mut row = vec![
-                M::esc(&txt(&c.instance_name)),
-                comp,
-                M::esc(&txt(&c.id)),
-                drift,
-                M::esc(&txt(&c.active_configuration_set)),
-                M::esc(&ecs),
-                M::esc(&txt(&c.composite_type)),
+                M::esc(&r.name),
+                r.component
+                    .as_ref()
+                    .map(link::<M>)
+                    .unwrap_or_else(|| M::esc(lang.t("sys_not_in_catalogue"))),
+                M::esc(&r.id),
+                r.drift
+                    .as_ref()
+                    .map(|d| M::esc(&format!("{} {d}", lang.t("sys_drift"))))
+                    .unwrap_or_default(),
+                M::esc(&r.active_set),
+                M::esc(&r.contexts),
+                M::esc(&r.required),
+                M::esc(&r.composite),
+                M::esc(&r.comment),
             ];
             if show_host {
-                row.push(M::esc(&txt(&c.path_uri)));
+                row.push(M::esc(&r.path_uri));
             }
             row
         })
@@ -136,105 +134,92 @@ pub fn system_body<M: Markup>(
         lang.t("sys_version_drift"),
         lang.t("sys_active_set"),
         lang.t("sys_contexts"),
+        lang.t("sys_required"),
         lang.t("sys_composite"),
+        lang.t("comment"),
     ];
     if show_host {
         heads.push(lang.t("sys_path_uri"));
     }
     M::table(out, &heads, &rows);
+}
 
-    // Configuration used.
+fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
     let mut rows: Vec<Vec<String>> = Vec::new();
-    for (i, c) in p.components.iter().enumerate() {
-        let comp = cat.instance_component(s, i);
-        for set in &c.configuration_sets {
+    for ic in &v.configs {
+        for set in &ic.sets {
+            let mut id = M::esc(&set.id);
+            if set.active {
+                id = format!("{id} ({})", M::esc(lang.t("active")));
+            }
             // An empty set says so (it is a value of the file, not nothing).
-            if set.configuration_data.is_empty() {
+            if set.rows.is_empty() {
                 rows.push(vec![
-                    M::esc(&txt(&c.instance_name)),
-                    M::esc(&txt(&set.id)),
+                    M::esc(&ic.instance),
+                    id.clone(),
                     String::new(),
                     M::esc(lang.t("fact_none")),
                     String::new(),
                     String::new(),
                 ]);
             }
-            for d in &set.configuration_data {
-                let n = txt(&d.name);
-                let v = d.data.as_deref().unwrap_or("").to_string();
-                let default = comp
-                    .and_then(|k| {
-                        k.profile
-                            .configurations()
-                            .iter()
-                            .find(|x| x.name.as_deref().map(str::trim) == Some(n.trim()))
-                    })
-                    .and_then(|x| x.default_value.as_deref())
-                    .unwrap_or("")
-                    .to_string();
-                let note = match comp {
-                    _ if set.pseudo => lang.t("sys_pseudo").to_string(),
-                    None => String::new(),
-                    Some(k) => match check_configuration(k, &n, &v) {
-                        ConfigCheck::Ok => String::new(),
-                        ConfigCheck::Undeclared => lang.t("sys_undeclared").to_string(),
-                        ConfigCheck::BadType(w) | ConfigCheck::Violated(w) => w,
-                    },
-                };
-                let value = if !set.pseudo && comp.is_some() && default != v {
-                    M::bold(&M::esc(&v))
+            for r in &set.rows {
+                let value = if r.differs {
+                    M::bold(&M::esc(&r.value))
                 } else {
-                    M::esc(&v)
+                    M::esc(&r.value)
+                };
+                let note = if set.pseudo {
+                    lang.t("sys_pseudo").to_string()
+                } else {
+                    r.note.clone()
                 };
                 rows.push(vec![
-                    M::esc(&txt(&c.instance_name)),
-                    M::esc(&txt(&set.id)),
-                    M::esc(&n),
+                    M::esc(&ic.instance),
+                    id.clone(),
+                    M::esc(&r.name),
                     value,
-                    M::esc(&default),
+                    M::esc(&r.default),
                     M::esc(&note),
                 ]);
             }
         }
     }
-    if !rows.is_empty() {
-        (t.heading)(out, "configuration", lang.t("sys_configuration"));
-        M::table(
-            out,
-            &[
-                lang.t("instance"),
-                lang.t("sys_set"),
-                lang.t("name"),
-                lang.t("value"),
-                lang.t("sys_component_default"),
-                lang.t("description"),
-            ],
-            &rows,
-        );
+    if rows.is_empty() {
+        return;
     }
+    (t.heading)(out, "configuration", lang.t("sys_configuration"));
+    M::table(
+        out,
+        &[
+            lang.t("instance"),
+            lang.t("sys_set"),
+            lang.t("name"),
+            lang.t("value"),
+            lang.t("sys_component_default"),
+            lang.t("description"),
+        ],
+        &rows,
+    );
+}
 
-    // Connectors.
+fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
     (t.heading)(out, "data-connectors", lang.t("sys_data_connectors_h"));
-    let rows: Vec<Vec<String>> = p
-        .data_port_connectors
+    let rows: Vec<Vec<String>> = v
+        .data_connectors
         .iter()
         .map(|c| {
-            let ty = match non_empty(&c.data_type) {
-                Some(x) => match cat.data_type_index(x) {
-                    Some(d) => M::link(x, &M::page_target(cat, from, cat.data_type_page(d))),
-                    None => M::esc(x),
-                },
-                None => String::new(),
-            };
             vec![
-                M::esc(&txt(&c.name)),
-                M::esc(&end(&c.source)),
-                M::esc(&end(&c.target)),
-                ty,
-                M::esc(&txt(&c.interface_type)),
-                M::esc(&txt(&c.dataflow_type)),
-                M::esc(&txt(&c.subscription_type)),
-                M::esc(&txt(&c.push_interval)),
+                M::esc(&c.name),
+                M::esc(&c.id),
+                end_text::<M>(&c.source),
+                end_text::<M>(&c.target),
+                c.data_type.as_ref().map(link::<M>).unwrap_or_default(),
+                M::esc(&c.interface_type),
+                M::esc(&c.dataflow_type),
+                M::esc(&c.subscription_type),
+                M::esc(&c.push_interval),
+                M::esc(&c.comment),
             ]
         })
         .collect();
@@ -242,6 +227,7 @@ pub fn system_body<M: Markup>(
         out,
         &[
             lang.t("sys_connector"),
+            lang.t("id"),
             lang.t("sys_source"),
             lang.t("sys_target"),
             lang.t("type"),
@@ -249,6 +235,7 @@ pub fn system_body<M: Markup>(
             lang.t("sys_dataflow"),
             lang.t("sys_subscription"),
             lang.t("sys_push_interval"),
+            lang.t("comment"),
         ],
         &rows,
     );
@@ -257,15 +244,19 @@ pub fn system_body<M: Markup>(
         "service-connectors",
         lang.t("sys_service_connectors_h"),
     );
-    let rows: Vec<Vec<String>> = p
-        .service_port_connectors
+    let rows: Vec<Vec<String>> = v
+        .service_connectors
         .iter()
         .map(|c| {
+            let ifaces: Vec<String> = c.interfaces.iter().map(link::<M>).collect();
             vec![
-                M::esc(&txt(&c.name)),
-                M::esc(&end(&c.source)),
-                M::esc(&end(&c.target)),
-                M::esc(&txt(&c.trans_method)),
+                M::esc(&c.name),
+                M::esc(&c.id),
+                end_text::<M>(&c.source),
+                end_text::<M>(&c.target),
+                ifaces.join(", "),
+                M::esc(&c.trans_method),
+                M::esc(&c.comment),
             ]
         })
         .collect();
@@ -273,39 +264,33 @@ pub fn system_body<M: Markup>(
         out,
         &[
             lang.t("sys_connector"),
+            lang.t("id"),
             lang.t("sys_source"),
             lang.t("sys_target"),
+            lang.t("interfaces"),
             lang.t("sys_trans_method"),
+            lang.t("comment"),
         ],
         &rows,
     );
+}
 
-    // Orders and groups.
-    let mut rows: Vec<Vec<String>> = Vec::new();
-    for o in &p.orders {
-        for tg in &o.targets {
-            let tc = tg.target_component.as_ref();
-            let mut cond = Vec::new();
-            if let Some(w) = &tg.wait_time {
-                cond.push(format!("{} {} ms", lang.t("sys_wait"), txt(&w.wait_time)));
-            }
-            if let Some(pr) = &tg.preceding {
-                let after: Vec<String> = pr
-                    .preceding_components
-                    .iter()
-                    .map(|c| txt(&c.instance_name))
-                    .collect();
-                cond.push(format!("{} {}", lang.t("sys_after"), after.join(", ")));
-            }
-            rows.push(vec![
-                M::esc(o.kind.xml_name()),
-                M::esc(&txt(&tg.sequence)),
-                M::esc(&tc.map(|c| txt(&c.instance_name)).unwrap_or_default()),
-                M::esc(&tc.map(|c| txt(&c.id)).unwrap_or_default()),
-                M::esc(&cond.join("; ")),
-            ]);
-        }
-    }
+fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
+    let rows: Vec<Vec<String>> = v
+        .orders
+        .iter()
+        .flat_map(|o| {
+            o.targets.iter().map(move |r| {
+                vec![
+                    M::esc(o.kind),
+                    M::esc(&r.sequence),
+                    M::esc(&r.instance),
+                    M::esc(&r.context),
+                    M::esc(&r.condition),
+                ]
+            })
+        })
+        .collect();
     if !rows.is_empty() {
         (t.heading)(out, "orders", lang.t("sys_orders"));
         M::table(
@@ -320,26 +305,15 @@ pub fn system_body<M: Markup>(
             &rows,
         );
     }
-    if !p.groups.is_empty() {
+    if !v.groups.is_empty() {
         (t.heading)(out, "groups", lang.t("sys_groups"));
-        let rows: Vec<Vec<String>> = p
+        let rows: Vec<Vec<String>> = v
             .groups
             .iter()
-            .map(|g| {
-                let m: Vec<String> = g.members.iter().map(|m| txt(&m.instance_name)).collect();
-                vec![M::esc(&txt(&g.group_id)), M::esc(&m.join(", "))]
-            })
+            .map(|g| vec![M::esc(&g.id), M::esc(&g.members.join(", "))])
             .collect();
         M::table(out, &[lang.t("sys_groups"), lang.t("sys_members")], &rows);
     }
-
-    // Every value.
-    (t.heading)(out, "all-values", lang.t("sys_all_values"));
-    let rows: Vec<Vec<String>> = all_values(p, show_host)
-        .into_iter()
-        .map(|(k, v)| vec![M::esc(&k), M::esc(&v)])
-        .collect();
-    M::table(out, &[lang.t("extra_path"), lang.t("value")], &rows);
 }
 
 /// The systems using component `ci` as (system name and instances, system) for a list.

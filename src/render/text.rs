@@ -68,6 +68,16 @@ pub trait Markup {
     }
     /// A link on page `from` to page `to` (a data type's or interface's), as a table cell.
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String;
+    /// A link with `text` on page `from` to page `to` (to its `anchor` if given).
+    fn page_link(
+        cat: &Catalog,
+        from: &Page,
+        to: &Page,
+        anchor: Option<&str>,
+        text: &str,
+    ) -> String {
+        Self::link(text, &cat.href(from, to, anchor, Self::OUTPUT))
+    }
     /// The target of a link on page `from` to page `to`, for [`Markup::link`].
     fn page_target(cat: &Catalog, from: &Page, to: &Page) -> String {
         cat.href(from, to, None, Self::OUTPUT)
@@ -219,8 +229,8 @@ pub fn component_cols(lang: Lang) -> [&'static str; 4] {
 
 /// A view's link as a cell: linked when it has a target, else plain.
 pub fn linked<M: Markup>(cat: &Catalog, from: &Page, l: &Linked<'_>) -> String {
-    match l.target(cat, from, M::OUTPUT) {
-        Some(t) => M::link(&l.text, &t),
+    match l.to {
+        Some((to, anchor)) => M::page_link(cat, from, to, anchor, &l.text),
         None => M::esc(&l.text),
     }
 }

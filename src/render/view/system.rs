@@ -1,0 +1,502 @@
+//! The page of an RT System: summary, instances, configuration used, connectors, orders,
+//! groups and every value of the file, built once for the HTML site, Markdown and Doxygen.
+//! Host data is left out unless `show_host`. Links are resolved for one output
+//! ([`Catalog::href`]); everything else is plain text.
+
+use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
+use crate::catalog::{Catalog, Output, Page};
+use crate::i18n::Lang;
+use crate::model::system::{PortEnd, RtSystem};
+use crate::model::{non_empty, Text};
+use serde::Serialize;
+
+/// A link resolved for one output: text and target (empty: no link).
+#[derive(Debug, Clone, Serialize)]
+pub struct Link {
+    pub text: String,
+    pub href: String,
+}
+
+/// A labelled value.
+#[derive(Debug, Clone, Serialize)]
+pub struct KeyValue {
+    pub key: String,
+    pub value: String,
+}
+
+fn txt(v: &Option<Text>) -> String {
+    non_empty(v).unwrap_or("").to_string()
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct InstanceRow {
+    pub anchor: String,
+    pub name: String,
+    pub component: Option<Link>,
+    pub id: String,
+    pub drift: Option<String>,
+    pub active_set: String,
+    pub contexts: String,
+    pub required: String,
+    pub composite: String,
+    pub comment: String,
+    pub path_uri: String,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct ConfRow {
+    pub name: String,
+    pub value: String,
+    pub default: String,
+    pub differs: bool,
+    /// `ok`, `undeclared`, `bad-type`, `violated`, `unknown` (component not in the catalogue).
+    pub status: &'static str,
+    pub note: String,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct ConfSet {
+    pub id: String,
+    pub active: bool,
+    pub pseudo: bool,
+    pub rows: Vec<ConfRow>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct InstanceConfig {
+    pub instance: String,
+    pub anchor: String,
+    pub sets: Vec<ConfSet>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct EndView {
+    pub instance: Option<Link>,
+    pub port: Link,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct DataConnRow {
+    pub name: String,
+    pub id: String,
+    pub source: EndView,
+    pub target: EndView,
+    pub data_type: Option<Link>,
+    pub interface_type: String,
+    pub dataflow_type: String,
+    pub subscription_type: String,
+    pub push_interval: String,
+    pub comment: String,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct ServiceConnRow {
+    pub name: String,
+    pub id: String,
+    pub source: EndView,
+    pub target: EndView,
+    pub interfaces: Vec<Link>,
+    pub trans_method: String,
+    pub comment: String,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct OrderRow {
+    pub sequence: String,
+    pub instance: String,
+    pub context: String,
+    pub condition: String,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct OrderView {
+    pub kind: &'static str,
+    pub targets: Vec<OrderRow>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct GroupView {
+    pub id: String,
+    pub members: Vec<String>,
+}
+
+/// Everything a system page says (the wiring drawing aside).
+pub struct SystemView {
+    pub name: String,
+    pub summary: Vec<KeyValue>,
+    pub properties: Vec<KeyValue>,
+    /// How many host values were left out.
+    pub hidden: usize,
+    pub instances: Vec<InstanceRow>,
+    pub configs: Vec<InstanceConfig>,
+    pub data_connectors: Vec<DataConnRow>,
+    pub service_connectors: Vec<ServiceConnRow>,
+    pub orders: Vec<OrderView>,
+    pub groups: Vec<GroupView>,
+    /// Every value of the file as (path, value).
+    pub all_values: Vec<KeyValue>,
+}
+
+/// Link of a connector end: the instance row, and the port on the component page when the
+/// component and its port are in the catalogue (else the instance row).
+fn end_view(
+    cat: &Catalog,
+    s: &System,
+    href: &dyn Fn(&Page, Option<&str>) -> String,
+    local: &dyn Fn(&str) -> String,
+    e: &Option<PortEnd>,
+    link: &crate::catalog::systems::EndLink,
+) -> EndView {
+    let port_name = e.as_ref().map(end_port_name).unwrap_or("").to_string();
+    let Some(i) = link.instance else {
+        let inst = e
+            .as_ref()
+            .map(|e| txt(&e.instance_name))
+            .unwrap_or_default();
+        return EndView {
+            instance: None,
+            port: Link {
+                text: format!("{inst}.{port_name}"),
+                href: String::new(),
+            },
+        };
+    };
+    let anchor = &s.instances[i].anchor;
+    let name = txt(&s.profile.components[i].instance_name);
+    let comp = cat.instance_component(s, i);
+    let to = comp
+        .and_then(|c| cat.component_index(&c.id))
+        .map(|ci| cat.component_page(ci));
+    let port_href = match (comp, to, &link.port) {
+        (Some(c), Some(to), Some(PortLink::Data { index, .. })) => {
+            href(to, Some(&c.anchors.data_ports[*index]))
+        }
+        (Some(c), Some(to), Some(PortLink::Service { index, .. })) => {
+            href(to, Some(&c.anchors.service_ports[*index]))
+        }
+        _ => local(anchor),
+    };
+    EndView {
+        instance: Some(Link {
+            text: name,
+            href: local(anchor),
+        }),
+        port: Link {
+            text: port_name,
+            href: port_href,
+        },
+    }
+}
+
+/// Builds the view of system `s` with its links for output `out`.
+pub fn system_view(
+    cat: &Catalog,
+    s: &System,
+    lang: Lang,
+    show_host: bool,
+    out: Output,
+) -> SystemView {
+    let here = cat.page_of_system(s);
+    let href = |to: &Page, anchor: Option<&str>| -> String {
+        here.map(|from| cat.href(from, to, anchor, out))
+            .unwrap_or_default()
+    };
+    // An instance's row of this page: only the HTML page has row anchors.
+    let local = |anchor: &str| -> String {
+        match out {
+            Output::Html => format!("#{anchor}"),
+            Output::Markdown | Output::Doxygen => String::new(),
+        }
+    };
+    let p: &RtSystem = &s.profile;
+    let name = p.name().to_string();
+    let parts = p.id_parts.as_ref();
+    let part = |f: fn(&crate::model::system::SystemIdParts) -> &Option<Text>| {
+        parts.map(|x| txt(f(x))).unwrap_or_default()
+    };
+    let kv = |k: &str, v: String| KeyValue {
+        key: lang.t(k).to_string(),
+        value: v,
+    };
+    let mut summary = vec![
+        kv("sys_id", txt(&p.id)),
+        kv("vendor", part(|x| &x.vendor)),
+        kv("version", part(|x| &x.version)),
+        kv("sys_format_version", txt(&p.version)),
+        kv("sys_abstract", txt(&p.abstract_)),
+        kv("creation_date", txt(&p.creation_date)),
+        kv("update_date", txt(&p.update_date)),
+        kv("comment", txt(&p.comment)),
+        kv("source", s.source.clone()),
+    ];
+    summary.retain(|f| !f.value.is_empty());
+    let properties: Vec<KeyValue> = p
+        .properties
+        .iter()
+        .filter(|q| {
+            show_host
+                || !(q.private
+                    || q.value
+                        .as_deref()
+                        .is_some_and(crate::catalog::systems::is_naming_path))
+        })
+        .map(|q| KeyValue {
+            key: txt(&q.name),
+            value: txt(&q.value),
+        })
+        .collect();
+    let hidden = if show_host {
+        0
+    } else {
+        crate::catalog::systems::host_values(p)
+    };
+
+    // Instances.
+    let instances: Vec<InstanceRow> = p
+        .components
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let comp = cat.instance_component(s, i);
+            let contexts = c
+                .execution_contexts
+                .iter()
+                .map(|ec| {
+                    let rate = txt(&ec.rate);
+                    let mut t = txt(&ec.kind);
+                    if !rate.is_empty() {
+                        t.push_str(&format!(" {rate} Hz"));
+                    }
+                    let id = txt(&ec.id);
+                    if !id.is_empty() {
+                        t = format!("{id}: {t}");
+                    }
+                    t
+                })
+                .collect::<Vec<_>>()
+                .join("; ");
+            InstanceRow {
+                anchor: s.instances[i].anchor.clone(),
+                name: txt(&c.instance_name),
+                component: comp.map(|k| Link {
+                    text: k.display_name().into_owned(),
+                    href: cat
+                        .component_index(&k.id)
+                        .map(|ci| href(cat.component_page(ci), None))
+                        .unwrap_or_default(),
+                }),
+                id: txt(&c.id),
+                drift: s.instances[i].version_drift.clone(),
+                active_set: txt(&c.active_configuration_set),
+                contexts,
+                required: txt(&c.is_required),
+                composite: txt(&c.composite_type),
+                comment: txt(&c.comment),
+                path_uri: if show_host {
+                    txt(&c.path_uri)
+                } else {
+                    String::new()
+                },
+            }
+        })
+        .collect();
+
+    // Configuration used, per instance, next to the component's defaults.
+    let configs: Vec<InstanceConfig> = p
+        .components
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| !c.configuration_sets.is_empty())
+        .map(|(i, c)| {
+            let comp = cat.instance_component(s, i);
+            let active = txt(&c.active_configuration_set);
+            let sets = c
+                .configuration_sets
+                .iter()
+                .map(|set| {
+                    let rows =
+                        set.configuration_data
+                            .iter()
+                            .map(|d| {
+                                let n = txt(&d.name);
+                                let v = d.data.as_deref().unwrap_or("").to_string();
+                                let decl = comp.and_then(|k| {
+                                    k.profile.configurations().iter().find(|x| {
+                                        x.name.as_deref().map(str::trim) == Some(n.trim())
+                                    })
+                                });
+                                let default = decl
+                                    .and_then(|x| x.default_value.as_deref())
+                                    .unwrap_or("")
+                                    .to_string();
+                                let (status, note) = match comp {
+                                    _ if set.pseudo => ("ok", String::new()),
+                                    None => ("unknown", String::new()),
+                                    Some(k) => match check_configuration(k, &n, &v) {
+                                        ConfigCheck::Ok => ("ok", String::new()),
+                                        ConfigCheck::Undeclared => {
+                                            ("undeclared", lang.t("sys_undeclared").to_string())
+                                        }
+                                        ConfigCheck::BadType(w) => ("bad-type", w),
+                                        ConfigCheck::Violated(w) => ("violated", w),
+                                    },
+                                };
+                                ConfRow {
+                                    differs: decl.is_some() && !set.pseudo && default != v,
+                                    name: n,
+                                    value: v,
+                                    default,
+                                    status,
+                                    note,
+                                }
+                            })
+                            .collect();
+                    let id = txt(&set.id);
+                    ConfSet {
+                        active: id == active,
+                        pseudo: set.pseudo,
+                        id,
+                        rows,
+                    }
+                })
+                .collect();
+            InstanceConfig {
+                instance: txt(&c.instance_name),
+                anchor: s.instances[i].anchor.clone(),
+                sets,
+            }
+        })
+        .collect();
+
+    // Connectors.
+    let data_connectors: Vec<DataConnRow> = p
+        .data_port_connectors
+        .iter()
+        .zip(&s.data_connectors)
+        .map(|(c, l)| DataConnRow {
+            name: txt(&c.name),
+            id: txt(&c.connector_id),
+            source: end_view(cat, s, &href, &local, &c.source, &l.source),
+            target: end_view(cat, s, &href, &local, &c.target, &l.target),
+            data_type: non_empty(&c.data_type).map(|t| Link {
+                text: t.to_string(),
+                href: cat
+                    .data_type_index(t)
+                    .map(|d| href(cat.data_type_page(d), None))
+                    .unwrap_or_default(),
+            }),
+            interface_type: txt(&c.interface_type),
+            dataflow_type: txt(&c.dataflow_type),
+            subscription_type: txt(&c.subscription_type),
+            push_interval: txt(&c.push_interval),
+            comment: txt(&c.comment),
+        })
+        .collect();
+    let service_connectors: Vec<ServiceConnRow> = p
+        .service_port_connectors
+        .iter()
+        .zip(&s.service_connectors)
+        .map(|(c, l)| {
+            let mut interfaces: Vec<Link> = Vec::new();
+            for end in [&l.source, &l.target] {
+                let (Some(i), Some(PortLink::Service { index, .. })) = (end.instance, &end.port)
+                else {
+                    continue;
+                };
+                let Some(comp) = cat.instance_component(s, i) else {
+                    continue;
+                };
+                for iface in &comp.profile.service_ports[*index].interfaces {
+                    let Some(t) = non_empty(&iface.type_) else {
+                        continue;
+                    };
+                    if interfaces.iter().any(|x| x.text == t) {
+                        continue;
+                    }
+                    interfaces.push(Link {
+                        text: t.to_string(),
+                        href: cat
+                            .interface_index_of(t)
+                            .map(|d| href(cat.interface_page(d), None))
+                            .unwrap_or_default(),
+                    });
+                }
+            }
+            ServiceConnRow {
+                name: txt(&c.name),
+                id: txt(&c.connector_id),
+                source: end_view(cat, s, &href, &local, &c.source, &l.source),
+                target: end_view(cat, s, &href, &local, &c.target, &l.target),
+                interfaces,
+                trans_method: txt(&c.trans_method),
+                comment: txt(&c.comment),
+            }
+        })
+        .collect();
+
+    // Orders and groups.
+    let orders: Vec<OrderView> = p
+        .orders
+        .iter()
+        .map(|o| OrderView {
+            kind: o.kind.xml_name(),
+            targets: o
+                .targets
+                .iter()
+                .map(|t| {
+                    let tc = t.target_component.as_ref();
+                    let mut condition = Vec::new();
+                    if let Some(w) = t.wait_time.as_ref().map(|w| txt(&w.wait_time)) {
+                        condition.push(format!("{} {w} ms", lang.t("sys_wait")));
+                    }
+                    if let Some(pr) = &t.preceding {
+                        let after: Vec<String> = pr
+                            .preceding_components
+                            .iter()
+                            .map(|c| txt(&c.instance_name))
+                            .collect();
+                        condition.push(format!(
+                            "{} {} ({} {} ms, {})",
+                            lang.t("sys_after"),
+                            after.join(", "),
+                            lang.t("sys_timeout"),
+                            txt(&pr.timeout),
+                            txt(&pr.sending_timing)
+                        ));
+                    }
+                    OrderRow {
+                        sequence: txt(&t.sequence),
+                        instance: tc.map(|c| txt(&c.instance_name)).unwrap_or_default(),
+                        context: tc.map(|c| txt(&c.id)).unwrap_or_default(),
+                        condition: condition.join("; "),
+                    }
+                })
+                .collect(),
+        })
+        .collect();
+    let groups: Vec<GroupView> = p
+        .groups
+        .iter()
+        .map(|g| GroupView {
+            id: txt(&g.group_id),
+            members: g.members.iter().map(|m| txt(&m.instance_name)).collect(),
+        })
+        .collect();
+
+    SystemView {
+        name,
+        summary,
+        properties,
+        hidden,
+        instances,
+        configs,
+        data_connectors,
+        service_connectors,
+        orders,
+        groups,
+        all_values: crate::catalog::systems::all_values(p, show_host)
+            .into_iter()
+            .map(|(key, value)| KeyValue { key, value })
+            .collect(),
+    }
+}
