@@ -319,8 +319,9 @@ fn markdown_doxygen_and_json_carry_systems() {
     for want in [
         "[Camera](../components/camera.md)",
         "version drift: the catalogue has 1.1.0",
-        "| Camera0.image\\_Planner0.image | Camera0.image | Planner0.image | [IDL:RTC/CameraImage:1.0](../types/rtc-cameraimage.md) | corba\\_cdr | push | periodic | 0.5 |",
-        "| Planner0.camera\\_Camera0.control | Planner0.camera | Camera0.control | corba |",
+        // The same columns as the HTML page: id, ends linked to the ports, comment.
+        "| Camera0.image\\_Planner0.image | c1-image | Camera0.[image](../components/camera.md#port-image) | Planner0.[image](../components/planner.md#port-image) | [IDL:RTC/CameraImage:1.0](../types/rtc-cameraimage.md) | corba\\_cdr | push | periodic | 0.5 | frames to planner |",
+        "| Planner0.camera\\_Camera0.control | c2-control | Planner0.[camera](../components/planner.md#sport-camera) | Camera0.[control](../components/camera.md#sport-control) | [CameraControl](../interfaces/cameracontrol.md) | corba | camera control |",
         "7 host values hidden",
     ] {
         assert!(page.contains(want), "{want} in\n{page}");

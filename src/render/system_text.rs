@@ -148,10 +148,7 @@ fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Ta
     let mut rows: Vec<Vec<String>> = Vec::new();
     for ic in &v.configs {
         for set in &ic.sets {
-            let mut id = M::esc(&set.id);
-            if set.active {
-                id = format!("{id} ({})", M::esc(lang.t("active")));
-            }
+            let id = M::esc(&set.id);
             // An empty set says so (it is a value of the file, not nothing).
             if set.rows.is_empty() {
                 rows.push(vec![
