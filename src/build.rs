@@ -29,6 +29,9 @@ pub struct LoadOptions {
     pub sources: Vec<crate::sources::Pinned>,
     /// Read only the sources, not the input directory (sources configured, no `input`).
     pub sources_only: bool,
+    /// Commits read per profile for its history (`history`, `--history`; 0: no history, the
+    /// default of these options, as `check` and `diff` need none). Only `build` reads it.
+    pub history: usize,
 }
 
 /// `--strict` and a profile has an error: nothing was written. Carries the findings so the
@@ -519,6 +522,16 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());
     let mut loaded = load_with(&opts.input, &load_opts, progress)?;
+    if load_opts.history > 0 {
+        progress.stage("reading the history", 0);
+        crate::history::attach(
+            &mut loaded.catalog,
+            &loaded.roots,
+            &load_opts.sources,
+            load_opts.history,
+            &load_opts.limits,
+        );
+    }
     // The `rtcdoc check` rules run on every build; their findings join the catalogue's
     // diagnostics so they appear in the JSON output and the diagnostics page.
     progress.stage("checking", 0);

@@ -40,6 +40,8 @@ pub struct Config {
     pub idl_path: Option<Vec<PathBuf>>,
     /// Fail the build on any profile error.
     pub strict: Option<bool>,
+    /// Commits read per profile for its history (0: no history).
+    pub history: Option<usize>,
     /// Largest profile file accepted, in bytes.
     pub max_file_size: Option<u64>,
     /// Deepest nesting accepted.
@@ -562,6 +564,8 @@ pub struct Overrides {
     pub allow_empty: bool,
     /// `--idl-path DIR` (repeatable).
     pub idl_path: Vec<PathBuf>,
+    /// `--history N`.
+    pub history: Option<usize>,
 }
 
 /// The catalogue title when none is configured, in the UI language.
@@ -620,6 +624,10 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
             sources_only: c.source.as_ref().is_some_and(|s| !s.is_empty())
                 && cli.input.is_none()
                 && c.input.is_none(),
+            history: cli
+                .history
+                .or(c.history)
+                .unwrap_or(crate::history::DEFAULT_LIMIT),
             idl_path: if cli.idl_path.is_empty() {
                 c.idl_path
                     .iter()
