@@ -256,3 +256,105 @@ fn backups_are_the_history_without_git() {
     assert_eq!(codes(&h[2]), ["DIFF301"]);
     assert_eq!(h[3]["first"], true);
 }
+
+fn build(input: &Path, out: &Path, extra: &[&str]) {
+    let mut args = vec![
+        "build",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let o = rtcdoc(&args, input);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+fn page(dir: &Path, rel: &str) -> String {
+    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
+}
+
+#[test]
+fn the_component_page_has_a_history_section_in_every_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    std::fs::create_dir_all(&repo).unwrap();
+    if !repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    write(
+        &repo,
+        "rtcdoc.toml",
+        "source-url = \"https://example.org/lab/blob/{commit}/{path}\"\n",
+    );
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "html,markdown,doxygen"]);
+    let html = page(&site, "html/components/base.html");
+    assert!(
+        html.contains("<li><a href=\"#change-history\">History</a></li>"),
+        "{html}"
+    );
+    let section = &html[html
+        .find("<section id=\"change-history\">")
+        .expect("a History section")..];
+    let section = &section[..section.find("</section>").unwrap()];
+    // Newest first; the move and the reformatting folded; the release marked; the rename's
+    // breaking changes spelled out; each commit linked to its file at that commit.
+    let rows: Vec<&str> = section.split("<tr>").skip(2).collect();
+    assert_eq!(rows.len(), 6, "{section}");
+    assert!(
+        rows[0].contains("1 version without changes to the specification"),
+        "{}",
+        rows[0]
+    );
+    assert!(rows[1].contains("2.0.0 (release)"), "{}", rows[1]);
+    assert!(rows[1].contains("Release 2.0.0"), "{}", rows[1]);
+    assert!(rows[2].contains("Rename cmd to velocity"), "{}", rows[2]);
+    assert!(
+        rows[2].contains("1 breaking, 1 warning, 1 info<ul>"),
+        "{}",
+        rows[2]
+    );
+    assert!(rows[2].contains("<li>dataPorts/cmd: "), "{}", rows[2]);
+    assert!(
+        rows[2]
+            .contains("<li>basicInfo/version: `Base` has breaking changes but keeps version 1.0.0"),
+        "{}",
+        rows[2]
+    );
+    assert!(rows[3].contains("1 version without changes"), "{}", rows[3]);
+    assert!(rows[4].contains("1 info"), "{}", rows[4]);
+    assert!(
+        rows[5].contains("first version in the history"),
+        "{}",
+        rows[5]
+    );
+    assert!(
+        rows[2].contains("<a href=\"https://example.org/lab/blob/"),
+        "{}",
+        rows[2]
+    );
+    assert!(rows[2].contains("/Base/RTC.xml\"><code>"), "{}", rows[2]);
+
+    let md = page(&site, "markdown/components/base.md");
+    assert!(md.contains("## History"), "{md}");
+    assert!(md.contains("Rename cmd to velocity"), "{md}");
+    assert!(md.contains("2.0.0 (release)"), "{md}");
+    let dox = page(&site, "doxygen/components/base.dox");
+    assert!(dox.contains("Rename cmd to velocity"), "{dox}");
+
+    // The native writer and the template say the same, byte for byte.
+    let theme = dir.path().join("theme");
+    write(
+        &theme,
+        "component.html",
+        &std::fs::read_to_string(common::root().join("themes/default/component.html")).unwrap(),
+    );
+    let templated = dir.path().join("templated");
+    build(
+        &repo,
+        &templated,
+        &["-f", "html", "--theme", theme.to_str().unwrap()],
+    );
+    assert_eq!(html, page(&templated, "components/base.html"));
+}

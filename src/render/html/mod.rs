@@ -393,6 +393,9 @@ struct ComponentPage {
     systems: Vec<Link>,
     /// RTCBuilder's backups of the profile: older versions, not components.
     backups: Vec<facts::BackupRow>,
+    /// The History section: the latest versions of the profile, and the note on older ones.
+    history: Vec<crate::render::view::history::HistoryRow>,
+    history_older: Option<String>,
 }
 
 #[derive(Serialize)]
@@ -704,6 +707,8 @@ impl<'a> Site<'a> {
                 .filter_map(|l| self.link(page, l))
                 .collect(),
             backups: facts::BackupRow::of(&self.catalog.components[v.ci], lang),
+            history: v.history.rows.clone(),
+            history_older: v.history.older_note(lang),
         }
     }
 

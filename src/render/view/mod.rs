@@ -8,6 +8,7 @@
 //! rendering in each output.
 
 pub mod component;
+pub mod history;
 pub mod types;
 
 use crate::catalog::{Catalog, Output, Page};
