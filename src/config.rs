@@ -244,6 +244,9 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # max-file-size = {size}
 # max-depth = {depth}
 
+# Commits read per profile for its history (git, with RTCBuilder's backups); 0 turns it off.
+# history = 100
+
 # RT System profiles carry the host names, IORs and CORBA endpoints of the machine they were
 # saved on; system pages and catalog.json leave them out unless this is true (an internal site).
 # show-host-data = false
@@ -345,6 +348,9 @@ language = "ja"
 # 悪意のある入力に対する上限。
 # max-file-size = {size}
 # max-depth = {depth}
+
+# プロファイルごとに履歴として読むコミットの数 (git と RTCBuilder のバックアップ)。0 で履歴を作りません。
+# history = 100
 
 # RTシステムのプロファイルには、保存したマシンのホスト名、IOR、CORBA のエンドポイントが含まれます。
 # システムのページと catalog.json は、これを true にしない限りそれらを公開しません (社内向けサイトなどで使用)。
@@ -628,6 +634,7 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 .history
                 .or(c.history)
                 .unwrap_or(crate::history::DEFAULT_LIMIT),
+            history_reader: Some(crate::history::attach),
             idl_path: if cli.idl_path.is_empty() {
                 c.idl_path
                     .iter()

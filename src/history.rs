@@ -79,13 +79,8 @@ fn is_work_tree(dir: &Path) -> bool {
 /// history at all), its backups, and the file as it is when that differs from the newest
 /// commit. A repository that cannot be read leaves the components without git history; a
 /// version that cannot be read stays in the history with the reason.
-pub fn attach(
-    catalog: &mut Catalog,
-    roots: &Roots,
-    sources: &[crate::sources::Pinned],
-    limit: usize,
-    limits: &Limits,
-) {
+pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOptions) {
+    let (sources, limit, limits) = (&opts.sources, opts.history, &opts.limits);
     if limit == 0 {
         return;
     }
