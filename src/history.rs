@@ -255,7 +255,7 @@ fn parse_blob(bytes: &[u8], oid: &str, limits: &Limits) -> Result<Profile, Strin
     let name = format!("blob {oid}");
     let format = crate::walk::detect_named(bytes).ok_or_else(|| {
         format!(
-            "not a component profile then ({})",
+            "this version {} (not read as a component profile)",
             crate::walk::describe_non_profile(bytes)
         )
     })?;

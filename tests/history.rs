@@ -183,6 +183,17 @@ fn git_history_of_a_work_tree_follows_the_move() {
     assert_eq!(h[5]["first"], true);
     assert!(h[5]["changes"].as_array().unwrap().is_empty());
 
+    // catalog.json is read back with its history.
+    let bytes = std::fs::read(dir.path().join("site/catalog.json")).unwrap();
+    let read = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").unwrap();
+    let back = &read.catalog.components[0].history;
+    assert_eq!(back.len(), 6);
+    assert_eq!(back[2].subject.as_deref(), Some("Rename cmd to velocity"));
+    assert_eq!(
+        serde_json::to_value(back).unwrap(),
+        json["components"]["RTC:Lab:Mobile:Base:2.0.0"]["history"]
+    );
+
     // `--history 2`: the two newest commits; `--history 0`: none.
     let json = build_json(&repo, &dir.path().join("site2"), &["--history", "2"]);
     let h = json["components"]["RTC:Lab:Mobile:Base:2.0.0"]["history"]
@@ -357,4 +368,81 @@ fn the_component_page_has_a_history_section_in_every_output() {
         &["-f", "html", "--theme", theme.to_str().unwrap()],
     );
     assert_eq!(html, page(&templated, "components/base.html"));
+}
+
+#[test]
+fn a_source_repository_gives_its_history_up_to_the_pinned_commit() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    std::fs::create_dir_all(&repo).unwrap();
+    if !repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    // A commit whose profile cannot be read, then the fix.
+    let (_, last) = versions().pop().unwrap();
+    write(&repo, "mobile/Base/RTC.xml", &last[..200]);
+    assert!(git(
+        &repo,
+        &["commit", "-q", "-am", "Broken"],
+        "2024-01-10 10:00:00 +0900"
+    ));
+    write(&repo, "mobile/Base/RTC.xml", &last);
+    assert!(git(
+        &repo,
+        &["commit", "-q", "-am", "Fix"],
+        "2024-01-11 10:00:00 +0900"
+    ));
+    let proj = dir.path().join("proj");
+    write(
+        &proj,
+        "rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\nname = \"lab\"\nsource-url = \"https://git.example.org/lab/blob/{commit}/{path}\"\n",
+    );
+    let cache = dir.path().join("cache");
+    let out = dir.path().join("site");
+    let o = rtcdoc(
+        &[
+            "build",
+            "-o",
+            out.to_str().unwrap(),
+            "-f",
+            "json,html",
+            "--cache-dir",
+            cache.to_str().unwrap(),
+        ],
+        &proj,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("json/catalog.json")).unwrap())
+            .unwrap();
+    let c = &json["components"]["RTC:Lab:Mobile:Base:2.0.0"];
+    assert_eq!(c["source"], "lab/mobile/Base/RTC.xml");
+    let h = c["history"].as_array().expect("a history");
+    let subjects: Vec<&str> = h.iter().map(|e| e["subject"].as_str().unwrap()).collect();
+    assert_eq!(subjects.len(), 8, "{subjects:?}");
+    assert_eq!(&subjects[..3], ["Fix", "Broken", "Move to mobile/"]);
+    // The broken version stays, with why; the fix is compared with the version before it.
+    assert_eq!(
+        h[1]["error"],
+        "this version is not well-formed XML before its root element (not read as a component profile)"
+    );
+    assert!(
+        h[0]["changes"].as_array().unwrap().is_empty(),
+        "{:#?}",
+        h[0]
+    );
+    assert_eq!(h[0]["file"], "mobile/Base/RTC.xml");
+    // The page links each commit to the file in the source's repository at that commit.
+    let html = std::fs::read_to_string(out.join("html/components/base.html")).unwrap();
+    let commit = h[3]["commit"].as_str().unwrap();
+    assert!(
+        html.contains(&format!(
+            "<a href=\"https://git.example.org/lab/blob/{commit}/Base/RTC.xml\"><code>{}</code></a>",
+            &commit[..12]
+        )),
+        "{html}"
+    );
+    assert!(html.contains("could not be read: "), "{html}");
 }
