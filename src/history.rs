@@ -13,7 +13,7 @@ use crate::catalog::{Catalog, Component};
 use crate::model::{non_empty, Profile};
 use crate::parse::{self, Limits};
 use rayon::prelude::*;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -58,6 +58,11 @@ impl Repo {
             Repo::WorkTree(dir) => {
                 let mut c = crate::sources::git_command(None);
                 c.current_dir(dir);
+                // The user's limit on finding the repository around the input is kept (the
+                // sources' commands drop it: they name their repository).
+                if let Some(v) = std::env::var_os("GIT_CEILING_DIRECTORIES") {
+                    c.env("GIT_CEILING_DIRECTORIES", v);
+                }
                 c
             }
             Repo::Mirror(m) => crate::sources::git_command(Some(m)),
@@ -127,20 +132,19 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
         })
         .collect();
     // Each distinct blob read and parsed once.
-    let mut wanted: Vec<Vec<String>> = vec![Vec::new(); repos.len()];
+    // (object id, a path it had: its extension names the format when the content does not).
+    let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
     for v in logs.iter().flatten() {
         if let Where::Blob { repo, oid } = &v.at {
-            wanted[*repo].push(oid.clone());
+            wanted[*repo]
+                .entry(oid.clone())
+                .or_insert_with(|| v.entry.file.clone());
         }
     }
     let parsed: Vec<HashMap<String, Result<Profile, String>>> = repos
         .iter()
         .zip(wanted)
-        .map(|(repo, mut oids)| {
-            oids.sort();
-            oids.dedup();
-            read_blobs(repo, &oids, limits)
-        })
+        .map(|(repo, oids)| read_blobs(repo, &oids, limits))
         .collect();
     let idl = &catalog.idl;
     let histories: Vec<Vec<Entry>> = catalog
@@ -233,35 +237,53 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
 /// Reads and parses the blobs `oids` of `repo` (one `git cat-file --batch`).
 fn read_blobs(
     repo: &Repo,
-    oids: &[String],
+    oids: &BTreeMap<String, String>,
     limits: &Limits,
 ) -> HashMap<String, Result<Profile, String>> {
+    let ids: Vec<String> = oids.keys().cloned().collect();
     let mut raw: Blobs = Vec::new();
-    if !oids.is_empty() {
-        match cat_file(repo, oids) {
+    if !ids.is_empty() {
+        match cat_file(repo, &ids) {
             Ok(blobs) => raw = blobs,
-            Err(e) => raw.extend(oids.iter().map(|o| (o.clone(), Err(e.clone())))),
+            Err(e) => raw.extend(ids.iter().map(|o| (o.clone(), Err(e.clone())))),
         }
     }
     raw.into_par_iter()
         .map(|(oid, bytes)| {
-            let parsed = bytes.and_then(|b| parse_blob(&b, &oid, limits));
+            let file = oids.get(&oid).map_or("", String::as_str);
+            let parsed = bytes.and_then(|b| parse_blob(&b, file, limits));
             (oid, parsed)
         })
         .collect()
 }
 
-fn parse_blob(bytes: &[u8], oid: &str, limits: &Limits) -> Result<Profile, String> {
-    let name = format!("blob {oid}");
-    let format = crate::walk::detect_named(bytes).ok_or_else(|| {
-        format!(
-            "this version {} (not read as a component profile)",
-            crate::walk::describe_non_profile(bytes)
-        )
-    })?;
-    parse::parse(format, bytes, &name, limits)
+/// Parses one version of a profile; `file` is its path then. A version whose content does not
+/// look like a profile is still parsed by its extension, for the parser's error and position.
+fn parse_blob(bytes: &[u8], file: &str, limits: &Limits) -> Result<Profile, String> {
+    let by_name = match file
+        .rsplit('.')
+        .next()
+        .map(str::to_ascii_lowercase)
+        .as_deref()
+    {
+        Some("xml") => Some(parse::SourceFormat::Xml),
+        Some("yaml" | "yml") => Some(parse::SourceFormat::Yaml),
+        _ => None,
+    };
+    let format = crate::walk::detect_named(bytes)
+        .or(by_name)
+        .ok_or_else(|| {
+            format!(
+                "this version {} (not read as a component profile)",
+                crate::walk::describe_non_profile(bytes)
+            )
+        })?;
+    parse::parse(format, bytes, file, limits)
         .map(|p| p.profile)
-        .map_err(|d| d.message)
+        .map_err(|d| match d.pos {
+            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
+            None => d.message,
+        })
 }
 
 fn cat_file(repo: &Repo, oids: &[String]) -> Result<Blobs, String> {

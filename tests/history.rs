@@ -426,7 +426,7 @@ fn a_source_repository_gives_its_history_up_to_the_pinned_commit() {
     // The broken version stays, with why; the fix is compared with the version before it.
     assert_eq!(
         h[1]["error"],
-        "this version is not well-formed XML before its root element (not read as a component profile)"
+        "line 2, column 1: unclosed tag: `<` without a matching `>` (truncated file?)"
     );
     assert!(
         h[0]["changes"].as_array().unwrap().is_empty(),
