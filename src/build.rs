@@ -29,7 +29,16 @@ pub struct LoadOptions {
     pub sources: Vec<crate::sources::Pinned>,
     /// Read only the sources, not the input directory (sources configured, no `input`).
     pub sources_only: bool,
+    /// Commits read per profile for its history (`history`, `--history`; 0: no history, the
+    /// default of these options, as `check` and `diff` need none). Only `build` reads it.
+    pub history: usize,
+    /// What reads the history ([`crate::history::attach`], set by `config::build_options`: the
+    /// history compares versions with `diff`, a later layer than this one).
+    pub history_reader: Option<HistoryReader>,
 }
+
+/// Fills in the components' history of a loaded catalogue (see [`LoadOptions::history`]).
+pub type HistoryReader = fn(&mut Catalog, &crate::catalog::sources::Roots, &LoadOptions);
 
 /// `--strict` and a profile has an error: nothing was written. Carries the findings so the
 /// caller can print them (exit status 1, like `check`).
@@ -519,6 +528,10 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     let mut load_opts = opts.load.clone();
     load_opts.skip_dirs.push(opts.output.clone());
     let mut loaded = load_with(&opts.input, &load_opts, progress)?;
+    if let Some(read_history) = load_opts.history_reader.filter(|_| load_opts.history > 0) {
+        progress.stage("reading the history", 0);
+        read_history(&mut loaded.catalog, &loaded.roots, &load_opts);
+    }
     // The `rtcdoc check` rules run on every build; their findings join the catalogue's
     // diagnostics so they appear in the JSON output and the diagnostics page.
     progress.stage("checking", 0);

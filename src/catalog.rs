@@ -23,6 +23,7 @@
 
 pub mod backups;
 pub mod dataflow;
+pub mod history;
 pub mod neighbourhood;
 pub mod pages;
 pub mod readmes;
@@ -71,6 +72,10 @@ pub struct Component {
     /// older versions of it, not components ([`backups`]).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub backups: Vec<backups::Backup>,
+    /// Its past versions, newest first, each with its classified changes ([`history`]);
+    /// empty when the history is off or nothing records one.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub history: Vec<history::Entry>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
 }
@@ -815,6 +820,7 @@ impl Catalog {
                 qualifier,
                 readme: None,
                 backups: Vec::new(),
+                history: Vec::new(),
                 origin: None,
                 source: l.source,
                 format: l.format,

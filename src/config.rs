@@ -40,6 +40,8 @@ pub struct Config {
     pub idl_path: Option<Vec<PathBuf>>,
     /// Fail the build on any profile error.
     pub strict: Option<bool>,
+    /// Commits read per profile for its history (0: no history).
+    pub history: Option<usize>,
     /// Largest profile file accepted, in bytes.
     pub max_file_size: Option<u64>,
     /// Deepest nesting accepted.
@@ -242,6 +244,9 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # max-file-size = {size}
 # max-depth = {depth}
 
+# Commits read per profile for its history (git, with RTCBuilder's backups); 0 turns it off.
+# history = 100
+
 # RT System profiles carry the host names, IORs and CORBA endpoints of the machine they were
 # saved on; system pages and catalog.json leave them out unless this is true (an internal site).
 # show-host-data = false
@@ -343,6 +348,9 @@ language = "ja"
 # 悪意のある入力に対する上限。
 # max-file-size = {size}
 # max-depth = {depth}
+
+# プロファイルごとに履歴として読むコミットの数 (git と RTCBuilder のバックアップ)。0 で履歴を作りません。
+# history = 100
 
 # RTシステムのプロファイルには、保存したマシンのホスト名、IOR、CORBA のエンドポイントが含まれます。
 # システムのページと catalog.json は、これを true にしない限りそれらを公開しません (社内向けサイトなどで使用)。
@@ -562,6 +570,8 @@ pub struct Overrides {
     pub allow_empty: bool,
     /// `--idl-path DIR` (repeatable).
     pub idl_path: Vec<PathBuf>,
+    /// `--history N`.
+    pub history: Option<usize>,
 }
 
 /// The catalogue title when none is configured, in the UI language.
@@ -620,6 +630,11 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
             sources_only: c.source.as_ref().is_some_and(|s| !s.is_empty())
                 && cli.input.is_none()
                 && c.input.is_none(),
+            history: cli
+                .history
+                .or(c.history)
+                .unwrap_or(crate::history::DEFAULT_LIMIT),
+            history_reader: Some(crate::history::attach),
             idl_path: if cli.idl_path.is_empty() {
                 c.idl_path
                     .iter()

@@ -15,6 +15,7 @@ pub mod config;
 pub mod constraint;
 pub mod diagnostic;
 pub mod diff;
+pub mod history;
 pub mod i18n;
 pub mod idl;
 pub mod incremental;

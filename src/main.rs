@@ -168,6 +168,10 @@ struct BuildArgs {
     /// Fail (exit 1) without writing anything when any profile has an error.
     #[arg(long)]
     strict: bool,
+    /// Commits read per profile for its history (from git and RTCBuilder's backups); 0 turns
+    /// the history off [default: 100].
+    #[arg(long, value_name = "N")]
+    history: Option<usize>,
     #[command(flatten)]
     site: SiteArgs,
     #[command(flatten)]
@@ -460,6 +464,7 @@ fn overrides(
         max_depth: i.max_depth,
         allow_empty: i.allow_empty,
         idl_path: i.idl_path.clone(),
+        history: build.and_then(|b| b.history),
     }
 }
 
@@ -469,6 +474,7 @@ fn load_options(file: &config::Loaded, i: &InputArgs) -> build::LoadOptions {
     let mut opts =
         config::build_options(file, &overrides(&None, &SiteArgs::default(), i, None)).load;
     opts.skip_dirs.clear();
+    opts.history = 0;
     opts
 }
 

@@ -173,7 +173,10 @@ struct Ident {
 }
 
 fn ident(c: &Component) -> Ident {
-    let p = &c.profile;
+    ident_of(&c.profile, &c.source)
+}
+
+fn ident_of(p: &Profile, source: &str) -> Ident {
     let b = &p.basic_info;
     let language = p
         .language
@@ -214,9 +217,9 @@ fn ident(c: &Component) -> Ident {
             Key(id.to_string(), String::new(), String::new()),
         ),
         None => {
-            let file = c.source.rsplit('/').next().unwrap_or(&c.source).to_string();
+            let file = source.rsplit('/').next().unwrap_or(source).to_string();
             (
-                format!("(no id: {})", c.source),
+                format!("(no id: {source})"),
                 Key(String::new(), String::new(), file),
             )
         }
@@ -235,6 +238,30 @@ pub type Namer<'a> = &'a dyn Fn(&str) -> String;
 /// Compares two catalogues; files are named as in the catalogues.
 pub fn diff(old: &Catalog, new: &Catalog) -> Diff {
     diff_named(old, new, &|f| f.to_string(), &|f| f.to_string())
+}
+
+/// Compares two versions of one component profile, whatever their ids (a component's history:
+/// the same file at two commits): the changes `diff` reports for a matched pair, DIFF208
+/// included, sorted. `idl` resolves the types of both versions; `old_file` and `new_file` name
+/// the versions' files in the changes.
+pub fn compare_profiles(
+    (old, old_file): (&Profile, &str),
+    (new, new_file): (&Profile, &str),
+    idl: &crate::idl::IdlSet,
+) -> Vec<Change> {
+    let (oi, ni) = (ident_of(old, old_file), ident_of(new, new_file));
+    let mut idl = idl::IdlDiff::new(idl, idl);
+    let mut out = Vec::new();
+    compare(
+        &ni.id,
+        (old, &oi, old_file),
+        (new, &ni, new_file),
+        &mut idl,
+        &mut out,
+    );
+    idl.finish(&mut out);
+    sort(&mut out);
+    out
 }
 
 /// Compares two catalogues, naming the files of OLD with `old_name` and those of NEW with
@@ -298,8 +325,8 @@ pub fn diff_with_systems(
                     let component = label(&new_ids[n], nc);
                     compare(
                         &component,
-                        (oc, &old_ids[o], &old_name(&oc.source)),
-                        (nc, &new_ids[n], &new_name(&nc.source)),
+                        (&oc.profile, &old_ids[o], &old_name(&oc.source)),
+                        (&nc.profile, &new_ids[n], &new_name(&nc.source)),
                         &mut idl,
                         &mut out,
                     );
@@ -996,24 +1023,24 @@ impl Ctx<'_> {
 
 fn compare(
     component: &str,
-    (oc, oi, old_file): (&Component, &Ident, &str),
-    (nc, ni, file): (&Component, &Ident, &str),
+    (op, oi, old_file): (&Profile, &Ident, &str),
+    (np, ni, file): (&Profile, &Ident, &str),
     idl: &mut idl::IdlDiff,
     out: &mut Vec<Change>,
 ) {
-    let (ot, nt) = (tree(&oc.profile), tree(&nc.profile));
+    let (ot, nt) = (tree(op), tree(np));
     let mut found = Vec::new();
     walk(
         &mut Vec::new(),
         &ot,
         &nt,
-        Some(nc.profile.pos).filter(|p| !p.is_unknown()),
+        Some(np.pos).filter(|p| !p.is_unknown()),
         &mut found,
     );
     let ctx = Ctx {
         component,
-        old: &oc.profile,
-        new: &nc.profile,
+        old: op,
+        new: np,
         file,
         old_file,
     };
@@ -1024,19 +1051,18 @@ fn compare(
     for f in &found {
         classify(&ctx, f, basic_version_changed, oi, ni, out);
     }
-    idl::component(idl, &ctx, &oc.profile, &nc.profile, out);
+    idl::component(idl, &ctx, op, np, out);
     let breaking = out[start..].iter().any(|c| c.severity == Level::Breaking);
     let bumped = oi.version != ni.version || basic_version_changed;
     if breaking && !bumped {
-        let version = non_empty(&nc.profile.basic_info.version)
+        let version = non_empty(&np.basic_info.version)
             .map(str::to_string)
             .or_else(|| Some(ni.version.clone()).filter(|v| !v.is_empty()));
-        let pos = nc
-            .profile
+        let pos = np
             .basic_info
             .attr_pos
             .field(Field::BasicVersion)
-            .or(Some(nc.profile.basic_info.pos));
+            .or(Some(np.basic_info.pos));
         ctx.push(
             out,
             codes::BREAKING_WITHOUT_BUMP,
@@ -1052,7 +1078,7 @@ fn compare(
             (version.clone(), version.clone()),
             format!(
                 "`{}` has breaking changes but keeps version {}; raise the version (in the id and in BasicInfo)",
-                nc.profile.name(),
+                np.name(),
                 version.as_deref().unwrap_or("(none)")
             ),
         );

@@ -387,6 +387,8 @@ pub fn component_sections<M: Markup>(
         );
     }
 
+    history_section::<M>(out, page, &v.history, lang);
+
     if !v.extras.is_empty() {
         M::heading(out, page, 2, "sec-extra", lang.t("extra"));
         let extras: Vec<Fact> = v.extras.iter().map(|(f, _)| f.clone()).collect();
@@ -738,5 +740,59 @@ pub fn dataflow_body<M: Markup>(out: &mut String, cat: &Catalog, page: &Page, la
             ],
             &cells,
         );
+    }
+}
+
+/// The History section of a component page: the latest versions, newest first, with their
+/// counts of changes by severity and the breaking changes spelled out.
+fn history_section<M: Markup>(
+    out: &mut String,
+    page: &Page,
+    h: &crate::render::view::history::HistoryView,
+    lang: Lang,
+) {
+    if h.rows.is_empty() {
+        return;
+    }
+    M::heading(out, page, 2, "sec-change-history", lang.t("change_history"));
+    M::paragraph(out, &M::esc(lang.t("history_intro")));
+    let rows: Vec<Vec<String>> = h
+        .rows
+        .iter()
+        .map(|r| {
+            let label = match (&r.url, r.label.is_empty()) {
+                (_, true) => String::new(),
+                (Some(url), false) => M::link(&r.label, url),
+                (None, false) => M::code(&r.label),
+            };
+            let mut changes = M::esc(&r.summary);
+            if !r.breaking.is_empty() {
+                changes.push_str(": ");
+                changes.push_str(&M::esc(&r.breaking.join("; ")));
+            }
+            vec![
+                M::esc(&r.version),
+                M::esc(&r.date),
+                label,
+                M::esc(&r.author),
+                M::esc(&r.subject),
+                changes,
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("history_version"),
+            lang.t("history_date"),
+            lang.t("history_commit"),
+            lang.t("history_author"),
+            lang.t("history_subject"),
+            lang.t("history_changes"),
+        ],
+        &rows,
+    );
+    if let Some(note) = h.older_note(lang) {
+        M::paragraph(out, &M::esc(&note));
     }
 }

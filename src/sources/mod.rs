@@ -340,7 +340,7 @@ pub fn mirror_path(cache: &Path, s: &Source) -> PathBuf {
 
 /// `git` with the safe environment: no system configuration, no prompt, no hooks, only the
 /// `file`, `https` and `ssh` protocols, nothing of a repository around the current directory.
-fn git_command(git_dir: Option<&Path>) -> Command {
+pub(crate) fn git_command(git_dir: Option<&Path>) -> Command {
     let mut c = Command::new("git");
     for k in [
         "GIT_DIR",

@@ -61,6 +61,9 @@ pub fn rtcdoc(args: &[&str], cwd: &Path) -> std::process::Output {
         .args(args)
         .current_dir(cwd)
         .env("NO_COLOR", "1")
+        // The fixtures are in this repository: their pages must not show its history (which
+        // differs between clones). Temporary repositories of the history tests are elsewhere.
+        .env("GIT_CEILING_DIRECTORIES", root())
         .output()
         .expect("run rtcdoc")
 }

@@ -397,6 +397,9 @@ struct ComponentPage {
     neighbourhood_svg: String,
     /// The neighbourhood as a list, by port.
     neighbourhood: Vec<NeighbourhoodRow>,
+    /// The History section: the latest versions of the profile, and the note on older ones.
+    history: Vec<crate::render::view::history::HistoryRow>,
+    history_older: Option<String>,
 }
 
 /// One port of the neighbourhood list: the port, its relation (`fed by`, `feeds`, …), the
@@ -785,6 +788,8 @@ impl<'a> Site<'a> {
                 .filter_map(|l| self.link(page, l))
                 .collect(),
             backups: facts::BackupRow::of(&self.catalog.components[v.ci], lang),
+            history: v.history.rows.clone(),
+            history_older: v.history.older_note(lang),
         }
     }
 

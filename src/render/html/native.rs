@@ -381,6 +381,9 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     if !p.backups.is_empty() {
         o.toc_entry(true, "backups", "backups");
     }
+    if !p.history.is_empty() {
+        o.toc_entry(true, "change-history", "change_history");
+    }
     o.toc_entry(!p.extras.is_empty(), "extra", "extra");
     o.raw("</ul>\n</nav>\n\n");
 
@@ -732,6 +735,7 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         }
         o.raw("</tbody>\n</table>\n</div>\n</section>\n\n");
     }
+    history_section(o, p);
     if !p.extras.is_empty() {
         o.table_start("extra", "extra", "", &["extra_path", "extra_kind", "value"]);
         for e in &p.extras {
@@ -747,4 +751,73 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         }
         o.table_end();
     }
+}
+
+/// The History section (`{% if history %}` in `component.html`).
+fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
+    if p.history.is_empty() {
+        return;
+    }
+    o.section_start("change-history", false, "change_history");
+    o.raw("<p>");
+    o.label("history_intro");
+    o.raw("</p>\n<div class=\"table-wrap\">\n");
+    o.table_head(
+        "history-table",
+        &[
+            "history_version",
+            "history_date",
+            "history_commit",
+            "history_author",
+            "history_subject",
+            "history_changes",
+        ],
+    );
+    o.raw("<tbody>\n");
+    for h in &p.history {
+        o.raw("<tr><th scope=\"row\">");
+        o.text(&h.version);
+        o.raw("</th>");
+        o.td("history_date");
+        o.text(&h.date);
+        o.raw("</td>");
+        o.td("history_commit");
+        if let Some(url) = &h.url {
+            o.raw("<a href=\"");
+            o.text(url);
+            o.raw("\"><code>");
+            o.text(&h.label);
+            o.raw("</code></a>");
+        } else if !h.label.is_empty() {
+            o.raw("<code>");
+            o.text(&h.label);
+            o.raw("</code>");
+        }
+        o.raw("</td>");
+        o.td("history_author");
+        o.text(&h.author);
+        o.raw("</td>");
+        o.td("history_subject");
+        o.text(&h.subject);
+        o.raw("</td>");
+        o.td("history_changes");
+        o.text(&h.summary);
+        if !h.breaking.is_empty() {
+            o.raw("<ul>");
+            for b in &h.breaking {
+                o.raw("<li>");
+                o.text(b);
+                o.raw("</li>");
+            }
+            o.raw("</ul>");
+        }
+        o.raw("</td></tr>\n");
+    }
+    o.raw("</tbody>\n</table>\n</div>\n");
+    if let Some(n) = &p.history_older {
+        o.raw("<p>");
+        o.text(n);
+        o.raw("</p>\n");
+    }
+    o.raw("</section>\n\n");
 }

@@ -109,6 +109,8 @@ pub struct ComponentView<'a> {
     /// The systems with an instance of the component, linked, naming the instances.
     pub systems: Vec<Linked<'a>>,
     pub backups: Vec<BackupRow>,
+    /// The History section: the latest versions of the profile ([`super::history`]).
+    pub history: super::history::HistoryView,
 }
 
 /// The data port's direction: label and class (`in`, `out`, `event`, `other`).
@@ -337,5 +339,21 @@ pub fn component_view<'a>(
             })
             .collect(),
         backups: BackupRow::of(c, lang),
+        history: super::history::HistoryView::of(c, lang, &|commit, path| {
+            // A commit links to its file when the template has `{commit}`: a source's, else
+            // `source-url`.
+            let template = match &c.origin {
+                Some(o) => cat
+                    .sources
+                    .iter()
+                    .find(|s| s.name == o.source)
+                    .and_then(|s| s.source_url.as_deref()),
+                None => source_url,
+            }?;
+            template
+                .contains("{commit}")
+                .then(|| crate::render::html::repo::pinned_source_url(template, commit, path))
+                .flatten()
+        }),
     }
 }

@@ -1,0 +1,142 @@
+//! The History section of a component page: its latest versions (commits and RTCBuilder
+//! backups, [`crate::catalog::history`]), newest first, versions without a change to the
+//! specification folded into one row. Built once, shown by every output.
+
+use crate::catalog::history::Entry;
+use crate::catalog::Component;
+use crate::i18n::Lang;
+use serde::Serialize;
+
+/// Rows shown on the component page; the whole history is in catalog.json.
+pub const ROWS: usize = 10;
+
+/// One row of the History section.
+#[derive(Debug, Clone, Serialize)]
+pub struct HistoryRow {
+    /// The commit's first 12 digits, the backup's file name, or "working copy"; empty for a
+    /// folded row.
+    pub label: String,
+    /// The file at that commit in its repository (a `source-url` with `{commit}`).
+    pub url: Option<String>,
+    pub date: String,
+    pub author: String,
+    pub subject: String,
+    /// The version string, marked when it is a release (a new version string).
+    pub version: String,
+    /// What changed, in counts by severity ("1 breaking, 2 info"), or what the row is (the
+    /// first version, versions folded, a version that could not be read).
+    pub summary: String,
+    /// The breaking changes, spelled out (`path`: message), and DIFF208 when the version was
+    /// not raised with them.
+    pub breaking: Vec<String>,
+}
+
+/// The History section: its rows and how many versions are not shown.
+#[derive(Debug, Clone, Default)]
+pub struct HistoryView {
+    pub rows: Vec<HistoryRow>,
+    /// Versions older than the last row (catalog.json has them).
+    pub older: usize,
+}
+
+impl HistoryView {
+    /// The section of component `c`; `url` makes the link of a commit's file.
+    pub fn of(c: &Component, lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> Self {
+        let mut rows = Vec::new();
+        let mut i = 0;
+        let h = &c.history;
+        while i < h.len() && rows.len() < ROWS {
+            if h[i].stands_out() {
+                rows.push(row(&h[i], lang, url));
+                i += 1;
+                continue;
+            }
+            let run = h[i..].iter().take_while(|e| !e.stands_out()).count();
+            rows.push(HistoryRow {
+                label: String::new(),
+                url: None,
+                date: String::new(),
+                author: String::new(),
+                subject: String::new(),
+                version: String::new(),
+                summary: lang
+                    .t(if run == 1 {
+                        "history_folded_one"
+                    } else {
+                        "history_folded"
+                    })
+                    .replace("{n}", &run.to_string()),
+                breaking: Vec::new(),
+            });
+            i += run;
+        }
+        HistoryView {
+            rows,
+            older: h.len() - i,
+        }
+    }
+
+    /// The sentence under the table when older versions are not shown.
+    pub fn older_note(&self, lang: Lang) -> Option<String> {
+        (self.older > 0).then(|| {
+            lang.t("history_older")
+                .replace("{n}", &self.older.to_string())
+        })
+    }
+}
+
+fn row(e: &Entry, lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> HistoryRow {
+    let label = if e.commit.is_none() && e.backup.is_none() {
+        lang.t("history_working_copy").to_string()
+    } else {
+        e.label().to_string()
+    };
+    let mut version = e.version.clone().unwrap_or_default();
+    if e.release && !e.first {
+        version = format!("{version} ({})", lang.t("history_release"));
+    }
+    let summary = if let Some(why) = &e.error {
+        format!("{}: {why}", lang.t("history_unreadable"))
+    } else if e.first {
+        lang.t("history_first").to_string()
+    } else if e.changes.is_empty() {
+        lang.t("history_no_spec_change").to_string()
+    } else {
+        let mut parts = Vec::new();
+        for (sev, key) in [
+            ("breaking", "history_n_breaking"),
+            ("warning", "history_n_warning"),
+            ("info", "history_n_info"),
+        ] {
+            let n = e.count(sev);
+            if n == 1 {
+                parts.push(lang.t(&format!("{key}_one")).to_string());
+            } else if n > 1 {
+                parts.push(lang.t(key).replace("{n}", &n.to_string()));
+            }
+        }
+        parts.join(lang.t("history_separator"))
+    };
+    HistoryRow {
+        url: e.commit.as_deref().and_then(|commit| url(commit, &e.file)),
+        label,
+        date: e.date.clone().unwrap_or_default(),
+        author: e.author.clone().unwrap_or_default(),
+        subject: e.subject.clone().unwrap_or_default(),
+        version,
+        summary,
+        breaking: e
+            .changes
+            .iter()
+            // DIFF208: breaking changes without a version bump, flagged beside them.
+            .filter(|c| c.severity == "breaking" || c.code == "DIFF208")
+            .map(|c| {
+                if c.path.is_empty() {
+                    c.message.clone()
+                } else {
+                    format!("{}: {}", c.path, c.message)
+                }
+            })
+            .collect(),
+    }
+}
