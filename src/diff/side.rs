@@ -6,7 +6,7 @@
 
 use crate::build::{self, LoadOptions};
 use anyhow::{bail, Context, Result};
-use std::io::{Read, Write};
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -282,7 +282,7 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
                     files.push((sha.to_string(), rel.to_string()));
                 }
             }
-            write_blobs(&files, dest)?;
+            crate::sources::write_blobs(None, &files, dest, u64::MAX)?;
             Ok(ObjectKind::Tree)
         }
         other => bail!("{which} `{object}` is a git {other}, not a directory or a file"),
@@ -305,55 +305,6 @@ fn wanted(rel: &str) -> bool {
         .as_deref()
         .is_some_and(|e| e == "idl" || crate::walk::is_document_extension(e))
         || crate::walk::named_like_profile(p))
-}
-
-/// Writes the blobs `(sha, path)` below `dest` with one `git cat-file --batch`.
-fn write_blobs(files: &[(String, String)], dest: &Path) -> Result<()> {
-    if files.is_empty() {
-        return Ok(());
-    }
-    let mut child = Command::new("git")
-        .args(["cat-file", "--batch"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .context("cannot run `git cat-file`")?;
-    let mut stdin = child.stdin.take().context("git cat-file: no stdin")?;
-    let request: String = files.iter().map(|(sha, _)| format!("{sha}\n")).collect();
-    // Written from another thread: git answers while it reads, and a full pipe both ways
-    // would block.
-    let writer = std::thread::spawn(move || stdin.write_all(request.as_bytes()));
-    let mut stdout =
-        std::io::BufReader::new(child.stdout.take().context("git cat-file: no stdout")?);
-    let result = (|| -> Result<()> {
-        use std::io::BufRead;
-        for (sha, rel) in files {
-            let mut header = String::new();
-            stdout.read_line(&mut header)?;
-            let mut parts = header.split_whitespace();
-            let (got, size) = (
-                parts.next(),
-                parts.nth(1).and_then(|s| s.parse::<u64>().ok()),
-            );
-            let Some(size) = size.filter(|_| got == Some(sha.as_str())) else {
-                bail!("git cat-file answered `{}` for {rel}", header.trim());
-            };
-            let mut body = Vec::with_capacity(size.min(1 << 24) as usize);
-            (&mut stdout).take(size).read_to_end(&mut body)?;
-            let mut newline = [0u8; 1];
-            stdout.read_exact(&mut newline)?;
-            let path = dest.join(rel);
-            if let Some(parent) = path.parent() {
-                std::fs::create_dir_all(parent)?;
-            }
-            std::fs::write(&path, &body)?;
-        }
-        Ok(())
-    })();
-    let _ = writer.join();
-    let _ = child.wait();
-    result
 }
 
 #[cfg(test)]

@@ -778,9 +778,8 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
             }
             match (mode, ty) {
                 (Some("100644" | "100755"), Some("blob")) => {
-                    if let (Some(sha), Some(size)) = (sha, size.and_then(|n| n.parse::<u64>().ok()))
-                    {
-                        blobs.push((sha.to_string(), size, rel.to_string()));
+                    if let (Some(sha), Some(_)) = (sha, size.and_then(|n| n.parse::<u64>().ok())) {
+                        blobs.push((sha.to_string(), rel.to_string()));
                     }
                 }
                 (Some("120000"), _) => notes.push(
@@ -811,38 +810,39 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
                 s.git
             );
         }
-        write_blobs(&p.mirror, &blobs, &root, max_file_size).with_context(|| {
+        write_blobs(Some(&p.mirror), &blobs, &root, max_file_size).with_context(|| {
             format!("source `{}`: cannot read its files from the cache", s.name)
         })?;
     }
     Ok(Materialized { dir, notes })
 }
 
-/// Writes the blobs `(sha, size, path)` below `dest` with one `git cat-file --batch`, each cut
-/// at `max + 1` bytes.
-fn write_blobs(
-    mirror: &Path,
-    files: &[(String, u64, String)],
+/// Writes the blobs `(sha, path)` of the repository at `git_dir` (the current one when `None`)
+/// below `dest` with one `git cat-file --batch`, each cut at `max + 1` bytes (the walk then
+/// reports a file over its limit as too large). Used for sources and for `diff REV:PATH`.
+pub(crate) fn write_blobs(
+    git_dir: Option<&Path>,
+    files: &[(String, String)],
     dest: &Path,
     max: u64,
 ) -> Result<()> {
     if files.is_empty() {
         return Ok(());
     }
-    let mut c = git_command(Some(mirror));
+    let mut c = git_command(git_dir);
     c.args(["cat-file", "--batch"])
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::null());
     let mut child = c.spawn().context("cannot run `git cat-file`")?;
     let mut stdin = child.stdin.take().context("git cat-file: no stdin")?;
-    let request: String = files.iter().map(|(sha, _, _)| format!("{sha}\n")).collect();
+    let request: String = files.iter().map(|(sha, _)| format!("{sha}\n")).collect();
     // Written from another thread: git answers while it reads.
     let writer = std::thread::spawn(move || stdin.write_all(request.as_bytes()));
     let mut stdout =
         std::io::BufReader::new(child.stdout.take().context("git cat-file: no stdout")?);
     let result = (|| -> Result<()> {
-        for (sha, _, rel) in files {
+        for (sha, rel) in files {
             let mut header = String::new();
             stdout.read_line(&mut header)?;
             let mut parts = header.split_whitespace();
