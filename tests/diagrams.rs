@@ -288,11 +288,11 @@ fn mermaid_parse(files: &[std::path::PathBuf]) -> Option<serde_json::Value> {
         println!("skipped: tests/browser/node_modules/mermaid or chromium missing (npm ci)");
         return None;
     }
-    let o = std::process::Command::new("node")
-        .arg(dir.join("mermaid-parse.mjs"))
-        .args(files)
-        .output()
-        .ok()?;
+    let o = common::run_browser_harness(
+        std::process::Command::new("node")
+            .arg(dir.join("mermaid-parse.mjs"))
+            .args(files),
+    )?;
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     Some(serde_json::from_slice(&o.stdout).expect("json"))
 }
@@ -372,11 +372,11 @@ fn audit_site(site: &Path) -> Option<serde_json::Value> {
         println!("skipped: tests/browser/node_modules or chromium missing (npm ci)");
         return None;
     }
-    let o = std::process::Command::new("node")
-        .arg(dir.join("diagrams.mjs"))
-        .arg(site)
-        .output()
-        .ok()?;
+    let o = common::run_browser_harness(
+        std::process::Command::new("node")
+            .arg(dir.join("diagrams.mjs"))
+            .arg(site),
+    )?;
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     Some(serde_json::from_slice(&o.stdout).expect("json"))
 }

@@ -176,13 +176,7 @@ fn audit(site: &Path, searches: &[&str], pages: &[&str]) -> Option<serde_json::V
     for p in pages {
         cmd.arg("--page").arg(p);
     }
-    let o = match cmd.output() {
-        Ok(o) => o,
-        Err(e) => {
-            println!("skipped: cannot run node: {e}");
-            return None;
-        }
-    };
+    let o = common::run_browser_harness(&mut cmd)?;
     assert!(
         o.status.success(),
         "audit.mjs failed: {}",

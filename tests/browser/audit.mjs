@@ -6,7 +6,7 @@
 //
 // Prints one JSON object on stdout: {pages:[{page, mode, violations:[...], width, scrollers:[...]}],
 // searches:[...], errors:[...]} and exits 0; the Rust test (tests/html_browser.rs) asserts on it.
-import puppeteer from 'puppeteer-core';
+import { launchChromium } from './launch.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
 import http from 'node:http';
@@ -14,7 +14,6 @@ import { createRequire } from 'node:module';
 
 const require = createRequire(import.meta.url);
 const axeSource = fs.readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
-const CHROMIUM = process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium';
 const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa', 'best-practice'];
 
 const args = process.argv.slice(2);
@@ -79,11 +78,7 @@ const origin = `http://127.0.0.1:${server.address().port}/`;
 const url = (rel) => origin + rel;
 
 const report = { pages: [], searches: [], errors: [] };
-const browser = await puppeteer.launch({
-  executablePath: CHROMIUM,
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launchChromium([]);
 try {
   const page = await browser.newPage();
   page.on('pageerror', (e) => report.errors.push(String(e)));

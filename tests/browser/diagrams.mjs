@@ -8,11 +8,10 @@
 // an instance box, away from its two ends), names outside their box, names cut with "…",
 // elements outside the drawing, connector crossings, and the smallest rendered text size in CSS
 // pixels. Prints one JSON object: {diagrams:[{page, kind, ...counts, details:[...]}], errors:[]}.
-import puppeteer from 'puppeteer-core';
+import { launchChromium } from './launch.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
 
-const CHROMIUM = process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium';
 const args = process.argv.slice(2);
 const site = path.resolve(args.shift() || '.');
 let width = 1280;
@@ -125,11 +124,7 @@ function measure() {
 }
 
 const report = { width, diagrams: [], errors: [] };
-const browser = await puppeteer.launch({
-  executablePath: CHROMIUM,
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking', '--allow-file-access-from-files'],
-});
+const browser = await launchChromium(['--allow-file-access-from-files']);
 try {
   const page = await browser.newPage();
   page.on('pageerror', (e) => report.errors.push(String(e)));

@@ -4,13 +4,12 @@
 //   node tests/browser/mermaid-parse.mjs FILE...
 //
 // Prints one JSON object: {checked: N, results: [{file, block, ok, error}], errors: [...]}.
-import puppeteer from 'puppeteer-core';
+import { launchChromium } from './launch.mjs';
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
 
 const require = createRequire(import.meta.url);
 const mermaidJs = require.resolve('mermaid/dist/mermaid.min.js');
-const CHROMIUM = process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium';
 const report = { checked: 0, results: [], errors: [] };
 const blocks = [];
 for (const file of process.argv.slice(2)) {
@@ -24,11 +23,7 @@ for (const file of process.argv.slice(2)) {
     blocks.push({ file, block: 0, text });
   }
 }
-const browser = await puppeteer.launch({
-  executablePath: CHROMIUM,
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launchChromium([]);
 try {
   const page = await browser.newPage();
   page.on('pageerror', (e) => report.errors.push(String(e)));

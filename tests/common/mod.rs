@@ -22,6 +22,23 @@ pub fn corpus() -> Option<PathBuf> {
     }
 }
 
+/// Runs a harness of `tests/browser` (`node SCRIPT ARGS…`), one at a time in a test binary:
+/// each starts its own Chromium, and two starting together on a small machine made both miss
+/// their start deadline. `None` when node cannot be run at all.
+pub fn run_browser_harness(cmd: &mut std::process::Command) -> Option<std::process::Output> {
+    static ONE_BROWSER: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _turn = ONE_BROWSER
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    match cmd.output() {
+        Ok(o) => Some(o),
+        Err(e) => {
+            println!("skipped: cannot run node: {e}");
+            None
+        }
+    }
+}
+
 /// `../shared/tools/NAME` when present.
 pub fn shared_tool(name: &str) -> Option<PathBuf> {
     let p = root().join("../shared/tools").join(name);
