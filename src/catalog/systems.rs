@@ -14,7 +14,7 @@ use super::{facet_key, slugify, unique_slugs, Catalog, Component};
 use crate::model::system::{PortEnd, RtSystem, SystemComponent};
 use crate::model::{non_empty, PortDirection};
 use crate::parse::SourceFormat;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
 /// An RT System profile read from one file, ready for the catalogue.
@@ -26,7 +26,7 @@ pub struct LoadedSystem {
 }
 
 /// One RT System profile of the catalogue and its resolved links.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct System {
     /// Path of the profile relative to the input directory, forward slashes.
@@ -48,7 +48,7 @@ pub struct System {
 }
 
 /// How an instance was matched to a component profile.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub enum MatchKind {
     /// Vendor, category and name agree.
@@ -59,7 +59,7 @@ pub enum MatchKind {
 }
 
 /// Where an instance's component is in the catalogue.
-#[derive(Debug, Clone, Default, Serialize)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct InstanceLink {
     /// Index into [`Catalog::components`]; use [`Catalog::instance_component`].
@@ -78,7 +78,7 @@ pub struct InstanceLink {
 }
 
 /// Which port of a component a connector end names.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", tag = "kind")]
 pub enum PortLink {
     /// Index into the component's `data_ports`.
@@ -96,7 +96,7 @@ pub enum PortLink {
 }
 
 /// One end of a connector, resolved.
-#[derive(Debug, Clone, Default, Serialize)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct EndLink {
     /// Index into `system.components` of the instance the end names.
@@ -108,7 +108,7 @@ pub struct EndLink {
 }
 
 /// Both ends of a connector, resolved.
-#[derive(Debug, Clone, Default, Serialize)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ConnectorLink {
     pub source: EndLink,

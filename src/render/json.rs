@@ -18,44 +18,117 @@ use crate::idl::IdlSet;
 use crate::output::Sink;
 use serde::ser::SerializeMap;
 use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 
 /// Version of the `catalog.json` shape; bumped on incompatible changes. 1 (before 0.2) listed
 /// entries in arrays and referred to them by position.
 pub const FORMAT_VERSION: u32 = 2;
 
-/// Entries written as one JSON object keyed by each entry's id, in catalogue order.
-struct Keyed<'a, T>(&'a [T], fn(&T) -> &str);
+/// An entry of a keyed object: what its key is, and taking it back when read.
+trait KeyedEntry {
+    /// What the entry is, in messages (`data type`).
+    const WHAT: &'static str;
+    fn key(&self) -> &str;
+    /// Takes `key` back on reading: sets it where the entry does not hold it, else checks that
+    /// the entry holds that very key (a mismatch means the file was edited).
+    fn take_key(&mut self, key: String) -> Result<(), String> {
+        if key == self.key() {
+            Ok(())
+        } else {
+            Err(format!(
+                "{} `{key}` holds the entry of `{}`: the file was edited; build it again",
+                Self::WHAT,
+                self.key()
+            ))
+        }
+    }
+}
 
-impl<T> Keyed<'_, T> {
+impl KeyedEntry for Component {
+    const WHAT: &'static str = "component";
+    fn key(&self) -> &str {
+        &self.id
+    }
+    /// The id is the key only: the entry does not repeat it.
+    fn take_key(&mut self, key: String) -> Result<(), String> {
+        self.id = key.into();
+        Ok(())
+    }
+}
+impl KeyedEntry for DataType {
+    const WHAT: &'static str = "data type";
+    fn key(&self) -> &str {
+        &self.name
+    }
+}
+impl KeyedEntry for InterfaceType {
+    const WHAT: &'static str = "interface";
+    fn key(&self) -> &str {
+        &self.name
+    }
+}
+impl KeyedEntry for Facet {
+    const WHAT: &'static str = "facet";
+    fn key(&self) -> &str {
+        &self.name
+    }
+}
+impl KeyedEntry for System {
+    const WHAT: &'static str = "system";
+    fn key(&self) -> &str {
+        &self.source
+    }
+}
+
+/// Entries as one JSON object keyed by each entry's key, in catalogue order: borrowed when
+/// written, owned when read.
+struct Keyed<'a, T: Clone>(Cow<'a, [T]>);
+
+impl<T: Clone> Keyed<'_, T> {
     fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
 }
 
-impl<T: Serialize> Serialize for Keyed<'_, T> {
+impl<T: Clone> Default for Keyed<'_, T> {
+    fn default() -> Self {
+        Keyed(Cow::Owned(Vec::new()))
+    }
+}
+
+impl<T: Clone + Serialize + KeyedEntry> Serialize for Keyed<'_, T> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let mut m = s.serialize_map(Some(self.0.len()))?;
-        for e in self.0 {
-            m.serialize_entry((self.1)(e), e)?;
+        for e in self.0.iter() {
+            m.serialize_entry(e.key(), e)?;
         }
         m.end()
     }
 }
 
-fn component_key(c: &Component) -> &str {
-    &c.id
-}
-fn type_key(t: &DataType) -> &str {
-    &t.name
-}
-fn interface_key(t: &InterfaceType) -> &str {
-    &t.name
-}
-fn facet_name(f: &Facet) -> &str {
-    &f.name
-}
-fn system_key(s: &System) -> &str {
-    &s.source
+impl<'de, T: Clone + Deserialize<'de> + KeyedEntry> Deserialize<'de> for Keyed<'_, T> {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Visit<T>(std::marker::PhantomData<T>);
+        impl<'de, T: Deserialize<'de> + KeyedEntry> serde::de::Visitor<'de> for Visit<T> {
+            type Value = Vec<T>;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("an object of entries keyed by id")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut m: A,
+            ) -> Result<Self::Value, A::Error> {
+                let mut out = Vec::with_capacity(m.size_hint().unwrap_or(0).min(4096));
+                while let Some((key, mut entry)) = m.next_entry::<String, T>()? {
+                    entry.take_key(key).map_err(serde::de::Error::custom)?;
+                    out.push(entry);
+                }
+                Ok(out)
+            }
+        }
+        d.deserialize_map(Visit(std::marker::PhantomData))
+            .map(|v| Keyed(Cow::Owned(v)))
+    }
 }
 
 /// A page of the catalogue in `catalog.json`: where the HTML site has it.
@@ -82,32 +155,35 @@ fn page_entries(catalog: &Catalog) -> Vec<PageEntry> {
         .collect()
 }
 
-/// The whole document; `components` is left out of the skeleton [`write_json`] fills in.
-#[derive(Serialize)]
+/// `catalog.json`, the one definition of its shape: written from the catalogue (borrowed;
+/// `components` left empty in the skeleton [`write_json`] fills in) and read back (owned).
+#[derive(Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 struct Document<'a> {
+    #[serde(default)]
     generator: String,
     format_version: u32,
-    title: &'a str,
+    title: Cow<'a, str>,
     components: Keyed<'a, Component>,
     data_types: Keyed<'a, DataType>,
     interfaces: Keyed<'a, InterfaceType>,
     categories: Keyed<'a, Facet>,
     vendors: Keyed<'a, Facet>,
     pages: Vec<PageEntry>,
-    diagnostics: &'a [Diagnostic],
-    #[serde(skip_serializing_if = "IdlSet::is_empty")]
-    idl: &'a IdlSet,
-    #[serde(skip_serializing_if = "Keyed::is_empty")]
+    diagnostics: Cow<'a, [Diagnostic]>,
+    #[serde(default, skip_serializing_if = "IdlSet::is_empty")]
+    idl: Cow<'a, IdlSet>,
+    /// Each system with its resolved links; read back, the links are made again.
+    #[serde(default, skip_serializing_if = "Keyed::is_empty")]
     systems: Keyed<'a, System>,
     /// RTCBuilder backups whose `RTC.xml` is no component of the catalogue (gone, excluded or
     /// unreadable): documents too, so they are kept.
-    #[serde(skip_serializing_if = "<[_]>::is_empty")]
-    backups: &'a [crate::catalog::backups::Backup],
+    #[serde(default, skip_serializing_if = "<[_]>::is_empty")]
+    backups: Cow<'a, [crate::catalog::backups::Backup]>,
     /// The `[[source]]` repositories read, each pinned at its commit (the entries read from
     /// one carry an `origin`).
-    #[serde(skip_serializing_if = "<[_]>::is_empty")]
-    sources: &'a [crate::model::SourceInfo],
+    #[serde(default, skip_serializing_if = "<[_]>::is_empty")]
+    sources: Cow<'a, [crate::model::SourceInfo]>,
 }
 
 fn document<'a>(
@@ -119,18 +195,18 @@ fn document<'a>(
     Document {
         generator: super::generator(),
         format_version: FORMAT_VERSION,
-        title,
-        components: Keyed(components, component_key),
-        data_types: Keyed(&catalog.data_types, type_key),
-        interfaces: Keyed(&catalog.interfaces, interface_key),
-        categories: Keyed(&catalog.categories, facet_name),
-        vendors: Keyed(&catalog.vendors, facet_name),
+        title: Cow::Borrowed(title),
+        components: Keyed(Cow::Borrowed(components)),
+        data_types: Keyed(Cow::Borrowed(&catalog.data_types)),
+        interfaces: Keyed(Cow::Borrowed(&catalog.interfaces)),
+        categories: Keyed(Cow::Borrowed(&catalog.categories)),
+        vendors: Keyed(Cow::Borrowed(&catalog.vendors)),
         pages: page_entries(catalog),
-        diagnostics: &catalog.diagnostics,
-        idl: &catalog.idl,
-        systems: Keyed(systems, system_key),
-        backups: &catalog.detached_backups,
-        sources: &catalog.sources,
+        diagnostics: Cow::Borrowed(&catalog.diagnostics),
+        idl: Cow::Borrowed(&catalog.idl),
+        systems: Keyed(Cow::Borrowed(systems)),
+        backups: Cow::Borrowed(&catalog.detached_backups),
+        sources: Cow::Borrowed(&catalog.sources),
     }
 }
 
@@ -236,68 +312,6 @@ impl Renderer for JsonRenderer {
     }
 }
 
-/// Entries of a keyed object, in document order, with their keys.
-fn keyed<'de, D, T>(d: D) -> Result<Vec<(String, T)>, D::Error>
-where
-    D: serde::Deserializer<'de>,
-    T: Deserialize<'de>,
-{
-    struct Visit<T>(std::marker::PhantomData<T>);
-    impl<'de, T: Deserialize<'de>> serde::de::Visitor<'de> for Visit<T> {
-        type Value = Vec<(String, T)>;
-        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-            f.write_str("an object of entries keyed by id")
-        }
-        fn visit_map<A: serde::de::MapAccess<'de>>(
-            self,
-            mut m: A,
-        ) -> Result<Self::Value, A::Error> {
-            let mut out = Vec::with_capacity(m.size_hint().unwrap_or(0));
-            while let Some(e) = m.next_entry()? {
-                out.push(e);
-            }
-            Ok(out)
-        }
-    }
-    d.deserialize_map(Visit(std::marker::PhantomData))
-}
-
-/// `catalog.json` as read back.
-#[derive(Deserialize)]
-#[serde(rename_all = "camelCase")]
-struct DocumentRead {
-    title: String,
-    #[serde(deserialize_with = "keyed")]
-    components: Vec<(String, Component)>,
-    #[serde(deserialize_with = "keyed")]
-    data_types: Vec<(String, DataType)>,
-    #[serde(deserialize_with = "keyed")]
-    interfaces: Vec<(String, InterfaceType)>,
-    #[serde(deserialize_with = "keyed")]
-    categories: Vec<(String, Facet)>,
-    #[serde(deserialize_with = "keyed")]
-    vendors: Vec<(String, Facet)>,
-    pages: Vec<PageEntry>,
-    diagnostics: Vec<Diagnostic>,
-    #[serde(default)]
-    idl: IdlSet,
-    #[serde(default, deserialize_with = "keyed")]
-    systems: Vec<(String, SystemRead)>,
-    #[serde(default)]
-    backups: Vec<crate::catalog::backups::Backup>,
-    #[serde(default)]
-    sources: Vec<crate::model::SourceInfo>,
-}
-
-/// An RT System profile as `catalog.json` has it: its links are made again on reading.
-#[derive(Deserialize)]
-#[serde(rename_all = "camelCase")]
-struct SystemRead {
-    source: String,
-    format: crate::parse::SourceFormat,
-    profile: Box<crate::model::system::RtSystem>,
-}
-
 /// serde_json's message without the position it appends (the caller puts it in front).
 fn json_error(e: &serde_json::Error) -> String {
     let text = e.to_string();
@@ -339,62 +353,38 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         ),
         None => anyhow::bail!("{name}: no `formatVersion`: not a catalog.json written by rtcdoc"),
     }
-    let doc: DocumentRead = serde_json::from_slice(bytes)
+    let doc: Document = serde_json::from_slice(bytes)
         .map_err(|e| anyhow::anyhow!("{name}:{}:{}: {}", e.line(), e.column(), json_error(&e)))?;
-    let mismatch = |what: &str, key: &str, own: &str| {
-        anyhow::anyhow!("{name}: {what} `{key}` holds the entry of `{own}`: the file was edited; build it again")
-    };
-    for (k, t) in &doc.data_types {
-        if *k != t.name {
-            return Err(mismatch("data type", k, &t.name));
-        }
-    }
-    for (k, t) in &doc.interfaces {
-        if *k != t.name {
-            return Err(mismatch("interface", k, &t.name));
-        }
-    }
-    for (k, f) in doc.categories.iter().chain(&doc.vendors) {
-        if *k != f.name {
-            return Err(mismatch("facet", k, &f.name));
-        }
-    }
-    let components = doc
-        .components
-        .into_iter()
-        .map(|(id, mut c)| {
-            c.id = id.into();
-            c
-        })
-        .collect();
     let mut catalog = Catalog::from_parts(
-        components,
-        doc.data_types.into_iter().map(|(_, t)| t).collect(),
-        doc.interfaces.into_iter().map(|(_, t)| t).collect(),
-        doc.categories.into_iter().map(|(_, f)| f).collect(),
-        doc.vendors.into_iter().map(|(_, f)| f).collect(),
-        doc.diagnostics,
-        doc.idl,
+        doc.components.0.into_owned(),
+        doc.data_types.0.into_owned(),
+        doc.interfaces.0.into_owned(),
+        doc.categories.0.into_owned(),
+        doc.vendors.0.into_owned(),
+        doc.diagnostics.into_owned(),
+        doc.idl.into_owned(),
     )
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     catalog.attach_systems(
         doc.systems
+            .0
+            .into_owned()
             .into_iter()
-            .map(|(_, s)| crate::catalog::systems::LoadedSystem {
+            .map(|s| crate::catalog::systems::LoadedSystem {
                 source: s.source,
                 format: s.format,
                 system: s.profile,
             })
             .collect(),
     );
-    catalog.detached_backups = doc.backups;
-    catalog.set_origins(doc.sources);
+    catalog.detached_backups = doc.backups.into_owned();
+    catalog.set_origins(doc.sources.into_owned());
     if page_entries(&catalog) != doc.pages {
         anyhow::bail!("{name}: the `pages` list does not match the entries' slugs: the file was edited; build it again");
     }
     Ok(ReadCatalog {
         catalog,
-        title: doc.title,
+        title: doc.title.into_owned(),
     })
 }
 
@@ -576,6 +566,34 @@ mod tests {
             .to_string();
         assert!(
             e.contains("no-such-port") && e.contains("does not have"),
+            "{e}"
+        );
+        // A key that is not its entry's: refused where it is, with what to do.
+        let t = &catalog.data_types[0].name;
+        let edited = text.replacen(
+            &format!("\n    \"{t}\": {{"),
+            "\n    \"Edited::Name\": {",
+            1,
+        );
+        assert_ne!(edited, text);
+        let e = read_catalog(edited.as_bytes(), "e.json")
+            .err()
+            .unwrap()
+            .to_string();
+        // serde reports the position where the entry ends.
+        let key_line = edited[..edited.find("Edited::Name").unwrap()]
+            .lines()
+            .count();
+        let at: usize = e
+            .strip_prefix("e.json:")
+            .and_then(|r| r.split(':').next())
+            .and_then(|n| n.parse().ok())
+            .unwrap_or(0);
+        assert!(
+            at >= key_line
+                && e.contains(&format!(
+                    "data type `Edited::Name` holds the entry of `{t}`: the file was edited; build it again"
+                )),
             "{e}"
         );
     }
