@@ -377,10 +377,12 @@ impl PartialEq for InterfaceRef {
 
 impl Eq for InterfaceRef {}
 
-/// A data type used by some data port in the catalogue.
+/// A data type or a service interface type used somewhere in the catalogue: one entry shape
+/// for both; `U` holds its uses by role ([`PortUses`] for a data type, [`InterfaceUses`] for an
+/// interface).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
-pub struct DataType {
+pub struct TypeEntry<U> {
     /// Canonical name (`RTC::TimedLong`).
     pub name: String,
     pub slug: String,
@@ -388,26 +390,37 @@ pub struct DataType {
     pub spellings: Vec<String>,
     /// Every non-empty `idlFile` given for this type, sorted.
     pub idl_files: Vec<String>,
+    #[serde(flatten)]
+    pub uses: U,
+    /// Types whose fields (or typedef) hold this one, by canonical name, sorted: filled from
+    /// the IDL for data types ([`Catalog::attach_idl`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub contained_in: Vec<String>,
+}
+
+/// A data type used by some data port in the catalogue.
+pub type DataType = TypeEntry<PortUses>;
+
+/// A service interface type used by some service port in the catalogue.
+pub type InterfaceType = TypeEntry<InterfaceUses>;
+
+/// The data ports carrying a data type, by direction.
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct PortUses {
     /// Out ports carrying the type.
     pub producers: Vec<PortRef>,
     /// In ports carrying the type.
     pub consumers: Vec<PortRef>,
     /// Other ports carrying it (event ports, unknown port types).
     pub others: Vec<PortRef>,
-    /// Types whose fields (or typedef) hold this one, by canonical name, sorted: filled from
-    /// the IDL ([`Catalog::attach_idl`]).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub contained_in: Vec<String>,
 }
 
-/// A service interface type used by some service port in the catalogue.
-#[derive(Debug, Clone, Serialize, Deserialize)]
+/// The interfaces of service ports of an interface type, by direction.
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
-pub struct InterfaceType {
-    pub name: String,
-    pub slug: String,
-    pub spellings: Vec<String>,
-    pub idl_files: Vec<String>,
+pub struct InterfaceUses {
+    /// Components providing the interface.
     pub providers: Vec<InterfaceRef>,
     /// Components requiring (consuming) the interface.
     pub requirers: Vec<InterfaceRef>,
@@ -415,10 +428,55 @@ pub struct InterfaceType {
     pub others: Vec<InterfaceRef>,
 }
 
-impl InterfaceType {
-    /// Required somewhere but provided nowhere in the catalogue.
-    pub fn is_unprovided(&self) -> bool {
+/// How a port or interface uses its type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Producer,
+    Consumer,
+    Provider,
+    Requirer,
+    Other,
+}
+
+/// The uses of a type entry, by role, in the order pages list them.
+pub trait Uses {
+    type Ref;
+    fn by_role(&self) -> [(Role, &[Self::Ref]); 3];
+    /// Required somewhere but provided nowhere in the catalogue (interfaces only).
+    fn is_unprovided(&self) -> bool {
+        false
+    }
+}
+
+impl Uses for PortUses {
+    type Ref = PortRef;
+    fn by_role(&self) -> [(Role, &[PortRef]); 3] {
+        [
+            (Role::Producer, &self.producers),
+            (Role::Consumer, &self.consumers),
+            (Role::Other, &self.others),
+        ]
+    }
+}
+
+impl Uses for InterfaceUses {
+    type Ref = InterfaceRef;
+    fn by_role(&self) -> [(Role, &[InterfaceRef]); 3] {
+        [
+            (Role::Provider, &self.providers),
+            (Role::Requirer, &self.requirers),
+            (Role::Other, &self.others),
+        ]
+    }
+    fn is_unprovided(&self) -> bool {
         self.providers.is_empty() && !self.requirers.is_empty()
+    }
+}
+
+impl<U: Uses> TypeEntry<U> {
+    /// Required somewhere but provided nowhere in the catalogue (interfaces only).
+    pub fn is_unprovided(&self) -> bool {
+        self.uses.is_unprovided()
     }
 }
 
@@ -974,9 +1032,11 @@ impl Catalog {
                 slug,
                 spellings: sorted_unique(acc.spellings),
                 idl_files: sorted_unique(acc.idl_files),
-                producers: port(acc.a),
-                consumers: port(acc.b),
-                others: port(acc.other),
+                uses: PortUses {
+                    producers: port(acc.a),
+                    consumers: port(acc.b),
+                    others: port(acc.other),
+                },
                 contained_in: Vec::new(),
             })
             .collect();
@@ -994,9 +1054,12 @@ impl Catalog {
                 slug,
                 spellings: sorted_unique(acc.spellings),
                 idl_files: sorted_unique(acc.idl_files),
-                providers: iref(acc.a),
-                requirers: iref(acc.b),
-                others: iref(acc.other),
+                uses: InterfaceUses {
+                    providers: iref(acc.a),
+                    requirers: iref(acc.b),
+                    others: iref(acc.other),
+                },
+                contained_in: Vec::new(),
             })
             .collect();
 
@@ -1130,10 +1193,11 @@ impl Catalog {
         for t in &mut data_types {
             let name = &t.name;
             for r in t
+                .uses
                 .producers
                 .iter_mut()
-                .chain(&mut t.consumers)
-                .chain(&mut t.others)
+                .chain(&mut t.uses.consumers)
+                .chain(&mut t.uses.others)
             {
                 let Some((ci, pi)) = catalog.resolve_port(r) else {
                     return Err(format!(
@@ -1150,10 +1214,11 @@ impl Catalog {
         for t in &mut interfaces {
             let name = &t.name;
             for r in t
+                .uses
                 .providers
                 .iter_mut()
-                .chain(&mut t.requirers)
-                .chain(&mut t.others)
+                .chain(&mut t.uses.requirers)
+                .chain(&mut t.uses.others)
             {
                 let Some((ci, pi, ii)) = catalog.resolve_interface(r) else {
                     return Err(format!(
@@ -1567,9 +1632,7 @@ impl Catalog {
                 name,
                 slug,
                 idl_files: Vec::new(),
-                producers: Vec::new(),
-                consumers: Vec::new(),
-                others: Vec::new(),
+                uses: PortUses::default(),
                 contained_in: Vec::new(),
             });
         }
@@ -1618,8 +1681,8 @@ impl Catalog {
             return &[];
         };
         match p.direction() {
-            Some(PortDirection::Out) => &t.consumers,
-            Some(PortDirection::In) => &t.producers,
+            Some(PortDirection::Out) => &t.uses.consumers,
+            Some(PortDirection::In) => &t.uses.producers,
             _ => &[],
         }
     }
@@ -1637,8 +1700,8 @@ impl Catalog {
             return &[];
         };
         match i.direction_kind() {
-            Some(Direction::Provided) => &t.requirers,
-            Some(Direction::Required) => &t.providers,
+            Some(Direction::Provided) => &t.uses.requirers,
+            Some(Direction::Required) => &t.uses.providers,
             None => &[],
         }
     }

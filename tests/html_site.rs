@@ -301,8 +301,14 @@ fn interface_pages_list_providers_and_flag_unprovided() {
     let mut flagged = 0;
     for i in &cat.interfaces {
         let html = read(&out.join(format!("interfaces/{}.html", i.slug)));
-        assert_eq!(section_links(&html, "providers").len(), i.providers.len());
-        assert_eq!(section_links(&html, "requirers").len(), i.requirers.len());
+        assert_eq!(
+            section_links(&html, "providers").len(),
+            i.uses.providers.len()
+        );
+        assert_eq!(
+            section_links(&html, "requirers").len(),
+            i.uses.requirers.len()
+        );
         assert_eq!(
             html.contains("class=\"warning flag\""),
             i.is_unprovided(),

@@ -46,7 +46,7 @@ impl Catalog {
                 }
                 by_component
             };
-            let (out, inp) = (count(&t.producers), count(&t.consumers));
+            let (out, inp) = (count(&t.uses.producers), count(&t.uses.consumers));
             if out.is_empty() || inp.is_empty() {
                 continue;
             }

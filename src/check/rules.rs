@@ -1053,7 +1053,13 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     // (type name, idlFile, source file, position, port name) of every port, in catalogue order.
     let mut uses: Vec<(String, Option<String>, &str, Pos, String)> = Vec::new();
     for t in &cat.data_types {
-        for pr in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+        for pr in t
+            .uses
+            .producers
+            .iter()
+            .chain(&t.uses.consumers)
+            .chain(&t.uses.others)
+        {
             if let Some((c, p)) = cat.port_of(pr) {
                 uses.push((
                     t.name.clone(),
@@ -1066,7 +1072,13 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         }
     }
     for t in &cat.interfaces {
-        for r in t.providers.iter().chain(&t.requirers).chain(&t.others) {
+        for r in t
+            .uses
+            .providers
+            .iter()
+            .chain(&t.uses.requirers)
+            .chain(&t.uses.others)
+        {
             if let Some((c, _, i)) = cat.interface_of(r) {
                 uses.push((
                     t.name.clone(),
@@ -1189,7 +1201,7 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     idl_rules(cat, &mut out);
     for t in cat.interfaces.iter().filter(|t| t.is_unprovided()) {
-        for req in &t.requirers {
+        for req in &t.uses.requirers {
             let Some((c, _, i)) = cat.interface_of(req) else {
                 continue;
             };
@@ -1212,7 +1224,13 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     for t in &cat.data_types {
         // file name → ports using it
         let mut by_file: BTreeMap<String, Vec<(usize, usize)>> = BTreeMap::new();
-        for pr in t.producers.iter().chain(&t.consumers).chain(&t.others) {
+        for pr in t
+            .uses
+            .producers
+            .iter()
+            .chain(&t.uses.consumers)
+            .chain(&t.uses.others)
+        {
             let Some((ci, pi)) = cat.resolve_port(pr) else {
                 continue;
             };

@@ -493,7 +493,7 @@ mod tests {
             );
             assert_eq!(back.catalog.pages(), catalog.pages());
             for t in &catalog.data_types {
-                for r in t.producers.iter().chain(&t.consumers) {
+                for r in t.uses.producers.iter().chain(&t.uses.consumers) {
                     assert_eq!(back.catalog.resolve_port(r), catalog.resolve_port(r));
                 }
             }
@@ -552,7 +552,7 @@ mod tests {
         let r = catalog
             .data_types
             .iter()
-            .find_map(|t| t.producers.first())
+            .find_map(|t| t.uses.producers.first())
             .unwrap();
         let edited = text.replacen(
             &format!("\"port\": \"{}\"", r.port),

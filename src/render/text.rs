@@ -643,9 +643,9 @@ pub fn type_index_table<M: Markup>(
         .map(|(ti, t)| {
             vec![
                 name(cat.data_type_page(ti)),
-                t.producers.len().to_string(),
-                t.consumers.len().to_string(),
-                t.others.len().to_string(),
+                t.uses.producers.len().to_string(),
+                t.uses.consumers.len().to_string(),
+                t.uses.others.len().to_string(),
             ]
         })
         .collect();
@@ -680,9 +680,9 @@ pub fn interface_index_table<M: Markup>(
             }
             vec![
                 cell,
-                t.providers.len().to_string(),
-                t.requirers.len().to_string(),
-                t.others.len().to_string(),
+                t.uses.providers.len().to_string(),
+                t.uses.requirers.len().to_string(),
+                t.uses.others.len().to_string(),
             ]
         })
         .collect();

@@ -1372,9 +1372,9 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
                     .filter(|s| **s != t.name)
                     .cloned()
                     .collect(),
-                producers: t.producers.len(),
-                consumers: t.consumers.len(),
-                others: t.others.len(),
+                producers: t.uses.producers.len(),
+                consumers: t.uses.consumers.len(),
+                others: t.uses.others.len(),
             })
             .collect();
         pages.push(Job {
@@ -1416,8 +1416,8 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             .map(|(ii, t)| IfRow {
                 name: t.name.clone(),
                 href: catalog.interface_page(ii).file_name("html"),
-                providers: t.providers.len(),
-                requirers: t.requirers.len(),
+                providers: t.uses.providers.len(),
+                requirers: t.uses.requirers.len(),
                 unprovided: t.is_unprovided(),
             })
             .collect();

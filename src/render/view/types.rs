@@ -3,7 +3,7 @@
 //! interface, and ports of other kinds).
 
 use super::Linked;
-use crate::catalog::{Catalog, InterfaceRef, Page, PageKind, PortRef};
+use crate::catalog::{Catalog, InterfaceRef, Page, PageKind, PortRef, Role, TypeEntry, Uses};
 use crate::i18n::Lang;
 use crate::model::non_empty;
 
@@ -48,97 +48,113 @@ pub struct TypeView<'a> {
     pub contained_in: Vec<Linked<'a>>,
 }
 
-fn port_rows<'a>(cat: &'a Catalog, refs: &[PortRef]) -> Vec<UseRow<'a>> {
-    refs.iter()
-        .filter_map(|r| {
-            let (ci, pi) = cat.resolve_port(r)?;
-            let c = &cat.components[ci];
-            let port = &c.profile.data_ports[pi];
-            let page = cat.component_page(ci);
-            Some(UseRow {
-                component: Linked::new(&c.display_name(), Some(page), None),
-                port: Linked::new(
-                    port.name.as_deref().unwrap_or_default(),
-                    Some(page),
-                    Some(&c.anchors.data_ports[pi]),
+/// A use of a type (a data port, an interface of a service port) as a row of the type's page.
+pub trait UseRef {
+    fn row<'a>(&self, cat: &'a Catalog) -> Option<UseRow<'a>>;
+}
+
+impl UseRef for PortRef {
+    fn row<'a>(&self, cat: &'a Catalog) -> Option<UseRow<'a>> {
+        let (ci, pi) = cat.resolve_port(self)?;
+        let c = &cat.components[ci];
+        let port = &c.profile.data_ports[pi];
+        let page = cat.component_page(ci);
+        Some(UseRow {
+            component: Linked::new(&c.display_name(), Some(page), None),
+            port: Linked::new(
+                port.name.as_deref().unwrap_or_default(),
+                Some(page),
+                Some(&c.anchors.data_ports[pi]),
+            ),
+            written: non_empty(&port.type_).unwrap_or("").to_string(),
+        })
+    }
+}
+
+impl UseRef for InterfaceRef {
+    fn row<'a>(&self, cat: &'a Catalog) -> Option<UseRow<'a>> {
+        let (ci, pi, ii) = cat.resolve_interface(self)?;
+        let c = &cat.components[ci];
+        let sp = &c.profile.service_ports[pi];
+        let i = &sp.interfaces[ii];
+        let page = cat.component_page(ci);
+        Some(UseRow {
+            component: Linked::new(&c.display_name(), Some(page), None),
+            port: Linked::new(
+                &format!(
+                    "{}.{}",
+                    sp.name.as_deref().unwrap_or(""),
+                    i.name.as_deref().unwrap_or("")
                 ),
-                written: non_empty(&port.type_).unwrap_or("").to_string(),
-            })
+                Some(page),
+                Some(&c.anchors.interfaces[pi][ii]),
+            ),
+            written: non_empty(&i.type_).unwrap_or("").to_string(),
         })
-        .collect()
+    }
 }
 
-fn interface_rows<'a>(cat: &'a Catalog, refs: &[InterfaceRef]) -> Vec<UseRow<'a>> {
-    refs.iter()
-        .filter_map(|r| {
-            let (ci, pi, ii) = cat.resolve_interface(r)?;
-            let c = &cat.components[ci];
-            let sp = &c.profile.service_ports[pi];
-            let i = &sp.interfaces[ii];
-            let page = cat.component_page(ci);
-            Some(UseRow {
-                component: Linked::new(&c.display_name(), Some(page), None),
-                port: Linked::new(
-                    &format!(
-                        "{}.{}",
-                        sp.name.as_deref().unwrap_or(""),
-                        i.name.as_deref().unwrap_or("")
-                    ),
-                    Some(page),
-                    Some(&c.anchors.interfaces[pi][ii]),
-                ),
-                written: non_empty(&i.type_).unwrap_or("").to_string(),
-            })
-        })
-        .collect()
+/// The heading anchor and label of a role's group.
+fn role_heading(role: Role, lang: Lang) -> (&'static str, &'static str) {
+    match role {
+        Role::Producer => ("sec-producers", lang.t("producers")),
+        Role::Consumer => ("sec-consumers", lang.t("consumers")),
+        Role::Provider => ("sec-providers", lang.t("providers")),
+        Role::Requirer => ("sec-requirers", lang.t("requirers")),
+        Role::Other => ("sec-others", lang.t("fact_others")),
+    }
 }
 
-fn groups<'a>(list: [(&'static str, &'static str, Vec<UseRow<'a>>); 3]) -> Vec<UseGroup<'a>> {
-    list.into_iter()
-        .filter(|(_, _, rows)| !rows.is_empty())
-        .map(|(anchor, label, rows)| UseGroup {
-            anchor,
-            label,
-            rows,
-        })
-        .collect()
-}
-
-/// The view of data type `ti` ([`Catalog::data_types`]).
-pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
-    let t = &cat.data_types[ti];
-    TypeView {
-        kind: TypeKind::Data,
-        page: cat.data_type_page(ti),
-        index: cat.site_page(PageKind::DataTypes),
-        name: &t.name,
-        unprovided: false,
-        spellings: &t.spellings,
-        idl_files: &t.idl_files,
-        uses: groups([
-            (
-                "sec-producers",
-                lang.t("producers"),
-                port_rows(cat, &t.producers),
-            ),
-            (
-                "sec-consumers",
-                lang.t("consumers"),
-                port_rows(cat, &t.consumers),
-            ),
-            (
-                "sec-others",
-                lang.t("fact_others"),
-                port_rows(cat, &t.others),
-            ),
-        ]),
-        carried_by: crate::render::system_text::carrying(cat, &t.name)
+/// The view of a type entry of either kind: its uses grouped by role (the non-empty groups),
+/// the system connectors carrying a data type, the types holding it.
+fn type_view<'a, U>(
+    cat: &'a Catalog,
+    t: &'a TypeEntry<U>,
+    kind: TypeKind,
+    page: &'a Page,
+    lang: Lang,
+) -> TypeView<'a>
+where
+    U: Uses,
+    U::Ref: UseRef,
+{
+    let index = cat.site_page(match kind {
+        TypeKind::Data => PageKind::DataTypes,
+        TypeKind::Interface => PageKind::Interfaces,
+    });
+    let carried_by = match kind {
+        TypeKind::Data => crate::render::system_text::carrying(cat, &t.name)
             .into_iter()
             .filter_map(|(text, s)| {
                 let page = cat.page_of_system(s)?;
                 Some(Linked::new(&text, Some(page), Some("data-connectors")))
             })
             .collect(),
+        TypeKind::Interface => Vec::new(),
+    };
+    TypeView {
+        kind,
+        page,
+        index,
+        name: &t.name,
+        unprovided: t.is_unprovided(),
+        spellings: &t.spellings,
+        idl_files: &t.idl_files,
+        uses: t
+            .uses
+            .by_role()
+            .into_iter()
+            .filter_map(|(role, refs)| {
+                let rows: Vec<UseRow> = refs.iter().filter_map(|r| r.row(cat)).collect();
+                let (anchor, label) = role_heading(role, lang);
+                (!rows.is_empty()).then_some(UseGroup {
+                    anchor,
+                    label,
+                    rows,
+                })
+            })
+            .collect(),
+        carried_by,
         contained_in: t
             .contained_in
             .iter()
@@ -153,35 +169,24 @@ pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
     }
 }
 
+/// The view of data type `ti` ([`Catalog::data_types`]).
+pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
+    type_view(
+        cat,
+        &cat.data_types[ti],
+        TypeKind::Data,
+        cat.data_type_page(ti),
+        lang,
+    )
+}
+
 /// The view of interface `ii` ([`Catalog::interfaces`]).
 pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
-    let t = &cat.interfaces[ii];
-    TypeView {
-        kind: TypeKind::Interface,
-        page: cat.interface_page(ii),
-        index: cat.site_page(PageKind::Interfaces),
-        name: &t.name,
-        unprovided: t.is_unprovided(),
-        spellings: &t.spellings,
-        idl_files: &t.idl_files,
-        uses: groups([
-            (
-                "sec-providers",
-                lang.t("providers"),
-                interface_rows(cat, &t.providers),
-            ),
-            (
-                "sec-requirers",
-                lang.t("requirers"),
-                interface_rows(cat, &t.requirers),
-            ),
-            (
-                "sec-others",
-                lang.t("fact_others"),
-                interface_rows(cat, &t.others),
-            ),
-        ]),
-        carried_by: Vec::new(),
-        contained_in: Vec::new(),
-    }
+    type_view(
+        cat,
+        &cat.interfaces[ii],
+        TypeKind::Interface,
+        cat.interface_page(ii),
+        lang,
+    )
 }
