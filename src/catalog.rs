@@ -246,8 +246,68 @@ pub struct Anchors {
     pub configurations: Vec<String>,
 }
 
-/// The id of a component entry ([`Component::id`]); shared by every reference to it.
-pub type ComponentId = std::sync::Arc<str>;
+/// The id of a component entry ([`Component::id`]): its own type, so that it is never confused
+/// with a name or a path; shared (one allocation) by every reference to the entry. A string at
+/// the boundary (`catalog.json`, URLs, messages); inside the build a reference also carries the
+/// entry's dense handle ([`RefHandle`]).
+#[derive(Debug, Clone, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct ComponentId(std::sync::Arc<str>);
+
+impl ComponentId {
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+
+    /// The same entry's id: the very allocation, not only the same text (a [`RefHandle`] is
+    /// trusted only then).
+    pub fn same_entry(a: &ComponentId, b: &ComponentId) -> bool {
+        std::sync::Arc::ptr_eq(&a.0, &b.0)
+    }
+}
+
+impl std::ops::Deref for ComponentId {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl std::borrow::Borrow<str> for ComponentId {
+    fn borrow(&self) -> &str {
+        &self.0
+    }
+}
+
+impl AsRef<str> for ComponentId {
+    fn as_ref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl std::fmt::Display for ComponentId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl From<String> for ComponentId {
+    fn from(s: String) -> ComponentId {
+        ComponentId(s.into())
+    }
+}
+
+impl From<&str> for ComponentId {
+    fn from(s: &str) -> ComponentId {
+        ComponentId(s.into())
+    }
+}
+
+impl PartialEq<str> for ComponentId {
+    fn eq(&self, other: &str) -> bool {
+        &*self.0 == other
+    }
+}
 
 /// The key of a port, service port or interface within its component: its name, and for a
 /// second (third, …) member of the same name `name#2` (`#3`, …): a profile may repeat a name
@@ -322,7 +382,7 @@ impl Default for ComponentIx {
 /// component's handle and the port's (and interface's) position in it, so that rendering
 /// never looks a component up by its id string. Not part of `catalog.json` (ids are strings at
 /// the boundary) nor of a reference's equality; a handle is trusted only by the catalogue whose
-/// component entry holds the very id the reference holds ([`std::sync::Arc::ptr_eq`]), and any
+/// component entry holds the very id the reference holds ([`ComponentId::same_entry`]), and any
 /// other reference is resolved by id.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct RefHandle {
@@ -1433,7 +1493,7 @@ impl Catalog {
     /// allocation: a handle made by this catalogue, or by a clone of its entry).
     fn handled(&self, id: &ComponentId, at: ComponentIx) -> Option<(usize, &Component)> {
         let c = self.components.get(at.get())?;
-        std::sync::Arc::ptr_eq(&c.id, id).then_some((at.get(), c))
+        ComponentId::same_entry(&c.id, id).then_some((at.get(), c))
     }
 
     /// The position in [`Catalog::components`] of the component a port reference names: O(1)
