@@ -84,6 +84,19 @@ pub fn is_document_extension(ext: &str) -> bool {
     matches!(ext, "xml" | "yaml" | "yml" | "rtsys")
 }
 
+/// Whether a file is one the catalogue may read as a specification: a profile-like file (by
+/// extension or by name, RTCBuilder's backups included) or an IDL file. What it is, is decided
+/// by its content.
+pub fn is_specification_file(path: &Path) -> bool {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    ext.as_deref()
+        .is_some_and(|e| e == "idl" || is_document_extension(e))
+        || named_like_profile(path)
+}
+
 /// Whether `path` is one of RTCBuilder's backups (`RTC.xml<timestamp>`): an older version of
 /// the `RTC.xml` beside it, never a component of its own ([`crate::catalog::backups`]).
 pub fn is_backup(path: &Path) -> bool {

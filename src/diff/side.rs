@@ -294,17 +294,9 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
 /// (sources, images) are not copied out of the repository.
 fn wanted(rel: &str) -> bool {
     let p = Path::new(rel);
-    let safe = p
-        .components()
-        .all(|c| matches!(c, std::path::Component::Normal(_)));
-    let ext = p
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    safe && (ext
-        .as_deref()
-        .is_some_and(|e| e == "idl" || crate::walk::is_document_extension(e))
-        || crate::walk::named_like_profile(p))
+    p.components()
+        .all(|c| matches!(c, std::path::Component::Normal(_)))
+        && crate::walk::is_specification_file(p)
 }
 
 #[cfg(test)]

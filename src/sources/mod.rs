@@ -698,20 +698,16 @@ pub struct Materialized {
     pub notes: Vec<Diagnostic>,
 }
 
-/// Whether rtcdoc may read a repository file: a profile-like or IDL file, a README, an image.
+/// Whether rtcdoc may read a repository file: a specification file, a README, an image.
 fn wanted(rel: &str) -> bool {
     let p = Path::new(rel);
     let ext = p
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    let ext = ext.as_deref().unwrap_or("");
-    ext == "idl"
-        || crate::walk::is_document_extension(ext)
-        || crate::walk::named_like_profile(p)
+    crate::walk::is_specification_file(p)
         || crate::readme::is_readme_path(p)
-        || crate::readme::IMAGE_EXTENSIONS.contains(&ext)
-        || crate::walk::is_backup(p)
+        || crate::readme::IMAGE_EXTENSIONS.contains(&ext.as_deref().unwrap_or(""))
 }
 
 /// A repository path safe to write below the temporary folder.
