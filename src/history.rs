@@ -82,70 +82,23 @@ fn is_work_tree(dir: &Path) -> bool {
 
 /// Fills in `history` of every component: up to `limit` commits of its file (0: none, and no
 /// history at all), its backups, and the file as it is when that differs from the newest
-/// commit. A repository that cannot be read leaves the components without git history; a
-/// version that cannot be read stays in the history with the reason.
+/// commit; then the history of every RT System profile the same way ([`attach_systems`]). A
+/// repository that cannot be read leaves the documents without git history; a version that
+/// cannot be read stays in the history with the reason.
 pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOptions) {
-    let (sources, limit, limits) = (&opts.sources, opts.history, &opts.limits);
+    let (limit, limits) = (opts.history, &opts.limits);
     if limit == 0 {
         return;
     }
-    let local = is_work_tree(&roots.local).then(|| Repo::WorkTree(roots.local.clone()));
-    let mut repos: Vec<Repo> = Vec::new();
-    // (repository, revision, pathspec) of each component, if its file is in one.
-    let mut located: Vec<Option<(usize, String, String)>> = Vec::new();
-    for c in &catalog.components {
-        let (repo, rev, path) = match &c.origin {
-            Some(o) => match sources.iter().find(|p| p.source.name == o.source) {
-                Some(p) => (
-                    Repo::Mirror(p.mirror.clone()),
-                    o.commit.clone(),
-                    o.path.clone(),
-                ),
-                None => {
-                    located.push(None);
-                    continue;
-                }
-            },
-            None => match &local {
-                Some(r) => (r.clone(), "HEAD".to_string(), c.source.clone()),
-                None => {
-                    located.push(None);
-                    continue;
-                }
-            },
-        };
-        let at = match repos.iter().position(|r| *r == repo) {
-            Some(i) => i,
-            None => {
-                repos.push(repo);
-                repos.len() - 1
-            }
-        };
-        located.push(Some((at, rev, path)));
-    }
-    // The commits of each file, newest first.
-    let logs: Vec<Vec<Version>> = located
-        .par_iter()
-        .map(|l| match l {
-            Some((repo, rev, path)) => log(&repos[*repo], *repo, rev, path, limit),
-            None => Vec::new(),
-        })
-        .collect();
-    // Each distinct blob read and parsed once.
-    // (object id, a path it had: its extension names the format when the content does not).
-    let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
-    for v in logs.iter().flatten() {
-        if let Where::Blob { repo, oid } = &v.at {
-            wanted[*repo]
-                .entry(oid.clone())
-                .or_insert_with(|| v.entry.file.clone());
-        }
-    }
-    let parsed: Vec<HashMap<String, Result<Profile, String>>> = repos
+    let mut repos = Repos::new(roots, &opts.sources);
+    let located: Vec<Option<Located>> = catalog
+        .components
         .iter()
-        .zip(wanted)
-        .map(|(repo, oids)| read_blobs(repo, &oids, limits))
+        .map(|c| repos.locate(c.origin.as_ref(), &c.source))
         .collect();
+    let (logs, parsed) = read_versions(&repos.list, &located, limit, &|bytes, file| {
+        parse_blob(bytes, file, limits)
+    });
     let idl = &catalog.idl;
     let histories: Vec<Vec<Entry>> = catalog
         .components
@@ -156,6 +109,87 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
     for (c, h) in catalog.components.iter_mut().zip(histories) {
         c.history = h;
     }
+    attach_systems(catalog, &mut repos, limit, limits);
+}
+
+/// The repositories histories are read from, each once.
+struct Repos<'a> {
+    list: Vec<Repo>,
+    /// The work tree around the input directory, if it is in one.
+    local: Option<Repo>,
+    sources: &'a [crate::sources::Pinned],
+}
+
+/// Where a document's file is: (repository index, revision, path in the repository).
+type Located = (usize, String, String);
+
+impl<'a> Repos<'a> {
+    fn new(roots: &Roots, sources: &'a [crate::sources::Pinned]) -> Self {
+        Repos {
+            list: Vec::new(),
+            local: is_work_tree(&roots.local).then(|| Repo::WorkTree(roots.local.clone())),
+            sources,
+        }
+    }
+
+    /// The repository, revision and path of a document read from `origin` (a `[[source]]`) or
+    /// from `source` of the input directory; `None` when no repository holds it.
+    fn locate(&mut self, origin: Option<&crate::model::Origin>, source: &str) -> Option<Located> {
+        let (repo, rev, path) = match origin {
+            Some(o) => {
+                let p = self.sources.iter().find(|p| p.source.name == o.source)?;
+                (
+                    Repo::Mirror(p.mirror.clone()),
+                    o.commit.clone(),
+                    o.path.clone(),
+                )
+            }
+            None => (self.local.clone()?, "HEAD".to_string(), source.to_string()),
+        };
+        let at = match self.list.iter().position(|r| *r == repo) {
+            Some(i) => i,
+            None => {
+                self.list.push(repo);
+                self.list.len() - 1
+            }
+        };
+        Some((at, rev, path))
+    }
+}
+
+/// A version's document by blob, per repository, parsed once.
+type Parsed<D> = Vec<HashMap<String, Result<D, String>>>;
+
+/// The commits of each located file (newest first, up to `limit`) and every distinct blob of
+/// them read (one `git cat-file --batch` per repository) and parsed once by `parse` (bytes, a
+/// path the blob had: its extension names the format when the content does not).
+fn read_versions<D: Send>(
+    repos: &[Repo],
+    located: &[Option<Located>],
+    limit: usize,
+    parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
+) -> (Vec<Vec<Version>>, Parsed<D>) {
+    let logs: Vec<Vec<Version>> = located
+        .par_iter()
+        .map(|l| match l {
+            Some((repo, rev, path)) => log(&repos[*repo], *repo, rev, path, limit),
+            None => Vec::new(),
+        })
+        .collect();
+    let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
+    for v in logs.iter().flatten() {
+        if let Where::Blob { repo, oid } = &v.at {
+            wanted[*repo]
+                .entry(oid.clone())
+                .or_insert_with(|| v.entry.file.clone());
+        }
+    }
+    let parsed = repos
+        .iter()
+        .zip(wanted)
+        .map(|(repo, oids)| read_blobs(repo, &oids, parse))
+        .collect();
+    (logs, parsed)
 }
 
 /// The commits that changed `path` up to `rev`, following renames.
@@ -234,12 +268,13 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
     out
 }
 
-/// Reads and parses the blobs `oids` of `repo` (one `git cat-file --batch`).
-fn read_blobs(
+/// Reads and parses the blobs `oids` of `repo` (one `git cat-file --batch`), each with the path
+/// it had.
+fn read_blobs<D: Send>(
     repo: &Repo,
     oids: &BTreeMap<String, String>,
-    limits: &Limits,
-) -> HashMap<String, Result<Profile, String>> {
+    parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
+) -> HashMap<String, Result<D, String>> {
     let ids: Vec<String> = oids.keys().cloned().collect();
     let mut raw: Blobs = Vec::new();
     if !ids.is_empty() {
@@ -251,7 +286,7 @@ fn read_blobs(
     raw.into_par_iter()
         .map(|(oid, bytes)| {
             let file = oids.get(&oid).map_or("", String::as_str);
-            let parsed = bytes.and_then(|b| parse_blob(&b, file, limits));
+            let parsed = bytes.and_then(|b| parse(&b, file));
             (oid, parsed)
         })
         .collect()
@@ -347,7 +382,7 @@ fn version_of(p: &Profile) -> Option<String> {
 fn history_of(
     c: &Component,
     commits: Vec<Version>,
-    parsed: &[HashMap<String, Result<Profile, String>>],
+    parsed: &Parsed<Profile>,
     idl: &crate::idl::IdlSet,
 ) -> Vec<Entry> {
     // Backups, newest first, merged into the commits by date.
@@ -376,16 +411,9 @@ fn history_of(
         versions.push(v);
     }
     versions.extend(bs);
-    if versions.is_empty() {
-        return Vec::new();
-    }
-    let profile_of = |v: &Version| -> Result<&Profile, String> {
-        match &v.at {
-            Where::Blob { repo, oid } => match parsed[*repo].get(oid) {
-                Some(Ok(p)) => Ok(p),
-                Some(Err(e)) => Err(e.clone()),
-                None => Err("git did not read it".to_string()),
-            },
+    let profile_of = |w: &Where| -> Result<&Profile, String> {
+        match w {
+            Where::Blob { repo, oid } => blob(parsed, *repo, oid),
             Where::Backup(i) => match &c.backups[*i] {
                 b if b.profile.is_some() => Ok(b.profile.as_deref().expect("checked")),
                 b => Err(b
@@ -396,16 +424,49 @@ fn history_of(
             Where::Current => Ok(&c.profile),
         }
     };
-    // The file as it is: a version of its own when it differs from the newest commit in the
-    // specification (uncommitted edits), or when only backups record the history.
+    entries(
+        versions,
+        (&*c.profile, &c.source),
+        &profile_of,
+        &|old, new| {
+            crate::diff::compare_profiles(old, new, idl)
+                .iter()
+                .map(to_entry_change)
+                .collect()
+        },
+        &version_of,
+    )
+}
+
+/// The parsed document of blob `oid` of repository `repo`.
+fn blob<'p, D>(parsed: &'p Parsed<D>, repo: usize, oid: &str) -> Result<&'p D, String> {
+    match parsed[repo].get(oid) {
+        Some(Ok(d)) => Ok(d),
+        Some(Err(e)) => Err(e.clone()),
+        None => Err("git did not read it".to_string()),
+    }
+}
+
+/// A document's history from its versions (newest first): the file as it is (`current`, with
+/// its path) first when it differs from the newest commit in what `compare` sees (uncommitted
+/// edits), or when no commit records the history; then each version with the changes from the
+/// readable version before it. `doc_of` gives a version's document (or why it cannot);
+/// `version_of` its version string (a new one is a release).
+fn entries<'d, D>(
+    mut versions: Vec<Version>,
+    current: (&'d D, &str),
+    doc_of: &dyn Fn(&Where) -> Result<&'d D, String>,
+    compare: &dyn Fn((&D, &str), (&D, &str)) -> Vec<Change>,
+    version_of: &dyn Fn(&D) -> Option<String>,
+) -> Vec<Entry> {
+    if versions.is_empty() {
+        return Vec::new();
+    }
     let newest_commit = versions.iter().find(|v| v.entry.commit.is_some());
     let current_differs = match newest_commit {
         None => true,
-        Some(v) => match profile_of(v) {
-            Ok(p) => {
-                !crate::diff::compare_profiles((p, &v.entry.file), (&c.profile, &c.source), idl)
-                    .is_empty()
-            }
+        Some(v) => match doc_of(&v.at) {
+            Ok(d) => !compare((d, &v.entry.file), current).is_empty(),
             Err(_) => true,
         },
     };
@@ -416,36 +477,29 @@ fn history_of(
                 at: Where::Current,
                 key: String::new(),
                 entry: Entry {
-                    file: c.source.clone(),
+                    file: current.1.to_string(),
                     ..Entry::default()
                 },
             },
         );
     }
-    let profiles: Vec<Result<&Profile, String>> = versions.iter().map(profile_of).collect();
+    let docs: Vec<Result<&D, String>> = versions.iter().map(|v| doc_of(&v.at)).collect();
     let mut entries = Vec::with_capacity(versions.len());
     for (i, v) in versions.iter().enumerate() {
         let mut e = v.entry.clone();
-        match &profiles[i] {
+        match &docs[i] {
             Err(why) => e.error = Some(why.clone()),
-            Ok(p) => {
-                e.version = version_of(p);
-                let before = (i + 1..versions.len()).find(|&j| profiles[j].is_ok());
+            Ok(d) => {
+                e.version = version_of(d);
+                let before = (i + 1..versions.len()).find(|&j| docs[j].is_ok());
                 match before {
                     None => e.first = true,
                     Some(j) => {
-                        let old = profiles[j].as_ref().expect("found ok");
+                        let old = docs[j].as_ref().expect("found ok");
                         let same_blob = matches!((&v.at, &versions[j].at),
                             (Where::Blob { oid: a, repo: ra }, Where::Blob { oid: b, repo: rb }) if a == b && ra == rb);
                         if !same_blob {
-                            e.changes = crate::diff::compare_profiles(
-                                (old, &versions[j].entry.file),
-                                (p, &v.entry.file),
-                                idl,
-                            )
-                            .iter()
-                            .map(to_entry_change)
-                            .collect();
+                            e.changes = compare((old, &versions[j].entry.file), (d, &v.entry.file));
                         }
                         e.release = version_of(old) != e.version;
                     }
@@ -475,4 +529,74 @@ fn to_entry_change(c: &crate::diff::Change) -> Change {
         old_line: c.old_line,
         old_column: c.old_column,
     }
+}
+
+/// Fills in `history` of every RT System profile: the commits of its file, each version
+/// compared with the one before by the system diff engine ([`crate::diff::systems::compare_systems`],
+/// DIFF15x/25x/35x), and the file as it is when that differs from the newest commit.
+fn attach_systems(catalog: &mut Catalog, repos: &mut Repos<'_>, limit: usize, limits: &Limits) {
+    if catalog.systems.is_empty() {
+        return;
+    }
+    let located: Vec<Option<Located>> = catalog
+        .systems
+        .iter()
+        .map(|s| repos.locate(s.origin.as_ref(), &s.source))
+        .collect();
+    let (logs, parsed) = read_versions(&repos.list, &located, limit, &|bytes, file| {
+        parse_system_blob(bytes, file, limits)
+    });
+    let histories: Vec<Vec<Entry>> = catalog
+        .systems
+        .par_iter()
+        .zip(logs)
+        .map(|(s, commits)| {
+            entries(
+                commits,
+                (&*s.profile, &s.source),
+                &|w| match w {
+                    Where::Blob { repo, oid } => blob(&parsed, *repo, oid),
+                    Where::Current => Ok(&*s.profile),
+                    Where::Backup(_) => Err("a system has no backups".to_string()),
+                },
+                &|(old, old_file), (new, new_file)| {
+                    crate::diff::systems::compare_systems(old, new)
+                        .iter()
+                        .map(|c| Change {
+                            file: Some(new_file.to_string()),
+                            old_file: Some(old_file.to_string()),
+                            ..to_entry_change(c)
+                        })
+                        .collect()
+                },
+                &system_version,
+            )
+        })
+        .collect();
+    for (s, h) in catalog.systems.iter_mut().zip(histories) {
+        s.history = h;
+    }
+}
+
+/// Parses one version of an RT System profile; `file` is its path then.
+fn parse_system_blob(
+    bytes: &[u8],
+    file: &str,
+    limits: &Limits,
+) -> Result<crate::model::system::RtSystem, String> {
+    let format = crate::build::system_format(Path::new(file), bytes);
+    parse::rts::parse(format, bytes, file, limits)
+        .map(|p| p.system)
+        .map_err(|d| match d.pos {
+            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
+            None => d.message,
+        })
+}
+
+/// The version string of an RT System profile: its id's version part.
+fn system_version(s: &crate::model::system::RtSystem) -> Option<String> {
+    s.id_parts
+        .as_ref()
+        .and_then(|p| non_empty(&p.version))
+        .map(str::to_string)
 }

@@ -295,6 +295,8 @@ struct DocumentRead {
 struct SystemRead {
     source: String,
     format: crate::parse::SourceFormat,
+    #[serde(default)]
+    history: Vec<crate::catalog::history::Entry>,
     profile: Box<crate::model::system::RtSystem>,
 }
 
@@ -377,16 +379,24 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         doc.idl,
     )
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-    catalog.attach_systems(
-        doc.systems
-            .into_iter()
-            .map(|(_, s)| crate::catalog::systems::LoadedSystem {
+    let mut histories: std::collections::HashMap<String, Vec<crate::catalog::history::Entry>> =
+        std::collections::HashMap::new();
+    let loaded = doc
+        .systems
+        .into_iter()
+        .map(|(_, s)| {
+            histories.insert(s.source.clone(), s.history);
+            crate::catalog::systems::LoadedSystem {
                 source: s.source,
                 format: s.format,
                 system: s.profile,
-            })
-            .collect(),
-    );
+            }
+        })
+        .collect();
+    catalog.attach_systems(loaded);
+    for s in &mut catalog.systems {
+        s.history = histories.remove(&s.source).unwrap_or_default();
+    }
     catalog.detached_backups = doc.backups;
     catalog.set_origins(doc.sources);
     if page_entries(&catalog) != doc.pages {

@@ -755,7 +755,18 @@ fn history_section<M: Markup>(
         return;
     }
     M::heading(out, page, 2, "sec-change-history", lang.t("change_history"));
-    M::paragraph(out, &M::esc(lang.t("history_intro")));
+    history_body::<M>(out, h, lang.t("history_intro"), lang);
+}
+
+/// A History section's text under its heading: `intro`, the table of the latest versions and
+/// the note on older ones (component and system pages).
+pub(super) fn history_body<M: Markup>(
+    out: &mut String,
+    h: &crate::render::view::history::HistoryView,
+    intro: &str,
+    lang: Lang,
+) {
+    M::paragraph(out, &M::esc(intro));
     let rows: Vec<Vec<String>> = h
         .rows
         .iter()
