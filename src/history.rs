@@ -86,30 +86,62 @@ fn is_work_tree(dir: &Path) -> bool {
 /// repository that cannot be read leaves the documents without git history; a version that
 /// cannot be read stays in the history with the reason.
 pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOptions) {
-    let (limit, limits) = (opts.history, &opts.limits);
-    if limit == 0 {
+    if opts.history == 0 {
         return;
     }
     let mut repos = Repos::new(roots, &opts.sources);
+    attach_components(catalog, &mut repos, opts, &|_| true);
+    attach_systems(catalog, &mut repos, opts.history, &opts.limits);
+}
+
+/// [`attach`] for the components whose file (input path) is in `only`: the others keep the
+/// history they have. `serve` calls it after an edit of profiles: one `git log` and one
+/// `git cat-file` per edited file, not the whole catalogue's again.
+pub fn attach_some(
+    catalog: &mut Catalog,
+    roots: &Roots,
+    opts: &crate::build::LoadOptions,
+    only: &std::collections::BTreeSet<String>,
+) {
+    if opts.history == 0 {
+        return;
+    }
+    let mut repos = Repos::new(roots, &opts.sources);
+    attach_components(catalog, &mut repos, opts, &|c| only.contains(&c.source));
+}
+
+/// Fills in `history` of the components `wanted` says.
+fn attach_components(
+    catalog: &mut Catalog,
+    repos: &mut Repos<'_>,
+    opts: &crate::build::LoadOptions,
+    wanted: &(dyn Fn(&Component) -> bool + Sync),
+) {
+    let (limit, limits) = (opts.history, &opts.limits);
     let located: Vec<Option<Located>> = catalog
         .components
         .iter()
-        .map(|c| repos.locate(c.origin.as_ref(), &c.source))
+        .map(|c| {
+            wanted(c)
+                .then(|| repos.locate(c.origin.as_ref(), &c.source))
+                .flatten()
+        })
         .collect();
     let (logs, parsed) = read_versions(&repos.list, &located, limit, &|bytes, file| {
         parse_blob(bytes, file, limits)
     });
     let idl = &catalog.idl;
-    let histories: Vec<Vec<Entry>> = catalog
+    let histories: Vec<Option<Vec<Entry>>> = catalog
         .components
         .par_iter()
         .zip(logs)
-        .map(|(c, commits)| history_of(c, commits, &parsed, idl))
+        .map(|(c, commits)| wanted(c).then(|| history_of(c, commits, &parsed, idl)))
         .collect();
     for (c, h) in catalog.components.iter_mut().zip(histories) {
-        c.history = h;
+        if let Some(h) = h {
+            c.history = h;
+        }
     }
-    attach_systems(catalog, &mut repos, limit, limits);
 }
 
 /// The repositories histories are read from, each once.

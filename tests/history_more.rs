@@ -184,3 +184,73 @@ fn a_system_has_its_history_in_every_output() {
     assert!(dox.contains("Upgrade Base"), "{dox}");
     assert!(dox.contains("2.0 (release)"), "{dox}");
 }
+
+fn serve_options(input: &Path) -> rtcdoc::build::BuildOptions {
+    let mut load = rtcdoc::build::LoadOptions {
+        history: 100,
+        history_reader: Some(rtcdoc::history::attach),
+        ..Default::default()
+    };
+    load.skip_dirs.push(input.join("site"));
+    rtcdoc::build::BuildOptions {
+        input: input.to_path_buf(),
+        output: input.join("site"),
+        formats: vec![rtcdoc::render::Format::Html],
+        strict: false,
+        load,
+        site: rtcdoc::render::SiteOptions::default(),
+    }
+}
+
+fn text(ws: &rtcdoc::incremental::Workspace, rel: &str) -> String {
+    String::from_utf8_lossy(&ws.files()[rel]).to_string()
+}
+
+#[test]
+fn serve_shows_the_history_and_updates_it_after_an_edit() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !system_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let arm = common::xml_profile("Arm", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "Arm/RTC.xml", &arm);
+    commit(&repo, 5, "Add Arm");
+    let edited = with(&arm, &[("rtc:name=\"cmd\"", "rtc:name=\"target\"")]);
+    write(&repo, "Arm/RTC.xml", &edited);
+    commit(&repo, 6, "Rename cmd");
+
+    // Opened: the pages carry the history as `build` writes it.
+    let opts = serve_options(&repo);
+    let mut ws = rtcdoc::incremental::Workspace::open(&opts).unwrap();
+    let page = text(&ws, "components/arm.html");
+    assert!(page.contains("<section id=\"change-history\">"), "{page}");
+    assert!(page.contains("Rename cmd"), "{page}");
+    assert!(text(&ws, "systems/navsystem.html").contains("Upgrade Base"));
+
+    // An uncommitted edit: an incremental update, the edited profile's history read again
+    // (a working-copy version first), the system's and the rest kept.
+    let path = repo.join("Arm/RTC.xml");
+    write(
+        &repo,
+        "Arm/RTC.xml",
+        &with(&edited, &[("rtc:name=\"target\"", "rtc:name=\"goal\"")]),
+    );
+    let r = ws.update(std::slice::from_ref(&path)).unwrap();
+    assert!(!r.full, "{r:?}");
+    let h = &ws.catalog().components[0].history;
+    assert_eq!(h.len(), 3, "{h:#?}");
+    assert!(h[0].commit.is_none() && h[0].changes.iter().any(|c| c.severity == "breaking"));
+    assert!(text(&ws, "components/arm.html").contains("working copy (not committed)"));
+    assert_eq!(ws.catalog().systems[0].history.len(), 4);
+    // The same site as a clean start.
+    let clean = rtcdoc::incremental::Workspace::open(&opts).unwrap();
+    assert_eq!(
+        ws.files().keys().collect::<Vec<_>>(),
+        clean.files().keys().collect::<Vec<_>>()
+    );
+    for (k, v) in clean.files() {
+        assert!(ws.files()[k] == *v, "{k} differs from a clean start");
+    }
+}
