@@ -26,6 +26,7 @@ pub mod side;
 pub mod systems;
 
 pub use codes::{Code, Level, CODES};
+pub use idl::compare_idl_files;
 
 use crate::catalog::{Catalog, Component};
 use crate::model::fields::{self, Field, Holds, Node as Kind};
@@ -418,6 +419,7 @@ pub fn diff_with_systems(
         }
     }
     idl.finish(&mut out);
+    idl::one_sided_types((&old.idl, old_name), (&new.idl, new_name), &mut out);
     systems::unreadable("OLD", &old_systems.unreadable, old_name, &mut out);
     systems::unreadable("NEW", &new_systems.unreadable, new_name, &mut out);
     breaks.connectors(
