@@ -92,6 +92,7 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
     let mut repos = Repos::new(roots, &opts.sources);
     attach_components(catalog, &mut repos, opts, &|_| true);
     attach_systems(catalog, &mut repos, opts.history, &opts.limits);
+    attach_idl(catalog, &mut repos, roots, opts.history, &opts.limits);
 }
 
 /// [`attach`] for the components whose file (input path) is in `only`: the others keep the
@@ -631,4 +632,108 @@ fn system_version(s: &crate::model::system::RtSystem) -> Option<String> {
         .as_ref()
         .and_then(|p| non_empty(&p.version))
         .map(str::to_string)
+}
+
+/// Fills in the history of every IDL file the catalogue read ([`Catalog::idl_history`]): the
+/// commits of the file, each version read on its own and compared with the one before type by
+/// type ([`crate::diff::compare_idl_files`]), and the file as it is on disk when that differs
+/// from the newest commit (a file of the input's work tree). A file outside every repository
+/// (`--idl-path` elsewhere) has none.
+fn attach_idl(
+    catalog: &mut Catalog,
+    repos: &mut Repos<'_>,
+    roots: &Roots,
+    limit: usize,
+    limits: &Limits,
+) {
+    if catalog.idl.files.is_empty() {
+        return;
+    }
+    let located: Vec<Option<Located>> = catalog
+        .idl
+        .files
+        .iter()
+        .map(|f| repos.locate(f.origin.as_ref(), &f.path))
+        .collect();
+    let parse = |bytes: &[u8], file: &str| parse_idl_blob(bytes, file, limits);
+    let (logs, parsed) = read_versions(&repos.list, &located, limit, &parse);
+    // The file as it is: only a file of the input directory can differ from its newest commit
+    // (a source's is read at its pinned commit).
+    let current: Vec<Option<Result<crate::idl::IdlSet, String>>> = catalog
+        .idl
+        .files
+        .par_iter()
+        .zip(&logs)
+        .map(|(f, commits)| {
+            (f.origin.is_none() && !commits.is_empty()).then(|| {
+                std::fs::read(roots.local.join(&f.path))
+                    .map_err(|e| e.to_string())
+                    .and_then(|b| parse(&b, &f.path))
+            })
+        })
+        .collect();
+    let histories: Vec<(String, Vec<Entry>)> = catalog
+        .idl
+        .files
+        .par_iter()
+        .zip(logs)
+        .zip(&current)
+        .map(|((f, commits), now)| {
+            let doc_of = |w: &Where| match w {
+                Where::Blob { repo, oid } => blob(&parsed, *repo, oid),
+                _ => Err("an IDL file has no backups".to_string()),
+            };
+            // Without a readable file on disk, the newest commit stands for it.
+            let now = match now {
+                Some(Ok(set)) => Some(set),
+                _ => commits.first().and_then(|v| doc_of(&v.at).ok()),
+            };
+            let h = match now {
+                None => Vec::new(),
+                Some(now) => entries(
+                    commits,
+                    (now, &f.path),
+                    &doc_of,
+                    &|(old, old_file), (new, new_file)| {
+                        crate::diff::compare_idl_files(old, new, &f.path)
+                            .iter()
+                            .map(|c| Change {
+                                file: Some(new_file.to_string()),
+                                old_file: Some(old_file.to_string()),
+                                ..to_entry_change(c)
+                            })
+                            .collect()
+                    },
+                    &|_| None,
+                ),
+            };
+            (f.path.clone(), h)
+        })
+        .collect();
+    catalog.idl_history = histories
+        .into_iter()
+        .filter(|(_, h)| !h.is_empty())
+        .collect();
+}
+
+/// Reads one version of an IDL file on its own (its includes are not at hand: a type of
+/// another file stays as written); an error of the reader makes the version unreadable.
+fn parse_idl_blob(bytes: &[u8], file: &str, limits: &Limits) -> Result<crate::idl::IdlSet, String> {
+    let opts = crate::idl::IdlOptions {
+        max_file_size: limits.max_file_size,
+        max_depth: limits.max_depth,
+        ..Default::default()
+    };
+    let set = crate::idl::read(&[crate::idl::SourceFile::new(file, bytes)], &opts);
+    match set
+        .diagnostics
+        .iter()
+        .find(|d| d.severity == crate::diagnostic::Severity::Error)
+    {
+        Some(d) => Err(match d.pos {
+            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
+            None => d.message.clone(),
+        }),
+        None => Ok(set),
+    }
 }

@@ -340,6 +340,7 @@ impl Workspace {
         let mut old = std::mem::replace(&mut self.catalog, Catalog::build(Vec::new(), Vec::new()));
         // Profiles changed, not IDL (a changed IDL file reloads everything: see `serve`).
         let idl = std::mem::take(&mut old.idl);
+        let idl_history = std::mem::take(&mut old.idl_history);
         // The histories are kept: only the edited profiles' are read again (below).
         let mut histories: HashMap<String, Vec<crate::catalog::history::Entry>> = HashMap::new();
         let mut system_histories = HashMap::new();
@@ -402,6 +403,7 @@ impl Workspace {
         for s in &mut catalog.systems {
             s.history = system_histories.remove(&s.source).unwrap_or_default();
         }
+        catalog.idl_history = idl_history;
         if self.opts.load.history_reader.is_some() {
             let edited: BTreeSet<String> = touched.iter().cloned().collect();
             crate::history::attach_some(&mut catalog, &self.roots, &self.opts.load, &edited);

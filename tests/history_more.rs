@@ -254,3 +254,184 @@ fn serve_shows_the_history_and_updates_it_after_an_edit() {
         assert!(ws.files()[k] == *v, "{k} differs from a clean start");
     }
 }
+
+/// The commits of `idl/Nav.idl` beside a component using its types, oldest first: the first
+/// version, a member added to a type a port carries, a new type, the new type removed again.
+fn idl_repository(d: &Path) -> bool {
+    if !init(d) {
+        return false;
+    }
+    let v1 = fixture("diff/DIFF131/old/idl/Nav.idl");
+    let v2 = fixture("diff/DIFF131/new/idl/Nav.idl");
+    let v3 = with(
+        &v2,
+        &[(
+            "  struct Time\n",
+            "  struct Battery\n  {\n    double voltage;\n  };\n\n  struct Time\n",
+        )],
+    );
+    write(d, "Nav/RTC.xml", &fixture("diff/DIFF131/old/Nav/RTC.xml"));
+    for (day, (subject, text)) in [
+        ("First IDL", v1),
+        ("Add speed", v2.clone()),
+        ("Add Battery", v3),
+        ("Drop Battery", v2),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        write(d, "idl/Nav.idl", &text);
+        commit(d, day as u32 + 1, subject);
+    }
+    true
+}
+
+/// The page of `name` among the data type pages of `site` (the page says which type it is in
+/// its heading).
+fn type_page(site: &Path, dir: &str, ext: &str, name: &str) -> String {
+    for e in std::fs::read_dir(site.join(dir)).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().and_then(|e| e.to_str()) == Some(ext) {
+            let text = std::fs::read_to_string(&p).unwrap();
+            if text.contains(&format!("<code>{name}</code></h1>"))
+                || text.contains(&format!("# {name}\n"))
+                || text.contains(&format!("# `{name}`\n"))
+                || text.lines().next().is_some_and(|l| l.ends_with(name))
+            {
+                return text;
+            }
+        }
+    }
+    panic!("no page of {name} in {dir}");
+}
+
+#[test]
+fn an_idl_file_has_its_history_on_the_pages_of_its_types() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !idl_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json,html,markdown,doxygen"]);
+    let json: Value = serde_json::from_str(&page(&site, "json/catalog.json")).unwrap();
+    let file = &json["idl"]["files"][0];
+    assert_eq!(file["path"], "idl/Nav.idl");
+    let h = file["history"].as_array().expect("a history");
+    let subjects: Vec<&str> = h.iter().map(|e| e["subject"].as_str().unwrap()).collect();
+    assert_eq!(
+        subjects,
+        ["Drop Battery", "Add Battery", "Add speed", "First IDL"],
+        "{h:#?}"
+    );
+    assert_eq!(codes(&h[0]), ["DIFF140"], "{h:#?}");
+    assert_eq!(h[0]["changes"][0]["path"], "idl/Nav::Battery");
+    assert_eq!(h[0]["changes"][0]["component"], "idl/Nav.idl");
+    assert_eq!(h[0]["changes"][0]["oldFile"], "idl/Nav.idl");
+    assert!(h[0]["changes"][0]["oldLine"].as_u64().unwrap() > 0);
+    assert_eq!(codes(&h[1]), ["DIFF334"], "{h:#?}");
+    // The member added, under the type holding it (no other type holds that one).
+    assert_eq!(codes(&h[2]), ["DIFF131"], "{h:#?}");
+    assert_eq!(
+        h[2]["changes"][0]["path"],
+        "idl/Nav::TimedOdometry/fields/speed"
+    );
+    assert_eq!(h[3]["first"], true);
+
+    // Read back with the history.
+    let bytes = std::fs::read(site.join("json/catalog.json")).unwrap();
+    let read = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").unwrap();
+    assert_eq!(
+        serde_json::to_value(&read.catalog.idl_history["idl/Nav.idl"]).unwrap(),
+        file["history"]
+    );
+
+    // The page of a type the file defines shows the file's history, in every output.
+    let html = type_page(&site, "html/types", "html", "Nav::TimedOdometry");
+    let section = &html[html
+        .find("<section id=\"idl-file\">")
+        .expect("an IDL file section")..];
+    let section = &section[..section.find("</section>").unwrap()];
+    assert!(section.contains("<code>idl/Nav.idl</code>"), "{section}");
+    let rows: Vec<&str> = section.split("<tr>").skip(2).collect();
+    assert_eq!(rows.len(), 4, "{section}");
+    assert!(rows[0].contains("Drop Battery") && rows[0].contains("1 breaking"));
+    assert!(rows[0].contains("<li>idl/Nav::Battery: "), "{}", rows[0]);
+    let iface = type_page(&site, "html/interfaces", "html", "Nav::MapService");
+    assert!(iface.contains("<section id=\"idl-file\">"), "{iface}");
+    let md = type_page(&site, "markdown/types", "md", "Nav::TimedOdometry");
+    assert!(md.contains("## IDL file"), "{md}");
+    assert!(md.contains("Drop Battery"), "{md}");
+    let dox = type_page(&site, "doxygen/types", "dox", "Nav::TimedOdometry");
+    assert!(dox.contains("Drop Battery"), "{dox}");
+}
+
+#[test]
+fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !idl_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    write(
+        &repo,
+        "systems/NavSystem.xml",
+        &fixture("diff/DIFF251/old/systems/NavSystem.xml"),
+    );
+    commit(&repo, 9, "Add the system");
+    let proj = dir.path().join("proj");
+    write(
+        &proj,
+        "rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\nname = \"lab\"\nsource-url = \"https://git.example.org/lab/blob/{commit}/{path}\"\n",
+    );
+    let cache = dir.path().join("cache");
+    let out = dir.path().join("site");
+    let o = rtcdoc(
+        &[
+            "build",
+            "-o",
+            out.to_str().unwrap(),
+            "-f",
+            "json,html,markdown,doxygen",
+            "--cache-dir",
+            cache.to_str().unwrap(),
+        ],
+        &proj,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: Value = serde_json::from_str(&page(&out, "json/catalog.json")).unwrap();
+    let pinned = json["sources"][0]["commit"].as_str().unwrap().to_string();
+    let system = &json["systems"]["lab/systems/NavSystem.xml"];
+    assert_eq!(system["history"][0]["subject"], "Add the system");
+    assert_eq!(
+        json["idl"]["files"][0]["history"][0]["subject"],
+        "Drop Battery"
+    );
+    let system_url = format!("https://git.example.org/lab/blob/{pinned}/systems/NavSystem.xml");
+    let idl_url = format!("https://git.example.org/lab/blob/{pinned}/idl/Nav.idl");
+    let html = page(&out, "html/systems/navsystem.html");
+    assert!(
+        html.contains(&format!(
+            "<dd><a href=\"{system_url}\"><code>lab/systems/NavSystem.xml</code></a></dd>"
+        )),
+        "{html}"
+    );
+    let md = page(&out, "markdown/systems/navsystem.md");
+    assert!(md.contains(&format!("]({system_url})")), "{md}");
+    let dox = page(&out, "doxygen/systems/navsystem.dox");
+    assert!(dox.contains(&system_url), "{dox}");
+    let html = type_page(&out, "html/types", "html", "Nav::TimedOdometry");
+    assert!(
+        html.contains(&format!(
+            "<a href=\"{idl_url}\"><code>lab/idl/Nav.idl</code></a>"
+        )),
+        "{html}"
+    );
+    let md = type_page(&out, "markdown/types", "md", "Nav::TimedOdometry");
+    assert!(md.contains(&format!("]({idl_url})")), "{md}");
+    let dox = type_page(&out, "doxygen/types", "dox", "Nav::TimedOdometry");
+    assert!(dox.contains(&idl_url), "{dox}");
+}

@@ -798,13 +798,13 @@ fn other_pages(
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(DOX),
-            type_page::<Dox>(cat, &data_type_view(cat, ti, lang), "", lang),
+            type_page::<Dox>(cat, &data_type_view(cat, ti, lang, site.1), "", lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
             cat.interface_page(ii).path_in(DOX),
-            type_page::<Dox>(cat, &interface_view(cat, ii, lang), "", lang),
+            type_page::<Dox>(cat, &interface_view(cat, ii, lang, site.1), "", lang),
         )
     }));
     out.push((

@@ -96,8 +96,8 @@ struct Document<'a> {
     vendors: Keyed<'a, Facet>,
     pages: Vec<PageEntry>,
     diagnostics: &'a [Diagnostic],
-    #[serde(skip_serializing_if = "IdlSet::is_empty")]
-    idl: &'a IdlSet,
+    #[serde(skip_serializing_if = "IdlOut::is_empty")]
+    idl: IdlOut<'a>,
     #[serde(skip_serializing_if = "Keyed::is_empty")]
     systems: Keyed<'a, System>,
     /// RTCBuilder backups whose `RTC.xml` is no component of the catalogue (gone, excluded or
@@ -108,6 +108,57 @@ struct Document<'a> {
     /// one carry an `origin`).
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     sources: &'a [crate::model::SourceInfo],
+}
+
+/// The IDL files as `catalog.json` has them: each with its history ([`Catalog::idl_history`]).
+#[derive(Serialize)]
+struct IdlOut<'a> {
+    files: Vec<IdlFileOut<'a>>,
+}
+
+#[derive(Serialize)]
+struct IdlFileOut<'a> {
+    #[serde(flatten)]
+    file: &'a crate::idl::IdlFile,
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    history: &'a [crate::catalog::history::Entry],
+}
+
+impl IdlOut<'_> {
+    fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+}
+
+fn idl_out(catalog: &Catalog) -> IdlOut<'_> {
+    IdlOut {
+        files: catalog
+            .idl
+            .files
+            .iter()
+            .map(|file| IdlFileOut {
+                file,
+                history: catalog
+                    .idl_history
+                    .get(&file.path)
+                    .map_or(&[], Vec::as_slice),
+            })
+            .collect(),
+    }
+}
+
+/// The histories of the IDL files read back (the files themselves are [`IdlSet`]'s).
+#[derive(Deserialize, Default)]
+struct IdlHistoryRead {
+    #[serde(default)]
+    files: Vec<IdlFileHistoryRead>,
+}
+
+#[derive(Deserialize)]
+struct IdlFileHistoryRead {
+    path: String,
+    #[serde(default)]
+    history: Vec<crate::catalog::history::Entry>,
 }
 
 fn document<'a>(
@@ -127,7 +178,7 @@ fn document<'a>(
         vendors: Keyed(&catalog.vendors, facet_name),
         pages: page_entries(catalog),
         diagnostics: &catalog.diagnostics,
-        idl: &catalog.idl,
+        idl: idl_out(catalog),
         systems: Keyed(systems, system_key),
         backups: &catalog.detached_backups,
         sources: &catalog.sources,
@@ -280,7 +331,7 @@ struct DocumentRead {
     pages: Vec<PageEntry>,
     diagnostics: Vec<Diagnostic>,
     #[serde(default)]
-    idl: IdlSet,
+    idl: Option<serde_json::Value>,
     #[serde(default, deserialize_with = "keyed")]
     systems: Vec<(String, SystemRead)>,
     #[serde(default)]
@@ -361,6 +412,14 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
             return Err(mismatch("facet", k, &f.name));
         }
     }
+    let idl_error = |e: serde_json::Error| anyhow::anyhow!("{name}: `idl`: {}", json_error(&e));
+    let (idl, idl_history) = match &doc.idl {
+        Some(v) => (
+            IdlSet::deserialize(v).map_err(idl_error)?,
+            IdlHistoryRead::deserialize(v).map_err(idl_error)?,
+        ),
+        None => Default::default(),
+    };
     let components = doc
         .components
         .into_iter()
@@ -376,7 +435,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         doc.categories.into_iter().map(|(_, f)| f).collect(),
         doc.vendors.into_iter().map(|(_, f)| f).collect(),
         doc.diagnostics,
-        doc.idl,
+        idl,
     )
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     let mut histories: std::collections::HashMap<String, Vec<crate::catalog::history::Entry>> =
@@ -397,6 +456,12 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
     for s in &mut catalog.systems {
         s.history = histories.remove(&s.source).unwrap_or_default();
     }
+    catalog.idl_history = idl_history
+        .files
+        .into_iter()
+        .filter(|f| !f.history.is_empty())
+        .map(|f| (f.path, f.history))
+        .collect();
     catalog.detached_backups = doc.backups;
     catalog.set_origins(doc.sources);
     if page_entries(&catalog) != doc.pages {

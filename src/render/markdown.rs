@@ -851,13 +851,13 @@ fn other_pages(
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(MD),
-            type_page::<Md>(cat, &data_type_view(cat, ti, lang), title, lang),
+            type_page::<Md>(cat, &data_type_view(cat, ti, lang, site.1), title, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
             cat.interface_page(ii).path_in(MD),
-            type_page::<Md>(cat, &interface_view(cat, ii, lang), title, lang),
+            type_page::<Md>(cat, &interface_view(cat, ii, lang, site.1), title, lang),
         )
     }));
     if !cat.systems.is_empty() {

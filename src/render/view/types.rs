@@ -46,6 +46,8 @@ pub struct TypeView<'a> {
     pub carried_by: Vec<Linked<'a>>,
     /// The data types whose fields (or typedef) hold this one, linked to their pages.
     pub contained_in: Vec<Linked<'a>>,
+    /// The IDL file defining it: its Source link and latest versions ([`super::idl_file`]).
+    pub idl_file: Option<super::idl_file::IdlFileView>,
 }
 
 fn port_rows<'a>(cat: &'a Catalog, refs: &[PortRef]) -> Vec<UseRow<'a>> {
@@ -104,8 +106,14 @@ fn groups<'a>(list: [(&'static str, &'static str, Vec<UseRow<'a>>); 3]) -> Vec<U
         .collect()
 }
 
-/// The view of data type `ti` ([`Catalog::data_types`]).
-pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
+/// The view of data type `ti` ([`Catalog::data_types`]); `source_url` is the site's
+/// `source-url` template.
+pub fn data_type_view<'a>(
+    cat: &'a Catalog,
+    ti: usize,
+    lang: Lang,
+    source_url: Option<&str>,
+) -> TypeView<'a> {
     let t = &cat.data_types[ti];
     TypeView {
         kind: TypeKind::Data,
@@ -150,11 +158,18 @@ pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
                 )
             })
             .collect(),
+        idl_file: super::idl_file::idl_file_view(cat, &t.name, lang, source_url),
     }
 }
 
-/// The view of interface `ii` ([`Catalog::interfaces`]).
-pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
+/// The view of interface `ii` ([`Catalog::interfaces`]); `source_url` is the site's
+/// `source-url` template.
+pub fn interface_view<'a>(
+    cat: &'a Catalog,
+    ii: usize,
+    lang: Lang,
+    source_url: Option<&str>,
+) -> TypeView<'a> {
     let t = &cat.interfaces[ii];
     TypeView {
         kind: TypeKind::Interface,
@@ -183,5 +198,6 @@ pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
         ]),
         carried_by: Vec::new(),
         contained_in: Vec::new(),
+        idl_file: super::idl_file::idl_file_view(cat, &t.name, lang, source_url),
     }
 }
