@@ -41,6 +41,8 @@ struct Version {
     entry: Entry,
     /// Sorts the versions of git and of the backups together: `yyyy-mm-dd hh:mm:ss`, local.
     key: String,
+    /// The commit added the file at this path (git found no older path for it).
+    added: bool,
 }
 
 /// A repository histories are read from.
@@ -128,9 +130,27 @@ fn attach_components(
                 .flatten()
         })
         .collect();
-    let (logs, parsed) = read_versions(&repos.list, &located, limit, &|bytes, file| {
-        parse_blob(bytes, file, limits)
-    });
+    let parse = |bytes: &[u8], file: &str| parse_blob(bytes, file, limits);
+    let mut logs = read_logs(&repos.list, &located, limit);
+    // A profile git's `--follow` lost at an older path: found again by its component id.
+    let list = &repos.list;
+    logs.par_iter_mut()
+        .zip(&located)
+        .zip(&catalog.components)
+        .for_each(|((versions, l), c)| {
+            if let Some((repo, rev, _)) = l {
+                follow_by_id(
+                    &list[*repo],
+                    *repo,
+                    rev,
+                    versions,
+                    limit,
+                    &c.profile,
+                    &parse,
+                );
+            }
+        });
+    let parsed = read_parsed(list, &logs, &parse);
     let idl = &catalog.idl;
     let histories: Vec<Option<Vec<Entry>>> = catalog
         .components
@@ -202,13 +222,29 @@ fn read_versions<D: Send>(
     limit: usize,
     parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
 ) -> (Vec<Vec<Version>>, Parsed<D>) {
-    let logs: Vec<Vec<Version>> = located
+    let logs = read_logs(repos, located, limit);
+    let parsed = read_parsed(repos, &logs, parse);
+    (logs, parsed)
+}
+
+/// The commits of each located file, newest first, up to `limit`.
+fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<Vec<Version>> {
+    located
         .par_iter()
         .map(|l| match l {
             Some((repo, rev, path)) => log(&repos[*repo], *repo, rev, path, limit),
             None => Vec::new(),
         })
-        .collect();
+        .collect()
+}
+
+/// Every distinct blob of `logs` read (one `git cat-file --batch` per repository) and parsed
+/// once by `parse`.
+fn read_parsed<D: Send>(
+    repos: &[Repo],
+    logs: &[Vec<Version>],
+    parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
+) -> Parsed<D> {
     let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
     for v in logs.iter().flatten() {
         if let Where::Blob { repo, oid } = &v.at {
@@ -217,12 +253,149 @@ fn read_versions<D: Send>(
                 .or_insert_with(|| v.entry.file.clone());
         }
     }
-    let parsed = repos
+    repos
         .iter()
         .zip(wanted)
         .map(|(repo, oids)| read_blobs(repo, &oids, parse))
-        .collect();
-    (logs, parsed)
+        .collect()
+}
+
+/// Most deleted profile files looked at for a lost history at one commit.
+const MAX_CANDIDATES: usize = 200;
+
+/// Continues `versions` (newest first, up to `limit`) where git's `--follow` stops at a commit
+/// that added the file: when the commit before it held, at a path no longer at `rev`, exactly
+/// one profile of the same component (vendor, category and name of its id, and language when
+/// both say), the history goes on with that file's commits up to there, and so on.
+fn follow_by_id(
+    repo: &Repo,
+    at: usize,
+    rev: &str,
+    versions: &mut Vec<Version>,
+    limit: usize,
+    profile: &Profile,
+    parse: &(dyn Fn(&[u8], &str) -> Result<Profile, String> + Sync),
+) {
+    let mut now: Option<std::collections::HashSet<String>> = None;
+    let mut seen: std::collections::HashSet<String> = std::collections::HashSet::new();
+    while versions.len() < limit {
+        let Some(oldest) = versions.last().filter(|v| v.added) else {
+            return;
+        };
+        let Some(commit) = oldest.entry.commit.clone() else {
+            return;
+        };
+        seen.insert(oldest.entry.file.clone());
+        let parent = format!("{commit}^");
+        let Some(before) = ls_tree(repo, &parent) else {
+            return; // the first commit
+        };
+        let now = match &mut now {
+            Some(n) => n,
+            None => now.insert(
+                ls_tree(repo, rev)
+                    .unwrap_or_default()
+                    .into_iter()
+                    .map(|(_, p)| p)
+                    .collect(),
+            ),
+        };
+        let candidates: Vec<(String, String)> = before
+            .into_iter()
+            .filter(|(_, p)| {
+                !now.contains(p)
+                    && !seen.contains(p)
+                    && p.rsplit_once('.').is_some_and(|(_, e)| {
+                        crate::walk::is_document_extension(&e.to_ascii_lowercase())
+                    })
+            })
+            .take(MAX_CANDIDATES)
+            .collect();
+        if candidates.is_empty() {
+            return;
+        }
+        let oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
+        let Ok(blobs) = cat_file(repo, &oids) else {
+            return;
+        };
+        let same: Vec<&String> = candidates
+            .iter()
+            .zip(&blobs)
+            .filter(|((_, path), (_, bytes))| {
+                bytes
+                    .as_ref()
+                    .ok()
+                    .and_then(|b| parse(b, path).ok())
+                    .is_some_and(|p| crate::diff::same_component(&p, profile))
+            })
+            .map(|((_, path), _)| path)
+            .collect();
+        let [old_path] = same[..] else {
+            return;
+        };
+        let more = log(
+            repo,
+            at,
+            &parent,
+            &pathspec(repo, old_path),
+            limit - versions.len(),
+        );
+        if more.is_empty() {
+            return;
+        }
+        versions.extend(more);
+    }
+}
+
+/// The files of `rev` (object id, path from the top of the repository), or `None` when git
+/// cannot list them (no such commit).
+fn ls_tree(repo: &Repo, rev: &str) -> Option<Vec<(String, String)>> {
+    if rev.starts_with('-') {
+        return None;
+    }
+    let mut c = repo.git();
+    c.args([
+        "ls-tree",
+        "-r",
+        "-z",
+        "--full-tree",
+        "--end-of-options",
+        rev,
+    ]);
+    c.stderr(Stdio::null());
+    let out = c.output().ok().filter(|o| o.status.success())?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    Some(
+        text.split('\0')
+            .filter_map(|line| {
+                let (meta, path) = line.split_once('\t')?;
+                let mut f = meta.split(' ');
+                let (_, kind, oid) = (f.next()?, f.next()?, f.next()?);
+                (kind == "blob").then(|| (oid.to_string(), path.to_string()))
+            })
+            .collect(),
+    )
+}
+
+/// A path from the top of the repository as a pathspec of `repo`'s commands (a work tree's run
+/// in the input directory, which may be a folder of it).
+fn pathspec(repo: &Repo, top: &str) -> String {
+    let Repo::WorkTree(_) = repo else {
+        return top.to_string();
+    };
+    let mut c = repo.git();
+    c.args(["rev-parse", "--show-prefix"]);
+    c.stderr(Stdio::null());
+    let prefix = c
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .unwrap_or_default();
+    match top.strip_prefix(&prefix) {
+        Some(rest) => rest.to_string(),
+        None => format!("{}{top}", "../".repeat(prefix.matches('/').count())),
+    }
 }
 
 /// The commits that changed `path` up to `rev`, following renames.
@@ -283,6 +456,7 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
             first
         };
         out.push(Version {
+            added: status.starts_with('A'),
             at: Where::Blob {
                 repo,
                 oid: new.to_string(),
@@ -424,6 +598,7 @@ fn history_of(
         .iter()
         .enumerate()
         .map(|(i, b)| Version {
+            added: false,
             at: Where::Backup(i),
             key: b.saved.clone().unwrap_or_default(),
             entry: Entry {
@@ -507,6 +682,7 @@ fn entries<'d, D>(
         versions.insert(
             0,
             Version {
+                added: false,
                 at: Where::Current,
                 key: String::new(),
                 entry: Entry {

@@ -435,3 +435,87 @@ fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
     let dox = type_page(&out, "doxygen/types", "dox", "Nav::TimedOdometry");
     assert!(dox.contains(&idl_url), "{dox}");
 }
+
+#[test]
+fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "Base/RTC.xml", &base);
+    write(
+        &repo,
+        "Other/RTC.xml",
+        &common::xml_profile("Other", &[("DataInPort", "in", "RTC::TimedLong")]),
+    );
+    commit(&repo, 1, "First");
+    let edited = with(&base, &[("rtc:name=\"cmd\"", "rtc:name=\"command\"")]);
+    write(&repo, "Base/RTC.xml", &edited);
+    commit(&repo, 2, "Edit");
+    // The folder renamed and the file rewritten in one commit: too different for git's rename
+    // detection. Another profile (another component) goes in the same commit.
+    let ports: Vec<(String, String)> = (0..20)
+        .map(|i| (format!("out{i}"), "RTC::TimedDouble".to_string()))
+        .collect();
+    let mut all: Vec<(&str, &str, &str)> = vec![("DataInPort", "command", "RTC::TimedLong")];
+    all.extend(
+        ports
+            .iter()
+            .map(|(n, t)| ("DataOutPort", n.as_str(), t.as_str())),
+    );
+    let rewritten = common::xml_profile("Base", &all);
+    std::fs::remove_dir_all(repo.join("Base")).unwrap();
+    std::fs::remove_dir_all(repo.join("Other")).unwrap();
+    write(&repo, "mobile/base/RTC.xml", &rewritten);
+    commit(&repo, 3, "Reorganise");
+    // git itself loses it.
+    let follow = std::process::Command::new("git")
+        .args([
+            "log",
+            "--follow",
+            "--format=%s",
+            "--",
+            "mobile/base/RTC.xml",
+        ])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&follow.stdout).trim(), "Reorganise");
+
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history");
+    let found: Vec<(&str, &str)> = h
+        .iter()
+        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            ("Reorganise", "mobile/base/RTC.xml"),
+            ("Edit", "Base/RTC.xml"),
+            ("First", "Base/RTC.xml")
+        ],
+        "{h:#?}"
+    );
+    // Compared across the move: the ports added, with both files named.
+    assert_eq!(codes(&h[0]).len(), 20, "{h:#?}");
+    assert!(codes(&h[0]).iter().all(|c| *c == "DIFF301"));
+    assert_eq!(h[0]["changes"][0]["oldFile"], "Base/RTC.xml");
+    assert_eq!(h[2]["first"], true);
+    // `--history 2` stops there.
+    let site = dir.path().join("site2");
+    build(&repo, &site, &["-f", "json", "--history", "2"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .unwrap();
+    assert_eq!(h.len(), 2);
+    assert_eq!(h[1]["subject"], "Edit");
+}
