@@ -210,6 +210,12 @@ impl<'a> Repos<'a> {
     }
 }
 
+/// Parses a version's bytes (with a path the blob had) into its document, or says why not.
+type ParseFn<'a, D> = &'a (dyn Fn(&[u8], &str) -> Result<D, String> + Sync);
+
+/// Compares two versions (each with its file) into the changes of the newer.
+type CompareFn<'a, D> = &'a dyn Fn((&D, &str), (&D, &str)) -> Vec<Change>;
+
 /// A version's document by blob, per repository, parsed once.
 type Parsed<D> = Vec<HashMap<String, Result<D, String>>>;
 
@@ -220,7 +226,7 @@ fn read_versions<D: Send>(
     repos: &[Repo],
     located: &[Option<Located>],
     limit: usize,
-    parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
+    parse: ParseFn<'_, D>,
 ) -> (Vec<Vec<Version>>, Parsed<D>) {
     let logs = read_logs(repos, located, limit);
     let parsed = read_parsed(repos, &logs, parse);
@@ -240,11 +246,7 @@ fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<V
 
 /// Every distinct blob of `logs` read (one `git cat-file --batch` per repository) and parsed
 /// once by `parse`.
-fn read_parsed<D: Send>(
-    repos: &[Repo],
-    logs: &[Vec<Version>],
-    parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
-) -> Parsed<D> {
+fn read_parsed<D: Send>(repos: &[Repo], logs: &[Vec<Version>], parse: ParseFn<'_, D>) -> Parsed<D> {
     let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
     for v in logs.iter().flatten() {
         if let Where::Blob { repo, oid } = &v.at {
@@ -274,7 +276,7 @@ fn follow_by_id(
     versions: &mut Vec<Version>,
     limit: usize,
     profile: &Profile,
-    parse: &(dyn Fn(&[u8], &str) -> Result<Profile, String> + Sync),
+    parse: ParseFn<'_, Profile>,
 ) {
     let mut now: Option<std::collections::HashSet<String>> = None;
     let mut seen: std::collections::HashSet<String> = std::collections::HashSet::new();
@@ -480,7 +482,7 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
 fn read_blobs<D: Send>(
     repo: &Repo,
     oids: &BTreeMap<String, String>,
-    parse: &(dyn Fn(&[u8], &str) -> Result<D, String> + Sync),
+    parse: ParseFn<'_, D>,
 ) -> HashMap<String, Result<D, String>> {
     let ids: Vec<String> = oids.keys().cloned().collect();
     let mut raw: Blobs = Vec::new();
@@ -664,7 +666,7 @@ fn entries<'d, D>(
     mut versions: Vec<Version>,
     current: (&'d D, &str),
     doc_of: &dyn Fn(&Where) -> Result<&'d D, String>,
-    compare: &dyn Fn((&D, &str), (&D, &str)) -> Vec<Change>,
+    compare: CompareFn<'_, D>,
     version_of: &dyn Fn(&D) -> Option<String>,
 ) -> Vec<Entry> {
     if versions.is_empty() {

@@ -239,9 +239,7 @@ fn ident_of(p: &Profile, source: &str) -> Ident {
 pub fn same_component(a: &Profile, b: &Profile) -> bool {
     let (x, y) = (ident_of(a, ""), ident_of(b, ""));
     // Not the fallbacks of `ident_of`: the id as written alone, or the file name.
-    let named = |i: &Ident| {
-        !(i.key.1.is_empty() && i.key.2.is_empty()) && !(i.key.0.is_empty() && i.key.1.is_empty())
-    };
+    let named = |i: &Ident| !(i.key.1.is_empty() && (i.key.0.is_empty() || i.key.2.is_empty()));
     named(&x)
         && x.key == y.key
         && (x.language.is_empty() || y.language.is_empty() || x.language == y.language)
