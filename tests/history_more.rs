@@ -519,3 +519,46 @@ fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
     assert_eq!(h.len(), 2);
     assert_eq!(h[1]["subject"], "Edit");
 }
+
+#[test]
+fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "old/Base/RTC.xml", &base);
+    commit(&repo, 1, "First");
+    // A copy at a new path (the original stays), edited later, the original deleted later.
+    write(&repo, "new/Base/RTC.xml", &base);
+    commit(&repo, 2, "Copy");
+    let edited = with(&base, &[("rtc:name=\"cmd\"", "rtc:name=\"command\"")]);
+    write(&repo, "new/Base/RTC.xml", &edited);
+    commit(&repo, 3, "Edit the copy");
+    std::fs::remove_dir_all(repo.join("old")).unwrap();
+    commit(&repo, 4, "Drop the original");
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history");
+    let found: Vec<(&str, &str)> = h
+        .iter()
+        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            ("Edit the copy", "new/Base/RTC.xml"),
+            ("Copy", "new/Base/RTC.xml"),
+            ("First", "old/Base/RTC.xml")
+        ],
+        "{h:#?}"
+    );
+    // The copy changed nothing; the original is the first version.
+    assert!(h[1]["changes"].as_array().unwrap().is_empty(), "{h:#?}");
+    assert_eq!(h[2]["first"], true);
+}
