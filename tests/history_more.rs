@@ -253,6 +253,20 @@ fn serve_shows_the_history_and_updates_it_after_an_edit() {
     for (k, v) in clean.files() {
         assert!(ws.files()[k] == *v, "{k} differs from a clean start");
     }
+    // Only the edited profile's history is read again: a commit to the system file (which
+    // this update is not told of) does not show until the system is reloaded.
+    let system = repo.join("systems/NavSystem.xml");
+    let text = std::fs::read_to_string(&system).unwrap();
+    std::fs::write(&system, format!("{text}\n")).unwrap();
+    write(&repo, "Arm/RTC.xml", &edited); // back as committed
+    commit(&repo, 7, "Touch the system");
+    let r = ws.update(std::slice::from_ref(&path)).unwrap();
+    assert!(!r.full, "{r:?}");
+    assert_eq!(ws.catalog().components[0].history.len(), 2);
+    assert_eq!(ws.catalog().systems[0].history.len(), 4);
+    let r = ws.update(std::slice::from_ref(&system)).unwrap();
+    assert!(r.full, "{r:?}");
+    assert_eq!(ws.catalog().systems[0].history.len(), 5);
 }
 
 /// The commits of `idl/Nav.idl` beside a component using its types, oldest first: the first
