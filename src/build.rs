@@ -340,7 +340,7 @@ pub fn read_system(
 }
 
 /// XML when the file starts like XML (after a byte order mark and white space), else YAML.
-fn system_format(path: &Path, bytes: &[u8]) -> parse::SourceFormat {
+pub(crate) fn system_format(path: &Path, bytes: &[u8]) -> parse::SourceFormat {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())

@@ -597,6 +597,10 @@ pub struct Catalog {
     /// and service interfaces. Left out of `catalog.json` when there are none.
     #[serde(skip_serializing_if = "crate::idl::IdlSet::is_empty")]
     pub idl: crate::idl::IdlSet,
+    /// The history of each IDL file of `idl`, by its path ([`history`]; `catalog.json` has it
+    /// as the file's `history`); files without one are absent.
+    #[serde(skip)]
+    pub idl_history: std::collections::BTreeMap<String, Vec<history::Entry>>,
     /// Every page of the catalogue, computed once ([`Catalog::pages`]).
     #[serde(skip)]
     pages: Vec<Page>,
@@ -1194,6 +1198,7 @@ impl Catalog {
             vendors,
             diagnostics,
             idl: Default::default(),
+            idl_history: Default::default(),
             pages: Vec::new(),
             page_starts: PageStarts::default(),
             by_id,
@@ -1238,6 +1243,7 @@ impl Catalog {
             vendors,
             diagnostics,
             idl,
+            idl_history: Default::default(),
             pages: Vec::new(),
             page_starts: PageStarts::default(),
             by_id,

@@ -41,6 +41,8 @@ struct Version {
     entry: Entry,
     /// Sorts the versions of git and of the backups together: `yyyy-mm-dd hh:mm:ss`, local.
     key: String,
+    /// The commit added the file at this path (git found no older path for it).
+    added: bool,
 }
 
 /// A repository histories are read from.
@@ -82,57 +84,169 @@ fn is_work_tree(dir: &Path) -> bool {
 
 /// Fills in `history` of every component: up to `limit` commits of its file (0: none, and no
 /// history at all), its backups, and the file as it is when that differs from the newest
-/// commit. A repository that cannot be read leaves the components without git history; a
-/// version that cannot be read stays in the history with the reason.
+/// commit; then the history of every RT System profile the same way ([`attach_systems`]). A
+/// repository that cannot be read leaves the documents without git history; a version that
+/// cannot be read stays in the history with the reason.
 pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOptions) {
-    let (sources, limit, limits) = (&opts.sources, opts.history, &opts.limits);
-    if limit == 0 {
+    if opts.history == 0 {
         return;
     }
-    let local = is_work_tree(&roots.local).then(|| Repo::WorkTree(roots.local.clone()));
-    let mut repos: Vec<Repo> = Vec::new();
-    // (repository, revision, pathspec) of each component, if its file is in one.
-    let mut located: Vec<Option<(usize, String, String)>> = Vec::new();
-    for c in &catalog.components {
-        let (repo, rev, path) = match &c.origin {
-            Some(o) => match sources.iter().find(|p| p.source.name == o.source) {
-                Some(p) => (
+    let mut repos = Repos::new(roots, &opts.sources);
+    attach_components(catalog, &mut repos, opts, &|_| true);
+    attach_systems(catalog, &mut repos, opts.history, &opts.limits);
+    attach_idl(catalog, &mut repos, roots, opts.history, &opts.limits);
+}
+
+/// [`attach`] for the components whose file (input path) is in `only`: the others keep the
+/// history they have. `serve` calls it after an edit of profiles: one `git log` and one
+/// `git cat-file` per edited file, not the whole catalogue's again.
+pub fn attach_some(
+    catalog: &mut Catalog,
+    roots: &Roots,
+    opts: &crate::build::LoadOptions,
+    only: &std::collections::BTreeSet<String>,
+) {
+    if opts.history == 0 {
+        return;
+    }
+    let mut repos = Repos::new(roots, &opts.sources);
+    attach_components(catalog, &mut repos, opts, &|c| only.contains(&c.source));
+}
+
+/// Fills in `history` of the components `wanted` says.
+fn attach_components(
+    catalog: &mut Catalog,
+    repos: &mut Repos<'_>,
+    opts: &crate::build::LoadOptions,
+    wanted: &(dyn Fn(&Component) -> bool + Sync),
+) {
+    let (limit, limits) = (opts.history, &opts.limits);
+    let located: Vec<Option<Located>> = catalog
+        .components
+        .iter()
+        .map(|c| {
+            wanted(c)
+                .then(|| repos.locate(c.origin.as_ref(), &c.source))
+                .flatten()
+        })
+        .collect();
+    let parse = |bytes: &[u8], file: &str| parse_blob(bytes, file, limits);
+    let mut logs = read_logs(&repos.list, &located, limit);
+    // A profile git's `--follow` lost at an older path: found again by its component id.
+    let list = &repos.list;
+    logs.par_iter_mut()
+        .zip(&located)
+        .zip(&catalog.components)
+        .for_each(|((versions, l), c)| {
+            if let Some((repo, rev, _)) = l {
+                follow_by_id(
+                    &list[*repo],
+                    *repo,
+                    rev,
+                    versions,
+                    limit,
+                    &c.profile,
+                    &parse,
+                );
+            }
+        });
+    let parsed = read_parsed(list, &logs, &parse);
+    let idl = &catalog.idl;
+    let histories: Vec<Option<Vec<Entry>>> = catalog
+        .components
+        .par_iter()
+        .zip(logs)
+        .map(|(c, commits)| wanted(c).then(|| history_of(c, commits, &parsed, idl)))
+        .collect();
+    for (c, h) in catalog.components.iter_mut().zip(histories) {
+        if let Some(h) = h {
+            c.history = h;
+        }
+    }
+}
+
+/// The repositories histories are read from, each once.
+struct Repos<'a> {
+    list: Vec<Repo>,
+    /// The work tree around the input directory, if it is in one.
+    local: Option<Repo>,
+    sources: &'a [crate::sources::Pinned],
+}
+
+/// Where a document's file is: (repository index, revision, path in the repository).
+type Located = (usize, String, String);
+
+impl<'a> Repos<'a> {
+    fn new(roots: &Roots, sources: &'a [crate::sources::Pinned]) -> Self {
+        Repos {
+            list: Vec::new(),
+            local: is_work_tree(&roots.local).then(|| Repo::WorkTree(roots.local.clone())),
+            sources,
+        }
+    }
+
+    /// The repository, revision and path of a document read from `origin` (a `[[source]]`) or
+    /// from `source` of the input directory; `None` when no repository holds it.
+    fn locate(&mut self, origin: Option<&crate::model::Origin>, source: &str) -> Option<Located> {
+        let (repo, rev, path) = match origin {
+            Some(o) => {
+                let p = self.sources.iter().find(|p| p.source.name == o.source)?;
+                (
                     Repo::Mirror(p.mirror.clone()),
                     o.commit.clone(),
                     o.path.clone(),
-                ),
-                None => {
-                    located.push(None);
-                    continue;
-                }
-            },
-            None => match &local {
-                Some(r) => (r.clone(), "HEAD".to_string(), c.source.clone()),
-                None => {
-                    located.push(None);
-                    continue;
-                }
-            },
+                )
+            }
+            None => (self.local.clone()?, "HEAD".to_string(), source.to_string()),
         };
-        let at = match repos.iter().position(|r| *r == repo) {
+        let at = match self.list.iter().position(|r| *r == repo) {
             Some(i) => i,
             None => {
-                repos.push(repo);
-                repos.len() - 1
+                self.list.push(repo);
+                self.list.len() - 1
             }
         };
-        located.push(Some((at, rev, path)));
+        Some((at, rev, path))
     }
-    // The commits of each file, newest first.
-    let logs: Vec<Vec<Version>> = located
+}
+
+/// Parses a version's bytes (with a path the blob had) into its document, or says why not.
+type ParseFn<'a, D> = &'a (dyn Fn(&[u8], &str) -> Result<D, String> + Sync);
+
+/// Compares two versions (each with its file) into the changes of the newer.
+type CompareFn<'a, D> = &'a dyn Fn((&D, &str), (&D, &str)) -> Vec<Change>;
+
+/// A version's document by blob, per repository, parsed once.
+type Parsed<D> = Vec<HashMap<String, Result<D, String>>>;
+
+/// The commits of each located file (newest first, up to `limit`) and every distinct blob of
+/// them read (one `git cat-file --batch` per repository) and parsed once by `parse` (bytes, a
+/// path the blob had: its extension names the format when the content does not).
+fn read_versions<D: Send>(
+    repos: &[Repo],
+    located: &[Option<Located>],
+    limit: usize,
+    parse: ParseFn<'_, D>,
+) -> (Vec<Vec<Version>>, Parsed<D>) {
+    let logs = read_logs(repos, located, limit);
+    let parsed = read_parsed(repos, &logs, parse);
+    (logs, parsed)
+}
+
+/// The commits of each located file, newest first, up to `limit`.
+fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<Vec<Version>> {
+    located
         .par_iter()
         .map(|l| match l {
             Some((repo, rev, path)) => log(&repos[*repo], *repo, rev, path, limit),
             None => Vec::new(),
         })
-        .collect();
-    // Each distinct blob read and parsed once.
-    // (object id, a path it had: its extension names the format when the content does not).
+        .collect()
+}
+
+/// Every distinct blob of `logs` read (one `git cat-file --batch` per repository) and parsed
+/// once by `parse`.
+fn read_parsed<D: Send>(repos: &[Repo], logs: &[Vec<Version>], parse: ParseFn<'_, D>) -> Parsed<D> {
     let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
     for v in logs.iter().flatten() {
         if let Where::Blob { repo, oid } = &v.at {
@@ -141,20 +255,148 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
                 .or_insert_with(|| v.entry.file.clone());
         }
     }
-    let parsed: Vec<HashMap<String, Result<Profile, String>>> = repos
+    repos
         .iter()
         .zip(wanted)
-        .map(|(repo, oids)| read_blobs(repo, &oids, limits))
-        .collect();
-    let idl = &catalog.idl;
-    let histories: Vec<Vec<Entry>> = catalog
-        .components
-        .par_iter()
-        .zip(logs)
-        .map(|(c, commits)| history_of(c, commits, &parsed, idl))
-        .collect();
-    for (c, h) in catalog.components.iter_mut().zip(histories) {
-        c.history = h;
+        .map(|(repo, oids)| read_blobs(repo, &oids, parse))
+        .collect()
+}
+
+/// Most deleted profile files looked at for a lost history at one commit.
+const MAX_CANDIDATES: usize = 200;
+
+/// Continues `versions` (newest first, up to `limit`) where git's `--follow` stops at a commit
+/// that added the file: when the commit before it held, at a path no longer at `rev`, exactly
+/// one profile of the same component (vendor, category and name of its id, and language when
+/// both say), the history goes on with that file's commits up to there, and so on.
+fn follow_by_id(
+    repo: &Repo,
+    at: usize,
+    rev: &str,
+    versions: &mut Vec<Version>,
+    limit: usize,
+    profile: &Profile,
+    parse: ParseFn<'_, Profile>,
+) {
+    let mut now: Option<std::collections::HashSet<String>> = None;
+    let mut seen: std::collections::HashSet<String> = std::collections::HashSet::new();
+    while versions.len() < limit {
+        let Some(oldest) = versions.last().filter(|v| v.added) else {
+            return;
+        };
+        let Some(commit) = oldest.entry.commit.clone() else {
+            return;
+        };
+        seen.insert(oldest.entry.file.clone());
+        let parent = format!("{commit}^");
+        let Some(before) = ls_tree(repo, &parent) else {
+            return; // the first commit
+        };
+        let now = match &mut now {
+            Some(n) => n,
+            None => now.insert(
+                ls_tree(repo, rev)
+                    .unwrap_or_default()
+                    .into_iter()
+                    .map(|(_, p)| p)
+                    .collect(),
+            ),
+        };
+        let candidates: Vec<(String, String)> = before
+            .into_iter()
+            .filter(|(_, p)| {
+                !now.contains(p)
+                    && !seen.contains(p)
+                    && p.rsplit_once('.').is_some_and(|(_, e)| {
+                        crate::walk::is_document_extension(&e.to_ascii_lowercase())
+                    })
+            })
+            .take(MAX_CANDIDATES)
+            .collect();
+        if candidates.is_empty() {
+            return;
+        }
+        let oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
+        let Ok(blobs) = cat_file(repo, &oids) else {
+            return;
+        };
+        let same: Vec<&String> = candidates
+            .iter()
+            .zip(&blobs)
+            .filter(|((_, path), (_, bytes))| {
+                bytes
+                    .as_ref()
+                    .ok()
+                    .and_then(|b| parse(b, path).ok())
+                    .is_some_and(|p| crate::diff::same_component(&p, profile))
+            })
+            .map(|((_, path), _)| path)
+            .collect();
+        let [old_path] = same[..] else {
+            return;
+        };
+        let more = log(
+            repo,
+            at,
+            &parent,
+            &pathspec(repo, old_path),
+            limit - versions.len(),
+        );
+        if more.is_empty() {
+            return;
+        }
+        versions.extend(more);
+    }
+}
+
+/// The files of `rev` (object id, path from the top of the repository), or `None` when git
+/// cannot list them (no such commit).
+fn ls_tree(repo: &Repo, rev: &str) -> Option<Vec<(String, String)>> {
+    if rev.starts_with('-') {
+        return None;
+    }
+    let mut c = repo.git();
+    c.args([
+        "ls-tree",
+        "-r",
+        "-z",
+        "--full-tree",
+        "--end-of-options",
+        rev,
+    ]);
+    c.stderr(Stdio::null());
+    let out = c.output().ok().filter(|o| o.status.success())?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    Some(
+        text.split('\0')
+            .filter_map(|line| {
+                let (meta, path) = line.split_once('\t')?;
+                let mut f = meta.split(' ');
+                let (_, kind, oid) = (f.next()?, f.next()?, f.next()?);
+                (kind == "blob").then(|| (oid.to_string(), path.to_string()))
+            })
+            .collect(),
+    )
+}
+
+/// A path from the top of the repository as a pathspec of `repo`'s commands (a work tree's run
+/// in the input directory, which may be a folder of it).
+fn pathspec(repo: &Repo, top: &str) -> String {
+    let Repo::WorkTree(_) = repo else {
+        return top.to_string();
+    };
+    let mut c = repo.git();
+    c.args(["rev-parse", "--show-prefix"]);
+    c.stderr(Stdio::null());
+    let prefix = c
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .unwrap_or_default();
+    match top.strip_prefix(&prefix) {
+        Some(rest) => rest.to_string(),
+        None => format!("{}{top}", "../".repeat(prefix.matches('/').count())),
     }
 }
 
@@ -216,6 +458,7 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
             first
         };
         out.push(Version {
+            added: status.starts_with('A'),
             at: Where::Blob {
                 repo,
                 oid: new.to_string(),
@@ -234,12 +477,13 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
     out
 }
 
-/// Reads and parses the blobs `oids` of `repo` (one `git cat-file --batch`).
-fn read_blobs(
+/// Reads and parses the blobs `oids` of `repo` (one `git cat-file --batch`), each with the path
+/// it had.
+fn read_blobs<D: Send>(
     repo: &Repo,
     oids: &BTreeMap<String, String>,
-    limits: &Limits,
-) -> HashMap<String, Result<Profile, String>> {
+    parse: ParseFn<'_, D>,
+) -> HashMap<String, Result<D, String>> {
     let ids: Vec<String> = oids.keys().cloned().collect();
     let mut raw: Blobs = Vec::new();
     if !ids.is_empty() {
@@ -251,7 +495,7 @@ fn read_blobs(
     raw.into_par_iter()
         .map(|(oid, bytes)| {
             let file = oids.get(&oid).map_or("", String::as_str);
-            let parsed = bytes.and_then(|b| parse_blob(&b, file, limits));
+            let parsed = bytes.and_then(|b| parse(&b, file));
             (oid, parsed)
         })
         .collect()
@@ -347,7 +591,7 @@ fn version_of(p: &Profile) -> Option<String> {
 fn history_of(
     c: &Component,
     commits: Vec<Version>,
-    parsed: &[HashMap<String, Result<Profile, String>>],
+    parsed: &Parsed<Profile>,
     idl: &crate::idl::IdlSet,
 ) -> Vec<Entry> {
     // Backups, newest first, merged into the commits by date.
@@ -356,6 +600,7 @@ fn history_of(
         .iter()
         .enumerate()
         .map(|(i, b)| Version {
+            added: false,
             at: Where::Backup(i),
             key: b.saved.clone().unwrap_or_default(),
             entry: Entry {
@@ -376,16 +621,9 @@ fn history_of(
         versions.push(v);
     }
     versions.extend(bs);
-    if versions.is_empty() {
-        return Vec::new();
-    }
-    let profile_of = |v: &Version| -> Result<&Profile, String> {
-        match &v.at {
-            Where::Blob { repo, oid } => match parsed[*repo].get(oid) {
-                Some(Ok(p)) => Ok(p),
-                Some(Err(e)) => Err(e.clone()),
-                None => Err("git did not read it".to_string()),
-            },
+    let profile_of = |w: &Where| -> Result<&Profile, String> {
+        match w {
+            Where::Blob { repo, oid } => blob(parsed, *repo, oid),
             Where::Backup(i) => match &c.backups[*i] {
                 b if b.profile.is_some() => Ok(b.profile.as_deref().expect("checked")),
                 b => Err(b
@@ -396,16 +634,49 @@ fn history_of(
             Where::Current => Ok(&c.profile),
         }
     };
-    // The file as it is: a version of its own when it differs from the newest commit in the
-    // specification (uncommitted edits), or when only backups record the history.
+    entries(
+        versions,
+        (&*c.profile, &c.source),
+        &profile_of,
+        &|old, new| {
+            crate::diff::compare_profiles(old, new, idl)
+                .iter()
+                .map(to_entry_change)
+                .collect()
+        },
+        &version_of,
+    )
+}
+
+/// The parsed document of blob `oid` of repository `repo`.
+fn blob<'p, D>(parsed: &'p Parsed<D>, repo: usize, oid: &str) -> Result<&'p D, String> {
+    match parsed[repo].get(oid) {
+        Some(Ok(d)) => Ok(d),
+        Some(Err(e)) => Err(e.clone()),
+        None => Err("git did not read it".to_string()),
+    }
+}
+
+/// A document's history from its versions (newest first): the file as it is (`current`, with
+/// its path) first when it differs from the newest commit in what `compare` sees (uncommitted
+/// edits), or when no commit records the history; then each version with the changes from the
+/// readable version before it. `doc_of` gives a version's document (or why it cannot);
+/// `version_of` its version string (a new one is a release).
+fn entries<'d, D>(
+    mut versions: Vec<Version>,
+    current: (&'d D, &str),
+    doc_of: &dyn Fn(&Where) -> Result<&'d D, String>,
+    compare: CompareFn<'_, D>,
+    version_of: &dyn Fn(&D) -> Option<String>,
+) -> Vec<Entry> {
+    if versions.is_empty() {
+        return Vec::new();
+    }
     let newest_commit = versions.iter().find(|v| v.entry.commit.is_some());
     let current_differs = match newest_commit {
         None => true,
-        Some(v) => match profile_of(v) {
-            Ok(p) => {
-                !crate::diff::compare_profiles((p, &v.entry.file), (&c.profile, &c.source), idl)
-                    .is_empty()
-            }
+        Some(v) => match doc_of(&v.at) {
+            Ok(d) => !compare((d, &v.entry.file), current).is_empty(),
             Err(_) => true,
         },
     };
@@ -413,39 +684,33 @@ fn history_of(
         versions.insert(
             0,
             Version {
+                added: false,
                 at: Where::Current,
                 key: String::new(),
                 entry: Entry {
-                    file: c.source.clone(),
+                    file: current.1.to_string(),
                     ..Entry::default()
                 },
             },
         );
     }
-    let profiles: Vec<Result<&Profile, String>> = versions.iter().map(profile_of).collect();
+    let docs: Vec<Result<&D, String>> = versions.iter().map(|v| doc_of(&v.at)).collect();
     let mut entries = Vec::with_capacity(versions.len());
     for (i, v) in versions.iter().enumerate() {
         let mut e = v.entry.clone();
-        match &profiles[i] {
+        match &docs[i] {
             Err(why) => e.error = Some(why.clone()),
-            Ok(p) => {
-                e.version = version_of(p);
-                let before = (i + 1..versions.len()).find(|&j| profiles[j].is_ok());
+            Ok(d) => {
+                e.version = version_of(d);
+                let before = (i + 1..versions.len()).find(|&j| docs[j].is_ok());
                 match before {
                     None => e.first = true,
                     Some(j) => {
-                        let old = profiles[j].as_ref().expect("found ok");
+                        let old = docs[j].as_ref().expect("found ok");
                         let same_blob = matches!((&v.at, &versions[j].at),
                             (Where::Blob { oid: a, repo: ra }, Where::Blob { oid: b, repo: rb }) if a == b && ra == rb);
                         if !same_blob {
-                            e.changes = crate::diff::compare_profiles(
-                                (old, &versions[j].entry.file),
-                                (p, &v.entry.file),
-                                idl,
-                            )
-                            .iter()
-                            .map(to_entry_change)
-                            .collect();
+                            e.changes = compare((old, &versions[j].entry.file), (d, &v.entry.file));
                         }
                         e.release = version_of(old) != e.version;
                     }
@@ -474,5 +739,179 @@ fn to_entry_change(c: &crate::diff::Change) -> Change {
         old_file: c.old_file.clone(),
         old_line: c.old_line,
         old_column: c.old_column,
+    }
+}
+
+/// Fills in `history` of every RT System profile: the commits of its file, each version
+/// compared with the one before by the system diff engine ([`crate::diff::systems::compare_systems`],
+/// DIFF15x/25x/35x), and the file as it is when that differs from the newest commit.
+fn attach_systems(catalog: &mut Catalog, repos: &mut Repos<'_>, limit: usize, limits: &Limits) {
+    if catalog.systems.is_empty() {
+        return;
+    }
+    let located: Vec<Option<Located>> = catalog
+        .systems
+        .iter()
+        .map(|s| repos.locate(s.origin.as_ref(), &s.source))
+        .collect();
+    let (logs, parsed) = read_versions(&repos.list, &located, limit, &|bytes, file| {
+        parse_system_blob(bytes, file, limits)
+    });
+    let histories: Vec<Vec<Entry>> = catalog
+        .systems
+        .par_iter()
+        .zip(logs)
+        .map(|(s, commits)| {
+            entries(
+                commits,
+                (&*s.profile, &s.source),
+                &|w| match w {
+                    Where::Blob { repo, oid } => blob(&parsed, *repo, oid),
+                    Where::Current => Ok(&*s.profile),
+                    Where::Backup(_) => Err("a system has no backups".to_string()),
+                },
+                &|(old, old_file), (new, new_file)| {
+                    crate::diff::systems::compare_systems(old, new)
+                        .iter()
+                        .map(|c| Change {
+                            file: Some(new_file.to_string()),
+                            old_file: Some(old_file.to_string()),
+                            ..to_entry_change(c)
+                        })
+                        .collect()
+                },
+                &system_version,
+            )
+        })
+        .collect();
+    for (s, h) in catalog.systems.iter_mut().zip(histories) {
+        s.history = h;
+    }
+}
+
+/// Parses one version of an RT System profile; `file` is its path then.
+fn parse_system_blob(
+    bytes: &[u8],
+    file: &str,
+    limits: &Limits,
+) -> Result<crate::model::system::RtSystem, String> {
+    let format = crate::build::system_format(Path::new(file), bytes);
+    parse::rts::parse(format, bytes, file, limits)
+        .map(|p| p.system)
+        .map_err(|d| match d.pos {
+            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
+            None => d.message,
+        })
+}
+
+/// The version string of an RT System profile: its id's version part.
+fn system_version(s: &crate::model::system::RtSystem) -> Option<String> {
+    s.id_parts
+        .as_ref()
+        .and_then(|p| non_empty(&p.version))
+        .map(str::to_string)
+}
+
+/// Fills in the history of every IDL file the catalogue read ([`Catalog::idl_history`]): the
+/// commits of the file, each version read on its own and compared with the one before type by
+/// type ([`crate::diff::compare_idl_files`]), and the file as it is on disk when that differs
+/// from the newest commit (a file of the input's work tree). A file outside every repository
+/// (`--idl-path` elsewhere) has none.
+fn attach_idl(
+    catalog: &mut Catalog,
+    repos: &mut Repos<'_>,
+    roots: &Roots,
+    limit: usize,
+    limits: &Limits,
+) {
+    if catalog.idl.files.is_empty() {
+        return;
+    }
+    let located: Vec<Option<Located>> = catalog
+        .idl
+        .files
+        .iter()
+        .map(|f| repos.locate(f.origin.as_ref(), &f.path))
+        .collect();
+    let parse = |bytes: &[u8], file: &str| parse_idl_blob(bytes, file, limits);
+    let (logs, parsed) = read_versions(&repos.list, &located, limit, &parse);
+    // The file as it is: only a file of the input directory can differ from its newest commit
+    // (a source's is read at its pinned commit).
+    let current: Vec<Option<Result<crate::idl::IdlSet, String>>> = catalog
+        .idl
+        .files
+        .par_iter()
+        .zip(&logs)
+        .map(|(f, commits)| {
+            (f.origin.is_none() && !commits.is_empty()).then(|| {
+                std::fs::read(roots.local.join(&f.path))
+                    .map_err(|e| e.to_string())
+                    .and_then(|b| parse(&b, &f.path))
+            })
+        })
+        .collect();
+    let histories: Vec<(String, Vec<Entry>)> = catalog
+        .idl
+        .files
+        .par_iter()
+        .zip(logs)
+        .zip(&current)
+        .map(|((f, commits), now)| {
+            let doc_of = |w: &Where| match w {
+                Where::Blob { repo, oid } => blob(&parsed, *repo, oid),
+                _ => Err("an IDL file has no backups".to_string()),
+            };
+            // Without a readable file on disk, the newest commit stands for it.
+            let now = match now {
+                Some(Ok(set)) => Some(set),
+                _ => commits.first().and_then(|v| doc_of(&v.at).ok()),
+            };
+            let h = match now {
+                None => Vec::new(),
+                Some(now) => entries(
+                    commits,
+                    (now, &f.path),
+                    &doc_of,
+                    &|(old, old_file), (new, new_file)| {
+                        crate::diff::compare_idl_files(old, new, &f.path)
+                            .iter()
+                            .map(|c| Change {
+                                file: Some(new_file.to_string()),
+                                old_file: Some(old_file.to_string()),
+                                ..to_entry_change(c)
+                            })
+                            .collect()
+                    },
+                    &|_| None,
+                ),
+            };
+            (f.path.clone(), h)
+        })
+        .collect();
+    catalog.idl_history = histories
+        .into_iter()
+        .filter(|(_, h)| !h.is_empty())
+        .collect();
+}
+
+/// Reads one version of an IDL file on its own (its includes are not at hand: a type of
+/// another file stays as written); an error of the reader makes the version unreadable.
+fn parse_idl_blob(bytes: &[u8], file: &str, limits: &Limits) -> Result<crate::idl::IdlSet, String> {
+    let opts = crate::idl::IdlOptions {
+        max_file_size: limits.max_file_size,
+        max_depth: limits.max_depth,
+        ..Default::default()
+    };
+    let set = crate::idl::read(&[crate::idl::SourceFile::new(file, bytes)], &opts);
+    match set
+        .diagnostics
+        .iter()
+        .find(|d| d.severity == crate::diagnostic::Severity::Error)
+    {
+        Some(d) => Err(match d.pos {
+            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
+            None => d.message.clone(),
+        }),
+        None => Ok(set),
     }
 }

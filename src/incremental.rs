@@ -16,7 +16,7 @@ use crate::render::html::HtmlRenderer;
 use crate::render::RenderContext;
 use crate::walk;
 use anyhow::Result;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
 /// What an update did.
@@ -227,7 +227,11 @@ fn affected(before: &Before, new: &Catalog, changed: &[String]) -> Option<BTreeS
 impl Workspace {
     /// Loads and renders everything.
     pub fn open(opts: &BuildOptions) -> Result<Workspace> {
-        let loaded = load(&opts.input, &opts.load)?;
+        let mut loaded = load(&opts.input, &opts.load)?;
+        // The history, as `build` reads it.
+        if let Some(read_history) = opts.load.history_reader.filter(|_| opts.load.history > 0) {
+            read_history(&mut loaded.catalog, &loaded.roots, &opts.load);
+        }
         let input_root = crate::build::input_root(&opts.input);
         let mut warnings: BTreeMap<String, Vec<Diagnostic>> = BTreeMap::new();
         // Only the readers' diagnostics are kept per file: the catalogue adds its own
@@ -348,12 +352,19 @@ impl Workspace {
         let mut old = std::mem::replace(&mut self.catalog, Catalog::build(Vec::new(), Vec::new()));
         // Profiles changed, not IDL (a changed IDL file reloads everything: see `serve`).
         let idl = std::mem::take(&mut old.idl);
+        let idl_history = std::mem::take(&mut old.idl_history);
+        // The histories are kept: only the edited profiles' are read again (below).
+        let mut histories: HashMap<String, Vec<crate::catalog::history::Entry>> = HashMap::new();
+        let mut system_histories = HashMap::new();
         let systems: Vec<crate::catalog::systems::LoadedSystem> = std::mem::take(&mut old.systems)
             .into_iter()
-            .map(|s| crate::catalog::systems::LoadedSystem {
-                source: s.source,
-                format: s.format,
-                system: s.profile,
+            .map(|s| {
+                system_histories.insert(s.source.clone(), s.history);
+                crate::catalog::systems::LoadedSystem {
+                    source: s.source,
+                    format: s.format,
+                    system: s.profile,
+                }
             })
             .collect();
         let mut backups = std::mem::take(&mut old.detached_backups);
@@ -362,6 +373,7 @@ impl Workspace {
             .into_iter()
             .map(|mut c| {
                 backups.append(&mut c.backups);
+                histories.insert(c.source.clone(), std::mem::take(&mut c.history));
                 (
                     c.source.clone(),
                     LoadedProfile {
@@ -397,6 +409,17 @@ impl Workspace {
             &self.roots,
             &walk::exclude_matcher(&self.opts.load.exclude),
         );
+        for c in &mut catalog.components {
+            c.history = histories.remove(&c.source).unwrap_or_default();
+        }
+        for s in &mut catalog.systems {
+            s.history = system_histories.remove(&s.source).unwrap_or_default();
+        }
+        catalog.idl_history = idl_history;
+        if self.opts.load.history_reader.is_some() {
+            let edited: BTreeSet<String> = touched.iter().cloned().collect();
+            crate::history::attach_some(&mut catalog, &self.roots, &self.opts.load, &edited);
+        }
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;
 

@@ -168,8 +168,8 @@ struct BuildArgs {
     /// Fail (exit 1) without writing anything when any profile has an error.
     #[arg(long)]
     strict: bool,
-    /// Commits read per profile for its history (from git and RTCBuilder's backups); 0 turns
-    /// the history off [default: 100].
+    /// Commits read per file (component profile, RT System profile, IDL file) for its history
+    /// (from git, and RTCBuilder's backups); 0 turns the history off [default: 100].
     #[arg(long, value_name = "N")]
     history: Option<usize>,
     #[command(flatten)]

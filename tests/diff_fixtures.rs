@@ -1,5 +1,5 @@
 //! `rtcdoc diff` through the binary on the fixture pairs of `tests/fixtures/diff/CODE/{old,new}`:
-//! every IDL-level code (DIFF13x, DIFF23x, DIFF33x), every RT System connector code (DIFF14x)
+//! every IDL-level code (DIFF13x, DIFF140, DIFF23x, DIFF33x), every RT System connector code (DIFF14x)
 //! and every code of the RT Systems compared (DIFF003, DIFF15x, DIFF25x, DIFF35x) with its
 //! severity, path, component, file and the exit status; and the IDL and system cases around
 //! them (spellings, a git revision, a system only OLD has, an unreadable system profile,
@@ -175,12 +175,28 @@ const CASES: &[Case] = &[
         says: "`Nav::TimedMode` is defined in OLD's IDL only",
     },
     Case {
+        code: "DIFF334",
+        path: "idl/Nav::Battery",
+        component: "new/idl/Nav.idl",
+        all: &["DIFF334"],
+        file: "new/idl/Nav.idl",
+        says: "`Nav::Battery` is defined in `new/idl/Nav.idl`",
+    },
+    Case {
         code: "DIFF333",
         path: "servicePorts/Map/interfaces/planner/type/operations/cancel",
         component: NAV,
         all: &["DIFF333"],
         file: NAV_RTC,
         says: "operation `cancel` was removed from interface `Nav::Planner`",
+    },
+    Case {
+        code: "DIFF140",
+        path: "idl/Nav::Battery",
+        component: "old/idl/Nav.idl",
+        all: &["DIFF140"],
+        file: "",
+        says: "`Nav::Battery` is no longer defined (it was in `old/idl/Nav.idl`)",
     },
     Case {
         code: "DIFF141",

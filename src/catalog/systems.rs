@@ -43,6 +43,11 @@ pub struct System {
     pub data_connectors: Vec<ConnectorLink>,
     /// One per service port connector, in the same order.
     pub service_connectors: Vec<ConnectorLink>,
+    /// Its past versions, newest first, each with the changes `rtcdoc diff` finds between two
+    /// versions of a system ([`super::history`]); empty when the history is off or no
+    /// repository holds the file.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub history: Vec<super::history::Entry>,
     /// The system as read: every value of the file.
     pub profile: Box<RtSystem>,
 }
@@ -266,6 +271,7 @@ impl Catalog {
                 instances,
                 data_connectors,
                 service_connectors,
+                history: Vec::new(),
                 profile: l.system,
             });
         }

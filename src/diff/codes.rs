@@ -70,6 +70,7 @@ pub const IDL_UNION_CHANGED: &str = "DIFF136";
 pub const IDL_TYPEDEF_CHANGED: &str = "DIFF137";
 pub const IDL_OPERATION_REMOVED: &str = "DIFF138";
 pub const IDL_OPERATION_CHANGED: &str = "DIFF139";
+pub const IDL_TYPE_REMOVED: &str = "DIFF140";
 pub const CONNECTOR_COMPONENT_REMOVED: &str = "DIFF141";
 pub const CONNECTOR_PORT_REMOVED: &str = "DIFF142";
 pub const CONNECTOR_PORT_CHANGED: &str = "DIFF143";
@@ -109,6 +110,7 @@ pub const OTHER_CHANGED: &str = "DIFF308";
 pub const IDL_DOCUMENTATION_CHANGED: &str = "DIFF331";
 pub const IDL_TYPE_ON_ONE_SIDE: &str = "DIFF332";
 pub const IDL_REQUIRED_OPERATION_REMOVED: &str = "DIFF333";
+pub const IDL_TYPE_ADDED: &str = "DIFF334";
 pub const SYSTEM_ADDED: &str = "DIFF351";
 pub const SYSTEM_INSTANCE_ADDED: &str = "DIFF352";
 pub const SYSTEM_CONNECTOR_ADDED: &str = "DIFF353";
@@ -279,6 +281,13 @@ pub static CODES: &[Code] = &[
         name: "idl-operation-changed",
         summary: "an operation's signature (parameters, directions, result, raises, oneway) or an attribute's type changed",
         explanation: "GIOP marshals the parameters of a call positionally by the caller's IDL: another parameter type, count or direction (`in`, `out`, `inout`), result type, `oneway` or exception list, or an attribute's type or `readonly`, makes calls between peers built from the old and the new IDL fail or carry wrong values — for the requirers of a provided interface, and for the component itself calling a required one. Parameter names alone are no change on the wire (DIFF308); struct parameters that changed inside are reported with the struct codes.",
+    },
+    Code {
+        code: IDL_TYPE_REMOVED,
+        level: Breaking,
+        name: "idl-type-removed",
+        summary: "a type the IDL files defined is no longer defined",
+        explanation: "A struct, union, enum, typedef, interface or exception one side's IDL files define is defined by none of the other's (by scoped name: a type moved to another module counts as removed and added). Ports, peers and generated code naming it no longer build, and a data port carrying it cannot be connected to an old peer. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332); the history of an IDL file reports it for every type the file stopped defining.",
     },
     Code {
         code: CONNECTOR_COMPONENT_REMOVED,
@@ -552,6 +561,13 @@ pub static CODES: &[Code] = &[
         name: "idl-required-operation-removed",
         summary: "an operation or attribute was removed from an interface the component requires",
         explanation: "The component calls less than before; the providers it connects to still implement the operation, so nothing fails. (Removed from a provided interface it is DIFF138.)",
+    },
+    Code {
+        code: IDL_TYPE_ADDED,
+        level: Info,
+        name: "idl-type-added",
+        summary: "the IDL files define a new type",
+        explanation: "A struct, union, enum, typedef, interface or exception is defined on the new side only (by scoped name). Nothing that worked before depends on it. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332); the history of an IDL file reports it for every type the file begins to define.",
     },
     Code {
         code: SYSTEM_ADDED,

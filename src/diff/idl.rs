@@ -1268,6 +1268,135 @@ pub(super) fn component(
     }
 }
 
+/// The types an IDL set defines, by scoped name (modules walked; constants, forward
+/// declarations, natives and skipped declarations are not types to compare), each with the
+/// file and position of its definition.
+pub(crate) fn defined_types(set: &IdlSet) -> BTreeMap<String, (String, crate::model::Pos)> {
+    type Out = BTreeMap<String, (String, crate::model::Pos)>;
+    fn walk(defs: &[IdlDefinition], file: &str, out: &mut Out) {
+        for d in defs {
+            match d {
+                IdlDefinition::Module(m) => walk(&m.definitions, file, out),
+                IdlDefinition::Struct(_)
+                | IdlDefinition::Union(_)
+                | IdlDefinition::Enum(_)
+                | IdlDefinition::Typedef(_)
+                | IdlDefinition::Interface(_)
+                | IdlDefinition::Exception(_) => {
+                    out.entry(d.scoped_name().to_string())
+                        .or_insert_with(|| (file.to_string(), d.pos()));
+                }
+                IdlDefinition::Const(_)
+                | IdlDefinition::Forward(_)
+                | IdlDefinition::Native(_)
+                | IdlDefinition::Skipped(_) => {}
+            }
+        }
+    }
+    let mut out = BTreeMap::new();
+    for f in &set.files {
+        walk(&f.definitions, &f.path, &mut out);
+    }
+    out
+}
+
+/// DIFF140 / DIFF334 for a type defined in one set and not the other, located at its
+/// definition (files named by `old_name` / `new_name`), unless `skip` says it is reported
+/// already; `component` is `label`, else the file defining the type.
+fn types_on_one_side(
+    (old, old_name): (&BTreeMap<String, (String, crate::model::Pos)>, super::Namer),
+    (new, new_name): (&BTreeMap<String, (String, crate::model::Pos)>, super::Namer),
+    label: Option<&str>,
+    skip: &dyn Fn(&str) -> bool,
+    out: &mut Vec<Change>,
+) {
+    let known = |p: crate::model::Pos| (!p.is_unknown()).then_some(p);
+    for (name, (file, pos)) in old.iter().filter(|(n, _)| !new.contains_key(*n)) {
+        if !skip(name) {
+            let shown = old_name(file);
+            let mut c = super::change(
+                codes::IDL_TYPE_REMOVED,
+                label.map_or_else(|| shown.clone(), str::to_string),
+                format!("idl/{name}"),
+                Some(name.clone()),
+                None,
+                format!("`{name}` is no longer defined (it was in `{shown}`)"),
+            );
+            c.old_file = Some(shown);
+            c.old_line = known(*pos).map(|p| p.line);
+            c.old_column = known(*pos).map(|p| p.column);
+            out.push(c);
+        }
+    }
+    for (name, (file, pos)) in new.iter().filter(|(n, _)| !old.contains_key(*n)) {
+        if !skip(name) {
+            let shown = new_name(file);
+            let mut c = super::change(
+                codes::IDL_TYPE_ADDED,
+                label.map_or_else(|| shown.clone(), str::to_string),
+                format!("idl/{name}"),
+                None,
+                Some(name.clone()),
+                format!("`{name}` is defined in `{shown}`"),
+            );
+            c.file = Some(shown);
+            c.line = known(*pos).map(|p| p.line);
+            c.column = known(*pos).map(|p| p.column);
+            out.push(c);
+        }
+    }
+}
+
+/// The types `rtcdoc diff` finds defined in one side's IDL only (both sides having IDL), other
+/// than those a port carries (DIFF332 names those, once each, already in `out`).
+pub(super) fn one_sided_types(
+    (old, old_name): (&IdlSet, super::Namer),
+    (new, new_name): (&IdlSet, super::Namer),
+    out: &mut Vec<Change>,
+) {
+    if old.is_empty() || new.is_empty() {
+        return;
+    }
+    let reported: BTreeSet<String> = out
+        .iter()
+        .filter(|c| c.code == codes::IDL_TYPE_ON_ONE_SIDE)
+        .map(|c| c.path.clone())
+        .collect();
+    types_on_one_side(
+        (&defined_types(old), old_name),
+        (&defined_types(new), new_name),
+        None,
+        &|name| reported.contains(&format!("idl/{name}")),
+        out,
+    );
+}
+
+/// Two versions of IDL files compared type by type (an IDL file's history): every type both
+/// define compared as `diff` compares the type of a port (members, enum values, unions,
+/// typedefs, operations, with the types they contain), under `idl/<scoped name>`; a type one
+/// version defines only is DIFF140 (removed) or DIFF334 (added). `label` is each change's
+/// `component` (the file).
+pub fn compare_idl_files(old: &IdlSet, new: &IdlSet, label: &str) -> Vec<Change> {
+    let (o, n) = (defined_types(old), defined_types(new));
+    let mut out = Vec::new();
+    for name in o.keys().filter(|k| n.contains_key(*k)) {
+        for f in &compare_type(old, new, name).findings {
+            out.push(super::change(
+                code_of(f.kind, false),
+                label.to_string(),
+                sub(&format!("idl/{name}"), &f.path),
+                f.old.clone(),
+                f.new.clone(),
+                format!("`{name}`: {}", f.message),
+            ));
+        }
+    }
+    let same = |f: &str| f.to_string();
+    types_on_one_side((&o, &same), (&n, &same), Some(label), &|_| false, &mut out);
+    super::sort(&mut out);
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -26,6 +26,7 @@ pub mod side;
 pub mod systems;
 
 pub use codes::{Code, Level, CODES};
+pub use idl::compare_idl_files;
 
 use crate::catalog::{Catalog, Component};
 use crate::model::fields::{self, Field, Holds, Node as Kind};
@@ -232,6 +233,18 @@ fn ident_of(p: &Profile, source: &str) -> Ident {
     }
 }
 
+/// Whether two profiles are versions of one component, as `diff` pairs them: the vendor,
+/// category and name of their ids (or BasicInfo) agree, and their languages when both name
+/// one. A profile that names no component is no other's.
+pub fn same_component(a: &Profile, b: &Profile) -> bool {
+    let (x, y) = (ident_of(a, ""), ident_of(b, ""));
+    // Not the fallbacks of `ident_of`: the id as written alone, or the file name.
+    let named = |i: &Ident| !(i.key.1.is_empty() && (i.key.0.is_empty() || i.key.2.is_empty()));
+    named(&x)
+        && x.key == y.key
+        && (x.language.is_empty() || y.language.is_empty() || x.language == y.language)
+}
+
 /// How the files of a catalogue (relative to its input) are named in the changes.
 pub type Namer<'a> = &'a dyn Fn(&str) -> String;
 
@@ -418,6 +431,7 @@ pub fn diff_with_systems(
         }
     }
     idl.finish(&mut out);
+    idl::one_sided_types((&old.idl, old_name), (&new.idl, new_name), &mut out);
     systems::unreadable("OLD", &old_systems.unreadable, old_name, &mut out);
     systems::unreadable("NEW", &new_systems.unreadable, new_name, &mut out);
     breaks.connectors(

@@ -160,13 +160,20 @@ impl<'de> serde::Deserialize<'de> for IdlSet {
         struct Files {
             files: Vec<IdlFile>,
         }
-        let f = Files::deserialize(d)?;
+        Ok(IdlSet::from_files(Files::deserialize(d)?.files))
+    }
+}
+
+impl IdlSet {
+    /// The set of files read back (from `catalog.json`), with the lookups built again: names
+    /// were resolved when the files were read, and are kept in the definitions.
+    pub fn from_files(files: Vec<IdlFile>) -> IdlSet {
         let mut set = IdlSet {
-            files: f.files,
+            files,
             ..IdlSet::default()
         };
         set.build_index(&mut Vec::new());
-        Ok(set)
+        set
     }
 }
 

@@ -410,7 +410,7 @@ fn system_index(cat: &Catalog, lang: Lang) -> String {
 }
 
 /// `systems/<slug>.dox`.
-fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String {
+fn system_page(cat: &Catalog, si: usize, lang: Lang, site: (bool, Option<&str>)) -> String {
     let s = &cat.systems[si];
     let page = cat.system_page(si);
     let mut out = String::new();
@@ -428,7 +428,7 @@ fn system_page(cat: &Catalog, si: usize, lang: Lang, show_host: bool) -> String 
         cat,
         s,
         lang,
-        show_host,
+        site,
         &super::system_text::Targets { heading: &head },
     );
     out
@@ -741,7 +741,7 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
 /// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
 pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = facets_of_each(cat);
-    let mut out = other_pages(cat, site_title, lang, false);
+    let mut out = other_pages(cat, site_title, lang, (false, None));
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
@@ -773,7 +773,7 @@ fn other_pages(
     cat: &Catalog,
     site_title: &str,
     lang: Lang,
-    show_host: bool,
+    site: (bool, Option<&str>),
 ) -> Vec<(String, String)> {
     let mut out = vec![
         (
@@ -798,13 +798,13 @@ fn other_pages(
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(DOX),
-            type_page::<Dox>(cat, &data_type_view(cat, ti, lang), "", lang),
+            type_page::<Dox>(cat, &data_type_view(cat, ti, lang, site.1), "", lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
             cat.interface_page(ii).path_in(DOX),
-            type_page::<Dox>(cat, &interface_view(cat, ii, lang), "", lang),
+            type_page::<Dox>(cat, &interface_view(cat, ii, lang, site.1), "", lang),
         )
     }));
     out.push((
@@ -828,7 +828,7 @@ fn other_pages(
         out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
             (
                 cat.system_page(si).path_in(DOX),
-                system_page(cat, si, lang, show_host),
+                system_page(cat, si, lang, site),
             )
         }));
     }
@@ -849,7 +849,12 @@ impl Renderer for DoxygenRenderer {
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         let (cat, lang) = (ctx.catalog, ctx.site.language);
-        let pages = other_pages(cat, &ctx.site.title, lang, ctx.site.show_host_data);
+        let pages = other_pages(
+            cat,
+            &ctx.site.title,
+            lang,
+            (ctx.site.show_host_data, ctx.site.source_url.as_deref()),
+        );
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;

@@ -171,8 +171,8 @@ struct Document<'a> {
     vendors: Keyed<'a, Facet>,
     pages: Vec<PageEntry>,
     diagnostics: Cow<'a, [Diagnostic]>,
-    #[serde(default, skip_serializing_if = "IdlSet::is_empty")]
-    idl: Cow<'a, IdlSet>,
+    #[serde(default, skip_serializing_if = "IdlDoc::is_empty")]
+    idl: IdlDoc<'a>,
     /// Each system with its resolved links; read back, the links are made again.
     #[serde(default, skip_serializing_if = "Keyed::is_empty")]
     systems: Keyed<'a, System>,
@@ -184,6 +184,46 @@ struct Document<'a> {
     /// one carry an `origin`).
     #[serde(default, skip_serializing_if = "<[_]>::is_empty")]
     sources: Cow<'a, [crate::model::SourceInfo]>,
+}
+
+/// The IDL files as `catalog.json` has them: each file's definitions and its history
+/// ([`Catalog::idl_history`]).
+#[derive(Default, Serialize, Deserialize)]
+struct IdlDoc<'a> {
+    files: Vec<IdlFileDoc<'a>>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct IdlFileDoc<'a> {
+    #[serde(flatten)]
+    file: Cow<'a, crate::idl::IdlFile>,
+    #[serde(default, skip_serializing_if = "<[_]>::is_empty")]
+    history: Cow<'a, [crate::catalog::history::Entry]>,
+}
+
+impl IdlDoc<'_> {
+    fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+}
+
+fn idl_doc(catalog: &Catalog) -> IdlDoc<'_> {
+    IdlDoc {
+        files: catalog
+            .idl
+            .files
+            .iter()
+            .map(|file| IdlFileDoc {
+                file: Cow::Borrowed(file),
+                history: Cow::Borrowed(
+                    catalog
+                        .idl_history
+                        .get(&file.path)
+                        .map_or(&[], Vec::as_slice),
+                ),
+            })
+            .collect(),
+    }
 }
 
 fn document<'a>(
@@ -203,7 +243,7 @@ fn document<'a>(
         vendors: Keyed(Cow::Borrowed(&catalog.vendors)),
         pages: page_entries(catalog),
         diagnostics: Cow::Borrowed(&catalog.diagnostics),
-        idl: Cow::Borrowed(&catalog.idl),
+        idl: idl_doc(catalog),
         systems: Keyed(Cow::Borrowed(systems)),
         backups: Cow::Borrowed(&catalog.detached_backups),
         sources: Cow::Borrowed(&catalog.sources),
@@ -355,6 +395,15 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
     }
     let doc: Document = serde_json::from_slice(bytes)
         .map_err(|e| anyhow::anyhow!("{name}:{}:{}: {}", e.line(), e.column(), json_error(&e)))?;
+    let mut idl_files = Vec::with_capacity(doc.idl.files.len());
+    let mut idl_history = std::collections::BTreeMap::new();
+    for f in doc.idl.files {
+        let file = f.file.into_owned();
+        if !f.history.is_empty() {
+            idl_history.insert(file.path.clone(), f.history.into_owned());
+        }
+        idl_files.push(file);
+    }
     let mut catalog = Catalog::from_parts(
         doc.components.0.into_owned(),
         doc.data_types.0.into_owned(),
@@ -362,21 +411,30 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         doc.categories.0.into_owned(),
         doc.vendors.0.into_owned(),
         doc.diagnostics.into_owned(),
-        doc.idl.into_owned(),
+        IdlSet::from_files(idl_files),
     )
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-    catalog.attach_systems(
-        doc.systems
-            .0
-            .into_owned()
-            .into_iter()
-            .map(|s| crate::catalog::systems::LoadedSystem {
+    catalog.idl_history = idl_history;
+    // The systems' links are made again; their histories are kept as read.
+    let mut histories = std::collections::HashMap::new();
+    let loaded = doc
+        .systems
+        .0
+        .into_owned()
+        .into_iter()
+        .map(|s| {
+            histories.insert(s.source.clone(), s.history);
+            crate::catalog::systems::LoadedSystem {
                 source: s.source,
                 format: s.format,
                 system: s.profile,
-            })
-            .collect(),
-    );
+            }
+        })
+        .collect();
+    catalog.attach_systems(loaded);
+    for s in &mut catalog.systems {
+        s.history = histories.remove(&s.source).unwrap_or_default();
+    }
     catalog.detached_backups = doc.backups.into_owned();
     catalog.set_origins(doc.sources.into_owned());
     if page_entries(&catalog) != doc.pages {

@@ -728,7 +728,7 @@ fn system_page(
     si: usize,
     title: &str,
     lang: Lang,
-    show_host: bool,
+    site: (bool, Option<&str>),
     diagrams: super::DiagramFormat,
 ) -> (String, Option<String>) {
     let s = &cat.systems[si];
@@ -750,7 +750,7 @@ fn system_page(
         cat,
         s,
         lang,
-        show_host,
+        site,
         &super::system_text::Targets { heading: &head },
     );
     // The wiring diagram, after the body's sections.
@@ -781,7 +781,7 @@ fn system_page(
 pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = facets_of_each(cat);
     let readme = readme_targets(cat, None);
-    let mut out = other_pages(cat, title, lang, false, super::DiagramFormat::Svg);
+    let mut out = other_pages(cat, title, lang, (false, None), super::DiagramFormat::Svg);
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
@@ -811,7 +811,7 @@ fn other_pages(
     cat: &Catalog,
     title: &str,
     lang: Lang,
-    show_host: bool,
+    site: (bool, Option<&str>),
     diagrams: super::DiagramFormat,
 ) -> Vec<(String, String)> {
     let index = index_page(cat, title, lang);
@@ -851,13 +851,13 @@ fn other_pages(
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(MD),
-            type_page::<Md>(cat, &data_type_view(cat, ti, lang), title, lang),
+            type_page::<Md>(cat, &data_type_view(cat, ti, lang, site.1), title, lang),
         )
     }));
     out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
         (
             cat.interface_page(ii).path_in(MD),
-            type_page::<Md>(cat, &interface_view(cat, ii, lang), title, lang),
+            type_page::<Md>(cat, &interface_view(cat, ii, lang, site.1), title, lang),
         )
     }));
     if !cat.systems.is_empty() {
@@ -870,7 +870,7 @@ fn other_pages(
             let path = page.path_in(MD);
             // The wiring diagram beside the page, with its stem.
             let svg_path = page.path("svg");
-            let (text, svg) = system_page(cat, si, title, lang, show_host, diagrams);
+            let (text, svg) = system_page(cat, si, title, lang, site, diagrams);
             std::iter::once((path, text)).chain(svg.map(|s| (svg_path, s)))
         }));
     }
@@ -887,7 +887,7 @@ impl Renderer for MarkdownRenderer {
             cat,
             title,
             lang,
-            ctx.site.show_host_data,
+            (ctx.site.show_host_data, ctx.site.source_url.as_deref()),
             ctx.site.markdown_diagrams,
         );
         pages

@@ -46,22 +46,32 @@ fn end_text<M: Markup>(e: &EndView) -> String {
 }
 
 /// Writes the sections of system `s`'s page (`from`, for its links) from its view
-/// ([`system_view`]), the same values the HTML page shows.
+/// ([`system_view`]), the same values the HTML page shows; `site` is (show host data, the
+/// `source-url` template).
 pub fn system_body<M: Markup>(
     out: &mut String,
     cat: &Catalog,
     s: &System,
     lang: Lang,
-    show_host: bool,
+    site: (bool, Option<&str>),
     t: &Targets<'_>,
 ) {
-    let v = system_view(cat, s, lang, show_host, M::OUTPUT);
+    let show_host = site.0;
+    let v = system_view(cat, s, lang, site, M::OUTPUT);
     let p = &s.profile;
+    let source_label = lang.t("source");
     let mut facts: Vec<Vec<String>> = v
         .summary
         .iter()
-        .chain(&v.properties)
-        .map(|kv| vec![M::esc(&kv.key), M::esc(&kv.value)])
+        .map(|kv| match &v.source_url {
+            Some(url) if kv.key == source_label => vec![M::esc(&kv.key), M::link(&kv.value, url)],
+            _ => vec![M::esc(&kv.key), M::esc(&kv.value)],
+        })
+        .chain(
+            v.properties
+                .iter()
+                .map(|kv| vec![M::esc(&kv.key), M::esc(&kv.value)]),
+        )
         .collect();
     for l in &p.version_up_logs {
         facts.push(vec![M::esc(lang.t("version_up_logs")), M::esc(l)]);
@@ -83,6 +93,10 @@ pub fn system_body<M: Markup>(
     configuration::<M>(out, &v, lang, t);
     connectors::<M>(out, &v, lang, t);
     orders_and_groups::<M>(out, &v, lang, t);
+    if !v.history.rows.is_empty() {
+        (t.heading)(out, "change-history", lang.t("change_history"));
+        super::text::history_body::<M>(out, &v.history, lang.t("history_intro_system"), lang);
+    }
     (t.heading)(out, "all-values", lang.t("sys_all_values"));
     let rows: Vec<Vec<String>> = v
         .all_values

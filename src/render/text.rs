@@ -579,6 +579,9 @@ pub fn type_page<M: Markup>(
     super::idl_view::write_definition::<M>(&mut out, cat, page, v.name, lang, &|o, a, text| {
         M::heading(o, page, 2, a, text)
     });
+    if let Some(f) = &v.idl_file {
+        idl_file_section::<M>(&mut out, page, f, lang);
+    }
     if !v.contained_in.is_empty() {
         M::heading(
             &mut out,
@@ -755,7 +758,37 @@ fn history_section<M: Markup>(
         return;
     }
     M::heading(out, page, 2, "sec-change-history", lang.t("change_history"));
-    M::paragraph(out, &M::esc(lang.t("history_intro")));
+    history_body::<M>(out, h, lang.t("history_intro"), lang);
+}
+
+/// The IDL file section of a type page: the file (linked into its repository) and its latest
+/// versions.
+fn idl_file_section<M: Markup>(
+    out: &mut String,
+    page: &Page,
+    f: &crate::render::view::idl_file::IdlFileView,
+    lang: Lang,
+) {
+    M::heading(out, page, 2, "sec-idl-file", lang.t("idl_file"));
+    let file = match &f.source_url {
+        Some(url) => M::link(&f.file, url),
+        None => M::code(&f.file),
+    };
+    M::paragraph(out, &format!("{}: {file}", M::esc(lang.t("source"))));
+    if !f.history.rows.is_empty() {
+        history_body::<M>(out, &f.history, lang.t("history_intro_idl"), lang);
+    }
+}
+
+/// A History section's text under its heading: `intro`, the table of the latest versions and
+/// the note on older ones (component and system pages).
+pub(super) fn history_body<M: Markup>(
+    out: &mut String,
+    h: &crate::render::view::history::HistoryView,
+    intro: &str,
+    lang: Lang,
+) {
+    M::paragraph(out, &M::esc(intro));
     let rows: Vec<Vec<String>> = h
         .rows
         .iter()

@@ -1202,6 +1202,12 @@ fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
         idl_files => ctx(&crate::catalog::idl_file_names(v.idl_files)),
         def => ctx(&crate::render::idl_view::definition(catalog, v.name)),
         others => ctx(&uses("sec-others")),
+        idl_file => v.idl_file.as_ref().map(|f| minijinja::context! {
+            file => f.file,
+            source_url => f.source_url,
+            history => ctx(&f.history.rows),
+            older => f.history.older_note(lang),
+        }),
     };
     let own = match v.kind {
         TypeKind::Data => minijinja::context! {
@@ -1392,7 +1398,15 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
                 path: catalog.data_type_page(ti).path("html"),
                 template: "type.html",
                 context: PageContext::Lazy(Box::new(move || {
-                    type_context(site, &view::types::data_type_view(catalog, ti, lang))
+                    type_context(
+                        site,
+                        &view::types::data_type_view(
+                            catalog,
+                            ti,
+                            lang,
+                            site.opts.source_url.as_deref(),
+                        ),
+                    )
                 })),
             });
         }
@@ -1436,7 +1450,15 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
                 path: catalog.interface_page(ii).path("html"),
                 template: "interface.html",
                 context: PageContext::Lazy(Box::new(move || {
-                    type_context(site, &view::types::interface_view(catalog, ii, lang))
+                    type_context(
+                        site,
+                        &view::types::interface_view(
+                            catalog,
+                            ii,
+                            lang,
+                            site.opts.source_url.as_deref(),
+                        ),
+                    )
                 })),
             });
         }

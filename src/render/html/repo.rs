@@ -43,6 +43,47 @@ pub fn source_link_html(url: &str, path: &str) -> String {
     )
 }
 
+/// The "Source" link of a document of the catalogue: into its `[[source]]` repository at the
+/// pinned commit with the source's template, else `template` (`source-url`) with `source`, its
+/// input-relative path.
+pub fn document_source_url(
+    sources: &[crate::model::SourceInfo],
+    origin: Option<&crate::model::Origin>,
+    source: &str,
+    template: Option<&str>,
+) -> Option<String> {
+    match origin {
+        Some(o) => sources
+            .iter()
+            .find(|s| s.name == o.source)
+            .and_then(|s| s.source_url.as_deref())
+            .and_then(|t| pinned_source_url(t, &o.commit, &o.path)),
+        None => template.and_then(|t| source_url(t, source)),
+    }
+}
+
+/// The link of a document's file as a commit of its history had it (`commit`, `path` in the
+/// repository), when the template (its source's, else `template`) has `{commit}`.
+pub fn history_file_url(
+    sources: &[crate::model::SourceInfo],
+    origin: Option<&crate::model::Origin>,
+    template: Option<&str>,
+    commit: &str,
+    path: &str,
+) -> Option<String> {
+    let template = match origin {
+        Some(o) => sources
+            .iter()
+            .find(|s| s.name == o.source)
+            .and_then(|s| s.source_url.as_deref()),
+        None => template,
+    }?;
+    template
+        .contains("{commit}")
+        .then(|| pinned_source_url(template, commit, path))
+        .flatten()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

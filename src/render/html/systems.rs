@@ -43,7 +43,7 @@ impl Site<'_> {
             self.catalog,
             s,
             lang,
-            show_host,
+            (show_host, self.opts.source_url.as_deref()),
             crate::catalog::Output::Html,
         );
         let name = v.name.clone();
@@ -90,6 +90,9 @@ impl Site<'_> {
             orders => ctx(&v.orders),
             groups => ctx(&v.groups),
             all_values => ctx(&v.all_values),
+            source_url => v.source_url,
+            history => ctx(&v.history.rows),
+            history_older => v.history.older_note(lang),
         }
     }
 }

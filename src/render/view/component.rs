@@ -301,15 +301,12 @@ pub fn component_view<'a>(
         vendor: cat.vendors.get(vendor).map(|_| cat.vendor_page(vendor)),
         // A profile of a `[[source]]` repository links into that repository at the pinned
         // commit, with the source's template.
-        source_url: match &c.origin {
-            Some(o) => cat
-                .sources
-                .iter()
-                .find(|s| s.name == o.source)
-                .and_then(|s| s.source_url.as_deref())
-                .and_then(|t| crate::render::html::repo::pinned_source_url(t, &o.commit, &o.path)),
-            None => source_url.and_then(|t| crate::render::html::repo::source_url(t, &c.source)),
-        },
+        source_url: crate::render::html::repo::document_source_url(
+            &cat.sources,
+            c.origin.as_ref(),
+            &c.source,
+            source_url,
+        ),
         document: p
             .basic_info
             .doc
@@ -339,21 +336,14 @@ pub fn component_view<'a>(
             })
             .collect(),
         backups: BackupRow::of(c, lang),
-        history: super::history::HistoryView::of(c, lang, &|commit, path| {
-            // A commit links to its file when the template has `{commit}`: a source's, else
-            // `source-url`.
-            let template = match &c.origin {
-                Some(o) => cat
-                    .sources
-                    .iter()
-                    .find(|s| s.name == o.source)
-                    .and_then(|s| s.source_url.as_deref()),
-                None => source_url,
-            }?;
-            template
-                .contains("{commit}")
-                .then(|| crate::render::html::repo::pinned_source_url(template, commit, path))
-                .flatten()
+        history: super::history::HistoryView::of(&c.history, lang, &|commit, path| {
+            crate::render::html::repo::history_file_url(
+                &cat.sources,
+                c.origin.as_ref(),
+                source_url,
+                commit,
+                path,
+            )
         }),
     }
 }

@@ -1,13 +1,13 @@
-//! The History section of a component page: its latest versions (commits and RTCBuilder
-//! backups, [`crate::catalog::history`]), newest first, versions without a change to the
-//! specification folded into one row. Built once, shown by every output.
+//! The History section of a page: the latest versions of its file (a component profile's commits
+//! and RTCBuilder backups, an RT System profile's commits, [`crate::catalog::history`]), newest
+//! first, versions without a change to the specification folded into one row. Built once,
+//! shown by every output.
 
 use crate::catalog::history::Entry;
-use crate::catalog::Component;
 use crate::i18n::Lang;
 use serde::Serialize;
 
-/// Rows shown on the component page; the whole history is in catalog.json.
+/// Rows shown on a page; the whole history is in catalog.json.
 pub const ROWS: usize = 10;
 
 /// One row of the History section.
@@ -40,11 +40,11 @@ pub struct HistoryView {
 }
 
 impl HistoryView {
-    /// The section of component `c`; `url` makes the link of a commit's file.
-    pub fn of(c: &Component, lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> Self {
+    /// The section of the history `h` (a component's, a system's); `url` makes the link of a
+    /// commit's file (commit, path).
+    pub fn of(h: &[Entry], lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> Self {
         let mut rows = Vec::new();
         let mut i = 0;
-        let h = &c.history;
         while i < h.len() && rows.len() < ROWS {
             if h[i].stands_out() {
                 rows.push(row(&h[i], lang, url));

@@ -135,6 +135,11 @@ pub struct SystemView {
     pub groups: Vec<GroupView>,
     /// Every value of the file as (path, value).
     pub all_values: Vec<KeyValue>,
+    /// Where the "Source" of the summary links: the file in its repository (`source-url`, a
+    /// `[[source]]`'s template at the pinned commit).
+    pub source_url: Option<String>,
+    /// The History section: the latest versions of the file ([`super::history`]).
+    pub history: super::history::HistoryView,
 }
 
 /// Link of a connector end: the instance row, and the port on the component page when the
@@ -188,12 +193,13 @@ fn end_view(
     }
 }
 
-/// Builds the view of system `s` with its links for output `out`.
+/// Builds the view of system `s` with its links for output `out`; `source_url` is the site's
+/// `source-url` template.
 pub fn system_view(
     cat: &Catalog,
     s: &System,
     lang: Lang,
-    show_host: bool,
+    (show_host, source_url): (bool, Option<&str>),
     out: Output,
 ) -> SystemView {
     let here = cat.page_of_system(s);
@@ -498,5 +504,20 @@ pub fn system_view(
             .into_iter()
             .map(|(key, value)| KeyValue { key, value })
             .collect(),
+        source_url: crate::render::html::repo::document_source_url(
+            &cat.sources,
+            s.origin.as_ref(),
+            &s.source,
+            source_url,
+        ),
+        history: super::history::HistoryView::of(&s.history, lang, &|commit, path| {
+            crate::render::html::repo::history_file_url(
+                &cat.sources,
+                s.origin.as_ref(),
+                source_url,
+                commit,
+                path,
+            )
+        }),
     }
 }

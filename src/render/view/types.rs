@@ -46,6 +46,8 @@ pub struct TypeView<'a> {
     pub carried_by: Vec<Linked<'a>>,
     /// The data types whose fields (or typedef) hold this one, linked to their pages.
     pub contained_in: Vec<Linked<'a>>,
+    /// The IDL file defining it: its Source link and latest versions ([`super::idl_file`]).
+    pub idl_file: Option<super::idl_file::IdlFileView>,
 }
 
 /// A use of a type (a data port, an interface of a service port) as a row of the type's page.
@@ -106,13 +108,15 @@ fn role_heading(role: Role, lang: Lang) -> (&'static str, &'static str) {
 }
 
 /// The view of a type entry of either kind: its uses grouped by role (the non-empty groups),
-/// the system connectors carrying a data type, the types holding it.
+/// the system connectors carrying a data type, the types holding it, the IDL file defining it
+/// (`source_url`: the site's `source-url` template).
 fn type_view<'a, U>(
     cat: &'a Catalog,
     t: &'a TypeEntry<U>,
     kind: TypeKind,
     page: &'a Page,
     lang: Lang,
+    source_url: Option<&str>,
 ) -> TypeView<'a>
 where
     U: Uses,
@@ -166,27 +170,42 @@ where
                 )
             })
             .collect(),
+        idl_file: super::idl_file::idl_file_view(cat, &t.name, lang, source_url),
     }
 }
 
-/// The view of data type `ti` ([`Catalog::data_types`]).
-pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
+/// The view of data type `ti` ([`Catalog::data_types`]); `source_url` is the site's
+/// `source-url` template.
+pub fn data_type_view<'a>(
+    cat: &'a Catalog,
+    ti: usize,
+    lang: Lang,
+    source_url: Option<&str>,
+) -> TypeView<'a> {
     type_view(
         cat,
         &cat.data_types[ti],
         TypeKind::Data,
         cat.data_type_page(ti),
         lang,
+        source_url,
     )
 }
 
-/// The view of interface `ii` ([`Catalog::interfaces`]).
-pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
+/// The view of interface `ii` ([`Catalog::interfaces`]); `source_url` is the site's
+/// `source-url` template.
+pub fn interface_view<'a>(
+    cat: &'a Catalog,
+    ii: usize,
+    lang: Lang,
+    source_url: Option<&str>,
+) -> TypeView<'a> {
     type_view(
         cat,
         &cat.interfaces[ii],
         TypeKind::Interface,
         cat.interface_page(ii),
         lang,
+        source_url,
     )
 }

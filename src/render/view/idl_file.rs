@@ -1,0 +1,56 @@
+//! The IDL file a data type or interface is defined in, as its page shows it: the file linked
+//! into its repository ("Source": `source-url`, a `[[source]]`'s template at the pinned commit)
+//! and the file's latest versions ([`crate::catalog::Catalog::idl_history`]), each with the
+//! changes to its types. There is no page per IDL file: the type pages are where a reader
+//! looks at a type, and they already name the file defining it.
+
+use super::history::HistoryView;
+use crate::catalog::Catalog;
+use crate::i18n::Lang;
+
+/// The IDL file section of a type page.
+#[derive(Debug, Clone)]
+pub struct IdlFileView {
+    /// The file's path as the catalogue read it.
+    pub file: String,
+    /// Where the file is in its repository.
+    pub source_url: Option<String>,
+    pub history: HistoryView,
+}
+
+/// The section for the type `name` (any spelling the IDL set resolves); `None` when no IDL
+/// file defines it, or the file has neither a link nor a history to show. `source_url` is the
+/// site's `source-url` template.
+pub fn idl_file_view(
+    cat: &Catalog,
+    name: &str,
+    lang: Lang,
+    source_url: Option<&str>,
+) -> Option<IdlFileView> {
+    let file = cat.idl.find(name)?.file;
+    let url = |commit: &str, path: &str| {
+        crate::render::html::repo::history_file_url(
+            &cat.sources,
+            file.origin.as_ref(),
+            source_url,
+            commit,
+            path,
+        )
+    };
+    let history = cat
+        .idl_history
+        .get(&file.path)
+        .map(|h| HistoryView::of(h, lang, &url))
+        .unwrap_or_default();
+    let source_url = crate::render::html::repo::document_source_url(
+        &cat.sources,
+        file.origin.as_ref(),
+        &file.path,
+        source_url,
+    );
+    (source_url.is_some() || !history.rows.is_empty()).then(|| IdlFileView {
+        file: file.path.clone(),
+        source_url,
+        history,
+    })
+}

@@ -1,0 +1,578 @@
+//! History beyond components (issue 25): each RT System profile's commits compared with the
+//! system diff engine, each IDL file's commits compared type by type, a profile followed to an
+//! older path by its component id when git's `--follow` loses it, and the Source links of
+//! system and IDL pages.
+
+mod common;
+use common::{root, rtcdoc, write};
+use serde_json::Value;
+use std::path::Path;
+
+fn git(dir: &Path, args: &[&str], date: &str) -> bool {
+    std::process::Command::new("git")
+        .args(args)
+        .current_dir(dir)
+        .env("GIT_CONFIG_NOSYSTEM", "1")
+        .env("HOME", dir)
+        .env("GIT_AUTHOR_DATE", date)
+        .env("GIT_COMMITTER_DATE", date)
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
+/// A fresh repository in `d`, or `false` when git does not run.
+fn init(d: &Path) -> bool {
+    std::fs::create_dir_all(d).unwrap();
+    if !git(d, &["--version"], "") {
+        return false;
+    }
+    assert!(git(d, &["init", "-q"], ""));
+    assert!(git(d, &["config", "user.name", "Tester"], ""));
+    assert!(git(d, &["config", "user.email", "t@example.org"], ""));
+    true
+}
+
+/// Commits everything on day `day` of January 2024.
+fn commit(d: &Path, day: u32, subject: &str) {
+    let date = format!("2024-01-{day:02} 10:00:00 +0900");
+    assert!(git(d, &["add", "-A"], &date));
+    assert!(git(d, &["commit", "-q", "-m", subject], &date));
+}
+
+fn fixture(rel: &str) -> String {
+    std::fs::read_to_string(root().join("tests/fixtures").join(rel)).unwrap()
+}
+
+fn with(text: &str, edits: &[(&str, &str)]) -> String {
+    let mut s = text.to_string();
+    for (from, to) in edits {
+        assert!(s.contains(from), "edit `{from}` does not apply");
+        s = s.replacen(from, to, 1);
+    }
+    s
+}
+
+fn build(input: &Path, out: &Path, extra: &[&str]) {
+    let mut args = vec![
+        "build",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let o = rtcdoc(&args, input);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+fn page(dir: &Path, rel: &str) -> String {
+    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
+}
+
+fn codes(entry: &Value) -> Vec<&str> {
+    entry["changes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["code"].as_str().unwrap())
+        .collect()
+}
+
+/// The commits of `systems/NavSystem.xml`, oldest first: the first version, a new version of
+/// an instance's component (DIFF251), white space only, a release (a new system id version).
+fn system_repository(d: &Path) -> bool {
+    if !init(d) {
+        return false;
+    }
+    let v1 = fixture("diff/DIFF251/old/systems/NavSystem.xml");
+    let v2 = fixture("diff/DIFF251/new/systems/NavSystem.xml");
+    let v3 = with(&v2, &[("    <rts:Components", "\n    <rts:Components")]);
+    let v4 = with(
+        &v3,
+        &[("RTSystem:Lab:NavSystem:1.0", "RTSystem:Lab:NavSystem:2.0")],
+    );
+    write(
+        d,
+        "rtcdoc.toml",
+        "source-url = \"https://example.org/lab/blob/{commit}/{path}\"\n",
+    );
+    for (day, (subject, text)) in [
+        ("First system", &v1),
+        ("Upgrade Base", &v2),
+        ("Reformat", &v3),
+        ("Release 2.0", &v4),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        write(d, "systems/NavSystem.xml", text);
+        commit(d, day as u32 + 1, subject);
+    }
+    true
+}
+
+#[test]
+fn a_system_has_its_history_in_every_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !system_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json,html,markdown,doxygen"]);
+    let json: Value = serde_json::from_str(&page(&site, "json/catalog.json")).unwrap();
+    let s = &json["systems"]["systems/NavSystem.xml"];
+    let h = s["history"].as_array().expect("a history");
+    let subjects: Vec<&str> = h.iter().map(|e| e["subject"].as_str().unwrap()).collect();
+    assert_eq!(
+        subjects,
+        ["Release 2.0", "Reformat", "Upgrade Base", "First system"],
+        "{h:#?}"
+    );
+    assert_eq!(h[0]["version"], "2.0");
+    assert_eq!(h[0]["release"], true);
+    assert_eq!(h[1]["version"], "1.0");
+    assert!(h[1]["changes"].as_array().unwrap().is_empty(), "{h:#?}");
+    assert_eq!(codes(&h[2]), ["DIFF251"], "{h:#?}");
+    let upgrade = &h[2]["changes"][0];
+    assert_eq!(upgrade["file"], "systems/NavSystem.xml");
+    assert_eq!(upgrade["oldFile"], "systems/NavSystem.xml");
+    assert_eq!(upgrade["component"], "RTSystem:Lab:NavSystem:1.0");
+    assert_eq!(h[3]["first"], true);
+
+    // Read back with its history.
+    let bytes = std::fs::read(site.join("json/catalog.json")).unwrap();
+    let read = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").unwrap();
+    assert_eq!(
+        serde_json::to_value(&read.catalog.systems[0].history).unwrap(),
+        s["history"]
+    );
+
+    // The system page: a History section, each commit linked to the file at that commit, and
+    // the Source linked.
+    let html = page(&site, "html/systems/navsystem.html");
+    let section = &html[html
+        .find("<section id=\"change-history\">")
+        .expect("a History section")..];
+    let section = &section[..section.find("</section>").unwrap()];
+    let rows: Vec<&str> = section.split("<tr>").skip(2).collect();
+    assert_eq!(rows.len(), 4, "{section}");
+    assert!(rows[0].contains("2.0 (release)"), "{}", rows[0]);
+    assert!(rows[1].contains("1 version without changes"), "{}", rows[1]);
+    assert!(rows[2].contains("Upgrade Base"), "{}", rows[2]);
+    assert!(rows[2].contains("1 warning"), "{}", rows[2]);
+    let commit = h[2]["commit"].as_str().unwrap();
+    assert!(
+        rows[2].contains(&format!(
+            "<a href=\"https://example.org/lab/blob/{commit}/systems/NavSystem.xml\"><code>{}</code></a>",
+            &commit[..12]
+        )),
+        "{}",
+        rows[2]
+    );
+    assert!(
+        rows[3].contains("first version in the history"),
+        "{}",
+        rows[3]
+    );
+    let md = page(&site, "markdown/systems/navsystem.md");
+    assert!(md.contains("## History"), "{md}");
+    assert!(md.contains("Upgrade Base"), "{md}");
+    assert!(md.contains("2.0 (release)"), "{md}");
+    let dox = page(&site, "doxygen/systems/navsystem.dox");
+    assert!(dox.contains("Upgrade Base"), "{dox}");
+    assert!(dox.contains("2.0 (release)"), "{dox}");
+}
+
+fn serve_options(input: &Path) -> rtcdoc::build::BuildOptions {
+    let mut load = rtcdoc::build::LoadOptions {
+        history: 100,
+        history_reader: Some(rtcdoc::history::attach),
+        ..Default::default()
+    };
+    load.skip_dirs.push(input.join("site"));
+    rtcdoc::build::BuildOptions {
+        input: input.to_path_buf(),
+        output: input.join("site"),
+        formats: vec![rtcdoc::render::Format::Html],
+        strict: false,
+        load,
+        site: rtcdoc::render::SiteOptions::default(),
+    }
+}
+
+fn text(ws: &rtcdoc::incremental::Workspace, rel: &str) -> String {
+    String::from_utf8_lossy(&ws.files()[rel]).to_string()
+}
+
+#[test]
+fn serve_shows_the_history_and_updates_it_after_an_edit() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !system_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let arm = common::xml_profile("Arm", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "Arm/RTC.xml", &arm);
+    commit(&repo, 5, "Add Arm");
+    let edited = with(&arm, &[("rtc:name=\"cmd\"", "rtc:name=\"target\"")]);
+    write(&repo, "Arm/RTC.xml", &edited);
+    commit(&repo, 6, "Rename cmd");
+
+    // Opened: the pages carry the history as `build` writes it.
+    let opts = serve_options(&repo);
+    let mut ws = rtcdoc::incremental::Workspace::open(&opts).unwrap();
+    let page = text(&ws, "components/arm.html");
+    assert!(page.contains("<section id=\"change-history\">"), "{page}");
+    assert!(page.contains("Rename cmd"), "{page}");
+    assert!(text(&ws, "systems/navsystem.html").contains("Upgrade Base"));
+
+    // An uncommitted edit: an incremental update, the edited profile's history read again
+    // (a working-copy version first), the system's and the rest kept.
+    let path = repo.join("Arm/RTC.xml");
+    write(
+        &repo,
+        "Arm/RTC.xml",
+        &with(&edited, &[("rtc:name=\"target\"", "rtc:name=\"goal\"")]),
+    );
+    let r = ws.update(std::slice::from_ref(&path)).unwrap();
+    assert!(!r.full, "{r:?}");
+    let h = &ws.catalog().components[0].history;
+    assert_eq!(h.len(), 3, "{h:#?}");
+    assert!(h[0].commit.is_none() && h[0].changes.iter().any(|c| c.severity == "breaking"));
+    assert!(text(&ws, "components/arm.html").contains("working copy (not committed)"));
+    assert_eq!(ws.catalog().systems[0].history.len(), 4);
+    // The same site as a clean start.
+    let clean = rtcdoc::incremental::Workspace::open(&opts).unwrap();
+    assert_eq!(
+        ws.files().keys().collect::<Vec<_>>(),
+        clean.files().keys().collect::<Vec<_>>()
+    );
+    for (k, v) in clean.files() {
+        assert!(ws.files()[k] == *v, "{k} differs from a clean start");
+    }
+    // Only the edited profile's history is read again: a commit to the system file (which
+    // this update is not told of) does not show until the system is reloaded.
+    let system = repo.join("systems/NavSystem.xml");
+    let text = std::fs::read_to_string(&system).unwrap();
+    std::fs::write(&system, format!("{text}\n")).unwrap();
+    write(&repo, "Arm/RTC.xml", &edited); // back as committed
+    commit(&repo, 7, "Touch the system");
+    let r = ws.update(std::slice::from_ref(&path)).unwrap();
+    assert!(!r.full, "{r:?}");
+    assert_eq!(ws.catalog().components[0].history.len(), 2);
+    assert_eq!(ws.catalog().systems[0].history.len(), 4);
+    let r = ws.update(std::slice::from_ref(&system)).unwrap();
+    assert!(r.full, "{r:?}");
+    assert_eq!(ws.catalog().systems[0].history.len(), 5);
+}
+
+/// The commits of `idl/Nav.idl` beside a component using its types, oldest first: the first
+/// version, a member added to a type a port carries, a new type, the new type removed again.
+fn idl_repository(d: &Path) -> bool {
+    if !init(d) {
+        return false;
+    }
+    let v1 = fixture("diff/DIFF131/old/idl/Nav.idl");
+    let v2 = fixture("diff/DIFF131/new/idl/Nav.idl");
+    let v3 = with(
+        &v2,
+        &[(
+            "  struct Time\n",
+            "  struct Battery\n  {\n    double voltage;\n  };\n\n  struct Time\n",
+        )],
+    );
+    write(d, "Nav/RTC.xml", &fixture("diff/DIFF131/old/Nav/RTC.xml"));
+    for (day, (subject, text)) in [
+        ("First IDL", v1),
+        ("Add speed", v2.clone()),
+        ("Add Battery", v3),
+        ("Drop Battery", v2),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        write(d, "idl/Nav.idl", &text);
+        commit(d, day as u32 + 1, subject);
+    }
+    true
+}
+
+/// The page of `name` among the data type pages of `site` (the page says which type it is in
+/// its heading).
+fn type_page(site: &Path, dir: &str, ext: &str, name: &str) -> String {
+    for e in std::fs::read_dir(site.join(dir)).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().and_then(|e| e.to_str()) == Some(ext) {
+            let text = std::fs::read_to_string(&p).unwrap();
+            if text.contains(&format!("<code>{name}</code></h1>"))
+                || text.contains(&format!("# {name}\n"))
+                || text.contains(&format!("# `{name}`\n"))
+                || text.lines().next().is_some_and(|l| l.ends_with(name))
+            {
+                return text;
+            }
+        }
+    }
+    panic!("no page of {name} in {dir}");
+}
+
+#[test]
+fn an_idl_file_has_its_history_on_the_pages_of_its_types() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !idl_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json,html,markdown,doxygen"]);
+    let json: Value = serde_json::from_str(&page(&site, "json/catalog.json")).unwrap();
+    let file = &json["idl"]["files"][0];
+    assert_eq!(file["path"], "idl/Nav.idl");
+    let h = file["history"].as_array().expect("a history");
+    let subjects: Vec<&str> = h.iter().map(|e| e["subject"].as_str().unwrap()).collect();
+    assert_eq!(
+        subjects,
+        ["Drop Battery", "Add Battery", "Add speed", "First IDL"],
+        "{h:#?}"
+    );
+    assert_eq!(codes(&h[0]), ["DIFF140"], "{h:#?}");
+    assert_eq!(h[0]["changes"][0]["path"], "idl/Nav::Battery");
+    assert_eq!(h[0]["changes"][0]["component"], "idl/Nav.idl");
+    assert_eq!(h[0]["changes"][0]["oldFile"], "idl/Nav.idl");
+    assert!(h[0]["changes"][0]["oldLine"].as_u64().unwrap() > 0);
+    assert_eq!(codes(&h[1]), ["DIFF334"], "{h:#?}");
+    // The member added, under the type holding it (no other type holds that one).
+    assert_eq!(codes(&h[2]), ["DIFF131"], "{h:#?}");
+    assert_eq!(
+        h[2]["changes"][0]["path"],
+        "idl/Nav::TimedOdometry/fields/speed"
+    );
+    assert_eq!(h[3]["first"], true);
+
+    // Read back with the history.
+    let bytes = std::fs::read(site.join("json/catalog.json")).unwrap();
+    let read = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").unwrap();
+    assert_eq!(
+        serde_json::to_value(&read.catalog.idl_history["idl/Nav.idl"]).unwrap(),
+        file["history"]
+    );
+
+    // The page of a type the file defines shows the file's history, in every output.
+    let html = type_page(&site, "html/types", "html", "Nav::TimedOdometry");
+    let section = &html[html
+        .find("<section id=\"idl-file\">")
+        .expect("an IDL file section")..];
+    let section = &section[..section.find("</section>").unwrap()];
+    assert!(section.contains("<code>idl/Nav.idl</code>"), "{section}");
+    let rows: Vec<&str> = section.split("<tr>").skip(2).collect();
+    assert_eq!(rows.len(), 4, "{section}");
+    assert!(rows[0].contains("Drop Battery") && rows[0].contains("1 breaking"));
+    assert!(rows[0].contains("<li>idl/Nav::Battery: "), "{}", rows[0]);
+    let iface = type_page(&site, "html/interfaces", "html", "Nav::MapService");
+    assert!(iface.contains("<section id=\"idl-file\">"), "{iface}");
+    let md = type_page(&site, "markdown/types", "md", "Nav::TimedOdometry");
+    assert!(md.contains("## IDL file"), "{md}");
+    assert!(md.contains("Drop Battery"), "{md}");
+    let dox = type_page(&site, "doxygen/types", "dox", "Nav::TimedOdometry");
+    assert!(dox.contains("Drop Battery"), "{dox}");
+}
+
+#[test]
+fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !idl_repository(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    write(
+        &repo,
+        "systems/NavSystem.xml",
+        &fixture("diff/DIFF251/old/systems/NavSystem.xml"),
+    );
+    commit(&repo, 9, "Add the system");
+    let proj = dir.path().join("proj");
+    write(
+        &proj,
+        "rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\nname = \"lab\"\nsource-url = \"https://git.example.org/lab/blob/{commit}/{path}\"\n",
+    );
+    let cache = dir.path().join("cache");
+    let out = dir.path().join("site");
+    let o = rtcdoc(
+        &[
+            "build",
+            "-o",
+            out.to_str().unwrap(),
+            "-f",
+            "json,html,markdown,doxygen",
+            "--cache-dir",
+            cache.to_str().unwrap(),
+        ],
+        &proj,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: Value = serde_json::from_str(&page(&out, "json/catalog.json")).unwrap();
+    let pinned = json["sources"][0]["commit"].as_str().unwrap().to_string();
+    let system = &json["systems"]["lab/systems/NavSystem.xml"];
+    assert_eq!(system["history"][0]["subject"], "Add the system");
+    assert_eq!(
+        json["idl"]["files"][0]["history"][0]["subject"],
+        "Drop Battery"
+    );
+    let system_url = format!("https://git.example.org/lab/blob/{pinned}/systems/NavSystem.xml");
+    let idl_url = format!("https://git.example.org/lab/blob/{pinned}/idl/Nav.idl");
+    let html = page(&out, "html/systems/navsystem.html");
+    assert!(
+        html.contains(&format!(
+            "<dd><a href=\"{system_url}\"><code>lab/systems/NavSystem.xml</code></a></dd>"
+        )),
+        "{html}"
+    );
+    let md = page(&out, "markdown/systems/navsystem.md");
+    assert!(md.contains(&format!("]({system_url})")), "{md}");
+    let dox = page(&out, "doxygen/systems/navsystem.dox");
+    assert!(dox.contains(&system_url), "{dox}");
+    let html = type_page(&out, "html/types", "html", "Nav::TimedOdometry");
+    assert!(
+        html.contains(&format!(
+            "<a href=\"{idl_url}\"><code>lab/idl/Nav.idl</code></a>"
+        )),
+        "{html}"
+    );
+    let md = type_page(&out, "markdown/types", "md", "Nav::TimedOdometry");
+    assert!(md.contains(&format!("]({idl_url})")), "{md}");
+    let dox = type_page(&out, "doxygen/types", "dox", "Nav::TimedOdometry");
+    assert!(dox.contains(&idl_url), "{dox}");
+}
+
+#[test]
+fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "Base/RTC.xml", &base);
+    write(
+        &repo,
+        "Other/RTC.xml",
+        &common::xml_profile("Other", &[("DataInPort", "in", "RTC::TimedLong")]),
+    );
+    commit(&repo, 1, "First");
+    let edited = with(&base, &[("rtc:name=\"cmd\"", "rtc:name=\"command\"")]);
+    write(&repo, "Base/RTC.xml", &edited);
+    commit(&repo, 2, "Edit");
+    // The folder renamed and the file rewritten in one commit: too different for git's rename
+    // detection. Another profile (another component) goes in the same commit.
+    let ports: Vec<(String, String)> = (0..20)
+        .map(|i| (format!("out{i}"), "RTC::TimedDouble".to_string()))
+        .collect();
+    let mut all: Vec<(&str, &str, &str)> = vec![("DataInPort", "command", "RTC::TimedLong")];
+    all.extend(
+        ports
+            .iter()
+            .map(|(n, t)| ("DataOutPort", n.as_str(), t.as_str())),
+    );
+    let rewritten = common::xml_profile("Base", &all);
+    std::fs::remove_dir_all(repo.join("Base")).unwrap();
+    std::fs::remove_dir_all(repo.join("Other")).unwrap();
+    write(&repo, "mobile/base/RTC.xml", &rewritten);
+    commit(&repo, 3, "Reorganise");
+    // git itself loses it.
+    let follow = std::process::Command::new("git")
+        .args([
+            "log",
+            "--follow",
+            "--format=%s",
+            "--",
+            "mobile/base/RTC.xml",
+        ])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&follow.stdout).trim(), "Reorganise");
+
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history");
+    let found: Vec<(&str, &str)> = h
+        .iter()
+        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            ("Reorganise", "mobile/base/RTC.xml"),
+            ("Edit", "Base/RTC.xml"),
+            ("First", "Base/RTC.xml")
+        ],
+        "{h:#?}"
+    );
+    // Compared across the move: the ports added, with both files named.
+    assert_eq!(codes(&h[0]).len(), 20, "{h:#?}");
+    assert!(codes(&h[0]).iter().all(|c| *c == "DIFF301"));
+    assert_eq!(h[0]["changes"][0]["oldFile"], "Base/RTC.xml");
+    assert_eq!(h[2]["first"], true);
+    // `--history 2` stops there.
+    let site = dir.path().join("site2");
+    build(&repo, &site, &["-f", "json", "--history", "2"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .unwrap();
+    assert_eq!(h.len(), 2);
+    assert_eq!(h[1]["subject"], "Edit");
+}
+
+#[test]
+fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "old/Base/RTC.xml", &base);
+    commit(&repo, 1, "First");
+    // A copy at a new path (the original stays), edited later, the original deleted later.
+    write(&repo, "new/Base/RTC.xml", &base);
+    commit(&repo, 2, "Copy");
+    let edited = with(&base, &[("rtc:name=\"cmd\"", "rtc:name=\"command\"")]);
+    write(&repo, "new/Base/RTC.xml", &edited);
+    commit(&repo, 3, "Edit the copy");
+    std::fs::remove_dir_all(repo.join("old")).unwrap();
+    commit(&repo, 4, "Drop the original");
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history");
+    let found: Vec<(&str, &str)> = h
+        .iter()
+        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            ("Edit the copy", "new/Base/RTC.xml"),
+            ("Copy", "new/Base/RTC.xml"),
+            ("First", "old/Base/RTC.xml")
+        ],
+        "{h:#?}"
+    );
+    // The copy changed nothing; the original is the first version.
+    assert!(h[1]["changes"].as_array().unwrap().is_empty(), "{h:#?}");
+    assert_eq!(h[2]["first"], true);
+}
