@@ -513,6 +513,9 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
         "<li>\\subpage {}</li>",
         target(cat, cat.site_page(PageKind::DataFlow))
     );
+    if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
+        d!(out, "<li>\\subpage {}</li>", target(cat, news));
+    }
     d!(out, "</ul>");
     d!(out);
     d!(
@@ -741,7 +744,7 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
 /// Renders every `.dox` page as (relative path, content) plus the Doxyfile, in a fixed order.
 pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String)> {
     let of = facets_of_each(cat);
-    let mut out = other_pages(cat, site_title, lang, false);
+    let mut out = other_pages(cat, site_title, lang, false, None);
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
@@ -774,6 +777,7 @@ fn other_pages(
     site_title: &str,
     lang: Lang,
     show_host: bool,
+    source_url: Option<&str>,
 ) -> Vec<(String, String)> {
     let mut out = vec![
         (
@@ -832,6 +836,7 @@ fn other_pages(
             )
         }));
     }
+    out.extend(super::history_text::pages::<Dox>(cat, source_url, lang));
     let mut inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
     // Same order as before: category pages, then components, then types and interfaces.
     let at = 3 + cat.categories.len();
@@ -849,7 +854,13 @@ impl Renderer for DoxygenRenderer {
     }
     fn render(&self, ctx: &RenderContext<'_>, out: &dyn Sink) -> anyhow::Result<usize> {
         let (cat, lang) = (ctx.catalog, ctx.site.language);
-        let pages = other_pages(cat, &ctx.site.title, lang, ctx.site.show_host_data);
+        let pages = other_pages(
+            cat,
+            &ctx.site.title,
+            lang,
+            ctx.site.show_host_data,
+            ctx.site.source_url.as_deref(),
+        );
         pages
             .par_iter()
             .try_for_each(|(path, text)| out.write(path, text.as_bytes()))?;
