@@ -143,11 +143,21 @@ pub fn since(history: &[Entry]) -> std::collections::BTreeMap<String, String> {
 
 impl super::Catalog {
     /// Fills in what the components' histories give once they are read: each component's
-    /// [`since`] (only for its elements that still exist) and the history pages.
+    /// [`since`] (only for its elements that still exist; the interfaces of a service port added
+    /// whole take the port's) and the history pages.
     pub fn history_attached(&mut self) {
         for c in &mut self.components {
             let mut since = since(&c.history);
             let keys = ElementKeys::of(&c.profile);
+            // The interfaces of a service port added whole came with it (the diff names the
+            // port only).
+            for (port, interfaces) in keys.service_ports.iter().zip(&keys.interfaces) {
+                if let Some(v) = since.get(port).cloned() {
+                    for i in interfaces {
+                        since.entry(i.clone()).or_insert_with(|| v.clone());
+                    }
+                }
+            }
             since.retain(|k, _| keys.all().any(|x| x == k));
             c.since = since;
         }
