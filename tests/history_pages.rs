@@ -76,11 +76,18 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         format!("<section id=\"v-{}\"", ids[3]),
     ]
     .iter()
-    .map(|s| html.find(s.as_str()).unwrap_or_else(|| panic!("no {s} in {html}")))
+    .map(|s| {
+        html.find(s.as_str())
+            .unwrap_or_else(|| panic!("no {s} in {html}"))
+    })
     .collect();
     assert!(order.windows(2).all(|w| w[0] < w[1]), "{order:?}");
     assert!(!html.contains(&format!("v-{}", ids[1])), "folded: {html}");
-    let rename = between(&html, &format!("<section id=\"v-{}\"", ids[0]), "</section>");
+    let rename = between(
+        &html,
+        &format!("<section id=\"v-{}\"", ids[0]),
+        "</section>",
+    );
     // Every change with its code, severity, path and message; DIFF208 among them.
     for s in [
         "<span class=\"sev breaking\">breaking</span></th><td data-label=\"Code\"><code>DIFF102</code></td><td data-label=\"Where\"><code>dataPorts/cmd</code></td><td data-label=\"Message\">data port `cmd` was removed</td>",
@@ -99,7 +106,11 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         &ids[0][..12.min(ids[0].len())]
     );
     assert!(rename.contains(&link), "{rename}");
-    let release = between(&html, &format!("<section id=\"v-{}\"", ids[2]), "</section>");
+    let release = between(
+        &html,
+        &format!("<section id=\"v-{}\"", ids[2]),
+        "</section>",
+    );
     assert!(
         release.contains("<span class=\"release\">release</span>"),
         "{release}"
@@ -112,36 +123,52 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
     for code in ["DIFF301", "DIFF303", "DIFF306"] {
         assert!(release.contains(code), "{code}: {release}");
     }
-    let first = between(&html, &format!("<section id=\"v-{}\"", ids[3]), "</section>");
+    let first = between(
+        &html,
+        &format!("<section id=\"v-{}\"", ids[3]),
+        "</section>",
+    );
     assert!(first.contains("first version in the history"), "{first}");
     assert!(!first.contains("<table"), "{first}");
 
     // The component page's History section links to it.
     let comp = page(&site, "html/components/base.html");
     assert!(
-        comp.contains("<p><a href=\"../history/base.html\">The whole history, with every change</a></p>"),
+        comp.contains(
+            "<p><a href=\"../history/base.html\">The whole history, with every change</a></p>"
+        ),
         "{comp}"
     );
 
     let md = page(&site, "markdown/history/base.md");
     assert!(md.starts_with("# History of Base\n"), "{md}");
     assert!(
-        md.contains(&format!("<a id=\"v-{}\"></a>\n\n## 1.1.0 · {}", ids[0], ids[0])),
+        md.contains(&format!(
+            "<a id=\"v-{}\"></a>\n\n## 1.1.0 · {}",
+            ids[0], ids[0]
+        )),
         "{md}"
     );
     assert!(
         md.contains("| breaking | DIFF102 | dataPorts/cmd | data port `cmd` was removed |"),
         "{md}"
     );
-    assert!(md.contains("| warning | DIFF208 | basicInfo/version |"), "{md}");
-    assert!(md.contains("A release: the version string changed."), "{md}");
+    assert!(
+        md.contains("| warning | DIFF208 | basicInfo/version |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("A release: the version string changed."),
+        "{md}"
+    );
     assert!(
         md.contains("1 version without changes to the specification"),
         "{md}"
     );
     let summary = page(&site, "markdown/SUMMARY.md");
     assert!(
-        summary.contains("- [What\\'s new](whats-new.md)\n    - [History of Base](history/base.md)"),
+        summary
+            .contains("- [What\\'s new](whats-new.md)\n    - [History of Base](history/base.md)"),
         "{summary}"
     );
     assert!(
@@ -149,7 +176,10 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         "the Markdown component page links its history"
     );
     let dox = page(&site, "doxygen/history/base.dox");
-    assert!(dox.contains("\\page rtc_hist_base History of Base"), "{dox}");
+    assert!(
+        dox.contains("\\page rtc_hist_base History of Base"),
+        "{dox}"
+    );
     assert!(
         dox.contains(&format!("\\section rtc_hist_base__v_{} ", ids[0])),
         "{dox}"
@@ -199,7 +229,10 @@ fn since_notes_name_the_version_that_added_each_element() {
             "{name}: {html}"
         );
     }
-    assert!(html.contains(&format!("<code>svc</code> {badge}")), "{html}");
+    assert!(
+        html.contains(&format!("<code>svc</code> {badge}")),
+        "{html}"
+    );
     assert!(html.contains("<code>max_speed</code></th>"), "{html}");
     assert_eq!(html.matches(badge).count(), 5, "{html}");
     let md = page(&site, "markdown/components/base.md");
@@ -229,17 +262,27 @@ fn whats_new_lists_every_change_newest_first_with_a_filter() {
     let ids = commits(&repo);
     let html = page(&site, "html/whats-new.html");
     // Two days with changes, newest first; the reformatting and the first version have none.
-    let d4 = html.find("<section class=\"news-day\" id=\"d-2024-01-04\">").expect("day 4");
-    let d2 = html.find("<section class=\"news-day\" id=\"d-2024-01-02\">").expect("day 2");
+    let d4 = html
+        .find("<section class=\"news-day\" id=\"d-2024-01-04\">")
+        .expect("day 4");
+    let d2 = html
+        .find("<section class=\"news-day\" id=\"d-2024-01-02\">")
+        .expect("day 2");
     assert!(d4 < d2);
     assert!(!html.contains("d-2024-01-03") && !html.contains("d-2024-01-01"));
     let rows: Vec<&str> = html.split("<tr data-sev=").skip(1).collect();
     assert_eq!(rows.len(), 3 + 4, "{html}");
     assert!(rows[..3].iter().all(|r| r.contains(&ids[0])), "{html}");
-    let breaking = rows.iter().find(|r| r.contains("DIFF102")).expect("the rename");
+    let breaking = rows
+        .iter()
+        .find(|r| r.contains("DIFF102"))
+        .expect("the rename");
     assert!(breaking.starts_with("\"breaking\" data-source=\"\" data-category=\"Mobile\">"));
     assert!(
-        breaking.contains(&format!("<a href=\"history/base.html#v-{}\">Base</a>", ids[0])),
+        breaking.contains(&format!(
+            "<a href=\"history/base.html#v-{}\">Base</a>",
+            ids[0]
+        )),
         "{breaking}"
     );
     // The filter (the page reads whole without it) and its script, which the CSP allows.
@@ -251,15 +294,28 @@ fn whats_new_lists_every_change_newest_first_with_a_filter() {
     ] {
         assert!(html.contains(s), "no {s}");
     }
-    assert!(!html.contains("f-nsource"), "no source filter without [[source]]");
+    assert!(
+        !html.contains("f-nsource"),
+        "no source filter without [[source]]"
+    );
     assert!(page(&site, "html/filter.js").contains("news-filter"));
     // Every page's navigation links it.
-    for p in ["html/index.html", "html/components/base.html", "html/history/base.html"] {
-        assert!(page(&site, p).contains("whats-new.html\">What&#39;s new</a></li>"), "{p}");
+    for p in [
+        "html/index.html",
+        "html/components/base.html",
+        "html/history/base.html",
+    ] {
+        assert!(
+            page(&site, p).contains("whats-new.html\">What&#39;s new</a></li>"),
+            "{p}"
+        );
     }
 
     let md = page(&site, "markdown/whats-new.md");
-    let (m4, m2) = (md.find("## 2024-01-04").unwrap(), md.find("## 2024-01-02").unwrap());
+    let (m4, m2) = (
+        md.find("## 2024-01-04").unwrap(),
+        md.find("## 2024-01-02").unwrap(),
+    );
     assert!(m4 < m2, "{md}");
     assert!(
         md.contains(&format!(
@@ -318,11 +374,17 @@ fn the_atom_feed_is_valid_stable_and_only_with_a_base_url() {
             .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     }
-    assert!(feed.starts_with("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<feed xmlns=\"http://www.w3.org/2005/Atom\""));
-    assert!(feed.contains("<id>https://example.org/docs/feed.xml</id>"), "{feed}");
+    assert!(feed.starts_with(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<feed xmlns=\"http://www.w3.org/2005/Atom\""
+    ));
+    assert!(
+        feed.contains("<id>https://example.org/docs/feed.xml</id>"),
+        "{feed}"
+    );
     // The newest commit's date, never the build time.
     assert!(
-        feed.contains("</generator>\n  <entry>") && feed.contains("<updated>2024-01-04T10:00:00+09:00</updated>\n  <author>"),
+        feed.contains("</generator>\n  <entry>")
+            && feed.contains("<updated>2024-01-04T10:00:00+09:00</updated>\n  <author>"),
         "{feed}"
     );
     // One entry per version with changes, newest first, each with its page anchor as id.
@@ -340,7 +402,8 @@ fn the_atom_feed_is_valid_stable_and_only_with_a_base_url() {
     assert!(entries[0].contains("[breaking] DIFF102 dataPorts/cmd: data port `cmd` was removed"));
     assert!(entries[1].contains(&id(2)), "{}", entries[1]);
     assert!(
-        entries[1].contains("<title>Base 1.1.0 (release): Release 1.1.0 &lt;with status&gt;</title>"),
+        entries[1]
+            .contains("<title>Base 1.1.0 (release): Release 1.1.0 &lt;with status&gt;</title>"),
         "{}",
         entries[1]
     );
@@ -352,6 +415,28 @@ fn the_atom_feed_is_valid_stable_and_only_with_a_base_url() {
     let again = dir.path().join("again");
     build(&repo, &again, &["--base-url", "https://example.org/docs/"]);
     assert!(tree(&site) == tree(&again), "two builds differ");
+    // The native component page (since badges, the history link, the feed link, What's new in
+    // the navigation) is byte for byte what the templates write.
+    let theme = dir.path().join("theme");
+    write(
+        &theme,
+        "component.html",
+        &std::fs::read_to_string(common::root().join("themes/default/component.html")).unwrap(),
+    );
+    let templated = dir.path().join("templated");
+    build(
+        &repo,
+        &templated,
+        &[
+            "--base-url",
+            "https://example.org/docs/",
+            "--theme",
+            theme.to_str().unwrap(),
+        ],
+    );
+    let native = page(&site, "html/components/base.html");
+    assert!(native.contains("<span class=\"since\">") && native.contains(link));
+    assert_eq!(native, page(&templated, "html/components/base.html"));
     // Without a base URL: no feed, no link.
     let plain = dir.path().join("plain");
     build(&repo, &plain, &[]);
