@@ -298,6 +298,37 @@ fn every_page_kind_passes_axe_and_fits_a_phone_and_search_ranks_and_opens() {
     );
 }
 
+/// The history pages (What's new with its filter, a component's whole history, the component
+/// page with its "since" badges) of a site built from a git repository with a history.
+#[test]
+fn the_history_pages_pass_axe_and_fit_a_phone() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let out = dir.path().join("site");
+    let o = common::rtcdoc(
+        &["build", repo.to_str().unwrap(), "-o", out.to_str().unwrap()],
+        &repo,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(broken_links(&out).is_empty(), "{:?}", broken_links(&out));
+    let pages = [
+        "whats-new.html",
+        "history/base.html",
+        "components/base.html",
+    ];
+    let Some(report) = audit(&out, &[], &pages) else {
+        return;
+    };
+    assert_audit(&report, &pages);
+}
+
 #[test]
 fn the_corpus_site_passes_axe_and_fits_a_phone() {
     if !chromium() {
