@@ -531,6 +531,7 @@ pub fn build_with(opts: &BuildOptions, progress: &dyn Progress) -> Result<(Loade
     if let Some(read_history) = load_opts.history_reader.filter(|_| load_opts.history > 0) {
         progress.stage("reading the history", 0);
         read_history(&mut loaded.catalog, &loaded.roots, &load_opts);
+        loaded.catalog.history_attached();
     }
     // The `rtcdoc check` rules run on every build; their findings join the catalogue's
     // diagnostics so they appear in the JSON output and the diagnostics page.

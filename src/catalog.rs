@@ -76,6 +76,11 @@ pub struct Component {
     /// empty when the history is off or nothing records one.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub history: Vec<history::Entry>,
+    /// When each port, service interface and configuration parameter younger than the oldest
+    /// version of the history was added ([`history::since`]): keyed by the path its `rtcdoc
+    /// diff` change names (`dataPorts/status`), the version (else the date) that added it.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub since: BTreeMap<String, String>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
 }
@@ -649,6 +654,11 @@ pub enum PageKind {
     System,
     /// Which groups of components can feed which ([`dataflow`]).
     DataFlow,
+    /// Every change of every component's history, newest first (only when some component has
+    /// a history).
+    WhatsNew,
+    /// The whole history of one component (only for a component with a history).
+    ComponentHistory,
 }
 
 /// One page of the documentation: the same list for every output (HTML, Markdown, Doxygen),
@@ -716,8 +726,10 @@ impl Page {
 
 /// Where each kind of entry page starts in [`Catalog::pages`]: entries are listed in the
 /// order of their vectors, so the page of entry `i` is `pages[start + i]`.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Default)]
 struct PageStarts {
+    /// The history page of each component (its position in the page list), if it has one.
+    history: Vec<Option<usize>>,
     component: usize,
     data_type: usize,
     interface: usize,
@@ -943,6 +955,7 @@ impl Catalog {
                 readme: None,
                 backups: Vec::new(),
                 history: Vec::new(),
+                since: BTreeMap::new(),
                 origin: None,
                 source: l.source,
                 format: l.format,
@@ -1350,7 +1363,8 @@ impl Catalog {
         fn facet(f: &Facet) -> (&str, &str, std::borrow::Cow<'_, str>) {
             (&f.name, &f.slug, f.name.as_str().into())
         }
-        let starts = PageStarts {
+        let mut starts = PageStarts {
+            history: Vec::new(),
             component: section(
                 &mut pages,
                 None,
@@ -1402,8 +1416,38 @@ impl Catalog {
                     .map(|s| (s.source.as_str(), s.slug.as_str(), s.profile.name().into())),
             ),
         };
+        // The history pages: the catalogue's What's new, then one per component with a
+        // history, under `history/` (one folder down, as every entry page).
+        let mut history = vec![None; self.components.len()];
+        if self.components.iter().any(|c| !c.history.is_empty()) {
+            pages.push(site(PageKind::WhatsNew, "whats-new"));
+            for (ci, c) in self.components.iter().enumerate() {
+                if !c.history.is_empty() {
+                    history[ci] = Some(pages.len());
+                    pages.push(Page {
+                        kind: PageKind::ComponentHistory,
+                        id: c.id.to_string(),
+                        stem: format!("history/{}", c.slug),
+                        title: c.display_name().into_owned(),
+                    });
+                }
+            }
+        }
         self.pages = pages;
+        starts.history = history;
         self.page_starts = starts;
+    }
+
+    /// Recomputes the page list after the components' histories were filled in (the history
+    /// pages exist only for components with a history).
+    pub fn index_history_pages(&mut self) {
+        self.index_pages();
+    }
+
+    /// The history page of component `ci`, when it has a history.
+    pub fn history_page(&self, ci: usize) -> Option<&Page> {
+        let at = (*self.page_starts.history.get(ci)?)?;
+        self.pages.get(at)
     }
 
     /// Every page of the documentation, in a fixed order: the site's own pages (index, search,

@@ -207,7 +207,8 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # Title of the catalogue (index page, book title, Doxygen project name).
 # title = "RT-Component catalogue"
 
-# URL the site is published at; used for absolute links in sitemap.xml and the 404 page.
+# URL the site is published at; used for absolute links in sitemap.xml, the Atom feed of the
+# history (feed.xml) and the 404 page.
 # base-url = "https://example.org/components/"
 
 # Link "Source" on component pages to the file in its repository (and a component README's
@@ -311,7 +312,7 @@ fn template_ja(idl: Option<&crate::init::Detected>) -> String {
 # カタログのタイトル (索引ページ、ブックのタイトル、Doxygen のプロジェクト名)。
 # title = "RTコンポーネント カタログ"
 
-# サイトを公開する URL。sitemap.xml と 404 ページの絶対リンクに使います。
+# サイトを公開する URL。sitemap.xml、履歴の Atom フィード (feed.xml)、404 ページの絶対リンクに使います。
 # base-url = "https://example.org/components/"
 
 # コンポーネントページの「ソース」を、リポジトリにあるそのファイルへのリンクにします (コンポーネントの

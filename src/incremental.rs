@@ -209,12 +209,21 @@ fn affected(before: &Before, new: &Catalog, changed: &[String]) -> Option<BTreeS
     .into_iter()
     .map(|k| new.site_page(k).path("html"))
     .chain(["search-index.js", "sitemap.xml"].map(String::from))
+    .chain(
+        new.pages()
+            .iter()
+            .filter(|p| p.kind == PageKind::WhatsNew)
+            .map(|p| p.path("html")),
+    )
     .collect();
     for src in changed {
         let ci = new.components.iter().position(|c| &c.source == src)?;
         let comp = &new.components[ci];
         let (old_sig, old_peers) = before.changed.get(src)?;
         set.insert(new.component_page(ci).path("html"));
+        if let Some(h) = new.history_page(ci) {
+            set.insert(h.path("html"));
+        }
         if *old_sig != link_signature(comp) {
             // Its ports or name changed: every page listing them, before and after.
             set.extend(old_peers.iter().cloned());
@@ -231,6 +240,7 @@ impl Workspace {
         // The history, as `build` reads it.
         if let Some(read_history) = opts.load.history_reader.filter(|_| opts.load.history > 0) {
             read_history(&mut loaded.catalog, &loaded.roots, &opts.load);
+            loaded.catalog.history_attached();
         }
         let input_root = crate::build::input_root(&opts.input);
         let mut warnings: BTreeMap<String, Vec<Diagnostic>> = BTreeMap::new();
@@ -419,6 +429,7 @@ impl Workspace {
         if self.opts.load.history_reader.is_some() {
             let edited: BTreeSet<String> = touched.iter().cloned().collect();
             crate::history::attach_some(&mut catalog, &self.roots, &self.opts.load, &edited);
+            catalog.history_attached();
         }
         add_check_diagnostics(&mut catalog);
         self.catalog = catalog;

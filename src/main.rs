@@ -144,7 +144,8 @@ struct SiteArgs {
     /// Title of the catalogue.
     #[arg(long)]
     title: Option<String>,
-    /// URL the site is published at (sitemap.xml is written only with it).
+    /// URL the site is published at (sitemap.xml and the history's Atom feed feed.xml are
+    /// written only with it).
     #[arg(long, value_name = "URL")]
     base_url: Option<String>,
     /// Theme directory overriding built-in templates and assets file by file.

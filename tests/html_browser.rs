@@ -161,6 +161,20 @@ fn no_payload_of_the_xss_fixture_is_live_in_the_browser() {
 /// `site`: one page of each kind, and `pages`. Needs node and its `npm ci` install (done by
 /// `.ci/run`). `None`, with a "skipped" message, when either is missing.
 fn audit(site: &Path, searches: &[&str], pages: &[&str]) -> Option<serde_json::Value> {
+    audit_with(site, searches, pages, &[])
+}
+
+/// [`audit`] of `pages`, with What's new's `filters` (`SELECT_ID=VALUE`) tried one by one.
+fn audit_filtering(site: &Path, pages: &[&str], filters: &[&str]) -> Option<serde_json::Value> {
+    audit_with(site, &[], pages, filters)
+}
+
+fn audit_with(
+    site: &Path,
+    searches: &[&str],
+    pages: &[&str],
+    filters: &[&str],
+) -> Option<serde_json::Value> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
     if !dir.join("node_modules/axe-core").is_dir()
         || !dir.join("node_modules/puppeteer-core").is_dir()
@@ -175,6 +189,9 @@ fn audit(site: &Path, searches: &[&str], pages: &[&str]) -> Option<serde_json::V
     }
     for p in pages {
         cmd.arg("--page").arg(p);
+    }
+    for f in filters {
+        cmd.arg("--filter").arg(f);
     }
     let o = common::run_browser_harness(&mut cmd)?;
     assert!(
@@ -295,6 +312,69 @@ fn every_page_kind_passes_axe_and_fits_a_phone_and_search_ranks_and_opens() {
     assert!(
         audited.iter().filter(|p| p["page"] == readme_page).count() == 3,
         "{readme_page} audited in every mode"
+    );
+}
+
+/// The history pages (What's new with its filter, a component's whole history, the component
+/// page with its "since" badges) of a site built from a git repository with a history.
+#[test]
+fn the_history_pages_pass_axe_and_fit_a_phone() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let out = dir.path().join("site");
+    let o = common::rtcdoc(
+        &["build", repo.to_str().unwrap(), "-o", out.to_str().unwrap()],
+        &repo,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(broken_links(&out).is_empty(), "{:?}", broken_links(&out));
+    let pages = [
+        "whats-new.html",
+        "history/base.html",
+        "components/base.html",
+    ];
+    let Some(report) = audit_filtering(
+        &out,
+        &pages,
+        &[
+            "f-nsev=breaking",
+            "f-nsev=info",
+            "f-nsev=",
+            "f-ncategory=Mobile",
+        ],
+    ) else {
+        return;
+    };
+    assert_audit(&report, &pages);
+    // The filter hides the rows it rules out, and a day left without rows (7 changes over two
+    // days: the rename's breaking, warning and info; the release's four infos).
+    let shown: Vec<(String, u64, u64)> = report["filters"]
+        .as_array()
+        .expect("filters")
+        .iter()
+        .map(|f| {
+            (
+                f["filter"].as_str().unwrap_or("").to_string(),
+                f["rows"].as_u64().unwrap_or(0),
+                f["days"].as_u64().unwrap_or(0),
+            )
+        })
+        .collect();
+    assert_eq!(
+        shown,
+        [
+            ("f-nsev=breaking".to_string(), 1, 1),
+            ("f-nsev=info".to_string(), 5, 2),
+            ("f-nsev=".to_string(), 7, 2),
+            ("f-ncategory=Mobile".to_string(), 7, 2),
+        ]
     );
 }
 

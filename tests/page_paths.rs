@@ -30,6 +30,8 @@ fn no_page_path_is_spelled_outside_the_page_module() {
         "\"vendors/",
         "\"systems/",
         "\"diagnostics/",
+        "\"history/",
+        "\"whats-new",
         "}components/",
         "}types/",
         ".html#",

@@ -100,3 +100,144 @@ pub struct Change {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub old_column: Option<u32>,
 }
+
+/// The `rtcdoc diff` codes of an element added to a component (`crate::diff::codes`: a port, a
+/// provided or required interface, a configuration parameter), whose change path names it.
+/// Spelled here because the catalogue comes before the diff engine; `tests/history_pages.rs`
+/// holds them equal.
+pub const ADDED_CODES: [&str; 4] = ["DIFF301", "DIFF302", "DIFF211", "DIFF303"];
+
+/// What names a version in a "since" note: its version string, else its date (the day).
+pub fn version_or_date(e: &Entry) -> Option<String> {
+    e.version
+        .as_deref()
+        .map(str::trim)
+        .filter(|v| !v.is_empty())
+        .map(str::to_string)
+        .or_else(|| {
+            e.date
+                .as_deref()
+                .map(|d| d.get(..10).unwrap_or(d).to_string())
+        })
+}
+
+/// When each element of a history (newest first) was added: the change path of every element
+/// an entry after the oldest one added, with the version (else the date) of the newest such
+/// entry. An element added, removed and added again is dated by its last addition.
+pub fn since(history: &[Entry]) -> std::collections::BTreeMap<String, String> {
+    let mut out = std::collections::BTreeMap::new();
+    for e in history.iter().rev().filter(|e| !e.first) {
+        let Some(label) = version_or_date(e) else {
+            continue;
+        };
+        for c in e
+            .changes
+            .iter()
+            .filter(|c| ADDED_CODES.contains(&c.code.as_str()))
+        {
+            out.insert(c.path.clone(), label.clone());
+        }
+    }
+    out
+}
+
+impl super::Catalog {
+    /// Fills in what the components' histories give once they are read: each component's
+    /// [`since`] (only for its elements that still exist; the interfaces of a service port added
+    /// whole take the port's) and the history pages.
+    pub fn history_attached(&mut self) {
+        for c in &mut self.components {
+            let mut since = since(&c.history);
+            let keys = ElementKeys::of(&c.profile);
+            // The interfaces of a service port added whole came with it (the diff names the
+            // port only).
+            for (port, interfaces) in keys.service_ports.iter().zip(&keys.interfaces) {
+                if let Some(v) = since.get(port).cloned() {
+                    for i in interfaces {
+                        since.entry(i.clone()).or_insert_with(|| v.clone());
+                    }
+                }
+            }
+            since.retain(|k, _| keys.all().any(|x| x == k));
+            c.since = since;
+        }
+        self.index_history_pages();
+    }
+}
+
+/// The labels `rtcdoc diff` keys the items of a list by (ports, interfaces, parameters): the
+/// trimmed name (`(unnamed)` when blank), and `name#2`, `name#3`, … for a repeated one.
+pub fn item_labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {
+    let mut seen: std::collections::BTreeMap<String, usize> = std::collections::BTreeMap::new();
+    names
+        .map(|n| {
+            let base = n
+                .map(str::trim)
+                .filter(|s| !s.is_empty())
+                .unwrap_or("(unnamed)")
+                .to_string();
+            let k = seen.entry(base.clone()).or_default();
+            *k += 1;
+            if *k > 1 {
+                format!("{base}#{k}")
+            } else {
+                base
+            }
+        })
+        .collect()
+}
+
+/// The change path of each element a "since" note can be on, in profile order: what
+/// [`since`] keys by (`dataPorts/status`, `servicePorts/svc/interfaces/map`,
+/// `configurations/gain`).
+#[derive(Debug, Clone, Default)]
+pub struct ElementKeys {
+    pub data_ports: Vec<String>,
+    pub service_ports: Vec<String>,
+    /// One per service interface, per service port.
+    pub interfaces: Vec<Vec<String>>,
+    pub configurations: Vec<String>,
+}
+
+impl ElementKeys {
+    pub fn of(p: &crate::model::Profile) -> ElementKeys {
+        let under = |list: &str, labels: Vec<String>| -> Vec<String> {
+            labels.into_iter().map(|l| format!("{list}/{l}")).collect()
+        };
+        let service_ports = under(
+            "servicePorts",
+            item_labels(p.service_ports.iter().map(|s| s.name.as_deref())),
+        );
+        let interfaces = p
+            .service_ports
+            .iter()
+            .zip(&service_ports)
+            .map(|(sp, key)| {
+                under(
+                    &format!("{key}/interfaces"),
+                    item_labels(sp.interfaces.iter().map(|i| i.name.as_deref())),
+                )
+            })
+            .collect();
+        ElementKeys {
+            data_ports: under(
+                "dataPorts",
+                item_labels(p.data_ports.iter().map(|d| d.name.as_deref())),
+            ),
+            service_ports,
+            interfaces,
+            configurations: under(
+                "configurations",
+                item_labels(p.configurations().iter().map(|c| c.name.as_deref())),
+            ),
+        }
+    }
+
+    fn all(&self) -> impl Iterator<Item = &String> {
+        self.data_ports
+            .iter()
+            .chain(&self.service_ports)
+            .chain(self.interfaces.iter().flatten())
+            .chain(&self.configurations)
+    }
+}

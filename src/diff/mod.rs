@@ -737,23 +737,7 @@ fn place(p: &[String]) -> (Place, bool) {
 /// The label of each item: its name (`(unnamed)` when empty), `name#2` for the second with the
 /// same name. The typed lookups use the same labels.
 fn labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {
-    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
-    names
-        .map(|n| {
-            let base = n
-                .map(str::trim)
-                .filter(|s| !s.is_empty())
-                .unwrap_or("(unnamed)")
-                .to_string();
-            let k = seen.entry(base.clone()).or_default();
-            *k += 1;
-            if *k > 1 {
-                format!("{base}#{k}")
-            } else {
-                base
-            }
-        })
-        .collect()
+    crate::catalog::history::item_labels(names)
 }
 
 /// A hash of a profile's values without positions: equal for copies of one profile (a match

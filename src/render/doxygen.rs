@@ -513,6 +513,9 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
         "<li>\\subpage {}</li>",
         target(cat, cat.site_page(PageKind::DataFlow))
     );
+    if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
+        d!(out, "<li>\\subpage {}</li>", target(cat, news));
+    }
     d!(out, "</ul>");
     d!(out);
     d!(
@@ -832,6 +835,7 @@ fn other_pages(
             )
         }));
     }
+    out.extend(super::history_text::pages::<Dox>(cat, site.1, lang));
     let mut inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
     // Same order as before: category pages, then components, then types and interfaces.
     let at = 3 + cat.categories.len();

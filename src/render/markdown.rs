@@ -442,6 +442,14 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
         )
     );
     w!(out);
+    if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
+        w!(
+            out,
+            "{}",
+            link(lang.t("whats_new"), &cat.href(page, news, None, MD))
+        );
+        w!(out);
+    }
     heading(&mut out, 2, "sec-components", lang.t("components"));
     for (fi, f) in cat.categories.iter().enumerate() {
         w!(
@@ -663,6 +671,16 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
         lang.t("dataflow"),
         index(PageKind::DataFlow),
     );
+    // What's new, with each component's history under it.
+    if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
+        summary_item(&mut out, cat, 0, lang.t("whats_new"), news);
+        for ci in 0..cat.components.len() {
+            if let Some(page) = cat.history_page(ci) {
+                let text = lang.t("history_page_title").replace("{name}", &page.title);
+                summary_item(&mut out, cat, 1, &text, page);
+            }
+        }
+    }
     out
 }
 
@@ -874,6 +892,7 @@ fn other_pages(
             std::iter::once((path, text)).chain(svg.map(|s| (svg_path, s)))
         }));
     }
+    out.extend(super::history_text::pages::<Md>(cat, site.1, lang));
     out
 }
 

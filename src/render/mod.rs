@@ -5,6 +5,7 @@
 
 pub mod doxygen;
 pub mod facts;
+pub mod history_text;
 pub mod html;
 pub mod idl_view;
 pub mod json;

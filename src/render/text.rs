@@ -387,7 +387,7 @@ pub fn component_sections<M: Markup>(
         );
     }
 
-    history_section::<M>(out, page, &v.history, lang);
+    history_section::<M>(out, cat, page, (&v.history, v.history_page), lang);
 
     if !v.extras.is_empty() {
         M::heading(out, page, 2, "sec-extra", lang.t("extra"));
@@ -406,6 +406,19 @@ pub fn component_sections<M: Markup>(
     }
 }
 
+/// A name with its "since" note (the version that added it): `status (since 1.1.0)`.
+fn since_text(name: &str, since: Option<&str>, lang: Lang) -> String {
+    match since {
+        Some(v) => format!("{name} ({})", lang.t("since").replace("{v}", v)),
+        None => name.to_string(),
+    }
+}
+
+/// [`since_text`], escaped for a table cell.
+fn named<M: Markup>(name: &str, since: Option<&str>, lang: Lang) -> String {
+    M::esc(&since_text(name, since, lang))
+}
+
 fn data_ports_section<M: Markup>(
     out: &mut String,
     cat: &Catalog,
@@ -422,7 +435,7 @@ fn data_ports_section<M: Markup>(
         .iter()
         .map(|dp| {
             vec![
-                M::anchored(page, dp.anchor, &M::esc(dp.name)),
+                M::anchored(page, dp.anchor, &named::<M>(dp.name, dp.since, lang)),
                 M::esc(&dp.direction.label),
                 dp.type_
                     .as_ref()
@@ -468,7 +481,11 @@ fn service_ports_section<M: Markup>(
             page,
             3,
             sp.anchor,
-            if sp.name.is_empty() { "?" } else { sp.name },
+            &since_text(
+                if sp.name.is_empty() { "?" } else { sp.name },
+                sp.since,
+                lang,
+            ),
         );
         if !sp.details.is_empty() {
             facts_table::<M>(out, lang, &sp.details);
@@ -481,7 +498,7 @@ fn service_ports_section<M: Markup>(
             .iter()
             .map(|i| {
                 vec![
-                    M::anchored(page, i.anchor, &M::esc(i.name)),
+                    M::anchored(page, i.anchor, &named::<M>(i.name, i.since, lang)),
                     M::esc(&i.direction.label),
                     i.type_
                         .as_ref()
@@ -520,7 +537,7 @@ fn configuration_section<M: Markup>(out: &mut String, v: &ComponentView<'_>, lan
         .iter()
         .map(|cf| {
             vec![
-                M::anchored(page, cf.anchor, &M::esc(cf.name)),
+                M::anchored(page, cf.anchor, &named::<M>(cf.name, cf.since, lang)),
                 M::esc(cf.type_),
                 M::esc(cf.default),
                 M::esc(cf.unit),
@@ -750,8 +767,9 @@ pub fn dataflow_body<M: Markup>(out: &mut String, cat: &Catalog, page: &Page, la
 /// counts of changes by severity and the breaking changes spelled out.
 fn history_section<M: Markup>(
     out: &mut String,
+    cat: &Catalog,
     page: &Page,
-    h: &crate::render::view::history::HistoryView,
+    (h, full): (&crate::render::view::history::HistoryView, Option<&Page>),
     lang: Lang,
 ) {
     if h.rows.is_empty() {
@@ -759,6 +777,12 @@ fn history_section<M: Markup>(
     }
     M::heading(out, page, 2, "sec-change-history", lang.t("change_history"));
     history_body::<M>(out, h, lang.t("history_intro"), lang);
+    if let Some(to) = full {
+        M::paragraph(
+            out,
+            &M::page_link(cat, page, to, None, lang.t("history_full")),
+        );
+    }
 }
 
 /// The IDL file section of a type page: the file (linked into its repository) and its latest

@@ -3,6 +3,10 @@
 // and sideways-scrolling regions at 390 px, and the search (kinds, ranking, ?q=, Enter).
 //
 //   node tests/browser/audit.mjs SITE_DIR [--search QUERY=EXPECTED_HREF_PART ...] [--page REL ...]
+//                                 [--filter SELECT_ID=VALUE ...]
+//
+// Each --filter (What's new) picks VALUE in the select SELECT_ID of whats-new.html, the others
+// reset, and reports the rows and day sections left shown: report.filters.
 //
 // Prints one JSON object on stdout: {pages:[{page, mode, violations:[...], width, scrollers:[...]}],
 // searches:[...], errors:[...]} and exits 0; the Rust test (tests/html_browser.rs) asserts on it.
@@ -20,9 +24,11 @@ const args = process.argv.slice(2);
 const site = path.resolve(args.shift() || '.');
 const searches = [];
 const extraPages = [];
+const filters = [];
 for (let i = 0; i < args.length; i++) {
   if (args[i] === '--search') { searches.push(args[++i]); }
   else if (args[i] === '--page') { extraPages.push(args[++i]); }
+  else if (args[i] === '--filter') { filters.push(args[++i]); }
 }
 
 /** The largest file of a folder (the page with the most content of its kind). */
@@ -77,7 +83,7 @@ await new Promise((r) => server.listen(0, '127.0.0.1', r));
 const origin = `http://127.0.0.1:${server.address().port}/`;
 const url = (rel) => origin + rel;
 
-const report = { pages: [], searches: [], errors: [] };
+const report = { pages: [], searches: [], filters: [], errors: [] };
 const browser = await launchChromium([]);
 try {
   const page = await browser.newPage();
@@ -157,6 +163,18 @@ try {
       opened = page.url().replace(origin, '');
     }
     report.searches.push({ q, expect, url_q: got.query, results: got.results.slice(0, 20), count: got.results.length, opened });
+  }
+  // What's new: each filter alone, on a freshly loaded page.
+  for (const f of filters) {
+    const [id, value] = f.split('=');
+    await page.setViewport({ width: 1280, height: 900 });
+    await page.goto(url('whats-new.html'), { waitUntil: 'load' });
+    await page.select('#' + id, value);
+    const shown = await page.evaluate(() => ({
+      rows: Array.from(document.querySelectorAll('tr[data-sev]')).filter((tr) => !tr.hidden).length,
+      days: Array.from(document.querySelectorAll('section.news-day')).filter((s) => !s.hidden).length,
+    }));
+    report.filters.push({ filter: f, rows: shown.rows, days: shown.days });
   }
 } catch (e) {
   report.errors.push(String(e && e.stack || e));

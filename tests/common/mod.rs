@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod books;
+pub mod history_repo;
 
 use std::path::{Path, PathBuf};
 

@@ -1,5 +1,6 @@
 /* Index page filter: by text, category, vendor and source (with [[source]] repositories). The full list is in the HTML; this only
-   hides rows and empty category sections. The diagnostics page: by severity and code. */
+   hides rows and empty category sections. The diagnostics page: by severity and code. What's new: by
+   severity, source and category. */
 (function () {
   'use strict';
   var diag = document.getElementById('diag-filter');
@@ -20,6 +21,29 @@
       });
     };
     [sev, code].forEach(function (e) { e.addEventListener('change', applyDiag); });
+  }
+  var news = document.getElementById('news-filter');
+  if (news) {
+    var nsev = document.getElementById('f-nsev');
+    var nsrc = document.getElementById('f-nsource');
+    var ncat = document.getElementById('f-ncategory');
+    news.addEventListener('submit', function (ev) { ev.preventDefault(); });
+    var applyNews = function () {
+      var pick = function (e) { return e ? e.value : ''; };
+      var sv = pick(nsev), so = pick(nsrc), ca = pick(ncat);
+      document.querySelectorAll('section.news-day').forEach(function (sec) {
+        var shown = 0;
+        sec.querySelectorAll('tr[data-sev]').forEach(function (tr) {
+          var ok = (!sv || tr.getAttribute('data-sev') === sv) &&
+            (!so || tr.getAttribute('data-source') === so) &&
+            (!ca || tr.getAttribute('data-category') === ca);
+          tr.hidden = !ok;
+          if (ok) { shown++; }
+        });
+        sec.hidden = shown === 0;
+      });
+    };
+    [nsev, nsrc, ncat].forEach(function (e) { if (e) { e.addEventListener('change', applyNews); } });
   }
   var form = document.getElementById('catalog-filter');
   if (!form) { return; }

@@ -11,6 +11,8 @@
 mod builtins;
 mod dataflow;
 mod diagnostics;
+mod history;
+use history::{has_feed, has_history};
 pub mod markdown;
 mod native;
 pub mod readme;
@@ -79,6 +81,10 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
         include_str!("../../../themes/default/filter.js"),
     ),
     (
+        "history.html",
+        include_str!("../../../themes/default/history.html"),
+    ),
+    (
         "index.html",
         include_str!("../../../themes/default/index.html"),
     ),
@@ -125,6 +131,10 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
     (
         "types.html",
         include_str!("../../../themes/default/types.html"),
+    ),
+    (
+        "whats_new.html",
+        include_str!("../../../themes/default/whats_new.html"),
     ),
 ];
 
@@ -253,6 +263,8 @@ struct PortTypeRef {
 #[derive(Serialize)]
 struct DataPortRow {
     anchor: String,
+    /// "since 1.1.0": the version that added it ([`view::component::DataPortView::since`]).
+    since: Option<String>,
     direction: String,
     dir_class: &'static str,
     name: String,
@@ -273,6 +285,7 @@ struct EventRow {
 #[derive(Serialize)]
 struct ServicePortRow {
     anchor: String,
+    since: Option<String>,
     name: String,
     details: Vec<Field>,
     interfaces: Vec<InterfaceRow>,
@@ -281,6 +294,7 @@ struct ServicePortRow {
 #[derive(Serialize)]
 struct InterfaceRow {
     anchor: String,
+    since: Option<String>,
     direction: String,
     dir_class: &'static str,
     name: String,
@@ -293,6 +307,7 @@ struct InterfaceRow {
 #[derive(Serialize)]
 struct ConfigurationRow {
     anchor: String,
+    since: Option<String>,
     name: String,
     type_: String,
     default: String,
@@ -400,6 +415,8 @@ struct ComponentPage {
     /// The History section: the latest versions of the profile, and the note on older ones.
     history: Vec<crate::render::view::history::HistoryRow>,
     history_older: Option<String>,
+    /// The component's history page (its whole history), from this page.
+    history_page: Option<String>,
 }
 
 /// One port of the neighbourhood list: the port, its relation (`fed by`, `feeds`, …), the
@@ -579,6 +596,11 @@ impl<'a> Site<'a> {
         })
     }
 
+    /// The "since" badge of a row: `since 1.1.0`.
+    fn since(&self, since: Option<&str>) -> Option<String> {
+        since.map(|v| self.t("since").replace("{v}", v))
+    }
+
     fn component_page(&self, ci: usize) -> ComponentPage {
         let v = view::component::component_view(
             self.catalog,
@@ -624,6 +646,7 @@ impl<'a> Site<'a> {
                 let (peers, peers_more) = self.peers(page, &dp.peers);
                 DataPortRow {
                     anchor: dp.anchor.to_string(),
+                    since: self.since(dp.since),
                     direction: dp.direction.label.clone(),
                     dir_class: dp.direction.class,
                     name: dp.name.to_string(),
@@ -648,6 +671,7 @@ impl<'a> Site<'a> {
             .iter()
             .map(|sp| ServicePortRow {
                 anchor: sp.anchor.to_string(),
+                since: self.since(sp.since),
                 name: sp.name.to_string(),
                 details: fields(lang, None, sp.details.clone()),
                 interfaces: sp
@@ -657,6 +681,7 @@ impl<'a> Site<'a> {
                         let (peers, peers_more) = self.peers(page, &i.peers);
                         InterfaceRow {
                             anchor: i.anchor.to_string(),
+                            since: self.since(i.since),
                             direction: i.direction.label.clone(),
                             dir_class: i.direction.class,
                             name: i.name.to_string(),
@@ -674,6 +699,7 @@ impl<'a> Site<'a> {
             .iter()
             .map(|conf| ConfigurationRow {
                 anchor: conf.anchor.to_string(),
+                since: self.since(conf.since),
                 name: conf.name.to_string(),
                 type_: conf.type_.to_string(),
                 default: conf.default.to_string(),
@@ -790,6 +816,9 @@ impl<'a> Site<'a> {
             backups: facts::BackupRow::of(&self.catalog.components[v.ci], lang),
             history: v.history.rows.clone(),
             history_older: v.history.older_note(lang),
+            history_page: v
+                .history_page
+                .map(|to| self.catalog.href(page, to, None, Output::Html)),
         }
     }
 
@@ -913,6 +942,8 @@ impl HtmlRenderer {
         env.add_global("site_title", opts.title.clone());
         env.add_global("has_diagnostics", !catalog.diagnostics.is_empty());
         env.add_global("has_systems", !catalog.systems.is_empty());
+        env.add_global("has_history", has_history(catalog));
+        env.add_global("has_feed", has_feed(catalog, opts));
         env.add_global("generator", super::generator());
         env.add_function("fields", builtins::fields);
         env.add_function("type_link", builtins::type_link);
@@ -1069,6 +1100,8 @@ impl HtmlRenderer {
             site_title: &opts.title,
             has_diagnostics: !catalog.diagnostics.is_empty(),
             has_systems: !catalog.systems.is_empty(),
+            has_history: has_history(catalog),
+            has_feed: has_feed(catalog, opts),
             generator: &generator,
         };
         all_paths.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
@@ -1122,6 +1155,16 @@ impl HtmlRenderer {
         // (the sitemap protocol requires them), so without one there is no sitemap.
         if opts.base_url.is_some() {
             all_paths.push("sitemap.xml".into());
+        }
+        // The Atom feed of the histories (with a base URL: its links are absolute).
+        if has_feed(catalog, opts) {
+            all_paths.push(history::FEED.into());
+            if wanted(history::FEED) {
+                if let Some(feed) = history::feed(catalog, opts) {
+                    out.write_owned(history::FEED, feed.into_bytes())?;
+                    written += 1;
+                }
+            }
         }
         if let Some(base_url) = opts.base_url.as_deref().filter(|_| wanted("sitemap.xml")) {
             let mut urls: Vec<String> = catalog
@@ -1466,6 +1509,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
 
     pages.extend(systems::pages(site));
     pages.push(dataflow::page(site));
+    pages.extend(history::pages(site));
 
     // Search, 404 and diagnostics.
     pages.push(Job {

@@ -20,6 +20,10 @@ pub(super) struct Globals<'a> {
     pub site_title: &'a str,
     pub has_diagnostics: bool,
     pub has_systems: bool,
+    /// Some component has a history: the What's new page exists.
+    pub has_history: bool,
+    /// The site has an Atom feed (`feed.xml`).
+    pub has_feed: bool,
     pub generator: &'a str,
 }
 
@@ -65,6 +69,15 @@ impl Out<'_> {
         self.raw("</dl>");
     }
 
+    /// `{% if x.since %} <span class="since">{{ x.since }}</span>{% endif %}`.
+    fn since(&mut self, since: &Option<String>) {
+        if let Some(s) = since {
+            self.raw(" <span class=\"since\">");
+            self.text(s);
+            self.raw("</span>");
+        }
+    }
+
     /// `type_link(r)` (see `builtins::type_link`).
     fn type_link(&mut self, r: &Option<PortTypeRef>) {
         let Some(r) = r else { return };
@@ -107,7 +120,7 @@ impl Out<'_> {
         anchor: &str,
         dir_class: &str,
         direction: &str,
-        name: &str,
+        (name, since): (&str, &Option<String>),
         type_ref: &Option<PortTypeRef>,
         type_key: &str,
     ) {
@@ -121,7 +134,9 @@ impl Out<'_> {
         self.text(direction);
         self.raw("</span></td>\n<th scope=\"row\"><code>");
         self.text(name);
-        self.raw("</code></th>\n");
+        self.raw("</code>");
+        self.since(since);
+        self.raw("</th>\n");
         self.td(type_key);
         self.type_link(type_ref);
         self.raw("</td>\n");
@@ -266,7 +281,15 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
     o.text(root);
     o.raw("style.css\">\n<script src=\"");
     o.text(root);
-    o.raw("search.js\" defer></script>\n\n</head>\n<body data-root=\"");
+    o.raw("search.js\" defer></script>\n");
+    if o.g.has_feed {
+        o.raw("<link rel=\"alternate\" type=\"application/atom+xml\" href=\"");
+        o.text(root);
+        o.raw("feed.xml\" title=\"");
+        o.label("feed_title");
+        o.raw("\">\n");
+    }
+    o.raw("\n</head>\n<body data-root=\"");
     o.text(root);
     o.raw("\">\n<a class=\"skip\" href=\"#main\">");
     o.label("skip");
@@ -290,6 +313,13 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
         o.raw(path);
         o.raw("\">");
         o.label(key);
+        o.raw("</a></li>\n");
+    }
+    if o.g.has_history {
+        o.raw("<li><a href=\"");
+        o.text(root);
+        o.raw("whats-new.html\">");
+        o.label("whats_new");
         o.raw("</a></li>\n");
     }
     if o.g.has_systems {
@@ -439,7 +469,7 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             &r.anchor,
             r.dir_class,
             &r.direction,
-            &r.name,
+            (&r.name, &r.since),
             &r.type_ref,
             "type",
         );
@@ -492,6 +522,7 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("</span> <code>");
         o.text(&sp.name);
         o.raw("</code>");
+        o.since(&sp.since);
         o.fields(&sp.details);
         o.raw("</th></tr>\n");
         for i in &sp.interfaces {
@@ -499,7 +530,7 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
                 &i.anchor,
                 i.dir_class,
                 &i.direction,
-                &i.name,
+                (&i.name, &i.since),
                 &i.type_ref,
                 "interface_type",
             );
@@ -563,7 +594,9 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
         o.text(&c.anchor);
         o.raw("\">\n<th scope=\"row\"><code>");
         o.text(&c.name);
-        o.raw("</code></th>\n");
+        o.raw("</code>");
+        o.since(&c.since);
+        o.raw("</th>\n");
         o.td("type");
         o.raw("<code>");
         o.text(&c.type_);
@@ -775,9 +808,14 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
     );
     o.raw("<tbody>\n");
     for h in &p.history {
-        o.raw("<tr><th scope=\"row\">");
-        o.text(&h.version);
-        o.raw("</th>");
+        // A folded row has no version: no empty row header (axe: empty-table-header).
+        if h.version.is_empty() {
+            o.raw("<tr><td></td>");
+        } else {
+            o.raw("<tr><th scope=\"row\">");
+            o.text(&h.version);
+            o.raw("</th>");
+        }
         o.td("history_date");
         o.text(&h.date);
         o.raw("</td>");
@@ -818,6 +856,13 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("<p>");
         o.text(n);
         o.raw("</p>\n");
+    }
+    if let Some(href) = &p.history_page {
+        o.raw("<p><a href=\"");
+        o.text(href);
+        o.raw("\">");
+        o.label("history_full");
+        o.raw("</a></p>\n");
     }
     o.raw("</section>\n\n");
 }

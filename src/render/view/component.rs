@@ -14,6 +14,9 @@ use crate::types::{canonical_type, short_name};
 pub struct DataPortView<'a> {
     pub anchor: &'a str,
     pub name: &'a str,
+    /// The version (else the date) that added it, when the history is younger than it
+    /// ([`crate::catalog::history::since`]).
+    pub since: Option<&'a str>,
     pub direction: Dir,
     /// The data type as written, linked to its type page when the catalogue has one.
     pub type_: Option<Linked<'a>>,
@@ -33,6 +36,9 @@ pub struct DataPortView<'a> {
 pub struct InterfaceView<'a> {
     pub anchor: &'a str,
     pub name: &'a str,
+    /// The version (else the date) that added it, when the history is younger than it
+    /// ([`crate::catalog::history::since`]).
+    pub since: Option<&'a str>,
     pub direction: Dir,
     pub provided: bool,
     pub type_: Option<Linked<'a>>,
@@ -46,6 +52,9 @@ pub struct InterfaceView<'a> {
 pub struct ServicePortView<'a> {
     pub anchor: &'a str,
     pub name: &'a str,
+    /// The version (else the date) that added it, when the history is younger than it
+    /// ([`crate::catalog::history::since`]).
+    pub since: Option<&'a str>,
     pub side: model::PortSide,
     pub details: Vec<Fact>,
     pub interfaces: Vec<InterfaceView<'a>>,
@@ -55,6 +64,9 @@ pub struct ServicePortView<'a> {
 pub struct ConfigurationView<'a> {
     pub anchor: &'a str,
     pub name: &'a str,
+    /// The version (else the date) that added it, when the history is younger than it
+    /// ([`crate::catalog::history::since`]).
+    pub since: Option<&'a str>,
     pub type_: &'a str,
     pub default: &'a str,
     pub unit: &'a str,
@@ -111,6 +123,8 @@ pub struct ComponentView<'a> {
     pub backups: Vec<BackupRow>,
     /// The History section: the latest versions of the profile ([`super::history`]).
     pub history: super::history::HistoryView,
+    /// The component's history page, which the History section links.
+    pub history_page: Option<&'a Page>,
 }
 
 /// The data port's direction: label and class (`in`, `out`, `event`, `other`).
@@ -142,6 +156,13 @@ pub fn component_view<'a>(
     let c = &cat.components[ci];
     let p = &c.profile;
     let page = cat.component_page(ci);
+    // The "since" notes, by the change path of each element (none without a history).
+    let keys = if c.since.is_empty() {
+        crate::catalog::history::ElementKeys::default()
+    } else {
+        crate::catalog::history::ElementKeys::of(p)
+    };
+    let since = |key: Option<&String>| key.and_then(|k| c.since.get(k)).map(String::as_str);
     let data_ports = p
         .data_ports
         .iter()
@@ -151,6 +172,7 @@ pub fn component_view<'a>(
             let type_page = ti.map(|ti| cat.data_type_page(ti));
             DataPortView {
                 anchor: &c.anchors.data_ports[pi],
+                since: since(keys.data_ports.get(pi)),
                 name: dp.name.as_deref().unwrap_or_default(),
                 direction: port_dir(lang, dp),
                 type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
@@ -195,6 +217,7 @@ pub fn component_view<'a>(
         .map(|(si, sp)| ServicePortView {
             anchor: &c.anchors.service_ports[si],
             name: sp.name.as_deref().unwrap_or_default(),
+            since: since(keys.service_ports.get(si)),
             side: sp.side(),
             details: facts::service_port(sp, lang),
             interfaces: sp
@@ -208,6 +231,7 @@ pub fn component_view<'a>(
                     InterfaceView {
                         anchor: &c.anchors.interfaces[si][ii],
                         name: i.name.as_deref().unwrap_or_default(),
+                        since: since(keys.interfaces.get(si).and_then(|x| x.get(ii))),
                         direction: match i.direction_kind() {
                             Some(Direction::Provided) => Dir::new(lang.t("provided"), "provided"),
                             Some(Direction::Required) => Dir::new(lang.t("required"), "required"),
@@ -252,6 +276,7 @@ pub fn component_view<'a>(
         .map(|(k, conf)| ConfigurationView {
             anchor: &c.anchors.configurations[k],
             name: conf.name.as_deref().unwrap_or_default(),
+            since: since(keys.configurations.get(k)),
             type_: non_empty(&conf.type_).unwrap_or(""),
             default: conf.default_value.as_deref().unwrap_or_default(),
             unit: facts::configuration_unit(conf).unwrap_or(""),
@@ -336,14 +361,9 @@ pub fn component_view<'a>(
             })
             .collect(),
         backups: BackupRow::of(c, lang),
+        history_page: cat.history_page(ci),
         history: super::history::HistoryView::of(&c.history, lang, &|commit, path| {
-            crate::render::html::repo::history_file_url(
-                &cat.sources,
-                c.origin.as_ref(),
-                source_url,
-                commit,
-                path,
-            )
+            super::history_page::commit_url(cat, c, source_url, commit, path)
         }),
     }
 }

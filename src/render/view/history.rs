@@ -52,22 +52,7 @@ impl HistoryView {
                 continue;
             }
             let run = h[i..].iter().take_while(|e| !e.stands_out()).count();
-            rows.push(HistoryRow {
-                label: String::new(),
-                url: None,
-                date: String::new(),
-                author: String::new(),
-                subject: String::new(),
-                version: String::new(),
-                summary: lang
-                    .t(if run == 1 {
-                        "history_folded_one"
-                    } else {
-                        "history_folded"
-                    })
-                    .replace("{n}", &run.to_string()),
-                breaking: Vec::new(),
-            });
+            rows.push(folded(run, lang));
             i += run;
         }
         HistoryView {
@@ -85,7 +70,28 @@ impl HistoryView {
     }
 }
 
-fn row(e: &Entry, lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> HistoryRow {
+/// The row of `run` versions without a change to the specification, folded.
+pub fn folded(run: usize, lang: Lang) -> HistoryRow {
+    HistoryRow {
+        label: String::new(),
+        url: None,
+        date: String::new(),
+        author: String::new(),
+        subject: String::new(),
+        version: String::new(),
+        summary: lang
+            .t(if run == 1 {
+                "history_folded_one"
+            } else {
+                "history_folded"
+            })
+            .replace("{n}", &run.to_string()),
+        breaking: Vec::new(),
+    }
+}
+
+/// The row of version `e`; `url` makes the link of a commit's file.
+pub fn row(e: &Entry, lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> HistoryRow {
     let label = if e.commit.is_none() && e.backup.is_none() {
         lang.t("history_working_copy").to_string()
     } else {

@@ -1,0 +1,176 @@
+//! The history pages for Markdown and Doxygen, from their views
+//! ([`crate::render::view::history_page`]): a component's whole history and What's new. One
+//! `Markup`-generic function per page writes both formats.
+
+use super::text::Markup;
+use super::view::history_page::{
+    history_page_view, whats_new_view, HistoryItem, HistoryPageView, WhatsNewView,
+};
+use super::view::Linked;
+use crate::catalog::{Catalog, PageKind};
+use crate::i18n::Lang;
+
+/// The page of every version of component `ci` (`None` when it has no history).
+pub fn history_page<M: Markup>(
+    cat: &Catalog,
+    ci: usize,
+    source_url: Option<&str>,
+    lang: Lang,
+) -> Option<(String, String)> {
+    let v = history_page_view(cat, ci, source_url, lang)?;
+    let mut out = String::new();
+    let crumbs = [
+        Linked::new(
+            lang.t("catalogue"),
+            Some(cat.site_page(PageKind::Index)),
+            None,
+        ),
+        Linked::new(&v.name, Some(v.component), None),
+    ];
+    let title = lang.t("history_page_title").replace("{name}", &v.name);
+    M::page_head(&mut out, cat, v.page, &title, &crumbs);
+    M::paragraph(&mut out, &M::esc(lang.t("history_page_intro")));
+    for item in &v.items {
+        history_item::<M>(&mut out, &v, item, lang);
+    }
+    Some((v.page.path_in(M::OUTPUT), out))
+}
+
+/// One version (its facts and every change), or a folded run of versions.
+fn history_item<M: Markup>(
+    out: &mut String,
+    v: &HistoryPageView<'_>,
+    item: &HistoryItem,
+    lang: Lang,
+) {
+    let r = &item.row;
+    if item.anchor.is_empty() {
+        M::paragraph(out, &M::esc(&r.summary));
+        return;
+    }
+    M::heading(out, v.page, 2, &item.anchor, &item.heading);
+    let commit = match &r.url {
+        Some(url) => M::link(&r.label, url),
+        None => M::esc(&r.label),
+    };
+    let rows: Vec<Vec<String>> = [
+        (lang.t("history_date"), M::esc(&r.date)),
+        (lang.t("history_commit"), commit),
+        (lang.t("history_author"), M::esc(&r.author)),
+        (lang.t("history_subject"), M::esc(&r.subject)),
+        (lang.t("history_changes"), M::esc(&r.summary)),
+    ]
+    .into_iter()
+    .filter(|(_, value)| !value.is_empty())
+    .map(|(label, value)| vec![M::esc(label), value])
+    .collect();
+    M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
+    if item.release {
+        M::paragraph(out, &M::esc(lang.t("history_release_note")));
+    }
+    if !item.changes.is_empty() {
+        let rows: Vec<Vec<String>> = item
+            .changes
+            .iter()
+            .map(|c| {
+                vec![
+                    M::esc(&c.severity_label),
+                    M::esc(&c.code),
+                    M::esc(&c.path),
+                    M::esc(&c.message),
+                ]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("severity"),
+                lang.t("code"),
+                lang.t("extra_path"),
+                lang.t("message"),
+            ],
+            &rows,
+        );
+    }
+}
+
+/// What's new: every change, newest first, grouped by day, as a plain list.
+pub fn whats_new_page<M: Markup>(
+    cat: &Catalog,
+    source_url: Option<&str>,
+    lang: Lang,
+) -> Option<(String, String)> {
+    let page = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew)?;
+    let v: WhatsNewView = whats_new_view(cat, source_url, lang);
+    let mut out = String::new();
+    let crumbs = [Linked::new(
+        lang.t("catalogue"),
+        Some(cat.site_page(PageKind::Index)),
+        None,
+    )];
+    M::page_head(&mut out, cat, page, lang.t("whats_new"), &crumbs);
+    M::paragraph(&mut out, &M::esc(lang.t("whats_new_intro")));
+    if v.days.is_empty() {
+        M::paragraph(&mut out, &M::esc(lang.t("whats_new_none")));
+    }
+    for (day, rows) in &v.days {
+        let (anchor, heading) = if day.is_empty() {
+            ("d-none".to_string(), lang.t("history_no_date").to_string())
+        } else {
+            (format!("d-{day}"), day.clone())
+        };
+        M::heading(&mut out, page, 2, &anchor, &heading);
+        let items: Vec<String> = rows
+            .iter()
+            .map(|r| {
+                let hist = cat.history_page(r.ci);
+                let component = match hist {
+                    Some(to) => M::page_link(cat, page, to, Some(&r.anchor), &r.component),
+                    None => M::esc(&r.component),
+                };
+                let commit = match &r.url {
+                    Some(url) => M::link(&r.label, url),
+                    None => M::esc(&r.label),
+                };
+                let mut head = component;
+                if !r.version.is_empty() {
+                    head = format!("{head} {}", M::esc(&r.version));
+                }
+                format!(
+                    "{head} · {} · {commit} — {} {} {}: {}",
+                    M::esc(&r.date),
+                    M::esc(&r.change.severity_label),
+                    M::esc(&r.change.code),
+                    M::esc(&r.change.path),
+                    M::esc(&r.change.message)
+                )
+            })
+            .collect();
+        M::linked_list(&mut out, &items);
+    }
+    if v.more > 0 {
+        M::paragraph(
+            &mut out,
+            &M::esc(&lang.t("whats_new_more").replace("{n}", &v.more.to_string())),
+        );
+    }
+    Some((page.path_in(M::OUTPUT), out))
+}
+
+/// Both kinds of history page for one output: What's new, then each component's history.
+pub fn pages<M: Markup>(
+    cat: &Catalog,
+    source_url: Option<&str>,
+    lang: Lang,
+) -> Vec<(String, String)> {
+    use rayon::prelude::*;
+    let mut out: Vec<(String, String)> = whats_new_page::<M>(cat, source_url, lang)
+        .into_iter()
+        .collect();
+    out.par_extend(
+        (0..cat.components.len())
+            .into_par_iter()
+            .filter_map(|ci| history_page::<M>(cat, ci, source_url, lang)),
+    );
+    out
+}

@@ -1,0 +1,413 @@
+//! The history pages: a component's whole history ([`HistoryPageView`]), the catalogue's
+//! What's new ([`WhatsNewView`]) and the entries of the Atom feed ([`feed_entries`]). Built
+//! once from the catalogue's histories ([`crate::catalog::history`]), shown by every output.
+
+use super::history::{row, HistoryRow};
+use crate::catalog::history::Entry;
+use crate::catalog::{Catalog, Component, Page};
+use crate::i18n::Lang;
+use serde::Serialize;
+
+/// Changes listed on What's new, newest first; older ones are on the components' history
+/// pages (the page says how many it leaves out).
+pub const WHATS_NEW_MAX: usize = 2000;
+
+/// Entries in the Atom feed, newest first.
+pub const FEED_MAX: usize = 100;
+
+/// The link of a commit of component `c` to its file: the `{commit}` form of its source's
+/// `source-url`, else of the site's. The same link on the component page and the history pages.
+pub fn commit_url(
+    cat: &Catalog,
+    c: &Component,
+    source_url: Option<&str>,
+    commit: &str,
+    path: &str,
+) -> Option<String> {
+    crate::render::html::repo::history_file_url(
+        &cat.sources,
+        c.origin.as_ref(),
+        source_url,
+        commit,
+        path,
+    )
+}
+
+/// The label of a severity (`breaking`, `warning`, `info`).
+pub fn severity_label(severity: &str, lang: Lang) -> &'static str {
+    match severity {
+        "breaking" => lang.t("severity_breaking"),
+        "warning" => lang.t("severity_warning"),
+        _ => lang.t("severity_info"),
+    }
+}
+
+/// One change as the pages list it.
+#[derive(Debug, Clone, Serialize)]
+pub struct ChangeRow {
+    /// `breaking`, `warning` or `info` (the class and the filter value).
+    pub severity: String,
+    /// Its label in the page's language.
+    pub severity_label: String,
+    pub code: String,
+    pub path: String,
+    pub message: String,
+}
+
+impl ChangeRow {
+    fn of(c: &crate::catalog::history::Change, lang: Lang) -> ChangeRow {
+        ChangeRow {
+            severity: c.severity.clone(),
+            severity_label: severity_label(&c.severity, lang).to_string(),
+            code: c.code.clone(),
+            path: c.path.clone(),
+            message: c.message.clone(),
+        }
+    }
+}
+
+/// One item of a history page: a version shown on its own, or a run of versions that changed
+/// nothing of the specification, folded.
+#[derive(Debug, Clone, Serialize)]
+pub struct HistoryItem {
+    /// The anchor of a version (`v-<commit or backup>`); empty for a folded run.
+    pub anchor: String,
+    /// The heading of a version: its version string and label; empty for a folded run.
+    pub heading: String,
+    /// What the component page's History section shows for it.
+    pub row: HistoryRow,
+    /// A release (a new version string).
+    pub release: bool,
+    /// Why the version could not be read.
+    pub error: Option<String>,
+    /// Every change from the version before.
+    pub changes: Vec<ChangeRow>,
+}
+
+/// A component's history page.
+#[derive(Debug, Clone)]
+pub struct HistoryPageView<'a> {
+    pub page: &'a Page,
+    /// The component's page.
+    pub component: &'a Page,
+    pub ci: usize,
+    pub name: String,
+    pub items: Vec<HistoryItem>,
+}
+
+/// The anchor of entry `e` on its history page.
+pub fn entry_anchor(e: &Entry) -> String {
+    let label = if e.commit.is_none() && e.backup.is_none() {
+        "working-copy"
+    } else {
+        e.label()
+    };
+    format!("v-{}", crate::slug::slugify(label))
+}
+
+/// The history page of component `ci` (`None` when it has no history).
+pub fn history_page_view<'a>(
+    cat: &'a Catalog,
+    ci: usize,
+    source_url: Option<&str>,
+    lang: Lang,
+) -> Option<HistoryPageView<'a>> {
+    let page = cat.history_page(ci)?;
+    let c = &cat.components[ci];
+    let url = |commit: &str, path: &str| commit_url(cat, c, source_url, commit, path);
+    let mut items = Vec::new();
+    let h = &c.history;
+    let mut i = 0;
+    while i < h.len() {
+        let e = &h[i];
+        if e.stands_out() {
+            let row = row(e, lang, &url);
+            items.push(HistoryItem {
+                anchor: entry_anchor(e),
+                heading: [row.version.as_str(), row.label.as_str()]
+                    .iter()
+                    .filter(|s| !s.is_empty())
+                    .copied()
+                    .collect::<Vec<_>>()
+                    .join(" · "),
+                row,
+                release: e.release && !e.first,
+                error: e.error.clone(),
+                changes: e.changes.iter().map(|c| ChangeRow::of(c, lang)).collect(),
+            });
+            i += 1;
+            continue;
+        }
+        let run = h[i..].iter().take_while(|e| !e.stands_out()).count();
+        items.push(HistoryItem {
+            anchor: String::new(),
+            heading: String::new(),
+            row: super::history::folded(run, lang),
+            release: false,
+            error: None,
+            changes: Vec::new(),
+        });
+        i += run;
+    }
+    Some(HistoryPageView {
+        page,
+        component: cat.component_page(ci),
+        ci,
+        name: c.display_name().into_owned(),
+        items,
+    })
+}
+
+/// A point in time to sort history entries by: seconds since 1970 in UTC from an ISO 8601
+/// date with its offset (`2024-01-02T10:00:00+09:00`, a commit's), or read as UTC without one
+/// (`2015-07-26 07:20:22`, a backup's local save time); `None` when it is no such date.
+pub fn instant(date: &str) -> Option<i64> {
+    let b = date.trim().as_bytes();
+    let num = |r: std::ops::Range<usize>| -> Option<i64> {
+        let s = std::str::from_utf8(b.get(r)?).ok()?;
+        s.bytes()
+            .all(|c| c.is_ascii_digit())
+            .then(|| s.parse().ok())?
+    };
+    let (y, m, d) = (num(0..4)?, num(5..7)?, num(8..10)?);
+    let (hh, mm, ss) = if b.len() >= 19 {
+        (num(11..13)?, num(14..16)?, num(17..19)?)
+    } else {
+        (0, 0, 0)
+    };
+    let offset = match b.get(19) {
+        Some(sign @ (b'+' | b'-')) => {
+            let o = num(20..22)? * 3600 + num(23..25)? * 60;
+            if *sign == b'+' {
+                o
+            } else {
+                -o
+            }
+        }
+        _ => 0,
+    };
+    // Days from the civil date (Howard Hinnant's algorithm).
+    let y2 = if m <= 2 { y - 1 } else { y };
+    let era = y2.div_euclid(400);
+    let yoe = y2 - era * 400;
+    let doy = (153 * (m + if m > 2 { -3 } else { 9 }) + 2) / 5 + d - 1;
+    let doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    let days = era * 146097 + doe - 719468;
+    Some(days * 86400 + hh * 3600 + mm * 60 + ss - offset)
+}
+
+/// Every history entry of the catalogue, newest first: (component, entry position), ordered by
+/// date (entries without one last), then component page order, then history order.
+fn entries_newest_first(cat: &Catalog) -> Vec<(usize, usize)> {
+    let mut all: Vec<(Option<i64>, usize, usize)> = cat
+        .components
+        .iter()
+        .enumerate()
+        .flat_map(|(ci, c)| {
+            c.history
+                .iter()
+                .enumerate()
+                .map(move |(ei, e)| (e.date.as_deref().and_then(instant), ci, ei))
+        })
+        .collect();
+    all.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+    all.into_iter().map(|(_, ci, ei)| (ci, ei)).collect()
+}
+
+/// One change on What's new.
+#[derive(Debug, Clone, Serialize)]
+pub struct WhatsNewRow {
+    pub ci: usize,
+    /// The component's name.
+    pub component: String,
+    /// The entry's anchor on the component's history page.
+    pub anchor: String,
+    pub version: String,
+    pub date: String,
+    /// The commit (12 digits) or backup.
+    pub label: String,
+    pub url: Option<String>,
+    /// The `[[source]]` the component was read from (empty: the input directory).
+    pub source: String,
+    /// The component's category as written.
+    pub category: String,
+    pub change: ChangeRow,
+}
+
+/// What's new: the changes, newest first, grouped by day.
+#[derive(Debug, Clone, Default)]
+pub struct WhatsNewView {
+    /// (day, its changes): `YYYY-MM-DD`, or empty for versions without a date.
+    pub days: Vec<(String, Vec<WhatsNewRow>)>,
+    /// Changes not listed (past [`WHATS_NEW_MAX`]).
+    pub more: usize,
+    /// The sources and categories the rows have (the filter's choices), sorted.
+    pub sources: Vec<String>,
+    pub categories: Vec<String>,
+}
+
+/// The catalogue's What's new.
+pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> WhatsNewView {
+    let mut v = WhatsNewView::default();
+    let mut shown = 0;
+    for (ci, ei) in entries_newest_first(cat) {
+        let c = &cat.components[ci];
+        let e = &c.history[ei];
+        if e.changes.is_empty() {
+            continue;
+        }
+        let take = e.changes.len().min(WHATS_NEW_MAX - shown);
+        v.more += e.changes.len() - take;
+        if take == 0 {
+            continue;
+        }
+        shown += take;
+        let date = e.date.clone().unwrap_or_default();
+        let day = date.get(..10).unwrap_or(&date).to_string();
+        let source = c
+            .origin
+            .as_ref()
+            .map(|o| o.source.clone())
+            .unwrap_or_default();
+        let category = crate::model::non_empty(&c.profile.basic_info.category)
+            .unwrap_or("")
+            .to_string();
+        let rows: Vec<WhatsNewRow> = e.changes[..take]
+            .iter()
+            .map(|ch| WhatsNewRow {
+                ci,
+                component: c.display_name().into_owned(),
+                anchor: entry_anchor(e),
+                version: e.version.clone().unwrap_or_default(),
+                date: date.clone(),
+                label: e.label().to_string(),
+                url: e
+                    .commit
+                    .as_deref()
+                    .and_then(|commit| commit_url(cat, c, source_url, commit, &e.file)),
+                source: source.clone(),
+                category: category.clone(),
+                change: ChangeRow::of(ch, lang),
+            })
+            .collect();
+        match v.days.last_mut() {
+            Some((d, list)) if *d == day => list.extend(rows),
+            _ => v.days.push((day, rows)),
+        }
+    }
+    let rows = || v.days.iter().flat_map(|(_, r)| r);
+    let mut sources: Vec<String> = rows().map(|r| r.source.clone()).collect();
+    let mut categories: Vec<String> = rows().map(|r| r.category.clone()).collect();
+    for l in [&mut sources, &mut categories] {
+        l.sort();
+        l.dedup();
+        l.retain(|s| !s.is_empty());
+    }
+    v.sources = sources;
+    v.categories = categories;
+    v
+}
+
+/// One entry of the Atom feed: a version with changes.
+#[derive(Debug, Clone)]
+pub struct FeedEntry<'a> {
+    /// The component's history page and the version's anchor there (the entry's link and id).
+    pub page: &'a Page,
+    pub anchor: String,
+    /// `component version: subject`.
+    pub title: String,
+    /// RFC 3339 (`2024-01-02T10:00:00+09:00`).
+    pub updated: String,
+    pub author: String,
+    /// The summary line and then one line per change.
+    pub text: String,
+}
+
+/// A date of a history entry in RFC 3339: a commit's as is (git's strict ISO 8601), a backup's
+/// local time as UTC.
+pub fn rfc3339(date: &str) -> Option<String> {
+    instant(date)?;
+    let d = date.trim();
+    let offset = d.get(19..25).filter(|o| o.starts_with(['+', '-']));
+    Some(if let Some(o) = offset {
+        format!("{}T{}{o}", &d[..10], &d[11..19])
+    } else if d.len() >= 19 {
+        format!("{}T{}Z", &d[..10], &d[11..19])
+    } else {
+        format!("{}T00:00:00Z", &d[..10])
+    })
+}
+
+/// The feed's entries: the latest [`FEED_MAX`] versions with changes and a date, newest first.
+pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
+    let mut out = Vec::new();
+    for (ci, ei) in entries_newest_first(cat) {
+        if out.len() == FEED_MAX {
+            break;
+        }
+        let c = &cat.components[ci];
+        let e = &c.history[ei];
+        let (Some(page), Some(updated)) =
+            (cat.history_page(ci), e.date.as_deref().and_then(rfc3339))
+        else {
+            continue;
+        };
+        if e.changes.is_empty() {
+            continue;
+        }
+        let r = row(e, lang, &|_, _| None);
+        let mut title = c.display_name().into_owned();
+        if !r.version.is_empty() {
+            title = format!("{title} {}", r.version);
+        }
+        title = format!(
+            "{title}: {}",
+            if r.subject.is_empty() {
+                &r.summary
+            } else {
+                &r.subject
+            }
+        );
+        let mut text = r.summary.clone();
+        for ch in &e.changes {
+            text.push_str(&format!(
+                "\n[{}] {} {}: {}",
+                severity_label(&ch.severity, lang),
+                ch.code,
+                ch.path,
+                ch.message
+            ));
+        }
+        out.push(FeedEntry {
+            page,
+            anchor: entry_anchor(e),
+            title,
+            updated,
+            author: e.author.clone().unwrap_or_default(),
+            text,
+        });
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn instants_order_dates_across_offsets() {
+        assert_eq!(instant("1970-01-01T00:00:00+00:00"), Some(0));
+        assert_eq!(instant("1970-01-01T09:00:00+09:00"), Some(0));
+        assert_eq!(instant("2024-01-02 10:00:00"), Some(1_704_189_600));
+        assert!(instant("2024-01-02T10:00:00+09:00") < instant("2024-01-02T10:00:00+00:00"));
+        assert_eq!(instant("yesterday"), None);
+        assert_eq!(
+            rfc3339("2015-07-26 07:20:22").as_deref(),
+            Some("2015-07-26T07:20:22Z")
+        );
+        assert_eq!(
+            rfc3339("2024-01-02T10:00:00+09:00").as_deref(),
+            Some("2024-01-02T10:00:00+09:00")
+        );
+    }
+}

@@ -1,0 +1,84 @@
+//! A git work tree whose one profile has a history with every kind of entry the history pages
+//! show: a first version, a release that adds a data port, a service port with its interface
+//! and a configuration parameter, a commit that changes nothing of the specification, and a
+//! breaking rename without a version bump (DIFF208). Commits are dated 2024-01-01 … 04.
+
+use std::path::Path;
+
+const V1: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:Lab:Mobile:Base:1.0.0" rtc:version="0.2">
+  <rtc:BasicInfo xsi:type="rtcExt:basic_info_ext" rtc:name="Base" rtc:vendor="Lab" rtc:category="Mobile" rtc:version="1.0.0" rtc:componentType="STATIC" rtc:activityType="PERIODIC" rtc:componentKind="DataFlowComponent" rtc:executionType="PeriodicExecutionContext" rtc:executionRate="100.0"/>
+  <rtc:ConfigurationSet>
+    <rtc:Configuration xsi:type="rtcExt:configuration_ext" rtc:type="double" rtc:name="max_speed" rtc:defaultValue="1.0"/>
+  </rtc:ConfigurationSet>
+  <rtc:DataPorts xsi:type="rtcExt:dataport_ext" rtc:portType="DataInPort" rtc:name="cmd" rtc:type="RTC::TimedVelocity2D"/>
+  <rtc:Language xsi:type="rtcExt:language_ext" rtc:kind="C++"/>
+</rtc:RtcProfile>
+"#;
+
+fn edit(text: &str, edits: &[(&str, &str)]) -> String {
+    let mut s = text.to_string();
+    for (from, to) in edits {
+        assert!(s.contains(from), "edit `{from}` does not apply");
+        s = s.replacen(from, to, 1);
+    }
+    s
+}
+
+/// The versions, oldest first: (subject, profile).
+pub fn versions() -> Vec<(&'static str, String)> {
+    let v2 = edit(
+        V1,
+        &[
+            (":Base:1.0.0\"", ":Base:1.1.0\""),
+            ("rtc:version=\"1.0.0\"", "rtc:version=\"1.1.0\""),
+            (
+                "  </rtc:ConfigurationSet>",
+                "    <rtc:Configuration xsi:type=\"rtcExt:configuration_ext\" rtc:type=\"int\" rtc:name=\"gain\" rtc:defaultValue=\"2\"/>\n  </rtc:ConfigurationSet>",
+            ),
+            (
+                "  <rtc:Language",
+                "  <rtc:DataPorts xsi:type=\"rtcExt:dataport_ext\" rtc:portType=\"DataOutPort\" rtc:name=\"status\" rtc:type=\"RTC::TimedLong\"/>\n  <rtc:ServicePorts xsi:type=\"rtcExt:serviceport_ext\" rtc:name=\"svc\">\n    <rtc:ServiceInterface xsi:type=\"rtcExt:serviceinterface_ext\" rtc:type=\"Lab::Map\" rtc:direction=\"Provided\" rtc:name=\"map\"/>\n  </rtc:ServicePorts>\n  <rtc:Language",
+            ),
+        ],
+    );
+    let v3 = edit(&v2, &[("  <rtc:Language", "<rtc:Language")]);
+    let v4 = edit(&v3, &[(r#"rtc:name="cmd""#, r#"rtc:name="velocity""#)]);
+    vec![
+        ("First version", V1.to_string()),
+        ("Release 1.1.0 <with status>", v2),
+        ("Reformat", v3),
+        ("Rename cmd", v4),
+    ]
+}
+
+fn git(dir: &Path, args: &[&str], date: &str) -> bool {
+    std::process::Command::new("git")
+        .args(args)
+        .current_dir(dir)
+        .env("GIT_CONFIG_NOSYSTEM", "1")
+        .env("HOME", dir)
+        .env("GIT_AUTHOR_DATE", date)
+        .env("GIT_COMMITTER_DATE", date)
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
+/// Commits [`versions`] as `Base/RTC.xml` in a new work tree `d`; `false` without git.
+pub fn history_repo(d: &Path) -> bool {
+    std::fs::create_dir_all(d).expect("mkdir");
+    if !git(d, &["--version"], "") {
+        return false;
+    }
+    assert!(git(d, &["init", "-q"], ""));
+    assert!(git(d, &["config", "user.name", "Tester"], ""));
+    assert!(git(d, &["config", "user.email", "t@example.org"], ""));
+    for (i, (subject, text)) in versions().into_iter().enumerate() {
+        super::write(d, "Base/RTC.xml", &text);
+        let date = format!("2024-01-0{} 10:00:00 +0900", i + 1);
+        assert!(git(d, &["add", "-A"], &date));
+        assert!(git(d, &["commit", "-q", "-m", subject], &date));
+    }
+    true
+}
