@@ -5,12 +5,13 @@
 /// The URL of `path` (input-relative, `/`-separated) under `template`: every `{path}` is
 /// replaced by the path with each segment percent-encoded (RFC 3986 unreserved characters and
 /// `/` stay as they are). `None` when the template has no `{path}` (a link to the same page
-/// for every component would be wrong) or is not an http(s) URL (a `javascript:` URL must
-/// never reach a page).
+/// for every component would be wrong), still has a `{commit}` (only a `[[source]]`'s pinned
+/// commit fills it in: [`pinned_source_url`]; a link with the placeholder in it would be
+/// broken) or is not an http(s) URL (a `javascript:` URL must never reach a page).
 pub fn source_url(template: &str, path: &str) -> Option<String> {
     let t = template.trim();
     let scheme_ok = t.starts_with("https://") || t.starts_with("http://");
-    if !scheme_ok || !t.contains("{path}") {
+    if !scheme_ok || !t.contains("{path}") || t.contains("{commit}") {
         return None;
     }
     let mut enc = String::with_capacity(path.len());
@@ -87,6 +88,20 @@ pub fn history_file_url(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `{commit}` is a source's pinned commit: a template of the input directory that has one
+    /// links nothing rather than a URL with the placeholder in it.
+    #[test]
+    fn commit_placeholder_only_with_a_pinned_commit() {
+        let t = "https://github.com/o/r/blob/{commit}/{path}";
+        assert_eq!(source_url(t, "a/RTC.xml"), None);
+        let c = "0123456789abcdef0123456789abcdef01234567";
+        assert_eq!(
+            pinned_source_url(t, c, "a/RTC.xml").as_deref(),
+            Some("https://github.com/o/r/blob/0123456789abcdef0123456789abcdef01234567/a/RTC.xml")
+        );
+        assert_eq!(pinned_source_url(t, "HEAD", "a/RTC.xml"), None);
+    }
 
     #[test]
     fn github_and_gitlab_templates() {
