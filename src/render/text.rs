@@ -129,21 +129,26 @@ pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
     out
 }
 
-/// The neighbourhood section of component `ci` ([`crate::render::neighbourhood`]): a table by
-/// port — the port, its type, `fed by` / `feeds` / `used by` / `uses`, and the neighbour
-/// components, each linked, with a `+N` link to the type or interface page when capped; or
-/// the sentence saying no component connects to it.
-pub fn neighbourhood_section<M: Markup>(out: &mut String, cat: &Catalog, ci: usize, lang: Lang) {
+/// The neighbourhood section of a component page from its view: a table by port — the port,
+/// its type, `fed by` / `feeds` / `used by` / `uses`, and the neighbour components, each
+/// linked, with a `+N` link to the type or interface page when capped; or the sentence saying
+/// no component connects to it.
+fn neighbourhood_section<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    v: &ComponentView<'_>,
+    lang: Lang,
+) {
     use crate::render::neighbourhood as nb;
-    let page = cat.component_page(ci);
+    let page = v.page;
     M::heading(out, page, 2, "sec-neighbourhood", lang.t("neighbourhood"));
-    let n = nb::neighbourhood(cat, ci);
-    if n.is_empty() {
+    if v.neighbourhood.is_empty() {
         M::paragraph(out, &M::esc(lang.t("neighbourhood_none")));
         return;
     }
     M::paragraph(out, &M::esc(lang.t("neighbourhood_intro")));
-    let rows: Vec<Vec<String>> = nb::rows(cat, ci, &n)
+    let rows: Vec<Vec<String>> = v
+        .neighbourhood
         .iter()
         .map(|r| {
             let mut parts: Vec<String> = r
@@ -296,7 +301,7 @@ pub fn component_sections<M: Markup>(
     }
     data_ports_section::<M>(out, cat, v, lang);
     service_ports_section::<M>(out, cat, v, lang);
-    neighbourhood_section::<M>(out, cat, v.ci, lang);
+    neighbourhood_section::<M>(out, cat, v, lang);
     configuration_section::<M>(out, v, lang);
 
     M::heading(out, page, 2, "sec-lifecycle", lang.t("actions"));

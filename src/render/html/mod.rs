@@ -441,16 +441,15 @@ impl<'a> Site<'a> {
         self.catalog.component_page(ci).path("html")
     }
 
-    /// The neighbourhood of component `ci` ([`crate::render::neighbourhood`]): its drawing
-    /// (empty when it has none) and its list.
-    fn neighbourhood(&self, ci: usize) -> (String, Vec<NeighbourhoodRow>) {
+    /// The neighbourhood of a component page's view ([`crate::render::neighbourhood`]): its
+    /// drawing (empty when it has none) and its list.
+    fn neighbourhood(&self, v: &ComponentView<'_>) -> (String, Vec<NeighbourhoodRow>) {
         use crate::render::neighbourhood as nb;
-        let cat = self.catalog;
-        let n = nb::neighbourhood(cat, ci);
-        if n.is_empty() {
+        let (cat, ci, rows) = (self.catalog, v.ci, &v.neighbourhood);
+        if rows.is_empty() {
             return (String::new(), Vec::new());
         }
-        let here = cat.component_page(ci);
+        let here = v.page;
         let href = |to: &crate::catalog::Page, anchor: Option<&str>| {
             if std::ptr::eq(to, here) {
                 anchor.map(|a| format!("#{a}")).unwrap_or_default()
@@ -458,8 +457,7 @@ impl<'a> Site<'a> {
                 cat.href(here, to, anchor, crate::catalog::Output::Html)
             }
         };
-        let rows = nb::rows(cat, ci, &n);
-        let (inst, conns) = nb::wiring(cat, ci, &rows, self.lang, &href);
+        let (inst, conns) = nb::wiring(cat, ci, rows, self.lang, &href);
         let me = cat.components[ci].display_name();
         let svg = system_svg::system_diagram_with(
             &format!("{} {me}", self.t("neighbourhood_of")),
@@ -693,7 +691,7 @@ impl<'a> Site<'a> {
             })
             .collect();
         let (diagram_svg, lifecycle_svg) = self.component_diagrams(v, &actions);
-        let (neighbourhood_svg, neighbourhood) = self.neighbourhood(v.ci);
+        let (neighbourhood_svg, neighbourhood) = self.neighbourhood(v);
         let description = match v.lead {
             Some(d) => markdown::first_line(d, 160),
             None => format!("{}: {} — {}", v.name, self.t("component"), self.opts.title),

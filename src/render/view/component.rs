@@ -8,6 +8,7 @@ use crate::i18n::Lang;
 use crate::model::{self, non_empty, ActionKind, Direction, PortDirection};
 use crate::readme::Readme;
 use crate::render::facts::{self, BackupRow, Fact};
+use crate::render::neighbourhood::{self as nb, NeighbourRow};
 use crate::types::{canonical_type, short_name};
 
 /// A data port row.
@@ -111,6 +112,9 @@ pub struct ComponentView<'a> {
     pub backups: Vec<BackupRow>,
     /// The History section: the latest versions of the profile ([`super::history`]).
     pub history: super::history::HistoryView,
+    /// The components one connector away, by port ([`crate::render::neighbourhood`]): empty
+    /// when no component connects to this one.
+    pub neighbourhood: Vec<NeighbourRow<'a>>,
 }
 
 /// The data port's direction: label and class (`in`, `out`, `event`, `other`).
@@ -355,5 +359,6 @@ pub fn component_view<'a>(
                 .then(|| crate::render::html::repo::pinned_source_url(template, commit, path))
                 .flatten()
         }),
+        neighbourhood: nb::rows(cat, ci, &nb::neighbourhood(cat, ci)),
     }
 }
