@@ -6,6 +6,7 @@
 
 use super::facts::{self, Fact};
 use super::view::component::ComponentView;
+use super::view::facets::{ComponentRow, FacetIndexView, FacetView};
 use super::view::types::{TypeKind, TypeView};
 use super::view::{Linked, Peers};
 use crate::catalog::{Catalog, Output, Page};
@@ -77,6 +78,11 @@ pub trait Markup {
         text: &str,
     ) -> String {
         Self::link(text, &cat.href(from, to, anchor, Self::OUTPUT))
+    }
+    /// A link on page `from` to page `to` that hangs `to` under `from` in the output's page
+    /// tree (Doxygen's `\\subpage`); elsewhere a link with `text`.
+    fn child_link(cat: &Catalog, from: &Page, to: &Page, text: &str) -> String {
+        Self::page_link(cat, from, to, None, text)
     }
     /// The target of a link on page `from` to page `to`, for [`Markup::link`].
     fn page_target(cat: &Catalog, from: &Page, to: &Page) -> String {
@@ -232,12 +238,113 @@ pub fn component_cols(lang: Lang) -> [&'static str; 4] {
     ]
 }
 
-/// A view's link as a cell: linked when it has a target, else plain.
+/// A view's link as a cell: linked when it has a target the output writes, else plain.
 pub fn linked<M: Markup>(cat: &Catalog, from: &Page, l: &Linked<'_>) -> String {
     match l.to {
-        Some((to, anchor)) => M::page_link(cat, from, to, anchor, &l.text),
-        None => M::esc(&l.text),
+        Some((to, anchor)) if M::OUTPUT.carries(to.kind) => {
+            M::page_link(cat, from, to, anchor, &l.text)
+        }
+        _ => M::esc(&l.text),
     }
+}
+
+/// The way back from an entry page: the front page (named by the site's title), then `index`
+/// (named by its label) if given.
+pub fn crumbs<'a>(
+    cat: &'a Catalog,
+    site_title: &str,
+    index: Option<(&'a Page, &str)>,
+) -> Vec<Linked<'a>> {
+    let home = Linked::new(
+        site_title,
+        Some(cat.site_page(crate::catalog::PageKind::Index)),
+        None,
+    );
+    std::iter::once(home)
+        .chain(index.map(|(page, label)| Linked::new(label, Some(page), None)))
+        .collect()
+}
+
+/// A list of components as a table (name, description, vendor, version) on page `from`;
+/// `parent`: the components hang from `from` in the page tree.
+pub fn component_table<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    from: &Page,
+    rows: &[ComponentRow<'_>],
+    parent: bool,
+    lang: Lang,
+) {
+    let cells: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            let name = match r.name.to {
+                Some((to, _)) if parent => M::child_link(cat, from, to, &r.name.text),
+                _ => linked::<M>(cat, from, &r.name),
+            };
+            vec![
+                name,
+                M::esc(r.description),
+                M::esc(r.vendor),
+                M::esc(r.version),
+            ]
+        })
+        .collect();
+    M::table(out, &component_cols(lang), &cells);
+}
+
+/// A category's or vendor's page from its view: title and the way back, the other spellings
+/// met, and its components.
+pub fn facet_page<M: Markup>(
+    cat: &Catalog,
+    v: &FacetView<'_>,
+    site_title: &str,
+    lang: Lang,
+) -> String {
+    let mut out = String::new();
+    let crumbs = crumbs(cat, site_title, Some((v.index, lang.t(v.kind.index_key()))));
+    M::page_head(&mut out, cat, v.page, &v.name, &crumbs);
+    if !v.variants.is_empty() {
+        let names: Vec<String> = v.variants.iter().map(|n| M::esc(n)).collect();
+        M::paragraph(
+            &mut out,
+            &format!("{}: {}", M::esc(lang.t("facet_variants")), names.join(", ")),
+        );
+    }
+    component_table::<M>(&mut out, cat, v.page, &v.components, v.parent, lang);
+    out
+}
+
+/// The index of the categories or vendors from its view: each one linked, with its number of
+/// components.
+pub fn facet_index_page<M: Markup>(
+    cat: &Catalog,
+    v: &FacetIndexView<'_>,
+    site_title: &str,
+    lang: Lang,
+) -> String {
+    let mut out = String::new();
+    M::page_head(
+        &mut out,
+        cat,
+        v.page,
+        lang.t(v.kind.index_key()),
+        &crumbs(cat, site_title, None),
+    );
+    let items: Vec<String> = v
+        .facets
+        .iter()
+        .filter_map(|f| {
+            let (to, _) = f.name.to?;
+            Some(format!(
+                "{} ({})",
+                M::child_link(cat, v.page, to, &f.name.text),
+                f.count
+            ))
+        })
+        .collect();
+    M::linked_list(&mut out, &items);
+    out
 }
 
 /// A port's "connects to" cell from its view: one link per peer component, then "+N — …".

@@ -22,6 +22,7 @@ pub use system_svg::standalone_system_diagram;
 pub mod systems;
 
 use super::facts::{self, Fact, FactKind};
+use super::view::facets::{facet_index_view, facet_view, FacetKind, FacetView};
 use super::view::{self, component::ComponentView, Linked};
 use super::{RenderContext, Renderer, SiteOptions};
 use crate::catalog::{Catalog, Facet, Output, Page, PageKind};
@@ -1217,6 +1218,55 @@ fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
     minijinja::context! { ..common, ..own }
 }
 
+/// The index of the categories or vendors (`facets.html`), from its view.
+fn facet_index_job<'a>(site: &'a Site<'a>, kind: FacetKind) -> Job<'a> {
+    let (catalog, lang) = (site.catalog, site.lang);
+    let v = facet_index_view(catalog, kind, lang);
+    let root = "../";
+    let list: Vec<(Link, usize)> = v
+        .facets
+        .iter()
+        .filter_map(|f| {
+            // A facet page is beside the index: its file name is the link.
+            let (to, _) = f.name.to?;
+            let link = Link {
+                text: f.name.text.clone(),
+                href: to.file_name("html"),
+            };
+            Some((link, f.count))
+        })
+        .collect();
+    let key = kind.index_key();
+    Job {
+        path: v.page.path("html"),
+        template: "facets.html",
+        context: PageContext::Ready(minijinja::context! {
+            root => root,
+            title => page_title(site, lang.t(key)),
+            heading => lang.t(key),
+            crumbs => ctx(&crumbs_home(lang, root)),
+            facets => ctx(&list),
+        }),
+    }
+}
+
+/// The template context of a category's or vendor's page (`facet.html`), from its view.
+fn facet_context(site: &Site<'_>, v: &FacetView<'_>) -> Value {
+    let lang = site.lang;
+    let root = "../";
+    let members: Vec<usize> = v.components.iter().map(|r| r.ci).collect();
+    minijinja::context! {
+        root => root,
+        title => page_title(site, &v.name),
+        heading => v.name.clone(),
+        kind => lang.t(v.kind.key()),
+        variants => ctx(&v.variants),
+        variants_label => lang.t("facet_variants"),
+        crumbs => ctx(&crumbs_section(lang, root, v.kind.index_key())),
+        components => ctx(&site.sorted_summaries(&members)),
+    }
+}
+
 /// `<title>` of a page: its own title, then the site's.
 fn page_title(site: &Site<'_>, s: &str) -> String {
     format!("{s} — {}", site.opts.title)
@@ -1278,68 +1328,14 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
     });
 
     // Category and vendor pages.
-    type PageOf = fn(&Catalog, usize) -> &crate::catalog::Page;
-    for (dir, facets, key, empty_key, index_kind, page_of) in [
-        (
-            "categories",
-            &catalog.categories,
-            "categories",
-            "no_category",
-            PageKind::Categories,
-            Catalog::category_page as PageOf,
-        ),
-        (
-            "vendors",
-            &catalog.vendors,
-            "vendors",
-            "no_vendor",
-            PageKind::Vendors,
-            Catalog::vendor_page as PageOf,
-        ),
-    ] {
-        let root = "../";
-        let list: Vec<(Link, usize)> = facets
-            .iter()
-            .enumerate()
-            .map(|(fi, f)| {
-                (
-                    Link {
-                        text: site.facet_name(&f.name, empty_key),
-                        href: page_of(catalog, fi).file_name("html"),
-                    },
-                    f.components.len(),
-                )
-            })
-            .collect();
-        pages.push(Job {
-            path: catalog.site_page(index_kind).path("html"),
-            template: "facets.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => root,
-                title => title(lang.t(key)),
-                heading => lang.t(key),
-                crumbs => ctx(&crumbs_home(lang, root)),
-                facets => ctx(&list),
-            }),
-        });
-        for (fi, f) in facets.iter().enumerate() {
+    for kind in [FacetKind::Category, FacetKind::Vendor] {
+        pages.push(facet_index_job(site, kind));
+        for fi in 0..kind.facets(catalog).len() {
             pages.push(Job {
-                path: page_of(catalog, fi).path("html"),
+                path: kind.page(catalog, fi).path("html"),
                 template: "facet.html",
                 context: PageContext::Lazy(Box::new(move || {
-                    let name = site.facet_name(&f.name, empty_key);
-                    let crumbs = crumbs_section(lang, root, key);
-                    let comps = site.sorted_summaries(&catalog.members(f).collect::<Vec<_>>());
-                    minijinja::context! {
-                        root => root,
-                        title => page_title(site, &name),
-                        heading => name,
-                        kind => lang.t(if dir == "categories" { "category" } else { "vendor" }),
-                        variants => ctx(&f.variants),
-                        variants_label => lang.t("facet_variants"),
-                        crumbs => ctx(&crumbs),
-                        components => ctx(&comps),
-                    }
+                    facet_context(site, &facet_view(catalog, kind, fi, lang))
                 })),
             });
         }
