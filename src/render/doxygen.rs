@@ -24,14 +24,11 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::text::{
-    category_name, component_cols, component_sections, facets_of_each, interface_index_table,
-    type_index_table, Markup,
-};
-use super::text::{facet_index_page, facet_page, type_page};
+use super::text::{category_name, component_cols, component_sections, facets_of_each, Markup};
+use super::text::{facet_index_page, facet_page, type_index_page, type_page};
 use super::view::component::component_view;
 use super::view::facets::{facet_index_view, facet_view, FacetKind};
-use super::view::types::{data_type_view, interface_view};
+use super::view::types::{data_type_view, interface_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Output, Page, PageKind};
@@ -561,40 +558,6 @@ fn dataflow_page(cat: &Catalog, lang: Lang) -> String {
     out
 }
 
-fn type_index(cat: &Catalog, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::DataTypes);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(lang.t("data_types"))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    type_index_table::<Dox>(&mut out, cat, lang, |to| {
-        format!("\\subpage {}", cat.href(page, to, None, DOX))
-    });
-    out
-}
-
-fn interface_index(cat: &Catalog, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Interfaces);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(lang.t("interfaces"))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    interface_index_table::<Dox>(&mut out, cat, lang, |to| {
-        format!("\\subpage {}", cat.href(page, to, None, DOX))
-    });
-    out
-}
-
 /// A Doxyfile string value: quoted, with `\` and `"` escaped and no line breaks.
 fn doxyfile_string(s: &str) -> String {
     let one = s.split_whitespace().collect::<Vec<_>>().join(" ");
@@ -710,11 +673,11 @@ fn other_pages(
         ),
         (
             cat.site_page(PageKind::DataTypes).path_in(DOX),
-            type_index(cat, lang),
+            type_index_page::<Dox>(cat, &type_index_view(cat, TypeKind::Data), "", lang),
         ),
         (
             cat.site_page(PageKind::Interfaces).path_in(DOX),
-            interface_index(cat, lang),
+            type_index_page::<Dox>(cat, &type_index_view(cat, TypeKind::Interface), "", lang),
         ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {

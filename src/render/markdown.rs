@@ -18,14 +18,11 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::text::{
-    category_name, component_cols, component_sections, facets_of_each, interface_index_table,
-    type_index_table, Markup,
-};
-use super::text::{facet_index_page, facet_page, type_page};
+use super::text::{category_name, component_cols, component_sections, facets_of_each, Markup};
+use super::text::{facet_index_page, facet_page, type_index_page, type_page};
 use super::view::component::component_view;
 use super::view::facets::{facet_index_view, facet_view, FacetKind};
-use super::view::types::{data_type_view, interface_view};
+use super::view::types::{data_type_view, interface_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
@@ -463,32 +460,6 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     out
 }
 
-fn type_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::DataTypes);
-    let mut out = String::new();
-    w!(out, "# {}", inline(lang.t("data_types")));
-    w!(out);
-    w!(out, "{}", link(title, &home(cat, page)));
-    w!(out);
-    type_index_table::<Md>(&mut out, cat, lang, |to| {
-        link(&to.title, &cat.href(page, to, None, MD))
-    });
-    out
-}
-
-fn interface_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Interfaces);
-    let mut out = String::new();
-    w!(out, "# {}", inline(lang.t("interfaces")));
-    w!(out);
-    w!(out, "{}", link(title, &home(cat, page)));
-    w!(out);
-    interface_index_table::<Md>(&mut out, cat, lang, |to| {
-        link(&to.title, &cat.href(page, to, None, MD))
-    });
-    out
-}
-
 /// An item of `SUMMARY.md` (at the root, beside `index.md`): one line, escaped like
 /// everything else.
 fn summary_item(out: &mut String, cat: &Catalog, indent: usize, text: &str, to: &Page) {
@@ -736,11 +707,11 @@ fn other_pages(
         (cat.site_page(PageKind::Index).path_in(MD), index),
         (
             cat.site_page(PageKind::DataTypes).path_in(MD),
-            type_index_page(cat, title, lang),
+            type_index_page::<Md>(cat, &type_index_view(cat, TypeKind::Data), title, lang),
         ),
         (
             cat.site_page(PageKind::Interfaces).path_in(MD),
-            interface_index_page(cat, title, lang),
+            type_index_page::<Md>(cat, &type_index_view(cat, TypeKind::Interface), title, lang),
         ),
         (
             cat.site_page(PageKind::Vendors).path_in(MD),

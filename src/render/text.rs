@@ -7,7 +7,7 @@
 use super::facts::{self, Fact};
 use super::view::component::ComponentView;
 use super::view::facets::{ComponentRow, FacetIndexView, FacetView};
-use super::view::types::{TypeKind, TypeView};
+use super::view::types::{TypeIndexView, TypeKind, TypeView};
 use super::view::{Linked, Peers};
 use crate::catalog::{Catalog, Output, Page};
 use crate::i18n::Lang;
@@ -671,10 +671,7 @@ pub fn type_page<M: Markup>(
 ) -> String {
     let page = v.page;
     let mut out = String::new();
-    let index_key = match v.kind {
-        TypeKind::Data => "data_types",
-        TypeKind::Interface => "interfaces",
-    };
+    let index_key = v.kind.index_key();
     let crumbs = [
         Linked::new(
             site_title,
@@ -740,74 +737,54 @@ pub fn type_page<M: Markup>(
     out
 }
 
-/// The table of every data type with its producer, consumer and other counts; `name` makes
-/// the first cell (a link to the type's page).
-pub fn type_index_table<M: Markup>(
-    out: &mut String,
+/// The index of the data types or of the interfaces from its view: each linked, with its
+/// numbers of uses by role; an interface nobody provides is flagged.
+pub fn type_index_page<M: Markup>(
     cat: &Catalog,
+    v: &TypeIndexView<'_>,
+    site_title: &str,
     lang: Lang,
-    name: impl Fn(&Page) -> String,
-) {
-    let rows: Vec<Vec<String>> = cat
-        .data_types
+) -> String {
+    let mut out = String::new();
+    let page = v.page;
+    M::page_head(
+        &mut out,
+        cat,
+        page,
+        lang.t(v.kind.index_key()),
+        &crumbs(cat, site_title, None),
+    );
+    let rows: Vec<Vec<String>> = v
+        .rows
         .iter()
-        .enumerate()
-        .map(|(ti, t)| {
-            vec![
-                name(cat.data_type_page(ti)),
-                t.producers.len().to_string(),
-                t.consumers.len().to_string(),
-                t.others.len().to_string(),
-            ]
+        .map(|r| {
+            let mut cell = M::child_link(cat, page, r.page, &r.page.title);
+            if r.unprovided {
+                cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
+            }
+            std::iter::once(cell)
+                .chain(r.counts.iter().map(usize::to_string))
+                .collect()
         })
         .collect();
-    M::table(
-        out,
-        &[
+    let headers = match v.kind {
+        TypeKind::Data => [
             lang.t("data_type"),
             lang.t("producers"),
             lang.t("consumers"),
-            lang.t("fact_others"),
         ],
-        &rows,
-    );
-}
-
-/// The table of every interface with its provider, requirer and other counts, flagging
-/// interfaces nobody provides; `name` makes the link to the interface's page.
-pub fn interface_index_table<M: Markup>(
-    out: &mut String,
-    cat: &Catalog,
-    lang: Lang,
-    name: impl Fn(&Page) -> String,
-) {
-    let rows: Vec<Vec<String>> = cat
-        .interfaces
-        .iter()
-        .enumerate()
-        .map(|(ii, t)| {
-            let mut cell = name(cat.interface_page(ii));
-            if t.is_unprovided() {
-                cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
-            }
-            vec![
-                cell,
-                t.providers.len().to_string(),
-                t.requirers.len().to_string(),
-                t.others.len().to_string(),
-            ]
-        })
-        .collect();
-    M::table(
-        out,
-        &[
+        TypeKind::Interface => [
             lang.t("interface"),
             lang.t("providers"),
             lang.t("requirers"),
-            lang.t("fact_others"),
         ],
+    };
+    M::table(
+        &mut out,
+        &[headers[0], headers[1], headers[2], lang.t("fact_others")],
         &rows,
     );
+    out
 }
 
 /// The data-flow page's body for Markdown and Doxygen: the explanation, then for categories and

@@ -23,6 +23,7 @@ pub mod systems;
 
 use super::facts::{self, Fact, FactKind};
 use super::view::facets::{facet_index_view, facet_view, FacetKind, FacetView};
+use super::view::types::TypeKind;
 use super::view::{self, component::ComponentView, Linked};
 use super::{RenderContext, Renderer, SiteOptions};
 use crate::catalog::{Catalog, Facet, Output, Page, PageKind};
@@ -1170,7 +1171,6 @@ fn ctx<S: Serialize>(v: &S) -> Value {
 /// The template context of a data type's or interface's page (`type.html`,
 /// `interface.html`), from its view.
 fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
-    use view::types::TypeKind;
     let (catalog, lang) = (site.catalog, site.lang);
     let link = |l: &Linked<'_>| Link {
         text: l.text.clone(),
@@ -1216,6 +1216,51 @@ fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
         },
     };
     minijinja::context! { ..common, ..own }
+}
+
+/// The index of the data types (`types.html`) or of the interfaces (`interfaces.html`), from
+/// its view.
+fn type_index_job<'a>(site: &'a Site<'a>, kind: TypeKind) -> Job<'a> {
+    let lang = site.lang;
+    let v = view::types::type_index_view(site.catalog, kind);
+    let root = "../";
+    // An entry's page is beside the index: its file name is the link.
+    let rows: Vec<Value> = v
+        .rows
+        .iter()
+        .map(|r| {
+            let (name, href) = (r.name, r.page.file_name("html"));
+            let [first, second, others] = r.counts;
+            match kind {
+                TypeKind::Data => minijinja::context! {
+                    name, href, spellings => r.other_spellings.clone(),
+                    producers => first, consumers => second, others,
+                },
+                TypeKind::Interface => minijinja::context! {
+                    name, href, providers => first, requirers => second,
+                    unprovided => r.unprovided,
+                },
+            }
+        })
+        .collect();
+    let key = kind.index_key();
+    let (template, list) = match kind {
+        TypeKind::Data => ("types.html", minijinja::context! { types => rows }),
+        TypeKind::Interface => (
+            "interfaces.html",
+            minijinja::context! { interfaces => rows },
+        ),
+    };
+    Job {
+        path: v.page.path("html"),
+        template,
+        context: PageContext::Ready(minijinja::context! {
+            root => root,
+            title => page_title(site, lang.t(key)),
+            crumbs => ctx(&crumbs_home(lang, root)),
+            ..list
+        }),
+    }
 }
 
 /// The index of the categories or vendors (`facets.html`), from its view.
@@ -1341,96 +1386,29 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
         }
     }
 
-    // Data types.
-    {
-        let root = "../";
-        #[derive(Serialize)]
-        struct TypeRow {
-            name: String,
-            href: String,
-            spellings: Vec<String>,
-            producers: usize,
-            consumers: usize,
-            others: usize,
-        }
-        let rows: Vec<TypeRow> = catalog
-            .data_types
-            .iter()
-            .enumerate()
-            .map(|(ti, t)| TypeRow {
-                name: t.name.clone(),
-                href: catalog.data_type_page(ti).file_name("html"),
-                spellings: t
-                    .spellings
-                    .iter()
-                    .filter(|s| **s != t.name)
-                    .cloned()
-                    .collect(),
-                producers: t.producers.len(),
-                consumers: t.consumers.len(),
-                others: t.others.len(),
-            })
-            .collect();
-        pages.push(Job {
-            path: catalog.site_page(PageKind::DataTypes).path("html"),
-            template: "types.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => root,
-                title => title(lang.t("data_types")),
-                crumbs => ctx(&crumbs_home(lang, root)),
-                types => ctx(&rows),
-            }),
-        });
-        for ti in 0..catalog.data_types.len() {
+    // Data types and interfaces.
+    for kind in [TypeKind::Data, TypeKind::Interface] {
+        pages.push(type_index_job(site, kind));
+        let (count, template) = match kind {
+            TypeKind::Data => (catalog.data_types.len(), "type.html"),
+            TypeKind::Interface => (catalog.interfaces.len(), "interface.html"),
+        };
+        for i in 0..count {
+            let page = match kind {
+                TypeKind::Data => catalog.data_type_page(i),
+                TypeKind::Interface => catalog.interface_page(i),
+            };
             pages.push(Job {
-                path: catalog.data_type_page(ti).path("html"),
-                template: "type.html",
+                path: page.path("html"),
+                template,
                 context: PageContext::Lazy(Box::new(move || {
-                    type_context(site, &view::types::data_type_view(catalog, ti, lang))
-                })),
-            });
-        }
-    }
-
-    // Interfaces.
-    {
-        let root = "../";
-        #[derive(Serialize)]
-        struct IfRow {
-            name: String,
-            href: String,
-            providers: usize,
-            requirers: usize,
-            unprovided: bool,
-        }
-        let rows: Vec<IfRow> = catalog
-            .interfaces
-            .iter()
-            .enumerate()
-            .map(|(ii, t)| IfRow {
-                name: t.name.clone(),
-                href: catalog.interface_page(ii).file_name("html"),
-                providers: t.providers.len(),
-                requirers: t.requirers.len(),
-                unprovided: t.is_unprovided(),
-            })
-            .collect();
-        pages.push(Job {
-            path: catalog.site_page(PageKind::Interfaces).path("html"),
-            template: "interfaces.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => root,
-                title => title(lang.t("interfaces")),
-                crumbs => ctx(&crumbs_home(lang, root)),
-                interfaces => ctx(&rows),
-            }),
-        });
-        for ii in 0..catalog.interfaces.len() {
-            pages.push(Job {
-                path: catalog.interface_page(ii).path("html"),
-                template: "interface.html",
-                context: PageContext::Lazy(Box::new(move || {
-                    type_context(site, &view::types::interface_view(catalog, ii, lang))
+                    type_context(
+                        site,
+                        &match kind {
+                            TypeKind::Data => view::types::data_type_view(catalog, i, lang),
+                            TypeKind::Interface => view::types::interface_view(catalog, i, lang),
+                        },
+                    )
                 })),
             });
         }

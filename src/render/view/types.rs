@@ -14,6 +14,24 @@ pub enum TypeKind {
     Interface,
 }
 
+impl TypeKind {
+    /// The page kind of the kind's index.
+    pub fn index_kind(self) -> PageKind {
+        match self {
+            TypeKind::Data => PageKind::DataTypes,
+            TypeKind::Interface => PageKind::Interfaces,
+        }
+    }
+
+    /// The label key of the kind's index (`data_types`, `interfaces`).
+    pub fn index_key(self) -> &'static str {
+        match self {
+            TypeKind::Data => "data_types",
+            TypeKind::Interface => "interfaces",
+        }
+    }
+}
+
 /// One port (or interface of a service port) using the type: its component, the port, and
 /// the type as that profile spells it.
 pub struct UseRow<'a> {
@@ -110,7 +128,7 @@ pub fn data_type_view(cat: &Catalog, ti: usize, lang: Lang) -> TypeView<'_> {
     TypeView {
         kind: TypeKind::Data,
         page: cat.data_type_page(ti),
-        index: cat.site_page(PageKind::DataTypes),
+        index: cat.site_page(TypeKind::Data.index_kind()),
         name: &t.name,
         unprovided: false,
         spellings: &t.spellings,
@@ -159,7 +177,7 @@ pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
     TypeView {
         kind: TypeKind::Interface,
         page: cat.interface_page(ii),
-        index: cat.site_page(PageKind::Interfaces),
+        index: cat.site_page(TypeKind::Interface.index_kind()),
         name: &t.name,
         unprovided: t.is_unprovided(),
         spellings: &t.spellings,
@@ -183,5 +201,67 @@ pub fn interface_view(cat: &Catalog, ii: usize, lang: Lang) -> TypeView<'_> {
         ]),
         carried_by: Vec::new(),
         contained_in: Vec::new(),
+    }
+}
+
+/// One entry of the data type or interface index: its page, name, the other spellings
+/// met, its numbers of uses by role (producers, consumers, others for a data type; providers,
+/// requirers, others for an interface) and whether it is an interface no component provides.
+pub struct TypeIndexRow<'a> {
+    pub page: &'a Page,
+    pub name: &'a str,
+    pub other_spellings: Vec<&'a str>,
+    pub counts: [usize; 3],
+    pub unprovided: bool,
+}
+
+/// The index of the data types or of the interfaces.
+pub struct TypeIndexView<'a> {
+    pub kind: TypeKind,
+    pub page: &'a Page,
+    pub rows: Vec<TypeIndexRow<'a>>,
+}
+
+/// The spellings of a type other than its `name`.
+fn other_spellings<'a>(name: &str, spellings: &'a [String]) -> Vec<&'a str> {
+    spellings
+        .iter()
+        .filter(|s| *s != name)
+        .map(String::as_str)
+        .collect()
+}
+
+/// The view of the index of `kind`: every data type or interface of the catalogue, in order.
+pub fn type_index_view(cat: &Catalog, kind: TypeKind) -> TypeIndexView<'_> {
+    let rows = match kind {
+        TypeKind::Data => cat
+            .data_types
+            .iter()
+            .enumerate()
+            .map(|(ti, t)| TypeIndexRow {
+                page: cat.data_type_page(ti),
+                name: &t.name,
+                other_spellings: other_spellings(&t.name, &t.spellings),
+                counts: [t.producers.len(), t.consumers.len(), t.others.len()],
+                unprovided: false,
+            })
+            .collect(),
+        TypeKind::Interface => cat
+            .interfaces
+            .iter()
+            .enumerate()
+            .map(|(ii, t)| TypeIndexRow {
+                page: cat.interface_page(ii),
+                name: &t.name,
+                other_spellings: other_spellings(&t.name, &t.spellings),
+                counts: [t.providers.len(), t.requirers.len(), t.others.len()],
+                unprovided: t.is_unprovided(),
+            })
+            .collect(),
+    };
+    TypeIndexView {
+        kind,
+        page: cat.site_page(kind.index_kind()),
+        rows,
     }
 }
