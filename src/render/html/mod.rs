@@ -362,6 +362,21 @@ struct ExtraRow {
     value: String,
 }
 
+impl ExtraRow {
+    /// The row of an extra value of the profile and its kind.
+    fn of((f, kind): &(Fact, ExtraKind)) -> ExtraRow {
+        ExtraRow {
+            kind: match kind {
+                ExtraKind::Attribute => "attribute",
+                ExtraKind::Element => "element",
+                ExtraKind::Key => "key",
+            },
+            name: f.label.to_string(),
+            value: f.value.clone(),
+        }
+    }
+}
+
 #[derive(Serialize)]
 struct ComponentPage {
     root: &'static str,
@@ -590,35 +605,10 @@ impl<'a> Site<'a> {
         self.component_context(&v)
     }
 
-    /// The template context of a component page, from its view.
-    fn component_context(&self, v: &ComponentView<'_>) -> ComponentPage {
-        let lang = self.lang;
-        let page = v.page;
-        let index = self.catalog.site_page(PageKind::Index);
-        let crumbs = vec![
-            Link {
-                text: self.t("catalogue").to_string(),
-                href: self.catalog.href(page, index, None, Output::Html),
-            },
-            Link {
-                text: v.category.text.clone(),
-                href: v
-                    .category
-                    .target(self.catalog, page, Output::Html)
-                    .unwrap_or_default(),
-            },
-        ];
-        let mut header = fields(lang, None, v.basic.clone());
-        // `source-url`: "Source" links to the file in its repository.
-        if let Some(url) = &v.source_url {
-            let label = lang.t("source");
-            if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
-                let path = f.text.take().unwrap_or_default();
-                f.html = Some(repo::source_link_html(url, &path));
-            }
-        }
-        let data_ports: Vec<DataPortRow> = v
-            .data_ports
+    /// The data port rows of a component page, from its view.
+    fn data_port_rows(&self, v: &ComponentView<'_>) -> Vec<DataPortRow> {
+        let (lang, page) = (self.lang, v.page);
+        v.data_ports
             .iter()
             .map(|dp| {
                 let (peers, peers_more) = self.peers(page, &dp.peers);
@@ -642,9 +632,13 @@ impl<'a> Site<'a> {
                     peers_more,
                 }
             })
-            .collect();
-        let service_ports: Vec<ServicePortRow> = v
-            .service_ports
+            .collect()
+    }
+
+    /// The service port rows of a component page, with their interfaces, from its view.
+    fn service_port_rows(&self, v: &ComponentView<'_>) -> Vec<ServicePortRow> {
+        let (lang, page) = (self.lang, v.page);
+        v.service_ports
             .iter()
             .map(|sp| ServicePortRow {
                 anchor: sp.anchor.to_string(),
@@ -668,30 +662,54 @@ impl<'a> Site<'a> {
                     })
                     .collect(),
             })
-            .collect();
-        let configurations: Vec<ConfigurationRow> = v
-            .configurations
-            .iter()
-            .map(|conf| ConfigurationRow {
-                anchor: conf.anchor.to_string(),
-                name: conf.name.to_string(),
-                type_: conf.type_.to_string(),
-                default: conf.default.to_string(),
-                unit: conf.unit.to_string(),
-                constraint: conf.constraint.clone(),
-                widget: conf.widget.clone(),
-                details: lead_fields(lang, conf.description, &conf.details),
-            })
-            .collect();
-        let actions: Vec<ActionRow> = v
-            .actions
-            .iter()
-            .map(|a| ActionRow {
-                name: a.kind.callback_name(),
-                implemented: a.implemented,
-                details: fields(lang, None, a.details.clone()),
-            })
-            .collect();
+            .collect()
+    }
+
+    /// The way back from a component page: the catalogue, then its category.
+    fn component_crumbs(&self, v: &ComponentView<'_>) -> Vec<Link> {
+        let page = v.page;
+        let index = self.catalog.site_page(PageKind::Index);
+        vec![
+            Link {
+                text: self.t("catalogue").to_string(),
+                href: self.catalog.href(page, index, None, Output::Html),
+            },
+            Link {
+                text: v.category.text.clone(),
+                href: v
+                    .category
+                    .target(self.catalog, page, Output::Html)
+                    .unwrap_or_default(),
+            },
+        ]
+    }
+
+    /// The basic information of a component page; "Source" links to the file in its
+    /// repository when `source-url` is set.
+    fn component_header(&self, v: &ComponentView<'_>) -> Vec<Field> {
+        let lang = self.lang;
+        let mut header = fields(lang, None, v.basic.clone());
+        // `source-url`: "Source" links to the file in its repository.
+        if let Some(url) = &v.source_url {
+            let label = lang.t("source");
+            if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
+                let path = f.text.take().unwrap_or_default();
+                f.html = Some(repo::source_link_html(url, &path));
+            }
+        }
+        header
+    }
+
+    /// The template context of a component page, from its view.
+    fn component_context(&self, v: &ComponentView<'_>) -> ComponentPage {
+        let lang = self.lang;
+        let page = v.page;
+        let crumbs = self.component_crumbs(v);
+        let header = self.component_header(v);
+        let data_ports = self.data_port_rows(v);
+        let service_ports = self.service_port_rows(v);
+        let configurations = configuration_rows(lang, v);
+        let actions = action_rows(lang, v);
         let (diagram_svg, lifecycle_svg) = self.component_diagrams(v, &actions);
         let (neighbourhood_svg, neighbourhood) = self.neighbourhood(v);
         let description = match v.lead {
@@ -769,19 +787,7 @@ impl<'a> Site<'a> {
                 .collect(),
             properties: key_values(v.properties.clone()),
             version_up_logs: v.version_up_logs.iter().map(|s| s.to_string()).collect(),
-            extras: v
-                .extras
-                .iter()
-                .map(|(f, kind)| ExtraRow {
-                    kind: match kind {
-                        ExtraKind::Attribute => "attribute",
-                        ExtraKind::Element => "element",
-                        ExtraKind::Key => "key",
-                    },
-                    name: f.label.to_string(),
-                    value: f.value.clone(),
-                })
-                .collect(),
+            extras: v.extras.iter().map(ExtraRow::of).collect(),
             systems: v
                 .systems
                 .iter()
@@ -849,6 +855,35 @@ impl<'a> Site<'a> {
         );
         (diagram, lifecycle)
     }
+}
+
+/// The configuration rows of a component page, from its view.
+fn configuration_rows(lang: Lang, v: &ComponentView<'_>) -> Vec<ConfigurationRow> {
+    v.configurations
+        .iter()
+        .map(|conf| ConfigurationRow {
+            anchor: conf.anchor.to_string(),
+            name: conf.name.to_string(),
+            type_: conf.type_.to_string(),
+            default: conf.default.to_string(),
+            unit: conf.unit.to_string(),
+            constraint: conf.constraint.clone(),
+            widget: conf.widget.clone(),
+            details: lead_fields(lang, conf.description, &conf.details),
+        })
+        .collect()
+}
+
+/// The lifecycle action rows of a component page, from its view.
+fn action_rows(lang: Lang, v: &ComponentView<'_>) -> Vec<ActionRow> {
+    v.actions
+        .iter()
+        .map(|a| ActionRow {
+            name: a.kind.callback_name(),
+            implemented: a.implemented,
+            details: fields(lang, None, a.details.clone()),
+        })
+        .collect()
 }
 
 /// A page to render: output path, template and context. The context of the many per-item

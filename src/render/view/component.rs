@@ -133,20 +133,10 @@ fn short(t: &Option<model::Text>) -> String {
         .unwrap_or_default()
 }
 
-/// Builds the view of component `ci`. `category` and `vendor` are its facets
-/// ([`Catalog::category_of_each`], [`Catalog::vendor_of_each`]); `source_url` the
-/// `source-url` template (a component of a `[[source]]` uses its source's instead).
-pub fn component_view<'a>(
-    cat: &'a Catalog,
-    ci: usize,
-    (category, vendor): (usize, usize),
-    source_url: Option<&str>,
-    lang: Lang,
-) -> ComponentView<'a> {
+/// The data ports of component `ci`, each with its type linked and its peers.
+fn data_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<DataPortView<'_>> {
     let c = &cat.components[ci];
-    let p = &c.profile;
-    let page = cat.component_page(ci);
-    let data_ports = p
+    c.profile
         .data_ports
         .iter()
         .enumerate()
@@ -191,8 +181,14 @@ pub fn component_view<'a>(
                 ),
             }
         })
-        .collect();
-    let service_ports = p
+        .collect()
+}
+
+/// The service ports of component `ci`, each with its interfaces, their types linked and
+/// their peers.
+fn service_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<ServicePortView<'_>> {
+    let c = &cat.components[ci];
+    c.profile
         .service_ports
         .iter()
         .enumerate()
@@ -248,8 +244,12 @@ pub fn component_view<'a>(
                 })
                 .collect(),
         })
-        .collect();
-    let configurations = p
+        .collect()
+}
+
+/// The configuration parameters of component `c`.
+fn configuration_views(c: &crate::catalog::Component, lang: Lang) -> Vec<ConfigurationView<'_>> {
+    c.profile
         .configurations()
         .iter()
         .enumerate()
@@ -264,7 +264,42 @@ pub fn component_view<'a>(
             description: conf.doc.as_ref().and_then(|d| non_empty(&d.description)),
             details: facts::configuration_without_widget(conf, lang),
         })
-        .collect();
+        .collect()
+}
+
+/// The `source-url` template of component `c`: its `[[source]]`'s when it comes from one,
+/// else the site's `source_url`.
+fn url_template<'a>(
+    cat: &'a Catalog,
+    c: &crate::catalog::Component,
+    source_url: Option<&'a str>,
+) -> Option<&'a str> {
+    match &c.origin {
+        Some(o) => cat
+            .sources
+            .iter()
+            .find(|s| s.name == o.source)
+            .and_then(|s| s.source_url.as_deref()),
+        None => source_url,
+    }
+}
+
+/// Builds the view of component `ci`. `category` and `vendor` are its facets
+/// ([`Catalog::category_of_each`], [`Catalog::vendor_of_each`]); `source_url` the
+/// `source-url` template (a component of a `[[source]]` uses its source's instead).
+pub fn component_view<'a>(
+    cat: &'a Catalog,
+    ci: usize,
+    (category, vendor): (usize, usize),
+    source_url: Option<&str>,
+    lang: Lang,
+) -> ComponentView<'a> {
+    let c = &cat.components[ci];
+    let p = &c.profile;
+    let page = cat.component_page(ci);
+    let data_ports = data_port_views(cat, ci, lang);
+    let service_ports = service_port_views(cat, ci, lang);
+    let configurations = configuration_views(c, lang);
     let actions = ActionKind::ALL
         .iter()
         .map(|&kind| {
@@ -306,11 +341,7 @@ pub fn component_view<'a>(
         // A profile of a `[[source]]` repository links into that repository at the pinned
         // commit, with the source's template.
         source_url: match &c.origin {
-            Some(o) => cat
-                .sources
-                .iter()
-                .find(|s| s.name == o.source)
-                .and_then(|s| s.source_url.as_deref())
+            Some(o) => url_template(cat, c, source_url)
                 .and_then(|t| crate::render::html::repo::pinned_source_url(t, &o.commit, &o.path)),
             None => source_url.and_then(|t| crate::render::html::repo::source_url(t, &c.source)),
         },
@@ -346,14 +377,7 @@ pub fn component_view<'a>(
         history: super::history::HistoryView::of(c, lang, &|commit, path| {
             // A commit links to its file when the template has `{commit}`: a source's, else
             // `source-url`.
-            let template = match &c.origin {
-                Some(o) => cat
-                    .sources
-                    .iter()
-                    .find(|s| s.name == o.source)
-                    .and_then(|s| s.source_url.as_deref()),
-                None => source_url,
-            }?;
+            let template = url_template(cat, c, source_url)?;
             template
                 .contains("{commit}")
                 .then(|| crate::render::html::repo::pinned_source_url(template, commit, path))
