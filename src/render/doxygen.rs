@@ -24,13 +24,11 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::text::type_page;
-use super::text::{
-    category_name, component_cols, component_sections, facets_of_each, interface_index_table,
-    type_index_table, Markup,
-};
+use super::text::{category_name, component_cols, component_sections, facets_of_each, Markup};
+use super::text::{facet_index_page, facet_page, type_index_page, type_page};
 use super::view::component::component_view;
-use super::view::types::{data_type_view, interface_view};
+use super::view::facets::{facet_index_view, facet_view, FacetKind};
+use super::view::types::{data_type_view, interface_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Output, Page, PageKind};
@@ -252,12 +250,16 @@ impl Markup for Dox {
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String {
         format!("\\ref {}", cat.href(from, to, None, DOX))
     }
+    fn child_link(cat: &Catalog, from: &Page, to: &Page, _text: &str) -> String {
+        format!("\\subpage {}", cat.href(from, to, None, DOX))
+    }
     /// Doxygen writes each `\\ref`ed page's own title: the crumbs' texts are not needed.
     fn page_head(out: &mut String, cat: &Catalog, page: &Page, text_: &str, crumbs: &[Linked<'_>]) {
         d!(out, "\\page {} {}", target(cat, page), title(text_));
         d!(out);
         let refs: Vec<String> = crumbs
             .iter()
+            .filter(|l| l.to.is_some_and(|(to, _)| DOX.carries(to.kind)))
             .filter_map(|l| l.target(cat, page, DOX))
             .map(|t| format!("\\ref {t}"))
             .collect();
@@ -543,57 +545,6 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     out
 }
 
-/// The name of a vendor; the empty vendor has a translated name.
-fn vendor_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("no_vendor").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
-fn category_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
-    let f = &cat.categories[fi];
-    let page = cat.category_page(fi);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(&category_name(&f.name, lang))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    table(
-        &mut out,
-        &component_cols(lang),
-        &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "subpage"),
-    );
-    out
-}
-
-/// `vendors/<slug>.dox`: the vendor's components, as a category page lists its own (linked
-/// with `\ref`: each component page is the `\subpage` of its category page).
-fn vendor_page(cat: &Catalog, fi: usize, lang: Lang) -> String {
-    let f = &cat.vendors[fi];
-    let page = cat.vendor_page(fi);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(&vendor_name(&f.name, lang))
-    );
-    d!(out);
-    crumbs(&mut out, cat, PageKind::Vendors);
-    table(
-        &mut out,
-        &component_cols(lang),
-        &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "ref"),
-    );
-    out
-}
-
 /// `dataflow.dox`: which groups of components can feed which.
 fn dataflow_page(cat: &Catalog, lang: Lang) -> String {
     let page = cat.site_page(PageKind::DataFlow);
@@ -607,66 +558,6 @@ fn dataflow_page(cat: &Catalog, lang: Lang) -> String {
     d!(out);
     crumb_home(&mut out, cat);
     super::text::dataflow_body::<Dox>(&mut out, cat, page, lang);
-    out
-}
-
-/// `vendors.dox`: every vendor with its number of components.
-fn vendor_index(cat: &Catalog, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Vendors);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(lang.t("vendors"))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    d!(out, "<ul>");
-    for (fi, f) in cat.vendors.iter().enumerate() {
-        d!(
-            out,
-            "<li>\\subpage {} ({})</li>",
-            target(cat, cat.vendor_page(fi)),
-            f.components.len()
-        );
-    }
-    d!(out, "</ul>");
-    d!(out);
-    out
-}
-
-fn type_index(cat: &Catalog, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::DataTypes);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(lang.t("data_types"))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    type_index_table::<Dox>(&mut out, cat, lang, |to| {
-        format!("\\subpage {}", cat.href(page, to, None, DOX))
-    });
-    out
-}
-
-fn interface_index(cat: &Catalog, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Interfaces);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(lang.t("interfaces"))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    interface_index_table::<Dox>(&mut out, cat, lang, |to| {
-        format!("\\subpage {}", cat.href(page, to, None, DOX))
-    });
     out
 }
 
@@ -785,18 +676,16 @@ fn other_pages(
         ),
         (
             cat.site_page(PageKind::DataTypes).path_in(DOX),
-            type_index(cat, lang),
+            type_index_page::<Dox>(cat, &type_index_view(cat, TypeKind::Data), "", lang),
         ),
         (
             cat.site_page(PageKind::Interfaces).path_in(DOX),
-            interface_index(cat, lang),
+            type_index_page::<Dox>(cat, &type_index_view(cat, TypeKind::Interface), "", lang),
         ),
     ];
     out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
-        (
-            cat.category_page(fi).path_in(DOX),
-            category_page(cat, fi, lang),
-        )
+        let v = facet_view(cat, FacetKind::Category, fi, lang);
+        (v.page.path_in(DOX), facet_page::<Dox>(cat, &v, "", lang))
     }));
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
@@ -812,17 +701,21 @@ fn other_pages(
     }));
     out.push((
         cat.site_page(PageKind::Vendors).path_in(DOX),
-        vendor_index(cat, lang),
+        facet_index_page::<Dox>(
+            cat,
+            &facet_index_view(cat, FacetKind::Vendor, lang),
+            "",
+            lang,
+        ),
     ));
     out.push((
         cat.site_page(PageKind::DataFlow).path_in(DOX),
         dataflow_page(cat, lang),
     ));
-    out.par_extend(
-        (0..cat.vendors.len())
-            .into_par_iter()
-            .map(|fi| (cat.vendor_page(fi).path_in(DOX), vendor_page(cat, fi, lang))),
-    );
+    out.par_extend((0..cat.vendors.len()).into_par_iter().map(|fi| {
+        let v = facet_view(cat, FacetKind::Vendor, fi, lang);
+        (v.page.path_in(DOX), facet_page::<Dox>(cat, &v, "", lang))
+    }));
     if !cat.systems.is_empty() {
         out.push((
             cat.site_page(PageKind::Systems).path_in(DOX),

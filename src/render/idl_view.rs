@@ -160,6 +160,52 @@ impl Linker<'_> {
     }
 }
 
+/// The view of operation `o` of an interface, its types linked.
+fn operation_view(l: &Linker<'_>, o: &crate::idl::IdlOperation) -> OperationView {
+    let doc_of = |name: &str| {
+        o.doc
+            .as_ref()
+            .and_then(|d| d.params.iter().find(|p| p.name == name))
+            .map(|p| p.text.clone())
+    };
+    OperationView {
+        name: o.name.clone(),
+        returns: o
+            .return_type
+            .as_ref()
+            .map(|t| l.type_ref(t))
+            .unwrap_or(TypeRef {
+                text: "void".into(),
+                page: None,
+                entry: None,
+            }),
+        oneway: o.oneway,
+        params: o
+            .params
+            .iter()
+            .map(|p| ParamView {
+                direction: match p.direction {
+                    IdlParamDirection::In => "in",
+                    IdlParamDirection::Out => "out",
+                    IdlParamDirection::Inout => "inout",
+                },
+                ty: l.type_ref(&p.ty),
+                name: p.name.clone(),
+                doc: doc_of(&p.name)
+                    .or_else(|| p.doc.as_ref().map(|d| brief(Some(d))))
+                    .unwrap_or_default(),
+            })
+            .collect(),
+        raises: o.raises.iter().map(|t| l.type_ref(t)).collect(),
+        doc: brief(o.doc.as_deref()),
+        returns_doc: o
+            .doc
+            .as_ref()
+            .and_then(|d| d.returns.clone())
+            .unwrap_or_default(),
+    }
+}
+
 /// The view of the definition of `name` (any spelling the catalogue accepts), or `None` when no
 /// IDL file read defines it. A typedef is shown as what it is, with the type it names linked.
 pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
@@ -250,56 +296,70 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                     doc: brief(a.doc.as_deref()),
                 })
                 .collect();
-            v.operations =
-                i.operations
-                    .iter()
-                    .map(|o| {
-                        let doc_of = |name: &str| {
-                            o.doc
-                                .as_ref()
-                                .and_then(|d| d.params.iter().find(|p| p.name == name))
-                                .map(|p| p.text.clone())
-                        };
-                        OperationView {
-                            name: o.name.clone(),
-                            returns: o.return_type.as_ref().map(|t| l.type_ref(t)).unwrap_or(
-                                TypeRef {
-                                    text: "void".into(),
-                                    page: None,
-                                    entry: None,
-                                },
-                            ),
-                            oneway: o.oneway,
-                            params: o
-                                .params
-                                .iter()
-                                .map(|p| ParamView {
-                                    direction: match p.direction {
-                                        IdlParamDirection::In => "in",
-                                        IdlParamDirection::Out => "out",
-                                        IdlParamDirection::Inout => "inout",
-                                    },
-                                    ty: l.type_ref(&p.ty),
-                                    name: p.name.clone(),
-                                    doc: doc_of(&p.name)
-                                        .or_else(|| p.doc.as_ref().map(|d| brief(Some(d))))
-                                        .unwrap_or_default(),
-                                })
-                                .collect(),
-                            raises: o.raises.iter().map(|t| l.type_ref(t)).collect(),
-                            doc: brief(o.doc.as_deref()),
-                            returns_doc: o
-                                .doc
-                                .as_ref()
-                                .and_then(|d| d.returns.clone())
-                                .unwrap_or_default(),
-                        }
-                    })
-                    .collect();
+            v.operations = i.operations.iter().map(|o| operation_view(&l, o)).collect();
         }
         _ => {}
     }
     Some(v)
+}
+
+/// The operations of an interface as a table: name, return type, parameters, exceptions and
+/// documentation; `ty` writes a type (linked to its page when it has one).
+fn operations_table<M: Markup>(
+    out: &mut String,
+    operations: &[OperationView],
+    lang: Lang,
+    ty: &dyn Fn(&TypeRef) -> String,
+) {
+    let rows: Vec<Vec<String>> = operations
+        .iter()
+        .map(|o| {
+            let params: Vec<String> = o
+                .params
+                .iter()
+                .map(|p| {
+                    let mut s =
+                        format!("{} {} {}", M::esc(p.direction), ty(&p.ty), M::esc(&p.name));
+                    if !p.doc.is_empty() {
+                        s.push_str(&format!(": {}", M::esc(&p.doc)));
+                    }
+                    s
+                })
+                .collect();
+            let raises: Vec<String> = o.raises.iter().map(ty).collect();
+            let mut doc = M::esc(&o.doc);
+            if !o.returns_doc.is_empty() {
+                doc.push_str(&format!(
+                    " {}: {}",
+                    M::esc(lang.t("idl_returns")),
+                    M::esc(&o.returns_doc)
+                ));
+            }
+            let name = if o.oneway {
+                format!("oneway {}", o.name)
+            } else {
+                o.name.clone()
+            };
+            vec![
+                M::esc(&name),
+                ty(&o.returns),
+                params.join("; "),
+                raises.join(", "),
+                doc,
+            ]
+        })
+        .collect();
+    M::table(
+        out,
+        &[
+            lang.t("idl_operations"),
+            lang.t("idl_returns"),
+            lang.t("idl_params"),
+            lang.t("idl_raises"),
+            lang.t("description"),
+        ],
+        &rows,
+    );
 }
 
 /// The definition of `name` as Markdown or Doxygen (through [`Markup`]): where it is defined,
@@ -388,56 +448,7 @@ pub fn write_definition<M: Markup>(
         M::table(out, &[lang.t("idl_values"), lang.t("description")], &rows);
     }
     if !d.operations.is_empty() {
-        let rows: Vec<Vec<String>> = d
-            .operations
-            .iter()
-            .map(|o| {
-                let params: Vec<String> = o
-                    .params
-                    .iter()
-                    .map(|p| {
-                        let mut s =
-                            format!("{} {} {}", M::esc(p.direction), ty(&p.ty), M::esc(&p.name));
-                        if !p.doc.is_empty() {
-                            s.push_str(&format!(": {}", M::esc(&p.doc)));
-                        }
-                        s
-                    })
-                    .collect();
-                let raises: Vec<String> = o.raises.iter().map(ty).collect();
-                let mut doc = M::esc(&o.doc);
-                if !o.returns_doc.is_empty() {
-                    doc.push_str(&format!(
-                        " {}: {}",
-                        M::esc(lang.t("idl_returns")),
-                        M::esc(&o.returns_doc)
-                    ));
-                }
-                let name = if o.oneway {
-                    format!("oneway {}", o.name)
-                } else {
-                    o.name.clone()
-                };
-                vec![
-                    M::esc(&name),
-                    ty(&o.returns),
-                    params.join("; "),
-                    raises.join(", "),
-                    doc,
-                ]
-            })
-            .collect();
-        M::table(
-            out,
-            &[
-                lang.t("idl_operations"),
-                lang.t("idl_returns"),
-                lang.t("idl_params"),
-                lang.t("idl_raises"),
-                lang.t("description"),
-            ],
-            &rows,
-        );
+        operations_table::<M>(out, &d.operations, lang, &ty);
     }
     if !d.attributes.is_empty() {
         let rows: Vec<Vec<String>> = d

@@ -18,13 +18,11 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::text::type_page;
-use super::text::{
-    category_name, component_cols, component_sections, facets_of_each, interface_index_table,
-    type_index_table, Markup,
-};
+use super::text::{category_name, component_cols, component_sections, facets_of_each, Markup};
+use super::text::{facet_index_page, facet_page, type_index_page, type_page};
 use super::view::component::component_view;
-use super::view::types::{data_type_view, interface_view};
+use super::view::facets::{facet_index_view, facet_view, FacetKind};
+use super::view::types::{data_type_view, interface_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
@@ -470,118 +468,6 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     out
 }
 
-/// The name of a vendor; the empty vendor has a translated name.
-fn vendor_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("no_vendor").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
-fn category_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
-    let f = &cat.categories[fi];
-    let page = cat.category_page(fi);
-    let mut out = String::new();
-    w!(out, "# {}", inline(&category_name(&f.name, lang)));
-    w!(out);
-    w!(
-        out,
-        "{} › {}",
-        link(title, &home(cat, page)),
-        inline(lang.t("categories"))
-    );
-    w!(out);
-    facet_body(&mut out, cat, page, f, lang);
-    out
-}
-
-/// `vendors/<slug>.md`: the vendor's components, as a category page lists its own.
-fn vendor_page(cat: &Catalog, fi: usize, title: &str, lang: Lang) -> String {
-    let f = &cat.vendors[fi];
-    let page = cat.vendor_page(fi);
-    let mut out = String::new();
-    w!(out, "# {}", inline(&vendor_name(&f.name, lang)));
-    w!(out);
-    w!(
-        out,
-        "{} › {}",
-        link(title, &home(cat, page)),
-        link(lang.t("vendors"), &index_href(cat, page, PageKind::Vendors))
-    );
-    w!(out);
-    facet_body(&mut out, cat, page, f, lang);
-    out
-}
-
-/// `vendors.md`: every vendor with its number of components.
-fn vendor_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Vendors);
-    let mut out = String::new();
-    w!(out, "# {}", inline(lang.t("vendors")));
-    w!(out);
-    w!(out, "{}", link(title, &home(cat, page)));
-    w!(out);
-    for (fi, f) in cat.vendors.iter().enumerate() {
-        w!(
-            out,
-            "- {} ({})",
-            link(
-                &vendor_name(&f.name, lang),
-                &cat.href(page, cat.vendor_page(fi), None, MD)
-            ),
-            f.components.len()
-        );
-    }
-    w!(out);
-    out
-}
-
-/// The body of a category or vendor page: the other spellings met, then the components.
-fn facet_body(out: &mut String, cat: &Catalog, page: &Page, f: &crate::catalog::Facet, lang: Lang) {
-    if !f.variants.is_empty() {
-        let v: Vec<String> = f.variants.iter().map(|v| inline(v)).collect();
-        w!(
-            out,
-            "{}: {}",
-            inline(lang.t("facet_variants")),
-            v.join(", ")
-        );
-        w!(out);
-    }
-    table(
-        out,
-        &component_cols(lang),
-        &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>()),
-    );
-}
-
-fn type_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::DataTypes);
-    let mut out = String::new();
-    w!(out, "# {}", inline(lang.t("data_types")));
-    w!(out);
-    w!(out, "{}", link(title, &home(cat, page)));
-    w!(out);
-    type_index_table::<Md>(&mut out, cat, lang, |to| {
-        link(&to.title, &cat.href(page, to, None, MD))
-    });
-    out
-}
-
-fn interface_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Interfaces);
-    let mut out = String::new();
-    w!(out, "# {}", inline(lang.t("interfaces")));
-    w!(out);
-    w!(out, "{}", link(title, &home(cat, page)));
-    w!(out);
-    interface_index_table::<Md>(&mut out, cat, lang, |to| {
-        link(&to.title, &cat.href(page, to, None, MD))
-    });
-    out
-}
-
 /// An item of `SUMMARY.md` (at the root, beside `index.md`): one line, escaped like
 /// everything else.
 fn summary_item(out: &mut String, cat: &Catalog, indent: usize, text: &str, to: &Page) {
@@ -648,7 +534,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
         index(PageKind::Vendors),
     );
     for (fi, f) in cat.vendors.iter().enumerate() {
-        let text = vendor_name(&f.name, lang);
+        let text = FacetKind::Vendor.name(&f.name, lang);
         summary_item(&mut out, cat, 1, &text, cat.vendor_page(fi));
     }
     if !cat.systems.is_empty() {
@@ -839,33 +725,32 @@ fn other_pages(
         (cat.site_page(PageKind::Index).path_in(MD), index),
         (
             cat.site_page(PageKind::DataTypes).path_in(MD),
-            type_index_page(cat, title, lang),
+            type_index_page::<Md>(cat, &type_index_view(cat, TypeKind::Data), title, lang),
         ),
         (
             cat.site_page(PageKind::Interfaces).path_in(MD),
-            interface_index_page(cat, title, lang),
+            type_index_page::<Md>(cat, &type_index_view(cat, TypeKind::Interface), title, lang),
         ),
         (
             cat.site_page(PageKind::Vendors).path_in(MD),
-            vendor_index_page(cat, title, lang),
+            facet_index_page::<Md>(
+                cat,
+                &facet_index_view(cat, FacetKind::Vendor, lang),
+                title,
+                lang,
+            ),
         ),
         (
             cat.site_page(PageKind::DataFlow).path_in(MD),
             dataflow_page(cat, title, lang),
         ),
     ];
-    out.par_extend((0..cat.categories.len()).into_par_iter().map(|fi| {
-        (
-            cat.category_page(fi).path_in(MD),
-            category_page(cat, fi, title, lang),
-        )
-    }));
-    out.par_extend((0..cat.vendors.len()).into_par_iter().map(|fi| {
-        (
-            cat.vendor_page(fi).path_in(MD),
-            vendor_page(cat, fi, title, lang),
-        )
-    }));
+    for kind in [FacetKind::Category, FacetKind::Vendor] {
+        out.par_extend((0..kind.facets(cat).len()).into_par_iter().map(|fi| {
+            let v = facet_view(cat, kind, fi, lang);
+            (v.page.path_in(MD), facet_page::<Md>(cat, &v, title, lang))
+        }));
+    }
     out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
         (
             cat.data_type_page(ti).path_in(MD),

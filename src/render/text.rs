@@ -6,7 +6,8 @@
 
 use super::facts::{self, Fact};
 use super::view::component::ComponentView;
-use super::view::types::{TypeKind, TypeView};
+use super::view::facets::{ComponentRow, FacetIndexView, FacetView};
+use super::view::types::{TypeIndexView, TypeKind, TypeView};
 use super::view::{Linked, Peers};
 use crate::catalog::{Catalog, Output, Page};
 use crate::i18n::Lang;
@@ -78,6 +79,11 @@ pub trait Markup {
     ) -> String {
         Self::link(text, &cat.href(from, to, anchor, Self::OUTPUT))
     }
+    /// A link on page `from` to page `to` that hangs `to` under `from` in the output's page
+    /// tree (Doxygen's `\\subpage`); elsewhere a link with `text`.
+    fn child_link(cat: &Catalog, from: &Page, to: &Page, text: &str) -> String {
+        Self::page_link(cat, from, to, None, text)
+    }
     /// The target of a link on page `from` to page `to`, for [`Markup::link`].
     fn page_target(cat: &Catalog, from: &Page, to: &Page) -> String {
         cat.href(from, to, None, Self::OUTPUT)
@@ -129,21 +135,26 @@ pub fn facts_cell<M: Markup>(facts: &[Fact]) -> String {
     out
 }
 
-/// The neighbourhood section of component `ci` ([`crate::render::neighbourhood`]): a table by
-/// port — the port, its type, `fed by` / `feeds` / `used by` / `uses`, and the neighbour
-/// components, each linked, with a `+N` link to the type or interface page when capped; or
-/// the sentence saying no component connects to it.
-pub fn neighbourhood_section<M: Markup>(out: &mut String, cat: &Catalog, ci: usize, lang: Lang) {
+/// The neighbourhood section of a component page from its view: a table by port — the port,
+/// its type, `fed by` / `feeds` / `used by` / `uses`, and the neighbour components, each
+/// linked, with a `+N` link to the type or interface page when capped; or the sentence saying
+/// no component connects to it.
+fn neighbourhood_section<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    v: &ComponentView<'_>,
+    lang: Lang,
+) {
     use crate::render::neighbourhood as nb;
-    let page = cat.component_page(ci);
+    let page = v.page;
     M::heading(out, page, 2, "sec-neighbourhood", lang.t("neighbourhood"));
-    let n = nb::neighbourhood(cat, ci);
-    if n.is_empty() {
+    if v.neighbourhood.is_empty() {
         M::paragraph(out, &M::esc(lang.t("neighbourhood_none")));
         return;
     }
     M::paragraph(out, &M::esc(lang.t("neighbourhood_intro")));
-    let rows: Vec<Vec<String>> = nb::rows(cat, ci, &n)
+    let rows: Vec<Vec<String>> = v
+        .neighbourhood
         .iter()
         .map(|r| {
             let mut parts: Vec<String> = r
@@ -227,12 +238,113 @@ pub fn component_cols(lang: Lang) -> [&'static str; 4] {
     ]
 }
 
-/// A view's link as a cell: linked when it has a target, else plain.
+/// A view's link as a cell: linked when it has a target the output writes, else plain.
 pub fn linked<M: Markup>(cat: &Catalog, from: &Page, l: &Linked<'_>) -> String {
     match l.to {
-        Some((to, anchor)) => M::page_link(cat, from, to, anchor, &l.text),
-        None => M::esc(&l.text),
+        Some((to, anchor)) if M::OUTPUT.carries(to.kind) => {
+            M::page_link(cat, from, to, anchor, &l.text)
+        }
+        _ => M::esc(&l.text),
     }
+}
+
+/// The way back from an entry page: the front page (named by the site's title), then `index`
+/// (named by its label) if given.
+pub fn crumbs<'a>(
+    cat: &'a Catalog,
+    site_title: &str,
+    index: Option<(&'a Page, &str)>,
+) -> Vec<Linked<'a>> {
+    let home = Linked::new(
+        site_title,
+        Some(cat.site_page(crate::catalog::PageKind::Index)),
+        None,
+    );
+    std::iter::once(home)
+        .chain(index.map(|(page, label)| Linked::new(label, Some(page), None)))
+        .collect()
+}
+
+/// A list of components as a table (name, description, vendor, version) on page `from`;
+/// `parent`: the components hang from `from` in the page tree.
+pub fn component_table<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    from: &Page,
+    rows: &[ComponentRow<'_>],
+    parent: bool,
+    lang: Lang,
+) {
+    let cells: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            let name = match r.name.to {
+                Some((to, _)) if parent => M::child_link(cat, from, to, &r.name.text),
+                _ => linked::<M>(cat, from, &r.name),
+            };
+            vec![
+                name,
+                M::esc(r.description),
+                M::esc(r.vendor),
+                M::esc(r.version),
+            ]
+        })
+        .collect();
+    M::table(out, &component_cols(lang), &cells);
+}
+
+/// A category's or vendor's page from its view: title and the way back, the other spellings
+/// met, and its components.
+pub fn facet_page<M: Markup>(
+    cat: &Catalog,
+    v: &FacetView<'_>,
+    site_title: &str,
+    lang: Lang,
+) -> String {
+    let mut out = String::new();
+    let crumbs = crumbs(cat, site_title, Some((v.index, lang.t(v.kind.index_key()))));
+    M::page_head(&mut out, cat, v.page, &v.name, &crumbs);
+    if !v.variants.is_empty() {
+        let names: Vec<String> = v.variants.iter().map(|n| M::esc(n)).collect();
+        M::paragraph(
+            &mut out,
+            &format!("{}: {}", M::esc(lang.t("facet_variants")), names.join(", ")),
+        );
+    }
+    component_table::<M>(&mut out, cat, v.page, &v.components, v.parent, lang);
+    out
+}
+
+/// The index of the categories or vendors from its view: each one linked, with its number of
+/// components.
+pub fn facet_index_page<M: Markup>(
+    cat: &Catalog,
+    v: &FacetIndexView<'_>,
+    site_title: &str,
+    lang: Lang,
+) -> String {
+    let mut out = String::new();
+    M::page_head(
+        &mut out,
+        cat,
+        v.page,
+        lang.t(v.kind.index_key()),
+        &crumbs(cat, site_title, None),
+    );
+    let items: Vec<String> = v
+        .facets
+        .iter()
+        .filter_map(|f| {
+            let (to, _) = f.name.to?;
+            Some(format!(
+                "{} ({})",
+                M::child_link(cat, v.page, to, &f.name.text),
+                f.count
+            ))
+        })
+        .collect();
+    M::linked_list(&mut out, &items);
+    out
 }
 
 /// A port's "connects to" cell from its view: one link per peer component, then "+N — …".
@@ -296,7 +408,7 @@ pub fn component_sections<M: Markup>(
     }
     data_ports_section::<M>(out, cat, v, lang);
     service_ports_section::<M>(out, cat, v, lang);
-    neighbourhood_section::<M>(out, cat, v.ci, lang);
+    neighbourhood_section::<M>(out, cat, v, lang);
     configuration_section::<M>(out, v, lang);
 
     M::heading(out, page, 2, "sec-lifecycle", lang.t("actions"));
@@ -576,10 +688,7 @@ pub fn type_page<M: Markup>(
 ) -> String {
     let page = v.page;
     let mut out = String::new();
-    let index_key = match v.kind {
-        TypeKind::Data => "data_types",
-        TypeKind::Interface => "interfaces",
-    };
+    let index_key = v.kind.index_key();
     let crumbs = [
         Linked::new(
             site_title,
@@ -648,74 +757,54 @@ pub fn type_page<M: Markup>(
     out
 }
 
-/// The table of every data type with its producer, consumer and other counts; `name` makes
-/// the first cell (a link to the type's page).
-pub fn type_index_table<M: Markup>(
-    out: &mut String,
+/// The index of the data types or of the interfaces from its view: each linked, with its
+/// numbers of uses by role; an interface nobody provides is flagged.
+pub fn type_index_page<M: Markup>(
     cat: &Catalog,
+    v: &TypeIndexView<'_>,
+    site_title: &str,
     lang: Lang,
-    name: impl Fn(&Page) -> String,
-) {
-    let rows: Vec<Vec<String>> = cat
-        .data_types
+) -> String {
+    let mut out = String::new();
+    let page = v.page;
+    M::page_head(
+        &mut out,
+        cat,
+        page,
+        lang.t(v.kind.index_key()),
+        &crumbs(cat, site_title, None),
+    );
+    let rows: Vec<Vec<String>> = v
+        .rows
         .iter()
-        .enumerate()
-        .map(|(ti, t)| {
-            vec![
-                name(cat.data_type_page(ti)),
-                t.uses.producers.len().to_string(),
-                t.uses.consumers.len().to_string(),
-                t.uses.others.len().to_string(),
-            ]
+        .map(|r| {
+            let mut cell = M::child_link(cat, page, r.page, &r.page.title);
+            if r.unprovided {
+                cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
+            }
+            std::iter::once(cell)
+                .chain(r.counts.iter().map(usize::to_string))
+                .collect()
         })
         .collect();
-    M::table(
-        out,
-        &[
+    let headers = match v.kind {
+        TypeKind::Data => [
             lang.t("data_type"),
             lang.t("producers"),
             lang.t("consumers"),
-            lang.t("fact_others"),
         ],
-        &rows,
-    );
-}
-
-/// The table of every interface with its provider, requirer and other counts, flagging
-/// interfaces nobody provides; `name` makes the link to the interface's page.
-pub fn interface_index_table<M: Markup>(
-    out: &mut String,
-    cat: &Catalog,
-    lang: Lang,
-    name: impl Fn(&Page) -> String,
-) {
-    let rows: Vec<Vec<String>> = cat
-        .interfaces
-        .iter()
-        .enumerate()
-        .map(|(ii, t)| {
-            let mut cell = name(cat.interface_page(ii));
-            if t.is_unprovided() {
-                cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
-            }
-            vec![
-                cell,
-                t.uses.providers.len().to_string(),
-                t.uses.requirers.len().to_string(),
-                t.uses.others.len().to_string(),
-            ]
-        })
-        .collect();
-    M::table(
-        out,
-        &[
+        TypeKind::Interface => [
             lang.t("interface"),
             lang.t("providers"),
             lang.t("requirers"),
-            lang.t("fact_others"),
         ],
+    };
+    M::table(
+        &mut out,
+        &[headers[0], headers[1], headers[2], lang.t("fact_others")],
         &rows,
     );
+    out
 }
 
 /// The data-flow page's body for Markdown and Doxygen: the explanation, then for categories and

@@ -24,6 +24,8 @@ pub use system_svg::standalone_system_diagram;
 pub mod systems;
 
 use super::facts::{self, Fact, FactKind};
+use super::view::facets::{facet_index_view, facet_view, FacetKind, FacetView};
+use super::view::types::TypeKind;
 use super::view::{self, component::ComponentView, Linked};
 use super::{RenderContext, Renderer, SiteOptions};
 use crate::catalog::{Catalog, Facet, Output, Page, PageKind};
@@ -375,6 +377,21 @@ struct ExtraRow {
     value: String,
 }
 
+impl ExtraRow {
+    /// The row of an extra value of the profile and its kind.
+    fn of((f, kind): &(Fact, ExtraKind)) -> ExtraRow {
+        ExtraRow {
+            kind: match kind {
+                ExtraKind::Attribute => "attribute",
+                ExtraKind::Element => "element",
+                ExtraKind::Key => "key",
+            },
+            name: f.label.to_string(),
+            value: f.value.clone(),
+        }
+    }
+}
+
 #[derive(Serialize)]
 struct ComponentPage {
     root: &'static str,
@@ -458,16 +475,15 @@ impl<'a> Site<'a> {
         self.catalog.component_page(ci).path("html")
     }
 
-    /// The neighbourhood of component `ci` ([`crate::render::neighbourhood`]): its drawing
-    /// (empty when it has none) and its list.
-    fn neighbourhood(&self, ci: usize) -> (String, Vec<NeighbourhoodRow>) {
+    /// The neighbourhood of a component page's view ([`crate::render::neighbourhood`]): its
+    /// drawing (empty when it has none) and its list.
+    fn neighbourhood(&self, v: &ComponentView<'_>) -> (String, Vec<NeighbourhoodRow>) {
         use crate::render::neighbourhood as nb;
-        let cat = self.catalog;
-        let n = nb::neighbourhood(cat, ci);
-        if n.is_empty() {
+        let (cat, ci, rows) = (self.catalog, v.ci, &v.neighbourhood);
+        if rows.is_empty() {
             return (String::new(), Vec::new());
         }
-        let here = cat.component_page(ci);
+        let here = v.page;
         let href = |to: &crate::catalog::Page, anchor: Option<&str>| {
             if std::ptr::eq(to, here) {
                 anchor.map(|a| format!("#{a}")).unwrap_or_default()
@@ -475,8 +491,7 @@ impl<'a> Site<'a> {
                 cat.href(here, to, anchor, crate::catalog::Output::Html)
             }
         };
-        let rows = nb::rows(cat, ci, &n);
-        let (inst, conns) = nb::wiring(cat, ci, &rows, self.lang, &href);
+        let (inst, conns) = nb::wiring(cat, ci, rows, self.lang, &href);
         let me = cat.components[ci].display_name();
         let svg = system_svg::system_diagram_with(
             &format!("{} {me}", self.t("neighbourhood_of")),
@@ -612,35 +627,10 @@ impl<'a> Site<'a> {
         self.component_context(&v)
     }
 
-    /// The template context of a component page, from its view.
-    fn component_context(&self, v: &ComponentView<'_>) -> ComponentPage {
-        let lang = self.lang;
-        let page = v.page;
-        let index = self.catalog.site_page(PageKind::Index);
-        let crumbs = vec![
-            Link {
-                text: self.t("catalogue").to_string(),
-                href: self.catalog.href(page, index, None, Output::Html),
-            },
-            Link {
-                text: v.category.text.clone(),
-                href: v
-                    .category
-                    .target(self.catalog, page, Output::Html)
-                    .unwrap_or_default(),
-            },
-        ];
-        let mut header = fields(lang, None, v.basic.clone());
-        // `source-url`: "Source" links to the file in its repository.
-        if let Some(url) = &v.source_url {
-            let label = lang.t("source");
-            if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
-                let path = f.text.take().unwrap_or_default();
-                f.html = Some(repo::source_link_html(url, &path));
-            }
-        }
-        let data_ports: Vec<DataPortRow> = v
-            .data_ports
+    /// The data port rows of a component page, from its view.
+    fn data_port_rows(&self, v: &ComponentView<'_>) -> Vec<DataPortRow> {
+        let (lang, page) = (self.lang, v.page);
+        v.data_ports
             .iter()
             .map(|dp| {
                 let (peers, peers_more) = self.peers(page, &dp.peers);
@@ -665,9 +655,13 @@ impl<'a> Site<'a> {
                     peers_more,
                 }
             })
-            .collect();
-        let service_ports: Vec<ServicePortRow> = v
-            .service_ports
+            .collect()
+    }
+
+    /// The service port rows of a component page, with their interfaces, from its view.
+    fn service_port_rows(&self, v: &ComponentView<'_>) -> Vec<ServicePortRow> {
+        let (lang, page) = (self.lang, v.page);
+        v.service_ports
             .iter()
             .map(|sp| ServicePortRow {
                 anchor: sp.anchor.to_string(),
@@ -693,33 +687,56 @@ impl<'a> Site<'a> {
                     })
                     .collect(),
             })
-            .collect();
-        let configurations: Vec<ConfigurationRow> = v
-            .configurations
-            .iter()
-            .map(|conf| ConfigurationRow {
-                anchor: conf.anchor.to_string(),
-                since: self.since(conf.since),
-                name: conf.name.to_string(),
-                type_: conf.type_.to_string(),
-                default: conf.default.to_string(),
-                unit: conf.unit.to_string(),
-                constraint: conf.constraint.clone(),
-                widget: conf.widget.clone(),
-                details: lead_fields(lang, conf.description, &conf.details),
-            })
-            .collect();
-        let actions: Vec<ActionRow> = v
-            .actions
-            .iter()
-            .map(|a| ActionRow {
-                name: a.kind.callback_name(),
-                implemented: a.implemented,
-                details: fields(lang, None, a.details.clone()),
-            })
-            .collect();
+            .collect()
+    }
+
+    /// The way back from a component page: the catalogue, then its category.
+    fn component_crumbs(&self, v: &ComponentView<'_>) -> Vec<Link> {
+        let page = v.page;
+        let index = self.catalog.site_page(PageKind::Index);
+        vec![
+            Link {
+                text: self.t("catalogue").to_string(),
+                href: self.catalog.href(page, index, None, Output::Html),
+            },
+            Link {
+                text: v.category.text.clone(),
+                href: v
+                    .category
+                    .target(self.catalog, page, Output::Html)
+                    .unwrap_or_default(),
+            },
+        ]
+    }
+
+    /// The basic information of a component page; "Source" links to the file in its
+    /// repository when `source-url` is set.
+    fn component_header(&self, v: &ComponentView<'_>) -> Vec<Field> {
+        let lang = self.lang;
+        let mut header = fields(lang, None, v.basic.clone());
+        // `source-url`: "Source" links to the file in its repository.
+        if let Some(url) = &v.source_url {
+            let label = lang.t("source");
+            if let Some(f) = header.iter_mut().rev().find(|f| f.label == label) {
+                let path = f.text.take().unwrap_or_default();
+                f.html = Some(repo::source_link_html(url, &path));
+            }
+        }
+        header
+    }
+
+    /// The template context of a component page, from its view.
+    fn component_context(&self, v: &ComponentView<'_>) -> ComponentPage {
+        let lang = self.lang;
+        let page = v.page;
+        let crumbs = self.component_crumbs(v);
+        let header = self.component_header(v);
+        let data_ports = self.data_port_rows(v);
+        let service_ports = self.service_port_rows(v);
+        let configurations = configuration_rows(lang, v);
+        let actions = action_rows(lang, v);
         let (diagram_svg, lifecycle_svg) = self.component_diagrams(v, &actions);
-        let (neighbourhood_svg, neighbourhood) = self.neighbourhood(v.ci);
+        let (neighbourhood_svg, neighbourhood) = self.neighbourhood(v);
         let description = match v.lead {
             Some(d) => markdown::first_line(d, 160),
             None => format!("{}: {} — {}", v.name, self.t("component"), self.opts.title),
@@ -795,19 +812,7 @@ impl<'a> Site<'a> {
                 .collect(),
             properties: key_values(v.properties.clone()),
             version_up_logs: v.version_up_logs.iter().map(|s| s.to_string()).collect(),
-            extras: v
-                .extras
-                .iter()
-                .map(|(f, kind)| ExtraRow {
-                    kind: match kind {
-                        ExtraKind::Attribute => "attribute",
-                        ExtraKind::Element => "element",
-                        ExtraKind::Key => "key",
-                    },
-                    name: f.label.to_string(),
-                    value: f.value.clone(),
-                })
-                .collect(),
+            extras: v.extras.iter().map(ExtraRow::of).collect(),
             systems: v
                 .systems
                 .iter()
@@ -878,6 +883,36 @@ impl<'a> Site<'a> {
         );
         (diagram, lifecycle)
     }
+}
+
+/// The configuration rows of a component page, from its view.
+fn configuration_rows(lang: Lang, v: &ComponentView<'_>) -> Vec<ConfigurationRow> {
+    v.configurations
+        .iter()
+        .map(|conf| ConfigurationRow {
+            anchor: conf.anchor.to_string(),
+            since: conf.since.map(|at| lang.t("since").replace("{v}", at)),
+            name: conf.name.to_string(),
+            type_: conf.type_.to_string(),
+            default: conf.default.to_string(),
+            unit: conf.unit.to_string(),
+            constraint: conf.constraint.clone(),
+            widget: conf.widget.clone(),
+            details: lead_fields(lang, conf.description, &conf.details),
+        })
+        .collect()
+}
+
+/// The lifecycle action rows of a component page, from its view.
+fn action_rows(lang: Lang, v: &ComponentView<'_>) -> Vec<ActionRow> {
+    v.actions
+        .iter()
+        .map(|a| ActionRow {
+            name: a.kind.callback_name(),
+            implemented: a.implemented,
+            details: fields(lang, None, a.details.clone()),
+        })
+        .collect()
 }
 
 /// A page to render: output path, template and context. The context of the many per-item
@@ -1214,7 +1249,6 @@ fn ctx<S: Serialize>(v: &S) -> Value {
 /// The template context of a data type's or interface's page (`type.html`,
 /// `interface.html`), from its view.
 fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
-    use view::types::TypeKind;
     let (catalog, lang) = (site.catalog, site.lang);
     let link = |l: &Linked<'_>| Link {
         text: l.text.clone(),
@@ -1266,6 +1300,100 @@ fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
         },
     };
     minijinja::context! { ..common, ..own }
+}
+
+/// The index of the data types (`types.html`) or of the interfaces (`interfaces.html`), from
+/// its view.
+fn type_index_job<'a>(site: &'a Site<'a>, kind: TypeKind) -> Job<'a> {
+    let lang = site.lang;
+    let v = view::types::type_index_view(site.catalog, kind);
+    let root = "../";
+    // An entry's page is beside the index: its file name is the link.
+    let rows: Vec<Value> = v
+        .rows
+        .iter()
+        .map(|r| {
+            let (name, href) = (r.name, r.page.file_name("html"));
+            let [first, second, others] = r.counts;
+            match kind {
+                TypeKind::Data => minijinja::context! {
+                    name, href, spellings => r.other_spellings.clone(),
+                    producers => first, consumers => second, others,
+                },
+                TypeKind::Interface => minijinja::context! {
+                    name, href, providers => first, requirers => second,
+                    unprovided => r.unprovided,
+                },
+            }
+        })
+        .collect();
+    let key = kind.index_key();
+    let (template, list) = match kind {
+        TypeKind::Data => ("types.html", minijinja::context! { types => rows }),
+        TypeKind::Interface => (
+            "interfaces.html",
+            minijinja::context! { interfaces => rows },
+        ),
+    };
+    Job {
+        path: v.page.path("html"),
+        template,
+        context: PageContext::Ready(minijinja::context! {
+            root => root,
+            title => page_title(site, lang.t(key)),
+            crumbs => ctx(&crumbs_home(lang, root)),
+            ..list
+        }),
+    }
+}
+
+/// The index of the categories or vendors (`facets.html`), from its view.
+fn facet_index_job<'a>(site: &'a Site<'a>, kind: FacetKind) -> Job<'a> {
+    let (catalog, lang) = (site.catalog, site.lang);
+    let v = facet_index_view(catalog, kind, lang);
+    let root = "../";
+    let list: Vec<(Link, usize)> = v
+        .facets
+        .iter()
+        .filter_map(|f| {
+            // A facet page is beside the index: its file name is the link.
+            let (to, _) = f.name.to?;
+            let link = Link {
+                text: f.name.text.clone(),
+                href: to.file_name("html"),
+            };
+            Some((link, f.count))
+        })
+        .collect();
+    let key = kind.index_key();
+    Job {
+        path: v.page.path("html"),
+        template: "facets.html",
+        context: PageContext::Ready(minijinja::context! {
+            root => root,
+            title => page_title(site, lang.t(key)),
+            heading => lang.t(key),
+            crumbs => ctx(&crumbs_home(lang, root)),
+            facets => ctx(&list),
+        }),
+    }
+}
+
+/// The template context of a category's or vendor's page (`facet.html`), from its view.
+fn facet_context(site: &Site<'_>, v: &FacetView<'_>) -> Value {
+    let lang = site.lang;
+    let root = "../";
+    let members: Vec<usize> = v.components.iter().map(|r| r.ci).collect();
+    minijinja::context! {
+        root => root,
+        title => page_title(site, &v.name),
+        heading => v.name.clone(),
+        kind => lang.t(v.kind.key()),
+        variants => ctx(&v.variants),
+        variants_label => lang.t("facet_variants"),
+        crumbs => ctx(&crumbs_section(lang, root, v.kind.index_key())),
+        components => ctx(&site.sorted_summaries(&members)),
+    }
 }
 
 /// `<title>` of a page: its own title, then the site's.
@@ -1329,178 +1457,46 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
     });
 
     // Category and vendor pages.
-    type PageOf = fn(&Catalog, usize) -> &crate::catalog::Page;
-    for (dir, facets, key, empty_key, index_kind, page_of) in [
-        (
-            "categories",
-            &catalog.categories,
-            "categories",
-            "no_category",
-            PageKind::Categories,
-            Catalog::category_page as PageOf,
-        ),
-        (
-            "vendors",
-            &catalog.vendors,
-            "vendors",
-            "no_vendor",
-            PageKind::Vendors,
-            Catalog::vendor_page as PageOf,
-        ),
-    ] {
-        let root = "../";
-        let list: Vec<(Link, usize)> = facets
-            .iter()
-            .enumerate()
-            .map(|(fi, f)| {
-                (
-                    Link {
-                        text: site.facet_name(&f.name, empty_key),
-                        href: page_of(catalog, fi).file_name("html"),
-                    },
-                    f.components.len(),
-                )
-            })
-            .collect();
-        pages.push(Job {
-            path: catalog.site_page(index_kind).path("html"),
-            template: "facets.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => root,
-                title => title(lang.t(key)),
-                heading => lang.t(key),
-                crumbs => ctx(&crumbs_home(lang, root)),
-                facets => ctx(&list),
-            }),
-        });
-        for (fi, f) in facets.iter().enumerate() {
+    for kind in [FacetKind::Category, FacetKind::Vendor] {
+        pages.push(facet_index_job(site, kind));
+        for fi in 0..kind.facets(catalog).len() {
             pages.push(Job {
-                path: page_of(catalog, fi).path("html"),
+                path: kind.page(catalog, fi).path("html"),
                 template: "facet.html",
                 context: PageContext::Lazy(Box::new(move || {
-                    let name = site.facet_name(&f.name, empty_key);
-                    let crumbs = crumbs_section(lang, root, key);
-                    let comps = site.sorted_summaries(&catalog.members(f).collect::<Vec<_>>());
-                    minijinja::context! {
-                        root => root,
-                        title => page_title(site, &name),
-                        heading => name,
-                        kind => lang.t(if dir == "categories" { "category" } else { "vendor" }),
-                        variants => ctx(&f.variants),
-                        variants_label => lang.t("facet_variants"),
-                        crumbs => ctx(&crumbs),
-                        components => ctx(&comps),
-                    }
+                    facet_context(site, &facet_view(catalog, kind, fi, lang))
                 })),
             });
         }
     }
 
-    // Data types.
-    {
-        let root = "../";
-        #[derive(Serialize)]
-        struct TypeRow {
-            name: String,
-            href: String,
-            spellings: Vec<String>,
-            producers: usize,
-            consumers: usize,
-            others: usize,
-        }
-        let rows: Vec<TypeRow> = catalog
-            .data_types
-            .iter()
-            .enumerate()
-            .map(|(ti, t)| TypeRow {
-                name: t.name.clone(),
-                href: catalog.data_type_page(ti).file_name("html"),
-                spellings: t
-                    .spellings
-                    .iter()
-                    .filter(|s| **s != t.name)
-                    .cloned()
-                    .collect(),
-                producers: t.uses.producers.len(),
-                consumers: t.uses.consumers.len(),
-                others: t.uses.others.len(),
-            })
-            .collect();
-        pages.push(Job {
-            path: catalog.site_page(PageKind::DataTypes).path("html"),
-            template: "types.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => root,
-                title => title(lang.t("data_types")),
-                crumbs => ctx(&crumbs_home(lang, root)),
-                types => ctx(&rows),
-            }),
-        });
-        for ti in 0..catalog.data_types.len() {
+    // Data types and interfaces.
+    let source_url = site.opts.source_url.as_deref();
+    for kind in [TypeKind::Data, TypeKind::Interface] {
+        pages.push(type_index_job(site, kind));
+        let (count, template) = match kind {
+            TypeKind::Data => (catalog.data_types.len(), "type.html"),
+            TypeKind::Interface => (catalog.interfaces.len(), "interface.html"),
+        };
+        for i in 0..count {
+            let page = match kind {
+                TypeKind::Data => catalog.data_type_page(i),
+                TypeKind::Interface => catalog.interface_page(i),
+            };
             pages.push(Job {
-                path: catalog.data_type_page(ti).path("html"),
-                template: "type.html",
+                path: page.path("html"),
+                template,
                 context: PageContext::Lazy(Box::new(move || {
                     type_context(
                         site,
-                        &view::types::data_type_view(
-                            catalog,
-                            ti,
-                            lang,
-                            site.opts.source_url.as_deref(),
-                        ),
-                    )
-                })),
-            });
-        }
-    }
-
-    // Interfaces.
-    {
-        let root = "../";
-        #[derive(Serialize)]
-        struct IfRow {
-            name: String,
-            href: String,
-            providers: usize,
-            requirers: usize,
-            unprovided: bool,
-        }
-        let rows: Vec<IfRow> = catalog
-            .interfaces
-            .iter()
-            .enumerate()
-            .map(|(ii, t)| IfRow {
-                name: t.name.clone(),
-                href: catalog.interface_page(ii).file_name("html"),
-                providers: t.uses.providers.len(),
-                requirers: t.uses.requirers.len(),
-                unprovided: t.is_unprovided(),
-            })
-            .collect();
-        pages.push(Job {
-            path: catalog.site_page(PageKind::Interfaces).path("html"),
-            template: "interfaces.html",
-            context: PageContext::Ready(minijinja::context! {
-                root => root,
-                title => title(lang.t("interfaces")),
-                crumbs => ctx(&crumbs_home(lang, root)),
-                interfaces => ctx(&rows),
-            }),
-        });
-        for ii in 0..catalog.interfaces.len() {
-            pages.push(Job {
-                path: catalog.interface_page(ii).path("html"),
-                template: "interface.html",
-                context: PageContext::Lazy(Box::new(move || {
-                    type_context(
-                        site,
-                        &view::types::interface_view(
-                            catalog,
-                            ii,
-                            lang,
-                            site.opts.source_url.as_deref(),
-                        ),
+                        &match kind {
+                            TypeKind::Data => {
+                                view::types::data_type_view(catalog, i, lang, source_url)
+                            }
+                            TypeKind::Interface => {
+                                view::types::interface_view(catalog, i, lang, source_url)
+                            }
+                        },
                     )
                 })),
             });

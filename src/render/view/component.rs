@@ -8,15 +8,16 @@ use crate::i18n::Lang;
 use crate::model::{self, non_empty, ActionKind, Direction, PortDirection};
 use crate::readme::Readme;
 use crate::render::facts::{self, BackupRow, Fact};
+use crate::render::neighbourhood::{self as nb, NeighbourRow};
 use crate::types::{canonical_type, short_name};
 
 /// A data port row.
 pub struct DataPortView<'a> {
     pub anchor: &'a str,
-    pub name: &'a str,
-    /// The version (else the date) that added it, when the history is younger than it
+    /// The version (else date) that added it, when younger than the oldest version read
     /// ([`crate::catalog::history::since`]).
     pub since: Option<&'a str>,
+    pub name: &'a str,
     pub direction: Dir,
     /// The data type as written, linked to its type page when the catalogue has one.
     pub type_: Option<Linked<'a>>,
@@ -35,10 +36,10 @@ pub struct DataPortView<'a> {
 /// A service interface row of a service port.
 pub struct InterfaceView<'a> {
     pub anchor: &'a str,
-    pub name: &'a str,
-    /// The version (else the date) that added it, when the history is younger than it
+    /// The version (else date) that added it, when younger than the oldest version read
     /// ([`crate::catalog::history::since`]).
     pub since: Option<&'a str>,
+    pub name: &'a str,
     pub direction: Dir,
     pub provided: bool,
     pub type_: Option<Linked<'a>>,
@@ -51,10 +52,10 @@ pub struct InterfaceView<'a> {
 /// A service port with its interfaces.
 pub struct ServicePortView<'a> {
     pub anchor: &'a str,
-    pub name: &'a str,
-    /// The version (else the date) that added it, when the history is younger than it
+    /// The version (else date) that added it, when younger than the oldest version read
     /// ([`crate::catalog::history::since`]).
     pub since: Option<&'a str>,
+    pub name: &'a str,
     pub side: model::PortSide,
     pub details: Vec<Fact>,
     pub interfaces: Vec<InterfaceView<'a>>,
@@ -63,10 +64,10 @@ pub struct ServicePortView<'a> {
 /// A configuration parameter row.
 pub struct ConfigurationView<'a> {
     pub anchor: &'a str,
-    pub name: &'a str,
-    /// The version (else the date) that added it, when the history is younger than it
+    /// The version (else date) that added it, when younger than the oldest version read
     /// ([`crate::catalog::history::since`]).
     pub since: Option<&'a str>,
+    pub name: &'a str,
     pub type_: &'a str,
     pub default: &'a str,
     pub unit: &'a str,
@@ -125,6 +126,9 @@ pub struct ComponentView<'a> {
     pub history: super::history::HistoryView,
     /// The component's history page, which the History section links.
     pub history_page: Option<&'a Page>,
+    /// The components one connector away, by port ([`crate::render::neighbourhood`]): empty
+    /// when no component connects to this one.
+    pub neighbourhood: Vec<NeighbourRow<'a>>,
 }
 
 /// The data port's direction: label and class (`in`, `out`, `event`, `other`).
@@ -143,27 +147,25 @@ fn short(t: &Option<model::Text>) -> String {
         .unwrap_or_default()
 }
 
-/// Builds the view of component `ci`. `category` and `vendor` are its facets
-/// ([`Catalog::category_of_each`], [`Catalog::vendor_of_each`]); `source_url` the
-/// `source-url` template (a component of a `[[source]]` uses its source's instead).
-pub fn component_view<'a>(
-    cat: &'a Catalog,
-    ci: usize,
-    (category, vendor): (usize, usize),
-    source_url: Option<&str>,
-    lang: Lang,
-) -> ComponentView<'a> {
-    let c = &cat.components[ci];
-    let p = &c.profile;
-    let page = cat.component_page(ci);
-    // The "since" notes, by the change path of each element (none without a history).
-    let keys = if c.since.is_empty() {
+/// The data ports of component `ci`, each with its type linked and its peers.
+/// The change path of each element "since" notes can be on (none without a history).
+fn since_keys(c: &crate::catalog::Component) -> crate::catalog::history::ElementKeys {
+    if c.since.is_empty() {
         crate::catalog::history::ElementKeys::default()
     } else {
-        crate::catalog::history::ElementKeys::of(p)
-    };
-    let since = |key: Option<&String>| key.and_then(|k| c.since.get(k)).map(String::as_str);
-    let data_ports = p
+        crate::catalog::history::ElementKeys::of(&c.profile)
+    }
+}
+
+/// The "since" note of the element with change path `key` ([`since_keys`]).
+fn since<'a>(c: &'a crate::catalog::Component, key: Option<&String>) -> Option<&'a str> {
+    key.and_then(|k| c.since.get(k)).map(String::as_str)
+}
+
+fn data_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<DataPortView<'_>> {
+    let c = &cat.components[ci];
+    let keys = since_keys(c);
+    c.profile
         .data_ports
         .iter()
         .enumerate()
@@ -172,7 +174,7 @@ pub fn component_view<'a>(
             let type_page = ti.map(|ti| cat.data_type_page(ti));
             DataPortView {
                 anchor: &c.anchors.data_ports[pi],
-                since: since(keys.data_ports.get(pi)),
+                since: since(c, keys.data_ports.get(pi)),
                 name: dp.name.as_deref().unwrap_or_default(),
                 direction: port_dir(lang, dp),
                 type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
@@ -209,15 +211,22 @@ pub fn component_view<'a>(
                 ),
             }
         })
-        .collect();
-    let service_ports = p
+        .collect()
+}
+
+/// The service ports of component `ci`, each with its interfaces, their types linked and
+/// their peers.
+fn service_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<ServicePortView<'_>> {
+    let c = &cat.components[ci];
+    let keys = since_keys(c);
+    c.profile
         .service_ports
         .iter()
         .enumerate()
         .map(|(si, sp)| ServicePortView {
             anchor: &c.anchors.service_ports[si],
             name: sp.name.as_deref().unwrap_or_default(),
-            since: since(keys.service_ports.get(si)),
+            since: since(c, keys.service_ports.get(si)),
             side: sp.side(),
             details: facts::service_port(sp, lang),
             interfaces: sp
@@ -231,7 +240,7 @@ pub fn component_view<'a>(
                     InterfaceView {
                         anchor: &c.anchors.interfaces[si][ii],
                         name: i.name.as_deref().unwrap_or_default(),
-                        since: since(keys.interfaces.get(si).and_then(|x| x.get(ii))),
+                        since: since(c, keys.interfaces.get(si).and_then(|x| x.get(ii))),
                         direction: match i.direction_kind() {
                             Some(Direction::Provided) => Dir::new(lang.t("provided"), "provided"),
                             Some(Direction::Required) => Dir::new(lang.t("required"), "required"),
@@ -268,15 +277,20 @@ pub fn component_view<'a>(
                 })
                 .collect(),
         })
-        .collect();
-    let configurations = p
+        .collect()
+}
+
+/// The configuration parameters of component `c`.
+fn configuration_views(c: &crate::catalog::Component, lang: Lang) -> Vec<ConfigurationView<'_>> {
+    let keys = since_keys(c);
+    c.profile
         .configurations()
         .iter()
         .enumerate()
         .map(|(k, conf)| ConfigurationView {
             anchor: &c.anchors.configurations[k],
             name: conf.name.as_deref().unwrap_or_default(),
-            since: since(keys.configurations.get(k)),
+            since: since(c, keys.configurations.get(k)),
             type_: non_empty(&conf.type_).unwrap_or(""),
             default: conf.default_value.as_deref().unwrap_or_default(),
             unit: facts::configuration_unit(conf).unwrap_or(""),
@@ -285,7 +299,25 @@ pub fn component_view<'a>(
             description: conf.doc.as_ref().and_then(|d| non_empty(&d.description)),
             details: facts::configuration_without_widget(conf, lang),
         })
-        .collect();
+        .collect()
+}
+
+/// Builds the view of component `ci`. `category` and `vendor` are its facets
+/// ([`Catalog::category_of_each`], [`Catalog::vendor_of_each`]); `source_url` the
+/// `source-url` template (a component of a `[[source]]` uses its source's instead).
+pub fn component_view<'a>(
+    cat: &'a Catalog,
+    ci: usize,
+    (category, vendor): (usize, usize),
+    source_url: Option<&str>,
+    lang: Lang,
+) -> ComponentView<'a> {
+    let c = &cat.components[ci];
+    let p = &c.profile;
+    let page = cat.component_page(ci);
+    let data_ports = data_port_views(cat, ci, lang);
+    let service_ports = service_port_views(cat, ci, lang);
+    let configurations = configuration_views(c, lang);
     let actions = ActionKind::ALL
         .iter()
         .map(|&kind| {
@@ -365,5 +397,6 @@ pub fn component_view<'a>(
         history: super::history::HistoryView::of(&c.history, lang, &|commit, path| {
             super::history_page::commit_url(cat, c, source_url, commit, path)
         }),
+        neighbourhood: nb::rows(cat, ci, &nb::neighbourhood(cat, ci)),
     }
 }

@@ -8,6 +8,7 @@
 //! rendering in each output.
 
 pub mod component;
+pub mod facets;
 pub mod history;
 pub mod history_page;
 pub mod idl_file;

@@ -193,29 +193,9 @@ fn end_view(
     }
 }
 
-/// Builds the view of system `s` with its links for output `out`; `source_url` is the site's
-/// `source-url` template.
-pub fn system_view(
-    cat: &Catalog,
-    s: &System,
-    lang: Lang,
-    (show_host, source_url): (bool, Option<&str>),
-    out: Output,
-) -> SystemView {
-    let here = cat.page_of_system(s);
-    let href = |to: &Page, anchor: Option<&str>| -> String {
-        here.map(|from| cat.href(from, to, anchor, out))
-            .unwrap_or_default()
-    };
-    // An instance's row of this page: only the HTML page has row anchors.
-    let local = |anchor: &str| -> String {
-        match out {
-            Output::Html => format!("#{anchor}"),
-            Output::Markdown | Output::Doxygen => String::new(),
-        }
-    };
-    let p: &RtSystem = &s.profile;
-    let name = p.name().to_string();
+/// The summary of system `s`: its id, vendor, version, dates, comment and file, those given.
+fn summary_facts(s: &System, lang: Lang) -> Vec<KeyValue> {
+    let p = &s.profile;
     let parts = p.id_parts.as_ref();
     let part = |f: fn(&crate::model::system::SystemIdParts) -> &Option<Text>| {
         parts.map(|x| txt(f(x))).unwrap_or_default()
@@ -236,8 +216,12 @@ pub fn system_view(
         kv("source", s.source.clone()),
     ];
     summary.retain(|f| !f.value.is_empty());
-    let properties: Vec<KeyValue> = p
-        .properties
+    summary
+}
+
+/// The properties of system profile `p`; host data only when `show_host`.
+fn visible_properties(p: &RtSystem, show_host: bool) -> Vec<KeyValue> {
+    p.properties
         .iter()
         .filter(|q| {
             show_host
@@ -250,15 +234,17 @@ pub fn system_view(
             key: txt(&q.name),
             value: txt(&q.value),
         })
-        .collect();
-    let hidden = if show_host {
-        0
-    } else {
-        crate::catalog::systems::host_values(p)
-    };
+        .collect()
+}
 
-    // Instances.
-    let instances: Vec<InstanceRow> = p
+/// The instances of system `s`, each linked to its component's page.
+fn instance_rows(
+    cat: &Catalog,
+    s: &System,
+    show_host: bool,
+    href: &dyn Fn(&Page, Option<&str>) -> String,
+) -> Vec<InstanceRow> {
+    s.profile
         .components
         .iter()
         .enumerate()
@@ -305,10 +291,12 @@ pub fn system_view(
                 },
             }
         })
-        .collect();
+        .collect()
+}
 
-    // Configuration used, per instance, next to the component's defaults.
-    let configs: Vec<InstanceConfig> = p
+/// The configuration each instance of system `s` uses, next to its component's defaults.
+fn instance_configs(cat: &Catalog, s: &System, lang: Lang) -> Vec<InstanceConfig> {
+    s.profile
         .components
         .iter()
         .enumerate()
@@ -372,18 +360,25 @@ pub fn system_view(
                 sets,
             }
         })
-        .collect();
+        .collect()
+}
 
-    // Connectors.
-    let data_connectors: Vec<DataConnRow> = p
-        .data_port_connectors
+/// The data connectors of system `s`, their ends and data type linked.
+fn data_connector_rows(
+    cat: &Catalog,
+    s: &System,
+    href: &dyn Fn(&Page, Option<&str>) -> String,
+    local: &dyn Fn(&str) -> String,
+) -> Vec<DataConnRow> {
+    let p = &s.profile;
+    p.data_port_connectors
         .iter()
         .zip(&s.data_connectors)
         .map(|(c, l)| DataConnRow {
             name: txt(&c.name),
             id: txt(&c.connector_id),
-            source: end_view(cat, s, &href, &local, &c.source, &l.source),
-            target: end_view(cat, s, &href, &local, &c.target, &l.target),
+            source: end_view(cat, s, href, local, &c.source, &l.source),
+            target: end_view(cat, s, href, local, &c.target, &l.target),
             data_type: non_empty(&c.data_type).map(|t| Link {
                 text: t.to_string(),
                 href: cat
@@ -397,9 +392,18 @@ pub fn system_view(
             push_interval: txt(&c.push_interval),
             comment: txt(&c.comment),
         })
-        .collect();
-    let service_connectors: Vec<ServiceConnRow> = p
-        .service_port_connectors
+        .collect()
+}
+
+/// The service connectors of system `s`, with the interfaces of the ports they join.
+fn service_connector_rows(
+    cat: &Catalog,
+    s: &System,
+    href: &dyn Fn(&Page, Option<&str>) -> String,
+    local: &dyn Fn(&str) -> String,
+) -> Vec<ServiceConnRow> {
+    let p = &s.profile;
+    p.service_port_connectors
         .iter()
         .zip(&s.service_connectors)
         .map(|(c, l)| {
@@ -431,18 +435,19 @@ pub fn system_view(
             ServiceConnRow {
                 name: txt(&c.name),
                 id: txt(&c.connector_id),
-                source: end_view(cat, s, &href, &local, &c.source, &l.source),
-                target: end_view(cat, s, &href, &local, &c.target, &l.target),
+                source: end_view(cat, s, href, local, &c.source, &l.source),
+                target: end_view(cat, s, href, local, &c.target, &l.target),
                 interfaces,
                 trans_method: txt(&c.trans_method),
                 comment: txt(&c.comment),
             }
         })
-        .collect();
+        .collect()
+}
 
-    // Orders and groups.
-    let orders: Vec<OrderView> = p
-        .orders
+/// The execution orders of system profile `p`, each target with its condition.
+fn order_views(p: &RtSystem, lang: Lang) -> Vec<OrderView> {
+    p.orders
         .iter()
         .map(|o| OrderView {
             kind: o.kind.xml_name(),
@@ -479,7 +484,47 @@ pub fn system_view(
                 })
                 .collect(),
         })
-        .collect();
+        .collect()
+}
+
+/// Builds the view of system `s` with its links for output `out`.
+pub fn system_view(
+    cat: &Catalog,
+    s: &System,
+    lang: Lang,
+    (show_host, source_url): (bool, Option<&str>),
+    out: Output,
+) -> SystemView {
+    let here = cat.page_of_system(s);
+    let href = |to: &Page, anchor: Option<&str>| -> String {
+        here.map(|from| cat.href(from, to, anchor, out))
+            .unwrap_or_default()
+    };
+    // An instance's row of this page: only the HTML page has row anchors.
+    let local = |anchor: &str| -> String {
+        match out {
+            Output::Html => format!("#{anchor}"),
+            Output::Markdown | Output::Doxygen => String::new(),
+        }
+    };
+    let p: &RtSystem = &s.profile;
+    let name = p.name().to_string();
+    let summary = summary_facts(s, lang);
+    let properties = visible_properties(p, show_host);
+    let hidden = if show_host {
+        0
+    } else {
+        crate::catalog::systems::host_values(p)
+    };
+
+    let instances = instance_rows(cat, s, show_host, &href);
+
+    let configs = instance_configs(cat, s, lang);
+
+    let data_connectors = data_connector_rows(cat, s, &href, &local);
+    let service_connectors = service_connector_rows(cat, s, &href, &local);
+
+    let orders = order_views(p, lang);
     let groups: Vec<GroupView> = p
         .groups
         .iter()

@@ -14,6 +14,24 @@ pub enum TypeKind {
     Interface,
 }
 
+impl TypeKind {
+    /// The page kind of the kind's index.
+    pub fn index_kind(self) -> PageKind {
+        match self {
+            TypeKind::Data => PageKind::DataTypes,
+            TypeKind::Interface => PageKind::Interfaces,
+        }
+    }
+
+    /// The label key of the kind's index (`data_types`, `interfaces`).
+    pub fn index_key(self) -> &'static str {
+        match self {
+            TypeKind::Data => "data_types",
+            TypeKind::Interface => "interfaces",
+        }
+    }
+}
+
 /// One port (or interface of a service port) using the type: its component, the port, and
 /// the type as that profile spells it.
 pub struct UseRow<'a> {
@@ -122,10 +140,7 @@ where
     U: Uses,
     U::Ref: UseRef,
 {
-    let index = cat.site_page(match kind {
-        TypeKind::Data => PageKind::DataTypes,
-        TypeKind::Interface => PageKind::Interfaces,
-    });
+    let index = cat.site_page(kind.index_kind());
     let carried_by = match kind {
         TypeKind::Data => crate::render::system_text::carrying(cat, &t.name)
             .into_iter()
@@ -208,4 +223,65 @@ pub fn interface_view<'a>(
         lang,
         source_url,
     )
+}
+
+/// One entry of the data type or interface index: its page, name, the other spellings
+/// met, its numbers of uses by role (producers, consumers, others for a data type; providers,
+/// requirers, others for an interface) and whether it is an interface no component provides.
+pub struct TypeIndexRow<'a> {
+    pub page: &'a Page,
+    pub name: &'a str,
+    pub other_spellings: Vec<&'a str>,
+    pub counts: [usize; 3],
+    pub unprovided: bool,
+}
+
+/// The index of the data types or of the interfaces.
+pub struct TypeIndexView<'a> {
+    pub kind: TypeKind,
+    pub page: &'a Page,
+    pub rows: Vec<TypeIndexRow<'a>>,
+}
+
+/// The spellings of a type other than its `name`.
+fn other_spellings<'a>(name: &str, spellings: &'a [String]) -> Vec<&'a str> {
+    spellings
+        .iter()
+        .filter(|s| *s != name)
+        .map(String::as_str)
+        .collect()
+}
+
+/// A type entry's row of its index.
+fn index_row<'a, U: Uses>(page: &'a Page, t: &'a TypeEntry<U>) -> TypeIndexRow<'a> {
+    TypeIndexRow {
+        page,
+        name: &t.name,
+        other_spellings: other_spellings(&t.name, &t.spellings),
+        counts: t.uses.by_role().map(|(_, refs)| refs.len()),
+        unprovided: t.is_unprovided(),
+    }
+}
+
+/// The view of the index of `kind`: every data type or interface of the catalogue, in order.
+pub fn type_index_view(cat: &Catalog, kind: TypeKind) -> TypeIndexView<'_> {
+    let rows = match kind {
+        TypeKind::Data => cat
+            .data_types
+            .iter()
+            .enumerate()
+            .map(|(ti, t)| index_row(cat.data_type_page(ti), t))
+            .collect(),
+        TypeKind::Interface => cat
+            .interfaces
+            .iter()
+            .enumerate()
+            .map(|(ii, t)| index_row(cat.interface_page(ii), t))
+            .collect(),
+    };
+    TypeIndexView {
+        kind,
+        page: cat.site_page(kind.index_kind()),
+        rows,
+    }
 }
