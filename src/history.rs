@@ -21,6 +21,9 @@ use std::process::{Command, Stdio};
 /// Commits read per profile when `history` is not set.
 pub const DEFAULT_LIMIT: usize = 100;
 
+/// A blob's bytes, or why git could not give them.
+type Blob = Result<Vec<u8>, String>;
+
 /// Where a version of a profile is.
 #[derive(Debug, Clone)]
 enum Where {
@@ -170,7 +173,7 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
         }
     }
     let mut current: Vec<Option<(usize, String)>> = vec![None; catalog.components.len()];
-    let raw: Vec<HashMap<String, Result<Vec<u8>, String>>> = repos
+    let raw: Vec<HashMap<String, Blob>> = repos
         .iter()
         .zip(&wanted)
         .enumerate()
@@ -458,13 +461,13 @@ fn read_blobs(
     repo: &Repo,
     oids: &BTreeMap<String, String>,
     keep: &mut dyn FnMut(&str, &[u8]) -> bool,
-) -> HashMap<String, Result<Vec<u8>, String>> {
+) -> HashMap<String, Blob> {
     let ids: Vec<String> = oids.keys().cloned().collect();
     let mut out = HashMap::new();
     if ids.is_empty() {
         return out;
     }
-    let mut visit = |oid: &str, blob: Result<Vec<u8>, String>| {
+    let mut visit = |oid: &str, blob: Blob| {
         if blob.as_ref().map_or(true, |b| keep(oid, b)) {
             out.insert(oid.to_string(), blob);
         }
@@ -511,11 +514,7 @@ fn blob_format(bytes: &[u8], file: &str) -> Option<parse::SourceFormat> {
 
 /// Reads the blobs `oids` of `repo` with one `git cat-file --batch`, handing each to `visit`
 /// as it arrives (so that the blobs not kept are never all in memory at once).
-fn cat_file(
-    repo: &Repo,
-    oids: &[String],
-    visit: &mut dyn FnMut(&str, Result<Vec<u8>, String>),
-) -> Result<(), String> {
+fn cat_file(repo: &Repo, oids: &[String], visit: &mut dyn FnMut(&str, Blob)) -> Result<(), String> {
     let mut c = repo.git();
     c.args(["cat-file", "--batch"])
         .stdin(Stdio::piped())
