@@ -8,6 +8,7 @@
 #        BENCH_DIR=/dev/shm/h …            (where repositories and outputs go; default /tmp/rtcdoc-history)
 #        BASELINE=/path/to/rtcdoc …        (an older binary measured beside this one, same runs)
 #        FORMATS="html json" …             (default: html markdown doxygen json)
+#        BIN=/path/to/rtcdoc …             (measure that binary; default: cargo build --release)
 #
 # bench/gen_history.py writes the repositories with git fast-import: 50 profiles cloned from the
 # examples, 1,000 commits of realistic edits (ports and parameters added, removed, renamed and
@@ -24,8 +25,12 @@ runs=${RUNS:-3}
 work=${BENCH_DIR:-/tmp/rtcdoc-history}
 formats=(${FORMATS:-html markdown doxygen json})
 mkdir -p "$work"
-cargo build --release --quiet
-bin=$PWD/target/release/rtcdoc
+if [ -n "${BIN:-}" ]; then
+  bin=$BIN
+else
+  cargo build --release --quiet
+  bin=$PWD/target/release/rtcdoc
+fi
 
 # generate DIR ARGS...: the repository, generated once per generator version and arguments.
 generate() {
