@@ -234,11 +234,28 @@ fn read_versions<D: Send>(
 }
 
 /// The commits of each located file, newest first, up to `limit`.
+///
+/// From one log of the whole repository where it has several of the files ([`WholeLog`]),
+/// else (or where `--follow` could find a rename or copy) a `git log --follow` per file.
 fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<Vec<Version>> {
+    let mut groups: BTreeMap<(usize, &str), Vec<&str>> = BTreeMap::new();
+    for (repo, rev, path) in located.iter().flatten() {
+        groups.entry((*repo, rev)).or_default().push(path);
+    }
+    let wholes: HashMap<(usize, &str), WholeLog> = groups
+        .into_par_iter()
+        .filter(|(_, paths)| paths.len() >= 2)
+        .filter_map(|((repo, rev), paths)| {
+            whole_log(&repos[repo], rev, &paths).map(|w| ((repo, rev), w))
+        })
+        .collect();
     located
         .par_iter()
         .map(|l| match l {
-            Some((repo, rev, path)) => log(&repos[*repo], *repo, rev, path, limit),
+            Some((repo, rev, path)) => wholes
+                .get(&(*repo, rev.as_str()))
+                .and_then(|w| w.log(*repo, path, limit))
+                .unwrap_or_else(|| log(&repos[*repo], *repo, rev, path, limit)),
             None => Vec::new(),
         })
         .collect()
@@ -426,6 +443,188 @@ fn log(repo: &Repo, at: usize, rev: &str, path: &str, limit: usize) -> Vec<Versi
         return Vec::new();
     }
     parse_log(&String::from_utf8_lossy(&out.stdout), at)
+}
+
+/// A commit as `git log` describes it: id, author date, author, subject.
+type Header<'a> = (&'a str, &'a str, &'a str, &'a str);
+
+/// A version of a file at a commit: its blob `new` and its path then.
+fn version(
+    repo: usize,
+    (commit, date, author, subject): Header,
+    new: &str,
+    file: &str,
+    added: bool,
+) -> Version {
+    Version {
+        added,
+        at: Where::Blob {
+            repo,
+            oid: new.to_string(),
+        },
+        key: date.get(..19).unwrap_or(date).replace('T', " "),
+        entry: Entry {
+            commit: Some(commit.to_string()),
+            file: file.to_string(),
+            date: Some(date.to_string()),
+            author: Some(author.to_string()),
+            subject: Some(subject.to_string()),
+            ..Entry::default()
+        },
+    }
+}
+
+/// The history of a repository at a revision for many of its files at once: one `git log`
+/// of every commit with every file it changed, instead of a `git log --follow` per file
+/// (10,000 profiles: 10,000 git processes, each walking the whole history). It gives what
+/// `git log --follow` gives where `--follow` has nothing to find: the history is linear (no
+/// merge to simplify), and the file is added, within the commits asked for, only by a root
+/// commit (at any other commit adding it, `--follow` looks for a file it was renamed or
+/// copied from, among all the files of the commit before); any other file falls back to its
+/// own `git log --follow`.
+struct WholeLog {
+    /// The commits, newest first, and whether each is a root commit (without parents).
+    commits: Vec<(String, String, String, String, bool)>,
+    /// Per file asked for (its path in the repository): (commit index, new blob, added).
+    files: HashMap<String, Vec<(usize, String, bool)>>,
+    /// The files asked for whose path is also a folder in some commit (pathspecs match both).
+    folders: std::collections::HashSet<String>,
+    /// The input directory's path in the repository (`git rev-parse --show-prefix`).
+    prefix: String,
+}
+
+/// Reads the whole log of `rev` for the files `paths`, or `None` when it would not be the
+/// `--follow` log of each (merges, paths relative to the input) or git fails.
+fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
+    if rev.starts_with('-') {
+        return None;
+    }
+    let git = |args: &[&str]| -> Option<Vec<u8>> {
+        let mut c = repo.git();
+        c.args(args).stderr(Stdio::null());
+        c.output().ok().map(|o| o.stdout)
+    };
+    // Relative paths would hide the files outside the input directory: a log per file then.
+    let config = git(&["config", "--get", "diff.relative"])?;
+    let config = String::from_utf8_lossy(&config).to_ascii_lowercase();
+    if !matches!(config.trim(), "" | "false" | "no" | "off" | "0") {
+        return None;
+    }
+    let prefix = match repo {
+        Repo::WorkTree(_) => String::from_utf8(git(&["rev-parse", "--show-prefix"])?)
+            .ok()?
+            .trim_end_matches('\n')
+            .to_string(),
+        Repo::Mirror(_) => String::new(),
+    };
+    let mut c = repo.git();
+    c.args([
+        "log",
+        "--no-renames",
+        "--no-abbrev",
+        "--raw",
+        "-z",
+        "--no-color",
+        "--no-ext-diff",
+        "--format=%x1e%H%x1f%P%x1f%aI%x1f%an%x1f%s",
+        "--end-of-options",
+        rev,
+        "--",
+    ])
+    .stderr(Stdio::null());
+    let out = c.output().ok()?;
+    if !out.status.success() {
+        return None;
+    }
+    let text = String::from_utf8_lossy(&out.stdout);
+    let wanted: std::collections::HashSet<String> =
+        paths.iter().map(|p| format!("{prefix}{p}")).collect();
+    let mut w = WholeLog {
+        commits: Vec::new(),
+        files: HashMap::new(),
+        folders: Default::default(),
+        prefix,
+    };
+    for record in text.split('\u{1e}').filter(|r| !r.is_empty()) {
+        let (header, raw) = record.split_once('\0').unwrap_or((record, ""));
+        let mut h = header.split('\u{1f}');
+        let (Some(commit), Some(parents), Some(date), Some(author), Some(subject)) =
+            (h.next(), h.next(), h.next(), h.next(), h.next())
+        else {
+            return None;
+        };
+        if parents.contains(' ') {
+            return None; // a merge: per-file history simplification differs
+        }
+        let at = w.commits.len();
+        let mut parts = raw.trim_start_matches('\n').split('\0');
+        while let Some(meta) = parts.next().filter(|m| m.starts_with(':')) {
+            let fields: Vec<&str> = meta.split(' ').collect();
+            let (Some(new), Some(status)) = (fields.get(3), fields.get(4)) else {
+                return None;
+            };
+            let path = parts.next()?;
+            if !(status.starts_with('A')
+                || status.starts_with('M')
+                || status.starts_with('D')
+                || status.starts_with('T'))
+            {
+                return None;
+            }
+            if wanted.contains(path) {
+                w.files.entry(path.to_string()).or_default().push((
+                    at,
+                    new.to_string(),
+                    status.starts_with('A'),
+                ));
+            }
+            for (i, _) in path.match_indices('/') {
+                if wanted.contains(&path[..i]) {
+                    w.folders.insert(path[..i].to_string());
+                }
+            }
+        }
+        w.commits.push((
+            commit.to_string(),
+            date.to_string(),
+            author.to_string(),
+            subject.to_string(),
+            parents.is_empty(),
+        ));
+    }
+    Some(w)
+}
+
+impl WholeLog {
+    /// The commits that changed `path` (relative to the input), as [`log`] gives them, or
+    /// `None` when its own `git log --follow` is needed.
+    fn log(&self, repo: usize, path: &str, limit: usize) -> Option<Vec<Version>> {
+        if path.is_empty() {
+            return Some(Vec::new());
+        }
+        let full = format!("{}{path}", self.prefix);
+        if self.folders.contains(&full) {
+            return None;
+        }
+        let mut out = Vec::new();
+        for (at, new, added) in self.files.get(&full).into_iter().flatten().take(limit) {
+            let (commit, date, author, subject, root) = &self.commits[*at];
+            if *added && !*root {
+                return None; // `--follow` looks for a rename or copy here
+            }
+            if new.bytes().all(|b| b == b'0') {
+                continue; // deleted here
+            }
+            out.push(version(
+                repo,
+                (commit, date, author, subject),
+                new,
+                &full,
+                *added,
+            ));
+        }
+        Some(out)
+    }
 }
 
 /// Reads `git log --raw -z` output (records begun by U+001E, header fields split by U+001F).

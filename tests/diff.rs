@@ -1386,3 +1386,35 @@ fn a_removed_port_points_at_the_port_in_the_old_file() {
         String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
     assert!(text.contains("--> old/Base/RTC.xml:8:3"), "{text}");
 }
+
+/// Documentation left blank is documentation left out: RTCBuilder writes an empty
+/// `rtcDoc:Doc` (every attribute `""`) where other versions of it write none, which is no
+/// change; filling the description in still is one.
+#[test]
+fn blank_documentation_and_none_are_the_same() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let blank = edited(&[(
+        r#"rtc:unit="m/s"/>"#,
+        r#"rtc:unit="m/s"><rtcDoc:Doc rtcDoc:description="" rtcDoc:type="" rtcDoc:number="" rtcDoc:unit=" "/></rtc:DataPorts>"#,
+    )]);
+    write(dir.path(), "old/RTC.xml", BASE);
+    write(dir.path(), "new/RTC.xml", &blank);
+    let (exit, json) = run_diff(dir.path(), &["--fail-on", "info"]);
+    assert_eq!(exit, 0, "{json:#}");
+    assert!(changes(&json).is_empty(), "{json:#}");
+    let filled = blank.replace(
+        r#"rtcDoc:description="""#,
+        r#"rtcDoc:description="Velocity command""#,
+    );
+    write(dir.path(), "new/RTC.xml", &filled);
+    let (_, json) = run_diff(dir.path(), &[]);
+    let found: Vec<(&str, &str)> = changes(&json)
+        .iter()
+        .map(|c| (c["code"].as_str().unwrap(), c["path"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        found,
+        [("DIFF307", "dataPorts/cmd/doc/description")],
+        "{json:#}"
+    );
+}

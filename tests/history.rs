@@ -446,3 +446,151 @@ fn a_source_repository_gives_its_history_up_to_the_pinned_commit() {
     );
     assert!(html.contains("could not be read: "), "{html}");
 }
+
+/// `git log --follow` of `path` (relative to `dir`): (commit, file) of each version, newest
+/// first, the commits that deleted it left out — what a component's history lists.
+fn follow(dir: &Path, path: &str, limit: usize) -> Vec<(String, String)> {
+    let o = std::process::Command::new("git")
+        .args(["log", "--follow", "--name-status", "--format=@%H"])
+        .arg(format!("--max-count={limit}"))
+        .args(["--", path])
+        .current_dir(dir)
+        .env("GIT_CONFIG_NOSYSTEM", "1")
+        .env("HOME", dir)
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let mut out = Vec::new();
+    for block in String::from_utf8(o.stdout).unwrap().split('@').skip(1) {
+        let mut lines = block.lines().filter(|l| !l.is_empty());
+        let commit = lines.next().unwrap().to_string();
+        let status = lines.next().unwrap();
+        if !status.starts_with('D') {
+            out.push((commit, status.rsplit('\t').next().unwrap().to_string()));
+        }
+    }
+    out
+}
+
+/// Several profiles in one repository are read from one log of the whole repository: it must
+/// give what `git log --follow` of each file gives — with an input folder inside the
+/// repository, a profile added by the root commit only (D: the whole log's), one deleted and
+/// added again (where `--follow` finds a similar file to continue with), one added later, a
+/// renamed folder, a limit, and merges.
+#[test]
+fn histories_of_many_profiles_are_those_of_git_log_follow() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    std::fs::create_dir_all(&repo).unwrap();
+    if !git(&repo, &["init", "-q"], "") {
+        println!("skipped: git not available");
+        return;
+    }
+    assert!(git(&repo, &["config", "user.name", "Tester"], ""));
+    assert!(git(&repo, &["config", "user.email", "t@example.org"], ""));
+    let profile = |name: &str, rev: usize| {
+        PROFILE
+            .replace("Base", name)
+            .replace("\"odometry\"", &format!("\"odometry{rev}\""))
+    };
+    let mut day = 0;
+    let mut commit = |edits: &[(&str, Option<String>)], subject: &str| {
+        for (path, text) in edits {
+            match text {
+                Some(t) => write(&repo, path, t),
+                None => std::fs::remove_file(repo.join(path)).unwrap(),
+            }
+        }
+        day += 1;
+        let date = format!("2024-02-{day:02} 10:00:00 +0900");
+        assert!(git(&repo, &["add", "-A"], &date));
+        assert!(git(&repo, &["commit", "-q", "-m", subject], &date));
+    };
+    commit(
+        &[
+            ("lab/A/RTC.xml", Some(profile("A", 0))),
+            ("lab/B/RTC.xml", Some(profile("B", 0))),
+            ("lab/D/RTC.xml", Some(profile("D", 0))),
+            ("notes.txt", Some("unrelated notes\n".repeat(20))),
+        ],
+        "First",
+    );
+    commit(
+        &[
+            ("lab/A/RTC.xml", Some(profile("A", 1))),
+            ("lab/D/RTC.xml", Some(profile("D", 1))),
+        ],
+        "Edit A and D",
+    );
+    commit(
+        &[
+            ("lab/A/RTC.xml", Some(profile("A", 2))),
+            ("lab/B/RTC.xml", Some(profile("B", 1))),
+        ],
+        "Edit A and B",
+    );
+    commit(
+        &[
+            ("lab/C/RTC.xml", Some(profile("C", 0))),
+            ("notes.txt", None),
+        ],
+        "Add C, drop the notes",
+    );
+    let b = std::fs::read_to_string(repo.join("lab/B/RTC.xml")).unwrap();
+    commit(
+        &[("lab/B/RTC.xml", None), ("lab/B2/RTC.xml", Some(b))],
+        "Move B",
+    );
+    commit(&[("lab/A/RTC.xml", None)], "Drop A");
+    commit(&[("lab/A/RTC.xml", Some(profile("A", 3)))], "A again");
+    commit(
+        &[
+            ("lab/C/RTC.xml", Some(profile("C", 1))),
+            ("lab/D/RTC.xml", Some(profile("D", 2))),
+        ],
+        "Edit C and D",
+    );
+    let lab = repo.join("lab");
+    let check = |tag: &str| {
+        for limit in [100, 2] {
+            let out = dir.path().join(format!("site-{tag}-{limit}"));
+            let json = build_json(&lab, &out, &["--history", &limit.to_string()]);
+            for (id, path) in [
+                ("A", "A/RTC.xml"),
+                ("B", "B2/RTC.xml"),
+                ("C", "C/RTC.xml"),
+                ("D", "D/RTC.xml"),
+            ] {
+                let h = json["components"][format!("RTC:Lab:Mobile:{id}:1.0.0")]["history"]
+                    .as_array()
+                    .unwrap_or_else(|| panic!("{id}: no history"));
+                let got: Vec<(String, String)> = h
+                    .iter()
+                    .map(|e| {
+                        (
+                            e["commit"].as_str().unwrap().to_string(),
+                            e["file"].as_str().unwrap().to_string(),
+                        )
+                    })
+                    .collect();
+                assert_eq!(
+                    got,
+                    follow(&lab, path, limit),
+                    "{tag} {id} --history {limit}"
+                );
+            }
+        }
+    };
+    check("linear");
+    // A merge: each file's history as git simplifies it.
+    assert!(git(&repo, &["checkout", "-q", "-b", "side"], ""));
+    commit(&[("lab/C/RTC.xml", Some(profile("C", 2)))], "Edit C aside");
+    assert!(git(&repo, &["checkout", "-q", "-"], ""));
+    commit(&[("lab/A/RTC.xml", Some(profile("A", 4)))], "Edit A");
+    assert!(git(
+        &repo,
+        &["merge", "-q", "--no-ff", "-m", "Merge side", "side"],
+        "2024-03-01 10:00:00 +0900"
+    ));
+    check("merged");
+}

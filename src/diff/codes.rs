@@ -532,7 +532,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "documentation-changed",
         summary: "a description, doc field or comment changed",
-        explanation: "Documentation (the rtcDoc fields, descriptions, comments, abstract, hardware profile, version-up logs) does not affect behaviour.",
+        explanation: "Documentation (the rtcDoc fields, descriptions, comments, abstract, hardware profile, version-up logs) does not affect behaviour. A doc field left blank (`\"\"`, as RTCBuilder writes what it leaves empty) and one left out are the same: no change.",
     },
     Code {
         code: OTHER_CHANGED,

@@ -1109,6 +1109,15 @@ fn classify(
     let pos = f.pos;
     let joined = p.join("/");
     let (at, documentation) = place(p);
+    // Documentation left blank and documentation left out say the same: RTCBuilder writes
+    // `rtcDoc:description=""` for every field it leaves blank, other writers (and its other
+    // versions) leave the attribute or the whole doc element out.
+    let blank = |v: &Value| text(v).is_none_or(|s| s.trim().is_empty());
+    if let Raw::Changed(a, b) = &f.raw {
+        if documentation && blank(a) && blank(b) {
+            return;
+        }
+    }
     match &f.raw {
         Raw::Removed(node) => {
             let (code, message, old) = match at {
