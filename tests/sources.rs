@@ -599,3 +599,69 @@ fn diff_compares_a_source_at_two_revs() {
         "{err}"
     );
 }
+
+/// What's new names each change's `[[source]]` and offers the sources as a filter; the search
+/// index and the component pages say the same source.
+#[test]
+fn whats_new_filters_by_source() {
+    let p = Project::new();
+    let nav = p.root.join("nav");
+    commit(
+        &nav,
+        &[("Planner/RTC.xml", xml_profile("Planner", &[]))],
+        None,
+    );
+    commit(
+        &nav,
+        &[(
+            "Planner/RTC.xml",
+            xml_profile("Planner", &[("DataInPort", "goal", "RTC::TimedPose2D")]),
+        )],
+        None,
+    );
+    let cam = p.root.join("cam");
+    commit(
+        &cam,
+        &[("Camera/RTC.xml", xml_profile("Camera", &[]))],
+        None,
+    );
+    commit(
+        &cam,
+        &[(
+            "Camera/RTC.xml",
+            xml_profile("Camera", &[("DataOutPort", "image", "RTC::CameraImage")]),
+        )],
+        None,
+    );
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\nname = \"nav\"\n\n[[source]]\ngit = \"{}\"\nname = \"camera\"\n",
+        url(&nav),
+        url(&cam)
+    ));
+    let (code, err) = p.run(&["build", "-f", "html"]);
+    assert_eq!(code, 0, "{err}");
+    let page = std::fs::read_to_string(p.proj.join("site/whats-new.html")).unwrap();
+    // The filter lists both sources, and each change's row carries its own.
+    assert!(page.contains("<select id=\"f-nsource\">"), "{page}");
+    for s in ["nav", "camera"] {
+        assert!(
+            page.contains(&format!("<option value=\"{s}\">{s}</option>")),
+            "{page}"
+        );
+    }
+    let row = |port: &str| -> String {
+        let at = page.find(&format!("dataPorts/{port}")).expect(port);
+        let start = page[..at].rfind("<tr ").unwrap();
+        page[start..at].to_string()
+    };
+    assert!(
+        row("goal").contains("data-source=\"nav\""),
+        "{}",
+        row("goal")
+    );
+    assert!(
+        row("image").contains("data-source=\"camera\""),
+        "{}",
+        row("image")
+    );
+}
