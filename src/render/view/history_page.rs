@@ -410,4 +410,45 @@ mod tests {
             Some("2024-01-02T10:00:00+09:00")
         );
     }
+
+    /// What's new lists at most WHATS_NEW_MAX changes and counts the rest; the feed has at
+    /// most FEED_MAX entries, newest first.
+    #[test]
+    fn whats_new_and_the_feed_are_bounded() {
+        use crate::catalog::history::{Change, Entry};
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let opts = crate::build::LoadOptions::default();
+        let mut cat = crate::build::load(&root.join("examples"), &opts)
+            .unwrap()
+            .catalog;
+        let change = |i: usize| Change {
+            severity: "info".into(),
+            code: "DIFF301".into(),
+            path: format!("dataPorts/p{i}"),
+            message: format!("data port p{i} was added"),
+            ..Change::default()
+        };
+        // 150 versions of 20 changes each, a day apart, newest first.
+        let history: Vec<Entry> = (0..150)
+            .map(|k| Entry {
+                commit: Some(format!("{:040x}", 1000 - k)),
+                file: "RTC.xml".into(),
+                date: Some(format!(
+                    "2024-{:02}-{:02}T00:00:00+00:00",
+                    12 - k / 28,
+                    28 - k % 28
+                )),
+                changes: (0..20).map(|i| change(k * 20 + i)).collect(),
+                ..Entry::default()
+            })
+            .collect();
+        cat.components[0].history = history;
+        cat.history_attached();
+        let v = whats_new_view(&cat, None, Lang::En);
+        let rows: usize = v.days.iter().map(|(_, r)| r.len()).sum();
+        assert_eq!(rows, WHATS_NEW_MAX);
+        assert_eq!(v.more, 150 * 20 - WHATS_NEW_MAX);
+        let feed = feed_entries(&cat, Lang::En);
+        assert_eq!(feed.len(), FEED_MAX);
+    }
 }
