@@ -66,22 +66,33 @@ pub struct TypeView<'a> {
     pub contained_in: Vec<Linked<'a>>,
 }
 
+/// The row of a use by component `ci`: `port` (its text) linked to `anchor` on the component's
+/// page, and the type as the profile writes it.
+fn use_row<'a>(
+    cat: &'a Catalog,
+    ci: usize,
+    port: &str,
+    anchor: &'a str,
+    written: &str,
+) -> UseRow<'a> {
+    let c = &cat.components[ci];
+    let page = cat.component_page(ci);
+    UseRow {
+        component: Linked::new(&c.display_name(), Some(page), None),
+        port: Linked::new(port, Some(page), Some(anchor)),
+        written: written.to_string(),
+    }
+}
+
 fn port_rows<'a>(cat: &'a Catalog, refs: &[PortRef]) -> Vec<UseRow<'a>> {
     refs.iter()
         .filter_map(|r| {
             let (ci, pi) = cat.resolve_port(r)?;
             let c = &cat.components[ci];
             let port = &c.profile.data_ports[pi];
-            let page = cat.component_page(ci);
-            Some(UseRow {
-                component: Linked::new(&c.display_name(), Some(page), None),
-                port: Linked::new(
-                    port.name.as_deref().unwrap_or_default(),
-                    Some(page),
-                    Some(&c.anchors.data_ports[pi]),
-                ),
-                written: non_empty(&port.type_).unwrap_or("").to_string(),
-            })
+            let name = port.name.as_deref().unwrap_or_default();
+            let written = non_empty(&port.type_).unwrap_or("");
+            Some(use_row(cat, ci, name, &c.anchors.data_ports[pi], written))
         })
         .collect()
 }
@@ -93,20 +104,19 @@ fn interface_rows<'a>(cat: &'a Catalog, refs: &[InterfaceRef]) -> Vec<UseRow<'a>
             let c = &cat.components[ci];
             let sp = &c.profile.service_ports[pi];
             let i = &sp.interfaces[ii];
-            let page = cat.component_page(ci);
-            Some(UseRow {
-                component: Linked::new(&c.display_name(), Some(page), None),
-                port: Linked::new(
-                    &format!(
-                        "{}.{}",
-                        sp.name.as_deref().unwrap_or(""),
-                        i.name.as_deref().unwrap_or("")
-                    ),
-                    Some(page),
-                    Some(&c.anchors.interfaces[pi][ii]),
-                ),
-                written: non_empty(&i.type_).unwrap_or("").to_string(),
-            })
+            let name = format!(
+                "{}.{}",
+                sp.name.as_deref().unwrap_or(""),
+                i.name.as_deref().unwrap_or("")
+            );
+            let written = non_empty(&i.type_).unwrap_or("");
+            Some(use_row(
+                cat,
+                ci,
+                &name,
+                &c.anchors.interfaces[pi][ii],
+                written,
+            ))
         })
         .collect()
 }
