@@ -303,6 +303,36 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
     Some(v)
 }
 
+/// The fields of a struct or exception, or the cases of a union (`union`: with their labels),
+/// as a table; `ty` writes a type.
+fn fields_table<M: Markup>(
+    out: &mut String,
+    fields: &[FieldView],
+    union: bool,
+    lang: Lang,
+    ty: &dyn Fn(&TypeRef) -> String,
+) {
+    let rows: Vec<Vec<String>> = fields
+        .iter()
+        .map(|f| {
+            let mut row = Vec::new();
+            if union {
+                row.push(M::esc(&f.labels));
+            }
+            row.push(M::esc(&format!("{}{}", f.name, f.array)));
+            row.push(ty(&f.ty));
+            row.push(M::esc(&f.doc));
+            row
+        })
+        .collect();
+    let mut cols = Vec::new();
+    if union {
+        cols.push(lang.t("idl_cases"));
+    }
+    cols.extend([lang.t("idl_field"), lang.t("type"), lang.t("description")]);
+    M::table(out, &cols, &rows);
+}
+
 /// The operations of an interface as a table: name, return type, parameters, exceptions and
 /// documentation; `ty` writes a type (linked to its page when it has one).
 fn operations_table<M: Markup>(
@@ -417,27 +447,7 @@ pub fn write_definition<M: Markup>(
         );
     }
     if !d.fields.is_empty() {
-        let union = d.kind == "union";
-        let rows: Vec<Vec<String>> = d
-            .fields
-            .iter()
-            .map(|f| {
-                let mut row = Vec::new();
-                if union {
-                    row.push(M::esc(&f.labels));
-                }
-                row.push(M::esc(&format!("{}{}", f.name, f.array)));
-                row.push(ty(&f.ty));
-                row.push(M::esc(&f.doc));
-                row
-            })
-            .collect();
-        let mut cols = Vec::new();
-        if union {
-            cols.push(lang.t("idl_cases"));
-        }
-        cols.extend([lang.t("idl_field"), lang.t("type"), lang.t("description")]);
-        M::table(out, &cols, &rows);
+        fields_table::<M>(out, &d.fields, d.kind == "union", lang, &ty);
     }
     if !d.values.is_empty() {
         let rows: Vec<Vec<String>> = d

@@ -435,6 +435,31 @@ pub fn component_sections<M: Markup>(
         &rows,
     );
 
+    environment_sections::<M>(out, v, lang);
+
+    history_section::<M>(out, cat, page, (&v.history, v.history_page), lang);
+
+    if !v.extras.is_empty() {
+        M::heading(out, page, 2, "sec-extra", lang.t("extra"));
+        let extras: Vec<Fact> = v.extras.iter().map(|(f, _)| f.clone()).collect();
+        facts_table::<M>(out, lang, &extras);
+    }
+
+    if !v.systems.is_empty() {
+        M::heading(out, page, 2, "sec-systems", lang.t("sys_used_by"));
+        let items: Vec<String> = v
+            .systems
+            .iter()
+            .map(|l| linked::<M>(cat, page, l))
+            .collect();
+        M::linked_list(out, &items);
+    }
+}
+
+/// The system parameters, language and targets, properties, version history and backups of
+/// a component page, each section when it has something to show.
+fn environment_sections<M: Markup>(out: &mut String, v: &ComponentView<'_>, lang: Lang) {
+    let page = v.page;
     if !v.parameters.is_empty() {
         M::heading(out, page, 2, "sec-system-parameters", lang.t("parameters"));
         let rows: Vec<Vec<String>> = v
@@ -497,24 +522,6 @@ pub fn component_sections<M: Markup>(
             ],
             &rows,
         );
-    }
-
-    history_section::<M>(out, cat, page, (&v.history, v.history_page), lang);
-
-    if !v.extras.is_empty() {
-        M::heading(out, page, 2, "sec-extra", lang.t("extra"));
-        let extras: Vec<Fact> = v.extras.iter().map(|(f, _)| f.clone()).collect();
-        facts_table::<M>(out, lang, &extras);
-    }
-
-    if !v.systems.is_empty() {
-        M::heading(out, page, 2, "sec-systems", lang.t("sys_used_by"));
-        let items: Vec<String> = v
-            .systems
-            .iter()
-            .map(|l| linked::<M>(cat, page, l))
-            .collect();
-        M::linked_list(out, &items);
     }
 }
 

@@ -1099,31 +1099,7 @@ impl HtmlRenderer {
 
         let mut all_paths: Vec<String> = Vec::new();
         let mut written = 0usize;
-        for asset in ASSETS {
-            all_paths.push(asset.to_string());
-            if wanted(asset) {
-                let body = theme_file(opts.theme_dir.as_deref(), asset)?.unwrap_or_default();
-                out.write(asset, body.as_bytes())?;
-                written += 1;
-            }
-        }
-        // The images the READMEs show, each copied once.
-        for (asset, abs) in catalog.readme_assets() {
-            all_paths.push(asset.to_string());
-            if wanted(asset) {
-                out.write_owned(asset, crate::readme::read_asset(abs)?)?;
-                written += 1;
-            }
-        }
-        // Each wiring diagram as a file of its own, which the system page links (a large
-        // system is easier to read opened alone, zoomed by the browser).
-        for (path, svg) in systems::drawings(&site) {
-            all_paths.push(path.clone());
-            if wanted(&path) {
-                out.write_owned(&path, svg.into_bytes())?;
-                written += 1;
-            }
-        }
+        written += write_files(&site, out, wanted, &mut all_paths)?;
         all_paths.push("search-index.js".into());
         // Component pages: the bulk of the work, rendered and written in parallel; the search
         // index is built alongside (its JSON serialisation is serial).
@@ -1202,33 +1178,78 @@ impl HtmlRenderer {
             }
         }
         if let Some(base_url) = opts.base_url.as_deref().filter(|_| wanted("sitemap.xml")) {
-            let mut urls: Vec<String> = catalog
-                .pages()
-                .iter()
-                .filter(|p| match p.kind {
-                    PageKind::NotFound => false,
-                    PageKind::Diagnostics => !catalog.diagnostics.is_empty(),
-                    _ => true,
-                })
-                .map(|p| p.path("html"))
-                .collect();
-            urls.sort();
-            let base = format!("{}/", base_url.trim_end_matches('/'));
-            let mut sm = String::from(
-                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<urlset xmlns=\"http://www.sitemaps.org/schemas/sitemap/0.9\">\n",
-            );
-            for u in urls {
-                sm.push_str("  <url><loc>");
-                sm.push_str(&xml_escape(&format!("{base}{u}")));
-                sm.push_str("</loc></url>\n");
-            }
-            sm.push_str("</urlset>\n");
+            let sm = sitemap(catalog, base_url);
             out.write("sitemap.xml", sm.as_bytes())?;
             written += 1;
         }
         all_paths.sort();
         Ok(Rendered { written, all_paths })
     }
+}
+
+/// Writes the files of the site that are no pages (those `wanted`): the theme's assets, the
+/// images the READMEs show (each copied once) and each system's wiring drawing as a file of
+/// its own; adds every one's path to `all_paths` and returns how many were written.
+fn write_files(
+    site: &Site<'_>,
+    out: &dyn Sink,
+    wanted: &(dyn Fn(&str) -> bool + Sync),
+    all_paths: &mut Vec<String>,
+) -> Result<usize> {
+    let mut written = 0;
+    for asset in ASSETS {
+        all_paths.push(asset.to_string());
+        if wanted(asset) {
+            let body = theme_file(site.opts.theme_dir.as_deref(), asset)?.unwrap_or_default();
+            out.write(asset, body.as_bytes())?;
+            written += 1;
+        }
+    }
+    // The images the READMEs show, each copied once.
+    for (asset, abs) in site.catalog.readme_assets() {
+        all_paths.push(asset.to_string());
+        if wanted(asset) {
+            out.write_owned(asset, crate::readme::read_asset(abs)?)?;
+            written += 1;
+        }
+    }
+    // Each wiring diagram as a file of its own, which the system page links (a large
+    // system is easier to read opened alone, zoomed by the browser).
+    for (path, svg) in systems::drawings(site) {
+        all_paths.push(path.clone());
+        if wanted(&path) {
+            out.write_owned(&path, svg.into_bytes())?;
+            written += 1;
+        }
+    }
+    Ok(written)
+}
+
+/// The sitemap: every page but the 404 (and the diagnostics page when there are none), at
+/// absolute URLs below `base_url`.
+fn sitemap(catalog: &Catalog, base_url: &str) -> String {
+    let mut urls: Vec<String> = catalog
+        .pages()
+        .iter()
+        .filter(|p| match p.kind {
+            PageKind::NotFound => false,
+            PageKind::Diagnostics => !catalog.diagnostics.is_empty(),
+            _ => true,
+        })
+        .map(|p| p.path("html"))
+        .collect();
+    urls.sort();
+    let base = format!("{}/", base_url.trim_end_matches('/'));
+    let mut sm = String::from(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<urlset xmlns=\"http://www.sitemaps.org/schemas/sitemap/0.9\">\n",
+    );
+    for u in urls {
+        sm.push_str("  <url><loc>");
+        sm.push_str(&xml_escape(&format!("{base}{u}")));
+        sm.push_str("</loc></url>\n");
+    }
+    sm.push_str("</urlset>\n");
+    sm
 }
 
 /// Whether component pages are written by [`native::component_page`]: when the theme directory
@@ -1401,13 +1422,10 @@ fn page_title(site: &Site<'_>, s: &str) -> String {
     format!("{s} — {}", site.opts.title)
 }
 
-fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
+/// The front page (`index.html`): the components by category (only the categories with
+/// counts above [`INDEX_FULL_LIST_MAX`] components), the vendors and sources to filter by.
+fn index_job<'a>(site: &'a Site<'a>) -> Job<'a> {
     let catalog = site.catalog;
-    let lang = site.lang;
-    let title = |s: &str| page_title(site, s);
-    let mut pages = Vec::new();
-
-    // Index: components grouped by category.
     #[derive(Serialize)]
     struct Group<'a> {
         name: String,
@@ -1438,7 +1456,7 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             href: f.slug.clone(),
         })
         .collect();
-    pages.push(Job {
+    Job {
         path: catalog.site_page(PageKind::Index).path("html"),
         template: "index.html",
         context: PageContext::Ready(minijinja::context! {
@@ -1454,7 +1472,16 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             interface_count => catalog.interfaces.len(),
             system_count => catalog.systems.len(),
         }),
-    });
+    }
+}
+
+fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
+    let catalog = site.catalog;
+    let lang = site.lang;
+    let title = |s: &str| page_title(site, s);
+    let mut pages = Vec::new();
+
+    pages.push(index_job(site));
 
     // Category and vendor pages.
     for kind in [FacetKind::Category, FacetKind::Vendor] {

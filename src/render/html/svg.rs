@@ -282,51 +282,15 @@ pub fn component_diagram(
                     i += 1;
                 }
                 Slot::Service { port, .. } => {
-                    let span = port.interfaces.len().max(1);
-                    let (fx, fy) =
-                        edge_point(*side, slot_v[si], i + span - 1, bx, by, box_w, box_h);
-                    let (rx, ry, rw, rh) = match side {
-                        PortSide::Left | PortSide::Right => {
-                            (ex - 6.0, ey - 6.0, 12.0, fy - ey + 12.0)
-                        }
-                        _ => (ex - 6.0, ey - 6.0, fx - ex + 12.0, 12.0),
-                    };
-                    let _ = write!(
-                        s,
-                        r##"<a href="#{}" class="port service" aria-label="{}"><rect class="port-square" x="{rx}" y="{ry}" width="{rw}" height="{rh}"/></a>"##,
-                        esc(&port.anchor),
-                        esc(&port.name)
+                    let span = service_port(
+                        &mut s,
+                        *side,
+                        slot_v[si],
+                        list,
+                        i,
+                        port,
+                        (bx, by, box_w, box_h),
                     );
-                    for k in 0..span {
-                        let (px, py) = edge_point(*side, slot_v[si], i + k, bx, by, box_w, box_h);
-                        let lines = slot_lines(*side, &list[i + k]);
-                        match port.interfaces.get(k) {
-                            Some(iface) => {
-                                let _ = write!(
-                                    s,
-                                    r##"<a href="#{}" class="iface {}">"##,
-                                    esc(&iface.anchor),
-                                    if iface.provided {
-                                        "provided"
-                                    } else {
-                                        "required"
-                                    }
-                                );
-                                symbol(&mut s, *side, px, py, iface.provided);
-                                label(&mut s, *side, px, py, STEM + 14.0, &lines);
-                                s.push_str("</a>");
-                            }
-                            None => {
-                                let _ = write!(
-                                    s,
-                                    r##"<a href="#{}" class="port service">"##,
-                                    esc(&port.anchor)
-                                );
-                                label(&mut s, *side, px, py, 14.0, &lines);
-                                s.push_str("</a>");
-                            }
-                        }
-                    }
                     i += span;
                 }
             }
@@ -334,6 +298,63 @@ pub fn component_diagram(
     }
     s.push_str("</svg>");
     s
+}
+
+/// Draws service port `port` on `side` at the first of `list`'s slots (one per interface):
+/// one rectangle spanning them, each interface's symbol and label; returns the slots used.
+fn service_port(
+    s: &mut String,
+    side: PortSide,
+    step: f32,
+    list: &[Slot<'_>],
+    at: usize,
+    port: &DiagramServicePort,
+    (bx, by, box_w, box_h): (f32, f32, f32, f32),
+) -> usize {
+    let (ex, ey) = edge_point(side, step, at, bx, by, box_w, box_h);
+    let span = port.interfaces.len().max(1);
+    let (fx, fy) = edge_point(side, step, at + span - 1, bx, by, box_w, box_h);
+    let (rx, ry, rw, rh) = match side {
+        PortSide::Left | PortSide::Right => (ex - 6.0, ey - 6.0, 12.0, fy - ey + 12.0),
+        _ => (ex - 6.0, ey - 6.0, fx - ex + 12.0, 12.0),
+    };
+    let _ = write!(
+        s,
+        r##"<a href="#{}" class="port service" aria-label="{}"><rect class="port-square" x="{rx}" y="{ry}" width="{rw}" height="{rh}"/></a>"##,
+        esc(&port.anchor),
+        esc(&port.name)
+    );
+    for k in 0..span {
+        let (px, py) = edge_point(side, step, at + k, bx, by, box_w, box_h);
+        let lines = slot_lines(side, &list[at + k]);
+        match port.interfaces.get(k) {
+            Some(iface) => {
+                let _ = write!(
+                    s,
+                    r##"<a href="#{}" class="iface {}">"##,
+                    esc(&iface.anchor),
+                    if iface.provided {
+                        "provided"
+                    } else {
+                        "required"
+                    }
+                );
+                symbol(s, side, px, py, iface.provided);
+                label(s, side, px, py, STEM + 14.0, &lines);
+                s.push_str("</a>");
+            }
+            None => {
+                let _ = write!(
+                    s,
+                    r##"<a href="#{}" class="port service">"##,
+                    esc(&port.anchor)
+                );
+                label(s, side, px, py, 14.0, &lines);
+                s.push_str("</a>");
+            }
+        }
+    }
+    span
 }
 
 /// Centre of slot `i` on `side`'s edge.

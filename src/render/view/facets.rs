@@ -48,7 +48,7 @@ impl FacetKind {
     }
 
     /// The index page of the kind.
-    pub fn index(self, cat: &Catalog) -> &Page {
+    pub fn index_page(self, cat: &Catalog) -> &Page {
         cat.site_page(match self {
             FacetKind::Category => PageKind::Categories,
             FacetKind::Vendor => PageKind::Vendors,
@@ -129,7 +129,7 @@ pub struct FacetIndexView<'a> {
 pub fn facet_index_view(cat: &Catalog, kind: FacetKind, lang: Lang) -> FacetIndexView<'_> {
     FacetIndexView {
         kind,
-        page: kind.index(cat),
+        page: kind.index_page(cat),
         facets: facet_entries(cat, kind, lang),
     }
 }
@@ -157,7 +157,7 @@ pub fn facet_view(cat: &Catalog, kind: FacetKind, fi: usize, lang: Lang) -> Face
     FacetView {
         kind,
         page: kind.page(cat, fi),
-        index: kind.index(cat),
+        index: kind.index_page(cat),
         name: kind.name(&f.name, lang),
         variants: &f.variants,
         components: component_rows(cat, cat.members(f)),
