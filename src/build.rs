@@ -334,6 +334,7 @@ pub fn read_system(
             source: rel.to_string(),
             format,
             system: Box::new(parsed.system),
+            history: Vec::new(),
         },
         parsed.diagnostics,
     ))

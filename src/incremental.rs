@@ -365,17 +365,9 @@ impl Workspace {
         let idl_history = std::mem::take(&mut old.idl_history);
         // The histories are kept: only the edited profiles' are read again (below).
         let mut histories: HashMap<String, Vec<crate::catalog::history::Entry>> = HashMap::new();
-        let mut system_histories = HashMap::new();
         let systems: Vec<crate::catalog::systems::LoadedSystem> = std::mem::take(&mut old.systems)
             .into_iter()
-            .map(|s| {
-                system_histories.insert(s.source.clone(), s.history);
-                crate::catalog::systems::LoadedSystem {
-                    source: s.source,
-                    format: s.format,
-                    system: s.profile,
-                }
-            })
+            .map(Into::into)
             .collect();
         let mut backups = std::mem::take(&mut old.detached_backups);
         let mut profiles: BTreeMap<String, LoadedProfile> = old
@@ -421,9 +413,6 @@ impl Workspace {
         );
         for c in &mut catalog.components {
             c.history = histories.remove(&c.source).unwrap_or_default();
-        }
-        for s in &mut catalog.systems {
-            s.history = system_histories.remove(&s.source).unwrap_or_default();
         }
         catalog.idl_history = idl_history;
         if self.opts.load.history_reader.is_some() {

@@ -23,6 +23,21 @@ pub struct LoadedSystem {
     pub source: String,
     pub format: SourceFormat,
     pub system: Box<RtSystem>,
+    /// Its history when it is known already (read back, or kept across a rebuild).
+    pub history: Vec<super::history::Entry>,
+}
+
+impl From<System> for LoadedSystem {
+    /// A system of a catalogue, to be attached again (its links are made anew, its history
+    /// kept).
+    fn from(s: System) -> LoadedSystem {
+        LoadedSystem {
+            source: s.source,
+            format: s.format,
+            system: s.profile,
+            history: s.history,
+        }
+    }
 }
 
 /// One RT System profile of the catalogue and its resolved links.
@@ -271,7 +286,7 @@ impl Catalog {
                 instances,
                 data_connectors,
                 service_connectors,
-                history: Vec::new(),
+                history: l.history,
                 profile: l.system,
             });
         }

@@ -416,25 +416,14 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     catalog.idl_history = idl_history;
     // The systems' links are made again; their histories are kept as read.
-    let mut histories = std::collections::HashMap::new();
-    let loaded = doc
-        .systems
-        .0
-        .into_owned()
-        .into_iter()
-        .map(|s| {
-            histories.insert(s.source.clone(), s.history);
-            crate::catalog::systems::LoadedSystem {
-                source: s.source,
-                format: s.format,
-                system: s.profile,
-            }
-        })
-        .collect();
-    catalog.attach_systems(loaded);
-    for s in &mut catalog.systems {
-        s.history = histories.remove(&s.source).unwrap_or_default();
-    }
+    catalog.attach_systems(
+        doc.systems
+            .0
+            .into_owned()
+            .into_iter()
+            .map(Into::into)
+            .collect(),
+    );
     catalog.detached_backups = doc.backups.into_owned();
     catalog.set_origins(doc.sources.into_owned());
     if page_entries(&catalog) != doc.pages {
