@@ -1162,29 +1162,43 @@ impl HtmlRenderer {
             })
             .try_reduce(|| 0, |a, b| Ok(a + b))?;
 
-        // Sitemap: every page but the 404, at absolute URLs — which only a base URL gives
-        // (the sitemap protocol requires them), so without one there is no sitemap.
-        if opts.base_url.is_some() {
-            all_paths.push("sitemap.xml".into());
-        }
-        // The Atom feed of the histories (with a base URL: its links are absolute).
-        if has_feed(catalog, opts) {
-            all_paths.push(history::FEED.into());
-            if wanted(history::FEED) {
-                if let Some(feed) = history::feed(catalog, opts) {
-                    out.write_owned(history::FEED, feed.into_bytes())?;
-                    written += 1;
-                }
-            }
-        }
-        if let Some(base_url) = opts.base_url.as_deref().filter(|_| wanted("sitemap.xml")) {
-            let sm = sitemap(catalog, base_url);
-            out.write("sitemap.xml", sm.as_bytes())?;
-            written += 1;
-        }
+        written += write_feeds(catalog, opts, out, wanted, &mut all_paths)?;
         all_paths.sort();
         Ok(Rendered { written, all_paths })
     }
+}
+
+/// The files for other programs, those `wanted`: the sitemap and the Atom feed of the
+/// histories (both only with a base URL: their links must be absolute); their paths join
+/// `all_paths`. How many were written.
+fn write_feeds(
+    catalog: &Catalog,
+    opts: &SiteOptions,
+    out: &dyn Sink,
+    wanted: &(dyn Fn(&str) -> bool + Sync),
+    all_paths: &mut Vec<String>,
+) -> Result<usize> {
+    let mut written = 0;
+    // Sitemap: every page but the 404, at absolute URLs — which only a base URL gives
+    // (the sitemap protocol requires them), so without one there is no sitemap.
+    if opts.base_url.is_some() {
+        all_paths.push("sitemap.xml".into());
+    }
+    if has_feed(catalog, opts) {
+        all_paths.push(history::FEED.into());
+        if wanted(history::FEED) {
+            if let Some(feed) = history::feed(catalog, opts) {
+                out.write_owned(history::FEED, feed.into_bytes())?;
+                written += 1;
+            }
+        }
+    }
+    if let Some(base_url) = opts.base_url.as_deref().filter(|_| wanted("sitemap.xml")) {
+        let sm = sitemap(catalog, base_url);
+        out.write("sitemap.xml", sm.as_bytes())?;
+        written += 1;
+    }
+    Ok(written)
 }
 
 /// Writes the files of the site that are no pages (those `wanted`): the theme's assets, the
