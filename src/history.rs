@@ -666,12 +666,14 @@ impl WholeLog {
             if new.bytes().all(|b| b == b'0') {
                 continue; // deleted here
             }
+            // Added only by a root commit here: nothing before it to follow the file to by its
+            // component id ([`follow_by_id`] would run a `git ls-tree` per file to find that).
             out.push(version(
                 repo,
                 (commit, date, author, subject),
                 new,
                 &full,
-                *added,
+                false,
             ));
         }
         Some(out)
