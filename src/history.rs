@@ -2,7 +2,8 @@
 //! as input, a `[[source]]` repository at its pinned commit) and RTCBuilder's backups beside
 //! it, newest first, each version compared with the one before it by the diff engine
 //! ([`crate::diff::compare_profiles`]). Each distinct blob is read (one `git cat-file --batch`
-//! per repository) and parsed once, keyed by its object id.
+//! per repository, streamed) and parsed once, keyed by its object id; a component's newest blob
+//! that is its file byte for byte is not parsed at all (the catalogue's profile stands for it).
 //!
 //! Git is run as [`crate::sources`] runs it: no system configuration, no hooks, no prompt, the
 //! revision after `--end-of-options`, paths as literal pathspecs.
