@@ -2,7 +2,8 @@
 //! as input, a `[[source]]` repository at its pinned commit) and RTCBuilder's backups beside
 //! it, newest first, each version compared with the one before it by the diff engine
 //! ([`crate::diff::compare_profiles`]). Each distinct blob is read (one `git cat-file --batch`
-//! per repository) and parsed once, keyed by its object id.
+//! per repository, streamed) and parsed once, keyed by its object id; a component's newest blob
+//! that is its file byte for byte is not parsed at all (the catalogue's profile stands for it).
 //!
 //! Git is run as [`crate::sources`] runs it: no system configuration, no hooks, no prompt, the
 //! revision after `--end-of-options`, paths as literal pathspecs.
@@ -14,15 +15,19 @@ use crate::model::{non_empty, Profile};
 use crate::parse::{self, Limits};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
-use std::io::{Read, Write};
+use std::io::{BufRead, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 /// Commits read per profile when `history` is not set.
 pub const DEFAULT_LIMIT: usize = 100;
 
-/// A blob's bytes by object id, or why git could not give them.
-type Blobs = Vec<(String, Result<Vec<u8>, String>)>;
+/// A blob's bytes, or why git could not give them.
+type Blob = Result<Vec<u8>, String>;
+
+/// Whether a blob git gave is parsed and kept: (repository index, object id, a path it had,
+/// bytes). A blob no version needs is dropped as it arrives.
+type KeepFn<'a> = &'a mut dyn FnMut(usize, &str, &str, &[u8]) -> bool;
 
 /// Where a version of a profile is.
 #[derive(Debug, Clone)]
@@ -92,7 +97,7 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
         return;
     }
     let mut repos = Repos::new(roots, &opts.sources);
-    attach_components(catalog, &mut repos, opts, &|_| true);
+    attach_components(catalog, &mut repos, roots, opts, &|_| true);
     attach_systems(catalog, &mut repos, opts.history, &opts.limits);
     attach_idl(catalog, &mut repos, roots, opts.history, &opts.limits);
 }
@@ -110,13 +115,16 @@ pub fn attach_some(
         return;
     }
     let mut repos = Repos::new(roots, &opts.sources);
-    attach_components(catalog, &mut repos, opts, &|c| only.contains(&c.source));
+    attach_components(catalog, &mut repos, roots, opts, &|c| {
+        only.contains(&c.source)
+    });
 }
 
 /// Fills in `history` of the components `wanted` says.
 fn attach_components(
     catalog: &mut Catalog,
     repos: &mut Repos<'_>,
+    roots: &Roots,
     opts: &crate::build::LoadOptions,
     wanted: &(dyn Fn(&Component) -> bool + Sync),
 ) {
@@ -150,13 +158,50 @@ fn attach_components(
                 );
             }
         });
-    let parsed = read_parsed(list, &logs, &parse);
+    // A component whose file is its newest commit's blob byte for byte (read in the same
+    // format): that version is the catalogue's profile, not parsed again. Each blob is compared
+    // with the files as git gives it, and kept only when some version needs it parsed.
+    let mut current: Vec<Option<(usize, String)>> = vec![None; catalog.components.len()];
+    let parsed = {
+        let mut newest: Vec<HashMap<&str, Vec<usize>>> = vec![HashMap::new(); list.len()];
+        let mut older: Vec<std::collections::HashSet<&str>> = vec![Default::default(); list.len()];
+        for (ci, log) in logs.iter().enumerate() {
+            for (i, v) in log.iter().enumerate() {
+                if let Where::Blob { repo, oid } = &v.at {
+                    if i == 0 {
+                        newest[*repo].entry(oid).or_default().push(ci);
+                    } else {
+                        older[*repo].insert(oid);
+                    }
+                }
+            }
+        }
+        let components = &catalog.components;
+        let mut keep = |r: usize, oid: &str, file: &str, bytes: &[u8]| {
+            let mut needed = older[r].contains(oid);
+            for &ci in newest[r].get(oid).into_iter().flatten() {
+                let c = &components[ci];
+                let same = blob_format(bytes, file) == Some(c.format)
+                    && std::fs::read(roots.dir_of(&c.source).join(&c.source))
+                        .is_ok_and(|f| f == bytes);
+                if same {
+                    current[ci] = Some((r, oid.to_string()));
+                }
+                needed |= !same;
+            }
+            needed
+        };
+        read_parsed(list, &logs, &parse, &mut keep)
+    };
     let idl = &catalog.idl;
     let histories: Vec<Option<Vec<Entry>>> = catalog
         .components
         .par_iter()
         .zip(logs)
-        .map(|(c, commits)| wanted(c).then(|| history_of(c, commits, &parsed, idl)))
+        .zip(current)
+        .map(|((c, commits), current)| {
+            wanted(c).then(|| history_of(c, commits, &parsed, current, idl))
+        })
         .collect();
     for (c, h) in catalog.components.iter_mut().zip(histories) {
         if let Some(h) = h {
@@ -229,7 +274,7 @@ fn read_versions<D: Send>(
     parse: ParseFn<'_, D>,
 ) -> (Vec<Vec<Version>>, Parsed<D>) {
     let logs = read_logs(repos, located, limit);
-    let parsed = read_parsed(repos, &logs, parse);
+    let parsed = read_parsed(repos, &logs, parse, &mut |_, _, _, _| true);
     (logs, parsed)
 }
 
@@ -261,9 +306,14 @@ fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<V
         .collect()
 }
 
-/// Every distinct blob of `logs` read (one `git cat-file --batch` per repository) and parsed
-/// once by `parse`.
-fn read_parsed<D: Send>(repos: &[Repo], logs: &[Vec<Version>], parse: ParseFn<'_, D>) -> Parsed<D> {
+/// Every distinct blob of `logs` read (one `git cat-file --batch` per repository) and, when
+/// `keep` wants it, parsed once by `parse`.
+fn read_parsed<D: Send>(
+    repos: &[Repo],
+    logs: &[Vec<Version>],
+    parse: ParseFn<'_, D>,
+    keep: KeepFn<'_>,
+) -> Parsed<D> {
     let mut wanted: Vec<BTreeMap<String, String>> = vec![BTreeMap::new(); repos.len()];
     for v in logs.iter().flatten() {
         if let Where::Blob { repo, oid } = &v.at {
@@ -275,7 +325,8 @@ fn read_parsed<D: Send>(repos: &[Repo], logs: &[Vec<Version>], parse: ParseFn<'_
     repos
         .iter()
         .zip(wanted)
-        .map(|(repo, oids)| read_blobs(repo, &oids, parse))
+        .enumerate()
+        .map(|(at, (repo, oids))| read_blobs(repo, at, &oids, parse, keep))
         .collect()
 }
 
@@ -334,13 +385,14 @@ fn follow_by_id(
             return;
         }
         let oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
-        let Ok(blobs) = cat_file(repo, &oids) else {
+        let mut blobs: Vec<Blob> = Vec::with_capacity(oids.len());
+        if cat_file(repo, &oids, &mut |_, b| blobs.push(b)).is_err() {
             return;
-        };
+        }
         let same: Vec<&String> = candidates
             .iter()
             .zip(&blobs)
-            .filter(|((_, path), (_, bytes))| {
+            .filter(|((_, path), bytes)| {
                 bytes
                     .as_ref()
                     .ok()
@@ -615,12 +667,14 @@ impl WholeLog {
             if new.bytes().all(|b| b == b'0') {
                 continue; // deleted here
             }
+            // Added only by a root commit here: nothing before it to follow the file to by its
+            // component id ([`follow_by_id`] would run a `git ls-tree` per file to find that).
             out.push(version(
                 repo,
                 (commit, date, author, subject),
                 new,
                 &full,
-                *added,
+                false,
             ));
         }
         Some(out)
@@ -676,19 +730,29 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
     out
 }
 
-/// Reads and parses the blobs `oids` of `repo` (one `git cat-file --batch`), each with the path
-/// it had.
+/// Reads the blobs `oids` of `repo` (the repository `at`; one `git cat-file --batch`), each
+/// with the path it had, and parses those `keep` wants; a blob git cannot give is kept with
+/// the reason.
 fn read_blobs<D: Send>(
     repo: &Repo,
+    at: usize,
     oids: &BTreeMap<String, String>,
     parse: ParseFn<'_, D>,
+    keep: KeepFn<'_>,
 ) -> HashMap<String, Result<D, String>> {
     let ids: Vec<String> = oids.keys().cloned().collect();
-    let mut raw: Blobs = Vec::new();
+    let mut raw: Vec<(String, Blob)> = Vec::new();
     if !ids.is_empty() {
-        match cat_file(repo, &ids) {
-            Ok(blobs) => raw = blobs,
-            Err(e) => raw.extend(ids.iter().map(|o| (o.clone(), Err(e.clone())))),
+        let mut visit = |oid: &str, blob: Blob| {
+            let file = oids.get(oid).map_or("", String::as_str);
+            if blob.as_ref().map_or(true, |b| keep(at, oid, file, b)) {
+                raw.push((oid.to_string(), blob));
+            }
+        };
+        if let Err(e) = cat_file(repo, &ids, &mut visit) {
+            for o in &ids {
+                visit(o, Err(e.clone()));
+            }
         }
     }
     raw.into_par_iter()
@@ -703,6 +767,22 @@ fn read_blobs<D: Send>(
 /// Parses one version of a profile; `file` is its path then. A version whose content does not
 /// look like a profile is still parsed by its extension, for the parser's error and position.
 fn parse_blob(bytes: &[u8], file: &str, limits: &Limits) -> Result<Profile, String> {
+    let format = blob_format(bytes, file).ok_or_else(|| {
+        format!(
+            "this version {} (not read as a component profile)",
+            crate::walk::describe_non_profile(bytes)
+        )
+    })?;
+    parse::parse(format, bytes, file, limits)
+        .map(|p| p.profile)
+        .map_err(|d| match d.pos {
+            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
+            None => d.message,
+        })
+}
+
+/// The format a version of a profile is read in: by its content, else by its file's extension.
+fn blob_format(bytes: &[u8], file: &str) -> Option<parse::SourceFormat> {
     let by_name = match file
         .rsplit('.')
         .next()
@@ -713,23 +793,13 @@ fn parse_blob(bytes: &[u8], file: &str, limits: &Limits) -> Result<Profile, Stri
         Some("yaml" | "yml") => Some(parse::SourceFormat::Yaml),
         _ => None,
     };
-    let format = crate::walk::detect_named(bytes)
-        .or(by_name)
-        .ok_or_else(|| {
-            format!(
-                "this version {} (not read as a component profile)",
-                crate::walk::describe_non_profile(bytes)
-            )
-        })?;
-    parse::parse(format, bytes, file, limits)
-        .map(|p| p.profile)
-        .map_err(|d| match d.pos {
-            Some(p) => format!("line {}, column {}: {}", p.line, p.column, d.message),
-            None => d.message,
-        })
+    crate::walk::detect_named(bytes).or(by_name)
 }
 
-fn cat_file(repo: &Repo, oids: &[String]) -> Result<Blobs, String> {
+/// Reads the blobs `oids` of `repo` with one `git cat-file --batch`, handing each to `visit`
+/// in order as it arrives (the blobs a caller does not keep are never all in memory at once).
+/// An error: git could not be run.
+fn cat_file(repo: &Repo, oids: &[String], visit: &mut dyn FnMut(&str, Blob)) -> Result<(), String> {
     let mut c = repo.git();
     c.args(["cat-file", "--batch"])
         .stdin(Stdio::piped())
@@ -737,42 +807,41 @@ fn cat_file(repo: &Repo, oids: &[String]) -> Result<Blobs, String> {
         .stderr(Stdio::null());
     let mut child = c.spawn().map_err(|e| format!("cannot run git: {e}"))?;
     let mut stdin = child.stdin.take().ok_or("no pipe to git")?;
+    let stdout = child.stdout.take().ok_or("no pipe from git")?;
     let input: String = oids.iter().map(|o| format!("{o}\n")).collect();
     // Written from a thread: git answers while it reads.
     let writer = std::thread::spawn(move || {
         let _ = stdin.write_all(input.as_bytes());
     });
-    let mut bytes = Vec::new();
-    let read = child
-        .stdout
-        .take()
-        .ok_or("no pipe from git")?
-        .read_to_end(&mut bytes);
+    let mut out = std::io::BufReader::with_capacity(1 << 16, stdout);
+    let mut head = Vec::new();
+    for oid in oids {
+        head.clear();
+        if !matches!(out.read_until(b'\n', &mut head), Ok(n) if n > 0 && head.ends_with(b"\n")) {
+            visit(oid, Err("git gave no answer for it".to_string()));
+            continue;
+        }
+        let head = String::from_utf8_lossy(&head[..head.len() - 1]).to_string();
+        let f: Vec<&str> = head.split(' ').collect();
+        let blob = match (f.get(1), f.get(2).and_then(|n| n.parse::<usize>().ok())) {
+            (Some(&"blob"), Some(n)) => {
+                let mut bytes = vec![0; n + 1];
+                out.read_exact(&mut bytes).ok().map(|()| {
+                    bytes.truncate(n);
+                    bytes
+                })
+            }
+            _ => None,
+        };
+        visit(
+            oid,
+            blob.ok_or_else(|| format!("git cannot read the object ({head})")),
+        );
+    }
+    drop(out);
     let _ = writer.join();
     let _ = child.wait();
-    read.map_err(|e| format!("cannot read from git: {e}"))?;
-    let mut out = Vec::new();
-    let mut rest = &bytes[..];
-    for oid in oids {
-        let Some(nl) = rest.iter().position(|&b| b == b'\n') else {
-            out.push((oid.clone(), Err("git gave no answer for it".to_string())));
-            continue;
-        };
-        let head = String::from_utf8_lossy(&rest[..nl]).to_string();
-        rest = &rest[nl + 1..];
-        let f: Vec<&str> = head.split(' ').collect();
-        match (f.get(1), f.get(2).and_then(|n| n.parse::<usize>().ok())) {
-            (Some(&"blob"), Some(n)) if rest.len() > n => {
-                out.push((oid.clone(), Ok(rest[..n].to_vec())));
-                rest = &rest[n + 1..];
-            }
-            _ => out.push((
-                oid.clone(),
-                Err(format!("git cannot read the object ({head})")),
-            )),
-        }
-    }
-    Ok(out)
+    Ok(())
 }
 
 /// The version string of a profile: BasicInfo's, else the id's last part.
@@ -787,10 +856,13 @@ fn version_of(p: &Profile) -> Option<String> {
         })
 }
 
+/// A component's history; `current`: the blob (repository, object id) that is the file byte
+/// for byte, whose version is the catalogue's profile.
 fn history_of(
     c: &Component,
     commits: Vec<Version>,
     parsed: &Parsed<Profile>,
+    current: Option<(usize, String)>,
     idl: &crate::idl::IdlSet,
 ) -> Vec<Entry> {
     // Backups, newest first, merged into the commits by date.
@@ -822,6 +894,11 @@ fn history_of(
     versions.extend(bs);
     let profile_of = |w: &Where| -> Result<&Profile, String> {
         match w {
+            Where::Blob { repo, oid }
+                if current.as_ref().is_some_and(|(r, o)| r == repo && o == oid) =>
+            {
+                Ok(&c.profile)
+            }
             Where::Blob { repo, oid } => blob(parsed, *repo, oid),
             Where::Backup(i) => match &c.backups[*i] {
                 b if b.profile.is_some() => Ok(b.profile.as_deref().expect("checked")),
@@ -858,8 +935,9 @@ fn blob<'p, D>(parsed: &'p Parsed<D>, repo: usize, oid: &str) -> Result<&'p D, S
 
 /// A document's history from its versions (newest first): the file as it is (`current`, with
 /// its path) first when it differs from the newest commit in what `compare` sees (uncommitted
-/// edits), or when no commit records the history; then each version with the changes from the
-/// readable version before it. `doc_of` gives a version's document (or why it cannot);
+/// edits), or when no commit records the history (the newest commit's document being `current`
+/// itself, it does not differ: no diff); then each version with the changes from the readable
+/// version before it. `doc_of` gives a version's document (or why it cannot);
 /// `version_of` its version string (a new one is a release).
 fn entries<'d, D>(
     mut versions: Vec<Version>,
@@ -875,6 +953,7 @@ fn entries<'d, D>(
     let current_differs = match newest_commit {
         None => true,
         Some(v) => match doc_of(&v.at) {
+            Ok(d) if std::ptr::eq(d, current.0) => false,
             Ok(d) => !compare((d, &v.entry.file), current).is_empty(),
             Err(_) => true,
         },

@@ -576,3 +576,42 @@ fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
     assert!(h[1]["changes"].as_array().unwrap().is_empty(), "{h:#?}");
     assert_eq!(h[2]["first"], true);
 }
+
+/// A profile whose file is its newest commit byte for byte is that version (not parsed again),
+/// and the same blob, an older version of another profile, is still read for that one.
+#[test]
+fn a_blob_that_is_one_file_and_another_s_older_version_is_read_for_both() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "a/RTC.xml", &base);
+    write(&repo, "b/RTC.xml", &base);
+    commit(&repo, 1, "Two copies");
+    let other = common::xml_profile("Other", &[("DataOutPort", "out", "RTC::TimedLong")]);
+    write(&repo, "b/RTC.xml", &other);
+    commit(&repo, 2, "The second becomes Other");
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let a = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history of a/");
+    // The file as it is: the commit itself, no version of its own.
+    assert_eq!(a.len(), 1, "{a:#?}");
+    assert_eq!(a[0]["subject"], "Two copies");
+    assert_eq!(a[0]["version"], "1.0.0");
+    assert_eq!(a[0]["first"], true);
+    let b = json["components"]["RTC:Test:Cat:Other:1.0.0"]["history"]
+        .as_array()
+        .expect("a history of b/");
+    assert_eq!(b.len(), 2, "{b:#?}");
+    // The older version, a's blob, read and compared with the newer.
+    assert!(b[1].get("error").is_none(), "{b:#?}");
+    assert_eq!(b[1]["first"], true);
+    assert!(b[0].get("error").is_none(), "{b:#?}");
+    assert!(!codes(&b[0]).is_empty(), "{b:#?}");
+}
