@@ -710,22 +710,13 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
         } else {
             first
         };
-        out.push(Version {
-            added: status.starts_with('A'),
-            at: Where::Blob {
-                repo,
-                oid: new.to_string(),
-            },
-            key: date.get(..19).unwrap_or(date).replace('T', " "),
-            entry: Entry {
-                commit: Some(commit.to_string()),
-                file: file.to_string(),
-                date: Some(date.to_string()),
-                author: Some(author.to_string()),
-                subject: Some(subject.to_string()),
-                ..Entry::default()
-            },
-        });
+        out.push(version(
+            repo,
+            (commit, date, author, subject),
+            new,
+            file,
+            status.starts_with('A'),
+        ));
     }
     out
 }
