@@ -539,6 +539,14 @@ impl Uses for InterfaceUses {
 }
 
 impl<U: Uses> TypeEntry<U> {
+    /// Every use, role by role.
+    pub fn all_uses(&self) -> impl Iterator<Item = &U::Ref> {
+        self.uses
+            .by_role()
+            .into_iter()
+            .flat_map(|(_, refs)| refs.iter())
+    }
+
     /// Required somewhere but provided nowhere in the catalogue (interfaces only).
     pub fn is_unprovided(&self) -> bool {
         self.uses.is_unprovided()

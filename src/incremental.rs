@@ -103,13 +103,7 @@ fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
         if let Some(ti) = p.type_.as_deref().and_then(|t| cat.data_type_index(t)) {
             set.insert(cat.data_type_page(ti).path("html"));
             let t = &cat.data_types[ti];
-            for r in t
-                .uses
-                .producers
-                .iter()
-                .chain(&t.uses.consumers)
-                .chain(&t.uses.others)
-            {
+            for r in t.all_uses() {
                 set.extend(component_page(&r.component));
             }
         }
@@ -119,13 +113,7 @@ fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
             if let Some(ii) = i.type_.as_deref().and_then(|t| cat.interface_index_of(t)) {
                 set.insert(cat.interface_page(ii).path("html"));
                 let t = &cat.interfaces[ii];
-                for r in t
-                    .uses
-                    .providers
-                    .iter()
-                    .chain(&t.uses.requirers)
-                    .chain(&t.uses.others)
-                {
+                for r in t.all_uses() {
                     set.extend(component_page(&r.component));
                 }
             }

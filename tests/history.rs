@@ -3,6 +3,7 @@
 //! in a folder without git, each version compared with the one before by the diff engine.
 
 mod common;
+use common::history_repo::git;
 use common::{rtcdoc, write};
 use serde_json::Value;
 use std::path::Path;
@@ -60,19 +61,6 @@ fn versions() -> Vec<(&'static str, String)> {
         ("Rename cmd to velocity", renamed),
         ("Release 2.0.0", released),
     ]
-}
-
-fn git(dir: &Path, args: &[&str], date: &str) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .env("GIT_AUTHOR_DATE", date)
-        .env("GIT_COMMITTER_DATE", date)
-        .output()
-        .map(|o| o.status.success())
-        .unwrap_or(false)
 }
 
 /// A work tree with the commits of [`versions`] on `Base/RTC.xml`, then the folder moved to

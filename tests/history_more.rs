@@ -4,22 +4,10 @@
 //! system and IDL pages.
 
 mod common;
+use common::history_repo::git;
 use common::{root, rtcdoc, write};
 use serde_json::Value;
 use std::path::Path;
-
-fn git(dir: &Path, args: &[&str], date: &str) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .env("GIT_AUTHOR_DATE", date)
-        .env("GIT_COMMITTER_DATE", date)
-        .output()
-        .map(|o| o.status.success())
-        .unwrap_or(false)
-}
 
 /// A fresh repository in `d`, or `false` when git does not run.
 fn init(d: &Path) -> bool {

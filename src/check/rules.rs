@@ -1053,13 +1053,7 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     // (type name, idlFile, source file, position, port name) of every port, in catalogue order.
     let mut uses: Vec<(String, Option<String>, &str, Pos, String)> = Vec::new();
     for t in &cat.data_types {
-        for pr in t
-            .uses
-            .producers
-            .iter()
-            .chain(&t.uses.consumers)
-            .chain(&t.uses.others)
-        {
+        for pr in t.all_uses() {
             if let Some((c, p)) = cat.port_of(pr) {
                 uses.push((
                     t.name.clone(),
@@ -1072,13 +1066,7 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         }
     }
     for t in &cat.interfaces {
-        for r in t
-            .uses
-            .providers
-            .iter()
-            .chain(&t.uses.requirers)
-            .chain(&t.uses.others)
-        {
+        for r in t.all_uses() {
             if let Some((c, _, i)) = cat.interface_of(r) {
                 uses.push((
                     t.name.clone(),
@@ -1224,13 +1212,7 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     for t in &cat.data_types {
         // file name → ports using it
         let mut by_file: BTreeMap<String, Vec<(usize, usize)>> = BTreeMap::new();
-        for pr in t
-            .uses
-            .producers
-            .iter()
-            .chain(&t.uses.consumers)
-            .chain(&t.uses.others)
-        {
+        for pr in t.all_uses() {
             let Some((ci, pi)) = cat.resolve_port(pr) else {
                 continue;
             };

@@ -52,7 +52,9 @@ pub fn versions() -> Vec<(&'static str, String)> {
     ]
 }
 
-fn git(dir: &Path, args: &[&str], date: &str) -> bool {
+/// `git ARGS` in `dir` with author and committer date `date`, without the user's or the
+/// system's configuration; whether it succeeded.
+pub fn git(dir: &Path, args: &[&str], date: &str) -> bool {
     std::process::Command::new("git")
         .args(args)
         .current_dir(dir)
