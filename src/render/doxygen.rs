@@ -24,11 +24,12 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::text::{category_name, component_cols, component_sections, facets_of_each, Markup};
-use super::text::{facet_index_page, facet_page, type_index_page, type_page};
+use super::text::{component_cols, component_sections, facets_of_each, Markup};
+use super::text::{facet_index_page, facet_page, systems_index_page, type_index_page, type_page};
 use super::view::component::component_view;
 use super::view::facets::{facet_index_view, facet_view, FacetKind};
-use super::view::types::{data_type_view, interface_view, type_index_view, TypeKind};
+use super::view::front::{front_view, systems_index_view};
+use super::view::types::{entry_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::{Catalog, Output, Page, PageKind};
@@ -367,50 +368,6 @@ fn crumb_home(out: &mut String, cat: &Catalog) {
     d!(out);
 }
 
-/// `systems.dox`: every RT System with its counts.
-fn system_index(cat: &Catalog, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Systems);
-    let mut out = String::new();
-    d!(
-        out,
-        "\\page {} {}",
-        target(cat, page),
-        title(lang.t("systems"))
-    );
-    d!(out);
-    crumb_home(&mut out, cat);
-    d!(out, "<p>{}</p>", text(lang.t("systems_intro")));
-    d!(out);
-    let rows: Vec<Vec<String>> = cat
-        .systems
-        .iter()
-        .enumerate()
-        .map(|(si, s)| {
-            let parts = s.profile.id_parts.as_ref();
-            vec![
-                format!("\\subpage {}", target(cat, cat.system_page(si))),
-                parts.map(|x| opt(&x.version)).unwrap_or_default(),
-                parts.map(|x| opt(&x.vendor)).unwrap_or_default(),
-                s.profile.components.len().to_string(),
-                (s.profile.data_port_connectors.len() + s.profile.service_port_connectors.len())
-                    .to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("system"),
-            lang.t("version"),
-            lang.t("vendor"),
-            lang.t("instances"),
-            lang.t("sys_connector"),
-        ],
-        &rows,
-    );
-    out
-}
-
 /// `systems/<slug>.dox`.
 fn system_page(cat: &Catalog, si: usize, lang: Lang, site: (bool, Option<&str>)) -> String {
     let s = &cat.systems[si];
@@ -459,21 +416,22 @@ fn component_rows(
         .collect()
 }
 
+/// `index.dox` (`\\mainpage`) from the front page's view: the counts, every category and
+/// index as a subpage (the page tree), then every component by category.
 fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Index);
+    let v = front_view(cat, lang);
+    let page = v.page;
     let mut out = String::new();
     d!(out, "\\mainpage {}", title(site_title));
     d!(out);
-    d!(
-        out,
-        "<p>{}: {} · {}: {} · {}: {}</p>",
-        text(lang.t("components")),
-        cat.components.len(),
-        text(lang.t("data_types")),
-        cat.data_types.len(),
-        text(lang.t("interfaces")),
-        cat.interfaces.len()
+    let mut stats = vec![format!("{}: {}", text(lang.t("components")), v.components)];
+    stats.extend(
+        ["data_types", "interfaces"]
+            .iter()
+            .filter_map(|k| v.index(k))
+            .map(|i| format!("{}: {}", text(lang.t(i.key)), i.count)),
     );
+    d!(out, "<p>{}</p>", stats.join(" · "));
     d!(out);
     d!(
         out,
@@ -483,40 +441,13 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     );
     d!(out);
     d!(out, "<ul>");
-    for (fi, f) in cat.categories.iter().enumerate() {
-        d!(
-            out,
-            "<li>\\subpage {} ({})</li>",
-            target(cat, cat.category_page(fi)),
-            f.components.len()
-        );
+    let counted = (v.categories.iter().map(|g| (g.page, g.members.len())))
+        .chain(v.indexes.iter().map(|i| (i.page, i.count)));
+    for (to, count) in counted {
+        d!(out, "<li>\\subpage {} ({count})</li>", target(cat, to));
     }
-    for (kind, count) in [
-        (PageKind::DataTypes, cat.data_types.len()),
-        (PageKind::Interfaces, cat.interfaces.len()),
-        (PageKind::Vendors, cat.vendors.len()),
-    ] {
-        d!(
-            out,
-            "<li>\\subpage {} ({count})</li>",
-            target(cat, cat.site_page(kind))
-        );
-    }
-    if !cat.systems.is_empty() {
-        d!(
-            out,
-            "<li>\\subpage {} ({})</li>",
-            target(cat, cat.site_page(PageKind::Systems)),
-            cat.systems.len()
-        );
-    }
-    d!(
-        out,
-        "<li>\\subpage {}</li>",
-        target(cat, cat.site_page(PageKind::DataFlow))
-    );
-    if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
-        d!(out, "<li>\\subpage {}</li>", target(cat, news));
+    for p in std::iter::once(v.dataflow).chain(v.whats_new) {
+        d!(out, "<li>\\subpage {}</li>", target(cat, p));
     }
     d!(out, "</ul>");
     d!(out);
@@ -527,19 +458,19 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
         title(lang.t("components"))
     );
     d!(out);
-    for (fi, f) in cat.categories.iter().enumerate() {
+    for g in &v.categories {
         // The section of a category is named after its page (`rtc_main__rtc_cat_<slug>`).
         d!(
             out,
             "\\subsection {} {}",
-            page.anchor_in(&target(cat, cat.category_page(fi)), DOX),
-            title(&category_name(&f.name, lang))
+            page.anchor_in(&target(cat, g.page), DOX),
+            title(&g.name)
         );
         d!(out);
         table(
             &mut out,
             &component_cols(lang),
-            &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>(), "ref"),
+            &component_rows(cat, page, &g.members, "ref"),
         );
     }
     out
@@ -687,18 +618,12 @@ fn other_pages(
         let v = facet_view(cat, FacetKind::Category, fi, lang);
         (v.page.path_in(DOX), facet_page::<Dox>(cat, &v, "", lang))
     }));
-    out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
-        (
-            cat.data_type_page(ti).path_in(DOX),
-            type_page::<Dox>(cat, &data_type_view(cat, ti, lang, site.1), "", lang),
-        )
-    }));
-    out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
-        (
-            cat.interface_page(ii).path_in(DOX),
-            type_page::<Dox>(cat, &interface_view(cat, ii, lang, site.1), "", lang),
-        )
-    }));
+    for kind in [TypeKind::Data, TypeKind::Interface] {
+        out.par_extend((0..kind.count(cat)).into_par_iter().map(|i| {
+            let v = entry_view(cat, kind, i, lang, site.1);
+            (v.page.path_in(DOX), type_page::<Dox>(cat, &v, "", lang))
+        }));
+    }
     out.push((
         cat.site_page(PageKind::Vendors).path_in(DOX),
         facet_index_page::<Dox>(
@@ -719,7 +644,7 @@ fn other_pages(
     if !cat.systems.is_empty() {
         out.push((
             cat.site_page(PageKind::Systems).path_in(DOX),
-            system_index(cat, lang),
+            systems_index_page::<Dox>(cat, &systems_index_view(cat), "", lang),
         ));
         out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
             (

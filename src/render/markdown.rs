@@ -18,11 +18,12 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::text::{category_name, component_cols, component_sections, facets_of_each, Markup};
-use super::text::{facet_index_page, facet_page, type_index_page, type_page};
+use super::text::{component_cols, component_sections, facets_of_each, Markup};
+use super::text::{facet_index_page, facet_page, systems_index_page, type_index_page, type_page};
 use super::view::component::component_view;
 use super::view::facets::{facet_index_view, facet_view, FacetKind};
-use super::view::types::{data_type_view, interface_view, type_index_view, TypeKind};
+use super::view::front::{front_view, systems_index_view};
+use super::view::types::{entry_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
@@ -398,71 +399,50 @@ fn component_rows(cat: &Catalog, from: &Page, members: &[usize]) -> Vec<Vec<Stri
         .collect()
 }
 
+/// `index.md` from the front page's view: the counts with the indexes linked, the systems,
+/// data-flow and What's new pages, then every component by category.
 fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Index);
+    let v = front_view(cat, lang);
+    let page = v.page;
     let mut out = String::new();
     w!(out, "# {}", inline(title));
     w!(out);
-    w!(
-        out,
-        "{}: {} · {}: {} · {}: {} · {}: {}",
+    let mut stats = vec![format!(
+        "{}: {}",
         inline(lang.t("components")),
-        cat.components.len(),
-        link(
-            lang.t("data_types"),
-            &index_href(cat, page, PageKind::DataTypes)
-        ),
-        cat.data_types.len(),
-        link(
-            lang.t("interfaces"),
-            &index_href(cat, page, PageKind::Interfaces)
-        ),
-        cat.interfaces.len(),
-        link(lang.t("vendors"), &index_href(cat, page, PageKind::Vendors)),
-        cat.vendors.len()
+        v.components
+    )];
+    let to = |key: &str, to: &Page| link(lang.t(key), &cat.href(page, to, None, MD));
+    let (systems, counted): (Vec<_>, Vec<_>) = v.indexes.iter().partition(|i| i.key == "systems");
+    stats.extend(
+        counted
+            .iter()
+            .map(|i| format!("{}: {}", to(i.key, i.page), i.count)),
     );
+    w!(out, "{}", stats.join(" · "));
     w!(out);
-    if !cat.systems.is_empty() {
-        w!(
-            out,
-            "{}: {}",
-            link(lang.t("systems"), &index_href(cat, page, PageKind::Systems)),
-            cat.systems.len()
-        );
+    for i in systems {
+        w!(out, "{}: {}", to(i.key, i.page), i.count);
         w!(out);
     }
-    w!(
-        out,
-        "{}",
-        link(
-            lang.t("dataflow"),
-            &index_href(cat, page, PageKind::DataFlow)
-        )
-    );
+    w!(out, "{}", to("dataflow", v.dataflow));
     w!(out);
-    if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
-        w!(
-            out,
-            "{}",
-            link(lang.t("whats_new"), &cat.href(page, news, None, MD))
-        );
+    if let Some(news) = v.whats_new {
+        w!(out, "{}", to("whats_new", news));
         w!(out);
     }
     heading(&mut out, 2, "sec-components", lang.t("components"));
-    for (fi, f) in cat.categories.iter().enumerate() {
+    for g in &v.categories {
         w!(
             out,
             "### {}",
-            link(
-                &category_name(&f.name, lang),
-                &cat.href(page, cat.category_page(fi), None, MD)
-            )
+            link(&g.name, &cat.href(page, g.page, None, MD))
         );
         w!(out);
         table(
             &mut out,
             &component_cols(lang),
-            &component_rows(cat, page, &cat.members(f).collect::<Vec<_>>()),
+            &component_rows(cat, page, &g.members),
         );
     }
     out
@@ -492,7 +472,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
         w!(out, "# {}", inline(lang.t("components")));
         w!(out);
         for (fi, f) in cat.categories.iter().enumerate() {
-            let text = category_name(&f.name, lang);
+            let text = FacetKind::Category.name(&f.name, lang);
             summary_item(&mut out, cat, 0, &text, cat.category_page(fi));
             for ci in cat.members(f) {
                 let page = cat.component_page(ci);
@@ -579,49 +559,6 @@ fn dataflow_page(cat: &Catalog, title: &str, lang: Lang) -> String {
     w!(out, "{}", link(title, &home(cat, page)));
     w!(out);
     super::text::dataflow_body::<Md>(&mut out, cat, page, lang);
-    out
-}
-
-/// `systems.md`: every RT System with its counts.
-fn system_index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
-    let page = cat.site_page(PageKind::Systems);
-    let mut out = String::new();
-    w!(out, "# {}", inline(lang.t("systems")));
-    w!(out);
-    w!(out, "{}", link(title, &home(cat, page)));
-    w!(out);
-    w!(out, "{}", inline(lang.t("systems_intro")));
-    w!(out);
-    let rows: Vec<Vec<String>> = cat
-        .systems
-        .iter()
-        .enumerate()
-        .map(|(si, s)| {
-            let parts = s.profile.id_parts.as_ref();
-            vec![
-                link(
-                    s.profile.name(),
-                    &cat.href(page, cat.system_page(si), None, MD),
-                ),
-                parts.map(|x| opt(&x.version)).unwrap_or_default(),
-                parts.map(|x| opt(&x.vendor)).unwrap_or_default(),
-                s.profile.components.len().to_string(),
-                (s.profile.data_port_connectors.len() + s.profile.service_port_connectors.len())
-                    .to_string(),
-            ]
-        })
-        .collect();
-    table(
-        &mut out,
-        &[
-            lang.t("system"),
-            lang.t("version"),
-            lang.t("vendor"),
-            lang.t("instances"),
-            lang.t("sys_connector"),
-        ],
-        &rows,
-    );
     out
 }
 
@@ -751,22 +688,16 @@ fn other_pages(
             (v.page.path_in(MD), facet_page::<Md>(cat, &v, title, lang))
         }));
     }
-    out.par_extend((0..cat.data_types.len()).into_par_iter().map(|ti| {
-        (
-            cat.data_type_page(ti).path_in(MD),
-            type_page::<Md>(cat, &data_type_view(cat, ti, lang, site.1), title, lang),
-        )
-    }));
-    out.par_extend((0..cat.interfaces.len()).into_par_iter().map(|ii| {
-        (
-            cat.interface_page(ii).path_in(MD),
-            type_page::<Md>(cat, &interface_view(cat, ii, lang, site.1), title, lang),
-        )
-    }));
+    for kind in [TypeKind::Data, TypeKind::Interface] {
+        out.par_extend((0..kind.count(cat)).into_par_iter().map(|i| {
+            let v = entry_view(cat, kind, i, lang, site.1);
+            (v.page.path_in(MD), type_page::<Md>(cat, &v, title, lang))
+        }));
+    }
     if !cat.systems.is_empty() {
         out.push((
             cat.site_page(PageKind::Systems).path_in(MD),
-            system_index_page(cat, title, lang),
+            systems_index_page::<Md>(cat, &systems_index_view(cat), title, lang),
         ));
         out.par_extend((0..cat.systems.len()).into_par_iter().flat_map_iter(|si| {
             let page = cat.system_page(si);

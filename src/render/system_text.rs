@@ -214,33 +214,54 @@ fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Ta
     );
 }
 
-fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
-    (t.heading)(out, "data-connectors", lang.t("sys_data_connectors_h"));
-    let rows: Vec<Vec<String>> = v
-        .data_connectors
-        .iter()
-        .map(|c| {
-            vec![
-                M::esc(&c.name),
-                M::esc(&c.id),
-                end_text::<M>(&c.source),
-                end_text::<M>(&c.target),
-                c.data_type.as_ref().map(link::<M>).unwrap_or_default(),
-                M::esc(&c.interface_type),
-                M::esc(&c.dataflow_type),
-                M::esc(&c.subscription_type),
-                M::esc(&c.push_interval),
-                M::esc(&c.comment),
-            ]
+/// A table of connectors: their name, id, source and target, then the cells of `rest` under
+/// `rest_headers`.
+fn connector_table<'a, M: Markup>(
+    out: &mut String,
+    lang: Lang,
+    rows: impl Iterator<Item = ([&'a str; 2], [&'a EndView; 2], Vec<String>)>,
+    rest_headers: &[&str],
+) {
+    let rows: Vec<Vec<String>> = rows
+        .map(|([name, id], [source, target], rest)| {
+            let mut row = vec![
+                M::esc(name),
+                M::esc(id),
+                end_text::<M>(source),
+                end_text::<M>(target),
+            ];
+            row.extend(rest);
+            row
         })
         .collect();
-    M::table(
+    let mut headers = vec![
+        lang.t("sys_connector"),
+        lang.t("id"),
+        lang.t("sys_source"),
+        lang.t("sys_target"),
+    ];
+    headers.extend_from_slice(rest_headers);
+    M::table(out, &headers, &rows);
+}
+
+fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
+    (t.heading)(out, "data-connectors", lang.t("sys_data_connectors_h"));
+    let rows = v.data_connectors.iter().map(|c| {
+        let rest = vec![
+            c.data_type.as_ref().map(link::<M>).unwrap_or_default(),
+            M::esc(&c.interface_type),
+            M::esc(&c.dataflow_type),
+            M::esc(&c.subscription_type),
+            M::esc(&c.push_interval),
+            M::esc(&c.comment),
+        ];
+        ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+    });
+    connector_table::<M>(
         out,
+        lang,
+        rows,
         &[
-            lang.t("sys_connector"),
-            lang.t("id"),
-            lang.t("sys_source"),
-            lang.t("sys_target"),
             lang.t("type"),
             lang.t("sys_interface_type"),
             lang.t("sys_dataflow"),
@@ -248,41 +269,30 @@ fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targe
             lang.t("sys_push_interval"),
             lang.t("comment"),
         ],
-        &rows,
     );
     (t.heading)(
         out,
         "service-connectors",
         lang.t("sys_service_connectors_h"),
     );
-    let rows: Vec<Vec<String>> = v
-        .service_connectors
-        .iter()
-        .map(|c| {
-            let ifaces: Vec<String> = c.interfaces.iter().map(link::<M>).collect();
-            vec![
-                M::esc(&c.name),
-                M::esc(&c.id),
-                end_text::<M>(&c.source),
-                end_text::<M>(&c.target),
-                ifaces.join(", "),
-                M::esc(&c.trans_method),
-                M::esc(&c.comment),
-            ]
-        })
-        .collect();
-    M::table(
+    let rows = v.service_connectors.iter().map(|c| {
+        let ifaces: Vec<String> = c.interfaces.iter().map(link::<M>).collect();
+        let rest = vec![
+            ifaces.join(", "),
+            M::esc(&c.trans_method),
+            M::esc(&c.comment),
+        ];
+        ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+    });
+    connector_table::<M>(
         out,
+        lang,
+        rows,
         &[
-            lang.t("sys_connector"),
-            lang.t("id"),
-            lang.t("sys_source"),
-            lang.t("sys_target"),
             lang.t("interfaces"),
             lang.t("sys_trans_method"),
             lang.t("comment"),
         ],
-        &rows,
     );
 }
 

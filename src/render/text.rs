@@ -7,6 +7,7 @@
 use super::facts::{self, Fact};
 use super::view::component::ComponentView;
 use super::view::facets::{ComponentRow, FacetIndexView, FacetView};
+use super::view::front::SystemsIndexView;
 use super::view::types::{TypeIndexView, TypeKind, TypeView};
 use super::view::{Linked, Peers};
 use crate::catalog::{Catalog, Output, Page};
@@ -203,15 +204,6 @@ pub fn facets_of_each(cat: &Catalog) -> Vec<(usize, usize)> {
         .collect()
 }
 
-/// A category's display name; the empty category has a translated name.
-pub fn category_name(name: &str, lang: Lang) -> String {
-    if name.is_empty() {
-        lang.t("fact_uncategorized").to_string()
-    } else {
-        name.to_string()
-    }
-}
-
 /// The spellings and IDL files of a data type or interface as a facts table (nothing when
 /// both are empty).
 pub fn names_facts<M: Markup>(out: &mut String, lang: Lang, spellings: &[String], idl: &[String]) {
@@ -263,6 +255,13 @@ pub fn crumbs<'a>(
     std::iter::once(home)
         .chain(index.map(|(page, label)| Linked::new(label, Some(page), None)))
         .collect()
+}
+
+/// The start of an index page: its title and the way back to the front page.
+fn index_head<M: Markup>(cat: &Catalog, page: &Page, title: &str, site_title: &str) -> String {
+    let mut out = String::new();
+    M::page_head(&mut out, cat, page, title, &crumbs(cat, site_title, None));
+    out
 }
 
 /// A list of components as a table (name, description, vendor, version) on page `from`;
@@ -323,14 +322,7 @@ pub fn facet_index_page<M: Markup>(
     site_title: &str,
     lang: Lang,
 ) -> String {
-    let mut out = String::new();
-    M::page_head(
-        &mut out,
-        cat,
-        v.page,
-        lang.t(v.kind.index_key()),
-        &crumbs(cat, site_title, None),
-    );
+    let mut out = index_head::<M>(cat, v.page, lang.t(v.kind.index_key()), site_title);
     let items: Vec<String> = v
         .facets
         .iter()
@@ -344,6 +336,47 @@ pub fn facet_index_page<M: Markup>(
         })
         .collect();
     M::linked_list(&mut out, &items);
+    out
+}
+
+/// The index of RT Systems from its view: each system linked, with its version, vendor and
+/// counts.
+pub fn systems_index_page<M: Markup>(
+    cat: &Catalog,
+    v: &SystemsIndexView<'_>,
+    site_title: &str,
+    lang: Lang,
+) -> String {
+    let mut out = index_head::<M>(cat, v.page, lang.t("systems"), site_title);
+    M::paragraph(&mut out, &M::esc(lang.t("systems_intro")));
+    let rows: Vec<Vec<String>> = v
+        .systems
+        .iter()
+        .map(|s| {
+            let name = match s.name.to {
+                Some((to, _)) => M::child_link(cat, v.page, to, &s.name.text),
+                None => M::esc(&s.name.text),
+            };
+            vec![
+                name,
+                M::esc(s.version),
+                M::esc(s.vendor),
+                s.instances.to_string(),
+                s.connectors.to_string(),
+            ]
+        })
+        .collect();
+    M::table(
+        &mut out,
+        &[
+            lang.t("system"),
+            lang.t("version"),
+            lang.t("vendor"),
+            lang.t("instances"),
+            lang.t("sys_connector"),
+        ],
+        &rows,
+    );
     out
 }
 
@@ -772,15 +805,8 @@ pub fn type_index_page<M: Markup>(
     site_title: &str,
     lang: Lang,
 ) -> String {
-    let mut out = String::new();
     let page = v.page;
-    M::page_head(
-        &mut out,
-        cat,
-        page,
-        lang.t(v.kind.index_key()),
-        &crumbs(cat, site_title, None),
-    );
+    let mut out = index_head::<M>(cat, page, lang.t(v.kind.index_key()), site_title);
     let rows: Vec<Vec<String>> = v
         .rows
         .iter()

@@ -581,14 +581,6 @@ impl<'a> Site<'a> {
         list.into_iter().map(|(_, s)| s).collect()
     }
 
-    fn facet_name(&self, name: &str, empty_key: &str) -> String {
-        if name.is_empty() {
-            self.t(empty_key).to_string()
-        } else {
-            name.to_string()
-        }
-    }
-
     /// A link of a view as the site writes it, from component pages (one folder down).
     fn link(&self, from: &Page, l: &Linked<'_>) -> Option<Link> {
         Some(Link {
@@ -1447,31 +1439,34 @@ fn index_job<'a>(site: &'a Site<'a>) -> Job<'a> {
         components: Vec<&'a ComponentSummary>,
         count: usize,
     }
-    let full = catalog.components.len() <= INDEX_FULL_LIST_MAX;
-    let groups: Vec<Group<'_>> = catalog
+    let v = view::front::front_view(catalog, site.lang);
+    let full = v.components <= INDEX_FULL_LIST_MAX;
+    let count = |key| v.index(key).map_or(0, |i| i.count);
+    let counts = (count("data_types"), count("interfaces"), count("systems"));
+    let groups: Vec<Group<'_>> = v
         .categories
-        .iter()
-        .map(|f| Group {
-            name: site.facet_name(&f.name, "no_category"),
-            slug: &f.slug,
+        .into_iter()
+        .map(|g| Group {
             components: if full {
-                site.sorted_summaries(&catalog.members(f).collect::<Vec<_>>())
+                site.sorted_summaries(&g.members)
             } else {
                 Vec::new()
             },
-            count: f.components.len(),
+            count: g.members.len(),
+            name: g.name,
+            slug: g.slug,
         })
         .collect();
-    let vendors: Vec<Link> = catalog
+    let vendors: Vec<Link> = v
         .vendors
-        .iter()
-        .map(|f| Link {
-            text: site.facet_name(&f.name, "no_vendor"),
-            href: f.slug.clone(),
+        .into_iter()
+        .map(|(text, slug)| Link {
+            text,
+            href: slug.to_string(),
         })
         .collect();
     Job {
-        path: catalog.site_page(PageKind::Index).path("html"),
+        path: v.page.path("html"),
         template: "index.html",
         context: PageContext::Ready(minijinja::context! {
             root => "",
@@ -1479,12 +1474,12 @@ fn index_job<'a>(site: &'a Site<'a>) -> Job<'a> {
             is_home => true,
             groups => ctx(&groups),
             vendors => ctx(&vendors),
-            sources => catalog.sources.iter().map(|s| s.name.clone()).collect::<Vec<_>>(),
+            sources => v.sources,
             full_list => full,
-            component_count => catalog.components.len(),
-            type_count => catalog.data_types.len(),
-            interface_count => catalog.interfaces.len(),
-            system_count => catalog.systems.len(),
+            component_count => v.components,
+            type_count => counts.0,
+            interface_count => counts.1,
+            system_count => counts.2,
         }),
     }
 }
@@ -1515,29 +1510,18 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
     let source_url = site.opts.source_url.as_deref();
     for kind in [TypeKind::Data, TypeKind::Interface] {
         pages.push(type_index_job(site, kind));
-        let (count, template) = match kind {
-            TypeKind::Data => (catalog.data_types.len(), "type.html"),
-            TypeKind::Interface => (catalog.interfaces.len(), "interface.html"),
+        let template = match kind {
+            TypeKind::Data => "type.html",
+            TypeKind::Interface => "interface.html",
         };
-        for i in 0..count {
-            let page = match kind {
-                TypeKind::Data => catalog.data_type_page(i),
-                TypeKind::Interface => catalog.interface_page(i),
-            };
+        for i in 0..kind.count(catalog) {
             pages.push(Job {
-                path: page.path("html"),
+                path: kind.page(catalog, i).path("html"),
                 template,
                 context: PageContext::Lazy(Box::new(move || {
                     type_context(
                         site,
-                        &match kind {
-                            TypeKind::Data => {
-                                view::types::data_type_view(catalog, i, lang, source_url)
-                            }
-                            TypeKind::Interface => {
-                                view::types::interface_view(catalog, i, lang, source_url)
-                            }
-                        },
+                        &view::types::entry_view(catalog, kind, i, lang, source_url),
                     )
                 })),
             });

@@ -8,6 +8,7 @@ use super::{crumbs_home, crumbs_section, ctx, page_title, Job, PageContext, Site
 use crate::catalog::systems::System;
 use crate::model::system::RtSystem;
 use crate::model::{non_empty, Text};
+use crate::render::view::front::systems_index_view;
 use crate::render::view::system::system_view;
 use serde::Serialize;
 
@@ -132,27 +133,26 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
         return Vec::new();
     }
     let lang = site.lang;
-    let rows: Vec<SystemRow> = catalog
+    let v = systems_index_view(catalog);
+    let rows: Vec<SystemRow> = v
         .systems
         .iter()
-        .map(|s| {
-            let parts = s.profile.id_parts.as_ref();
-            SystemRow {
-                name: s.profile.name().to_string(),
-                href: format!("{}.html", s.slug),
-                version: parts.map(|p| txt(&p.version)).unwrap_or_default(),
-                vendor: parts.map(|p| txt(&p.vendor)).unwrap_or_default(),
-                instances: s.profile.components.len(),
-                connectors: s.profile.data_port_connectors.len()
-                    + s.profile.service_port_connectors.len(),
-            }
+        .map(|s| SystemRow {
+            name: s.name.text.clone(),
+            // A system's page is beside the index: its file name is the link.
+            href: s
+                .name
+                .to
+                .map(|(to, _)| to.file_name("html"))
+                .unwrap_or_default(),
+            version: s.version.to_string(),
+            vendor: s.vendor.to_string(),
+            instances: s.instances,
+            connectors: s.connectors,
         })
         .collect();
     let mut pages = vec![Job {
-        path: site
-            .catalog
-            .site_page(crate::catalog::PageKind::Systems)
-            .path("html"),
+        path: v.page.path("html"),
         template: "systems.html",
         context: PageContext::Ready(minijinja::context! {
             root => ROOT,

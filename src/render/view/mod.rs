@@ -9,6 +9,7 @@
 
 pub mod component;
 pub mod facets;
+pub mod front;
 pub mod history;
 pub mod history_page;
 pub mod idl_file;

@@ -30,6 +30,22 @@ impl TypeKind {
             TypeKind::Interface => "interfaces",
         }
     }
+
+    /// How many entries of the kind the catalogue has.
+    pub fn count(self, cat: &Catalog) -> usize {
+        match self {
+            TypeKind::Data => cat.data_types.len(),
+            TypeKind::Interface => cat.interfaces.len(),
+        }
+    }
+
+    /// The page of entry `i` of the kind.
+    pub fn page(self, cat: &Catalog, i: usize) -> &Page {
+        match self {
+            TypeKind::Data => cat.data_type_page(i),
+            TypeKind::Interface => cat.interface_page(i),
+        }
+    }
 }
 
 /// One port (or interface of a service port) using the type: its component, the port, and
@@ -189,40 +205,20 @@ where
     }
 }
 
-/// The view of data type `ti` ([`Catalog::data_types`]); `source_url` is the site's
-/// `source-url` template.
-pub fn data_type_view<'a>(
+/// The view of entry `i` of `kind` ([`Catalog::data_types`], [`Catalog::interfaces`]);
+/// `source_url` is the site's `source-url` template.
+pub fn entry_view<'a>(
     cat: &'a Catalog,
-    ti: usize,
+    kind: TypeKind,
+    i: usize,
     lang: Lang,
     source_url: Option<&str>,
 ) -> TypeView<'a> {
-    type_view(
-        cat,
-        &cat.data_types[ti],
-        TypeKind::Data,
-        cat.data_type_page(ti),
-        lang,
-        source_url,
-    )
-}
-
-/// The view of interface `ii` ([`Catalog::interfaces`]); `source_url` is the site's
-/// `source-url` template.
-pub fn interface_view<'a>(
-    cat: &'a Catalog,
-    ii: usize,
-    lang: Lang,
-    source_url: Option<&str>,
-) -> TypeView<'a> {
-    type_view(
-        cat,
-        &cat.interfaces[ii],
-        TypeKind::Interface,
-        cat.interface_page(ii),
-        lang,
-        source_url,
-    )
+    let page = kind.page(cat, i);
+    match kind {
+        TypeKind::Data => type_view(cat, &cat.data_types[i], kind, page, lang, source_url),
+        TypeKind::Interface => type_view(cat, &cat.interfaces[i], kind, page, lang, source_url),
+    }
 }
 
 /// One entry of the data type or interface index: its page, name, the other spellings
