@@ -62,6 +62,48 @@ fn trim_start_blank(s: &[u8]) -> &[u8] {
     &s[n..]
 }
 
+/// The root mapping of the first YAML document with the top-level key `root_key`, and a reader
+/// on it. The common case (one block-style document) is read by our own line reader; anything
+/// it does not handle — and every error — goes through serde_norway. `what` names the kind of
+/// profile in the errors, `hint` says how one starts.
+fn root_reader<'a>(
+    bytes: &'a [u8],
+    file: &'a str,
+    limits: &Limits,
+    root_key: &str,
+    what: &str,
+    hint: &str,
+) -> Result<(Mapping, Reader<'a>), Diagnostic> {
+    let src = source(bytes, file, limits)?;
+    let value = match super::yaml_fast::parse(src, limits.max_depth, root_key) {
+        Some(v) => Some(v),
+        None => slow_value(bytes, file, limits, root_key)?,
+    };
+    let Some(value) = value else {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            format!("not an {what}: no YAML document has a top-level `{root_key}` key"),
+        )
+        .with_hint(hint));
+    };
+    let Value::Mapping(root) = untag(value) else {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            format!("not an {what}: the root is not a mapping"),
+        ));
+    };
+    let r = Reader {
+        file,
+        loc: Locator::new(src),
+        diags: Vec::new(),
+        empties: super::dialect::EmptyUnknowns::default(),
+        written_as: Vec::new(),
+    };
+    Ok((root, r))
+}
+
 /// Reads an RTC Profile from YAML bytes.
 ///
 /// Errors: `ENCODING` (not UTF-8), `MALFORMED` (YAML syntax, with serde_norway's line:column),
@@ -69,37 +111,14 @@ fn trim_start_blank(s: &[u8]) -> &[u8] {
 /// `rtcProfile`). Everything else — unknown keys, values of the wrong shape — becomes a warning
 /// and is kept as an [`Extra`] on the nearest node.
 pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagnostic> {
-    let src = source(bytes, file, limits)?;
-
-    // The common case (one block-style document) is read by our own line reader; anything
-    // it does not handle — and every error — goes through serde_norway.
-    let value = match super::yaml_fast::parse(src, limits.max_depth) {
-        Some(v) => Some(v),
-        None => slow_value(bytes, file, limits)?,
-    };
-    if value.is_none() {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            "not an RTC Profile: no YAML document has a top-level `rtcProfile` key",
-        )
-        .with_hint("a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)"));
-    }
-    let Some(Value::Mapping(root)) = value.map(untag) else {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            "not an RTC Profile: the root is not a mapping",
-        ));
-    };
-
-    let mut r = Reader {
+    let (root, mut r) = root_reader(
+        bytes,
         file,
-        loc: Locator::new(src),
-        diags: Vec::new(),
-        empties: super::dialect::EmptyUnknowns::default(),
-        written_as: Vec::new(),
-    };
+        limits,
+        "rtcProfile",
+        "RTC Profile",
+        "a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)",
+    )?;
     let mut profile = Profile::default();
     for (k, v) in &root {
         let (name, pos) = r.key(k);
@@ -110,14 +129,14 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
             r.unknown(&name, v, pos, "the document root", &mut profile.extra);
         }
     }
-    profile.written_as = std::mem::take(&mut r.written_as);
-    if let Some(d) = r.empties.note(file, profile.pos, "key") {
-        r.diags.push(d);
-    }
-    Ok(Parsed {
+    Ok(Parsed::read(
         profile,
-        diagnostics: r.diags,
-    })
+        r.written_as,
+        &r.empties,
+        "key",
+        file,
+        r.diags,
+    ))
 }
 
 /// The mapping of RT System profiles (`rtsProfile`), on this module's value builder, limits and
@@ -159,19 +178,10 @@ fn source<'b>(bytes: &'b [u8], file: &str, limits: &Limits) -> Result<&'b str, D
     Ok(src)
 }
 
-/// The first document whose root mapping has `rtcProfile`, read with serde_norway. Each
+/// The first document whose root mapping has `root_key`, read with serde_norway. Each
 /// document is built into a `Value` by a seed that counts nodes and depth as it goes (so an
 /// alias bomb or a deep nest is stopped early).
 pub(super) fn slow_value(
-    bytes: &[u8],
-    file: &str,
-    limits: &Limits,
-) -> Result<Option<Value>, Diagnostic> {
-    slow_value_with_root(bytes, file, limits, "rtcProfile")
-}
-
-/// [`slow_value`] for the first document whose root mapping has `root_key`.
-fn slow_value_with_root(
     bytes: &[u8],
     file: &str,
     limits: &Limits,
