@@ -65,6 +65,8 @@ pub trait Fields {
     fn value(&self, f: Field) -> Option<&Option<Text>>;
     /// The node's unknown values.
     fn extra_mut(&mut self) -> &mut Vec<Extra>;
+    /// Where the node's element or key starts.
+    fn pos_mut(&mut self) -> &mut Pos;
     /// The positions of its attributes / keys, on the nodes that keep them.
     fn attr_pos(&mut self) -> Option<&mut AttrPos> {
         None
@@ -159,6 +161,9 @@ macro_rules! table {
             }
             fn extra_mut(&mut self) -> &mut Vec<Extra> {
                 &mut self.extra
+            }
+            fn pos_mut(&mut self) -> &mut Pos {
+                &mut self.pos
             }
             $(fn attr_pos(&mut self) -> Option<&mut AttrPos> {
                 let _ = stringify!($pos);
