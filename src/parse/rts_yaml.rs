@@ -7,7 +7,7 @@
 //! Extension keys are accepted with or without their `rtsExt::` prefix (the XML reader accepts
 //! either namespace), so `"rtsExt::comment"` and `comment` both fill `comment`.
 
-use super::{root_reader, untag_ref, Reader};
+use super::{each_item, root_reader, untag_ref, Reader};
 use crate::diagnostic::Diagnostic;
 use crate::model::system::*;
 use crate::model::{Extra, Pos};
@@ -46,24 +46,6 @@ pub(crate) fn parse(
 /// A key without its `rtsExt::` prefix.
 fn bare(name: &str) -> &str {
     name.strip_prefix("rtsExt::").unwrap_or(name)
-}
-
-/// Calls `f` on each mapping item of a list value, with its position. Items are located one by
-/// one, just before `f` reads them: the locator moves forward in document order.
-fn each_item<'v>(
-    r: &mut Reader,
-    v: &'v Value,
-    name: &str,
-    pos: Pos,
-    sink: &mut Vec<Extra>,
-    mut f: impl FnMut(&mut Reader, &'v Mapping, Pos),
-) {
-    let list = r.seq(v, name, pos, sink);
-    for (i, it) in list.iter().enumerate() {
-        if let Some((m, ip)) = r.map_item(it, name, i, sink) {
-            f(r, m, ip);
-        }
-    }
 }
 
 /// `"rtsExt::properties"`: `[{name, value}]`.
