@@ -735,6 +735,16 @@ impl Parser<'_> {
         Ok(r)
     }
 
+    /// The `};` that ends the body of `kind` `name` (`hint`: what to say when the `}` is missing).
+    fn close(&mut self, kind: &str, name: &str, hint: &str) -> PResult<()> {
+        self.expect_punct("}", &format!("to close {kind} `{name}`"), hint)?;
+        self.expect_punct(
+            ";",
+            &format!("after the `}}` of {kind} `{name}`"),
+            "write `};`",
+        )
+    }
+
     fn module(
         &mut self,
         out: &mut Vec<IdlDefinition>,
@@ -751,16 +761,7 @@ impl Parser<'_> {
         self.in_scope(&name, |p| p.definitions(&mut defs, false))?;
         m.definitions = defs;
         out.push(IdlDefinition::Module(m));
-        self.expect_punct(
-            "}",
-            &format!("to close module `{name}`"),
-            "every `{` needs its `}`",
-        )?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of module `{name}`"),
-            "write `};`",
-        )
+        self.close("module", &name, "every `{` needs its `}`")
     }
 
     fn structure(
@@ -784,12 +785,7 @@ impl Parser<'_> {
             }),
         ));
         r?;
-        self.expect_punct("}", &format!("to close struct `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of struct `{name}`"),
-            "write `};`",
-        )
+        self.close("struct", &name, "")
     }
 
     fn forward(&self, name: String, doc: Option<Box<IdlDoc>>, pos: Pos, of: &str) -> IdlDefinition {
@@ -815,12 +811,7 @@ impl Parser<'_> {
             }),
         ));
         r?;
-        self.expect_punct("}", &format!("to close exception `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of exception `{name}`"),
-            "write `};`",
-        )
+        self.close("exception", &name, "")
     }
 
     /// Members up to (not including) the closing `}`.
@@ -915,12 +906,7 @@ impl Parser<'_> {
             }),
         ));
         r?;
-        self.expect_punct("}", &format!("to close union `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of union `{name}`"),
-            "write `};`",
-        )
+        self.close("union", &name, "")
     }
 
     fn union_cases(&mut self, cases: &mut Vec<IdlUnionCase>) -> PResult<()> {
@@ -1045,12 +1031,7 @@ impl Parser<'_> {
             // The error is reported; skip the rest of the enumerators to the enum's own `}`.
             self.skip_to_close();
         }
-        self.expect_punct("}", &format!("to close enum `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of enum `{name}`"),
-            "write `};`",
-        )
+        self.close("enum", &name, "")
     }
 
     fn typedef(
@@ -1158,12 +1139,7 @@ impl Parser<'_> {
         let r = self.in_scope(&name, |p| p.exports(&mut itf))?;
         out.push(IdlDefinition::Interface(itf));
         r?;
-        self.expect_punct("}", &format!("to close interface `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of interface `{name}`"),
-            "write `};`",
-        )
+        self.close("interface", &name, "")
     }
 
     fn exports(&mut self, itf: &mut IdlInterface) -> PResult<()> {
