@@ -505,6 +505,15 @@ pub struct Action {
     pub extra: Vec<Extra>,
 }
 
+impl super::Located for Action {
+    fn pos_mut(&mut self) -> &mut Pos {
+        &mut self.pos
+    }
+    fn extra_mut(&mut self) -> &mut Vec<Extra> {
+        &mut self.extra
+    }
+}
+
 impl Action {
     /// Whether the profile marks this callback as implemented (absent or invalid = false).
     pub fn is_implemented(&self) -> bool {

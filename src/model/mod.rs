@@ -14,7 +14,8 @@
 /// Declares a node of a document model: the struct with the derives and serde attributes every
 /// node has (each field defaulted when absent from `catalog.json`, JSON names in camelCase) and,
 /// after the fields written, the two every node ends with: `pos`, where its element or key
-/// starts, and `extra`, the values the schema does not define (left out of the JSON when empty).
+/// starts, and `extra`, the values the schema does not define (left out of the JSON when empty),
+/// both also reachable through [`Located`] for the readers.
 macro_rules! node {
     ($(#[$meta:meta])* pub struct $name:ident { $($fields:tt)* }) => {
         $(#[$meta])*
@@ -26,7 +27,23 @@ macro_rules! node {
             #[serde(skip_serializing_if = "Vec::is_empty")]
             pub extra: Vec<$crate::model::Extra>,
         }
+
+        impl $crate::model::Located for $name {
+            fn pos_mut(&mut self) -> &mut $crate::model::Pos {
+                &mut self.pos
+            }
+            fn extra_mut(&mut self) -> &mut Vec<$crate::model::Extra> {
+                &mut self.extra
+            }
+        }
     };
+}
+
+/// What every node of a document model has, for the readers that fill any node: where its
+/// element or key starts, and the values the schema does not define.
+pub trait Located {
+    fn pos_mut(&mut self) -> &mut Pos;
+    fn extra_mut(&mut self) -> &mut Vec<Extra>;
 }
 
 pub mod component;
