@@ -107,20 +107,12 @@ impl<'t, F: FnMut(&str) -> Option<Value>> Eval<'t, F> {
     pub fn expr(&mut self) -> EvalResult {
         let c = self.binary(0)?;
         if self.pp && self.punct() == Some("?") {
-            self.i += 1;
-            self.enter()?;
-            let a = self.expr();
-            self.depth -= 1;
-            let a = a?;
+            let a = self.nested()?;
             if self.punct() != Some(":") {
                 let p = self.here();
                 return Err((p, "expected `:` in `?:` expression".into()));
             }
-            self.i += 1;
-            self.enter()?;
-            let b = self.expr();
-            self.depth -= 1;
-            let b = b?;
+            let b = self.nested()?;
             return Ok(match c {
                 Some(c) => {
                     if c.truthy() {
@@ -133,6 +125,15 @@ impl<'t, F: FnMut(&str) -> Option<Value>> Eval<'t, F> {
             });
         }
         Ok(c)
+    }
+
+    /// The expression after the current token (a `?`, `:` or `(`), one level deeper.
+    fn nested(&mut self) -> EvalResult {
+        self.i += 1;
+        self.enter()?;
+        let v = self.expr();
+        self.depth -= 1;
+        v
     }
 
     fn enter(&mut self) -> Result<(), (Pos, String)> {
@@ -235,11 +236,7 @@ impl<'t, F: FnMut(&str) -> Option<Value>> Eval<'t, F> {
                 Ok((self.resolve)(&name))
             }
             Tok::Punct("(") => {
-                self.i += 1;
-                self.enter()?;
-                let v = self.expr();
-                self.depth -= 1;
-                let v = v?;
+                let v = self.nested()?;
                 if self.punct() != Some(")") {
                     let t = self.peek().map(|t| t.describe()).unwrap_or_default();
                     let p = self.here();

@@ -332,8 +332,8 @@ impl<'a> Lexer<'a> {
         Ok(())
     }
 
-    fn block_comment(&mut self, start: Pos) -> Result<(), (Pos, String, bool)> {
-        let s = self.i;
+    /// Moves past a block comment, from its `/*` (at `start`) to just after its `*/`.
+    fn comment_end(&mut self, start: Pos) -> Result<(), (Pos, String, bool)> {
         self.bump();
         self.bump();
         loop {
@@ -347,10 +347,25 @@ impl<'a> Lexer<'a> {
             if self.b[self.i] == b'*' && self.peek(1) == b'/' {
                 self.bump();
                 self.bump();
-                break;
+                return Ok(());
             }
             self.bump();
         }
+    }
+
+    /// Moves past one character (every byte of its UTF-8 sequence) and gives it back.
+    fn char(&mut self) -> &'a str {
+        let start = self.i;
+        self.bump();
+        while self.i < self.b.len() && self.b[self.i] & 0xC0 == 0x80 {
+            self.bump();
+        }
+        &self.s[start..self.i]
+    }
+
+    fn block_comment(&mut self, start: Pos) -> Result<(), (Pos, String, bool)> {
+        let s = self.i;
+        self.comment_end(start)?;
         if self.in_directive {
             return Ok(());
         }
@@ -418,32 +433,11 @@ impl<'a> Lexer<'a> {
             }
             if c == b'/' && self.peek(1) == b'*' {
                 let cs = self.pos();
-                self.bump();
-                self.bump();
-                loop {
-                    if self.i >= self.b.len() {
-                        return Err((
-                            cs,
-                            "unterminated comment: `/*` has no closing `*/`".into(),
-                            false,
-                        ));
-                    }
-                    if self.b[self.i] == b'*' && self.peek(1) == b'/' {
-                        self.bump();
-                        self.bump();
-                        break;
-                    }
-                    self.bump();
-                }
+                self.comment_end(cs)?;
                 raw.push(' ');
                 continue;
             }
-            let ch_start = self.i;
-            self.bump();
-            while self.i < self.b.len() && self.b[self.i] & 0xC0 == 0x80 {
-                self.bump();
-            }
-            raw.push_str(&self.s[ch_start..self.i]);
+            raw.push_str(self.char());
         }
         let raw = raw.trim_end().to_string();
         self.push(
@@ -616,12 +610,7 @@ impl<'a> Lexer<'a> {
                 }
                 continue;
             }
-            let cs = self.i;
-            self.bump();
-            while self.i < self.b.len() && self.b[self.i] & 0xC0 == 0x80 {
-                self.bump();
-            }
-            value.push_str(&self.s[cs..self.i]);
+            value.push_str(self.char());
         }
         let raw = self.s[raw_start..self.i].to_string();
         if let Some(m) = bad {

@@ -128,6 +128,23 @@ const SKIPPED: &[&str] = &[
     "custom",
 ];
 
+/// A declaration of kind `$kind` named `$name`: its scoped name and repository id in the
+/// current scope, the doc comment, position and file, then the fields of its own kind.
+macro_rules! declared {
+    ($p:ident, $kind:ident, $name:expr, $doc:expr, $pos:expr, { $($own:tt)* }) => {{
+        let name: String = $name;
+        $kind {
+            scoped_name: $p.scoped(&name),
+            repository_id: $p.repo_id(&name),
+            name,
+            doc: $doc,
+            pos: $pos,
+            file: $p.file.clone(),
+            $($own)*
+        }
+    }};
+}
+
 impl Parser<'_> {
     // ----- tokens -----
 
@@ -566,14 +583,14 @@ impl Parser<'_> {
                 self.bump();
                 let (name, _) = self.ident("a name after `native`")?;
                 self.expect_punct(";", "after native declaration", "")?;
-                out.push(IdlDefinition::Native(IdlNative {
-                    scoped_name: self.scoped(&name),
-                    repository_id: self.repo_id(&name),
+                out.push(IdlDefinition::Native(declared!(
+                    self,
+                    IdlNative,
                     name,
                     doc,
                     pos,
-                    file: self.file.clone(),
-                }));
+                    {}
+                )));
                 Ok(())
             }
             "exception" => self.exception(out, doc, pos),
@@ -718,6 +735,16 @@ impl Parser<'_> {
         Ok(r)
     }
 
+    /// The `};` that ends the body of `kind` `name` (`hint`: what to say when the `}` is missing).
+    fn close(&mut self, kind: &str, name: &str, hint: &str) -> PResult<()> {
+        self.expect_punct("}", &format!("to close {kind} `{name}`"), hint)?;
+        self.expect_punct(
+            ";",
+            &format!("after the `}}` of {kind} `{name}`"),
+            "write `};`",
+        )
+    }
+
     fn module(
         &mut self,
         out: &mut Vec<IdlDefinition>,
@@ -727,29 +754,14 @@ impl Parser<'_> {
         self.bump();
         let (name, _) = self.ident("a module name")?;
         self.expect_punct("{", &format!("after `module {name}`"), "")?;
-        let mut m = IdlModule {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name: name.clone(),
-            doc,
-            pos,
-            file: self.file.clone(),
+        let mut m = declared!(self, IdlModule, name.clone(), doc, pos, {
             definitions: Vec::new(),
-        };
+        });
         let mut defs = Vec::new();
         self.in_scope(&name, |p| p.definitions(&mut defs, false))?;
         m.definitions = defs;
         out.push(IdlDefinition::Module(m));
-        self.expect_punct(
-            "}",
-            &format!("to close module `{name}`"),
-            "every `{` needs its `}`",
-        )?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of module `{name}`"),
-            "write `};`",
-        )
+        self.close("module", &name, "every `{` needs its `}`")
     }
 
     fn structure(
@@ -767,34 +779,19 @@ impl Parser<'_> {
         self.expect_punct("{", &format!("after `struct {name}`"), "")?;
         let mut fields = Vec::new();
         let r = self.in_scope(&name, |p| p.members(&mut fields, "struct member"))?;
-        out.push(IdlDefinition::Struct(IdlStruct {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name: name.clone(),
-            doc,
-            pos,
-            file: self.file.clone(),
-            fields,
-        }));
+        out.push(IdlDefinition::Struct(
+            declared!(self, IdlStruct, name.clone(), doc, pos, {
+                fields,
+            }),
+        ));
         r?;
-        self.expect_punct("}", &format!("to close struct `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of struct `{name}`"),
-            "write `};`",
-        )
+        self.close("struct", &name, "")
     }
 
     fn forward(&self, name: String, doc: Option<Box<IdlDoc>>, pos: Pos, of: &str) -> IdlDefinition {
-        IdlDefinition::Forward(IdlForward {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name,
-            doc,
-            pos,
-            file: self.file.clone(),
+        IdlDefinition::Forward(declared!(self, IdlForward, name, doc, pos, {
             of: of.to_string(),
-        })
+        }))
     }
 
     fn exception(
@@ -808,22 +805,13 @@ impl Parser<'_> {
         self.expect_punct("{", &format!("after `exception {name}`"), "")?;
         let mut fields = Vec::new();
         let r = self.in_scope(&name, |p| p.members(&mut fields, "exception member"))?;
-        out.push(IdlDefinition::Exception(IdlException {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name: name.clone(),
-            doc,
-            pos,
-            file: self.file.clone(),
-            fields,
-        }));
+        out.push(IdlDefinition::Exception(
+            declared!(self, IdlException, name.clone(), doc, pos, {
+                fields,
+            }),
+        ));
         r?;
-        self.expect_punct("}", &format!("to close exception `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of exception `{name}`"),
-            "write `};`",
-        )
+        self.close("exception", &name, "")
     }
 
     /// Members up to (not including) the closing `}`.
@@ -911,23 +899,14 @@ impl Parser<'_> {
         self.expect_punct("{", &format!("to open union `{name}`"), "")?;
         let mut cases = Vec::new();
         let r = self.in_scope(&name, |p| p.union_cases(&mut cases))?;
-        out.push(IdlDefinition::Union(IdlUnion {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name: name.clone(),
-            doc,
-            pos,
-            file: self.file.clone(),
-            switch_type,
-            cases,
-        }));
+        out.push(IdlDefinition::Union(
+            declared!(self, IdlUnion, name.clone(), doc, pos, {
+                switch_type,
+                cases,
+            }),
+        ));
         r?;
-        self.expect_punct("}", &format!("to close union `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of union `{name}`"),
-            "write `};`",
-        )
+        self.close("union", &name, "")
     }
 
     fn union_cases(&mut self, cases: &mut Vec<IdlUnionCase>) -> PResult<()> {
@@ -1043,25 +1022,16 @@ impl Parser<'_> {
                 }
             }
         }
-        out.push(IdlDefinition::Enum(IdlEnum {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name: name.clone(),
-            doc,
-            pos,
-            file: self.file.clone(),
-            values,
-        }));
+        out.push(IdlDefinition::Enum(
+            declared!(self, IdlEnum, name.clone(), doc, pos, {
+                values,
+            }),
+        ));
         if result.is_err() {
             // The error is reported; skip the rest of the enumerators to the enum's own `}`.
             self.skip_to_close();
         }
-        self.expect_punct("}", &format!("to close enum `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of enum `{name}`"),
-            "write `};`",
-        )
+        self.close("enum", &name, "")
     }
 
     fn typedef(
@@ -1075,16 +1045,12 @@ impl Parser<'_> {
         let start = out.len();
         loop {
             let (name, _, array) = self.declarator("a type name")?;
-            out.push(IdlDefinition::Typedef(IdlTypedef {
-                scoped_name: self.scoped(&name),
-                repository_id: self.repo_id(&name),
-                name,
-                doc: doc.clone(),
-                pos,
-                file: self.file.clone(),
-                ty: ty.clone(),
-                array,
-            }));
+            out.push(IdlDefinition::Typedef(
+                declared!(self, IdlTypedef, name, doc.clone(), pos, {
+                    ty: ty.clone(),
+                    array,
+                }),
+            ));
             if !self.eat_punct(",") {
                 break;
             }
@@ -1124,17 +1090,11 @@ impl Parser<'_> {
         if let Some(v) = &value {
             self.consts.insert(scoped.clone(), v.clone());
         }
-        let mut c = IdlConst {
-            scoped_name: scoped,
-            repository_id: self.repo_id(&name),
-            name,
-            doc,
-            pos,
-            file: self.file.clone(),
+        let mut c = declared!(self, IdlConst, name, doc, pos, {
             ty,
             expr,
             value: value.and_then(to_const_value),
-        };
+        });
         if let Some(after) = self.take_after() {
             Self::merge_doc(&mut c.doc, &after);
         }
@@ -1169,28 +1129,17 @@ impl Parser<'_> {
             }
         }
         self.expect_punct("{", &format!("after `interface {name}`"), "")?;
-        let mut itf = IdlInterface {
-            scoped_name: self.scoped(&name),
-            repository_id: self.repo_id(&name),
-            name: name.clone(),
-            doc,
-            pos,
-            file: self.file.clone(),
+        let mut itf = declared!(self, IdlInterface, name.clone(), doc, pos, {
             modifier,
             bases,
             attributes: Vec::new(),
             operations: Vec::new(),
             definitions: Vec::new(),
-        };
+        });
         let r = self.in_scope(&name, |p| p.exports(&mut itf))?;
         out.push(IdlDefinition::Interface(itf));
         r?;
-        self.expect_punct("}", &format!("to close interface `{name}`"), "")?;
-        self.expect_punct(
-            ";",
-            &format!("after the `}}` of interface `{name}`"),
-            "write `};`",
-        )
+        self.close("interface", &name, "")
     }
 
     fn exports(&mut self, itf: &mut IdlInterface) -> PResult<()> {

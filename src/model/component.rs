@@ -101,48 +101,42 @@ pub enum ExtraKind {
     Key,
 }
 
-/// `rtcExt:Properties` / `"rtcExt::properties"`: a free name/value pair.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Property {
-    pub name: Option<Text>,
-    pub value: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rtcExt:Properties` / `"rtcExt::properties"`: a free name/value pair.
+    pub struct Property {
+        pub name: Option<Text>,
+        pub value: Option<Text>,
+    }
 }
 
-/// The whole profile (spec 2.2 `rtc_profile`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Profile {
-    /// `RTC:<vendor>:<category>:<name>:<version>`.
-    pub id: Option<Text>,
-    /// Version of the profile format (`0.2`, `0.3`, `1.0`).
-    pub version: Option<Text>,
-    pub basic_info: BasicInfo,
-    /// The 14 lifecycle actions, in spec order, as far as the profile lists them.
-    pub actions: Vec<Action>,
-    /// Position of the `Actions` element / key, when present.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub actions_pos: Option<Pos>,
-    /// `ConfigurationSet`; `None` when the profile has none.
-    pub configuration_set: Option<ConfigurationSet>,
-    pub data_ports: Vec<DataPort>,
-    pub service_ports: Vec<ServicePort>,
-    /// System parameters (spec 5.4).
-    pub parameters: Vec<Parameter>,
-    pub language: Option<Language>,
-    /// Values read under another writer's spelling (RTCBuilder 0.1, rtc-template) and mapped
-    /// to the field they mean; the JSON shows what was written.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub written_as: Vec<WrittenAs>,
-    /// Positions of the `id` and `version` attributes / keys.
-    #[serde(skip)]
-    pub attr_pos: AttrPos,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// The whole profile (spec 2.2 `rtc_profile`).
+    pub struct Profile {
+        /// `RTC:<vendor>:<category>:<name>:<version>`.
+        pub id: Option<Text>,
+        /// Version of the profile format (`0.2`, `0.3`, `1.0`).
+        pub version: Option<Text>,
+        pub basic_info: BasicInfo,
+        /// The 14 lifecycle actions, in spec order, as far as the profile lists them.
+        pub actions: Vec<Action>,
+        /// Position of the `Actions` element / key, when present.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub actions_pos: Option<Pos>,
+        /// `ConfigurationSet`; `None` when the profile has none.
+        pub configuration_set: Option<ConfigurationSet>,
+        pub data_ports: Vec<DataPort>,
+        pub service_ports: Vec<ServicePort>,
+        /// System parameters (spec 5.4).
+        pub parameters: Vec<Parameter>,
+        pub language: Option<Language>,
+        /// Values read under another writer's spelling (RTCBuilder 0.1, rtc-template) and mapped
+        /// to the field they mean; the JSON shows what was written.
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        pub written_as: Vec<WrittenAs>,
+        /// Positions of the `id` and `version` attributes / keys.
+        #[serde(skip)]
+        pub attr_pos: AttrPos,
+    }
 }
 
 /// A value a profile wrote under a spelling other than spec v0.2's, read as the field it means
@@ -347,54 +341,48 @@ impl<'a> IdParts<'a> {
     }
 }
 
-/// Basic information (spec 2.3.2) with its Document (2.4.1) and Extended (2.5.1) parts.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct BasicInfo {
-    pub name: Option<Text>,
-    pub component_type: Option<Text>,
-    pub activity_type: Option<Text>,
-    pub component_kind: Option<Text>,
-    pub rtc_type: Option<Text>,
-    pub category: Option<Text>,
-    pub description: Option<Text>,
-    pub execution_rate: Option<Text>,
-    pub execution_type: Option<Text>,
-    pub max_instances: Option<Text>,
-    pub vendor: Option<Text>,
-    pub version: Option<Text>,
-    #[serde(rename = "abstract")]
-    pub abstract_: Option<Text>,
-    pub hardware_profile: Option<Text>,
-    /// As written in XML (`xsd:dateTime`); YAML date maps are turned into the same ISO form.
-    pub creation_date: Option<Text>,
-    pub update_date: Option<Text>,
-    pub doc: Option<BasicDoc>,
-    pub comment: Option<Text>,
-    pub save_project: Option<Text>,
-    pub version_up_logs: Vec<Text>,
-    pub properties: Vec<Property>,
-    /// Positions of the attributes / keys, for the rules.
-    #[serde(skip)]
-    pub attr_pos: AttrPos,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// Basic information (spec 2.3.2) with its Document (2.4.1) and Extended (2.5.1) parts.
+    pub struct BasicInfo {
+        pub name: Option<Text>,
+        pub component_type: Option<Text>,
+        pub activity_type: Option<Text>,
+        pub component_kind: Option<Text>,
+        pub rtc_type: Option<Text>,
+        pub category: Option<Text>,
+        pub description: Option<Text>,
+        pub execution_rate: Option<Text>,
+        pub execution_type: Option<Text>,
+        pub max_instances: Option<Text>,
+        pub vendor: Option<Text>,
+        pub version: Option<Text>,
+        #[serde(rename = "abstract")]
+        pub abstract_: Option<Text>,
+        pub hardware_profile: Option<Text>,
+        /// As written in XML (`xsd:dateTime`); YAML date maps are turned into the same ISO form.
+        pub creation_date: Option<Text>,
+        pub update_date: Option<Text>,
+        pub doc: Option<BasicDoc>,
+        pub comment: Option<Text>,
+        pub save_project: Option<Text>,
+        pub version_up_logs: Vec<Text>,
+        pub properties: Vec<Property>,
+        /// Positions of the attributes / keys, for the rules.
+        #[serde(skip)]
+        pub attr_pos: AttrPos,
+    }
 }
 
-/// Document Profile of the component (spec 2.4.2).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct BasicDoc {
-    pub description: Option<Text>,
-    pub inout: Option<Text>,
-    pub algorithm: Option<Text>,
-    pub creator: Option<Text>,
-    pub license: Option<Text>,
-    pub reference: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// Document Profile of the component (spec 2.4.2).
+    pub struct BasicDoc {
+        pub description: Option<Text>,
+        pub inout: Option<Text>,
+        pub algorithm: Option<Text>,
+        pub creator: Option<Text>,
+        pub license: Option<Text>,
+        pub reference: Option<Text>,
+    }
 }
 
 /// The lifecycle callbacks (spec 2.3.3), in spec order.
@@ -517,6 +505,15 @@ pub struct Action {
     pub extra: Vec<Extra>,
 }
 
+impl super::Located for Action {
+    fn pos_mut(&mut self) -> &mut Pos {
+        &mut self.pos
+    }
+    fn extra_mut(&mut self) -> &mut Vec<Extra> {
+        &mut self.extra
+    }
+}
+
 impl Action {
     /// Whether the profile marks this callback as implemented (absent or invalid = false).
     pub fn is_implemented(&self) -> bool {
@@ -524,46 +521,37 @@ impl Action {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ActionDoc {
-    pub description: Option<Text>,
-    pub pre_condition: Option<Text>,
-    pub post_condition: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    pub struct ActionDoc {
+        pub description: Option<Text>,
+        pub pre_condition: Option<Text>,
+        pub post_condition: Option<Text>,
+    }
 }
 
-/// `ConfigurationSet` (spec 2.3.5).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ConfigurationSet {
-    pub configurations: Vec<Configuration>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `ConfigurationSet` (spec 2.3.5).
+    pub struct ConfigurationSet {
+        pub configurations: Vec<Configuration>,
+    }
 }
 
-/// One configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Configuration {
-    pub name: Option<Text>,
-    #[serde(rename = "type")]
-    pub type_: Option<Text>,
-    pub default_value: Option<Text>,
-    pub unit: Option<Text>,
-    pub constraint: Option<Constraint>,
-    pub doc: Option<ConfigurationDoc>,
-    pub comment: Option<Text>,
-    pub variable_name: Option<Text>,
-    pub properties: Vec<Property>,
-    #[serde(skip)]
-    pub attr_pos: AttrPos,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// One configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
+    pub struct Configuration {
+        pub name: Option<Text>,
+        #[serde(rename = "type")]
+        pub type_: Option<Text>,
+        pub default_value: Option<Text>,
+        pub unit: Option<Text>,
+        pub constraint: Option<Constraint>,
+        pub doc: Option<ConfigurationDoc>,
+        pub comment: Option<Text>,
+        pub variable_name: Option<Text>,
+        pub properties: Vec<Property>,
+        #[serde(skip)]
+        pub attr_pos: AttrPos,
+    }
 }
 
 impl Configuration {
@@ -578,48 +566,42 @@ impl Configuration {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ConfigurationDoc {
-    pub dataname: Option<Text>,
-    pub default_value: Option<Text>,
-    pub description: Option<Text>,
-    pub unit: Option<Text>,
-    pub range: Option<Text>,
-    pub constraint: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    pub struct ConfigurationDoc {
+        pub dataname: Option<Text>,
+        pub default_value: Option<Text>,
+        pub description: Option<Text>,
+        pub unit: Option<Text>,
+        pub range: Option<Text>,
+        pub constraint: Option<Text>,
+    }
 }
 
-/// A data port (spec 2.3.7, 2.4.5 doc, 2.5.3 ext); also FSM `EventPort`s with their events.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct DataPort {
-    /// `DataInPort`, `DataOutPort` or `EventPort` as written.
-    pub port_type: Option<Text>,
-    pub name: Option<Text>,
-    #[serde(rename = "type")]
-    pub type_: Option<Text>,
-    pub idl_file: Option<Text>,
-    pub interface_type: Option<Text>,
-    pub dataflow_type: Option<Text>,
-    pub subscription_type: Option<Text>,
-    pub unit: Option<Text>,
-    pub constraint: Option<Constraint>,
-    pub doc: Option<DataPortDoc>,
-    pub comment: Option<Text>,
-    pub variable_name: Option<Text>,
-    /// `rtcExt:position` as written (`LEFT`, `left`, …).
-    pub position: Option<Text>,
-    pub properties: Vec<Property>,
-    /// FSM events carried by an `EventPort` (RTCBuilder 2.x).
-    pub events: Vec<Event>,
-    #[serde(skip)]
-    pub attr_pos: AttrPos,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A data port (spec 2.3.7, 2.4.5 doc, 2.5.3 ext); also FSM `EventPort`s with their events.
+    pub struct DataPort {
+        /// `DataInPort`, `DataOutPort` or `EventPort` as written.
+        pub port_type: Option<Text>,
+        pub name: Option<Text>,
+        #[serde(rename = "type")]
+        pub type_: Option<Text>,
+        pub idl_file: Option<Text>,
+        pub interface_type: Option<Text>,
+        pub dataflow_type: Option<Text>,
+        pub subscription_type: Option<Text>,
+        pub unit: Option<Text>,
+        pub constraint: Option<Constraint>,
+        pub doc: Option<DataPortDoc>,
+        pub comment: Option<Text>,
+        pub variable_name: Option<Text>,
+        /// `rtcExt:position` as written (`LEFT`, `left`, …).
+        pub position: Option<Text>,
+        pub properties: Vec<Property>,
+        /// FSM events carried by an `EventPort` (RTCBuilder 2.x).
+        pub events: Vec<Event>,
+        #[serde(skip)]
+        pub attr_pos: AttrPos,
+    }
 }
 
 /// Direction of a data port.
@@ -652,38 +634,32 @@ impl DataPort {
     }
 }
 
-/// An FSM event of an `EventPort`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Event {
-    pub name: Option<Text>,
-    #[serde(rename = "type")]
-    pub type_: Option<Text>,
-    pub source: Option<Text>,
-    pub target: Option<Text>,
-    pub condition: Option<Text>,
-    pub doc: Option<DataPortDoc>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// An FSM event of an `EventPort`.
+    pub struct Event {
+        pub name: Option<Text>,
+        #[serde(rename = "type")]
+        pub type_: Option<Text>,
+        pub source: Option<Text>,
+        pub target: Option<Text>,
+        pub condition: Option<Text>,
+        pub doc: Option<DataPortDoc>,
+    }
 }
 
-/// Document Profile of a data port (spec 2.4.6). `occurrence` also accepts RTCBuilder's
-/// `occerrence` spelling.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct DataPortDoc {
-    pub description: Option<Text>,
-    #[serde(rename = "type")]
-    pub type_: Option<Text>,
-    pub number: Option<Text>,
-    pub semantics: Option<Text>,
-    pub unit: Option<Text>,
-    pub occurrence: Option<Text>,
-    pub operation: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// Document Profile of a data port (spec 2.4.6). `occurrence` also accepts RTCBuilder's
+    /// `occerrence` spelling.
+    pub struct DataPortDoc {
+        pub description: Option<Text>,
+        #[serde(rename = "type")]
+        pub type_: Option<Text>,
+        pub number: Option<Text>,
+        pub semantics: Option<Text>,
+        pub unit: Option<Text>,
+        pub occurrence: Option<Text>,
+        pub operation: Option<Text>,
+    }
 }
 
 /// The edge of the component box a port is drawn on.
@@ -709,22 +685,19 @@ impl PortSide {
     }
 }
 
-/// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ServicePort {
-    pub name: Option<Text>,
-    pub interfaces: Vec<ServiceInterface>,
-    pub trans_methods: Vec<TransMethod>,
-    pub doc: Option<ServicePortDoc>,
-    pub comment: Option<Text>,
-    pub position: Option<Text>,
-    pub properties: Vec<Property>,
-    #[serde(skip)]
-    pub attr_pos: AttrPos,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
+    pub struct ServicePort {
+        pub name: Option<Text>,
+        pub interfaces: Vec<ServiceInterface>,
+        pub trans_methods: Vec<TransMethod>,
+        pub doc: Option<ServicePortDoc>,
+        pub comment: Option<Text>,
+        pub position: Option<Text>,
+        pub properties: Vec<Property>,
+        #[serde(skip)]
+        pub attr_pos: AttrPos,
+    }
 }
 
 impl ServicePort {
@@ -734,47 +707,38 @@ impl ServicePort {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ServicePortDoc {
-    pub description: Option<Text>,
-    pub ifdescription: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    pub struct ServicePortDoc {
+        pub description: Option<Text>,
+        pub ifdescription: Option<Text>,
+    }
 }
 
-/// `TransMethods` (spec 2.3.10).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct TransMethod {
-    pub kind: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `TransMethods` (spec 2.3.10).
+    pub struct TransMethod {
+        pub kind: Option<Text>,
+    }
 }
 
-/// A service interface of a service port (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ServiceInterface {
-    pub name: Option<Text>,
-    #[serde(rename = "type")]
-    pub type_: Option<Text>,
-    /// `Provided` or `Required` as written.
-    pub direction: Option<Text>,
-    pub instance_name: Option<Text>,
-    pub idl_file: Option<Text>,
-    pub path: Option<Text>,
-    pub doc: Option<ServiceInterfaceDoc>,
-    pub comment: Option<Text>,
-    pub variable_name: Option<Text>,
-    pub properties: Vec<Property>,
-    #[serde(skip)]
-    pub attr_pos: AttrPos,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A service interface of a service port (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
+    pub struct ServiceInterface {
+        pub name: Option<Text>,
+        #[serde(rename = "type")]
+        pub type_: Option<Text>,
+        /// `Provided` or `Required` as written.
+        pub direction: Option<Text>,
+        pub instance_name: Option<Text>,
+        pub idl_file: Option<Text>,
+        pub path: Option<Text>,
+        pub doc: Option<ServiceInterfaceDoc>,
+        pub comment: Option<Text>,
+        pub variable_name: Option<Text>,
+        pub properties: Vec<Property>,
+        #[serde(skip)]
+        pub attr_pos: AttrPos,
+    }
 }
 
 /// Provided or required, for service interfaces.
@@ -802,68 +766,53 @@ impl ServiceInterface {
     }
 }
 
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct ServiceInterfaceDoc {
-    pub description: Option<Text>,
-    pub doc_argument: Option<Text>,
-    pub doc_return: Option<Text>,
-    pub doc_exception: Option<Text>,
-    pub doc_pre_condition: Option<Text>,
-    pub doc_post_condition: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    pub struct ServiceInterfaceDoc {
+        pub description: Option<Text>,
+        pub doc_argument: Option<Text>,
+        pub doc_return: Option<Text>,
+        pub doc_exception: Option<Text>,
+        pub doc_pre_condition: Option<Text>,
+        pub doc_post_condition: Option<Text>,
+    }
 }
 
-/// A system parameter (spec 2.3.11, 5.4).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Parameter {
-    pub name: Option<Text>,
-    pub default_value: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A system parameter (spec 2.3.11, 5.4).
+    pub struct Parameter {
+        pub name: Option<Text>,
+        pub default_value: Option<Text>,
+    }
 }
 
-/// Implementation language (spec 2.3.12) with target environments (2.5.6).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Language {
-    pub kind: Option<Text>,
-    pub targets: Vec<Target>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// Implementation language (spec 2.3.12) with target environments (2.5.6).
+    pub struct Language {
+        pub kind: Option<Text>,
+        pub targets: Vec<Target>,
+    }
 }
 
-/// A target environment (spec 2.5.7).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Target {
-    pub lang_version: Option<Text>,
-    pub os: Option<Text>,
-    pub os_versions: Vec<Text>,
-    pub other: Option<Text>,
-    pub cpus: Vec<Text>,
-    pub cpu_other: Option<Text>,
-    pub libraries: Vec<Library>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A target environment (spec 2.5.7).
+    pub struct Target {
+        pub lang_version: Option<Text>,
+        pub os: Option<Text>,
+        pub os_versions: Vec<Text>,
+        pub other: Option<Text>,
+        pub cpus: Vec<Text>,
+        pub cpu_other: Option<Text>,
+        pub libraries: Vec<Library>,
+    }
 }
 
-/// A library of a target environment (spec 2.5.8). `name` also accepts the PIM's `path`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default, rename_all = "camelCase")]
-pub struct Library {
-    pub name: Option<Text>,
-    pub version: Option<Text>,
-    pub other: Option<Text>,
-    pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A library of a target environment (spec 2.5.8). `name` also accepts the PIM's `path`.
+    pub struct Library {
+        pub name: Option<Text>,
+        pub version: Option<Text>,
+        pub other: Option<Text>,
+    }
 }
 
 /// A constraint (spec 2.3.17): a unit, an ordered list, or a keyed hash of constraints.

@@ -57,14 +57,12 @@ pub struct FieldDef {
 }
 
 /// A node of the model with the fields of the table.
-pub trait Fields {
+pub trait Fields: super::Located {
     const NODE: Node;
     /// The field `f` of this node (`None` for a field of another node).
     fn slot(&mut self, f: Field) -> Option<&mut Option<Text>>;
     /// The value of field `f` of this node (`None` for a field of another node).
     fn value(&self, f: Field) -> Option<&Option<Text>>;
-    /// The node's unknown values.
-    fn extra_mut(&mut self) -> &mut Vec<Extra>;
     /// The positions of its attributes / keys, on the nodes that keep them.
     fn attr_pos(&mut self) -> Option<&mut AttrPos> {
         None
@@ -156,9 +154,6 @@ macro_rules! table {
                     #[allow(unreachable_patterns)]
                     _ => None,
                 }
-            }
-            fn extra_mut(&mut self) -> &mut Vec<Extra> {
-                &mut self.extra
             }
             $(fn attr_pos(&mut self) -> Option<&mut AttrPos> {
                 let _ = stringify!($pos);

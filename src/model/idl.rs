@@ -13,6 +13,51 @@ fn is_false(b: &bool) -> bool {
     !*b
 }
 
+/// Declares a kind of IDL declaration: the struct with its derives and, before the fields
+/// written, the six every declaration starts with.
+macro_rules! declaration {
+    ($(#[$meta:meta])* pub struct $name:ident { $($fields:tt)* }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+        #[serde(rename_all = "camelCase")]
+        pub struct $name {
+            /// The name as written (escape underscore removed).
+            pub name: String,
+            /// The scoped name without leading `::` (`RTC::TimedLong`).
+            pub scoped_name: String,
+            /// The repository id (`IDL:RTC/TimedLong:1.0`).
+            pub repository_id: String,
+            /// The doc comment attached to the declaration.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub doc: Option<Box<IdlDoc>>,
+            /// Where the declaration starts.
+            pub pos: Pos,
+            /// The display path of the file it is in.
+            pub file: String,
+            $($fields)*
+        }
+    };
+}
+
+/// `$value` of whichever declaration `$def` holds, bound to `$d` (every kind has the field).
+macro_rules! each_kind {
+    ($def:expr, $d:ident => $value:expr) => {
+        match $def {
+            IdlDefinition::Module($d) => $value,
+            IdlDefinition::Struct($d) => $value,
+            IdlDefinition::Union($d) => $value,
+            IdlDefinition::Enum($d) => $value,
+            IdlDefinition::Typedef($d) => $value,
+            IdlDefinition::Const($d) => $value,
+            IdlDefinition::Interface($d) => $value,
+            IdlDefinition::Exception($d) => $value,
+            IdlDefinition::Forward($d) => $value,
+            IdlDefinition::Native($d) => $value,
+            IdlDefinition::Skipped($d) => $value,
+        }
+    };
+}
+
 /// One IDL source file as read.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
@@ -83,67 +128,19 @@ pub enum IdlDefinition {
 impl IdlDefinition {
     /// The declared name (as written, escape underscore removed).
     pub fn name(&self) -> &str {
-        match self {
-            IdlDefinition::Module(d) => &d.name,
-            IdlDefinition::Struct(d) => &d.name,
-            IdlDefinition::Union(d) => &d.name,
-            IdlDefinition::Enum(d) => &d.name,
-            IdlDefinition::Typedef(d) => &d.name,
-            IdlDefinition::Const(d) => &d.name,
-            IdlDefinition::Interface(d) => &d.name,
-            IdlDefinition::Exception(d) => &d.name,
-            IdlDefinition::Forward(d) => &d.name,
-            IdlDefinition::Native(d) => &d.name,
-            IdlDefinition::Skipped(d) => &d.name,
-        }
+        each_kind!(self, d => &d.name)
     }
     /// The scoped name without leading `::` (`RTC::TimedLong`).
     pub fn scoped_name(&self) -> &str {
-        match self {
-            IdlDefinition::Module(d) => &d.scoped_name,
-            IdlDefinition::Struct(d) => &d.scoped_name,
-            IdlDefinition::Union(d) => &d.scoped_name,
-            IdlDefinition::Enum(d) => &d.scoped_name,
-            IdlDefinition::Typedef(d) => &d.scoped_name,
-            IdlDefinition::Const(d) => &d.scoped_name,
-            IdlDefinition::Interface(d) => &d.scoped_name,
-            IdlDefinition::Exception(d) => &d.scoped_name,
-            IdlDefinition::Forward(d) => &d.scoped_name,
-            IdlDefinition::Native(d) => &d.scoped_name,
-            IdlDefinition::Skipped(d) => &d.scoped_name,
-        }
+        each_kind!(self, d => &d.scoped_name)
     }
     /// The repository id (`IDL:RTC/TimedLong:1.0`); empty for modules' reopenings never.
     pub fn repository_id(&self) -> &str {
-        match self {
-            IdlDefinition::Module(d) => &d.repository_id,
-            IdlDefinition::Struct(d) => &d.repository_id,
-            IdlDefinition::Union(d) => &d.repository_id,
-            IdlDefinition::Enum(d) => &d.repository_id,
-            IdlDefinition::Typedef(d) => &d.repository_id,
-            IdlDefinition::Const(d) => &d.repository_id,
-            IdlDefinition::Interface(d) => &d.repository_id,
-            IdlDefinition::Exception(d) => &d.repository_id,
-            IdlDefinition::Forward(d) => &d.repository_id,
-            IdlDefinition::Native(d) => &d.repository_id,
-            IdlDefinition::Skipped(d) => &d.repository_id,
-        }
+        each_kind!(self, d => &d.repository_id)
     }
     /// Where the declaration starts.
     pub fn pos(&self) -> Pos {
-        match self {
-            IdlDefinition::Module(d) => d.pos,
-            IdlDefinition::Struct(d) => d.pos,
-            IdlDefinition::Union(d) => d.pos,
-            IdlDefinition::Enum(d) => d.pos,
-            IdlDefinition::Typedef(d) => d.pos,
-            IdlDefinition::Const(d) => d.pos,
-            IdlDefinition::Interface(d) => d.pos,
-            IdlDefinition::Exception(d) => d.pos,
-            IdlDefinition::Forward(d) => d.pos,
-            IdlDefinition::Native(d) => d.pos,
-            IdlDefinition::Skipped(d) => d.pos,
-        }
+        each_kind!(self, d => d.pos)
     }
     /// The doc comment attached to the declaration.
     pub fn doc(&self) -> Option<&IdlDoc> {
@@ -187,32 +184,18 @@ impl IdlDefinition {
     }
 }
 
-/// `module Name { … };`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlModule {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    pub definitions: Vec<IdlDefinition>,
+declaration! {
+    /// `module Name { … };`
+    pub struct IdlModule {
+        pub definitions: Vec<IdlDefinition>,
+    }
 }
 
-/// `struct Name { members };`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlStruct {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    pub fields: Vec<IdlField>,
+declaration! {
+    /// `struct Name { members };`
+    pub struct IdlStruct {
+        pub fields: Vec<IdlField>,
+    }
 }
 
 /// A struct or exception member, or the element of a union case: `Type name[dims];`.
@@ -239,19 +222,12 @@ pub struct IdlBound {
     pub value: Option<u64>,
 }
 
-/// `union Name switch (Type) { case …: member; … };`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlUnion {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    pub switch_type: IdlType,
-    pub cases: Vec<IdlUnionCase>,
+declaration! {
+    /// `union Name switch (Type) { case …: member; … };`
+    pub struct IdlUnion {
+        pub switch_type: IdlType,
+        pub cases: Vec<IdlUnionCase>,
+    }
 }
 
 /// One case of a union: its labels (expressions as written; `default` for the default label)
@@ -265,18 +241,11 @@ pub struct IdlUnionCase {
     pub field: IdlField,
 }
 
-/// `enum Name { A, B };`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlEnum {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    pub values: Vec<IdlEnumerator>,
+declaration! {
+    /// `enum Name { A, B };`
+    pub struct IdlEnum {
+        pub values: Vec<IdlEnumerator>,
+    }
 }
 
 /// One enumerator with its doc comment.
@@ -289,41 +258,27 @@ pub struct IdlEnumerator {
     pub pos: Pos,
 }
 
-/// `typedef Type Name[dims];` (one entry per declarator).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlTypedef {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    #[serde(rename = "type")]
-    pub ty: IdlType,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub array: Vec<IdlBound>,
+declaration! {
+    /// `typedef Type Name[dims];` (one entry per declarator).
+    pub struct IdlTypedef {
+        #[serde(rename = "type")]
+        pub ty: IdlType,
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        pub array: Vec<IdlBound>,
+    }
 }
 
-/// `const Type Name = expression;`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlConst {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    #[serde(rename = "type")]
-    pub ty: IdlType,
-    /// The expression as written (tokens joined).
-    pub expr: String,
-    /// Its value, when it evaluates in this file (a constant of another file is not followed).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub value: Option<IdlConstValue>,
+declaration! {
+    /// `const Type Name = expression;`
+    pub struct IdlConst {
+        #[serde(rename = "type")]
+        pub ty: IdlType,
+        /// The expression as written (tokens joined).
+        pub expr: String,
+        /// Its value, when it evaluates in this file (a constant of another file is not followed).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub value: Option<IdlConstValue>,
+    }
 }
 
 /// An evaluated constant.
@@ -341,30 +296,23 @@ pub enum IdlConstValue {
     Enumerator(String),
 }
 
-/// `interface Name : Bases { exports };`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlInterface {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    /// `abstract` or `local`, when written.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub modifier: Option<String>,
-    /// Base interfaces, as written and resolved.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub bases: Vec<IdlType>,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub attributes: Vec<IdlAttribute>,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub operations: Vec<IdlOperation>,
-    /// Types, constants and exceptions declared inside the interface.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub definitions: Vec<IdlDefinition>,
+declaration! {
+    /// `interface Name : Bases { exports };`
+    pub struct IdlInterface {
+        /// `abstract` or `local`, when written.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub modifier: Option<String>,
+        /// Base interfaces, as written and resolved.
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        pub bases: Vec<IdlType>,
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        pub attributes: Vec<IdlAttribute>,
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        pub operations: Vec<IdlOperation>,
+        /// Types, constants and exceptions declared inside the interface.
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        pub definitions: Vec<IdlDefinition>,
+    }
 }
 
 /// `[readonly] attribute Type name;`
@@ -428,46 +376,25 @@ pub enum IdlParamDirection {
     Inout,
 }
 
-/// `exception Name { members };`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlException {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    pub fields: Vec<IdlField>,
+declaration! {
+    /// `exception Name { members };`
+    pub struct IdlException {
+        pub fields: Vec<IdlField>,
+    }
 }
 
-/// A forward declaration: `interface X;` (also `abstract`/`local`), `struct X;`, `union X;`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlForward {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
-    /// `interface`, `struct` or `union`.
-    pub of: String,
+declaration! {
+    /// A forward declaration: `interface X;` (also `abstract`/`local`), `struct X;`, `union X;`.
+    pub struct IdlForward {
+        /// `interface`, `struct` or `union`.
+        pub of: String,
+    }
 }
 
-/// `native Name;`
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct IdlNative {
-    pub name: String,
-    pub scoped_name: String,
-    pub repository_id: String,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub doc: Option<Box<IdlDoc>>,
-    pub pos: Pos,
-    pub file: String,
+declaration! {
+    /// `native Name;`
+    pub struct IdlNative {
+    }
 }
 
 /// A declaration skipped as a whole (`valuetype`, `eventtype`, `component`, `home`, `import`,

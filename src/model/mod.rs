@@ -11,6 +11,41 @@
 //! Readers (`crate::parse`, `crate::idl`) fill them; the catalogue, checks, diff and renderers
 //! read them.
 
+/// Declares a node of a document model: the struct with the derives and serde attributes every
+/// node has (each field defaulted when absent from `catalog.json`, JSON names in camelCase) and,
+/// after the fields written, the two every node ends with: `pos`, where its element or key
+/// starts, and `extra`, the values the schema does not define (left out of the JSON when empty),
+/// both also reachable through [`Located`] for the readers.
+macro_rules! node {
+    ($(#[$meta:meta])* pub struct $name:ident { $($fields:tt)* }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+        #[serde(default, rename_all = "camelCase")]
+        pub struct $name {
+            $($fields)*
+            pub pos: $crate::model::Pos,
+            #[serde(skip_serializing_if = "Vec::is_empty")]
+            pub extra: Vec<$crate::model::Extra>,
+        }
+
+        impl $crate::model::Located for $name {
+            fn pos_mut(&mut self) -> &mut $crate::model::Pos {
+                &mut self.pos
+            }
+            fn extra_mut(&mut self) -> &mut Vec<$crate::model::Extra> {
+                &mut self.extra
+            }
+        }
+    };
+}
+
+/// What every node of a document model has, for the readers that fill any node: where its
+/// element or key starts, and the values the schema does not define.
+pub trait Located {
+    fn pos_mut(&mut self) -> &mut Pos;
+    fn extra_mut(&mut self) -> &mut Vec<Extra>;
+}
+
 pub mod component;
 pub mod fields;
 pub mod idl;

@@ -12,39 +12,36 @@
 use crate::model::{non_empty, parse_bool, Extra, Pos, Text};
 use serde::{Deserialize, Serialize};
 
-/// The whole system (`rts:RtsProfile`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct RtSystem {
-    /// `RTSystem:<vendor>:<name>:<version>` as written.
-    pub id: Option<Text>,
-    /// The parts of `id`, when they can be told apart (also from damaged ids).
-    pub id_parts: Option<SystemIdParts>,
-    /// Version of the profile format (`0.2`).
-    pub version: Option<Text>,
-    #[serde(rename = "abstract")]
-    pub abstract_: Option<Text>,
-    /// As written (`xsd:dateTime`); YAML date maps are turned into the same ISO form.
-    pub creation_date: Option<Text>,
-    pub update_date: Option<Text>,
-    /// `rtsExt:comment`.
-    pub comment: Option<Text>,
-    /// `rtsExt:VersionUpLogs`, in document order.
-    pub version_up_logs: Vec<Text>,
-    /// `rtsExt:Properties` of the system.
-    pub properties: Vec<SystemProperty>,
-    /// `rtsExt:Systems`: sub-systems by path.
-    pub systems: Vec<SubSystem>,
-    /// `rts:Components`, one per component instance, in document order.
-    pub components: Vec<SystemComponent>,
-    pub groups: Vec<Group>,
-    pub data_port_connectors: Vec<DataPortConnector>,
-    pub service_port_connectors: Vec<ServicePortConnector>,
-    /// `StartUp`, `ShutDown`, `Activation`, …: in [`OrderKind`] order (then document order).
-    pub orders: Vec<Order>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// The whole system (`rts:RtsProfile`).
+    pub struct RtSystem {
+        /// `RTSystem:<vendor>:<name>:<version>` as written.
+        pub id: Option<Text>,
+        /// The parts of `id`, when they can be told apart (also from damaged ids).
+        pub id_parts: Option<SystemIdParts>,
+        /// Version of the profile format (`0.2`).
+        pub version: Option<Text>,
+        #[serde(rename = "abstract")]
+        pub abstract_: Option<Text>,
+        /// As written (`xsd:dateTime`); YAML date maps are turned into the same ISO form.
+        pub creation_date: Option<Text>,
+        pub update_date: Option<Text>,
+        /// `rtsExt:comment`.
+        pub comment: Option<Text>,
+        /// `rtsExt:VersionUpLogs`, in document order.
+        pub version_up_logs: Vec<Text>,
+        /// `rtsExt:Properties` of the system.
+        pub properties: Vec<SystemProperty>,
+        /// `rtsExt:Systems`: sub-systems by path.
+        pub systems: Vec<SubSystem>,
+        /// `rts:Components`, one per component instance, in document order.
+        pub components: Vec<SystemComponent>,
+        pub groups: Vec<Group>,
+        pub data_port_connectors: Vec<DataPortConnector>,
+        pub service_port_connectors: Vec<ServicePortConnector>,
+        /// `StartUp`, `ShutDown`, `Activation`, …: in [`OrderKind`] order (then document order).
+        pub orders: Vec<Order>,
+    }
 }
 
 /// How an id was read.
@@ -231,18 +228,15 @@ fn looks_like_version(s: &str) -> bool {
         && s.bytes().any(|b| b.is_ascii_digit())
 }
 
-/// `rtsExt:Properties` / `"rtsExt::properties"`: a free name/value pair, with the host-data flag.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct SystemProperty {
-    pub name: Option<Text>,
-    pub value: Option<Text>,
-    /// Host names, IORs and CORBA endpoints of the machine the system was saved on: not
-    /// published by default. See [`is_private_property`].
-    pub private: bool,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rtsExt:Properties` / `"rtsExt::properties"`: a free name/value pair, with the host-data flag.
+    pub struct SystemProperty {
+        pub name: Option<Text>,
+        pub value: Option<Text>,
+        /// Host names, IORs and CORBA endpoints of the machine the system was saved on: not
+        /// published by default. See [`is_private_property`].
+        pub private: bool,
+    }
 }
 
 impl SystemProperty {
@@ -333,46 +327,40 @@ fn is_endpoint(v: &str) -> bool {
     ipv4 || host.bytes().any(|b| b.is_ascii_alphabetic())
 }
 
-/// `rtsExt:Systems`: a sub-system by path.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct SubSystem {
-    pub path: Option<Text>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rtsExt:Systems`: a sub-system by path.
+    pub struct SubSystem {
+        pub path: Option<Text>,
+    }
 }
 
-/// One component instance of the system (`rts:Components`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct SystemComponent {
-    /// The component's `RTC:…` id, as written (the same string as in its RTC.xml).
-    pub id: Option<Text>,
-    pub id_parts: Option<ComponentIdParts>,
-    pub instance_name: Option<Text>,
-    /// Naming path (`localhost:2809/X0.rtc`) or file URI.
-    pub path_uri: Option<Text>,
-    pub active_configuration_set: Option<Text>,
-    /// `true` / `false` as written.
-    pub is_required: Option<Text>,
-    /// `None`, `PeriodicECShared`, `PeriodicStateShared`, `Grouping`, `FsmECShared`,
-    /// `FsmStateShared` as written.
-    pub composite_type: Option<Text>,
-    pub comment: Option<Text>,
-    /// `rtsExt:visible` as written.
-    pub visible: Option<Text>,
-    pub data_ports: Vec<SystemPort>,
-    pub service_ports: Vec<SystemPort>,
-    pub configuration_sets: Vec<SystemConfigurationSet>,
-    pub execution_contexts: Vec<ExecutionContext>,
-    /// Members of a composite component.
-    pub participants: Vec<TargetComponent>,
-    pub location: Option<Location>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// One component instance of the system (`rts:Components`).
+    pub struct SystemComponent {
+        /// The component's `RTC:…` id, as written (the same string as in its RTC.xml).
+        pub id: Option<Text>,
+        pub id_parts: Option<ComponentIdParts>,
+        pub instance_name: Option<Text>,
+        /// Naming path (`localhost:2809/X0.rtc`) or file URI.
+        pub path_uri: Option<Text>,
+        pub active_configuration_set: Option<Text>,
+        /// `true` / `false` as written.
+        pub is_required: Option<Text>,
+        /// `None`, `PeriodicECShared`, `PeriodicStateShared`, `Grouping`, `FsmECShared`,
+        /// `FsmStateShared` as written.
+        pub composite_type: Option<Text>,
+        pub comment: Option<Text>,
+        /// `rtsExt:visible` as written.
+        pub visible: Option<Text>,
+        pub data_ports: Vec<SystemPort>,
+        pub service_ports: Vec<SystemPort>,
+        pub configuration_sets: Vec<SystemConfigurationSet>,
+        pub execution_contexts: Vec<ExecutionContext>,
+        /// Members of a composite component.
+        pub participants: Vec<TargetComponent>,
+        pub location: Option<Location>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
 impl SystemComponent {
@@ -392,20 +380,17 @@ impl SystemComponent {
     }
 }
 
-/// A data or service port of an instance (`rts:DataPorts` / `rts:ServicePorts`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct SystemPort {
-    /// As written: `Instance0.port` (RTSystemEditor) or `port` (other writers).
-    pub name: Option<Text>,
-    /// The port's own name, without the `<instanceName>.` prefix.
-    pub short_name: Option<Text>,
-    pub comment: Option<Text>,
-    pub visible: Option<Text>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A data or service port of an instance (`rts:DataPorts` / `rts:ServicePorts`).
+    pub struct SystemPort {
+        /// As written: `Instance0.port` (RTSystemEditor) or `port` (other writers).
+        pub name: Option<Text>,
+        /// The port's own name, without the `<instanceName>.` prefix.
+        pub short_name: Option<Text>,
+        pub comment: Option<Text>,
+        pub visible: Option<Text>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
 /// A port name without its `<instance>.` prefix (RTSystemEditor writes `Instance0.port`); other
@@ -421,19 +406,16 @@ pub fn short_port_name<'a>(name: &'a str, instance: Option<&str>) -> &'a str {
     }
 }
 
-/// `rts:ConfigurationSets`: the configuration of an instance, or a pseudo set.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct SystemConfigurationSet {
-    pub id: Option<Text>,
-    /// A set RTSystemEditor keeps for its own use, not a configuration: `__widget__` (editor
-    /// widgets), `__constraints__` (value constraints), `__type__` (parameter types) — any id
-    /// of the form `__name__`.
-    pub pseudo: bool,
-    pub configuration_data: Vec<ConfigurationData>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:ConfigurationSets`: the configuration of an instance, or a pseudo set.
+    pub struct SystemConfigurationSet {
+        pub id: Option<Text>,
+        /// A set RTSystemEditor keeps for its own use, not a configuration: `__widget__` (editor
+        /// widgets), `__constraints__` (value constraints), `__type__` (parameter types) — any id
+        /// of the form `__name__`.
+        pub pseudo: bool,
+        pub configuration_data: Vec<ConfigurationData>,
+    }
 }
 
 /// Whether a configuration set id names a pseudo set (`__widget__`, `__constraints__`, …).
@@ -442,61 +424,49 @@ pub fn is_pseudo_set(id: &str) -> bool {
     id.len() > 4 && id.starts_with("__") && id.ends_with("__")
 }
 
-/// `rts:ConfigurationData`: one parameter value.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct ConfigurationData {
-    pub name: Option<Text>,
-    pub data: Option<Text>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:ConfigurationData`: one parameter value.
+    pub struct ConfigurationData {
+        pub name: Option<Text>,
+        pub data: Option<Text>,
+    }
 }
 
-/// `rts:ExecutionContexts`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct ExecutionContext {
-    pub id: Option<Text>,
-    /// `PERIODIC`, `EVENT_DRIVEN`, `PeriodicExecutionContext`, … as written.
-    pub kind: Option<Text>,
-    /// Hz, as written (`1000.0`).
-    pub rate: Option<Text>,
-    pub participants: Vec<TargetComponent>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:ExecutionContexts`.
+    pub struct ExecutionContext {
+        pub id: Option<Text>,
+        /// `PERIODIC`, `EVENT_DRIVEN`, `PeriodicExecutionContext`, … as written.
+        pub kind: Option<Text>,
+        /// Hz, as written (`1000.0`).
+        pub rate: Option<Text>,
+        pub participants: Vec<TargetComponent>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
-/// A reference to a component instance (and optionally one of its execution contexts): EC
-/// participants, composite participants, group members, order targets, preceding components.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct TargetComponent {
-    pub component_id: Option<Text>,
-    pub instance_name: Option<Text>,
-    /// The execution context id (order targets, preceding components).
-    pub id: Option<Text>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A reference to a component instance (and optionally one of its execution contexts): EC
+    /// participants, composite participants, group members, order targets, preceding components.
+    pub struct TargetComponent {
+        pub component_id: Option<Text>,
+        pub instance_name: Option<Text>,
+        /// The execution context id (order targets, preceding components).
+        pub id: Option<Text>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
-/// `rtsExt:Location`: where RTSystemEditor drew the instance.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct Location {
-    pub x: Option<Text>,
-    pub y: Option<Text>,
-    pub height: Option<Text>,
-    pub width: Option<Text>,
-    /// `DOWN`, `RIGHT`, `UP`, `LEFT` as written (real files also write `down`).
-    pub direction: Option<Text>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rtsExt:Location`: where RTSystemEditor drew the instance.
+    pub struct Location {
+        pub x: Option<Text>,
+        pub y: Option<Text>,
+        pub height: Option<Text>,
+        pub width: Option<Text>,
+        /// `DOWN`, `RIGHT`, `UP`, `LEFT` as written (real files also write `down`).
+        pub direction: Option<Text>,
+    }
 }
 
 /// The direction an instance's ports face (RTSystemEditor's rotation of the box).
@@ -533,55 +503,46 @@ impl Location {
     }
 }
 
-/// `rts:Groups`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct Group {
-    pub group_id: Option<Text>,
-    pub members: Vec<TargetComponent>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:Groups`.
+    pub struct Group {
+        pub group_id: Option<Text>,
+        pub members: Vec<TargetComponent>,
+    }
 }
 
-/// One end of a connector (`sourceDataPort`, `targetServicePort`, …).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct PortEnd {
-    pub component_id: Option<Text>,
-    pub instance_name: Option<Text>,
-    /// As written (`Instance0.port` or `port`).
-    pub port_name: Option<Text>,
-    /// The port's own name, without the `<instanceName>.` prefix.
-    pub short_name: Option<Text>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// One end of a connector (`sourceDataPort`, `targetServicePort`, …).
+    pub struct PortEnd {
+        pub component_id: Option<Text>,
+        pub instance_name: Option<Text>,
+        /// As written (`Instance0.port` or `port`).
+        pub port_name: Option<Text>,
+        /// The port's own name, without the `<instanceName>.` prefix.
+        pub short_name: Option<Text>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
-/// `rts:DataPortConnectors`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct DataPortConnector {
-    pub connector_id: Option<Text>,
-    pub name: Option<Text>,
-    /// As written: `RTC::TimedLong`, or a repository id `IDL:RTC/TimedLong:1.0`.
-    pub data_type: Option<Text>,
-    /// The scoped IDL name (`RTC::TimedLong`) when `data_type` is a repository id.
-    pub data_type_scoped: Option<Text>,
-    pub interface_type: Option<Text>,
-    pub dataflow_type: Option<Text>,
-    pub subscription_type: Option<Text>,
-    pub push_interval: Option<Text>,
-    pub comment: Option<Text>,
-    pub visible: Option<Text>,
-    pub source: Option<PortEnd>,
-    pub target: Option<PortEnd>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:DataPortConnectors`.
+    pub struct DataPortConnector {
+        pub connector_id: Option<Text>,
+        pub name: Option<Text>,
+        /// As written: `RTC::TimedLong`, or a repository id `IDL:RTC/TimedLong:1.0`.
+        pub data_type: Option<Text>,
+        /// The scoped IDL name (`RTC::TimedLong`) when `data_type` is a repository id.
+        pub data_type_scoped: Option<Text>,
+        pub interface_type: Option<Text>,
+        pub dataflow_type: Option<Text>,
+        pub subscription_type: Option<Text>,
+        pub push_interval: Option<Text>,
+        pub comment: Option<Text>,
+        pub visible: Option<Text>,
+        pub source: Option<PortEnd>,
+        pub target: Option<PortEnd>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
 /// The scoped name of a repository-id data type (`IDL:RTC/TimedPose2D:1.0` → `RTC::TimedPose2D`);
@@ -593,21 +554,18 @@ pub fn scoped_data_type(data_type: &str) -> Option<Text> {
         .then(|| crate::types::canonical_type(data_type).into())
 }
 
-/// `rts:ServicePortConnectors`.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct ServicePortConnector {
-    pub connector_id: Option<Text>,
-    pub name: Option<Text>,
-    pub trans_method: Option<Text>,
-    pub comment: Option<Text>,
-    pub visible: Option<Text>,
-    pub source: Option<PortEnd>,
-    pub target: Option<PortEnd>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:ServicePortConnectors`.
+    pub struct ServicePortConnector {
+        pub connector_id: Option<Text>,
+        pub name: Option<Text>,
+        pub trans_method: Option<Text>,
+        pub comment: Option<Text>,
+        pub visible: Option<Text>,
+        pub source: Option<PortEnd>,
+        pub target: Option<PortEnd>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
 /// Which order a [`Order`] is (root elements `StartUp` … `Finalizing`).
@@ -668,52 +626,40 @@ impl OrderKind {
     }
 }
 
-/// A start-up / shut-down / activation / … order: the targets in sequence.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct Order {
-    pub kind: OrderKind,
-    pub targets: Vec<OrderTarget>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// A start-up / shut-down / activation / … order: the targets in sequence.
+    pub struct Order {
+        pub kind: OrderKind,
+        pub targets: Vec<OrderTarget>,
+    }
 }
 
-/// One target of an order (`rts:targets`, `condition_ext`): a component's execution context and
-/// the condition under which it is sent the order.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct OrderTarget {
-    pub sequence: Option<Text>,
-    pub target_component: Option<TargetComponent>,
-    pub wait_time: Option<WaitTime>,
-    pub preceding: Option<Preceding>,
-    pub properties: Vec<SystemProperty>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// One target of an order (`rts:targets`, `condition_ext`): a component's execution context and
+    /// the condition under which it is sent the order.
+    pub struct OrderTarget {
+        pub sequence: Option<Text>,
+        pub target_component: Option<TargetComponent>,
+        pub wait_time: Option<WaitTime>,
+        pub preceding: Option<Preceding>,
+        pub properties: Vec<SystemProperty>,
+    }
 }
 
-/// `rts:WaitTime`: wait this long (ms) before sending.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct WaitTime {
-    pub wait_time: Option<Text>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:WaitTime`: wait this long (ms) before sending.
+    pub struct WaitTime {
+        pub wait_time: Option<Text>,
+    }
 }
 
-/// `rts:Preceding`: send after these components (within `timeout` ms; `SYNC` / `ASYNC`).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-pub struct Preceding {
-    pub timeout: Option<Text>,
-    pub sending_timing: Option<Text>,
-    pub preceding_components: Vec<TargetComponent>,
-    pub pos: Pos,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+node! {
+    /// `rts:Preceding`: send after these components (within `timeout` ms; `SYNC` / `ASYNC`).
+    pub struct Preceding {
+        pub timeout: Option<Text>,
+        pub sending_timing: Option<Text>,
+        pub preceding_components: Vec<TargetComponent>,
+    }
 }
 
 impl RtSystem {

@@ -36,6 +36,28 @@ pub struct Limits {
     pub max_depth: usize,
 }
 
+impl Limits {
+    /// `RTC002` when `bytes` are more than [`Limits::max_file_size`]: every reader checks this
+    /// before it decodes anything.
+    pub fn check_size(&self, bytes: &[u8], file: &str) -> Result<(), Diagnostic> {
+        if bytes.len() as u64 <= self.max_file_size {
+            return Ok(());
+        }
+        Err(Diagnostic::error(
+            crate::diagnostic::codes::TOO_LARGE,
+            file,
+            format!(
+                "file is {} bytes, larger than the limit of {} bytes",
+                bytes.len(),
+                self.max_file_size
+            ),
+        )
+        .with_hint(
+            "if the file is genuine, raise `max-file-size` in rtcdoc.toml or pass --max-file-size BYTES",
+        ))
+    }
+}
+
 impl Default for Limits {
     fn default() -> Self {
         Limits {
@@ -61,6 +83,27 @@ pub struct Parsed {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+impl Parsed {
+    /// A profile as a reader leaves it: the values it read under older spellings go into
+    /// [`Profile::written_as`], and its empty unknown `what`s (`attribute`, `key`) into one
+    /// summary note after its warnings.
+    fn read(
+        mut profile: Profile,
+        written_as: Vec<crate::model::WrittenAs>,
+        empties: &dialect::EmptyUnknowns,
+        what: &str,
+        file: &str,
+        mut diagnostics: Vec<Diagnostic>,
+    ) -> Parsed {
+        profile.written_as = written_as;
+        diagnostics.extend(empties.note(file, profile.pos, what));
+        Parsed {
+            profile,
+            diagnostics,
+        }
+    }
+}
+
 /// Reads a profile in `format`. `file` is the name used in diagnostics.
 pub fn parse(
     format: SourceFormat,
@@ -68,20 +111,7 @@ pub fn parse(
     file: &str,
     limits: &Limits,
 ) -> Result<Parsed, Diagnostic> {
-    if bytes.len() as u64 > limits.max_file_size {
-        return Err(Diagnostic::error(
-            crate::diagnostic::codes::TOO_LARGE,
-            file,
-            format!(
-                "file is {} bytes, larger than the limit of {} bytes",
-                bytes.len(),
-                limits.max_file_size
-            ),
-        )
-        .with_hint(
-            "if the file is genuine, raise `max-file-size` in rtcdoc.toml or pass --max-file-size BYTES",
-        ));
-    }
+    limits.check_size(bytes, file)?;
     let mut parsed = match format {
         SourceFormat::Xml => xml::parse(bytes, file, limits),
         SourceFormat::Yaml => yaml::parse(bytes, file, limits),

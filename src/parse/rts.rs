@@ -3,7 +3,7 @@
 //! [`crate::parse::parse`] for component profiles, on the same decoding, tree and limits.
 
 use super::{Limits, SourceFormat};
-use crate::diagnostic::{codes, Diagnostic};
+use crate::diagnostic::Diagnostic;
 use crate::model::system::RtSystem;
 
 pub use super::xml::rts::{NS_RTS, NS_RTS_EXT};
@@ -28,20 +28,7 @@ pub fn parse(
     file: &str,
     limits: &Limits,
 ) -> Result<ParsedSystem, Diagnostic> {
-    if bytes.len() as u64 > limits.max_file_size {
-        return Err(Diagnostic::error(
-            codes::TOO_LARGE,
-            file,
-            format!(
-                "file is {} bytes, larger than the limit of {} bytes",
-                bytes.len(),
-                limits.max_file_size
-            ),
-        )
-        .with_hint(
-            "if the file is genuine, raise `max-file-size` in rtcdoc.toml or pass --max-file-size BYTES",
-        ));
-    }
+    limits.check_size(bytes, file)?;
     let (system, diagnostics) = match format {
         SourceFormat::Xml => super::xml::rts::parse(bytes, file, limits)?,
         SourceFormat::Yaml => super::yaml::rts::parse(bytes, file, limits)?,

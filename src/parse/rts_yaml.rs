@@ -7,8 +7,8 @@
 //! Extension keys are accepted with or without their `rtsExt::` prefix (the XML reader accepts
 //! either namespace), so `"rtsExt::comment"` and `comment` both fill `comment`.
 
-use super::{slow_value_with_root, source, untag, untag_ref, Locator, Reader};
-use crate::diagnostic::{codes, Diagnostic};
+use super::{each_item, root_reader, untag_ref, Reader};
+use crate::diagnostic::Diagnostic;
 use crate::model::system::*;
 use crate::model::{Extra, Pos};
 use crate::parse::Limits;
@@ -22,33 +22,14 @@ pub(crate) fn parse(
     file: &str,
     limits: &Limits,
 ) -> Result<(RtSystem, Vec<Diagnostic>), Diagnostic> {
-    let src = source(bytes, file, limits)?;
-    let value = match crate::parse::yaml_fast::parse_with_root(src, limits.max_depth, ROOT) {
-        Some(v) => Some(v),
-        None => slow_value_with_root(bytes, file, limits, ROOT)?,
-    };
-    let Some(value) = value else {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            "not an RT System profile: no YAML document has a top-level `rtsProfile` key",
-        )
-        .with_hint("a YAML RT System profile starts with `rtsProfile:`"));
-    };
-    let Value::Mapping(root) = untag(value) else {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            "not an RT System profile: the root is not a mapping",
-        ));
-    };
-    let mut r = Reader {
+    let (root, mut r) = root_reader(
+        bytes,
         file,
-        loc: Locator::new(src),
-        diags: Vec::new(),
-        empties: Default::default(),
-        written_as: Vec::new(),
-    };
+        limits,
+        ROOT,
+        "RT System profile",
+        "a YAML RT System profile starts with `rtsProfile:`",
+    )?;
     let mut s = RtSystem::default();
     for (k, v) in &root {
         let (name, pos) = r.key(k);
@@ -65,24 +46,6 @@ pub(crate) fn parse(
 /// A key without its `rtsExt::` prefix.
 fn bare(name: &str) -> &str {
     name.strip_prefix("rtsExt::").unwrap_or(name)
-}
-
-/// Calls `f` on each mapping item of a list value, with its position. Items are located one by
-/// one, just before `f` reads them: the locator moves forward in document order.
-fn each_item<'v>(
-    r: &mut Reader,
-    v: &'v Value,
-    name: &str,
-    pos: Pos,
-    sink: &mut Vec<Extra>,
-    mut f: impl FnMut(&mut Reader, &'v Mapping, Pos),
-) {
-    let list = r.seq(v, name, pos, sink);
-    for (i, it) in list.iter().enumerate() {
-        if let Some((m, ip)) = r.map_item(it, name, i, sink) {
-            f(r, m, ip);
-        }
-    }
 }
 
 /// `"rtsExt::properties"`: `[{name, value}]`.

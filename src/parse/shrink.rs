@@ -6,7 +6,7 @@
 //! the unused room is megabytes of peak memory (see book/src/performance.md). Only capacity
 //! changes: the values, their order and so every output stay the same.
 
-use crate::model::{Extra, Profile};
+use crate::model::{AttrPos, Extra, Profile, Property};
 
 fn extras(v: &mut Vec<Extra>) {
     for e in v.iter_mut() {
@@ -15,40 +15,38 @@ fn extras(v: &mut Vec<Extra>) {
     v.shrink_to_fit();
 }
 
+/// The three lists a node with attributes has: their positions, its properties, its extras.
+fn node(attr_pos: &mut AttrPos, properties: &mut Vec<Property>, extra: &mut Vec<Extra>) {
+    attr_pos.shrink_to_fit();
+    properties.shrink_to_fit();
+    extras(extra);
+}
+
 /// Shrinks every list of `p` to its length.
 pub(crate) fn profile(p: &mut Profile) {
     p.attr_pos.shrink_to_fit();
     extras(&mut p.extra);
-    p.basic_info.attr_pos.shrink_to_fit();
-    extras(&mut p.basic_info.extra);
-    p.basic_info.properties.shrink_to_fit();
+    let b = &mut p.basic_info;
+    node(&mut b.attr_pos, &mut b.properties, &mut b.extra);
     for a in &mut p.actions {
         extras(&mut a.extra);
     }
     p.actions.shrink_to_fit();
     if let Some(cs) = &mut p.configuration_set {
         for c in &mut cs.configurations {
-            c.attr_pos.shrink_to_fit();
-            c.properties.shrink_to_fit();
-            extras(&mut c.extra);
+            node(&mut c.attr_pos, &mut c.properties, &mut c.extra);
         }
         cs.configurations.shrink_to_fit();
         extras(&mut cs.extra);
     }
     for d in &mut p.data_ports {
-        d.attr_pos.shrink_to_fit();
-        d.properties.shrink_to_fit();
-        extras(&mut d.extra);
+        node(&mut d.attr_pos, &mut d.properties, &mut d.extra);
     }
     p.data_ports.shrink_to_fit();
     for s in &mut p.service_ports {
-        s.attr_pos.shrink_to_fit();
-        s.properties.shrink_to_fit();
-        extras(&mut s.extra);
+        node(&mut s.attr_pos, &mut s.properties, &mut s.extra);
         for i in &mut s.interfaces {
-            i.attr_pos.shrink_to_fit();
-            i.properties.shrink_to_fit();
-            extras(&mut i.extra);
+            node(&mut i.attr_pos, &mut i.properties, &mut i.extra);
         }
         s.interfaces.shrink_to_fit();
     }

@@ -62,6 +62,48 @@ fn trim_start_blank(s: &[u8]) -> &[u8] {
     &s[n..]
 }
 
+/// The root mapping of the first YAML document with the top-level key `root_key`, and a reader
+/// on it. The common case (one block-style document) is read by our own line reader; anything
+/// it does not handle — and every error — goes through serde_norway. `what` names the kind of
+/// profile in the errors, `hint` says how one starts.
+fn root_reader<'a>(
+    bytes: &'a [u8],
+    file: &'a str,
+    limits: &Limits,
+    root_key: &str,
+    what: &str,
+    hint: &str,
+) -> Result<(Mapping, Reader<'a>), Diagnostic> {
+    let src = source(bytes, file, limits)?;
+    let value = match super::yaml_fast::parse(src, limits.max_depth, root_key) {
+        Some(v) => Some(v),
+        None => slow_value(bytes, file, limits, root_key)?,
+    };
+    let Some(value) = value else {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            format!("not an {what}: no YAML document has a top-level `{root_key}` key"),
+        )
+        .with_hint(hint));
+    };
+    let Value::Mapping(root) = untag(value) else {
+        return Err(Diagnostic::error(
+            codes::SHAPE,
+            file,
+            format!("not an {what}: the root is not a mapping"),
+        ));
+    };
+    let r = Reader {
+        file,
+        loc: Locator::new(src),
+        diags: Vec::new(),
+        empties: super::dialect::EmptyUnknowns::default(),
+        written_as: Vec::new(),
+    };
+    Ok((root, r))
+}
+
 /// Reads an RTC Profile from YAML bytes.
 ///
 /// Errors: `ENCODING` (not UTF-8), `MALFORMED` (YAML syntax, with serde_norway's line:column),
@@ -69,37 +111,14 @@ fn trim_start_blank(s: &[u8]) -> &[u8] {
 /// `rtcProfile`). Everything else — unknown keys, values of the wrong shape — becomes a warning
 /// and is kept as an [`Extra`] on the nearest node.
 pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagnostic> {
-    let src = source(bytes, file, limits)?;
-
-    // The common case (one block-style document) is read by our own line reader; anything
-    // it does not handle — and every error — goes through serde_norway.
-    let value = match super::yaml_fast::parse(src, limits.max_depth) {
-        Some(v) => Some(v),
-        None => slow_value(bytes, file, limits)?,
-    };
-    if value.is_none() {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            "not an RTC Profile: no YAML document has a top-level `rtcProfile` key",
-        )
-        .with_hint("a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)"));
-    }
-    let Some(Value::Mapping(root)) = value.map(untag) else {
-        return Err(Diagnostic::error(
-            codes::SHAPE,
-            file,
-            "not an RTC Profile: the root is not a mapping",
-        ));
-    };
-
-    let mut r = Reader {
+    let (root, mut r) = root_reader(
+        bytes,
         file,
-        loc: Locator::new(src),
-        diags: Vec::new(),
-        empties: super::dialect::EmptyUnknowns::default(),
-        written_as: Vec::new(),
-    };
+        limits,
+        "rtcProfile",
+        "RTC Profile",
+        "a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)",
+    )?;
     let mut profile = Profile::default();
     for (k, v) in &root {
         let (name, pos) = r.key(k);
@@ -110,14 +129,14 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
             r.unknown(&name, v, pos, "the document root", &mut profile.extra);
         }
     }
-    profile.written_as = std::mem::take(&mut r.written_as);
-    if let Some(d) = r.empties.note(file, profile.pos, "key") {
-        r.diags.push(d);
-    }
-    Ok(Parsed {
+    Ok(Parsed::read(
         profile,
-        diagnostics: r.diags,
-    })
+        r.written_as,
+        &r.empties,
+        "key",
+        file,
+        r.diags,
+    ))
 }
 
 /// The mapping of RT System profiles (`rtsProfile`), on this module's value builder, limits and
@@ -159,19 +178,10 @@ fn source<'b>(bytes: &'b [u8], file: &str, limits: &Limits) -> Result<&'b str, D
     Ok(src)
 }
 
-/// The first document whose root mapping has `rtcProfile`, read with serde_norway. Each
+/// The first document whose root mapping has `root_key`, read with serde_norway. Each
 /// document is built into a `Value` by a seed that counts nodes and depth as it goes (so an
 /// alias bomb or a deep nest is stopped early).
 pub(super) fn slow_value(
-    bytes: &[u8],
-    file: &str,
-    limits: &Limits,
-) -> Result<Option<Value>, Diagnostic> {
-    slow_value_with_root(bytes, file, limits, "rtcProfile")
-}
-
-/// [`slow_value`] for the first document whose root mapping has `root_key`.
-fn slow_value_with_root(
     bytes: &[u8],
     file: &str,
     limits: &Limits,
@@ -620,6 +630,24 @@ fn doc_alias(n: &str, kp: Pos, al: &mut Aliases) {
     }
 }
 
+/// Calls `f` on each mapping item of a list value, with its position. Items are located one by
+/// one, just before `f` reads them: the locator moves forward in document order.
+fn each_item<'v>(
+    r: &mut Reader,
+    v: &'v Value,
+    name: &str,
+    pos: Pos,
+    sink: &mut Vec<Extra>,
+    mut f: impl FnMut(&mut Reader, &'v Mapping, Pos),
+) {
+    let list = r.seq(v, name, pos, sink);
+    for (i, it) in list.iter().enumerate() {
+        if let Some((m, ip)) = r.map_item(it, name, i, sink) {
+            f(r, m, ip);
+        }
+    }
+}
+
 /// Text of a scalar key (keys are normally strings).
 fn key_text(k: &Value) -> String {
     match untag_ref(k) {
@@ -816,6 +844,52 @@ impl Reader<'_> {
         }
     }
 
+    /// Reads mapping `m` (at `pos`) as the node `T` of the field table: its scalar keys by the
+    /// table, every other key by `key` (given the node, whose extras take the unknown ones).
+    /// Returns the node and the keys read under an older spelling (`doc` among them).
+    fn node<T: Fields + Default>(
+        &mut self,
+        m: &Mapping,
+        pos: Pos,
+        mut key: impl FnMut(&mut Self, &str, &Value, Pos, &mut T),
+    ) -> (T, Aliases) {
+        let mut t = T::default();
+        *t.pos_mut() = pos;
+        let mut al = Aliases::new();
+        for (k, v) in m {
+            let (n, kp) = self.key(k);
+            if self.scalar(&mut t, &n, v, kp, &mut al) {
+                continue;
+            }
+            doc_alias(&n, kp, &mut al);
+            key(self, &n, v, kp, &mut t);
+        }
+        (t, al)
+    }
+
+    /// Reads mapping `m` (at `pos`) as the node `T` of the field table that has only scalar
+    /// keys; any other is unknown in `place`.
+    fn leaf<T: Fields + Default>(&mut self, m: &Mapping, pos: Pos, place: &str) -> T {
+        let mut t = T::default();
+        *t.pos_mut() = pos;
+        self.scalars(m, &mut t, place);
+        t
+    }
+
+    /// `"rtcDoc::doc"` (key `n` at `kp`): the doc node `T` when the value is a mapping (else it
+    /// goes to `sink`).
+    fn doc<T: Fields + Default>(
+        &mut self,
+        v: &Value,
+        n: &str,
+        kp: Pos,
+        sink: &mut Vec<Extra>,
+        place: &str,
+    ) -> Option<T> {
+        let m = self.map(v, n, kp, sink)?;
+        Some(self.leaf(m, kp, place))
+    }
+
     /// Moves the aliases of a node into [`Profile::written_as`] as `node.field`.
     fn flush(&mut self, node: &str, aliases: Aliases) {
         for (field, written, pos, dialect) in aliases {
@@ -989,17 +1063,9 @@ impl Reader<'_> {
         sink: &mut Vec<Extra>,
     ) -> Vec<Property> {
         let mut out = Vec::new();
-        for (idx, it) in self.seq(v, name, pos, sink).iter().enumerate() {
-            let Some((m, p)) = self.map_item(it, name, idx, sink) else {
-                continue;
-            };
-            let mut prop = Property {
-                pos: p,
-                ..Property::default()
-            };
-            self.scalars(m, &mut prop, "a property");
-            out.push(prop);
-        }
+        each_item(self, v, name, pos, sink, |r, m, p| {
+            out.push(r.leaf(m, p, "a property"))
+        });
         out
     }
 
@@ -1027,33 +1093,15 @@ impl Reader<'_> {
                         p.configuration_set = Some(self.configuration_set(m, kp));
                     }
                 }
-                "dataPorts" => {
-                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
-                            continue;
-                        };
-                        let d = self.data_port(m, ip);
-                        p.data_ports.push(d);
-                    }
-                }
-                "servicePorts" => {
-                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
-                            continue;
-                        };
-                        let s = self.service_port(m, ip);
-                        p.service_ports.push(s);
-                    }
-                }
-                "parameters" => {
-                    for (idx, it) in self.seq(v, &n, kp, &mut p.extra).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut p.extra) else {
-                            continue;
-                        };
-                        let par = self.parameter(m, ip);
-                        p.parameters.push(par);
-                    }
-                }
+                "dataPorts" => each_item(self, v, &n, kp, &mut p.extra, |r, m, ip| {
+                    p.data_ports.push(r.data_port(m, ip))
+                }),
+                "servicePorts" => each_item(self, v, &n, kp, &mut p.extra, |r, m, ip| {
+                    p.service_ports.push(r.service_port(m, ip))
+                }),
+                "parameters" => each_item(self, v, &n, kp, &mut p.extra, |r, m, ip| {
+                    p.parameters.push(r.parameter(m, ip))
+                }),
                 "language" => {
                     if let Some(m) = self.map(v, &n, kp, &mut p.extra) {
                         p.language = Some(self.language(m, kp));
@@ -1095,16 +1143,7 @@ impl Reader<'_> {
                 "rtcExt::property" | "rtcExt::properties" => {
                     b.properties = self.properties(v, &n, kp, x)
                 }
-                "rtcDoc::doc" | "doc" => {
-                    if let Some(m) = self.map(v, &n, kp, x) {
-                        let mut d = BasicDoc {
-                            pos: kp,
-                            ..BasicDoc::default()
-                        };
-                        self.scalars(m, &mut d, "basicInfo rtcDoc::doc");
-                        b.doc = Some(d);
-                    }
-                }
+                "rtcDoc::doc" | "doc" => b.doc = self.doc(v, &n, kp, x, "basicInfo rtcDoc::doc"),
                 _ => self.unknown(&n, v, kp, "basicInfo", x),
             }
         }
@@ -1213,14 +1252,7 @@ impl Reader<'_> {
                     doc_alias(&n, kp, &mut al);
                     match n.as_str() {
                         "rtcDoc::doc" | "doc" => {
-                            if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
-                                let mut d = ActionDoc {
-                                    pos: kp,
-                                    ..ActionDoc::default()
-                                };
-                                self.scalars(m, &mut d, "an action's rtcDoc::doc");
-                                a.doc = Some(d);
-                            }
+                            a.doc = self.doc(v, &n, kp, &mut a.extra, "an action's rtcDoc::doc")
                         }
                         _ => self.unknown(&n, v, kp, "an action", &mut a.extra),
                     }
@@ -1243,139 +1275,72 @@ impl Reader<'_> {
                 self.unknown(&n, v, kp, "configurationSet", &mut cs.extra);
                 continue;
             }
-            for (idx, it) in self.seq(v, &n, kp, &mut cs.extra).iter().enumerate() {
-                let Some((m, ip)) = self.map_item(it, &n, idx, &mut cs.extra) else {
-                    continue;
-                };
-                let mut c = Configuration {
-                    pos: ip,
-                    ..Configuration::default()
-                };
-                let mut al = Aliases::new();
-                for (k, v) in m {
-                    let (n, kp) = self.key(k);
-                    if self.scalar(&mut c, &n, v, kp, &mut al) {
-                        continue;
-                    }
-                    doc_alias(&n, kp, &mut al);
-                    let x = &mut c.extra;
-                    match n.as_str() {
-                        "constraint" => c.constraint = self.constraint_root(v, kp, x),
-                        "rtcExt::property" | "rtcExt::properties" => {
-                            c.properties = self.properties(v, &n, kp, x)
-                        }
-                        "rtcDoc::doc" | "doc" => {
-                            if let Some(m) = self.map(v, &n, kp, x) {
-                                let mut d = ConfigurationDoc {
-                                    pos: kp,
-                                    ..ConfigurationDoc::default()
-                                };
-                                self.scalars(m, &mut d, "a configuration's rtcDoc::doc");
-                                c.doc = Some(d);
-                            }
-                        }
-                        _ => self.unknown(&n, v, kp, "a configuration", x),
-                    }
-                }
-                self.flush(
-                    &format!("configuration {}", c.name.as_deref().unwrap_or("")),
-                    al,
-                );
-                cs.configurations.push(c);
-            }
+            each_item(self, v, &n, kp, &mut cs.extra, |r, m, ip| {
+                cs.configurations.push(r.configuration(m, ip))
+            });
         }
         cs
     }
 
-    /// A data port (spec 2.3.7, 2.4.5/2.4.6 doc, 2.5.3 ext).
-    fn data_port(&mut self, m: &Mapping, pos: Pos) -> DataPort {
-        let mut d = DataPort {
-            pos,
-            ..DataPort::default()
-        };
-        let mut al = Aliases::new();
-        for (k, v) in m {
-            let (n, kp) = self.key(k);
-            if self.scalar(&mut d, &n, v, kp, &mut al) {
-                continue;
-            }
-            doc_alias(&n, kp, &mut al);
-            let x = &mut d.extra;
-            match n.as_str() {
-                "constraint" => d.constraint = self.constraint_root(v, kp, x),
+    /// A configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
+    fn configuration(&mut self, m: &Mapping, pos: Pos) -> Configuration {
+        let (c, al) = self.node(m, pos, |r, n, v, kp, c: &mut Configuration| {
+            let x = &mut c.extra;
+            match n {
+                "constraint" => c.constraint = r.constraint_root(v, kp, x),
                 "rtcExt::property" | "rtcExt::properties" => {
-                    d.properties = self.properties(v, &n, kp, x)
+                    c.properties = r.properties(v, n, kp, x)
                 }
                 "rtcDoc::doc" | "doc" => {
-                    if let Some(m) = self.map(v, &n, kp, x) {
-                        let mut doc = DataPortDoc {
-                            pos: kp,
-                            ..DataPortDoc::default()
-                        };
-                        self.scalars(m, &mut doc, "a data port's rtcDoc::doc");
-                        d.doc = Some(doc);
-                    }
+                    c.doc = r.doc(v, n, kp, x, "a configuration's rtcDoc::doc")
                 }
-                _ => self.unknown(&n, v, kp, "a data port", x),
+                _ => r.unknown(n, v, kp, "a configuration", x),
             }
-        }
+        });
+        self.flush(
+            &format!("configuration {}", c.name.as_deref().unwrap_or("")),
+            al,
+        );
+        c
+    }
+
+    /// A data port (spec 2.3.7, 2.4.5/2.4.6 doc, 2.5.3 ext).
+    fn data_port(&mut self, m: &Mapping, pos: Pos) -> DataPort {
+        let (d, al) = self.node(m, pos, |r, n, v, kp, d: &mut DataPort| {
+            let x = &mut d.extra;
+            match n {
+                "constraint" => d.constraint = r.constraint_root(v, kp, x),
+                "rtcExt::property" | "rtcExt::properties" => {
+                    d.properties = r.properties(v, n, kp, x)
+                }
+                "rtcDoc::doc" | "doc" => d.doc = r.doc(v, n, kp, x, "a data port's rtcDoc::doc"),
+                _ => r.unknown(n, v, kp, "a data port", x),
+            }
+        });
         self.flush(&format!("dataPort {}", d.name.as_deref().unwrap_or("")), al);
         d
     }
 
     /// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
     fn service_port(&mut self, m: &Mapping, pos: Pos) -> ServicePort {
-        let mut s = ServicePort {
-            pos,
-            ..ServicePort::default()
-        };
-        let mut al = Aliases::new();
-        for (k, v) in m {
-            let (n, kp) = self.key(k);
-            if self.scalar(&mut s, &n, v, kp, &mut al) {
-                continue;
-            }
-            doc_alias(&n, kp, &mut al);
+        let (s, al) = self.node(m, pos, |r, n, v, kp, s: &mut ServicePort| {
             let x = &mut s.extra;
-            match n.as_str() {
+            match n {
                 "rtcExt::property" | "rtcExt::properties" => {
-                    s.properties = self.properties(v, &n, kp, x)
+                    s.properties = r.properties(v, n, kp, x)
                 }
-                "transMethod" | "transMethods" => {
-                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
-                            continue;
-                        };
-                        let mut t = TransMethod {
-                            pos: ip,
-                            ..TransMethod::default()
-                        };
-                        self.scalars(m, &mut t, "a transMethod");
-                        s.trans_methods.push(t);
-                    }
-                }
+                "transMethod" | "transMethods" => each_item(r, v, n, kp, x, |r, m, ip| {
+                    s.trans_methods.push(r.leaf(m, ip, "a transMethod"))
+                }),
                 "serviceInterface" | "serviceInterfaces" => {
-                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
-                            continue;
-                        };
-                        let i = self.service_interface(m, ip);
-                        s.interfaces.push(i);
-                    }
+                    each_item(r, v, n, kp, x, |r, m, ip| {
+                        s.interfaces.push(r.service_interface(m, ip))
+                    })
                 }
-                "rtcDoc::doc" | "doc" => {
-                    if let Some(m) = self.map(v, &n, kp, x) {
-                        let mut d = ServicePortDoc {
-                            pos: kp,
-                            ..ServicePortDoc::default()
-                        };
-                        self.scalars(m, &mut d, "a service port's rtcDoc::doc");
-                        s.doc = Some(d);
-                    }
-                }
-                _ => self.unknown(&n, v, kp, "a service port", x),
+                "rtcDoc::doc" | "doc" => s.doc = r.doc(v, n, kp, x, "a service port's rtcDoc::doc"),
+                _ => r.unknown(n, v, kp, "a service port", x),
             }
-        }
+        });
         self.flush(
             &format!("servicePort {}", s.name.as_deref().unwrap_or("")),
             al,
@@ -1385,35 +1350,18 @@ impl Reader<'_> {
 
     /// A service interface (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
     fn service_interface(&mut self, m: &Mapping, pos: Pos) -> ServiceInterface {
-        let mut i = ServiceInterface {
-            pos,
-            ..ServiceInterface::default()
-        };
-        let mut al = Aliases::new();
-        for (k, v) in m {
-            let (n, kp) = self.key(k);
-            if self.scalar(&mut i, &n, v, kp, &mut al) {
-                continue;
-            }
-            doc_alias(&n, kp, &mut al);
+        let (i, al) = self.node(m, pos, |r, n, v, kp, i: &mut ServiceInterface| {
             let x = &mut i.extra;
-            match n.as_str() {
+            match n {
                 "rtcExt::property" | "rtcExt::properties" => {
-                    i.properties = self.properties(v, &n, kp, x)
+                    i.properties = r.properties(v, n, kp, x)
                 }
                 "rtcDoc::doc" | "doc" => {
-                    if let Some(m) = self.map(v, &n, kp, x) {
-                        let mut d = ServiceInterfaceDoc {
-                            pos: kp,
-                            ..ServiceInterfaceDoc::default()
-                        };
-                        self.scalars(m, &mut d, "a service interface's rtcDoc::doc");
-                        i.doc = Some(d);
-                    }
+                    i.doc = r.doc(v, n, kp, x, "a service interface's rtcDoc::doc")
                 }
-                _ => self.unknown(&n, v, kp, "a service interface", x),
+                _ => r.unknown(n, v, kp, "a service interface", x),
             }
-        }
+        });
         self.flush(
             &format!("serviceInterface {}", i.name.as_deref().unwrap_or("")),
             al,
@@ -1423,12 +1371,7 @@ impl Reader<'_> {
 
     /// A system parameter (spec 2.3.11, 5.4).
     fn parameter(&mut self, m: &Mapping, pos: Pos) -> Parameter {
-        let mut p = Parameter {
-            pos,
-            ..Parameter::default()
-        };
-        self.scalars(m, &mut p, "a parameter");
-        p
+        self.leaf(m, pos, "a parameter")
     }
 
     /// `language` (spec 2.3.12) with `"rtcExt::targets"` (2.5.6–2.5.8).
@@ -1444,13 +1387,9 @@ impl Reader<'_> {
             }
             match n.as_str() {
                 "rtcExt::targets" | "rtcExt::target" => {
-                    for (idx, it) in self.seq(v, &n, kp, &mut l.extra).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, &mut l.extra) else {
-                            continue;
-                        };
-                        let t = self.target(m, ip);
-                        l.targets.push(t);
-                    }
+                    each_item(self, v, &n, kp, &mut l.extra, |r, m, ip| {
+                        l.targets.push(r.target(m, ip))
+                    })
                 }
                 k if super::dialect::language_element(k).is_some() => {
                     self.language_element(&n, v, kp, &mut l)

@@ -33,13 +33,9 @@ struct Line {
 }
 
 /// The document's root value when the whole source is in the subset this reader handles and
-/// the root is a mapping with an `rtcProfile` key; `None` otherwise.
-pub(crate) fn parse(src: &str, max_depth: usize) -> Option<Value> {
-    parse_with_root(src, max_depth, "rtcProfile")
-}
-
-/// [`parse`] for a root mapping with the key `root_key` (`rtsProfile` for system profiles).
-pub(crate) fn parse_with_root(src: &str, max_depth: usize, root_key: &str) -> Option<Value> {
+/// the root is a mapping with the key `root_key` (`rtcProfile`, or `rtsProfile` for system
+/// profiles); `None` otherwise.
+pub(crate) fn parse(src: &str, max_depth: usize, root_key: &str) -> Option<Value> {
     if !plain_text(src.as_bytes()) {
         return None;
     }
@@ -424,14 +420,14 @@ mod tests {
 
     /// serde_norway's reading of the same text, printed (`Debug` shows mapping order).
     fn slow(src: &str) -> String {
-        match slow_value(src.as_bytes(), "t.yaml", &Limits::default()) {
+        match slow_value(src.as_bytes(), "t.yaml", &Limits::default(), "rtcProfile") {
             Ok(Some(v)) => format!("{v:?}"),
             other => format!("no value: {other:?}"),
         }
     }
 
     fn fast(src: &str) -> Option<String> {
-        parse(src, Limits::default().max_depth).map(|v| format!("{v:?}"))
+        parse(src, Limits::default().max_depth, "rtcProfile").map(|v| format!("{v:?}"))
     }
 
     #[test]

@@ -224,6 +224,42 @@ pub(super) fn scalar_attr<'n, 't, T: Fields>(
     true
 }
 
+/// Reads element `n` as the node `T` of the field table: its position, its attributes by the
+/// table, each child element by `child` (given the node and its extras, where unknown elements
+/// go too) and stray text. Returns the node and the attributes read under an older spelling.
+pub(super) fn map_node<'n, 't, T: Fields + Default>(
+    m: &mut Mapper,
+    n: &'n Node<'t>,
+    on: &str,
+    mut child: impl FnMut(&mut Mapper, &'n Node<'t>, &mut T, &mut Vec<Extra>),
+) -> (T, Vec<Alias<'n, 't>>) {
+    let mut t = T::default();
+    *t.pos_mut() = n.pos;
+    let mut extra = Vec::new();
+    let aliases = scalar_attrs(m, n, &mut t, on, &mut extra);
+    for c in &n.children {
+        child(m, c, &mut t, &mut extra);
+    }
+    m.stray_text(n, on, &mut extra);
+    *t.extra_mut() = extra;
+    (t, aliases)
+}
+
+/// [`map_node`] for a node with no child elements defined.
+pub(super) fn map_leaf<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str) -> T {
+    map_node(m, n, on, |m, c, _, extra| m.unknown_elem(c, on, extra)).0
+}
+
+impl Mapper<'_> {
+    /// Records the attributes of `node` read under an older spelling (after its children, as
+    /// [`Profile::written_as`] lists them).
+    pub(super) fn aliases(&mut self, node: &str, aliases: Vec<Alias>) {
+        for (field, a, dialect) in aliases {
+            self.alias(node, field, a, dialect);
+        }
+    }
+}
+
 /// Non-empty text of a text element (whitespace-only counts as empty).
 pub(super) fn non_blank(s: &str) -> Option<Text> {
     (!s.trim().is_empty()).then(|| s.into())
@@ -232,90 +268,48 @@ pub(super) fn non_blank(s: &str) -> Option<Text> {
 /// spec 2.2 `rtc_profile`, XSD 6.1 `RtcProfile`.
 pub(super) fn map_profile(m: &mut Mapper, n: &Node) -> Profile {
     let on = "profile";
-    let mut p = Profile {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut p, on, &mut extra);
     let mut seen_basic = false;
-    for c in &n.children {
-        match c.key() {
-            Some("BasicInfo") if !seen_basic => {
-                seen_basic = true;
-                p.basic_info = map_basic_info(m, c);
-            }
-            Some("Actions") if p.actions_pos.is_none() => {
-                p.actions_pos = Some(c.pos);
-                map_actions(m, c, &mut p.actions, &mut extra);
-            }
-            Some("ConfigurationSet") if p.configuration_set.is_none() => {
-                p.configuration_set = Some(map_configuration_set(m, c));
-            }
-            Some("DataPorts") => p.data_ports.push(map_data_port(m, c)),
-            Some("ServicePorts") => p.service_ports.push(map_service_port(m, c)),
-            Some("Parameters") => p.parameters.push(map_parameter(m, c)),
-            Some("Language") if p.language.is_none() => p.language = Some(map_language(m, c)),
-            Some("BasicInfo" | "Actions" | "ConfigurationSet" | "Language") => {
-                m.repeated_elem(c, on, &mut extra)
-            }
-            _ => m.unknown_elem(c, on, &mut extra),
+    let (p, _) = map_node(m, n, on, |m, c, p: &mut Profile, extra| match c.key() {
+        Some("BasicInfo") if !seen_basic => {
+            seen_basic = true;
+            p.basic_info = map_basic_info(m, c);
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    p.extra = extra;
+        Some("Actions") if p.actions_pos.is_none() => {
+            p.actions_pos = Some(c.pos);
+            map_actions(m, c, &mut p.actions, extra);
+        }
+        Some("ConfigurationSet") if p.configuration_set.is_none() => {
+            p.configuration_set = Some(map_configuration_set(m, c));
+        }
+        Some("DataPorts") => p.data_ports.push(map_data_port(m, c)),
+        Some("ServicePorts") => p.service_ports.push(map_service_port(m, c)),
+        Some("Parameters") => p.parameters.push(map_parameter(m, c)),
+        Some("Language") if p.language.is_none() => p.language = Some(map_language(m, c)),
+        Some("BasicInfo" | "Actions" | "ConfigurationSet" | "Language") => {
+            m.repeated_elem(c, on, extra)
+        }
+        _ => m.unknown_elem(c, on, extra),
+    });
     p
 }
 
 /// spec 2.3.2 basic info, 2.4.1 doc, 2.5.1 ext.
 pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
     let on = "basic info";
-    let mut b = BasicInfo {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut b, on, &mut extra);
-    for c in &n.children {
-        match c.key() {
-            Some("Doc") if b.doc.is_none() => b.doc = Some(map_basic_doc(m, c)),
-            // XSD 6.3 `VersionUpLogs`; the 9.2 sample writes `VersionUpLog`. Empty ones are
-            // common in real files and say nothing.
-            Some("VersionUpLogs" | "VersionUpLog") => {
-                if let Some(t) = non_blank(&m.text_of(c, on, &mut extra)) {
-                    b.version_up_logs.push(t);
-                }
+    let (b, _) = map_node(m, n, on, |m, c, b: &mut BasicInfo, extra| match c.key() {
+        Some("Doc") if b.doc.is_none() => b.doc = Some(map_leaf(m, c, "basic info doc")),
+        // XSD 6.3 `VersionUpLogs`; the 9.2 sample writes `VersionUpLog`. Empty ones are
+        // common in real files and say nothing.
+        Some("VersionUpLogs" | "VersionUpLog") => {
+            if let Some(t) = non_blank(&m.text_of(c, on, extra)) {
+                b.version_up_logs.push(t);
             }
-            Some("Properties") => b.properties.push(map_property(m, c)),
-            Some("Doc") => m.repeated_elem(c, on, &mut extra),
-            _ => m.unknown_elem(c, on, &mut extra),
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    b.extra = extra;
+        Some("Properties") => b.properties.push(map_leaf(m, c, "property")),
+        Some("Doc") => m.repeated_elem(c, on, extra),
+        _ => m.unknown_elem(c, on, extra),
+    });
     b
-}
-
-/// spec 2.4.2 `doc_basic`.
-pub(super) fn map_basic_doc(m: &mut Mapper, n: &Node) -> BasicDoc {
-    let on = "basic info doc";
-    let mut d = BasicDoc {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut d, on, &mut extra);
-    leaf_children(m, n, on, &mut extra);
-    d.extra = extra;
-    d
-}
-
-/// Child elements and text of a node that has none defined.
-pub(super) fn leaf_children(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) {
-    for c in &n.children {
-        m.unknown_elem(c, on, extra);
-    }
-    m.stray_text(n, on, extra);
 }
 
 /// spec 2.3.3 actions: the 14 callbacks, kept in document order. Unknown content of the
@@ -354,16 +348,7 @@ pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
     for c in &n.children {
         match c.key() {
             Some("Doc") if act.doc.is_none() => {
-                let don = format!("{on} doc");
-                let mut d = ActionDoc {
-                    pos: c.pos,
-                    ..Default::default()
-                };
-                let mut dx = Vec::new();
-                scalar_attrs(m, c, &mut d, &don, &mut dx);
-                leaf_children(m, c, &don, &mut dx);
-                d.extra = dx;
-                act.doc = Some(d);
+                act.doc = Some(map_leaf(m, c, &format!("{on} doc")))
             }
             Some("Doc") => m.repeated_elem(c, &on, &mut extra),
             _ => m.unknown_elem(c, &on, &mut extra),
@@ -397,241 +382,95 @@ pub(super) fn map_configuration_set(m: &mut Mapper, n: &Node) -> ConfigurationSe
 /// spec 2.3.6 `configuration`, 2.4.4 doc, 2.5.2 ext.
 pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
     let on = "configuration";
-    let mut cf = Configuration {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    let aliases = scalar_attrs(m, n, &mut cf, on, &mut extra);
-    for c in &n.children {
+    let (cf, aliases) = map_node(m, n, on, |m, c, cf: &mut Configuration, extra| {
         match c.key() {
-            Some("Doc") if cf.doc.is_none() => {
-                let don = "configuration doc";
-                let mut d = ConfigurationDoc {
-                    pos: c.pos,
-                    ..Default::default()
-                };
-                let mut dx = Vec::new();
-                scalar_attrs(m, c, &mut d, don, &mut dx);
-                leaf_children(m, c, don, &mut dx);
-                d.extra = dx;
-                cf.doc = Some(d);
-            }
-            Some("Properties") => cf.properties.push(map_property(m, c)),
+            Some("Doc") if cf.doc.is_none() => cf.doc = Some(map_leaf(m, c, "configuration doc")),
+            Some("Properties") => cf.properties.push(map_leaf(m, c, "property")),
             Some("Constraint") if cf.constraint.is_none() => {
                 cf.constraint = Some(map_constraint(m, c))
             }
-            Some("Doc" | "Constraint") => m.repeated_elem(c, on, &mut extra),
-            _ => m.unknown_elem(c, on, &mut extra),
+            Some("Doc" | "Constraint") => m.repeated_elem(c, on, extra),
+            _ => m.unknown_elem(c, on, extra),
         }
-    }
-    m.stray_text(n, on, &mut extra);
+    });
     let node = format!("configuration {}", cf.name.as_deref().unwrap_or(""));
-    for (field, a, dialect) in aliases {
-        m.alias(&node, field, a, dialect);
-    }
-    cf.extra = extra;
+    m.aliases(&node, aliases);
     cf
-}
-
-/// spec 2.5 `property` (`rtcExt:Properties`).
-pub(super) fn map_property(m: &mut Mapper, n: &Node) -> Property {
-    let on = "property";
-    let mut p = Property {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut p, on, &mut extra);
-    leaf_children(m, n, on, &mut extra);
-    p.extra = extra;
-    p
 }
 
 /// spec 2.3.7 `dataport`, 2.4.5 doc, 2.5.3 ext; FSM `EventPort`s carry `Event` children.
 pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
     let on = "data port";
-    let mut d = DataPort {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    let aliases = scalar_attrs(m, n, &mut d, on, &mut extra);
-    for c in &n.children {
-        match c.key() {
-            Some("Doc") if d.doc.is_none() => {
-                d.doc = Some(map_data_port_doc(m, c, "data port doc"))
-            }
-            Some("Properties") => d.properties.push(map_property(m, c)),
-            Some("Constraint") if d.constraint.is_none() => {
-                d.constraint = Some(map_constraint(m, c))
-            }
-            Some("Event") => d.events.push(map_event(m, c)),
-            Some("Doc" | "Constraint") => m.repeated_elem(c, on, &mut extra),
-            _ => m.unknown_elem(c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
+    let (d, aliases) = map_node(m, n, on, |m, c, d: &mut DataPort, extra| match c.key() {
+        Some("Doc") if d.doc.is_none() => d.doc = Some(map_leaf(m, c, "data port doc")),
+        Some("Properties") => d.properties.push(map_leaf(m, c, "property")),
+        Some("Constraint") if d.constraint.is_none() => d.constraint = Some(map_constraint(m, c)),
+        Some("Event") => d.events.push(map_event(m, c)),
+        Some("Doc" | "Constraint") => m.repeated_elem(c, on, extra),
+        _ => m.unknown_elem(c, on, extra),
+    });
     let node = format!("dataPort {}", d.name.as_deref().unwrap_or(""));
-    for (field, a, dialect) in aliases {
-        m.alias(&node, field, a, dialect);
-    }
-    d.extra = extra;
+    m.aliases(&node, aliases);
     d
 }
 
-/// spec 2.4.6 `doc_dataport` (also used for FSM event docs, `rtcDoc:event_doc`).
-pub(super) fn map_data_port_doc(m: &mut Mapper, n: &Node, on: &str) -> DataPortDoc {
-    let mut d = DataPortDoc {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut d, on, &mut extra);
-    leaf_children(m, n, on, &mut extra);
-    d.extra = extra;
-    d
-}
-
-/// An FSM event of an `EventPort` (RTCBuilder 2.x; not in spec v0.2).
+/// An FSM event of an `EventPort` (RTCBuilder 2.x; not in spec v0.2); its doc is a data port
+/// doc (`rtcDoc:event_doc`).
 pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
     let on = "event";
-    let mut e = Event {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut e, on, &mut extra);
-    for c in &n.children {
-        match c.key() {
-            Some("Doc") if e.doc.is_none() => e.doc = Some(map_data_port_doc(m, c, "event doc")),
-            Some("Doc") => m.repeated_elem(c, on, &mut extra),
-            _ => m.unknown_elem(c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
-    e.extra = extra;
+    let (e, _) = map_node(m, n, on, |m, c, e: &mut Event, extra| match c.key() {
+        Some("Doc") if e.doc.is_none() => e.doc = Some(map_leaf(m, c, "event doc")),
+        Some("Doc") => m.repeated_elem(c, on, extra),
+        _ => m.unknown_elem(c, on, extra),
+    });
     e
 }
 
-/// spec 2.3.8 `serviceport`, 2.4.7 doc, 2.5.4 ext.
+/// spec 2.3.8 `serviceport`, 2.4.7 doc, 2.5.4 ext, 2.3.10 `transmission_method`.
 pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
     let on = "service port";
-    let mut s = ServicePort {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut s, on, &mut extra);
-    for c in &n.children {
-        match c.key() {
-            Some("Doc") if s.doc.is_none() => {
-                let don = "service port doc";
-                let mut d = ServicePortDoc {
-                    pos: c.pos,
-                    ..Default::default()
-                };
-                let mut dx = Vec::new();
-                scalar_attrs(m, c, &mut d, don, &mut dx);
-                leaf_children(m, c, don, &mut dx);
-                d.extra = dx;
-                s.doc = Some(d);
-            }
-            Some("Properties") => s.properties.push(map_property(m, c)),
-            Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
-            Some("TransMethods") => {
-                // spec 2.3.10 `transmission_method`
-                let ton = "transmission method";
-                let mut t = TransMethod {
-                    pos: c.pos,
-                    ..Default::default()
-                };
-                let mut tx = Vec::new();
-                scalar_attrs(m, c, &mut t, ton, &mut tx);
-                leaf_children(m, c, ton, &mut tx);
-                t.extra = tx;
-                s.trans_methods.push(t);
-            }
-            Some("Doc") => m.repeated_elem(c, on, &mut extra),
-            _ => m.unknown_elem(c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
-    s.extra = extra;
+    let (s, _) = map_node(m, n, on, |m, c, s: &mut ServicePort, extra| match c.key() {
+        Some("Doc") if s.doc.is_none() => s.doc = Some(map_leaf(m, c, "service port doc")),
+        Some("Properties") => s.properties.push(map_leaf(m, c, "property")),
+        Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
+        Some("TransMethods") => s.trans_methods.push(map_leaf(m, c, "transmission method")),
+        Some("Doc") => m.repeated_elem(c, on, extra),
+        _ => m.unknown_elem(c, on, extra),
+    });
     s
 }
 
 /// spec 2.3.9 `serviceinterface`, 2.4.8 doc, 2.5.5 ext.
 pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
     let on = "service interface";
-    let mut s = ServiceInterface {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    let aliases = scalar_attrs(m, n, &mut s, on, &mut extra);
-    for c in &n.children {
+    let (s, aliases) = map_node(m, n, on, |m, c, s: &mut ServiceInterface, extra| {
         match c.key() {
-            Some("Doc") if s.doc.is_none() => {
-                let don = "service interface doc";
-                let mut d = ServiceInterfaceDoc {
-                    pos: c.pos,
-                    ..Default::default()
-                };
-                let mut dx = Vec::new();
-                scalar_attrs(m, c, &mut d, don, &mut dx);
-                leaf_children(m, c, don, &mut dx);
-                d.extra = dx;
-                s.doc = Some(d);
-            }
-            Some("Properties") => s.properties.push(map_property(m, c)),
-            Some("Doc") => m.repeated_elem(c, on, &mut extra),
-            _ => m.unknown_elem(c, on, &mut extra),
+            Some("Doc") if s.doc.is_none() => s.doc = Some(map_leaf(m, c, "service interface doc")),
+            Some("Properties") => s.properties.push(map_leaf(m, c, "property")),
+            Some("Doc") => m.repeated_elem(c, on, extra),
+            _ => m.unknown_elem(c, on, extra),
         }
-    }
-    m.stray_text(n, on, &mut extra);
+    });
     let node = format!("serviceInterface {}", s.name.as_deref().unwrap_or(""));
-    for (field, a, dialect) in aliases {
-        m.alias(&node, field, a, dialect);
-    }
-    s.extra = extra;
+    m.aliases(&node, aliases);
     s
 }
 
 /// spec 2.3.11 `parameter`.
 pub(super) fn map_parameter(m: &mut Mapper, n: &Node) -> Parameter {
-    let on = "parameter";
-    let mut p = Parameter {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut p, on, &mut extra);
-    leaf_children(m, n, on, &mut extra);
-    p.extra = extra;
-    p
+    map_leaf(m, n, "parameter")
 }
 
 /// spec 2.3.12 `language`, 2.5.6 `language_ext`.
 pub(super) fn map_language(m: &mut Mapper, n: &Node) -> Language {
     let on = "language";
-    let mut l = Language {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut l, on, &mut extra);
-    for c in &n.children {
-        match c.key() {
-            Some("targets") => l.targets.push(map_target(m, c)),
-            Some(k) if crate::parse::dialect::language_element(k).is_some() => {
-                map_language_element(m, c, &mut l)
-            }
-            _ => m.unknown_elem(c, on, &mut extra),
+    let (l, _) = map_node(m, n, on, |m, c, l: &mut Language, extra| match c.key() {
+        Some("targets") => l.targets.push(map_target(m, c)),
+        Some(k) if crate::parse::dialect::language_element(k).is_some() => {
+            map_language_element(m, c, l)
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    l.extra = extra;
+        _ => m.unknown_elem(c, on, extra),
+    });
     l
 }
 
@@ -706,45 +545,23 @@ pub(super) fn map_language_element(m: &mut Mapper, c: &Node, l: &mut Language) {
 /// spec 2.5.7 `target_environment`.
 pub(super) fn map_target(m: &mut Mapper, n: &Node) -> Target {
     let on = "target environment";
-    let mut t = Target {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut t, on, &mut extra);
-    for c in &n.children {
-        match c.key() {
-            Some("osVersions") => {
-                if let Some(v) = non_blank(&m.text_of(c, on, &mut extra)) {
-                    t.os_versions.push(v);
-                }
-            }
-            Some("cpus") => {
-                if let Some(v) = non_blank(&m.text_of(c, on, &mut extra)) {
-                    t.cpus.push(v);
-                }
-            }
-            Some("libraries") => t.libraries.push(map_library(m, c)),
-            _ => m.unknown_elem(c, on, &mut extra),
+    let (t, _) = map_node(m, n, on, |m, c, t: &mut Target, extra| {
+        let list = match c.key() {
+            Some("osVersions") => &mut t.os_versions,
+            Some("cpus") => &mut t.cpus,
+            Some("libraries") => return t.libraries.push(map_library(m, c)),
+            _ => return m.unknown_elem(c, on, extra),
+        };
+        if let Some(v) = non_blank(&m.text_of(c, on, extra)) {
+            list.push(v);
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    t.extra = extra;
+    });
     t
 }
 
 /// spec 2.5.8 `library`: XSD attribute `name`, PIM `path` (accepted silently).
 pub(super) fn map_library(m: &mut Mapper, n: &Node) -> Library {
-    let on = "library";
-    let mut l = Library {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    scalar_attrs(m, n, &mut l, on, &mut extra);
-    leaf_children(m, n, on, &mut extra);
-    l.extra = extra;
-    l
+    map_leaf(m, n, "library")
 }
 
 // --- constraints (spec 2.3.17–2.3.41, XSD 6.1 `constraint_type`, samples 8.1) ------------------

@@ -111,15 +111,15 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         empties: crate::parse::dialect::EmptyUnknowns::default(),
         written_as: Vec::new(),
     };
-    let mut profile = map_profile(&mut m, &root);
-    profile.written_as = std::mem::take(&mut m.written_as);
-    if let Some(d) = m.empties.note(file, profile.pos, "attribute") {
-        m.diags.push(d);
-    }
-    Ok(Parsed {
+    let profile = map_profile(&mut m, &root);
+    Ok(Parsed::read(
         profile,
-        diagnostics: m.diags,
-    })
+        m.written_as,
+        &m.empties,
+        "attribute",
+        file,
+        m.diags,
+    ))
 }
 
 mod decode;

@@ -129,21 +129,20 @@ fn map_system(m: &mut Mapper, n: &Node) -> RtSystem {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("id") => &mut s.id,
-            Some("version") => &mut s.version,
-            Some("abstract") => &mut s.abstract_,
-            Some("creationDate") => &mut s.creation_date,
-            Some("updateDate") => &mut s.update_date,
-            Some("comment") => &mut s.comment,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("id", &mut s.id),
+            ("version", &mut s.version),
+            ("abstract", &mut s.abstract_),
+            ("creationDate", &mut s.creation_date),
+            ("updateDate", &mut s.update_date),
+            ("comment", &mut s.comment),
+        ],
+    );
     s.id_parts = s.id.as_deref().and_then(SystemIdParts::parse);
     for c in &n.children {
         match ekey(c) {
@@ -226,23 +225,22 @@ fn map_component(m: &mut Mapper, n: &Node) -> SystemComponent {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("id") => &mut c.id,
-            Some("pathUri") => &mut c.path_uri,
-            Some("activeConfigurationSet") => &mut c.active_configuration_set,
-            Some("instanceName") => &mut c.instance_name,
-            Some("compositeType") => &mut c.composite_type,
-            Some("isRequired") => &mut c.is_required,
-            Some("comment") => &mut c.comment,
-            Some("visible") => &mut c.visible,
-            _ => {
-                unknown_attr(m, a, "component instance", &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, "component instance", &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        "component instance",
+        &mut extra,
+        &mut [
+            ("id", &mut c.id),
+            ("pathUri", &mut c.path_uri),
+            ("activeConfigurationSet", &mut c.active_configuration_set),
+            ("instanceName", &mut c.instance_name),
+            ("compositeType", &mut c.composite_type),
+            ("isRequired", &mut c.is_required),
+            ("comment", &mut c.comment),
+            ("visible", &mut c.visible),
+        ],
+    );
     c.id_parts = c.id.as_deref().and_then(ComponentIdParts::parse);
     let on = format!(
         "component instance `{}`",
@@ -280,18 +278,17 @@ fn map_port(m: &mut Mapper, n: &Node, on: &str, instance: Option<&str>) -> Syste
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("name") => &mut p.name,
-            Some("comment") => &mut p.comment,
-            Some("visible") => &mut p.visible,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("name", &mut p.name),
+            ("comment", &mut p.comment),
+            ("visible", &mut p.visible),
+        ],
+    );
     p.short_name = p
         .name
         .as_deref()
@@ -356,18 +353,17 @@ fn map_ec(m: &mut Mapper, n: &Node) -> ExecutionContext {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("id") => &mut e.id,
-            Some("kind") => &mut e.kind,
-            Some("rate") => &mut e.rate,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("id", &mut e.id),
+            ("kind", &mut e.kind),
+            ("rate", &mut e.rate),
+        ],
+    );
     for c in &n.children {
         match ekey(c) {
             Some("Participants") => e.participants.push(map_target(m, c, "participant")),
@@ -414,18 +410,17 @@ fn map_target(m: &mut Mapper, n: &Node, on: &str) -> TargetComponent {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("componentId") => &mut t.component_id,
-            Some("instanceName") => &mut t.instance_name,
-            Some("id") => &mut t.id,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("componentId", &mut t.component_id),
+            ("instanceName", &mut t.instance_name),
+            ("id", &mut t.id),
+        ],
+    );
     for c in &n.children {
         match ekey(c) {
             Some("Properties") => t.properties.push(map_property(m, c)),
@@ -445,20 +440,19 @@ fn map_location(m: &mut Mapper, n: &Node) -> Location {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("x") => &mut l.x,
-            Some("y") => &mut l.y,
-            Some("height") => &mut l.height,
-            Some("width") => &mut l.width,
-            Some("direction") => &mut l.direction,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("x", &mut l.x),
+            ("y", &mut l.y),
+            ("height", &mut l.height),
+            ("width", &mut l.width),
+            ("direction", &mut l.direction),
+        ],
+    );
     leaf(m, n, on, &mut extra);
     l.extra = extra;
     l
@@ -498,18 +492,17 @@ fn map_end(m: &mut Mapper, n: &Node, on: &str) -> PortEnd {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("componentId") => &mut e.component_id,
-            Some("instanceName") => &mut e.instance_name,
-            Some("portName") => &mut e.port_name,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("componentId", &mut e.component_id),
+            ("instanceName", &mut e.instance_name),
+            ("portName", &mut e.port_name),
+        ],
+    );
     e.short_name = e
         .port_name
         .as_deref()
@@ -542,24 +535,23 @@ fn map_data_connector(m: &mut Mapper, n: &Node) -> DataPortConnector {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("connectorId") => &mut d.connector_id,
-            Some("name") => &mut d.name,
-            Some("dataType") => &mut d.data_type,
-            Some("interfaceType") => &mut d.interface_type,
-            Some("dataflowType") => &mut d.dataflow_type,
-            Some("subscriptionType") => &mut d.subscription_type,
-            Some("pushInterval") => &mut d.push_interval,
-            Some("comment") => &mut d.comment,
-            Some("visible") => &mut d.visible,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("connectorId", &mut d.connector_id),
+            ("name", &mut d.name),
+            ("dataType", &mut d.data_type),
+            ("interfaceType", &mut d.interface_type),
+            ("dataflowType", &mut d.dataflow_type),
+            ("subscriptionType", &mut d.subscription_type),
+            ("pushInterval", &mut d.push_interval),
+            ("comment", &mut d.comment),
+            ("visible", &mut d.visible),
+        ],
+    );
     d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
     let on = format!("data port connector `{}`", d.name.as_deref().unwrap_or(""));
     for c in &n.children {
@@ -583,20 +575,19 @@ fn map_service_connector(m: &mut Mapper, n: &Node) -> ServicePortConnector {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("connectorId") => &mut s.connector_id,
-            Some("name") => &mut s.name,
-            Some("transMethod") => &mut s.trans_method,
-            Some("comment") => &mut s.comment,
-            Some("visible") => &mut s.visible,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("connectorId", &mut s.connector_id),
+            ("name", &mut s.name),
+            ("transMethod", &mut s.trans_method),
+            ("comment", &mut s.comment),
+            ("visible", &mut s.visible),
+        ],
+    );
     let on = format!(
         "service port connector `{}`",
         s.name.as_deref().unwrap_or("")
@@ -689,17 +680,16 @@ fn map_preceding(m: &mut Mapper, n: &Node) -> Preceding {
         ..Default::default()
     };
     let mut extra = Vec::new();
-    for a in &n.attrs {
-        let slot = match akey(a) {
-            Some("timeout") => &mut p.timeout,
-            Some("sendingTiming") => &mut p.sending_timing,
-            _ => {
-                unknown_attr(m, a, on, &mut extra);
-                continue;
-            }
-        };
-        m.set(slot, a, on, &mut extra);
-    }
+    attrs(
+        m,
+        n,
+        on,
+        &mut extra,
+        &mut [
+            ("timeout", &mut p.timeout),
+            ("sendingTiming", &mut p.sending_timing),
+        ],
+    );
     for c in &n.children {
         match ekey(c) {
             Some("PrecedingComponents") => {
