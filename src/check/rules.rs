@@ -118,21 +118,39 @@ fn required(p: &Profile, s: &mut Findings) {
             );
         }
     }
-    for c in p.configurations() {
+    // A node's `name`, then its other required attributes, each labelled with that name.
+    let node = |s: &mut Findings,
+                (element, what): (&str, &str),
+                name: &Option<crate::model::Text>,
+                (attr_pos, pos): (&crate::model::AttrPos, Pos),
+                attrs: &[(&str, &Option<crate::model::Text>)]| {
         miss(
             s,
-            "Configuration attribute `name`",
-            &c.name,
-            c.attr_pos.or("name", c.pos),
+            &format!("{element} attribute `name`"),
+            name,
+            attr_pos.or("name", pos),
         );
-        let label = c.name.as_deref().unwrap_or("");
-        miss(
+        let label = name.as_deref().unwrap_or("");
+        for (attr, v) in attrs {
+            miss(
+                s,
+                &format!("attribute `{attr}` of {what} `{label}`"),
+                v,
+                attr_pos.or(attr, pos),
+            );
+        }
+    };
+    for c in p.configurations() {
+        let at = (&c.attr_pos, c.pos);
+        node(
             s,
-            &format!("attribute `type` of configuration `{label}`"),
-            &c.type_,
-            c.attr_pos.or("type", c.pos),
+            ("Configuration", "configuration"),
+            &c.name,
+            at,
+            &[("type", &c.type_)],
         );
         if c.default_value.is_none() {
+            let label = c.name.as_deref().unwrap_or("");
             s.emit(
                 r::MISSING_REQUIRED,
                 c.pos,
@@ -141,52 +159,32 @@ fn required(p: &Profile, s: &mut Findings) {
         }
     }
     for d in &p.data_ports {
-        miss(
+        let attrs = [("portType", &d.port_type), ("type", &d.type_)];
+        node(
             s,
-            "DataPort attribute `name`",
+            ("DataPort", "data port"),
             &d.name,
-            d.attr_pos.or("name", d.pos),
-        );
-        let label = d.name.as_deref().unwrap_or("");
-        miss(
-            s,
-            &format!("attribute `portType` of data port `{label}`"),
-            &d.port_type,
-            d.attr_pos.or("portType", d.pos),
-        );
-        miss(
-            s,
-            &format!("attribute `type` of data port `{label}`"),
-            &d.type_,
-            d.attr_pos.or("type", d.pos),
+            (&d.attr_pos, d.pos),
+            &attrs,
         );
     }
     for sp in &p.service_ports {
-        miss(
+        node(
             s,
-            "ServicePort attribute `name`",
+            ("ServicePort", ""),
             &sp.name,
-            sp.attr_pos.or("name", sp.pos),
+            (&sp.attr_pos, sp.pos),
+            &[],
         );
         for i in &sp.interfaces {
-            miss(
+            let attrs = [("type", &i.type_), ("direction", &i.direction)];
+            let at = (&i.attr_pos, i.pos);
+            node(
                 s,
-                "ServiceInterface attribute `name`",
+                ("ServiceInterface", "service interface"),
                 &i.name,
-                i.attr_pos.or("name", i.pos),
-            );
-            let label = i.name.as_deref().unwrap_or("");
-            miss(
-                s,
-                &format!("attribute `type` of service interface `{label}`"),
-                &i.type_,
-                i.attr_pos.or("type", i.pos),
-            );
-            miss(
-                s,
-                &format!("attribute `direction` of service interface `{label}`"),
-                &i.direction,
-                i.attr_pos.or("direction", i.pos),
+                at,
+                &attrs,
             );
         }
     }

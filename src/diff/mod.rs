@@ -1310,6 +1310,14 @@ fn changed(
             quoted(new)
         ))
     };
+    // `code` with `message`, unless the two spellings are the `same` (`what` says in what way).
+    let same_or = |same: bool, what: &str, code: &'static str, message: String| {
+        if same {
+            (Some(codes::OTHER_CHANGED), spelled(what))
+        } else {
+            (Some(code), Some(message))
+        }
+    };
     match at {
         Place::Field(Field::ProfileId) => {
             if oi.version != ni.version && oi.key == ni.key {
@@ -1335,15 +1343,9 @@ fn changed(
         Place::Field(Field::BasicExecutionType) => (Some(codes::EXECUTION_TYPE), None),
         Place::Field(Field::BasicExecutionRate) => {
             let num = |s: Option<&str>| s.and_then(|s| s.trim().parse::<f64>().ok());
-            match (num(old), num(new)) {
-                (Some(a), Some(b)) if a == b => {
-                    (Some(codes::OTHER_CHANGED), spelled("is the same rate"))
-                }
-                _ => (
-                    Some(codes::EXECUTION_RATE),
-                    Some(format!("execution rate {} → {}", quoted(old), quoted(new))),
-                ),
-            }
+            let same = matches!((num(old), num(new)), (Some(a), Some(b)) if a == b);
+            let message = format!("execution rate {} → {}", quoted(old), quoted(new));
+            same_or(same, "is the same rate", codes::EXECUTION_RATE, message)
         }
         Place::Field(Field::BasicMaxInstances) => {
             // Absent or empty: unlimited.
@@ -1402,37 +1404,29 @@ fn changed(
                 }
                 .direction()
             };
-            if dir(old).is_some() && dir(old) == dir(new) {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("means the same port kind"),
-                )
-            } else {
-                (
-                    Some(codes::DATA_PORT_DIRECTION),
-                    Some(format!(
-                        "data port `{}` changed from {} to {}",
-                        p[1],
-                        quoted(old),
-                        quoted(new)
-                    )),
-                )
-            }
+            let message = format!(
+                "data port `{}` changed from {} to {}",
+                p[1],
+                quoted(old),
+                quoted(new)
+            );
+            let same = same_kind(old, new, dir);
+            same_or(
+                same,
+                "means the same port kind",
+                codes::DATA_PORT_DIRECTION,
+                message,
+            )
         }
         Place::Field(Field::DataPortType) => {
-            if same_type(old, new) {
-                (Some(codes::OTHER_CHANGED), spelled("names the same type"))
-            } else {
-                (
-                    Some(codes::DATA_PORT_TYPE),
-                    Some(format!(
-                        "data port `{}` now carries {} instead of {}",
-                        p[1],
-                        quoted(new),
-                        quoted(old)
-                    )),
-                )
-            }
+            let message = format!(
+                "data port `{}` now carries {} instead of {}",
+                p[1],
+                quoted(new),
+                quoted(old)
+            );
+            let same = same_type(old, new);
+            same_or(same, "names the same type", codes::DATA_PORT_TYPE, message)
         }
         Place::Field(
             Field::DataPortInterfaceType
@@ -1481,23 +1475,20 @@ fn changed(
             )),
         ),
         Place::Field(Field::InterfaceType) => {
-            if same_type(old, new) {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("names the same interface"),
-                )
-            } else {
-                (
-                    Some(codes::INTERFACE_TYPE),
-                    Some(format!(
-                        "interface `{}` of service port `{}` is now {} instead of {}",
-                        p[3],
-                        p[1],
-                        quoted(new),
-                        quoted(old)
-                    )),
-                )
-            }
+            let message = format!(
+                "interface `{}` of service port `{}` is now {} instead of {}",
+                p[3],
+                p[1],
+                quoted(new),
+                quoted(old)
+            );
+            let same = same_type(old, new);
+            same_or(
+                same,
+                "names the same interface",
+                codes::INTERFACE_TYPE,
+                message,
+            )
         }
         Place::Field(Field::InterfaceDirection) => {
             let dir = |s: Option<&str>| {
@@ -1507,23 +1498,20 @@ fn changed(
                 }
                 .direction_kind()
             };
-            if dir(old).is_some() && dir(old) == dir(new) {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("means the same direction"),
-                )
-            } else {
-                (
-                    Some(codes::INTERFACE_DIRECTION),
-                    Some(format!(
-                        "interface `{}` of service port `{}` changed from {} to {}",
-                        p[3],
-                        p[1],
-                        quoted(old),
-                        quoted(new)
-                    )),
-                )
-            }
+            let message = format!(
+                "interface `{}` of service port `{}` changed from {} to {}",
+                p[3],
+                p[1],
+                quoted(old),
+                quoted(new)
+            );
+            let same = same_kind(old, new, dir);
+            same_or(
+                same,
+                "means the same direction",
+                codes::INTERFACE_DIRECTION,
+                message,
+            )
         }
         Place::Field(Field::ConfigurationType) => {
             use crate::value::ValueType;
@@ -1534,22 +1522,18 @@ fn changed(
                 }
                 (a, b) => a == b,
             };
-            if same {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("means the same value type"),
-                )
-            } else {
-                (
-                    Some(codes::CONFIGURATION_TYPE),
-                    Some(format!(
-                        "configuration parameter `{}` is now {} instead of {}",
-                        p[1],
-                        quoted(new),
-                        quoted(old)
-                    )),
-                )
-            }
+            let message = format!(
+                "configuration parameter `{}` is now {} instead of {}",
+                p[1],
+                quoted(new),
+                quoted(old)
+            );
+            same_or(
+                same,
+                "means the same value type",
+                codes::CONFIGURATION_TYPE,
+                message,
+            )
         }
         Place::Field(Field::ConfigurationDefaultValue) => (
             Some(codes::DEFAULT_CHANGED),
@@ -1567,6 +1551,15 @@ fn changed(
         _ if documentation => (Some(codes::DOCUMENTATION_CHANGED), None),
         _ => (Some(codes::OTHER_CHANGED), None),
     }
+}
+
+/// Both spellings read as the same known kind.
+fn same_kind<K: PartialEq>(
+    old: Option<&str>,
+    new: Option<&str>,
+    kind: impl Fn(Option<&str>) -> Option<K>,
+) -> bool {
+    kind(old).is_some() && kind(old) == kind(new)
 }
 
 fn same_type(old: Option<&str>, new: Option<&str>) -> bool {
