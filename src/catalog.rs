@@ -1860,8 +1860,44 @@ impl Catalog {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// A component `name` of `category` with data ports (port type, data type) and service
+    /// ports of one interface each (direction, interface type), loaded from its RTC.xml.
+    pub(crate) fn xml_profile(
+        name: &str,
+        category: &str,
+        ports: &[(&str, &str)],
+        services: &[(&str, &str)],
+    ) -> LoadedProfile {
+        let mut xml = format!(
+            r#"<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:V:{category}:{name}:1" rtc:version="0.2"><rtc:BasicInfo rtc:name="{name}" rtc:vendor="V" rtc:category="{category}" rtc:version="1"/>"#
+        );
+        for (i, (dir, ty)) in ports.iter().enumerate() {
+            xml.push_str(&format!(
+                r#"<rtc:DataPorts rtc:portType="{dir}" rtc:name="p{i}" rtc:type="{ty}"/>"#
+            ));
+        }
+        for (i, (dir, ty)) in services.iter().enumerate() {
+            xml.push_str(&format!(
+                r#"<rtc:ServicePorts rtc:name="s{i}"><rtc:ServiceInterface rtc:direction="{dir}" rtc:name="i{i}" rtc:type="{ty}"/></rtc:ServicePorts>"#
+            ));
+        }
+        xml.push_str("</rtc:RtcProfile>");
+        let parsed = crate::parse::parse(
+            crate::parse::SourceFormat::Xml,
+            xml.as_bytes(),
+            name,
+            &crate::parse::Limits::default(),
+        )
+        .expect("profile");
+        LoadedProfile {
+            source: format!("{name}/RTC.xml"),
+            format: crate::parse::SourceFormat::Xml,
+            profile: Box::new(parsed.profile),
+        }
+    }
 
     #[test]
     fn slugs_are_safe() {

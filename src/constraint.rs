@@ -821,11 +821,12 @@ fn walk_problems(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::model::Pos;
 
-    fn unit(cond: Condition) -> Constraint {
+    /// A constraint of one condition (also for `diff::constraint`'s tests).
+    pub(crate) fn unit(cond: Condition) -> Constraint {
         Constraint {
             kind: ConstraintKind::Unit {
                 key: None,
@@ -835,7 +836,8 @@ mod tests {
             extra: vec![],
         }
     }
-    fn cmp(c: Comparison, lit: &str) -> Constraint {
+    /// `x <comparison> lit`.
+    pub(crate) fn cmp(c: Comparison, lit: &str) -> Constraint {
         unit(Condition::Compare {
             comparison: c,
             literal: Some(lit.into()),

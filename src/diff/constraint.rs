@@ -328,25 +328,7 @@ fn shape(c: &Constraint, depth: usize) -> Option<Shape> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::{Pos, Text};
-
-    fn unit(cond: Condition) -> Constraint {
-        Constraint {
-            kind: ConstraintKind::Unit {
-                key: None,
-                condition: Box::new(cond),
-            },
-            pos: Pos::default(),
-            extra: vec![],
-        }
-    }
-    fn cmp(c: Comparison, lit: &str) -> Constraint {
-        unit(Condition::Compare {
-            comparison: c,
-            literal: Some(Text::from(lit)),
-            match_case: None,
-        })
-    }
+    use crate::constraint::tests::{cmp, unit};
     fn between_c(lo: &str, hi: &str) -> Constraint {
         unit(Condition::Between {
             lower: Some(lo.into()),
