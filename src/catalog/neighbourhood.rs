@@ -133,6 +133,23 @@ impl Neighbourhood {
     }
 }
 
+/// [`capped_groups`] as neighbours, each with its ports (`at`: where a reference is).
+fn neighbours<R>(
+    (ci, all, cap): (usize, &[R], usize),
+    component: impl Fn(&R) -> usize,
+    at: impl Fn(&R) -> Option<PortAt>,
+) -> (Vec<Neighbour>, usize) {
+    let (groups, total) = capped_groups(ci, all, cap, component);
+    let shown = groups
+        .into_iter()
+        .map(|(k, list)| Neighbour {
+            component: k,
+            ports: list.into_iter().filter_map(&at).collect(),
+        })
+        .collect();
+    (shown, total)
+}
+
 impl Catalog {
     /// The neighbourhood of component `ci`, at most `cap` neighbours named per port (the rest
     /// counted in [`PortNeighbours::total`]). Event ports and interfaces of no known direction
@@ -153,19 +170,11 @@ impl Catalog {
                 continue;
             };
             let refs = self.data_port_peers(ci, pi);
-            let (groups, total) = capped_groups(ci, refs, cap, |r| {
-                self.port_component(r).unwrap_or(usize::MAX)
-            });
-            let shown = groups
-                .into_iter()
-                .map(|(k, list)| Neighbour {
-                    component: k,
-                    ports: list
-                        .iter()
-                        .filter_map(|r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)))
-                        .collect(),
-                })
-                .collect();
+            let (shown, total) = neighbours(
+                (ci, refs, cap),
+                |r| self.port_component(r).unwrap_or(usize::MAX),
+                |r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)),
+            );
             if total > 0 {
                 ports.push(PortNeighbours {
                     port: PortAt::Data(pi),
@@ -187,22 +196,14 @@ impl Catalog {
                     continue;
                 };
                 let refs = self.interface_peers(ci, si, ii);
-                let (groups, total) = capped_groups(ci, refs, cap, |r| {
-                    self.interface_component(r).unwrap_or(usize::MAX)
-                });
-                let shown = groups
-                    .into_iter()
-                    .map(|(k, list)| Neighbour {
-                        component: k,
-                        ports: list
-                            .iter()
-                            .filter_map(|r| {
-                                self.resolve_interface(r)
-                                    .map(|(_, q, j)| PortAt::Interface(q, j))
-                            })
-                            .collect(),
-                    })
-                    .collect();
+                let (shown, total) = neighbours(
+                    (ci, refs, cap),
+                    |r| self.interface_component(r).unwrap_or(usize::MAX),
+                    |r| {
+                        self.resolve_interface(r)
+                            .map(|(_, q, j)| PortAt::Interface(q, j))
+                    },
+                );
                 if total > 0 {
                     ports.push(PortNeighbours {
                         port: PortAt::Interface(si, ii),
