@@ -844,33 +844,39 @@ pub(crate) mod tests {
             match_case: None,
         })
     }
+    /// `lo ≤ x ≤ hi`.
+    pub(crate) fn between(lo: &str, hi: &str) -> Constraint {
+        unit(Condition::Between {
+            lower: Some(lo.into()),
+            upper: Some(hi.into()),
+        })
+    }
+    pub(crate) fn or(operands: Vec<Constraint>) -> Constraint {
+        unit(Condition::Or { operands })
+    }
+    pub(crate) fn and(operands: Vec<Constraint>) -> Constraint {
+        unit(Condition::And { operands })
+    }
 
     #[test]
     fn between_and_comparisons() {
-        let b = unit(Condition::Between {
-            lower: Some("0".into()),
-            upper: Some("100".into()),
-        });
+        let b = between("0", "100");
         assert_eq!(describe(&b), "0 ≤ x ≤ 100");
         assert_eq!(describe(&cmp(Comparison::LessThan, "100")), "x < 100");
     }
 
     #[test]
     fn enumeration_and_or() {
-        let e = unit(Condition::Or {
-            operands: vec![
-                cmp(Comparison::EqualTo, "RGB"),
-                cmp(Comparison::EqualTo, "GRAY"),
-                cmp(Comparison::EqualTo, "JPEG"),
-            ],
-        });
+        let e = or(vec![
+            cmp(Comparison::EqualTo, "RGB"),
+            cmp(Comparison::EqualTo, "GRAY"),
+            cmp(Comparison::EqualTo, "JPEG"),
+        ]);
         assert_eq!(describe(&e), "one of: RGB, GRAY, JPEG");
-        let o = unit(Condition::Or {
-            operands: vec![
-                cmp(Comparison::LessThanOrEqualTo, "100"),
-                cmp(Comparison::GreaterThanOrEqualTo, "200"),
-            ],
-        });
+        let o = or(vec![
+            cmp(Comparison::LessThanOrEqualTo, "100"),
+            cmp(Comparison::GreaterThanOrEqualTo, "200"),
+        ]);
         assert_eq!(describe(&o), "x ≤ 100 or x ≥ 200");
     }
 
@@ -880,12 +886,10 @@ pub(crate) mod tests {
             operand: unit(Condition::IsNull { text: None }),
         });
         assert_eq!(describe(&n), "not null");
-        let a = unit(Condition::And {
-            operands: vec![
-                cmp(Comparison::GreaterThan, "0"),
-                cmp(Comparison::LessThanOrEqualTo, "10"),
-            ],
-        });
+        let a = and(vec![
+            cmp(Comparison::GreaterThan, "0"),
+            cmp(Comparison::LessThanOrEqualTo, "10"),
+        ]);
         assert_eq!(describe(&a), "0 < x ≤ 10");
     }
 }
