@@ -388,7 +388,10 @@ pub fn diff_with_systems(
             }
         }
     }
-    for (side, cat, sys) in [("OLD", old, old_systems), ("NEW", new, new_systems)] {
+    for (side, cat, sys, name) in [
+        ("OLD", old, old_systems, old_name),
+        ("NEW", new, new_systems, new_name),
+    ] {
         // RT System profiles that could not be read are reported with the systems.
         let is_system =
             |d: &crate::diagnostic::Diagnostic| sys.unreadable.iter().any(|u| u.file == d.file);
@@ -397,37 +400,12 @@ pub fn diff_with_systems(
             .iter()
             .filter(|d| d.is_error() && !is_system(d))
         {
-            let mut c = change(
-                codes::UNREADABLE_PROFILE,
-                String::new(),
-                String::new(),
-                None,
-                None,
-                format!(
-                    "{side}: {} could not be read ({}[{}]: {}); {}",
-                    if side == "NEW" {
-                        new_name(&d.file)
-                    } else {
-                        old_name(&d.file)
-                    },
-                    d.severity,
-                    d.code,
-                    d.message,
-                    if is_idl_file(&d.file) {
-                        "types it defines may be missing from the comparison"
-                    } else {
-                        "a component in it counts as absent"
-                    }
-                ),
-            );
-            if side == "NEW" {
-                c.file = Some(new_name(&d.file));
-                c.line = d.pos.map(|p| p.line);
-                c.column = d.pos.map(|p| p.column);
+            let then = if is_idl_file(&d.file) {
+                "types it defines may be missing from the comparison"
             } else {
-                c.old_file = Some(old_name(&d.file));
-            }
-            out.push(c);
+                "a component in it counts as absent"
+            };
+            out.push(unreadable(side, d, name, ("", then)));
         }
     }
     idl.finish(&mut out);
@@ -1280,6 +1258,38 @@ fn classify(
             ctx.push(out, code, p, pos, (old, new), message);
         }
     }
+}
+
+/// DIFF002 for a file `side` could not read: "{side}: {what}FILE could not be read (…); {then}",
+/// at the file (NEW's) or the old file.
+fn unreadable(
+    side: &str,
+    d: &crate::diagnostic::Diagnostic,
+    name: Namer,
+    (what, then): (&str, &str),
+) -> Change {
+    let mut c = change(
+        codes::UNREADABLE_PROFILE,
+        String::new(),
+        String::new(),
+        None,
+        None,
+        format!(
+            "{side}: {what}{} could not be read ({}[{}]: {}); {then}",
+            name(&d.file),
+            d.severity,
+            d.code,
+            d.message,
+        ),
+    );
+    if side == "NEW" {
+        c.file = Some(name(&d.file));
+        c.line = d.pos.map(|p| p.line);
+        c.column = d.pos.map(|p| p.column);
+    } else {
+        c.old_file = Some(name(&d.file));
+    }
+    c
 }
 
 fn quoted(s: Option<&str>) -> String {

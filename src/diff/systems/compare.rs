@@ -10,6 +10,7 @@
 //! its attribute order or white space gives no change; host data (IORs, host names, endpoints:
 //! [`SystemProperty::private`]) is not compared either.
 
+use super::end_text;
 use crate::diff::{change, codes, labels, Change};
 use crate::model::system::{
     short_port_name, ComponentIdParts, DataPortConnector, ExecutionContext, PortEnd, RtSystem,
@@ -186,18 +187,6 @@ fn property_class(name: &str) -> (Option<&'static str>, &'static str) {
             (None, codes::SYSTEM_CONNECTOR_POLICY)
         }
         _ => (None, codes::SYSTEM_OTHER),
-    }
-}
-
-/// `instance.port` of a connector end, as the system names it.
-fn end_text(end: Option<&PortEnd>) -> String {
-    let Some(e) = end else {
-        return "(none)".into();
-    };
-    let port = non_empty(&e.port_name).unwrap_or("?");
-    match non_empty(&e.instance_name) {
-        Some(i) if !port.starts_with(&format!("{i}.")) => format!("{i}.{port}"),
-        _ => port.to_string(),
     }
 }
 
