@@ -1066,6 +1066,23 @@ fn s(p: &[String], i: usize) -> &str {
 }
 
 /// The typed item labelled `label` among `items`.
+/// The items of `new` that `old` has an item of the same label for: (label, old, new).
+fn same_label<'a, T>(
+    old: &'a [T],
+    new: &'a [T],
+    name: impl Fn(&T) -> Option<&str>,
+) -> Vec<(String, &'a T, &'a T)> {
+    let old_labels = labels(old.iter().map(&name));
+    labels(new.iter().map(&name))
+        .into_iter()
+        .zip(new)
+        .filter_map(|(l, n)| {
+            let o = old_labels.iter().position(|x| *x == l).map(|i| &old[i])?;
+            Some((l, o, n))
+        })
+        .collect()
+}
+
 fn by_label<'a, T>(
     items: &'a [T],
     name: impl Fn(&T) -> Option<&str>,
