@@ -855,20 +855,30 @@ fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
     out
 }
 
-fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String> {
+/// Each of `bases`, numbered from its second time on (`number(base, n)`), so that all differ.
+fn numbered(
+    bases: impl Iterator<Item = String>,
+    number: impl Fn(&str, usize) -> String,
+) -> Vec<String> {
     let mut seen: HashMap<String, usize> = HashMap::new();
-    names
-        .map(|n| {
-            let base = format!("{prefix}-{}", slugify(&n));
+    bases
+        .map(|base| {
             let c = seen.entry(base.clone()).or_default();
             *c += 1;
             if *c > 1 {
-                format!("{base}-{c}")
+                number(&base, *c)
             } else {
                 base
             }
         })
         .collect()
+}
+
+fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String> {
+    numbered(
+        names.map(|n| format!("{prefix}-{}", slugify(&n))),
+        |base, c| format!("{base}-{c}"),
+    )
 }
 
 fn anchors(profile: &Profile) -> Anchors {

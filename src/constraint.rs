@@ -218,6 +218,19 @@ pub enum Verdict {
     Unevaluable(String),
 }
 
+/// The type a value of a configuration parameter of type `ty` is checked as: RTSystemEditor's
+/// checkbox and ordered_list widgets store the selected items as a comma-separated list, each
+/// item to satisfy the constraint (an enumeration).
+pub fn widget_type(widget: Option<&str>, ty: ValueType) -> ValueType {
+    match (widget.map(str::trim), ty) {
+        (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
+        (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
+            ValueType::Vector(ScalarType::Text)
+        }
+        _ => ty,
+    }
+}
+
 /// Evaluates `c` against `value` (as written in the profile) of type `ty`.
 pub fn evaluate(c: &Constraint, value: &str, ty: ValueType) -> Verdict {
     let subject = match ty {

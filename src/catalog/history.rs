@@ -168,23 +168,13 @@ impl super::Catalog {
 /// The labels `rtcdoc diff` keys the items of a list by (ports, interfaces, parameters): the
 /// trimmed name (`(unnamed)` when blank), and `name#2`, `name#3`, … for a repeated one.
 pub fn item_labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {
-    let mut seen: std::collections::BTreeMap<String, usize> = std::collections::BTreeMap::new();
-    names
-        .map(|n| {
-            let base = n
-                .map(str::trim)
-                .filter(|s| !s.is_empty())
-                .unwrap_or("(unnamed)")
-                .to_string();
-            let k = seen.entry(base.clone()).or_default();
-            *k += 1;
-            if *k > 1 {
-                format!("{base}#{k}")
-            } else {
-                base
-            }
-        })
-        .collect()
+    let bases = names.map(|n| {
+        n.map(str::trim)
+            .filter(|s| !s.is_empty())
+            .unwrap_or("(unnamed)")
+            .to_string()
+    });
+    super::numbered(bases, |base, k| format!("{base}#{k}"))
 }
 
 /// The change path of each element a "since" note can be on, in profile order: what

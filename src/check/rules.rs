@@ -821,16 +821,7 @@ fn configuration_values(p: &Profile, s: &mut Findings) {
         if !default_ok || !problems.is_empty() {
             continue;
         }
-        // RTSystemEditor's checkbox and ordered_list widgets store the selected items as a
-        // comma-separated list: each item must satisfy the constraint (an enumeration).
-        let eval_ty = match (c.widget().map(str::trim), ty) {
-            (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
-            (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
-                ValueType::Vector(value::ScalarType::Text)
-            }
-            _ => ty,
-        };
-        match constraint::evaluate(k, v, eval_ty) {
+        match constraint::evaluate(k, v, constraint::widget_type(c.widget(), ty)) {
             Verdict::Satisfied => {}
             Verdict::Violated(why) => s.emit(
                 r::CONSTRAINT_VIOLATED,
