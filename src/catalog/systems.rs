@@ -253,21 +253,19 @@ impl Catalog {
                     .and_then(|ci| find_port(&self.components[ci], end_port_name(e)));
                 EndLink { instance, port }
             };
+            let link = |source, target| ConnectorLink {
+                source: end(source),
+                target: end(target),
+            };
             let data_connectors = sys
                 .data_port_connectors
                 .iter()
-                .map(|c| ConnectorLink {
-                    source: end(&c.source),
-                    target: end(&c.target),
-                })
+                .map(|c| link(&c.source, &c.target))
                 .collect();
             let service_connectors = sys
                 .service_port_connectors
                 .iter()
-                .map(|c| ConnectorLink {
-                    source: end(&c.source),
-                    target: end(&c.target),
-                })
+                .map(|c| link(&c.source, &c.target))
                 .collect();
             systems.push(System {
                 source: l.source,
