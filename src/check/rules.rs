@@ -861,20 +861,7 @@ fn configuration_values(p: &Profile, s: &mut Findings) {
 /// Document coverage of one component: (documented, total) items, emitting RTC501–RTC505 for
 /// the undocumented ones when `s` is given.
 pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Findings>) -> (usize, usize) {
-    let mut documented = 0;
-    let mut total = 0;
-    let mut item = |s: &mut Option<&mut Findings>,
-                    desc: Option<&Option<crate::model::Text>>,
-                    code,
-                    pos,
-                    msg: String| {
-        total += 1;
-        if desc.is_some_and(|d| !blank(d)) {
-            documented += 1;
-        } else if let Some(s) = s.as_deref_mut() {
-            s.emit(code, pos, msg);
-        }
-    };
+    use crate::model::Text;
     let b = &p.basic_info;
     // BasicInfo's description (2.3.2) documents the component as well as the Document
     // Profile's (2.4.1): the page shows either. A placeholder (`ModuleDescription`) does not.
@@ -882,72 +869,48 @@ pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Findings>) -> (usize, us
         .into_iter()
         .flatten()
         .find(|d| crate::model::documented("description", d).is_some());
-    item(
-        &mut s,
+    // Every item counted: its description, code, position and what it is.
+    let mut items: Vec<(Option<&Option<Text>>, &str, Pos, String)> = vec![(
         described,
         r::DOC_COMPONENT,
         if b.pos.is_unknown() { p.pos } else { b.pos },
-        format!("component `{}` has no description", p.name()),
-    );
+        format!("component `{}`", p.name()),
+    )];
     for a in p.actions.iter().filter(|a| a.is_implemented()) {
-        item(
-            &mut s,
-            a.doc.as_ref().map(|d| &d.description),
-            r::DOC_ACTION,
-            a.pos,
-            format!(
-                "implemented action {} has no description",
-                a.kind.xml_name()
-            ),
-        );
+        let what = format!("implemented action {}", a.kind.xml_name());
+        let desc = a.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_ACTION, a.pos, what));
     }
+    let named =
+        |what: &str, name: &Option<Text>| format!("{what} `{}`", name.as_deref().unwrap_or(""));
     for d in &p.data_ports {
-        item(
-            &mut s,
-            d.doc.as_ref().map(|d| &d.description),
-            r::DOC_PORT,
-            d.pos,
-            format!(
-                "data port `{}` has no description",
-                d.name.as_deref().unwrap_or("")
-            ),
-        );
+        let what = named("data port", &d.name);
+        let desc = d.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_PORT, d.pos, what));
     }
     for sp in &p.service_ports {
-        item(
-            &mut s,
-            sp.doc.as_ref().map(|d| &d.description),
-            r::DOC_PORT,
-            sp.pos,
-            format!(
-                "service port `{}` has no description",
-                sp.name.as_deref().unwrap_or("")
-            ),
-        );
+        let what = named("service port", &sp.name);
+        let desc = sp.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_PORT, sp.pos, what));
         for i in &sp.interfaces {
-            item(
-                &mut s,
-                i.doc.as_ref().map(|d| &d.description),
-                r::DOC_INTERFACE,
-                i.pos,
-                format!(
-                    "service interface `{}` has no description",
-                    i.name.as_deref().unwrap_or("")
-                ),
-            );
+            let what = named("service interface", &i.name);
+            let desc = i.doc.as_ref().map(|d| &d.description);
+            items.push((desc, r::DOC_INTERFACE, i.pos, what));
         }
     }
     for c in p.configurations() {
-        item(
-            &mut s,
-            c.doc.as_ref().map(|d| &d.description),
-            r::DOC_CONFIGURATION,
-            c.pos,
-            format!(
-                "configuration `{}` has no description",
-                c.name.as_deref().unwrap_or("")
-            ),
-        );
+        let what = named("configuration", &c.name);
+        let desc = c.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_CONFIGURATION, c.pos, what));
+    }
+    let total = items.len();
+    let mut documented = 0;
+    for (desc, code, pos, what) in items {
+        if desc.is_some_and(|d| !blank(d)) {
+            documented += 1;
+        } else if let Some(s) = s.as_deref_mut() {
+            s.emit(code, pos, format!("{what} has no description"));
+        }
     }
     (documented, total)
 }
