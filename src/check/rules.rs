@@ -944,36 +944,26 @@ fn placeholders(p: &Profile, s: &mut Findings) {
             format!("the component description `{t}` is RTCBuilder's placeholder, never filled in"),
         );
     }
-    for c in p.configurations() {
-        if let Some(l) = c
-            .constraint
-            .as_ref()
-            .and_then(|k| k.placeholder().map(|l| (k, l)))
-        {
+    let constrained = p
+        .configurations()
+        .iter()
+        .map(|c| ("configuration", &c.name, &c.constraint))
+        .chain(
+            p.data_ports
+                .iter()
+                .map(|d| ("data port", &d.name, &d.constraint)),
+        );
+    for (what, name, constraint) in constrained {
+        let Some(k) = constraint.as_ref() else {
+            continue;
+        };
+        if let Some(l) = k.placeholder() {
             s.emit(
                 r::PLACEHOLDER,
-                l.0.pos,
+                k.pos,
                 format!(
-                    "the constraint of configuration `{}` is RTCBuilder's placeholder `{}`; it constrains nothing",
-                    c.name.as_deref().unwrap_or(""),
-                    l.1
-                ),
-            );
-        }
-    }
-    for d in &p.data_ports {
-        if let Some(l) = d
-            .constraint
-            .as_ref()
-            .and_then(|k| k.placeholder().map(|l| (k, l)))
-        {
-            s.emit(
-                r::PLACEHOLDER,
-                l.0.pos,
-                format!(
-                    "the constraint of data port `{}` is RTCBuilder's placeholder `{}`; it constrains nothing",
-                    d.name.as_deref().unwrap_or(""),
-                    l.1
+                    "the constraint of {what} `{}` is RTCBuilder's placeholder `{l}`; it constrains nothing",
+                    name.as_deref().unwrap_or("")
                 ),
             );
         }
