@@ -551,57 +551,65 @@ fn names<'a>(p: &'a Profile, s: &mut Findings) {
                 &i.name,
                 i.attr_pos.or("name", i.pos),
             );
-            if let Some(n) = non_empty(&i.name) {
-                if let Some(first) = seen.get(n) {
-                    s.emit(
-                        r::DUPLICATE_INTERFACE,
-                        i.attr_pos.or("name", i.pos),
-                        format!(
-                            "service port `{}` has two interfaces named `{n}` (the first at line {})",
-                            sp.name.as_deref().unwrap_or(""),
-                            first.line
-                        ),
-                    );
-                } else {
-                    seen.insert(n, i.pos);
-                }
-            }
-        }
-    }
-    let mut seen: HashMap<&str, Pos> = HashMap::new();
-    for c in p.configurations() {
-        ws(s, "configuration", &c.name, c.attr_pos.or("name", c.pos));
-        if let Some(n) = non_empty(&c.name) {
-            if let Some(first) = seen.get(n) {
+            if let Some((n, first)) = seen_before(&mut seen, &i.name, i.pos) {
                 s.emit(
-                    r::DUPLICATE_PARAMETER,
-                    c.attr_pos.or("name", c.pos),
+                    r::DUPLICATE_INTERFACE,
+                    i.attr_pos.or("name", i.pos),
                     format!(
-                        "configuration `{n}` is declared twice (the first at line {})",
+                        "service port `{}` has two interfaces named `{n}` (the first at line {})",
+                        sp.name.as_deref().unwrap_or(""),
                         first.line
                     ),
                 );
-            } else {
-                seen.insert(n, c.pos);
             }
         }
     }
-    let mut seen: HashMap<&str, Pos> = HashMap::new();
-    for par in &p.parameters {
-        ws(s, "parameter", &par.name, par.pos);
-        if let Some(n) = non_empty(&par.name) {
-            if let Some(first) = seen.get(n) {
+    // Configuration parameters, then parameters: each list its own namespace.
+    let configurations = p.configurations().iter().map(|c| {
+        (
+            "configuration",
+            &c.name,
+            c.pos,
+            c.attr_pos.or("name", c.pos),
+        )
+    });
+    let parameters = p
+        .parameters
+        .iter()
+        .map(|par| ("parameter", &par.name, par.pos, par.pos));
+    let lists: [Vec<(&str, &Option<crate::model::Text>, Pos, Pos)>; 2] =
+        [configurations.collect(), parameters.collect()];
+    for list in lists {
+        let mut seen: HashMap<&str, Pos> = HashMap::new();
+        for (what, name, pos, at) in list {
+            ws(s, what, name, at);
+            if let Some((n, first)) = seen_before(&mut seen, name, pos) {
                 s.emit(
                     r::DUPLICATE_PARAMETER,
-                    par.pos,
+                    at,
                     format!(
-                        "parameter `{n}` is declared twice (the first at line {})",
+                        "{what} `{n}` is declared twice (the first at line {})",
                         first.line
                     ),
                 );
-            } else {
-                seen.insert(n, par.pos);
             }
+        }
+    }
+}
+
+/// A name met before in its list, with where it was first; else `None`, and the name is
+/// remembered at `pos`.
+fn seen_before<'a>(
+    seen: &mut HashMap<&'a str, Pos>,
+    name: &'a Option<crate::model::Text>,
+    pos: Pos,
+) -> Option<(&'a str, Pos)> {
+    let n = non_empty(name)?;
+    match seen.get(n) {
+        Some(first) => Some((n, *first)),
+        None => {
+            seen.insert(n, pos);
+            None
         }
     }
 }
