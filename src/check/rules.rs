@@ -577,8 +577,9 @@ fn names<'a>(p: &'a Profile, s: &mut Findings) {
         .parameters
         .iter()
         .map(|par| ("parameter", &par.name, par.pos, par.pos));
-    let lists: [Vec<(&str, &Option<crate::model::Text>, Pos, Pos)>; 2] =
-        [configurations.collect(), parameters.collect()];
+    // What it is, its name, where it is and where its name is.
+    type Named<'p> = (&'p str, &'p Option<crate::model::Text>, Pos, Pos);
+    let lists: [Vec<Named>; 2] = [configurations.collect(), parameters.collect()];
     for list in lists {
         let mut seen: HashMap<&str, Pos> = HashMap::new();
         for (what, name, pos, at) in list {

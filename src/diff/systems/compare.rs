@@ -1081,14 +1081,7 @@ impl Connector for ServicePortConnector {
 
 /// The labels of the old and the new connectors (name, else id, else `source > target`) and
 /// their pairs ([`match_connectors`]: by id, then by ends).
-fn paired_connectors<C: Connector>(
-    old: &[C],
-    new: &[C],
-) -> (
-    Vec<String>,
-    Vec<String>,
-    Vec<(Option<usize>, Option<usize>)>,
-) {
+fn paired_connectors<C: Connector>(old: &[C], new: &[C]) -> (Vec<String>, Vec<String>, Pairs) {
     let label = |v: &[C]| {
         connector_labels(v.iter().map(|c| {
             let (s, t) = c.ends();
@@ -1108,6 +1101,9 @@ fn paired_connectors<C: Connector>(
     (label(old), label(new), matched)
 }
 
+/// Indices of paired items: both, or only the old (removed) or only the new (added) one.
+type Pairs = Vec<(Option<usize>, Option<usize>)>;
+
 /// Connectors paired by connector id, then the rest by their ends; in OLD's order, then the
 /// added ones in NEW's order.
 fn match_connectors<T>(
@@ -1115,7 +1111,7 @@ fn match_connectors<T>(
     new: &[T],
     id: impl Fn(&T) -> Option<String>,
     ends: impl Fn(&T) -> Option<String>,
-) -> Vec<(Option<usize>, Option<usize>)> {
+) -> Pairs {
     let (mut pairs, ro, rn) = pair_by(old, new, &id);
     let old_left: Vec<&T> = ro.iter().map(|&i| &old[i]).collect();
     let new_left: Vec<&T> = rn.iter().map(|&j| &new[j]).collect();
