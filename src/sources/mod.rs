@@ -603,18 +603,7 @@ pub fn prepare(
                 commit
             }
             None => {
-                if mode.offline {
-                    if !is_mirror(&mirror) {
-                        bail!(
-                            "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `rtcdoc update`) to fill the cache",
-                            s.name,
-                            s.git,
-                            mirror.display()
-                        );
-                    }
-                } else {
-                    fetch(s, &mirror, None)?;
-                }
+                refresh(s, &mirror, mode, " (or `rtcdoc update`)")?;
                 match resolve(&mirror, s.rev.as_deref())? {
                     Some(c) => c,
                     None => match &s.rev {
@@ -662,6 +651,23 @@ pub fn prepare(
     Ok((pinned, changes))
 }
 
+/// Fetches a source into its mirror; with `--offline`, only checks that the mirror is cached
+/// (`fill`: what else, after "run once without --offline", fills the cache).
+fn refresh(s: &Source, mirror: &Path, mode: &Mode, fill: &str) -> Result<()> {
+    if !mode.offline {
+        return fetch(s, mirror, None);
+    }
+    if !is_mirror(mirror) {
+        bail!(
+            "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline{fill} to fill the cache",
+            s.name,
+            s.git,
+            mirror.display()
+        );
+    }
+    Ok(())
+}
+
 /// One source at `rev` (a branch, tag or commit), whatever the lock says: for `rtcdoc diff
 /// NAME@REV`. Fetched unless `--offline`; the lock is neither read nor written.
 pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
@@ -669,18 +675,7 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
     let mut s = s.clone();
     s.rev = Some(rev.to_string());
     let mirror = mirror_path(&cache_dir(mode)?, &s);
-    if mode.offline {
-        if !is_mirror(&mirror) {
-            bail!(
-                "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline to fill the cache",
-                s.name,
-                s.git,
-                mirror.display()
-            );
-        }
-    } else {
-        fetch(&s, &mirror, None)?;
-    }
+    refresh(&s, &mirror, mode, "")?;
     let Some(commit) = resolve(&mirror, Some(rev))? else {
         bail!(
             "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `git ls-remote {}`",
