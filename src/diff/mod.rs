@@ -1589,6 +1589,7 @@ fn same_kind<K: PartialEq>(
     kind(old).is_some() && kind(old) == kind(new)
 }
 
+/// Both name the same type (any spelling of it), or neither names one.
 fn same_type(old: Option<&str>, new: Option<&str>) -> bool {
     let c = |s: Option<&str>| {
         s.map(str::trim)

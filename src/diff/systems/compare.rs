@@ -11,13 +11,12 @@
 //! [`SystemProperty::private`]) is not compared either.
 
 use super::end_text;
-use crate::diff::{change, codes, labels, Change};
+use crate::diff::{change, codes, labels, same_type, Change};
 use crate::model::system::{
     short_port_name, ComponentIdParts, DataPortConnector, ExecutionContext, PortEnd, RtSystem,
     ServicePortConnector, SystemComponent, SystemConfigurationSet, SystemProperty,
 };
 use crate::model::{non_empty, Pos, Text};
-use crate::types::canonical_type;
 use serde::Serialize;
 use serde_json::Value;
 use std::collections::{BTreeMap, BTreeSet};
@@ -1012,15 +1011,6 @@ fn real_sets(c: &SystemComponent) -> Vec<(String, &SystemConfigurationSet)> {
         .into_iter()
         .zip(real)
         .collect()
-}
-
-fn same_type(a: Option<&str>, b: Option<&str>) -> bool {
-    let c = |s: Option<&str>| {
-        s.map(str::trim)
-            .filter(|s| !s.is_empty())
-            .map(canonical_type)
-    };
-    c(a) == c(b)
 }
 
 /// Removes the instance names (and, when they changed, the ports) from the `source` and
