@@ -882,26 +882,41 @@ fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String>
 }
 
 fn anchors(profile: &Profile) -> Anchors {
-    let name = |s: &Option<crate::model::Text>| s.as_deref().unwrap_or_default().to_string();
-    let service_ports = anchors_for("sport", profile.service_ports.iter().map(|p| name(&p.name)));
-    let interfaces = profile
-        .service_ports
-        .iter()
-        .zip(&service_ports)
-        .map(|(p, pa)| {
-            anchors_for(
-                &format!("if-{}", &pa[6..]),
-                p.interfaces.iter().map(|i| name(&i.name)),
-            )
-        })
-        .collect();
-    Anchors {
-        data_ports: anchors_for("port", profile.data_ports.iter().map(|p| name(&p.name))),
+    per_element(
+        profile,
+        ["port", "sport", "conf"],
+        |sport| format!("if-{}", &sport[6..]),
+        |prefix, names| anchors_for(prefix, names.map(|n| n.unwrap_or_default().to_string())),
+    )
+}
+
+/// One string per element of a profile, in the shape of [`Anchors`]: `strings(prefix, names)`
+/// makes a list's from its elements' names, the prefix `lists`' (data ports, service ports,
+/// configurations) or, for a service port's interfaces, `interfaces(the port's string)`.
+pub(crate) fn per_element<'p>(
+    p: &'p Profile,
+    [data_ports, service_ports, configurations]: [&str; 3],
+    interfaces: impl Fn(&str) -> String,
+    strings: impl Fn(&str, &mut dyn Iterator<Item = Option<&'p str>>) -> Vec<String>,
+) -> Anchors {
+    let names = |v: &'p Option<crate::model::Text>| v.as_deref();
+    let sports = strings(
         service_ports,
-        interfaces,
-        configurations: anchors_for(
-            "conf",
-            profile.configurations().iter().map(|c| name(&c.name)),
+        &mut p.service_ports.iter().map(|s| names(&s.name)),
+    );
+    let ifs = p.service_ports.iter().zip(&sports).map(|(sp, key)| {
+        strings(
+            &interfaces(key),
+            &mut sp.interfaces.iter().map(|i| names(&i.name)),
+        )
+    });
+    Anchors {
+        data_ports: strings(data_ports, &mut p.data_ports.iter().map(|d| names(&d.name))),
+        interfaces: ifs.collect(),
+        service_ports: sports,
+        configurations: strings(
+            configurations,
+            &mut p.configurations().iter().map(|c| names(&c.name)),
         ),
     }
 }

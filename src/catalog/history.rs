@@ -191,35 +191,20 @@ pub struct ElementKeys {
 
 impl ElementKeys {
     pub fn of(p: &crate::model::Profile) -> ElementKeys {
-        let under = |list: &str, labels: Vec<String>| -> Vec<String> {
-            labels.into_iter().map(|l| format!("{list}/{l}")).collect()
-        };
-        let service_ports = under(
-            "servicePorts",
-            item_labels(p.service_ports.iter().map(|s| s.name.as_deref())),
+        let keys = super::per_element(
+            p,
+            ["dataPorts", "servicePorts", "configurations"],
+            |port| format!("{port}/interfaces"),
+            |list, names| {
+                let labels = item_labels(names);
+                labels.into_iter().map(|l| format!("{list}/{l}")).collect()
+            },
         );
-        let interfaces = p
-            .service_ports
-            .iter()
-            .zip(&service_ports)
-            .map(|(sp, key)| {
-                under(
-                    &format!("{key}/interfaces"),
-                    item_labels(sp.interfaces.iter().map(|i| i.name.as_deref())),
-                )
-            })
-            .collect();
         ElementKeys {
-            data_ports: under(
-                "dataPorts",
-                item_labels(p.data_ports.iter().map(|d| d.name.as_deref())),
-            ),
-            service_ports,
-            interfaces,
-            configurations: under(
-                "configurations",
-                item_labels(p.configurations().iter().map(|c| c.name.as_deref())),
-            ),
+            data_ports: keys.data_ports,
+            service_ports: keys.service_ports,
+            interfaces: keys.interfaces,
+            configurations: keys.configurations,
         }
     }
 
