@@ -1003,29 +1003,23 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         .collect();
     // (type name, idlFile, source file, position, port name) of every port, in catalogue order.
     let mut uses: Vec<(String, Option<String>, &str, Pos, String)> = Vec::new();
+    type Text = crate::model::Text;
+    let mut add = |ty: &str, (idl_file, port): (&Option<Text>, &Option<Text>), file, pos| {
+        let idl_file = non_empty(idl_file).map(str::to_string);
+        let port = port.as_deref().unwrap_or("").to_string();
+        uses.push((ty.to_string(), idl_file, file, pos, port));
+    };
     for t in &cat.data_types {
         for pr in t.all_uses() {
             if let Some((c, p)) = cat.port_of(pr) {
-                uses.push((
-                    t.name.clone(),
-                    non_empty(&p.idl_file).map(str::to_string),
-                    &c.source,
-                    p.pos,
-                    p.name.as_deref().unwrap_or("").to_string(),
-                ));
+                add(&t.name, (&p.idl_file, &p.name), &c.source, p.pos);
             }
         }
     }
     for t in &cat.interfaces {
         for r in t.all_uses() {
             if let Some((c, _, i)) = cat.interface_of(r) {
-                uses.push((
-                    t.name.clone(),
-                    non_empty(&i.idl_file).map(str::to_string),
-                    &c.source,
-                    i.pos,
-                    i.name.as_deref().unwrap_or("").to_string(),
-                ));
+                add(&t.name, (&i.idl_file, &i.name), &c.source, i.pos);
             }
         }
     }
