@@ -855,15 +855,18 @@ fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
     out
 }
 
-fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String> {
+/// Each of `bases`, numbered from its second time on (`number(base, n)`), so that all differ.
+fn numbered(
+    bases: impl Iterator<Item = String>,
+    number: impl Fn(&str, usize) -> String,
+) -> Vec<String> {
     let mut seen: HashMap<String, usize> = HashMap::new();
-    names
-        .map(|n| {
-            let base = format!("{prefix}-{}", slugify(&n));
+    bases
+        .map(|base| {
             let c = seen.entry(base.clone()).or_default();
             *c += 1;
             if *c > 1 {
-                format!("{base}-{c}")
+                number(&base, *c)
             } else {
                 base
             }
@@ -871,27 +874,49 @@ fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String>
         .collect()
 }
 
+fn anchors_for(prefix: &str, names: impl Iterator<Item = String>) -> Vec<String> {
+    numbered(
+        names.map(|n| format!("{prefix}-{}", slugify(&n))),
+        |base, c| format!("{base}-{c}"),
+    )
+}
+
 fn anchors(profile: &Profile) -> Anchors {
-    let name = |s: &Option<crate::model::Text>| s.as_deref().unwrap_or_default().to_string();
-    let service_ports = anchors_for("sport", profile.service_ports.iter().map(|p| name(&p.name)));
-    let interfaces = profile
-        .service_ports
-        .iter()
-        .zip(&service_ports)
-        .map(|(p, pa)| {
-            anchors_for(
-                &format!("if-{}", &pa[6..]),
-                p.interfaces.iter().map(|i| name(&i.name)),
-            )
-        })
-        .collect();
-    Anchors {
-        data_ports: anchors_for("port", profile.data_ports.iter().map(|p| name(&p.name))),
+    per_element(
+        profile,
+        ["port", "sport", "conf"],
+        |sport| format!("if-{}", &sport[6..]),
+        |prefix, names| anchors_for(prefix, names.map(|n| n.unwrap_or_default().to_string())),
+    )
+}
+
+/// One string per element of a profile, in the shape of [`Anchors`]: `strings(prefix, names)`
+/// makes a list's from its elements' names, the prefix `lists`' (data ports, service ports,
+/// configurations) or, for a service port's interfaces, `interfaces(the port's string)`.
+pub(crate) fn per_element<'p>(
+    p: &'p Profile,
+    [data_ports, service_ports, configurations]: [&str; 3],
+    interfaces: impl Fn(&str) -> String,
+    strings: impl Fn(&str, &mut dyn Iterator<Item = Option<&'p str>>) -> Vec<String>,
+) -> Anchors {
+    let names = |v: &'p Option<crate::model::Text>| v.as_deref();
+    let sports = strings(
         service_ports,
-        interfaces,
-        configurations: anchors_for(
-            "conf",
-            profile.configurations().iter().map(|c| name(&c.name)),
+        &mut p.service_ports.iter().map(|s| names(&s.name)),
+    );
+    let ifs = p.service_ports.iter().zip(&sports).map(|(sp, key)| {
+        strings(
+            &interfaces(key),
+            &mut sp.interfaces.iter().map(|i| names(&i.name)),
+        )
+    });
+    Anchors {
+        data_ports: strings(data_ports, &mut p.data_ports.iter().map(|d| names(&d.name))),
+        interfaces: ifs.collect(),
+        service_ports: sports,
+        configurations: strings(
+            configurations,
+            &mut p.configurations().iter().map(|c| names(&c.name)),
         ),
     }
 }
@@ -1860,8 +1885,44 @@ impl Catalog {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// A component `name` of `category` with data ports (port type, data type) and service
+    /// ports of one interface each (direction, interface type), loaded from its RTC.xml.
+    pub(crate) fn xml_profile(
+        name: &str,
+        category: &str,
+        ports: &[(&str, &str)],
+        services: &[(&str, &str)],
+    ) -> LoadedProfile {
+        let mut xml = format!(
+            r#"<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:V:{category}:{name}:1" rtc:version="0.2"><rtc:BasicInfo rtc:name="{name}" rtc:vendor="V" rtc:category="{category}" rtc:version="1"/>"#
+        );
+        for (i, (dir, ty)) in ports.iter().enumerate() {
+            xml.push_str(&format!(
+                r#"<rtc:DataPorts rtc:portType="{dir}" rtc:name="p{i}" rtc:type="{ty}"/>"#
+            ));
+        }
+        for (i, (dir, ty)) in services.iter().enumerate() {
+            xml.push_str(&format!(
+                r#"<rtc:ServicePorts rtc:name="s{i}"><rtc:ServiceInterface rtc:direction="{dir}" rtc:name="i{i}" rtc:type="{ty}"/></rtc:ServicePorts>"#
+            ));
+        }
+        xml.push_str("</rtc:RtcProfile>");
+        let parsed = crate::parse::parse(
+            crate::parse::SourceFormat::Xml,
+            xml.as_bytes(),
+            name,
+            &crate::parse::Limits::default(),
+        )
+        .expect("profile");
+        LoadedProfile {
+            source: format!("{name}/RTC.xml"),
+            format: crate::parse::SourceFormat::Xml,
+            profile: Box::new(parsed.profile),
+        }
+    }
 
     #[test]
     fn slugs_are_safe() {

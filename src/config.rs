@@ -156,21 +156,14 @@ pub fn template() -> String {
     template_for(None)
 }
 
-/// `s` as a TOML basic string (`C:\\…` keeps its backslashes).
-fn toml_string(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if c.is_control() => out.push_str(&format!("\\u{:04X}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
+/// The `[[source]]` table the templates suggest (after their comments on it).
+const SOURCE_EXAMPLE: &str = r#"# [[source]]
+# git = "https://github.com/ORG/REPO.git"
+# rev = "main"
+# path = "components"
+# name = "REPO"
+# source-url = "https://git.example.org/ORG/REPO/blob/{commit}/{path}"
+"#;
 
 /// The text `rtcdoc init --language LANG` writes: [`template_for`] for English; for Japanese the
 /// same keys in the same order, with Japanese comments and `language = "ja"` set (not commented
@@ -197,7 +190,7 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # uncomment the line to document the types and interfaces defined there (RTC::TimedLong, …).
 # idl-path = [{}]",
             found.via,
-            toml_string(&found.dir.to_string_lossy())
+            crate::sources::lock::quoted(&found.dir.to_string_lossy())
         ),
     };
     format!(
@@ -268,15 +261,10 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # (default: the remote's default branch). path: the sub-folder to document. name: the first
 # folder of its files in the catalogue (default: from the URL). source-url: the link of a file,
 # with {{commit}} and {{path}} (derived for GitHub and GitLab https URLs).
-# [[source]]
-# git = "https://github.com/ORG/REPO.git"
-# rev = "main"
-# path = "components"
-# name = "REPO"
-# source-url = "https://git.example.org/ORG/REPO/blob/{{commit}}/{{path}}"
-"#,
+{source_example}"#,
         size = d.max_file_size,
         depth = d.max_depth,
+        source_example = SOURCE_EXAMPLE,
     )
 }
 
@@ -301,7 +289,7 @@ fn template_ja(idl: Option<&crate::init::Detected>) -> String {
 # 見つけました。そこで定義された型とインターフェース (RTC::TimedLong など) をドキュメントにするには、
 # 次の行のコメントを外してください。
 # idl-path = [{}]",
-                toml_string(&found.dir.to_string_lossy())
+                crate::sources::lock::quoted(&found.dir.to_string_lossy())
             )
         }
     };
@@ -373,15 +361,10 @@ language = "ja"
 # (省略時はリモートのデフォルトブランチ)。path: ドキュメントにするサブフォルダ。name: カタログでのファイルの
 # 最初のフォルダ名 (省略時は URL から)。source-url: ファイルへのリンク。{{commit}} と {{path}} を含めます
 # (GitHub と GitLab の https の URL からは自動で作ります)。
-# [[source]]
-# git = "https://github.com/ORG/REPO.git"
-# rev = "main"
-# path = "components"
-# name = "REPO"
-# source-url = "https://git.example.org/ORG/REPO/blob/{{commit}}/{{path}}"
-"#,
+{source_example}"#,
         size = d.max_file_size,
         depth = d.max_depth,
+        source_example = SOURCE_EXAMPLE,
     )
 }
 
@@ -406,6 +389,18 @@ mod tests {
             .collect()
     }
 
+    /// A template with every commented-out key and table uncommented.
+    fn uncommented(t: &str) -> String {
+        t.lines()
+            .map(|l| {
+                l.strip_prefix("# ")
+                    .filter(|r| r.contains(" = ") || r.starts_with('['))
+                    .unwrap_or(l)
+            })
+            .collect::<Vec<_>>()
+            .join("\n")
+    }
+
     #[test]
     fn japanese_template_has_every_key_and_starts_in_japanese() {
         let found = crate::init::Detected {
@@ -428,16 +423,7 @@ mod tests {
                 }
             );
             // Uncommenting every key gives a valid file too.
-            let on: String = ja
-                .lines()
-                .map(|l| {
-                    l.strip_prefix("# ")
-                        .filter(|r| r.contains(" = ") || r.starts_with('['))
-                        .unwrap_or(l)
-                })
-                .collect::<Vec<_>>()
-                .join("\n");
-            let c = parse(&on, Path::new("x")).unwrap();
+            let c = parse(&uncommented(&ja), Path::new("x")).unwrap();
             assert_eq!(c.title.as_deref(), Some("RTコンポーネント カタログ"));
             assert_eq!(c.serve.unwrap().port, Some(3000));
         }
@@ -454,16 +440,7 @@ mod tests {
         let t = template();
         assert_eq!(parse(&t, Path::new("x")).unwrap(), Config::default());
         // Uncommenting every key gives a valid file too.
-        let on: String = t
-            .lines()
-            .map(|l| {
-                l.strip_prefix("# ")
-                    .filter(|r| r.contains(" = ") || r.starts_with('['))
-                    .unwrap_or(l)
-            })
-            .collect::<Vec<_>>()
-            .join("\n");
-        let c = parse(&on, Path::new("x")).unwrap();
+        let c = parse(&uncommented(&t), Path::new("x")).unwrap();
         assert_eq!(c.formats, Some(vec![Format::Html]));
         assert_eq!(c.language, Some(Lang::En));
         assert_eq!(c.serve.unwrap().port, Some(3000));

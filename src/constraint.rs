@@ -218,6 +218,19 @@ pub enum Verdict {
     Unevaluable(String),
 }
 
+/// The type a value of a configuration parameter of type `ty` is checked as: RTSystemEditor's
+/// checkbox and ordered_list widgets store the selected items as a comma-separated list, each
+/// item to satisfy the constraint (an enumeration).
+pub fn widget_type(widget: Option<&str>, ty: ValueType) -> ValueType {
+    match (widget.map(str::trim), ty) {
+        (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
+        (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
+            ValueType::Vector(ScalarType::Text)
+        }
+        _ => ty,
+    }
+}
+
 /// Evaluates `c` against `value` (as written in the profile) of type `ty`.
 pub fn evaluate(c: &Constraint, value: &str, ty: ValueType) -> Verdict {
     let subject = match ty {
@@ -821,11 +834,12 @@ fn walk_problems(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::model::Pos;
 
-    fn unit(cond: Condition) -> Constraint {
+    /// A constraint of one condition (also for `diff::constraint`'s tests).
+    pub(crate) fn unit(cond: Condition) -> Constraint {
         Constraint {
             kind: ConstraintKind::Unit {
                 key: None,
@@ -835,40 +849,47 @@ mod tests {
             extra: vec![],
         }
     }
-    fn cmp(c: Comparison, lit: &str) -> Constraint {
+    /// `x <comparison> lit`.
+    pub(crate) fn cmp(c: Comparison, lit: &str) -> Constraint {
         unit(Condition::Compare {
             comparison: c,
             literal: Some(lit.into()),
             match_case: None,
         })
     }
+    /// `lo ≤ x ≤ hi`.
+    pub(crate) fn between(lo: &str, hi: &str) -> Constraint {
+        unit(Condition::Between {
+            lower: Some(lo.into()),
+            upper: Some(hi.into()),
+        })
+    }
+    pub(crate) fn or(operands: Vec<Constraint>) -> Constraint {
+        unit(Condition::Or { operands })
+    }
+    pub(crate) fn and(operands: Vec<Constraint>) -> Constraint {
+        unit(Condition::And { operands })
+    }
 
     #[test]
     fn between_and_comparisons() {
-        let b = unit(Condition::Between {
-            lower: Some("0".into()),
-            upper: Some("100".into()),
-        });
+        let b = between("0", "100");
         assert_eq!(describe(&b), "0 ≤ x ≤ 100");
         assert_eq!(describe(&cmp(Comparison::LessThan, "100")), "x < 100");
     }
 
     #[test]
     fn enumeration_and_or() {
-        let e = unit(Condition::Or {
-            operands: vec![
-                cmp(Comparison::EqualTo, "RGB"),
-                cmp(Comparison::EqualTo, "GRAY"),
-                cmp(Comparison::EqualTo, "JPEG"),
-            ],
-        });
+        let e = or(vec![
+            cmp(Comparison::EqualTo, "RGB"),
+            cmp(Comparison::EqualTo, "GRAY"),
+            cmp(Comparison::EqualTo, "JPEG"),
+        ]);
         assert_eq!(describe(&e), "one of: RGB, GRAY, JPEG");
-        let o = unit(Condition::Or {
-            operands: vec![
-                cmp(Comparison::LessThanOrEqualTo, "100"),
-                cmp(Comparison::GreaterThanOrEqualTo, "200"),
-            ],
-        });
+        let o = or(vec![
+            cmp(Comparison::LessThanOrEqualTo, "100"),
+            cmp(Comparison::GreaterThanOrEqualTo, "200"),
+        ]);
         assert_eq!(describe(&o), "x ≤ 100 or x ≥ 200");
     }
 
@@ -878,12 +899,10 @@ mod tests {
             operand: unit(Condition::IsNull { text: None }),
         });
         assert_eq!(describe(&n), "not null");
-        let a = unit(Condition::And {
-            operands: vec![
-                cmp(Comparison::GreaterThan, "0"),
-                cmp(Comparison::LessThanOrEqualTo, "10"),
-            ],
-        });
+        let a = and(vec![
+            cmp(Comparison::GreaterThan, "0"),
+            cmp(Comparison::LessThanOrEqualTo, "10"),
+        ]);
         assert_eq!(describe(&a), "0 < x ≤ 10");
     }
 }

@@ -1011,6 +1011,18 @@ fn to_entry_change(c: &crate::diff::Change) -> Change {
     }
 }
 
+/// The changes between two versions of a file, as entries naming both versions' files.
+fn in_files(changes: &[crate::diff::Change], (old_file, new_file): (&str, &str)) -> Vec<Change> {
+    changes
+        .iter()
+        .map(|c| Change {
+            file: Some(new_file.to_string()),
+            old_file: Some(old_file.to_string()),
+            ..to_entry_change(c)
+        })
+        .collect()
+}
+
 /// Fills in `history` of every RT System profile: the commits of its file, each version
 /// compared with the one before by the system diff engine ([`crate::diff::systems::compare_systems`],
 /// DIFF15x/25x/35x), and the file as it is when that differs from the newest commit.
@@ -1040,14 +1052,8 @@ fn attach_systems(catalog: &mut Catalog, repos: &mut Repos<'_>, limit: usize, li
                     Where::Backup(_) => Err("a system has no backups".to_string()),
                 },
                 &|(old, old_file), (new, new_file)| {
-                    crate::diff::systems::compare_systems(old, new)
-                        .iter()
-                        .map(|c| Change {
-                            file: Some(new_file.to_string()),
-                            old_file: Some(old_file.to_string()),
-                            ..to_entry_change(c)
-                        })
-                        .collect()
+                    let changes = crate::diff::systems::compare_systems(old, new);
+                    in_files(&changes, (old_file, new_file))
                 },
                 &system_version,
             )
@@ -1142,14 +1148,8 @@ fn attach_idl(
                     (now, &f.path),
                     &doc_of,
                     &|(old, old_file), (new, new_file)| {
-                        crate::diff::compare_idl_files(old, new, &f.path)
-                            .iter()
-                            .map(|c| Change {
-                                file: Some(new_file.to_string()),
-                                old_file: Some(old_file.to_string()),
-                                ..to_entry_change(c)
-                            })
-                            .collect()
+                        let changes = crate::diff::compare_idl_files(old, new, &f.path);
+                        in_files(&changes, (old_file, new_file))
                     },
                     &|_| None,
                 ),

@@ -1082,14 +1082,8 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         }
         CheckFormat::Human => {
             use std::io::IsTerminal;
-            let colour = std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
-                && std::io::stderr().is_terminal();
-            let choice = if colour {
-                ColorChoice::Auto
-            } else {
-                ColorChoice::Never
-            };
             // Buffered: codespan writes a snippet in many small pieces.
+            let choice = colour_choice(std::io::stderr().is_terminal());
             let mut stream = BufferedStandardStream::stderr(choice);
             let verbosity = if cli.quiet {
                 report::Verbosity::Quiet
@@ -1203,13 +1197,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         }
         report::OutputFormat::Github => print_stdout(report::to_github(&result).trim_end())?,
         report::OutputFormat::Human => {
-            let colour = std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
-                && std::io::stdout().is_terminal();
-            let choice = if colour {
-                ColorChoice::Auto
-            } else {
-                ColorChoice::Never
-            };
+            let choice = colour_choice(std::io::stdout().is_terminal());
             let mut stream = BufferedStandardStream::stdout(choice);
             let verbosity = if cli.quiet {
                 report::Verbosity::Quiet
@@ -1277,6 +1265,16 @@ fn display_path(root: &std::path::Path, rel: &str) -> String {
     }
     let joined = root.join(rel).to_string_lossy().replace('\\', "/");
     joined.strip_prefix("./").unwrap_or(&joined).to_string()
+}
+
+/// Colour on a terminal stream unless `NO_COLOR` is set (and not empty).
+fn colour_choice(is_terminal: bool) -> ColorChoice {
+    let colour = std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()) && is_terminal;
+    if colour {
+        ColorChoice::Auto
+    } else {
+        ColorChoice::Never
+    }
 }
 
 /// Prints a document on stdout; a closed pipe (`| head`) is not an error.

@@ -119,25 +119,19 @@ mod tests {
     use super::*;
 
     #[test]
-    fn spellings_of_one_type_agree() {
-        assert_eq!(canonical_type("RTC::TimedLong"), "RTC::TimedLong");
-        assert_eq!(canonical_type("TimedLong"), "RTC::TimedLong");
-        assert_eq!(canonical_type("IDL:RTC/TimedLong:1.0"), "RTC::TimedLong");
-        assert_eq!(canonical_type("  ::RTC::TimedLong "), "RTC::TimedLong");
-    }
-
-    #[test]
-    fn user_types_are_kept() {
-        assert_eq!(
-            canonical_type("Img::TimedCameraImage"),
-            "Img::TimedCameraImage"
-        );
-        assert_eq!(canonical_type("MyType"), "MyType");
-        assert_eq!(
-            canonical_type("IDL:Img/TimedCameraImage:1.0"),
-            "Img::TimedCameraImage"
-        );
-        assert_eq!(canonical_type("IDL:a/b/C:2.1"), "a::b::C");
+    fn spellings_of_one_type_agree_and_user_types_are_kept() {
+        for (written, canonical) in [
+            ("RTC::TimedLong", "RTC::TimedLong"),
+            ("TimedLong", "RTC::TimedLong"),
+            ("IDL:RTC/TimedLong:1.0", "RTC::TimedLong"),
+            ("  ::RTC::TimedLong ", "RTC::TimedLong"),
+            ("Img::TimedCameraImage", "Img::TimedCameraImage"),
+            ("MyType", "MyType"),
+            ("IDL:Img/TimedCameraImage:1.0", "Img::TimedCameraImage"),
+            ("IDL:a/b/C:2.1", "a::b::C"),
+        ] {
+            assert_eq!(canonical_type(written), canonical, "{written}");
+        }
     }
 
     #[test]

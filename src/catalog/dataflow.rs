@@ -95,27 +95,7 @@ mod tests {
     use crate::catalog::LoadedProfile;
 
     fn profile(name: &str, category: &str, ports: &[(&str, &str)]) -> LoadedProfile {
-        let mut xml = format!(
-            r#"<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:V:{category}:{name}:1" rtc:version="0.2"><rtc:BasicInfo rtc:name="{name}" rtc:vendor="V" rtc:category="{category}" rtc:version="1"/>"#
-        );
-        for (i, (dir, ty)) in ports.iter().enumerate() {
-            xml.push_str(&format!(
-                r#"<rtc:DataPorts rtc:portType="{dir}" rtc:name="p{i}" rtc:type="{ty}"/>"#
-            ));
-        }
-        xml.push_str("</rtc:RtcProfile>");
-        let parsed = crate::parse::parse(
-            crate::parse::SourceFormat::Xml,
-            xml.as_bytes(),
-            name,
-            &crate::parse::Limits::default(),
-        )
-        .expect("profile");
-        LoadedProfile {
-            source: format!("{name}/RTC.xml"),
-            format: crate::parse::SourceFormat::Xml,
-            profile: Box::new(parsed.profile),
-        }
+        crate::catalog::tests::xml_profile(name, category, ports, &[])
     }
 
     #[test]

@@ -168,23 +168,13 @@ impl super::Catalog {
 /// The labels `rtcdoc diff` keys the items of a list by (ports, interfaces, parameters): the
 /// trimmed name (`(unnamed)` when blank), and `name#2`, `name#3`, … for a repeated one.
 pub fn item_labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {
-    let mut seen: std::collections::BTreeMap<String, usize> = std::collections::BTreeMap::new();
-    names
-        .map(|n| {
-            let base = n
-                .map(str::trim)
-                .filter(|s| !s.is_empty())
-                .unwrap_or("(unnamed)")
-                .to_string();
-            let k = seen.entry(base.clone()).or_default();
-            *k += 1;
-            if *k > 1 {
-                format!("{base}#{k}")
-            } else {
-                base
-            }
-        })
-        .collect()
+    let bases = names.map(|n| {
+        n.map(str::trim)
+            .filter(|s| !s.is_empty())
+            .unwrap_or("(unnamed)")
+            .to_string()
+    });
+    super::numbered(bases, |base, k| format!("{base}#{k}"))
 }
 
 /// The change path of each element a "since" note can be on, in profile order: what
@@ -201,35 +191,20 @@ pub struct ElementKeys {
 
 impl ElementKeys {
     pub fn of(p: &crate::model::Profile) -> ElementKeys {
-        let under = |list: &str, labels: Vec<String>| -> Vec<String> {
-            labels.into_iter().map(|l| format!("{list}/{l}")).collect()
-        };
-        let service_ports = under(
-            "servicePorts",
-            item_labels(p.service_ports.iter().map(|s| s.name.as_deref())),
+        let keys = super::per_element(
+            p,
+            ["dataPorts", "servicePorts", "configurations"],
+            |port| format!("{port}/interfaces"),
+            |list, names| {
+                let labels = item_labels(names);
+                labels.into_iter().map(|l| format!("{list}/{l}")).collect()
+            },
         );
-        let interfaces = p
-            .service_ports
-            .iter()
-            .zip(&service_ports)
-            .map(|(sp, key)| {
-                under(
-                    &format!("{key}/interfaces"),
-                    item_labels(sp.interfaces.iter().map(|i| i.name.as_deref())),
-                )
-            })
-            .collect();
         ElementKeys {
-            data_ports: under(
-                "dataPorts",
-                item_labels(p.data_ports.iter().map(|d| d.name.as_deref())),
-            ),
-            service_ports,
-            interfaces,
-            configurations: under(
-                "configurations",
-                item_labels(p.configurations().iter().map(|c| c.name.as_deref())),
-            ),
+            data_ports: keys.data_ports,
+            service_ports: keys.service_ports,
+            interfaces: keys.interfaces,
+            configurations: keys.configurations,
         }
     }
 

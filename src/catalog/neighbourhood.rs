@@ -133,6 +133,23 @@ impl Neighbourhood {
     }
 }
 
+/// [`capped_groups`] as neighbours, each with its ports (`at`: where a reference is).
+fn neighbours<R>(
+    (ci, all, cap): (usize, &[R], usize),
+    component: impl Fn(&R) -> usize,
+    at: impl Fn(&R) -> Option<PortAt>,
+) -> (Vec<Neighbour>, usize) {
+    let (groups, total) = capped_groups(ci, all, cap, component);
+    let shown = groups
+        .into_iter()
+        .map(|(k, list)| Neighbour {
+            component: k,
+            ports: list.into_iter().filter_map(&at).collect(),
+        })
+        .collect();
+    (shown, total)
+}
+
 impl Catalog {
     /// The neighbourhood of component `ci`, at most `cap` neighbours named per port (the rest
     /// counted in [`PortNeighbours::total`]). Event ports and interfaces of no known direction
@@ -153,19 +170,11 @@ impl Catalog {
                 continue;
             };
             let refs = self.data_port_peers(ci, pi);
-            let (groups, total) = capped_groups(ci, refs, cap, |r| {
-                self.port_component(r).unwrap_or(usize::MAX)
-            });
-            let shown = groups
-                .into_iter()
-                .map(|(k, list)| Neighbour {
-                    component: k,
-                    ports: list
-                        .iter()
-                        .filter_map(|r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)))
-                        .collect(),
-                })
-                .collect();
+            let (shown, total) = neighbours(
+                (ci, refs, cap),
+                |r| self.port_component(r).unwrap_or(usize::MAX),
+                |r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)),
+            );
             if total > 0 {
                 ports.push(PortNeighbours {
                     port: PortAt::Data(pi),
@@ -187,22 +196,14 @@ impl Catalog {
                     continue;
                 };
                 let refs = self.interface_peers(ci, si, ii);
-                let (groups, total) = capped_groups(ci, refs, cap, |r| {
-                    self.interface_component(r).unwrap_or(usize::MAX)
-                });
-                let shown = groups
-                    .into_iter()
-                    .map(|(k, list)| Neighbour {
-                        component: k,
-                        ports: list
-                            .iter()
-                            .filter_map(|r| {
-                                self.resolve_interface(r)
-                                    .map(|(_, q, j)| PortAt::Interface(q, j))
-                            })
-                            .collect(),
-                    })
-                    .collect();
+                let (shown, total) = neighbours(
+                    (ci, refs, cap),
+                    |r| self.interface_component(r).unwrap_or(usize::MAX),
+                    |r| {
+                        self.resolve_interface(r)
+                            .map(|(_, q, j)| PortAt::Interface(q, j))
+                    },
+                );
                 if total > 0 {
                     ports.push(PortNeighbours {
                         port: PortAt::Interface(si, ii),
@@ -224,32 +225,7 @@ mod tests {
     use crate::catalog::LoadedProfile;
 
     fn profile(name: &str, ports: &[(&str, &str)], services: &[(&str, &str)]) -> LoadedProfile {
-        let mut xml = format!(
-            r#"<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" rtc:id="RTC:V:C:{name}:1" rtc:version="0.2"><rtc:BasicInfo rtc:name="{name}" rtc:vendor="V" rtc:category="C" rtc:version="1"/>"#
-        );
-        for (i, (dir, ty)) in ports.iter().enumerate() {
-            xml.push_str(&format!(
-                r#"<rtc:DataPorts rtc:portType="{dir}" rtc:name="p{i}" rtc:type="{ty}"/>"#
-            ));
-        }
-        for (i, (dir, ty)) in services.iter().enumerate() {
-            xml.push_str(&format!(
-                r#"<rtc:ServicePorts rtc:name="s{i}"><rtc:ServiceInterface rtc:direction="{dir}" rtc:name="i{i}" rtc:type="{ty}"/></rtc:ServicePorts>"#
-            ));
-        }
-        xml.push_str("</rtc:RtcProfile>");
-        let parsed = crate::parse::parse(
-            crate::parse::SourceFormat::Xml,
-            xml.as_bytes(),
-            name,
-            &crate::parse::Limits::default(),
-        )
-        .expect("profile");
-        LoadedProfile {
-            source: format!("{name}/RTC.xml"),
-            format: crate::parse::SourceFormat::Xml,
-            profile: Box::new(parsed.profile),
-        }
+        crate::catalog::tests::xml_profile(name, "C", ports, services)
     }
 
     fn index(cat: &Catalog, name: &str) -> usize {

@@ -165,28 +165,19 @@ pub fn end_port_name(e: &PortEnd) -> &str {
 /// The port of component `c` named `name` (its own name or `Instance.name`).
 fn find_port(c: &Component, name: &str) -> Option<PortLink> {
     let candidates = [name, name.rsplit('.').next().unwrap_or(name)];
+    let p = &c.profile;
     for n in candidates {
-        if let Some(i) = c
-            .profile
-            .data_ports
-            .iter()
-            .position(|p| p.name.as_deref().map(str::trim) == Some(n))
-        {
-            return Some(PortLink::Data {
-                index: i,
-                name: n.to_string(),
-            });
+        let named = |name: Option<&str>| name.map(str::trim) == Some(n);
+        let name = n.to_string();
+        if let Some(index) = p.data_ports.iter().position(|p| named(p.name.as_deref())) {
+            return Some(PortLink::Data { index, name });
         }
-        if let Some(i) = c
-            .profile
+        if let Some(index) = p
             .service_ports
             .iter()
-            .position(|p| p.name.as_deref().map(str::trim) == Some(n))
+            .position(|p| named(p.name.as_deref()))
         {
-            return Some(PortLink::Service {
-                index: i,
-                name: n.to_string(),
-            });
+            return Some(PortLink::Service { index, name });
         }
     }
     None
@@ -262,21 +253,19 @@ impl Catalog {
                     .and_then(|ci| find_port(&self.components[ci], end_port_name(e)));
                 EndLink { instance, port }
             };
+            let link = |source, target| ConnectorLink {
+                source: end(source),
+                target: end(target),
+            };
             let data_connectors = sys
                 .data_port_connectors
                 .iter()
-                .map(|c| ConnectorLink {
-                    source: end(&c.source),
-                    target: end(&c.target),
-                })
+                .map(|c| link(&c.source, &c.target))
                 .collect();
             let service_connectors = sys
                 .service_port_connectors
                 .iter()
-                .map(|c| ConnectorLink {
-                    source: end(&c.source),
-                    target: end(&c.target),
-                })
+                .map(|c| link(&c.source, &c.target))
                 .collect();
             systems.push(System {
                 source: l.source,
@@ -516,14 +505,7 @@ pub fn check_configuration(c: &Component, name: &str, value: &str) -> ConfigChec
     if !constraint::problems(k, ty).is_empty() {
         return ConfigCheck::Ok;
     }
-    let eval_ty = match (conf.widget().map(str::trim), ty) {
-        (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
-        (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
-            ValueType::Vector(value::ScalarType::Text)
-        }
-        _ => ty,
-    };
-    match constraint::evaluate(k, value, eval_ty) {
+    match constraint::evaluate(k, value, constraint::widget_type(conf.widget(), ty)) {
         Verdict::Violated(why) => ConfigCheck::Violated(format!(
             "outside the constraint `{}`: {why}",
             constraint::describe(k)

@@ -13,7 +13,8 @@ use super::registry as r;
 use super::rules::Findings;
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
-use crate::idl::{IdlDefinition, IdlDoc, IdlItem};
+use crate::idl::{IdlDefinition, IdlDoc, IdlField, IdlItem};
+use crate::model::Pos;
 use serde::Serialize;
 
 /// Documentation coverage of one IDL definition.
@@ -77,98 +78,66 @@ fn counted(cat: &Catalog) -> Vec<IdlItem<'_>> {
 }
 
 /// Counts (and, with `out`, reports) the undocumented members of one definition.
-fn members(item: IdlItem<'_>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCoverage> {
+fn members<'a>(item: IdlItem<'a>, out: Option<&mut Vec<Diagnostic>>) -> Option<IdlCoverage> {
     let d = item.definition;
     let scoped = d.scoped_name();
     let mut sink = Findings {
         file: &item.file.path,
         out: Vec::new(),
     };
-    let mut documented_n = 0;
-    let mut total = 0;
-    let mut count = |ok: bool, code: &'static str, pos, what: String, s: &mut Findings| {
-        total += 1;
-        if ok {
-            documented_n += 1;
-        } else if out.is_some() {
-            s.emit(code, pos, format!("{what} has no doc comment"));
-        }
-    };
     let kind = d.kind_word();
-    match d {
-        IdlDefinition::Struct(x) => {
-            for f in &x.fields {
-                let what = format!("field `{}` of struct `{scoped}`", f.name);
-                count(
-                    documented(f.doc.as_deref()),
-                    r::DOC_IDL_FIELD,
-                    f.pos,
-                    what,
-                    &mut sink,
-                );
-            }
-        }
-        IdlDefinition::Exception(x) => {
-            for f in &x.fields {
-                let what = format!("field `{}` of exception `{scoped}`", f.name);
-                count(
-                    documented(f.doc.as_deref()),
-                    r::DOC_IDL_FIELD,
-                    f.pos,
-                    what,
-                    &mut sink,
-                );
-            }
-        }
-        IdlDefinition::Union(x) => {
-            for c in &x.cases {
-                let f = &c.field;
-                let what = format!("case `{}` of union `{scoped}`", f.name);
-                count(
-                    documented(f.doc.as_deref()),
-                    r::DOC_IDL_FIELD,
-                    f.pos,
-                    what,
-                    &mut sink,
-                );
-            }
-        }
-        IdlDefinition::Enum(x) => {
-            for v in &x.values {
-                let what = format!("value `{}` of enum `{scoped}`", v.name);
-                count(
-                    documented(v.doc.as_deref()),
-                    r::DOC_IDL_ENUMERATOR,
+    // Each member counted: its word, name, doc comment, position and the code reporting it.
+    let fields = |fs: &'a [IdlField], word| {
+        fs.iter()
+            .map(move |f| (word, &f.name, f.doc.as_deref(), f.pos, r::DOC_IDL_FIELD))
+    };
+    let list: Vec<(&str, &String, Option<&IdlDoc>, Pos, &str)> = match d {
+        IdlDefinition::Struct(x) => fields(&x.fields, "field").collect(),
+        IdlDefinition::Exception(x) => fields(&x.fields, "field").collect(),
+        IdlDefinition::Union(x) => x
+            .cases
+            .iter()
+            .map(|c| &c.field)
+            .map(|f| ("case", &f.name, f.doc.as_deref(), f.pos, r::DOC_IDL_FIELD))
+            .collect(),
+        IdlDefinition::Enum(x) => x
+            .values
+            .iter()
+            .map(|v| {
+                (
+                    "value",
+                    &v.name,
+                    v.doc.as_deref(),
                     v.pos,
-                    what,
-                    &mut sink,
-                );
-            }
-        }
+                    r::DOC_IDL_ENUMERATOR,
+                )
+            })
+            .collect(),
         IdlDefinition::Interface(x) => {
-            for o in &x.operations {
-                let what = format!("operation `{}` of interface `{scoped}`", o.name);
-                count(
-                    documented(o.doc.as_deref()),
-                    r::DOC_IDL_OPERATION,
-                    o.pos,
-                    what,
-                    &mut sink,
-                );
-            }
-            for a in &x.attributes {
-                let what = format!("attribute `{}` of interface `{scoped}`", a.name);
-                count(
-                    documented(a.doc.as_deref()),
-                    r::DOC_IDL_OPERATION,
-                    a.pos,
-                    what,
-                    &mut sink,
-                );
-            }
+            let ops = x
+                .operations
+                .iter()
+                .map(|o| ("operation", &o.name, o.doc.as_deref(), o.pos));
+            let attrs = x
+                .attributes
+                .iter()
+                .map(|a| ("attribute", &a.name, a.doc.as_deref(), a.pos));
+            ops.chain(attrs)
+                .map(|(w, n, doc, pos)| (w, n, doc, pos, r::DOC_IDL_OPERATION))
+                .collect()
         }
         // Typedefs, forward declarations and the rest have no members to document.
         _ => return None,
+    };
+    let total = list.len();
+    let mut documented_n = 0;
+    for (word, name, doc, pos, code) in list {
+        if documented(doc) {
+            documented_n += 1;
+        } else if out.is_some() {
+            let message = format!("{word} `{name}` of {kind} `{scoped}` has no doc comment");
+            sink.emit(code, pos, message);
+        }
     }
     if let Some(o) = out {
         o.extend(sink.out);

@@ -118,21 +118,39 @@ fn required(p: &Profile, s: &mut Findings) {
             );
         }
     }
-    for c in p.configurations() {
+    // A node's `name`, then its other required attributes, each labelled with that name.
+    let node = |s: &mut Findings,
+                (element, what): (&str, &str),
+                name: &Option<crate::model::Text>,
+                (attr_pos, pos): (&crate::model::AttrPos, Pos),
+                attrs: &[(&str, &Option<crate::model::Text>)]| {
         miss(
             s,
-            "Configuration attribute `name`",
-            &c.name,
-            c.attr_pos.or("name", c.pos),
+            &format!("{element} attribute `name`"),
+            name,
+            attr_pos.or("name", pos),
         );
-        let label = c.name.as_deref().unwrap_or("");
-        miss(
+        let label = name.as_deref().unwrap_or("");
+        for (attr, v) in attrs {
+            miss(
+                s,
+                &format!("attribute `{attr}` of {what} `{label}`"),
+                v,
+                attr_pos.or(attr, pos),
+            );
+        }
+    };
+    for c in p.configurations() {
+        let at = (&c.attr_pos, c.pos);
+        node(
             s,
-            &format!("attribute `type` of configuration `{label}`"),
-            &c.type_,
-            c.attr_pos.or("type", c.pos),
+            ("Configuration", "configuration"),
+            &c.name,
+            at,
+            &[("type", &c.type_)],
         );
         if c.default_value.is_none() {
+            let label = c.name.as_deref().unwrap_or("");
             s.emit(
                 r::MISSING_REQUIRED,
                 c.pos,
@@ -141,52 +159,32 @@ fn required(p: &Profile, s: &mut Findings) {
         }
     }
     for d in &p.data_ports {
-        miss(
+        let attrs = [("portType", &d.port_type), ("type", &d.type_)];
+        node(
             s,
-            "DataPort attribute `name`",
+            ("DataPort", "data port"),
             &d.name,
-            d.attr_pos.or("name", d.pos),
-        );
-        let label = d.name.as_deref().unwrap_or("");
-        miss(
-            s,
-            &format!("attribute `portType` of data port `{label}`"),
-            &d.port_type,
-            d.attr_pos.or("portType", d.pos),
-        );
-        miss(
-            s,
-            &format!("attribute `type` of data port `{label}`"),
-            &d.type_,
-            d.attr_pos.or("type", d.pos),
+            (&d.attr_pos, d.pos),
+            &attrs,
         );
     }
     for sp in &p.service_ports {
-        miss(
+        node(
             s,
-            "ServicePort attribute `name`",
+            ("ServicePort", ""),
             &sp.name,
-            sp.attr_pos.or("name", sp.pos),
+            (&sp.attr_pos, sp.pos),
+            &[],
         );
         for i in &sp.interfaces {
-            miss(
+            let attrs = [("type", &i.type_), ("direction", &i.direction)];
+            let at = (&i.attr_pos, i.pos);
+            node(
                 s,
-                "ServiceInterface attribute `name`",
+                ("ServiceInterface", "service interface"),
                 &i.name,
-                i.attr_pos.or("name", i.pos),
-            );
-            let label = i.name.as_deref().unwrap_or("");
-            miss(
-                s,
-                &format!("attribute `type` of service interface `{label}`"),
-                &i.type_,
-                i.attr_pos.or("type", i.pos),
-            );
-            miss(
-                s,
-                &format!("attribute `direction` of service interface `{label}`"),
-                &i.direction,
-                i.attr_pos.or("direction", i.pos),
+                at,
+                &attrs,
             );
         }
     }
@@ -553,57 +551,66 @@ fn names<'a>(p: &'a Profile, s: &mut Findings) {
                 &i.name,
                 i.attr_pos.or("name", i.pos),
             );
-            if let Some(n) = non_empty(&i.name) {
-                if let Some(first) = seen.get(n) {
-                    s.emit(
-                        r::DUPLICATE_INTERFACE,
-                        i.attr_pos.or("name", i.pos),
-                        format!(
-                            "service port `{}` has two interfaces named `{n}` (the first at line {})",
-                            sp.name.as_deref().unwrap_or(""),
-                            first.line
-                        ),
-                    );
-                } else {
-                    seen.insert(n, i.pos);
-                }
-            }
-        }
-    }
-    let mut seen: HashMap<&str, Pos> = HashMap::new();
-    for c in p.configurations() {
-        ws(s, "configuration", &c.name, c.attr_pos.or("name", c.pos));
-        if let Some(n) = non_empty(&c.name) {
-            if let Some(first) = seen.get(n) {
+            if let Some((n, first)) = seen_before(&mut seen, &i.name, i.pos) {
                 s.emit(
-                    r::DUPLICATE_PARAMETER,
-                    c.attr_pos.or("name", c.pos),
+                    r::DUPLICATE_INTERFACE,
+                    i.attr_pos.or("name", i.pos),
                     format!(
-                        "configuration `{n}` is declared twice (the first at line {})",
+                        "service port `{}` has two interfaces named `{n}` (the first at line {})",
+                        sp.name.as_deref().unwrap_or(""),
                         first.line
                     ),
                 );
-            } else {
-                seen.insert(n, c.pos);
             }
         }
     }
-    let mut seen: HashMap<&str, Pos> = HashMap::new();
-    for par in &p.parameters {
-        ws(s, "parameter", &par.name, par.pos);
-        if let Some(n) = non_empty(&par.name) {
-            if let Some(first) = seen.get(n) {
+    // Configuration parameters, then parameters: each list its own namespace.
+    let configurations = p.configurations().iter().map(|c| {
+        (
+            "configuration",
+            &c.name,
+            c.pos,
+            c.attr_pos.or("name", c.pos),
+        )
+    });
+    let parameters = p
+        .parameters
+        .iter()
+        .map(|par| ("parameter", &par.name, par.pos, par.pos));
+    // What it is, its name, where it is and where its name is.
+    type Named<'p> = (&'p str, &'p Option<crate::model::Text>, Pos, Pos);
+    let lists: [Vec<Named>; 2] = [configurations.collect(), parameters.collect()];
+    for list in lists {
+        let mut seen: HashMap<&str, Pos> = HashMap::new();
+        for (what, name, pos, at) in list {
+            ws(s, what, name, at);
+            if let Some((n, first)) = seen_before(&mut seen, name, pos) {
                 s.emit(
                     r::DUPLICATE_PARAMETER,
-                    par.pos,
+                    at,
                     format!(
-                        "parameter `{n}` is declared twice (the first at line {})",
+                        "{what} `{n}` is declared twice (the first at line {})",
                         first.line
                     ),
                 );
-            } else {
-                seen.insert(n, par.pos);
             }
+        }
+    }
+}
+
+/// A name met before in its list, with where it was first; else `None`, and the name is
+/// remembered at `pos`.
+fn seen_before<'a>(
+    seen: &mut HashMap<&'a str, Pos>,
+    name: &'a Option<crate::model::Text>,
+    pos: Pos,
+) -> Option<(&'a str, Pos)> {
+    let n = non_empty(name)?;
+    match seen.get(n) {
+        Some(first) => Some((n, *first)),
+        None => {
+            seen.insert(n, pos);
+            None
         }
     }
 }
@@ -823,16 +830,7 @@ fn configuration_values(p: &Profile, s: &mut Findings) {
         if !default_ok || !problems.is_empty() {
             continue;
         }
-        // RTSystemEditor's checkbox and ordered_list widgets store the selected items as a
-        // comma-separated list: each item must satisfy the constraint (an enumeration).
-        let eval_ty = match (c.widget().map(str::trim), ty) {
-            (Some("checkbox" | "ordered_list"), ValueType::Scalar(s)) => ValueType::Vector(s),
-            (Some("checkbox" | "ordered_list"), ValueType::Unknown) => {
-                ValueType::Vector(value::ScalarType::Text)
-            }
-            _ => ty,
-        };
-        match constraint::evaluate(k, v, eval_ty) {
+        match constraint::evaluate(k, v, constraint::widget_type(c.widget(), ty)) {
             Verdict::Satisfied => {}
             Verdict::Violated(why) => s.emit(
                 r::CONSTRAINT_VIOLATED,
@@ -872,20 +870,7 @@ fn configuration_values(p: &Profile, s: &mut Findings) {
 /// Document coverage of one component: (documented, total) items, emitting RTC501–RTC505 for
 /// the undocumented ones when `s` is given.
 pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Findings>) -> (usize, usize) {
-    let mut documented = 0;
-    let mut total = 0;
-    let mut item = |s: &mut Option<&mut Findings>,
-                    desc: Option<&Option<crate::model::Text>>,
-                    code,
-                    pos,
-                    msg: String| {
-        total += 1;
-        if desc.is_some_and(|d| !blank(d)) {
-            documented += 1;
-        } else if let Some(s) = s.as_deref_mut() {
-            s.emit(code, pos, msg);
-        }
-    };
+    use crate::model::Text;
     let b = &p.basic_info;
     // BasicInfo's description (2.3.2) documents the component as well as the Document
     // Profile's (2.4.1): the page shows either. A placeholder (`ModuleDescription`) does not.
@@ -893,72 +878,48 @@ pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Findings>) -> (usize, us
         .into_iter()
         .flatten()
         .find(|d| crate::model::documented("description", d).is_some());
-    item(
-        &mut s,
+    // Every item counted: its description, code, position and what it is.
+    let mut items: Vec<(Option<&Option<Text>>, &str, Pos, String)> = vec![(
         described,
         r::DOC_COMPONENT,
         if b.pos.is_unknown() { p.pos } else { b.pos },
-        format!("component `{}` has no description", p.name()),
-    );
+        format!("component `{}`", p.name()),
+    )];
     for a in p.actions.iter().filter(|a| a.is_implemented()) {
-        item(
-            &mut s,
-            a.doc.as_ref().map(|d| &d.description),
-            r::DOC_ACTION,
-            a.pos,
-            format!(
-                "implemented action {} has no description",
-                a.kind.xml_name()
-            ),
-        );
+        let what = format!("implemented action {}", a.kind.xml_name());
+        let desc = a.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_ACTION, a.pos, what));
     }
+    let named =
+        |what: &str, name: &Option<Text>| format!("{what} `{}`", name.as_deref().unwrap_or(""));
     for d in &p.data_ports {
-        item(
-            &mut s,
-            d.doc.as_ref().map(|d| &d.description),
-            r::DOC_PORT,
-            d.pos,
-            format!(
-                "data port `{}` has no description",
-                d.name.as_deref().unwrap_or("")
-            ),
-        );
+        let what = named("data port", &d.name);
+        let desc = d.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_PORT, d.pos, what));
     }
     for sp in &p.service_ports {
-        item(
-            &mut s,
-            sp.doc.as_ref().map(|d| &d.description),
-            r::DOC_PORT,
-            sp.pos,
-            format!(
-                "service port `{}` has no description",
-                sp.name.as_deref().unwrap_or("")
-            ),
-        );
+        let what = named("service port", &sp.name);
+        let desc = sp.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_PORT, sp.pos, what));
         for i in &sp.interfaces {
-            item(
-                &mut s,
-                i.doc.as_ref().map(|d| &d.description),
-                r::DOC_INTERFACE,
-                i.pos,
-                format!(
-                    "service interface `{}` has no description",
-                    i.name.as_deref().unwrap_or("")
-                ),
-            );
+            let what = named("service interface", &i.name);
+            let desc = i.doc.as_ref().map(|d| &d.description);
+            items.push((desc, r::DOC_INTERFACE, i.pos, what));
         }
     }
     for c in p.configurations() {
-        item(
-            &mut s,
-            c.doc.as_ref().map(|d| &d.description),
-            r::DOC_CONFIGURATION,
-            c.pos,
-            format!(
-                "configuration `{}` has no description",
-                c.name.as_deref().unwrap_or("")
-            ),
-        );
+        let what = named("configuration", &c.name);
+        let desc = c.doc.as_ref().map(|d| &d.description);
+        items.push((desc, r::DOC_CONFIGURATION, c.pos, what));
+    }
+    let total = items.len();
+    let mut documented = 0;
+    for (desc, code, pos, what) in items {
+        if desc.is_some_and(|d| !blank(d)) {
+            documented += 1;
+        } else if let Some(s) = s.as_deref_mut() {
+            s.emit(code, pos, format!("{what} has no description"));
+        }
     }
     (documented, total)
 }
@@ -992,36 +953,26 @@ fn placeholders(p: &Profile, s: &mut Findings) {
             format!("the component description `{t}` is RTCBuilder's placeholder, never filled in"),
         );
     }
-    for c in p.configurations() {
-        if let Some(l) = c
-            .constraint
-            .as_ref()
-            .and_then(|k| k.placeholder().map(|l| (k, l)))
-        {
+    let constrained = p
+        .configurations()
+        .iter()
+        .map(|c| ("configuration", &c.name, &c.constraint))
+        .chain(
+            p.data_ports
+                .iter()
+                .map(|d| ("data port", &d.name, &d.constraint)),
+        );
+    for (what, name, constraint) in constrained {
+        let Some(k) = constraint.as_ref() else {
+            continue;
+        };
+        if let Some(l) = k.placeholder() {
             s.emit(
                 r::PLACEHOLDER,
-                l.0.pos,
+                k.pos,
                 format!(
-                    "the constraint of configuration `{}` is RTCBuilder's placeholder `{}`; it constrains nothing",
-                    c.name.as_deref().unwrap_or(""),
-                    l.1
-                ),
-            );
-        }
-    }
-    for d in &p.data_ports {
-        if let Some(l) = d
-            .constraint
-            .as_ref()
-            .and_then(|k| k.placeholder().map(|l| (k, l)))
-        {
-            s.emit(
-                r::PLACEHOLDER,
-                l.0.pos,
-                format!(
-                    "the constraint of data port `{}` is RTCBuilder's placeholder `{}`; it constrains nothing",
-                    d.name.as_deref().unwrap_or(""),
-                    l.1
+                    "the constraint of {what} `{}` is RTCBuilder's placeholder `{l}`; it constrains nothing",
+                    name.as_deref().unwrap_or("")
                 ),
             );
         }
@@ -1052,29 +1003,23 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         .collect();
     // (type name, idlFile, source file, position, port name) of every port, in catalogue order.
     let mut uses: Vec<(String, Option<String>, &str, Pos, String)> = Vec::new();
+    type Text = crate::model::Text;
+    let mut add = |ty: &str, (idl_file, port): (&Option<Text>, &Option<Text>), file, pos| {
+        let idl_file = non_empty(idl_file).map(str::to_string);
+        let port = port.as_deref().unwrap_or("").to_string();
+        uses.push((ty.to_string(), idl_file, file, pos, port));
+    };
     for t in &cat.data_types {
         for pr in t.all_uses() {
             if let Some((c, p)) = cat.port_of(pr) {
-                uses.push((
-                    t.name.clone(),
-                    non_empty(&p.idl_file).map(str::to_string),
-                    &c.source,
-                    p.pos,
-                    p.name.as_deref().unwrap_or("").to_string(),
-                ));
+                add(&t.name, (&p.idl_file, &p.name), &c.source, p.pos);
             }
         }
     }
     for t in &cat.interfaces {
         for r in t.all_uses() {
             if let Some((c, _, i)) = cat.interface_of(r) {
-                uses.push((
-                    t.name.clone(),
-                    non_empty(&i.idl_file).map(str::to_string),
-                    &c.source,
-                    i.pos,
-                    i.name.as_deref().unwrap_or("").to_string(),
-                ));
+                add(&t.name, (&i.idl_file, &i.name), &c.source, i.pos);
             }
         }
     }

@@ -328,50 +328,17 @@ fn shape(c: &Constraint, depth: usize) -> Option<Shape> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::{Pos, Text};
-
-    fn unit(cond: Condition) -> Constraint {
-        Constraint {
-            kind: ConstraintKind::Unit {
-                key: None,
-                condition: Box::new(cond),
-            },
-            pos: Pos::default(),
-            extra: vec![],
-        }
-    }
-    fn cmp(c: Comparison, lit: &str) -> Constraint {
-        unit(Condition::Compare {
-            comparison: c,
-            literal: Some(Text::from(lit)),
-            match_case: None,
-        })
-    }
-    fn between_c(lo: &str, hi: &str) -> Constraint {
-        unit(Condition::Between {
-            lower: Some(lo.into()),
-            upper: Some(hi.into()),
-        })
-    }
-    fn or(v: Vec<Constraint>) -> Constraint {
-        unit(Condition::Or { operands: v })
-    }
+    use crate::constraint::tests::{and, between, cmp, or, unit};
 
     #[test]
     fn intervals() {
         let r = |a: &Constraint, b: &Constraint| relation(Some(a), Some(b));
         assert_eq!(
-            r(&between_c("0", "10"), &between_c("0", "5")),
+            r(&between("0", "10"), &between("0", "5")),
             Relation::Narrower
         );
-        assert_eq!(
-            r(&between_c("0", "5"), &between_c("0", "10")),
-            Relation::Wider
-        );
-        assert_eq!(
-            r(&between_c("0", "10"), &between_c("5", "15")),
-            Relation::Other
-        );
+        assert_eq!(r(&between("0", "5"), &between("0", "10")), Relation::Wider);
+        assert_eq!(r(&between("0", "10"), &between("5", "15")), Relation::Other);
         assert_eq!(
             r(
                 &cmp(Comparison::LessThan, "2.0"),
@@ -382,7 +349,7 @@ mod tests {
         assert_eq!(
             r(
                 &cmp(Comparison::LessThanOrEqualTo, "10"),
-                &between_c("0", "10")
+                &between("0", "10")
             ),
             Relation::Narrower
         );
@@ -398,13 +365,11 @@ mod tests {
         assert_eq!(r(&a, &b), Relation::Narrower);
         assert_eq!(r(&b, &a), Relation::Wider);
         // 0 ≤ x ≤ 10 written as an `and` of two comparisons is the same set.
-        let and = unit(Condition::And {
-            operands: vec![
-                cmp(Comparison::GreaterThanOrEqualTo, "0"),
-                cmp(Comparison::LessThanOrEqualTo, "10"),
-            ],
-        });
-        assert_eq!(r(&between_c("0", "10"), &and), Relation::Same);
+        let both = and(vec![
+            cmp(Comparison::GreaterThanOrEqualTo, "0"),
+            cmp(Comparison::LessThanOrEqualTo, "10"),
+        ]);
+        assert_eq!(r(&between("0", "10"), &both), Relation::Same);
     }
 
     #[test]

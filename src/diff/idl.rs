@@ -1197,16 +1197,8 @@ pub(super) fn component(
         (canonical_type(a) == canonical_type(b)).then(|| b.to_string())
     };
     let pos = |p: crate::model::Pos| Some(p).filter(|p| !p.is_unknown());
-    let old_labels = super::labels(old.data_ports.iter().map(|p| p.name.as_deref()));
-    let new_labels = super::labels(new.data_ports.iter().map(|p| p.name.as_deref()));
-    for (label, np) in new_labels.iter().zip(&new.data_ports) {
-        let Some(op) = old_labels
-            .iter()
-            .position(|l| l == label)
-            .map(|i| &old.data_ports[i])
-        else {
-            continue;
-        };
+    let (o, n) = (&old.data_ports, &new.data_ports);
+    for (label, op, np) in super::same_label(o, n, |p| p.name.as_deref()) {
         let Some(ty) = same(non_empty(&op.type_), non_empty(&np.type_)) else {
             continue;
         };
@@ -1223,26 +1215,10 @@ pub(super) fn component(
             );
         }
     }
-    let old_ports = super::labels(old.service_ports.iter().map(|p| p.name.as_deref()));
-    let new_ports = super::labels(new.service_ports.iter().map(|p| p.name.as_deref()));
-    for (plabel, np) in new_ports.iter().zip(&new.service_ports) {
-        let Some(op) = old_ports
-            .iter()
-            .position(|l| l == plabel)
-            .map(|i| &old.service_ports[i])
-        else {
-            continue;
-        };
-        let oi_labels = super::labels(op.interfaces.iter().map(|i| i.name.as_deref()));
-        let ni_labels = super::labels(np.interfaces.iter().map(|i| i.name.as_deref()));
-        for (ilabel, ni) in ni_labels.iter().zip(&np.interfaces) {
-            let Some(oi) = oi_labels
-                .iter()
-                .position(|l| l == ilabel)
-                .map(|i| &op.interfaces[i])
-            else {
-                continue;
-            };
+    let (o, n) = (&old.service_ports, &new.service_ports);
+    for (plabel, op, np) in super::same_label(o, n, |p| p.name.as_deref()) {
+        let (o, n) = (&op.interfaces, &np.interfaces);
+        for (ilabel, oi, ni) in super::same_label(o, n, |i| i.name.as_deref()) {
             let Some(ty) = same(non_empty(&oi.type_), non_empty(&ni.type_)) else {
                 continue;
             };

@@ -388,7 +388,10 @@ pub fn diff_with_systems(
             }
         }
     }
-    for (side, cat, sys) in [("OLD", old, old_systems), ("NEW", new, new_systems)] {
+    for (side, cat, sys, name) in [
+        ("OLD", old, old_systems, old_name),
+        ("NEW", new, new_systems, new_name),
+    ] {
         // RT System profiles that could not be read are reported with the systems.
         let is_system =
             |d: &crate::diagnostic::Diagnostic| sys.unreadable.iter().any(|u| u.file == d.file);
@@ -397,37 +400,12 @@ pub fn diff_with_systems(
             .iter()
             .filter(|d| d.is_error() && !is_system(d))
         {
-            let mut c = change(
-                codes::UNREADABLE_PROFILE,
-                String::new(),
-                String::new(),
-                None,
-                None,
-                format!(
-                    "{side}: {} could not be read ({}[{}]: {}); {}",
-                    if side == "NEW" {
-                        new_name(&d.file)
-                    } else {
-                        old_name(&d.file)
-                    },
-                    d.severity,
-                    d.code,
-                    d.message,
-                    if is_idl_file(&d.file) {
-                        "types it defines may be missing from the comparison"
-                    } else {
-                        "a component in it counts as absent"
-                    }
-                ),
-            );
-            if side == "NEW" {
-                c.file = Some(new_name(&d.file));
-                c.line = d.pos.map(|p| p.line);
-                c.column = d.pos.map(|p| p.column);
+            let then = if is_idl_file(&d.file) {
+                "types it defines may be missing from the comparison"
             } else {
-                c.old_file = Some(old_name(&d.file));
-            }
-            out.push(c);
+                "a component in it counts as absent"
+            };
+            out.push(unreadable(side, d, name, ("", then)));
         }
     }
     idl.finish(&mut out);
@@ -1088,6 +1066,23 @@ fn s(p: &[String], i: usize) -> &str {
 }
 
 /// The typed item labelled `label` among `items`.
+/// The items of `new` that `old` has an item of the same label for: (label, old, new).
+fn same_label<'a, T>(
+    old: &'a [T],
+    new: &'a [T],
+    name: impl Fn(&T) -> Option<&str>,
+) -> Vec<(String, &'a T, &'a T)> {
+    let old_labels = labels(old.iter().map(&name));
+    labels(new.iter().map(&name))
+        .into_iter()
+        .zip(new)
+        .filter_map(|(l, n)| {
+            let o = old_labels.iter().position(|x| *x == l).map(|i| &old[i])?;
+            Some((l, o, n))
+        })
+        .collect()
+}
+
 fn by_label<'a, T>(
     items: &'a [T],
     name: impl Fn(&T) -> Option<&str>,
@@ -1282,6 +1277,38 @@ fn classify(
     }
 }
 
+/// DIFF002 for a file `side` could not read: "{side}: {what}FILE could not be read (…); {then}",
+/// at the file (NEW's) or the old file.
+fn unreadable(
+    side: &str,
+    d: &crate::diagnostic::Diagnostic,
+    name: Namer,
+    (what, then): (&str, &str),
+) -> Change {
+    let mut c = change(
+        codes::UNREADABLE_PROFILE,
+        String::new(),
+        String::new(),
+        None,
+        None,
+        format!(
+            "{side}: {what}{} could not be read ({}[{}]: {}); {then}",
+            name(&d.file),
+            d.severity,
+            d.code,
+            d.message,
+        ),
+    );
+    if side == "NEW" {
+        c.file = Some(name(&d.file));
+        c.line = d.pos.map(|p| p.line);
+        c.column = d.pos.map(|p| p.column);
+    } else {
+        c.old_file = Some(name(&d.file));
+    }
+    c
+}
+
 fn quoted(s: Option<&str>) -> String {
     match s {
         None => "(absent)".into(),
@@ -1310,6 +1337,14 @@ fn changed(
             quoted(new)
         ))
     };
+    // `code` with `message`, unless the two spellings are the `same` (`what` says in what way).
+    let same_or = |same: bool, what: &str, code: &'static str, message: String| {
+        if same {
+            (Some(codes::OTHER_CHANGED), spelled(what))
+        } else {
+            (Some(code), Some(message))
+        }
+    };
     match at {
         Place::Field(Field::ProfileId) => {
             if oi.version != ni.version && oi.key == ni.key {
@@ -1335,15 +1370,9 @@ fn changed(
         Place::Field(Field::BasicExecutionType) => (Some(codes::EXECUTION_TYPE), None),
         Place::Field(Field::BasicExecutionRate) => {
             let num = |s: Option<&str>| s.and_then(|s| s.trim().parse::<f64>().ok());
-            match (num(old), num(new)) {
-                (Some(a), Some(b)) if a == b => {
-                    (Some(codes::OTHER_CHANGED), spelled("is the same rate"))
-                }
-                _ => (
-                    Some(codes::EXECUTION_RATE),
-                    Some(format!("execution rate {} → {}", quoted(old), quoted(new))),
-                ),
-            }
+            let same = matches!((num(old), num(new)), (Some(a), Some(b)) if a == b);
+            let message = format!("execution rate {} → {}", quoted(old), quoted(new));
+            same_or(same, "is the same rate", codes::EXECUTION_RATE, message)
         }
         Place::Field(Field::BasicMaxInstances) => {
             // Absent or empty: unlimited.
@@ -1402,37 +1431,29 @@ fn changed(
                 }
                 .direction()
             };
-            if dir(old).is_some() && dir(old) == dir(new) {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("means the same port kind"),
-                )
-            } else {
-                (
-                    Some(codes::DATA_PORT_DIRECTION),
-                    Some(format!(
-                        "data port `{}` changed from {} to {}",
-                        p[1],
-                        quoted(old),
-                        quoted(new)
-                    )),
-                )
-            }
+            let message = format!(
+                "data port `{}` changed from {} to {}",
+                p[1],
+                quoted(old),
+                quoted(new)
+            );
+            let same = same_kind(old, new, dir);
+            same_or(
+                same,
+                "means the same port kind",
+                codes::DATA_PORT_DIRECTION,
+                message,
+            )
         }
         Place::Field(Field::DataPortType) => {
-            if same_type(old, new) {
-                (Some(codes::OTHER_CHANGED), spelled("names the same type"))
-            } else {
-                (
-                    Some(codes::DATA_PORT_TYPE),
-                    Some(format!(
-                        "data port `{}` now carries {} instead of {}",
-                        p[1],
-                        quoted(new),
-                        quoted(old)
-                    )),
-                )
-            }
+            let message = format!(
+                "data port `{}` now carries {} instead of {}",
+                p[1],
+                quoted(new),
+                quoted(old)
+            );
+            let same = same_type(old, new);
+            same_or(same, "names the same type", codes::DATA_PORT_TYPE, message)
         }
         Place::Field(
             Field::DataPortInterfaceType
@@ -1481,23 +1502,20 @@ fn changed(
             )),
         ),
         Place::Field(Field::InterfaceType) => {
-            if same_type(old, new) {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("names the same interface"),
-                )
-            } else {
-                (
-                    Some(codes::INTERFACE_TYPE),
-                    Some(format!(
-                        "interface `{}` of service port `{}` is now {} instead of {}",
-                        p[3],
-                        p[1],
-                        quoted(new),
-                        quoted(old)
-                    )),
-                )
-            }
+            let message = format!(
+                "interface `{}` of service port `{}` is now {} instead of {}",
+                p[3],
+                p[1],
+                quoted(new),
+                quoted(old)
+            );
+            let same = same_type(old, new);
+            same_or(
+                same,
+                "names the same interface",
+                codes::INTERFACE_TYPE,
+                message,
+            )
         }
         Place::Field(Field::InterfaceDirection) => {
             let dir = |s: Option<&str>| {
@@ -1507,23 +1525,20 @@ fn changed(
                 }
                 .direction_kind()
             };
-            if dir(old).is_some() && dir(old) == dir(new) {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("means the same direction"),
-                )
-            } else {
-                (
-                    Some(codes::INTERFACE_DIRECTION),
-                    Some(format!(
-                        "interface `{}` of service port `{}` changed from {} to {}",
-                        p[3],
-                        p[1],
-                        quoted(old),
-                        quoted(new)
-                    )),
-                )
-            }
+            let message = format!(
+                "interface `{}` of service port `{}` changed from {} to {}",
+                p[3],
+                p[1],
+                quoted(old),
+                quoted(new)
+            );
+            let same = same_kind(old, new, dir);
+            same_or(
+                same,
+                "means the same direction",
+                codes::INTERFACE_DIRECTION,
+                message,
+            )
         }
         Place::Field(Field::ConfigurationType) => {
             use crate::value::ValueType;
@@ -1534,22 +1549,18 @@ fn changed(
                 }
                 (a, b) => a == b,
             };
-            if same {
-                (
-                    Some(codes::OTHER_CHANGED),
-                    spelled("means the same value type"),
-                )
-            } else {
-                (
-                    Some(codes::CONFIGURATION_TYPE),
-                    Some(format!(
-                        "configuration parameter `{}` is now {} instead of {}",
-                        p[1],
-                        quoted(new),
-                        quoted(old)
-                    )),
-                )
-            }
+            let message = format!(
+                "configuration parameter `{}` is now {} instead of {}",
+                p[1],
+                quoted(new),
+                quoted(old)
+            );
+            same_or(
+                same,
+                "means the same value type",
+                codes::CONFIGURATION_TYPE,
+                message,
+            )
         }
         Place::Field(Field::ConfigurationDefaultValue) => (
             Some(codes::DEFAULT_CHANGED),
@@ -1569,6 +1580,16 @@ fn changed(
     }
 }
 
+/// Both spellings read as the same known kind.
+fn same_kind<K: PartialEq>(
+    old: Option<&str>,
+    new: Option<&str>,
+    kind: impl Fn(Option<&str>) -> Option<K>,
+) -> bool {
+    kind(old).is_some() && kind(old) == kind(new)
+}
+
+/// Both name the same type (any spelling of it), or neither names one.
 fn same_type(old: Option<&str>, new: Option<&str>) -> bool {
     let c = |s: Option<&str>| {
         s.map(str::trim)

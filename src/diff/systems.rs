@@ -213,30 +213,12 @@ fn end_key(end: &PortEnd) -> Option<(Key, String)> {
 
 /// DIFF002 for the system profiles a side could not read.
 pub(super) fn unreadable(side: &str, diags: &[Diagnostic], name: Namer, out: &mut Vec<Change>) {
-    for d in diags {
-        let mut c = super::change(
-            codes::UNREADABLE_PROFILE,
-            String::new(),
-            String::new(),
-            None,
-            None,
-            format!(
-                "{side}: RT System profile {} could not be read ({}[{}]: {}); its connectors are not checked",
-                name(&d.file),
-                d.severity,
-                d.code,
-                d.message
-            ),
-        );
-        if side == "NEW" {
-            c.file = Some(name(&d.file));
-            c.line = d.pos.map(|p| p.line);
-            c.column = d.pos.map(|p| p.column);
-        } else {
-            c.old_file = Some(name(&d.file));
-        }
-        out.push(c);
-    }
+    let words = ("RT System profile ", "its connectors are not checked");
+    out.extend(
+        diags
+            .iter()
+            .map(|d| super::unreadable(side, d, name, words)),
+    );
 }
 
 /// How systems are matched: the vendor and name of the id (the version left out, like a

@@ -155,8 +155,8 @@ pub fn read(path: &Path) -> Result<Option<Lock>> {
     Ok(Some(lock))
 }
 
-/// `s` as a TOML basic string.
-fn quoted(s: &str) -> String {
+/// `s` as a TOML basic string (`C:\\…` keeps its backslashes).
+pub(crate) fn quoted(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 2);
     out.push('"');
     for c in s.chars() {

@@ -386,6 +386,16 @@ fn run(mut c: Command) -> Result<std::process::Output> {
         .context("cannot run `git` ([[source]] repositories need git on the PATH)")
 }
 
+/// Runs `c`; its output when git succeeded, else the error `fail` words around git's first
+/// error line.
+fn run_ok(c: Command, fail: impl FnOnce(String) -> String) -> Result<std::process::Output> {
+    let out = run(c)?;
+    if !out.status.success() {
+        bail!("{}", fail(first_error_line(&out)));
+    }
+    Ok(out)
+}
+
 fn first_error_line(out: &std::process::Output) -> String {
     let text = String::from_utf8_lossy(&out.stderr);
     text.lines()
@@ -444,15 +454,13 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
         }
         let mut c = git_command(None);
         c.args(["init", "--bare", "--quiet"]).arg(mirror);
-        let out = run(c)?;
-        if !out.status.success() {
-            bail!(
-                "cannot create the cache of source `{}` in `{}`: {}",
+        run_ok(c, |why| {
+            format!(
+                "cannot create the cache of source `{}` in `{}`: {why}",
                 s.name,
-                mirror.display(),
-                first_error_line(&out)
-            );
-        }
+                mirror.display()
+            )
+        })?;
     }
     let mut specs = vec![
         "+refs/heads/*:refs/heads/*".to_string(),
@@ -475,15 +483,13 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
     ])
     .arg(&s.url)
     .args(&specs);
-    let out = run(c)?;
-    if !out.status.success() {
-        bail!(
-            "source `{}`: git cannot fetch `{}` ({}); check the URL or path and your access to it (ssh key, token), or build with --offline from the cache",
+    run_ok(c, |why| {
+        format!(
+            "source `{}`: git cannot fetch `{}` ({why}); check the URL or path and your access to it (ssh key, token), or build with --offline from the cache",
             s.name,
-            s.git,
-            first_error_line(&out)
-        );
-    }
+            s.git
+        )
+    })?;
     if let Some(commit) = commit {
         if rev_parse(mirror, commit)?.is_none() {
             // Not on a branch or tag any more: ask for it by name (servers allow it when it
@@ -597,18 +603,7 @@ pub fn prepare(
                 commit
             }
             None => {
-                if mode.offline {
-                    if !is_mirror(&mirror) {
-                        bail!(
-                            "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `rtcdoc update`) to fill the cache",
-                            s.name,
-                            s.git,
-                            mirror.display()
-                        );
-                    }
-                } else {
-                    fetch(s, &mirror, None)?;
-                }
+                refresh(s, &mirror, mode, " (or `rtcdoc update`)")?;
                 match resolve(&mirror, s.rev.as_deref())? {
                     Some(c) => c,
                     None => match &s.rev {
@@ -656,6 +651,23 @@ pub fn prepare(
     Ok((pinned, changes))
 }
 
+/// Fetches a source into its mirror; with `--offline`, only checks that the mirror is cached
+/// (`fill`: what else, after "run once without --offline", fills the cache).
+fn refresh(s: &Source, mirror: &Path, mode: &Mode, fill: &str) -> Result<()> {
+    if !mode.offline {
+        return fetch(s, mirror, None);
+    }
+    if !is_mirror(mirror) {
+        bail!(
+            "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline{fill} to fill the cache",
+            s.name,
+            s.git,
+            mirror.display()
+        );
+    }
+    Ok(())
+}
+
 /// One source at `rev` (a branch, tag or commit), whatever the lock says: for `rtcdoc diff
 /// NAME@REV`. Fetched unless `--offline`; the lock is neither read nor written.
 pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
@@ -663,18 +675,7 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
     let mut s = s.clone();
     s.rev = Some(rev.to_string());
     let mirror = mirror_path(&cache_dir(mode)?, &s);
-    if mode.offline {
-        if !is_mirror(&mirror) {
-            bail!(
-                "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline to fill the cache",
-                s.name,
-                s.git,
-                mirror.display()
-            );
-        }
-    } else {
-        fetch(&s, &mirror, None)?;
-    }
+    refresh(&s, &mirror, mode, "")?;
     let Some(commit) = resolve(&mirror, Some(rev))? else {
         bail!(
             "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `git ls-remote {}`",
@@ -748,16 +749,14 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
         if !s.path.is_empty() {
             c.arg("--").arg(&s.path);
         }
-        let out = run(c)?;
-        if !out.status.success() {
-            bail!(
-                "source `{}`: cannot list commit {} ({}); delete the cache `{}` and build again",
+        let out = run_ok(c, |why| {
+            format!(
+                "source `{}`: cannot list commit {} ({why}); delete the cache `{}` and build again",
                 s.name,
                 p.commit,
-                first_error_line(&out),
                 p.mirror.display()
-            );
-        }
+            )
+        })?;
         let mut blobs = Vec::new();
         let mut any = false;
         for entry in out.stdout.split(|b| *b == 0).filter(|e| !e.is_empty()) {

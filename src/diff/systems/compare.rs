@@ -10,13 +10,13 @@
 //! its attribute order or white space gives no change; host data (IORs, host names, endpoints:
 //! [`SystemProperty::private`]) is not compared either.
 
-use crate::diff::{change, codes, labels, Change};
+use super::end_text;
+use crate::diff::{change, codes, labels, same_type, Change};
 use crate::model::system::{
     short_port_name, ComponentIdParts, DataPortConnector, ExecutionContext, PortEnd, RtSystem,
     ServicePortConnector, SystemComponent, SystemConfigurationSet, SystemProperty,
 };
 use crate::model::{non_empty, Pos, Text};
-use crate::types::canonical_type;
 use serde::Serialize;
 use serde_json::Value;
 use std::collections::{BTreeMap, BTreeSet};
@@ -186,18 +186,6 @@ fn property_class(name: &str) -> (Option<&'static str>, &'static str) {
             (None, codes::SYSTEM_CONNECTOR_POLICY)
         }
         _ => (None, codes::SYSTEM_OTHER),
-    }
-}
-
-/// `instance.port` of a connector end, as the system names it.
-fn end_text(end: Option<&PortEnd>) -> String {
-    let Some(e) = end else {
-        return "(none)".into();
-    };
-    let port = non_empty(&e.port_name).unwrap_or("?");
-    match non_empty(&e.instance_name) {
-        Some(i) if !port.starts_with(&format!("{i}.")) => format!("{i}.{port}"),
-        _ => port.to_string(),
     }
 }
 
@@ -683,57 +671,61 @@ impl Cx<'_> {
     }
 
     fn data_connectors(&mut self, old: &RtSystem, new: &RtSystem) {
-        let (o, n) = (&old.data_port_connectors, &new.data_port_connectors);
-        let label = |v: &[DataPortConnector]| {
-            connector_labels(v.iter().map(|c| {
-                (
-                    non_empty(&c.name).or(non_empty(&c.connector_id)),
-                    format!(
-                        "{} > {}",
-                        end_text(c.source.as_ref()),
-                        end_text(c.target.as_ref())
-                    ),
+        self.connectors(
+            ("dataPortConnectors", "to"),
+            (&old.data_port_connectors, &new.data_port_connectors),
+            |label, c, (s, t)| {
+                let ty = non_empty(&c.data_type)
+                    .map(|t| format!(", {t}"))
+                    .unwrap_or_default();
+                format!(
+                    "data port connector `{label}` (`{s}` → `{t}`{ty}) was removed: `{t}` no longer receives data from `{s}`"
                 )
-            }))
-        };
-        let (ol, nl) = (label(o), label(n));
-        let matched = match_connectors(
-            o,
-            n,
-            |c| non_empty(&c.connector_id).map(str::to_string),
-            |c| ends_key(c.source.as_ref(), c.target.as_ref()),
+            },
+            |label, (s, t)| format!("data port connector `{label}` (`{s}` → `{t}`) was added"),
+            |cx, label, a, b| cx.data_connector(label, a, b),
         );
+    }
+
+    /// Pairs the connectors of one list (`key`), reports each one removed and added (the
+    /// messages made from its label and ends' text; `join` words its old or new value `A join
+    /// B`) and compares each pair with `pair`.
+    fn connectors<C: Connector>(
+        &mut self,
+        (key, join): (&str, &str),
+        (o, n): (&[C], &[C]),
+        removed: impl Fn(&str, &C, (&str, &str)) -> String,
+        added: impl Fn(&str, (&str, &str)) -> String,
+        mut pair: impl FnMut(&mut Self, &str, &C, &C),
+    ) {
+        let ends = |c: &C| {
+            let (s, t) = c.ends();
+            (end_text(s), end_text(t))
+        };
+        let (ol, nl, matched) = paired_connectors(o, n);
         for m in matched {
             match m {
                 (Some(i), None) => {
-                    let c = &o[i];
-                    let (s, t) = (end_text(c.source.as_ref()), end_text(c.target.as_ref()));
-                    let ty = non_empty(&c.data_type)
-                        .map(|t| format!(", {t}"))
-                        .unwrap_or_default();
+                    let (s, t) = ends(&o[i]);
                     self.push(
                         codes::SYSTEM_CONNECTOR_REMOVED,
-                        format!("dataPortConnectors/{}", ol[i]),
-                        (Some(format!("{s} to {t}")), None),
-                        format!(
-                            "data port connector `{}` (`{s}` → `{t}`{ty}) was removed: `{t}` no longer receives data from `{s}`",
-                            ol[i]
-                        ),
-                        At::Old(c.pos),
+                        format!("{key}/{}", ol[i]),
+                        (Some(format!("{s} {join} {t}")), None),
+                        removed(&ol[i], &o[i], (&s, &t)),
+                        At::Old(o[i].pos()),
                     );
                 }
                 (None, Some(j)) => {
-                    let c = &n[j];
-                    let (s, t) = (end_text(c.source.as_ref()), end_text(c.target.as_ref()));
+                    let (s, t) = ends(&n[j]);
                     self.push(
                         codes::SYSTEM_CONNECTOR_ADDED,
-                        format!("dataPortConnectors/{}", nl[j]),
-                        (None, Some(format!("{s} to {t}"))),
-                        format!("data port connector `{}` (`{s}` → `{t}`) was added", nl[j]),
-                        At::New(c.pos),
+                        format!("{key}/{}", nl[j]),
+                        (None, Some(format!("{s} {join} {t}"))),
+                        added(&nl[j], (&s, &t)),
+                        At::New(n[j].pos()),
                     );
                 }
-                (Some(i), Some(j)) => self.data_connector(&nl[j], &o[i], &n[j]),
+                (Some(i), Some(j)) => pair(self, &nl[j], &o[i], &n[j]),
                 (None, None) => {}
             }
         }
@@ -742,14 +734,7 @@ impl Cx<'_> {
     fn data_connector(&mut self, label: &str, a: &DataPortConnector, b: &DataPortConnector) {
         let base = format!("dataPortConnectors/{label}");
         let at = At::New(b.pos);
-        let ends_changed = self.ends(
-            "data port connector",
-            &base,
-            label,
-            (a.source.as_ref(), a.target.as_ref()),
-            (b.source.as_ref(), b.target.as_ref()),
-            b.pos,
-        );
+        let ends_changed = self.ends("data port connector", &base, label, a, b);
         let mut reported: BTreeSet<&str> = BTreeSet::new();
         // The data type, by meaning.
         if a.data_type != b.data_type {
@@ -852,11 +837,6 @@ impl Cx<'_> {
             );
         }
         self.connector_properties(&base, label, &a.properties, &b.properties, &reported, b.pos);
-        let skip_ends: &[&str] = if ends_changed {
-            &["instanceName", "portName", "componentId"]
-        } else {
-            &["instanceName"]
-        };
         let rest = |c: &DataPortConnector| {
             let mut v = without(
                 c,
@@ -869,101 +849,38 @@ impl Cx<'_> {
                     "properties",
                 ],
             );
-            strip_ends(&mut v, skip_ends);
+            strip_ends(&mut v, ends_changed);
             v
         };
         self.other(&base, rest(a), rest(b), b.pos);
     }
 
     fn service_connectors(&mut self, old: &RtSystem, new: &RtSystem) {
-        let (o, n) = (&old.service_port_connectors, &new.service_port_connectors);
-        let label = |v: &[ServicePortConnector]| {
-            connector_labels(v.iter().map(|c| {
-                (
-                    non_empty(&c.name).or(non_empty(&c.connector_id)),
-                    format!(
-                        "{} > {}",
-                        end_text(c.source.as_ref()),
-                        end_text(c.target.as_ref())
-                    ),
+        self.connectors(
+            ("servicePortConnectors", "and"),
+            (&old.service_port_connectors, &new.service_port_connectors),
+            |label, _, (s, t)| {
+                format!(
+                    "service port connector `{label}` (`{s}` — `{t}`) was removed: the interfaces these ports require from each other lose their provider, and calls through them fail"
                 )
-            }))
-        };
-        let (ol, nl) = (label(o), label(n));
-        let matched = match_connectors(
-            o,
-            n,
-            |c| non_empty(&c.connector_id).map(str::to_string),
-            |c| ends_key(c.source.as_ref(), c.target.as_ref()),
+            },
+            |label, (s, t)| format!("service port connector `{label}` (`{s}` — `{t}`) was added"),
+            |cx, label, a, b| {
+                let base = format!("servicePortConnectors/{label}");
+                let changed = cx.ends("service port connector", &base, label, a, b);
+                let rest = |c: &ServicePortConnector| {
+                    let mut v = without(c, &[]);
+                    strip_ends(&mut v, changed);
+                    v
+                };
+                cx.other(&base, rest(a), rest(b), b.pos);
+            },
         );
-        for m in matched {
-            match m {
-                (Some(i), None) => {
-                    let c = &o[i];
-                    let (s, t) = (end_text(c.source.as_ref()), end_text(c.target.as_ref()));
-                    self.push(
-                        codes::SYSTEM_CONNECTOR_REMOVED,
-                        format!("servicePortConnectors/{}", ol[i]),
-                        (Some(format!("{s} and {t}")), None),
-                        format!(
-                            "service port connector `{}` (`{s}` — `{t}`) was removed: the interfaces these ports require from each other lose their provider, and calls through them fail",
-                            ol[i]
-                        ),
-                        At::Old(c.pos),
-                    );
-                }
-                (None, Some(j)) => {
-                    let c = &n[j];
-                    let (s, t) = (end_text(c.source.as_ref()), end_text(c.target.as_ref()));
-                    self.push(
-                        codes::SYSTEM_CONNECTOR_ADDED,
-                        format!("servicePortConnectors/{}", nl[j]),
-                        (None, Some(format!("{s} and {t}"))),
-                        format!(
-                            "service port connector `{}` (`{s}` — `{t}`) was added",
-                            nl[j]
-                        ),
-                        At::New(c.pos),
-                    );
-                }
-                (Some(i), Some(j)) => {
-                    let (a, b) = (&o[i], &n[j]);
-                    let base = format!("servicePortConnectors/{}", nl[j]);
-                    let changed = self.ends(
-                        "service port connector",
-                        &base,
-                        &nl[j],
-                        (a.source.as_ref(), a.target.as_ref()),
-                        (b.source.as_ref(), b.target.as_ref()),
-                        b.pos,
-                    );
-                    let skip: &[&str] = if changed {
-                        &["instanceName", "portName", "componentId"]
-                    } else {
-                        &["instanceName"]
-                    };
-                    let rest = |c: &ServicePortConnector| {
-                        let mut v = without(c, &[]);
-                        strip_ends(&mut v, skip);
-                        v
-                    };
-                    self.other(&base, rest(a), rest(b), b.pos);
-                }
-                (None, None) => {}
-            }
-        }
     }
 
     /// DIFF155 when a matched connector joins other ports; whether it does.
-    fn ends(
-        &mut self,
-        kind: &str,
-        base: &str,
-        label: &str,
-        (os, ot): (Option<&PortEnd>, Option<&PortEnd>),
-        (ns, nt): (Option<&PortEnd>, Option<&PortEnd>),
-        at: Pos,
-    ) -> bool {
+    fn ends<C: Connector>(&mut self, kind: &str, base: &str, label: &str, a: &C, b: &C) -> bool {
+        let ((os, ot), (ns, nt), at) = (a.ends(), b.ends(), b.pos());
         if end_key(os) == end_key(ns) && end_key(ot) == end_key(nt) {
             return false;
         }
@@ -1096,17 +1013,15 @@ fn real_sets(c: &SystemComponent) -> Vec<(String, &SystemConfigurationSet)> {
         .collect()
 }
 
-fn same_type(a: Option<&str>, b: Option<&str>) -> bool {
-    let c = |s: Option<&str>| {
-        s.map(str::trim)
-            .filter(|s| !s.is_empty())
-            .map(canonical_type)
+/// Removes the instance names (and, when they changed, the ports) from the `source` and
+/// `target` ends of a connector's JSON.
+fn strip_ends(v: &mut Value, ends_changed: bool) {
+    // Ends reported as changed are not reported again among the rest.
+    let keys: &[&str] = if ends_changed {
+        &["instanceName", "portName", "componentId"]
+    } else {
+        &["instanceName"]
     };
-    c(a) == c(b)
-}
-
-/// Removes `keys` from the `source` and `target` ends of a connector's JSON.
-fn strip_ends(v: &mut Value, keys: &[&str]) {
     for end in ["source", "target"] {
         if let Some(m) = v.get_mut(end).and_then(Value::as_object_mut) {
             for k in keys {
@@ -1116,6 +1031,69 @@ fn strip_ends(v: &mut Value, keys: &[&str]) {
     }
 }
 
+/// What pairing reads of either kind of connector.
+trait Connector {
+    fn name(&self) -> &Option<Text>;
+    fn connector_id(&self) -> &Option<Text>;
+    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>);
+    fn pos(&self) -> Pos;
+}
+
+impl Connector for DataPortConnector {
+    fn name(&self) -> &Option<Text> {
+        &self.name
+    }
+    fn connector_id(&self) -> &Option<Text> {
+        &self.connector_id
+    }
+    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
+        (self.source.as_ref(), self.target.as_ref())
+    }
+    fn pos(&self) -> Pos {
+        self.pos
+    }
+}
+
+impl Connector for ServicePortConnector {
+    fn name(&self) -> &Option<Text> {
+        &self.name
+    }
+    fn connector_id(&self) -> &Option<Text> {
+        &self.connector_id
+    }
+    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
+        (self.source.as_ref(), self.target.as_ref())
+    }
+    fn pos(&self) -> Pos {
+        self.pos
+    }
+}
+
+/// The labels of the old and the new connectors (name, else id, else `source > target`) and
+/// their pairs ([`match_connectors`]: by id, then by ends).
+fn paired_connectors<C: Connector>(old: &[C], new: &[C]) -> (Vec<String>, Vec<String>, Pairs) {
+    let label = |v: &[C]| {
+        connector_labels(v.iter().map(|c| {
+            let (s, t) = c.ends();
+            let name = non_empty(c.name()).or(non_empty(c.connector_id()));
+            (name, format!("{} > {}", end_text(s), end_text(t)))
+        }))
+    };
+    let matched = match_connectors(
+        old,
+        new,
+        |c| non_empty(c.connector_id()).map(str::to_string),
+        |c| {
+            let (s, t) = c.ends();
+            ends_key(s, t)
+        },
+    );
+    (label(old), label(new), matched)
+}
+
+/// Indices of paired items: both, or only the old (removed) or only the new (added) one.
+type Pairs = Vec<(Option<usize>, Option<usize>)>;
+
 /// Connectors paired by connector id, then the rest by their ends; in OLD's order, then the
 /// added ones in NEW's order.
 fn match_connectors<T>(
@@ -1123,7 +1101,7 @@ fn match_connectors<T>(
     new: &[T],
     id: impl Fn(&T) -> Option<String>,
     ends: impl Fn(&T) -> Option<String>,
-) -> Vec<(Option<usize>, Option<usize>)> {
+) -> Pairs {
     let (mut pairs, ro, rn) = pair_by(old, new, &id);
     let old_left: Vec<&T> = ro.iter().map(|&i| &old[i]).collect();
     let new_left: Vec<&T> = rn.iter().map(|&j| &new[j]).collect();
