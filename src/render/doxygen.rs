@@ -433,13 +433,7 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     );
     d!(out, "<p>{}</p>", stats.join(" · "));
     d!(out);
-    d!(
-        out,
-        "\\section {} {}",
-        page.anchor_in("catalogue", DOX),
-        title(lang.t("fact_catalogue"))
-    );
-    d!(out);
+    Dox::heading(&mut out, page, 2, "catalogue", lang.t("fact_catalogue"));
     d!(out, "<ul>");
     let counted = (v.categories.iter().map(|g| (g.page, g.members.len())))
         .chain(v.indexes.iter().map(|i| (i.page, i.count)));
@@ -451,13 +445,7 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
     }
     d!(out, "</ul>");
     d!(out);
-    d!(
-        out,
-        "\\section {} {}",
-        page.anchor_in("components", DOX),
-        title(lang.t("components"))
-    );
-    d!(out);
+    Dox::heading(&mut out, page, 2, "components", lang.t("components"));
     for g in &v.categories {
         // The section of a category is named after its page (`rtc_main__rtc_cat_<slug>`).
         d!(
