@@ -228,13 +228,14 @@ pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
     let len: usize = entries.iter().map(|e| e.len() + 1).sum();
     let mut out = String::with_capacity(len + 256);
     out.push_str("window.RTCDOC_INDEX={\"e\":[");
-    for (i, e) in entries.iter().enumerate() {
+    // Each entry is dropped once copied, so that the index is not held twice at its end (at
+    // 10,000 profiles 8 MB, while the component pages render beside it).
+    for (i, e) in entries.into_iter().enumerate() {
         if i > 0 {
             out.push(',');
         }
-        out.push_str(e);
+        out.push_str(&e);
     }
-    drop(entries);
     out.push_str("],\"kinds\":");
     push_js_safe_json(&mut out, &serde_json::to_string(&kinds).unwrap_or_default());
     out.push_str("};\n");
