@@ -3,7 +3,7 @@
 //! in a folder without git, each version compared with the one before by the diff engine.
 
 mod common;
-use common::history_repo::git;
+use common::history_repo::{build, codes, commit_versions, edit as with, git, page};
 use common::{rtcdoc, write};
 use serde_json::Value;
 use std::path::Path;
@@ -19,15 +19,6 @@ const PROFILE: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 
 const STATUS_PORT: &str = r#"  <rtc:DataPorts xsi:type="rtcExt:dataport_ext" rtc:portType="DataOutPort" rtc:name="status" rtc:type="RTC::TimedLong"/>
   <rtc:Language"#;
-
-fn with(text: &str, edits: &[(&str, &str)]) -> String {
-    let mut s = text.to_string();
-    for (from, to) in edits {
-        assert!(s.contains(from), "edit `{from}` does not apply");
-        s = s.replacen(from, to, 1);
-    }
-    s
-}
 
 /// The versions the tests commit, oldest first: (subject, profile).
 fn versions() -> Vec<(&'static str, String)> {
@@ -66,17 +57,8 @@ fn versions() -> Vec<(&'static str, String)> {
 /// A work tree with the commits of [`versions`] on `Base/RTC.xml`, then the folder moved to
 /// `mobile/Base`.
 fn repository(d: &Path) -> bool {
-    if !git(d, &["--version"], "") {
+    if !commit_versions(d, versions()) {
         return false;
-    }
-    assert!(git(d, &["init", "-q"], ""));
-    assert!(git(d, &["config", "user.name", "Tester"], ""));
-    assert!(git(d, &["config", "user.email", "t@example.org"], ""));
-    for (i, (subject, text)) in versions().into_iter().enumerate() {
-        write(d, "Base/RTC.xml", &text);
-        let date = format!("2024-01-0{} 10:00:00 +0900", i + 1);
-        assert!(git(d, &["add", "-A"], &date));
-        assert!(git(d, &["commit", "-q", "-m", subject], &date));
     }
     std::fs::create_dir_all(d.join("mobile")).unwrap();
     let date = "2024-01-09 10:00:00 +0900";
@@ -86,28 +68,10 @@ fn repository(d: &Path) -> bool {
 }
 
 fn build_json(input: &Path, out: &Path, extra: &[&str]) -> Value {
-    let mut args = vec![
-        "build",
-        input.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-        "-f",
-        "json",
-    ];
+    let mut args = vec!["-f", "json"];
     args.extend_from_slice(extra);
-    let o = rtcdoc(&args, input);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let text = std::fs::read_to_string(out.join("catalog.json")).unwrap();
-    serde_json::from_str(&text).unwrap()
-}
-
-fn codes(entry: &Value) -> Vec<&str> {
-    entry["changes"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| c["code"].as_str().unwrap())
-        .collect()
+    build(input, out, &args);
+    serde_json::from_str(&page(out, "catalog.json")).unwrap()
 }
 
 #[test]
@@ -254,22 +218,6 @@ fn backups_are_the_history_without_git() {
     assert_eq!(codes(&h[0]), ["DIFF306", "DIFF102", "DIFF301"]);
     assert_eq!(codes(&h[2]), ["DIFF301"]);
     assert_eq!(h[3]["first"], true);
-}
-
-fn build(input: &Path, out: &Path, extra: &[&str]) {
-    let mut args = vec![
-        "build",
-        input.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ];
-    args.extend_from_slice(extra);
-    let o = rtcdoc(&args, input);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-}
-
-fn page(dir: &Path, rel: &str) -> String {
-    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
 }
 
 #[test]

@@ -4,66 +4,13 @@
 //! system and IDL pages.
 
 mod common;
-use common::history_repo::git;
+use common::history_repo::{build, codes, commit, edit as with, init, page};
 use common::{root, rtcdoc, write};
 use serde_json::Value;
 use std::path::Path;
 
-/// A fresh repository in `d`, or `false` when git does not run.
-fn init(d: &Path) -> bool {
-    std::fs::create_dir_all(d).unwrap();
-    if !git(d, &["--version"], "") {
-        return false;
-    }
-    assert!(git(d, &["init", "-q"], ""));
-    assert!(git(d, &["config", "user.name", "Tester"], ""));
-    assert!(git(d, &["config", "user.email", "t@example.org"], ""));
-    true
-}
-
-/// Commits everything on day `day` of January 2024.
-fn commit(d: &Path, day: u32, subject: &str) {
-    let date = format!("2024-01-{day:02} 10:00:00 +0900");
-    assert!(git(d, &["add", "-A"], &date));
-    assert!(git(d, &["commit", "-q", "-m", subject], &date));
-}
-
 fn fixture(rel: &str) -> String {
     std::fs::read_to_string(root().join("tests/fixtures").join(rel)).unwrap()
-}
-
-fn with(text: &str, edits: &[(&str, &str)]) -> String {
-    let mut s = text.to_string();
-    for (from, to) in edits {
-        assert!(s.contains(from), "edit `{from}` does not apply");
-        s = s.replacen(from, to, 1);
-    }
-    s
-}
-
-fn build(input: &Path, out: &Path, extra: &[&str]) {
-    let mut args = vec![
-        "build",
-        input.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ];
-    args.extend_from_slice(extra);
-    let o = rtcdoc(&args, input);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-}
-
-fn page(dir: &Path, rel: &str) -> String {
-    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
-}
-
-fn codes(entry: &Value) -> Vec<&str> {
-    entry["changes"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| c["code"].as_str().unwrap())
-        .collect()
 }
 
 /// The commits of `systems/NavSystem.xml`, oldest first: the first version, a new version of
@@ -94,7 +41,7 @@ fn system_repository(d: &Path) -> bool {
     .enumerate()
     {
         write(d, "systems/NavSystem.xml", text);
-        commit(d, day as u32 + 1, subject);
+        commit(d, day + 1, subject);
     }
     true
 }
@@ -283,7 +230,7 @@ fn idl_repository(d: &Path) -> bool {
     .enumerate()
     {
         write(d, "idl/Nav.idl", &text);
-        commit(d, day as u32 + 1, subject);
+        commit(d, day + 1, subject);
     }
     true
 }
@@ -438,6 +385,22 @@ fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
     assert!(dox.contains(&idl_url), "{dox}");
 }
 
+/// The history of component `RTC:Test:Cat:Base:1.0.0` in the catalog.json of `site`.
+fn base_history(site: &Path) -> Vec<Value> {
+    let json: Value = serde_json::from_str(&page(site, "catalog.json")).unwrap();
+    json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history")
+        .clone()
+}
+
+/// (subject, file) of each history entry.
+fn subjects_and_files(h: &[Value]) -> Vec<(&str, &str)> {
+    h.iter()
+        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
+        .collect()
+}
+
 #[test]
 fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
     let dir = tempfile::tempdir().unwrap();
@@ -489,14 +452,8 @@ fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
 
     let site = dir.path().join("site");
     build(&repo, &site, &["-f", "json"]);
-    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
-    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
-        .as_array()
-        .expect("a history");
-    let found: Vec<(&str, &str)> = h
-        .iter()
-        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
-        .collect();
+    let h = base_history(&site);
+    let found = subjects_and_files(&h);
     assert_eq!(
         found,
         [
@@ -514,10 +471,7 @@ fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
     // `--history 2` stops there.
     let site = dir.path().join("site2");
     build(&repo, &site, &["-f", "json", "--history", "2"]);
-    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
-    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
-        .as_array()
-        .unwrap();
+    let h = base_history(&site);
     assert_eq!(h.len(), 2);
     assert_eq!(h[1]["subject"], "Edit");
 }
@@ -543,14 +497,8 @@ fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
     commit(&repo, 4, "Drop the original");
     let site = dir.path().join("site");
     build(&repo, &site, &["-f", "json"]);
-    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
-    let h = json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
-        .as_array()
-        .expect("a history");
-    let found: Vec<(&str, &str)> = h
-        .iter()
-        .map(|e| (e["subject"].as_str().unwrap(), e["file"].as_str().unwrap()))
-        .collect();
+    let h = base_history(&site);
+    let found = subjects_and_files(&h);
     assert_eq!(
         found,
         [

@@ -4,8 +4,8 @@
 //! output. The repository is `common::history_repo`'s: four commits of one profile.
 
 mod common;
-use common::history_repo::history_repo;
-use common::{rtcdoc, tree, write};
+use common::history_repo::{self, history_repo, page};
+use common::{tree, write};
 use std::path::{Path, PathBuf};
 
 const SOURCE_URL: &str = "source-url = \"https://example.org/lab/blob/{commit}/{path}\"\n";
@@ -22,21 +22,9 @@ fn repo(dir: &Path) -> Option<PathBuf> {
 }
 
 fn build(input: &Path, out: &Path, extra: &[&str]) {
-    let mut args = vec![
-        "build",
-        input.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-        "-f",
-        "html,markdown,doxygen,json",
-    ];
+    let mut args = vec!["-f", "html,markdown,doxygen,json"];
     args.extend_from_slice(extra);
-    let o = rtcdoc(&args, input);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-}
-
-fn page(dir: &Path, rel: &str) -> String {
-    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
+    history_repo::build(input, out, &args);
 }
 
 /// The text from `from` to the next `to` (exclusive).

@@ -16,7 +16,8 @@ const V1: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 </rtc:RtcProfile>
 "#;
 
-fn edit(text: &str, edits: &[(&str, &str)]) -> String {
+/// `text` with each (from, to) replaced once; every `from` must be there.
+pub fn edit(text: &str, edits: &[(&str, &str)]) -> String {
     let mut s = text.to_string();
     for (from, to) in edits {
         assert!(s.contains(from), "edit `{from}` does not apply");
@@ -67,8 +68,8 @@ pub fn git(dir: &Path, args: &[&str], date: &str) -> bool {
         .unwrap_or(false)
 }
 
-/// Commits [`versions`] as `Base/RTC.xml` in a new work tree `d`; `false` without git.
-pub fn history_repo(d: &Path) -> bool {
+/// A fresh repository in `d`, or `false` when git does not run.
+pub fn init(d: &Path) -> bool {
     std::fs::create_dir_all(d).expect("mkdir");
     if !git(d, &["--version"], "") {
         return false;
@@ -76,11 +77,58 @@ pub fn history_repo(d: &Path) -> bool {
     assert!(git(d, &["init", "-q"], ""));
     assert!(git(d, &["config", "user.name", "Tester"], ""));
     assert!(git(d, &["config", "user.email", "t@example.org"], ""));
-    for (i, (subject, text)) in versions().into_iter().enumerate() {
+    true
+}
+
+/// Commits everything on day `day` of January 2024.
+pub fn commit(d: &Path, day: usize, subject: &str) {
+    let date = format!("2024-01-{day:02} 10:00:00 +0900");
+    assert!(git(d, &["add", "-A"], &date));
+    assert!(git(d, &["commit", "-q", "-m", subject], &date));
+}
+
+/// Commits `versions` (oldest first) as `Base/RTC.xml` in a new work tree `d`, one a day from
+/// 2024-01-01; `false` without git.
+pub fn commit_versions(d: &Path, versions: Vec<(&str, String)>) -> bool {
+    if !init(d) {
+        return false;
+    }
+    for (i, (subject, text)) in versions.into_iter().enumerate() {
         super::write(d, "Base/RTC.xml", &text);
-        let date = format!("2024-01-0{} 10:00:00 +0900", i + 1);
-        assert!(git(d, &["add", "-A"], &date));
-        assert!(git(d, &["commit", "-q", "-m", subject], &date));
+        commit(d, i + 1, subject);
     }
     true
+}
+
+/// Commits [`versions`] as `Base/RTC.xml` in a new work tree `d`; `false` without git.
+pub fn history_repo(d: &Path) -> bool {
+    commit_versions(d, versions())
+}
+
+/// `rtcdoc build INPUT -o OUT EXTRA…`, which must succeed.
+pub fn build(input: &Path, out: &Path, extra: &[&str]) {
+    let mut args = vec![
+        "build",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let o = super::rtcdoc(&args, input);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// The text of output file `rel` of `dir`.
+pub fn page(dir: &Path, rel: &str) -> String {
+    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
+}
+
+/// The change codes of a history entry of catalog.json.
+pub fn codes(entry: &serde_json::Value) -> Vec<&str> {
+    entry["changes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["code"].as_str().unwrap())
+        .collect()
 }

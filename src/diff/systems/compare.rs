@@ -1039,35 +1039,26 @@ trait Connector {
     fn pos(&self) -> Pos;
 }
 
-impl Connector for DataPortConnector {
-    fn name(&self) -> &Option<Text> {
-        &self.name
-    }
-    fn connector_id(&self) -> &Option<Text> {
-        &self.connector_id
-    }
-    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
-        (self.source.as_ref(), self.target.as_ref())
-    }
-    fn pos(&self) -> Pos {
-        self.pos
-    }
+/// Both connector kinds hold the same fields the comparison reads.
+macro_rules! connector {
+    ($($t:ty),*) => {$(
+        impl Connector for $t {
+            fn name(&self) -> &Option<Text> {
+                &self.name
+            }
+            fn connector_id(&self) -> &Option<Text> {
+                &self.connector_id
+            }
+            fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
+                (self.source.as_ref(), self.target.as_ref())
+            }
+            fn pos(&self) -> Pos {
+                self.pos
+            }
+        }
+    )*};
 }
-
-impl Connector for ServicePortConnector {
-    fn name(&self) -> &Option<Text> {
-        &self.name
-    }
-    fn connector_id(&self) -> &Option<Text> {
-        &self.connector_id
-    }
-    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
-        (self.source.as_ref(), self.target.as_ref())
-    }
-    fn pos(&self) -> Pos {
-        self.pos
-    }
-}
+connector!(DataPortConnector, ServicePortConnector);
 
 /// The labels of the old and the new connectors (name, else id, else `source > target`) and
 /// their pairs ([`match_connectors`]: by id, then by ends).

@@ -44,7 +44,8 @@ pub struct FrontView<'a> {
 }
 
 impl FrontView<'_> {
-    /// The index of `kind` among [`FrontView::indexes`] (absent: systems when there are none).
+    /// The index labelled `key` among [`FrontView::indexes`] (none for `systems` when the
+    /// catalogue has no systems).
     pub fn index(&self, key: &str) -> Option<&IndexLink<'_>> {
         self.indexes.iter().find(|i| i.key == key)
     }
