@@ -3,8 +3,10 @@
 //! in a folder without git, each version compared with the one before by the diff engine.
 
 mod common;
-use common::history_repo::{build, codes, commit_versions, edit as with, git, page};
-use common::{rtcdoc, write};
+use common::history_repo::{
+    build, build_source_project, codes, commit_versions, edit as with, git, page,
+};
+use common::write;
 use serde_json::Value;
 use std::path::Path;
 
@@ -329,27 +331,7 @@ fn a_source_repository_gives_its_history_up_to_the_pinned_commit() {
         &["commit", "-q", "-am", "Fix"],
         "2024-01-11 10:00:00 +0900"
     ));
-    let proj = dir.path().join("proj");
-    write(
-        &proj,
-        "rtcdoc.toml",
-        "[[source]]\ngit = \"../repo\"\nname = \"lab\"\nsource-url = \"https://git.example.org/lab/blob/{commit}/{path}\"\n",
-    );
-    let cache = dir.path().join("cache");
-    let out = dir.path().join("site");
-    let o = rtcdoc(
-        &[
-            "build",
-            "-o",
-            out.to_str().unwrap(),
-            "-f",
-            "json,html",
-            "--cache-dir",
-            cache.to_str().unwrap(),
-        ],
-        &proj,
-    );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = build_source_project(dir.path(), "json,html");
     let json: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("json/catalog.json")).unwrap())
             .unwrap();

@@ -4,8 +4,8 @@
 //! system and IDL pages.
 
 mod common;
-use common::history_repo::{build, codes, commit, edit as with, init, page};
-use common::{root, rtcdoc, write};
+use common::history_repo::{build, build_source_project, codes, commit, edit as with, init, page};
+use common::{root, write};
 use serde_json::Value;
 use std::path::Path;
 
@@ -330,27 +330,7 @@ fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
         &fixture("diff/DIFF251/old/systems/NavSystem.xml"),
     );
     commit(&repo, 9, "Add the system");
-    let proj = dir.path().join("proj");
-    write(
-        &proj,
-        "rtcdoc.toml",
-        "[[source]]\ngit = \"../repo\"\nname = \"lab\"\nsource-url = \"https://git.example.org/lab/blob/{commit}/{path}\"\n",
-    );
-    let cache = dir.path().join("cache");
-    let out = dir.path().join("site");
-    let o = rtcdoc(
-        &[
-            "build",
-            "-o",
-            out.to_str().unwrap(),
-            "-f",
-            "json,html,markdown,doxygen",
-            "--cache-dir",
-            cache.to_str().unwrap(),
-        ],
-        &proj,
-    );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = build_source_project(dir.path(), "json,html,markdown,doxygen");
     let json: Value = serde_json::from_str(&page(&out, "json/catalog.json")).unwrap();
     let pinned = json["sources"][0]["commit"].as_str().unwrap().to_string();
     let system = &json["systems"]["lab/systems/NavSystem.xml"];

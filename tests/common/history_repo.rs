@@ -118,6 +118,25 @@ pub fn build(input: &Path, out: &Path, extra: &[&str]) {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
 
+/// Builds `dir/proj`, whose `rtcdoc.toml` has one `[[source]]` `lab` (git `dir/repo`, a
+/// `source-url` with `{commit}`), in `formats` into `dir/site` with the cache `dir/cache`;
+/// the output folder.
+pub fn build_source_project(dir: &Path, formats: &str) -> std::path::PathBuf {
+    let proj = dir.join("proj");
+    super::write(
+        &proj,
+        "rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\nname = \"lab\"\nsource-url = \"https://git.example.org/lab/blob/{commit}/{path}\"\n",
+    );
+    let (cache, out) = (dir.join("cache"), dir.join("site"));
+    let args = ["-f", formats, "--cache-dir", cache.to_str().unwrap()];
+    let mut all = vec!["build", "-o", out.to_str().unwrap()];
+    all.extend_from_slice(&args);
+    let o = super::rtcdoc(&all, &proj);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    out
+}
+
 /// The text of output file `rel` of `dir`.
 pub fn page(dir: &Path, rel: &str) -> String {
     std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
