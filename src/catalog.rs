@@ -344,42 +344,175 @@ pub fn member_at<'a>(names: impl Iterator<Item = &'a str> + Clone, key: &str) ->
 
 use crate::model::Text;
 
-/// A dense handle of a component inside the build: its position in [`Catalog::components`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct ComponentIx(u32);
+/// A dense handle of an entry of kind `T` inside the build: its position in the catalogue's
+/// vector of `T`s ([`Catalog::components`], [`Catalog::data_types`], [`Catalog::interfaces`],
+/// [`Catalog::systems`]). Handles of different kinds are different types, so a data type's
+/// position is never taken for a component's; the catalogue is indexed by them (`cat[ci]`).
+/// Strings ([`ComponentId`], a type's name, a system's file) are for the boundary only.
+pub struct Ix<T>(u32, std::marker::PhantomData<fn() -> T>);
 
-impl ComponentIx {
-    /// No component (a reference not resolved by the catalogue it is used with).
-    pub const NONE: ComponentIx = ComponentIx(u32::MAX);
+/// A component's handle.
+pub type ComponentIx = Ix<Component>;
+/// A data type's handle.
+pub type DataTypeIx = Ix<DataType>;
+/// A service interface type's handle.
+pub type InterfaceIx = Ix<InterfaceType>;
+/// An RT System's handle.
+pub type SystemIx = Ix<systems::System>;
 
-    /// The handle of position `i` ([`ComponentIx::NONE`] past `u32::MAX`).
-    pub fn new(i: usize) -> ComponentIx {
-        u32::try_from(i).map_or(ComponentIx::NONE, ComponentIx)
+/// The handle of a type entry of either kind: a data type or a service interface type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TypeIx {
+    Data(DataTypeIx),
+    Interface(InterfaceIx),
+}
+
+impl<T> Ix<T> {
+    /// No entry (a reference not resolved by the catalogue it is used with).
+    pub const NONE: Ix<T> = Ix(u32::MAX, std::marker::PhantomData);
+
+    /// The handle of position `i` ([`Ix::NONE`] past `u32::MAX`).
+    pub fn new(i: usize) -> Ix<T> {
+        u32::try_from(i).map_or(Ix::NONE, |i| Ix(i, std::marker::PhantomData))
     }
 
-    /// The position in [`Catalog::components`] (`usize::MAX` for [`ComponentIx::NONE`]).
+    /// The position in the catalogue's vector (`usize::MAX` for [`Ix::NONE`]).
     pub fn get(self) -> usize {
-        if self == ComponentIx::NONE {
+        if self == Ix::NONE {
             usize::MAX
         } else {
             self.0 as usize
         }
     }
-}
 
-impl RefHandle {
-    fn new(ci: usize, port: usize, interface: usize) -> RefHandle {
-        RefHandle {
-            component: ComponentIx::new(ci),
-            port: u32::try_from(port).unwrap_or(u32::MAX),
-            interface: u32::try_from(interface).unwrap_or(u32::MAX),
-        }
+    /// The handles of a vector of `len` entries, in order.
+    pub fn all(len: usize) -> impl DoubleEndedIterator<Item = Ix<T>> + ExactSizeIterator + Clone {
+        (0..len).map(Ix::new)
+    }
+
+    /// Each of `entries` with its handle, in order.
+    pub fn enumerate(entries: &[T]) -> impl DoubleEndedIterator<Item = (Ix<T>, &T)> + Clone {
+        Ix::all(entries.len()).zip(entries)
     }
 }
 
-impl Default for ComponentIx {
-    fn default() -> ComponentIx {
-        ComponentIx::NONE
+impl<T> Clone for Ix<T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<T> Copy for Ix<T> {}
+
+impl<T> PartialEq for Ix<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.0 == other.0
+    }
+}
+
+impl<T> Eq for Ix<T> {}
+
+impl<T> PartialOrd for Ix<T> {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl<T> Ord for Ix<T> {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.cmp(&other.0)
+    }
+}
+
+impl<T> std::hash::Hash for Ix<T> {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.0.hash(state);
+    }
+}
+
+impl<T> std::fmt::Debug for Ix<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Ix({})", self.0)
+    }
+}
+
+/// A handle is written as its position (a template context may carry one).
+impl<T> Serialize for Ix<T> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.0.serialize(s)
+    }
+}
+
+impl<T> Default for Ix<T> {
+    fn default() -> Ix<T> {
+        Ix::NONE
+    }
+}
+
+/// A value for each entry of kind `K` (one per component, say), looked up by the entry's
+/// handle: `of[ci]`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PerEntry<K, V>(Vec<V>, std::marker::PhantomData<fn() -> K>);
+
+impl<K, V> PerEntry<K, V> {
+    /// The table of `values`, the value of entry `i` at position `i`.
+    pub fn new(values: Vec<V>) -> PerEntry<K, V> {
+        PerEntry(values, std::marker::PhantomData)
+    }
+}
+
+impl<K, V> std::ops::Index<Ix<K>> for PerEntry<K, V> {
+    type Output = V;
+    fn index(&self, ix: Ix<K>) -> &V {
+        &self.0[ix.get()]
+    }
+}
+
+impl<K, V> std::ops::IndexMut<Ix<K>> for PerEntry<K, V> {
+    fn index_mut(&mut self, ix: Ix<K>) -> &mut V {
+        &mut self.0[ix.get()]
+    }
+}
+
+/// The handle of each of `entries` by its key.
+fn handle_map<T, K: Eq + std::hash::Hash>(
+    entries: &[T],
+    key: impl Fn(&T) -> K,
+) -> HashMap<K, Ix<T>> {
+    let handles = Ix::all(entries.len());
+    entries
+        .iter()
+        .zip(handles)
+        .map(|(e, i)| (key(e), i))
+        .collect()
+}
+
+/// The catalogue is indexed by handles: `cat[ci]` is the component of handle `ci`.
+macro_rules! index_by_handle {
+    ($($t:ty => $field:ident),*) => {$(
+        impl std::ops::Index<Ix<$t>> for Catalog {
+            type Output = $t;
+            fn index(&self, ix: Ix<$t>) -> &$t {
+                &self.$field[ix.get()]
+            }
+        }
+    )*};
+}
+
+index_by_handle!(
+    Component => components,
+    DataType => data_types,
+    InterfaceType => interfaces,
+    systems::System => systems
+);
+
+impl RefHandle {
+    fn new(component: ComponentIx, port: usize, interface: usize) -> RefHandle {
+        RefHandle {
+            component,
+            port: u32::try_from(port).unwrap_or(u32::MAX),
+            interface: u32::try_from(interface).unwrap_or(u32::MAX),
+        }
     }
 }
 
@@ -620,7 +753,7 @@ pub struct Catalog {
     #[serde(skip)]
     page_starts: PageStarts,
     #[serde(skip)]
-    by_id: HashMap<ComponentId, usize>,
+    by_id: HashMap<ComponentId, ComponentIx>,
     /// The RT System profiles read ([`Catalog::attach_systems`]), by source path. Left out of
     /// `catalog.json` when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -633,9 +766,9 @@ pub struct Catalog {
     #[serde(skip)]
     pub sources: Vec<crate::model::SourceInfo>,
     #[serde(skip)]
-    type_index: HashMap<String, usize>,
+    type_index: HashMap<String, DataTypeIx>,
     #[serde(skip)]
-    interface_index: HashMap<String, usize>,
+    interface_index: HashMap<String, InterfaceIx>,
 }
 
 /// What a page documents.
@@ -1106,7 +1239,7 @@ impl Catalog {
                     PortRef {
                         component: c.id.clone(),
                         port: member_key(c.profile.data_ports.iter().map(|p| name_of(&p.name)), pi),
-                        at: RefHandle::new(ci, pi, 0),
+                        at: RefHandle::new(Ix::new(ci), pi, 0),
                     }
                 })
                 .collect()
@@ -1123,7 +1256,7 @@ impl Catalog {
                             pi,
                         ),
                         interface: member_key(sp.interfaces.iter().map(|i| name_of(&i.name)), ii),
-                        at: RefHandle::new(ci, pi, ii),
+                        at: RefHandle::new(Ix::new(ci), pi, ii),
                     }
                 })
                 .collect()
@@ -1221,21 +1354,9 @@ impl Catalog {
         let vendors = facet(&|p| p.basic_info.vendor.as_deref());
 
         crate::diagnostic::sort(&mut diagnostics);
-        let type_index = data_types
-            .iter()
-            .enumerate()
-            .map(|(i, t)| (t.name.clone(), i))
-            .collect();
-        let interface_index = interfaces
-            .iter()
-            .enumerate()
-            .map(|(i, t)| (t.name.clone(), i))
-            .collect();
-        let by_id = components
-            .iter()
-            .enumerate()
-            .map(|(i, c)| (c.id.clone(), i))
-            .collect();
+        let type_index = handle_map(&data_types, |t| t.name.clone());
+        let interface_index = handle_map(&interfaces, |t| t.name.clone());
+        let by_id = handle_map(&components, |c| c.id.clone());
         let mut catalog = Catalog {
             components,
             data_types,
@@ -1270,17 +1391,15 @@ impl Catalog {
         diagnostics: Vec<Diagnostic>,
         idl: crate::idl::IdlSet,
     ) -> Result<Catalog, String> {
-        let mut by_id = HashMap::with_capacity(components.len());
-        for (i, c) in components.iter().enumerate() {
-            if by_id.insert(c.id.clone(), i).is_some() {
+        let by_id = handle_map(&components, |c| c.id.clone());
+        if by_id.len() < components.len() {
+            let mut seen = std::collections::HashSet::new();
+            if let Some(c) = components.iter().find(|c| !seen.insert(&c.id)) {
                 return Err(format!("component id `{}` appears twice", c.id));
             }
         }
-        let index = |names: &mut dyn Iterator<Item = &String>| -> HashMap<String, usize> {
-            names.enumerate().map(|(i, n)| (n.clone(), i)).collect()
-        };
-        let type_index = index(&mut data_types.iter().map(|t| &t.name));
-        let interface_index = index(&mut interfaces.iter().map(|t| &t.name));
+        let type_index = handle_map(&data_types, |t| t.name.clone());
+        let interface_index = handle_map(&interfaces, |t| t.name.clone());
         let mut catalog = Catalog {
             components,
             data_types,
@@ -1317,7 +1436,7 @@ impl Catalog {
                         r.port, r.component
                     ));
                 };
-                r.component = catalog.components[ci].id.clone();
+                r.component = catalog[ci].id.clone();
                 r.at = RefHandle::new(ci, pi, 0);
             }
         }
@@ -1338,7 +1457,7 @@ impl Catalog {
                         r.port, r.interface, r.component
                     ));
                 };
-                r.component = catalog.components[ci].id.clone();
+                r.component = catalog[ci].id.clone();
                 r.at = RefHandle::new(ci, pi, ii);
             }
         }
@@ -1478,8 +1597,8 @@ impl Catalog {
     }
 
     /// The history page of component `ci`, when it has a history.
-    pub fn history_page(&self, ci: usize) -> Option<&Page> {
-        let at = (*self.page_starts.history.get(ci)?)?;
+    pub fn history_page(&self, ci: ComponentIx) -> Option<&Page> {
+        let at = (*self.page_starts.history.get(ci.get())?)?;
         self.pages.get(at)
     }
 
@@ -1500,18 +1619,26 @@ impl Catalog {
     }
 
     /// The page of component `ci`.
-    pub fn component_page(&self, ci: usize) -> &Page {
-        &self.pages[self.page_starts.component + ci]
+    pub fn component_page(&self, ci: ComponentIx) -> &Page {
+        &self.pages[self.page_starts.component + ci.get()]
     }
 
     /// The page of data type `ti` ([`Catalog::data_types`]).
-    pub fn data_type_page(&self, ti: usize) -> &Page {
-        &self.pages[self.page_starts.data_type + ti]
+    pub fn data_type_page(&self, ti: DataTypeIx) -> &Page {
+        &self.pages[self.page_starts.data_type + ti.get()]
     }
 
     /// The page of interface `ii` ([`Catalog::interfaces`]).
-    pub fn interface_page(&self, ii: usize) -> &Page {
-        &self.pages[self.page_starts.interface + ii]
+    pub fn interface_page(&self, ii: InterfaceIx) -> &Page {
+        &self.pages[self.page_starts.interface + ii.get()]
+    }
+
+    /// The page of data type or interface `t`.
+    pub fn type_page(&self, t: TypeIx) -> &Page {
+        match t {
+            TypeIx::Data(i) => self.data_type_page(i),
+            TypeIx::Interface(i) => self.interface_page(i),
+        }
     }
 
     /// The page of category `fi` ([`Catalog::categories`]).
@@ -1525,45 +1652,45 @@ impl Catalog {
     }
 
     /// The page of system `si` ([`Catalog::systems`]).
-    pub fn system_page(&self, si: usize) -> &Page {
-        &self.pages[self.page_starts.system + si]
+    pub fn system_page(&self, si: SystemIx) -> &Page {
+        &self.pages[self.page_starts.system + si.get()]
     }
 
     /// The page of a system of the catalogue, found by its key (its file).
     pub fn page_of_system(&self, s: &systems::System) -> Option<&Page> {
         let si = self.systems.iter().position(|x| x.source == s.source)?;
-        Some(self.system_page(si))
+        Some(self.system_page(Ix::new(si)))
     }
 
     /// The position of the component with id `id` in [`Catalog::components`].
-    pub fn component_index(&self, id: &str) -> Option<usize> {
+    pub fn component_index(&self, id: &str) -> Option<ComponentIx> {
         self.by_id.get(id).copied()
     }
 
     /// The component with id `id`.
     pub fn component(&self, id: &str) -> Option<&Component> {
-        self.component_index(id).map(|i| &self.components[i])
+        self.component_index(id).map(|i| &self[i])
     }
 
-    /// The positions in [`Catalog::components`] of a facet's components.
-    pub fn members<'a>(&'a self, f: &'a Facet) -> impl Iterator<Item = usize> + 'a {
+    /// The handles of a facet's components.
+    pub fn members<'a>(&'a self, f: &'a Facet) -> impl Iterator<Item = ComponentIx> + 'a {
         f.components
             .iter()
             .filter_map(|id| self.component_index(id))
     }
 
     /// The category facet of each component, by position (every component is in one).
-    pub fn category_of_each(&self) -> Vec<usize> {
+    pub fn category_of_each(&self) -> PerEntry<Component, usize> {
         Self::facet_of_each(&self.categories, self.components.len(), self)
     }
 
     /// The vendor facet of each component, by position (every component is in one).
-    pub fn vendor_of_each(&self) -> Vec<usize> {
+    pub fn vendor_of_each(&self) -> PerEntry<Component, usize> {
         Self::facet_of_each(&self.vendors, self.components.len(), self)
     }
 
-    fn facet_of_each(facets: &[Facet], n: usize, cat: &Catalog) -> Vec<usize> {
-        let mut of = vec![0; n];
+    fn facet_of_each(facets: &[Facet], n: usize, cat: &Catalog) -> PerEntry<Component, usize> {
+        let mut of = PerEntry::new(vec![0; n]);
         for (fi, f) in facets.iter().enumerate() {
             for ci in cat.members(f) {
                 of[ci] = fi;
@@ -1574,31 +1701,31 @@ impl Catalog {
 
     /// The component entry a handle points at, when it is the entry of id `id` (the very
     /// allocation: a handle made by this catalogue, or by a clone of its entry).
-    fn handled(&self, id: &ComponentId, at: ComponentIx) -> Option<(usize, &Component)> {
+    fn handled(&self, id: &ComponentId, at: ComponentIx) -> Option<(ComponentIx, &Component)> {
         let c = self.components.get(at.get())?;
-        ComponentId::same_entry(&c.id, id).then_some((at.get(), c))
+        ComponentId::same_entry(&c.id, id).then_some((at, c))
     }
 
-    /// The position in [`Catalog::components`] of the component a port reference names: O(1)
-    /// through its handle ([`RefHandle`]), by id otherwise.
-    pub fn port_component(&self, r: &PortRef) -> Option<usize> {
+    /// The handle of the component a port reference names: O(1) through the reference's
+    /// handle ([`RefHandle`]), by id otherwise.
+    pub fn port_component(&self, r: &PortRef) -> Option<ComponentIx> {
         match self.handled(&r.component, r.at.component) {
             Some((ci, _)) => Some(ci),
             None => self.component_index(&r.component),
         }
     }
 
-    /// The position in [`Catalog::components`] of the component an interface reference names:
-    /// O(1) through its handle, by id otherwise.
-    pub fn interface_component(&self, r: &InterfaceRef) -> Option<usize> {
+    /// The handle of the component an interface reference names: O(1) through the
+    /// reference's handle, by id otherwise.
+    pub fn interface_component(&self, r: &InterfaceRef) -> Option<ComponentIx> {
         match self.handled(&r.component, r.at.component) {
             Some((ci, _)) => Some(ci),
             None => self.component_index(&r.component),
         }
     }
 
-    /// The component and data port a reference names: (component index, port index).
-    pub fn resolve_port(&self, r: &PortRef) -> Option<(usize, usize)> {
+    /// The component and data port a reference names: (component handle, port position).
+    pub fn resolve_port(&self, r: &PortRef) -> Option<(ComponentIx, usize)> {
         if let Some((ci, c)) = self.handled(&r.component, r.at.component) {
             let pi = r.at.port as usize;
             if c.profile
@@ -1610,13 +1737,14 @@ impl Catalog {
             }
         }
         let ci = self.component_index(&r.component)?;
-        let ports = &self.components[ci].profile.data_ports;
+        let ports = &self[ci].profile.data_ports;
         let pi = member_at(ports.iter().map(|p| name_of(&p.name)), &r.port)?;
         Some((ci, pi))
     }
 
-    /// The component, service port and interface a reference names, as indices.
-    pub fn resolve_interface(&self, r: &InterfaceRef) -> Option<(usize, usize, usize)> {
+    /// The component, service port and interface a reference names: the component's handle
+    /// and the positions of the port and the interface.
+    pub fn resolve_interface(&self, r: &InterfaceRef) -> Option<(ComponentIx, usize, usize)> {
         if let Some((ci, c)) = self.handled(&r.component, r.at.component) {
             let (pi, ii) = (r.at.port as usize, r.at.interface as usize);
             if let Some(sp) = c.profile.service_ports.get(pi) {
@@ -1631,7 +1759,7 @@ impl Catalog {
             }
         }
         let ci = self.component_index(&r.component)?;
-        let sps = &self.components[ci].profile.service_ports;
+        let sps = &self[ci].profile.service_ports;
         let pi = member_at(sps.iter().map(|p| name_of(&p.name)), &r.port)?;
         let ii = member_at(
             sps[pi].interfaces.iter().map(|i| name_of(&i.name)),
@@ -1643,7 +1771,7 @@ impl Catalog {
     /// The component and data port a reference names.
     pub fn port_of(&self, r: &PortRef) -> Option<(&Component, &crate::model::DataPort)> {
         let (ci, pi) = self.resolve_port(r)?;
-        let c = &self.components[ci];
+        let c = &self[ci];
         Some((c, &c.profile.data_ports[pi]))
     }
 
@@ -1657,7 +1785,7 @@ impl Catalog {
         &crate::model::ServiceInterface,
     )> {
         let (ci, pi, ii) = self.resolve_interface(r)?;
-        let c = &self.components[ci];
+        let c = &self[ci];
         let sp = &c.profile.service_ports[pi];
         Some((c, sp, &sp.interfaces[ii]))
     }
@@ -1787,39 +1915,34 @@ impl Catalog {
                 t.contained_in = by;
             }
         }
-        self.type_index = self
-            .data_types
-            .iter()
-            .enumerate()
-            .map(|(i, t)| (t.name.clone(), i))
-            .collect();
+        self.type_index = handle_map(&self.data_types, |t| t.name.clone());
         self.index_pages();
     }
 
     /// The data type entry for any spelling of a type name.
     pub fn data_type(&self, name: &str) -> Option<&DataType> {
-        self.data_type_index(name).map(|i| &self.data_types[i])
+        self.data_type_index(name).map(|i| &self[i])
     }
 
-    /// The position in `data_types` of any spelling of a type name.
-    pub fn data_type_index(&self, name: &str) -> Option<usize> {
+    /// The handle of the data type of any spelling of a type name.
+    pub fn data_type_index(&self, name: &str) -> Option<DataTypeIx> {
         self.type_index.get(&canonical_type(name)).copied()
     }
 
     /// The interface entry for any spelling of an interface type name.
     pub fn interface(&self, name: &str) -> Option<&InterfaceType> {
-        self.interface_index_of(name).map(|i| &self.interfaces[i])
+        self.interface_index_of(name).map(|i| &self[i])
     }
 
-    /// The position in `interfaces` of any spelling of an interface type name.
-    pub fn interface_index_of(&self, name: &str) -> Option<usize> {
+    /// The handle of the interface of any spelling of an interface type name.
+    pub fn interface_index_of(&self, name: &str) -> Option<InterfaceIx> {
         self.interface_index.get(&canonical_type(name)).copied()
     }
 
     /// Ports of other components that can connect to data port `port` of `component`:
     /// out → in ports of the same type, in → out ports of the same type.
-    pub fn data_port_peers(&self, component: usize, port: usize) -> &[PortRef] {
-        let p = &self.components[component].profile.data_ports[port];
+    pub fn data_port_peers(&self, component: ComponentIx, port: usize) -> &[PortRef] {
+        let p = &self[component].profile.data_ports[port];
         let Some(t) = p.type_.as_deref().and_then(|t| self.data_type(t)) else {
             return &[];
         };
@@ -1834,11 +1957,11 @@ impl Catalog {
     /// the same type.
     pub fn interface_peers(
         &self,
-        component: usize,
+        component: ComponentIx,
         port: usize,
         interface: usize,
     ) -> &[InterfaceRef] {
-        let i = &self.components[component].profile.service_ports[port].interfaces[interface];
+        let i = &self[component].profile.service_ports[port].interfaces[interface];
         let Some(t) = i.type_.as_deref().and_then(|t| self.interface(t)) else {
             return &[];
         };
@@ -1887,6 +2010,34 @@ impl Catalog {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+
+    #[test]
+    fn handles_index_their_own_kind_and_say_none_past_u32() {
+        let cat = Catalog::build(
+            vec![
+                xml_profile("A", "Cat", &[("DataOutPort", "RTC::TimedLong")], &[]),
+                xml_profile("B", "Cat", &[("DataInPort", "RTC::TimedLong")], &[]),
+            ],
+            Vec::new(),
+        );
+        let handles: Vec<ComponentIx> = Ix::all(cat.components.len()).collect();
+        assert_eq!(handles.len(), 2);
+        for (ci, c) in Ix::enumerate(&cat.components) {
+            assert_eq!(cat[ci].id, c.id);
+            assert_eq!(cat.component_index(&c.id), Some(ci));
+            assert_eq!(cat.component_page(ci).id, c.id.as_str());
+        }
+        let ti = cat.data_type_index("TimedLong").expect("type");
+        assert_eq!(cat[ti].name, "RTC::TimedLong");
+        assert_eq!(cat.type_page(TypeIx::Data(ti)), cat.data_type_page(ti));
+        let (pc, pi) = cat.resolve_port(&cat[ti].uses.consumers[0]).expect("port");
+        assert_eq!((cat[pc].profile.name(), pi), ("B", 0));
+        let of = cat.category_of_each();
+        assert_eq!((of[handles[0]], of[handles[1]]), (0, 0));
+        assert_eq!(ComponentIx::new(usize::MAX), Ix::NONE);
+        assert_eq!(Ix::<Component>::NONE.get(), usize::MAX);
+        assert_eq!(serde_json::to_string(&handles[1]).expect("json"), "1");
+    }
 
     /// A component `name` of `category` with data ports (port type, data type) and service
     /// ports of one interface each (direction, interface type), loaded from its RTC.xml.

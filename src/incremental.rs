@@ -8,7 +8,7 @@
 //! leaves the last good site in place and reports its diagnostics.
 
 use crate::build::{add_check_diagnostics, load, BuildOptions};
-use crate::catalog::{Catalog, Component, LoadedProfile, PageKind};
+use crate::catalog::{Catalog, Component, Ix, LoadedProfile, PageKind};
 use crate::diagnostic::Diagnostic;
 use crate::output::MemorySink;
 use crate::parse;
@@ -102,7 +102,7 @@ fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
     for p in &comp.profile.data_ports {
         if let Some(ti) = p.type_.as_deref().and_then(|t| cat.data_type_index(t)) {
             set.insert(cat.data_type_page(ti).path("html"));
-            let t = &cat.data_types[ti];
+            let t = &cat[ti];
             for r in t.all_uses() {
                 set.extend(component_page(&r.component));
             }
@@ -112,7 +112,7 @@ fn peer_pages(cat: &Catalog, comp: &Component, set: &mut BTreeSet<String>) {
         for i in &sp.interfaces {
             if let Some(ii) = i.type_.as_deref().and_then(|t| cat.interface_index_of(t)) {
                 set.insert(cat.interface_page(ii).path("html"));
-                let t = &cat.interfaces[ii];
+                let t = &cat[ii];
                 for r in t.all_uses() {
                     set.extend(component_page(&r.component));
                 }
@@ -205,8 +205,12 @@ fn affected(before: &Before, new: &Catalog, changed: &[String]) -> Option<BTreeS
     )
     .collect();
     for src in changed {
-        let ci = new.components.iter().position(|c| &c.source == src)?;
-        let comp = &new.components[ci];
+        let ci = new
+            .components
+            .iter()
+            .position(|c| &c.source == src)
+            .map(Ix::new)?;
+        let comp = &new[ci];
         let (old_sig, old_peers) = before.changed.get(src)?;
         set.insert(new.component_page(ci).path("html"));
         if let Some(h) = new.history_page(ci) {

@@ -832,7 +832,7 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let rows = nb::rows(cat, ci, &n);
         // No links: the pages they would point to are not beside the export.
         let (inst, conns) = nb::wiring(cat, ci, &rows, lang, &|_, _| String::new());
-        let name = cat.components[ci].display_name();
+        let name = cat[ci].display_name();
         let title = format!("{} {name}", lang.t("neighbourhood_of"));
         return write_graph(args, &title, &title, &inst, &conns);
     }
@@ -890,12 +890,12 @@ fn find_component(
     cat: &rtcdoc::catalog::Catalog,
     want: &str,
     input: &std::path::Path,
-) -> anyhow::Result<usize> {
-    let found: Vec<usize> = (0..cat.components.len())
-        .filter(|&ci| {
-            let c = &cat.components[ci];
+) -> anyhow::Result<rtcdoc::catalog::ComponentIx> {
+    let found: Vec<rtcdoc::catalog::ComponentIx> = rtcdoc::catalog::Ix::enumerate(&cat.components)
+        .filter(|(_, c)| {
             c.profile.name() == want || &*c.id == want || c.slug == want || c.display_name() == want
         })
+        .map(|(ci, _)| ci)
         .collect();
     match found.as_slice() {
         [one] => Ok(*one),
@@ -931,11 +931,7 @@ fn find_component(
             "{} components match {want:?}; choose one by id: {}",
             many.len(),
             many.iter()
-                .map(|&ci| format!(
-                    "{} ({})",
-                    cat.components[ci].display_name(),
-                    cat.components[ci].id
-                ))
+                .map(|&ci| format!("{} ({})", cat[ci].display_name(), cat[ci].id))
                 .collect::<Vec<_>>()
                 .join(", ")
         ),

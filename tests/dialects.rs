@@ -418,7 +418,10 @@ fn facets_fold_spellings_and_variants_get_language_slugs() {
     assert_eq!(f.name, "Hardware interface");
     assert_eq!(f.variants, vec!["Hardware Interface"]);
     assert_eq!(f.slug, "hardware-interface");
-    assert_eq!(cat.members(f).collect::<Vec<_>>(), vec![0, 1, 2]);
+    assert_eq!(
+        cat.members(f).map(|ci| ci.get()).collect::<Vec<_>>(),
+        vec![0, 1, 2]
+    );
     let slugs: Vec<&str> = cat.components.iter().map(|c| c.slug.as_str()).collect();
     assert_eq!(
         slugs,

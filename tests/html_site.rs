@@ -233,7 +233,7 @@ fn every_port_links_to_its_type_or_interface_page_and_peers() {
     let out = dir.path().join("site");
     let loaded = build_site(&examples(), &out, SiteOptions::default());
     let cat = &loaded.catalog;
-    for (ci, c) in cat.components.iter().enumerate() {
+    for (ci, c) in rtcdoc::catalog::Ix::enumerate(&cat.components) {
         let html = read(&out.join(format!("components/{}.html", c.slug)));
         for (pi, p) in c.profile.data_ports.iter().enumerate() {
             let Some(t) = p.type_.as_deref().and_then(|t| cat.data_type(t)) else {
@@ -263,7 +263,7 @@ fn every_port_links_to_its_type_or_interface_page_and_peers() {
                 .take(rtcdoc::render::html::PEER_COMPONENTS_CAP)
             {
                 let (pci, ppi) = cat.resolve_port(peer).unwrap();
-                let pc = &cat.components[pci];
+                let pc = &cat[pci];
                 let href = format!(
                     "../components/{}.html#{}",
                     pc.slug, pc.anchors.data_ports[ppi]

@@ -297,7 +297,7 @@ fn doxygen_builds_every_page() {
 fn vendor_pages_list_their_components_and_components_link_them() {
     let (_t, out, cat) = render(&inputs()[1]);
     let of = cat.vendor_of_each();
-    for (ci, c) in cat.components.iter().enumerate() {
+    for (ci, c) in rtcdoc::catalog::Ix::enumerate(&cat.components) {
         let comp = cat.component_page(ci);
         let vendor = cat.vendor_page(of[ci]);
         let md = std::fs::read_to_string(out.join("markdown").join(comp.path_in(Output::Markdown)))

@@ -82,7 +82,7 @@ fn systems_are_loaded_and_linked() {
         .iter()
         .position(|c| c.slug == "planner")
         .unwrap();
-    let using = cat.systems_using(ci);
+    let using = cat.systems_using(rtcdoc::catalog::Ix::new(ci));
     assert_eq!(using.len(), 1);
     assert_eq!(using[0].1, vec!["Planner0"]);
     assert_eq!(cat.connectors_carrying("RTC::CameraImage").len(), 1);

@@ -4,7 +4,7 @@
 //! the port pairs behind it. Computed from the producers and consumers of each data type in
 //! O(ports + groups²) per type, never pair by pair.
 
-use super::Catalog;
+use super::{Catalog, ComponentIx, DataTypeIx, Ix};
 use std::collections::BTreeMap;
 
 /// How components are grouped.
@@ -22,8 +22,8 @@ pub struct FlowEdge {
     pub to: usize,
     /// Out-port/in-port pairs of one data type, across different components.
     pub pairs: u64,
-    /// The data types (indices into [`Catalog::data_types`]) of those pairs, in catalogue order.
-    pub types: Vec<usize>,
+    /// The data types of those pairs, in catalogue order.
+    pub types: Vec<DataTypeIx>,
 }
 
 impl Catalog {
@@ -35,10 +35,10 @@ impl Catalog {
             Grouping::Category => self.category_of_each(),
             Grouping::Vendor => self.vendor_of_each(),
         };
-        let mut edges: BTreeMap<(usize, usize), (u64, Vec<usize>)> = BTreeMap::new();
-        for (ti, t) in self.data_types.iter().enumerate() {
+        let mut edges: BTreeMap<(usize, usize), (u64, Vec<DataTypeIx>)> = BTreeMap::new();
+        for (ti, t) in Ix::all(self.data_types.len()).zip(&self.data_types) {
             let count = |refs: &[super::PortRef]| {
-                let mut by_component: BTreeMap<usize, u64> = BTreeMap::new();
+                let mut by_component: BTreeMap<ComponentIx, u64> = BTreeMap::new();
                 for r in refs {
                     if let Some(ci) = self.port_component(r) {
                         *by_component.entry(ci).or_default() += 1;
@@ -50,7 +50,7 @@ impl Catalog {
             if out.is_empty() || inp.is_empty() {
                 continue;
             }
-            let per_group = |m: &BTreeMap<usize, u64>| {
+            let per_group = |m: &BTreeMap<ComponentIx, u64>| {
                 let mut g: BTreeMap<usize, u64> = BTreeMap::new();
                 for (&ci, &n) in m {
                     *g.entry(of[ci]).or_default() += n;
@@ -65,7 +65,7 @@ impl Catalog {
                         // Not a component with itself.
                         pairs -= out
                             .iter()
-                            .filter(|(ci, _)| of[**ci] == a)
+                            .filter(|(&ci, _)| of[ci] == a)
                             .map(|(ci, n)| n * inp.get(ci).copied().unwrap_or(0))
                             .sum::<u64>();
                     }

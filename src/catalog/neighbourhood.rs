@@ -7,7 +7,7 @@
 //! without saying so. Every component page asks, so it costs one pass over each port's peer
 //! list and no lookup by name.
 
-use super::Catalog;
+use super::{Catalog, ComponentIx, Ix, TypeIx};
 use crate::model::{Direction, PortDirection};
 
 /// At most this many peer components are named per port, in every output: in a port's
@@ -19,23 +19,23 @@ pub const PEER_COMPONENTS_CAP: usize = 5;
 /// components (`all`, in catalogue order, so sorted by component) grouped by component, and
 /// the number of groups (components) in all. A component's own ports are never its peers.
 pub fn peer_groups<R>(
-    ci: usize,
+    ci: ComponentIx,
     all: &[R],
-    component: impl Fn(&R) -> usize,
-) -> (Vec<(usize, Vec<&R>)>, usize) {
+    component: impl Fn(&R) -> ComponentIx,
+) -> (Vec<(ComponentIx, Vec<&R>)>, usize) {
     capped_groups(ci, all, PEER_COMPONENTS_CAP, component)
 }
 
 /// [`peer_groups`] with at most `cap` groups collected.
 fn capped_groups<R>(
-    ci: usize,
+    ci: ComponentIx,
     all: &[R],
     cap: usize,
-    component: impl Fn(&R) -> usize,
-) -> (Vec<(usize, Vec<&R>)>, usize) {
+    component: impl Fn(&R) -> ComponentIx,
+) -> (Vec<(ComponentIx, Vec<&R>)>, usize) {
     // Only the groups shown are collected; the others are counted (a popular type's list holds
     // thousands of references, and every one of its ports asks).
-    let mut groups: Vec<(usize, Vec<&R>)> = Vec::new();
+    let mut groups: Vec<(ComponentIx, Vec<&R>)> = Vec::new();
     let mut total = 0;
     let mut last = None;
     for r in all {
@@ -70,8 +70,8 @@ pub enum PortAt {
 /// One neighbour of a port: a component and its ports that connect to the port.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Neighbour {
-    /// Index into [`Catalog::components`].
-    pub component: usize,
+    /// The neighbouring component.
+    pub component: ComponentIx,
     /// Its matching ports, in profile order.
     pub ports: Vec<PortAt>,
 }
@@ -85,9 +85,9 @@ pub struct PortNeighbours {
     /// call this provided interface; false when this out-port feeds them or this required
     /// interface calls them.
     pub upstream: bool,
-    /// The data type ([`Catalog::data_types`]) or interface ([`Catalog::interfaces`]) index:
-    /// the page that lists every neighbour when some are left out.
-    pub type_index: usize,
+    /// The port's data type or interface type: the page that lists every neighbour when some
+    /// are left out.
+    pub type_: TypeIx,
     /// The first neighbours, in catalogue order, at most the cap.
     pub shown: Vec<Neighbour>,
     /// How many neighbour components there are in all (`shown.len()` when none is left out).
@@ -120,7 +120,7 @@ impl Neighbourhood {
     }
 
     /// The neighbour components named (on any port), each once, in the order first met.
-    pub fn components(&self) -> Vec<usize> {
+    pub fn components(&self) -> Vec<ComponentIx> {
         let mut seen = Vec::new();
         for p in &self.ports {
             for n in &p.shown {
@@ -135,8 +135,8 @@ impl Neighbourhood {
 
 /// [`capped_groups`] as neighbours, each with its ports (`at`: where a reference is).
 fn neighbours<R>(
-    (ci, all, cap): (usize, &[R], usize),
-    component: impl Fn(&R) -> usize,
+    (ci, all, cap): (ComponentIx, &[R], usize),
+    component: impl Fn(&R) -> ComponentIx,
     at: impl Fn(&R) -> Option<PortAt>,
 ) -> (Vec<Neighbour>, usize) {
     let (groups, total) = capped_groups(ci, all, cap, component);
@@ -154,9 +154,9 @@ impl Catalog {
     /// The neighbourhood of component `ci`, at most `cap` neighbours named per port (the rest
     /// counted in [`PortNeighbours::total`]). Event ports and interfaces of no known direction
     /// have none; the component is never its own neighbour.
-    pub fn neighbourhood(&self, ci: usize, cap: usize) -> Neighbourhood {
+    pub fn neighbourhood(&self, ci: ComponentIx, cap: usize) -> Neighbourhood {
         let mut ports = Vec::new();
-        let Some(c) = self.components.get(ci) else {
+        let Some(c) = self.components.get(ci.get()) else {
             return Neighbourhood { ports };
         };
         let p = &c.profile;
@@ -172,14 +172,14 @@ impl Catalog {
             let refs = self.data_port_peers(ci, pi);
             let (shown, total) = neighbours(
                 (ci, refs, cap),
-                |r| self.port_component(r).unwrap_or(usize::MAX),
+                |r| self.port_component(r).unwrap_or(Ix::NONE),
                 |r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)),
             );
             if total > 0 {
                 ports.push(PortNeighbours {
                     port: PortAt::Data(pi),
                     upstream,
-                    type_index: ti,
+                    type_: TypeIx::Data(ti),
                     shown,
                     total,
                 });
@@ -198,7 +198,7 @@ impl Catalog {
                 let refs = self.interface_peers(ci, si, ii);
                 let (shown, total) = neighbours(
                     (ci, refs, cap),
-                    |r| self.interface_component(r).unwrap_or(usize::MAX),
+                    |r| self.interface_component(r).unwrap_or(Ix::NONE),
                     |r| {
                         self.resolve_interface(r)
                             .map(|(_, q, j)| PortAt::Interface(q, j))
@@ -208,7 +208,7 @@ impl Catalog {
                     ports.push(PortNeighbours {
                         port: PortAt::Interface(si, ii),
                         upstream,
-                        type_index: ti,
+                        type_: TypeIx::Interface(ti),
                         shown,
                         total,
                     });
@@ -228,11 +228,11 @@ mod tests {
         crate::catalog::tests::xml_profile(name, "C", ports, services)
     }
 
-    fn index(cat: &Catalog, name: &str) -> usize {
-        cat.components
-            .iter()
-            .position(|c| c.profile.name() == name)
+    fn index(cat: &Catalog, name: &str) -> ComponentIx {
+        Ix::enumerate(&cat.components)
+            .find(|(_, c)| c.profile.name() == name)
             .expect("component")
+            .0
     }
 
     #[test]
@@ -294,6 +294,6 @@ mod tests {
             vec![profile("Alone", &[("DataInPort", "RTC::TimedLong")], &[])],
             Vec::new(),
         );
-        assert!(lonely.neighbourhood(0, 5).is_empty());
+        assert!(lonely.neighbourhood(Ix::new(0), 5).is_empty());
     }
 }

@@ -11,6 +11,7 @@
 //! so `catalog.json` stays readable when the component list changes.
 
 use super::{facet_key, slugify, unique_slugs, Catalog, Component};
+use super::{ComponentIx, Ix};
 use crate::model::system::{PortEnd, RtSystem, SystemComponent};
 use crate::model::{non_empty, PortDirection};
 use crate::parse::SourceFormat;
@@ -82,9 +83,9 @@ pub enum MatchKind {
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct InstanceLink {
-    /// Index into [`Catalog::components`]; use [`Catalog::instance_component`].
+    /// The component's handle; use [`Catalog::instance_component`].
     #[serde(skip)]
-    pub component_index: Option<usize>,
+    pub component_index: Option<ComponentIx>,
     /// The component's id ([`crate::catalog::Component::id`]), when it is in the catalogue.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub component: Option<String>,
@@ -188,9 +189,9 @@ impl Catalog {
     /// gets a slug and its links to the components and ports of the catalogue.
     pub fn attach_systems(&mut self, mut loaded: Vec<LoadedSystem>) {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
-        let mut exact: HashMap<(String, String, String), Vec<usize>> = HashMap::new();
-        let mut by_vendor_name: HashMap<(String, String), Vec<usize>> = HashMap::new();
-        for (i, c) in self.components.iter().enumerate() {
+        let mut exact: HashMap<(String, String, String), Vec<ComponentIx>> = HashMap::new();
+        let mut by_vendor_name: HashMap<(String, String), Vec<ComponentIx>> = HashMap::new();
+        for (i, c) in Ix::enumerate(&self.components) {
             let b = &c.profile.basic_info;
             let v = non_empty(&b.vendor).unwrap_or("");
             let cat = non_empty(&b.category).unwrap_or("");
@@ -250,7 +251,7 @@ impl Catalog {
                 });
                 let port = instance
                     .and_then(|i| instances[i].component_index)
-                    .and_then(|ci| find_port(&self.components[ci], end_port_name(e)));
+                    .and_then(|ci| find_port(&self[ci], end_port_name(e)));
                 EndLink { instance, port }
             };
             let link = |source, target| ConnectorLink {
@@ -286,8 +287,8 @@ impl Catalog {
     fn match_instance(
         &self,
         inst: &SystemComponent,
-        exact: &HashMap<(String, String, String), Vec<usize>>,
-        by_vendor_name: &HashMap<(String, String), Vec<usize>>,
+        exact: &HashMap<(String, String, String), Vec<ComponentIx>>,
+        by_vendor_name: &HashMap<(String, String), Vec<ComponentIx>>,
     ) -> InstanceLink {
         let Some(parts) = &inst.id_parts else {
             return InstanceLink::default();
@@ -308,8 +309,8 @@ impl Catalog {
         };
         // Several profiles of one id (the C++ and Python variants): the one of the same
         // version, else the first by path.
-        let version_of = |ci: usize| {
-            non_empty(&self.components[ci].profile.basic_info.version)
+        let version_of = |ci: ComponentIx| {
+            non_empty(&self[ci].profile.basic_info.version)
                 .unwrap_or("")
                 .trim()
                 .to_string()
@@ -322,7 +323,7 @@ impl Catalog {
         let theirs = version_of(ci);
         InstanceLink {
             component_index: Some(ci),
-            component: Some(self.components[ci].id.to_string()),
+            component: Some(self[ci].id.to_string()),
             matched_by: Some(kind),
             version_drift: (!version.is_empty() && theirs != version).then_some(theirs),
             anchor: String::new(),
@@ -331,14 +332,11 @@ impl Catalog {
 
     /// The component profile of instance `i` of `sys`, when it is in the catalogue.
     pub fn instance_component(&self, sys: &System, i: usize) -> Option<&Component> {
-        sys.instances
-            .get(i)?
-            .component_index
-            .map(|ci| &self.components[ci])
+        sys.instances.get(i)?.component_index.map(|ci| &self[ci])
     }
 
     /// The systems with an instance of component `ci`, with the instance names, in system order.
-    pub fn systems_using(&self, ci: usize) -> Vec<(&System, Vec<&str>)> {
+    pub fn systems_using(&self, ci: ComponentIx) -> Vec<(&System, Vec<&str>)> {
         self.systems
             .iter()
             .filter_map(|s| {

@@ -3,7 +3,7 @@
 //! of its [`registry`](super::registry) entry.
 
 use super::registry::{self as r, rule_exact};
-use crate::catalog::{Catalog, Component};
+use crate::catalog::{Catalog, Component, ComponentIx};
 use crate::constraint::{self, Problem, Verdict};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::model::{is_placeholder, non_empty, parse_bool, IdParts, Pos, Profile};
@@ -1156,12 +1156,12 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     }
     for t in &cat.data_types {
         // file name → ports using it
-        let mut by_file: BTreeMap<String, Vec<(usize, usize)>> = BTreeMap::new();
+        let mut by_file: BTreeMap<String, Vec<(ComponentIx, usize)>> = BTreeMap::new();
         for pr in t.all_uses() {
             let Some((ci, pi)) = cat.resolve_port(pr) else {
                 continue;
             };
-            let port = &cat.components[ci].profile.data_ports[pi];
+            let port = &cat[ci].profile.data_ports[pi];
             if let Some(f) = non_empty(&port.idl_file) {
                 by_file.entry(idl_file_name(f)).or_default().push((ci, pi));
             }
@@ -1176,7 +1176,7 @@ pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
                 .map(String::as_str)
                 .collect();
             for &(ci, pi) in ports {
-                let c = &cat.components[ci];
+                let c = &cat[ci];
                 let port = &c.profile.data_ports[pi];
                 let mut s = Findings {
                     file: &c.source,

@@ -32,7 +32,9 @@ use super::view::front::{front_view, systems_index_view};
 use super::view::types::{entry_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
-use crate::catalog::{Catalog, Output, Page, PageKind};
+use crate::catalog::{
+    Catalog, Component, ComponentIx, Ix, Output, Page, PageKind, PerEntry, SystemIx,
+};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -311,7 +313,7 @@ fn paragraphs(out: &mut String, s: &str) {
 
 fn component_page(
     cat: &Catalog,
-    ci: usize,
+    ci: ComponentIx,
     facets: (usize, usize),
     source_url: Option<&str>,
     lang: Lang,
@@ -347,7 +349,7 @@ fn home(cat: &Catalog) -> String {
 }
 
 /// `\ref` to component `ci`'s page (to its `anchor` if given) from page `from`.
-fn component_ref(cat: &Catalog, from: &Page, ci: usize, anchor: Option<&str>) -> String {
+fn component_ref(cat: &Catalog, from: &Page, ci: ComponentIx, anchor: Option<&str>) -> String {
     cat.href(from, cat.component_page(ci), anchor, DOX)
 }
 
@@ -369,8 +371,8 @@ fn crumb_home(out: &mut String, cat: &Catalog) {
 }
 
 /// `systems/<slug>.dox`.
-fn system_page(cat: &Catalog, si: usize, lang: Lang, site: (bool, Option<&str>)) -> String {
-    let s = &cat.systems[si];
+fn system_page(cat: &Catalog, si: SystemIx, lang: Lang, site: (bool, Option<&str>)) -> String {
+    let s = &cat[si];
     let page = cat.system_page(si);
     let mut out = String::new();
     d!(
@@ -398,13 +400,13 @@ fn system_page(cat: &Catalog, si: usize, lang: Lang, site: (bool, Option<&str>))
 fn component_rows(
     cat: &Catalog,
     from: &Page,
-    members: &[usize],
+    members: &[ComponentIx],
     command: &str,
 ) -> Vec<Vec<String>> {
     members
         .iter()
         .map(|&ci| {
-            let c = &cat.components[ci];
+            let c = &cat[ci];
             let b = &c.profile.basic_info;
             vec![
                 format!("\\{command} {}", component_ref(cat, from, ci, None)),
@@ -558,20 +560,21 @@ pub fn pages(cat: &Catalog, site_title: &str, lang: Lang) -> Vec<(String, String
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
+            .map(Ix::new)
             .map(|ci| component_entry(cat, &of, ci, lang, None)),
     );
     out
 }
 
-fn component_path(cat: &Catalog, ci: usize) -> String {
+fn component_path(cat: &Catalog, ci: ComponentIx) -> String {
     cat.component_page(ci).path_in(DOX)
 }
 
 /// The path and text of component `ci`'s page.
 fn component_entry(
     cat: &Catalog,
-    of: &[(usize, usize)],
-    ci: usize,
+    of: &PerEntry<Component, (usize, usize)>,
+    ci: ComponentIx,
     lang: Lang,
     source_url: Option<&str>,
 ) -> (String, String) {
@@ -607,8 +610,8 @@ fn other_pages(
         (v.page.path_in(DOX), facet_page::<Dox>(cat, &v, "", lang))
     }));
     for kind in [TypeKind::Data, TypeKind::Interface] {
-        out.par_extend((0..kind.count(cat)).into_par_iter().map(|i| {
-            let v = entry_view(cat, kind, i, lang, site.1);
+        out.par_extend(kind.entries(cat).into_par_iter().map(|i| {
+            let v = entry_view(cat, i, lang, site.1);
             (v.page.path_in(DOX), type_page::<Dox>(cat, &v, "", lang))
         }));
     }
@@ -634,12 +637,17 @@ fn other_pages(
             cat.site_page(PageKind::Systems).path_in(DOX),
             systems_index_page::<Dox>(cat, &systems_index_view(cat), "", lang),
         ));
-        out.par_extend((0..cat.systems.len()).into_par_iter().map(|si| {
-            (
-                cat.system_page(si).path_in(DOX),
-                system_page(cat, si, lang, site),
-            )
-        }));
+        out.par_extend(
+            (0..cat.systems.len())
+                .into_par_iter()
+                .map(Ix::new)
+                .map(|si| {
+                    (
+                        cat.system_page(si).path_in(DOX),
+                        system_page(cat, si, lang, site),
+                    )
+                }),
+        );
     }
     out.extend(super::history_text::pages::<Dox>(cat, site.1, lang));
     let mut inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
@@ -647,7 +655,7 @@ fn other_pages(
     let at = 3 + cat.categories.len();
     inputs.splice(
         at..at,
-        (0..cat.components.len()).map(|ci| component_path(cat, ci)),
+        Ix::all(cat.components.len()).map(|ci| component_path(cat, ci)),
     );
     out.push(("Doxyfile".into(), doxyfile(site_title, lang, &inputs)));
     out
@@ -672,6 +680,7 @@ impl Renderer for DoxygenRenderer {
         let of = facets_of_each(cat);
         (0..cat.components.len())
             .into_par_iter()
+            .map(Ix::new)
             .try_for_each(|ci| {
                 let (path, text) =
                     component_entry(cat, &of, ci, lang, ctx.site.source_url.as_deref());

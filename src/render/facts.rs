@@ -726,7 +726,7 @@ pub fn dataflow_rows(
                 .types
                 .iter()
                 .take(DATAFLOW_TYPES_SHOWN)
-                .map(|&ti| (cat.data_types[ti].name.as_str(), cat.data_type_page(ti)))
+                .map(|&ti| (cat[ti].name.as_str(), cat.data_type_page(ti)))
                 .collect(),
         })
         .collect();

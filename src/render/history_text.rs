@@ -7,13 +7,13 @@ use super::view::history_page::{
     history_page_view, whats_new_view, HistoryItem, HistoryPageView, WhatsNewView,
 };
 use super::view::Linked;
-use crate::catalog::{Catalog, PageKind};
+use crate::catalog::{Catalog, ComponentIx, Ix, PageKind};
 use crate::i18n::Lang;
 
 /// The page of every version of component `ci` (`None` when it has no history).
 pub fn history_page<M: Markup>(
     cat: &Catalog,
-    ci: usize,
+    ci: ComponentIx,
     source_url: Option<&str>,
     lang: Lang,
 ) -> Option<(String, String)> {
@@ -170,6 +170,7 @@ pub fn pages<M: Markup>(
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
+            .map(Ix::new)
             .filter_map(|ci| history_page::<M>(cat, ci, source_url, lang)),
     );
     out

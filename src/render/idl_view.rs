@@ -4,7 +4,6 @@
 //! catalogue has one. Shared by the renderers; the definitions come from [`crate::idl`].
 
 use super::text::Markup;
-use crate::catalog::{Catalog, Page};
 use crate::i18n::Lang;
 use crate::idl::{IdlDefinition, IdlDoc, IdlField, IdlParamDirection, IdlType};
 use serde::Serialize;
@@ -18,15 +17,10 @@ pub struct TypeRef {
     pub page: Option<String>,
     /// The catalogue entry of that page (for the Markdown and Doxygen links).
     #[serde(skip)]
-    pub entry: Option<Entry>,
+    pub entry: Option<TypeIx>,
 }
 
-/// A data type or an interface of the catalogue, by index.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Entry {
-    DataType(usize),
-    Interface(usize),
-}
+use crate::catalog::{Catalog, Page, TypeIx};
 
 #[derive(Debug, Clone, Serialize)]
 pub struct FieldView {
@@ -122,13 +116,13 @@ struct Linker<'a> {
 }
 
 impl Linker<'_> {
-    fn entry_of(&self, scoped: &str) -> Option<(Entry, String)> {
+    fn entry_of(&self, scoped: &str) -> Option<(TypeIx, String)> {
         let c = self.catalog;
         if let Some(i) = c.data_type_index(scoped) {
-            return Some((Entry::DataType(i), c.data_type_page(i).path("html")));
+            return Some((TypeIx::Data(i), c.data_type_page(i).path("html")));
         }
         let i = c.interface_index_of(scoped)?;
-        Some((Entry::Interface(i), c.interface_page(i).path("html")))
+        Some((TypeIx::Interface(i), c.interface_page(i).path("html")))
     }
 
     fn type_ref(&self, ty: &IdlType) -> TypeRef {
@@ -410,10 +404,10 @@ pub fn write_definition<M: Markup>(
     };
     let ty = |r: &TypeRef| -> String {
         match r.entry {
-            Some(Entry::DataType(i)) => {
+            Some(TypeIx::Data(i)) => {
                 M::link(&r.text, &M::page_target(cat, from, cat.data_type_page(i)))
             }
-            Some(Entry::Interface(i)) => {
+            Some(TypeIx::Interface(i)) => {
                 M::link(&r.text, &M::page_target(cat, from, cat.interface_page(i)))
             }
             None => M::esc(&r.text),

@@ -27,7 +27,9 @@ use super::view::types::{entry_view, type_index_view, TypeKind};
 use super::view::Linked;
 use super::{RenderContext, Renderer};
 use crate::catalog::pages::{MARKDOWN_README, MARKDOWN_SUMMARY};
-use crate::catalog::{Catalog, Output, Page, PageKind};
+use crate::catalog::{
+    Catalog, Component, ComponentIx, Ix, Output, Page, PageKind, PerEntry, SystemIx,
+};
 use crate::i18n::Lang;
 use crate::model::{self};
 use crate::output::Sink;
@@ -290,13 +292,13 @@ fn opt(s: &Option<crate::model::Text>) -> String {
 }
 
 /// The link on page `from` to component `ci`'s page (to its `anchor` if given).
-fn component_href(cat: &Catalog, from: &Page, ci: usize, anchor: Option<&str>) -> String {
+fn component_href(cat: &Catalog, from: &Page, ci: ComponentIx, anchor: Option<&str>) -> String {
     cat.href(from, cat.component_page(ci), anchor, MD)
 }
 
 fn component_page(
     cat: &Catalog,
-    ci: usize,
+    ci: ComponentIx,
     facets: (usize, usize),
     title: &str,
     lang: Lang,
@@ -340,7 +342,7 @@ fn readme_targets(cat: &Catalog, source_url: Option<&str>) -> Readmes {
     let up = cat
         .components
         .first()
-        .map(|_| cat.root_from(cat.component_page(0), MD))
+        .map(|_| cat.root_from(cat.component_page(Ix::new(0)), MD))
         .unwrap_or_default();
     std::sync::Arc::new(crate::render::html::readme::Targets::new(
         cat,
@@ -383,11 +385,11 @@ fn readme_block(html: &str) -> String {
 }
 
 /// The rows of a component list on page `from`.
-fn component_rows(cat: &Catalog, from: &Page, members: &[usize]) -> Vec<Vec<String>> {
+fn component_rows(cat: &Catalog, from: &Page, members: &[ComponentIx]) -> Vec<Vec<String>> {
     members
         .iter()
         .map(|&ci| {
-            let c = &cat.components[ci];
+            let c = &cat[ci];
             let b = &c.profile.basic_info;
             vec![
                 link(&c.display_name(), &component_href(cat, from, ci, None)),
@@ -491,7 +493,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
         lang.t("data_types"),
         index(PageKind::DataTypes),
     );
-    for ti in 0..cat.data_types.len() {
+    for ti in Ix::all(cat.data_types.len()) {
         let page = cat.data_type_page(ti);
         summary_item(&mut out, cat, 1, &page.title, page);
     }
@@ -502,7 +504,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
         lang.t("interfaces"),
         index(PageKind::Interfaces),
     );
-    for ii in 0..cat.interfaces.len() {
+    for ii in Ix::all(cat.interfaces.len()) {
         let page = cat.interface_page(ii);
         summary_item(&mut out, cat, 1, &page.title, page);
     }
@@ -525,7 +527,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
             lang.t("systems"),
             index(PageKind::Systems),
         );
-        for si in 0..cat.systems.len() {
+        for si in Ix::all(cat.systems.len()) {
             let page = cat.system_page(si);
             summary_item(&mut out, cat, 1, &page.title, page);
         }
@@ -540,7 +542,7 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
     // What's new, with each component's history under it.
     if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
         summary_item(&mut out, cat, 0, lang.t("whats_new"), news);
-        for ci in 0..cat.components.len() {
+        for ci in Ix::all(cat.components.len()) {
             if let Some(page) = cat.history_page(ci) {
                 let text = lang.t("history_page_title").replace("{name}", &page.title);
                 summary_item(&mut out, cat, 1, &text, page);
@@ -566,13 +568,13 @@ fn dataflow_page(cat: &Catalog, title: &str, lang: Lang) -> String {
 /// page's stem: [`Page::path`]) unless it is drawn as a Mermaid block.
 fn system_page(
     cat: &Catalog,
-    si: usize,
+    si: SystemIx,
     title: &str,
     lang: Lang,
     site: (bool, Option<&str>),
     diagrams: super::DiagramFormat,
 ) -> (String, Option<String>) {
-    let s = &cat.systems[si];
+    let s = &cat[si];
     let page = cat.system_page(si);
     let mut out = String::new();
     w!(out, "# {}", inline(s.profile.name()));
@@ -626,6 +628,7 @@ pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
     out.par_extend(
         (0..cat.components.len())
             .into_par_iter()
+            .map(Ix::new)
             .map(|ci| component_entry(cat, &of, ci, title, lang, &readme, None)),
     );
     out
@@ -634,8 +637,8 @@ pub fn pages(cat: &Catalog, title: &str, lang: Lang) -> Vec<(String, String)> {
 /// The path and text of component `ci`'s page.
 fn component_entry(
     cat: &Catalog,
-    of: &[(usize, usize)],
-    ci: usize,
+    of: &PerEntry<Component, (usize, usize)>,
+    ci: ComponentIx,
     title: &str,
     lang: Lang,
     readme: &Readmes,
@@ -689,8 +692,8 @@ fn other_pages(
         }));
     }
     for kind in [TypeKind::Data, TypeKind::Interface] {
-        out.par_extend((0..kind.count(cat)).into_par_iter().map(|i| {
-            let v = entry_view(cat, kind, i, lang, site.1);
+        out.par_extend(kind.entries(cat).into_par_iter().map(|i| {
+            let v = entry_view(cat, i, lang, site.1);
             (v.page.path_in(MD), type_page::<Md>(cat, &v, title, lang))
         }));
     }
@@ -699,14 +702,19 @@ fn other_pages(
             cat.site_page(PageKind::Systems).path_in(MD),
             systems_index_page::<Md>(cat, &systems_index_view(cat), title, lang),
         ));
-        out.par_extend((0..cat.systems.len()).into_par_iter().flat_map_iter(|si| {
-            let page = cat.system_page(si);
-            let path = page.path_in(MD);
-            // The wiring diagram beside the page, with its stem.
-            let svg_path = page.path("svg");
-            let (text, svg) = system_page(cat, si, title, lang, site, diagrams);
-            std::iter::once((path, text)).chain(svg.map(|s| (svg_path, s)))
-        }));
+        out.par_extend(
+            (0..cat.systems.len())
+                .into_par_iter()
+                .map(Ix::new)
+                .flat_map_iter(|si| {
+                    let page = cat.system_page(si);
+                    let path = page.path_in(MD);
+                    // The wiring diagram beside the page, with its stem.
+                    let svg_path = page.path("svg");
+                    let (text, svg) = system_page(cat, si, title, lang, site, diagrams);
+                    std::iter::once((path, text)).chain(svg.map(|s| (svg_path, s)))
+                }),
+        );
     }
     out.extend(super::history_text::pages::<Md>(cat, site.1, lang));
     out
@@ -734,6 +742,7 @@ impl Renderer for MarkdownRenderer {
         let readme = readme_targets(cat, source_url);
         (0..cat.components.len())
             .into_par_iter()
+            .map(Ix::new)
             .try_for_each(|ci| {
                 let (path, text) = component_entry(cat, &of, ci, title, lang, &readme, source_url);
                 out.write(&path, text.as_bytes())

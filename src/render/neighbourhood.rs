@@ -4,7 +4,7 @@
 //! SVG. Each format's code stays thin: it links and escapes, nothing more.
 
 use crate::catalog::neighbourhood::{Neighbourhood, PortAt, PEER_COMPONENTS_CAP};
-use crate::catalog::{Catalog, Page};
+use crate::catalog::{Catalog, ComponentIx, Page, TypeIx};
 use crate::i18n::Lang;
 use crate::model::non_empty;
 use crate::render::wiring::{WireConnector, WireInstance, WirePort};
@@ -12,7 +12,7 @@ use crate::render::wiring::{WireConnector, WireInstance, WirePort};
 /// One neighbour component of a port, as listed.
 pub struct NeighbourItem<'a> {
     /// Index into [`Catalog::components`].
-    pub component: usize,
+    pub component: ComponentIx,
     /// Its name as shown (with what tells same-named components apart).
     pub name: String,
     pub page: &'a Page,
@@ -46,8 +46,8 @@ pub struct NeighbourRow<'a> {
 }
 
 /// The name of a port of component `ci` as listed.
-fn port_name(cat: &Catalog, ci: usize, at: PortAt) -> String {
-    let p = &cat.components[ci].profile;
+fn port_name(cat: &Catalog, ci: ComponentIx, at: PortAt) -> String {
+    let p = &cat[ci].profile;
     match at {
         PortAt::Data(k) => non_empty(&p.data_ports[k].name).unwrap_or("").to_string(),
         PortAt::Interface(s, i) => {
@@ -62,8 +62,8 @@ fn port_name(cat: &Catalog, ci: usize, at: PortAt) -> String {
 }
 
 /// The anchor of a port of component `ci` on its page.
-fn port_anchor(cat: &Catalog, ci: usize, at: PortAt) -> &str {
-    let a = &cat.components[ci].anchors;
+fn port_anchor(cat: &Catalog, ci: ComponentIx, at: PortAt) -> &str {
+    let a = &cat[ci].anchors;
     match at {
         PortAt::Data(k) => &a.data_ports[k],
         PortAt::Interface(s, i) => &a.interfaces[s][i],
@@ -71,29 +71,21 @@ fn port_anchor(cat: &Catalog, ci: usize, at: PortAt) -> &str {
 }
 
 /// The neighbourhood of component `ci`, at most [`PEER_COMPONENTS_CAP`] neighbours per port.
-pub fn neighbourhood(cat: &Catalog, ci: usize) -> Neighbourhood {
+pub fn neighbourhood(cat: &Catalog, ci: ComponentIx) -> Neighbourhood {
     cat.neighbourhood(ci, PEER_COMPONENTS_CAP)
 }
 
 /// The neighbourhood `n` of component `ci` as a list grouped by port, in port order.
-pub fn rows<'a>(cat: &'a Catalog, ci: usize, n: &Neighbourhood) -> Vec<NeighbourRow<'a>> {
+pub fn rows<'a>(cat: &'a Catalog, ci: ComponentIx, n: &Neighbourhood) -> Vec<NeighbourRow<'a>> {
     n.ports
         .iter()
         .map(|pn| {
             let service = pn.is_service();
-            let (type_name, type_page, more_key) = if service {
-                (
-                    cat.interfaces[pn.type_index].name.as_str(),
-                    cat.interface_page(pn.type_index),
-                    "more_on_interface_page",
-                )
-            } else {
-                (
-                    cat.data_types[pn.type_index].name.as_str(),
-                    cat.data_type_page(pn.type_index),
-                    "more_on_type_page",
-                )
+            let (type_name, more_key) = match pn.type_ {
+                TypeIx::Interface(i) => (cat[i].name.as_str(), "more_on_interface_page"),
+                TypeIx::Data(i) => (cat[i].name.as_str(), "more_on_type_page"),
             };
+            let type_page = cat.type_page(pn.type_);
             NeighbourRow {
                 port: port_name(cat, ci, pn.port),
                 anchor: port_anchor(cat, ci, pn.port),
@@ -111,7 +103,7 @@ pub fn rows<'a>(cat: &'a Catalog, ci: usize, n: &Neighbourhood) -> Vec<Neighbour
                     .iter()
                     .map(|nb| NeighbourItem {
                         component: nb.component,
-                        name: cat.components[nb.component].display_name().into_owned(),
+                        name: cat[nb.component].display_name().into_owned(),
                         page: cat.component_page(nb.component),
                         anchor: nb
                             .ports
@@ -141,9 +133,9 @@ pub fn more_text(row: &NeighbourRow<'_>, lang: Lang) -> String {
 
 /// The drawn name of a port: a data port's name, a service port's name (its interfaces meet
 /// on it, as in a system diagram).
-fn drawn_port(cat: &Catalog, ci: usize, at: PortAt) -> (String, &'static str, &str) {
-    let p = &cat.components[ci].profile;
-    let a = &cat.components[ci].anchors;
+fn drawn_port(cat: &Catalog, ci: ComponentIx, at: PortAt) -> (String, &'static str, &str) {
+    let p = &cat[ci].profile;
+    let a = &cat[ci].anchors;
     match at {
         PortAt::Data(k) => {
             let port = &p.data_ports[k];
@@ -199,12 +191,12 @@ fn port_of(
 /// connectors join the service ports. `href(page, anchor)` makes a link (empty: none).
 pub fn wiring(
     cat: &Catalog,
-    ci: usize,
+    ci: ComponentIx,
     rows: &[NeighbourRow<'_>],
     lang: Lang,
     href: &dyn Fn(&Page, Option<&str>) -> String,
 ) -> (Vec<WireInstance>, Vec<WireConnector>) {
-    let me = cat.components[ci].display_name().into_owned();
+    let me = cat[ci].display_name().into_owned();
     let mut inst = vec![WireInstance {
         label: me.clone(),
         name: me.clone(),
@@ -220,7 +212,7 @@ pub fn wiring(
         "service" => lang.t("sys_service_port"),
         _ => lang.t("port"),
     };
-    let mut box_of: Vec<(usize, usize)> = Vec::new();
+    let mut box_of: Vec<(ComponentIx, usize)> = Vec::new();
     for row in rows {
         let (mine, class, anchor) = drawn_port(cat, ci, row.at);
         let label = format!("{} {me}.{mine}", kind(class));

@@ -6,7 +6,7 @@
 use super::text::Markup;
 use super::view::system::{system_view, EndView, Link, SystemView};
 use crate::catalog::systems::{end_port_name, System};
-use crate::catalog::Catalog;
+use crate::catalog::{Catalog, ComponentIx};
 use crate::i18n::Lang;
 use crate::model::system::PortEnd;
 use crate::model::{non_empty, Text};
@@ -338,7 +338,7 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
 }
 
 /// The systems using component `ci` as (system name and instances, system) for a list.
-pub fn used_in(cat: &Catalog, ci: usize) -> Vec<(String, &System)> {
+pub fn used_in(cat: &Catalog, ci: ComponentIx) -> Vec<(String, &System)> {
     cat.systems_using(ci)
         .into_iter()
         .map(|(s, names)| (format!("{} ({})", s.profile.name(), names.join(", ")), s))

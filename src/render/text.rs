@@ -10,7 +10,7 @@ use super::view::facets::{ComponentRow, FacetIndexView, FacetView};
 use super::view::front::SystemsIndexView;
 use super::view::types::{TypeIndexView, TypeKind, TypeView};
 use super::view::{Linked, Peers};
-use crate::catalog::{Catalog, Output, Page};
+use crate::catalog::{Catalog, Component, Ix, Output, Page, PerEntry};
 use crate::i18n::Lang;
 
 /// The code spans of a line of profile text, as HTML renders them (Markdown's single-backtick
@@ -197,11 +197,13 @@ fn neighbourhood_section<M: Markup>(
 
 /// The category and vendor facets of each component ([`Catalog::category_of_each`],
 /// [`Catalog::vendor_of_each`]), computed once per render.
-pub fn facets_of_each(cat: &Catalog) -> Vec<(usize, usize)> {
-    cat.category_of_each()
-        .into_iter()
-        .zip(cat.vendor_of_each())
-        .collect()
+pub fn facets_of_each(cat: &Catalog) -> PerEntry<Component, (usize, usize)> {
+    let (category, vendor) = (cat.category_of_each(), cat.vendor_of_each());
+    PerEntry::new(
+        Ix::all(cat.components.len())
+            .map(|ci| (category[ci], vendor[ci]))
+            .collect(),
+    )
 }
 
 /// The spellings and IDL files of a data type or interface as a facts table (nothing when

@@ -6,7 +6,7 @@
 //! errors first), so that no page grows with the catalogue: 10,000 profiles with warnings
 //! made an 11 MB page.
 
-use crate::catalog::Catalog;
+use crate::catalog::{Catalog, Ix};
 use crate::diagnostic::{Diagnostic, Severity};
 use serde::Serialize;
 use std::collections::{BTreeMap, HashMap};
@@ -156,10 +156,7 @@ pub(super) fn views<'a>(
 /// The view of `catalog.diagnostics` on one page: files with errors first (most errors first,
 /// then by path), within a file errors before warnings in position order.
 fn view(catalog: &Catalog) -> DiagnosticsView<'_> {
-    let pages: HashMap<&str, String> = catalog
-        .components
-        .iter()
-        .enumerate()
+    let pages: HashMap<&str, String> = Ix::enumerate(&catalog.components)
         .map(|(ci, c)| (c.source.as_str(), catalog.component_page(ci).path("html")))
         .collect();
     let count = |s: Severity| {

@@ -3,7 +3,7 @@
 //! views of [`crate::render::view::history_page`].
 
 use super::{crumbs_home, ctx, page_title, Job, Link, PageContext, Site, SiteOptions};
-use crate::catalog::{Catalog, Output, PageKind};
+use crate::catalog::{Catalog, Ix, Output, PageKind};
 use crate::render::view::history_page::{
     feed_entries, history_page_view, rfc3339, whats_new_view, WhatsNewRow,
 };
@@ -96,7 +96,7 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             }
         })),
     }];
-    for ci in 0..cat.components.len() {
+    for ci in Ix::all(cat.components.len()) {
         let Some(page) = cat.history_page(ci) else {
             continue;
         };

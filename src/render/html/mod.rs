@@ -28,7 +28,9 @@ use super::view::facets::{facet_index_view, facet_view, FacetKind, FacetView};
 use super::view::types::TypeKind;
 use super::view::{self, component::ComponentView, Linked};
 use super::{RenderContext, Renderer, SiteOptions};
-use crate::catalog::{Catalog, Facet, Output, Page, PageKind};
+use crate::catalog::{
+    Catalog, Component, ComponentIx, Facet, Ix, Output, Page, PageKind, PerEntry,
+};
 use crate::i18n::Lang;
 use crate::model::{non_empty, ExtraKind};
 use crate::output::Sink;
@@ -459,9 +461,9 @@ struct Site<'a> {
     lang: Lang,
     summaries: Vec<ComponentSummary>,
     /// The category facet of each component ([`Catalog::category_of_each`]).
-    category_of: Vec<usize>,
+    category_of: PerEntry<Component, usize>,
     /// The vendor facet of each component ([`Catalog::vendor_of_each`]).
-    vendor_of: Vec<usize>,
+    vendor_of: PerEntry<Component, usize>,
     /// Where README links go ([`readme::Targets`]).
     readme_targets: std::sync::Arc<readme::Targets>,
 }
@@ -471,7 +473,7 @@ impl<'a> Site<'a> {
         self.lang.t(key)
     }
 
-    fn component_path(&self, ci: usize) -> String {
+    fn component_path(&self, ci: ComponentIx) -> String {
         self.catalog.component_page(ci).path("html")
     }
 
@@ -492,7 +494,7 @@ impl<'a> Site<'a> {
             }
         };
         let (inst, conns) = nb::wiring(cat, ci, rows, self.lang, &href);
-        let me = cat.components[ci].display_name();
+        let me = cat[ci].display_name();
         let svg = system_svg::system_diagram_with(
             &format!("{} {me}", self.t("neighbourhood_of")),
             &inst,
@@ -536,14 +538,14 @@ impl<'a> Site<'a> {
         (svg, list)
     }
 
-    fn summary(&self, ci: usize) -> ComponentSummary {
-        let c = &self.catalog.components[ci];
+    fn summary(&self, ci: ComponentIx) -> ComponentSummary {
+        let c = &self.catalog[ci];
         let b = &c.profile.basic_info;
         // Every component is in one category and one vendor facet (computed once, not
         // looked up by name for each component).
-        let facet_slug = |facets: &[Facet], of: &[usize]| {
-            of.get(ci)
-                .and_then(|&fi| facets.get(fi))
+        let facet_slug = |facets: &[Facet], of: &PerEntry<Component, usize>| {
+            facets
+                .get(of[ci])
                 .map(|f| f.slug.clone())
                 .unwrap_or_default()
         };
@@ -571,10 +573,10 @@ impl<'a> Site<'a> {
 
     /// The summaries of `components`, sorted by name case-insensitively (real catalogues mix
     /// `camera`, `Camera` and `CAMERA_rtc`), then by page path (same-named components).
-    fn sorted_summaries(&self, components: &[usize]) -> Vec<&ComponentSummary> {
+    fn sorted_summaries(&self, components: &[ComponentIx]) -> Vec<&ComponentSummary> {
         let mut list: Vec<(String, &ComponentSummary)> = components
             .iter()
-            .filter_map(|&i| self.summaries.get(i))
+            .filter_map(|&i| self.summaries.get(i.get()))
             .map(|s| (s.name.to_lowercase(), s))
             .collect();
         list.sort_by(|a, b| a.0.cmp(&b.0).then_with(|| a.1.path.cmp(&b.1.path)));
@@ -608,7 +610,7 @@ impl<'a> Site<'a> {
         since.map(|v| self.t("since").replace("{v}", v))
     }
 
-    fn component_page(&self, ci: usize) -> ComponentPage {
+    fn component_page(&self, ci: ComponentIx) -> ComponentPage {
         let v = view::component::component_view(
             self.catalog,
             ci,
@@ -810,7 +812,7 @@ impl<'a> Site<'a> {
                 .iter()
                 .filter_map(|l| self.link(page, l))
                 .collect(),
-            backups: facts::BackupRow::of(&self.catalog.components[v.ci], lang),
+            backups: facts::BackupRow::of(&self.catalog[v.ci], lang),
             history: v.history.rows.clone(),
             history_older: v.history.older_note(lang),
             history_page: v
@@ -1078,7 +1080,7 @@ impl HtmlRenderer {
                 |ci| catalog.component_page(ci).path("html"),
             )),
         };
-        site.summaries = (0..catalog.components.len())
+        site.summaries = Ix::all(catalog.components.len())
             .map(|ci| site.summary(ci))
             .collect();
         let site = site;
@@ -1107,7 +1109,7 @@ impl HtmlRenderer {
             has_feed: has_feed(catalog, opts),
             generator: &generator,
         };
-        all_paths.extend((0..catalog.components.len()).map(|ci| site.component_path(ci)));
+        all_paths.extend(Ix::all(catalog.components.len()).map(|ci| site.component_path(ci)));
         let (search_written, pages_written) = rayon::join(
             || -> Result<usize> {
                 if !wanted("search-index.js") {
@@ -1122,6 +1124,7 @@ impl HtmlRenderer {
             || {
                 (0..catalog.components.len())
                     .into_par_iter()
+                    .map(Ix::new)
                     .filter(|&ci| wanted(&site.component_path(ci)))
                     .map(|ci| -> Result<usize> {
                         let page = site.component_page(ci);
@@ -1410,7 +1413,7 @@ fn facet_index_job<'a>(site: &'a Site<'a>, kind: FacetKind) -> Job<'a> {
 fn facet_context(site: &Site<'_>, v: &FacetView<'_>) -> Value {
     let lang = site.lang;
     let root = "../";
-    let members: Vec<usize> = v.components.iter().map(|r| r.ci).collect();
+    let members: Vec<ComponentIx> = v.components.iter().map(|r| r.ci).collect();
     minijinja::context! {
         root => root,
         title => page_title(site, &v.name),
@@ -1514,15 +1517,12 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             TypeKind::Data => "type.html",
             TypeKind::Interface => "interface.html",
         };
-        for i in 0..kind.count(catalog) {
+        for i in kind.entries(catalog) {
             pages.push(Job {
-                path: kind.page(catalog, i).path("html"),
+                path: catalog.type_page(i).path("html"),
                 template,
                 context: PageContext::Lazy(Box::new(move || {
-                    type_context(
-                        site,
-                        &view::types::entry_view(catalog, kind, i, lang, source_url),
-                    )
+                    type_context(site, &view::types::entry_view(catalog, i, lang, source_url))
                 })),
             });
         }

@@ -25,13 +25,10 @@ impl Targets {
         catalog: &crate::catalog::Catalog,
         source_url: Option<&str>,
         root: &str,
-        page: impl Fn(usize) -> String,
+        page: impl Fn(crate::catalog::ComponentIx) -> String,
     ) -> Targets {
         Targets {
-            pages: catalog
-                .components
-                .iter()
-                .enumerate()
+            pages: crate::catalog::Ix::enumerate(&catalog.components)
                 .map(|(ci, c)| (c.source.clone(), format!("{root}{}", page(ci))))
                 .collect(),
             source_url: source_url.map(str::to_string),

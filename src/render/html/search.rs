@@ -8,7 +8,7 @@
 //! unigram), so Japanese text needs no dictionary. `search.js` tokenizes queries the same way
 //! and matches each query token as a prefix of some entry token.
 
-use crate::catalog::Catalog;
+use crate::catalog::{Catalog, ComponentIx, Ix};
 use crate::i18n::Lang;
 use crate::model::non_empty;
 use crate::types::canonical_type;
@@ -207,13 +207,14 @@ pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
     // keeps catalogue order); only the entries' text is held, never all their JSON values.
     let mut entries: Vec<String> = (0..catalog.components.len())
         .into_par_iter()
+        .map(Ix::new)
         .map(|ci| entry_js(&component_entry(catalog, ci)))
         .collect();
-    entries.extend(catalog.data_types.iter().enumerate().map(|(ti, t)| {
+    entries.extend(Ix::enumerate(&catalog.data_types).map(|(ti, t)| {
         let page = catalog.data_type_page(ti).path("html");
         entry_js(&idl_entry(catalog, "t", &page, &t.name, &t.spellings))
     }));
-    entries.extend(catalog.interfaces.iter().enumerate().map(|(ii, t)| {
+    entries.extend(Ix::enumerate(&catalog.interfaces).map(|(ii, t)| {
         let page = catalog.interface_page(ii).path("html");
         entry_js(&idl_entry(catalog, "i", &page, &t.name, &t.spellings))
     }));
@@ -252,8 +253,8 @@ fn entry_js(entry: &serde_json::Value) -> String {
 }
 
 /// The search entry of component `ci`.
-fn component_entry(catalog: &Catalog, ci: usize) -> serde_json::Value {
-    let c = &catalog.components[ci];
+fn component_entry(catalog: &Catalog, ci: ComponentIx) -> serde_json::Value {
+    let c = &catalog[ci];
     let p = &c.profile;
     let b = &p.basic_info;
     // Canonical type names are made first: tokens borrow from them.
@@ -392,10 +393,7 @@ fn idl_entry(
 /// One entry per RT System (`kind` `s`): its name; the instance and component names, the
 /// connected ports and their data types; the vendor, comment and abstract as text.
 fn system_entries(catalog: &Catalog) -> Vec<serde_json::Value> {
-    catalog
-        .systems
-        .iter()
-        .enumerate()
+    Ix::enumerate(&catalog.systems)
         .map(|(si, s)| {
             let p = &s.profile;
             let vendor = p

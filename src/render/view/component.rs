@@ -3,7 +3,7 @@
 //! sections in `render::text`). Renderers decide how it looks, never what it says.
 
 use super::{Dir, Linked, Peers};
-use crate::catalog::{Catalog, Page};
+use crate::catalog::{Catalog, ComponentIx, Ix, Page};
 use crate::i18n::Lang;
 use crate::model::{self, non_empty, ActionKind, Direction, PortDirection};
 use crate::readme::Readme;
@@ -88,7 +88,7 @@ pub struct ActionView {
 
 /// Everything a component page says.
 pub struct ComponentView<'a> {
-    pub ci: usize,
+    pub ci: ComponentIx,
     pub page: &'a Page,
     /// The name shown (with what tells components of one name apart).
     pub name: String,
@@ -162,8 +162,8 @@ fn since<'a>(c: &'a crate::catalog::Component, key: Option<&String>) -> Option<&
     key.and_then(|k| c.since.get(k)).map(String::as_str)
 }
 
-fn data_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<DataPortView<'_>> {
-    let c = &cat.components[ci];
+fn data_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<DataPortView<'_>> {
+    let c = &cat[ci];
     let keys = since_keys(c);
     c.profile
         .data_ports
@@ -191,10 +191,10 @@ fn data_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<DataPortView<'_>
                 peers: Peers::of(
                     ci,
                     cat.data_port_peers(ci, pi),
-                    |r| cat.port_component(r).unwrap_or(usize::MAX),
+                    |r| cat.port_component(r).unwrap_or(Ix::NONE),
                     |r| {
                         let (pc, port) = cat.resolve_port(r)?;
-                        let comp = &cat.components[pc];
+                        let comp = &cat[pc];
                         Some((
                             pc,
                             comp.profile.data_ports[port]
@@ -216,8 +216,8 @@ fn data_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<DataPortView<'_>
 
 /// The service ports of component `ci`, each with its interfaces, their types linked and
 /// their peers.
-fn service_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<ServicePortView<'_>> {
-    let c = &cat.components[ci];
+fn service_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<ServicePortView<'_>> {
+    let c = &cat[ci];
     let keys = since_keys(c);
     c.profile
         .service_ports
@@ -254,10 +254,10 @@ fn service_port_views(cat: &Catalog, ci: usize, lang: Lang) -> Vec<ServicePortVi
                         peers: Peers::of(
                             ci,
                             cat.interface_peers(ci, si, ii),
-                            |r| cat.interface_component(r).unwrap_or(usize::MAX),
+                            |r| cat.interface_component(r).unwrap_or(Ix::NONE),
                             |r| {
                                 let (pc, port, x) = cat.resolve_interface(r)?;
-                                let comp = &cat.components[pc];
+                                let comp = &cat[pc];
                                 let sp = &comp.profile.service_ports[port];
                                 Some((
                                     pc,
@@ -307,12 +307,12 @@ fn configuration_views(c: &crate::catalog::Component, lang: Lang) -> Vec<Configu
 /// `source-url` template (a component of a `[[source]]` uses its source's instead).
 pub fn component_view<'a>(
     cat: &'a Catalog,
-    ci: usize,
+    ci: ComponentIx,
     (category, vendor): (usize, usize),
     source_url: Option<&str>,
     lang: Lang,
 ) -> ComponentView<'a> {
-    let c = &cat.components[ci];
+    let c = &cat[ci];
     let p = &c.profile;
     let page = cat.component_page(ci);
     let data_ports = data_port_views(cat, ci, lang);

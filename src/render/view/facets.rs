@@ -3,7 +3,7 @@
 //! its components). The front page lists the categories the same way ([`super::index`]).
 
 use super::Linked;
-use crate::catalog::{Catalog, Facet, Page, PageKind};
+use crate::catalog::{Catalog, ComponentIx, Facet, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::non_empty;
 
@@ -72,22 +72,22 @@ impl FacetKind {
 /// A component in a list (the front page, a category or vendor page): its name linked to its
 /// page, and its description, vendor and version as written (empty when not given).
 pub struct ComponentRow<'a> {
-    /// Index into [`Catalog::components`].
-    pub ci: usize,
+    /// The component.
+    pub ci: ComponentIx,
     pub name: Linked<'a>,
     pub description: &'a str,
     pub vendor: &'a str,
     pub version: &'a str,
 }
 
-/// The rows of `members` (component indexes), in the order given.
+/// The rows of `members`, in the order given.
 pub fn component_rows(
     cat: &Catalog,
-    members: impl Iterator<Item = usize>,
+    members: impl Iterator<Item = ComponentIx>,
 ) -> Vec<ComponentRow<'_>> {
     members
         .map(|ci| {
-            let c = &cat.components[ci];
+            let c = &cat[ci];
             let b = &c.profile.basic_info;
             ComponentRow {
                 ci,

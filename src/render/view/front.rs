@@ -4,7 +4,7 @@
 
 use super::facets::FacetKind;
 use super::Linked;
-use crate::catalog::{Catalog, Page, PageKind};
+use crate::catalog::{Catalog, ComponentIx, Ix, Page, PageKind};
 use crate::i18n::Lang;
 use crate::model::non_empty;
 
@@ -21,8 +21,8 @@ pub struct CategoryGroup<'a> {
     pub name: String,
     pub slug: &'a str,
     pub page: &'a Page,
-    /// Its components (indexes into [`Catalog::components`]), in catalogue order.
-    pub members: Vec<usize>,
+    /// Its components, in catalogue order.
+    pub members: Vec<ComponentIx>,
 }
 
 /// The front page.
@@ -110,10 +110,7 @@ pub struct SystemsIndexView<'a> {
 
 /// The view of the index of RT Systems.
 pub fn systems_index_view(cat: &Catalog) -> SystemsIndexView<'_> {
-    let systems = cat
-        .systems
-        .iter()
-        .enumerate()
+    let systems = Ix::enumerate(&cat.systems)
         .map(|(si, s)| {
             let parts = s.profile.id_parts.as_ref();
             SystemRow {

@@ -4,7 +4,7 @@
 
 use super::history::{row, HistoryRow};
 use crate::catalog::history::Entry;
-use crate::catalog::{Catalog, Component, Page};
+use crate::catalog::{Catalog, Component, ComponentIx, Ix, Page};
 use crate::i18n::Lang;
 use serde::Serialize;
 
@@ -90,7 +90,7 @@ pub struct HistoryPageView<'a> {
     pub page: &'a Page,
     /// The component's page.
     pub component: &'a Page,
-    pub ci: usize,
+    pub ci: ComponentIx,
     pub name: String,
     pub items: Vec<HistoryItem>,
 }
@@ -108,12 +108,12 @@ pub fn entry_anchor(e: &Entry) -> String {
 /// The history page of component `ci` (`None` when it has no history).
 pub fn history_page_view<'a>(
     cat: &'a Catalog,
-    ci: usize,
+    ci: ComponentIx,
     source_url: Option<&str>,
     lang: Lang,
 ) -> Option<HistoryPageView<'a>> {
     let page = cat.history_page(ci)?;
-    let c = &cat.components[ci];
+    let c = &cat[ci];
     let url = |commit: &str, path: &str| commit_url(cat, c, source_url, commit, path);
     let mut items = Vec::new();
     let h = &c.history;
@@ -198,11 +198,8 @@ pub fn instant(date: &str) -> Option<i64> {
 
 /// Every history entry of the catalogue, newest first: (component, entry position), ordered by
 /// date (entries without one last), then component page order, then history order.
-fn entries_newest_first(cat: &Catalog) -> Vec<(usize, usize)> {
-    let mut all: Vec<(Option<i64>, usize, usize)> = cat
-        .components
-        .iter()
-        .enumerate()
+fn entries_newest_first(cat: &Catalog) -> Vec<(ComponentIx, usize)> {
+    let mut all: Vec<(Option<i64>, ComponentIx, usize)> = Ix::enumerate(&cat.components)
         .flat_map(|(ci, c)| {
             c.history
                 .iter()
@@ -217,7 +214,7 @@ fn entries_newest_first(cat: &Catalog) -> Vec<(usize, usize)> {
 /// One change on What's new.
 #[derive(Debug, Clone, Serialize)]
 pub struct WhatsNewRow {
-    pub ci: usize,
+    pub ci: ComponentIx,
     /// The component's name.
     pub component: String,
     /// The entry's anchor on the component's history page.
@@ -251,7 +248,7 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
     let mut v = WhatsNewView::default();
     let mut shown = 0;
     for (ci, ei) in entries_newest_first(cat) {
-        let c = &cat.components[ci];
+        let c = &cat[ci];
         let e = &c.history[ei];
         if e.changes.is_empty() {
             continue;
@@ -345,7 +342,7 @@ pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
         if out.len() == FEED_MAX {
             break;
         }
-        let c = &cat.components[ci];
+        let c = &cat[ci];
         let e = &c.history[ei];
         let (Some(page), Some(updated)) =
             (cat.history_page(ci), e.date.as_deref().and_then(rfc3339))

@@ -16,7 +16,7 @@ pub mod idl_file;
 pub mod system;
 pub mod types;
 
-use crate::catalog::{Catalog, Output, Page};
+use crate::catalog::{Catalog, ComponentIx, Output, Page};
 use crate::render::facts::{self, PEER_COMPONENTS_CAP};
 
 /// A text that links to a page of the catalogue (to an anchor of it if given), or is plain text
@@ -74,10 +74,10 @@ impl<'a> Peers<'a> {
     /// port anchor; `all` is the type or interface page, `more_label` the words after "+N —".
     #[allow(clippy::too_many_arguments)]
     pub fn of<R>(
-        ci: usize,
+        ci: ComponentIx,
         refs: &'a [R],
-        component: impl Fn(&R) -> usize,
-        resolve: impl Fn(&R) -> Option<(usize, String, &'a str)>,
+        component: impl Fn(&R) -> ComponentIx,
+        resolve: impl Fn(&R) -> Option<(ComponentIx, String, &'a str)>,
         cat: &'a Catalog,
         all: Option<&'a Page>,
         more_label: &str,
@@ -86,11 +86,11 @@ impl<'a> Peers<'a> {
         let shown = groups
             .iter()
             .filter_map(|(_, list)| {
-                let ports: Vec<(usize, String, &'a str)> =
+                let ports: Vec<(ComponentIx, String, &'a str)> =
                     list.iter().filter_map(|r| resolve(r)).collect();
                 let (pc, _, anchor) = ports.first()?;
                 let names: Vec<&str> = ports.iter().map(|(_, n, _)| n.as_str()).collect();
-                let name = cat.components[*pc].display_name();
+                let name = cat[*pc].display_name();
                 Some(Linked::new(
                     &facts::peer_text(&name, &names, " · "),
                     Some(cat.component_page(*pc)),

@@ -3,7 +3,9 @@
 //! interface, and ports of other kinds).
 
 use super::Linked;
-use crate::catalog::{Catalog, InterfaceRef, Page, PageKind, PortRef, Role, TypeEntry, Uses};
+use crate::catalog::{
+    Catalog, InterfaceRef, Ix, Page, PageKind, PortRef, Role, TypeEntry, TypeIx, Uses,
+};
 use crate::i18n::Lang;
 use crate::model::non_empty;
 
@@ -31,19 +33,13 @@ impl TypeKind {
         }
     }
 
-    /// How many entries of the kind the catalogue has.
-    pub fn count(self, cat: &Catalog) -> usize {
+    /// The handles of the catalogue's entries of the kind, in order.
+    pub fn entries(self, cat: &Catalog) -> Vec<TypeIx> {
         match self {
-            TypeKind::Data => cat.data_types.len(),
-            TypeKind::Interface => cat.interfaces.len(),
-        }
-    }
-
-    /// The page of entry `i` of the kind.
-    pub fn page(self, cat: &Catalog, i: usize) -> &Page {
-        match self {
-            TypeKind::Data => cat.data_type_page(i),
-            TypeKind::Interface => cat.interface_page(i),
+            TypeKind::Data => Ix::all(cat.data_types.len()).map(TypeIx::Data).collect(),
+            TypeKind::Interface => Ix::all(cat.interfaces.len())
+                .map(TypeIx::Interface)
+                .collect(),
         }
     }
 }
@@ -92,7 +88,7 @@ pub trait UseRef {
 impl UseRef for PortRef {
     fn row<'a>(&self, cat: &'a Catalog) -> Option<UseRow<'a>> {
         let (ci, pi) = cat.resolve_port(self)?;
-        let c = &cat.components[ci];
+        let c = &cat[ci];
         let port = &c.profile.data_ports[pi];
         let page = cat.component_page(ci);
         Some(UseRow {
@@ -110,7 +106,7 @@ impl UseRef for PortRef {
 impl UseRef for InterfaceRef {
     fn row<'a>(&self, cat: &'a Catalog) -> Option<UseRow<'a>> {
         let (ci, pi, ii) = cat.resolve_interface(self)?;
-        let c = &cat.components[ci];
+        let c = &cat[ci];
         let sp = &c.profile.service_ports[pi];
         let i = &sp.interfaces[ii];
         let page = cat.component_page(ci);
@@ -209,15 +205,16 @@ where
 /// `source_url` is the site's `source-url` template.
 pub fn entry_view<'a>(
     cat: &'a Catalog,
-    kind: TypeKind,
-    i: usize,
+    t: TypeIx,
     lang: Lang,
     source_url: Option<&str>,
 ) -> TypeView<'a> {
-    let page = kind.page(cat, i);
-    match kind {
-        TypeKind::Data => type_view(cat, &cat.data_types[i], kind, page, lang, source_url),
-        TypeKind::Interface => type_view(cat, &cat.interfaces[i], kind, page, lang, source_url),
+    let page = cat.type_page(t);
+    match t {
+        TypeIx::Data(i) => type_view(cat, &cat[i], TypeKind::Data, page, lang, source_url),
+        TypeIx::Interface(i) => {
+            type_view(cat, &cat[i], TypeKind::Interface, page, lang, source_url)
+        }
     }
 }
 
@@ -262,16 +259,10 @@ fn index_row<'a, U: Uses>(page: &'a Page, t: &'a TypeEntry<U>) -> TypeIndexRow<'
 /// The view of the index of `kind`: every data type or interface of the catalogue, in order.
 pub fn type_index_view(cat: &Catalog, kind: TypeKind) -> TypeIndexView<'_> {
     let rows = match kind {
-        TypeKind::Data => cat
-            .data_types
-            .iter()
-            .enumerate()
+        TypeKind::Data => Ix::enumerate(&cat.data_types)
             .map(|(ti, t)| index_row(cat.data_type_page(ti), t))
             .collect(),
-        TypeKind::Interface => cat
-            .interfaces
-            .iter()
-            .enumerate()
+        TypeKind::Interface => Ix::enumerate(&cat.interfaces)
             .map(|(ii, t)| index_row(cat.interface_page(ii), t))
             .collect(),
     };
