@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Catalogue-scale benchmark: rtcdoc vs Hugo vs the file-creation floor (cp -r).
 #
-# usage: bench/catalogue.sh [N ...]        (default: 100 1000 10000)
+# usage: bench/catalogue.sh [N ...]        (default: 100 1000 10000 30000)
 #        RUNS=5 bench/catalogue.sh 10000    (runs per measurement, Hugo too; default 3)
 #        BENCH_DIR=/dev/shm/b …             (where catalogues and outputs go; default /tmp)
 #        IDL=0 bench/catalogue.sh …         (catalogues without their generated IDL files)
@@ -10,6 +10,8 @@
 #        OPENRTM_IDL=DIR SHAPE=corpus …     (with the *.idl of an OpenRTM installation's IDL directory)
 #        BASELINE=/path/to/rtcdoc …         (also an older binary's HTML build, in the same pairs)
 #        HUGO=0 bench/catalogue.sh 30000    (without Hugo: it needs about 0.5 GB per 1,000 pages)
+#        HUGO_MAX=N …                       (Hugo only up to N profiles; default 10000, so that the
+#                                            30,000 point measures rtcdoc and the floor alone)
 #
 # The catalogues carry IDL (bench/gen_catalogue.py: one file of structs, enums, sequences,
 # exceptions and interfaces per group of about forty components, named by the ports' idlFile),
@@ -33,7 +35,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")
 runs=${RUNS:-3}
-[ ${#sizes[@]} -eq 0 ] && sizes=(100 1000 10000)
+[ ${#sizes[@]} -eq 0 ] && sizes=(100 1000 10000 30000)
 work=${BENCH_DIR:-/tmp/rtcdoc-bench}
 mkdir -p "$work"
 trash="$work/trash"
@@ -179,7 +181,7 @@ print(f"{med([r[0] for r in rows]):.2f} {med([r[1] for r in rows]):.2f} {max(r[2
   echo "|   | paired: rtcdoc HTML time ÷ floor, median of the per-run ratios = $paired (HTML/cp s: $runs_txt) | | | | | |"
 
   # Hugo on rtcdoc's Markdown output, minimal layout.
-  if [ "${HUGO:-1}" != 0 ] && command -v hugo >/dev/null; then
+  if [ "${HUGO:-1}" != 0 ] && [ "$n" -le "${HUGO_MAX:-10000}" ] && command -v hugo >/dev/null; then
     site="$work/hugo-$n"
     set_aside "$site"
     mkdir -p "$site/layouts/_default"

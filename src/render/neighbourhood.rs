@@ -11,7 +11,7 @@ use crate::render::wiring::{WireConnector, WireInstance, WirePort};
 
 /// One neighbour component of a port, as listed.
 pub struct NeighbourItem<'a> {
-    /// Index into [`Catalog::components`].
+    /// The neighbouring component.
     pub component: ComponentIx,
     /// Its name as shown (with what tells same-named components apart).
     pub name: String,
