@@ -74,26 +74,32 @@ fn system(r: &mut Reader, m: &Mapping, pos: Pos) -> RtSystem {
         match bare(n) {
             "versionUpLogs" | "versionUpLog" => s.version_up_logs = r.texts(v, n, kp, x),
             "properties" | "property" => s.properties = properties(r, v, n, kp, x),
-            "systems" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let sub = r.leaf(m, ip, "a sub-system");
-                s.systems.push(sub);
+            "systems" => items(r, v, n, kp, x, &mut s.systems, |r, m, ip| {
+                r.leaf(m, ip, "a sub-system")
             }),
-            "components" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let c = component(r, m, ip);
-                s.components.push(c);
-            }),
-            "groups" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let g = group(r, m, ip);
-                s.groups.push(g);
-            }),
-            "dataPortConnectors" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let d = data_connector(r, m, ip);
-                s.data_port_connectors.push(d);
-            }),
-            "servicePortConnectors" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let c = service_connector(r, m, ip);
-                s.service_port_connectors.push(c);
-            }),
+            "components" => items(r, v, n, kp, x, &mut s.components, component),
+            "groups" => items(r, v, n, kp, x, &mut s.groups, group),
+            "dataPortConnectors" => {
+                items(r, v, n, kp, x, &mut s.data_port_connectors, |r, m, ip| {
+                    let ends = ["sourceDataPort", "targetDataPort"];
+                    let mut d: DataPortConnector =
+                        connector(r, m, ip, "a data port connector", ends);
+                    d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
+                    d
+                })
+            }
+            "servicePortConnectors" => items(
+                r,
+                v,
+                n,
+                kp,
+                x,
+                &mut s.service_port_connectors,
+                |r, m, ip| {
+                    let ends = ["sourceServicePort", "targetServicePort"];
+                    connector(r, m, ip, "a service port connector", ends)
+                },
+            ),
             other => match OrderKind::from_yaml_name(other) {
                 Some(kind) => {
                     if let Some(m) = r.map(v, n, kp, x) {
@@ -123,18 +129,11 @@ fn component(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemComponent {
                     ports.push((data, port(r, m, ip)));
                 });
             }
-            "configurationSets" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let cs = config_set(r, m, ip);
-                c.configuration_sets.push(cs);
-            }),
-            "executionContexts" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let e = execution_context(r, m, ip);
-                c.execution_contexts.push(e);
-            }),
-            "participants" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let t = participant(r, m, ip);
-                c.participants.push(t);
-            }),
+            "configurationSets" => items(r, v, n, kp, x, &mut c.configuration_sets, config_set),
+            "executionContexts" => {
+                items(r, v, n, kp, x, &mut c.execution_contexts, execution_context)
+            }
+            "participants" => items(r, v, n, kp, x, &mut c.participants, participant),
             "location" => {
                 if c.location.is_some() {
                     r.unknown(n, v, kp, "a component instance", x);
@@ -186,27 +185,64 @@ fn port(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemPort {
 }
 
 fn config_set(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemConfigurationSet {
-    let (mut s, _) = r.node(m, pos, |r, n, v, kp, s: &mut SystemConfigurationSet| {
-        let x = &mut s.extra;
-        match bare(n) {
-            "configurationData" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let d = r.leaf(m, ip, "configuration data");
-                s.configuration_data.push(d);
-            }),
-            _ => r.unknown(n, v, kp, "a configuration set", x),
-        }
+    let place = "a configuration set";
+    let parts: ListParts<SystemConfigurationSet, _> = |s| (&mut s.configuration_data, &mut s.extra);
+    let mut s = with_list(r, m, pos, place, "configurationData", parts, |r, m, ip| {
+        r.leaf(m, ip, "configuration data")
     });
     s.pseudo = s.id.as_deref().is_some_and(is_pseudo_set);
     s
+}
+
+/// A list of a node and the node's extras.
+type ListParts<T, I> = fn(&mut T) -> (&mut Vec<I>, &mut Vec<Extra>);
+
+/// Reads mapping `m` (at `pos`) as the system node `T` whose only key beside its scalars (in
+/// the field table) is the list `key`: its items read by `read` into the list that `parts`
+/// gives with the node's extras. Any other key is unknown in `place`.
+fn with_list<T: Fields + Default, I>(
+    r: &mut Reader,
+    m: &Mapping,
+    pos: Pos,
+    place: &str,
+    key: &str,
+    parts: fn(&mut T) -> (&mut Vec<I>, &mut Vec<Extra>),
+    read: impl Fn(&mut Reader, &Mapping, Pos) -> I,
+) -> T {
+    r.node(m, pos, |r, n, v, kp, t: &mut T| {
+        let (list, x) = parts(t);
+        if bare(n) == key {
+            items(r, v, n, kp, x, list, &read);
+        } else {
+            r.unknown(n, v, kp, place, x);
+        }
+    })
+    .0
+}
+
+/// The mapping items of list `v` (key `n` at `kp`) read by `read` onto `list`; the other
+/// items go to `sink`.
+fn items<I>(
+    r: &mut Reader,
+    v: &Value,
+    n: &str,
+    kp: Pos,
+    sink: &mut Vec<Extra>,
+    list: &mut Vec<I>,
+    read: impl Fn(&mut Reader, &Mapping, Pos) -> I,
+) {
+    each_item(r, v, n, kp, sink, |r, m, ip| {
+        let item = read(r, m, ip);
+        list.push(item);
+    });
 }
 
 fn execution_context(r: &mut Reader, m: &Mapping, pos: Pos) -> ExecutionContext {
     r.node(m, pos, |r, n, v, kp, e: &mut ExecutionContext| {
         let x = &mut e.extra;
         match bare(n) {
-            "participants" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let t = target(r, m, ip, "a participant");
-                e.participants.push(t);
+            "participants" => items(r, v, n, kp, x, &mut e.participants, |r, m, ip| {
+                target(r, m, ip, "a participant")
             }),
             "properties" | "property" => e.properties = properties(r, v, n, kp, x),
             _ => r.unknown(n, v, kp, "an execution context", x),
@@ -247,17 +283,10 @@ fn participant(r: &mut Reader, m: &Mapping, pos: Pos) -> TargetComponent {
 }
 
 fn group(r: &mut Reader, m: &Mapping, pos: Pos) -> Group {
-    r.node(m, pos, |r, n, v, kp, g: &mut Group| {
-        let x = &mut g.extra;
-        match bare(n) {
-            "members" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let t = target(r, m, ip, "a group member");
-                g.members.push(t);
-            }),
-            _ => r.unknown(n, v, kp, "a group", x),
-        }
+    let parts: ListParts<Group, _> = |g| (&mut g.members, &mut g.extra);
+    with_list(r, m, pos, "a group", "members", parts, |r, m, ip| {
+        target(r, m, ip, "a group member")
     })
-    .0
 }
 
 /// A connector end: `componentId`, `instanceName`, `portName`, `"rtsExt::properties"`.
@@ -273,28 +302,22 @@ fn end(r: &mut Reader, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -
     Some(e)
 }
 
-fn data_connector(r: &mut Reader, m: &Mapping, pos: Pos) -> DataPortConnector {
-    let (mut d, _) = r.node(m, pos, |r, n, v, kp, d: &mut DataPortConnector| {
-        let x = &mut d.extra;
+/// A connector (`place`): its scalars by the field table, its two ends (keys `ends`, source
+/// first) and properties.
+fn connector<T: Fields + Default + Connector>(
+    r: &mut Reader,
+    m: &Mapping,
+    pos: Pos,
+    place: &str,
+    ends: [&str; 2],
+) -> T {
+    r.node(m, pos, |r, n, v, kp, t: &mut T| {
+        let p = t.parts_mut();
         match bare(n) {
-            "sourceDataPort" => d.source = end(r, v, n, kp, x),
-            "targetDataPort" => d.target = end(r, v, n, kp, x),
-            "properties" | "property" => d.properties = properties(r, v, n, kp, x),
-            _ => r.unknown(n, v, kp, "a data port connector", x),
-        }
-    });
-    d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
-    d
-}
-
-fn service_connector(r: &mut Reader, m: &Mapping, pos: Pos) -> ServicePortConnector {
-    r.node(m, pos, |r, n, v, kp, s: &mut ServicePortConnector| {
-        let x = &mut s.extra;
-        match bare(n) {
-            "sourceServicePort" => s.source = end(r, v, n, kp, x),
-            "targetServicePort" => s.target = end(r, v, n, kp, x),
-            "properties" | "property" => s.properties = properties(r, v, n, kp, x),
-            _ => r.unknown(n, v, kp, "a service port connector", x),
+            k if k == ends[0] => *p.source = end(r, v, n, kp, p.extra),
+            k if k == ends[1] => *p.target = end(r, v, n, kp, p.extra),
+            "properties" | "property" => *p.properties = properties(r, v, n, kp, p.extra),
+            _ => r.unknown(n, v, kp, place, p.extra),
         }
     })
     .0
@@ -302,16 +325,8 @@ fn service_connector(r: &mut Reader, m: &Mapping, pos: Pos) -> ServicePortConnec
 
 /// `startUp`, `shutDown`, …: `{targets: [...]}`.
 fn order(r: &mut Reader, m: &Mapping, pos: Pos, kind: OrderKind) -> Order {
-    let (mut o, _) = r.node(m, pos, |r, n, v, kp, o: &mut Order| {
-        let x = &mut o.extra;
-        match bare(n) {
-            "targets" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let t = order_target(r, m, ip);
-                o.targets.push(t);
-            }),
-            _ => r.unknown(n, v, kp, kind.yaml_name(), x),
-        }
-    });
+    let parts: ListParts<Order, _> = |o| (&mut o.targets, &mut o.extra);
+    let mut o = with_list(r, m, pos, kind.yaml_name(), "targets", parts, order_target);
     o.kind = kind;
     o
 }
@@ -328,22 +343,8 @@ fn order_target(r: &mut Reader, m: &Mapping, pos: Pos) -> OrderTarget {
                 }
             }
             "condition" => {
-                let Some(cm) = r.map(v, n, kp, x) else {
-                    return;
-                };
-                for (k, v) in cm {
-                    let (cn, ckp) = r.key(k);
-                    match bare(&cn) {
-                        "waitTime" if t.wait_time.is_none() => {
-                            t.wait_time = wait_time(r, v, &cn, ckp, &mut t.extra)
-                        }
-                        "preceding" if t.preceding.is_none() => {
-                            if let Some(pm) = r.map(v, &cn, ckp, &mut t.extra) {
-                                t.preceding = Some(preceding(r, pm, ckp));
-                            }
-                        }
-                        _ => r.unknown(&cn, v, ckp, "a condition", &mut t.extra),
-                    }
+                if let Some(cm) = r.map(v, n, kp, x) {
+                    condition(r, cm, t);
                 }
             }
             "properties" | "property" => t.properties = properties(r, v, n, kp, x),
@@ -353,35 +354,43 @@ fn order_target(r: &mut Reader, m: &Mapping, pos: Pos) -> OrderTarget {
     .0
 }
 
-/// `waitTime: {waitTime: N}` (rtsprofile); a bare `waitTime: N` is accepted too.
-fn wait_time(
-    r: &mut Reader,
-    v: &Value,
-    name: &str,
-    pos: Pos,
-    sink: &mut Vec<Extra>,
-) -> Option<WaitTime> {
-    match untag_ref(v) {
-        Value::Mapping(m) => Some(r.leaf(m, pos, "a wait time")),
-        Value::Null => None,
-        _ => Some(WaitTime {
-            wait_time: r.text(v, name, pos, sink),
-            pos,
-            ..Default::default()
-        }),
+/// The `condition` of an order target, read into `t`: `waitTime: {waitTime: N}` (rtsprofile; a
+/// bare `waitTime: N` is accepted too) or `preceding: {…}`.
+fn condition(r: &mut Reader, cm: &Mapping, t: &mut OrderTarget) {
+    for (k, v) in cm {
+        let (cn, ckp) = r.key(k);
+        match (bare(&cn), untag_ref(v)) {
+            ("waitTime", Value::Mapping(m)) if t.wait_time.is_none() => {
+                t.wait_time = Some(r.leaf(m, ckp, "a wait time"))
+            }
+            ("waitTime", Value::Null) if t.wait_time.is_none() => {}
+            ("waitTime", _) if t.wait_time.is_none() => {
+                let wait_time = r.text(v, &cn, ckp, &mut t.extra);
+                t.wait_time = Some(WaitTime {
+                    wait_time,
+                    pos: ckp,
+                    ..Default::default()
+                })
+            }
+            ("preceding", _) if t.preceding.is_none() => {
+                if let Some(pm) = r.map(v, &cn, ckp, &mut t.extra) {
+                    t.preceding = Some(preceding(r, pm, ckp));
+                }
+            }
+            _ => r.unknown(&cn, v, ckp, "a condition", &mut t.extra),
+        }
     }
 }
 
 fn preceding(r: &mut Reader, m: &Mapping, pos: Pos) -> Preceding {
-    r.node(m, pos, |r, n, v, kp, p: &mut Preceding| {
-        let x = &mut p.extra;
-        match bare(n) {
-            "precedingComponents" => each_item(r, v, n, kp, x, |r, m, ip| {
-                let c = target(r, m, ip, "a preceding component");
-                p.preceding_components.push(c);
-            }),
-            _ => r.unknown(n, v, kp, "a preceding condition", x),
-        }
-    })
-    .0
+    let parts: ListParts<Preceding, _> = |p| (&mut p.preceding_components, &mut p.extra);
+    with_list(
+        r,
+        m,
+        pos,
+        "a preceding condition",
+        "precedingComponents",
+        parts,
+        |r, m, ip| target(r, m, ip, "a preceding component"),
+    )
 }

@@ -11,7 +11,7 @@ use super::{attr_extra, build_any_tree, decode, node_extra, Attr, Mapper, Node, 
 use crate::diagnostic::{codes, Diagnostic};
 use crate::model::fields::Fields;
 use crate::model::system::*;
-use crate::model::{Extra, Located};
+use crate::model::{Extra, Located, Pos};
 use crate::parse::Limits;
 
 /// Namespace URI of the basic system profile (`RtsProfile.xsd`).
@@ -80,27 +80,19 @@ fn ns_note(ns: &Ns) -> String {
 }
 
 fn unknown_attr(m: &mut Mapper, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
-    m.warn(
-        a.pos,
-        format!(
-            "unknown attribute `{}`{} on {on}; kept as an extra property",
-            a.qname,
-            ns_note(&a.ns)
-        ),
-    );
-    extra.push(attr_extra(a));
+    let what = format!("attribute `{}`{} on {on}", a.qname, ns_note(&a.ns));
+    keep(m, a.pos, &what, attr_extra(a), extra);
 }
 
 fn unknown_elem(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) {
-    m.warn(
-        n.pos,
-        format!(
-            "unknown element `{}`{} in {on}; kept as an extra property",
-            n.qname,
-            ns_note(&n.ns)
-        ),
-    );
-    extra.push(node_extra(n));
+    let what = format!("element `{}`{} in {on}", n.qname, ns_note(&n.ns));
+    keep(m, n.pos, &what, node_extra(n), extra);
+}
+
+/// Something unknown (`what`): warned about and kept as extra `e`.
+fn keep(m: &mut Mapper, pos: Pos, what: &str, e: Extra, extra: &mut Vec<Extra>) {
+    m.warn(pos, format!("unknown {what}; kept as an extra property"));
+    extra.push(e);
 }
 
 /// A new node `T` at element `n` with the attributes the field table lists for `T` (any
@@ -342,34 +334,40 @@ fn set_end(m: &mut Mapper, slot: &mut Option<PortEnd>, c: &Node, on: &str, extra
 
 /// `rts:DataPortConnectors`.
 fn map_data_connector(m: &mut Mapper, n: &Node) -> DataPortConnector {
-    let mut extra = Vec::new();
-    let mut d: DataPortConnector = attrs(m, n, "data port connector", &mut extra);
+    let ends = ["sourceDataPort", "targetDataPort"];
+    let mut d: DataPortConnector = map_connector(m, n, "data port connector", ends);
     d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
-    let on = format!("data port connector `{}`", d.name.as_deref().unwrap_or(""));
-    children(m, n, &on, d, extra, |m, c, k, d, extra| {
-        match k {
-            "sourceDataPort" => set_end(m, &mut d.source, c, &on, extra),
-            "targetDataPort" => set_end(m, &mut d.target, c, &on, extra),
-            _ => return property(m, c, k, &mut d.properties),
-        }
-        true
-    })
+    d
 }
 
 /// `rts:ServicePortConnectors`.
 fn map_service_connector(m: &mut Mapper, n: &Node) -> ServicePortConnector {
+    let ends = ["sourceServicePort", "targetServicePort"];
+    map_connector(m, n, "service port connector", ends)
+}
+
+/// A connector (`what`, named by its `name` in the messages about its children): its
+/// attributes by the field table, its two ends (elements `ends`, source first) and properties.
+fn map_connector<T: Fields + Default + Connector>(
+    m: &mut Mapper,
+    n: &Node,
+    what: &str,
+    ends: [&str; 2],
+) -> T {
     let mut extra = Vec::new();
-    let s: ServicePortConnector = attrs(m, n, "service port connector", &mut extra);
-    let on = format!(
-        "service port connector `{}`",
-        s.name.as_deref().unwrap_or("")
-    );
-    children(m, n, &on, s, extra, |m, c, k, s, extra| {
-        match k {
-            "sourceServicePort" => set_end(m, &mut s.source, c, &on, extra),
-            "targetServicePort" => set_end(m, &mut s.target, c, &on, extra),
-            _ => return property(m, c, k, &mut s.properties),
-        }
+    let t: T = attrs(m, n, what, &mut extra);
+    let name = T::NODE
+        .json_field("name")
+        .and_then(|f| t.value(f)?.as_deref());
+    let on = format!("{what} `{}`", name.unwrap_or(""));
+    children(m, n, &on, t, extra, |m, c, k, t, extra| {
+        let parts = t.parts_mut();
+        let end = match k {
+            _ if k == ends[0] => parts.source,
+            _ if k == ends[1] => parts.target,
+            _ => return property(m, c, k, parts.properties),
+        };
+        set_end(m, end, c, &on, extra);
         true
     })
 }
