@@ -788,16 +788,27 @@ impl Parser<'_> {
             out.push(self.forward(name, doc, pos, "struct"));
             return Ok(());
         }
-        self.expect_punct("{", &format!("after `struct {name}`"), "")?;
+        self.with_members(out, "struct", name, |p, name, fields| {
+            IdlDefinition::Struct(declared!(p, IdlStruct, name, doc, pos, { fields }))
+        })
+    }
+
+    /// The `{ members };` of a struct or an exception (`kind`) named `name`: its definition made
+    /// by `make` (also when a member is broken, so that the declaration is kept) onto `out`.
+    fn with_members(
+        &mut self,
+        out: &mut Vec<IdlDefinition>,
+        kind: &str,
+        name: String,
+        make: impl FnOnce(&Self, String, Vec<IdlField>) -> IdlDefinition,
+    ) -> PResult<()> {
+        self.expect_punct("{", &format!("after `{kind} {name}`"), "")?;
         let mut fields = Vec::new();
-        let r = self.in_scope(&name, |p| p.members(&mut fields, "struct member"))?;
-        out.push(IdlDefinition::Struct(
-            declared!(self, IdlStruct, name.clone(), doc, pos, {
-                fields,
-            }),
-        ));
+        let what = format!("{kind} member");
+        let r = self.in_scope(&name, |p| p.members(&mut fields, &what))?;
+        out.push(make(self, name.clone(), fields));
         r?;
-        self.close("struct", &name, "")
+        self.close(kind, &name, "")
     }
 
     fn forward(&self, name: String, doc: Option<Box<IdlDoc>>, pos: Pos, of: &str) -> IdlDefinition {
@@ -814,16 +825,9 @@ impl Parser<'_> {
     ) -> PResult<()> {
         self.bump();
         let (name, _) = self.ident("an exception name")?;
-        self.expect_punct("{", &format!("after `exception {name}`"), "")?;
-        let mut fields = Vec::new();
-        let r = self.in_scope(&name, |p| p.members(&mut fields, "exception member"))?;
-        out.push(IdlDefinition::Exception(
-            declared!(self, IdlException, name.clone(), doc, pos, {
-                fields,
-            }),
-        ));
-        r?;
-        self.close("exception", &name, "")
+        self.with_members(out, "exception", name, |p, name, fields| {
+            IdlDefinition::Exception(declared!(p, IdlException, name, doc, pos, { fields }))
+        })
     }
 
     /// Members up to (not including) the closing `}`.
