@@ -241,6 +241,27 @@ impl Parser<'_> {
         let pos = self.pos();
         self.error_at(pos, msg, hint)
     }
+    /// The word that starts a declaration; an error saying what was `expected` otherwise.
+    fn leading_word(&mut self, expected: &str) -> PResult<String> {
+        if let Tok::Ident(w) = self.peek_tok() {
+            return Ok(w);
+        }
+        let found = self.peek().describe();
+        Err(self.error_here(format!("expected {expected}, found {found}"), ""))
+    }
+    /// Whether the next token is the `}` that closes `what` (the pragmas before it applied); an
+    /// error with `hint` at the end of the file.
+    fn at_close(&mut self, what: &str, hint: &str) -> PResult<bool> {
+        self.apply_pragmas();
+        if self.is_punct("}") {
+            return Ok(true);
+        }
+        if self.at_eof() {
+            let msg = format!("expected `}}` to close {what}, found end of file");
+            return Err(self.error_here(msg, hint));
+        }
+        Ok(false)
+    }
     fn expect_punct(&mut self, p: &str, context: &str, hint: &str) -> PResult<()> {
         if self.eat_punct(p) {
             return Ok(());
@@ -562,16 +583,7 @@ impl Parser<'_> {
     fn definition(&mut self, out: &mut Vec<IdlDefinition>) -> PResult<()> {
         let doc = self.take_doc();
         let pos = self.pos();
-        let word = match self.peek_tok() {
-            Tok::Ident(w) => w,
-            _ => {
-                let found = self.peek().describe();
-                return Err(self.error_here(
-                    format!("expected a declaration (module, struct, interface, typedef, …), found {found}"),
-                    "",
-                ));
-            }
-        };
+        let word = self.leading_word("a declaration (module, struct, interface, typedef, …)")?;
         match word.as_str() {
             "module" => self.module(out, doc, pos),
             "struct" => self.structure(out, doc, pos),
@@ -776,16 +788,27 @@ impl Parser<'_> {
             out.push(self.forward(name, doc, pos, "struct"));
             return Ok(());
         }
-        self.expect_punct("{", &format!("after `struct {name}`"), "")?;
+        self.with_members(out, "struct", name, |p, name, fields| {
+            IdlDefinition::Struct(declared!(p, IdlStruct, name, doc, pos, { fields }))
+        })
+    }
+
+    /// The `{ members };` of a struct or an exception (`kind`) named `name`: its definition made
+    /// by `make` (also when a member is broken, so that the declaration is kept) onto `out`.
+    fn with_members(
+        &mut self,
+        out: &mut Vec<IdlDefinition>,
+        kind: &str,
+        name: String,
+        make: impl FnOnce(&Self, String, Vec<IdlField>) -> IdlDefinition,
+    ) -> PResult<()> {
+        self.expect_punct("{", &format!("after `{kind} {name}`"), "")?;
         let mut fields = Vec::new();
-        let r = self.in_scope(&name, |p| p.members(&mut fields, "struct member"))?;
-        out.push(IdlDefinition::Struct(
-            declared!(self, IdlStruct, name.clone(), doc, pos, {
-                fields,
-            }),
-        ));
+        let what = format!("{kind} member");
+        let r = self.in_scope(&name, |p| p.members(&mut fields, &what))?;
+        out.push(make(self, name.clone(), fields));
         r?;
-        self.close("struct", &name, "")
+        self.close(kind, &name, "")
     }
 
     fn forward(&self, name: String, doc: Option<Box<IdlDoc>>, pos: Pos, of: &str) -> IdlDefinition {
@@ -802,31 +825,14 @@ impl Parser<'_> {
     ) -> PResult<()> {
         self.bump();
         let (name, _) = self.ident("an exception name")?;
-        self.expect_punct("{", &format!("after `exception {name}`"), "")?;
-        let mut fields = Vec::new();
-        let r = self.in_scope(&name, |p| p.members(&mut fields, "exception member"))?;
-        out.push(IdlDefinition::Exception(
-            declared!(self, IdlException, name.clone(), doc, pos, {
-                fields,
-            }),
-        ));
-        r?;
-        self.close("exception", &name, "")
+        self.with_members(out, "exception", name, |p, name, fields| {
+            IdlDefinition::Exception(declared!(p, IdlException, name, doc, pos, { fields }))
+        })
     }
 
     /// Members up to (not including) the closing `}`.
     fn members(&mut self, fields: &mut Vec<IdlField>, what: &str) -> PResult<()> {
-        loop {
-            self.apply_pragmas();
-            if self.is_punct("}") {
-                return Ok(());
-            }
-            if self.at_eof() {
-                return Err(self.error_here(
-                    "expected `}` to close the members, found end of file".to_string(),
-                    "every `{` needs its `};`",
-                ));
-            }
+        while !self.at_close("the members", "every `{` needs its `};`")? {
             let before = fields.len();
             match self.member(fields, what) {
                 Ok(()) => {
@@ -839,6 +845,7 @@ impl Parser<'_> {
                 Err(PErr) => self.recover(),
             }
         }
+        Ok(())
     }
 
     fn member(&mut self, fields: &mut Vec<IdlField>, what: &str) -> PResult<()> {
@@ -910,17 +917,7 @@ impl Parser<'_> {
     }
 
     fn union_cases(&mut self, cases: &mut Vec<IdlUnionCase>) -> PResult<()> {
-        loop {
-            self.apply_pragmas();
-            if self.is_punct("}") {
-                return Ok(());
-            }
-            if self.at_eof() {
-                return Err(self.error_here(
-                    "expected `}` to close the union, found end of file".into(),
-                    "",
-                ));
-            }
+        while !self.at_close("the union", "")? {
             match self.union_case() {
                 Ok(mut c) => {
                     if let Some(after) = self.take_after() {
@@ -931,6 +928,7 @@ impl Parser<'_> {
                 Err(PErr) => self.recover(),
             }
         }
+        Ok(())
     }
 
     fn union_case(&mut self) -> PResult<IdlUnionCase> {
@@ -1143,20 +1141,8 @@ impl Parser<'_> {
     }
 
     fn exports(&mut self, itf: &mut IdlInterface) -> PResult<()> {
-        loop {
-            self.apply_pragmas();
-            if self.is_punct("}") {
-                return Ok(());
-            }
-            if self.at_eof() {
-                return Err(self.error_here(
-                    format!(
-                        "expected `}}` to close interface `{}`, found end of file",
-                        itf.name
-                    ),
-                    "",
-                ));
-            }
+        let what = format!("interface `{}`", itf.name);
+        while !self.at_close(&what, "")? {
             if self.eat_punct(";") {
                 continue;
             }
@@ -1164,19 +1150,11 @@ impl Parser<'_> {
                 self.recover();
             }
         }
+        Ok(())
     }
 
     fn export(&mut self, itf: &mut IdlInterface) -> PResult<()> {
-        let word = match self.peek_tok() {
-            Tok::Ident(w) => w,
-            _ => {
-                let found = self.peek().describe();
-                return Err(self.error_here(
-                    format!("expected an operation, attribute or type declaration, found {found}"),
-                    "",
-                ));
-            }
-        };
+        let word = self.leading_word("an operation, attribute or type declaration")?;
         match word.as_str() {
             "struct" | "union" | "enum" | "typedef" | "const" | "exception" | "native"
             | "typeid" | "typeprefix" => self.definition(&mut itf.definitions),

@@ -1,9 +1,10 @@
-//! The model field table: every scalar field of every node of a component profile, described
-//! once — its node, its Rust field, its JSON (serde) name, the XML attribute names and YAML keys
+//! The model field table: every scalar field of every node of a component profile and of an
+//! RT System profile, described once — its node, its Rust field, its JSON (serde) name, the XML attribute names and YAML keys
 //! it is read from (with the older spellings and the writer that uses each), whether it is a
 //! date and whether it is documentation only.
 //!
-//! The readers (`parse::xml::map`, `parse::yaml`), the attribute positions ([`AttrPos`]) and
+//! The readers (`parse::xml::map`, `parse::yaml`, and for systems `parse::xml::rts`,
+//! `parse::rts_yaml`), the attribute positions ([`AttrPos`]) and
 //! `diff` read this table; none of them lists a field's names itself. A new scalar field is one
 //! line here (plus the `Option<Text>` in `component.rs` and its view in `render/facts.rs`).
 //!
@@ -12,6 +13,11 @@
 //! [`Place`] with it.
 
 use super::component::*;
+use super::system::{
+    ConfigurationData, DataPortConnector, ExecutionContext, Group, Location, Order, OrderTarget,
+    PortEnd, Preceding, RtSystem, ServicePortConnector, SubSystem, SystemComponent,
+    SystemConfigurationSet, SystemPort, SystemProperty, TargetComponent, WaitTime,
+};
 
 /// The writer generation of the dotted id, `varname`, `subscriprionType`, the language
 /// elements and `EVENT_DRIVEN`.
@@ -19,6 +25,9 @@ pub const RTCBUILDER_01: &str = "RTCBuilder 0.1";
 /// OpenRTM-aist-Python's rtc-template and the old OpenRTP YAML samples: unprefixed `doc`,
 /// `position`, `varname`, `versionUpLog` keys.
 pub const RTC_TEMPLATE: &str = "rtc-template";
+
+/// The prefix of the extended RT System profile's YAML keys, optional on every system key.
+pub const RTS_EXT: &str = "rtsExt::";
 
 /// One way a field is written: an XML attribute's local name or a YAML key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -95,7 +104,7 @@ macro_rules! table {
                xml $xml:tt, yaml $yaml:tt; )*
         }
     )*) => {
-        /// The nodes of a component profile.
+        /// The nodes of a component profile and of an RT System profile.
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
         pub enum Node { $($node,)* ConfigurationSet, Constraint, TextList }
 
@@ -371,6 +380,129 @@ table! {
         LibraryVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
         LibraryOther: other = "other", Text, false, xml ["other"], yaml ["other"];
     }
+    // RT System profiles (`model/system.rs`): the XML attributes and YAML keys are the same
+    // names, in either the `rts` or the `rtsExt` namespace (YAML: with or without `rtsExt::`).
+    RtSystem {
+        SystemId: id = "id", Text, false, xml ["id"], yaml ["id"];
+        SystemVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
+        SystemAbstract: abstract_ = "abstract", Text, false, xml ["abstract"], yaml ["abstract"];
+        SystemCreationDate: creation_date = "creationDate", Date, false,
+            xml ["creationDate"], yaml ["creationDate"];
+        SystemUpdateDate: update_date = "updateDate", Date, false,
+            xml ["updateDate"], yaml ["updateDate"];
+        SystemComment: comment = "comment", Text, false, xml ["comment"], yaml ["comment"];
+    }
+    SystemProperty {
+        SystemPropertyName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        SystemPropertyValue: value = "value", Text, false, xml ["value"], yaml ["value"];
+    }
+    SubSystem {
+        SubSystemPath: path = "path", Text, false, xml ["path"], yaml ["path"];
+    }
+    SystemComponent {
+        InstanceId: id = "id", Text, false, xml ["id"], yaml ["id"];
+        InstancePathUri: path_uri = "pathUri", Text, false, xml ["pathUri"], yaml ["pathUri"];
+        InstanceActiveConfigurationSet: active_configuration_set = "activeConfigurationSet",
+            Text, false, xml ["activeConfigurationSet"], yaml ["activeConfigurationSet"];
+        InstanceName: instance_name = "instanceName", Text, false,
+            xml ["instanceName"], yaml ["instanceName"];
+        InstanceCompositeType: composite_type = "compositeType", Text, false,
+            xml ["compositeType"], yaml ["compositeType"];
+        InstanceIsRequired: is_required = "isRequired", Text, false,
+            xml ["isRequired"], yaml ["isRequired"];
+        InstanceComment: comment = "comment", Text, false, xml ["comment"], yaml ["comment"];
+        InstanceVisible: visible = "visible", Text, false, xml ["visible"], yaml ["visible"];
+    }
+    SystemPort {
+        SystemPortName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        SystemPortComment: comment = "comment", Text, false, xml ["comment"], yaml ["comment"];
+        SystemPortVisible: visible = "visible", Text, false, xml ["visible"], yaml ["visible"];
+    }
+    SystemConfigurationSet {
+        SystemConfigurationSetId: id = "id", Text, false, xml ["id"], yaml ["id"];
+    }
+    ConfigurationData {
+        ConfigurationDataName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        ConfigurationDataData: data = "data", Text, false, xml ["data"], yaml ["data"];
+    }
+    ExecutionContext {
+        ExecutionContextId: id = "id", Text, false, xml ["id"], yaml ["id"];
+        ExecutionContextKind: kind = "kind", Text, false, xml ["kind"], yaml ["kind"];
+        ExecutionContextRate: rate = "rate", Text, false, xml ["rate"], yaml ["rate"];
+    }
+    TargetComponent {
+        TargetComponentId: component_id = "componentId", Text, false,
+            xml ["componentId"], yaml ["componentId"];
+        TargetInstanceName: instance_name = "instanceName", Text, false,
+            xml ["instanceName"], yaml ["instanceName"];
+        TargetId: id = "id", Text, false, xml ["id"], yaml ["id"];
+    }
+    Location {
+        LocationX: x = "x", Text, false, xml ["x"], yaml ["x"];
+        LocationY: y = "y", Text, false, xml ["y"], yaml ["y"];
+        LocationHeight: height = "height", Text, false, xml ["height"], yaml ["height"];
+        LocationWidth: width = "width", Text, false, xml ["width"], yaml ["width"];
+        LocationDirection: direction = "direction", Text, false,
+            xml ["direction"], yaml ["direction"];
+    }
+    // rtsprofile (Python) writes `groupID`, the schema `groupId`: either fills the id (a
+    // second one is a repeated attribute in XML).
+    Group {
+        GroupId: group_id = "groupId", Text, false,
+            xml ["groupId", "groupID"], yaml ["groupId", "groupID"];
+    }
+    PortEnd {
+        PortEndComponentId: component_id = "componentId", Text, false,
+            xml ["componentId"], yaml ["componentId"];
+        PortEndInstanceName: instance_name = "instanceName", Text, false,
+            xml ["instanceName"], yaml ["instanceName"];
+        PortEndPortName: port_name = "portName", Text, false,
+            xml ["portName"], yaml ["portName"];
+    }
+    DataPortConnector {
+        DataConnectorId: connector_id = "connectorId", Text, false,
+            xml ["connectorId"], yaml ["connectorId"];
+        DataConnectorName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        DataConnectorDataType: data_type = "dataType", Text, false,
+            xml ["dataType"], yaml ["dataType"];
+        DataConnectorInterfaceType: interface_type = "interfaceType", Text, false,
+            xml ["interfaceType"], yaml ["interfaceType"];
+        DataConnectorDataflowType: dataflow_type = "dataflowType", Text, false,
+            xml ["dataflowType"], yaml ["dataflowType"];
+        DataConnectorSubscriptionType: subscription_type = "subscriptionType", Text, false,
+            xml ["subscriptionType"], yaml ["subscriptionType"];
+        DataConnectorPushInterval: push_interval = "pushInterval", Text, false,
+            xml ["pushInterval"], yaml ["pushInterval"];
+        DataConnectorComment: comment = "comment", Text, false,
+            xml ["comment"], yaml ["comment"];
+        DataConnectorVisible: visible = "visible", Text, false,
+            xml ["visible"], yaml ["visible"];
+    }
+    ServicePortConnector {
+        ServiceConnectorId: connector_id = "connectorId", Text, false,
+            xml ["connectorId"], yaml ["connectorId"];
+        ServiceConnectorName: name = "name", Text, false, xml ["name"], yaml ["name"];
+        ServiceConnectorTransMethod: trans_method = "transMethod", Text, false,
+            xml ["transMethod"], yaml ["transMethod"];
+        ServiceConnectorComment: comment = "comment", Text, false,
+            xml ["comment"], yaml ["comment"];
+        ServiceConnectorVisible: visible = "visible", Text, false,
+            xml ["visible"], yaml ["visible"];
+    }
+    Order {}
+    OrderTarget {
+        OrderTargetSequence: sequence = "sequence", Text, false,
+            xml ["sequence"], yaml ["sequence"];
+    }
+    WaitTime {
+        WaitTimeWaitTime: wait_time = "waitTime", Text, false,
+            xml ["waitTime"], yaml ["waitTime"];
+    }
+    Preceding {
+        PrecedingTimeout: timeout = "timeout", Text, false, xml ["timeout"], yaml ["timeout"];
+        PrecedingSendingTiming: sending_timing = "sendingTiming", Text, false,
+            xml ["sendingTiming"], yaml ["sendingTiming"];
+    }
 }
 
 impl Field {
@@ -400,8 +532,14 @@ impl Node {
             .iter()
             .find_map(|d| d.xml.iter().find(|s| s.name == local).map(|s| (d, s)))
     }
-    /// The field read from YAML key `key` on this node, and the spelling it had.
+    /// The field read from YAML key `key` on this node, and the spelling it had (on the nodes
+    /// of an RT System, `key` may carry the `rtsExt::` prefix).
     pub fn yaml(self, key: &str) -> Option<(&'static FieldDef, &'static Spelling)> {
+        let key = if self.is_system() {
+            key.strip_prefix(RTS_EXT).unwrap_or(key)
+        } else {
+            key
+        };
         self.fields()
             .iter()
             .find_map(|d| d.yaml.iter().find(|s| s.name == key).map(|s| (d, s)))
@@ -420,6 +558,30 @@ impl Node {
     /// The child nodes of this node.
     pub fn children(self) -> impl Iterator<Item = &'static Child> {
         CHILDREN.iter().filter(move |c| c.parent == self)
+    }
+    /// Whether the node is a node of an RT System profile.
+    pub fn is_system(self) -> bool {
+        matches!(
+            self,
+            Node::RtSystem
+                | Node::SystemProperty
+                | Node::SubSystem
+                | Node::SystemComponent
+                | Node::SystemPort
+                | Node::SystemConfigurationSet
+                | Node::ConfigurationData
+                | Node::ExecutionContext
+                | Node::TargetComponent
+                | Node::Location
+                | Node::Group
+                | Node::PortEnd
+                | Node::DataPortConnector
+                | Node::ServicePortConnector
+                | Node::Order
+                | Node::OrderTarget
+                | Node::WaitTime
+                | Node::Preceding
+        )
     }
     /// Whether the node is a documentation node (`rtcDoc:Doc`).
     pub fn is_doc(self) -> bool {
@@ -558,6 +720,17 @@ mod tests {
         }
     }
 
+    #[test]
+    fn system_keys_take_the_rts_ext_prefix_and_component_keys_do_not() {
+        let field = |node: Node, key| node.yaml(key).map(|(d, _)| d.field);
+        let comment = Some(Field::InstanceComment);
+        assert_eq!(field(Node::SystemComponent, "comment"), comment);
+        assert_eq!(field(Node::SystemComponent, "rtsExt::comment"), comment);
+        assert_eq!(field(Node::SystemComponent, "rtcExt::comment"), None);
+        assert_eq!(field(Node::BasicInfo, "rtsExt::comment"), None);
+        assert!(Node::Order.is_system() && !Node::Profile.is_system());
+    }
+
     /// The node of `f` with only `f` set, as JSON.
     fn json_with(f: Field) -> Value {
         fn set<T: Fields + serde::Serialize>(mut t: T, f: Field) -> Value {
@@ -594,7 +767,24 @@ mod tests {
             Node::Language => set(Language::default(), f),
             Node::Target => set(Target::default(), f),
             Node::Library => set(Library::default(), f),
-            Node::ConfigurationSet | Node::Constraint | Node::TextList => {
+            Node::RtSystem => set(RtSystem::default(), f),
+            Node::SystemProperty => set(SystemProperty::default(), f),
+            Node::SubSystem => set(SubSystem::default(), f),
+            Node::SystemComponent => set(SystemComponent::default(), f),
+            Node::SystemPort => set(SystemPort::default(), f),
+            Node::SystemConfigurationSet => set(SystemConfigurationSet::default(), f),
+            Node::ConfigurationData => set(ConfigurationData::default(), f),
+            Node::ExecutionContext => set(ExecutionContext::default(), f),
+            Node::TargetComponent => set(TargetComponent::default(), f),
+            Node::Location => set(Location::default(), f),
+            Node::Group => set(Group::default(), f),
+            Node::PortEnd => set(PortEnd::default(), f),
+            Node::DataPortConnector => set(DataPortConnector::default(), f),
+            Node::ServicePortConnector => set(ServicePortConnector::default(), f),
+            Node::OrderTarget => set(OrderTarget::default(), f),
+            Node::WaitTime => set(WaitTime::default(), f),
+            Node::Preceding => set(Preceding::default(), f),
+            Node::ConfigurationSet | Node::Constraint | Node::TextList | Node::Order => {
                 panic!("{f:?} on a node without fields")
             }
         }

@@ -569,6 +569,36 @@ node! {
 }
 
 /// Which order a [`Order`] is (root elements `StartUp` … `Finalizing`).
+/// What both kinds of connector hold beside their scalars, for the readers (which read them
+/// alike).
+pub struct ConnectorParts<'a> {
+    pub source: &'a mut Option<PortEnd>,
+    pub target: &'a mut Option<PortEnd>,
+    pub properties: &'a mut Vec<SystemProperty>,
+    pub extra: &'a mut Vec<Extra>,
+}
+
+/// A data port connector or a service port connector.
+pub trait Connector {
+    fn parts_mut(&mut self) -> ConnectorParts<'_>;
+}
+
+macro_rules! connector {
+    ($($t:ty),*) => {$(
+        impl Connector for $t {
+            fn parts_mut(&mut self) -> ConnectorParts<'_> {
+                ConnectorParts {
+                    source: &mut self.source,
+                    target: &mut self.target,
+                    properties: &mut self.properties,
+                    extra: &mut self.extra,
+                }
+            }
+        }
+    )*};
+}
+connector!(DataPortConnector, ServicePortConnector);
+
 #[derive(
     Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize,
 )]

@@ -9,6 +9,7 @@
 
 use super::{each_item, root_reader, untag_ref, Reader};
 use crate::diagnostic::Diagnostic;
+use crate::model::fields::Fields;
 use crate::model::system::*;
 use crate::model::{Extra, Pos};
 use crate::parse::Limits;
@@ -35,7 +36,11 @@ pub(crate) fn parse(
         let (name, pos) = r.key(k);
         if name == ROOT {
             s.pos = pos;
-            system(&mut r, v, pos, &mut s);
+            if let Some(m) = r.map(v, ROOT, pos, &mut s.extra) {
+                // The root's unknown keys before `rtsProfile` stay first.
+                let before = std::mem::replace(&mut s, system(&mut r, m, pos));
+                s.extra.splice(0..0, before.extra);
+            }
         } else {
             r.unknown(&name, v, pos, "the document root", &mut s.extra);
         }
@@ -63,132 +68,83 @@ fn properties(
 }
 
 /// `rtsProfile`.
-fn system(r: &mut Reader, v: &Value, pos: Pos, s: &mut RtSystem) {
-    let Some(m) = r.map(v, ROOT, pos, &mut s.extra) else {
-        return;
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
+fn system(r: &mut Reader, m: &Mapping, pos: Pos) -> RtSystem {
+    let (mut s, _) = r.node(m, pos, |r, n, v, kp, s: &mut RtSystem| {
         let x = &mut s.extra;
-        match bare(&n) {
-            "id" => s.id = r.text(v, &n, kp, x),
-            "version" => s.version = r.text(v, &n, kp, x),
-            "abstract" => s.abstract_ = r.text(v, &n, kp, x),
-            "creationDate" => s.creation_date = r.date(v, &n, kp, x),
-            "updateDate" => s.update_date = r.date(v, &n, kp, x),
-            "comment" => s.comment = r.text(v, &n, kp, x),
-            "versionUpLogs" | "versionUpLog" => s.version_up_logs = r.texts(v, &n, kp, x),
-            "properties" | "property" => s.properties = properties(r, v, &n, kp, x),
-            "systems" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let mut sub = SubSystem {
-                        pos: ip,
-                        ..Default::default()
-                    };
-                    for (k, v) in m {
-                        let (n, kp) = r.key(k);
-                        match bare(&n) {
-                            "path" => sub.path = r.text(v, &n, kp, &mut sub.extra),
-                            _ => r.unknown(&n, v, kp, "a sub-system", &mut sub.extra),
-                        }
-                    }
-                    s.systems.push(sub);
-                });
-            }
-            "components" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let c = component(r, m, ip);
-                    s.components.push(c);
-                });
-            }
-            "groups" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let g = group(r, m, ip);
-                    s.groups.push(g);
-                });
-            }
+        match bare(n) {
+            "versionUpLogs" | "versionUpLog" => s.version_up_logs = r.texts(v, n, kp, x),
+            "properties" | "property" => s.properties = properties(r, v, n, kp, x),
+            "systems" => items(r, v, n, kp, x, &mut s.systems, |r, m, ip| {
+                r.leaf(m, ip, "a sub-system")
+            }),
+            "components" => items(r, v, n, kp, x, &mut s.components, component),
+            "groups" => items(r, v, n, kp, x, &mut s.groups, group),
             "dataPortConnectors" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let d = data_connector(r, m, ip);
-                    s.data_port_connectors.push(d);
-                });
+                items(r, v, n, kp, x, &mut s.data_port_connectors, |r, m, ip| {
+                    let ends = ["sourceDataPort", "targetDataPort"];
+                    let mut d: DataPortConnector =
+                        connector(r, m, ip, "a data port connector", ends);
+                    d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
+                    d
+                })
             }
-            "servicePortConnectors" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let c = service_connector(r, m, ip);
-                    s.service_port_connectors.push(c);
-                });
-            }
+            "servicePortConnectors" => items(
+                r,
+                v,
+                n,
+                kp,
+                x,
+                &mut s.service_port_connectors,
+                |r, m, ip| {
+                    let ends = ["sourceServicePort", "targetServicePort"];
+                    connector(r, m, ip, "a service port connector", ends)
+                },
+            ),
             other => match OrderKind::from_yaml_name(other) {
                 Some(kind) => {
-                    if let Some(m) = r.map(v, &n, kp, x) {
+                    if let Some(m) = r.map(v, n, kp, x) {
                         let o = order(r, m, kp, kind);
                         s.orders.push(o);
                     }
                 }
-                None => r.unknown(&n, v, kp, ROOT, x),
+                None => r.unknown(n, v, kp, ROOT, x),
             },
         }
-    }
+    });
     s.id_parts = s.id.as_deref().and_then(SystemIdParts::parse);
     s.orders.sort_by_key(|o| o.kind);
+    s
 }
 
 /// One item of `components`.
 fn component(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemComponent {
-    let mut c = SystemComponent {
-        pos,
-        ..Default::default()
-    };
     // Ports are named `<instance>.port`, and the instance name may come after the ports.
     let mut ports: Vec<(bool, SystemPort)> = Vec::new();
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
+    let (mut c, _) = r.node(m, pos, |r, n, v, kp, c: &mut SystemComponent| {
         let x = &mut c.extra;
-        match bare(&n) {
-            "id" => c.id = r.text(v, &n, kp, x),
-            "pathUri" => c.path_uri = r.text(v, &n, kp, x),
-            "activeConfigurationSet" => c.active_configuration_set = r.text(v, &n, kp, x),
-            "instanceName" => c.instance_name = r.text(v, &n, kp, x),
-            "compositeType" => c.composite_type = r.text(v, &n, kp, x),
-            "isRequired" => c.is_required = r.text(v, &n, kp, x),
-            "comment" => c.comment = r.text(v, &n, kp, x),
-            "visible" => c.visible = r.text(v, &n, kp, x),
+        match bare(n) {
             "dataPorts" | "servicePorts" => {
-                let data = bare(&n) == "dataPorts";
-                each_item(r, v, &n, kp, x, |r, m, ip| {
+                let data = bare(n) == "dataPorts";
+                each_item(r, v, n, kp, x, |r, m, ip| {
                     ports.push((data, port(r, m, ip)));
                 });
             }
-            "configurationSets" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let cs = config_set(r, m, ip);
-                    c.configuration_sets.push(cs);
-                });
-            }
+            "configurationSets" => items(r, v, n, kp, x, &mut c.configuration_sets, config_set),
             "executionContexts" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let e = execution_context(r, m, ip);
-                    c.execution_contexts.push(e);
-                });
+                items(r, v, n, kp, x, &mut c.execution_contexts, execution_context)
             }
-            "participants" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let t = participant(r, m, ip);
-                    c.participants.push(t);
-                });
-            }
+            "participants" => items(r, v, n, kp, x, &mut c.participants, participant),
             "location" => {
                 if c.location.is_some() {
-                    r.unknown(&n, v, kp, "a component instance", x);
-                } else if let Some(m) = r.map(v, &n, kp, x) {
-                    c.location = Some(location(r, m, kp));
+                    r.unknown(n, v, kp, "a component instance", x);
+                } else if let Some(m) = r.map(v, n, kp, x) {
+                    c.location = Some(r.leaf(m, kp, "a location"));
                 }
             }
-            "properties" | "property" => c.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "a component instance", x),
+            "properties" | "property" => c.properties = properties(r, v, n, kp, x),
+            _ => r.unknown(n, v, kp, "a component instance", x),
         }
-    }
+    });
     c.id_parts = c.id.as_deref().and_then(ComponentIdParts::parse);
     for (data, mut p) in ports {
         p.short_name = p
@@ -204,104 +160,102 @@ fn component(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemComponent {
     c
 }
 
+/// The `"rtsExt::properties"` of a node whose other keys are all scalars (in the field table);
+/// any other key is unknown in `place`.
+fn with_properties<T: Fields + Default>(
+    r: &mut Reader,
+    m: &Mapping,
+    pos: Pos,
+    place: &str,
+    properties_of: impl Fn(&mut T) -> &mut Vec<SystemProperty>,
+) -> T {
+    r.node(m, pos, |r, n, v, kp, t: &mut T| match bare(n) {
+        "properties" | "property" => {
+            let p = properties(r, v, n, kp, t.extra_mut());
+            *properties_of(t) = p;
+        }
+        _ => r.unknown(n, v, kp, place, t.extra_mut()),
+    })
+    .0
+}
+
 /// An item of `dataPorts` / `servicePorts` (`short_name` is set by the caller).
 fn port(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemPort {
-    let mut p = SystemPort {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut p.extra;
-        match bare(&n) {
-            "name" => p.name = r.text(v, &n, kp, x),
-            "comment" => p.comment = r.text(v, &n, kp, x),
-            "visible" => p.visible = r.text(v, &n, kp, x),
-            "properties" | "property" => p.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "a port", x),
-        }
-    }
-    p
+    with_properties(r, m, pos, "a port", |p: &mut SystemPort| &mut p.properties)
 }
 
 fn config_set(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemConfigurationSet {
-    let mut s = SystemConfigurationSet {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut s.extra;
-        match bare(&n) {
-            "id" => s.id = r.text(v, &n, kp, x),
-            "configurationData" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let mut d = ConfigurationData {
-                        pos: ip,
-                        ..Default::default()
-                    };
-                    for (k, v) in m {
-                        let (n, kp) = r.key(k);
-                        let dx = &mut d.extra;
-                        match bare(&n) {
-                            "name" => d.name = r.text(v, &n, kp, dx),
-                            "data" => d.data = r.text(v, &n, kp, dx),
-                            _ => r.unknown(&n, v, kp, "configuration data", dx),
-                        }
-                    }
-                    s.configuration_data.push(d);
-                });
-            }
-            _ => r.unknown(&n, v, kp, "a configuration set", x),
-        }
-    }
+    let place = "a configuration set";
+    let parts: ListParts<SystemConfigurationSet, _> = |s| (&mut s.configuration_data, &mut s.extra);
+    let mut s = with_list(r, m, pos, place, "configurationData", parts, |r, m, ip| {
+        r.leaf(m, ip, "configuration data")
+    });
     s.pseudo = s.id.as_deref().is_some_and(is_pseudo_set);
     s
 }
 
-fn execution_context(r: &mut Reader, m: &Mapping, pos: Pos) -> ExecutionContext {
-    let mut e = ExecutionContext {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut e.extra;
-        match bare(&n) {
-            "id" => e.id = r.text(v, &n, kp, x),
-            "kind" => e.kind = r.text(v, &n, kp, x),
-            "rate" => e.rate = r.text(v, &n, kp, x),
-            "participants" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let t = target(r, m, ip, "a participant");
-                    e.participants.push(t);
-                });
-            }
-            "properties" | "property" => e.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "an execution context", x),
+/// A list of a node and the node's extras.
+type ListParts<T, I> = fn(&mut T) -> (&mut Vec<I>, &mut Vec<Extra>);
+
+/// Reads mapping `m` (at `pos`) as the system node `T` whose only key beside its scalars (in
+/// the field table) is the list `key`: its items read by `read` into the list that `parts`
+/// gives with the node's extras. Any other key is unknown in `place`.
+fn with_list<T: Fields + Default, I>(
+    r: &mut Reader,
+    m: &Mapping,
+    pos: Pos,
+    place: &str,
+    key: &str,
+    parts: fn(&mut T) -> (&mut Vec<I>, &mut Vec<Extra>),
+    read: impl Fn(&mut Reader, &Mapping, Pos) -> I,
+) -> T {
+    r.node(m, pos, |r, n, v, kp, t: &mut T| {
+        let (list, x) = parts(t);
+        if bare(n) == key {
+            items(r, v, n, kp, x, list, &read);
+        } else {
+            r.unknown(n, v, kp, place, x);
         }
-    }
-    e
+    })
+    .0
+}
+
+/// The mapping items of list `v` (key `n` at `kp`) read by `read` onto `list`; the other
+/// items go to `sink`.
+fn items<I>(
+    r: &mut Reader,
+    v: &Value,
+    n: &str,
+    kp: Pos,
+    sink: &mut Vec<Extra>,
+    list: &mut Vec<I>,
+    read: impl Fn(&mut Reader, &Mapping, Pos) -> I,
+) {
+    each_item(r, v, n, kp, sink, |r, m, ip| {
+        let item = read(r, m, ip);
+        list.push(item);
+    });
+}
+
+fn execution_context(r: &mut Reader, m: &Mapping, pos: Pos) -> ExecutionContext {
+    r.node(m, pos, |r, n, v, kp, e: &mut ExecutionContext| {
+        let x = &mut e.extra;
+        match bare(n) {
+            "participants" => items(r, v, n, kp, x, &mut e.participants, |r, m, ip| {
+                target(r, m, ip, "a participant")
+            }),
+            "properties" | "property" => e.properties = properties(r, v, n, kp, x),
+            _ => r.unknown(n, v, kp, "an execution context", x),
+        }
+    })
+    .0
 }
 
 /// A target component: `componentId`, `instanceName`, `id`, `"rtsExt::properties"`.
 fn target(r: &mut Reader, m: &Mapping, pos: Pos, place: &str) -> TargetComponent {
-    let mut t = TargetComponent {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut t.extra;
-        match bare(&n) {
-            "componentId" => t.component_id = r.text(v, &n, kp, x),
-            "instanceName" => t.instance_name = r.text(v, &n, kp, x),
-            "id" => t.id = r.text(v, &n, kp, x),
-            "properties" | "property" => t.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, place, x),
-        }
-    }
-    t
+    with_properties(r, m, pos, place, |t: &mut TargetComponent| {
+        &mut t.properties
+    })
 }
 
 /// An item of a composite's `participants`: `{participant: target}` (also a bare target).
@@ -328,66 +282,19 @@ fn participant(r: &mut Reader, m: &Mapping, pos: Pos) -> TargetComponent {
     t
 }
 
-fn location(r: &mut Reader, m: &Mapping, pos: Pos) -> Location {
-    let mut l = Location {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut l.extra;
-        match bare(&n) {
-            "x" => l.x = r.text(v, &n, kp, x),
-            "y" => l.y = r.text(v, &n, kp, x),
-            "height" => l.height = r.text(v, &n, kp, x),
-            "width" => l.width = r.text(v, &n, kp, x),
-            "direction" => l.direction = r.text(v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "a location", x),
-        }
-    }
-    l
-}
-
 fn group(r: &mut Reader, m: &Mapping, pos: Pos) -> Group {
-    let mut g = Group {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut g.extra;
-        match bare(&n) {
-            "groupId" | "groupID" => g.group_id = r.text(v, &n, kp, x),
-            "members" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let t = target(r, m, ip, "a group member");
-                    g.members.push(t);
-                });
-            }
-            _ => r.unknown(&n, v, kp, "a group", x),
-        }
-    }
-    g
+    let parts: ListParts<Group, _> = |g| (&mut g.members, &mut g.extra);
+    with_list(r, m, pos, "a group", "members", parts, |r, m, ip| {
+        target(r, m, ip, "a group member")
+    })
 }
 
 /// A connector end: `componentId`, `instanceName`, `portName`, `"rtsExt::properties"`.
 fn end(r: &mut Reader, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<PortEnd> {
     let m = r.map(v, name, pos, sink)?;
-    let mut e = PortEnd {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut e.extra;
-        match bare(&n) {
-            "componentId" => e.component_id = r.text(v, &n, kp, x),
-            "instanceName" => e.instance_name = r.text(v, &n, kp, x),
-            "portName" => e.port_name = r.text(v, &n, kp, x),
-            "properties" | "property" => e.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "a connector end", x),
-        }
-    }
+    let mut e = with_properties(r, m, pos, "a connector end", |e: &mut PortEnd| {
+        &mut e.properties
+    });
     e.short_name = e
         .port_name
         .as_deref()
@@ -395,170 +302,95 @@ fn end(r: &mut Reader, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -
     Some(e)
 }
 
-fn data_connector(r: &mut Reader, m: &Mapping, pos: Pos) -> DataPortConnector {
-    let mut d = DataPortConnector {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut d.extra;
-        match bare(&n) {
-            "connectorId" => d.connector_id = r.text(v, &n, kp, x),
-            "name" => d.name = r.text(v, &n, kp, x),
-            "dataType" => d.data_type = r.text(v, &n, kp, x),
-            "interfaceType" => d.interface_type = r.text(v, &n, kp, x),
-            "dataflowType" => d.dataflow_type = r.text(v, &n, kp, x),
-            "subscriptionType" => d.subscription_type = r.text(v, &n, kp, x),
-            "pushInterval" => d.push_interval = r.text(v, &n, kp, x),
-            "comment" => d.comment = r.text(v, &n, kp, x),
-            "visible" => d.visible = r.text(v, &n, kp, x),
-            "sourceDataPort" => d.source = end(r, v, &n, kp, x),
-            "targetDataPort" => d.target = end(r, v, &n, kp, x),
-            "properties" | "property" => d.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "a data port connector", x),
+/// A connector (`place`): its scalars by the field table, its two ends (keys `ends`, source
+/// first) and properties.
+fn connector<T: Fields + Default + Connector>(
+    r: &mut Reader,
+    m: &Mapping,
+    pos: Pos,
+    place: &str,
+    ends: [&str; 2],
+) -> T {
+    r.node(m, pos, |r, n, v, kp, t: &mut T| {
+        let p = t.parts_mut();
+        match bare(n) {
+            k if k == ends[0] => *p.source = end(r, v, n, kp, p.extra),
+            k if k == ends[1] => *p.target = end(r, v, n, kp, p.extra),
+            "properties" | "property" => *p.properties = properties(r, v, n, kp, p.extra),
+            _ => r.unknown(n, v, kp, place, p.extra),
         }
-    }
-    d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
-    d
-}
-
-fn service_connector(r: &mut Reader, m: &Mapping, pos: Pos) -> ServicePortConnector {
-    let mut s = ServicePortConnector {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut s.extra;
-        match bare(&n) {
-            "connectorId" => s.connector_id = r.text(v, &n, kp, x),
-            "name" => s.name = r.text(v, &n, kp, x),
-            "transMethod" => s.trans_method = r.text(v, &n, kp, x),
-            "comment" => s.comment = r.text(v, &n, kp, x),
-            "visible" => s.visible = r.text(v, &n, kp, x),
-            "sourceServicePort" => s.source = end(r, v, &n, kp, x),
-            "targetServicePort" => s.target = end(r, v, &n, kp, x),
-            "properties" | "property" => s.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "a service port connector", x),
-        }
-    }
-    s
+    })
+    .0
 }
 
 /// `startUp`, `shutDown`, …: `{targets: [...]}`.
 fn order(r: &mut Reader, m: &Mapping, pos: Pos, kind: OrderKind) -> Order {
-    let mut o = Order {
-        kind,
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut o.extra;
-        match bare(&n) {
-            "targets" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let t = order_target(r, m, ip);
-                    o.targets.push(t);
-                });
-            }
-            _ => r.unknown(&n, v, kp, kind.yaml_name(), x),
-        }
-    }
+    let parts: ListParts<Order, _> = |o| (&mut o.targets, &mut o.extra);
+    let mut o = with_list(r, m, pos, kind.yaml_name(), "targets", parts, order_target);
+    o.kind = kind;
     o
 }
 
 /// A target: `sequence`, `targetComponent`, `condition: {waitTime: {waitTime}}` or
 /// `condition: {preceding: {timeout, sendingTiming, precedingComponents}}`.
 fn order_target(r: &mut Reader, m: &Mapping, pos: Pos) -> OrderTarget {
-    let mut t = OrderTarget {
-        pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
+    r.node(m, pos, |r, n, v, kp, t: &mut OrderTarget| {
         let x = &mut t.extra;
-        match bare(&n) {
-            "sequence" => t.sequence = r.text(v, &n, kp, x),
+        match bare(n) {
             "targetComponent" => {
-                if let Some(m) = r.map(v, &n, kp, x) {
+                if let Some(m) = r.map(v, n, kp, x) {
                     t.target_component = Some(target(r, m, kp, "a target component"));
                 }
             }
             "condition" => {
-                let Some(cm) = r.map(v, &n, kp, x) else {
-                    continue;
-                };
-                for (k, v) in cm {
-                    let (cn, ckp) = r.key(k);
-                    match bare(&cn) {
-                        "waitTime" if t.wait_time.is_none() => {
-                            t.wait_time = wait_time(r, v, &cn, ckp, &mut t.extra)
-                        }
-                        "preceding" if t.preceding.is_none() => {
-                            if let Some(pm) = r.map(v, &cn, ckp, &mut t.extra) {
-                                t.preceding = Some(preceding(r, pm, ckp));
-                            }
-                        }
-                        _ => r.unknown(&cn, v, ckp, "a condition", &mut t.extra),
-                    }
+                if let Some(cm) = r.map(v, n, kp, x) {
+                    condition(r, cm, t);
                 }
             }
-            "properties" | "property" => t.properties = properties(r, v, &n, kp, x),
-            _ => r.unknown(&n, v, kp, "an order target", x),
+            "properties" | "property" => t.properties = properties(r, v, n, kp, x),
+            _ => r.unknown(n, v, kp, "an order target", x),
         }
-    }
-    t
+    })
+    .0
 }
 
-/// `waitTime: {waitTime: N}` (rtsprofile); a bare `waitTime: N` is accepted too.
-fn wait_time(
-    r: &mut Reader,
-    v: &Value,
-    name: &str,
-    pos: Pos,
-    sink: &mut Vec<Extra>,
-) -> Option<WaitTime> {
-    let mut w = WaitTime {
-        pos,
-        ..Default::default()
-    };
-    match untag_ref(v) {
-        Value::Mapping(m) => {
-            for (k, v) in m {
-                let (n, kp) = r.key(k);
-                match bare(&n) {
-                    "waitTime" => w.wait_time = r.text(v, &n, kp, &mut w.extra),
-                    _ => r.unknown(&n, v, kp, "a wait time", &mut w.extra),
+/// The `condition` of an order target, read into `t`: `waitTime: {waitTime: N}` (rtsprofile; a
+/// bare `waitTime: N` is accepted too) or `preceding: {…}`.
+fn condition(r: &mut Reader, cm: &Mapping, t: &mut OrderTarget) {
+    for (k, v) in cm {
+        let (cn, ckp) = r.key(k);
+        match (bare(&cn), untag_ref(v)) {
+            ("waitTime", Value::Mapping(m)) if t.wait_time.is_none() => {
+                t.wait_time = Some(r.leaf(m, ckp, "a wait time"))
+            }
+            ("waitTime", Value::Null) if t.wait_time.is_none() => {}
+            ("waitTime", _) if t.wait_time.is_none() => {
+                let wait_time = r.text(v, &cn, ckp, &mut t.extra);
+                t.wait_time = Some(WaitTime {
+                    wait_time,
+                    pos: ckp,
+                    ..Default::default()
+                })
+            }
+            ("preceding", _) if t.preceding.is_none() => {
+                if let Some(pm) = r.map(v, &cn, ckp, &mut t.extra) {
+                    t.preceding = Some(preceding(r, pm, ckp));
                 }
             }
+            _ => r.unknown(&cn, v, ckp, "a condition", &mut t.extra),
         }
-        Value::Null => return None,
-        _ => w.wait_time = r.text(v, name, pos, sink),
     }
-    Some(w)
 }
 
 fn preceding(r: &mut Reader, m: &Mapping, pos: Pos) -> Preceding {
-    let mut p = Preceding {
+    let parts: ListParts<Preceding, _> = |p| (&mut p.preceding_components, &mut p.extra);
+    with_list(
+        r,
+        m,
         pos,
-        ..Default::default()
-    };
-    for (k, v) in m {
-        let (n, kp) = r.key(k);
-        let x = &mut p.extra;
-        match bare(&n) {
-            "timeout" => p.timeout = r.text(v, &n, kp, x),
-            "sendingTiming" => p.sending_timing = r.text(v, &n, kp, x),
-            "precedingComponents" => {
-                each_item(r, v, &n, kp, x, |r, m, ip| {
-                    let c = target(r, m, ip, "a preceding component");
-                    p.preceding_components.push(c);
-                });
-            }
-            _ => r.unknown(&n, v, kp, "a preceding condition", x),
-        }
-    }
-    p
+        "a preceding condition",
+        "precedingComponents",
+        parts,
+        |r, m, ip| target(r, m, ip, "a preceding component"),
+    )
 }

@@ -622,6 +622,8 @@ struct Reader<'a> {
 
 /// Keys of one node read under an older spelling: (field, key as written, position, writer).
 type Aliases = Vec<(&'static str, String, Pos, &'static str)>;
+/// The `"rtcExt::properties"`, the `"rtcDoc::doc"` and the extras of a node (a port, …).
+type DocParts<T, D> = fn(&mut T) -> (&mut Vec<Property>, &mut Option<D>, &mut Vec<Extra>);
 
 /// rtc-template writes `doc` for `"rtcDoc::doc"`: recorded in `al`.
 fn doc_alias(n: &str, kp: Pos, al: &mut Aliases) {
@@ -1284,89 +1286,115 @@ impl Reader<'_> {
 
     /// A configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
     fn configuration(&mut self, m: &Mapping, pos: Pos) -> Configuration {
-        let (c, al) = self.node(m, pos, |r, n, v, kp, c: &mut Configuration| {
-            let x = &mut c.extra;
-            match n {
-                "constraint" => c.constraint = r.constraint_root(v, kp, x),
-                "rtcExt::property" | "rtcExt::properties" => {
-                    c.properties = r.properties(v, n, kp, x)
-                }
-                "rtcDoc::doc" | "doc" => {
-                    c.doc = r.doc(v, n, kp, x, "a configuration's rtcDoc::doc")
-                }
-                _ => r.unknown(n, v, kp, "a configuration", x),
-            }
-        });
-        self.flush(
-            &format!("configuration {}", c.name.as_deref().unwrap_or("")),
-            al,
-        );
-        c
+        self.documented(
+            m,
+            pos,
+            "a configuration",
+            "configuration",
+            |c| (&mut c.properties, &mut c.doc, &mut c.extra),
+            |r, n, v, kp, c| r.constraint_key(n, v, kp, &mut c.constraint, &mut c.extra),
+        )
     }
 
     /// A data port (spec 2.3.7, 2.4.5/2.4.6 doc, 2.5.3 ext).
     fn data_port(&mut self, m: &Mapping, pos: Pos) -> DataPort {
-        let (d, al) = self.node(m, pos, |r, n, v, kp, d: &mut DataPort| {
-            let x = &mut d.extra;
-            match n {
-                "constraint" => d.constraint = r.constraint_root(v, kp, x),
-                "rtcExt::property" | "rtcExt::properties" => {
-                    d.properties = r.properties(v, n, kp, x)
-                }
-                "rtcDoc::doc" | "doc" => d.doc = r.doc(v, n, kp, x, "a data port's rtcDoc::doc"),
-                _ => r.unknown(n, v, kp, "a data port", x),
-            }
-        });
-        self.flush(&format!("dataPort {}", d.name.as_deref().unwrap_or("")), al);
-        d
+        self.documented(
+            m,
+            pos,
+            "a data port",
+            "dataPort",
+            |d| (&mut d.properties, &mut d.doc, &mut d.extra),
+            |r, n, v, kp, d| r.constraint_key(n, v, kp, &mut d.constraint, &mut d.extra),
+        )
     }
 
     /// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
     fn service_port(&mut self, m: &Mapping, pos: Pos) -> ServicePort {
-        let (s, al) = self.node(m, pos, |r, n, v, kp, s: &mut ServicePort| {
-            let x = &mut s.extra;
-            match n {
-                "rtcExt::property" | "rtcExt::properties" => {
-                    s.properties = r.properties(v, n, kp, x)
+        self.documented(
+            m,
+            pos,
+            "a service port",
+            "servicePort",
+            |s| (&mut s.properties, &mut s.doc, &mut s.extra),
+            |r, n, v, kp, s| {
+                let x = &mut s.extra;
+                match n {
+                    "transMethod" | "transMethods" => each_item(r, v, n, kp, x, |r, m, ip| {
+                        s.trans_methods.push(r.leaf(m, ip, "a transMethod"))
+                    }),
+                    "serviceInterface" | "serviceInterfaces" => {
+                        each_item(r, v, n, kp, x, |r, m, ip| {
+                            s.interfaces.push(r.service_interface(m, ip))
+                        })
+                    }
+                    _ => return false,
                 }
-                "transMethod" | "transMethods" => each_item(r, v, n, kp, x, |r, m, ip| {
-                    s.trans_methods.push(r.leaf(m, ip, "a transMethod"))
-                }),
-                "serviceInterface" | "serviceInterfaces" => {
-                    each_item(r, v, n, kp, x, |r, m, ip| {
-                        s.interfaces.push(r.service_interface(m, ip))
-                    })
-                }
-                "rtcDoc::doc" | "doc" => s.doc = r.doc(v, n, kp, x, "a service port's rtcDoc::doc"),
-                _ => r.unknown(n, v, kp, "a service port", x),
-            }
-        });
-        self.flush(
-            &format!("servicePort {}", s.name.as_deref().unwrap_or("")),
-            al,
-        );
-        s
+                true
+            },
+        )
     }
 
     /// A service interface (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
     fn service_interface(&mut self, m: &Mapping, pos: Pos) -> ServiceInterface {
-        let (i, al) = self.node(m, pos, |r, n, v, kp, i: &mut ServiceInterface| {
-            let x = &mut i.extra;
+        self.documented(
+            m,
+            pos,
+            "a service interface",
+            "serviceInterface",
+            |i| (&mut i.properties, &mut i.doc, &mut i.extra),
+            |_, _, _, _, _| false,
+        )
+    }
+
+    /// Key `n` when it is `constraint` (of a configuration or a data port): read into `slot`.
+    fn constraint_key(
+        &mut self,
+        n: &str,
+        v: &Value,
+        kp: Pos,
+        slot: &mut Option<Constraint>,
+        x: &mut Vec<Extra>,
+    ) -> bool {
+        let constraint = n == "constraint";
+        if constraint {
+            *slot = self.constraint_root(v, kp, x);
+        }
+        constraint
+    }
+
+    /// Reads mapping `m` (at `pos`) as the node `T` of the field table that holds
+    /// `"rtcExt::properties"` and an `"rtcDoc::doc"` (given by `parts` with its extras) beside
+    /// its scalars; any other key by `other` (false: unknown in `place`, `a data port`). Its
+    /// older spellings are recorded as `label name` (`dataPort out`).
+    fn documented<T: Fields + Default, D: Fields + Default>(
+        &mut self,
+        m: &Mapping,
+        pos: Pos,
+        place: &str,
+        label: &str,
+        parts: DocParts<T, D>,
+        mut other: impl FnMut(&mut Self, &str, &Value, Pos, &mut T) -> bool,
+    ) -> T {
+        let (t, al) = self.node(m, pos, |r, n, v, kp, t: &mut T| {
+            if other(r, n, v, kp, t) {
+                return;
+            }
+            let (properties, doc, x) = parts(t);
             match n {
                 "rtcExt::property" | "rtcExt::properties" => {
-                    i.properties = r.properties(v, n, kp, x)
+                    *properties = r.properties(v, n, kp, x)
                 }
                 "rtcDoc::doc" | "doc" => {
-                    i.doc = r.doc(v, n, kp, x, "a service interface's rtcDoc::doc")
+                    *doc = r.doc(v, n, kp, x, &format!("{place}'s rtcDoc::doc"))
                 }
-                _ => r.unknown(n, v, kp, "a service interface", x),
+                _ => r.unknown(n, v, kp, place, x),
             }
         });
-        self.flush(
-            &format!("serviceInterface {}", i.name.as_deref().unwrap_or("")),
-            al,
-        );
-        i
+        let name = T::NODE
+            .json_field("name")
+            .and_then(|f| t.value(f)?.as_deref());
+        self.flush(&format!("{label} {}", name.unwrap_or("")), al);
+        t
     }
 
     /// A system parameter (spec 2.3.11, 5.4).

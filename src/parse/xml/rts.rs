@@ -9,8 +9,9 @@
 
 use super::{attr_extra, build_any_tree, decode, node_extra, Attr, Mapper, Node, Ns};
 use crate::diagnostic::{codes, Diagnostic};
+use crate::model::fields::Fields;
 use crate::model::system::*;
-use crate::model::{Extra, Text};
+use crate::model::{Extra, Located, Pos};
 use crate::parse::Limits;
 
 /// Namespace URI of the basic system profile (`RtsProfile.xsd`).
@@ -79,44 +80,74 @@ fn ns_note(ns: &Ns) -> String {
 }
 
 fn unknown_attr(m: &mut Mapper, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
-    m.warn(
-        a.pos,
-        format!(
-            "unknown attribute `{}`{} on {on}; kept as an extra property",
-            a.qname,
-            ns_note(&a.ns)
-        ),
-    );
-    extra.push(attr_extra(a));
+    let what = format!("attribute `{}`{} on {on}", a.qname, ns_note(&a.ns));
+    keep(m, a.pos, &what, attr_extra(a), extra);
 }
 
 fn unknown_elem(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) {
-    m.warn(
-        n.pos,
-        format!(
-            "unknown element `{}`{} in {on}; kept as an extra property",
-            n.qname,
-            ns_note(&n.ns)
-        ),
-    );
-    extra.push(node_extra(n));
+    let what = format!("element `{}`{} in {on}", n.qname, ns_note(&n.ns));
+    keep(m, n.pos, &what, node_extra(n), extra);
 }
 
-/// Reads the attributes of `n` into the `slots` named by local name, and reports the others.
-fn attrs(
-    m: &mut Mapper,
-    n: &Node,
-    on: &str,
-    extra: &mut Vec<Extra>,
-    slots: &mut [(&str, &mut Option<Text>)],
-) {
+/// Something unknown (`what`): warned about and kept as extra `e`.
+fn keep(m: &mut Mapper, pos: Pos, what: &str, e: Extra, extra: &mut Vec<Extra>) {
+    m.warn(pos, format!("unknown {what}; kept as an extra property"));
+    extra.push(e);
+}
+
+/// A new node `T` at element `n` with the attributes the field table lists for `T` (any
+/// namespace of the system profile); every other attribute is unknown on `on`.
+fn attrs<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) -> T {
+    let mut t = T::default();
+    *t.pos_mut() = n.pos;
     for a in &n.attrs {
-        let key = akey(a);
-        match slots.iter_mut().find(|(name, _)| Some(*name) == key) {
-            Some((_, slot)) => m.set(slot, a, on, extra),
+        let def = akey(a).and_then(|k| T::NODE.xml(k));
+        match def.and_then(|(d, _)| t.slot(d.field)) {
+            Some(slot) => m.set(slot, a, on, extra),
             None => unknown_attr(m, a, on, extra),
         }
     }
+    t
+}
+
+/// The child elements of `n` read into `t` by `child` (given each one's local name; false for
+/// one it does not know, kept in `extra` and reported in `on`), then its stray text; `extra`
+/// becomes `t`'s.
+fn children<T: Located>(
+    m: &mut Mapper,
+    n: &Node,
+    on: &str,
+    mut t: T,
+    mut extra: Vec<Extra>,
+    mut child: impl FnMut(&mut Mapper, &Node, &str, &mut T, &mut Vec<Extra>) -> bool,
+) -> T {
+    for c in &n.children {
+        if !ekey(c).is_some_and(|k| child(m, c, k, &mut t, &mut extra)) {
+            unknown_elem(m, c, on, &mut extra);
+        }
+    }
+    m.stray_text(n, on, &mut extra);
+    *t.extra_mut() = extra;
+    t
+}
+
+/// Element `n` as the node `T` of the field table (attributes only, no child elements defined).
+fn leaf<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str) -> T {
+    let mut extra = Vec::new();
+    let t = attrs(m, n, on, &mut extra);
+    children(m, n, on, t, extra, |_, _, _, _, _| false)
+}
+
+/// Element `n` as the node `T` of the field table, each child element by `child`.
+fn node<T: Fields + Default>(
+    m: &mut Mapper,
+    n: &Node,
+    on: &str,
+    child: impl FnMut(&mut Mapper, &Node, &str, &mut T, &mut Vec<Extra>) -> bool,
+) -> T {
+    let mut extra = Vec::new();
+    let t = attrs(m, n, on, &mut extra);
+    children(m, n, on, t, extra, child)
 }
 
 // --- mapping -----------------------------------------------------------------------------------
@@ -124,256 +155,115 @@ fn attrs(
 /// `rts:RtsProfile`.
 fn map_system(m: &mut Mapper, n: &Node) -> RtSystem {
     let on = "RtsProfile";
-    let mut s = RtSystem {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("id", &mut s.id),
-            ("version", &mut s.version),
-            ("abstract", &mut s.abstract_),
-            ("creationDate", &mut s.creation_date),
-            ("updateDate", &mut s.update_date),
-            ("comment", &mut s.comment),
-        ],
-    );
-    s.id_parts = s.id.as_deref().and_then(SystemIdParts::parse);
-    for c in &n.children {
-        match ekey(c) {
-            Some("Components") => s.components.push(map_component(m, c)),
-            Some("Groups") => s.groups.push(map_group(m, c)),
-            Some("DataPortConnectors") => s.data_port_connectors.push(map_data_connector(m, c)),
-            Some("ServicePortConnectors") => {
-                s.service_port_connectors.push(map_service_connector(m, c))
-            }
+    let mut s = node::<RtSystem>(m, n, on, |m, c, k, s, extra| {
+        match k {
+            "Components" => s.components.push(map_component(m, c)),
+            "Groups" => s.groups.push(map_group(m, c)),
+            "DataPortConnectors" => s.data_port_connectors.push(map_data_connector(m, c)),
+            "ServicePortConnectors" => s.service_port_connectors.push(map_service_connector(m, c)),
             // RtsProfile_ext writes `VersionUpLogs`; rtsprofile (Python) reads `VersionUpLog`.
-            Some("VersionUpLogs" | "VersionUpLog") => {
-                let t = m.text_of(c, on, &mut extra);
+            "VersionUpLogs" | "VersionUpLog" => {
+                let t = m.text_of(c, on, extra);
                 if !t.trim().is_empty() {
                     s.version_up_logs.push(t);
                 }
             }
-            Some("Properties") => s.properties.push(map_property(m, c)),
-            Some("Systems") => s.systems.push(map_subsystem(m, c)),
+            "Properties" => s.properties.push(map_property(m, c)),
+            "Systems" => s.systems.push(leaf(m, c, "Systems")),
             // Each order at most once (the XSD's maxOccurs="1").
-            Some(k) => match OrderKind::from_xml_name(k) {
+            k => match OrderKind::from_xml_name(k) {
                 Some(kind) if s.orders.iter().any(|o| o.kind == kind) => {
-                    m.repeated_elem(c, on, &mut extra)
+                    m.repeated_elem(c, on, extra)
                 }
                 Some(kind) => s.orders.push(map_order(m, c, kind)),
-                None => unknown_elem(m, c, on, &mut extra),
+                None => return false,
             },
-            None => unknown_elem(m, c, on, &mut extra),
         }
-    }
-    m.stray_text(n, on, &mut extra);
+        true
+    });
+    s.id_parts = s.id.as_deref().and_then(SystemIdParts::parse);
     s.orders.sort_by_key(|o| o.kind);
-    s.extra = extra;
     s
 }
 
 /// `rtsExt:Properties(name, value)`.
 fn map_property(m: &mut Mapper, n: &Node) -> SystemProperty {
-    let on = "property";
-    let (mut name, mut value) = (None, None);
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [("name", &mut name), ("value", &mut value)],
-    );
-    leaf(m, n, on, &mut extra);
-    SystemProperty::new(name, value, n.pos, extra)
+    let p: SystemProperty = leaf(m, n, "property");
+    SystemProperty::new(p.name, p.value, p.pos, p.extra)
 }
 
-/// The children and text of an element that has none defined.
-fn leaf(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) {
-    for c in &n.children {
-        unknown_elem(m, c, on, extra);
+/// `rtsExt:Properties` children: the one element every system node but a few may hold.
+fn property(m: &mut Mapper, c: &Node, k: &str, properties: &mut Vec<SystemProperty>) -> bool {
+    if k != "Properties" {
+        return false;
     }
-    m.stray_text(n, on, extra);
-}
-
-/// `rtsExt:Systems(path)`.
-fn map_subsystem(m: &mut Mapper, n: &Node) -> SubSystem {
-    let on = "Systems";
-    let mut s = SubSystem {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    let mut path = None;
-    attrs(m, n, on, &mut extra, &mut [("path", &mut path)]);
-    s.path = path;
-    leaf(m, n, on, &mut extra);
-    s.extra = extra;
-    s
+    properties.push(map_property(m, c));
+    true
 }
 
 /// `rts:Components`: one component instance.
 fn map_component(m: &mut Mapper, n: &Node) -> SystemComponent {
-    let mut c = SystemComponent {
-        pos: n.pos,
-        ..Default::default()
-    };
     let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        "component instance",
-        &mut extra,
-        &mut [
-            ("id", &mut c.id),
-            ("pathUri", &mut c.path_uri),
-            ("activeConfigurationSet", &mut c.active_configuration_set),
-            ("instanceName", &mut c.instance_name),
-            ("compositeType", &mut c.composite_type),
-            ("isRequired", &mut c.is_required),
-            ("comment", &mut c.comment),
-            ("visible", &mut c.visible),
-        ],
-    );
+    let mut c: SystemComponent = attrs(m, n, "component instance", &mut extra);
     c.id_parts = c.id.as_deref().and_then(ComponentIdParts::parse);
     let on = format!(
         "component instance `{}`",
         c.instance_name.as_deref().unwrap_or("")
     );
     let instance = c.instance_name.clone();
-    for ch in &n.children {
-        match ekey(ch) {
-            Some("DataPorts") => {
-                c.data_ports
-                    .push(map_port(m, ch, "data port", instance.as_deref()))
-            }
-            Some("ServicePorts") => {
-                c.service_ports
-                    .push(map_port(m, ch, "service port", instance.as_deref()))
-            }
-            Some("ConfigurationSets") => c.configuration_sets.push(map_config_set(m, ch)),
-            Some("ExecutionContexts") => c.execution_contexts.push(map_ec(m, ch)),
-            Some("Participants") => c.participants.push(map_participant(m, ch)),
-            Some("Location") if c.location.is_none() => c.location = Some(map_location(m, ch)),
-            Some("Location") => m.repeated_elem(ch, &on, &mut extra),
-            Some("Properties") => c.properties.push(map_property(m, ch)),
-            _ => unknown_elem(m, ch, &on, &mut extra),
+    let instance = instance.as_deref();
+    children(m, n, &on, c, extra, |m, ch, k, c, extra| {
+        match k {
+            "DataPorts" => c.data_ports.push(map_port(m, ch, "data port", instance)),
+            "ServicePorts" => c
+                .service_ports
+                .push(map_port(m, ch, "service port", instance)),
+            "ConfigurationSets" => c.configuration_sets.push(map_config_set(m, ch)),
+            "ExecutionContexts" => c.execution_contexts.push(map_ec(m, ch)),
+            "Participants" => c.participants.push(map_participant(m, ch)),
+            "Location" if c.location.is_none() => c.location = Some(leaf(m, ch, "location")),
+            "Location" => m.repeated_elem(ch, &on, extra),
+            _ => return property(m, ch, k, &mut c.properties),
         }
-    }
-    m.stray_text(n, &on, &mut extra);
-    c.extra = extra;
-    c
+        true
+    })
 }
 
 /// `rts:DataPorts` / `rts:ServicePorts` of an instance.
 fn map_port(m: &mut Mapper, n: &Node, on: &str, instance: Option<&str>) -> SystemPort {
-    let mut p = SystemPort {
-        pos: n.pos,
-        ..Default::default()
-    };
     let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("name", &mut p.name),
-            ("comment", &mut p.comment),
-            ("visible", &mut p.visible),
-        ],
-    );
+    let mut p: SystemPort = attrs(m, n, on, &mut extra);
     p.short_name = p
         .name
         .as_deref()
         .map(|s| short_port_name(s, instance).into());
-    for c in &n.children {
-        match ekey(c) {
-            Some("Properties") => p.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
-    p.extra = extra;
-    p
+    children(m, n, on, p, extra, |m, c, k, p, _| {
+        property(m, c, k, &mut p.properties)
+    })
 }
 
 /// `rts:ConfigurationSets` → `rts:ConfigurationData`.
 fn map_config_set(m: &mut Mapper, n: &Node) -> SystemConfigurationSet {
-    let on = "configuration set";
-    let mut s = SystemConfigurationSet {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    let mut id = None;
-    attrs(m, n, on, &mut extra, &mut [("id", &mut id)]);
-    s.pseudo = id.as_deref().is_some_and(is_pseudo_set);
-    s.id = id;
-    for c in &n.children {
-        match ekey(c) {
-            Some("ConfigurationData") => {
-                let don = "configuration data";
-                let (mut name, mut data) = (None, None);
-                let mut dx = Vec::new();
-                attrs(
-                    m,
-                    c,
-                    don,
-                    &mut dx,
-                    &mut [("name", &mut name), ("data", &mut data)],
-                );
-                leaf(m, c, don, &mut dx);
-                s.configuration_data.push(ConfigurationData {
-                    name,
-                    data,
-                    pos: c.pos,
-                    extra: dx,
-                });
-            }
-            _ => unknown_elem(m, c, on, &mut extra),
+    let mut s = node::<SystemConfigurationSet>(m, n, "configuration set", |m, c, k, s, _| {
+        let data = k == "ConfigurationData";
+        if data {
+            s.configuration_data.push(leaf(m, c, "configuration data"));
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    s.extra = extra;
+        data
+    });
+    s.pseudo = s.id.as_deref().is_some_and(is_pseudo_set);
     s
 }
 
 /// `rts:ExecutionContexts(id, kind, rate)` → `Participants`, `rtsExt:Properties`.
 fn map_ec(m: &mut Mapper, n: &Node) -> ExecutionContext {
-    let on = "execution context";
-    let mut e = ExecutionContext {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("id", &mut e.id),
-            ("kind", &mut e.kind),
-            ("rate", &mut e.rate),
-        ],
-    );
-    for c in &n.children {
-        match ekey(c) {
-            Some("Participants") => e.participants.push(map_target(m, c, "participant")),
-            Some("Properties") => e.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, on, &mut extra),
+    node::<ExecutionContext>(m, n, "execution context", |m, c, k, e, _| match k {
+        "Participants" => {
+            e.participants.push(map_target(m, c, "participant"));
+            true
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    e.extra = extra;
-    e
+        _ => property(m, c, k, &mut e.properties),
+    })
 }
 
 /// `rts:Participants` of a composite instance: a `Participant` child holding the target (the
@@ -405,116 +295,31 @@ fn map_participant(m: &mut Mapper, n: &Node) -> TargetComponent {
 
 /// A target component (`componentId`, `instanceName`, `id`) with its `rtsExt:Properties`.
 fn map_target(m: &mut Mapper, n: &Node, on: &str) -> TargetComponent {
-    let mut t = TargetComponent {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("componentId", &mut t.component_id),
-            ("instanceName", &mut t.instance_name),
-            ("id", &mut t.id),
-        ],
-    );
-    for c in &n.children {
-        match ekey(c) {
-            Some("Properties") => t.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
-    t.extra = extra;
-    t
-}
-
-/// `rtsExt:Location(x, y, height, width, direction)`.
-fn map_location(m: &mut Mapper, n: &Node) -> Location {
-    let on = "location";
-    let mut l = Location {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("x", &mut l.x),
-            ("y", &mut l.y),
-            ("height", &mut l.height),
-            ("width", &mut l.width),
-            ("direction", &mut l.direction),
-        ],
-    );
-    leaf(m, n, on, &mut extra);
-    l.extra = extra;
-    l
+    node::<TargetComponent>(m, n, on, |m, c, k, t, _| {
+        property(m, c, k, &mut t.properties)
+    })
 }
 
 /// `rts:Groups(groupId)` → `Members`.
 fn map_group(m: &mut Mapper, n: &Node) -> Group {
-    let on = "group";
-    let mut g = Group {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    // rtsprofile (Python) writes `groupID`, the schema `groupId`: either fills the id, a
-    // second one is kept as a repeated attribute.
-    for a in &n.attrs {
-        match akey(a) {
-            Some("groupId" | "groupID") => m.set(&mut g.group_id, a, on, &mut extra),
-            _ => unknown_attr(m, a, on, &mut extra),
+    node::<Group>(m, n, "group", |m, c, k, g, _| {
+        let member = k == "Members";
+        if member {
+            g.members.push(map_target(m, c, "group member"));
         }
-    }
-    for c in &n.children {
-        match ekey(c) {
-            Some("Members") => g.members.push(map_target(m, c, "group member")),
-            _ => unknown_elem(m, c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
-    g.extra = extra;
-    g
+        member
+    })
 }
 
 /// `sourceDataPort`, `targetServicePort`, …: `componentId`, `instanceName`, `portName`.
 fn map_end(m: &mut Mapper, n: &Node, on: &str) -> PortEnd {
-    let mut e = PortEnd {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("componentId", &mut e.component_id),
-            ("instanceName", &mut e.instance_name),
-            ("portName", &mut e.port_name),
-        ],
-    );
+    let mut e = node::<PortEnd>(m, n, on, |m, c, k, e, _| {
+        property(m, c, k, &mut e.properties)
+    });
     e.short_name = e
         .port_name
         .as_deref()
         .map(|p| short_port_name(p, e.instance_name.as_deref()).into());
-    for c in &n.children {
-        match ekey(c) {
-            Some("Properties") => e.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, on, &mut extra),
-        }
-    }
-    m.stray_text(n, on, &mut extra);
-    e.extra = extra;
     e
 }
 
@@ -529,102 +334,55 @@ fn set_end(m: &mut Mapper, slot: &mut Option<PortEnd>, c: &Node, on: &str, extra
 
 /// `rts:DataPortConnectors`.
 fn map_data_connector(m: &mut Mapper, n: &Node) -> DataPortConnector {
-    let on = "data port connector";
-    let mut d = DataPortConnector {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("connectorId", &mut d.connector_id),
-            ("name", &mut d.name),
-            ("dataType", &mut d.data_type),
-            ("interfaceType", &mut d.interface_type),
-            ("dataflowType", &mut d.dataflow_type),
-            ("subscriptionType", &mut d.subscription_type),
-            ("pushInterval", &mut d.push_interval),
-            ("comment", &mut d.comment),
-            ("visible", &mut d.visible),
-        ],
-    );
+    let ends = ["sourceDataPort", "targetDataPort"];
+    let mut d: DataPortConnector = map_connector(m, n, "data port connector", ends);
     d.data_type_scoped = d.data_type.as_deref().and_then(scoped_data_type);
-    let on = format!("data port connector `{}`", d.name.as_deref().unwrap_or(""));
-    for c in &n.children {
-        match ekey(c) {
-            Some("sourceDataPort") => set_end(m, &mut d.source, c, &on, &mut extra),
-            Some("targetDataPort") => set_end(m, &mut d.target, c, &on, &mut extra),
-            Some("Properties") => d.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, &on, &mut extra),
-        }
-    }
-    m.stray_text(n, &on, &mut extra);
-    d.extra = extra;
     d
 }
 
 /// `rts:ServicePortConnectors`.
 fn map_service_connector(m: &mut Mapper, n: &Node) -> ServicePortConnector {
-    let on = "service port connector";
-    let mut s = ServicePortConnector {
-        pos: n.pos,
-        ..Default::default()
-    };
+    let ends = ["sourceServicePort", "targetServicePort"];
+    map_connector(m, n, "service port connector", ends)
+}
+
+/// A connector (`what`, named by its `name` in the messages about its children): its
+/// attributes by the field table, its two ends (elements `ends`, source first) and properties.
+fn map_connector<T: Fields + Default + Connector>(
+    m: &mut Mapper,
+    n: &Node,
+    what: &str,
+    ends: [&str; 2],
+) -> T {
     let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("connectorId", &mut s.connector_id),
-            ("name", &mut s.name),
-            ("transMethod", &mut s.trans_method),
-            ("comment", &mut s.comment),
-            ("visible", &mut s.visible),
-        ],
-    );
-    let on = format!(
-        "service port connector `{}`",
-        s.name.as_deref().unwrap_or("")
-    );
-    for c in &n.children {
-        match ekey(c) {
-            Some("sourceServicePort") => set_end(m, &mut s.source, c, &on, &mut extra),
-            Some("targetServicePort") => set_end(m, &mut s.target, c, &on, &mut extra),
-            Some("Properties") => s.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, &on, &mut extra),
-        }
-    }
-    m.stray_text(n, &on, &mut extra);
-    s.extra = extra;
-    s
+    let t: T = attrs(m, n, what, &mut extra);
+    let name = T::NODE
+        .json_field("name")
+        .and_then(|f| t.value(f)?.as_deref());
+    let on = format!("{what} `{}`", name.unwrap_or(""));
+    children(m, n, &on, t, extra, |m, c, k, t, extra| {
+        let parts = t.parts_mut();
+        let end = match k {
+            _ if k == ends[0] => parts.source,
+            _ if k == ends[1] => parts.target,
+            _ => return property(m, c, k, parts.properties),
+        };
+        set_end(m, end, c, &on, extra);
+        true
+    })
 }
 
 /// `rts:StartUp`, `rts:ShutDown`, …: `targets` in sequence.
 fn map_order(m: &mut Mapper, n: &Node, kind: OrderKind) -> Order {
     let on = kind.xml_name();
-    let mut o = Order {
-        kind,
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    for a in &n.attrs {
-        unknown_attr(m, a, on, &mut extra);
-    }
-    for c in &n.children {
-        match ekey(c) {
-            Some("targets") => o.targets.push(map_order_target(m, c, on)),
-            _ => unknown_elem(m, c, on, &mut extra),
+    let mut o = node::<Order>(m, n, on, |m, c, k, o, _| {
+        let target = k == "targets";
+        if target {
+            o.targets.push(map_order_target(m, c, on));
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    o.extra = extra;
+        target
+    });
+    o.kind = kind;
     o
 }
 
@@ -632,74 +390,28 @@ fn map_order(m: &mut Mapper, n: &Node, kind: OrderKind) -> Order {
 /// `Preceding`, and `rtsExt:Properties`.
 fn map_order_target(m: &mut Mapper, n: &Node, order: &str) -> OrderTarget {
     let on = format!("target of {order}");
-    let mut t = OrderTarget {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    let mut seq = None;
-    attrs(m, n, &on, &mut extra, &mut [("sequence", &mut seq)]);
-    t.sequence = seq;
-    for c in &n.children {
-        match ekey(c) {
-            Some("TargetComponent") if t.target_component.is_none() => {
+    node::<OrderTarget>(m, n, &on, |m, c, k, t, extra| {
+        match k {
+            "TargetComponent" if t.target_component.is_none() => {
                 t.target_component = Some(map_target(m, c, "target component"))
             }
-            Some("WaitTime") if t.wait_time.is_none() => {
-                let won = "wait time";
-                let mut w = WaitTime {
-                    pos: c.pos,
-                    ..Default::default()
-                };
-                let mut wx = Vec::new();
-                let mut wt = None;
-                attrs(m, c, won, &mut wx, &mut [("waitTime", &mut wt)]);
-                w.wait_time = wt;
-                leaf(m, c, won, &mut wx);
-                w.extra = wx;
-                t.wait_time = Some(w);
-            }
-            Some("Preceding") if t.preceding.is_none() => t.preceding = Some(map_preceding(m, c)),
-            Some("TargetComponent" | "WaitTime" | "Preceding") => {
-                m.repeated_elem(c, &on, &mut extra)
-            }
-            Some("Properties") => t.properties.push(map_property(m, c)),
-            _ => unknown_elem(m, c, &on, &mut extra),
+            "WaitTime" if t.wait_time.is_none() => t.wait_time = Some(leaf(m, c, "wait time")),
+            "Preceding" if t.preceding.is_none() => t.preceding = Some(map_preceding(m, c)),
+            "TargetComponent" | "WaitTime" | "Preceding" => m.repeated_elem(c, &on, extra),
+            _ => return property(m, c, k, &mut t.properties),
         }
-    }
-    m.stray_text(n, &on, &mut extra);
-    t.extra = extra;
-    t
+        true
+    })
 }
 
 /// `rts:Preceding(timeout, sendingTiming)` → `PrecedingComponents`.
 fn map_preceding(m: &mut Mapper, n: &Node) -> Preceding {
-    let on = "preceding condition";
-    let mut p = Preceding {
-        pos: n.pos,
-        ..Default::default()
-    };
-    let mut extra = Vec::new();
-    attrs(
-        m,
-        n,
-        on,
-        &mut extra,
-        &mut [
-            ("timeout", &mut p.timeout),
-            ("sendingTiming", &mut p.sending_timing),
-        ],
-    );
-    for c in &n.children {
-        match ekey(c) {
-            Some("PrecedingComponents") => {
-                p.preceding_components
-                    .push(map_target(m, c, "preceding component"))
-            }
-            _ => unknown_elem(m, c, on, &mut extra),
+    node::<Preceding>(m, n, "preceding condition", |m, c, k, p, _| {
+        let preceding = k == "PrecedingComponents";
+        if preceding {
+            p.preceding_components
+                .push(map_target(m, c, "preceding component"));
         }
-    }
-    m.stray_text(n, on, &mut extra);
-    p.extra = extra;
-    p
+        preceding
+    })
 }
