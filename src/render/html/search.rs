@@ -203,6 +203,16 @@ fn merge_sorted<'s>(a: &[&'s str], b: &'s [Cow<'_, str>]) -> Vec<&'s str> {
 /// page's path from [`Catalog::pages`]. The JSON is escaped so that no
 /// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
 pub fn index_js(catalog: &Catalog, lang: Lang, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+    write_index(catalog, lang, INDEX_BATCH, w)
+}
+
+/// [`index_js`] with the component entries made `batch` at a time.
+fn write_index(
+    catalog: &Catalog,
+    lang: Lang,
+    batch: usize,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     w.write_all(b"window.RTCDOC_INDEX={\"e\":[")?;
     let mut first = true;
     let mut put = |w: &mut dyn std::io::Write, entry: &str| {
@@ -216,8 +226,8 @@ pub fn index_js(catalog: &Catalog, lang: Lang, w: &mut dyn std::io::Write) -> st
     // profiles 12 MB, which the component pages rendering beside it would otherwise add to the
     // peak memory).
     let n = catalog.components.len();
-    for start in (0..n).step_by(INDEX_BATCH) {
-        let batch: Vec<String> = (start..n.min(start + INDEX_BATCH))
+    for start in (0..n).step_by(batch.max(1)) {
+        let batch: Vec<String> = (start..n.min(start.saturating_add(batch)))
             .into_par_iter()
             .map(|ci| entry_js(&component_entry(catalog, ci)))
             .collect();
@@ -603,6 +613,43 @@ mod tests {
         assert_eq!(toks("画像処理"), ["像処", "処理", "画像"]);
         assert_eq!(toks("地図 を"), ["を", "地図"]);
         assert_eq!(toks("カメラ画像"), ["カメ", "メラ", "ラ画", "画像"]);
+    }
+
+    #[test]
+    fn the_index_is_the_same_whatever_the_batch() {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let opts = crate::build::LoadOptions::default();
+        let cat = crate::build::load(&root.join("examples"), &opts)
+            .unwrap()
+            .catalog;
+        let n = cat.components.len();
+        assert!(n > 3, "examples/ has {n} components");
+        let index = |batch: usize| {
+            let mut out = Vec::new();
+            write_index(&cat, Lang::En, batch, &mut out).unwrap();
+            String::from_utf8(out).unwrap()
+        };
+        // One batch holding every entry: the index as it was made before it was streamed.
+        let whole = index(usize::MAX);
+        for batch in [1, 2, 3, n - 1, INDEX_BATCH] {
+            assert_eq!(index(batch), whole, "batches of {batch}");
+        }
+        let json = whole
+            .strip_prefix("window.RTCDOC_INDEX=")
+            .and_then(|j| j.strip_suffix(";\n"))
+            .unwrap();
+        let v: serde_json::Value = serde_json::from_str(json).unwrap();
+        let e = v["e"].as_array().unwrap();
+        assert_eq!(
+            e.len(),
+            n + cat.data_types.len() + cat.interfaces.len() + cat.systems.len()
+        );
+        // Component entries first, in catalogue order.
+        for (ci, c) in cat.components.iter().enumerate() {
+            assert_eq!(e[ci][0], "c");
+            assert_eq!(e[ci][1], c.display_name().as_ref(), "entry {ci}");
+        }
+        assert_eq!(v["kinds"]["c"], Lang::En.t("component"));
     }
 
     #[test]
