@@ -1115,10 +1115,10 @@ impl HtmlRenderer {
                 if !wanted("search-index.js") {
                     return Ok(0);
                 }
-                out.write(
-                    "search-index.js",
-                    search::index_js(catalog, lang).as_bytes(),
-                )?;
+                // Streamed: the index is never held whole beside the pages.
+                out.write_with("search-index.js", &mut |w| {
+                    Ok(search::index_js(catalog, lang, w)?)
+                })?;
                 Ok(1)
             },
             || {

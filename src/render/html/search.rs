@@ -196,29 +196,63 @@ fn merge_sorted<'s>(a: &[&'s str], b: &'s [Cow<'_, str>]) -> Vec<&'s str> {
     out
 }
 
-/// Builds the contents of `search-index.js`: `window.RTCDOC_INDEX = {kinds, e}` where `kinds`
+/// Writes the contents of `search-index.js` to `w`: `window.RTCDOC_INDEX = {kinds, e}` where `kinds`
 /// maps a kind letter to its label and each entry of `e` is
 /// `[kind, name, href, meta, summary, "name|ids|text"]` (see [`Groups::encode`]). Entries are
 /// components (`c`), data types (`t`), interfaces (`i`) and RT Systems (`s`); `href` is the
 /// page's path from [`Catalog::pages`]. The JSON is escaped so that no
 /// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
-pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
-    // Each entry is built and written out as escaped JSON in parallel (the indexed collect
-    // keeps catalogue order); only the entries' text is held, never all their JSON values.
-    let mut entries: Vec<String> = (0..catalog.components.len())
-        .into_par_iter()
-        .map(Ix::new)
-        .map(|ci| entry_js(&component_entry(catalog, ci)))
-        .collect();
-    entries.extend(Ix::enumerate(&catalog.data_types).map(|(ti, t)| {
+pub fn index_js(catalog: &Catalog, lang: Lang, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+    write_index(catalog, lang, INDEX_BATCH, w)
+}
+
+/// [`index_js`] with the component entries made `batch` at a time.
+fn write_index(
+    catalog: &Catalog,
+    lang: Lang,
+    batch: usize,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    w.write_all(b"window.RTCDOC_INDEX={\"e\":[")?;
+    let mut first = true;
+    let mut put = |w: &mut dyn std::io::Write, entry: &str| {
+        if !std::mem::take(&mut first) {
+            w.write_all(b",")?;
+        }
+        w.write_all(entry.as_bytes())
+    };
+    // The component entries are built and escaped in parallel, a batch at a time, and written
+    // out in catalogue order; only one batch's text is held, never the whole index (at 10,000
+    // profiles 12 MB, which the component pages rendering beside it would otherwise add to the
+    // peak memory).
+    let n = catalog.components.len();
+    for start in (0..n).step_by(batch.max(1)) {
+        let batch: Vec<String> = (start..n.min(start.saturating_add(batch)))
+            .into_par_iter()
+            .map(Ix::new)
+            .map(|ci| entry_js(&component_entry(catalog, ci)))
+            .collect();
+        for e in &batch {
+            put(w, e)?;
+        }
+    }
+    for (ti, t) in Ix::enumerate(&catalog.data_types) {
         let page = catalog.data_type_page(ti).path("html");
-        entry_js(&idl_entry(catalog, "t", &page, &t.name, &t.spellings))
-    }));
-    entries.extend(Ix::enumerate(&catalog.interfaces).map(|(ii, t)| {
+        put(
+            w,
+            &entry_js(&idl_entry(catalog, "t", &page, &t.name, &t.spellings)),
+        )?;
+    }
+    for (ii, t) in Ix::enumerate(&catalog.interfaces) {
         let page = catalog.interface_page(ii).path("html");
-        entry_js(&idl_entry(catalog, "i", &page, &t.name, &t.spellings))
-    }));
-    entries.extend(system_entries(catalog).iter().map(entry_js));
+        put(
+            w,
+            &entry_js(&idl_entry(catalog, "i", &page, &t.name, &t.spellings)),
+        )?;
+    }
+    for e in system_entries(catalog) {
+        put(w, &entry_js(&e))?;
+    }
     let kinds = serde_json::json!({
         "c": lang.t("component"),
         "t": lang.t("data_type"),
@@ -226,22 +260,13 @@ pub fn index_js(catalog: &Catalog, lang: Lang) -> String {
         "s": lang.t("system"),
     });
     // `{"e":[…],"kinds":{…}}`: the object serde_json writes for these two keys (sorted).
-    let len: usize = entries.iter().map(|e| e.len() + 1).sum();
-    let mut out = String::with_capacity(len + 256);
-    out.push_str("window.RTCDOC_INDEX={\"e\":[");
-    // Each entry is dropped once copied, so that the index is not held twice at its end (at
-    // 10,000 profiles 8 MB, while the component pages render beside it).
-    for (i, e) in entries.into_iter().enumerate() {
-        if i > 0 {
-            out.push(',');
-        }
-        out.push_str(&e);
-    }
-    out.push_str("],\"kinds\":");
-    push_js_safe_json(&mut out, &serde_json::to_string(&kinds).unwrap_or_default());
-    out.push_str("};\n");
-    out
+    w.write_all(b"],\"kinds\":")?;
+    w.write_all(js_safe_json(&serde_json::to_string(&kinds).unwrap_or_default()).as_bytes())?;
+    w.write_all(b"};\n")
 }
+
+/// Component entries of the search index made and written per batch by [`index_js`].
+const INDEX_BATCH: usize = 1024;
 
 /// One entry as JSON, escaped ([`push_js_safe_json`]: escaping works character by character,
 /// so escaping each entry is escaping the whole).
@@ -586,6 +611,43 @@ mod tests {
         assert_eq!(toks("画像処理"), ["像処", "処理", "画像"]);
         assert_eq!(toks("地図 を"), ["を", "地図"]);
         assert_eq!(toks("カメラ画像"), ["カメ", "メラ", "ラ画", "画像"]);
+    }
+
+    #[test]
+    fn the_index_is_the_same_whatever_the_batch() {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let opts = crate::build::LoadOptions::default();
+        let cat = crate::build::load(&root.join("examples"), &opts)
+            .unwrap()
+            .catalog;
+        let n = cat.components.len();
+        assert!(n > 3, "examples/ has {n} components");
+        let index = |batch: usize| {
+            let mut out = Vec::new();
+            write_index(&cat, Lang::En, batch, &mut out).unwrap();
+            String::from_utf8(out).unwrap()
+        };
+        // One batch holding every entry: the index as it was made before it was streamed.
+        let whole = index(usize::MAX);
+        for batch in [1, 2, 3, n - 1, INDEX_BATCH] {
+            assert_eq!(index(batch), whole, "batches of {batch}");
+        }
+        let json = whole
+            .strip_prefix("window.RTCDOC_INDEX=")
+            .and_then(|j| j.strip_suffix(";\n"))
+            .unwrap();
+        let v: serde_json::Value = serde_json::from_str(json).unwrap();
+        let e = v["e"].as_array().unwrap();
+        assert_eq!(
+            e.len(),
+            n + cat.data_types.len() + cat.interfaces.len() + cat.systems.len()
+        );
+        // Component entries first, in catalogue order.
+        for (ci, c) in cat.components.iter().enumerate() {
+            assert_eq!(e[ci][0], "c");
+            assert_eq!(e[ci][1], c.display_name().as_ref(), "entry {ci}");
+        }
+        assert_eq!(v["kinds"]["c"], Lang::En.t("component"));
     }
 
     #[test]
