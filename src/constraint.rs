@@ -846,7 +846,7 @@ pub(crate) mod tests {
                 condition: Box::new(cond),
             },
             pos: Pos::default(),
-            extra: vec![],
+            extra: crate::model::Extras::new(),
         }
     }
     /// `x <comparison> lit`.

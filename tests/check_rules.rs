@@ -152,7 +152,7 @@ fn unit(cond: Condition) -> Constraint {
             condition: Box::new(cond),
         },
         pos: Pos::default(),
-        extra: vec![],
+        extra: rtcdoc::model::Extras::new(),
     }
 }
 fn keyed(key: &str, c: Constraint) -> Constraint {
@@ -165,7 +165,7 @@ fn keyed(key: &str, c: Constraint) -> Constraint {
             condition,
         },
         pos: Pos::default(),
-        extra: vec![],
+        extra: rtcdoc::model::Extras::new(),
     }
 }
 fn cmp_case(c: Comparison, lit: &str, match_case: Option<&str>) -> Constraint {
@@ -208,14 +208,14 @@ fn list(items: Vec<Constraint>) -> Constraint {
     Constraint {
         kind: ConstraintKind::List { items },
         pos: Pos::default(),
-        extra: vec![],
+        extra: rtcdoc::model::Extras::new(),
     }
 }
 fn hash(items: Vec<Constraint>) -> Constraint {
     Constraint {
         kind: ConstraintKind::Hash { items },
         pos: Pos::default(),
-        extra: vec![],
+        extra: rtcdoc::model::Extras::new(),
     }
 }
 fn ok(c: &Constraint, v: &str, ty: &str) -> bool {
@@ -439,7 +439,7 @@ fn evaluation_never_panics_on_odd_input() {
         Constraint {
             kind: ConstraintKind::Empty,
             pos: Pos::default(),
-            extra: vec![],
+            extra: rtcdoc::model::Extras::new(),
         },
     ];
     for c in &cs {

@@ -38,7 +38,7 @@ fn component(name: &str, category: &str) -> Profile {
             implemented: s("true"),
             doc: None,
             pos: Default::default(),
-            extra: vec![],
+            extra: rtcdoc::model::Extras::new(),
         }],
         ..Default::default()
     }

@@ -6,6 +6,7 @@
 //! Values the spec does not define are kept in an `extra` list on the nearest node.
 
 use super::fields::Field;
+use super::Extras;
 use serde::{Deserialize, Serialize};
 
 /// A string value of a profile. Most values are short (names, types, numbers, `true`), and a
@@ -88,8 +89,8 @@ pub struct Extra {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub value: Option<Text>,
     /// Attributes and child elements of an unknown element; entries of a YAML map or sequence.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub children: Vec<Extra>,
+    #[serde(default, skip_serializing_if = "thin_vec::ThinVec::is_empty")]
+    pub children: Extras,
     pub pos: Pos,
 }
 
@@ -501,15 +502,15 @@ pub struct Action {
     pub implemented: Option<Text>,
     pub doc: Option<ActionDoc>,
     pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+    #[serde(default, skip_serializing_if = "thin_vec::ThinVec::is_empty")]
+    pub extra: Extras,
 }
 
 impl super::Located for Action {
     fn pos_mut(&mut self) -> &mut Pos {
         &mut self.pos
     }
-    fn extra_mut(&mut self) -> &mut Vec<Extra> {
+    fn extra_mut(&mut self) -> &mut Extras {
         &mut self.extra
     }
 }
@@ -821,8 +822,8 @@ node! {
 pub struct Constraint {
     pub kind: ConstraintKind,
     pub pos: Pos,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub extra: Vec<Extra>,
+    #[serde(default, skip_serializing_if = "thin_vec::ThinVec::is_empty")]
+    pub extra: Extras,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -747,7 +747,7 @@ mod tests {
                     implemented: None,
                     doc: None,
                     pos: Pos::default(),
-                    extra: Vec::new(),
+                    extra: crate::model::Extras::new(),
                 },
                 f,
             ),
@@ -812,7 +812,7 @@ mod tests {
         let constraint = || Constraint {
             kind: ConstraintKind::Empty,
             pos: Pos::default(),
-            extra: Vec::new(),
+            extra: crate::model::Extras::new(),
         };
         let property = || Property {
             name: Some("p".into()),
@@ -830,7 +830,7 @@ mod tests {
                 implemented: None,
                 doc: Some(ActionDoc::default()),
                 pos: Pos::default(),
-                extra: Vec::new(),
+                extra: crate::model::Extras::new(),
             }],
             configuration_set: Some(ConfigurationSet {
                 configurations: vec![Configuration {

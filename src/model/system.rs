@@ -9,7 +9,7 @@
 //! `Instance0.` prefix, the scoped name of a repository-id data type, pseudo configuration sets
 //! and private host data.
 
-use crate::model::{non_empty, parse_bool, Extra, Pos, Text};
+use crate::model::{non_empty, parse_bool, Extras, Pos, Text};
 use serde::{Deserialize, Serialize};
 
 node! {
@@ -241,7 +241,7 @@ node! {
 
 impl SystemProperty {
     /// A property with `private` computed from its name and value.
-    pub fn new(name: Option<Text>, value: Option<Text>, pos: Pos, extra: Vec<Extra>) -> Self {
+    pub fn new(name: Option<Text>, value: Option<Text>, pos: Pos, extra: Extras) -> Self {
         let private = is_private_property(name.as_deref(), value.as_deref());
         SystemProperty {
             name,
@@ -575,7 +575,7 @@ pub struct ConnectorParts<'a> {
     pub source: &'a mut Option<PortEnd>,
     pub target: &'a mut Option<PortEnd>,
     pub properties: &'a mut Vec<SystemProperty>,
-    pub extra: &'a mut Vec<Extra>,
+    pub extra: &'a mut Extras,
 }
 
 /// A data port connector or a service port connector.

@@ -11,7 +11,7 @@ use super::{each_item, root_reader, untag_ref, Reader};
 use crate::diagnostic::Diagnostic;
 use crate::model::fields::Fields;
 use crate::model::system::*;
-use crate::model::{Extra, Pos};
+use crate::model::{Extras, Pos};
 use crate::parse::Limits;
 use serde_norway::{Mapping, Value};
 
@@ -59,7 +59,7 @@ fn properties(
     v: &Value,
     name: &str,
     pos: Pos,
-    sink: &mut Vec<Extra>,
+    sink: &mut Extras,
 ) -> Vec<SystemProperty> {
     r.properties(v, name, pos, sink)
         .into_iter()
@@ -195,7 +195,7 @@ fn config_set(r: &mut Reader, m: &Mapping, pos: Pos) -> SystemConfigurationSet {
 }
 
 /// A list of a node and the node's extras.
-type ListParts<T, I> = fn(&mut T) -> (&mut Vec<I>, &mut Vec<Extra>);
+type ListParts<T, I> = fn(&mut T) -> (&mut Vec<I>, &mut Extras);
 
 /// Reads mapping `m` (at `pos`) as the system node `T` whose only key beside its scalars (in
 /// the field table) is the list `key`: its items read by `read` into the list that `parts`
@@ -206,7 +206,7 @@ fn with_list<T: Fields + Default, I>(
     pos: Pos,
     place: &str,
     key: &str,
-    parts: fn(&mut T) -> (&mut Vec<I>, &mut Vec<Extra>),
+    parts: fn(&mut T) -> (&mut Vec<I>, &mut Extras),
     read: impl Fn(&mut Reader, &Mapping, Pos) -> I,
 ) -> T {
     r.node(m, pos, |r, n, v, kp, t: &mut T| {
@@ -227,7 +227,7 @@ fn items<I>(
     v: &Value,
     n: &str,
     kp: Pos,
-    sink: &mut Vec<Extra>,
+    sink: &mut Extras,
     list: &mut Vec<I>,
     read: impl Fn(&mut Reader, &Mapping, Pos) -> I,
 ) {
@@ -264,7 +264,7 @@ fn participant(r: &mut Reader, m: &Mapping, pos: Pos) -> TargetComponent {
         return target(r, m, pos, "a participant");
     }
     let mut found: Option<TargetComponent> = None;
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     for (k, v) in m {
         let (n, kp) = r.key(k);
         match (n.as_str(), untag_ref(v)) {
@@ -290,7 +290,7 @@ fn group(r: &mut Reader, m: &Mapping, pos: Pos) -> Group {
 }
 
 /// A connector end: `componentId`, `instanceName`, `portName`, `"rtsExt::properties"`.
-fn end(r: &mut Reader, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<PortEnd> {
+fn end(r: &mut Reader, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Option<PortEnd> {
     let m = r.map(v, name, pos, sink)?;
     let mut e = with_properties(r, m, pos, "a connector end", |e: &mut PortEnd| {
         &mut e.properties

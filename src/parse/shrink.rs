@@ -6,9 +6,9 @@
 //! the unused room is megabytes of peak memory (see book/src/performance.md). Only capacity
 //! changes: the values, their order and so every output stay the same.
 
-use crate::model::{AttrPos, Extra, Profile, Property};
+use crate::model::{AttrPos, Extras, Profile, Property};
 
-fn extras(v: &mut Vec<Extra>) {
+fn extras(v: &mut Extras) {
     for e in v.iter_mut() {
         extras(&mut e.children);
     }
@@ -16,7 +16,7 @@ fn extras(v: &mut Vec<Extra>) {
 }
 
 /// The three lists a node with attributes has: their positions, its properties, its extras.
-fn node(attr_pos: &mut AttrPos, properties: &mut Vec<Property>, extra: &mut Vec<Extra>) {
+fn node(attr_pos: &mut AttrPos, properties: &mut Vec<Property>, extra: &mut Extras) {
     attr_pos.shrink_to_fit();
     properties.shrink_to_fit();
     extras(extra);

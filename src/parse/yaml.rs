@@ -623,7 +623,7 @@ struct Reader<'a> {
 /// Keys of one node read under an older spelling: (field, key as written, position, writer).
 type Aliases = Vec<(&'static str, String, Pos, &'static str)>;
 /// The `"rtcExt::properties"`, the `"rtcDoc::doc"` and the extras of a node (a port, …).
-type DocParts<T, D> = fn(&mut T) -> (&mut Vec<Property>, &mut Option<D>, &mut Vec<Extra>);
+type DocParts<T, D> = fn(&mut T) -> (&mut Vec<Property>, &mut Option<D>, &mut Extras);
 
 /// rtc-template writes `doc` for `"rtcDoc::doc"`: recorded in `al`.
 fn doc_alias(n: &str, kp: Pos, al: &mut Aliases) {
@@ -639,7 +639,7 @@ fn each_item<'v>(
     v: &'v Value,
     name: &str,
     pos: Pos,
-    sink: &mut Vec<Extra>,
+    sink: &mut Extras,
     mut f: impl FnMut(&mut Reader, &'v Mapping, Pos),
 ) {
     let list = r.seq(v, name, pos, sink);
@@ -771,7 +771,7 @@ impl Reader<'_> {
 
     /// An unknown key: kept as an extra, with an `UNKNOWN` warning — or, when its value is
     /// empty (null or `""`), counted for the profile's one summary note.
-    fn unknown(&mut self, name: &str, v: &Value, pos: Pos, place: &str, sink: &mut Vec<Extra>) {
+    fn unknown(&mut self, name: &str, v: &Value, pos: Pos, place: &str, sink: &mut Extras) {
         let empty = match untag_ref(v) {
             Value::Null => true,
             Value::String(t) => t.trim().is_empty(),
@@ -793,7 +793,7 @@ impl Reader<'_> {
     }
 
     /// A known key whose value has the wrong shape: kept as an extra, with a `SHAPE` warning.
-    fn wrong_shape(&mut self, name: &str, v: &Value, pos: Pos, want: &str, sink: &mut Vec<Extra>) {
+    fn wrong_shape(&mut self, name: &str, v: &Value, pos: Pos, want: &str, sink: &mut Extras) {
         self.warn(
             codes::SHAPE,
             pos,
@@ -885,7 +885,7 @@ impl Reader<'_> {
         v: &Value,
         n: &str,
         kp: Pos,
-        sink: &mut Vec<Extra>,
+        sink: &mut Extras,
         place: &str,
     ) -> Option<T> {
         let m = self.map(v, n, kp, sink)?;
@@ -911,7 +911,7 @@ impl Reader<'_> {
             name: name.into(),
             namespace: None,
             value: None,
-            children: Vec::new(),
+            children: crate::model::Extras::new(),
             pos,
         };
         match untag_ref(v) {
@@ -975,7 +975,7 @@ impl Reader<'_> {
     }
 
     /// A text value (chapter 7 `type: text|int|bool|number`).
-    fn text(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<Text> {
+    fn text(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Option<Text> {
         match untag_ref(v) {
             Value::Mapping(_) | Value::Sequence(_) => {
                 self.wrong_shape(name, v, pos, "a scalar", sink);
@@ -991,7 +991,7 @@ impl Reader<'_> {
         v: &'v Value,
         name: &str,
         pos: Pos,
-        sink: &mut Vec<Extra>,
+        sink: &mut Extras,
     ) -> Option<&'v Mapping> {
         match untag_ref(v) {
             Value::Mapping(m) => Some(m),
@@ -1004,13 +1004,7 @@ impl Reader<'_> {
     }
 
     /// A sequence value; empty for null, a `SHAPE` warning otherwise.
-    fn seq<'v>(
-        &mut self,
-        v: &'v Value,
-        name: &str,
-        pos: Pos,
-        sink: &mut Vec<Extra>,
-    ) -> &'v [Value] {
+    fn seq<'v>(&mut self, v: &'v Value, name: &str, pos: Pos, sink: &mut Extras) -> &'v [Value] {
         match untag_ref(v) {
             Value::Sequence(s) => s,
             Value::Null => &[],
@@ -1022,7 +1016,7 @@ impl Reader<'_> {
     }
 
     /// A list of texts (`osVersions`, `cpus`, `"rtcExt::versionUpLogs"`).
-    fn texts(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Vec<Text> {
+    fn texts(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Vec<Text> {
         let mut out = Vec::new();
         for (i, item) in self.seq(v, name, pos, sink).iter().enumerate() {
             let p = self.loc.item();
@@ -1043,7 +1037,7 @@ impl Reader<'_> {
         item: &'v Value,
         name: &str,
         i: usize,
-        sink: &mut Vec<Extra>,
+        sink: &mut Extras,
     ) -> Option<(&'v Mapping, Pos)> {
         let p = self.loc.item();
         match untag_ref(item) {
@@ -1057,13 +1051,7 @@ impl Reader<'_> {
     }
 
     /// `"rtcExt::property"` (chapter 7) / `"rtcExt::properties"` (RTCBuilder): `[{name, value}]`.
-    fn properties(
-        &mut self,
-        v: &Value,
-        name: &str,
-        pos: Pos,
-        sink: &mut Vec<Extra>,
-    ) -> Vec<Property> {
+    fn properties(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Vec<Property> {
         let mut out = Vec::new();
         each_item(self, v, name, pos, sink, |r, m, p| {
             out.push(r.leaf(m, p, "a property"))
@@ -1115,7 +1103,7 @@ impl Reader<'_> {
     }
 
     /// `basicInfo` (spec 2.3.2, 2.4.1/2.4.2 doc, 2.5.1 ext).
-    fn basic_info(&mut self, v: &Value, pos: Pos, b: &mut BasicInfo, outer: &mut Vec<Extra>) {
+    fn basic_info(&mut self, v: &Value, pos: Pos, b: &mut BasicInfo, outer: &mut Extras) {
         let Some(m) = self.map(v, "basicInfo", pos, outer) else {
             return;
         };
@@ -1153,7 +1141,7 @@ impl Reader<'_> {
     }
 
     /// A date: a chapter 7 `dateType` map (→ ISO 8601) or a plain string kept as written.
-    fn date(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Vec<Extra>) -> Option<Text> {
+    fn date(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Option<Text> {
         let m = match untag_ref(v) {
             Value::Mapping(m) => m,
             Value::Sequence(_) => {
@@ -1214,7 +1202,7 @@ impl Reader<'_> {
                                 Value::Bool(b) => Some(if *b { "true" } else { "false" }.into()),
                                 _ => None,
                             },
-                            children: Vec::new(),
+                            children: crate::model::Extras::new(),
                             pos,
                         })
                         .collect(),
@@ -1242,7 +1230,7 @@ impl Reader<'_> {
                 implemented: None,
                 doc: None,
                 pos: kp,
-                extra: Vec::new(),
+                extra: crate::model::Extras::new(),
             };
             let mut al = Aliases::new();
             if let Some(m) = self.map(v, &n, kp, &mut a.extra) {
@@ -1353,7 +1341,7 @@ impl Reader<'_> {
         v: &Value,
         kp: Pos,
         slot: &mut Option<Constraint>,
-        x: &mut Vec<Extra>,
+        x: &mut Extras,
     ) -> bool {
         let constraint = n == "constraint";
         if constraint {
@@ -1491,13 +1479,7 @@ impl Reader<'_> {
     }
 
     /// A list of texts, or one text as a list of one (empty text: none).
-    fn texts_or_text(
-        &mut self,
-        v: &Value,
-        name: &str,
-        pos: Pos,
-        sink: &mut Vec<Extra>,
-    ) -> Vec<Text> {
+    fn texts_or_text(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Vec<Text> {
         match untag_ref(v) {
             Value::Sequence(_) => self.texts(v, name, pos, sink),
             _ => self
@@ -1544,17 +1526,12 @@ impl Reader<'_> {
     // -- Constraints (spec 2.3.17–2.3.41, chapter 7 `constraintRoot`, samples 8.2) ----------
 
     /// The value of a `constraint:` key.
-    fn constraint_root(
-        &mut self,
-        v: &Value,
-        pos: Pos,
-        sink: &mut Vec<Extra>,
-    ) -> Option<Constraint> {
+    fn constraint_root(&mut self, v: &Value, pos: Pos, sink: &mut Extras) -> Option<Constraint> {
         match untag_ref(v) {
             Value::Null => Some(Constraint {
                 kind: ConstraintKind::Empty,
                 pos,
-                extra: Vec::new(),
+                extra: crate::model::Extras::new(),
             }),
             Value::Mapping(m) => Some(self.constraint_node(m, pos)),
             _ => {
@@ -1571,7 +1548,7 @@ impl Reader<'_> {
         let mut c = Constraint {
             kind: ConstraintKind::Empty,
             pos,
-            extra: Vec::new(),
+            extra: crate::model::Extras::new(),
         };
         let keys: Vec<String> = m.keys().map(key_text).collect();
         let has_form = keys.iter().any(|k| form_of(k).is_some());
@@ -1643,7 +1620,7 @@ impl Reader<'_> {
         v: &Value,
         name: &str,
         pos: Pos,
-        sink: &mut Vec<Extra>,
+        sink: &mut Extras,
     ) -> Vec<Constraint> {
         match untag_ref(v) {
             Value::Sequence(s) => {
@@ -1655,7 +1632,7 @@ impl Reader<'_> {
                         Value::Null => out.push(Constraint {
                             kind: ConstraintKind::Empty,
                             pos: p,
-                            extra: Vec::new(),
+                            extra: crate::model::Extras::new(),
                         }),
                         _ => self.wrong_shape(&format!("{name}[{i}]"), item, p, "a mapping", sink),
                     }
@@ -1686,7 +1663,7 @@ impl Reader<'_> {
     }
 
     /// The body of a constraint unit: optional `key` plus exactly one condition.
-    fn unit_body(&mut self, m: &Mapping, sink: &mut Vec<Extra>) -> ConstraintKind {
+    fn unit_body(&mut self, m: &Mapping, sink: &mut Extras) -> ConstraintKind {
         let mut key = None;
         let mut condition: Option<Condition> = None;
         for (k, v) in m {
@@ -1725,7 +1702,7 @@ impl Reader<'_> {
                         name: "key".into(),
                         namespace: None,
                         value: Some(k),
-                        children: Vec::new(),
+                        children: crate::model::Extras::new(),
                         pos: Pos::default(),
                     });
                 }
@@ -1740,7 +1717,7 @@ impl Reader<'_> {
         name: &str,
         v: &Value,
         pos: Pos,
-        sink: &mut Vec<Extra>,
+        sink: &mut Extras,
     ) -> Option<Condition> {
         match op {
             Op::Not => {
@@ -1749,7 +1726,7 @@ impl Reader<'_> {
                     Value::Null => Constraint {
                         kind: ConstraintKind::Empty,
                         pos,
-                        extra: Vec::new(),
+                        extra: crate::model::Extras::new(),
                     },
                     _ => {
                         self.wrong_shape(name, v, pos, "a mapping", sink);
@@ -1836,7 +1813,7 @@ impl Reader<'_> {
         v: &'v Value,
         name: &str,
         pos: Pos,
-        sink: &mut Vec<Extra>,
+        sink: &mut Extras,
     ) -> Option<&'v Mapping> {
         static EMPTY: std::sync::OnceLock<Mapping> = std::sync::OnceLock::new();
         match untag_ref(v) {

@@ -25,7 +25,7 @@ impl Mapper<'_> {
     /// An attribute the spec does not define on `on`. An empty one (`rtcDoc:license=""` on a
     /// configuration doc, as wasanbon writes them by the dozen) says nothing: it is kept, and
     /// counted for the profile's one summary note instead of a warning of its own.
-    pub(super) fn unknown_attr(&mut self, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
+    pub(super) fn unknown_attr(&mut self, a: &Attr, on: &str, extra: &mut Extras) {
         if a.value.trim().is_empty() {
             self.empties.add(&a.qname);
             extra.push(attr_extra(a));
@@ -43,7 +43,7 @@ impl Mapper<'_> {
     }
 
     /// An element the spec does not define inside `on` (kept with its whole subtree).
-    pub(super) fn unknown_elem(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+    pub(super) fn unknown_elem(&mut self, n: &Node, on: &str, extra: &mut Extras) {
         self.warn(
             n.pos,
             format!(
@@ -56,7 +56,7 @@ impl Mapper<'_> {
     }
 
     /// A second occurrence of an element or attribute allowed once.
-    pub(super) fn repeated_elem(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+    pub(super) fn repeated_elem(&mut self, n: &Node, on: &str, extra: &mut Extras) {
         self.warn(
             n.pos,
             format!(
@@ -69,13 +69,7 @@ impl Mapper<'_> {
 
     /// Sets a known attribute's field; a duplicate (same local name in two namespaces) goes
     /// to `extra`.
-    pub(super) fn set(
-        &mut self,
-        slot: &mut Option<Text>,
-        a: &Attr,
-        on: &str,
-        extra: &mut Vec<Extra>,
-    ) {
+    pub(super) fn set(&mut self, slot: &mut Option<Text>, a: &Attr, on: &str, extra: &mut Extras) {
         if slot.is_some() {
             self.warn(
                 a.pos,
@@ -91,7 +85,7 @@ impl Mapper<'_> {
     }
 
     /// Non-whitespace text directly inside an element that holds no text.
-    pub(super) fn stray_text(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+    pub(super) fn stray_text(&mut self, n: &Node, on: &str, extra: &mut Extras) {
         if n.has_text() {
             let pos = n.text_pos.unwrap_or(n.pos);
             self.warn(
@@ -103,7 +97,7 @@ impl Mapper<'_> {
                 name: "#text".into(),
                 namespace: None,
                 value: Some(n.text.as_str().into()),
-                children: Vec::new(),
+                children: crate::model::Extras::new(),
                 pos,
             });
         }
@@ -111,7 +105,7 @@ impl Mapper<'_> {
 
     /// Text content of a text-only element (`VersionUpLogs`, `cpus`, `Literal`, …). Its
     /// attributes and child elements are unknown and go to `extra` of the owning node.
-    pub(super) fn text_of(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) -> Text {
+    pub(super) fn text_of(&mut self, n: &Node, on: &str, extra: &mut Extras) -> Text {
         if !n.attrs.is_empty() || !n.children.is_empty() {
             let what = format!("`{}` of {on}", n.qname);
             for a in &n.attrs {
@@ -125,7 +119,7 @@ impl Mapper<'_> {
     }
 
     /// Reports every attribute of an element that has none defined.
-    pub(super) fn no_attrs(&mut self, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+    pub(super) fn no_attrs(&mut self, n: &Node, on: &str, extra: &mut Extras) {
         for a in &n.attrs {
             self.unknown_attr(a, on, extra);
         }
@@ -145,14 +139,14 @@ pub(super) fn attr_extra(a: &Attr) -> Extra {
         name: (&*a.qname).into(),
         namespace: a.ns.uri(),
         value: Some((&*a.value).into()),
-        children: Vec::new(),
+        children: crate::model::Extras::new(),
         pos: a.pos,
     }
 }
 
 /// An unknown element with its whole subtree: attributes first, then child elements.
 pub(super) fn node_extra(n: &Node) -> Extra {
-    let mut children: Vec<Extra> = n.attrs.iter().map(attr_extra).collect();
+    let mut children: Extras = n.attrs.iter().map(attr_extra).collect();
     children.extend(n.children.iter().map(node_extra));
     Extra {
         kind: ExtraKind::Element,
@@ -188,7 +182,7 @@ pub(super) fn scalar_attrs<'n, 't, T: Fields>(
     n: &'n Node<'t>,
     t: &mut T,
     on: &str,
-    extra: &mut Vec<Extra>,
+    extra: &mut Extras,
 ) -> Vec<Alias<'n, 't>> {
     let mut aliases = Vec::new();
     for a in &n.attrs {
@@ -205,7 +199,7 @@ pub(super) fn scalar_attr<'n, 't, T: Fields>(
     a: &'n Attr<'t>,
     t: &mut T,
     on: &str,
-    extra: &mut Vec<Extra>,
+    extra: &mut Extras,
     aliases: &mut Vec<Alias<'n, 't>>,
 ) -> bool {
     let Some((def, spelling)) = a.key().and_then(|k| T::NODE.xml(k)) else {
@@ -231,11 +225,11 @@ pub(super) fn map_node<'n, 't, T: Fields + Default>(
     m: &mut Mapper,
     n: &'n Node<'t>,
     on: &str,
-    mut child: impl FnMut(&mut Mapper, &'n Node<'t>, &mut T, &mut Vec<Extra>),
+    mut child: impl FnMut(&mut Mapper, &'n Node<'t>, &mut T, &mut Extras),
 ) -> (T, Vec<Alias<'n, 't>>) {
     let mut t = T::default();
     *t.pos_mut() = n.pos;
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     let aliases = scalar_attrs(m, n, &mut t, on, &mut extra);
     for c in &n.children {
         child(m, c, &mut t, &mut extra);
@@ -314,12 +308,7 @@ pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
 
 /// spec 2.3.3 actions: the 14 callbacks, kept in document order. Unknown content of the
 /// `Actions` element itself goes to the profile's extras.
-pub(super) fn map_actions(
-    m: &mut Mapper,
-    n: &Node,
-    actions: &mut Vec<Action>,
-    extra: &mut Vec<Extra>,
-) {
+pub(super) fn map_actions(m: &mut Mapper, n: &Node, actions: &mut Vec<Action>, extra: &mut Extras) {
     let on = "actions";
     m.no_attrs(n, on, extra);
     for c in &n.children {
@@ -341,9 +330,9 @@ pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
         implemented: None,
         doc: None,
         pos: n.pos,
-        extra: Vec::new(),
+        extra: crate::model::Extras::new(),
     };
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     scalar_attrs(m, n, &mut act, &on, &mut extra);
     for c in &n.children {
         match c.key() {
@@ -366,7 +355,7 @@ pub(super) fn map_configuration_set(m: &mut Mapper, n: &Node) -> ConfigurationSe
         pos: n.pos,
         ..Default::default()
     };
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     m.no_attrs(n, on, &mut extra);
     for c in &n.children {
         match c.key() {
@@ -496,7 +485,7 @@ pub(super) fn map_language_element(m: &mut Mapper, c: &Node, l: &mut Language) {
         pos: c.pos,
         ..Default::default()
     };
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     for a in &c.attrs {
         if scalar_attr(m, a, &mut t, &on, &mut extra, &mut Vec::new()) {
             continue;
@@ -570,7 +559,7 @@ pub(super) fn map_library(m: &mut Mapper, n: &Node) -> Library {
 /// samples write `PropertyIsEqualTo`, the XSD `propertyIsEqualTo`.
 pub(super) fn map_constraint(m: &mut Mapper, n: &Node) -> Constraint {
     let on = "constraint";
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     m.no_attrs(n, on, &mut extra);
     let mut kind: Option<ConstraintKind> = None;
     for c in &n.children {
@@ -608,7 +597,7 @@ pub(super) fn constraint_children(
     m: &mut Mapper,
     n: &Node,
     on: &str,
-    extra: &mut Vec<Extra>,
+    extra: &mut Extras,
 ) -> Vec<Constraint> {
     m.no_attrs(n, on, extra);
     let mut items = Vec::new();
@@ -623,7 +612,7 @@ pub(super) fn constraint_children(
 }
 
 /// spec 2.3.19 `ConstraintUnitType`: an optional `key` and one condition.
-pub(super) fn map_unit(m: &mut Mapper, n: &Node, extra: &mut Vec<Extra>) -> ConstraintKind {
+pub(super) fn map_unit(m: &mut Mapper, n: &Node, extra: &mut Extras) -> ConstraintKind {
     let on = "constraint unit";
     let mut key = None;
     let mut key_attr = None;
@@ -676,7 +665,7 @@ pub(super) fn map_condition(
     m: &mut Mapper,
     n: &Node,
     k: &str,
-    extra: &mut Vec<Extra>,
+    extra: &mut Extras,
 ) -> Option<Condition> {
     let on = format!("`{}`", n.qname);
     let cond = match k {
@@ -686,7 +675,7 @@ pub(super) fn map_condition(
             let operand = ops.next().unwrap_or(Constraint {
                 kind: ConstraintKind::Empty,
                 pos: n.pos,
-                extra: Vec::new(),
+                extra: crate::model::Extras::new(),
             });
             for more in ops {
                 m.warn(
@@ -701,7 +690,7 @@ pub(super) fn map_condition(
                     name: "Constraint".into(),
                     namespace: None,
                     value: None,
-                    children: Vec::new(),
+                    children: crate::model::Extras::new(),
                     pos: more.pos,
                 });
             }
@@ -807,7 +796,7 @@ pub(super) fn literal_child(
     m: &mut Mapper,
     n: &Node,
     on: &str,
-    extra: &mut Vec<Extra>,
+    extra: &mut Extras,
 ) -> Option<Text> {
     let mut literal = None;
     for c in &n.children {

@@ -11,7 +11,7 @@ use super::{attr_extra, build_any_tree, decode, node_extra, Attr, Mapper, Node, 
 use crate::diagnostic::{codes, Diagnostic};
 use crate::model::fields::Fields;
 use crate::model::system::*;
-use crate::model::{Extra, Located, Pos};
+use crate::model::{Extra, Extras, Located, Pos};
 use crate::parse::Limits;
 
 /// Namespace URI of the basic system profile (`RtsProfile.xsd`).
@@ -79,25 +79,25 @@ fn ns_note(ns: &Ns) -> String {
     }
 }
 
-fn unknown_attr(m: &mut Mapper, a: &Attr, on: &str, extra: &mut Vec<Extra>) {
+fn unknown_attr(m: &mut Mapper, a: &Attr, on: &str, extra: &mut Extras) {
     let what = format!("attribute `{}`{} on {on}", a.qname, ns_note(&a.ns));
     keep(m, a.pos, &what, attr_extra(a), extra);
 }
 
-fn unknown_elem(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) {
+fn unknown_elem(m: &mut Mapper, n: &Node, on: &str, extra: &mut Extras) {
     let what = format!("element `{}`{} in {on}", n.qname, ns_note(&n.ns));
     keep(m, n.pos, &what, node_extra(n), extra);
 }
 
 /// Something unknown (`what`): warned about and kept as extra `e`.
-fn keep(m: &mut Mapper, pos: Pos, what: &str, e: Extra, extra: &mut Vec<Extra>) {
+fn keep(m: &mut Mapper, pos: Pos, what: &str, e: Extra, extra: &mut Extras) {
     m.warn(pos, format!("unknown {what}; kept as an extra property"));
     extra.push(e);
 }
 
 /// A new node `T` at element `n` with the attributes the field table lists for `T` (any
 /// namespace of the system profile); every other attribute is unknown on `on`.
-fn attrs<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str, extra: &mut Vec<Extra>) -> T {
+fn attrs<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str, extra: &mut Extras) -> T {
     let mut t = T::default();
     *t.pos_mut() = n.pos;
     for a in &n.attrs {
@@ -118,8 +118,8 @@ fn children<T: Located>(
     n: &Node,
     on: &str,
     mut t: T,
-    mut extra: Vec<Extra>,
-    mut child: impl FnMut(&mut Mapper, &Node, &str, &mut T, &mut Vec<Extra>) -> bool,
+    mut extra: Extras,
+    mut child: impl FnMut(&mut Mapper, &Node, &str, &mut T, &mut Extras) -> bool,
 ) -> T {
     for c in &n.children {
         if !ekey(c).is_some_and(|k| child(m, c, k, &mut t, &mut extra)) {
@@ -133,7 +133,7 @@ fn children<T: Located>(
 
 /// Element `n` as the node `T` of the field table (attributes only, no child elements defined).
 fn leaf<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str) -> T {
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     let t = attrs(m, n, on, &mut extra);
     children(m, n, on, t, extra, |_, _, _, _, _| false)
 }
@@ -143,9 +143,9 @@ fn node<T: Fields + Default>(
     m: &mut Mapper,
     n: &Node,
     on: &str,
-    child: impl FnMut(&mut Mapper, &Node, &str, &mut T, &mut Vec<Extra>) -> bool,
+    child: impl FnMut(&mut Mapper, &Node, &str, &mut T, &mut Extras) -> bool,
 ) -> T {
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     let t = attrs(m, n, on, &mut extra);
     children(m, n, on, t, extra, child)
 }
@@ -203,7 +203,7 @@ fn property(m: &mut Mapper, c: &Node, k: &str, properties: &mut Vec<SystemProper
 
 /// `rts:Components`: one component instance.
 fn map_component(m: &mut Mapper, n: &Node) -> SystemComponent {
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     let mut c: SystemComponent = attrs(m, n, "component instance", &mut extra);
     c.id_parts = c.id.as_deref().and_then(ComponentIdParts::parse);
     let on = format!(
@@ -231,7 +231,7 @@ fn map_component(m: &mut Mapper, n: &Node) -> SystemComponent {
 
 /// `rts:DataPorts` / `rts:ServicePorts` of an instance.
 fn map_port(m: &mut Mapper, n: &Node, on: &str, instance: Option<&str>) -> SystemPort {
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     let mut p: SystemPort = attrs(m, n, on, &mut extra);
     p.short_name = p
         .name
@@ -324,7 +324,7 @@ fn map_end(m: &mut Mapper, n: &Node, on: &str) -> PortEnd {
 }
 
 /// Sets a connector end; a second one is kept as an extra.
-fn set_end(m: &mut Mapper, slot: &mut Option<PortEnd>, c: &Node, on: &str, extra: &mut Vec<Extra>) {
+fn set_end(m: &mut Mapper, slot: &mut Option<PortEnd>, c: &Node, on: &str, extra: &mut Extras) {
     if slot.is_some() {
         m.repeated_elem(c, on, extra);
     } else {
@@ -354,7 +354,7 @@ fn map_connector<T: Fields + Default + Connector>(
     what: &str,
     ends: [&str; 2],
 ) -> T {
-    let mut extra = Vec::new();
+    let mut extra = crate::model::Extras::new();
     let t: T = attrs(m, n, what, &mut extra);
     let name = T::NODE
         .json_field("name")
