@@ -1662,7 +1662,7 @@ impl Catalog {
         Some(self.system_page(Ix::new(si)))
     }
 
-    /// The position of the component with id `id` in [`Catalog::components`].
+    /// The handle of the component with id `id`.
     pub fn component_index(&self, id: &str) -> Option<ComponentIx> {
         self.by_id.get(id).copied()
     }
@@ -1679,12 +1679,12 @@ impl Catalog {
             .filter_map(|id| self.component_index(id))
     }
 
-    /// The category facet of each component, by position (every component is in one).
+    /// The category facet of each component, by handle (every component is in one).
     pub fn category_of_each(&self) -> PerEntry<Component, usize> {
         Self::facet_of_each(&self.categories, self.components.len(), self)
     }
 
-    /// The vendor facet of each component, by position (every component is in one).
+    /// The vendor facet of each component, by handle (every component is in one).
     pub fn vendor_of_each(&self) -> PerEntry<Component, usize> {
         Self::facet_of_each(&self.vendors, self.components.len(), self)
     }

@@ -568,7 +568,6 @@ node! {
     }
 }
 
-/// Which order a [`Order`] is (root elements `StartUp` … `Finalizing`).
 /// What both kinds of connector hold beside their scalars, for the readers (which read them
 /// alike).
 pub struct ConnectorParts<'a> {
@@ -578,9 +577,14 @@ pub struct ConnectorParts<'a> {
     pub extra: &'a mut Extras,
 }
 
-/// A data port connector or a service port connector.
+/// A data port connector or a service port connector: what the readers fill and what the
+/// comparison of two systems reads, alike for both kinds.
 pub trait Connector {
     fn parts_mut(&mut self) -> ConnectorParts<'_>;
+    fn name(&self) -> &Option<Text>;
+    fn connector_id(&self) -> &Option<Text>;
+    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>);
+    fn pos(&self) -> Pos;
 }
 
 macro_rules! connector {
@@ -594,11 +598,24 @@ macro_rules! connector {
                     extra: &mut self.extra,
                 }
             }
+            fn name(&self) -> &Option<Text> {
+                &self.name
+            }
+            fn connector_id(&self) -> &Option<Text> {
+                &self.connector_id
+            }
+            fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
+                (self.source.as_ref(), self.target.as_ref())
+            }
+            fn pos(&self) -> Pos {
+                self.pos
+            }
         }
     )*};
 }
 connector!(DataPortConnector, ServicePortConnector);
 
+/// Which order a [`Order`] is (root elements `StartUp` … `Finalizing`).
 #[derive(
     Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize,
 )]

@@ -13,8 +13,8 @@
 use super::end_text;
 use crate::diff::{change, codes, labels, same_type, Change};
 use crate::model::system::{
-    short_port_name, ComponentIdParts, DataPortConnector, ExecutionContext, PortEnd, RtSystem,
-    ServicePortConnector, SystemComponent, SystemConfigurationSet, SystemProperty,
+    short_port_name, ComponentIdParts, Connector, DataPortConnector, ExecutionContext, PortEnd,
+    RtSystem, ServicePortConnector, SystemComponent, SystemConfigurationSet, SystemProperty,
 };
 use crate::model::{non_empty, Pos, Text};
 use serde::Serialize;
@@ -1030,35 +1030,6 @@ fn strip_ends(v: &mut Value, ends_changed: bool) {
         }
     }
 }
-
-/// What pairing reads of either kind of connector.
-trait Connector {
-    fn name(&self) -> &Option<Text>;
-    fn connector_id(&self) -> &Option<Text>;
-    fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>);
-    fn pos(&self) -> Pos;
-}
-
-/// Both connector kinds hold the same fields the comparison reads.
-macro_rules! connector {
-    ($($t:ty),*) => {$(
-        impl Connector for $t {
-            fn name(&self) -> &Option<Text> {
-                &self.name
-            }
-            fn connector_id(&self) -> &Option<Text> {
-                &self.connector_id
-            }
-            fn ends(&self) -> (Option<&PortEnd>, Option<&PortEnd>) {
-                (self.source.as_ref(), self.target.as_ref())
-            }
-            fn pos(&self) -> Pos {
-                self.pos
-            }
-        }
-    )*};
-}
-connector!(DataPortConnector, ServicePortConnector);
 
 /// The labels of the old and the new connectors (name, else id, else `source > target`) and
 /// their pairs ([`match_connectors`]: by id, then by ends).
