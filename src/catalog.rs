@@ -831,7 +831,33 @@ pub enum Output {
 impl Page {
     /// The page's path below the output root in HTML (`components/camera.html`).
     pub fn path(&self, ext: &str) -> String {
-        format!("{}.{ext}", self.stem)
+        let mut s = String::with_capacity(self.stem.len() + 1 + ext.len());
+        s.push_str(&self.stem);
+        s.push('.');
+        s.push_str(ext);
+        s
+    }
+
+    /// The name of the page in output `out` when that output's layout fixes it (mdBook's
+    /// `types.md`, Doxygen's `mainpage.dox`), else `None`: the page's stem and the output's
+    /// extension.
+    fn fixed_name(&self, out: Output) -> Option<&'static str> {
+        match (out, self.kind) {
+            (Output::Html, _) => None,
+            (Output::Markdown, PageKind::DataTypes) => Some("types.md"),
+            (Output::Markdown, PageKind::Interfaces) => Some("interfaces.md"),
+            (Output::Markdown, PageKind::Categories) => Some("categories.md"),
+            (Output::Markdown, PageKind::Vendors) => Some("vendors.md"),
+            (Output::Markdown, PageKind::Systems) => Some("systems.md"),
+            (Output::Markdown, _) => None,
+            (Output::Doxygen, PageKind::Index) => Some("mainpage.dox"),
+            (Output::Doxygen, PageKind::DataTypes) => Some("types.dox"),
+            (Output::Doxygen, PageKind::Interfaces) => Some("interfaces.dox"),
+            (Output::Doxygen, PageKind::Categories) => Some("categories.dox"),
+            (Output::Doxygen, PageKind::Vendors) => Some("vendors.dox"),
+            (Output::Doxygen, PageKind::Systems) => Some("systems.dox"),
+            (Output::Doxygen, _) => None,
+        }
     }
 
     /// The page's path in output `out`. The entry pages have the same stem everywhere; the
@@ -840,21 +866,31 @@ impl Page {
     /// Doxygen's `mainpage.dox`, `types.dox`, `interfaces.dox`, `vendors.dox`. Links between
     /// pages come from [`Catalog::href`]; which pages an output writes, [`Output::carries`].
     pub fn path_in(&self, out: Output) -> String {
-        match (out, self.kind) {
-            (Output::Html, _) => self.path("html"),
-            (Output::Markdown, PageKind::DataTypes) => "types.md".into(),
-            (Output::Markdown, PageKind::Interfaces) => "interfaces.md".into(),
-            (Output::Markdown, PageKind::Categories) => "categories.md".into(),
-            (Output::Markdown, PageKind::Vendors) => "vendors.md".into(),
-            (Output::Markdown, PageKind::Systems) => "systems.md".into(),
-            (Output::Markdown, _) => self.path("md"),
-            (Output::Doxygen, PageKind::Index) => "mainpage.dox".into(),
-            (Output::Doxygen, PageKind::DataTypes) => "types.dox".into(),
-            (Output::Doxygen, PageKind::Interfaces) => "interfaces.dox".into(),
-            (Output::Doxygen, PageKind::Categories) => "categories.dox".into(),
-            (Output::Doxygen, PageKind::Vendors) => "vendors.dox".into(),
-            (Output::Doxygen, PageKind::Systems) => "systems.dox".into(),
-            (Output::Doxygen, _) => self.path("dox"),
+        let mut s = String::new();
+        self.push_path_in(out, &mut s);
+        s
+    }
+
+    /// Appends [`Page::path_in`] to `s`.
+    pub(crate) fn push_path_in(&self, out: Output, s: &mut String) {
+        match self.fixed_name(out) {
+            Some(name) => s.push_str(name),
+            None => {
+                s.push_str(&self.stem);
+                s.push_str(match out {
+                    Output::Html => ".html",
+                    Output::Markdown => ".md",
+                    Output::Doxygen => ".dox",
+                });
+            }
+        }
+    }
+
+    /// How many folders deep the page is in output `out`.
+    pub(crate) fn depth_in(&self, out: Output) -> usize {
+        match self.fixed_name(out) {
+            Some(name) => name.matches('/').count(),
+            None => self.stem.matches('/').count(),
         }
     }
 

@@ -112,7 +112,7 @@ impl Catalog {
     pub fn root_from(&self, from: &Page, out: Output) -> String {
         match out {
             Output::Doxygen => String::new(),
-            Output::Html | Output::Markdown => "../".repeat(from.path_in(out).matches('/').count()),
+            Output::Html | Output::Markdown => "../".repeat(from.depth_in(out)),
         }
     }
 
@@ -123,7 +123,9 @@ impl Catalog {
         match out {
             Output::Doxygen => self.href(root, to, anchor, out),
             Output::Html | Output::Markdown => {
-                let mut href = to.path_in(out);
+                let mut href =
+                    String::with_capacity(to.stem.len() + 6 + anchor.map_or(0, |a| a.len() + 1));
+                to.push_path_in(out, &mut href);
                 if let Some(a) = anchor {
                     href.push('#');
                     href.push_str(a);
@@ -143,8 +145,14 @@ impl Catalog {
                 None => to.doxygen_label(),
             },
             Output::Html | Output::Markdown => {
-                let mut href = self.root_from(from, out);
-                href.push_str(&to.path_in(out));
+                let depth = from.depth_in(out);
+                let mut href = String::with_capacity(
+                    3 * depth + to.stem.len() + 6 + anchor.map_or(0, |a| a.len() + 1),
+                );
+                for _ in 0..depth {
+                    href.push_str("../");
+                }
+                to.push_path_in(out, &mut href);
                 if let Some(a) = anchor {
                     href.push('#');
                     href.push_str(a);

@@ -650,16 +650,21 @@ pub const PEER_PORTS_SHOWN: usize = 3;
 
 /// `Camera · image, depth, +2`: a peer component and up to [`PEER_PORTS_SHOWN`] of its ports.
 pub fn peer_text(component: &str, ports: &[&str], sep: &str) -> String {
-    let mut names: Vec<String> = ports
-        .iter()
-        .take(PEER_PORTS_SHOWN)
-        .map(|p| p.to_string())
-        .collect();
+    let mut s = String::with_capacity(component.len() + sep.len() + 16 * ports.len().min(4));
+    s.push_str(component);
+    s.push_str(sep);
+    for (k, p) in ports.iter().take(PEER_PORTS_SHOWN).enumerate() {
+        if k > 0 {
+            s.push_str(", ");
+        }
+        s.push_str(p);
+    }
     let rest = ports.len().saturating_sub(PEER_PORTS_SHOWN);
     if rest > 0 {
-        names.push(format!("+{rest}"));
+        use std::fmt::Write;
+        let _ = write!(s, ", +{rest}");
     }
-    format!("{component}{sep}{}", names.join(", "))
+    s
 }
 
 /// The data-flow page's sections, in order: (grouping, anchor, heading label).

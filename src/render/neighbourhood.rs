@@ -215,7 +215,7 @@ pub fn wiring(
     let mut box_of: Vec<(ComponentIx, usize)> = Vec::new();
     for row in rows {
         let (mine, class, anchor) = drawn_port(cat, ci, row.at);
-        let label = format!("{} {me}.{mine}", kind(class));
+        let label = [kind(class), " ", &me, ".", &mine].concat();
         let link = href(cat.component_page(ci), Some(anchor));
         let mp = port_of(&mut inst[0], mine.clone(), class, link, label);
         let connect =
@@ -229,17 +229,26 @@ pub fn wiring(
                 if conns.iter().any(|c| c.from == from && c.to == to) {
                     return;
                 }
-                let end =
-                    |(i, p): (usize, usize)| format!("{}.{}", inst[i].name, inst[i].ports[p].name);
+                let (f, t) = (&inst[from.0], &inst[to.0]);
+                // `A.out → B.in (type)`; `—` between service ports.
+                let label = [
+                    f.name.as_str(),
+                    ".",
+                    &f.ports[from.1].name,
+                    if row.service { " — " } else { " → " },
+                    &t.name,
+                    ".",
+                    &t.ports[to.1].name,
+                    " (",
+                    row.type_name,
+                    ")",
+                ]
+                .concat();
                 conns.push(WireConnector {
                     from,
                     to,
                     service: row.service,
-                    label: if row.service {
-                        format!("{} — {} ({})", end(from), end(to), row.type_name)
-                    } else {
-                        format!("{} → {} ({})", end(from), end(to), row.type_name)
-                    },
+                    label,
                 });
             };
         for (nb, ports) in row.neighbours.iter().zip(&row.ports_at) {
@@ -260,7 +269,7 @@ pub fn wiring(
             };
             for &at in ports {
                 let (theirs, class, anchor) = drawn_port(cat, nb.component, at);
-                let label = format!("{} {}.{theirs}", kind(class), nb.name);
+                let label = [kind(class), " ", &nb.name, ".", &theirs].concat();
                 let link = href(nb.page, Some(anchor));
                 let bp = port_of(&mut inst[b], theirs, class, link, label);
                 connect(&inst, b, bp, &mut conns);

@@ -9,37 +9,62 @@
 //! with `data` or `service`. The drawing is a `role="group"` (not `role="img"`: it holds links),
 //! each instance and port a link named by `aria-label` and a `<title>`.
 
-use super::svg::esc;
+use super::svg::esc_into;
 use crate::layout::wiring::{layout_with, Edge, Effort, Node, Port, PortKind, Side};
 use crate::render::wiring::{WireConnector, WireInstance};
 use std::fmt::Write;
 
-/// A coordinate of the drawing, written exactly as `f32`'s `Display` writes it. The layout's
+/// Appends a coordinate of the drawing exactly as `f32`'s `Display` writes it. The layout's
 /// coordinates are whole or half pixels, which are written here as an integer and `.5`
 /// without `Display`'s general shortest-digits search (half of the drawing's time at 10,000
-/// profiles went there); any other value is handed to `Display`.
-#[derive(Clone, Copy)]
-struct Num(f32);
-
-impl std::fmt::Display for Num {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let v = self.0;
-        let twice = v * 2.0;
-        // Below a million an f32 is exact to 1/16, so a whole or half value's shortest digits
-        // are its integer part and `.5`; -0 is left to `Display` (it writes `-0`).
-        if v.abs() < 1e6 && twice == twice.trunc() && !(v == 0.0 && v.is_sign_negative()) {
-            let t = twice as i64;
-            let m = t.unsigned_abs();
-            let sign = if t < 0 { "-" } else { "" };
-            if m % 2 == 0 {
-                write!(f, "{sign}{}", m / 2)
-            } else {
-                write!(f, "{sign}{}.5", m / 2)
-            }
-        } else {
-            std::fmt::Display::fmt(&v, f)
+/// profiles went there) and without the formatting machinery; any other value is handed to
+/// `Display`.
+fn num(s: &mut String, v: f32) {
+    let twice = v * 2.0;
+    // Below a million an f32 is exact to 1/16, so a whole or half value's shortest digits
+    // are its integer part and `.5`; -0 is left to `Display` (it writes `-0`).
+    if v.abs() < 1e6 && twice == twice.trunc() && !(v == 0.0 && v.is_sign_negative()) {
+        let t = twice as i64;
+        if t < 0 {
+            s.push('-');
         }
+        let m = t.unsigned_abs();
+        let mut digits = [0u8; 20];
+        let mut n = m / 2;
+        let mut at = digits.len();
+        loop {
+            at -= 1;
+            digits[at] = b'0' + (n % 10) as u8;
+            n /= 10;
+            if n == 0 {
+                break;
+            }
+        }
+        for &d in &digits[at..] {
+            s.push(char::from(d));
+        }
+        if m % 2 == 1 {
+            s.push_str(".5");
+        }
+    } else {
+        let _ = write!(s, "{v}");
     }
+}
+
+/// Appends `x,y`.
+fn point(s: &mut String, x: f32, y: f32) {
+    num(s, x);
+    s.push(',');
+    num(s, y);
+}
+
+/// Appends ` name="value"` for a coordinate.
+fn attr_num(s: &mut String, name: &str, v: f32) {
+    s.push(' ');
+    s.push_str(name);
+    s.push_str("=\"");
+    num(s, v);
+    s.push('"');
 }
 
 impl WireInstance {
@@ -88,13 +113,19 @@ pub fn wiring_layout(
     crate::layout::wiring::layout(&nodes, &edges)
 }
 
-/// ` href="…"`, or nothing for an empty link (a drawing on its own).
-fn href_attr(h: &str) -> String {
-    if h.is_empty() {
-        String::new()
-    } else {
-        format!(" href=\"{}\"", esc(h))
+/// Appends ` href="…"`, or nothing for an empty link (a drawing on its own).
+fn href_attr(s: &mut String, h: &str) {
+    if !h.is_empty() {
+        s.push_str(" href=\"");
+        esc_to(s, h);
+        s.push('"');
     }
+}
+
+/// Appends `t` escaped.
+fn esc_to(s: &mut String, t: &str) {
+    // Writing to a String cannot fail.
+    let _ = esc_into(s, t);
 }
 
 /// -1, 0 or 1 (`f32::signum` gives 1 for 0).
@@ -108,14 +139,14 @@ fn sign(v: f32) -> f32 {
     }
 }
 
-/// An orthogonal polyline as a path with rounded bends (radius up to 6, less where a segment
-/// is short).
-fn rounded_path(pts: &[(f32, f32)]) -> String {
-    let mut d = String::new();
+/// Appends an orthogonal polyline as a path with rounded bends (radius up to 6, less where a
+/// segment is short).
+fn rounded_path(d: &mut String, pts: &[(f32, f32)]) {
     let Some(&(x0, y0)) = pts.first() else {
-        return d;
+        return;
     };
-    let _ = write!(d, "M{},{}", Num(x0), Num(y0));
+    d.push('M');
+    point(d, x0, y0);
     for k in 1..pts.len() {
         let (x, y) = pts[k];
         if k + 1 < pts.len() {
@@ -126,21 +157,17 @@ fn rounded_path(pts: &[(f32, f32)]) -> String {
             let r = 6.0f32.min(len_in / 2.0).min(len_out / 2.0);
             let (ix, iy) = (sign(x - px), sign(y - py));
             let (ox, oy) = (sign(nx - x), sign(ny - y));
-            let _ = write!(
-                d,
-                " L{},{} Q{},{} {},{}",
-                Num(x - ix * r),
-                Num(y - iy * r),
-                Num(x),
-                Num(y),
-                Num(x + ox * r),
-                Num(y + oy * r)
-            );
+            d.push_str(" L");
+            point(d, x - ix * r, y - iy * r);
+            d.push_str(" Q");
+            point(d, x, y);
+            d.push(' ');
+            point(d, x + ox * r, y + oy * r);
         } else {
-            let _ = write!(d, " L{},{}", Num(x), Num(y));
+            d.push_str(" L");
+            point(d, x, y);
         }
     }
-    d
 }
 
 /// The wiring diagram. `title` names the drawing for assistive technology.
@@ -158,43 +185,62 @@ pub fn system_diagram_with(
     let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
     let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
     let l = layout_with(&nodes, &edges, effort);
-    let (width, height) = (Num(l.width), Num(l.height));
     let mut s = String::with_capacity(4096 + inst.len() * 1024);
-    let _ = write!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram system-diagram" viewBox="0 0 {width} {height}" width="{width}" height="{height}" role="group" aria-label="{t}"><title>{t}</title>"#,
-        t = esc(title)
+    s.push_str(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram system-diagram" viewBox="0 0 "#,
     );
+    num(&mut s, l.width);
+    s.push(' ');
+    num(&mut s, l.height);
+    s.push('"');
+    attr_num(&mut s, "width", l.width);
+    attr_num(&mut s, "height", l.height);
+    s.push_str(r#" role="group" aria-label=""#);
+    esc_to(&mut s, title);
+    s.push_str(r#""><title>"#);
+    esc_to(&mut s, title);
+    s.push_str("</title>");
     // Connectors first, under the boxes.
     s.push_str(r#"<g class="connectors">"#);
     for (c, route) in conns.iter().zip(&l.routes) {
         let Some(route) = route else { continue };
-        let _ = write!(
-            s,
-            r#"<path class="connector{}" d="{}"><title>{}</title></path>"#,
-            if c.service { " service" } else { " data" },
-            rounded_path(route),
-            esc(&c.label)
-        );
+        s.push_str(if c.service {
+            r#"<path class="connector service" d=""#
+        } else {
+            r#"<path class="connector data" d=""#
+        });
+        rounded_path(&mut s, route);
+        s.push_str(r#""><title>"#);
+        esc_to(&mut s, &c.label);
+        s.push_str("</title></path>");
     }
     s.push_str("</g>");
     for (it, b) in inst.iter().zip(&l.nodes) {
-        let (x, y) = (Num(b.x), Num(b.y));
-        let cx = Num(b.x + b.w / 2.0);
-        let _ = write!(
-            s,
-            r#"<g class="instance"><a{} aria-label="{l}"><title>{l}</title><rect class="rtc-box" x="{x}" y="{y}" width="{}" height="{}" rx="4"/><text class="rtc-name" x="{cx}" y="{}" text-anchor="middle">"#,
-            href_attr(&it.href),
-            Num(b.w),
-            Num(b.h),
-            Num(b.title_y),
-            l = esc(&it.label),
-        );
+        let cx = b.x + b.w / 2.0;
+        s.push_str(r#"<g class="instance"><a"#);
+        href_attr(&mut s, &it.href);
+        s.push_str(r#" aria-label=""#);
+        esc_to(&mut s, &it.label);
+        s.push_str(r#""><title>"#);
+        esc_to(&mut s, &it.label);
+        s.push_str(r#"</title><rect class="rtc-box""#);
+        attr_num(&mut s, "x", b.x);
+        attr_num(&mut s, "y", b.y);
+        attr_num(&mut s, "width", b.w);
+        attr_num(&mut s, "height", b.h);
+        s.push_str(r#" rx="4"/><text class="rtc-name""#);
+        attr_num(&mut s, "x", cx);
+        attr_num(&mut s, "y", b.title_y);
+        s.push_str(r#" text-anchor="middle">"#);
         for (k, line) in b.title.iter().enumerate() {
             if k == 0 {
-                s.push_str(&esc(line));
+                esc_to(&mut s, line);
             } else {
-                let _ = write!(s, r#"<tspan x="{cx}" dy="18">{}</tspan>"#, esc(line));
+                s.push_str("<tspan");
+                attr_num(&mut s, "x", cx);
+                s.push_str(r#" dy="18">"#);
+                esc_to(&mut s, line);
+                s.push_str("</tspan>");
             }
         }
         // The component's name is a further line of the same text, after a space: the link's
@@ -202,58 +248,55 @@ pub fn system_diagram_with(
         let mut prev_y = b.title_y + 18.0 * (b.title.len() as f32 - 1.0);
         for (k, line) in b.subtitle.iter().enumerate() {
             let ty = b.subtitle_y + 15.0 * k as f32;
-            let _ = write!(
-                s,
-                r#"<tspan class="stereotype" x="{cx}" dy="{}">{}{}</tspan>"#,
-                Num(ty - prev_y),
-                if k == 0 { " " } else { "" },
-                esc(line)
-            );
+            s.push_str(r#"<tspan class="stereotype""#);
+            attr_num(&mut s, "x", cx);
+            attr_num(&mut s, "dy", ty - prev_y);
+            s.push('>');
+            if k == 0 {
+                s.push(' ');
+            }
+            esc_to(&mut s, line);
+            s.push_str("</tspan>");
             prev_y = ty;
         }
         s.push_str("</text></a>");
         for (p, pl) in it.ports.iter().zip(&b.ports) {
-            let (px, py) = (Num(pl.x), Num(pl.y));
-            let _ = write!(
-                s,
-                r#"<a{} class="port {}" aria-label="{l}"><title>{l}</title>"#,
-                href_attr(&p.href),
-                p.class,
-                l = esc(&p.label)
-            );
+            s.push_str("<a");
+            href_attr(&mut s, &p.href);
+            s.push_str(r#" class="port "#);
+            s.push_str(p.class);
+            s.push_str(r#"" aria-label=""#);
+            esc_to(&mut s, &p.label);
+            s.push_str(r#""><title>"#);
+            esc_to(&mut s, &p.label);
+            s.push_str("</title>");
             if p.class == "service" {
-                let _ = write!(
-                    s,
-                    r#"<circle class="port-square" cx="{px}" cy="{py}" r="6"/>"#
-                );
+                s.push_str(r#"<circle class="port-square""#);
+                attr_num(&mut s, "cx", pl.x);
+                attr_num(&mut s, "cy", pl.y);
+                s.push_str(r#" r="6"/>"#);
             } else {
-                let _ = write!(
-                    s,
-                    r#"<rect class="port-square" x="{}" y="{}" width="12" height="12"/>"#,
-                    Num(pl.x - 6.0),
-                    Num(pl.y - 6.0)
-                );
+                s.push_str(r#"<rect class="port-square""#);
+                attr_num(&mut s, "x", pl.x - 6.0);
+                attr_num(&mut s, "y", pl.y - 6.0);
+                s.push_str(r#" width="12" height="12"/>"#);
             }
-            let anchor = match pl.side {
-                Side::Left => "start",
-                Side::Right => "end",
-            };
-            let _ = write!(
-                s,
-                r#"<text class="port-name" x="{}" y="{}" text-anchor="{anchor}">"#,
-                Num(pl.text_x),
-                Num(pl.text_y)
-            );
+            s.push_str(r#"<text class="port-name""#);
+            attr_num(&mut s, "x", pl.text_x);
+            attr_num(&mut s, "y", pl.text_y);
+            s.push_str(match pl.side {
+                Side::Left => r#" text-anchor="start">"#,
+                Side::Right => r#" text-anchor="end">"#,
+            });
             for (k, line) in pl.lines.iter().enumerate() {
                 if k == 0 {
-                    s.push_str(&esc(line));
+                    esc_to(&mut s, line);
                 } else {
-                    let _ = write!(
-                        s,
-                        r#"<tspan x="{}" dy="13">{}</tspan>"#,
-                        Num(pl.text_x),
-                        esc(line)
-                    );
+                    s.push_str("<tspan");
+                    attr_num(&mut s, "x", pl.text_x);
+                    s.push_str(r#" dy="13">"#);
+                    esc_to(&mut s, line);
+                    s.push_str("</tspan>");
                 }
             }
             s.push_str("</text></a>");
@@ -352,7 +395,9 @@ mod tests {
         values.extend((-4000..4000).map(|i| i as f32 / 4.0));
         values.extend((0..2000).map(|i| i as f32 * 0.1 + 7.0));
         for v in values {
-            assert_eq!(Num(v).to_string(), v.to_string(), "{v:?}");
+            let mut s = String::new();
+            num(&mut s, v);
+            assert_eq!(s, v.to_string(), "{v:?}");
         }
     }
 
