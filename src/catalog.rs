@@ -888,10 +888,8 @@ impl Page {
 
     /// How many folders deep the page is in output `out`.
     pub(crate) fn depth_in(&self, out: Output) -> usize {
-        match self.fixed_name(out) {
-            Some(name) => name.matches('/').count(),
-            None => self.stem.matches('/').count(),
-        }
+        let path = self.fixed_name(out).unwrap_or(&self.stem);
+        path.bytes().filter(|&b| b == b'/').count()
     }
 
     /// The file name alone (`camera.html`), for links between pages of one folder.

@@ -7,19 +7,20 @@
 /// average letter (DejaVu Sans, the Debian default, sets `TimedRGBDCameraImage` at ~0.66 em a
 /// character), narrow letters and punctuation narrower.
 pub fn text_width(s: &str, px: f32) -> f32 {
-    s.chars()
-        .map(|c| {
-            let em = match c {
-                _ if (c as u32) >= 0x2E80 => 1.0,
-                'M' | 'W' | 'm' | 'w' => 0.9,
-                'I' => 0.4,
-                'A'..='Z' => 0.74,
-                'i' | 'j' | 'l' | 't' | 'f' | 'r' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.4,
-                _ => 0.62,
-            };
-            px * em
-        })
-        .sum()
+    s.chars().map(|c| advance(c, px)).sum()
+}
+
+/// The width of one character at `px` (see [`text_width`]).
+fn advance(c: char, px: f32) -> f32 {
+    let em = match c {
+        _ if (c as u32) >= 0x2E80 => 1.0,
+        'M' | 'W' | 'm' | 'w' => 0.9,
+        'I' => 0.4,
+        'A'..='Z' => 0.74,
+        'i' | 'j' | 'l' | 't' | 'f' | 'r' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.4,
+        _ => 0.62,
+    };
+    px * em
 }
 
 /// Width of bold text (`font-weight: 700` sets about 8 % wider in DejaVu Sans and system-ui).
@@ -27,12 +28,57 @@ pub fn bold_width(s: &str, px: f32) -> f32 {
     text_width(s, px) * 1.1
 }
 
-/// Cuts `s` into lines no wider than `max` (by `width`), breaking after `_ . : / - ,` and
-/// spaces or before a capital that follows a small letter (`ManipulatorCommon|Interface`), and
-/// inside a word only when one word alone is too wide. Never drops a character: the lines
-/// joined give `s` back (spaces at a break are kept at the end of the line).
-pub fn wrap(s: &str, max: f32, width: &dyn Fn(&str) -> f32) -> Vec<String> {
-    if width(s) <= max || s.is_empty() {
+/// A size and weight of the sans-serif text measured by [`text_width`] and [`bold_width`].
+#[derive(Debug, Clone, Copy)]
+pub struct Font {
+    pub px: f32,
+    pub bold: bool,
+}
+
+impl Font {
+    /// Regular text at `px`.
+    pub fn regular(px: f32) -> Font {
+        Font { px, bold: false }
+    }
+
+    /// Bold text at `px`.
+    pub fn bold(px: f32) -> Font {
+        Font { px, bold: true }
+    }
+
+    /// The width of `s`.
+    pub fn width(self, s: &str) -> f32 {
+        if self.bold {
+            bold_width(s, self.px)
+        } else {
+            text_width(s, self.px)
+        }
+    }
+
+    /// The sum of the characters' widths, continued from `sum` (a text's width, measured as
+    /// [`text_width`] adds up, before [`Font::finish`]).
+    fn add(self, sum: f32, s: &str) -> f32 {
+        s.chars().fold(sum, |acc, c| acc + advance(c, self.px))
+    }
+
+    /// The width of a text whose characters add up to `sum`.
+    fn finish(self, sum: f32) -> f32 {
+        if self.bold {
+            sum * 1.1
+        } else {
+            sum
+        }
+    }
+}
+
+/// Cuts `s` into lines no wider than `max` in `font`, breaking after `_ . : / - ,` and spaces
+/// or before a capital that follows a small letter (`ManipulatorCommon|Interface`), and inside
+/// a word only when one word alone is too wide. Never drops a character: the lines joined give
+/// `s` back (spaces at a break are kept at the end of the line). A line's width is added up
+/// as it grows (the same additions in the same order as measuring it whole), not measured
+/// again for each piece.
+pub fn wrap(s: &str, max: f32, font: Font) -> Vec<String> {
+    if font.width(s) <= max || s.is_empty() {
         return vec![s.to_string()];
     }
     // Pieces between break opportunities.
@@ -56,28 +102,36 @@ pub fn wrap(s: &str, max: f32, width: &dyn Fn(&str) -> f32) -> Vec<String> {
     }
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
+    // The characters of `line` added up.
+    let mut sum = 0.0f32;
     for piece in pieces {
-        let joined = format!("{line}{piece}");
-        if width(&joined) <= max {
-            line = joined;
+        let joined = font.add(sum, &piece);
+        if font.finish(joined) <= max {
+            line.push_str(&piece);
+            sum = joined;
             continue;
         }
         if !line.is_empty() {
             lines.push(std::mem::take(&mut line));
         }
-        if width(&piece) <= max {
+        let alone = font.add(0.0, &piece);
+        if font.finish(alone) <= max {
             line = piece;
+            sum = alone;
             continue;
         }
         // One piece wider than a line: cut it by characters.
+        sum = font.add(0.0, &line);
         for c in piece.chars() {
-            let mut next = line.clone();
-            next.push(c);
-            if width(&next) > max && !line.is_empty() {
+            let mut one = [0u8; 4];
+            let next = font.add(sum, c.encode_utf8(&mut one));
+            if font.finish(next) > max && !line.is_empty() {
                 lines.push(std::mem::take(&mut line));
                 line.push(c);
+                sum = font.add(0.0, c.encode_utf8(&mut one));
             } else {
-                line = next;
+                line.push(c);
+                sum = next;
             }
         }
     }
@@ -94,15 +148,16 @@ mod tests {
     #[test]
     fn wraps_at_word_parts_and_keeps_every_character() {
         let w = |s: &str| text_width(s, 11.0);
+        let font = Font::regular(11.0);
         let name = "ManipulatorCommonInterface_Middle.ManipulatorCommonInterface_Middle";
-        let lines = wrap(name, 170.0, &w);
+        let lines = wrap(name, 170.0, font);
         assert!(lines.len() >= 2, "{lines:?}");
         assert_eq!(lines.concat(), name);
         assert!(lines.iter().all(|l| w(l) <= 170.0), "{lines:?}");
-        assert_eq!(wrap("short", 170.0, &w), vec!["short"]);
+        assert_eq!(wrap("short", 170.0, font), vec!["short"]);
         // One long word without break opportunities is cut by characters.
         let long = "x".repeat(100);
-        let lines = wrap(&long, 60.0, &w);
+        let lines = wrap(&long, 60.0, font);
         assert_eq!(lines.concat(), long);
         assert!(lines.iter().all(|l| w(l) <= 60.0));
         // CJK characters are a whole em wide.

@@ -28,7 +28,7 @@
 //!
 //! Boxes are sized to their names, wrapped on several lines when very long, never cut.
 
-use super::text::{bold_width, text_width, wrap};
+use super::text::{bold_width, text_width, wrap, Font};
 
 /// What a port is, for its side and symbol.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -714,16 +714,16 @@ fn channel_of(a: &Stop, b: &Stop, g: &Graph<'_>) -> usize {
 
 /// Box geometry relative to its top-left corner.
 fn node_box(n: &Node, side: &[Side], port_order: &[Vec<usize>; 2]) -> NodeBox {
-    let title = wrap(&n.name, TITLE_MAX, &title_w);
+    let title = wrap(&n.name, TITLE_MAX, Font::bold(TITLE_PX));
     let subtitle = if n.component.is_empty() {
         Vec::new()
     } else {
-        wrap(&n.component, TITLE_MAX, &subtitle_w)
+        wrap(&n.component, TITLE_MAX, Font::regular(SUBTITLE_PX))
     };
     let port_lines: Vec<Vec<String>> = n
         .ports
         .iter()
-        .map(|p| wrap(&p.name, PORT_MAX, &port_w))
+        .map(|p| wrap(&p.name, PORT_MAX, Font::regular(PORT_PX)))
         .collect();
     let side_w = |s: usize| {
         port_order[s]
@@ -1140,7 +1140,36 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
             _ => None,
         })
         .collect();
-    let all_links: Vec<(Stop, Stop)> = links(g).map(|(a, b)| (*a, *b)).collect();
+    // What pulls each item: the other end of each link it is on, in the order of the links
+    // (the sums below add up in that order). Pulls are met per layer.
+    struct Pull {
+        item: usize,
+        other: usize,
+        offset: f32,
+        other_offset: f32,
+        weight: f32,
+    }
+    let mut pulls: Vec<Vec<Pull>> = (0..g.layers).map(|_| Vec::new()).collect();
+    for (a, b) in links(g) {
+        for (s, o) in [(a, b), (b, a)] {
+            let (si, oi) = (stop_item(g, s), stop_item(g, o));
+            if si == oi {
+                continue;
+            }
+            pulls[g.items[si].1].push(Pull {
+                item: si,
+                other: oi,
+                offset: offset_of(s),
+                other_offset: offset_of(o),
+                weight: match (s, o) {
+                    (Stop::Dummy(_), Stop::Dummy(_)) => 4.0,
+                    (Stop::Dummy(_), _) | (_, Stop::Dummy(_)) => 2.0,
+                    _ => 1.0,
+                },
+            });
+        }
+    }
+    let mut want = vec![(0.0f32, 0.0f32); g.items.len()];
     for round in 0..16 {
         let seq: Vec<usize> = if round % 2 == 0 {
             (0..g.layers).collect()
@@ -1149,22 +1178,13 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
         };
         for l in seq {
             // Desired tops.
-            let mut want = vec![(0.0f32, 0.0f32); g.items.len()];
-            for (a, b) in &all_links {
-                for (s, o) in [(a, b), (b, a)] {
-                    let (si, oi) = (stop_item(g, s), stop_item(g, o));
-                    if g.items[si].1 != l || si == oi {
-                        continue;
-                    }
-                    let oy = top[oi] + offset_of(o);
-                    let w = match (s, o) {
-                        (Stop::Dummy(_), Stop::Dummy(_)) => 4.0,
-                        (Stop::Dummy(_), _) | (_, Stop::Dummy(_)) => 2.0,
-                        _ => 1.0,
-                    };
-                    want[si].0 += w * (oy - offset_of(s));
-                    want[si].1 += w;
-                }
+            for &it in &g.order[l] {
+                want[it] = (0.0, 0.0);
+            }
+            for p in &pulls[l] {
+                let oy = top[p.other] + p.other_offset;
+                want[p.item].0 += p.weight * (oy - p.offset);
+                want[p.item].1 += p.weight;
             }
             let list = &g.order[l];
             let mut target = Vec::with_capacity(list.len());
@@ -1209,7 +1229,7 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
     // Straighten small jogs: an item a few pixels off a neighbour it links to moves level
     // with it when its layer leaves room.
     for _ in 0..3 {
-        for (a, b) in &all_links {
+        for (a, b) in links(g) {
             for (s, o) in [(a, b), (b, a)] {
                 let (si, oi) = (stop_item(g, s), stop_item(g, o));
                 if si == oi || g.items[si].1 == g.items[oi].1 {

@@ -59,7 +59,7 @@ pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::
     out.write_str(&s[start..])
 }
 
-use crate::layout::text::{text_width, wrap};
+use crate::layout::text::{text_width, wrap, Font};
 
 /// A data port as drawn on the component box.
 pub struct DiagramDataPort {
@@ -147,13 +147,13 @@ fn slot_lines(side: PortSide, s: &Slot<'_>) -> Vec<(String, bool)> {
             }
         }
         _ => {
-            let mut v: Vec<(String, bool)> = wrap(&a, MAX_LINE, &|t| text_width(t, 12.0))
+            let mut v: Vec<(String, bool)> = wrap(&a, MAX_LINE, Font::regular(12.0))
                 .into_iter()
                 .map(|l| (l, false))
                 .collect();
             if !b.is_empty() {
                 v.extend(
-                    wrap(&b, MAX_LINE, &|t| text_width(t, 11.0))
+                    wrap(&b, MAX_LINE, Font::regular(11.0))
                         .into_iter()
                         .map(|l| (l, true)),
                 );

@@ -40,9 +40,8 @@ fn num(s: &mut String, v: f32) {
                 break;
             }
         }
-        for &d in &digits[at..] {
-            s.push(char::from(d));
-        }
+        // ASCII digits: always UTF-8.
+        s.push_str(std::str::from_utf8(&digits[at..]).unwrap_or_default());
         if m % 2 == 1 {
             s.push_str(".5");
         }
