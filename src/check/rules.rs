@@ -55,8 +55,12 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
 
 /// RTC101: required attributes (XSD `use="required"`).
 fn required(p: &Profile, s: &mut Findings) {
-    // An empty attribute is pointed at; a missing one at its element.
-    let miss = |s: &mut Findings, what: &str, v: &Option<crate::model::Text>, pos: Pos| {
+    // An empty attribute is pointed at; a missing one at its element. `what` is put in words
+    // only when something is missing.
+    let miss = |s: &mut Findings,
+                what: &dyn std::fmt::Display,
+                v: &Option<crate::model::Text>,
+                pos: Pos| {
         if blank(v) {
             let how = if v.is_some() {
                 "is empty"
@@ -68,13 +72,13 @@ fn required(p: &Profile, s: &mut Findings) {
     };
     miss(
         s,
-        "rtc_profile attribute `id`",
+        &"rtc_profile attribute `id`",
         &p.id,
         p.attr_pos.or("id", p.pos),
     );
     miss(
         s,
-        "rtc_profile attribute `version`",
+        &"rtc_profile attribute `version`",
         &p.version,
         p.attr_pos.or("version", p.pos),
     );
@@ -94,7 +98,7 @@ fn required(p: &Profile, s: &mut Findings) {
     ] {
         miss(
             s,
-            &format!("BasicInfo attribute `{name}`"),
+            &format_args!("BasicInfo attribute `{name}`"),
             v,
             b.attr_pos.or(name, bpos),
         );
@@ -126,7 +130,7 @@ fn required(p: &Profile, s: &mut Findings) {
                 attrs: &[(&str, &Option<crate::model::Text>)]| {
         miss(
             s,
-            &format!("{element} attribute `name`"),
+            &format_args!("{element} attribute `name`"),
             name,
             attr_pos.or("name", pos),
         );
@@ -134,7 +138,7 @@ fn required(p: &Profile, s: &mut Findings) {
         for (attr, v) in attrs {
             miss(
                 s,
-                &format!("attribute `{attr}` of {what} `{label}`"),
+                &format_args!("attribute `{attr}` of {what} `{label}`"),
                 v,
                 attr_pos.or(attr, pos),
             );
@@ -189,10 +193,10 @@ fn required(p: &Profile, s: &mut Findings) {
         }
     }
     for par in &p.parameters {
-        miss(s, "Parameter attribute `name`", &par.name, par.pos);
+        miss(s, &"Parameter attribute `name`", &par.name, par.pos);
     }
     if let Some(l) = &p.language {
-        miss(s, "Language attribute `kind`", &l.kind, l.pos);
+        miss(s, &"Language attribute `kind`", &l.kind, l.pos);
     }
 }
 
@@ -878,47 +882,91 @@ pub(crate) fn doc_items(p: &Profile, mut s: Option<&mut Findings>) -> (usize, us
         .into_iter()
         .flatten()
         .find(|d| crate::model::documented("description", d).is_some());
-    // Every item counted: its description, code, position and what it is.
-    let mut items: Vec<(Option<&Option<Text>>, &str, Pos, String)> = vec![(
-        described,
-        r::DOC_COMPONENT,
-        if b.pos.is_unknown() { p.pos } else { b.pos },
-        format!("component `{}`", p.name()),
-    )];
-    for a in p.actions.iter().filter(|a| a.is_implemented()) {
-        let what = format!("implemented action {}", a.kind.xml_name());
-        let desc = a.doc.as_ref().map(|d| &d.description);
-        items.push((desc, r::DOC_ACTION, a.pos, what));
+    // Every item counted: its description, code, position and what it is (`what name`, the
+    // name in backticks when `quoted`), put in words only for an item without a description.
+    struct Item<'a> {
+        desc: Option<&'a Option<Text>>,
+        code: &'static str,
+        pos: Pos,
+        what: &'static str,
+        name: &'a str,
+        quoted: bool,
     }
-    let named =
-        |what: &str, name: &Option<Text>| format!("{what} `{}`", name.as_deref().unwrap_or(""));
+    let mut items: Vec<Item<'_>> = vec![Item {
+        desc: described,
+        code: r::DOC_COMPONENT,
+        pos: if b.pos.is_unknown() { p.pos } else { b.pos },
+        what: "component",
+        name: p.name(),
+        quoted: true,
+    }];
+    for a in p.actions.iter().filter(|a| a.is_implemented()) {
+        items.push(Item {
+            desc: a.doc.as_ref().map(|d| &d.description),
+            code: r::DOC_ACTION,
+            pos: a.pos,
+            what: "implemented action",
+            name: a.kind.xml_name(),
+            quoted: false,
+        });
+    }
+    /// A named item (`data port `x``).
+    fn named<'a>(
+        what: &'static str,
+        name: &'a Option<Text>,
+        desc: Option<&'a Option<Text>>,
+        code: &'static str,
+        pos: Pos,
+    ) -> Item<'a> {
+        Item {
+            desc,
+            code,
+            pos,
+            what,
+            name: name.as_deref().unwrap_or(""),
+            quoted: true,
+        }
+    }
     for d in &p.data_ports {
-        let what = named("data port", &d.name);
         let desc = d.doc.as_ref().map(|d| &d.description);
-        items.push((desc, r::DOC_PORT, d.pos, what));
+        items.push(named("data port", &d.name, desc, r::DOC_PORT, d.pos));
     }
     for sp in &p.service_ports {
-        let what = named("service port", &sp.name);
         let desc = sp.doc.as_ref().map(|d| &d.description);
-        items.push((desc, r::DOC_PORT, sp.pos, what));
+        items.push(named("service port", &sp.name, desc, r::DOC_PORT, sp.pos));
         for i in &sp.interfaces {
-            let what = named("service interface", &i.name);
             let desc = i.doc.as_ref().map(|d| &d.description);
-            items.push((desc, r::DOC_INTERFACE, i.pos, what));
+            items.push(named(
+                "service interface",
+                &i.name,
+                desc,
+                r::DOC_INTERFACE,
+                i.pos,
+            ));
         }
     }
     for c in p.configurations() {
-        let what = named("configuration", &c.name);
         let desc = c.doc.as_ref().map(|d| &d.description);
-        items.push((desc, r::DOC_CONFIGURATION, c.pos, what));
+        items.push(named(
+            "configuration",
+            &c.name,
+            desc,
+            r::DOC_CONFIGURATION,
+            c.pos,
+        ));
     }
     let total = items.len();
     let mut documented = 0;
-    for (desc, code, pos, what) in items {
-        if desc.is_some_and(|d| !blank(d)) {
+    for it in items {
+        if it.desc.is_some_and(|d| !blank(d)) {
             documented += 1;
         } else if let Some(s) = s.as_deref_mut() {
-            s.emit(code, pos, format!("{what} has no description"));
+            let message = if it.quoted {
+                format!("{} `{}` has no description", it.what, it.name)
+            } else {
+                format!("{} {} has no description", it.what, it.name)
+            };
+            s.emit(it.code, it.pos, message);
         }
     }
     (documented, total)
