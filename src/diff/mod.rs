@@ -36,39 +36,9 @@ use serde::Serialize;
 use serde_json::Value;
 use std::collections::BTreeMap;
 
-/// One classified change.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
-pub struct Change {
-    pub severity: Level,
-    /// Stable code (`DIFF104`).
-    pub code: &'static str,
-    /// The code's short name (`data-port-type-changed`).
-    pub name: &'static str,
-    /// The component id (`RTC:vendor:category:name:version`, NEW's version when both sides
-    /// have the component), with the language or file in parentheses when several profiles
-    /// share the id.
-    pub component: String,
-    /// Slash-separated path to the changed item inside the component
-    /// (`dataPorts/odometry/type`); empty for the component as a whole.
-    pub path: String,
-    pub old: Option<String>,
-    pub new: Option<String>,
-    pub message: String,
-    /// The NEW side's file of the component (as the user can open it), when it has one.
-    pub file: Option<String>,
-    /// Line and column in `file` of the changed item, or of the nearest enclosing one.
-    pub line: Option<u32>,
-    pub column: Option<u32>,
-    /// The OLD side's file of the component.
-    pub old_file: Option<String>,
-    /// Line and column in `old_file` of an item that exists only there (a removed port,
-    /// interface, parameter or component).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub old_line: Option<u32>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub old_column: Option<u32>,
-}
+/// One classified change (the object `--format json` writes; the catalogue keeps the same
+/// object with plain strings in a component's history).
+pub type Change = crate::catalog::history::Change<Level, &'static str>;
 
 /// Counts of the components of both sides.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
@@ -119,27 +89,24 @@ pub struct Summary {
 
 impl Summary {
     pub fn of(changes: &[Change]) -> Summary {
-        let mut s = Summary::default();
-        for c in changes {
-            match c.severity {
-                Level::Breaking => s.breaking += 1,
-                Level::Warning => s.warning += 1,
-                Level::Info => s.info += 1,
-            }
-            *s.by_code.entry(c.code.to_string()).or_default() += 1;
+        let ([breaking, warning, info], by_code) =
+            crate::diagnostic::tally(changes, |c| c.severity as usize, |c| c.code);
+        Summary {
+            breaking,
+            warning,
+            info,
+            by_code,
         }
-        s
     }
 
     /// `2 breaking, 1 warning, 3 infos`.
     pub fn counts(&self) -> String {
+        use crate::diagnostic::counted;
         format!(
-            "{} breaking, {} warning{}, {} info{}",
+            "{} breaking, {}, {}",
             self.breaking,
-            self.warning,
-            if self.warning == 1 { "" } else { "s" },
-            self.info,
-            if self.info == 1 { "" } else { "s" }
+            counted(self.warning, "warning"),
+            counted(self.info, "info")
         )
     }
 

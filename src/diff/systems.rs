@@ -17,7 +17,7 @@
 use super::{codes, Change, Key, Level, Namer};
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
-use crate::model::system::{short_port_name, ComponentIdParts, PortEnd, RtSystem};
+use crate::model::system::{short_port_name, ComponentIdParts, Connector, PortEnd, RtSystem};
 use std::collections::{BTreeMap, BTreeSet};
 
 mod compare;
@@ -114,26 +114,18 @@ impl Breaks {
                 Some(id) => format!("system `{id}` ({file})"),
                 None => format!("system `{}` ({file})", sys.name()),
             };
-            let data = sys.data_port_connectors.iter().map(|c| {
-                (
-                    non_empty(&c.name).or(non_empty(&c.connector_id)),
-                    c.source.as_ref(),
-                    c.target.as_ref(),
-                    c.pos,
-                    "data port connector",
-                )
-            });
-            let service = sys.service_port_connectors.iter().map(|c| {
-                (
-                    non_empty(&c.name).or(non_empty(&c.connector_id)),
-                    c.source.as_ref(),
-                    c.target.as_ref(),
-                    c.pos,
-                    "service port connector",
-                )
-            });
-            for (name, source, target, pos, kind) in data.chain(service) {
+            let data = sys
+                .data_port_connectors
+                .iter()
+                .map(|c| (c as &dyn Connector, "data port connector"));
+            let service = sys
+                .service_port_connectors
+                .iter()
+                .map(|c| (c as &dyn Connector, "service port connector"));
+            for (c, kind) in data.chain(service) {
+                let name = non_empty(c.name()).or(non_empty(c.connector_id()));
                 let name = name.unwrap_or("(unnamed)");
+                let ((source, target), pos) = (c.ends(), c.pos());
                 let ends = format!("`{}` → `{}`", end_text(source), end_text(target));
                 for end in [source, target].into_iter().flatten() {
                     let Some((key, port)) = end_key(end) else {

@@ -555,14 +555,14 @@ pub fn system_view(
             &s.source,
             source_url,
         ),
-        history: super::history::HistoryView::of(&s.history, lang, &|commit, path| {
-            crate::render::html::repo::history_file_url(
+        history: super::history::HistoryView::of(
+            &s.history,
+            lang,
+            &crate::render::html::repo::history_file_urls(
                 &cat.sources,
                 s.origin.as_ref(),
                 source_url,
-                commit,
-                path,
-            )
-        }),
+            ),
+        ),
     }
 }
