@@ -528,10 +528,7 @@ fn pair(
         }
         if !lo.is_empty() && !ln.is_empty() {
             let files = |v: &[usize], cat: &Catalog, name: Namer| {
-                v.iter()
-                    .map(|&i| name(&cat.components[i].source))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                v.iter().map(|&i| name(&cat.components[i].source)).collect()
             };
             let id = &new_ids[ln[0]];
             let lang_text = if lang.is_empty() {
@@ -539,30 +536,45 @@ fn pair(
             } else {
                 format!(" in {}", id.language)
             };
-            let nc = &new.components[ln[0]];
-            out.push(Change {
-                file: Some(new_name(&nc.source)),
-                old_file: Some(old_name(&old.components[lo[0]].source)),
-                ..change(
-                    codes::AMBIGUOUS_COMPONENT,
-                    id.id.clone(),
-                    String::new(),
-                    Some(files(&lo, old, old_name)),
-                    Some(files(&ln, new, new_name)),
-                    format!(
-                        "{} profiles in OLD and {} in NEW declare component `{}`{lang_text}; they cannot be paired and are not compared (give each component its own id)",
-                        lo.len(),
-                        ln.len(),
-                        id.id
-                    ),
-                )
-            });
+            out.push(ambiguous(
+                codes::AMBIGUOUS_COMPONENT,
+                &id.id,
+                [files(&lo, old, old_name), files(&ln, new, new_name)],
+                format!(
+                    "{} profiles in OLD and {} in NEW declare component `{}`{lang_text}; they cannot be paired and are not compared (give each component its own id)",
+                    lo.len(),
+                    ln.len(),
+                    id.id
+                ),
+            ));
             continue;
         }
         result.extend(lo.into_iter().map(|o| (Some(o), None)));
         result.extend(ln.into_iter().map(|n| (None, Some(n))));
     }
     result
+}
+
+/// The change of an id that several profiles declare on each side, so that none of them is
+/// paired: the files of both sides (as the user names them), the first the one it points at.
+fn ambiguous(
+    code: &'static str,
+    id: &str,
+    [old, new]: [Vec<String>; 2],
+    message: String,
+) -> Change {
+    Change {
+        file: new.first().cloned(),
+        old_file: old.first().cloned(),
+        ..change(
+            code,
+            id.to_string(),
+            String::new(),
+            Some(old.join(", ")),
+            Some(new.join(", ")),
+            message,
+        )
+    }
 }
 
 fn change(

@@ -309,27 +309,19 @@ pub(super) fn compare_all(
         }
         if !lo.is_empty() && !ln.is_empty() {
             let files = |v: &[usize], s: &[LoadedSystem], name: Namer| {
-                v.iter()
-                    .map(|&i| name(&s[i].source))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                v.iter().map(|&i| name(&s[i].source)).collect()
             };
             let id = non_empty(&new[ln[0]].system.id).unwrap_or("(no id)");
-            let mut c = super::change(
+            out.push(super::ambiguous(
                 codes::AMBIGUOUS_SYSTEM,
-                id.to_string(),
-                String::new(),
-                Some(files(&lo, old, old_name)),
-                Some(files(&ln, new, new_name)),
+                id,
+                [files(&lo, old, old_name), files(&ln, new, new_name)],
                 format!(
                     "{} RT System profiles in OLD and {} in NEW have the id `{id}`; they cannot be paired and are not compared (give each system its own id)",
                     lo.len(),
                     ln.len()
                 ),
-            );
-            c.file = Some(new_name(&new[ln[0]].source));
-            c.old_file = Some(old_name(&old[lo[0]].source));
-            out.push(c);
+            ));
             lo.clear();
             ln.clear();
         }

@@ -843,6 +843,19 @@ pub enum ConstraintKind {
     Empty,
 }
 
+impl ConstraintKind {
+    /// A unit constraint of `condition` (with its `key` inside a hash); `Empty` without one.
+    pub fn unit(key: Option<Text>, condition: Option<Condition>) -> ConstraintKind {
+        match condition {
+            Some(c) => ConstraintKind::Unit {
+                key,
+                condition: Box::new(c),
+            },
+            None => ConstraintKind::Empty,
+        }
+    }
+}
+
 /// One condition of a constraint unit (spec 2.3.22–2.3.41).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", tag = "op")]
