@@ -40,29 +40,15 @@ use std::collections::BTreeMap;
 /// object with plain strings in a component's history).
 pub type Change = crate::catalog::history::Change<Level, &'static str>;
 
-/// Counts of the components of both sides.
+/// Counts of the components, or of the RT System profiles, of both sides.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "camelCase")]
-pub struct Components {
+pub struct Counts {
     pub old: usize,
     pub new: usize,
-    /// Components found on both sides.
+    /// Found on both sides.
     pub matched: usize,
-    /// Matched components with at least one change.
-    pub changed: usize,
-    pub added: usize,
-    pub removed: usize,
-}
-
-/// Counts of the RT System profiles of both sides.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "camelCase")]
-pub struct SystemCounts {
-    pub old: usize,
-    pub new: usize,
-    /// Systems found on both sides.
-    pub matched: usize,
-    /// Matched systems with at least one change.
+    /// Matched, with at least one change.
     pub changed: usize,
     pub added: usize,
     pub removed: usize,
@@ -73,8 +59,8 @@ pub struct SystemCounts {
 pub struct Diff {
     /// Sorted by component, then path, then code.
     pub changes: Vec<Change>,
-    pub components: Components,
-    pub systems: SystemCounts,
+    pub components: Counts,
+    pub systems: Counts,
 }
 
 /// Counts of a set of changes.
@@ -272,7 +258,7 @@ pub fn diff_with_systems(
         groups.entry(&id.key).or_default().1.push(i);
     }
     let mut out = Vec::new();
-    let mut counts = Components {
+    let mut counts = Counts {
         old: old.components.len(),
         new: new.components.len(),
         ..Default::default()
@@ -834,12 +820,16 @@ fn walk<'a>(
                 });
             }
         }
-        (Node::Record(a, _), Node::Record(b, np)) => fields(path, a, b, np.or(pos), out),
-        (Node::Record(a, _), Node::Leaf(Value::Null)) => fields(path, a, &EMPTY, pos, out),
-        (Node::Leaf(Value::Null), Node::Record(b, np)) => fields(path, &EMPTY, b, np.or(pos), out),
-        (Node::Keyed(a), Node::Keyed(b)) => items(path, a, b, pos, out),
-        (Node::Keyed(a), Node::Leaf(Value::Null)) => items(path, a, &EMPTY, pos, out),
-        (Node::Leaf(Value::Null), Node::Keyed(b)) => items(path, &EMPTY, b, pos, out),
+        (Node::Record(a, _), Node::Record(b, np)) => children(path, (a, b), np.or(pos), out, false),
+        (Node::Record(a, _), Node::Leaf(Value::Null)) => {
+            children(path, (a, &EMPTY), pos, out, false)
+        }
+        (Node::Leaf(Value::Null), Node::Record(b, np)) => {
+            children(path, (&EMPTY, b), np.or(pos), out, false)
+        }
+        (Node::Keyed(a), Node::Keyed(b)) => children(path, (a, b), pos, out, true),
+        (Node::Keyed(a), Node::Leaf(Value::Null)) => children(path, (a, &EMPTY), pos, out, true),
+        (Node::Leaf(Value::Null), Node::Keyed(b)) => children(path, (&EMPTY, b), pos, out, true),
         _ => out.push(Found {
             path: path.clone(),
             raw: Raw::Changed(plain(o), plain(n)),
@@ -848,35 +838,14 @@ fn walk<'a>(
     }
 }
 
-fn fields<'a>(
+/// The children of two records (`keyed` false: a field one side lacks is compared as null) or
+/// of two keyed lists (`keyed` true: an item one side lacks is removed or added).
+fn children<'a>(
     path: &mut Vec<String>,
-    a: &'a BTreeMap<String, Node>,
-    b: &'a BTreeMap<String, Node>,
+    (a, b): (&'a BTreeMap<String, Node>, &'a BTreeMap<String, Node>),
     pos: Option<Pos>,
     out: &mut Vec<Found<'a>>,
-) {
-    let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
-    keys.sort();
-    keys.dedup();
-    for k in keys {
-        path.push(k.clone());
-        walk(
-            path,
-            a.get(k).unwrap_or(&NULL),
-            b.get(k).unwrap_or(&NULL),
-            pos,
-            out,
-        );
-        path.pop();
-    }
-}
-
-fn items<'a>(
-    path: &mut Vec<String>,
-    a: &'a BTreeMap<String, Node>,
-    b: &'a BTreeMap<String, Node>,
-    pos: Option<Pos>,
-    out: &mut Vec<Found<'a>>,
+    keyed: bool,
 ) {
     let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
     keys.sort();
@@ -885,6 +854,7 @@ fn items<'a>(
         path.push(k.clone());
         match (a.get(k), b.get(k)) {
             (Some(x), Some(y)) => walk(path, x, y, pos, out),
+            (x, y) if !keyed => walk(path, x.unwrap_or(&NULL), y.unwrap_or(&NULL), pos, out),
             (Some(x), None) => out.push(Found {
                 path: path.clone(),
                 raw: Raw::Removed(x),
@@ -1083,6 +1053,17 @@ fn classify(
     let pos = f.pos;
     let joined = p.join("/");
     let (at, documentation) = place(p);
+    // Any other item removed or added: a documentation change or another change, its text
+    // the value.
+    let other = |verb: &str, node: &Node| {
+        let code = if documentation {
+            codes::DOCUMENTATION_CHANGED
+        } else {
+            codes::OTHER_CHANGED
+        };
+        let value = Some(plain(node)).as_ref().and_then(text);
+        (code, format!("`{joined}` was {verb}"), value)
+    };
     // Documentation left blank and documentation left out say the same: RTCBuilder writes
     // `rtcDoc:description=""` for every field it leaves blank, other writers (and its other
     // versions) leave the attribute or the whole doc element out.
@@ -1131,16 +1112,7 @@ fn classify(
                         field(node, Field::ActionImplemented),
                     )
                 }
-                _ if documentation => (
-                    codes::DOCUMENTATION_CHANGED,
-                    format!("`{joined}` was removed"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
-                _ => (
-                    codes::OTHER_CHANGED,
-                    format!("`{joined}` was removed"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
+                _ => other("removed", node),
             };
             // Where it was: in OLD, the side where it exists; in NEW, a removed parameter's
             // configuration set (an annotation of NEW's file needs a line there), else nothing
@@ -1204,16 +1176,7 @@ fn classify(
                     ),
                     field(node, Field::ConfigurationType),
                 ),
-                _ if documentation => (
-                    codes::DOCUMENTATION_CHANGED,
-                    format!("`{joined}` was added"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
-                _ => (
-                    codes::OTHER_CHANGED,
-                    format!("`{joined}` was added"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
+                _ => other("added", node),
             };
             ctx.push(out, code, p, pos, (None, new), message);
         }
@@ -1403,20 +1366,13 @@ fn changed(
             }
         }
         Place::Field(Field::DataPortPortType) => {
-            let dir = |s: Option<&str>| {
-                crate::model::DataPort {
-                    port_type: s.map(Into::into),
-                    ..Default::default()
-                }
-                .direction()
-            };
             let message = format!(
                 "data port `{}` changed from {} to {}",
                 p[1],
                 quoted(old),
                 quoted(new)
             );
-            let same = same_kind(old, new, dir);
+            let same = same_kind(old, new, crate::model::PortDirection::parse);
             same_or(
                 same,
                 "means the same port kind",
@@ -1497,13 +1453,6 @@ fn changed(
             )
         }
         Place::Field(Field::InterfaceDirection) => {
-            let dir = |s: Option<&str>| {
-                crate::model::ServiceInterface {
-                    direction: s.map(Into::into),
-                    ..Default::default()
-                }
-                .direction_kind()
-            };
             let message = format!(
                 "interface `{}` of service port `{}` changed from {} to {}",
                 p[3],
@@ -1511,7 +1460,7 @@ fn changed(
                 quoted(old),
                 quoted(new)
             );
-            let same = same_kind(old, new, dir);
+            let same = same_kind(old, new, crate::model::Direction::parse);
             same_or(
                 same,
                 "means the same direction",
@@ -1563,8 +1512,9 @@ fn changed(
 fn same_kind<K: PartialEq>(
     old: Option<&str>,
     new: Option<&str>,
-    kind: impl Fn(Option<&str>) -> Option<K>,
+    kind: impl Fn(&str) -> Option<K>,
 ) -> bool {
+    let kind = |s: Option<&str>| s.and_then(&kind);
     kind(old).is_some() && kind(old) == kind(new)
 }
 

@@ -240,8 +240,8 @@ pub(super) fn compare_all(
     old_name: Namer,
     new_name: Namer,
     out: &mut Vec<Change>,
-) -> super::SystemCounts {
-    let mut counts = super::SystemCounts {
+) -> super::Counts {
+    let mut counts = super::Counts {
         old: old.len(),
         new: new.len(),
         ..Default::default()
