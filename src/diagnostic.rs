@@ -27,6 +27,27 @@ impl std::fmt::Display for Severity {
     }
 }
 
+/// How many of `items` there are at each of three levels (`level`: 0 for the most severe, to
+/// 2), and how many of each code; the counts of a `check` or `diff` summary.
+pub fn tally<T>(
+    items: &[T],
+    level: impl Fn(&T) -> usize,
+    code: impl Fn(&T) -> &str,
+) -> ([usize; 3], std::collections::BTreeMap<String, usize>) {
+    let mut levels = [0; 3];
+    let mut by_code = std::collections::BTreeMap::new();
+    for item in items {
+        levels[level(item).min(2)] += 1;
+        *by_code.entry(code(item).to_string()).or_default() += 1;
+    }
+    (levels, by_code)
+}
+
+/// `n` and `word`, with an `s` unless `n` is 1 (`1 warning`, `3 infos`).
+pub fn counted(n: usize, word: &str) -> String {
+    format!("{n} {word}{}", if n == 1 { "" } else { "s" })
+}
+
 /// One finding about one file.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "camelCase")]

@@ -174,11 +174,20 @@ mod tests {
     use super::*;
     use std::collections::HashMap;
 
-    fn fake_install(root: &Path, rel: &str) -> PathBuf {
-        let d = root.join(rel);
-        std::fs::create_dir_all(&d).unwrap();
-        std::fs::write(d.join("BasicDataType.idl"), "module RTC {};\n").unwrap();
-        d
+    /// A temporary directory with an OpenRTM IDL directory (one IDL file) at each of `rels`,
+    /// and those directories.
+    fn fake_installs(rels: &[&str]) -> (tempfile::TempDir, Vec<PathBuf>) {
+        let t = tempfile::tempdir().unwrap();
+        let dirs = rels
+            .iter()
+            .map(|rel| {
+                let d = t.path().join(rel);
+                std::fs::create_dir_all(&d).unwrap();
+                std::fs::write(d.join("BasicDataType.idl"), "module RTC {};\n").unwrap();
+                d
+            })
+            .collect();
+        (t, dirs)
     }
 
     fn env_of(vars: &[(&str, &Path)]) -> impl Fn(&str) -> Option<OsString> {
@@ -191,13 +200,12 @@ mod tests {
 
     #[test]
     fn finds_the_newest_version_below_a_prefix() {
-        let t = tempfile::tempdir().unwrap();
-        fake_install(t.path(), "include/openrtm-1.2/rtm/idl");
-        let new = fake_install(t.path(), "include/openrtm-2.0/rtm/idl");
+        let (t, dirs) =
+            fake_installs(&["include/openrtm-1.2/rtm/idl", "include/openrtm-2.0/rtm/idl"]);
         // A version directory without IDL does not count.
         std::fs::create_dir_all(t.path().join("include/openrtm-10.0/rtm/idl")).unwrap();
         let d = detect(&env_of(&[(PREFIXES_VAR, t.path())])).unwrap();
-        assert_eq!(d.dir, new);
+        assert_eq!(d.dir, dirs[1]);
         assert_eq!(d.via, format!("the prefix {}", t.path().display()));
     }
 
@@ -210,34 +218,33 @@ mod tests {
 
     #[test]
     fn rtm_root_comes_before_the_prefixes() {
-        let t = tempfile::tempdir().unwrap();
-        fake_install(t.path(), "usr/include/openrtm-2.0/rtm/idl");
-        let win = fake_install(t.path(), "OpenRTM-aist/1.2.2/rtm/idl");
+        let (t, dirs) = fake_installs(&[
+            "usr/include/openrtm-2.0/rtm/idl",
+            "OpenRTM-aist/1.2.2/rtm/idl",
+        ]);
         let root = t.path().join("OpenRTM-aist/1.2.2");
         let prefix = t.path().join("usr");
         let d = detect(&env_of(&[("RTM_ROOT", &root), (PREFIXES_VAR, &prefix)])).unwrap();
-        assert_eq!((d.dir, d.via.as_str()), (win, "$RTM_ROOT"));
+        assert_eq!((&d.dir, d.via.as_str()), (&dirs[1], "$RTM_ROOT"));
     }
 
     #[test]
     fn windows_layout_below_program_files() {
-        let t = tempfile::tempdir().unwrap();
-        fake_install(t.path(), "OpenRTM-aist/1.2.2/rtm/idl");
-        let new = fake_install(t.path(), "OpenRTM-aist/2.0.0/rtm/idl");
+        let (t, dirs) =
+            fake_installs(&["OpenRTM-aist/1.2.2/rtm/idl", "OpenRTM-aist/2.0.0/rtm/idl"]);
         let prefix = t.path().join("OpenRTM-aist");
         let d = detect(&env_of(&[(PREFIXES_VAR, &prefix)])).unwrap();
-        assert_eq!(d.dir, new);
+        assert_eq!(d.dir, dirs[1]);
     }
 
     #[test]
     fn cmake_package_directory_leads_to_its_prefix() {
-        let t = tempfile::tempdir().unwrap();
-        let idl = fake_install(t.path(), "include/openrtm-2.0/rtm/idl");
+        let (t, dirs) = fake_installs(&["include/openrtm-2.0/rtm/idl"]);
         let cmake = t.path().join("lib/cmake/OpenRTM");
         std::fs::create_dir_all(&cmake).unwrap();
         let empty = t.path().join("nothing");
         let d = detect(&env_of(&[("OPENRTM_DIR", &cmake), (PREFIXES_VAR, &empty)])).unwrap();
-        assert_eq!((d.dir, d.via.as_str()), (idl, "$OPENRTM_DIR"));
+        assert_eq!((&d.dir, d.via.as_str()), (&dirs[0], "$OPENRTM_DIR"));
     }
 
     #[test]

@@ -77,24 +77,38 @@ impl Entry {
     }
 }
 
-/// One classified change, the same object (field for field) as a change of `rtcdoc diff
-/// --format json`.
+/// One classified change: the object (field for field) `rtcdoc diff --format json` writes. The
+/// diff engine fills it with its own severity and `'static` code names (`crate::diff::Change`);
+/// the catalogue keeps it with plain strings (the default parameters), as `catalog.json`
+/// reads it back.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
-pub struct Change {
+pub struct Change<Severity = String, Code = String> {
     /// `breaking`, `warning` or `info`.
-    pub severity: String,
-    pub code: String,
-    pub name: String,
+    pub severity: Severity,
+    /// Stable code (`DIFF104`).
+    pub code: Code,
+    /// The code's short name (`data-port-type-changed`).
+    pub name: Code,
+    /// The component id (`RTC:vendor:category:name:version`, NEW's version when both sides
+    /// have the component), with the language or file in parentheses when several profiles
+    /// share the id.
     pub component: String,
+    /// Slash-separated path to the changed item inside the component
+    /// (`dataPorts/odometry/type`); empty for the component as a whole.
     pub path: String,
     pub old: Option<String>,
     pub new: Option<String>,
     pub message: String,
+    /// The NEW side's file of the component (as the user can open it), when it has one.
     pub file: Option<String>,
+    /// Line and column in `file` of the changed item, or of the nearest enclosing one.
     pub line: Option<u32>,
     pub column: Option<u32>,
+    /// The OLD side's file of the component.
     pub old_file: Option<String>,
+    /// Line and column in `old_file` of an item that exists only there (a removed port,
+    /// interface, parameter or component).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub old_line: Option<u32>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

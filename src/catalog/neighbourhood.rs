@@ -155,46 +155,38 @@ impl Catalog {
     /// counted in [`PortNeighbours::total`]). Event ports and interfaces of no known direction
     /// have none; the component is never its own neighbour.
     pub fn neighbourhood(&self, ci: ComponentIx, cap: usize) -> Neighbourhood {
-        let mut ports = Vec::new();
         let Some(c) = self.components.get(ci.get()) else {
-            return Neighbourhood { ports };
+            return Neighbourhood { ports: Vec::new() };
         };
         let p = &c.profile;
-        for (pi, port) in p.data_ports.iter().enumerate() {
-            let upstream = match port.direction() {
-                Some(PortDirection::In) => true,
-                Some(PortDirection::Out) => false,
-                _ => continue,
+        let data = p.data_ports.iter().enumerate().filter_map(|(pi, port)| {
+            let upstream = match port.direction()? {
+                PortDirection::In => true,
+                PortDirection::Out => false,
+                PortDirection::Event => return None,
             };
-            let Some(ti) = port.type_.as_deref().and_then(|t| self.data_type_index(t)) else {
-                continue;
-            };
+            let ti = self.data_type_index(port.type_.as_deref()?)?;
             let refs = self.data_port_peers(ci, pi);
             let (shown, total) = neighbours(
                 (ci, refs, cap),
                 |r| self.port_component(r).unwrap_or(Ix::NONE),
                 |r| self.resolve_port(r).map(|(_, q)| PortAt::Data(q)),
             );
-            if total > 0 {
-                ports.push(PortNeighbours {
-                    port: PortAt::Data(pi),
-                    upstream,
-                    type_: TypeIx::Data(ti),
-                    shown,
-                    total,
-                });
-            }
-        }
-        for (si, sp) in p.service_ports.iter().enumerate() {
-            for (ii, i) in sp.interfaces.iter().enumerate() {
-                let upstream = match i.direction_kind() {
-                    Some(Direction::Provided) => true,
-                    Some(Direction::Required) => false,
-                    None => continue,
+            Some(PortNeighbours {
+                port: PortAt::Data(pi),
+                upstream,
+                type_: TypeIx::Data(ti),
+                shown,
+                total,
+            })
+        });
+        let interfaces = p.service_ports.iter().enumerate().flat_map(|(si, sp)| {
+            sp.interfaces.iter().enumerate().filter_map(move |(ii, i)| {
+                let upstream = match i.direction_kind()? {
+                    Direction::Provided => true,
+                    Direction::Required => false,
                 };
-                let Some(ti) = i.type_.as_deref().and_then(|t| self.interface_index_of(t)) else {
-                    continue;
-                };
+                let ti = self.interface_index_of(i.type_.as_deref()?)?;
                 let refs = self.interface_peers(ci, si, ii);
                 let (shown, total) = neighbours(
                     (ci, refs, cap),
@@ -204,17 +196,16 @@ impl Catalog {
                             .map(|(_, q, j)| PortAt::Interface(q, j))
                     },
                 );
-                if total > 0 {
-                    ports.push(PortNeighbours {
-                        port: PortAt::Interface(si, ii),
-                        upstream,
-                        type_: TypeIx::Interface(ti),
-                        shown,
-                        total,
-                    });
-                }
-            }
-        }
+                Some(PortNeighbours {
+                    port: PortAt::Interface(si, ii),
+                    upstream,
+                    type_: TypeIx::Interface(ti),
+                    shown,
+                    total,
+                })
+            })
+        });
+        let ports = data.chain(interfaces).filter(|n| n.total > 0).collect();
         Neighbourhood { ports }
     }
 }

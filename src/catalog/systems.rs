@@ -374,30 +374,35 @@ impl Catalog {
     pub fn instance_ports(&self, sys: &System, i: usize) -> Vec<InstancePort> {
         let mut out: Vec<InstancePort> = Vec::new();
         if let Some(c) = self.instance_component(sys, i) {
-            for (k, p) in c.profile.data_ports.iter().enumerate() {
-                let name = non_empty(&p.name).unwrap_or("").trim().to_string();
-                out.push(InstancePort {
-                    link: Some(PortLink::Data {
-                        index: k,
-                        name: name.clone(),
-                    }),
-                    name,
-                    service: false,
-                    direction: p.direction(),
-                    data_type: non_empty(&p.type_).map(str::to_string),
+            let name =
+                |n: &Option<crate::model::Text>| non_empty(n).unwrap_or("").trim().to_string();
+            let data = c.profile.data_ports.iter().enumerate().map(|(index, p)| {
+                let link = PortLink::Data {
+                    index,
+                    name: name(&p.name),
+                };
+                (link, p.direction(), non_empty(&p.type_).map(str::to_string))
+            });
+            let service = c
+                .profile
+                .service_ports
+                .iter()
+                .enumerate()
+                .map(|(index, p)| {
+                    let link = PortLink::Service {
+                        index,
+                        name: name(&p.name),
+                    };
+                    (link, None, None)
                 });
-            }
-            for (k, p) in c.profile.service_ports.iter().enumerate() {
-                let name = non_empty(&p.name).unwrap_or("").trim().to_string();
+            for (link, direction, data_type) in data.chain(service) {
+                let (PortLink::Data { name, .. } | PortLink::Service { name, .. }) = &link;
                 out.push(InstancePort {
-                    link: Some(PortLink::Service {
-                        index: k,
-                        name: name.clone(),
-                    }),
-                    name,
-                    service: true,
-                    direction: None,
-                    data_type: None,
+                    name: name.clone(),
+                    service: matches!(link, PortLink::Service { .. }),
+                    direction,
+                    data_type,
+                    link: Some(link),
                 });
             }
         }

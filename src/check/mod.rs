@@ -21,7 +21,7 @@ pub use registry::{explain, rule, Rule, RULES};
 pub use rules::check_date_time;
 
 use crate::catalog::Catalog;
-use crate::diagnostic::{Diagnostic, Severity};
+use crate::diagnostic::Diagnostic;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -133,28 +133,24 @@ pub struct Summary {
 
 impl Summary {
     pub fn of(diagnostics: &[Diagnostic]) -> Summary {
-        let mut s = Summary::default();
-        for d in diagnostics {
-            match d.severity {
-                Severity::Error => s.errors += 1,
-                Severity::Warning => s.warnings += 1,
-                Severity::Info => s.infos += 1,
-            }
-            *s.by_code.entry(d.code.to_string()).or_default() += 1;
+        let ([errors, warnings, infos], by_code) =
+            crate::diagnostic::tally(diagnostics, |d| d.severity as usize, |d| d.code);
+        Summary {
+            errors,
+            warnings,
+            infos,
+            by_code,
         }
-        s
     }
 
     /// `check: 0 errors, 3 warnings, 12 infos`.
     pub fn one_line(&self) -> String {
+        use crate::diagnostic::counted;
         format!(
-            "check: {} error{}, {} warning{}, {} info{}",
-            self.errors,
-            if self.errors == 1 { "" } else { "s" },
-            self.warnings,
-            if self.warnings == 1 { "" } else { "s" },
-            self.infos,
-            if self.infos == 1 { "" } else { "s" }
+            "check: {}, {}, {}",
+            counted(self.errors, "error"),
+            counted(self.warnings, "warning"),
+            counted(self.infos, "info")
         )
     }
 }

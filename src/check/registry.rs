@@ -23,18 +23,18 @@ pub struct Rule {
 }
 
 // Loader codes (RTC001–RTC019, produced by the readers, the walk and the catalogue).
-pub const MALFORMED: &str = "RTC001";
-// IDL reader codes (RTC020–RTC029, produced by crate::idl; kept equal to crate::idl::codes).
-pub const IDL_SYNTAX: &str = "RTC020";
-pub const IDL_PREPROCESSOR: &str = "RTC021";
-pub const IDL_INCLUDE: &str = "RTC022";
-pub const IDL_INCLUDE_CYCLE: &str = "RTC023";
-pub const IDL_LIMIT: &str = "RTC024";
-pub const IDL_ENCODING: &str = "RTC025";
-pub const IDL_SKIPPED: &str = "RTC026";
-pub const IDL_DIRECTIVE: &str = "RTC027";
-pub const IDL_REDEFINITION: &str = "RTC028";
-pub const IDL_UNRESOLVED: &str = "RTC029";
+pub const MALFORMED: &str = crate::diagnostic::codes::MALFORMED;
+// IDL reader codes (RTC020–RTC029, produced and spelled by crate::idl).
+pub const IDL_SYNTAX: &str = crate::idl::codes::SYNTAX;
+pub const IDL_PREPROCESSOR: &str = crate::idl::codes::PREPROCESSOR;
+pub const IDL_INCLUDE: &str = crate::idl::codes::INCLUDE;
+pub const IDL_INCLUDE_CYCLE: &str = crate::idl::codes::INCLUDE_CYCLE;
+pub const IDL_LIMIT: &str = crate::idl::codes::LIMIT;
+pub const IDL_ENCODING: &str = crate::idl::codes::ENCODING;
+pub const IDL_SKIPPED: &str = crate::idl::codes::SKIPPED;
+pub const IDL_DIRECTIVE: &str = crate::idl::codes::DIRECTIVE;
+pub const IDL_REDEFINITION: &str = crate::idl::codes::REDEFINITION;
+pub const IDL_UNRESOLVED: &str = crate::idl::codes::UNRESOLVED;
 // Schema level (spec chapter 6).
 pub const MISSING_REQUIRED: &str = "RTC101";
 pub const INVALID_ENUM: &str = "RTC102";
@@ -820,22 +820,21 @@ mod tests {
             assert!(!r.spec.is_empty() && !r.explanation.is_empty());
         }
         assert!(rule("rtc303").is_some());
-        use crate::idl::codes as idl;
-        for (ours, theirs) in [
-            (IDL_SYNTAX, idl::SYNTAX),
-            (IDL_PREPROCESSOR, idl::PREPROCESSOR),
-            (IDL_INCLUDE, idl::INCLUDE),
-            (IDL_INCLUDE_CYCLE, idl::INCLUDE_CYCLE),
-            (IDL_LIMIT, idl::LIMIT),
-            (IDL_ENCODING, idl::ENCODING),
-            (IDL_SKIPPED, idl::SKIPPED),
-            (IDL_DIRECTIVE, idl::DIRECTIVE),
-            (IDL_REDEFINITION, idl::REDEFINITION),
-            (IDL_UNRESOLVED, idl::UNRESOLVED),
+        // Every code the IDL reader produces has its rule.
+        for code in [
+            IDL_SYNTAX,
+            IDL_PREPROCESSOR,
+            IDL_INCLUDE,
+            IDL_INCLUDE_CYCLE,
+            IDL_LIMIT,
+            IDL_ENCODING,
+            IDL_SKIPPED,
+            IDL_DIRECTIVE,
+            IDL_REDEFINITION,
+            IDL_UNRESOLVED,
         ] {
-            assert_eq!(ours, theirs);
-            assert!(rule(ours).is_some(), "{ours} is not registered");
+            assert!(rule(code).is_some(), "{code} is not registered");
         }
-        let _ = MALFORMED;
+        assert!(rule(MALFORMED).is_some());
     }
 }

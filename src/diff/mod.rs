@@ -36,63 +36,19 @@ use serde::Serialize;
 use serde_json::Value;
 use std::collections::BTreeMap;
 
-/// One classified change.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
-pub struct Change {
-    pub severity: Level,
-    /// Stable code (`DIFF104`).
-    pub code: &'static str,
-    /// The code's short name (`data-port-type-changed`).
-    pub name: &'static str,
-    /// The component id (`RTC:vendor:category:name:version`, NEW's version when both sides
-    /// have the component), with the language or file in parentheses when several profiles
-    /// share the id.
-    pub component: String,
-    /// Slash-separated path to the changed item inside the component
-    /// (`dataPorts/odometry/type`); empty for the component as a whole.
-    pub path: String,
-    pub old: Option<String>,
-    pub new: Option<String>,
-    pub message: String,
-    /// The NEW side's file of the component (as the user can open it), when it has one.
-    pub file: Option<String>,
-    /// Line and column in `file` of the changed item, or of the nearest enclosing one.
-    pub line: Option<u32>,
-    pub column: Option<u32>,
-    /// The OLD side's file of the component.
-    pub old_file: Option<String>,
-    /// Line and column in `old_file` of an item that exists only there (a removed port,
-    /// interface, parameter or component).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub old_line: Option<u32>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub old_column: Option<u32>,
-}
+/// One classified change (the object `--format json` writes; the catalogue keeps the same
+/// object with plain strings in a component's history).
+pub type Change = crate::catalog::history::Change<Level, &'static str>;
 
-/// Counts of the components of both sides.
+/// Counts of the components, or of the RT System profiles, of both sides.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "camelCase")]
-pub struct Components {
+pub struct Counts {
     pub old: usize,
     pub new: usize,
-    /// Components found on both sides.
+    /// Found on both sides.
     pub matched: usize,
-    /// Matched components with at least one change.
-    pub changed: usize,
-    pub added: usize,
-    pub removed: usize,
-}
-
-/// Counts of the RT System profiles of both sides.
-#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "camelCase")]
-pub struct SystemCounts {
-    pub old: usize,
-    pub new: usize,
-    /// Systems found on both sides.
-    pub matched: usize,
-    /// Matched systems with at least one change.
+    /// Matched, with at least one change.
     pub changed: usize,
     pub added: usize,
     pub removed: usize,
@@ -103,8 +59,8 @@ pub struct SystemCounts {
 pub struct Diff {
     /// Sorted by component, then path, then code.
     pub changes: Vec<Change>,
-    pub components: Components,
-    pub systems: SystemCounts,
+    pub components: Counts,
+    pub systems: Counts,
 }
 
 /// Counts of a set of changes.
@@ -119,27 +75,24 @@ pub struct Summary {
 
 impl Summary {
     pub fn of(changes: &[Change]) -> Summary {
-        let mut s = Summary::default();
-        for c in changes {
-            match c.severity {
-                Level::Breaking => s.breaking += 1,
-                Level::Warning => s.warning += 1,
-                Level::Info => s.info += 1,
-            }
-            *s.by_code.entry(c.code.to_string()).or_default() += 1;
+        let ([breaking, warning, info], by_code) =
+            crate::diagnostic::tally(changes, |c| c.severity as usize, |c| c.code);
+        Summary {
+            breaking,
+            warning,
+            info,
+            by_code,
         }
-        s
     }
 
     /// `2 breaking, 1 warning, 3 infos`.
     pub fn counts(&self) -> String {
+        use crate::diagnostic::counted;
         format!(
-            "{} breaking, {} warning{}, {} info{}",
+            "{} breaking, {}, {}",
             self.breaking,
-            self.warning,
-            if self.warning == 1 { "" } else { "s" },
-            self.info,
-            if self.info == 1 { "" } else { "s" }
+            counted(self.warning, "warning"),
+            counted(self.info, "info")
         )
     }
 
@@ -305,7 +258,7 @@ pub fn diff_with_systems(
         groups.entry(&id.key).or_default().1.push(i);
     }
     let mut out = Vec::new();
-    let mut counts = Components {
+    let mut counts = Counts {
         old: old.components.len(),
         new: new.components.len(),
         ..Default::default()
@@ -561,10 +514,7 @@ fn pair(
         }
         if !lo.is_empty() && !ln.is_empty() {
             let files = |v: &[usize], cat: &Catalog, name: Namer| {
-                v.iter()
-                    .map(|&i| name(&cat.components[i].source))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                v.iter().map(|&i| name(&cat.components[i].source)).collect()
             };
             let id = &new_ids[ln[0]];
             let lang_text = if lang.is_empty() {
@@ -572,30 +522,45 @@ fn pair(
             } else {
                 format!(" in {}", id.language)
             };
-            let nc = &new.components[ln[0]];
-            out.push(Change {
-                file: Some(new_name(&nc.source)),
-                old_file: Some(old_name(&old.components[lo[0]].source)),
-                ..change(
-                    codes::AMBIGUOUS_COMPONENT,
-                    id.id.clone(),
-                    String::new(),
-                    Some(files(&lo, old, old_name)),
-                    Some(files(&ln, new, new_name)),
-                    format!(
-                        "{} profiles in OLD and {} in NEW declare component `{}`{lang_text}; they cannot be paired and are not compared (give each component its own id)",
-                        lo.len(),
-                        ln.len(),
-                        id.id
-                    ),
-                )
-            });
+            out.push(ambiguous(
+                codes::AMBIGUOUS_COMPONENT,
+                &id.id,
+                [files(&lo, old, old_name), files(&ln, new, new_name)],
+                format!(
+                    "{} profiles in OLD and {} in NEW declare component `{}`{lang_text}; they cannot be paired and are not compared (give each component its own id)",
+                    lo.len(),
+                    ln.len(),
+                    id.id
+                ),
+            ));
             continue;
         }
         result.extend(lo.into_iter().map(|o| (Some(o), None)));
         result.extend(ln.into_iter().map(|n| (None, Some(n))));
     }
     result
+}
+
+/// The change of an id that several profiles declare on each side, so that none of them is
+/// paired: the files of both sides (as the user names them), the first the one it points at.
+fn ambiguous(
+    code: &'static str,
+    id: &str,
+    [old, new]: [Vec<String>; 2],
+    message: String,
+) -> Change {
+    Change {
+        file: new.first().cloned(),
+        old_file: old.first().cloned(),
+        ..change(
+            code,
+            id.to_string(),
+            String::new(),
+            Some(old.join(", ")),
+            Some(new.join(", ")),
+            message,
+        )
+    }
 }
 
 fn change(
@@ -855,12 +820,16 @@ fn walk<'a>(
                 });
             }
         }
-        (Node::Record(a, _), Node::Record(b, np)) => fields(path, a, b, np.or(pos), out),
-        (Node::Record(a, _), Node::Leaf(Value::Null)) => fields(path, a, &EMPTY, pos, out),
-        (Node::Leaf(Value::Null), Node::Record(b, np)) => fields(path, &EMPTY, b, np.or(pos), out),
-        (Node::Keyed(a), Node::Keyed(b)) => items(path, a, b, pos, out),
-        (Node::Keyed(a), Node::Leaf(Value::Null)) => items(path, a, &EMPTY, pos, out),
-        (Node::Leaf(Value::Null), Node::Keyed(b)) => items(path, &EMPTY, b, pos, out),
+        (Node::Record(a, _), Node::Record(b, np)) => children(path, (a, b), np.or(pos), out, false),
+        (Node::Record(a, _), Node::Leaf(Value::Null)) => {
+            children(path, (a, &EMPTY), pos, out, false)
+        }
+        (Node::Leaf(Value::Null), Node::Record(b, np)) => {
+            children(path, (&EMPTY, b), np.or(pos), out, false)
+        }
+        (Node::Keyed(a), Node::Keyed(b)) => children(path, (a, b), pos, out, true),
+        (Node::Keyed(a), Node::Leaf(Value::Null)) => children(path, (a, &EMPTY), pos, out, true),
+        (Node::Leaf(Value::Null), Node::Keyed(b)) => children(path, (&EMPTY, b), pos, out, true),
         _ => out.push(Found {
             path: path.clone(),
             raw: Raw::Changed(plain(o), plain(n)),
@@ -869,35 +838,14 @@ fn walk<'a>(
     }
 }
 
-fn fields<'a>(
+/// The children of two records (`keyed` false: a field one side lacks is compared as null) or
+/// of two keyed lists (`keyed` true: an item one side lacks is removed or added).
+fn children<'a>(
     path: &mut Vec<String>,
-    a: &'a BTreeMap<String, Node>,
-    b: &'a BTreeMap<String, Node>,
+    (a, b): (&'a BTreeMap<String, Node>, &'a BTreeMap<String, Node>),
     pos: Option<Pos>,
     out: &mut Vec<Found<'a>>,
-) {
-    let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
-    keys.sort();
-    keys.dedup();
-    for k in keys {
-        path.push(k.clone());
-        walk(
-            path,
-            a.get(k).unwrap_or(&NULL),
-            b.get(k).unwrap_or(&NULL),
-            pos,
-            out,
-        );
-        path.pop();
-    }
-}
-
-fn items<'a>(
-    path: &mut Vec<String>,
-    a: &'a BTreeMap<String, Node>,
-    b: &'a BTreeMap<String, Node>,
-    pos: Option<Pos>,
-    out: &mut Vec<Found<'a>>,
+    keyed: bool,
 ) {
     let mut keys: Vec<&String> = a.keys().chain(b.keys()).collect();
     keys.sort();
@@ -906,6 +854,7 @@ fn items<'a>(
         path.push(k.clone());
         match (a.get(k), b.get(k)) {
             (Some(x), Some(y)) => walk(path, x, y, pos, out),
+            (x, y) if !keyed => walk(path, x.unwrap_or(&NULL), y.unwrap_or(&NULL), pos, out),
             (Some(x), None) => out.push(Found {
                 path: path.clone(),
                 raw: Raw::Removed(x),
@@ -1104,6 +1053,17 @@ fn classify(
     let pos = f.pos;
     let joined = p.join("/");
     let (at, documentation) = place(p);
+    // Any other item removed or added: a documentation change or another change, its text
+    // the value.
+    let other = |verb: &str, node: &Node| {
+        let code = if documentation {
+            codes::DOCUMENTATION_CHANGED
+        } else {
+            codes::OTHER_CHANGED
+        };
+        let value = Some(plain(node)).as_ref().and_then(text);
+        (code, format!("`{joined}` was {verb}"), value)
+    };
     // Documentation left blank and documentation left out say the same: RTCBuilder writes
     // `rtcDoc:description=""` for every field it leaves blank, other writers (and its other
     // versions) leave the attribute or the whole doc element out.
@@ -1152,16 +1112,7 @@ fn classify(
                         field(node, Field::ActionImplemented),
                     )
                 }
-                _ if documentation => (
-                    codes::DOCUMENTATION_CHANGED,
-                    format!("`{joined}` was removed"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
-                _ => (
-                    codes::OTHER_CHANGED,
-                    format!("`{joined}` was removed"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
+                _ => other("removed", node),
             };
             // Where it was: in OLD, the side where it exists; in NEW, a removed parameter's
             // configuration set (an annotation of NEW's file needs a line there), else nothing
@@ -1225,16 +1176,7 @@ fn classify(
                     ),
                     field(node, Field::ConfigurationType),
                 ),
-                _ if documentation => (
-                    codes::DOCUMENTATION_CHANGED,
-                    format!("`{joined}` was added"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
-                _ => (
-                    codes::OTHER_CHANGED,
-                    format!("`{joined}` was added"),
-                    Some(plain(node)).as_ref().and_then(text),
-                ),
+                _ => other("added", node),
             };
             ctx.push(out, code, p, pos, (None, new), message);
         }
@@ -1424,20 +1366,13 @@ fn changed(
             }
         }
         Place::Field(Field::DataPortPortType) => {
-            let dir = |s: Option<&str>| {
-                crate::model::DataPort {
-                    port_type: s.map(Into::into),
-                    ..Default::default()
-                }
-                .direction()
-            };
             let message = format!(
                 "data port `{}` changed from {} to {}",
                 p[1],
                 quoted(old),
                 quoted(new)
             );
-            let same = same_kind(old, new, dir);
+            let same = same_kind(old, new, crate::model::PortDirection::parse);
             same_or(
                 same,
                 "means the same port kind",
@@ -1518,13 +1453,6 @@ fn changed(
             )
         }
         Place::Field(Field::InterfaceDirection) => {
-            let dir = |s: Option<&str>| {
-                crate::model::ServiceInterface {
-                    direction: s.map(Into::into),
-                    ..Default::default()
-                }
-                .direction_kind()
-            };
             let message = format!(
                 "interface `{}` of service port `{}` changed from {} to {}",
                 p[3],
@@ -1532,7 +1460,7 @@ fn changed(
                 quoted(old),
                 quoted(new)
             );
-            let same = same_kind(old, new, dir);
+            let same = same_kind(old, new, crate::model::Direction::parse);
             same_or(
                 same,
                 "means the same direction",
@@ -1584,8 +1512,9 @@ fn changed(
 fn same_kind<K: PartialEq>(
     old: Option<&str>,
     new: Option<&str>,
-    kind: impl Fn(Option<&str>) -> Option<K>,
+    kind: impl Fn(&str) -> Option<K>,
 ) -> bool {
+    let kind = |s: Option<&str>| s.and_then(&kind);
     kind(old).is_some() && kind(old) == kind(new)
 }
 

@@ -17,7 +17,7 @@
 use super::{codes, Change, Key, Level, Namer};
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
-use crate::model::system::{short_port_name, ComponentIdParts, PortEnd, RtSystem};
+use crate::model::system::{short_port_name, ComponentIdParts, Connector, PortEnd, RtSystem};
 use std::collections::{BTreeMap, BTreeSet};
 
 mod compare;
@@ -114,26 +114,18 @@ impl Breaks {
                 Some(id) => format!("system `{id}` ({file})"),
                 None => format!("system `{}` ({file})", sys.name()),
             };
-            let data = sys.data_port_connectors.iter().map(|c| {
-                (
-                    non_empty(&c.name).or(non_empty(&c.connector_id)),
-                    c.source.as_ref(),
-                    c.target.as_ref(),
-                    c.pos,
-                    "data port connector",
-                )
-            });
-            let service = sys.service_port_connectors.iter().map(|c| {
-                (
-                    non_empty(&c.name).or(non_empty(&c.connector_id)),
-                    c.source.as_ref(),
-                    c.target.as_ref(),
-                    c.pos,
-                    "service port connector",
-                )
-            });
-            for (name, source, target, pos, kind) in data.chain(service) {
+            let data = sys
+                .data_port_connectors
+                .iter()
+                .map(|c| (c as &dyn Connector, "data port connector"));
+            let service = sys
+                .service_port_connectors
+                .iter()
+                .map(|c| (c as &dyn Connector, "service port connector"));
+            for (c, kind) in data.chain(service) {
+                let name = non_empty(c.name()).or(non_empty(c.connector_id()));
                 let name = name.unwrap_or("(unnamed)");
+                let ((source, target), pos) = (c.ends(), c.pos());
                 let ends = format!("`{}` → `{}`", end_text(source), end_text(target));
                 for end in [source, target].into_iter().flatten() {
                     let Some((key, port)) = end_key(end) else {
@@ -248,8 +240,8 @@ pub(super) fn compare_all(
     old_name: Namer,
     new_name: Namer,
     out: &mut Vec<Change>,
-) -> super::SystemCounts {
-    let mut counts = super::SystemCounts {
+) -> super::Counts {
+    let mut counts = super::Counts {
         old: old.len(),
         new: new.len(),
         ..Default::default()
@@ -317,27 +309,19 @@ pub(super) fn compare_all(
         }
         if !lo.is_empty() && !ln.is_empty() {
             let files = |v: &[usize], s: &[LoadedSystem], name: Namer| {
-                v.iter()
-                    .map(|&i| name(&s[i].source))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                v.iter().map(|&i| name(&s[i].source)).collect()
             };
             let id = non_empty(&new[ln[0]].system.id).unwrap_or("(no id)");
-            let mut c = super::change(
+            out.push(super::ambiguous(
                 codes::AMBIGUOUS_SYSTEM,
-                id.to_string(),
-                String::new(),
-                Some(files(&lo, old, old_name)),
-                Some(files(&ln, new, new_name)),
+                id,
+                [files(&lo, old, old_name), files(&ln, new, new_name)],
                 format!(
                     "{} RT System profiles in OLD and {} in NEW have the id `{id}`; they cannot be paired and are not compared (give each system its own id)",
                     lo.len(),
                     ln.len()
                 ),
-            );
-            c.file = Some(new_name(&new[ln[0]].source));
-            c.old_file = Some(old_name(&old[lo[0]].source));
-            out.push(c);
+            ));
             lo.clear();
             ln.clear();
         }

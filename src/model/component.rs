@@ -614,16 +614,22 @@ pub enum PortDirection {
     Event,
 }
 
-impl DataPort {
-    /// In, Out or Event, from `portType` (case-insensitive); `None` for anything else.
-    pub fn direction(&self) -> Option<PortDirection> {
-        let t = self.port_type.as_deref()?.trim().to_ascii_lowercase();
-        match t.as_str() {
+impl PortDirection {
+    /// In, Out or Event, from a `portType` (case-insensitive); `None` for anything else.
+    pub fn parse(port_type: &str) -> Option<PortDirection> {
+        match port_type.trim().to_ascii_lowercase().as_str() {
             "datainport" | "inport" | "in" => Some(PortDirection::In),
             "dataoutport" | "outport" | "out" => Some(PortDirection::Out),
             "eventport" => Some(PortDirection::Event),
             _ => None,
         }
+    }
+}
+
+impl DataPort {
+    /// In, Out or Event, from `portType` (case-insensitive); `None` for anything else.
+    pub fn direction(&self) -> Option<PortDirection> {
+        PortDirection::parse(self.port_type.as_deref()?)
     }
     /// The edge the port is drawn on: `rtcExt:position` or, without it, in-ports left and
     /// out-ports right (spec chapter 4).
@@ -750,20 +756,21 @@ pub enum Direction {
     Required,
 }
 
-impl ServiceInterface {
+impl Direction {
     /// `Provided` / `Required` in any case; `None` for anything else.
-    pub fn direction_kind(&self) -> Option<Direction> {
-        match self
-            .direction
-            .as_deref()?
-            .trim()
-            .to_ascii_lowercase()
-            .as_str()
-        {
+    pub fn parse(direction: &str) -> Option<Direction> {
+        match direction.trim().to_ascii_lowercase().as_str() {
             "provided" => Some(Direction::Provided),
             "required" => Some(Direction::Required),
             _ => None,
         }
+    }
+}
+
+impl ServiceInterface {
+    /// `Provided` / `Required` in any case; `None` for anything else.
+    pub fn direction_kind(&self) -> Option<Direction> {
+        Direction::parse(self.direction.as_deref()?)
     }
 }
 
@@ -841,6 +848,19 @@ pub enum ConstraintKind {
     Hash { items: Vec<Constraint> },
     /// A constraint element with no recognised content (kept so the position is known).
     Empty,
+}
+
+impl ConstraintKind {
+    /// A unit constraint of `condition` (with its `key` inside a hash); `Empty` without one.
+    pub fn unit(key: Option<Text>, condition: Option<Condition>) -> ConstraintKind {
+        match condition {
+            Some(c) => ConstraintKind::Unit {
+                key,
+                condition: Box::new(c),
+            },
+            None => ConstraintKind::Empty,
+        }
+    }
 }
 
 /// One condition of a constraint unit (spec 2.3.22–2.3.41).

@@ -22,6 +22,26 @@ mod test_support {
         }
         s.insert_str(at, text);
     }
+
+    /// What both fast readers are held to: whenever `fast` reads `doc`, or `doc` with each of
+    /// `edits` inserted ([`insert`]), `slow` reads the same.
+    pub fn fast_agrees(
+        doc: &str,
+        edits: Vec<(usize, &str)>,
+        fast: fn(&str) -> Option<String>,
+        slow: fn(&str) -> String,
+    ) -> Result<(), proptest::test_runner::TestCaseError> {
+        let mut edited = doc.to_string();
+        for (at, text) in edits {
+            insert(&mut edited, at, text);
+        }
+        for doc in [doc, &edited] {
+            if let Some(v) = fast(doc) {
+                proptest::prop_assert_eq!(v, slow(doc), "{:?}", doc);
+            }
+        }
+        Ok(())
+    }
 }
 
 use crate::diagnostic::Diagnostic;

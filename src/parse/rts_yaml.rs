@@ -31,20 +31,13 @@ pub(crate) fn parse(
         "RT System profile",
         "a YAML RT System profile starts with `rtsProfile:`",
     )?;
-    let mut s = RtSystem::default();
-    for (k, v) in &root {
-        let (name, pos) = r.key(k);
-        if name == ROOT {
-            s.pos = pos;
-            if let Some(m) = r.map(v, ROOT, pos, &mut s.extra) {
-                // The root's unknown keys before `rtsProfile` stay first.
-                let before = std::mem::replace(&mut s, system(&mut r, m, pos));
-                s.extra.splice(0..0, before.extra);
-            }
-        } else {
-            r.unknown(&name, v, pos, "the document root", &mut s.extra);
+    let s = r.document(&root, ROOT, |r, v, pos, s: &mut RtSystem| {
+        if let Some(m) = r.map(v, ROOT, pos, &mut s.extra) {
+            // The root's unknown keys before `rtsProfile` stay first.
+            let before = std::mem::replace(s, system(r, m, pos));
+            s.extra.splice(0..0, before.extra);
         }
-    }
+    });
     Ok((s, r.diags))
 }
 

@@ -119,16 +119,7 @@ pub fn parse(bytes: &[u8], file: &str, limits: &Limits) -> Result<Parsed, Diagno
         "RTC Profile",
         "a YAML RTC Profile starts with `rtcProfile:` (spec chapter 7)",
     )?;
-    let mut profile = Profile::default();
-    for (k, v) in &root {
-        let (name, pos) = r.key(k);
-        if name == "rtcProfile" {
-            profile.pos = pos;
-            r.profile(v, pos, &mut profile);
-        } else {
-            r.unknown(&name, v, pos, "the document root", &mut profile.extra);
-        }
-    }
+    let profile: Profile = r.document(&root, "rtcProfile", |r, v, pos, p| r.profile(v, pos, p));
     Ok(Parsed::read(
         profile,
         r.written_as,
@@ -757,6 +748,27 @@ fn form_of(name: &str) -> Option<Form> {
 }
 
 impl Reader<'_> {
+    /// The document a root mapping holds: the value of `key` read into a `T` by `fill` (the
+    /// node placed at the key), any other key of the root kept as an unknown value of it.
+    fn document<T: Default + Located>(
+        &mut self,
+        root: &Mapping,
+        key: &str,
+        mut fill: impl FnMut(&mut Self, &Value, Pos, &mut T),
+    ) -> T {
+        let mut node = T::default();
+        for (k, v) in root {
+            let (name, pos) = self.key(k);
+            if name == key {
+                *node.pos_mut() = pos;
+                fill(self, v, pos, &mut node);
+            } else {
+                self.unknown(&name, v, pos, "the document root", node.extra_mut());
+            }
+        }
+        node
+    }
+
     /// Key text and its position; moves the locator.
     fn key(&mut self, k: &Value) -> (String, Pos) {
         let name = key_text(k);
@@ -1690,25 +1702,17 @@ impl Reader<'_> {
             }
             condition = self.condition(op, &n, v, kp, sink);
         }
-        match condition {
-            Some(c) => ConstraintKind::Unit {
-                key,
-                condition: Box::new(c),
-            },
-            None => {
-                if let Some(k) = key {
-                    sink.push(Extra {
-                        kind: ExtraKind::Key,
-                        name: "key".into(),
-                        namespace: None,
-                        value: Some(k),
-                        children: crate::model::Extras::new(),
-                        pos: Pos::default(),
-                    });
-                }
-                ConstraintKind::Empty
-            }
+        if let (None, Some(k)) = (&condition, &key) {
+            sink.push(Extra {
+                kind: ExtraKind::Key,
+                name: "key".into(),
+                namespace: None,
+                value: Some(k.clone()),
+                children: crate::model::Extras::new(),
+                pos: Pos::default(),
+            });
         }
+        ConstraintKind::unit(key, condition)
     }
 
     fn condition(

@@ -414,7 +414,7 @@ fn plain(text: &str) -> Option<Value> {
 #[cfg(test)]
 mod tests {
     use super::parse;
-    use crate::parse::{test_support::insert, yaml::slow_value, Limits};
+    use crate::parse::{test_support::fast_agrees, yaml::slow_value, Limits};
     use proptest::prelude::*;
     use proptest::strategy::ValueTree;
 
@@ -863,17 +863,7 @@ mod tests {
             choices in prop::collection::vec(any::<u8>(), 64),
             edits in prop::collection::vec((any::<usize>(), prop::sample::select(INSERTS)), 0..3),
         ) {
-            let mut doc = render(&root, &extra, &choices);
-            let clean = doc.clone();
-            if let Some(v) = fast(&clean) {
-                prop_assert_eq!(v, slow(&clean), "{:?}", clean);
-            }
-            for (at, text) in edits {
-                insert(&mut doc, at, text);
-            }
-            if let Some(v) = fast(&doc) {
-                prop_assert_eq!(v, slow(&doc), "{:?}", doc);
-            }
+            fast_agrees(&render(&root, &extra, &choices), edits, fast, slow)?;
         }
     }
 }

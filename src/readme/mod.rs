@@ -584,17 +584,17 @@ mod tests {
 
     #[test]
     fn names() {
-        assert_eq!(readme_rank("README.md"), Some(0));
-        assert_eq!(readme_rank("readme.MD"), Some(0));
-        assert_eq!(readme_rank("Readme.markdown"), Some(1));
-        for n in [
-            "README.txt",
-            "README.MikataArm",
-            "README",
-            "READMEmd",
-            "xREADME.md",
+        for (n, want) in [
+            ("README.md", Some(0)),
+            ("readme.MD", Some(0)),
+            ("Readme.markdown", Some(1)),
+            ("README.txt", None),
+            ("README.MikataArm", None),
+            ("README", None),
+            ("READMEmd", None),
+            ("xREADME.md", None),
         ] {
-            assert_eq!(readme_rank(n), None, "{n}");
+            assert_eq!(readme_rank(n), want, "{n}");
         }
     }
 

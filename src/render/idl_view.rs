@@ -444,12 +444,9 @@ pub fn write_definition<M: Markup>(
         fields_table::<M>(out, &d.fields, d.kind == "union", lang, &ty);
     }
     if !d.values.is_empty() {
-        let rows: Vec<Vec<String>> = d
-            .values
-            .iter()
-            .map(|v| vec![M::esc(&v.name), M::esc(&v.doc)])
-            .collect();
-        M::table(out, &[lang.t("idl_values"), lang.t("description")], &rows);
+        let pairs = d.values.iter().map(|v| (&v.name, &v.doc));
+        let headers = [lang.t("idl_values"), lang.t("description")];
+        super::text::pairs_table::<M, _, _>(out, headers, pairs);
     }
     if !d.operations.is_empty() {
         operations_table::<M>(out, &d.operations, lang, &ty);

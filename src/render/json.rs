@@ -55,29 +55,22 @@ impl KeyedEntry for Component {
         Ok(())
     }
 }
-impl KeyedEntry for DataType {
-    const WHAT: &'static str = "data type";
-    fn key(&self) -> &str {
-        &self.name
-    }
+/// The entries keyed by a field they keep (`type => "what", field`).
+macro_rules! keyed_by_field {
+    ($($t:ty => $what:literal, $field:ident;)*) => {$(
+        impl KeyedEntry for $t {
+            const WHAT: &'static str = $what;
+            fn key(&self) -> &str {
+                &self.$field
+            }
+        }
+    )*};
 }
-impl KeyedEntry for InterfaceType {
-    const WHAT: &'static str = "interface";
-    fn key(&self) -> &str {
-        &self.name
-    }
-}
-impl KeyedEntry for Facet {
-    const WHAT: &'static str = "facet";
-    fn key(&self) -> &str {
-        &self.name
-    }
-}
-impl KeyedEntry for System {
-    const WHAT: &'static str = "system";
-    fn key(&self) -> &str {
-        &self.source
-    }
+keyed_by_field! {
+    DataType => "data type", name;
+    InterfaceType => "interface", name;
+    Facet => "facet", name;
+    System => "system", source;
 }
 
 /// Entries as one JSON object keyed by each entry's key, in catalogue order: borrowed when
@@ -601,32 +594,21 @@ mod tests {
             .iter()
             .find_map(|t| t.uses.producers.first())
             .unwrap();
-        let edited = text.replacen(
-            &format!("\"port\": \"{}\"", r.port),
-            "\"port\": \"no-such-port\"",
-            1,
-        );
-        assert_ne!(edited, text);
-        let e = read_catalog(edited.as_bytes(), "e.json")
-            .err()
-            .unwrap()
-            .to_string();
+        let edited_error = |from: &str, to: &str| {
+            let edited = text.replacen(from, to, 1);
+            assert_ne!(edited, text);
+            let e = read_catalog(edited.as_bytes(), "e.json").err().unwrap();
+            (edited, e.to_string())
+        };
+        let port = format!("\"port\": \"{}\"", r.port);
+        let (_, e) = edited_error(&port, "\"port\": \"no-such-port\"");
         assert!(
             e.contains("no-such-port") && e.contains("does not have"),
             "{e}"
         );
         // A key that is not its entry's: refused where it is, with what to do.
         let t = &catalog.data_types[0].name;
-        let edited = text.replacen(
-            &format!("\n    \"{t}\": {{"),
-            "\n    \"Edited::Name\": {",
-            1,
-        );
-        assert_ne!(edited, text);
-        let e = read_catalog(edited.as_bytes(), "e.json")
-            .err()
-            .unwrap()
-            .to_string();
+        let (edited, e) = edited_error(&format!("\n    \"{t}\": {{"), "\n    \"Edited::Name\": {");
         // serde reports the position where the entry ends.
         let key_line = edited[..edited.find("Edited::Name").unwrap()]
             .lines()

@@ -460,7 +460,7 @@ fn summary_item(out: &mut String, cat: &Catalog, indent: usize, text: &str, to: 
 /// The mdBook table of contents. Every page appears exactly once (a page missing from
 /// `SUMMARY.md` is not built by mdBook and links to it would break); components are nested
 /// under their category so the navigation stays foldable, vendors under the vendor index.
-fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
+fn summary<'a>(cat: &'a Catalog, title: &str, lang: Lang) -> String {
     let mut out = String::new();
     w!(out, "# Summary");
     w!(out);
@@ -485,60 +485,44 @@ fn summary(cat: &Catalog, title: &str, lang: Lang) -> String {
     }
     w!(out, "# {}", inline(lang.t("fact_catalogue")));
     w!(out);
-    let index = |kind| cat.site_page(kind);
-    summary_item(
-        &mut out,
-        cat,
-        0,
-        lang.t("data_types"),
-        index(PageKind::DataTypes),
-    );
-    for ti in Ix::all(cat.data_types.len()) {
-        let page = cat.data_type_page(ti);
-        summary_item(&mut out, cat, 1, &page.title, page);
-    }
-    summary_item(
-        &mut out,
-        cat,
-        0,
-        lang.t("interfaces"),
-        index(PageKind::Interfaces),
-    );
-    for ii in Ix::all(cat.interfaces.len()) {
-        let page = cat.interface_page(ii);
-        summary_item(&mut out, cat, 1, &page.title, page);
-    }
-    summary_item(
-        &mut out,
-        cat,
-        0,
-        lang.t("vendors"),
-        index(PageKind::Vendors),
-    );
-    for (fi, f) in cat.vendors.iter().enumerate() {
-        let text = FacetKind::Vendor.name(&f.name, lang);
-        summary_item(&mut out, cat, 1, &text, cat.vendor_page(fi));
-    }
+    // The indexes of the catalogue, each with its pages under it.
+    let titled = |page: &'a Page| (page.title.clone(), page);
+    let mut sections = vec![
+        (
+            PageKind::DataTypes,
+            "data_types",
+            Ix::all(cat.data_types.len())
+                .map(|ti| titled(cat.data_type_page(ti)))
+                .collect(),
+        ),
+        (
+            PageKind::Interfaces,
+            "interfaces",
+            Ix::all(cat.interfaces.len())
+                .map(|ii| titled(cat.interface_page(ii)))
+                .collect(),
+        ),
+        (
+            PageKind::Vendors,
+            "vendors",
+            cat.vendors
+                .iter()
+                .enumerate()
+                .map(|(fi, f)| (FacetKind::Vendor.name(&f.name, lang), cat.vendor_page(fi)))
+                .collect::<Vec<_>>(),
+        ),
+    ];
     if !cat.systems.is_empty() {
-        summary_item(
-            &mut out,
-            cat,
-            0,
-            lang.t("systems"),
-            index(PageKind::Systems),
-        );
-        for si in Ix::all(cat.systems.len()) {
-            let page = cat.system_page(si);
-            summary_item(&mut out, cat, 1, &page.title, page);
+        let systems = Ix::all(cat.systems.len()).map(|si| titled(cat.system_page(si)));
+        sections.push((PageKind::Systems, "systems", systems.collect()));
+    }
+    sections.push((PageKind::DataFlow, "dataflow", Vec::new()));
+    for (kind, label, pages) in sections {
+        summary_item(&mut out, cat, 0, lang.t(label), cat.site_page(kind));
+        for (text, page) in pages {
+            summary_item(&mut out, cat, 1, &text, page);
         }
     }
-    summary_item(
-        &mut out,
-        cat,
-        0,
-        lang.t("dataflow"),
-        index(PageKind::DataFlow),
-    );
     // What's new, with each component's history under it.
     if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
         summary_item(&mut out, cat, 0, lang.t("whats_new"), news);

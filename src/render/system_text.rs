@@ -3,7 +3,7 @@
 //! groups and every value of the file. Host data is left out unless `show_host`, as on the HTML
 //! pages.
 
-use super::text::Markup;
+use super::text::{pairs_table, Markup};
 use super::view::system::{system_view, EndView, Link, SystemView};
 use crate::catalog::systems::{end_port_name, System};
 use crate::catalog::{Catalog, ComponentIx};
@@ -98,12 +98,8 @@ pub fn system_body<M: Markup>(
         super::text::history_body::<M>(out, &v.history, lang.t("history_intro_system"), lang);
     }
     (t.heading)(out, "all-values", lang.t("sys_all_values"));
-    let rows: Vec<Vec<String>> = v
-        .all_values
-        .iter()
-        .map(|kv| vec![M::esc(&kv.key), M::esc(&kv.value)])
-        .collect();
-    M::table(out, &[lang.t("extra_path"), lang.t("value")], &rows);
+    let pairs = v.all_values.iter().map(|kv| (&kv.key, &kv.value));
+    pairs_table::<M, _, _>(out, [lang.t("extra_path"), lang.t("value")], pairs);
 }
 
 fn instances<M: Markup>(
@@ -328,12 +324,8 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
     }
     if !v.groups.is_empty() {
         (t.heading)(out, "groups", lang.t("sys_groups"));
-        let rows: Vec<Vec<String>> = v
-            .groups
-            .iter()
-            .map(|g| vec![M::esc(&g.id), M::esc(&g.members.join(", "))])
-            .collect();
-        M::table(out, &[lang.t("sys_groups"), lang.t("sys_members")], &rows);
+        let pairs = v.groups.iter().map(|g| (&g.id, g.members.join(", ")));
+        pairs_table::<M, _, _>(out, [lang.t("sys_groups"), lang.t("sys_members")], pairs);
     }
 }
 

@@ -91,13 +91,23 @@ pub trait Markup {
     }
 }
 
+/// A two-column table of plain-text pairs, each cell escaped.
+pub fn pairs_table<M: Markup, A: AsRef<str>, B: AsRef<str>>(
+    out: &mut String,
+    headers: [&str; 2],
+    pairs: impl IntoIterator<Item = (A, B)>,
+) {
+    let rows: Vec<Vec<String>> = pairs
+        .into_iter()
+        .map(|(a, b)| vec![M::esc(a.as_ref()), M::esc(b.as_ref())])
+        .collect();
+    M::table(out, &headers, &rows);
+}
+
 /// Facts as a two-column table (label, value).
 pub fn facts_table<M: Markup>(out: &mut String, lang: Lang, facts: &[Fact]) {
-    let rows: Vec<Vec<String>> = facts
-        .iter()
-        .map(|f| vec![M::esc(&f.label), M::esc(&f.value)])
-        .collect();
-    M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
+    let pairs = facts.iter().map(|f| (&f.label, &f.value));
+    pairs_table::<M, _, _>(out, [lang.t("fact_field"), lang.t("fact_value")], pairs);
 }
 
 /// A table whose columns from `keep` on are left out when they are empty in every row (a
@@ -497,12 +507,8 @@ fn environment_sections<M: Markup>(out: &mut String, v: &ComponentView<'_>, lang
     let page = v.page;
     if !v.parameters.is_empty() {
         M::heading(out, page, 2, "sec-system-parameters", lang.t("parameters"));
-        let rows: Vec<Vec<String>> = v
-            .parameters
-            .iter()
-            .map(|(n, val)| vec![M::esc(n), M::esc(val)])
-            .collect();
-        M::table(out, &[lang.t("name"), lang.t("default_value")], &rows);
+        let headers = [lang.t("name"), lang.t("default_value")];
+        pairs_table::<M, _, _>(out, headers, v.parameters.iter().copied());
     }
 
     if !v.language.is_empty() || !v.targets.is_empty() {
@@ -521,12 +527,8 @@ fn environment_sections<M: Markup>(out: &mut String, v: &ComponentView<'_>, lang
 
     if !v.properties.is_empty() {
         M::heading(out, page, 2, "sec-properties", lang.t("properties"));
-        let rows: Vec<Vec<String>> = v
-            .properties
-            .iter()
-            .map(|f| vec![M::esc(&f.label), M::esc(&f.value)])
-            .collect();
-        M::table(out, &[lang.t("name"), lang.t("fact_value")], &rows);
+        let pairs = v.properties.iter().map(|f| (&f.label, &f.value));
+        pairs_table::<M, _, _>(out, [lang.t("name"), lang.t("fact_value")], pairs);
     }
 
     if !v.version_up_logs.is_empty() {

@@ -159,36 +159,35 @@ pub fn system_wiring(
     (wire, conns)
 }
 
-/// Escapes text for a Graphviz HTML-like label.
-fn dot_html(s: &str) -> String {
+/// `s` with each character of `table` replaced by its text, and control characters by a space.
+fn escape_with(s: &str, table: &[(char, &str)]) -> String {
     let mut o = String::with_capacity(s.len());
     for c in s.chars() {
-        match c {
-            '&' => o.push_str("&amp;"),
-            '<' => o.push_str("&lt;"),
-            '>' => o.push_str("&gt;"),
-            '"' => o.push_str("&quot;"),
-            c if c.is_control() => o.push(' '),
-            c => o.push(c),
+        match table.iter().find(|(k, _)| *k == c) {
+            Some((_, e)) => o.push_str(e),
+            None if c.is_control() => o.push(' '),
+            None => o.push(c),
         }
     }
     o
 }
 
+/// Escapes text for a Graphviz HTML-like label.
+fn dot_html(s: &str) -> String {
+    escape_with(
+        s,
+        &[
+            ('&', "&amp;"),
+            ('<', "&lt;"),
+            ('>', "&gt;"),
+            ('"', "&quot;"),
+        ],
+    )
+}
+
 /// Escapes text for a quoted Graphviz string.
 fn dot_str(s: &str) -> String {
-    let mut o = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '"' | '\\' => {
-                o.push('\\');
-                o.push(c);
-            }
-            c if c.is_control() => o.push(' '),
-            c => o.push(c),
-        }
-    }
-    o
+    escape_with(s, &[('"', "\\\""), ('\\', "\\\\")])
 }
 
 /// The wiring as a Graphviz DOT digraph (data flowing left to right): each instance a table
@@ -283,19 +282,16 @@ pub fn to_dot(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> Str
 /// Escapes text for a quoted Mermaid label: Mermaid's entity codes for the characters that
 /// would end the label or be read as markup.
 fn mermaid_str(s: &str) -> String {
-    let mut o = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '#' => o.push_str("#35;"),
-            '"' => o.push_str("#quot;"),
-            '<' => o.push_str("#lt;"),
-            '>' => o.push_str("#gt;"),
-            '&' => o.push_str("#amp;"),
-            c if c.is_control() => o.push(' '),
-            c => o.push(c),
-        }
-    }
-    o
+    escape_with(
+        s,
+        &[
+            ('#', "#35;"),
+            ('"', "#quot;"),
+            ('<', "#lt;"),
+            ('>', "#gt;"),
+            ('&', "#amp;"),
+        ],
+    )
 }
 
 /// The wiring as a Mermaid flowchart (`flowchart LR`): each instance a node named by the
@@ -324,25 +320,18 @@ pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) ->
         let (Some(pa), Some(pb)) = (a.ports.get(c.from.1), b.ports.get(c.to.1)) else {
             continue;
         };
-        if c.service {
-            let _ = writeln!(
-                s,
-                "  n{} -. \"{} — {}\" .- n{}",
-                c.from.0,
-                mermaid_str(&pa.name),
-                mermaid_str(&pb.name),
-                c.to.0
-            );
+        // A service connector a dotted line, a data connector an arrow.
+        let (open, between, close) = if c.service {
+            ("-.", "—", ".-")
         } else {
-            let _ = writeln!(
-                s,
-                "  n{} -- \"{} → {}\" --> n{}",
-                c.from.0,
-                mermaid_str(&pa.name),
-                mermaid_str(&pb.name),
-                c.to.0
-            );
-        }
+            ("--", "→", "-->")
+        };
+        let (from, to) = (mermaid_str(&pa.name), mermaid_str(&pb.name));
+        let _ = writeln!(
+            s,
+            "  n{} {open} \"{from} {between} {to}\" {close} n{}",
+            c.from.0, c.to.0
+        );
     }
     s
 }

@@ -922,15 +922,19 @@ mod tests {
 
     #[test]
     fn derived_templates() {
-        assert_eq!(
-            derived_source_url("https://github.com/o/r.git").as_deref(),
-            Some("https://github.com/o/r/blob/{commit}/{path}")
-        );
-        assert_eq!(
-            derived_source_url("git@gitlab.com:g/sub/r.git").as_deref(),
-            Some("https://gitlab.com/g/sub/r/-/blob/{commit}/{path}")
-        );
-        assert_eq!(derived_source_url("file:///srv/r"), None);
-        assert_eq!(derived_source_url("https://example.org/r.git"), None);
+        for (git, want) in [
+            (
+                "https://github.com/o/r.git",
+                Some("https://github.com/o/r/blob/{commit}/{path}"),
+            ),
+            (
+                "git@gitlab.com:g/sub/r.git",
+                Some("https://gitlab.com/g/sub/r/-/blob/{commit}/{path}"),
+            ),
+            ("file:///srv/r", None),
+            ("https://example.org/r.git", None),
+        ] {
+            assert_eq!(derived_source_url(git).as_deref(), want, "{git}");
+        }
     }
 }

@@ -274,7 +274,7 @@ fn resolve(bindings: &[Binding<'_>], prefix: &str, element: bool) -> Option<Ns> 
 mod tests {
     use super::super::{build_tree, HARD_MAX_DEPTH};
     use super::build;
-    use crate::parse::{test_support::insert, Limits};
+    use crate::parse::{test_support::fast_agrees, Limits};
     use proptest::prelude::*;
     use proptest::strategy::ValueTree;
 
@@ -612,16 +612,7 @@ mod tests {
             choices in prop::collection::vec(any::<u8>(), 64),
             edits in prop::collection::vec((any::<usize>(), prop::sample::select(INSERTS)), 0..3),
         ) {
-            let mut doc = document(&b, &choices);
-            if let Some(v) = fast(&doc) {
-                prop_assert_eq!(v, slow(&doc), "{}", doc);
-            }
-            for (at, text) in edits {
-                insert(&mut doc, at, text);
-            }
-            if let Some(v) = fast(&doc) {
-                prop_assert_eq!(v, slow(&doc), "{}", doc);
-            }
+            fast_agrees(&document(&b, &choices), edits, fast, slow)?;
         }
     }
 }

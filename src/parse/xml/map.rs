@@ -639,25 +639,17 @@ pub(super) fn map_unit(m: &mut Mapper, n: &Node, extra: &mut Extras) -> Constrai
         }
     }
     m.stray_text(n, on, extra);
-    match condition {
-        Some(c) => ConstraintKind::Unit {
-            key,
-            condition: Box::new(c),
-        },
-        None => {
-            if let Some(a) = key_attr {
-                m.warn(
-                    a.pos,
-                    format!(
-                        "constraint unit with key `{}` has no condition; the key is kept as an extra property",
-                        a.value
-                    ),
-                );
-                extra.push(attr_extra(a));
-            }
-            ConstraintKind::Empty
-        }
+    if let (None, Some(a)) = (&condition, key_attr) {
+        m.warn(
+            a.pos,
+            format!(
+                "constraint unit with key `{}` has no condition; the key is kept as an extra property",
+                a.value
+            ),
+        );
+        extra.push(attr_extra(a));
     }
+    ConstraintKind::unit(key, condition)
 }
 
 /// One condition element (lower-cased local name `k`); `None` when `k` is not a condition.

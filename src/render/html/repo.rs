@@ -85,6 +85,16 @@ pub fn history_file_url(
         .flatten()
 }
 
+/// [`history_file_url`] for the commits of one document (from `origin`, else the input
+/// directory with `template`), as the history views take it: a commit and a path in.
+pub fn history_file_urls<'a>(
+    sources: &'a [crate::model::SourceInfo],
+    origin: Option<&'a crate::model::Origin>,
+    template: Option<&'a str>,
+) -> impl Fn(&str, &str) -> Option<String> + 'a {
+    move |commit, path| history_file_url(sources, origin, template, commit, path)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

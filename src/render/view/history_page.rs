@@ -24,12 +24,8 @@ pub fn commit_url(
     commit: &str,
     path: &str,
 ) -> Option<String> {
-    crate::render::html::repo::history_file_url(
-        &cat.sources,
-        c.origin.as_ref(),
-        source_url,
-        commit,
-        path,
+    crate::render::html::repo::history_file_urls(&cat.sources, c.origin.as_ref(), source_url)(
+        commit, path,
     )
 }
 
@@ -393,19 +389,21 @@ mod tests {
 
     #[test]
     fn instants_order_dates_across_offsets() {
-        assert_eq!(instant("1970-01-01T00:00:00+00:00"), Some(0));
-        assert_eq!(instant("1970-01-01T09:00:00+09:00"), Some(0));
-        assert_eq!(instant("2024-01-02 10:00:00"), Some(1_704_189_600));
+        for (date, want) in [
+            ("1970-01-01T00:00:00+00:00", Some(0)),
+            ("1970-01-01T09:00:00+09:00", Some(0)),
+            ("2024-01-02 10:00:00", Some(1_704_189_600)),
+            ("yesterday", None),
+        ] {
+            assert_eq!(instant(date), want, "{date}");
+        }
         assert!(instant("2024-01-02T10:00:00+09:00") < instant("2024-01-02T10:00:00+00:00"));
-        assert_eq!(instant("yesterday"), None);
-        assert_eq!(
-            rfc3339("2015-07-26 07:20:22").as_deref(),
-            Some("2015-07-26T07:20:22Z")
-        );
-        assert_eq!(
-            rfc3339("2024-01-02T10:00:00+09:00").as_deref(),
-            Some("2024-01-02T10:00:00+09:00")
-        );
+        for (date, want) in [
+            ("2015-07-26 07:20:22", "2015-07-26T07:20:22Z"),
+            ("2024-01-02T10:00:00+09:00", "2024-01-02T10:00:00+09:00"),
+        ] {
+            assert_eq!(rfc3339(date).as_deref(), Some(want), "{date}");
+        }
     }
 
     /// What's new lists at most WHATS_NEW_MAX changes and counts the rest; the feed has at

@@ -28,15 +28,11 @@ pub fn idl_file_view(
     source_url: Option<&str>,
 ) -> Option<IdlFileView> {
     let file = cat.idl.find(name)?.file;
-    let url = |commit: &str, path: &str| {
-        crate::render::html::repo::history_file_url(
-            &cat.sources,
-            file.origin.as_ref(),
-            source_url,
-            commit,
-            path,
-        )
-    };
+    let url = crate::render::html::repo::history_file_urls(
+        &cat.sources,
+        file.origin.as_ref(),
+        source_url,
+    );
     let history = cat
         .idl_history
         .get(&file.path)

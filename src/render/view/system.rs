@@ -3,7 +3,9 @@
 //! Host data is left out unless `show_host`. Links are resolved for one output
 //! ([`Catalog::href`]); everything else is plain text.
 
-use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
+use crate::catalog::systems::{
+    check_configuration, end_port_name, ConfigCheck, EndLink, PortLink, System,
+};
 use crate::catalog::{Catalog, Output, Page};
 use crate::i18n::Lang;
 use crate::model::system::{PortEnd, RtSystem};
@@ -142,16 +144,24 @@ pub struct SystemView {
     pub history: super::history::HistoryView,
 }
 
+/// What the connector rows of system `s` link through: other pages of the catalogue (`href`)
+/// and the rows of this page (`local`).
+struct Links<'a> {
+    cat: &'a Catalog,
+    s: &'a System,
+    href: &'a dyn Fn(&Page, Option<&str>) -> String,
+    local: &'a dyn Fn(&str) -> String,
+}
+
 /// Link of a connector end: the instance row, and the port on the component page when the
 /// component and its port are in the catalogue (else the instance row).
-fn end_view(
-    cat: &Catalog,
-    s: &System,
-    href: &dyn Fn(&Page, Option<&str>) -> String,
-    local: &dyn Fn(&str) -> String,
-    e: &Option<PortEnd>,
-    link: &crate::catalog::systems::EndLink,
-) -> EndView {
+fn end_view(links: &Links<'_>, e: &Option<PortEnd>, link: &EndLink) -> EndView {
+    let &Links {
+        cat,
+        s,
+        href,
+        local,
+    } = links;
     let port_name = e.as_ref().map(end_port_name).unwrap_or("").to_string();
     let Some(i) = link.instance else {
         let inst = e
@@ -363,22 +373,20 @@ fn instance_configs(cat: &Catalog, s: &System, lang: Lang) -> Vec<InstanceConfig
         .collect()
 }
 
-/// The data connectors of system `s`, their ends and data type linked.
-fn data_connector_rows(
-    cat: &Catalog,
-    s: &System,
-    href: &dyn Fn(&Page, Option<&str>) -> String,
-    local: &dyn Fn(&str) -> String,
-) -> Vec<DataConnRow> {
+/// The connectors of system `s`: the data connectors with their data type linked, the service
+/// connectors with the interfaces of the ports they join; the ends of both linked.
+fn connector_rows(links: &Links<'_>) -> (Vec<DataConnRow>, Vec<ServiceConnRow>) {
+    let &Links { cat, s, href, .. } = links;
     let p = &s.profile;
-    p.data_port_connectors
+    let data = p
+        .data_port_connectors
         .iter()
         .zip(&s.data_connectors)
         .map(|(c, l)| DataConnRow {
             name: txt(&c.name),
             id: txt(&c.connector_id),
-            source: end_view(cat, s, href, local, &c.source, &l.source),
-            target: end_view(cat, s, href, local, &c.target, &l.target),
+            source: end_view(links, &c.source, &l.source),
+            target: end_view(links, &c.target, &l.target),
             data_type: non_empty(&c.data_type).map(|t| Link {
                 text: t.to_string(),
                 href: cat
@@ -392,18 +400,9 @@ fn data_connector_rows(
             push_interval: txt(&c.push_interval),
             comment: txt(&c.comment),
         })
-        .collect()
-}
-
-/// The service connectors of system `s`, with the interfaces of the ports they join.
-fn service_connector_rows(
-    cat: &Catalog,
-    s: &System,
-    href: &dyn Fn(&Page, Option<&str>) -> String,
-    local: &dyn Fn(&str) -> String,
-) -> Vec<ServiceConnRow> {
-    let p = &s.profile;
-    p.service_port_connectors
+        .collect();
+    let service = p
+        .service_port_connectors
         .iter()
         .zip(&s.service_connectors)
         .map(|(c, l)| {
@@ -435,14 +434,15 @@ fn service_connector_rows(
             ServiceConnRow {
                 name: txt(&c.name),
                 id: txt(&c.connector_id),
-                source: end_view(cat, s, href, local, &c.source, &l.source),
-                target: end_view(cat, s, href, local, &c.target, &l.target),
+                source: end_view(links, &c.source, &l.source),
+                target: end_view(links, &c.target, &l.target),
                 interfaces,
                 trans_method: txt(&c.trans_method),
                 comment: txt(&c.comment),
             }
         })
-        .collect()
+        .collect();
+    (data, service)
 }
 
 /// The execution orders of system profile `p`, each target with its condition.
@@ -521,8 +521,13 @@ pub fn system_view(
 
     let configs = instance_configs(cat, s, lang);
 
-    let data_connectors = data_connector_rows(cat, s, &href, &local);
-    let service_connectors = service_connector_rows(cat, s, &href, &local);
+    let links = Links {
+        cat,
+        s,
+        href: &href,
+        local: &local,
+    };
+    let (data_connectors, service_connectors) = connector_rows(&links);
 
     let orders = order_views(p, lang);
     let groups: Vec<GroupView> = p
@@ -555,14 +560,14 @@ pub fn system_view(
             &s.source,
             source_url,
         ),
-        history: super::history::HistoryView::of(&s.history, lang, &|commit, path| {
-            crate::render::html::repo::history_file_url(
+        history: super::history::HistoryView::of(
+            &s.history,
+            lang,
+            &crate::render::html::repo::history_file_urls(
                 &cat.sources,
                 s.origin.as_ref(),
                 source_url,
-                commit,
-                path,
-            )
-        }),
+            ),
+        ),
     }
 }
