@@ -40,8 +40,7 @@ fn num(s: &mut String, v: f32) {
                 break;
             }
         }
-        // ASCII digits: always UTF-8.
-        s.push_str(std::str::from_utf8(&digits[at..]).unwrap_or_default());
+        s.extend(digits[at..].iter().map(|&d| char::from(d)));
         if m % 2 == 1 {
             s.push_str(".5");
         }
@@ -184,7 +183,9 @@ pub fn system_diagram_with(
     let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
     let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
     let l = layout_with(&nodes, &edges, effort);
-    let mut s = String::with_capacity(4096 + inst.len() * 1024);
+    // About what the drawing takes (a box with its ports ~700 bytes, a connector with its
+    // route and title ~400), so that it is rarely copied to grow.
+    let mut s = String::with_capacity(2048 + inst.len() * 768 + conns.len() * 448);
     s.push_str(
         r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram system-diagram" viewBox="0 0 "#,
     );
