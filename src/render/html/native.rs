@@ -248,8 +248,10 @@ impl Out<'_> {
 
 /// The whole component page, as `component.html` (extending `base.html`) renders `page`.
 pub(super) fn component_page(page: &ComponentPage, g: &Globals<'_>) -> String {
+    // The drawings are most of a large page; the rest is rarely over 24 KB.
+    let drawings = page.diagram_svg.len() + page.lifecycle_svg.len() + page.neighbourhood_svg.len();
     let mut o = Out {
-        buf: String::with_capacity(32 * 1024),
+        buf: String::with_capacity(24 * 1024 + drawings),
         g,
     };
     base_top(&mut o, page);
