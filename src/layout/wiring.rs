@@ -1171,6 +1171,9 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
     }
     let mut want = vec![(0.0f32, 0.0f32); g.items.len()];
     for round in 0..16 {
+        // A round that moves nothing leaves every later round nothing to move (each layer's
+        // tops depend only on the tops): stop there, with the very same result.
+        let mut moved = false;
         let seq: Vec<usize> = if round % 2 == 0 {
             (0..g.layers).collect()
         } else {
@@ -1206,8 +1209,13 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
             }
             let z = isotonic(&target, &weight);
             for (k, &it) in list.iter().enumerate() {
-                top[it] = z[k] + off[k];
+                let y = z[k] + off[k];
+                moved |= y.to_bits() != top[it].to_bits();
+                top[it] = y;
             }
+        }
+        if !moved {
+            break;
         }
     }
     // Everything below the margin, on whole pixels.
