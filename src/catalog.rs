@@ -31,7 +31,7 @@ pub mod sources;
 pub mod systems;
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
-use crate::model::{Direction, PortDirection, Profile};
+use crate::model::{DataPort, Direction, PortDirection, Profile, ServiceInterface};
 use crate::parse::SourceFormat;
 pub use crate::slug::{fnv1a, slugify};
 use crate::types::canonical_type;
@@ -602,28 +602,69 @@ pub type DataType = TypeEntry<PortUses>;
 /// A service interface type used by some service port in the catalogue.
 pub type InterfaceType = TypeEntry<InterfaceUses>;
 
-/// The data ports carrying a data type, by direction.
-#[derive(Debug, Clone, Default, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct PortUses {
-    /// Out ports carrying the type.
-    pub producers: Vec<PortRef>,
-    /// In ports carrying the type.
-    pub consumers: Vec<PortRef>,
-    /// Other ports carrying it (event ports, unknown port types).
-    pub others: Vec<PortRef>,
+/// Declares the uses of a type entry by role: a struct of three lists of references (the two
+/// directions, then `others`; serialised in that order) and its [`Uses`] impl.
+macro_rules! uses {
+    (
+        $(#[$doc:meta])* $name:ident of $r:ty {
+            $(#[$doc_a:meta])* $a:ident: $role_a:ident,
+            $(#[$doc_b:meta])* $b:ident: $role_b:ident,
+            $(#[$doc_o:meta])* others,
+        }
+    ) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, Default, Serialize, Deserialize)]
+        #[serde(rename_all = "camelCase")]
+        pub struct $name {
+            $(#[$doc_a])*
+            pub $a: Vec<$r>,
+            $(#[$doc_b])*
+            pub $b: Vec<$r>,
+            $(#[$doc_o])*
+            pub others: Vec<$r>,
+        }
+
+        impl Uses for $name {
+            type Ref = $r;
+            fn by_role(&self) -> [(Role, &[$r]); 3] {
+                [
+                    (Role::$role_a, &self.$a),
+                    (Role::$role_b, &self.$b),
+                    (Role::Other, &self.others),
+                ]
+            }
+            fn refs_mut(&mut self) -> [&mut Vec<$r>; 3] {
+                [&mut self.$a, &mut self.$b, &mut self.others]
+            }
+            fn from_slots([$a, $b, others]: [Vec<$r>; 3]) -> Self {
+                $name { $a, $b, others }
+            }
+        }
+    };
 }
 
-/// The interfaces of service ports of an interface type, by direction.
-#[derive(Debug, Clone, Default, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase")]
-pub struct InterfaceUses {
-    /// Components providing the interface.
-    pub providers: Vec<InterfaceRef>,
-    /// Components requiring (consuming) the interface.
-    pub requirers: Vec<InterfaceRef>,
-    /// Interfaces of this type with a direction other than Provided/Required.
-    pub others: Vec<InterfaceRef>,
+uses! {
+    /// The data ports carrying a data type, by direction.
+    PortUses of PortRef {
+        /// Out ports carrying the type.
+        producers: Producer,
+        /// In ports carrying the type.
+        consumers: Consumer,
+        /// Other ports carrying it (event ports, unknown port types).
+        others,
+    }
+}
+
+uses! {
+    /// The interfaces of service ports of an interface type, by direction.
+    InterfaceUses of InterfaceRef {
+        /// Components providing the interface.
+        providers: Provider,
+        /// Components requiring (consuming) the interface.
+        requirers: Requirer,
+        /// Interfaces of this type with a direction other than Provided/Required.
+        others,
+    }
 }
 
 /// How a port or interface uses its type.
@@ -636,38 +677,36 @@ pub enum Role {
     Other,
 }
 
-/// The uses of a type entry, by role, in the order pages list them.
-pub trait Uses {
-    type Ref;
+/// A reference held by a type entry's uses: a port or interface of a component.
+pub trait UseRef {
+    /// Points the reference at the element `at` of the component entry with id `id`.
+    fn bind(&mut self, id: ComponentId, at: RefHandle);
+}
+
+impl UseRef for PortRef {
+    fn bind(&mut self, id: ComponentId, at: RefHandle) {
+        (self.component, self.at) = (id, at);
+    }
+}
+
+impl UseRef for InterfaceRef {
+    fn bind(&mut self, id: ComponentId, at: RefHandle) {
+        (self.component, self.at) = (id, at);
+    }
+}
+
+/// The uses of a type entry, by role, in the order pages list them (declared by `uses!`).
+pub trait Uses: Sized {
+    type Ref: UseRef;
     fn by_role(&self) -> [(Role, &[Self::Ref]); 3];
+    /// The lists of [`Uses::by_role`], to change.
+    fn refs_mut(&mut self) -> [&mut Vec<Self::Ref>; 3];
+    /// The uses from the lists of [`Uses::by_role`], in that order.
+    fn from_slots(slots: [Vec<Self::Ref>; 3]) -> Self;
     /// Required somewhere but provided nowhere in the catalogue (interfaces only).
     fn is_unprovided(&self) -> bool {
-        false
-    }
-}
-
-impl Uses for PortUses {
-    type Ref = PortRef;
-    fn by_role(&self) -> [(Role, &[PortRef]); 3] {
-        [
-            (Role::Producer, &self.producers),
-            (Role::Consumer, &self.consumers),
-            (Role::Other, &self.others),
-        ]
-    }
-}
-
-impl Uses for InterfaceUses {
-    type Ref = InterfaceRef;
-    fn by_role(&self) -> [(Role, &[InterfaceRef]); 3] {
-        [
-            (Role::Provider, &self.providers),
-            (Role::Requirer, &self.requirers),
-            (Role::Other, &self.others),
-        ]
-    }
-    fn is_unprovided(&self) -> bool {
-        self.providers.is_empty() && !self.requirers.is_empty()
+        let [(role, provided), (_, required), _] = self.by_role();
+        role == Role::Provider && provided.is_empty() && !required.is_empty()
     }
 }
 
@@ -1088,13 +1127,76 @@ pub(crate) fn per_element<'p>(
     }
 }
 
+/// The slot of a data port among its type's uses ([`Uses::by_role`]): out ports produce, in
+/// ports consume, other ports come last.
+fn port_slot(p: &DataPort) -> usize {
+    match p.direction() {
+        Some(PortDirection::Out) => 0,
+        Some(PortDirection::In) => 1,
+        _ => 2,
+    }
+}
+
+/// The slot of a service interface among its type's uses: provided, required, other.
+fn interface_slot(i: &ServiceInterface) -> usize {
+    match i.direction_kind() {
+        Some(Direction::Provided) => 0,
+        Some(Direction::Required) => 1,
+        None => 2,
+    }
+}
+
+/// The uses of type `t` that a use in slot `slot` connects to: those of the other direction
+/// (none for the others, or when the catalogue does not have the type).
+fn peers<U: Uses>(t: Option<&TypeEntry<U>>, slot: usize) -> &[U::Ref] {
+    match (t, slot) {
+        (Some(t), 0 | 1) => t.uses.by_role()[1 - slot].1,
+        _ => &[],
+    }
+}
+
+/// Where a port or interface is: (component, port, interface within the port; 0 for a data
+/// port).
+type UseAt = (usize, usize, usize);
+
+/// What the ports say about one type name while the catalogue is assembled: its spellings,
+/// `idlFile`s and uses, in the three slots of [`Uses::by_role`] (the two directions, others).
 #[derive(Default)]
 struct TypeAcc {
     spellings: Vec<String>,
     idl_files: Vec<String>,
-    a: Vec<(usize, usize, usize)>,
-    b: Vec<(usize, usize, usize)>,
-    other: Vec<(usize, usize, usize)>,
+    uses: [Vec<UseAt>; 3],
+}
+
+impl TypeAcc {
+    /// A use spelled `t` with `idl_file`, in role slot `slot`, at `at`.
+    fn add(&mut self, t: &str, idl_file: Option<&str>, slot: usize, at: UseAt) {
+        self.spellings.push(t.trim().to_string());
+        if let Some(f) = idl_file.filter(|f| !f.trim().is_empty()) {
+            self.idl_files.push(f.trim().to_string());
+        }
+        self.uses[slot].push(at);
+    }
+
+    /// One entry per name of `accs`, in name order, each with its slug; `refs` makes the
+    /// references of each slot.
+    fn entries<U: Uses>(
+        accs: BTreeMap<String, TypeAcc>,
+        refs: impl Fn(Vec<UseAt>) -> Vec<U::Ref>,
+    ) -> Vec<TypeEntry<U>> {
+        let names: Vec<(String, String)> = accs.keys().map(|k| (k.clone(), k.clone())).collect();
+        accs.into_iter()
+            .zip(unique_slugs(&names))
+            .map(|((name, acc), slug)| TypeEntry {
+                name,
+                slug,
+                spellings: sorted_unique(acc.spellings),
+                idl_files: sorted_unique(acc.idl_files),
+                uses: U::from_slots(acc.uses.map(&refs)),
+                contained_in: Vec::new(),
+            })
+            .collect()
+    }
 }
 
 fn sorted_unique(mut v: Vec<String>) -> Vec<String> {
@@ -1232,41 +1334,28 @@ impl Catalog {
         let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
         let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
         for ((ci, c), keys) in components.iter().enumerate().zip(canonical) {
-            let mut keys = keys.into_iter();
-            for (pi, p) in c.profile.data_ports.iter().enumerate() {
-                let (Some(key), Some(t)) = (keys.next().flatten(), p.type_.as_deref()) else {
+            // Each port's and interface's type in `port_types` order: whether it is an
+            // interface, its spelling and `idlFile`, its role slot and where it is.
+            let data = c
+                .profile
+                .data_ports
+                .iter()
+                .enumerate()
+                .map(|(pi, p)| (false, &p.type_, &p.idl_file, port_slot(p), (ci, pi, 0)));
+            let service = c
+                .profile
+                .service_interfaces()
+                .map(|(pi, ii, i)| (true, &i.type_, &i.idl_file, interface_slot(i), (ci, pi, ii)));
+            for ((interface, t, idl_file, slot, at), key) in data.chain(service).zip(keys) {
+                let (Some(key), Some(t)) = (key, t.as_deref()) else {
                     continue;
                 };
-                let acc = types.entry(key).or_default();
-                acc.spellings.push(t.trim().to_string());
-                if let Some(f) = p.idl_file.as_deref().filter(|f| !f.trim().is_empty()) {
-                    acc.idl_files.push(f.trim().to_string());
-                }
-                match p.direction() {
-                    Some(PortDirection::Out) => acc.a.push((ci, pi, 0)),
-                    Some(PortDirection::In) => acc.b.push((ci, pi, 0)),
-                    _ => acc.other.push((ci, pi, 0)),
-                }
-            }
-            for (pi, p) in c.profile.service_ports.iter().enumerate() {
-                for (ii, i) in p.interfaces.iter().enumerate() {
-                    let (Some(key), Some(t)) = (keys.next().flatten(), i.type_.as_deref()) else {
-                        continue;
-                    };
-                    let acc = ifaces.entry(key).or_default();
-                    acc.spellings.push(t.trim().to_string());
-                    if let Some(f) = i.idl_file.as_deref().filter(|f| !f.trim().is_empty()) {
-                        acc.idl_files.push(f.trim().to_string());
-                    }
-                    match i.direction_kind() {
-                        Some(Direction::Provided) => acc.a.push((ci, pi, ii)),
-                        Some(Direction::Required) => acc.b.push((ci, pi, ii)),
-                        None => acc.other.push((ci, pi, ii)),
-                    }
-                }
+                let accs = if interface { &mut ifaces } else { &mut types };
+                let acc = accs.entry(key).or_default();
+                acc.add(t, idl_file.as_deref(), slot, at);
             }
         }
-        let port = |v: Vec<(usize, usize, usize)>| {
+        let port = |v: Vec<UseAt>| {
             v.into_iter()
                 .map(|(ci, pi, _)| {
                     let c = &components[ci];
@@ -1278,7 +1367,7 @@ impl Catalog {
                 })
                 .collect()
         };
-        let iref = |v: Vec<(usize, usize, usize)>| {
+        let iref = |v: Vec<UseAt>| {
             v.into_iter()
                 .map(|(ci, pi, ii)| {
                     let c = &components[ci];
@@ -1295,50 +1384,8 @@ impl Catalog {
                 })
                 .collect()
         };
-        let type_slugs = unique_slugs(
-            &types
-                .keys()
-                .map(|k| (k.clone(), k.clone()))
-                .collect::<Vec<_>>(),
-        );
-        let data_types: Vec<DataType> = types
-            .into_iter()
-            .zip(type_slugs)
-            .map(|((name, acc), slug)| DataType {
-                name,
-                slug,
-                spellings: sorted_unique(acc.spellings),
-                idl_files: sorted_unique(acc.idl_files),
-                uses: PortUses {
-                    producers: port(acc.a),
-                    consumers: port(acc.b),
-                    others: port(acc.other),
-                },
-                contained_in: Vec::new(),
-            })
-            .collect();
-        let if_slugs = unique_slugs(
-            &ifaces
-                .keys()
-                .map(|k| (k.clone(), k.clone()))
-                .collect::<Vec<_>>(),
-        );
-        let interfaces: Vec<InterfaceType> = ifaces
-            .into_iter()
-            .zip(if_slugs)
-            .map(|((name, acc), slug)| InterfaceType {
-                name,
-                slug,
-                spellings: sorted_unique(acc.spellings),
-                idl_files: sorted_unique(acc.idl_files),
-                uses: InterfaceUses {
-                    providers: iref(acc.a),
-                    requirers: iref(acc.b),
-                    others: iref(acc.other),
-                },
-                contained_in: Vec::new(),
-            })
-            .collect();
+        let data_types: Vec<DataType> = TypeAcc::entries(types, port);
+        let interfaces: Vec<InterfaceType> = TypeAcc::entries(ifaces, iref);
 
         let facet = |key: &dyn Fn(&Profile) -> Option<&str>| -> Vec<Facet> {
             // key → (spelling → components)
@@ -1388,6 +1435,28 @@ impl Catalog {
         let vendors = facet(&|p| p.basic_info.vendor.as_deref());
 
         crate::diagnostic::sort(&mut diagnostics);
+        Catalog::with_entries(
+            components,
+            data_types,
+            interfaces,
+            categories,
+            vendors,
+            diagnostics,
+            Default::default(),
+        )
+    }
+
+    /// A catalogue of these entries with their lookups and pages (no systems, backups or
+    /// sources yet).
+    fn with_entries(
+        components: Vec<Component>,
+        data_types: Vec<DataType>,
+        interfaces: Vec<InterfaceType>,
+        categories: Vec<Facet>,
+        vendors: Vec<Facet>,
+        diagnostics: Vec<Diagnostic>,
+        idl: crate::idl::IdlSet,
+    ) -> Catalog {
         let type_index = handle_map(&data_types, |t| t.name.clone());
         let interface_index = handle_map(&interfaces, |t| t.name.clone());
         let by_id = handle_map(&components, |c| c.id.clone());
@@ -1398,7 +1467,7 @@ impl Catalog {
             categories,
             vendors,
             diagnostics,
-            idl: Default::default(),
+            idl,
             idl_history: Default::default(),
             pages: Vec::new(),
             page_starts: PageStarts::default(),
@@ -1425,16 +1494,7 @@ impl Catalog {
         diagnostics: Vec<Diagnostic>,
         idl: crate::idl::IdlSet,
     ) -> Result<Catalog, String> {
-        let by_id = handle_map(&components, |c| c.id.clone());
-        if by_id.len() < components.len() {
-            let mut seen = std::collections::HashSet::new();
-            if let Some(c) = components.iter().find(|c| !seen.insert(&c.id)) {
-                return Err(format!("component id `{}` appears twice", c.id));
-            }
-        }
-        let type_index = handle_map(&data_types, |t| t.name.clone());
-        let interface_index = handle_map(&interfaces, |t| t.name.clone());
-        let mut catalog = Catalog {
+        let mut catalog = Catalog::with_entries(
             components,
             data_types,
             interfaces,
@@ -1442,59 +1502,34 @@ impl Catalog {
             vendors,
             diagnostics,
             idl,
-            idl_history: Default::default(),
-            pages: Vec::new(),
-            page_starts: PageStarts::default(),
-            by_id,
-            systems: Vec::new(),
-            detached_backups: Vec::new(),
-            sources: Vec::new(),
-            type_index,
-            interface_index,
-        };
-        // Each reference gets its handle, and shares its id with the component entry (same
-        // text: the handle is trusted only for that entry's id).
-        let mut data_types = std::mem::take(&mut catalog.data_types);
-        for t in &mut data_types {
-            let name = &t.name;
-            for r in t
-                .uses
-                .producers
-                .iter_mut()
-                .chain(&mut t.uses.consumers)
-                .chain(&mut t.uses.others)
-            {
-                let Some((ci, pi)) = catalog.resolve_port(r) else {
-                    return Err(format!(
-                        "data type `{name}` names port `{}` of `{}`, which the catalogue does not have",
-                        r.port, r.component
-                    ));
-                };
-                r.component = catalog[ci].id.clone();
-                r.at = RefHandle::new(ci, pi, 0);
+        );
+        if catalog.by_id.len() < catalog.components.len() {
+            let mut seen = std::collections::HashSet::new();
+            if let Some(c) = catalog.components.iter().find(|c| !seen.insert(&c.id)) {
+                return Err(format!("component id `{}` appears twice", c.id));
             }
         }
+        // Each reference gets its handle ([`Catalog::rebind`]).
+        let mut data_types = std::mem::take(&mut catalog.data_types);
+        catalog.rebind(&mut data_types, |cat, name, r| {
+            let (ci, pi) = cat.resolve_port(r).ok_or_else(|| {
+                format!(
+                    "data type `{name}` names port `{}` of `{}`, which the catalogue does not have",
+                    r.port, r.component
+                )
+            })?;
+            Ok((ci, pi, 0))
+        })?;
         catalog.data_types = data_types;
         let mut interfaces = std::mem::take(&mut catalog.interfaces);
-        for t in &mut interfaces {
-            let name = &t.name;
-            for r in t
-                .uses
-                .providers
-                .iter_mut()
-                .chain(&mut t.uses.requirers)
-                .chain(&mut t.uses.others)
-            {
-                let Some((ci, pi, ii)) = catalog.resolve_interface(r) else {
-                    return Err(format!(
-                        "interface `{name}` names `{}.{}` of `{}`, which the catalogue does not have",
-                        r.port, r.interface, r.component
-                    ));
-                };
-                r.component = catalog[ci].id.clone();
-                r.at = RefHandle::new(ci, pi, ii);
-            }
-        }
+        catalog.rebind(&mut interfaces, |cat, name, r| {
+            cat.resolve_interface(r).ok_or_else(|| {
+                format!(
+                    "interface `{name}` names `{}.{}` of `{}`, which the catalogue does not have",
+                    r.port, r.interface, r.component
+                )
+            })
+        })?;
         catalog.interfaces = interfaces;
         for f in catalog.categories.iter().chain(&catalog.vendors) {
             if let Some(id) = f
@@ -1508,8 +1543,24 @@ impl Catalog {
                 ));
             }
         }
-        catalog.index_pages();
         Ok(catalog)
+    }
+
+    /// Gives each reference of `entries` its handle in this catalogue, and the id of the
+    /// component entry it names (the same text: the handle is trusted only for that entry's
+    /// id); `resolve` finds where a reference of entry `name` points, or says what is missing.
+    fn rebind<U: Uses>(
+        &self,
+        entries: &mut [TypeEntry<U>],
+        resolve: impl Fn(&Catalog, &str, &U::Ref) -> Result<(ComponentIx, usize, usize), String>,
+    ) -> Result<(), String> {
+        for t in entries {
+            for r in t.uses.refs_mut().into_iter().flatten() {
+                let (ci, pi, ii) = resolve(self, &t.name, r)?;
+                r.bind(self[ci].id.clone(), RefHandle::new(ci, pi, ii));
+            }
+        }
+        Ok(())
     }
 
     /// Computes [`Catalog::pages`] from the entries and their slugs.
@@ -1549,6 +1600,9 @@ impl Catalog {
         fn facet(f: &Facet) -> (&str, &str, std::borrow::Cow<'_, str>) {
             (&f.name, &f.slug, f.name.as_str().into())
         }
+        fn type_entry<U>(t: &TypeEntry<U>) -> (&str, &str, std::borrow::Cow<'_, str>) {
+            (&t.name, &t.slug, t.name.as_str().into())
+        }
         let mut starts = PageStarts {
             history: Vec::new(),
             component: section(
@@ -1565,18 +1619,14 @@ impl Catalog {
                 Some(site(PageKind::DataTypes, "types/index")),
                 PageKind::DataType,
                 "types",
-                self.data_types
-                    .iter()
-                    .map(|t| (t.name.as_str(), t.slug.as_str(), t.name.as_str().into())),
+                self.data_types.iter().map(type_entry),
             ),
             interface: section(
                 &mut pages,
                 Some(site(PageKind::Interfaces, "interfaces/index")),
                 PageKind::Interface,
                 "interfaces",
-                self.interfaces
-                    .iter()
-                    .map(|t| (t.name.as_str(), t.slug.as_str(), t.name.as_str().into())),
+                self.interfaces.iter().map(type_entry),
             ),
             category: section(
                 &mut pages,
@@ -1977,14 +2027,10 @@ impl Catalog {
     /// out → in ports of the same type, in → out ports of the same type.
     pub fn data_port_peers(&self, component: ComponentIx, port: usize) -> &[PortRef] {
         let p = &self[component].profile.data_ports[port];
-        let Some(t) = p.type_.as_deref().and_then(|t| self.data_type(t)) else {
-            return &[];
-        };
-        match p.direction() {
-            Some(PortDirection::Out) => &t.uses.consumers,
-            Some(PortDirection::In) => &t.uses.producers,
-            _ => &[],
-        }
+        peers(
+            p.type_.as_deref().and_then(|t| self.data_type(t)),
+            port_slot(p),
+        )
     }
 
     /// Interfaces matching interface `interface` of service port `port`: required ↔ provided of
@@ -1996,14 +2042,10 @@ impl Catalog {
         interface: usize,
     ) -> &[InterfaceRef] {
         let i = &self[component].profile.service_ports[port].interfaces[interface];
-        let Some(t) = i.type_.as_deref().and_then(|t| self.interface(t)) else {
-            return &[];
-        };
-        match i.direction_kind() {
-            Some(Direction::Provided) => &t.uses.requirers,
-            Some(Direction::Required) => &t.uses.providers,
-            None => &[],
-        }
+        peers(
+            i.type_.as_deref().and_then(|t| self.interface(t)),
+            interface_slot(i),
+        )
     }
 
     /// What the catalogue documents, for a summary line: `83 component profiles, 1 RT System

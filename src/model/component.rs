@@ -1076,11 +1076,21 @@ impl Profile {
     /// The type fields of the data ports, then of the service interfaces (port by port), in
     /// document order.
     pub fn port_types(&self) -> impl Iterator<Item = &Option<Text>> {
-        self.data_ports.iter().map(|d| &d.type_).chain(
-            self.service_ports
+        self.data_ports
+            .iter()
+            .map(|d| &d.type_)
+            .chain(self.service_interfaces().map(|(_, _, i)| &i.type_))
+    }
+
+    /// Every interface of every service port, in document order, with the position of its
+    /// port and its position in the port.
+    pub fn service_interfaces(&self) -> impl Iterator<Item = (usize, usize, &ServiceInterface)> {
+        self.service_ports.iter().enumerate().flat_map(|(pi, p)| {
+            p.interfaces
                 .iter()
-                .flat_map(|s| s.interfaces.iter().map(|i| &i.type_)),
-        )
+                .enumerate()
+                .map(move |(ii, i)| (pi, ii, i))
+        })
     }
 
     /// Configuration parameters (empty when there is no configuration set).

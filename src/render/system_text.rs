@@ -210,14 +210,18 @@ fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Ta
     );
 }
 
-/// A table of connectors: their name, id, source and target, then the cells of `rest` under
-/// `rest_headers`.
+/// A section of connectors: the heading `(anchor, title key)`, then a table of the connectors
+/// in `rows`: their name, id, source and target, then the cells of `rest` under the headers
+/// keyed `rest_keys`.
 fn connector_table<'a, M: Markup>(
     out: &mut String,
     lang: Lang,
+    t: &Targets<'_>,
+    (anchor, title): (&str, &str),
+    rest_keys: &[&str],
     rows: impl Iterator<Item = ([&'a str; 2], [&'a EndView; 2], Vec<String>)>,
-    rest_headers: &[&str],
 ) {
+    (t.heading)(out, anchor, lang.t(title));
     let rows: Vec<Vec<String>> = rows
         .map(|([name, id], [source, target], rest)| {
             let mut row = vec![
@@ -230,65 +234,55 @@ fn connector_table<'a, M: Markup>(
             row
         })
         .collect();
-    let mut headers = vec![
-        lang.t("sys_connector"),
-        lang.t("id"),
-        lang.t("sys_source"),
-        lang.t("sys_target"),
-    ];
-    headers.extend_from_slice(rest_headers);
+    let headers: Vec<&str> = ["sys_connector", "id", "sys_source", "sys_target"]
+        .iter()
+        .chain(rest_keys)
+        .map(|k| lang.t(k))
+        .collect();
     M::table(out, &headers, &rows);
 }
 
 fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
-    (t.heading)(out, "data-connectors", lang.t("sys_data_connectors_h"));
-    let rows = v.data_connectors.iter().map(|c| {
-        let rest = vec![
-            c.data_type.as_ref().map(link::<M>).unwrap_or_default(),
-            M::esc(&c.interface_type),
-            M::esc(&c.dataflow_type),
-            M::esc(&c.subscription_type),
-            M::esc(&c.push_interval),
-            M::esc(&c.comment),
-        ];
-        ([&*c.name, &*c.id], [&c.source, &c.target], rest)
-    });
     connector_table::<M>(
         out,
         lang,
-        rows,
+        t,
+        ("data-connectors", "sys_data_connectors_h"),
         &[
-            lang.t("type"),
-            lang.t("sys_interface_type"),
-            lang.t("sys_dataflow"),
-            lang.t("sys_subscription"),
-            lang.t("sys_push_interval"),
-            lang.t("comment"),
+            "type",
+            "sys_interface_type",
+            "sys_dataflow",
+            "sys_subscription",
+            "sys_push_interval",
+            "comment",
         ],
+        v.data_connectors.iter().map(|c| {
+            let rest = vec![
+                c.data_type.as_ref().map(link::<M>).unwrap_or_default(),
+                M::esc(&c.interface_type),
+                M::esc(&c.dataflow_type),
+                M::esc(&c.subscription_type),
+                M::esc(&c.push_interval),
+                M::esc(&c.comment),
+            ];
+            ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+        }),
     );
-    (t.heading)(
-        out,
-        "service-connectors",
-        lang.t("sys_service_connectors_h"),
-    );
-    let rows = v.service_connectors.iter().map(|c| {
-        let ifaces: Vec<String> = c.interfaces.iter().map(link::<M>).collect();
-        let rest = vec![
-            ifaces.join(", "),
-            M::esc(&c.trans_method),
-            M::esc(&c.comment),
-        ];
-        ([&*c.name, &*c.id], [&c.source, &c.target], rest)
-    });
     connector_table::<M>(
         out,
         lang,
-        rows,
-        &[
-            lang.t("interfaces"),
-            lang.t("sys_trans_method"),
-            lang.t("comment"),
-        ],
+        t,
+        ("service-connectors", "sys_service_connectors_h"),
+        &["interfaces", "sys_trans_method", "comment"],
+        v.service_connectors.iter().map(|c| {
+            let ifaces: Vec<String> = c.interfaces.iter().map(link::<M>).collect();
+            let rest = vec![
+                ifaces.join(", "),
+                M::esc(&c.trans_method),
+                M::esc(&c.comment),
+            ];
+            ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+        }),
     );
 }
 

@@ -252,6 +252,22 @@ pub fn linked<M: Markup>(cat: &Catalog, from: &Page, l: &Linked<'_>) -> String {
     }
 }
 
+/// A section of links (`(anchor, title)` its heading), left out when there are none.
+fn links_section<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    page: &Page,
+    (anchor, title): (&str, &str),
+    links: &[Linked<'_>],
+) {
+    if links.is_empty() {
+        return;
+    }
+    M::heading(out, page, 2, anchor, title);
+    let items: Vec<String> = links.iter().map(|l| linked::<M>(cat, page, l)).collect();
+    M::linked_list(out, &items);
+}
+
 /// The way back from an entry page: the front page (named by the site's title), then `index`
 /// (named by its label) if given.
 pub fn crumbs<'a>(
@@ -490,15 +506,13 @@ pub fn component_sections<M: Markup>(
         facts_table::<M>(out, lang, &extras);
     }
 
-    if !v.systems.is_empty() {
-        M::heading(out, page, 2, "sec-systems", lang.t("sys_used_by"));
-        let items: Vec<String> = v
-            .systems
-            .iter()
-            .map(|l| linked::<M>(cat, page, l))
-            .collect();
-        M::linked_list(out, &items);
-    }
+    links_section::<M>(
+        out,
+        cat,
+        page,
+        ("sec-systems", lang.t("sys_used_by")),
+        &v.systems,
+    );
 }
 
 /// The system parameters, language and targets, properties, version history and backups of
@@ -752,21 +766,13 @@ pub fn type_page<M: Markup>(
     if let Some(f) = &v.idl_file {
         idl_file_section::<M>(&mut out, page, f, lang);
     }
-    if !v.contained_in.is_empty() {
-        M::heading(
-            &mut out,
-            page,
-            2,
-            "contained-in",
-            lang.t("idl_contained_in"),
-        );
-        let items: Vec<String> = v
-            .contained_in
-            .iter()
-            .map(|l| linked::<M>(cat, page, l))
-            .collect();
-        M::linked_list(&mut out, &items);
-    }
+    links_section::<M>(
+        &mut out,
+        cat,
+        page,
+        ("contained-in", lang.t("idl_contained_in")),
+        &v.contained_in,
+    );
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for g in &v.uses {
         M::heading(&mut out, page, 2, g.anchor, g.label);
@@ -783,21 +789,13 @@ pub fn type_page<M: Markup>(
             .collect();
         M::table(&mut out, &cols, &rows);
     }
-    if !v.carried_by.is_empty() {
-        M::heading(
-            &mut out,
-            page,
-            2,
-            "sec-system-connectors",
-            lang.t("sys_carried_by"),
-        );
-        let items: Vec<String> = v
-            .carried_by
-            .iter()
-            .map(|l| linked::<M>(cat, page, l))
-            .collect();
-        M::linked_list(&mut out, &items);
-    }
+    links_section::<M>(
+        &mut out,
+        cat,
+        page,
+        ("sec-system-connectors", lang.t("sys_carried_by")),
+        &v.carried_by,
+    );
     out
 }
 

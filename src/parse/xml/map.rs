@@ -245,11 +245,42 @@ pub(super) fn map_leaf<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str) 
 }
 
 impl Mapper<'_> {
-    /// Records the attributes of `node` read under an older spelling (after its children, as
-    /// [`Profile::written_as`] lists them).
-    pub(super) fn aliases(&mut self, node: &str, aliases: Vec<Alias>) {
+    /// Records the attributes of the `kind` node named `name` read under an older spelling
+    /// (after its children, as [`Profile::written_as`] lists them).
+    pub(super) fn aliases(&mut self, kind: &str, name: &Option<Text>, aliases: Vec<Alias>) {
+        let node = format!("{kind} {}", name.as_deref().unwrap_or(""));
         for (field, a, dialect) in aliases {
-            self.alias(node, field, a, dialect);
+            self.alias(&node, field, a, dialect);
+        }
+    }
+
+    /// Child `n` of `on` as its `Doc` element (`{on} doc`), the first only ([`Mapper::once`]).
+    pub(super) fn doc<T: Fields + Default>(
+        &mut self,
+        slot: &mut Option<T>,
+        n: &Node,
+        on: &str,
+        extra: &mut Extras,
+    ) {
+        self.once(slot, n, on, extra, |m, n| {
+            map_leaf(m, n, &format!("{on} doc"))
+        });
+    }
+
+    /// Child `n` of `on` as the one element `slot` holds: mapped by `map` the first time, a
+    /// repeated element (kept in `extra`) after.
+    pub(super) fn once<T>(
+        &mut self,
+        slot: &mut Option<T>,
+        n: &Node,
+        on: &str,
+        extra: &mut Extras,
+        map: impl FnOnce(&mut Self, &Node) -> T,
+    ) {
+        if slot.is_none() {
+            *slot = Some(map(self, n));
+        } else {
+            self.repeated_elem(n, on, extra);
         }
     }
 }
@@ -291,7 +322,7 @@ pub(super) fn map_profile(m: &mut Mapper, n: &Node) -> Profile {
 pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
     let on = "basic info";
     let (b, _) = map_node(m, n, on, |m, c, b: &mut BasicInfo, extra| match c.key() {
-        Some("Doc") if b.doc.is_none() => b.doc = Some(map_leaf(m, c, "basic info doc")),
+        Some("Doc") => m.doc(&mut b.doc, c, on, extra),
         // XSD 6.3 `VersionUpLogs`; the 9.2 sample writes `VersionUpLog`. Empty ones are
         // common in real files and say nothing.
         Some("VersionUpLogs" | "VersionUpLog") => {
@@ -300,7 +331,6 @@ pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
             }
         }
         Some("Properties") => b.properties.push(map_leaf(m, c, "property")),
-        Some("Doc") => m.repeated_elem(c, on, extra),
         _ => m.unknown_elem(c, on, extra),
     });
     b
@@ -336,10 +366,7 @@ pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
     scalar_attrs(m, n, &mut act, &on, &mut extra);
     for c in &n.children {
         match c.key() {
-            Some("Doc") if act.doc.is_none() => {
-                act.doc = Some(map_leaf(m, c, &format!("{on} doc")))
-            }
-            Some("Doc") => m.repeated_elem(c, &on, &mut extra),
+            Some("Doc") => m.doc(&mut act.doc, c, &on, &mut extra),
             _ => m.unknown_elem(c, &on, &mut extra),
         }
     }
@@ -373,17 +400,13 @@ pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
     let on = "configuration";
     let (cf, aliases) = map_node(m, n, on, |m, c, cf: &mut Configuration, extra| {
         match c.key() {
-            Some("Doc") if cf.doc.is_none() => cf.doc = Some(map_leaf(m, c, "configuration doc")),
+            Some("Doc") => m.doc(&mut cf.doc, c, on, extra),
             Some("Properties") => cf.properties.push(map_leaf(m, c, "property")),
-            Some("Constraint") if cf.constraint.is_none() => {
-                cf.constraint = Some(map_constraint(m, c))
-            }
-            Some("Doc" | "Constraint") => m.repeated_elem(c, on, extra),
+            Some("Constraint") => m.once(&mut cf.constraint, c, on, extra, map_constraint),
             _ => m.unknown_elem(c, on, extra),
         }
     });
-    let node = format!("configuration {}", cf.name.as_deref().unwrap_or(""));
-    m.aliases(&node, aliases);
+    m.aliases("configuration", &cf.name, aliases);
     cf
 }
 
@@ -391,15 +414,13 @@ pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
 pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
     let on = "data port";
     let (d, aliases) = map_node(m, n, on, |m, c, d: &mut DataPort, extra| match c.key() {
-        Some("Doc") if d.doc.is_none() => d.doc = Some(map_leaf(m, c, "data port doc")),
+        Some("Doc") => m.doc(&mut d.doc, c, on, extra),
         Some("Properties") => d.properties.push(map_leaf(m, c, "property")),
-        Some("Constraint") if d.constraint.is_none() => d.constraint = Some(map_constraint(m, c)),
+        Some("Constraint") => m.once(&mut d.constraint, c, on, extra, map_constraint),
         Some("Event") => d.events.push(map_event(m, c)),
-        Some("Doc" | "Constraint") => m.repeated_elem(c, on, extra),
         _ => m.unknown_elem(c, on, extra),
     });
-    let node = format!("dataPort {}", d.name.as_deref().unwrap_or(""));
-    m.aliases(&node, aliases);
+    m.aliases("dataPort", &d.name, aliases);
     d
 }
 
@@ -408,8 +429,7 @@ pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
 pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
     let on = "event";
     let (e, _) = map_node(m, n, on, |m, c, e: &mut Event, extra| match c.key() {
-        Some("Doc") if e.doc.is_none() => e.doc = Some(map_leaf(m, c, "event doc")),
-        Some("Doc") => m.repeated_elem(c, on, extra),
+        Some("Doc") => m.doc(&mut e.doc, c, on, extra),
         _ => m.unknown_elem(c, on, extra),
     });
     e
@@ -419,11 +439,10 @@ pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
 pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
     let on = "service port";
     let (s, _) = map_node(m, n, on, |m, c, s: &mut ServicePort, extra| match c.key() {
-        Some("Doc") if s.doc.is_none() => s.doc = Some(map_leaf(m, c, "service port doc")),
+        Some("Doc") => m.doc(&mut s.doc, c, on, extra),
         Some("Properties") => s.properties.push(map_leaf(m, c, "property")),
         Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
         Some("TransMethods") => s.trans_methods.push(map_leaf(m, c, "transmission method")),
-        Some("Doc") => m.repeated_elem(c, on, extra),
         _ => m.unknown_elem(c, on, extra),
     });
     s
@@ -434,14 +453,12 @@ pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterfac
     let on = "service interface";
     let (s, aliases) = map_node(m, n, on, |m, c, s: &mut ServiceInterface, extra| {
         match c.key() {
-            Some("Doc") if s.doc.is_none() => s.doc = Some(map_leaf(m, c, "service interface doc")),
+            Some("Doc") => m.doc(&mut s.doc, c, on, extra),
             Some("Properties") => s.properties.push(map_leaf(m, c, "property")),
-            Some("Doc") => m.repeated_elem(c, on, extra),
             _ => m.unknown_elem(c, on, extra),
         }
     });
-    let node = format!("serviceInterface {}", s.name.as_deref().unwrap_or(""));
-    m.aliases(&node, aliases);
+    m.aliases("serviceInterface", &s.name, aliases);
     s
 }
 

@@ -136,7 +136,13 @@ struct Groups<'a> {
     text: Vec<Cow<'a, str>>,
 }
 
-impl Groups<'_> {
+impl<'a> Groups<'a> {
+    /// An item's `name` among the ids, its documentation `doc` among the text.
+    fn item(&mut self, name: Option<&'a str>, doc: Option<&'a str>) {
+        add(&mut self.ids, name);
+        add(&mut self.text, doc);
+    }
+
     /// `name|ids|text`, each a space-separated sorted list. A token is left out of a group when
     /// it is a prefix of a token of the same or an earlier group: queries match tokens by
     /// prefix, so it would find nothing more (this halves Japanese prose, whose bigrams
@@ -320,34 +326,29 @@ fn component_entry(catalog: &Catalog, ci: ComponentIx) -> serde_json::Value {
         }
     }
     for d in &p.data_ports {
-        add(&mut g.ids, non_empty(&d.name));
-        if let Some(doc) = &d.doc {
-            add(&mut g.text, non_empty(&doc.description));
-        }
+        let doc = d.doc.as_ref().and_then(|doc| non_empty(&doc.description));
+        g.item(non_empty(&d.name), doc);
         for e in &d.events {
             add(&mut g.ids, non_empty(&e.name));
         }
     }
     for s in &p.service_ports {
-        add(&mut g.ids, non_empty(&s.name));
-        if let Some(doc) = &s.doc {
-            add(&mut g.text, non_empty(&doc.description));
-        }
+        let doc = s.doc.as_ref().and_then(|doc| non_empty(&doc.description));
+        g.item(non_empty(&s.name), doc);
         for i in &s.interfaces {
-            add(&mut g.ids, non_empty(&i.name));
-            if let Some(doc) = &i.doc {
-                add(&mut g.text, non_empty(&doc.description));
-            }
+            let doc = i.doc.as_ref().and_then(|doc| non_empty(&doc.description));
+            g.item(non_empty(&i.name), doc);
         }
     }
     for t in &types {
         add(&mut g.ids, Some(t));
     }
     for conf in p.configurations() {
-        add(&mut g.ids, non_empty(&conf.name));
-        if let Some(doc) = &conf.doc {
-            add(&mut g.text, non_empty(&doc.description));
-        }
+        let doc = conf
+            .doc
+            .as_ref()
+            .and_then(|doc| non_empty(&doc.description));
+        g.item(non_empty(&conf.name), doc);
     }
     let summary = non_empty(&b.description)
         .map(|d| super::markdown::first_line(d, 90))
@@ -388,23 +389,19 @@ fn idl_entry(
         add(&mut g.text, Some(&d.brief));
         add(&mut g.text, Some(&d.details));
         for f in &d.fields {
-            add(&mut g.ids, Some(&f.name));
-            add(&mut g.text, Some(&f.doc));
+            g.item(Some(&f.name), Some(&f.doc));
         }
         for v in &d.values {
-            add(&mut g.ids, Some(&v.name));
-            add(&mut g.text, Some(&v.doc));
+            g.item(Some(&v.name), Some(&v.doc));
         }
         for o in &d.operations {
-            add(&mut g.ids, Some(&o.name));
-            add(&mut g.text, Some(&o.doc));
+            g.item(Some(&o.name), Some(&o.doc));
             for p in &o.params {
                 add(&mut g.ids, Some(&p.name));
             }
         }
         for a in &d.attributes {
-            add(&mut g.ids, Some(&a.name));
-            add(&mut g.text, Some(&a.doc));
+            g.item(Some(&a.name), Some(&a.doc));
         }
         summary = super::markdown::first_line(&d.brief, 90);
     }

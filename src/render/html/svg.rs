@@ -447,6 +447,60 @@ fn label(s: &mut String, side: PortSide, x: f32, y: f32, gap: f32, lines: &[(Str
     }
 }
 
+/// A callback label of the lifecycle diagram: x, y, text anchor, callback name.
+type CallbackLabel = (u32, u32, &'static str, &'static str);
+
+/// The transitions of the lifecycle diagram in drawing order: the arrow's path and the
+/// callbacks written beside it.
+const LIFECYCLE_TRANSITIONS: &[(&str, &[CallbackLabel])] = &[
+    // Created → Inactive.
+    (
+        "M180 152 L318 152",
+        &[(249, 144, "middle", "on_initialize")],
+    ),
+    // Inactive ⇄ Active.
+    ("M450 142 L598 142", &[(524, 134, "middle", "on_activated")]),
+    (
+        "M600 164 L452 164",
+        &[(524, 182, "middle", "on_deactivated")],
+    ),
+    // Active loop: periodic callbacks.
+    (
+        "M640 130 C640 80 700 80 700 128",
+        &[
+            (665, 76, "middle", "on_execute"),
+            (665, 60, "middle", "on_state_update"),
+        ],
+    ),
+    // Active → Error.
+    ("M690 174 L690 298", &[(696, 240, "start", "on_aborting")]),
+    // Error loop.
+    (
+        "M640 344 C640 390 700 390 700 346",
+        &[(665, 396, "middle", "on_error")],
+    ),
+    // Error → Inactive.
+    (
+        "M600 310 C520 280 440 240 420 176",
+        &[(500, 262, "middle", "on_reset")],
+    ),
+    // Inactive → Finalized.
+    ("M385 174 L385 298", &[(379, 240, "end", "on_finalize")]),
+];
+
+/// The execution-context event callbacks of the lifecycle diagram (not tied to a transition).
+const LIFECYCLE_EC_EVENTS: &[CallbackLabel] = &[
+    (20, 42, "start", "on_startup"),
+    (140, 42, "start", "on_shutdown"),
+    (270, 42, "start", "on_rate_changed"),
+];
+
+/// The FSM callbacks of the lifecycle diagram.
+const LIFECYCLE_FSM: &[CallbackLabel] = &[
+    (20, 258, "start", "on_action"),
+    (20, 276, "start", "on_mode_changed"),
+];
+
 /// Callback labels and states of the lifecycle diagram, in the page language.
 pub struct LifecycleLabels<'a> {
     pub title: &'a str,
@@ -500,51 +554,35 @@ pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> 
     // Initial pseudo-state and the states.
     s.push_str(r#"<circle class="initial" cx="20" cy="152" r="7"/>"#);
     arrow(&mut s, "M27 152 L48 152");
-    state(&mut s, 50, 130, l.created, "created");
-    state(&mut s, 320, 130, l.inactive, "inactive");
-    state(&mut s, 600, 130, l.active, "active");
-    state(&mut s, 600, 300, l.error, "error");
-    state(&mut s, 320, 300, l.finalized, "finalized");
-    // Created → Inactive.
-    arrow(&mut s, "M180 152 L318 152");
-    cb(&mut s, 249, 144, "middle", "on_initialize");
-    // Inactive ⇄ Active.
-    arrow(&mut s, "M450 142 L598 142");
-    cb(&mut s, 524, 134, "middle", "on_activated");
-    arrow(&mut s, "M600 164 L452 164");
-    cb(&mut s, 524, 182, "middle", "on_deactivated");
-    // Active loop: periodic callbacks.
-    arrow(&mut s, "M640 130 C640 80 700 80 700 128");
-    cb(&mut s, 665, 76, "middle", "on_execute");
-    cb(&mut s, 665, 60, "middle", "on_state_update");
-    // Active → Error.
-    arrow(&mut s, "M690 174 L690 298");
-    cb(&mut s, 696, 240, "start", "on_aborting");
-    // Error loop.
-    arrow(&mut s, "M640 344 C640 390 700 390 700 346");
-    cb(&mut s, 665, 396, "middle", "on_error");
-    // Error → Inactive.
-    arrow(&mut s, "M600 310 C520 280 440 240 420 176");
-    cb(&mut s, 500, 262, "middle", "on_reset");
-    // Inactive → Finalized.
-    arrow(&mut s, "M385 174 L385 298");
-    cb(&mut s, 379, 240, "end", "on_finalize");
+    for (x, y, name, class) in [
+        (50, 130, l.created, "created"),
+        (320, 130, l.inactive, "inactive"),
+        (600, 130, l.active, "active"),
+        (600, 300, l.error, "error"),
+        (320, 300, l.finalized, "finalized"),
+    ] {
+        state(&mut s, x, y, name, class);
+    }
+    for (path, callbacks) in LIFECYCLE_TRANSITIONS {
+        arrow(&mut s, path);
+        for &(x, y, anchor, name) in *callbacks {
+            cb(&mut s, x, y, anchor, name);
+        }
+    }
     // Execution-context events and FSM callbacks, not tied to one transition.
-    let _ = write!(
-        s,
-        r#"<text class="note-title" x="20" y="24">{}</text>"#,
-        esc(l.ec_events)
-    );
-    cb(&mut s, 20, 42, "start", "on_startup");
-    cb(&mut s, 140, 42, "start", "on_shutdown");
-    cb(&mut s, 270, 42, "start", "on_rate_changed");
-    let _ = write!(
-        s,
-        r#"<text class="note-title" x="20" y="240">{}</text>"#,
-        esc(l.fsm)
-    );
-    cb(&mut s, 20, 258, "start", "on_action");
-    cb(&mut s, 20, 276, "start", "on_mode_changed");
+    for (title, y, callbacks) in [
+        (l.ec_events, 24, LIFECYCLE_EC_EVENTS),
+        (l.fsm, 240, LIFECYCLE_FSM),
+    ] {
+        let _ = write!(
+            s,
+            r#"<text class="note-title" x="20" y="{y}">{}</text>"#,
+            esc(title)
+        );
+        for &(x, y, anchor, name) in callbacks {
+            cb(&mut s, x, y, anchor, name);
+        }
+    }
     // Legend.
     let _ = write!(
         s,
