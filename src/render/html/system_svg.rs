@@ -10,7 +10,7 @@
 //! each instance and port a link named by `aria-label` and a `<title>`.
 
 use super::svg::esc_into;
-use crate::layout::wiring::{layout_with, Edge, Effort, Node, Port, PortKind, Side};
+use crate::layout::wiring::{layout_with, Edge, Effort, Node, NodeBox, Port, PortKind, Side};
 use crate::render::wiring::{WireConnector, WireInstance};
 use std::fmt::Write;
 
@@ -216,95 +216,100 @@ pub fn system_diagram_with(
     }
     s.push_str("</g>");
     for (it, b) in inst.iter().zip(&l.nodes) {
-        let cx = b.x + b.w / 2.0;
-        s.push_str(r#"<g class="instance"><a"#);
-        href_attr(&mut s, &it.href);
-        s.push_str(r#" aria-label=""#);
-        esc_to(&mut s, &it.label);
-        s.push_str(r#""><title>"#);
-        esc_to(&mut s, &it.label);
-        s.push_str(r#"</title><rect class="rtc-box""#);
-        attr_num(&mut s, "x", b.x);
-        attr_num(&mut s, "y", b.y);
-        attr_num(&mut s, "width", b.w);
-        attr_num(&mut s, "height", b.h);
-        s.push_str(r#" rx="4"/><text class="rtc-name""#);
-        attr_num(&mut s, "x", cx);
-        attr_num(&mut s, "y", b.title_y);
-        s.push_str(r#" text-anchor="middle">"#);
-        for (k, line) in b.title.iter().enumerate() {
-            if k == 0 {
-                esc_to(&mut s, line);
-            } else {
-                s.push_str("<tspan");
-                attr_num(&mut s, "x", cx);
-                s.push_str(r#" dy="18">"#);
-                esc_to(&mut s, line);
-                s.push_str("</tspan>");
-            }
-        }
-        // The component's name is a further line of the same text, after a space: the link's
-        // visible text reads "instance component", as its accessible name begins.
-        let mut prev_y = b.title_y + 18.0 * (b.title.len() as f32 - 1.0);
-        for (k, line) in b.subtitle.iter().enumerate() {
-            let ty = b.subtitle_y + 15.0 * k as f32;
-            s.push_str(r#"<tspan class="stereotype""#);
-            attr_num(&mut s, "x", cx);
-            attr_num(&mut s, "dy", ty - prev_y);
-            s.push('>');
-            if k == 0 {
-                s.push(' ');
-            }
-            esc_to(&mut s, line);
-            s.push_str("</tspan>");
-            prev_y = ty;
-        }
-        s.push_str("</text></a>");
-        for (p, pl) in it.ports.iter().zip(&b.ports) {
-            s.push_str("<a");
-            href_attr(&mut s, &p.href);
-            s.push_str(r#" class="port "#);
-            s.push_str(p.class);
-            s.push_str(r#"" aria-label=""#);
-            esc_to(&mut s, &p.label);
-            s.push_str(r#""><title>"#);
-            esc_to(&mut s, &p.label);
-            s.push_str("</title>");
-            if p.class == "service" {
-                s.push_str(r#"<circle class="port-square""#);
-                attr_num(&mut s, "cx", pl.x);
-                attr_num(&mut s, "cy", pl.y);
-                s.push_str(r#" r="6"/>"#);
-            } else {
-                s.push_str(r#"<rect class="port-square""#);
-                attr_num(&mut s, "x", pl.x - 6.0);
-                attr_num(&mut s, "y", pl.y - 6.0);
-                s.push_str(r#" width="12" height="12"/>"#);
-            }
-            s.push_str(r#"<text class="port-name""#);
-            attr_num(&mut s, "x", pl.text_x);
-            attr_num(&mut s, "y", pl.text_y);
-            s.push_str(match pl.side {
-                Side::Left => r#" text-anchor="start">"#,
-                Side::Right => r#" text-anchor="end">"#,
-            });
-            for (k, line) in pl.lines.iter().enumerate() {
-                if k == 0 {
-                    esc_to(&mut s, line);
-                } else {
-                    s.push_str("<tspan");
-                    attr_num(&mut s, "x", pl.text_x);
-                    s.push_str(r#" dy="13">"#);
-                    esc_to(&mut s, line);
-                    s.push_str("</tspan>");
-                }
-            }
-            s.push_str("</text></a>");
-        }
-        s.push_str("</g>");
+        instance(&mut s, it, b);
     }
     s.push_str("</svg>");
     s
+}
+
+/// Appends one instance: its box with title and component name, and its ports.
+fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
+    let cx = b.x + b.w / 2.0;
+    s.push_str(r#"<g class="instance"><a"#);
+    href_attr(s, &it.href);
+    s.push_str(r#" aria-label=""#);
+    esc_to(s, &it.label);
+    s.push_str(r#""><title>"#);
+    esc_to(s, &it.label);
+    s.push_str(r#"</title><rect class="rtc-box""#);
+    attr_num(s, "x", b.x);
+    attr_num(s, "y", b.y);
+    attr_num(s, "width", b.w);
+    attr_num(s, "height", b.h);
+    s.push_str(r#" rx="4"/><text class="rtc-name""#);
+    attr_num(s, "x", cx);
+    attr_num(s, "y", b.title_y);
+    s.push_str(r#" text-anchor="middle">"#);
+    for (k, line) in b.title.iter().enumerate() {
+        if k == 0 {
+            esc_to(s, line);
+        } else {
+            s.push_str("<tspan");
+            attr_num(s, "x", cx);
+            s.push_str(r#" dy="18">"#);
+            esc_to(s, line);
+            s.push_str("</tspan>");
+        }
+    }
+    // The component's name is a further line of the same text, after a space: the link's
+    // visible text reads "instance component", as its accessible name begins.
+    let mut prev_y = b.title_y + 18.0 * (b.title.len() as f32 - 1.0);
+    for (k, line) in b.subtitle.iter().enumerate() {
+        let ty = b.subtitle_y + 15.0 * k as f32;
+        s.push_str(r#"<tspan class="stereotype""#);
+        attr_num(s, "x", cx);
+        attr_num(s, "dy", ty - prev_y);
+        s.push('>');
+        if k == 0 {
+            s.push(' ');
+        }
+        esc_to(s, line);
+        s.push_str("</tspan>");
+        prev_y = ty;
+    }
+    s.push_str("</text></a>");
+    for (p, pl) in it.ports.iter().zip(&b.ports) {
+        s.push_str("<a");
+        href_attr(s, &p.href);
+        s.push_str(r#" class="port "#);
+        s.push_str(p.class);
+        s.push_str(r#"" aria-label=""#);
+        esc_to(s, &p.label);
+        s.push_str(r#""><title>"#);
+        esc_to(s, &p.label);
+        s.push_str("</title>");
+        if p.class == "service" {
+            s.push_str(r#"<circle class="port-square""#);
+            attr_num(s, "cx", pl.x);
+            attr_num(s, "cy", pl.y);
+            s.push_str(r#" r="6"/>"#);
+        } else {
+            s.push_str(r#"<rect class="port-square""#);
+            attr_num(s, "x", pl.x - 6.0);
+            attr_num(s, "y", pl.y - 6.0);
+            s.push_str(r#" width="12" height="12"/>"#);
+        }
+        s.push_str(r#"<text class="port-name""#);
+        attr_num(s, "x", pl.text_x);
+        attr_num(s, "y", pl.text_y);
+        s.push_str(match pl.side {
+            Side::Left => r#" text-anchor="start">"#,
+            Side::Right => r#" text-anchor="end">"#,
+        });
+        for (k, line) in pl.lines.iter().enumerate() {
+            if k == 0 {
+                esc_to(s, line);
+            } else {
+                s.push_str("<tspan");
+                attr_num(s, "x", pl.text_x);
+                s.push_str(r#" dy="13">"#);
+                esc_to(s, line);
+                s.push_str("</tspan>");
+            }
+        }
+        s.push_str("</text></a>");
+    }
+    s.push_str("</g>");
 }
 
 /// Colours of a drawing opened on its own (no site style sheet): the light theme's.
