@@ -317,9 +317,9 @@ struct InitArgs {
 /// mimalloc v3 keeps freed pages for a second (`purge_delay` 1000 ms) before it gives them
 /// back to the system. A build frees the reading stage's transient parse trees within
 /// milliseconds, and the rendering stage then takes fresh pages: at a tenth of a second the
-/// peak RSS of a 10,000-profile build is 15-20 MB lower, with no more system time (shorter
-/// delays purge too often; book/src/performance.md). `MIMALLOC_PURGE_DELAY` in the environment
-/// still decides when it is set.
+/// peak RSS of a 10,000-profile build is 4-12 MB lower on a quiet machine, with the same system
+/// time (shorter delays purge too often; book/src/performance.md). `MIMALLOC_PURGE_DELAY` in the
+/// environment still decides when it is set.
 #[cfg(not(feature = "system-alloc"))]
 fn tune_allocator() {
     /// `mi_option_purge_delay` in mimalloc.h (the same in its v2 and v3).
