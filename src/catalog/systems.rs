@@ -191,12 +191,18 @@ impl Catalog {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
         let mut exact: HashMap<(String, String, String), Vec<ComponentIx>> = HashMap::new();
         let mut by_vendor_name: HashMap<(String, String), Vec<ComponentIx>> = HashMap::new();
-        for (i, c) in Ix::enumerate(&self.components) {
+        // The components are keyed only when there are systems to match.
+        let components = if loaded.is_empty() {
+            &[][..]
+        } else {
+            &self.components[..]
+        };
+        for (i, c) in Ix::enumerate(components) {
             let b = &c.profile.basic_info;
             let v = non_empty(&b.vendor).unwrap_or("");
             let cat = non_empty(&b.category).unwrap_or("");
             let n = non_empty(&b.name).unwrap_or("");
-            exact.entry(key3(v, cat, n)).or_default().push(i);
+            let own = key3(v, cat, n);
             // The instance's id is the `rtc:id` of the component's RTC.xml, which may say
             // another vendor or category than BasicInfo (RTC202): match that too.
             if let Some(p) = c
@@ -206,10 +212,11 @@ impl Catalog {
                 .and_then(|id| crate::model::IdParts::parse(id, b))
             {
                 let k = key3(p.vendor, p.category, p.name);
-                if k != key3(v, cat, n) {
+                if k != own {
                     exact.entry(k).or_default().push(i);
                 }
             }
+            exact.entry(own).or_default().push(i);
             by_vendor_name
                 .entry((facet_key(v), facet_key(n)))
                 .or_default()
