@@ -889,21 +889,28 @@ impl Page {
     /// `types.md`, Doxygen's `mainpage.dox`), else `None`: the page's stem and the output's
     /// extension.
     fn fixed_name(&self, out: Output) -> Option<&'static str> {
-        match (out, self.kind) {
-            (Output::Html, _) => None,
-            (Output::Markdown, PageKind::DataTypes) => Some("types.md"),
-            (Output::Markdown, PageKind::Interfaces) => Some("interfaces.md"),
-            (Output::Markdown, PageKind::Categories) => Some("categories.md"),
-            (Output::Markdown, PageKind::Vendors) => Some("vendors.md"),
-            (Output::Markdown, PageKind::Systems) => Some("systems.md"),
-            (Output::Markdown, _) => None,
-            (Output::Doxygen, PageKind::Index) => Some("mainpage.dox"),
-            (Output::Doxygen, PageKind::DataTypes) => Some("types.dox"),
-            (Output::Doxygen, PageKind::Interfaces) => Some("interfaces.dox"),
-            (Output::Doxygen, PageKind::Categories) => Some("categories.dox"),
-            (Output::Doxygen, PageKind::Vendors) => Some("vendors.dox"),
-            (Output::Doxygen, PageKind::Systems) => Some("systems.dox"),
-            (Output::Doxygen, _) => None,
+        /// The index pages whose name the layout fixes: (kind, Markdown name, Doxygen name).
+        const FIXED: [(PageKind, Option<&str>, &str); 6] = [
+            (PageKind::Index, None, "mainpage.dox"),
+            (PageKind::DataTypes, Some("types.md"), "types.dox"),
+            (
+                PageKind::Interfaces,
+                Some("interfaces.md"),
+                "interfaces.dox",
+            ),
+            (
+                PageKind::Categories,
+                Some("categories.md"),
+                "categories.dox",
+            ),
+            (PageKind::Vendors, Some("vendors.md"), "vendors.dox"),
+            (PageKind::Systems, Some("systems.md"), "systems.dox"),
+        ];
+        let &(_, md, dox) = FIXED.iter().find(|(k, _, _)| *k == self.kind)?;
+        match out {
+            Output::Html => None,
+            Output::Markdown => md,
+            Output::Doxygen => Some(dox),
         }
     }
 
