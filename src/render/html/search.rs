@@ -31,15 +31,20 @@ pub fn is_cjk(c: char) -> bool {
 /// duplicates included (the caller sorts and de-duplicates). Tokens borrow from `text` unless
 /// lower-casing changed them.
 pub fn tokenize<'a>(text: &'a str, out: &mut Vec<Cow<'a, str>>) {
+    let bytes = text.as_bytes();
     // Start of the current word or CJK run (byte offset), and which of the two it is.
     let mut start: Option<(usize, bool)> = None;
-    for (i, c) in text.char_indices() {
-        let class = if is_cjk(c) {
-            Some(true)
-        } else if c.is_alphanumeric() || c == '_' {
-            Some(false)
-        } else {
-            None
+    let mut i = 0;
+    while i < bytes.len() {
+        // ASCII (most of the text, even Japanese profiles' identifiers) is classed by its byte;
+        // anything else by its character.
+        let (class, len) = match bytes[i] {
+            b if b.is_ascii() => ((b.is_ascii_alphanumeric() || b == b'_').then_some(false), 1),
+            _ => match text[i..].chars().next() {
+                Some(c) if is_cjk(c) => (Some(true), c.len_utf8()),
+                Some(c) => (c.is_alphanumeric().then_some(false), c.len_utf8()),
+                None => break,
+            },
         };
         match (start, class) {
             (Some((_, a)), Some(b)) if a == b => {}
@@ -50,6 +55,7 @@ pub fn tokenize<'a>(text: &'a str, out: &mut Vec<Cow<'a, str>>) {
                 start = class.map(|cjk| (i, cjk));
             }
         }
+        i += len;
     }
     if let Some((s, cjk)) = start {
         flush(&text[s..], cjk, out);
@@ -73,20 +79,34 @@ fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
     }
     out.push(lower(run));
     // camelCase / digit boundaries: UsbCamera → usb, camera (only when there are two parts
-    // or more).
+    // or more). For ASCII the byte tests are the character tests.
     let mut part_start = 0;
-    let mut prev: Option<char> = None;
-    for (i, c) in run.char_indices() {
-        if let Some(p) = prev {
-            let boundary = (p.is_lowercase() && c.is_uppercase())
-                || (p.is_alphabetic() && c.is_ascii_digit())
-                || (p.is_ascii_digit() && c.is_alphabetic());
+    if run.is_ascii() {
+        let b = run.as_bytes();
+        for i in 1..b.len() {
+            let (p, c) = (b[i - 1], b[i]);
+            let boundary = (p.is_ascii_lowercase() && c.is_ascii_uppercase())
+                || (p.is_ascii_alphabetic() && c.is_ascii_digit())
+                || (p.is_ascii_digit() && c.is_ascii_alphabetic());
             if boundary {
                 out.push(lower(&run[part_start..i]));
                 part_start = i;
             }
         }
-        prev = Some(c);
+    } else {
+        let mut prev: Option<char> = None;
+        for (i, c) in run.char_indices() {
+            if let Some(p) = prev {
+                let boundary = (p.is_lowercase() && c.is_uppercase())
+                    || (p.is_alphabetic() && c.is_ascii_digit())
+                    || (p.is_ascii_digit() && c.is_alphabetic());
+                if boundary {
+                    out.push(lower(&run[part_start..i]));
+                    part_start = i;
+                }
+            }
+            prev = Some(c);
+        }
     }
     if part_start > 0 {
         out.push(lower(&run[part_start..]));
@@ -147,26 +167,27 @@ impl<'a> Groups<'a> {
     /// it is a prefix of a token of the same or an earlier group: queries match tokens by
     /// prefix, so it would find nothing more (this halves Japanese prose, whose bigrams
     /// repeat).
-    fn encode(mut self) -> String {
-        for g in [&mut self.name, &mut self.ids, &mut self.text] {
-            g.sort_unstable();
-            g.dedup();
-        }
+    fn encode(self) -> String {
+        let groups = [
+            sorted_unique(&self.name),
+            sorted_unique(&self.ids),
+            sorted_unique(&self.text),
+        ];
         // The tokens of the earlier groups, sorted (borrowed: no copy of any token).
         let mut earlier: Vec<&str> = Vec::new();
         let mut out = String::new();
-        for (gi, g) in [&self.name, &self.ids, &self.text].into_iter().enumerate() {
+        for (gi, g) in groups.iter().enumerate() {
             if gi > 0 {
                 out.push('|');
             }
             let mut first = true;
-            for (i, t) in g.iter().enumerate() {
+            for (i, &t) in g.iter().enumerate() {
                 // The name keeps every token (an exact name match ranks first).
                 let covered = gi > 0
-                    && (g.get(i + 1).is_some_and(|n| n.starts_with(t.as_ref()))
+                    && (g.get(i + 1).is_some_and(|n| n.starts_with(t))
                         || earlier
-                            .get(earlier.partition_point(|e| *e < t.as_ref()))
-                            .is_some_and(|n| n.starts_with(t.as_ref())));
+                            .get(earlier.partition_point(|e| *e < t))
+                            .is_some_and(|n| n.starts_with(t)));
                 if covered {
                     continue;
                 }
@@ -184,21 +205,40 @@ impl<'a> Groups<'a> {
     }
 }
 
+/// The tokens sorted, each once. They are sorted by their first eight bytes as a number first
+/// (tokens hold no NUL byte, so zero padding orders a prefix first, as string order does): most
+/// comparisons end there, without comparing the strings.
+fn sorted_unique<'s>(tokens: &'s [Cow<'_, str>]) -> Vec<&'s str> {
+    let mut keyed: Vec<(u64, &str)> = tokens
+        .iter()
+        .map(|t| {
+            let mut head = [0u8; 8];
+            let b = t.as_bytes();
+            let n = b.len().min(8);
+            head[..n].copy_from_slice(&b[..n]);
+            (u64::from_be_bytes(head), t.as_ref())
+        })
+        .collect();
+    keyed.sort_unstable();
+    keyed.dedup_by(|a, b| a.1 == b.1);
+    keyed.into_iter().map(|(_, t)| t).collect()
+}
+
 /// The tokens of two sorted lists, sorted (a merge: both are sorted already).
-fn merge_sorted<'s>(a: &[&'s str], b: &'s [Cow<'_, str>]) -> Vec<&'s str> {
+fn merge_sorted<'s>(a: &[&'s str], b: &[&'s str]) -> Vec<&'s str> {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut i, mut j) = (0, 0);
     while i < a.len() && j < b.len() {
-        if a[i] <= b[j].as_ref() {
+        if a[i] <= b[j] {
             out.push(a[i]);
             i += 1;
         } else {
-            out.push(b[j].as_ref());
+            out.push(b[j]);
             j += 1;
         }
     }
     out.extend_from_slice(&a[i..]);
-    out.extend(b[j..].iter().map(|t| t.as_ref()));
+    out.extend_from_slice(&b[j..]);
     out
 }
 
@@ -474,16 +514,28 @@ pub fn js_safe_json(json: &str) -> String {
 
 /// [`js_safe_json`] appended to `out`.
 fn push_js_safe_json(out: &mut String, json: &str) {
-    for ch in json.chars() {
-        match ch {
-            '<' => out.push_str("\\u003c"),
-            '>' => out.push_str("\\u003e"),
-            '&' => out.push_str("\\u0026"),
-            '\u{2028}' => out.push_str("\\u2028"),
-            '\u{2029}' => out.push_str("\\u2029"),
-            c => out.push(c),
-        }
+    // Runs with nothing to escape are copied whole. Every byte escaped starts a character
+    // (`<`, `>`, `&`, or E2 80 A8 / A9 for U+2028 / U+2029), so each cut is at a boundary.
+    let b = json.as_bytes();
+    let (mut copied, mut i) = (0, 0);
+    while i < b.len() {
+        let (escape, len) = match (b[i], b.get(i + 1..i + 3)) {
+            (b'<', _) => ("\\u003c", 1),
+            (b'>', _) => ("\\u003e", 1),
+            (b'&', _) => ("\\u0026", 1),
+            (0xE2, Some([0x80, 0xA8])) => ("\\u2028", 3),
+            (0xE2, Some([0x80, 0xA9])) => ("\\u2029", 3),
+            _ => {
+                i += 1;
+                continue;
+            }
+        };
+        out.push_str(&json[copied..i]);
+        out.push_str(escape);
+        i += len;
+        copied = i;
     }
+    out.push_str(&json[copied..]);
 }
 
 #[cfg(test)]
@@ -645,6 +697,26 @@ mod tests {
             assert_eq!(e[ci][1], c.display_name().as_ref(), "entry {ci}");
         }
         assert_eq!(v["kinds"]["c"], Lang::En.t("component"));
+    }
+
+    proptest::proptest! {
+        /// Escaping byte runs gives what escaping character by character gives (E2 starts
+        /// U+2028 and U+2029, and also `…` and `→`, which stay).
+        #[test]
+        fn js_escaping_matches_the_reference(s in "[<>&a\u{2026}\u{2028}\u{2029}\u{2192}é日\"]{0,24}") {
+            let reference: String = s
+                .chars()
+                .map(|c| match c {
+                    '<' => "\\u003c".to_string(),
+                    '>' => "\\u003e".to_string(),
+                    '&' => "\\u0026".to_string(),
+                    '\u{2028}' => "\\u2028".to_string(),
+                    '\u{2029}' => "\\u2029".to_string(),
+                    c => c.to_string(),
+                })
+                .collect();
+            proptest::prop_assert_eq!(js_safe_json(&s), reference);
+        }
     }
 
     #[test]
