@@ -29,14 +29,24 @@ use std::collections::BTreeMap;
 /// diagnostics (loader codes, RTC010 duplicate ids) are not repeated here.
 pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
     use rayon::prelude::*;
-    let mut out: Vec<Diagnostic> = catalog
-        .components
-        .par_iter()
-        .flat_map_iter(rules::component)
-        .collect();
-    out.extend(rules::catalogue(catalog));
-    out.extend(idl_coverage::diagnostics(catalog));
-    out.extend(systems::run(catalog));
+    // The rules over the whole catalogue run beside the per-component ones; the findings are
+    // joined in the same order either way, and sorted.
+    let (mut out, whole): (Vec<Diagnostic>, Vec<Diagnostic>) = rayon::join(
+        || {
+            catalog
+                .components
+                .par_iter()
+                .flat_map_iter(rules::component)
+                .collect()
+        },
+        || {
+            let mut whole = rules::catalogue(catalog);
+            whole.extend(idl_coverage::diagnostics(catalog));
+            whole.extend(systems::run(catalog));
+            whole
+        },
+    );
+    out.extend(whole);
     sort(&mut out);
     out
 }
