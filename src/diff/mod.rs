@@ -1271,12 +1271,11 @@ fn changed(
 ) -> (Option<&'static str>, Option<String>) {
     let last = p.last().map(String::as_str).unwrap_or("");
     let (at, documentation) = place(p);
+    let (o, n) = (quoted(old), quoted(new));
     let spelled = |what: &str| {
         Some(format!(
-            "`{}` is spelled differently ({} → {}) but {what}",
-            p.join("/"),
-            quoted(old),
-            quoted(new)
+            "`{}` is spelled differently ({o} → {n}) but {what}",
+            p.join("/")
         ))
     };
     // `code` with `message`, unless the two spellings are the `same` (`what` says in what way).
@@ -1307,24 +1306,24 @@ fn changed(
         }
         Place::Field(Field::BasicVersion) => (
             Some(codes::VERSION_CHANGED),
-            Some(format!("version {} → {}", quoted(old), quoted(new))),
+            Some(format!("version {o} → {n}")),
         ),
         Place::Field(Field::BasicExecutionType) => (Some(codes::EXECUTION_TYPE), None),
         Place::Field(Field::BasicExecutionRate) => {
             let num = |s: Option<&str>| s.and_then(|s| s.trim().parse::<f64>().ok());
             let same = matches!((num(old), num(new)), (Some(a), Some(b)) if a == b);
-            let message = format!("execution rate {} → {}", quoted(old), quoted(new));
+            let message = format!("execution rate {o} → {n}");
             same_or(same, "is the same rate", codes::EXECUTION_RATE, message)
         }
         Place::Field(Field::BasicMaxInstances) => {
             // Absent or empty: unlimited.
-            let n = |s: Option<&str>| -> Option<Option<u64>> {
+            let count = |s: Option<&str>| -> Option<Option<u64>> {
                 match s.map(str::trim).filter(|s| !s.is_empty()) {
                     None => Some(None),
                     Some(t) => t.parse::<u64>().ok().map(Some),
                 }
             };
-            match (n(old), n(new)) {
+            match (count(old), count(new)) {
                 (Some(a), Some(b)) => {
                     let lowered = match (a, b) {
                         (None, Some(_)) => true,
@@ -1347,9 +1346,7 @@ fn changed(
                 _ => (
                     Some(codes::MAX_INSTANCES_LOWERED),
                     Some(format!(
-                        "maxInstances {} → {} cannot be compared as numbers",
-                        quoted(old),
-                        quoted(new)
+                        "maxInstances {o} → {n} cannot be compared as numbers"
                     )),
                 ),
             }
@@ -1366,12 +1363,7 @@ fn changed(
             }
         }
         Place::Field(Field::DataPortPortType) => {
-            let message = format!(
-                "data port `{}` changed from {} to {}",
-                p[1],
-                quoted(old),
-                quoted(new)
-            );
+            let message = format!("data port `{}` changed from {o} to {n}", p[1]);
             let same = same_kind(old, new, crate::model::PortDirection::parse);
             same_or(
                 same,
@@ -1381,12 +1373,7 @@ fn changed(
             )
         }
         Place::Field(Field::DataPortType) => {
-            let message = format!(
-                "data port `{}` now carries {} instead of {}",
-                p[1],
-                quoted(new),
-                quoted(old)
-            );
+            let message = format!("data port `{}` now carries {n} instead of {o}", p[1]);
             let same = same_type(old, new);
             same_or(same, "names the same type", codes::DATA_PORT_TYPE, message)
         }
@@ -1408,7 +1395,7 @@ fn changed(
             if narrowed {
                 let dropped: Vec<&String> = a.difference(&b).collect();
                 let what = if a.is_empty() {
-                    format!("now restricted to {}", quoted(new))
+                    format!("now restricted to {n}")
                 } else {
                     format!(
                         "no longer offers {}",
@@ -1429,20 +1416,12 @@ fn changed(
         }
         Place::Field(Field::DataPortUnit | Field::ConfigurationUnit) => (
             Some(codes::UNIT_CHANGED),
-            Some(format!(
-                "unit of `{}` changed from {} to {}",
-                p[1],
-                quoted(old),
-                quoted(new)
-            )),
+            Some(format!("unit of `{}` changed from {o} to {n}", p[1])),
         ),
         Place::Field(Field::InterfaceType) => {
             let message = format!(
-                "interface `{}` of service port `{}` is now {} instead of {}",
-                p[3],
-                p[1],
-                quoted(new),
-                quoted(old)
+                "interface `{}` of service port `{}` is now {n} instead of {o}",
+                p[3], p[1]
             );
             let same = same_type(old, new);
             same_or(
@@ -1454,11 +1433,8 @@ fn changed(
         }
         Place::Field(Field::InterfaceDirection) => {
             let message = format!(
-                "interface `{}` of service port `{}` changed from {} to {}",
-                p[3],
-                p[1],
-                quoted(old),
-                quoted(new)
+                "interface `{}` of service port `{}` changed from {o} to {n}",
+                p[3], p[1]
             );
             let same = same_kind(old, new, crate::model::Direction::parse);
             same_or(
@@ -1478,10 +1454,8 @@ fn changed(
                 (a, b) => a == b,
             };
             let message = format!(
-                "configuration parameter `{}` is now {} instead of {}",
-                p[1],
-                quoted(new),
-                quoted(old)
+                "configuration parameter `{}` is now {n} instead of {o}",
+                p[1]
             );
             same_or(
                 same,
@@ -1492,12 +1466,7 @@ fn changed(
         }
         Place::Field(Field::ConfigurationDefaultValue) => (
             Some(codes::DEFAULT_CHANGED),
-            Some(format!(
-                "default of `{}` changed from {} to {}",
-                p[1],
-                quoted(old),
-                quoted(new)
-            )),
+            Some(format!("default of `{}` changed from {o} to {n}", p[1])),
         ),
         Place::Child {
             parent: Kind::Configuration,

@@ -128,17 +128,25 @@ const SKIPPED: &[&str] = &[
     "custom",
 ];
 
-/// A declaration of kind `$kind` named `$name`: its scoped name and repository id in the
-/// current scope, the doc comment, position and file, then the fields of its own kind.
+/// What stands before a declaration's keyword: its doc comment and its position.
+#[derive(Clone)]
+struct Head {
+    doc: Option<Box<IdlDoc>>,
+    pos: Pos,
+}
+
+/// A declaration of kind `$kind` named `$name` with `$head`: its scoped name and repository id
+/// in the current scope, the doc comment, position and file, then the fields of its own kind.
 macro_rules! declared {
-    ($p:ident, $kind:ident, $name:expr, $doc:expr, $pos:expr, { $($own:tt)* }) => {{
+    ($p:ident, $kind:ident, $name:expr, $head:expr, { $($own:tt)* }) => {{
         let name: String = $name;
+        let head: Head = $head;
         $kind {
             scoped_name: $p.scoped(&name),
             repository_id: $p.repo_id(&name),
             name,
-            doc: $doc,
-            pos: $pos,
+            doc: head.doc,
+            pos: head.pos,
             file: $p.file.clone(),
             $($own)*
         }
@@ -207,21 +215,20 @@ impl Parser<'_> {
     fn is_word(&mut self, w: &str) -> bool {
         matches!(&self.peek().tok, Tok::Ident(q) if q == w)
     }
-    fn eat_punct(&mut self, p: &str) -> bool {
-        if self.is_punct(p) {
+    /// Consumes the next token when it is the one looked for (`found`); `found` back.
+    fn bump_if(&mut self, found: bool) -> bool {
+        if found {
             self.bump();
-            true
-        } else {
-            false
         }
+        found
+    }
+    fn eat_punct(&mut self, p: &str) -> bool {
+        let found = self.is_punct(p);
+        self.bump_if(found)
     }
     fn eat_word(&mut self, w: &str) -> bool {
-        if self.is_word(w) {
-            self.bump();
-            true
-        } else {
-            false
-        }
+        let found = self.is_word(w);
+        self.bump_if(found)
     }
     fn at_eof(&mut self) -> bool {
         self.peek().tok == Tok::Eof
@@ -241,13 +248,17 @@ impl Parser<'_> {
         let pos = self.pos();
         self.error_at(pos, msg, hint)
     }
+    /// The error at the next token: `expected …, found` it.
+    fn unexpected(&mut self, expected: &str, hint: &str) -> PErr {
+        let found = self.peek().describe();
+        self.error_here(format!("expected {expected}, found {found}"), hint)
+    }
     /// The word that starts a declaration; an error saying what was `expected` otherwise.
     fn leading_word(&mut self, expected: &str) -> PResult<String> {
         if let Tok::Ident(w) = self.peek_tok() {
             return Ok(w);
         }
-        let found = self.peek().describe();
-        Err(self.error_here(format!("expected {expected}, found {found}"), ""))
+        Err(self.unexpected(expected, ""))
     }
     /// Whether the next token is the `}` that closes `what` (the pragmas before it applied); an
     /// error with `hint` at the end of the file.
@@ -266,8 +277,7 @@ impl Parser<'_> {
         if self.eat_punct(p) {
             return Ok(());
         }
-        let found = self.peek().describe();
-        Err(self.error_here(format!("expected `{p}` {context}, found {found}"), hint))
+        Err(self.unexpected(&format!("`{p}` {context}"), hint))
     }
     fn ident(&mut self, what: &str) -> PResult<(String, Pos)> {
         let t = self.peek().clone();
@@ -276,10 +286,19 @@ impl Parser<'_> {
                 self.bump();
                 Ok((strip_escape(w), t.pos))
             }
-            _ => Err(self.error_here(
-                format!("expected {what}, found {}", t.describe()),
+            _ => Err(self.unexpected(
+                what,
                 "names are identifiers: a letter followed by letters, digits or `_`",
             )),
+        }
+    }
+    /// `item (, item)*`: `item` read again while a `,` follows.
+    fn comma_separated(&mut self, mut item: impl FnMut(&mut Self) -> PResult<()>) -> PResult<()> {
+        loop {
+            item(self)?;
+            if !self.eat_punct(",") {
+                return Ok(());
+            }
         }
     }
 
@@ -395,6 +414,14 @@ impl Parser<'_> {
             None => after.to_string(),
         };
         *doc = Some(Box::new(parse_doc(&text)));
+    }
+    /// The trailing comments met since the last token (if any), added to each of `docs`.
+    fn add_after<'d>(&mut self, docs: impl IntoIterator<Item = &'d mut Option<Box<IdlDoc>>>) {
+        if let Some(after) = self.take_after() {
+            for doc in docs {
+                Self::merge_doc(doc, &after);
+            }
+        }
     }
 
     // ----- pragmas and ids -----
@@ -581,55 +608,48 @@ impl Parser<'_> {
     }
 
     fn definition(&mut self, out: &mut Vec<IdlDefinition>) -> PResult<()> {
-        let doc = self.take_doc();
-        let pos = self.pos();
+        let head = Head {
+            doc: self.take_doc(),
+            pos: self.pos(),
+        };
         let word = self.leading_word("a declaration (module, struct, interface, typedef, …)")?;
         match word.as_str() {
-            "module" => self.module(out, doc, pos),
-            "struct" => self.structure(out, doc, pos),
-            "union" => self.union(out, doc, pos),
-            "enum" => self.enumeration(out, doc, pos),
-            "typedef" => self.typedef(out, doc, pos),
-            "const" => self.constant(out, doc, pos),
+            "module" => self.module(out, head),
+            "struct" => self.structure(out, head),
+            "union" => self.union(out, head),
+            "enum" => self.enumeration(out, head),
+            "typedef" => self.typedef(out, head),
+            "const" => self.constant(out, head),
             "native" => {
-                self.bump();
-                let (name, _) = self.ident("a name after `native`")?;
+                let name = self.name_after_keyword("a name after `native`")?;
                 self.expect_punct(";", "after native declaration", "")?;
                 out.push(IdlDefinition::Native(declared!(
                     self,
                     IdlNative,
                     name,
-                    doc,
-                    pos,
+                    head,
                     {}
                 )));
                 Ok(())
             }
-            "exception" => self.exception(out, doc, pos),
-            "interface" => self.interface(out, doc, pos, None),
+            "exception" => self.exception(out, head),
+            "interface" => self.interface(out, head, None),
             "abstract" | "local" => {
                 self.bump();
                 if self.is_word("interface") {
-                    self.interface(out, doc, pos, Some(word))
+                    self.interface(out, head, Some(word))
                 } else {
-                    self.skip_declaration(out, &word, pos)
+                    self.skip_declaration(out, &word, head.pos)
                 }
             }
             "typeid" | "typeprefix" => {
                 self.bump();
                 let name = self.scoped_name()?;
                 let target = self.target_name(&name);
-                let t = self.peek().clone();
-                let value = match &t.tok {
-                    Tok::Str { value, .. } => value.clone(),
+                let value = match self.peek_tok() {
+                    Tok::Str { value, .. } => value,
                     _ => {
-                        return Err(self.error_here(
-                            format!(
-                                "expected a string after `{word} {name}`, found {}",
-                                t.describe()
-                            ),
-                            "",
-                        ))
+                        return Err(self.unexpected(&format!("a string after `{word} {name}`"), ""))
                     }
                 };
                 self.bump();
@@ -639,17 +659,15 @@ impl Parser<'_> {
                 } else {
                     OverrideKind::Prefix(value)
                 };
+                let pos = head.pos;
                 self.overrides.push(Override { target, kind, pos });
                 Ok(())
             }
-            w if SKIPPED.contains(&w) => self.skip_declaration(out, &word, pos),
-            _ => {
-                let found = self.peek().describe();
-                Err(self.error_here(
-                    format!("expected a declaration (module, struct, interface, typedef, …), found {found}"),
-                    "check the spelling of the keyword, or a missing `;` on the line before",
-                ))
-            }
+            w if SKIPPED.contains(&w) => self.skip_declaration(out, &word, head.pos),
+            _ => Err(self.unexpected(
+                "a declaration (module, struct, interface, typedef, …)",
+                "check the spelling of the keyword, or a missing `;` on the line before",
+            )),
         }
     }
 
@@ -747,6 +765,22 @@ impl Parser<'_> {
         Ok(r)
     }
 
+    /// The body of `name` after its `{`, up to (not including) its `}`, read by `fill` in the
+    /// scope of `name`: the definition `make` makes of what was read goes onto `out` also when
+    /// a part is broken (reported, the error returned after), so that the declaration is kept.
+    fn body<T: Default>(
+        &mut self,
+        out: &mut Vec<IdlDefinition>,
+        name: &str,
+        fill: impl FnOnce(&mut Self, &mut T) -> PResult<()>,
+        make: impl FnOnce(&Self, T) -> IdlDefinition,
+    ) -> PResult<()> {
+        let mut read = T::default();
+        let r = self.in_scope(name, |p| fill(p, &mut read))?;
+        out.push(make(self, read));
+        r
+    }
+
     /// The `};` that ends the body of `kind` `name` (`hint`: what to say when the `}` is missing).
     fn close(&mut self, kind: &str, name: &str, hint: &str) -> PResult<()> {
         self.expect_punct("}", &format!("to close {kind} `{name}`"), hint)?;
@@ -757,44 +791,57 @@ impl Parser<'_> {
         )
     }
 
-    fn module(
+    /// The name after a declaration's keyword (`what`: what to call it when it is missing).
+    fn name_after_keyword(&mut self, what: &str) -> PResult<String> {
+        self.bump();
+        Ok(self.ident(what)?.0)
+    }
+
+    /// The name after the keyword of a `kind` that may be declared forward: `None` when it is
+    /// (`kind name;`, pushed onto `out`), the name and `head` back when a body follows.
+    fn name_or_forward(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
-        self.bump();
-        let (name, _) = self.ident("a module name")?;
+        head: Head,
+        kind: &str,
+        what: &str,
+    ) -> PResult<Option<(String, Head)>> {
+        let name = self.name_after_keyword(what)?;
+        if !self.eat_punct(";") {
+            return Ok(Some((name, head)));
+        }
+        out.push(IdlDefinition::Forward(
+            declared!(self, IdlForward, name, head, {
+                of: kind.to_string(),
+            }),
+        ));
+        Ok(None)
+    }
+
+    fn module(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
+        let name = self.name_after_keyword("a module name")?;
         self.expect_punct("{", &format!("after `module {name}`"), "")?;
-        let mut m = declared!(self, IdlModule, name.clone(), doc, pos, {
-            definitions: Vec::new(),
-        });
-        let mut defs = Vec::new();
-        self.in_scope(&name, |p| p.definitions(&mut defs, false))?;
-        m.definitions = defs;
-        out.push(IdlDefinition::Module(m));
+        let fill = |p: &mut Self, defs: &mut Vec<IdlDefinition>| {
+            p.definitions(defs, false);
+            Ok(())
+        };
+        self.body(out, &name, fill, |p, definitions| {
+            IdlDefinition::Module(declared!(p, IdlModule, name.clone(), head, { definitions }))
+        })?;
         self.close("module", &name, "every `{` needs its `}`")
     }
 
-    fn structure(
-        &mut self,
-        out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
-        self.bump();
-        let (name, _) = self.ident("a struct name")?;
-        if self.eat_punct(";") {
-            out.push(self.forward(name, doc, pos, "struct"));
+    fn structure(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
+        let Some((name, head)) = self.name_or_forward(out, head, "struct", "a struct name")? else {
             return Ok(());
-        }
+        };
         self.with_members(out, "struct", name, |p, name, fields| {
-            IdlDefinition::Struct(declared!(p, IdlStruct, name, doc, pos, { fields }))
+            IdlDefinition::Struct(declared!(p, IdlStruct, name, head, { fields }))
         })
     }
 
     /// The `{ members };` of a struct or an exception (`kind`) named `name`: its definition made
-    /// by `make` (also when a member is broken, so that the declaration is kept) onto `out`.
+    /// by `make` onto `out`.
     fn with_members(
         &mut self,
         out: &mut Vec<IdlDefinition>,
@@ -803,30 +850,20 @@ impl Parser<'_> {
         make: impl FnOnce(&Self, String, Vec<IdlField>) -> IdlDefinition,
     ) -> PResult<()> {
         self.expect_punct("{", &format!("after `{kind} {name}`"), "")?;
-        let mut fields = Vec::new();
         let what = format!("{kind} member");
-        let r = self.in_scope(&name, |p| p.members(&mut fields, &what))?;
-        out.push(make(self, name.clone(), fields));
-        r?;
+        self.body(
+            out,
+            &name,
+            |p, fields| p.members(fields, &what),
+            |p, fields| make(p, name.clone(), fields),
+        )?;
         self.close(kind, &name, "")
     }
 
-    fn forward(&self, name: String, doc: Option<Box<IdlDoc>>, pos: Pos, of: &str) -> IdlDefinition {
-        IdlDefinition::Forward(declared!(self, IdlForward, name, doc, pos, {
-            of: of.to_string(),
-        }))
-    }
-
-    fn exception(
-        &mut self,
-        out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
-        self.bump();
-        let (name, _) = self.ident("an exception name")?;
+    fn exception(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
+        let name = self.name_after_keyword("an exception name")?;
         self.with_members(out, "exception", name, |p, name, fields| {
-            IdlDefinition::Exception(declared!(p, IdlException, name, doc, pos, { fields }))
+            IdlDefinition::Exception(declared!(p, IdlException, name, head, { fields }))
         })
     }
 
@@ -835,13 +872,7 @@ impl Parser<'_> {
         while !self.at_close("the members", "every `{` needs its `};`")? {
             let before = fields.len();
             match self.member(fields, what) {
-                Ok(()) => {
-                    if let Some(after) = self.take_after() {
-                        for f in &mut fields[before..] {
-                            Self::merge_doc(&mut f.doc, &after);
-                        }
-                    }
-                }
+                Ok(()) => self.add_after(fields[before..].iter_mut().map(|f| &mut f.doc)),
                 Err(PErr) => self.recover(),
             }
         }
@@ -851,8 +882,8 @@ impl Parser<'_> {
     fn member(&mut self, fields: &mut Vec<IdlField>, what: &str) -> PResult<()> {
         let doc = self.take_doc();
         let ty = self.type_spec()?;
-        loop {
-            let (name, pos, array) = self.declarator(&format!("a {what} name"))?;
+        self.comma_separated(|p| {
+            let (name, pos, array) = p.declarator(&format!("a {what} name"))?;
             fields.push(IdlField {
                 name,
                 ty: ty.clone(),
@@ -860,10 +891,8 @@ impl Parser<'_> {
                 doc: doc.clone(),
                 pos,
             });
-            if !self.eat_punct(",") {
-                break;
-            }
-        }
+            Ok(())
+        })?;
         self.expect_punct(
             ";",
             &format!("after {what}"),
@@ -881,22 +910,13 @@ impl Parser<'_> {
         Ok((name, pos, dims))
     }
 
-    fn union(
-        &mut self,
-        out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
-        self.bump();
-        let (name, _) = self.ident("a union name")?;
-        if self.eat_punct(";") {
-            out.push(self.forward(name, doc, pos, "union"));
+    fn union(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
+        let Some((name, head)) = self.name_or_forward(out, head, "union", "a union name")? else {
             return Ok(());
-        }
+        };
         if !self.eat_word("switch") {
-            let found = self.peek().describe();
-            return Err(self.error_here(
-                format!("expected `switch` after `union {name}`, found {found}"),
+            return Err(self.unexpected(
+                &format!("`switch` after `union {name}`"),
                 "a union reads `union U switch (long) { case 1: long a; default: double b; };`",
             ));
         }
@@ -904,15 +924,12 @@ impl Parser<'_> {
         let switch_type = self.type_spec()?;
         self.expect_punct(")", "after the switch type", "")?;
         self.expect_punct("{", &format!("to open union `{name}`"), "")?;
-        let mut cases = Vec::new();
-        let r = self.in_scope(&name, |p| p.union_cases(&mut cases))?;
-        out.push(IdlDefinition::Union(
-            declared!(self, IdlUnion, name.clone(), doc, pos, {
+        self.body(out, &name, Self::union_cases, |p, cases| {
+            IdlDefinition::Union(declared!(p, IdlUnion, name.clone(), head, {
                 switch_type,
                 cases,
-            }),
-        ));
-        r?;
+            }))
+        })?;
         self.close("union", &name, "")
     }
 
@@ -920,9 +937,7 @@ impl Parser<'_> {
         while !self.at_close("the union", "")? {
             match self.union_case() {
                 Ok(mut c) => {
-                    if let Some(after) = self.take_after() {
-                        Self::merge_doc(&mut c.field.doc, &after);
-                    }
+                    self.add_after([&mut c.field.doc]);
                     cases.push(c);
                 }
                 Err(PErr) => self.recover(),
@@ -948,8 +963,7 @@ impl Parser<'_> {
             self.expect_punct(":", "after the case label", "")?;
         }
         if labels.is_empty() {
-            let found = self.peek().describe();
-            return Err(self.error_here(format!("expected `case` or `default`, found {found}"), ""));
+            return Err(self.unexpected("`case` or `default`", ""));
         }
         let doc = doc.or_else(|| self.take_doc());
         let ty = self.type_spec()?;
@@ -968,60 +982,13 @@ impl Parser<'_> {
         })
     }
 
-    fn enumeration(
-        &mut self,
-        out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
-        self.bump();
-        let (name, _) = self.ident("an enum name")?;
+    fn enumeration(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
+        let name = self.name_after_keyword("an enum name")?;
         self.expect_punct("{", &format!("after `enum {name}`"), "")?;
         let mut values: Vec<IdlEnumerator> = Vec::new();
-        let mut result = Ok(());
-        loop {
-            self.apply_pragmas();
-            if self.is_punct("}") {
-                break;
-            }
-            let vdoc = self.take_doc();
-            match self.ident("an enumerator name") {
-                Ok((v, vpos)) => {
-                    let mut e = IdlEnumerator {
-                        name: v,
-                        doc: vdoc,
-                        pos: vpos,
-                    };
-                    if let Some(after) = self.take_after() {
-                        Self::merge_doc(&mut e.doc, &after);
-                    }
-                    let comma = self.eat_punct(",");
-                    if let Some(after) = self.take_after() {
-                        Self::merge_doc(&mut e.doc, &after);
-                    }
-                    let scoped = self.scoped(&e.name);
-                    self.consts
-                        .insert(scoped.clone(), Value::Enumerator(scoped));
-                    values.push(e);
-                    if !comma {
-                        if !self.is_punct("}") {
-                            let found = self.peek().describe();
-                            result = Err(self.error_here(
-                                format!("expected `,` or `}}` after enumerator, found {found}"),
-                                "enumerators are separated by `,`",
-                            ));
-                        }
-                        break;
-                    }
-                }
-                Err(e) => {
-                    result = Err(e);
-                    break;
-                }
-            }
-        }
+        let result = self.enumerators(&mut values);
         out.push(IdlDefinition::Enum(
-            declared!(self, IdlEnum, name.clone(), doc, pos, {
+            declared!(self, IdlEnum, name.clone(), head, {
                 values,
             }),
         ));
@@ -1032,48 +999,63 @@ impl Parser<'_> {
         self.close("enum", &name, "")
     }
 
-    fn typedef(
-        &mut self,
-        out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
+    /// The enumerators of an enum up to (not including) its `}`, each a constant of the
+    /// enclosing scope.
+    fn enumerators(&mut self, values: &mut Vec<IdlEnumerator>) -> PResult<()> {
+        loop {
+            self.apply_pragmas();
+            if self.is_punct("}") {
+                return Ok(());
+            }
+            let doc = self.take_doc();
+            let (name, pos) = self.ident("an enumerator name")?;
+            let mut e = IdlEnumerator { name, doc, pos };
+            self.add_after([&mut e.doc]);
+            let comma = self.eat_punct(",");
+            self.add_after([&mut e.doc]);
+            let scoped = self.scoped(&e.name);
+            self.consts
+                .insert(scoped.clone(), Value::Enumerator(scoped));
+            values.push(e);
+            if !comma {
+                if !self.is_punct("}") {
+                    return Err(self.unexpected(
+                        "`,` or `}` after enumerator",
+                        "enumerators are separated by `,`",
+                    ));
+                }
+                return Ok(());
+            }
+        }
+    }
+
+    fn typedef(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
         self.bump();
         let ty = self.type_spec()?;
         let start = out.len();
-        loop {
-            let (name, _, array) = self.declarator("a type name")?;
+        self.comma_separated(|p| {
+            let (name, _, array) = p.declarator("a type name")?;
             out.push(IdlDefinition::Typedef(
-                declared!(self, IdlTypedef, name, doc.clone(), pos, {
+                declared!(p, IdlTypedef, name, head.clone(), {
                     ty: ty.clone(),
                     array,
                 }),
             ));
-            if !self.eat_punct(",") {
-                break;
-            }
-        }
+            Ok(())
+        })?;
         self.expect_punct(
             ";",
             "after typedef",
             "a typedef reads `typedef sequence<long> LongSeq;`",
         )?;
-        if let Some(after) = self.take_after() {
-            for d in &mut out[start..] {
-                if let IdlDefinition::Typedef(t) = d {
-                    Self::merge_doc(&mut t.doc, &after);
-                }
-            }
-        }
+        self.add_after(out[start..].iter_mut().filter_map(|d| match d {
+            IdlDefinition::Typedef(t) => Some(&mut t.doc),
+            _ => None,
+        }));
         Ok(())
     }
 
-    fn constant(
-        &mut self,
-        out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
-    ) -> PResult<()> {
+    fn constant(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
         self.bump();
         let ty = self.type_spec()?;
         let (name, _) = self.ident("a constant name")?;
@@ -1088,14 +1070,12 @@ impl Parser<'_> {
         if let Some(v) = &value {
             self.consts.insert(scoped.clone(), v.clone());
         }
-        let mut c = declared!(self, IdlConst, name, doc, pos, {
+        let mut c = declared!(self, IdlConst, name, head, {
             ty,
             expr,
             value: value.and_then(to_const_value),
         });
-        if let Some(after) = self.take_after() {
-            Self::merge_doc(&mut c.doc, &after);
-        }
+        self.add_after([&mut c.doc]);
         out.push(IdlDefinition::Const(c));
         Ok(())
     }
@@ -1103,31 +1083,23 @@ impl Parser<'_> {
     fn interface(
         &mut self,
         out: &mut Vec<IdlDefinition>,
-        doc: Option<Box<IdlDoc>>,
-        pos: Pos,
+        head: Head,
         modifier: Option<String>,
     ) -> PResult<()> {
-        self.bump(); // interface
-        let (name, _) = self.ident("an interface name")?;
-        if self.eat_punct(";") {
-            out.push(self.forward(name, doc, pos, "interface"));
+        let Some((name, head)) =
+            self.name_or_forward(out, head, "interface", "an interface name")?
+        else {
             return Ok(());
-        }
+        };
         let mut bases = Vec::new();
         if self.eat_punct(":") {
-            loop {
-                let n = self.scoped_name()?;
-                bases.push(IdlType::Named {
-                    name: n,
-                    resolved: None,
-                });
-                if !self.eat_punct(",") {
-                    break;
-                }
-            }
+            self.comma_separated(|p| {
+                bases.push(p.named_type()?);
+                Ok(())
+            })?;
         }
         self.expect_punct("{", &format!("after `interface {name}`"), "")?;
-        let mut itf = declared!(self, IdlInterface, name.clone(), doc, pos, {
+        let mut itf = declared!(self, IdlInterface, name.clone(), head, {
             modifier,
             bases,
             attributes: Vec::new(),
@@ -1167,16 +1139,12 @@ impl Parser<'_> {
         let doc = self.take_doc();
         let readonly = self.eat_word("readonly");
         if !self.eat_word("attribute") {
-            let found = self.peek().describe();
-            return Err(self.error_here(
-                format!("expected `attribute` after `readonly`, found {found}"),
-                "",
-            ));
+            return Err(self.unexpected("`attribute` after `readonly`", ""));
         }
         let ty = self.type_spec()?;
         let start = itf.attributes.len();
-        loop {
-            let (name, pos) = self.ident("an attribute name")?;
+        self.comma_separated(|p| {
+            let (name, pos) = p.ident("an attribute name")?;
             itf.attributes.push(IdlAttribute {
                 name,
                 ty: ty.clone(),
@@ -1185,23 +1153,19 @@ impl Parser<'_> {
                 doc: doc.clone(),
                 pos,
             });
-            if !self.eat_punct(",") {
-                break;
-            }
-        }
+            Ok(())
+        })?;
         let mut raises = Vec::new();
         while self.is_word("raises") || self.is_word("getraises") || self.is_word("setraises") {
             self.bump();
             raises.extend(self.name_list("exception")?);
         }
         self.expect_punct(";", "after attribute", "")?;
-        let after = self.take_after();
-        for a in &mut itf.attributes[start..] {
+        let added = &mut itf.attributes[start..];
+        for a in added.iter_mut() {
             a.raises = raises.clone();
-            if let Some(after) = &after {
-                Self::merge_doc(&mut a.doc, after);
-            }
         }
+        self.add_after(added.iter_mut().map(|a| &mut a.doc));
         Ok(())
     }
 
@@ -1213,11 +1177,7 @@ impl Parser<'_> {
             return Ok(v);
         }
         loop {
-            let n = self.scoped_name()?;
-            v.push(IdlType::Named {
-                name: n,
-                resolved: None,
-            });
+            v.push(self.named_type()?);
             if self.eat_punct(")") {
                 return Ok(v);
             }
@@ -1250,9 +1210,8 @@ impl Parser<'_> {
                 } else if self.eat_word("inout") {
                     IdlParamDirection::Inout
                 } else {
-                    let found = self.peek().describe();
-                    return Err(self.error_here(
-                        format!("expected `in`, `out` or `inout` before a parameter of `{name}`, found {found}"),
+                    return Err(self.unexpected(
+                        &format!("`in`, `out` or `inout` before a parameter of `{name}`"),
                         "every parameter starts with its direction: `in long x`",
                     ));
                 };
@@ -1266,9 +1225,7 @@ impl Parser<'_> {
                     pos: ppos,
                 };
                 let more = self.eat_punct(",");
-                if let Some(after) = self.take_after() {
-                    Self::merge_doc(&mut p.doc, &after);
-                }
+                self.add_after([&mut p.doc]);
                 params.push(p);
                 if more {
                     continue;
@@ -1278,11 +1235,7 @@ impl Parser<'_> {
                     &format!("after the parameters of `{name}`"),
                     "parameters are separated by `,`",
                 )?;
-                if let Some(after) = self.take_after() {
-                    if let Some(last) = params.last_mut() {
-                        Self::merge_doc(&mut last.doc, &after);
-                    }
-                }
+                self.add_after(params.last_mut().map(|p| &mut p.doc));
                 break;
             }
         }
@@ -1295,18 +1248,12 @@ impl Parser<'_> {
         if self.eat_word("context") {
             self.expect_punct("(", "after `context`", "")?;
             loop {
-                let t = self.peek().clone();
-                match &t.tok {
+                match self.peek_tok() {
                     Tok::Str { value, .. } => {
-                        context.push(value.clone());
+                        context.push(value);
                         self.bump();
                     }
-                    _ => {
-                        return Err(self.error_here(
-                            format!("expected a string in `context (…)`, found {}", t.describe()),
-                            "",
-                        ))
-                    }
+                    _ => return Err(self.unexpected("a string in `context (…)`", "")),
                 }
                 if self.eat_punct(")") {
                     break;
@@ -1329,9 +1276,7 @@ impl Parser<'_> {
             doc,
             pos,
         };
-        if let Some(after) = self.take_after() {
-            Self::merge_doc(&mut op.doc, &after);
-        }
+        self.add_after([&mut op.doc]);
         itf.operations.push(op);
         Ok(())
     }
@@ -1355,6 +1300,15 @@ impl Parser<'_> {
         }
     }
 
+    /// A scoped name as a type, resolved later.
+    fn named_type(&mut self) -> PResult<IdlType> {
+        let name = self.scoped_name()?;
+        Ok(IdlType::Named {
+            name,
+            resolved: None,
+        })
+    }
+
     fn type_spec(&mut self) -> PResult<IdlType> {
         self.enter()?;
         let r = self.type_spec_inner();
@@ -1365,17 +1319,8 @@ impl Parser<'_> {
     fn type_spec_inner(&mut self) -> PResult<IdlType> {
         let word = match self.peek_tok() {
             Tok::Ident(w) => w,
-            Tok::Punct("::") => {
-                let n = self.scoped_name()?;
-                return Ok(IdlType::Named {
-                    name: n,
-                    resolved: None,
-                });
-            }
-            _ => {
-                let found = self.peek().describe();
-                return Err(self.error_here(format!("expected a type, found {found}"), ""));
-            }
+            Tok::Punct("::") => return self.named_type(),
+            _ => return Err(self.unexpected("a type", "")),
         };
         use IdlPrimitive as P;
         let prim = |p: P| Ok(IdlType::Primitive { name: p });
@@ -1391,11 +1336,7 @@ impl Parser<'_> {
                         prim(P::UnsignedLong)
                     }
                 } else {
-                    let found = self.peek().describe();
-                    Err(self.error_here(
-                        format!("expected `short` or `long` after `unsigned`, found {found}"),
-                        "",
-                    ))
+                    Err(self.unexpected("`short` or `long` after `unsigned`", ""))
                 }
             }
             "long" => {
@@ -1479,13 +1420,7 @@ impl Parser<'_> {
                 format!("a `{word}` declared inside another declaration is not supported"),
                 "declare it on its own first, then use its name",
             )),
-            _ => {
-                let n = self.scoped_name()?;
-                Ok(IdlType::Named {
-                    name: n,
-                    resolved: None,
-                })
-            }
+            _ => self.named_type(),
         }
     }
 
@@ -1500,11 +1435,7 @@ impl Parser<'_> {
             t.pos.column += 1;
             return Ok(());
         }
-        let found = self.peek().describe();
-        Err(self.error_here(
-            format!("expected `>` to close `{what}<…`, found {found}"),
-            "",
-        ))
+        Err(self.unexpected(&format!("`>` to close `{what}<…`"), ""))
     }
 
     fn bound(&mut self) -> PResult<IdlBound> {

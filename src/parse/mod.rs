@@ -45,7 +45,57 @@ mod test_support {
 }
 
 use crate::diagnostic::Diagnostic;
-use crate::model::Profile;
+use crate::model::fields::Fields;
+use crate::model::{
+    Configuration, ConfigurationDoc, Constraint, DataPort, DataPortDoc, Extras, Profile, Property,
+    ServiceInterface, ServiceInterfaceDoc, ServicePort, ServicePortDoc,
+};
+
+/// What a configuration, a data port, a service port and a service interface hold beside their
+/// scalars, as both component readers fill it: properties, a doc node and (a configuration, a
+/// data port) a constraint.
+pub(crate) trait Documented: Fields + Default {
+    type Doc: Fields + Default;
+    /// The node's name in [`Profile::written_as`] (`dataPort`).
+    const LABEL: &'static str;
+    fn parts(&mut self) -> DocParts<'_, Self::Doc>;
+}
+
+/// The parts of a [`Documented`] node.
+pub(crate) struct DocParts<'a, D> {
+    pub properties: &'a mut Vec<Property>,
+    pub doc: &'a mut Option<D>,
+    /// `None` on a node that has no constraint.
+    pub constraint: Option<&'a mut Option<Constraint>>,
+    pub extra: &'a mut Extras,
+}
+
+/// `Node: Doc, "label"` (`, constraint` when the node has one): its [`Documented`] impl.
+macro_rules! documented {
+    (@constraint $node:ident) => { None };
+    (@constraint $node:ident $field:ident) => { Some(&mut $node.$field) };
+    ($($node:ident: $doc:ident, $label:literal $(, $constraint:ident)?;)*) => {$(
+        impl Documented for $node {
+            type Doc = $doc;
+            const LABEL: &'static str = $label;
+            fn parts(&mut self) -> DocParts<'_, $doc> {
+                DocParts {
+                    properties: &mut self.properties,
+                    doc: &mut self.doc,
+                    constraint: documented!(@constraint self $($constraint)?),
+                    extra: &mut self.extra,
+                }
+            }
+        }
+    )*};
+}
+
+documented! {
+    Configuration: ConfigurationDoc, "configuration", constraint;
+    DataPort: DataPortDoc, "dataPort", constraint;
+    ServicePort: ServicePortDoc, "servicePort";
+    ServiceInterface: ServiceInterfaceDoc, "serviceInterface";
+}
 
 /// Limits that protect against hostile input.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

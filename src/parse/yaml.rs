@@ -16,7 +16,7 @@
 //! more than [`MAX_NODES`] nodes (alias bombs) as soon as the limit is passed. `serde_norway` itself stops at a nesting of 128 and after
 //! `100 × events` alias jumps; both of its errors are reported with their own codes too.
 
-use super::{Limits, Parsed};
+use super::{DocParts, Documented, Limits, Parsed};
 use crate::diagnostic::{codes, Diagnostic};
 use crate::model::fields::{Fields, Kind};
 use crate::model::*;
@@ -613,8 +613,6 @@ struct Reader<'a> {
 
 /// Keys of one node read under an older spelling: (field, key as written, position, writer).
 type Aliases = Vec<(&'static str, String, Pos, &'static str)>;
-/// The `"rtcExt::properties"`, the `"rtcDoc::doc"` and the extras of a node (a port, …).
-type DocParts<T, D> = fn(&mut T) -> (&mut Vec<Property>, &mut Option<D>, &mut Extras);
 
 /// rtc-template writes `doc` for `"rtcDoc::doc"`: recorded in `al`.
 fn doc_alias(n: &str, kp: Pos, al: &mut Aliases) {
@@ -1029,14 +1027,28 @@ impl Reader<'_> {
 
     /// A list of texts (`osVersions`, `cpus`, `"rtcExt::versionUpLogs"`).
     fn texts(&mut self, v: &Value, name: &str, pos: Pos, sink: &mut Extras) -> Vec<Text> {
+        let items = self.scalar_items(v, name, pos, sink, "a scalar");
+        items.into_iter().map(|(text, _)| text).collect()
+    }
+
+    /// The texts of a list of scalars with their positions; other items reported as `SHAPE`
+    /// (`want`: what an item should be).
+    fn scalar_items(
+        &mut self,
+        v: &Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Extras,
+        want: &str,
+    ) -> Vec<(Text, Pos)> {
         let mut out = Vec::new();
         for (i, item) in self.seq(v, name, pos, sink).iter().enumerate() {
             let p = self.loc.item();
             match untag_ref(item) {
                 Value::Mapping(_) | Value::Sequence(_) => {
-                    self.wrong_shape(&format!("{name}[{i}]"), item, p, "a scalar", sink)
+                    self.wrong_shape(&format!("{name}[{i}]"), item, p, want, sink)
                 }
-                other => out.extend(self.scalar_text(other, false)),
+                other => out.extend(self.scalar_text(other, false).map(|text| (text, p))),
             }
         }
         out
@@ -1088,15 +1100,18 @@ impl Reader<'_> {
                 }
                 "actions" => {
                     p.actions_pos = Some(kp);
-                    self.actions(v, kp, p);
+                    if let Some(m) = self.map(v, &n, kp, &mut p.extra) {
+                        self.actions(m, p);
+                    }
                 }
                 "configurationSet" => {
                     if let Some(m) = self.map(v, &n, kp, &mut p.extra) {
                         p.configuration_set = Some(self.configuration_set(m, kp));
                     }
                 }
+                // spec 2.3.7, 2.4.5/2.4.6 doc, 2.5.3 ext.
                 "dataPorts" => each_item(self, v, &n, kp, &mut p.extra, |r, m, ip| {
-                    p.data_ports.push(r.data_port(m, ip))
+                    p.data_ports.push(r.documented(m, ip, "a data port"))
                 }),
                 "servicePorts" => each_item(self, v, &n, kp, &mut p.extra, |r, m, ip| {
                     p.service_ports.push(r.service_port(m, ip))
@@ -1227,10 +1242,7 @@ impl Reader<'_> {
     }
 
     /// `actions` (spec 2.3.3/2.3.4, 2.4.3): each `onX: {implemented, "rtcDoc::doc"}` or null.
-    fn actions(&mut self, v: &Value, pos: Pos, p: &mut Profile) {
-        let Some(m) = self.map(v, "actions", pos, &mut p.extra) else {
-            return;
-        };
+    fn actions(&mut self, m: &Mapping, p: &mut Profile) {
         for (k, v) in m {
             let (n, kp) = self.key(k);
             let Some(kind) = ActionKind::from_yaml_name(&n) else {
@@ -1277,54 +1289,32 @@ impl Reader<'_> {
                 self.unknown(&n, v, kp, "configurationSet", &mut cs.extra);
                 continue;
             }
+            // A configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
             each_item(self, v, &n, kp, &mut cs.extra, |r, m, ip| {
-                cs.configurations.push(r.configuration(m, ip))
+                cs.configurations
+                    .push(r.documented(m, ip, "a configuration"))
             });
         }
         cs
     }
 
-    /// A configuration parameter (spec 2.3.6, 2.4.4 doc, 2.5.2 ext).
-    fn configuration(&mut self, m: &Mapping, pos: Pos) -> Configuration {
-        self.documented(
-            m,
-            pos,
-            "a configuration",
-            "configuration",
-            |c| (&mut c.properties, &mut c.doc, &mut c.extra),
-            |r, n, v, kp, c| r.constraint_key(n, v, kp, &mut c.constraint, &mut c.extra),
-        )
-    }
-
-    /// A data port (spec 2.3.7, 2.4.5/2.4.6 doc, 2.5.3 ext).
-    fn data_port(&mut self, m: &Mapping, pos: Pos) -> DataPort {
-        self.documented(
-            m,
-            pos,
-            "a data port",
-            "dataPort",
-            |d| (&mut d.properties, &mut d.doc, &mut d.extra),
-            |r, n, v, kp, d| r.constraint_key(n, v, kp, &mut d.constraint, &mut d.extra),
-        )
-    }
-
     /// A service port (spec 2.3.8, 2.4.7 doc, 2.5.4 ext).
     fn service_port(&mut self, m: &Mapping, pos: Pos) -> ServicePort {
-        self.documented(
+        self.documented_with(
             m,
             pos,
             "a service port",
-            "servicePort",
-            |s| (&mut s.properties, &mut s.doc, &mut s.extra),
-            |r, n, v, kp, s| {
+            |r, n, v, kp, s: &mut ServicePort| {
                 let x = &mut s.extra;
                 match n {
                     "transMethod" | "transMethods" => each_item(r, v, n, kp, x, |r, m, ip| {
                         s.trans_methods.push(r.leaf(m, ip, "a transMethod"))
                     }),
+                    // A service interface (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
                     "serviceInterface" | "serviceInterfaces" => {
                         each_item(r, v, n, kp, x, |r, m, ip| {
-                            s.interfaces.push(r.service_interface(m, ip))
+                            s.interfaces
+                                .push(r.documented(m, ip, "a service interface"))
                         })
                     }
                     _ => return false,
@@ -1334,66 +1324,47 @@ impl Reader<'_> {
         )
     }
 
-    /// A service interface (spec 2.3.9, 2.4.8 doc, 2.5.5 ext).
-    fn service_interface(&mut self, m: &Mapping, pos: Pos) -> ServiceInterface {
-        self.documented(
-            m,
-            pos,
-            "a service interface",
-            "serviceInterface",
-            |i| (&mut i.properties, &mut i.doc, &mut i.extra),
-            |_, _, _, _, _| false,
-        )
+    /// Reads mapping `m` (at `pos`) as the [`Documented`] node `T`: its scalars by the field
+    /// table, `"rtcExt::properties"`, `"rtcDoc::doc"` and (where `T` has one) `constraint`; any
+    /// other key unknown in `place` (`a data port`). Its older spellings are recorded as
+    /// `label name` (`dataPort out`).
+    fn documented<T: Documented>(&mut self, m: &Mapping, pos: Pos, place: &str) -> T {
+        self.documented_with(m, pos, place, |_, _, _, _, _| false)
     }
 
-    /// Key `n` when it is `constraint` (of a configuration or a data port): read into `slot`.
-    fn constraint_key(
-        &mut self,
-        n: &str,
-        v: &Value,
-        kp: Pos,
-        slot: &mut Option<Constraint>,
-        x: &mut Extras,
-    ) -> bool {
-        let constraint = n == "constraint";
-        if constraint {
-            *slot = self.constraint_root(v, kp, x);
-        }
-        constraint
-    }
-
-    /// Reads mapping `m` (at `pos`) as the node `T` of the field table that holds
-    /// `"rtcExt::properties"` and an `"rtcDoc::doc"` (given by `parts` with its extras) beside
-    /// its scalars; any other key by `other` (false: unknown in `place`, `a data port`). Its
-    /// older spellings are recorded as `label name` (`dataPort out`).
-    fn documented<T: Fields + Default, D: Fields + Default>(
+    /// [`Reader::documented`], with any other key read by `other` first (false: not its own).
+    fn documented_with<T: Documented>(
         &mut self,
         m: &Mapping,
         pos: Pos,
         place: &str,
-        label: &str,
-        parts: DocParts<T, D>,
         mut other: impl FnMut(&mut Self, &str, &Value, Pos, &mut T) -> bool,
     ) -> T {
         let (t, al) = self.node(m, pos, |r, n, v, kp, t: &mut T| {
             if other(r, n, v, kp, t) {
                 return;
             }
-            let (properties, doc, x) = parts(t);
-            match n {
-                "rtcExt::property" | "rtcExt::properties" => {
+            let DocParts {
+                properties,
+                doc,
+                constraint,
+                extra: x,
+            } = t.parts();
+            match (n, constraint) {
+                ("rtcExt::property" | "rtcExt::properties", _) => {
                     *properties = r.properties(v, n, kp, x)
                 }
-                "rtcDoc::doc" | "doc" => {
+                ("rtcDoc::doc" | "doc", _) => {
                     *doc = r.doc(v, n, kp, x, &format!("{place}'s rtcDoc::doc"))
                 }
+                ("constraint", Some(slot)) => *slot = r.constraint_value(v, n, kp, x),
                 _ => r.unknown(n, v, kp, place, x),
             }
         });
         let name = T::NODE
             .json_field("name")
             .and_then(|f| t.value(f)?.as_deref());
-        self.flush(&format!("{label} {}", name.unwrap_or("")), al);
+        self.flush(&format!("{} {}", T::LABEL, name.unwrap_or("")), al);
         t
     }
 
@@ -1404,27 +1375,15 @@ impl Reader<'_> {
 
     /// `language` (spec 2.3.12) with `"rtcExt::targets"` (2.5.6–2.5.8).
     fn language(&mut self, m: &Mapping, pos: Pos) -> Language {
-        let mut l = Language {
-            pos,
-            ..Language::default()
-        };
-        for (k, v) in m {
-            let (n, kp) = self.key(k);
-            if self.scalar(&mut l, &n, v, kp, &mut Aliases::new()) {
-                continue;
+        let (l, _) = self.node(m, pos, |r, n, v, kp, l: &mut Language| match n {
+            "rtcExt::targets" | "rtcExt::target" => {
+                each_item(r, v, n, kp, &mut l.extra, |r, m, ip| {
+                    l.targets.push(r.target(m, ip))
+                })
             }
-            match n.as_str() {
-                "rtcExt::targets" | "rtcExt::target" => {
-                    each_item(self, v, &n, kp, &mut l.extra, |r, m, ip| {
-                        l.targets.push(r.target(m, ip))
-                    })
-                }
-                k if super::dialect::language_element(k).is_some() => {
-                    self.language_element(&n, v, kp, &mut l)
-                }
-                _ => self.unknown(&n, v, kp, "language", &mut l.extra),
-            }
-        }
+            k if super::dialect::language_element(k).is_some() => r.language_element(n, v, kp, l),
+            _ => r.unknown(n, v, kp, "language", &mut l.extra),
+        });
         l
     }
 
@@ -1446,47 +1405,23 @@ impl Reader<'_> {
         let Some(m) = self.map(v, n, kp, &mut l.extra) else {
             return;
         };
-        let mut t = Target {
-            pos: kp,
-            ..Target::default()
-        };
-        for (k, v) in m {
-            let (kn, kp) = self.key(k);
-            if self.scalar(&mut t, &kn, v, kp, &mut Aliases::new()) {
-                continue;
-            }
+        let (t, _) = self.node(m, kp, |r, n, v, kp, t: &mut Target| {
             let x = &mut t.extra;
-            match kn.as_str() {
-                "arch" | "cpus" => t.cpus.extend(self.texts_or_text(v, &kn, kp, x)),
-                "osVersion" | "osVersions" => {
-                    t.os_versions.extend(self.texts_or_text(v, &kn, kp, x))
-                }
+            match n {
+                "arch" | "cpus" => t.cpus.extend(r.texts_or_text(v, n, kp, x)),
+                "osVersion" | "osVersions" => t.os_versions.extend(r.texts_or_text(v, n, kp, x)),
                 "library" | "libraries" => {
-                    for (idx, it) in self.seq(v, &kn, kp, x).iter().enumerate() {
-                        let p = self.loc.item();
-                        match untag_ref(it) {
-                            Value::Mapping(_) | Value::Sequence(_) => self.wrong_shape(
-                                &format!("{kn}[{idx}]"),
-                                it,
-                                p,
-                                "a library name",
-                                &mut t.extra,
-                            ),
-                            other => {
-                                if let Some(name) = self.scalar_text(other, false) {
-                                    t.libraries.push(Library {
-                                        name: Some(name),
-                                        pos: p,
-                                        ..Library::default()
-                                    });
-                                }
-                            }
-                        }
-                    }
+                    let names = r.scalar_items(v, n, kp, x, "a library name");
+                    t.libraries
+                        .extend(names.into_iter().map(|(name, pos)| Library {
+                            name: Some(name),
+                            pos,
+                            ..Library::default()
+                        }))
                 }
-                _ => self.unknown(&kn, v, kp, "a language target", x),
+                _ => r.unknown(n, v, kp, "a language target", x),
             }
-        }
+        });
         l.targets.push(t);
     }
 
@@ -1503,42 +1438,31 @@ impl Reader<'_> {
     }
 
     fn target(&mut self, m: &Mapping, pos: Pos) -> Target {
-        let mut t = Target {
-            pos,
-            ..Target::default()
-        };
-        for (k, v) in m {
-            let (n, kp) = self.key(k);
-            if self.scalar(&mut t, &n, v, kp, &mut Aliases::new()) {
-                continue;
-            }
+        let (t, _) = self.node(m, pos, |r, n, v, kp, t: &mut Target| {
             let x = &mut t.extra;
-            match n.as_str() {
-                "osVersions" => t.os_versions = self.texts(v, &n, kp, x),
-                "cpus" => t.cpus = self.texts(v, &n, kp, x),
-                "libraries" => {
-                    for (idx, it) in self.seq(v, &n, kp, x).iter().enumerate() {
-                        let Some((m, ip)) = self.map_item(it, &n, idx, x) else {
-                            continue;
-                        };
-                        let mut lib = Library {
-                            pos: ip,
-                            ..Library::default()
-                        };
-                        self.scalars(m, &mut lib, "a library");
-                        t.libraries.push(lib);
-                    }
-                }
-                _ => self.unknown(&n, v, kp, "a target", x),
+            match n {
+                "osVersions" => t.os_versions = r.texts(v, n, kp, x),
+                "cpus" => t.cpus = r.texts(v, n, kp, x),
+                "libraries" => each_item(r, v, n, kp, x, |r, m, ip| {
+                    t.libraries.push(r.leaf(m, ip, "a library"))
+                }),
+                _ => r.unknown(n, v, kp, "a target", x),
             }
-        }
+        });
         t
     }
 
     // -- Constraints (spec 2.3.17–2.3.41, chapter 7 `constraintRoot`, samples 8.2) ----------
 
-    /// The value of a `constraint:` key.
-    fn constraint_root(&mut self, v: &Value, pos: Pos, sink: &mut Extras) -> Option<Constraint> {
+    /// The value of a `constraint:` key (`name`) or of a `not:` operand: a constraint, empty
+    /// for null.
+    fn constraint_value(
+        &mut self,
+        v: &Value,
+        name: &str,
+        pos: Pos,
+        sink: &mut Extras,
+    ) -> Option<Constraint> {
         match untag_ref(v) {
             Value::Null => Some(Constraint {
                 kind: ConstraintKind::Empty,
@@ -1547,7 +1471,7 @@ impl Reader<'_> {
             }),
             Value::Mapping(m) => Some(self.constraint_node(m, pos)),
             _ => {
-                self.wrong_shape("constraint", v, pos, "a mapping", sink);
+                self.wrong_shape(name, v, pos, "a mapping", sink);
                 None
             }
         }
@@ -1724,21 +1648,9 @@ impl Reader<'_> {
         sink: &mut Extras,
     ) -> Option<Condition> {
         match op {
-            Op::Not => {
-                let operand = match untag_ref(v) {
-                    Value::Mapping(m) => self.constraint_node(m, pos),
-                    Value::Null => Constraint {
-                        kind: ConstraintKind::Empty,
-                        pos,
-                        extra: crate::model::Extras::new(),
-                    },
-                    _ => {
-                        self.wrong_shape(name, v, pos, "a mapping", sink);
-                        return None;
-                    }
-                };
-                Some(Condition::Not { operand })
-            }
+            Op::Not => Some(Condition::Not {
+                operand: self.constraint_value(v, name, pos, sink)?,
+            }),
             Op::And => Some(Condition::And {
                 operands: self.constraint_items(v, name, pos, sink),
             }),
@@ -1756,16 +1668,8 @@ impl Reader<'_> {
                 }),
             },
             Op::Compare(comparison) => {
-                let m = self.op_map(v, name, pos, sink)?;
-                let (mut literal, mut match_case) = (None, None);
-                for (k, v) in m {
-                    let (n, kp) = self.key(k);
-                    match n.as_str() {
-                        "literal" => literal = self.text(v, &n, kp, sink),
-                        "matchCase" => match_case = self.text(v, &n, kp, sink),
-                        _ => self.unknown(&n, v, kp, name, sink),
-                    }
-                }
+                let [literal, match_case] =
+                    self.operands(v, name, pos, sink, [&["literal"], &["matchCase"]])?;
                 Some(Condition::Compare {
                     comparison,
                     literal,
@@ -1773,22 +1677,15 @@ impl Reader<'_> {
                 })
             }
             Op::Like => {
-                let m = self.op_map(v, name, pos, sink)?;
-                let (mut literal, mut wild_card, mut single_char, mut escape_char) =
-                    (None, None, None, None);
-                for (k, v) in m {
-                    let (n, kp) = self.key(k);
-                    match n.as_str() {
-                        "literal" => literal = self.text(v, &n, kp, sink),
-                        // XSD `wildCard`, YAML 8.2 `wildcard`, PIM `wildChar` (NOTES).
-                        "wildCard" | "wildcard" | "wildChar" => {
-                            wild_card = self.text(v, &n, kp, sink)
-                        }
-                        "singleChar" => single_char = self.text(v, &n, kp, sink),
-                        "escapeChar" => escape_char = self.text(v, &n, kp, sink),
-                        _ => self.unknown(&n, v, kp, name, sink),
-                    }
-                }
+                let keys: [&[&str]; 4] = [
+                    &["literal"],
+                    // XSD `wildCard`, YAML 8.2 `wildcard`, PIM `wildChar` (NOTES).
+                    &["wildCard", "wildcard", "wildChar"],
+                    &["singleChar"],
+                    &["escapeChar"],
+                ];
+                let [literal, wild_card, single_char, escape_char] =
+                    self.operands(v, name, pos, sink, keys)?;
                 Some(Condition::Like {
                     literal,
                     wild_card,
@@ -1797,36 +1694,37 @@ impl Reader<'_> {
                 })
             }
             Op::Between => {
-                let m = self.op_map(v, name, pos, sink)?;
-                let (mut lower, mut upper) = (None, None);
-                for (k, v) in m {
-                    let (n, kp) = self.key(k);
-                    match n.as_str() {
-                        "lowerBoundary" => lower = self.text(v, &n, kp, sink),
-                        "upperBoundary" => upper = self.text(v, &n, kp, sink),
-                        _ => self.unknown(&n, v, kp, name, sink),
-                    }
-                }
+                let keys: [&[&str]; 2] = [&["lowerBoundary"], &["upperBoundary"]];
+                let [lower, upper] = self.operands(v, name, pos, sink, keys)?;
                 Some(Condition::Between { lower, upper })
             }
         }
     }
 
-    fn op_map<'v>(
+    /// The texts of an operator's mapping `v` (null: none), one for each slot of `keys` (the
+    /// spellings of its key); any other key unknown in `name`.
+    fn operands<const N: usize>(
         &mut self,
-        v: &'v Value,
+        v: &Value,
         name: &str,
         pos: Pos,
         sink: &mut Extras,
-    ) -> Option<&'v Mapping> {
-        static EMPTY: std::sync::OnceLock<Mapping> = std::sync::OnceLock::new();
-        match untag_ref(v) {
-            Value::Mapping(m) => Some(m),
-            Value::Null => Some(EMPTY.get_or_init(Mapping::new)),
-            _ => {
-                self.wrong_shape(name, v, pos, "a mapping", sink);
-                None
+        keys: [&[&str]; N],
+    ) -> Option<[Option<Text>; N]> {
+        let mut texts = std::array::from_fn(|_| None);
+        if let Value::Null = untag_ref(v) {
+            return Some(texts);
+        }
+        for (k, v) in self.map(v, name, pos, sink)? {
+            let (n, kp) = self.key(k);
+            match keys
+                .iter()
+                .position(|spellings| spellings.contains(&n.as_str()))
+            {
+                Some(i) => texts[i] = self.text(v, &n, kp, sink),
+                None => self.unknown(&n, v, kp, name, sink),
             }
         }
+        Some(texts)
     }
 }

@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::model::fields::Fields;
+use crate::parse::Documented;
 // ---------------------------------------------------------------------------------------------
 // Pass 3: tree → model
 // ---------------------------------------------------------------------------------------------
@@ -395,33 +396,46 @@ pub(super) fn map_configuration_set(m: &mut Mapper, n: &Node) -> ConfigurationSe
     cs
 }
 
-/// spec 2.3.6 `configuration`, 2.4.4 doc, 2.5.2 ext.
-pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
-    let on = "configuration";
-    let (cf, aliases) = map_node(m, n, on, |m, c, cf: &mut Configuration, extra| {
-        match c.key() {
-            Some("Doc") => m.doc(&mut cf.doc, c, on, extra),
-            Some("Properties") => cf.properties.push(map_leaf(m, c, "property")),
-            Some("Constraint") => m.once(&mut cf.constraint, c, on, extra, map_constraint),
+/// Node `n` as the [`Documented`] node `T` (named `on` in messages): its scalars by the field
+/// table, the children all of them have (`Doc`, `Properties`, and `Constraint` where `T` has
+/// one), any other child by `other` (false: unknown).
+fn map_documented<'n, 't, T: Documented>(
+    m: &mut Mapper,
+    n: &'n Node<'t>,
+    on: &str,
+    mut other: impl FnMut(&mut Mapper, &'n Node<'t>, &mut T) -> bool,
+) -> T {
+    let (t, aliases) = map_node(m, n, on, |m, c, t: &mut T, extra| {
+        if other(m, c, t) {
+            return;
+        }
+        let parts = t.parts();
+        match (c.key(), parts.constraint) {
+            (Some("Doc"), _) => m.doc(parts.doc, c, on, extra),
+            (Some("Properties"), _) => parts.properties.push(map_leaf(m, c, "property")),
+            (Some("Constraint"), Some(slot)) => m.once(slot, c, on, extra, map_constraint),
             _ => m.unknown_elem(c, on, extra),
         }
     });
-    m.aliases("configuration", &cf.name, aliases);
-    cf
+    let name = T::NODE.json_field("name").and_then(|f| t.value(f));
+    m.aliases(T::LABEL, name.unwrap_or(&None), aliases);
+    t
+}
+
+/// spec 2.3.6 `configuration`, 2.4.4 doc, 2.5.2 ext.
+pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
+    map_documented(m, n, "configuration", |_, _, _| false)
 }
 
 /// spec 2.3.7 `dataport`, 2.4.5 doc, 2.5.3 ext; FSM `EventPort`s carry `Event` children.
 pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
-    let on = "data port";
-    let (d, aliases) = map_node(m, n, on, |m, c, d: &mut DataPort, extra| match c.key() {
-        Some("Doc") => m.doc(&mut d.doc, c, on, extra),
-        Some("Properties") => d.properties.push(map_leaf(m, c, "property")),
-        Some("Constraint") => m.once(&mut d.constraint, c, on, extra, map_constraint),
-        Some("Event") => d.events.push(map_event(m, c)),
-        _ => m.unknown_elem(c, on, extra),
-    });
-    m.aliases("dataPort", &d.name, aliases);
-    d
+    map_documented(m, n, "data port", |m, c, d: &mut DataPort| {
+        let event = c.key() == Some("Event");
+        if event {
+            d.events.push(map_event(m, c));
+        }
+        event
+    })
 }
 
 /// An FSM event of an `EventPort` (RTCBuilder 2.x; not in spec v0.2); its doc is a data port
@@ -438,28 +452,19 @@ pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
 /// spec 2.3.8 `serviceport`, 2.4.7 doc, 2.5.4 ext, 2.3.10 `transmission_method`.
 pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
     let on = "service port";
-    let (s, _) = map_node(m, n, on, |m, c, s: &mut ServicePort, extra| match c.key() {
-        Some("Doc") => m.doc(&mut s.doc, c, on, extra),
-        Some("Properties") => s.properties.push(map_leaf(m, c, "property")),
-        Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
-        Some("TransMethods") => s.trans_methods.push(map_leaf(m, c, "transmission method")),
-        _ => m.unknown_elem(c, on, extra),
-    });
-    s
+    map_documented(m, n, on, |m, c, s: &mut ServicePort| {
+        match c.key() {
+            Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
+            Some("TransMethods") => s.trans_methods.push(map_leaf(m, c, "transmission method")),
+            _ => return false,
+        }
+        true
+    })
 }
 
 /// spec 2.3.9 `serviceinterface`, 2.4.8 doc, 2.5.5 ext.
 pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
-    let on = "service interface";
-    let (s, aliases) = map_node(m, n, on, |m, c, s: &mut ServiceInterface, extra| {
-        match c.key() {
-            Some("Doc") => m.doc(&mut s.doc, c, on, extra),
-            Some("Properties") => s.properties.push(map_leaf(m, c, "property")),
-            _ => m.unknown_elem(c, on, extra),
-        }
-    });
-    m.aliases("serviceInterface", &s.name, aliases);
-    s
+    map_documented(m, n, "service interface", |_, _, _| false)
 }
 
 /// spec 2.3.11 `parameter`.
