@@ -79,34 +79,20 @@ fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
     }
     out.push(lower(run));
     // camelCase / digit boundaries: UsbCamera → usb, camera (only when there are two parts
-    // or more). For ASCII the byte tests are the character tests.
+    // or more).
     let mut part_start = 0;
-    if run.is_ascii() {
-        let b = run.as_bytes();
-        for i in 1..b.len() {
-            let (p, c) = (b[i - 1], b[i]);
-            let boundary = (p.is_ascii_lowercase() && c.is_ascii_uppercase())
-                || (p.is_ascii_alphabetic() && c.is_ascii_digit())
-                || (p.is_ascii_digit() && c.is_ascii_alphabetic());
+    let mut prev: Option<char> = None;
+    for (i, c) in run.char_indices() {
+        if let Some(p) = prev {
+            let boundary = (p.is_lowercase() && c.is_uppercase())
+                || (p.is_alphabetic() && c.is_ascii_digit())
+                || (p.is_ascii_digit() && c.is_alphabetic());
             if boundary {
                 out.push(lower(&run[part_start..i]));
                 part_start = i;
             }
         }
-    } else {
-        let mut prev: Option<char> = None;
-        for (i, c) in run.char_indices() {
-            if let Some(p) = prev {
-                let boundary = (p.is_lowercase() && c.is_uppercase())
-                    || (p.is_alphabetic() && c.is_ascii_digit())
-                    || (p.is_ascii_digit() && c.is_alphabetic());
-                if boundary {
-                    out.push(lower(&run[part_start..i]));
-                    part_start = i;
-                }
-            }
-            prev = Some(c);
-        }
+        prev = Some(c);
     }
     if part_start > 0 {
         out.push(lower(&run[part_start..]));
