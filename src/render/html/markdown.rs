@@ -60,13 +60,6 @@ fn prose_html(text: &str) -> Option<String> {
             b.get(i + 1)
                 .is_some_and(|c| *c == b' ' || c.is_ascii_digit())
         };
-        if line.char_indices().any(|(i, c)| {
-            c.is_control()
-                || matches!(c, '\\' | '`' | '*' | '[' | ']' | '!' | '|')
-                || (matches!(c, '<' | '&') && !literal(i))
-        }) {
-            return None;
-        }
         // `_` between two ASCII letters or digits (`image_width`) can neither open nor close
         // emphasis; anywhere else it might.
         let inert = |i: usize| {
@@ -74,7 +67,16 @@ fn prose_html(text: &str) -> Option<String> {
                 && b[i - 1].is_ascii_alphanumeric()
                 && b.get(i + 1).is_some_and(u8::is_ascii_alphanumeric)
         };
-        if (0..b.len()).any(|i| b[i] == b'_' && !inert(i)) {
+        // One pass over the bytes: control characters (C0, DEL, and C1 as C2 80–9F), the
+        // characters Markdown reads specially, and `<`, `&` and `_` where they might be.
+        let special = (0..b.len()).any(|i| match b[i] {
+            0..=0x1f | 0x7f | b'\\' | b'`' | b'*' | b'[' | b']' | b'!' | b'|' => true,
+            b'<' | b'&' => !literal(i),
+            b'_' => !inert(i),
+            0xc2 => b.get(i + 1).is_some_and(|n| (0x80..=0x9f).contains(n)),
+            _ => false,
+        });
+        if special {
             return None;
         }
         if i > 0 {
