@@ -1580,29 +1580,42 @@ impl Catalog {
 
     /// Computes [`Catalog::pages`] from the entries and their slugs.
     fn index_pages(&mut self) {
-        let site = |kind, stem: &str| Page {
-            kind,
-            id: String::new(),
-            stem: stem.to_string(),
-            title: String::new(),
-        };
+        use PageKind as K;
+        fn site(kind: PageKind, stem: &str) -> Page {
+            Page {
+                kind,
+                id: String::new(),
+                stem: stem.to_string(),
+                title: String::new(),
+            }
+        }
         let mut pages = vec![
-            site(PageKind::Index, "index"),
-            site(PageKind::Search, "search"),
-            site(PageKind::Diagnostics, "diagnostics"),
-            site(PageKind::NotFound, "404"),
-            site(PageKind::DataFlow, "dataflow"),
+            site(K::Index, "index"),
+            site(K::Search, "search"),
+            site(K::Diagnostics, "diagnostics"),
+            site(K::NotFound, "404"),
+            site(K::DataFlow, "dataflow"),
         ];
-        // One kind of entry: its index page (when it has one), then a page per entry, as
-        // (id, slug, title) in the entries' order; gives where the entries' pages start.
+        // One kind of entry: its index page (when it has one and `with_index`), then a page
+        // per entry, as (id, slug, title) in the entries' order, in the kind's directory;
+        // gives where the entries' pages start.
         fn section<'a>(
             pages: &mut Vec<Page>,
-            index: Option<Page>,
             kind: PageKind,
-            dir: &str,
+            with_index: bool,
             entries: impl Iterator<Item = (&'a str, &'a str, std::borrow::Cow<'a, str>)>,
         ) -> usize {
-            pages.extend(index);
+            let (dir, index) = match kind {
+                K::Component => ("components", None),
+                K::DataType => ("types", Some(K::DataTypes)),
+                K::Interface => ("interfaces", Some(K::Interfaces)),
+                K::Category => ("categories", Some(K::Categories)),
+                K::Vendor => ("vendors", Some(K::Vendors)),
+                K::System => ("systems", Some(K::Systems)),
+                _ => unreachable!("{kind:?} pages are not entry pages"),
+            };
+            let index = index.filter(|_| with_index);
+            pages.extend(index.map(|index| site(index, &format!("{dir}/index"))));
             let start = pages.len();
             pages.extend(entries.map(|(id, slug, title)| Page {
                 kind,
@@ -1618,50 +1631,30 @@ impl Catalog {
         fn type_entry<U>(t: &TypeEntry<U>) -> (&str, &str, std::borrow::Cow<'_, str>) {
             (&t.name, &t.slug, t.name.as_str().into())
         }
+        let p = &mut pages;
         let mut starts = PageStarts {
             history: Vec::new(),
             component: section(
-                &mut pages,
-                None,
-                PageKind::Component,
-                "components",
+                p,
+                K::Component,
+                false,
                 self.components
                     .iter()
                     .map(|c| (&*c.id, c.slug.as_str(), c.display_name())),
             ),
-            data_type: section(
-                &mut pages,
-                Some(site(PageKind::DataTypes, "types/index")),
-                PageKind::DataType,
-                "types",
-                self.data_types.iter().map(type_entry),
-            ),
+            data_type: section(p, K::DataType, true, self.data_types.iter().map(type_entry)),
             interface: section(
-                &mut pages,
-                Some(site(PageKind::Interfaces, "interfaces/index")),
-                PageKind::Interface,
-                "interfaces",
+                p,
+                K::Interface,
+                true,
                 self.interfaces.iter().map(type_entry),
             ),
-            category: section(
-                &mut pages,
-                Some(site(PageKind::Categories, "categories/index")),
-                PageKind::Category,
-                "categories",
-                self.categories.iter().map(facet),
-            ),
-            vendor: section(
-                &mut pages,
-                Some(site(PageKind::Vendors, "vendors/index")),
-                PageKind::Vendor,
-                "vendors",
-                self.vendors.iter().map(facet),
-            ),
+            category: section(p, K::Category, true, self.categories.iter().map(facet)),
+            vendor: section(p, K::Vendor, true, self.vendors.iter().map(facet)),
             system: section(
-                &mut pages,
-                (!self.systems.is_empty()).then(|| site(PageKind::Systems, "systems/index")),
-                PageKind::System,
-                "systems",
+                p,
+                K::System,
+                !self.systems.is_empty(),
                 self.systems
                     .iter()
                     .map(|s| (s.source.as_str(), s.slug.as_str(), s.profile.name().into())),
@@ -1671,7 +1664,7 @@ impl Catalog {
         // history, under `history/` (one folder down, as every entry page).
         let mut history = vec![None; self.components.len()];
         if self.components.iter().any(|c| !c.history.is_empty()) {
-            pages.push(site(PageKind::WhatsNew, "whats-new"));
+            pages.push(site(K::WhatsNew, "whats-new"));
             for (ci, c) in self.components.iter().enumerate() {
                 if !c.history.is_empty() {
                     history[ci] = Some(pages.len());

@@ -24,10 +24,10 @@
 //! through [`text`] (every Doxygen metacharacter backslash-escaped, line breaks as `<br>`, never
 //! a raw newline, so no profile line can start a Doxygen list), page titles through [`title`].
 
-use super::text::{component_cols, component_sections, facets_of_each, Markup};
+use super::text::{component_sections, component_table, facets_of_each, Markup};
 use super::text::{facet_index_page, facet_page, systems_index_page, type_index_page, type_page};
 use super::view::component::component_view;
-use super::view::facets::{facet_index_view, facet_view, FacetKind};
+use super::view::facets::{component_rows, facet_index_view, facet_view, FacetKind};
 use super::view::front::{front_view, systems_index_view};
 use super::view::types::{entry_view, type_index_view, TypeKind};
 use super::view::Linked;
@@ -36,7 +36,6 @@ use crate::catalog::{
     Catalog, Component, ComponentIx, Ix, Output, Page, PageKind, PerEntry, SystemIx,
 };
 use crate::i18n::Lang;
-use crate::model::{self};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -176,10 +175,6 @@ fn target(cat: &Catalog, to: &Page) -> String {
 /// `\ref label "text"` with escaped text.
 fn refer(label: &str, text_: &str) -> String {
     format!("\\ref {label} \"{}\"", text(text_))
-}
-
-fn opt(s: &Option<crate::model::Text>) -> String {
-    model::non_empty(s).map(text).unwrap_or_default()
 }
 
 /// Doxygen syntax for the shared [`super::text`] helpers.
@@ -348,11 +343,6 @@ fn home(cat: &Catalog) -> String {
     target(cat, cat.site_page(PageKind::Index))
 }
 
-/// `\ref` to component `ci`'s page (to its `anchor` if given) from page `from`.
-fn component_ref(cat: &Catalog, from: &Page, ci: ComponentIx, anchor: Option<&str>) -> String {
-    cat.href(from, cat.component_page(ci), anchor, DOX)
-}
-
 /// The line under an entry page's title: the front page › the index of `kind`.
 fn crumbs(out: &mut String, cat: &Catalog, kind: PageKind) {
     d!(
@@ -395,29 +385,6 @@ fn system_page(cat: &Catalog, si: SystemIx, lang: Lang, site: (bool, Option<&str
     out
 }
 
-/// Component rows on page `from`; the first cell is `\subpage` on category pages, `\ref`
-/// elsewhere.
-fn component_rows(
-    cat: &Catalog,
-    from: &Page,
-    members: &[ComponentIx],
-    command: &str,
-) -> Vec<Vec<String>> {
-    members
-        .iter()
-        .map(|&ci| {
-            let c = &cat[ci];
-            let b = &c.profile.basic_info;
-            vec![
-                format!("\\{command} {}", component_ref(cat, from, ci, None)),
-                opt(&b.description),
-                opt(&b.vendor),
-                opt(&b.version),
-            ]
-        })
-        .collect()
-}
-
 /// `index.dox` (`\\mainpage`) from the front page's view: the counts, every category and
 /// index as a subpage (the page tree), then every component by category.
 fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
@@ -457,11 +424,8 @@ fn mainpage(cat: &Catalog, site_title: &str, lang: Lang) -> String {
             title(&g.name)
         );
         d!(out);
-        table(
-            &mut out,
-            &component_cols(lang),
-            &component_rows(cat, page, &g.members, "ref"),
-        );
+        let rows = component_rows(cat, g.members.iter().copied());
+        component_table::<Dox>(&mut out, cat, page, &rows, false, lang);
     }
     out
 }

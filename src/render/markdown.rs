@@ -18,10 +18,10 @@
 //! depend on a Markdown engine's heading-id rules. All profile text goes through [`inline`] or
 //! [`block`]: it can neither break a table nor inject HTML, links, images or mdBook directives.
 
-use super::text::{component_cols, component_sections, facets_of_each, Markup};
+use super::text::{component_sections, component_table, facets_of_each, Markup};
 use super::text::{facet_index_page, facet_page, systems_index_page, type_index_page, type_page};
 use super::view::component::component_view;
-use super::view::facets::{facet_index_view, facet_view, FacetKind};
+use super::view::facets::{component_rows, facet_index_view, facet_view, FacetKind};
 use super::view::front::{front_view, systems_index_view};
 use super::view::types::{entry_view, type_index_view, TypeKind};
 use super::view::Linked;
@@ -31,7 +31,6 @@ use crate::catalog::{
     Catalog, Component, ComponentIx, Ix, Output, Page, PageKind, PerEntry, SystemIx,
 };
 use crate::i18n::Lang;
-use crate::model::{self};
 use crate::output::Sink;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -287,15 +286,6 @@ fn heading(out: &mut String, level: usize, anchor: &str, text: &str) {
     w!(out);
 }
 
-fn opt(s: &Option<crate::model::Text>) -> String {
-    model::non_empty(s).map(inline).unwrap_or_default()
-}
-
-/// The link on page `from` to component `ci`'s page (to its `anchor` if given).
-fn component_href(cat: &Catalog, from: &Page, ci: ComponentIx, anchor: Option<&str>) -> String {
-    cat.href(from, cat.component_page(ci), anchor, MD)
-}
-
 fn component_page(
     cat: &Catalog,
     ci: ComponentIx,
@@ -384,23 +374,6 @@ fn readme_block(html: &str) -> String {
     out
 }
 
-/// The rows of a component list on page `from`.
-fn component_rows(cat: &Catalog, from: &Page, members: &[ComponentIx]) -> Vec<Vec<String>> {
-    members
-        .iter()
-        .map(|&ci| {
-            let c = &cat[ci];
-            let b = &c.profile.basic_info;
-            vec![
-                link(&c.display_name(), &component_href(cat, from, ci, None)),
-                opt(&b.description),
-                opt(&b.vendor),
-                opt(&b.version),
-            ]
-        })
-        .collect()
-}
-
 /// `index.md` from the front page's view: the counts with the indexes linked, the systems,
 /// data-flow and What's new pages, then every component by category.
 fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
@@ -441,11 +414,8 @@ fn index_page(cat: &Catalog, title: &str, lang: Lang) -> String {
             link(&g.name, &cat.href(page, g.page, None, MD))
         );
         w!(out);
-        table(
-            &mut out,
-            &component_cols(lang),
-            &component_rows(cat, page, &g.members),
-        );
+        let rows = component_rows(cat, g.members.iter().copied());
+        component_table::<Md>(&mut out, cat, page, &rows, false, lang);
     }
     out
 }

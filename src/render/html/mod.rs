@@ -264,8 +264,10 @@ struct PortTypeRef {
     href: Option<String>,
 }
 
+/// The cells a data port row and a service interface row share, flattened into each row's
+/// template context (`p.anchor`, `p.name`, …).
 #[derive(Serialize)]
-struct DataPortRow {
+struct PortCells {
     anchor: String,
     /// "since 1.1.0": the version that added it ([`view::component::DataPortView::since`]).
     since: Option<String>,
@@ -273,6 +275,12 @@ struct DataPortRow {
     dir_class: &'static str,
     name: String,
     type_ref: Option<PortTypeRef>,
+}
+
+#[derive(Serialize)]
+struct DataPortRow {
+    #[serde(flatten)]
+    port: PortCells,
     unit: String,
     details: Vec<Field>,
     events: Vec<EventRow>,
@@ -297,12 +305,8 @@ struct ServicePortRow {
 
 #[derive(Serialize)]
 struct InterfaceRow {
-    anchor: String,
-    since: Option<String>,
-    direction: String,
-    dir_class: &'static str,
-    name: String,
-    type_ref: Option<PortTypeRef>,
+    #[serde(flatten)]
+    port: PortCells,
     details: Vec<Field>,
     peers: Vec<Link>,
     peers_more: Option<Link>,
@@ -337,18 +341,21 @@ struct Columns {
 impl Columns {
     /// `span` from the `always` columns shown in any case and the optional ones.
     fn counted(mut self, always: usize) -> Columns {
-        self.span = always
-            + [
-                self.unit,
-                self.constraint,
-                self.widget,
-                self.description,
-                self.peers,
-            ]
-            .iter()
-            .filter(|b| **b)
-            .count();
+        self.span = always + self.shown().count();
         self
+    }
+
+    /// The label keys of the optional columns shown, in table order (after the `always` ones).
+    fn shown(&self) -> impl Iterator<Item = &'static str> {
+        [
+            (self.unit, "unit"),
+            (self.constraint, "constraint"),
+            (self.widget, "widget"),
+            (self.description, "description"),
+            (self.peers, "connects_to"),
+        ]
+        .into_iter()
+        .filter_map(|(shown, key)| shown.then_some(key))
     }
 }
 
@@ -605,6 +612,25 @@ impl<'a> Site<'a> {
         })
     }
 
+    /// The cells of a data port or service interface row: its `(anchor, since, name)`, its
+    /// direction and its type, linked from `from`.
+    fn port_cells(
+        &self,
+        from: &Page,
+        (anchor, since, name): (&str, Option<&str>, &str),
+        direction: &view::Dir,
+        type_: &Option<Linked<'_>>,
+    ) -> PortCells {
+        PortCells {
+            anchor: anchor.to_string(),
+            since: self.since(since),
+            direction: direction.label.clone(),
+            dir_class: direction.class,
+            name: name.to_string(),
+            type_ref: self.type_ref(from, type_),
+        }
+    }
+
     /// The "since" badge of a row: `since 1.1.0`.
     fn since(&self, since: Option<&str>) -> Option<String> {
         since.map(|v| self.t("since").replace("{v}", v))
@@ -629,12 +655,12 @@ impl<'a> Site<'a> {
             .map(|dp| {
                 let (peers, peers_more) = self.peers(page, &dp.peers);
                 DataPortRow {
-                    anchor: dp.anchor.to_string(),
-                    since: self.since(dp.since),
-                    direction: dp.direction.label.clone(),
-                    dir_class: dp.direction.class,
-                    name: dp.name.to_string(),
-                    type_ref: self.type_ref(page, &dp.type_),
+                    port: self.port_cells(
+                        page,
+                        (dp.anchor, dp.since, dp.name),
+                        &dp.direction,
+                        &dp.type_,
+                    ),
                     unit: dp.unit.to_string(),
                     details: lead_fields(lang, dp.description, &dp.details),
                     events: dp
@@ -668,12 +694,12 @@ impl<'a> Site<'a> {
                     .map(|i| {
                         let (peers, peers_more) = self.peers(page, &i.peers);
                         InterfaceRow {
-                            anchor: i.anchor.to_string(),
-                            since: self.since(i.since),
-                            direction: i.direction.label.clone(),
-                            dir_class: i.direction.class,
-                            name: i.name.to_string(),
-                            type_ref: self.type_ref(page, &i.type_),
+                            port: self.port_cells(
+                                page,
+                                (i.anchor, i.since, i.name),
+                                &i.direction,
+                                &i.type_,
+                            ),
                             details: lead_fields(lang, i.description, &i.details),
                             peers,
                             peers_more,

@@ -11,7 +11,7 @@
 //! fail until it is.
 
 use super::svg::esc_into;
-use super::{ComponentPage, Field, KeyValue, PortTypeRef};
+use super::{Columns, ComponentPage, EventRow, Field, KeyValue, PortCells, PortTypeRef};
 use crate::i18n::Lang;
 
 /// The template globals the page prints.
@@ -80,21 +80,30 @@ impl Out<'_> {
 
     /// `type_link(r)` (see `builtins::type_link`).
     fn type_link(&mut self, r: &Option<PortTypeRef>) {
-        let Some(r) = r else { return };
-        match r.href.as_deref() {
-            Some(href) if !href.is_empty() => {
-                self.raw("<a href=\"");
-                self.text(href);
-                self.raw("\"><code>");
-                self.text(&r.text);
-                self.raw("</code></a>");
-            }
-            _ => {
-                self.raw("<code>");
-                self.text(&r.text);
-                self.raw("</code>");
-            }
+        if let Some(r) = r {
+            let href = r.href.as_deref().filter(|h| !h.is_empty());
+            self.code_link(href, &r.text);
         }
+    }
+
+    /// `<a href="href"><code>text</code></a>`, or only `<code>text</code>` without `href`.
+    fn code_link(&mut self, href: Option<&str>, text: &str) {
+        if let Some(href) = href {
+            self.raw("<a href=\"");
+            self.text(href);
+            self.raw("\"><code>");
+            self.text(text);
+            self.raw("</code></a>");
+        } else {
+            self.code(text);
+        }
+    }
+
+    /// `<code>text</code>`.
+    fn code(&mut self, text: &str) {
+        self.raw("<code>");
+        self.text(text);
+        self.raw("</code>");
     }
 
     /// `peers(row)` (see `builtins::peers`).
@@ -115,31 +124,42 @@ impl Out<'_> {
 
     /// The cells a data port row and a service interface row share: direction, name and type
     /// (labelled `type_key`).
-    fn port_row_start(
-        &mut self,
-        anchor: &str,
-        dir_class: &str,
-        direction: &str,
-        (name, since): (&str, &Option<String>),
-        type_ref: &Option<PortTypeRef>,
-        type_key: &str,
-    ) {
+    fn port_row_start(&mut self, c: &PortCells, type_key: &str) {
+        self.row_start(&c.anchor);
+        self.td("direction");
+        self.raw("<span class=\"dir ");
+        self.text(c.dir_class);
+        self.raw("\">");
+        self.text(&c.direction);
+        self.raw("</span></td>\n");
+        self.name_cell(&c.name, &c.since);
+        self.td(type_key);
+        self.type_link(&c.type_ref);
+        self.raw("</td>\n");
+    }
+
+    /// `<tr id="anchor">` and its line break.
+    fn row_start(&mut self, anchor: &str) {
         self.raw("<tr id=\"");
         self.text(anchor);
         self.raw("\">\n");
-        self.td("direction");
-        self.raw("<span class=\"dir ");
-        self.text(dir_class);
-        self.raw("\">");
-        self.text(direction);
-        self.raw("</span></td>\n<th scope=\"row\"><code>");
+    }
+
+    /// The row header of a port or parameter: `<th scope="row"><code>name</code>`, the since
+    /// badge, `</th>` and a line break.
+    fn name_cell(&mut self, name: &str, since: &Option<String>) {
+        self.raw("<th scope=\"row\"><code>");
         self.text(name);
         self.raw("</code>");
         self.since(since);
         self.raw("</th>\n");
-        self.td(type_key);
-        self.type_link(type_ref);
-        self.raw("</td>\n");
+    }
+
+    /// `<tr><th scope="row"><code>key</code></th>`: a row of a key-value table opened.
+    fn key_row_start(&mut self, key: &str) {
+        self.raw("<tr><th scope=\"row\"><code>");
+        self.text(key);
+        self.raw("</code></th>");
     }
 
     /// The "connects to" cell when `shown`, and the end of the row.
@@ -159,11 +179,31 @@ impl Out<'_> {
         self.raw("\">");
     }
 
-    /// The description cell of a port or parameter row: `<td class="desc" data-label>`.
-    fn td_desc(&mut self) {
+    /// `<td data-label="{{ t.key }}">{{ value }}</td>`, then `end`.
+    fn cell(&mut self, key: &str, value: &str, end: &str) {
+        self.td(key);
+        self.text(value);
+        self.raw("</td>");
+        self.raw(end);
+    }
+
+    /// [`Out::cell`] with the value in `<code>`.
+    fn code_cell(&mut self, key: &str, value: &str, end: &str) {
+        self.td(key);
+        self.code(value);
+        self.raw("</td>");
+        self.raw(end);
+    }
+
+    /// The description cell of a port or parameter row: `<td class="desc" data-label>`,
+    /// `fields(details)` and what `more` writes after them.
+    fn desc_cell(&mut self, details: &[Field], more: impl FnOnce(&mut Self)) {
         self.raw("<td class=\"desc\" data-label=\"");
         self.label("description");
         self.raw("\">");
+        self.fields(details);
+        more(self);
+        self.raw("</td>\n");
     }
 
     /// `<li[ class="more"]><a href="href">text</a></li>` and a line break.
@@ -205,10 +245,31 @@ impl Out<'_> {
         }
     }
 
-    /// A section holding one table: `<section id>`, `<h2>`, the table-wrap `<div>`, `<table>`
-    /// with `class` (none when empty), the header row of `heads` labels and `<tbody>`.
-    fn table_start(&mut self, id: &str, key: &str, class: &str, heads: &[&str]) {
+    /// A section holding one table of `rows`, nothing when there are none: `<section id>`,
+    /// `<h2>{{ t.key }}</h2>`, the table (`class` and `heads` as [`Out::table_wrap`]), `row`
+    /// for each row, and the ends of all.
+    fn table<T>(
+        &mut self,
+        (id, key): (&str, &str),
+        (class, heads): (&str, &[&str]),
+        rows: &[T],
+        mut row: impl FnMut(&mut Self, &T),
+    ) {
+        if rows.is_empty() {
+            return;
+        }
         self.section_start(id, false, key);
+        self.table_wrap(class, heads);
+        for r in rows {
+            row(self, r);
+        }
+        self.table_wrap_end();
+        self.raw("</section>");
+    }
+
+    /// The table-wrap `<div>`, `<table>` with `class` (none when empty), the header row of
+    /// `heads` labels and `<tbody>`.
+    fn table_wrap(&mut self, class: &str, heads: &[&str]) {
         self.raw("<div class=\"table-wrap\">\n");
         self.table_head(class, heads);
         self.raw("<tbody>\n");
@@ -227,9 +288,9 @@ impl Out<'_> {
         self.raw("</tr></thead>\n");
     }
 
-    /// Closes what [`Out::table_start`] opened.
-    fn table_end(&mut self) {
-        self.raw("</tbody>\n</table>\n</div>\n</section>");
+    /// Closes what [`Out::table_wrap`] opened.
+    fn table_wrap_end(&mut self) {
+        self.raw("</tbody>\n</table>\n</div>\n");
     }
 
     /// `<section id="…"[ class="card"]>` + `<h2>{{ t.key }}</h2>`.
@@ -244,6 +305,18 @@ impl Out<'_> {
         self.label(key);
         self.raw("</h2>\n");
     }
+
+    /// `{{ t.key }}` between the markup `open` and `close`.
+    fn label_in(&mut self, open: &str, key: &str, close: &str) {
+        self.raw(open);
+        self.label(key);
+        self.raw(close);
+    }
+}
+
+/// The header labels of a table: `always`, then the optional columns `cols` shows.
+fn heads(always: &[&'static str], cols: &Columns) -> Vec<&'static str> {
+    always.iter().copied().chain(cols.shown()).collect()
 }
 
 /// The whole component page, as `component.html` (extending `base.html`) renders `page`.
@@ -302,41 +375,23 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
     o.raw("</a>\n<nav class=\"site-nav\" aria-label=\"");
     o.label("main_nav");
     o.raw("\">\n<ul>\n");
-    for (path, key) in [
-        ("index.html", "components"),
-        ("types/index.html", "data_types"),
-        ("interfaces/index.html", "interfaces"),
-        ("categories/index.html", "categories"),
-        ("vendors/index.html", "vendors"),
-        ("dataflow.html", "dataflow"),
+    for (shown, path, key) in [
+        (true, "index.html", "components"),
+        (true, "types/index.html", "data_types"),
+        (true, "interfaces/index.html", "interfaces"),
+        (true, "categories/index.html", "categories"),
+        (true, "vendors/index.html", "vendors"),
+        (true, "dataflow.html", "dataflow"),
+        (o.g.has_history, "whats-new.html", "whats_new"),
+        (o.g.has_systems, "systems/index.html", "systems"),
     ] {
-        o.raw("<li><a href=\"");
-        o.text(root);
-        o.raw(path);
-        o.raw("\">");
-        o.label(key);
-        o.raw("</a></li>\n");
-    }
-    if o.g.has_history {
-        o.raw("<li><a href=\"");
-        o.text(root);
-        o.raw("whats-new.html\">");
-        o.label("whats_new");
-        o.raw("</a></li>\n");
-    }
-    if o.g.has_systems {
-        o.raw("<li><a href=\"");
-        o.text(root);
-        o.raw("systems/index.html\">");
-        o.label("systems");
-        o.raw("</a></li>\n");
+        if shown {
+            nav_item(o, root, path, key);
+            o.raw("\n");
+        }
     }
     if o.g.has_diagnostics {
-        o.raw("<li><a href=\"");
-        o.text(root);
-        o.raw("diagnostics.html\">");
-        o.label("diagnostics");
-        o.raw("</a></li>");
+        nav_item(o, root, "diagnostics.html", "diagnostics");
     }
     o.raw("\n</ul>\n</nav>\n<form class=\"search\" role=\"search\" action=\"");
     o.text(root);
@@ -348,9 +403,11 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
     o.label("search_help");
     o.raw("</span>\n<div id=\"search-popup\" class=\"search-popup\" hidden></div>\n</form>\n</div>\n</header>\n");
     if !page.crumbs.is_empty() {
-        o.raw("<nav class=\"crumbs\" aria-label=\"");
-        o.label("breadcrumbs");
-        o.raw("\">\n<ol>\n");
+        o.label_in(
+            "<nav class=\"crumbs\" aria-label=\"",
+            "breadcrumbs",
+            "\">\n<ol>\n",
+        );
         for c in &page.crumbs {
             o.link_item(false, &c.href, &c.text);
         }
@@ -359,6 +416,16 @@ fn base_top(o: &mut Out<'_>, page: &ComponentPage) {
         o.raw("</li>\n</ol>\n</nav>");
     }
     o.raw("\n<main id=\"main\">\n");
+}
+
+/// An entry of the site navigation: `<li><a href="{{ root }}path">{{ t.key }}</a></li>`.
+fn nav_item(o: &mut Out<'_>, root: &str, path: &str, key: &str) {
+    o.raw("<li><a href=\"");
+    o.text(root);
+    o.raw(path);
+    o.raw("\">");
+    o.label(key);
+    o.raw("</a></li>");
 }
 
 /// `base.html` after `{% endblock %}` of `main`.
@@ -457,63 +524,55 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
 }
 
 fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
-    if p.data_ports.is_empty() {
+    let cols = &p.data_cols;
+    let heads = heads(&["direction", "name", "type"], cols);
+    o.table(
+        ("data-ports", "data_ports"),
+        ("ports", &heads),
+        &p.data_ports,
+        |o, r| {
+            o.port_row_start(&r.port, "type");
+            if cols.unit {
+                o.cell("unit", &r.unit, "\n");
+            }
+            if cols.description {
+                o.desc_cell(&r.details, |o| events(o, &r.events));
+            }
+            o.peers_cell(cols.peers, &r.peers, &r.peers_more);
+        },
+    );
+}
+
+/// A data port's events, in its description cell.
+fn events(o: &mut Out<'_>, events: &[EventRow]) {
+    if events.is_empty() {
         return;
     }
-    let cols = &p.data_cols;
-    let mut heads = vec!["direction", "name", "type"];
-    heads.extend(cols.unit.then_some("unit"));
-    heads.extend(cols.description.then_some("description"));
-    heads.extend(cols.peers.then_some("connects_to"));
-    o.table_start("data-ports", "data_ports", "ports", &heads);
-    for r in &p.data_ports {
-        o.port_row_start(
-            &r.anchor,
-            r.dir_class,
-            &r.direction,
-            (&r.name, &r.since),
-            &r.type_ref,
-            "type",
-        );
-        if cols.unit {
-            o.td("unit");
-            o.text(&r.unit);
-            o.raw("</td>\n");
-        }
-        if cols.description {
-            o.td_desc();
-            o.fields(&r.details);
-            if !r.events.is_empty() {
-                o.raw("<div class=\"events\"><strong>");
-                o.label("events");
-                o.raw("</strong>\n<ul>\n");
-                for e in &r.events {
-                    o.raw("<li><code>");
-                    o.text(&e.name);
-                    o.raw("</code>");
-                    o.fields(&e.fields);
-                    o.raw("</li>\n");
-                }
-                o.raw("</ul>\n</div>");
-            }
-            o.raw("</td>\n");
-        }
-        o.peers_cell(cols.peers, &r.peers, &r.peers_more);
+    o.label_in(
+        "<div class=\"events\"><strong>",
+        "events",
+        "</strong>\n<ul>\n",
+    );
+    for e in events {
+        o.raw("<li>");
+        o.code(&e.name);
+        o.fields(&e.fields);
+        o.raw("</li>\n");
     }
-    o.table_end();
+    o.raw("</ul>\n</div>");
 }
 
 fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
     if p.service_ports.is_empty() {
         return;
     }
+    let cols = &p.service_cols;
     o.section_start("service-ports", false, "service_ports");
     o.raw("<div class=\"table-wrap\">\n");
-    let cols = &p.service_cols;
-    let mut heads = vec!["direction", "name", "interface_type"];
-    heads.extend(cols.description.then_some("description"));
-    heads.extend(cols.peers.then_some("connects_to"));
-    o.table_head("ports", &heads);
+    o.table_head(
+        "ports",
+        &heads(&["direction", "name", "interface_type"], cols),
+    );
     for sp in &p.service_ports {
         o.raw("<tbody>\n<tr id=\"");
         o.text(&sp.anchor);
@@ -521,25 +580,15 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw(&cols.span.to_string());
         o.raw("\"><span class=\"dir service\">");
         o.label("port");
-        o.raw("</span> <code>");
-        o.text(&sp.name);
-        o.raw("</code>");
+        o.raw("</span> ");
+        o.code(&sp.name);
         o.since(&sp.since);
         o.fields(&sp.details);
         o.raw("</th></tr>\n");
         for i in &sp.interfaces {
-            o.port_row_start(
-                &i.anchor,
-                i.dir_class,
-                &i.direction,
-                (&i.name, &i.since),
-                &i.type_ref,
-                "interface_type",
-            );
+            o.port_row_start(&i.port, "interface_type");
             if cols.description {
-                o.td_desc();
-                o.fields(&i.details);
-                o.raw("</td>\n");
+                o.desc_cell(&i.details, |_| {});
             }
             o.peers_cell(cols.peers, &i.peers, &i.peers_more);
         }
@@ -581,65 +630,42 @@ fn neighbourhood(o: &mut Out<'_>, p: &ComponentPage) {
 }
 
 fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
-    if p.configurations.is_empty() {
-        return;
-    }
     let cols = &p.config_cols;
-    let mut heads = vec!["name", "type", "default_value"];
-    heads.extend(cols.unit.then_some("unit"));
-    heads.extend(cols.constraint.then_some("constraint"));
-    heads.extend(cols.widget.then_some("widget"));
-    heads.extend(cols.description.then_some("description"));
-    o.table_start("configuration", "configuration", "config", &heads);
-    for c in &p.configurations {
-        o.raw("<tr id=\"");
-        o.text(&c.anchor);
-        o.raw("\">\n<th scope=\"row\"><code>");
-        o.text(&c.name);
-        o.raw("</code>");
-        o.since(&c.since);
-        o.raw("</th>\n");
-        o.td("type");
-        o.raw("<code>");
-        o.text(&c.type_);
-        o.raw("</code></td>\n");
-        o.td("default_value");
-        o.raw("<code>");
-        o.text(&c.default);
-        o.raw("</code></td>\n");
-        for (shown, key, value) in [
-            (cols.unit, "unit", &c.unit),
-            (cols.constraint, "constraint", &c.constraint),
-            (cols.widget, "widget", &c.widget),
-        ] {
-            if shown {
-                o.td(key);
-                o.text(value);
-                o.raw("</td>\n");
+    let heads = heads(&["name", "type", "default_value"], cols);
+    let rows = &p.configurations;
+    o.table(
+        ("configuration", "configuration"),
+        ("config", &heads),
+        rows,
+        |o, c| {
+            o.row_start(&c.anchor);
+            o.name_cell(&c.name, &c.since);
+            o.code_cell("type", &c.type_, "\n");
+            o.code_cell("default_value", &c.default, "\n");
+            for (shown, key, value) in [
+                (cols.unit, "unit", &c.unit),
+                (cols.constraint, "constraint", &c.constraint),
+                (cols.widget, "widget", &c.widget),
+            ] {
+                if shown {
+                    o.cell(key, value, "\n");
+                }
             }
-        }
-        if cols.description {
-            o.td_desc();
-            o.fields(&c.details);
-            o.raw("</td>\n");
-        }
-        o.raw("</tr>\n");
-    }
-    o.table_end();
+            if cols.description {
+                o.desc_cell(&c.details, |_| {});
+            }
+            o.raw("</tr>\n");
+        },
+    );
 }
 
 fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
     o.section_start("lifecycle", false, "actions");
     o.raw("<div class=\"diagram-wrap\">");
     o.raw(&p.lifecycle_svg);
-    o.raw("</div>\n<div class=\"table-wrap\">\n");
-    let heads: &[&str] = if p.action_cols.description {
-        &["callback", "implemented", "description"]
-    } else {
-        &["callback", "implemented"]
-    };
-    o.table_head("actions", heads);
-    o.raw("<tbody>\n");
+    o.raw("</div>\n");
+    let cols = &p.action_cols;
+    o.table_wrap("actions", &heads(&["callback", "implemented"], cols));
     for a in &p.actions {
         o.raw("<tr id=\"action-");
         o.text(a.name);
@@ -659,39 +685,28 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
             o.label("no");
         }
         o.raw("</span></td>\n");
-        if p.action_cols.description {
+        if cols.description {
             o.td("description");
             o.fields(&a.details);
             o.raw("</td>\n");
         }
         o.raw("</tr>\n");
     }
-    o.table_end();
+    o.table_wrap_end();
+    o.raw("</section>");
 }
 
 /// The parameters or properties section (`id` is also its label key): nothing when `rows` is
 /// empty; values in `<code>` when `code`; the value cells labelled as `heads[1]`.
 fn key_value_table(o: &mut Out<'_>, id: &str, heads: &[&str], rows: &[KeyValue], code: bool) {
-    if rows.is_empty() {
-        return;
-    }
-    o.table_start(id, id, "", heads);
-    for kv in rows {
-        o.raw("<tr><th scope=\"row\"><code>");
-        o.text(&kv.key);
-        o.raw("</code></th>");
-        o.td(heads[1]);
+    o.table((id, id), ("", heads), rows, |o, kv| {
+        o.key_row_start(&kv.key);
         if code {
-            o.raw("<code>");
-        }
-        o.text(&kv.value);
-        o.raw(if code {
-            "</code></td></tr>\n"
+            o.code_cell(heads[1], &kv.value, "</tr>\n");
         } else {
-            "</td></tr>\n"
-        });
-    }
-    o.table_end();
+            o.cell(heads[1], &kv.value, "</tr>\n");
+        }
+    });
 }
 
 /// Parameters, language, properties, version history and extra properties.
@@ -709,9 +724,7 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         o.fields(&p.language);
         o.raw("\n");
         if !p.targets.is_empty() {
-            o.raw("<h3>");
-            o.label("targets");
-            o.raw("</h3>\n");
+            o.label_in("<h3>", "targets", "</h3>\n");
             for tg in &p.targets {
                 o.raw("<div class=\"target\">\n<h4>");
                 o.label("fact_target");
@@ -742,50 +755,29 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         o.section_start("systems", false, "sys_used_by");
         o.raw("<ul class=\"links\">\n");
         for l in &p.systems {
-            o.raw("<li><a href=\"");
-            o.text(&l.href);
-            o.raw("\">");
-            o.text(&l.text);
-            o.raw("</a></li>\n");
+            o.link_item(false, &l.href, &l.text);
         }
         o.raw("</ul>\n</section>\n\n");
     }
     if !p.backups.is_empty() {
         o.section_start("backups", false, "backups");
-        o.raw("<p>");
-        o.label("backups_intro");
-        o.raw("</p>\n<div class=\"table-wrap\">\n");
-        o.table_head("", &["backup_file", "backup_saved", "backup_declares"]);
-        o.raw("<tbody>\n");
+        o.label_in("<p>", "backups_intro", "</p>\n");
+        o.table_wrap("", &["backup_file", "backup_saved", "backup_declares"]);
         for b in &p.backups {
-            o.raw("<tr><th scope=\"row\"><code>");
-            o.text(&b.file);
-            o.raw("</code></th>");
-            o.td("backup_saved");
-            o.text(&b.saved);
-            o.raw("</td>");
-            o.td("backup_declares");
-            o.text(&b.declares);
-            o.raw("</td></tr>\n");
+            o.key_row_start(&b.file);
+            o.cell("backup_saved", &b.saved, "");
+            o.cell("backup_declares", &b.declares, "</tr>\n");
         }
-        o.raw("</tbody>\n</table>\n</div>\n</section>\n\n");
+        o.table_wrap_end();
+        o.raw("</section>\n\n");
     }
     history_section(o, p);
-    if !p.extras.is_empty() {
-        o.table_start("extra", "extra", "", &["extra_path", "extra_kind", "value"]);
-        for e in &p.extras {
-            o.raw("<tr><th scope=\"row\"><code>");
-            o.text(&e.name);
-            o.raw("</code></th>");
-            o.td("extra_kind");
-            o.text(e.kind);
-            o.raw("</td>");
-            o.td("value");
-            o.text(&e.value);
-            o.raw("</td></tr>\n");
-        }
-        o.table_end();
-    }
+    let heads = ["extra_path", "extra_kind", "value"];
+    o.table(("extra", "extra"), ("", &heads), &p.extras, |o, e| {
+        o.key_row_start(&e.name);
+        o.cell("extra_kind", e.kind, "");
+        o.cell("value", &e.value, "</tr>\n");
+    });
 }
 
 /// The History section (`{% if history %}` in `component.html`).
@@ -794,10 +786,8 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
         return;
     }
     o.section_start("change-history", false, "change_history");
-    o.raw("<p>");
-    o.label("history_intro");
-    o.raw("</p>\n<div class=\"table-wrap\">\n");
-    o.table_head(
+    o.label_in("<p>", "history_intro", "</p>\n");
+    o.table_wrap(
         "history-table",
         &[
             "history_version",
@@ -808,7 +798,6 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
             "history_changes",
         ],
     );
-    o.raw("<tbody>\n");
     for h in &p.history {
         // A folded row has no version: no empty row header (axe: empty-table-header).
         if h.version.is_empty() {
@@ -818,28 +807,14 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
             o.text(&h.version);
             o.raw("</th>");
         }
-        o.td("history_date");
-        o.text(&h.date);
-        o.raw("</td>");
+        o.cell("history_date", &h.date, "");
         o.td("history_commit");
-        if let Some(url) = &h.url {
-            o.raw("<a href=\"");
-            o.text(url);
-            o.raw("\"><code>");
-            o.text(&h.label);
-            o.raw("</code></a>");
-        } else if !h.label.is_empty() {
-            o.raw("<code>");
-            o.text(&h.label);
-            o.raw("</code>");
+        if h.url.is_some() || !h.label.is_empty() {
+            o.code_link(h.url.as_deref(), &h.label);
         }
         o.raw("</td>");
-        o.td("history_author");
-        o.text(&h.author);
-        o.raw("</td>");
-        o.td("history_subject");
-        o.text(&h.subject);
-        o.raw("</td>");
+        o.cell("history_author", &h.author, "");
+        o.cell("history_subject", &h.subject, "");
         o.td("history_changes");
         o.text(&h.summary);
         if !h.breaking.is_empty() {
@@ -853,7 +828,7 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
         }
         o.raw("</td></tr>\n");
     }
-    o.raw("</tbody>\n</table>\n</div>\n");
+    o.table_wrap_end();
     if let Some(n) = &p.history_older {
         o.raw("<p>");
         o.text(n);
