@@ -297,6 +297,9 @@ fn at(item: &IdlItem, pos: crate::model::Pos) -> String {
     }
 }
 
+/// What a member, case or attribute holds: its type, array bounds and doc comment.
+type Held<'s, 'a> = (&'s IdlType, &'a [IdlBound], Option<&'a crate::idl::IdlDoc>);
+
 struct Cmp<'s> {
     old: &'s IdlSet,
     new: &'s IdlSet,
@@ -486,19 +489,17 @@ impl<'s> Cmp<'s> {
                             ),
                         );
                     }
-                    self.slot(
+                    let (of, nf) = (&oc.field, &c.field);
+                    self.held(
                         &cp,
-                        (&oc.field.ty, &oc.field.array),
-                        (&c.field.ty, &c.field.array),
+                        (&of.ty, &of.array, of.doc.as_deref()),
+                        (&nf.ty, &nf.array, nf.doc.as_deref()),
                         Kind::Union,
-                        &format!("case `{}` of union `{name}`", c.field.name),
-                        &at(&n, c.field.pos),
-                    );
-                    self.doc(
-                        &cp,
-                        &format!("case `{}` of `{name}`", c.field.name),
-                        oc.field.doc.as_deref(),
-                        c.field.doc.as_deref(),
+                        (
+                            &format!("case `{}` of union `{name}`", nf.name),
+                            &format!("case `{}` of `{name}`", nf.name),
+                        ),
+                        &at(&n, nf.pos),
                     );
                 }
             }
@@ -597,20 +598,14 @@ impl<'s> Cmp<'s> {
             let Some(of) = of.iter().find(|x| x.name == f.name) else {
                 continue;
             };
-            let mp = p.member(&f.name);
-            self.slot(
-                &mp,
-                (&of.ty, &of.array),
-                (&f.ty, &f.array),
+            let what = format!("member `{}` of `{owner}`", f.name);
+            self.held(
+                &p.member(&f.name),
+                (&of.ty, &of.array, of.doc.as_deref()),
+                (&f.ty, &f.array, f.doc.as_deref()),
                 Kind::MemberRetyped,
-                &format!("member `{}` of `{owner}`", f.name),
+                (&what, &what),
                 &at(n, f.pos),
-            );
-            self.doc(
-                &mp,
-                &format!("member `{}` of `{owner}`", f.name),
-                of.doc.as_deref(),
-                f.doc.as_deref(),
             );
         }
     }
@@ -710,6 +705,21 @@ impl<'s> Cmp<'s> {
             p.element()
         };
         self.descend(&p, ot, nt, 0);
+    }
+
+    /// A member, union case or attribute on both sides: what it holds (`slot`, named `what`)
+    /// and its doc comment (named `doc_what`).
+    fn held(
+        &mut self,
+        p: &P,
+        (ot, oa, od): Held<'s, '_>,
+        (nt, na, nd): Held<'s, '_>,
+        kind: Kind,
+        (what, doc_what): (&str, &str),
+        loc: &str,
+    ) {
+        self.slot(p, (ot, oa), (nt, na), kind, what, loc);
+        self.doc(p, doc_what, od, nd);
     }
 
     /// Follows two types of the same shape into the named definitions they hold.
@@ -873,19 +883,14 @@ impl<'s> Cmp<'s> {
                     ),
                 );
             } else {
-                self.slot(
+                let what = format!("attribute `{}` of `{name}`", nat.name);
+                self.held(
                     &ap,
-                    (&oat.ty, &[]),
-                    (&nat.ty, &[]),
+                    (&oat.ty, &[], oat.doc.as_deref()),
+                    (&nat.ty, &[], nat.doc.as_deref()),
                     Kind::OperationChanged,
-                    &format!("attribute `{}` of `{name}`", nat.name),
+                    (&what, &what),
                     &at(n, nat.pos),
-                );
-                self.doc(
-                    &ap,
-                    &format!("attribute `{}` of `{name}`", nat.name),
-                    oat.doc.as_deref(),
-                    nat.doc.as_deref(),
                 );
             }
         }
@@ -980,32 +985,33 @@ impl<'s> Cmp<'s> {
                 list_or_none(&raises(a).into_iter().collect::<Vec<_>>())
             ));
         }
-        if !what.is_empty() {
-            self.push(
-                Kind::OperationChanged,
-                &opath.base,
-                Some(signature(a)),
-                Some(signature(b)),
-                format!(
-                    "the signature of operation `{}` of interface `{iface}` changed: {}{}",
-                    b.name,
-                    what.join("; "),
-                    at(n, b.pos)
-                ),
-            );
-            return;
+        // A change on the wire, else only another way of writing the same signature.
+        let (sa, sb) = (signature(a), signature(b));
+        let on_wire = !what.is_empty();
+        if on_wire || sa != sb {
+            let (kind, message) = if on_wire {
+                (
+                    Kind::OperationChanged,
+                    format!(
+                        "the signature of operation `{}` of interface `{iface}` changed: {}{}",
+                        b.name,
+                        what.join("; "),
+                        at(n, b.pos)
+                    ),
+                )
+            } else {
+                (
+                    Kind::Other,
+                    format!(
+                        "operation `{}` of `{iface}` is written differently (parameter names, context or type spellings), with the same signature on the wire",
+                        b.name
+                    ),
+                )
+            };
+            self.push(kind, &opath.base, Some(sa), Some(sb), message);
         }
-        if signature(a) != signature(b) {
-            self.push(
-                Kind::Other,
-                &opath.base,
-                Some(signature(a)),
-                Some(signature(b)),
-                format!(
-                    "operation `{}` of `{iface}` is written differently (parameter names, context or type spellings), with the same signature on the wire",
-                    b.name
-                ),
-            );
+        if on_wire {
+            return;
         }
         self.doc(
             opath,

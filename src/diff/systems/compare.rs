@@ -11,7 +11,7 @@
 //! [`SystemProperty::private`]) is not compared either.
 
 use super::end_text;
-use crate::diff::{change, codes, labels, same_type, Change};
+use crate::diff::{change, codes, labels, quoted, same_type, Change};
 use crate::model::system::{
     short_port_name, ComponentIdParts, Connector, DataPortConnector, ExecutionContext, PortEnd,
     RtSystem, ServicePortConnector, SystemComponent, SystemConfigurationSet, SystemProperty,
@@ -80,11 +80,21 @@ fn text(s: &Option<Text>) -> Option<String> {
     s.as_deref().map(str::to_string)
 }
 
-fn quoted(s: Option<&str>) -> String {
-    match s {
-        None => "(absent)".into(),
-        Some(s) => format!("`{s}`"),
-    }
+/// The code and message of a value written another way with the same meaning: `SYSTEM_OTHER`,
+/// "{subject} is spelled differently (A → B) but {same}".
+fn respelled(
+    subject: &str,
+    (a, b): (Option<&str>, Option<&str>),
+    same: &str,
+) -> (&'static str, String) {
+    (
+        codes::SYSTEM_OTHER,
+        format!(
+            "{subject} is spelled differently ({} → {}) but {same}",
+            quoted(a),
+            quoted(b)
+        ),
+    )
 }
 
 /// Pairs the items of two lists by key: the n-th item of a key in OLD with the n-th of that key
@@ -274,6 +284,18 @@ impl Cx<'_> {
         self.out.push(c);
     }
 
+    /// `push` for a text value changed from `old` to `new`.
+    fn changed(
+        &mut self,
+        code: &'static str,
+        path: String,
+        (old, new): (&Option<Text>, &Option<Text>),
+        message: String,
+        at: At,
+    ) {
+        self.push(code, path, (text(old), text(new)), message, at);
+    }
+
     /// Every difference between two JSON values, as DIFF355 (or `code_of` a path's own code)
     /// under `path`.
     fn other(&mut self, path: &str, o: Value, n: Value, at: Pos) {
@@ -355,13 +377,10 @@ impl Cx<'_> {
                         b.1, a.1
                     ),
                 ),
-                (Some(a), Some(b)) if a == b => (
-                    codes::SYSTEM_OTHER,
-                    format!(
-                        "the component id of instance `{name}` is spelled differently ({} → {}) but names the same component",
-                        quoted(oid),
-                        quoted(nid)
-                    ),
+                (Some(a), Some(b)) if a == b => respelled(
+                    &format!("the component id of instance `{name}`"),
+                    (oid, nid),
+                    "names the same component",
                 ),
                 _ => (
                     codes::SYSTEM_INSTANCE_COMPONENT,
@@ -372,13 +391,7 @@ impl Cx<'_> {
                     ),
                 ),
             };
-            self.push(
-                code,
-                format!("{base}/id"),
-                (text(&o.id), text(&n.id)),
-                message,
-                at,
-            );
+            self.changed(code, format!("{base}/id"), (&o.id, &n.id), message, at);
         }
         // The active configuration set.
         let (oa, na) = (
@@ -386,13 +399,10 @@ impl Cx<'_> {
             non_empty(&n.active_configuration_set),
         );
         if oa != na {
-            self.push(
+            self.changed(
                 codes::SYSTEM_ACTIVE_CONFIGURATION,
                 format!("{base}/activeConfigurationSet"),
-                (
-                    text(&o.active_configuration_set),
-                    text(&n.active_configuration_set),
-                ),
+                (&o.active_configuration_set, &n.active_configuration_set),
                 format!(
                     "instance `{name}` now runs with configuration set {} instead of {}",
                     quoted(na),
@@ -401,13 +411,10 @@ impl Cx<'_> {
                 at,
             );
         } else if o.active_configuration_set != n.active_configuration_set {
-            self.push(
+            self.changed(
                 codes::SYSTEM_OTHER,
                 format!("{base}/activeConfigurationSet"),
-                (
-                    text(&o.active_configuration_set),
-                    text(&n.active_configuration_set),
-                ),
+                (&o.active_configuration_set, &n.active_configuration_set),
                 format!("the active configuration set of `{name}` is spelled differently"),
                 at,
             );
@@ -516,10 +523,10 @@ impl Cx<'_> {
                 let (x, y) = (&a.configuration_data[i], &b.configuration_data[j]);
                 let path = format!("{base}/{l}/{}", nl[j]);
                 if x.data != y.data {
-                    self.push(
+                    self.changed(
                         codes::SYSTEM_CONFIGURATION,
                         path.clone(),
-                        (text(&x.data), text(&y.data)),
+                        (&x.data, &y.data),
                         format!(
                             "`{}` in configuration set `{l}`{act} of instance `{name}` changed from {} to {}",
                             nl[j],
@@ -602,14 +609,10 @@ impl Cx<'_> {
                 let (x, y) = (number(a.rate.as_deref()), number(b.rate.as_deref()));
                 let same = matches!((x, y), (Some(x), Some(y)) if x == y);
                 let (code, message) = if same {
-                    (
-                        codes::SYSTEM_OTHER,
-                        format!(
-                            "the rate of execution context `{}` of `{name}` is spelled differently ({} → {}) but is the same rate",
-                            nl[j],
-                            quoted(a.rate.as_deref()),
-                            quoted(b.rate.as_deref())
-                        ),
+                    respelled(
+                        &format!("the rate of execution context `{}` of `{name}`", nl[j]),
+                        (a.rate.as_deref(), b.rate.as_deref()),
+                        "is the same rate",
                     )
                 } else {
                     (
@@ -622,10 +625,10 @@ impl Cx<'_> {
                         ),
                     )
                 };
-                self.push(
+                self.changed(
                     code,
                     format!("{path}/rate"),
-                    (text(&a.rate), text(&b.rate)),
+                    (&a.rate, &b.rate),
                     message,
                     at,
                 );
@@ -633,30 +636,27 @@ impl Cx<'_> {
             if a.kind != b.kind {
                 let same = ec_kind(a.kind.as_deref().unwrap_or(""))
                     == ec_kind(b.kind.as_deref().unwrap_or(""));
-                let code = if same {
-                    codes::SYSTEM_OTHER
-                } else {
-                    codes::SYSTEM_EXECUTION_CONTEXT
-                };
-                let message = if same {
-                    format!(
-                        "the kind of execution context `{}` of `{name}` is spelled differently ({} → {}) but means the same",
-                        nl[j],
-                        quoted(a.kind.as_deref()),
-                        quoted(b.kind.as_deref())
+                let (code, message) = if same {
+                    respelled(
+                        &format!("the kind of execution context `{}` of `{name}`", nl[j]),
+                        (a.kind.as_deref(), b.kind.as_deref()),
+                        "means the same",
                     )
                 } else {
-                    format!(
-                        "execution context `{}` of instance `{name}` is now {} instead of {}",
-                        nl[j],
-                        quoted(b.kind.as_deref()),
-                        quoted(a.kind.as_deref())
+                    (
+                        codes::SYSTEM_EXECUTION_CONTEXT,
+                        format!(
+                            "execution context `{}` of instance `{name}` is now {} instead of {}",
+                            nl[j],
+                            quoted(b.kind.as_deref()),
+                            quoted(a.kind.as_deref())
+                        ),
                     )
                 };
-                self.push(
+                self.changed(
                     code,
                     format!("{path}/kind"),
-                    (text(&a.kind), text(&b.kind)),
+                    (&a.kind, &b.kind),
                     message,
                     at,
                 );
@@ -740,13 +740,10 @@ impl Cx<'_> {
         if a.data_type != b.data_type {
             let same = same_type(a.data_type.as_deref(), b.data_type.as_deref());
             let (code, message) = if same {
-                (
-                    codes::SYSTEM_OTHER,
-                    format!(
-                        "the data type of connector `{label}` is spelled differently ({} → {}) but names the same type",
-                        quoted(a.data_type.as_deref()),
-                        quoted(b.data_type.as_deref())
-                    ),
+                respelled(
+                    &format!("the data type of connector `{label}`"),
+                    (a.data_type.as_deref(), b.data_type.as_deref()),
+                    "names the same type",
                 )
             } else {
                 (
@@ -761,10 +758,10 @@ impl Cx<'_> {
                 )
             };
             reported.insert("dataType");
-            self.push(
+            self.changed(
                 code,
                 format!("{base}/dataType"),
-                (text(&a.data_type), text(&b.data_type)),
+                (&a.data_type, &b.data_type),
                 message,
                 at,
             );
@@ -802,10 +799,10 @@ impl Cx<'_> {
                 reported.insert(field);
                 code
             };
-            self.push(
+            self.changed(
                 code,
                 format!("{base}/{field}"),
-                (text(x), text(y)),
+                (x, y),
                 format!(
                     "the {what} of data port connector `{label}` changed from {} to {}",
                     quoted(x.as_deref()),
@@ -824,10 +821,10 @@ impl Cx<'_> {
             } else {
                 codes::SYSTEM_CONNECTOR_POLICY
             };
-            self.push(
+            self.changed(
                 code,
                 format!("{base}/pushInterval"),
-                (text(&a.push_interval), text(&b.push_interval)),
+                (&a.push_interval, &b.push_interval),
                 format!(
                     "the push interval of data port connector `{label}` changed from {} to {}",
                     quoted(a.push_interval.as_deref()),
