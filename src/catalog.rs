@@ -8,7 +8,7 @@
 //!   id + service port name + interface name ([`member_key`] tells repeated names apart). Maps
 //!   built once resolve them ([`Catalog::component`], [`Catalog::resolve_port`],
 //!   [`Catalog::data_type`]). Ids make two catalogues comparable entry by entry (`rtcdoc diff`)
-//!   and `catalog.json` readable back ([`Catalog::from_parts`], `render::json::read_catalog`).
+//!   and `catalog.json` readable back ([`Catalog::with_entries`] and [`Catalog::bound`], `render::json::read_catalog`).
 //! - **Indexes**, built in O(n) over the ports of all profiles: who produces and who consumes
 //!   each data type, who provides and who requires each service interface, which IDL types hold
 //!   which ([`Catalog::attach_idl`]), category and vendor facets, slugs and row anchors.
@@ -1462,8 +1462,8 @@ impl Catalog {
     }
 
     /// A catalogue of these entries with their lookups and pages (no systems, backups or
-    /// sources yet).
-    fn with_entries(
+    /// sources yet). Entries read back from `catalog.json` still need [`Catalog::bound`].
+    pub fn with_entries(
         components: Vec<Component>,
         data_types: Vec<DataType>,
         interfaces: Vec<InterfaceType>,
@@ -1497,27 +1497,11 @@ impl Catalog {
         catalog
     }
 
-    /// A catalogue from its entries as `catalog.json` holds them: the lookups and the pages
-    /// are built again. Every reference must name an entry of the catalogue.
-    #[allow(clippy::too_many_arguments)]
-    pub fn from_parts(
-        components: Vec<Component>,
-        data_types: Vec<DataType>,
-        interfaces: Vec<InterfaceType>,
-        categories: Vec<Facet>,
-        vendors: Vec<Facet>,
-        diagnostics: Vec<Diagnostic>,
-        idl: crate::idl::IdlSet,
-    ) -> Result<Catalog, String> {
-        let mut catalog = Catalog::with_entries(
-            components,
-            data_types,
-            interfaces,
-            categories,
-            vendors,
-            diagnostics,
-            idl,
-        );
+    /// This catalogue, made by [`Catalog::with_entries`] from its entries as `catalog.json`
+    /// holds them, with each reference given its handle. Every reference must name an entry of
+    /// the catalogue.
+    pub fn bound(self) -> Result<Catalog, String> {
+        let mut catalog = self;
         if catalog.by_id.len() < catalog.components.len() {
             let mut seen = std::collections::HashSet::new();
             if let Some(c) = catalog.components.iter().find(|c| !seen.insert(&c.id)) {

@@ -397,7 +397,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         }
         idl_files.push(file);
     }
-    let mut catalog = Catalog::from_parts(
+    let mut catalog = Catalog::with_entries(
         doc.components.0.into_owned(),
         doc.data_types.0.into_owned(),
         doc.interfaces.0.into_owned(),
@@ -406,6 +406,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         doc.diagnostics.into_owned(),
         IdlSet::from_files(idl_files),
     )
+    .bound()
     .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     catalog.idl_history = idl_history;
     // The systems' links are made again; their histories are kept as read.
