@@ -1580,25 +1580,14 @@ impl Catalog {
             site(K::NotFound, "404"),
             site(K::DataFlow, "dataflow"),
         ];
-        // One kind of entry: its index page (when it has one and `with_index`), then a page
+        // One kind of entry: its index page (when it has one), then a page
         // per entry, as (id, slug, title) in the entries' order, in the kind's directory;
         // gives where the entries' pages start.
         fn section<'a>(
             pages: &mut Vec<Page>,
-            kind: PageKind,
-            with_index: bool,
+            (kind, dir, index): (PageKind, &str, Option<PageKind>),
             entries: impl Iterator<Item = (&'a str, &'a str, std::borrow::Cow<'a, str>)>,
         ) -> usize {
-            let (dir, index) = match kind {
-                K::Component => ("components", None),
-                K::DataType => ("types", Some(K::DataTypes)),
-                K::Interface => ("interfaces", Some(K::Interfaces)),
-                K::Category => ("categories", Some(K::Categories)),
-                K::Vendor => ("vendors", Some(K::Vendors)),
-                K::System => ("systems", Some(K::Systems)),
-                _ => unreachable!("{kind:?} pages are not entry pages"),
-            };
-            let index = index.filter(|_| with_index);
             pages.extend(index.map(|index| site(index, &format!("{dir}/index"))));
             let start = pages.len();
             pages.extend(entries.map(|(id, slug, title)| Page {
@@ -1620,25 +1609,39 @@ impl Catalog {
             history: Vec::new(),
             component: section(
                 p,
-                K::Component,
-                false,
+                (K::Component, "components", None),
                 self.components
                     .iter()
                     .map(|c| (&*c.id, c.slug.as_str(), c.display_name())),
             ),
-            data_type: section(p, K::DataType, true, self.data_types.iter().map(type_entry)),
+            data_type: section(
+                p,
+                (K::DataType, "types", Some(K::DataTypes)),
+                self.data_types.iter().map(type_entry),
+            ),
             interface: section(
                 p,
-                K::Interface,
-                true,
+                (K::Interface, "interfaces", Some(K::Interfaces)),
                 self.interfaces.iter().map(type_entry),
             ),
-            category: section(p, K::Category, true, self.categories.iter().map(facet)),
-            vendor: section(p, K::Vendor, true, self.vendors.iter().map(facet)),
+            category: section(
+                p,
+                (K::Category, "categories", Some(K::Categories)),
+                self.categories.iter().map(facet),
+            ),
+            vendor: section(
+                p,
+                (K::Vendor, "vendors", Some(K::Vendors)),
+                self.vendors.iter().map(facet),
+            ),
             system: section(
                 p,
-                K::System,
-                !self.systems.is_empty(),
+                // The systems' index only when there are systems.
+                (
+                    K::System,
+                    "systems",
+                    Some(K::Systems).filter(|_| !self.systems.is_empty()),
+                ),
                 self.systems
                     .iter()
                     .map(|s| (s.source.as_str(), s.slug.as_str(), s.profile.name().into())),
