@@ -206,6 +206,8 @@ pub(super) fn slow_value(
 /// and depth where `max_depth` is exceeded.
 fn flow_depth_exceeds(src: &str, max_depth: usize) -> Option<(usize, usize)> {
     let b = src.as_bytes();
+    // No deeper than the number of brackets: most profiles have a few `[]` at most.
+    memchr::memchr2_iter(b'[', b'{', b).nth(max_depth)?;
     let mut depth = 0usize;
     let mut i = 0;
     // Whether the previous significant byte allows a token to start here.

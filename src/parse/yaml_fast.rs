@@ -63,6 +63,13 @@ pub(crate) fn parse(src: &str, max_depth: usize, root_key: &str) -> Option<Value
 fn plain_text(b: &[u8]) -> bool {
     let mut i = 0;
     while i < b.len() {
+        // Whole blocks of printable ASCII and line feeds pass in one step.
+        if let Some(block) = b.get(i..i + 16).and_then(|s| <&[u8; 16]>::try_from(s).ok()) {
+            if ascii_lines(block) {
+                i += 16;
+                continue;
+            }
+        }
         let c = b[i];
         match c {
             b'\n' | 0x20..=0x7e => {}
@@ -84,6 +91,17 @@ fn plain_text(b: &[u8]) -> bool {
         i += 1;
     }
     true
+}
+
+/// Whether every byte of the block is printable ASCII or a line feed: a fixed-size loop without
+/// early exit, which the compiler turns into a few vector compares.
+#[inline(always)]
+fn ascii_lines(block: &[u8; 16]) -> bool {
+    let mut ok = true;
+    for &c in block {
+        ok &= (0x20..=0x7e).contains(&c) | (c == b'\n');
+    }
+    ok
 }
 
 /// The content lines; `None` when a document marker or directive makes the file more than one
@@ -338,6 +356,18 @@ fn scalar(rest: &str) -> Option<Value> {
 fn quoted(s: &str) -> Option<(String, &str)> {
     let q = s.as_bytes()[0];
     let body = &s[1..];
+    // Most quoted scalars have no escape: when the first quote (or, in `"…"`, backslash) closes
+    // the scalar, its text is copied in one piece.
+    let b = body.as_bytes();
+    let stop = if q == b'"' {
+        memchr::memchr2(b'"', b'\\', b)
+    } else {
+        memchr::memchr(b'\'', b)
+    };
+    let i = stop?;
+    if b[i] == q && !(q == b'\'' && b.get(i + 1) == Some(&b'\'')) {
+        return Some((body[..i].to_owned(), &body[i + 1..]));
+    }
     let mut out = String::new();
     let mut chars = body.char_indices();
     while let Some((i, ch)) = chars.next() {
