@@ -316,6 +316,9 @@ impl Sink for MemorySink {
     }
 }
 
+/// How long the writer thread waits after a file before it writes what has queued up meanwhile.
+const WRITER_NAP: std::time::Duration = std::time::Duration::from_millis(1);
+
 /// A sink that hands files to one writer thread. Rendering stays parallel, while files are
 /// created one at a time: parallel creation of many files in one directory contends on the
 /// directory's lock in the kernel and was measured slower than a single writer.
@@ -335,12 +338,21 @@ impl<'a> WriterThread<'a> {
         let handle = scope.spawn(move || -> Result<usize> {
             let mut n = 0;
             let mut first_error = None;
-            for (rel, bytes) in rx {
+            let mut write = |rel: String, bytes: Vec<u8>| {
                 if first_error.is_none() {
                     match inner.write(&rel, &bytes) {
                         Ok(()) => n += 1,
                         Err(e) => first_error = Some(e),
                     }
+                }
+            };
+            while let Ok((rel, bytes)) = rx.recv() {
+                write(rel, bytes);
+                // Let files queue up before looking again: a writer that waits on every empty
+                // queue is woken by every file (a futex wake and two context switches each).
+                std::thread::sleep(WRITER_NAP);
+                while let Ok((rel, bytes)) = rx.try_recv() {
+                    write(rel, bytes);
                 }
             }
             match first_error {
