@@ -167,13 +167,17 @@ impl<'a> Groups<'a> {
                 out.push('|');
             }
             let mut first = true;
+            // The first earlier token not below `t`: `g` is sorted, so it only moves forward.
+            let mut at = 0;
             for (i, &t) in g.iter().enumerate() {
                 // The name keeps every token (an exact name match ranks first).
                 let covered = gi > 0
-                    && (g.get(i + 1).is_some_and(|n| n.starts_with(t))
-                        || earlier
-                            .get(earlier.partition_point(|e| *e < t))
-                            .is_some_and(|n| n.starts_with(t)));
+                    && (g.get(i + 1).is_some_and(|n| n.starts_with(t)) || {
+                        while earlier.get(at).is_some_and(|e| *e < t) {
+                            at += 1;
+                        }
+                        earlier.get(at).is_some_and(|n| n.starts_with(t))
+                    });
                 if covered {
                     continue;
                 }
