@@ -33,3 +33,16 @@ pub mod sources;
 pub mod types;
 pub mod value;
 pub mod walk;
+
+/// Generated text for the property tests that hold a fast path to its reference.
+#[cfg(test)]
+pub(crate) mod test_text {
+    /// Strings made of up to `max - 1` of `parts` in any order and number.
+    pub fn concat_of(
+        parts: &'static [&'static str],
+        max: usize,
+    ) -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::strategy::Strategy as _;
+        proptest::collection::vec(proptest::sample::select(parts), 0..max).prop_map(|p| p.concat())
+    }
+}
