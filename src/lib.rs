@@ -9,6 +9,7 @@
 #[cfg(feature = "alloc-stats")]
 pub mod alloc_stats;
 pub mod build;
+pub mod bytes;
 pub mod catalog;
 pub mod check;
 pub mod config;

@@ -316,7 +316,7 @@ impl Sink for MemorySink {
     }
 }
 
-/// How long the writer thread waits after a file before it writes what has queued up meanwhile.
+/// How long the writer thread waits when its queue runs dry before it waits on the queue.
 const WRITER_NAP: std::time::Duration = std::time::Duration::from_millis(1);
 
 /// A sink that hands files to one writer thread. Rendering stays parallel, while files are
@@ -346,14 +346,19 @@ impl<'a> WriterThread<'a> {
                     }
                 }
             };
-            while let Ok((rel, bytes)) = rx.recv() {
+            loop {
+                let next = match rx.try_recv() {
+                    Err(std::sync::mpsc::TryRecvError::Empty) => {
+                        // The queue ran dry: let files queue up before waiting on it. A writer
+                        // that waits on every empty queue is woken by every file (a futex wake
+                        // and two context switches each); one that is behind never naps.
+                        std::thread::sleep(WRITER_NAP);
+                        rx.recv().ok()
+                    }
+                    other => other.ok(),
+                };
+                let Some((rel, bytes)) = next else { break };
                 write(rel, bytes);
-                // Let files queue up before looking again: a writer that waits on every empty
-                // queue is woken by every file (a futex wake and two context switches each).
-                std::thread::sleep(WRITER_NAP);
-                while let Ok((rel, bytes)) = rx.try_recv() {
-                    write(rel, bytes);
-                }
             }
             match first_error {
                 Some(e) => Err(e),

@@ -1192,13 +1192,6 @@ fn classify(
                 ni,
             );
             let Some(code) = code else { return };
-            let message = message.unwrap_or_else(|| {
-                format!(
-                    "`{joined}` changed from {} to {}",
-                    quoted(old.as_deref()),
-                    quoted(new.as_deref())
-                )
-            });
             // Constraints are shown as formulas, not as their JSON.
             let (old, new) = if at
                 == (Place::Child {
@@ -1258,8 +1251,15 @@ fn quoted(s: Option<&str>) -> String {
     }
 }
 
-/// The code (and a message, else the generic one) of a changed leaf; `None` to report nothing
-/// (a change already reported under another path).
+/// "{subject} is spelled differently ({o} → {n}) but {same}": a value written another way
+/// with the same meaning (`o` and `n` already [`quoted`]).
+fn respelled_message(subject: &str, o: &str, n: &str, same: &str) -> String {
+    format!("{subject} is spelled differently ({o} → {n}) but {same}")
+}
+
+/// The code and message of a changed leaf (the generic "changed from … to …" where its place
+/// has none of its own); no code to report nothing (a change already reported under another
+/// path).
 fn changed(
     ctx: &Ctx,
     p: &[String],
@@ -1268,14 +1268,16 @@ fn changed(
     basic_version_changed: bool,
     oi: &Ident,
     ni: &Ident,
-) -> (Option<&'static str>, Option<String>) {
+) -> (Option<&'static str>, String) {
     let last = p.last().map(String::as_str).unwrap_or("");
     let (at, documentation) = place(p);
     let (o, n) = (quoted(old), quoted(new));
     let spelled = |what: &str| {
-        Some(format!(
-            "`{}` is spelled differently ({o} → {n}) but {what}",
-            p.join("/")
+        Some(respelled_message(
+            &format!("`{}`", p.join("/")),
+            &o,
+            &n,
+            what,
         ))
     };
     // `code` with `message`, unless the two spellings are the `same` (`what` says in what way).
@@ -1286,7 +1288,7 @@ fn changed(
             (Some(code), Some(message))
         }
     };
-    match at {
+    let (code, message) = match at {
         Place::Field(Field::ProfileId) => {
             if oi.version != ni.version && oi.key == ni.key {
                 if basic_version_changed {
@@ -1474,7 +1476,9 @@ fn changed(
         } => constraint_change(ctx, &p[1]),
         _ if documentation => (Some(codes::DOCUMENTATION_CHANGED), None),
         _ => (Some(codes::OTHER_CHANGED), None),
-    }
+    };
+    let message = message.unwrap_or_else(|| format!("`{}` changed from {o} to {n}", p.join("/")));
+    (code, message)
 }
 
 /// Both spellings read as the same known kind.

@@ -198,16 +198,14 @@ impl Parser<'_> {
     fn pos(&mut self) -> Pos {
         self.peek().pos
     }
-    fn bump(&mut self) -> Token {
+    /// Moves past the next token.
+    fn advance(&mut self) {
         self.skip_trivia();
-        let n = self.toks.len() - 1;
-        let t = self.toks[self.i.min(n)].clone();
-        if self.i < n {
+        if self.i < self.toks.len() - 1 {
             self.i += 1;
         }
         self.docs_before.clear();
         self.docs_after.clear();
-        t
     }
     fn is_punct(&mut self, p: &str) -> bool {
         matches!(&self.peek().tok, Tok::Punct(q) if *q == p)
@@ -218,7 +216,7 @@ impl Parser<'_> {
     /// Consumes the next token when it is the one looked for (`found`); `found` back.
     fn bump_if(&mut self, found: bool) -> bool {
         if found {
-            self.bump();
+            self.advance();
         }
         found
     }
@@ -280,17 +278,16 @@ impl Parser<'_> {
         Err(self.unexpected(&format!("`{p}` {context}"), hint))
     }
     fn ident(&mut self, what: &str) -> PResult<(String, Pos)> {
-        let t = self.peek().clone();
-        match &t.tok {
-            Tok::Ident(w) => {
-                self.bump();
-                Ok((strip_escape(w), t.pos))
-            }
-            _ => Err(self.unexpected(
-                what,
-                "names are identifiers: a letter followed by letters, digits or `_`",
-            )),
+        let t = self.peek();
+        if let Tok::Ident(w) = &t.tok {
+            let found = (strip_escape(w), t.pos);
+            self.advance();
+            return Ok(found);
         }
+        Err(self.unexpected(
+            what,
+            "names are identifiers: a letter followed by letters, digits or `_`",
+        ))
     }
     /// `item (, item)*`: `item` read again while a `,` follows.
     fn comma_separated(&mut self, mut item: impl FnMut(&mut Self) -> PResult<()>) -> PResult<()> {
@@ -340,26 +337,26 @@ impl Parser<'_> {
                 Tok::Eof => break,
                 Tok::Punct("{") => {
                     depth += 1;
-                    self.bump();
+                    self.advance();
                 }
                 Tok::Punct("}") => {
                     if depth == 0 {
                         break;
                     }
                     depth -= 1;
-                    self.bump();
+                    self.advance();
                 }
                 Tok::Punct(";") if depth == 0 => {
-                    self.bump();
+                    self.advance();
                     break;
                 }
                 _ => {
-                    self.bump();
+                    self.advance();
                 }
             }
         }
         if self.i == start && !self.at_eof() && !self.is_punct("}") {
-            self.bump();
+            self.advance();
         }
         self.docs_before.clear();
         self.docs_after.clear();
@@ -380,7 +377,7 @@ impl Parser<'_> {
                 }
                 _ => {}
             }
-            self.bump();
+            self.advance();
         }
     }
 
@@ -592,11 +589,11 @@ impl Parser<'_> {
                         "unexpected `}` at top level".into(),
                         "remove the extra `}` or the `};` that closes nothing",
                     );
-                    self.bump();
+                    self.advance();
                     continue;
                 }
                 Tok::Punct(";") => {
-                    self.bump();
+                    self.advance();
                     continue;
                 }
                 _ => {}
@@ -635,7 +632,7 @@ impl Parser<'_> {
             "exception" => self.exception(out, head),
             "interface" => self.interface(out, head, None),
             "abstract" | "local" => {
-                self.bump();
+                self.advance();
                 if self.is_word("interface") {
                     self.interface(out, head, Some(word))
                 } else {
@@ -643,7 +640,7 @@ impl Parser<'_> {
                 }
             }
             "typeid" | "typeprefix" => {
-                self.bump();
+                self.advance();
                 let name = self.scoped_name()?;
                 let target = self.target_name(&name);
                 let value = match self.peek_tok() {
@@ -652,7 +649,7 @@ impl Parser<'_> {
                         return Err(self.unexpected(&format!("a string after `{word} {name}`"), ""))
                     }
                 };
-                self.bump();
+                self.advance();
                 self.expect_punct(";", &format!("after `{word}`"), "")?;
                 let kind = if word == "typeid" {
                     OverrideKind::Id(value)
@@ -679,13 +676,13 @@ impl Parser<'_> {
     ) -> PResult<()> {
         let mut keyword = keyword.to_string();
         if self.is_word(&keyword) {
-            self.bump();
+            self.advance();
         }
         // `abstract valuetype X`, `custom valuetype X`.
         if let Tok::Ident(w) = self.peek_tok() {
             if matches!(w.as_str(), "valuetype" | "eventtype" | "component" | "home") {
                 keyword = format!("{keyword} {w}");
-                self.bump();
+                self.advance();
             }
         }
         let name = match self.peek_tok() {
@@ -712,12 +709,12 @@ impl Parser<'_> {
                     depth -= 1;
                 }
                 Tok::Punct(";") if depth == 0 => {
-                    self.bump();
+                    self.advance();
                     break;
                 }
                 _ => {}
             }
-            self.bump();
+            self.advance();
         }
         let d = Diagnostic::info(
             codes::SKIPPED,
@@ -793,7 +790,7 @@ impl Parser<'_> {
 
     /// The name after a declaration's keyword (`what`: what to call it when it is missing).
     fn name_after_keyword(&mut self, what: &str) -> PResult<String> {
-        self.bump();
+        self.advance();
         Ok(self.ident(what)?.0)
     }
 
@@ -1030,7 +1027,7 @@ impl Parser<'_> {
     }
 
     fn typedef(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
-        self.bump();
+        self.advance();
         let ty = self.type_spec()?;
         let start = out.len();
         self.comma_separated(|p| {
@@ -1056,7 +1053,7 @@ impl Parser<'_> {
     }
 
     fn constant(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
-        self.bump();
+        self.advance();
         let ty = self.type_spec()?;
         let (name, _) = self.ident("a constant name")?;
         self.expect_punct(
@@ -1157,7 +1154,7 @@ impl Parser<'_> {
         })?;
         let mut raises = Vec::new();
         while self.is_word("raises") || self.is_word("getraises") || self.is_word("setraises") {
-            self.bump();
+            self.advance();
             raises.extend(self.name_list("exception")?);
         }
         self.expect_punct(";", "after attribute", "")?;
@@ -1251,7 +1248,7 @@ impl Parser<'_> {
                 match self.peek_tok() {
                     Tok::Str { value, .. } => {
                         context.push(value);
-                        self.bump();
+                        self.advance();
                     }
                     _ => return Err(self.unexpected("a string in `context (…)`", "")),
                 }
@@ -1292,7 +1289,7 @@ impl Parser<'_> {
             let (part, _) = self.ident("a name")?;
             name.push_str(&part);
             if self.is_punct("::") {
-                self.bump();
+                self.advance();
                 name.push_str("::");
             } else {
                 return Ok(name);
@@ -1326,7 +1323,7 @@ impl Parser<'_> {
         let prim = |p: P| Ok(IdlType::Primitive { name: p });
         match word.as_str() {
             "unsigned" => {
-                self.bump();
+                self.advance();
                 if self.eat_word("short") {
                     prim(P::UnsignedShort)
                 } else if self.eat_word("long") {
@@ -1340,7 +1337,7 @@ impl Parser<'_> {
                 }
             }
             "long" => {
-                self.bump();
+                self.advance();
                 if self.eat_word("long") {
                     prim(P::LongLong)
                 } else if self.eat_word("double") {
@@ -1351,7 +1348,7 @@ impl Parser<'_> {
             }
             "short" | "float" | "double" | "char" | "wchar" | "boolean" | "octet" | "any"
             | "Object" | "ValueBase" => {
-                self.bump();
+                self.advance();
                 prim(match word.as_str() {
                     "short" => P::Short,
                     "float" => P::Float,
@@ -1366,7 +1363,7 @@ impl Parser<'_> {
                 })
             }
             "string" | "wstring" => {
-                self.bump();
+                self.advance();
                 let bound = if self.eat_punct("<") {
                     let b = self.bound()?;
                     self.close_angle(&word)?;
@@ -1380,7 +1377,7 @@ impl Parser<'_> {
                 })
             }
             "sequence" => {
-                self.bump();
+                self.advance();
                 self.expect_punct(
                     "<",
                     "after `sequence`",
@@ -1399,7 +1396,7 @@ impl Parser<'_> {
                 })
             }
             "fixed" => {
-                self.bump();
+                self.advance();
                 if self.eat_punct("<") {
                     let d = self.bound()?;
                     self.expect_punct(",", "between the digits and the scale of `fixed`", "")?;

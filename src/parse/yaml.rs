@@ -904,8 +904,13 @@ impl Reader<'_> {
         Some(self.leaf(m, kp, place))
     }
 
-    /// Moves the aliases of a node into [`Profile::written_as`] as `node.field`.
-    fn flush(&mut self, node: &str, aliases: Aliases) {
+    /// Moves the aliases of a node into [`Profile::written_as`] as `node.field`; the node's
+    /// name is made only when there are any (almost never).
+    fn flush(&mut self, node: impl FnOnce() -> String, aliases: Aliases) {
+        if aliases.is_empty() {
+            return;
+        }
+        let node = node();
         for (field, written, pos, dialect) in aliases {
             self.written_as.push(WrittenAs {
                 field: compact_str::format_compact!("{node}.{field}"),
@@ -1166,7 +1171,7 @@ impl Reader<'_> {
                 _ => self.unknown(&n, v, kp, "basicInfo", x),
             }
         }
-        self.flush("basicInfo", al);
+        self.flush(|| "basicInfo".into(), al);
     }
 
     /// A date: a chapter 7 `dateType` map (→ ISO 8601) or a plain string kept as written.
@@ -1274,7 +1279,7 @@ impl Reader<'_> {
                     }
                 }
             }
-            self.flush(&format!("actions.{}", kind.yaml_name()), al);
+            self.flush(|| format!("actions.{}", kind.yaml_name()), al);
             p.actions.push(a);
         }
     }
@@ -1363,10 +1368,15 @@ impl Reader<'_> {
                 _ => r.unknown(n, v, kp, place, x),
             }
         });
-        let name = T::NODE
-            .json_field("name")
-            .and_then(|f| t.value(f)?.as_deref());
-        self.flush(&format!("{} {}", T::LABEL, name.unwrap_or("")), al);
+        self.flush(
+            || {
+                let name = T::NODE
+                    .json_field("name")
+                    .and_then(|f| t.value(f)?.as_deref());
+                format!("{} {}", T::LABEL, name.unwrap_or(""))
+            },
+            al,
+        );
         t
     }
 

@@ -63,16 +63,15 @@ pub(crate) fn parse(src: &str, max_depth: usize, root_key: &str) -> Option<Value
 fn plain_text(b: &[u8]) -> bool {
     let mut i = 0;
     while i < b.len() {
-        // Whole blocks of printable ASCII and line feeds pass in one step.
-        if let Some(block) = b.get(i..i + 16).and_then(|s| <&[u8; 16]>::try_from(s).ok()) {
-            if ascii_lines(block) {
-                i += 16;
-                continue;
-            }
-        }
         let c = b[i];
         match c {
-            b'\n' | 0x20..=0x7e => {}
+            // A run of printable ASCII and line feeds passes sixteen bytes per step (scanned
+            // only from such a byte, so text outside ASCII is not tested block by block).
+            b'\n' | 0x20..=0x7e => {
+                let plain = |c: u8| (0x20..=0x7e).contains(&c) | (c == b'\n');
+                i += crate::bytes::run_len(&b[i..], plain, plain);
+                continue;
+            }
             b'\r' if b.get(i + 1) == Some(&b'\n') => {}
             0xc2 if b.get(i + 1).is_some_and(|&n| n < 0xa0) => return false,
             0xe2 if b.get(i + 1) == Some(&0x80) && matches!(b.get(i + 2), Some(0xa8 | 0xa9)) => {
@@ -91,17 +90,6 @@ fn plain_text(b: &[u8]) -> bool {
         i += 1;
     }
     true
-}
-
-/// Whether every byte of the block is printable ASCII or a line feed: a fixed-size loop without
-/// early exit, which the compiler turns into a few vector compares.
-#[inline(always)]
-fn ascii_lines(block: &[u8; 16]) -> bool {
-    let mut ok = true;
-    for &c in block {
-        ok &= (0x20..=0x7e).contains(&c) | (c == b'\n');
-    }
-    ok
 }
 
 /// The content lines; `None` when a document marker or directive makes the file more than one

@@ -11,7 +11,7 @@
 //! [`SystemProperty::private`]) is not compared either.
 
 use super::end_text;
-use crate::diff::{change, codes, labels, quoted, same_type, Change};
+use crate::diff::{change, codes, labels, quoted, respelled_message, same_type, Change};
 use crate::model::system::{
     short_port_name, ComponentIdParts, Connector, DataPortConnector, ExecutionContext, PortEnd,
     RtSystem, ServicePortConnector, SystemComponent, SystemConfigurationSet, SystemProperty,
@@ -89,11 +89,7 @@ fn respelled(
 ) -> (&'static str, String) {
     (
         codes::SYSTEM_OTHER,
-        format!(
-            "{subject} is spelled differently ({} → {}) but {same}",
-            quoted(a),
-            quoted(b)
-        ),
+        respelled_message(subject, &quoted(a), &quoted(b), same),
     )
 }
 

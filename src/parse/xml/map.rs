@@ -246,10 +246,14 @@ pub(super) fn map_leaf<T: Fields + Default>(m: &mut Mapper, n: &Node, on: &str) 
 }
 
 impl Mapper<'_> {
-    /// Records the attributes of the `kind` node named `name` read under an older spelling
-    /// (after its children, as [`Profile::written_as`] lists them).
-    pub(super) fn aliases(&mut self, kind: &str, name: &Option<Text>, aliases: Vec<Alias>) {
-        let node = format!("{kind} {}", name.as_deref().unwrap_or(""));
+    /// Records the attributes of a node read under an older spelling (after its children, as
+    /// [`Profile::written_as`] lists them); the node's name (`kind name`) is made only when
+    /// there are any (almost never).
+    pub(super) fn aliases(&mut self, node: impl FnOnce() -> String, aliases: Vec<Alias>) {
+        if aliases.is_empty() {
+            return;
+        }
+        let node = node();
         for (field, a, dialect) in aliases {
             self.alias(&node, field, a, dialect);
         }
@@ -417,8 +421,15 @@ fn map_documented<'n, 't, T: Documented>(
             _ => m.unknown_elem(c, on, extra),
         }
     });
-    let name = T::NODE.json_field("name").and_then(|f| t.value(f));
-    m.aliases(T::LABEL, name.unwrap_or(&None), aliases);
+    m.aliases(
+        || {
+            let name = T::NODE
+                .json_field("name")
+                .and_then(|f| t.value(f)?.as_deref());
+            format!("{} {}", T::LABEL, name.unwrap_or(""))
+        },
+        aliases,
+    );
     t
 }
 

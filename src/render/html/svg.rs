@@ -6,8 +6,8 @@ use crate::model::PortSide;
 use std::fmt::Write as _;
 
 /// Whether [`esc_into`] replaces byte `c`: `& < > " '` and control characters but newline and
-/// tab. Written as comparisons joined by `|` (no table, no early exit) so that the compiler
-/// checks a whole block of bytes per step with vector compares.
+/// tab. Comparisons joined by `|`, so that [`crate::bytes::run_len`] tests sixteen bytes per
+/// step.
 #[inline(always)]
 const fn needs_escape(c: u8) -> bool {
     (c == b'&')
@@ -18,8 +18,8 @@ const fn needs_escape(c: u8) -> bool {
         | ((c < 0x20) & (c != b'\n') & (c != b'\t'))
 }
 
-/// [`needs_escape`] as a table, for the byte-by-byte search of short text and of a block with
-/// a hit (one load per byte).
+/// [`needs_escape`] as a table, for the byte-by-byte part of the scan (one load per byte; most
+/// escaped text is a short label).
 const NEEDS_ESCAPE: [bool; 256] = {
     let mut t = [false; 256];
     let mut c = 0;
@@ -29,41 +29,6 @@ const NEEDS_ESCAPE: [bool; 256] = {
     }
     t
 };
-
-/// Bytes checked per step by [`next_escape`].
-const BLOCK: usize = 16;
-
-/// Whether any byte of the block [`needs_escape`]: a fixed-size loop without early exit, which
-/// the compiler turns into a few vector compares.
-#[inline(always)]
-fn block_hit(block: &[u8; BLOCK]) -> bool {
-    let mut hit = 0u8;
-    for &c in block {
-        hit |= u8::from(needs_escape(c));
-    }
-    hit != 0
-}
-
-/// The offset of the first byte of `b` that [`needs_escape`], if any. Whole blocks are tested
-/// without branching on each byte; only a block with a hit is searched byte by byte.
-fn next_escape(b: &[u8]) -> Option<usize> {
-    let mut blocks = b.chunks_exact(BLOCK);
-    let mut at = 0;
-    for block in &mut blocks {
-        // `chunks_exact` gives blocks of exactly BLOCK bytes, so the conversion holds.
-        if <&[u8; BLOCK]>::try_from(block).map_or(true, block_hit) {
-            if let Some(i) = block.iter().position(|&c| NEEDS_ESCAPE[usize::from(c)]) {
-                return Some(at + i);
-            }
-        }
-        at += BLOCK;
-    }
-    blocks
-        .remainder()
-        .iter()
-        .position(|&c| NEEDS_ESCAPE[usize::from(c)])
-        .map(|i| at + i)
-}
 
 /// Escapes text for SVG/HTML text and attribute values.
 pub fn esc(s: &str) -> String {
@@ -79,8 +44,16 @@ pub fn esc(s: &str) -> String {
 pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
     let b = s.as_bytes();
     let mut start = 0;
-    while let Some(n) = next_escape(&b[start..]) {
-        let i = start + n;
+    loop {
+        let i = start
+            + crate::bytes::run_len(
+                &b[start..],
+                |c| !needs_escape(c),
+                |c| !NEEDS_ESCAPE[usize::from(c)],
+            );
+        if i == b.len() {
+            break;
+        }
         let rep = match b[i] {
             b'&' => "&amp;",
             b'<' => "&lt;",
