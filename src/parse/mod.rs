@@ -59,6 +59,14 @@ pub(crate) trait Documented: Fields + Default {
     /// The node's name in [`Profile::written_as`] (`dataPort`).
     const LABEL: &'static str;
     fn parts(&mut self) -> DocParts<'_, Self::Doc>;
+
+    /// `"{LABEL} {name}"`: the node as [`crate::model::Profile::written_as`] names it.
+    fn written_as_node(&self) -> String {
+        let name = Self::NODE
+            .json_field("name")
+            .and_then(|f| self.value(f)?.as_deref());
+        format!("{} {}", Self::LABEL, name.unwrap_or(""))
+    }
 }
 
 /// The parts of a [`Documented`] node.

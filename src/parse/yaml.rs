@@ -1368,15 +1368,7 @@ impl Reader<'_> {
                 _ => r.unknown(n, v, kp, place, x),
             }
         });
-        self.flush(
-            || {
-                let name = T::NODE
-                    .json_field("name")
-                    .and_then(|f| t.value(f)?.as_deref());
-                format!("{} {}", T::LABEL, name.unwrap_or(""))
-            },
-            al,
-        );
+        self.flush(|| t.written_as_node(), al);
         t
     }
 

@@ -421,15 +421,7 @@ fn map_documented<'n, 't, T: Documented>(
             _ => m.unknown_elem(c, on, extra),
         }
     });
-    m.aliases(
-        || {
-            let name = T::NODE
-                .json_field("name")
-                .and_then(|f| t.value(f)?.as_deref());
-            format!("{} {}", T::LABEL, name.unwrap_or(""))
-        },
-        aliases,
-    );
+    m.aliases(|| t.written_as_node(), aliases);
     t
 }
 
