@@ -1585,7 +1585,7 @@ impl Catalog {
         // gives where the entries' pages start.
         fn section<'a>(
             pages: &mut Vec<Page>,
-            (kind, dir, index): (PageKind, &str, Option<PageKind>),
+            (kind, dir, index): Section,
             entries: impl Iterator<Item = (&'a str, &'a str, std::borrow::Cow<'a, str>)>,
         ) -> usize {
             pages.extend(index.map(|index| site(index, &format!("{dir}/index"))));
@@ -1604,6 +1604,12 @@ impl Catalog {
         fn type_entry<U>(t: &TypeEntry<U>) -> (&str, &str, std::borrow::Cow<'_, str>) {
             (&t.name, &t.slug, t.name.as_str().into())
         }
+        // (entry page kind, directory, index page kind)
+        type Section = (PageKind, &'static str, Option<PageKind>);
+        const TYPES: Section = (K::DataType, "types", Some(K::DataTypes));
+        const INTERFACES: Section = (K::Interface, "interfaces", Some(K::Interfaces));
+        const CATEGORIES: Section = (K::Category, "categories", Some(K::Categories));
+        const VENDORS: Section = (K::Vendor, "vendors", Some(K::Vendors));
         let p = &mut pages;
         let mut starts = PageStarts {
             history: Vec::new(),
@@ -1614,26 +1620,10 @@ impl Catalog {
                     .iter()
                     .map(|c| (&*c.id, c.slug.as_str(), c.display_name())),
             ),
-            data_type: section(
-                p,
-                (K::DataType, "types", Some(K::DataTypes)),
-                self.data_types.iter().map(type_entry),
-            ),
-            interface: section(
-                p,
-                (K::Interface, "interfaces", Some(K::Interfaces)),
-                self.interfaces.iter().map(type_entry),
-            ),
-            category: section(
-                p,
-                (K::Category, "categories", Some(K::Categories)),
-                self.categories.iter().map(facet),
-            ),
-            vendor: section(
-                p,
-                (K::Vendor, "vendors", Some(K::Vendors)),
-                self.vendors.iter().map(facet),
-            ),
+            data_type: section(p, TYPES, self.data_types.iter().map(type_entry)),
+            interface: section(p, INTERFACES, self.interfaces.iter().map(type_entry)),
+            category: section(p, CATEGORIES, self.categories.iter().map(facet)),
+            vendor: section(p, VENDORS, self.vendors.iter().map(facet)),
             system: section(
                 p,
                 // The systems' index only when there are systems.

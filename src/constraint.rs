@@ -49,6 +49,38 @@ fn is_case_insensitive(match_case: &Option<crate::model::Text>) -> bool {
     crate::model::parse_bool(match_case.as_deref()) == Some(false)
 }
 
+/// `x = lit`, `x ≤ lit`, …, with ` (any case)` for a comparison that ignores case.
+fn comparison_text(
+    comparison: Comparison,
+    literal: &Option<crate::model::Text>,
+    match_case: &Option<crate::model::Text>,
+) -> String {
+    let case = if is_case_insensitive(match_case) {
+        " (any case)"
+    } else {
+        ""
+    };
+    format!("x {} {}{case}", comparison.symbol(), text(literal))
+}
+
+/// `x like “pattern”`, with a legend of the wild card, single-character and escape characters
+/// the constraint names.
+fn like_text(
+    literal: &Option<crate::model::Text>,
+    marks: [(&Option<crate::model::Text>, &str); 3],
+) -> String {
+    let legend: Vec<String> = marks
+        .iter()
+        .filter(|(c, _)| !text(c).is_empty())
+        .map(|(c, means)| format!("{} = {means}", text(c)))
+        .collect();
+    if legend.is_empty() {
+        format!("x like “{}”", text(literal))
+    } else {
+        format!("x like “{}” ({})", text(literal), legend.join(", "))
+    }
+}
+
 fn describe_kind(c: &Constraint, nested: bool) -> String {
     match &c.kind {
         ConstraintKind::Unit { key, condition } => {
@@ -91,14 +123,7 @@ fn describe_condition(cond: &Condition, nested: bool) -> String {
             comparison,
             literal,
             match_case,
-        } => {
-            let case = if is_case_insensitive(match_case) {
-                " (any case)"
-            } else {
-                ""
-            };
-            format!("x {} {}{case}", comparison.symbol(), text(literal))
-        }
+        } => comparison_text(*comparison, literal, match_case),
         Condition::Between { lower, upper } => format!("{} ≤ x ≤ {}", text(lower), text(upper)),
         Condition::IsNull { .. } => "null".to_string(),
         Condition::Like {
@@ -106,37 +131,21 @@ fn describe_condition(cond: &Condition, nested: bool) -> String {
             wild_card,
             single_char,
             escape_char,
-        } => {
-            let mut legend = Vec::new();
-            if !text(wild_card).is_empty() {
-                legend.push(format!("{} = any text", text(wild_card)));
-            }
-            if !text(single_char).is_empty() {
-                legend.push(format!("{} = one character", text(single_char)));
-            }
-            if !text(escape_char).is_empty() {
-                legend.push(format!("{} = escape", text(escape_char)));
-            }
-            if legend.is_empty() {
-                format!("x like “{}”", text(literal))
-            } else {
-                format!("x like “{}” ({})", text(literal), legend.join(", "))
-            }
-        }
+        } => like_text(
+            literal,
+            [
+                (wild_card, "any text"),
+                (single_char, "one character"),
+                (escape_char, "escape"),
+            ],
+        ),
         Condition::Not { operand } => match unit_condition(operand) {
             Some(Condition::IsNull { .. }) => "not null".to_string(),
             Some(Condition::Compare {
                 comparison: Comparison::EqualTo,
                 literal,
                 match_case,
-            }) => {
-                let case = if is_case_insensitive(match_case) {
-                    " (any case)"
-                } else {
-                    ""
-                };
-                format!("x ≠ {}{case}", text(literal))
-            }
+            }) => comparison_text(Comparison::NotEqualTo, literal, match_case),
             _ => format!("not ({})", describe_kind(operand, false)),
         },
         Condition::Or { operands } => {
@@ -593,6 +602,54 @@ impl Eval<'_> {
         }
     }
 
+    /// `v` against a comparison's literal: as booleans, numbers or text, by the element type.
+    fn compare(
+        &self,
+        v: &str,
+        comparison: Comparison,
+        literal: &Option<crate::model::Text>,
+        match_case: &Option<crate::model::Text>,
+    ) -> Truth {
+        let Some(lit) = opt(literal) else {
+            return Truth::Unknown("a comparison has no literal".into());
+        };
+        let ok = match self.elem {
+            Some(ScalarType::Bool) => {
+                let (Some(a), Some(b)) =
+                    (value::parse_config_bool(v), value::parse_config_bool(lit))
+                else {
+                    return Truth::Unknown(format!("`{lit}` or `{v}` is not a boolean"));
+                };
+                match comparison {
+                    Comparison::EqualTo => a == b,
+                    Comparison::NotEqualTo => a != b,
+                    _ => return Truth::Unknown("booleans have no order".into()),
+                }
+            }
+            elem => match (number(elem, v), number(elem, lit)) {
+                (Some(a), Some(b)) => ordering_holds(comparison, a.partial_cmp(&b)),
+                _ if is_numeric(elem) => {
+                    return Truth::Unknown(format!(
+                        "`{v}` and `{lit}` cannot both be read as numbers"
+                    ))
+                }
+                _ => {
+                    let ord = if is_case_insensitive(match_case) {
+                        v.to_lowercase().cmp(&lit.to_lowercase())
+                    } else {
+                        v.cmp(lit)
+                    };
+                    ordering_holds(comparison, Some(ord))
+                }
+            },
+        };
+        if ok {
+            Truth::True
+        } else {
+            Truth::False(format!("`{v}` is not {} {lit}", comparison.symbol()))
+        }
+    }
+
     /// A leaf condition (comparison, like, between) against one scalar.
     fn scalar(&self, cond: &Condition, v: &str) -> Truth {
         let v = v.trim();
@@ -601,48 +658,7 @@ impl Eval<'_> {
                 comparison,
                 literal,
                 match_case,
-            } => {
-                let Some(lit) = opt(literal) else {
-                    return Truth::Unknown("a comparison has no literal".into());
-                };
-                let ok = match self.elem {
-                    Some(ScalarType::Bool) => {
-                        let (Some(a), Some(b)) =
-                            (value::parse_config_bool(v), value::parse_config_bool(lit))
-                        else {
-                            return Truth::Unknown(format!("`{lit}` or `{v}` is not a boolean"));
-                        };
-                        match comparison {
-                            Comparison::EqualTo => a == b,
-                            Comparison::NotEqualTo => a != b,
-                            _ => return Truth::Unknown("booleans have no order".into()),
-                        }
-                    }
-                    elem => match (number(elem, v), number(elem, lit)) {
-                        (Some(a), Some(b)) => ordering_holds(*comparison, a.partial_cmp(&b)),
-                        _ if is_numeric(elem) => {
-                            return Truth::Unknown(format!(
-                                "`{v}` and `{lit}` cannot both be read as numbers"
-                            ))
-                        }
-                        _ => {
-                            let insensitive =
-                                crate::model::parse_bool(match_case.as_deref()) == Some(false);
-                            let ord = if insensitive {
-                                v.to_lowercase().cmp(&lit.to_lowercase())
-                            } else {
-                                v.cmp(lit)
-                            };
-                            ordering_holds(*comparison, Some(ord))
-                        }
-                    },
-                };
-                if ok {
-                    Truth::True
-                } else {
-                    Truth::False(format!("`{v}` is not {} {lit}", comparison.symbol()))
-                }
-            }
+            } => self.compare(v, *comparison, literal, match_case),
             Condition::Between { lower, upper } => {
                 let (Some(lo), Some(hi)) = (opt(lower), opt(upper)) else {
                     return Truth::Unknown("`between` needs both boundaries".into());

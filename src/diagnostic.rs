@@ -43,6 +43,28 @@ pub fn tally<T>(
     (levels, by_code)
 }
 
+/// The entry of a code registry (`check`'s rules, `diff`'s codes) whose code is `code`, in any
+/// case and with blanks around it.
+pub fn registry_entry<T>(
+    table: &'static [T],
+    code: &str,
+    code_of: impl Fn(&T) -> &str,
+) -> Option<&'static T> {
+    let code = code.trim();
+    table.iter().find(|e| code_of(e).eq_ignore_ascii_case(code))
+}
+
+/// `--explain` text of a registry entry: `CODE (name) — summary`, then each part as a paragraph.
+pub fn explanation(code: &str, name: &str, summary: &str, parts: &[&str]) -> String {
+    let mut s = format!("{code} ({name}) — {summary}\n");
+    for p in parts {
+        s.push('\n');
+        s.push_str(p);
+        s.push('\n');
+    }
+    s
+}
+
 /// `n` and `word`, with an `s` unless `n` is 1 (`1 warning`, `3 infos`).
 pub fn counted(n: usize, word: &str) -> String {
     format!("{n} {word}{}", if n == 1 { "" } else { "s" })

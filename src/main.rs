@@ -138,6 +138,16 @@ struct UpdateArgs {
     cache_dir: Option<PathBuf>,
 }
 
+/// What is read and how: the input's filters and limits, and how the `[[source]]` repositories
+/// are fetched. Shared by `build`, `check`, `diff` and `serve`.
+#[derive(Args, Clone, Default)]
+struct ReadArgs {
+    #[command(flatten)]
+    input: InputArgs,
+    #[command(flatten)]
+    sources: SourceArgs,
+}
+
 /// What the pages look like: shared by `build` and `serve`.
 #[derive(Args, Clone, Default)]
 struct SiteArgs {
@@ -176,9 +186,7 @@ struct BuildArgs {
     #[command(flatten)]
     site: SiteArgs,
     #[command(flatten)]
-    input_args: InputArgs,
-    #[command(flatten)]
-    sources: SourceArgs,
+    read: ReadArgs,
 }
 
 #[derive(Args)]
@@ -195,9 +203,7 @@ struct CheckArgs {
     #[arg(long, value_name = "CODE")]
     explain: Option<String>,
     #[command(flatten)]
-    input_args: InputArgs,
-    #[command(flatten)]
-    sources: SourceArgs,
+    read: ReadArgs,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -235,9 +241,7 @@ struct DiffArgs {
     #[arg(long, value_name = "CODE")]
     explain: Option<String>,
     #[command(flatten)]
-    input_args: InputArgs,
-    #[command(flatten)]
-    sources: SourceArgs,
+    read: ReadArgs,
 }
 
 /// `serve` renders HTML into memory: it takes no output directory, format or `--strict`.
@@ -248,9 +252,7 @@ struct ServeArgs {
     #[command(flatten)]
     site: SiteArgs,
     #[command(flatten)]
-    input_args: InputArgs,
-    #[command(flatten)]
-    sources: SourceArgs,
+    read: ReadArgs,
     /// Port on 127.0.0.1 [default: 3000; 0 picks a free one].
     #[arg(short, long)]
     port: Option<u16>,
@@ -499,7 +501,7 @@ fn load_options(file: &config::Loaded, i: &InputArgs) -> build::LoadOptions {
 }
 
 fn build_overrides(args: &BuildArgs) -> Overrides {
-    overrides(&args.input, &args.site, &args.input_args, Some(args))
+    overrides(&args.input, &args.site, &args.read.input, Some(args))
 }
 
 /// How many errors and warnings `build` and `serve` print before pointing at `rtcdoc check`.
@@ -635,14 +637,14 @@ fn print_skipped(skipped: &[rtcdoc::walk::Skipped], root: &Path) {
 fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
         Command::Build(args) => {
-            let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
+            let file = load_config(args.input.as_deref(), args.read.input.config.as_deref())?;
             let mut opts = config::build_options(&file, &build_overrides(args));
-            pin(&file, &args.sources, &mut opts.load, cli.quiet)?;
+            pin(&file, &args.read.sources, &mut opts.load, cli.quiet)?;
             let root = input_root(&opts.input);
             let check_cmd = if opts.load.sources_only {
-                check_command_sources(&file, &args.input_args)
+                check_command_sources(&file, &args.read.input)
             } else {
-                check_command(&opts.input, &args.input_args)
+                check_command(&opts.input, &args.read.input)
             };
             let bar = Bar::new(!cli.quiet);
             let result = build::build_with(&opts, &bar);
@@ -704,11 +706,11 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
         Command::Check(args) => check(cli, args),
         Command::Diff(args) => diff(cli, args),
         Command::Serve(args) => {
-            let file = load_config(args.input.as_deref(), args.input_args.config.as_deref())?;
-            let cli_over = overrides(&args.input, &args.site, &args.input_args, None);
+            let file = load_config(args.input.as_deref(), args.read.input.config.as_deref())?;
+            let cli_over = overrides(&args.input, &args.site, &args.read.input, None);
             let mut build = config::build_options(&file, &cli_over);
             build.formats = vec![Format::Html];
-            pin(&file, &args.sources, &mut build.load, cli.quiet)?;
+            pin(&file, &args.read.sources, &mut build.load, cli.quiet)?;
             let serve_cfg = file.config.serve.clone().unwrap_or_default();
             let mut watch = Vec::new();
             if let Some(t) = &build.site.theme_dir {
@@ -719,9 +721,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             }
             let quiet = cli.quiet;
             let root = input_root(&build.input);
-            let check_cmd = check_command(&build.input, &args.input_args);
-            let (input, explicit) = (args.input.clone(), args.input_args.config.clone());
-            let source_args = args.sources.clone();
+            let check_cmd = check_command(&build.input, &args.read.input);
+            let (input, explicit) = (args.input.clone(), args.read.input.config.clone());
+            let source_args = args.read.sources.clone();
             let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
                 let file = load_config(input.as_deref(), explicit.as_deref())?;
                 let mut b = config::build_options(&file, &cli_over);
@@ -1035,12 +1037,12 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     // Same input options as `build`: rtcdoc.toml, then the command line.
     let file = load_config(
         paths.first().map(PathBuf::as_path),
-        args.input_args.config.as_deref(),
+        args.read.input.config.as_deref(),
     )?;
-    let mut opts = load_options(&file, &args.input_args);
+    let mut opts = load_options(&file, &args.read.input);
     if args.paths.is_empty() {
         // The configuration's input (its `input`, or its sources only) as `build` reads it.
-        pin(&file, &args.sources, &mut opts, cli.quiet)?;
+        pin(&file, &args.read.sources, &mut opts, cli.quiet)?;
         if let (true, Some(d)) = (opts.sources_only, &file.dir) {
             paths = vec![d.clone()];
         }
@@ -1184,14 +1186,14 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         side::Spec::Local(p) => Some(p.as_path()),
         side::Spec::Git { .. } | side::Spec::Source(_) => None,
     };
-    let file = load_config(config_dir, args.input_args.config.as_deref())?;
-    let mut opts = load_options(&file, &args.input_args);
+    let file = load_config(config_dir, args.read.input.config.as_deref())?;
+    let mut opts = load_options(&file, &args.read.input);
     opts.sources_only = false;
     // `NAME` or `NAME@REV` of a `[[source]]` (not a path on disk): that source alone, at its
     // locked commit or at REV.
     let (old_spec, new_spec) = (
-        source_spec(&file, old_arg, old_spec, &args.sources)?,
-        source_spec(&file, new_arg, new_spec, &args.sources)?,
+        source_spec(&file, old_arg, old_spec, &args.read.sources)?,
+        source_spec(&file, new_arg, new_spec, &args.read.sources)?,
     );
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;

@@ -788,23 +788,14 @@ pub fn rule_exact(code: &str) -> Option<&'static Rule> {
 }
 
 pub fn rule(code: &str) -> Option<&'static Rule> {
-    RULES
-        .iter()
-        .find(|r| r.code.eq_ignore_ascii_case(code.trim()))
+    crate::diagnostic::registry_entry(RULES, code, |r| r.code)
 }
 
 /// `--explain` text for a rule.
 pub fn explain(r: &Rule) -> String {
-    format!(
-        "{code} ({name}) — {summary}\n\nDefault severity: {sev}\nSpec: {spec}\n\n{expl}\n\nFix: {hint}\n",
-        code = r.code,
-        name = r.name,
-        summary = r.summary,
-        sev = r.severity,
-        spec = r.spec,
-        expl = r.explanation,
-        hint = r.hint
-    )
+    let severity = format!("Default severity: {}\nSpec: {}", r.severity, r.spec);
+    let fix = format!("Fix: {}", r.hint);
+    crate::diagnostic::explanation(r.code, r.name, r.summary, &[&severity, r.explanation, &fix])
 }
 
 #[cfg(test)]

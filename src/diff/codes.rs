@@ -608,21 +608,13 @@ pub static CODES: &[Code] = &[
 
 /// The registry entry of `code` (any case).
 pub fn code(code: &str) -> Option<&'static Code> {
-    CODES
-        .iter()
-        .find(|c| c.code.eq_ignore_ascii_case(code.trim()))
+    crate::diagnostic::registry_entry(CODES, code, |c| c.code)
 }
 
 /// `--explain` text for a code.
 pub fn explain(c: &Code) -> String {
-    format!(
-        "{code} ({name}) — {summary}\n\nSeverity: {level}\n\n{expl}\n",
-        code = c.code,
-        name = c.name,
-        summary = c.summary,
-        level = c.level,
-        expl = c.explanation,
-    )
+    let severity = format!("Severity: {}", c.level);
+    crate::diagnostic::explanation(c.code, c.name, c.summary, &[&severity, c.explanation])
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@
 //! is what a [`Markup`] says.
 
 use super::facts::{self, Fact};
-use super::view::component::ComponentView;
+use super::view::component::{ComponentView, PortView};
 use super::view::facets::{ComponentRow, FacetIndexView, FacetView};
 use super::view::front::SystemsIndexView;
 use super::view::types::{TypeIndexView, TypeKind, TypeView};
@@ -589,6 +589,47 @@ fn named<M: Markup>(name: &str, since: Option<&str>, lang: Lang) -> String {
     M::esc(&since_text(name, since, lang))
 }
 
+/// A port table row: name, direction and type, the `middle` cells, then description, details
+/// (with `events` after them) and peers.
+fn port_row<M: Markup>(
+    cat: &Catalog,
+    page: &Page,
+    p: &PortView<'_>,
+    middle: Option<String>,
+    events: &[(&str, Vec<Fact>)],
+    lang: Lang,
+) -> Vec<String> {
+    let mut row = vec![
+        M::anchored(page, p.anchor, &named::<M>(p.name, p.since, lang)),
+        M::esc(&p.direction.label),
+        p.type_
+            .as_ref()
+            .map(|t| linked::<M>(cat, page, t))
+            .unwrap_or_default(),
+    ];
+    row.extend(middle);
+    row.extend([
+        p.description.map(M::esc).unwrap_or_default(),
+        details_cell::<M>(&p.details, events),
+        peers_cell::<M>(cat, page, &p.peers),
+    ]);
+    row
+}
+
+/// A table of [`port_row`]s under the headers `name`, direction, `type`, the `middle` ones,
+/// description, details and peers; an empty optional column is left out.
+fn port_table<M: Markup>(
+    out: &mut String,
+    lang: Lang,
+    (name, type_, middle): (&str, &str, Option<&str>),
+    rows: &[Vec<String>],
+) {
+    let mut headers = vec![lang.t(name), lang.t("direction"), lang.t(type_)];
+    headers.extend(middle.map(|k| lang.t(k)));
+    headers.extend(["description", "fact_details", "connects_to"].map(|k| lang.t(k)));
+    sparse_table::<M>(out, 3, &headers, rows);
+}
+
 fn data_ports_section<M: Markup>(
     out: &mut String,
     cat: &Catalog,
@@ -603,35 +644,9 @@ fn data_ports_section<M: Markup>(
     let rows: Vec<Vec<String>> = v
         .data_ports
         .iter()
-        .map(|dp| {
-            vec![
-                M::anchored(page, dp.anchor, &named::<M>(dp.name, dp.since, lang)),
-                M::esc(&dp.direction.label),
-                dp.type_
-                    .as_ref()
-                    .map(|t| linked::<M>(cat, page, t))
-                    .unwrap_or_default(),
-                M::esc(dp.unit),
-                dp.description.map(M::esc).unwrap_or_default(),
-                details_cell::<M>(&dp.details, &dp.events),
-                peers_cell::<M>(cat, page, &dp.peers),
-            ]
-        })
+        .map(|dp| port_row::<M>(cat, page, &dp.port, Some(M::esc(dp.unit)), &dp.events, lang))
         .collect();
-    sparse_table::<M>(
-        out,
-        3,
-        &[
-            lang.t("name"),
-            lang.t("direction"),
-            lang.t("data_type"),
-            lang.t("unit"),
-            lang.t("description"),
-            lang.t("fact_details"),
-            lang.t("connects_to"),
-        ],
-        &rows,
-    );
+    port_table::<M>(out, lang, ("name", "data_type", Some("unit")), &rows);
 }
 
 fn service_ports_section<M: Markup>(
@@ -666,33 +681,9 @@ fn service_ports_section<M: Markup>(
         let rows: Vec<Vec<String>> = sp
             .interfaces
             .iter()
-            .map(|i| {
-                vec![
-                    M::anchored(page, i.anchor, &named::<M>(i.name, i.since, lang)),
-                    M::esc(&i.direction.label),
-                    i.type_
-                        .as_ref()
-                        .map(|t| linked::<M>(cat, page, t))
-                        .unwrap_or_default(),
-                    i.description.map(M::esc).unwrap_or_default(),
-                    facts_cell::<M>(&i.details),
-                    peers_cell::<M>(cat, page, &i.peers),
-                ]
-            })
+            .map(|i| port_row::<M>(cat, page, &i.port, None, &[], lang))
             .collect();
-        sparse_table::<M>(
-            out,
-            3,
-            &[
-                lang.t("interface"),
-                lang.t("direction"),
-                lang.t("type"),
-                lang.t("description"),
-                lang.t("fact_details"),
-                lang.t("connects_to"),
-            ],
-            &rows,
-        );
+        port_table::<M>(out, lang, ("interface", "type", None), &rows);
     }
 }
 

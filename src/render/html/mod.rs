@@ -269,12 +269,16 @@ struct PortTypeRef {
 #[derive(Serialize)]
 struct PortCells {
     anchor: String,
-    /// "since 1.1.0": the version that added it ([`view::component::DataPortView::since`]).
+    /// "since 1.1.0": the version that added it ([`view::component::PortView::since`]).
     since: Option<String>,
     direction: String,
     dir_class: &'static str,
     name: String,
     type_ref: Option<PortTypeRef>,
+    /// The description, then the other facts.
+    details: Vec<Field>,
+    peers: Vec<Link>,
+    peers_more: Option<Link>,
 }
 
 #[derive(Serialize)]
@@ -282,10 +286,7 @@ struct DataPortRow {
     #[serde(flatten)]
     port: PortCells,
     unit: String,
-    details: Vec<Field>,
     events: Vec<EventRow>,
-    peers: Vec<Link>,
-    peers_more: Option<Link>,
 }
 
 #[derive(Serialize)]
@@ -307,9 +308,6 @@ struct ServicePortRow {
 struct InterfaceRow {
     #[serde(flatten)]
     port: PortCells,
-    details: Vec<Field>,
-    peers: Vec<Link>,
-    peers_more: Option<Link>,
 }
 
 #[derive(Serialize)]
@@ -614,20 +612,18 @@ impl<'a> Site<'a> {
 
     /// The cells of a data port or service interface row: its `(anchor, since, name)`, its
     /// direction and its type, linked from `from`.
-    fn port_cells(
-        &self,
-        from: &Page,
-        (anchor, since, name): (&str, Option<&str>, &str),
-        direction: &view::Dir,
-        type_: &Option<Linked<'_>>,
-    ) -> PortCells {
+    fn port_cells(&self, from: &Page, p: &view::component::PortView<'_>) -> PortCells {
+        let (peers, peers_more) = self.peers(from, &p.peers);
         PortCells {
-            anchor: anchor.to_string(),
-            since: self.since(since),
-            direction: direction.label.clone(),
-            dir_class: direction.class,
-            name: name.to_string(),
-            type_ref: self.type_ref(from, type_),
+            anchor: p.anchor.to_string(),
+            since: self.since(p.since),
+            direction: p.direction.label.clone(),
+            dir_class: p.direction.class,
+            name: p.name.to_string(),
+            type_ref: self.type_ref(from, &p.type_),
+            details: lead_fields(self.lang, p.description, &p.details),
+            peers,
+            peers_more,
         }
     }
 
@@ -652,28 +648,17 @@ impl<'a> Site<'a> {
         let (lang, page) = (self.lang, v.page);
         v.data_ports
             .iter()
-            .map(|dp| {
-                let (peers, peers_more) = self.peers(page, &dp.peers);
-                DataPortRow {
-                    port: self.port_cells(
-                        page,
-                        (dp.anchor, dp.since, dp.name),
-                        &dp.direction,
-                        &dp.type_,
-                    ),
-                    unit: dp.unit.to_string(),
-                    details: lead_fields(lang, dp.description, &dp.details),
-                    events: dp
-                        .events
-                        .iter()
-                        .map(|(name, f)| EventRow {
-                            name: name.to_string(),
-                            fields: fields(lang, None, f.clone()),
-                        })
-                        .collect(),
-                    peers,
-                    peers_more,
-                }
+            .map(|dp| DataPortRow {
+                port: self.port_cells(page, &dp.port),
+                unit: dp.unit.to_string(),
+                events: dp
+                    .events
+                    .iter()
+                    .map(|(name, f)| EventRow {
+                        name: name.to_string(),
+                        fields: fields(lang, None, f.clone()),
+                    })
+                    .collect(),
             })
             .collect()
     }
@@ -691,19 +676,8 @@ impl<'a> Site<'a> {
                 interfaces: sp
                     .interfaces
                     .iter()
-                    .map(|i| {
-                        let (peers, peers_more) = self.peers(page, &i.peers);
-                        InterfaceRow {
-                            port: self.port_cells(
-                                page,
-                                (i.anchor, i.since, i.name),
-                                &i.direction,
-                                &i.type_,
-                            ),
-                            details: lead_fields(lang, i.description, &i.details),
-                            peers,
-                            peers_more,
-                        }
+                    .map(|i| InterfaceRow {
+                        port: self.port_cells(page, &i.port),
                     })
                     .collect(),
             })
@@ -781,8 +755,8 @@ impl<'a> Site<'a> {
                 unit: data_ports.iter().any(|r| !r.unit.is_empty()),
                 description: data_ports
                     .iter()
-                    .any(|r| !r.details.is_empty() || !r.events.is_empty()),
-                peers: data_ports.iter().any(|r| !r.peers.is_empty()),
+                    .any(|r| !r.port.details.is_empty() || !r.events.is_empty()),
+                peers: data_ports.iter().any(|r| !r.port.peers.is_empty()),
                 ..Columns::default()
             }
             .counted(3),
@@ -790,8 +764,8 @@ impl<'a> Site<'a> {
             service_cols: {
                 let rows = || service_ports.iter().flat_map(|sp| &sp.interfaces);
                 Columns {
-                    description: rows().any(|r| !r.details.is_empty()),
-                    peers: rows().any(|r| !r.peers.is_empty()),
+                    description: rows().any(|r| !r.port.details.is_empty()),
+                    peers: rows().any(|r| !r.port.peers.is_empty()),
                     ..Columns::default()
                 }
                 .counted(3)
@@ -854,10 +828,10 @@ impl<'a> Site<'a> {
             .iter()
             .map(|dp| svg::DiagramDataPort {
                 side: dp.side,
-                name: dp.name.to_string(),
-                type_label: dp.type_short.clone(),
-                class: dp.direction.class,
-                anchor: dp.anchor.to_string(),
+                name: dp.port.name.to_string(),
+                type_label: dp.port.type_short.clone(),
+                class: dp.port.direction.class,
+                anchor: dp.port.anchor.to_string(),
             })
             .collect();
         let service: Vec<svg::DiagramServicePort> = v
@@ -872,9 +846,9 @@ impl<'a> Site<'a> {
                     .iter()
                     .map(|i| svg::DiagramInterface {
                         provided: i.provided,
-                        label: i.name.to_string(),
-                        type_label: i.type_short.clone(),
-                        anchor: i.anchor.to_string(),
+                        label: i.port.name.to_string(),
+                        type_label: i.port.type_short.clone(),
+                        anchor: i.port.anchor.to_string(),
                     })
                     .collect(),
             })

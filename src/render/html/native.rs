@@ -162,11 +162,15 @@ impl Out<'_> {
         self.raw("</code></th>");
     }
 
-    /// The "connects to" cell when `shown`, and the end of the row.
-    fn peers_cell(&mut self, shown: bool, peers: &[super::Link], more: &Option<super::Link>) {
-        if shown {
+    /// The end of a port row: its description cell (when the table has one) with what `more`
+    /// writes after the facts, its "connects to" cell (when the table has one), `</tr>`.
+    fn port_row_end(&mut self, c: &PortCells, cols: &super::Columns, more: impl FnOnce(&mut Self)) {
+        if cols.description {
+            self.desc_cell(&c.details, more);
+        }
+        if cols.peers {
             self.td("connects_to");
-            self.peers(peers, more);
+            self.peers(&c.peers, &c.peers_more);
             self.raw("</td>\n");
         }
         self.raw("</tr>\n");
@@ -535,10 +539,7 @@ fn data_ports(o: &mut Out<'_>, p: &ComponentPage) {
             if cols.unit {
                 o.cell("unit", &r.unit, "\n");
             }
-            if cols.description {
-                o.desc_cell(&r.details, |o| events(o, &r.events));
-            }
-            o.peers_cell(cols.peers, &r.peers, &r.peers_more);
+            o.port_row_end(&r.port, cols, |o| events(o, &r.events));
         },
     );
 }
@@ -587,10 +588,7 @@ fn service_ports(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("</th></tr>\n");
         for i in &sp.interfaces {
             o.port_row_start(&i.port, "interface_type");
-            if cols.description {
-                o.desc_cell(&i.details, |_| {});
-            }
-            o.peers_cell(cols.peers, &i.peers, &i.peers_more);
+            o.port_row_end(&i.port, cols, |_| {});
         }
         o.raw("</tbody>\n");
     }

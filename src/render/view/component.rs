@@ -11,42 +11,38 @@ use crate::render::facts::{self, BackupRow, Fact};
 use crate::render::neighbourhood::{self as nb, NeighbourRow};
 use crate::types::{canonical_type, short_name};
 
-/// A data port row.
-pub struct DataPortView<'a> {
+/// What a data port row and a service interface row both say.
+pub struct PortView<'a> {
     pub anchor: &'a str,
     /// The version (else date) that added it, when younger than the oldest version read
     /// ([`crate::catalog::history::since`]).
     pub since: Option<&'a str>,
     pub name: &'a str,
     pub direction: Dir,
-    /// The data type as written, linked to its type page when the catalogue has one.
+    /// The data type or interface as written, linked to its page when the catalogue has one.
     pub type_: Option<Linked<'a>>,
     /// The short type name the component diagram shows (`TimedLong` for `RTC::TimedLong`).
     pub type_short: String,
+    pub description: Option<&'a str>,
+    /// Its other facts (not its name, direction, type, unit or description).
+    pub details: Vec<Fact>,
+    /// The components at the other end.
+    pub peers: Peers<'a>,
+}
+
+/// A data port row.
+pub struct DataPortView<'a> {
+    pub port: PortView<'a>,
     pub side: model::PortSide,
     pub unit: &'a str,
-    pub description: Option<&'a str>,
-    /// The port's other facts (not its name, direction, type, unit or description).
-    pub details: Vec<Fact>,
     /// Its events: name and facts.
     pub events: Vec<(&'a str, Vec<Fact>)>,
-    pub peers: Peers<'a>,
 }
 
 /// A service interface row of a service port.
 pub struct InterfaceView<'a> {
-    pub anchor: &'a str,
-    /// The version (else date) that added it, when younger than the oldest version read
-    /// ([`crate::catalog::history::since`]).
-    pub since: Option<&'a str>,
-    pub name: &'a str,
-    pub direction: Dir,
+    pub port: PortView<'a>,
     pub provided: bool,
-    pub type_: Option<Linked<'a>>,
-    pub type_short: String,
-    pub description: Option<&'a str>,
-    pub details: Vec<Fact>,
-    pub peers: Peers<'a>,
 }
 
 /// A service port with its interfaces.
@@ -173,42 +169,44 @@ fn data_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<DataPortVi
             let ti = non_empty(&dp.type_).and_then(|t| cat.data_type_index(t));
             let type_page = ti.map(|ti| cat.data_type_page(ti));
             DataPortView {
-                anchor: &c.anchors.data_ports[pi],
-                since: since(c, keys.data_ports.get(pi)),
-                name: dp.name.as_deref().unwrap_or_default(),
-                direction: port_dir(lang, dp),
-                type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
-                type_short: short(&dp.type_),
                 side: dp.side(),
                 unit: facts::data_port_unit(dp).unwrap_or(""),
-                description: dp.doc.as_ref().and_then(|d| non_empty(&d.description)),
-                details: facts::data_port_attributes_without_unit(dp, lang),
                 events: dp
                     .events
                     .iter()
                     .map(|e| (e.name.as_deref().unwrap_or_default(), facts::event(e, lang)))
                     .collect(),
-                peers: Peers::of(
-                    ci,
-                    cat.data_port_peers(ci, pi),
-                    |r| cat.port_component(r).unwrap_or(Ix::NONE),
-                    |r| {
-                        let (pc, port) = cat.resolve_port(r)?;
-                        let comp = &cat[pc];
-                        Some((
-                            pc,
-                            comp.profile.data_ports[port]
-                                .name
-                                .as_deref()
-                                .unwrap_or_default()
-                                .to_string(),
-                            comp.anchors.data_ports[port].as_str(),
-                        ))
-                    },
-                    cat,
-                    type_page,
-                    lang.t("more_on_type_page"),
-                ),
+                port: PortView {
+                    anchor: &c.anchors.data_ports[pi],
+                    since: since(c, keys.data_ports.get(pi)),
+                    name: dp.name.as_deref().unwrap_or_default(),
+                    direction: port_dir(lang, dp),
+                    type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
+                    type_short: short(&dp.type_),
+                    description: dp.doc.as_ref().and_then(|d| non_empty(&d.description)),
+                    details: facts::data_port_attributes_without_unit(dp, lang),
+                    peers: Peers::of(
+                        ci,
+                        cat.data_port_peers(ci, pi),
+                        |r| cat.port_component(r).unwrap_or(Ix::NONE),
+                        |r| {
+                            let (pc, port) = cat.resolve_port(r)?;
+                            let comp = &cat[pc];
+                            Some((
+                                pc,
+                                comp.profile.data_ports[port]
+                                    .name
+                                    .as_deref()
+                                    .unwrap_or_default()
+                                    .to_string(),
+                                comp.anchors.data_ports[port].as_str(),
+                            ))
+                        },
+                        cat,
+                        type_page,
+                        lang.t("more_on_type_page"),
+                    ),
+                },
             }
         })
         .collect()
@@ -238,41 +236,47 @@ fn service_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<Service
                         .and_then(|t| cat.interface_index_of(t))
                         .map(|x| cat.interface_page(x));
                     InterfaceView {
-                        anchor: &c.anchors.interfaces[si][ii],
-                        name: i.name.as_deref().unwrap_or_default(),
-                        since: since(c, keys.interfaces.get(si).and_then(|x| x.get(ii))),
-                        direction: match i.direction_kind() {
-                            Some(Direction::Provided) => Dir::new(lang.t("provided"), "provided"),
-                            Some(Direction::Required) => Dir::new(lang.t("required"), "required"),
-                            None => Dir::new(non_empty(&i.direction).unwrap_or(""), "other"),
-                        },
                         provided: i.direction_kind() == Some(Direction::Provided),
-                        type_: non_empty(&i.type_).map(|t| Linked::new(t, it, None)),
-                        type_short: short(&i.type_),
-                        description: i.doc.as_ref().and_then(|d| non_empty(&d.description)),
-                        details: facts::service_interface(i, lang),
-                        peers: Peers::of(
-                            ci,
-                            cat.interface_peers(ci, si, ii),
-                            |r| cat.interface_component(r).unwrap_or(Ix::NONE),
-                            |r| {
-                                let (pc, port, x) = cat.resolve_interface(r)?;
-                                let comp = &cat[pc];
-                                let sp = &comp.profile.service_ports[port];
-                                Some((
-                                    pc,
-                                    format!(
-                                        "{}.{}",
-                                        sp.name.as_deref().unwrap_or(""),
-                                        sp.interfaces[x].name.as_deref().unwrap_or("")
-                                    ),
-                                    comp.anchors.interfaces[port][x].as_str(),
-                                ))
+                        port: PortView {
+                            anchor: &c.anchors.interfaces[si][ii],
+                            name: i.name.as_deref().unwrap_or_default(),
+                            since: since(c, keys.interfaces.get(si).and_then(|x| x.get(ii))),
+                            direction: match i.direction_kind() {
+                                Some(Direction::Provided) => {
+                                    Dir::new(lang.t("provided"), "provided")
+                                }
+                                Some(Direction::Required) => {
+                                    Dir::new(lang.t("required"), "required")
+                                }
+                                None => Dir::new(non_empty(&i.direction).unwrap_or(""), "other"),
                             },
-                            cat,
-                            it,
-                            lang.t("more_on_interface_page"),
-                        ),
+                            type_: non_empty(&i.type_).map(|t| Linked::new(t, it, None)),
+                            type_short: short(&i.type_),
+                            description: i.doc.as_ref().and_then(|d| non_empty(&d.description)),
+                            details: facts::service_interface(i, lang),
+                            peers: Peers::of(
+                                ci,
+                                cat.interface_peers(ci, si, ii),
+                                |r| cat.interface_component(r).unwrap_or(Ix::NONE),
+                                |r| {
+                                    let (pc, port, x) = cat.resolve_interface(r)?;
+                                    let comp = &cat[pc];
+                                    let sp = &comp.profile.service_ports[port];
+                                    Some((
+                                        pc,
+                                        format!(
+                                            "{}.{}",
+                                            sp.name.as_deref().unwrap_or(""),
+                                            sp.interfaces[x].name.as_deref().unwrap_or("")
+                                        ),
+                                        comp.anchors.interfaces[port][x].as_str(),
+                                    ))
+                                },
+                                cat,
+                                it,
+                                lang.t("more_on_interface_page"),
+                            ),
+                        },
                     }
                 })
                 .collect(),
