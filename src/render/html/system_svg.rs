@@ -29,18 +29,7 @@ fn num(s: &mut String, v: f32) {
             s.push('-');
         }
         let m = t.unsigned_abs();
-        let mut digits = [0u8; 20];
-        let mut n = m / 2;
-        let mut at = digits.len();
-        loop {
-            at -= 1;
-            digits[at] = b'0' + (n % 10) as u8;
-            n /= 10;
-            if n == 0 {
-                break;
-            }
-        }
-        s.extend(digits[at..].iter().map(|&d| char::from(d)));
+        s.push_str(itoa::Buffer::new().format(m / 2));
         if m % 2 == 1 {
             s.push_str(".5");
         }
@@ -352,6 +341,23 @@ pub fn standalone_system_diagram(
 mod tests {
     use super::*;
     use crate::render::wiring::WirePort;
+
+    proptest::proptest! {
+        /// A coordinate is written exactly as `Display` writes it: whole and half values by
+        /// the short path (both signs, around the million where it stops), anything else by
+        /// `Display` itself.
+        #[test]
+        fn num_writes_what_display_writes(
+            halves in -2_100_000i32..2_100_000,
+            any in proptest::num::f32::ANY,
+        ) {
+            for v in [halves as f32 / 2.0, any, -0.0, 0.0, 0.25, 999_999.5, 1e6] {
+                let mut s = String::new();
+                num(&mut s, v);
+                proptest::prop_assert_eq!(s, format!("{v}"));
+            }
+        }
+    }
 
     fn inst(name: &str, ports: &[(&str, &'static str)], loc: Option<(i64, i64)>) -> WireInstance {
         WireInstance {
