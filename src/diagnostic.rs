@@ -65,6 +65,15 @@ pub fn explanation(code: &str, name: &str, summary: &str, parts: &[&str]) -> Str
     s
 }
 
+/// A code of the readers (RTC001–RTC029: the profile and IDL readers, the walk and the
+/// catalogue), not of a check rule. A reader's error means the file could not be read.
+pub fn is_reader_code(code: &str) -> bool {
+    code.strip_prefix("RTC")
+        .and_then(|n| n.parse::<u16>().ok())
+        .is_some_and(|n| n < 30)
+        && code.len() == 6
+}
+
 /// `n` and `word`, with an `s` unless `n` is 1 (`1 warning`, `3 infos`).
 pub fn counted(n: usize, word: &str) -> String {
     format!("{n} {word}{}", if n == 1 { "" } else { "s" })

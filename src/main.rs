@@ -865,13 +865,13 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
             .collect(),
         None => systems.iter().collect(),
     };
-    let names = || {
-        systems
-            .iter()
+    let listed = |list: &[&rtcdoc::catalog::systems::System]| {
+        list.iter()
             .map(|s| format!("{} ({})", s.profile.name(), s.source))
             .collect::<Vec<_>>()
             .join(", ")
     };
+    let names = || listed(&systems.iter().collect::<Vec<_>>());
     let s = match chosen.as_slice() {
         [one] => *one,
         [] if systems.is_empty() => {
@@ -883,12 +883,21 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
             input.display(),
             names()
         ),
-        _ => anyhow::bail!(
-            "{} holds {} systems; choose one with --system NAME: {}",
-            input.display(),
-            chosen.len(),
-            names()
-        ),
+        many => match &args.system {
+            // Several systems of that name: only a file path tells them apart.
+            Some(want) => anyhow::bail!(
+                "{} systems in {} are named {want:?}; choose one by its file with --system PATH: {}",
+                many.len(),
+                input.display(),
+                listed(many)
+            ),
+            None => anyhow::bail!(
+                "{} holds {} systems; choose one with --system NAME (or, for systems of one name, its file path): {}",
+                input.display(),
+                many.len(),
+                listed(many)
+            ),
+        },
     };
     // Links as from the site's root (the drawing stands on its own).
     let cat = &loaded.catalog;
@@ -914,7 +923,17 @@ fn find_component(
 ) -> anyhow::Result<rtcdoc::catalog::ComponentIx> {
     let found: Vec<rtcdoc::catalog::ComponentIx> = rtcdoc::catalog::Ix::enumerate(&cat.components)
         .filter(|(_, c)| {
-            c.profile.name() == want || &*c.id == want || c.slug == want || c.display_name() == want
+            // The id as written, also when several profiles share it (their entry ids carry
+            // `@source`).
+            let written =
+                c.id.strip_suffix(c.source.as_str())
+                    .and_then(|id| id.strip_suffix('@'))
+                    .unwrap_or(&c.id);
+            c.profile.name() == want
+                || &*c.id == want
+                || written == want
+                || c.slug == want
+                || c.display_name() == want
         })
         .map(|(ci, _)| ci)
         .collect();

@@ -1418,3 +1418,114 @@ fn blank_documentation_and_none_are_the_same() {
         "{json:#}"
     );
 }
+
+/// A catalog.json against the directory it was built from is no change, and says nothing
+/// else either: a profile with a check rule's error was read (it is no "could not be read"
+/// warning), and the host data the JSON leaves out is neither reported as added nor printed.
+#[test]
+fn catalog_json_against_its_own_input_reports_nothing() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let bad_default = BASE.replace(r#"rtc:defaultValue="5.0""#, r#"rtc:defaultValue="5.0;x""#);
+    assert_ne!(
+        bad_default, BASE,
+        "the fixture has a double parameter of 5.0"
+    );
+    write(dir.path(), "in/RTC.xml", &bad_default);
+    write(
+        dir.path(),
+        "in/Demo.xml",
+        &common::naming_path_system("Demo"),
+    );
+    let check = rtcdoc(&["check", "in", "--format", "json"], dir.path());
+    assert!(
+        String::from_utf8_lossy(&check.stdout).contains("RTC301"),
+        "the profile has a check error"
+    );
+    let out = rtcdoc(
+        &["build", "in", "--format", "json", "-o", "site", "-q"],
+        dir.path(),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for args in [
+        ["diff", "site/catalog.json", "in", "--fail-on", "info"],
+        ["diff", "in", "site/catalog.json", "--fail-on", "info"],
+    ] {
+        let d = rtcdoc(&args, dir.path());
+        let all = format!(
+            "{}{}",
+            String::from_utf8_lossy(&d.stdout),
+            String::from_utf8_lossy(&d.stderr)
+        );
+        assert_eq!(d.status.code(), Some(0), "{args:?}: {all}");
+        assert!(!all.contains("DIFF"), "{args:?}: {all}");
+        for secret in ["150.29.145.246", "cam-pc", "view-pc"] {
+            assert!(!all.contains(secret), "{args:?} printed {secret}: {all}");
+        }
+    }
+}
+
+/// A component's history pairs the versions of one file; when a version's id names another
+/// component (here its category changed), the history says so with the code and severity
+/// `rtcdoc diff` gives the same two versions: DIFF101, breaking.
+#[test]
+fn history_and_diff_agree_on_an_id_that_names_another_component() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    assert!(git(d, &["init", "-q"]), "git is needed");
+    assert!(git(d, &["config", "user.name", "Test"]));
+    assert!(git(d, &["config", "user.email", "t@example.com"]));
+    write(d, "Base/RTC.xml", BASE);
+    assert!(git(d, &["add", "-A"]));
+    assert!(git(d, &["commit", "-q", "-m", "first"]));
+    let moved = BASE
+        .replace("RTC:Lab:Mobile:Base:1.0.0", "RTC:Lab:Vehicle:Base:1.0.0")
+        .replace(r#"rtc:category="Mobile""#, r#"rtc:category="Vehicle""#);
+    assert_ne!(moved, BASE);
+    write(d, "Base/RTC.xml", &moved);
+    assert!(git(d, &["commit", "-q", "-am", "category"]));
+    let diff = rtcdoc(&["diff", "HEAD~1:", "HEAD:", "--format", "json"], d);
+    let diff: serde_json::Value = serde_json::from_slice(&diff.stdout).expect("diff json");
+    let codes = |changes: &serde_json::Value| -> Vec<(String, String)> {
+        changes
+            .as_array()
+            .expect("changes")
+            .iter()
+            .filter(|c| c["severity"] == "breaking")
+            .map(|c| {
+                (
+                    c["code"].as_str().unwrap_or("").into(),
+                    c["severity"].as_str().unwrap_or("").into(),
+                )
+            })
+            .collect()
+    };
+    assert_eq!(
+        codes(&diff["changes"]),
+        [("DIFF101".to_string(), "breaking".to_string())]
+    );
+    let out = rtcdoc(&["build", ".", "--format", "json", "-o", "site", "-q"], d);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let cat: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(d.join("site/catalog.json")).expect("catalog"))
+            .expect("catalog json");
+    let history = &cat["components"]["RTC:Lab:Vehicle:Base:1.0.0"]["history"];
+    let newest = &history[0];
+    assert_eq!(newest["subject"], "category", "{history}");
+    assert_eq!(
+        codes(&newest["changes"]),
+        codes(&diff["changes"]),
+        "{history}"
+    );
+    let text = newest["changes"].to_string();
+    assert!(!text.contains("names the same component"), "{text}");
+}

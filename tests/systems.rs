@@ -631,3 +631,127 @@ fn the_wiring_drawing_opens_on_its_own() {
         }
     }
 }
+
+/// Naming paths are host data whether or not they give the name server's port: no output
+/// publishes them by default, and text that only looks like a path stays.
+#[test]
+fn naming_paths_without_a_port_are_host_data() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(d, "in/Demo.xml", &common::naming_path_system("Demo"));
+    let out = common::rtcdoc(
+        &[
+            "build",
+            "in",
+            "-f",
+            "html,markdown,doxygen,json",
+            "-o",
+            "site",
+            "-q",
+        ],
+        d,
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut seen = 0;
+    for f in walkdir::WalkDir::new(d.join("site"))
+        .into_iter()
+        .filter_map(Result::ok)
+    {
+        if !f.file_type().is_file() {
+            continue;
+        }
+        let text = String::from_utf8_lossy(&std::fs::read(f.path()).unwrap()).into_owned();
+        for secret in ["150.29.145.246", "cam-pc", "view-pc"] {
+            assert!(
+                !text.contains(secret),
+                "{} publishes {secret}",
+                f.path().display()
+            );
+        }
+        if text.contains("in/out") {
+            seen += 1;
+        }
+    }
+    assert_eq!(
+        seen, 4,
+        "every output keeps the value that only looks like a path"
+    );
+    let html = read(&d.join("site/html/systems/demo.html"));
+    assert!(html.contains("N/A"), "text that is no path stays");
+    assert!(
+        html.contains("4 host values hidden"),
+        "two pathUri and two paths"
+    );
+}
+
+/// Systems of one name: `graph` lists only those, by file, and the file it lists selects one;
+/// profiles sharing an id: `graph --component ID` says so, and an id it lists selects one.
+#[test]
+fn graph_names_what_tells_systems_and_components_of_one_name_apart() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(d, "in/a/Demo.xml", &common::naming_path_system("Demo"));
+    common::write(d, "in/b/Demo.xml", &common::naming_path_system("Demo"));
+    common::write(d, "in/Other.xml", &common::naming_path_system("Other"));
+    let run = |args: &[&str]| common::rtcdoc(args, d);
+    let o = run(&["graph", "in", "--system", "Demo"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(
+        e.contains("2 systems in in are named \"Demo\"; choose one by its file with --system PATH: Demo (a/Demo.xml), Demo (b/Demo.xml)"),
+        "{e}"
+    );
+    assert!(!e.contains("Other"), "only the systems of that name: {e}");
+    let o = run(&["graph", "in", "--system", "b/Demo.xml"]);
+    assert!(
+        o.status.success(),
+        "the hint works: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let o = run(&["graph", "in"]);
+    let e = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(
+        e.contains("in holds 3 systems") && e.contains("Other (Other.xml)"),
+        "{e}"
+    );
+
+    let profile = |lang: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?>
+<rtc:RtcProfile rtc:version="0.2" rtc:id="RTC:Lab:Sensor:Cam:1.0.0" xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcExt="http://www.openrtp.org/namespaces/rtc_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">
+  <rtc:BasicInfo rtc:name="Cam" rtc:vendor="Lab" rtc:category="Sensor" rtc:version="1.0.0"/>
+  <rtc:DataPorts rtc:name="out" rtc:portType="DataOutPort" rtc:type="RTC::TimedLong"/>
+  <rtc:Language xsi:type="rtcExt:language_ext" rtc:kind="{lang}"/>
+</rtc:RtcProfile>
+"#
+        )
+    };
+    common::write(d, "in/cpp/RTC.xml", &profile("C++"));
+    common::write(d, "in/py/RTC.xml", &profile("Python"));
+    let o = run(&["graph", "in", "--component", "RTC:Lab:Sensor:Cam:1.0.0"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(
+        e.contains("2 components match \"RTC:Lab:Sensor:Cam:1.0.0\""),
+        "{e}"
+    );
+    let listed = e
+        .split('(')
+        .find_map(|s| {
+            s.strip_prefix("RTC:Lab:Sensor:Cam:1.0.0@")
+                .map(|rest| rest.split(')').next().unwrap_or(""))
+        })
+        .expect("an id with its file");
+    let id = format!("RTC:Lab:Sensor:Cam:1.0.0@{listed}");
+    let o = run(&["graph", "in", "--component", &id]);
+    assert!(
+        o.status.success(),
+        "the listed id works: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

@@ -573,12 +573,36 @@ pub fn all_values(p: &RtSystem, show_host: bool) -> Vec<(String, String)> {
     out
 }
 
-/// A naming path with the host in it (`localhost:2809/Camera0.rtc`, the `COMPONENT_PATH_ID` of
-/// connector ends, `pathUri`): host data, like the endpoints the reader flags as private.
+/// A naming path with the host in it: `localhost:2809/Camera0.rtc`, `lab-pc/Camera0.rtc` (the
+/// name server's default port left out, as RTSystemEditor writes `COMPONENT_PATH_ID`),
+/// `150.29.145.246/ctx.host_cxt/Camera0.rtc`, also after `rtcname://` or `rtcloc://`; the
+/// `COMPONENT_PATH_ID` of connector ends, `pathUri`. Host data, like the endpoints the reader
+/// flags as private. Without a port, the last segment must be a component (`….rtc`), so that
+/// text such as `N/A` or `in/out` is not taken for a host.
 pub fn is_naming_path(v: &str) -> bool {
-    v.trim()
-        .split_once('/')
-        .is_some_and(|(host, _)| crate::model::system::is_private_property(None, Some(host)))
+    let v = v.trim();
+    let v = ["rtcname://", "rtcloc://"]
+        .iter()
+        .find_map(|scheme| v.strip_prefix(scheme))
+        .unwrap_or(v);
+    let Some((host, path)) = v.split_once('/') else {
+        return false;
+    };
+    crate::model::system::is_private_property(None, Some(host))
+        || (is_host_name(host)
+            && path
+                .rsplit('/')
+                .next()
+                .is_some_and(|leaf| leaf.len() > 4 && leaf.ends_with(".rtc")))
+}
+
+/// A host name or IPv4 address as naming paths hold it: letters, digits, `-` and `.`,
+/// starting with a letter or digit.
+fn is_host_name(h: &str) -> bool {
+    h.bytes().next().is_some_and(|b| b.is_ascii_alphanumeric())
+        && h.len() <= 253
+        && h.bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b'.')
 }
 
 /// How many host values the pages and the JSON leave out of `p` unless asked to show them:
@@ -651,21 +675,26 @@ fn for_each_property_mut(
     }
 }
 
+/// Drops the host data of `p`: the values of private properties and of naming-path
+/// properties (`value` absent; the name stays and `private` is set, so a reader sees that
+/// something was there), and instances' `pathUri`.
+pub fn strip_host_data(p: &mut RtSystem) {
+    for_each_property_mut(p, &mut |q| {
+        if q.private || q.value.as_deref().is_some_and(is_naming_path) {
+            q.private = true;
+            q.value = None;
+        }
+    });
+    for c in &mut p.components {
+        c.path_uri = None;
+    }
+}
+
 impl System {
-    /// A copy without host data, for published output: the values of private properties and
-    /// of naming-path properties are dropped (`value` absent; the name and the `private` flag
-    /// stay, so a reader sees that something was there), and so are instances' `pathUri`.
+    /// A copy without host data ([`strip_host_data`]), for published output.
     pub fn without_host_data(&self) -> System {
         let mut s = self.clone();
-        for_each_property_mut(&mut s.profile, &mut |q| {
-            if q.private || q.value.as_deref().is_some_and(is_naming_path) {
-                q.private = true;
-                q.value = None;
-            }
-        });
-        for c in &mut s.profile.components {
-            c.path_uri = None;
-        }
+        strip_host_data(&mut s.profile);
         s
     }
 }

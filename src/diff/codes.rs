@@ -147,7 +147,7 @@ pub static CODES: &[Code] = &[
         level: Breaking,
         name: "component-removed",
         summary: "a component of OLD is not in NEW",
-        explanation: "RT System profiles, launch scripts and other components name the component by its id; none of them can find it any more (spec 10.6: a replacement must keep what it replaces). A file that only moved is no change: components are matched by id, not by path.",
+        explanation: "RT System profiles, launch scripts and other components name the component by its id; none of them can find it any more (spec 10.6: a replacement must keep what it replaces). A file that only moved is no change: components are matched by id, not by path. In a component's history, whose versions are paired by their file, a version whose id names another component (its vendor, category or name changed) is reported with this code too.",
     },
     Code {
         code: DATA_PORT_REMOVED,
@@ -602,7 +602,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "system-other-changed",
         summary: "any other value of an RT System profile changed",
-        explanation: "Every value of a system profile is compared, so that no change goes unreported; values without a classification of their own (the system's version, dates, comments, the boxes' positions in RTSystemEditor, naming paths, start-up orders, groups, properties, values rtcdoc does not know, a type spelled differently) are reported here. Host data (IORs, host names, CORBA endpoints, which change with every save and are not published) is not compared.",
+        explanation: "Every value of a system profile is compared, so that no change goes unreported; values without a classification of their own (the system's version, dates, comments, the boxes' positions in RTSystemEditor, start-up orders, groups, properties, values rtcdoc does not know, a type spelled differently) are reported here. Host data (IORs, host names, CORBA endpoints, naming paths such as `pc1:2809/Cam0.rtc` or `pc1/Cam0.rtc`, which change with every save and are not published) is not compared.",
     },
 ];
 

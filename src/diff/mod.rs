@@ -348,10 +348,12 @@ pub fn diff_with_systems(
         // RT System profiles that could not be read are reported with the systems.
         let is_system =
             |d: &crate::diagnostic::Diagnostic| sys.unreadable.iter().any(|u| u.file == d.file);
+        // Only the readers' errors mean a file could not be read: a catalog.json side also
+        // holds the check rules' findings, whose files were read.
         for d in cat
             .diagnostics
             .iter()
-            .filter(|d| d.is_error() && !is_system(d))
+            .filter(|d| d.is_error() && crate::diagnostic::is_reader_code(d.code) && !is_system(d))
         {
             let then = if is_idl_file(&d.file) {
                 "types it defines may be missing from the comparison"
@@ -1299,6 +1301,17 @@ fn changed(
                         Some(format!("version {} → {}", oi.version, ni.version)),
                     )
                 }
+            } else if oi.key != ni.key {
+                // Versions paired by their file (a component's history), whose vendor,
+                // category or name changed: the old id names nothing any more, which is what
+                // `rtcdoc diff` reports as the component removed (and one added).
+                (
+                    Some(codes::COMPONENT_REMOVED),
+                    Some(format!(
+                        "the id now names another component: `{}` → `{}` (vendor, category or name changed); systems and catalogues that refer to `{}` no longer find it",
+                        oi.id, ni.id, oi.id
+                    )),
+                )
             } else {
                 (
                     Some(codes::OTHER_CHANGED),

@@ -127,3 +127,31 @@ pub fn tool_available(program: &str) -> bool {
         .map(|o| o.status.success())
         .unwrap_or(false)
 }
+
+/// An RT System profile whose naming paths name hosts with and without the name server's
+/// port (`COMPONENT_PATH_ID` as RTSystemEditor writes it), and two values that only look like
+/// paths.
+pub fn naming_path_system(name: &str) -> String {
+    format!(
+        r#"<?xml version="1.0"?>
+<rts:RtsProfile rts:version="0.2" rts:id="RTSystem:Lab:{name}:1.0.0" xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">
+  <rts:Components xsi:type="rtsExt:component_ext" rts:isRequired="false" rts:compositeType="None" rts:activeConfigurationSet="default" rts:instanceName="Cam0" rts:pathUri="cam-pc.example.local/Cam0.rtc" rts:id="RTC:Lab:Sensor:Cam:1.0.0">
+    <rts:DataPorts xsi:type="rtsExt:dataport_ext" rts:name="Cam0.out"/>
+    <rtsExt:Properties rtsExt:value="N/A" rtsExt:name="note"/>
+    <rtsExt:Properties rtsExt:value="in/out" rtsExt:name="direction_note"/>
+  </rts:Components>
+  <rts:Components xsi:type="rtsExt:component_ext" rts:isRequired="false" rts:compositeType="None" rts:activeConfigurationSet="default" rts:instanceName="View0" rts:pathUri="view-pc:2809/View0.rtc" rts:id="RTC:Lab:Sensor:View:1.0.0">
+    <rts:DataPorts xsi:type="rtsExt:dataport_ext" rts:name="View0.in"/>
+  </rts:Components>
+  <rts:DataPortConnectors rts:connectorId="c1" rts:name="Cam0.out_View0.in" rts:dataType="IDL:RTC/CameraImage:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush">
+    <rts:sourceDataPort xsi:type="rtsExt:target_port_ext" rts:portName="Cam0.out" rts:instanceName="Cam0" rts:componentId="RTC:Lab:Sensor:Cam:1.0.0">
+      <rtsExt:Properties rtsExt:value="150.29.145.246/Cam0.rtc" rtsExt:name="COMPONENT_PATH_ID"/>
+    </rts:sourceDataPort>
+    <rts:targetDataPort xsi:type="rtsExt:target_port_ext" rts:portName="View0.in" rts:instanceName="View0" rts:componentId="RTC:Lab:Sensor:View:1.0.0">
+      <rtsExt:Properties rtsExt:value="rtcname://view-pc.example.local/lab.host_cxt/View0.rtc" rtsExt:name="COMPONENT_PATH_ID"/>
+    </rts:targetDataPort>
+  </rts:DataPortConnectors>
+</rts:RtsProfile>
+"#
+    )
+}

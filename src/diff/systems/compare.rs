@@ -7,8 +7,8 @@
 //! configuration sets and execution contexts by id, configuration values and properties by
 //! name, connectors by connector id and else by their two ends (instance and port, with or
 //! without the `<instance>.` prefix). Positions are not compared, so a file that only changed
-//! its attribute order or white space gives no change; host data (IORs, host names, endpoints:
-//! [`SystemProperty::private`]) is not compared either.
+//! its attribute order or white space gives no change; host data (IORs, host names, endpoints,
+//! naming paths: [`crate::catalog::systems::strip_host_data`]) is not compared either.
 
 use super::end_text;
 use crate::diff::{change, codes, labels, quoted, respelled_message, same_type, Change};
@@ -30,6 +30,9 @@ pub fn compare_systems(old: &RtSystem, new: &RtSystem) -> Vec<Change> {
 
 /// [`compare_systems`] with the changes under `label` (the `component` of each change).
 pub fn compare_systems_as(label: &str, old: &RtSystem, new: &RtSystem) -> Vec<Change> {
+    // Host data is not compared: it changes with every save, and it is not published (a
+    // catalog.json side has none of it).
+    let (old, new) = (&public(old), &public(new));
     let mut cx = Cx {
         label,
         out: Vec::new(),
@@ -56,7 +59,14 @@ pub fn compare_systems_as(label: &str, old: &RtSystem, new: &RtSystem) -> Vec<Ch
 /// A system's values without positions, derived values and host data, as text: equal for
 /// copies of one system (which [`compare_systems`] finds no change between).
 pub(super) fn fingerprint(s: &RtSystem) -> String {
-    without(s, &[]).to_string()
+    without(&public(s), &[]).to_string()
+}
+
+/// A copy of `s` without host data ([`crate::catalog::systems::strip_host_data`]).
+fn public(s: &RtSystem) -> RtSystem {
+    let mut s = s.clone();
+    crate::catalog::systems::strip_host_data(&mut s);
+    s
 }
 
 /// How changes name a system: its id as written, else `(no id)`.
