@@ -697,3 +697,31 @@ fn a_failed_enumeration_names_the_allowed_values_once() {
         other => panic!("{other:?}"),
     }
 }
+
+/// executionRate 0 is what profiles write for a context that runs at no rate (externally
+/// triggered, event-driven): accepted there; a periodic context, or a negative rate, is still
+/// RTC103.
+#[test]
+fn a_rate_of_zero_is_accepted_where_no_rate_drives_the_context() {
+    let bad = std::fs::read_to_string(fixture("RTC103-bad.xml")).expect("fixture");
+    assert!(bad.contains(r#"rtc:executionType="PeriodicExecutionContext" rtc:executionRate="0""#));
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (execution_type, rate, flagged) in [
+        ("PeriodicExecutionContext", "0", true),
+        ("ExtTrigExecutionContext", "0.0", false),
+        ("EventDrivenExecutionContext", "0", false),
+        ("ExtTrigExecutionContext", "-1", true),
+        ("ExtTrigExecutionContext", "fast", true),
+        ("ExtTrigExecutionContext", "100.0", false),
+    ] {
+        let text = bad.replace(
+            r#"rtc:executionType="PeriodicExecutionContext" rtc:executionRate="0""#,
+            &format!(r#"rtc:executionType="{execution_type}" rtc:executionRate="{rate}""#),
+        );
+        let file = dir.path().join(format!("{execution_type}-{rate}.xml"));
+        std::fs::write(&file, text).expect("write");
+        let r = report(&file);
+        let found = r.diagnostics.iter().any(|d| d.code == "RTC103");
+        assert_eq!(found, flagged, "{execution_type} at {rate}");
+    }
+}

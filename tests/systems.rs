@@ -755,3 +755,29 @@ fn graph_names_what_tells_systems_and_components_of_one_name_apart() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// A data connector saved without its data type: its tooltip and title name the two ports
+/// only, with no empty `()` after them.
+#[test]
+fn a_connector_without_a_data_type_is_labelled_by_its_ends() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let with = common::naming_path_system("Demo");
+    let without = with.replace(r#" rts:dataType="IDL:RTC/CameraImage:1.0""#, "");
+    assert_ne!(with, without, "the fixture's connector has a data type");
+    common::write(d, "with/Demo.xml", &with);
+    common::write(d, "without/Demo.xml", &without);
+    let dot = |input: &str| {
+        let o = common::rtcdoc(&["graph", input, "-f", "dot"], d);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    assert!(
+        dot("with").contains(r#"tooltip="Cam0.out → View0.in (IDL:RTC/CameraImage:1.0)""#),
+        "{}",
+        dot("with")
+    );
+    let bare = dot("without");
+    assert!(bare.contains(r#"tooltip="Cam0.out → View0.in""#), "{bare}");
+    assert!(!bare.contains("()"), "{bare}");
+}

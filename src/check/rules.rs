@@ -303,8 +303,14 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     if let Some(rate) = b.execution_rate.as_deref().filter(|v| !v.trim().is_empty()) {
         let at = b.attr_pos.or("executionRate", b.pos);
+        // An externally triggered or event-driven context does not run at a rate: 0 is
+        // what profiles write there.
+        let driven = b.execution_type.as_deref().is_some_and(|t| {
+            let t = t.trim().to_ascii_lowercase();
+            t.starts_with("exttrig") || t.starts_with("eventdriven")
+        });
         match value::parse_float(rate) {
-            Some(f) if f > 0.0 => {}
+            Some(f) if f > 0.0 || (driven && f == 0.0) => {}
             Some(_) => s.emit(
                 r::EXECUTION_RATE,
                 at,

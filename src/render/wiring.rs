@@ -126,7 +126,7 @@ pub fn system_wiring(
         .data_port_connectors
         .iter()
         .zip(&s.data_connectors)
-        .map(|(c, l)| (l, &c.source, &c.target, Some(txt(&c.data_type))))
+        .map(|(c, l)| (l, &c.source, &c.target, Some(non_empty(&c.data_type))))
         .chain(
             p.service_port_connectors
                 .iter()
@@ -150,8 +150,10 @@ pub fn system_wiring(
             from: (a, pa),
             to: (b, pb),
             service: data_type.is_none(),
+            // A data connector without a data type says nothing about it (no empty `()`).
             label: match data_type {
-                Some(t) => format!("{source} → {target} ({t})"),
+                Some(Some(t)) => format!("{source} → {target} ({t})"),
+                Some(None) => format!("{source} → {target}"),
                 None => format!("{source} — {target}"),
             },
         });
