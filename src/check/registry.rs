@@ -326,10 +326,10 @@ pub static RULES: &[Rule] = &[
         code: MISSING_REQUIRED,
         severity: Error,
         name: "missing-required",
-        summary: "a required attribute is missing or empty",
+        summary: "a required attribute or element is missing or empty",
         explanation: "The XSD marks these attributes `use=\"required\"`: rtc_profile id and version; BasicInfo name, componentType, activityType, componentKind, category, executionType, vendor, version, creationDate, updateDate; each listed action's implemented; Configuration name, type and defaultValue; DataPort portType, name, type; ServicePort name; ServiceInterface name, type, direction; Parameter name; Language kind. An empty value counts as missing, except for defaultValue (an empty string is a valid default) — so empty port, interface and parameter names are reported here. A profile without Actions is also reported (Actions has multiplicity 1).",
         spec: "2.3.1–2.3.16 (multiplicities), 6.1 (RtcProfile_basic.xsd)",
-        hint: "add the attribute with a meaningful value (RTCBuilder writes all of them)",
+        hint: "add the attribute (or the element, for `Actions`) with a meaningful value (RTCBuilder writes all of them)",
     },
     Rule {
         code: INVALID_ENUM,
