@@ -252,7 +252,7 @@ fn findings_say_which_readmes_and_images_are_not_shown() {
 fn oversized_invalid_utf8_bom_and_linked_readmes() {
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("in");
-    for name in ["big", "bad", "bom", "lower", "parent/child"] {
+    for name in ["big", "bad", "bom", "lower", "parent/child", "sjis", "euc"] {
         common::write(
             &input,
             &format!("{name}/RTC.xml"),
@@ -262,6 +262,13 @@ fn oversized_invalid_utf8_bom_and_linked_readmes() {
     std::fs::write(input.join("big/README.md"), "x".repeat(1024 * 1024 + 1)).unwrap();
     std::fs::write(input.join("bad/README.md"), b"# Bad\n\nok \xff\xfe here\n").unwrap();
     std::fs::write(input.join("bom/README.md"), "\u{feff}# With BOM\n\nText.\n").unwrap();
+    // Japanese READMEs of older repositories: Shift_JIS (Windows) and EUC-JP (Unix).
+    let japanese = "# カメラ\n\n画像を取り込み、`RTC::CameraImage` で送ります。\n";
+    let (sjis, _, _) = encoding_rs::SHIFT_JIS.encode(japanese);
+    let (euc, _, _) = encoding_rs::EUC_JP.encode(japanese);
+    assert!(std::str::from_utf8(&sjis).is_err() && std::str::from_utf8(&euc).is_err());
+    std::fs::write(input.join("sjis/README.md"), &sjis).unwrap();
+    std::fs::write(input.join("euc/README.md"), &euc).unwrap();
     // Any case; README.md before README.markdown.
     std::fs::write(input.join("lower/readme.markdown"), "# Second choice\n").unwrap();
     std::fs::write(input.join("lower/Readme.MD"), "# First choice\n").unwrap();
@@ -292,6 +299,19 @@ fn oversized_invalid_utf8_bom_and_linked_readmes() {
         Some("lower/Readme.MD")
     );
     assert!(readme_of("parent_child").is_none());
+    for name in ["sjis", "euc"] {
+        assert_eq!(
+            readme_of(name).map(|r| r.text.as_str()),
+            Some(japanese),
+            "{name}"
+        );
+        assert!(
+            !cat.diagnostics
+                .iter()
+                .any(|d| d.code == "RTC702" && d.file == format!("{name}/README.md")),
+            "{name}"
+        );
+    }
     let warn = |file: &str| {
         cat.diagnostics
             .iter()

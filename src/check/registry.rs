@@ -759,7 +759,7 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "readme-unreadable",
         summary: "the README of a component's folder cannot be shown",
-        explanation: "A `README.md` (or `README.markdown`) beside a profile is shown on the component page, unless it is larger than 1 MiB, is not valid UTF-8 (a UTF-8 byte order mark is fine), is a symbolic link (rtcdoc follows none) or not a regular file, or cannot be read. The message says which; the position, for bad UTF-8, is the first invalid byte's.",
+        explanation: "A `README.md` (or `README.markdown`) beside a profile is shown on the component page, unless it is larger than 1 MiB, is in no encoding rtcdoc reads (UTF-8, with or without a byte order mark; else Shift_JIS or EUC-JP, as older Japanese READMEs are saved, when every byte decodes), is a symbolic link (rtcdoc follows none) or not a regular file, or cannot be read. The message says which; the position, for an unreadable encoding, is the first byte that is not UTF-8.",
         spec: "— (rtcdoc: component folder READMEs; robustness limit)",
         hint: "save the README as UTF-8 and keep it under 1 MiB (move long material into other files and link them); replace a link by the file",
     },

@@ -11,6 +11,18 @@ pub(crate) struct Decoded {
     pub lossy: bool,
 }
 
+/// Text that is not UTF-8 read as EUC-JP, else Shift_JIS, when one of them decodes every byte
+/// (EUC-JP first, see the module's note); with the encoding's name. Also for READMEs, which
+/// declare no encoding either.
+pub(crate) fn japanese(body: &[u8]) -> Option<(String, &'static str)> {
+    [encoding_rs::EUC_JP, encoding_rs::SHIFT_JIS]
+        .into_iter()
+        .find_map(|enc| {
+            enc.decode_without_bom_handling_and_without_replacement(body)
+                .map(|t| (t.into_owned(), enc.name()))
+        })
+}
+
 pub(crate) fn decode(bytes: &[u8]) -> Decoded {
     let body = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     if let Ok(s) = std::str::from_utf8(body) {
@@ -20,14 +32,12 @@ pub(crate) fn decode(bytes: &[u8]) -> Decoded {
             lossy: false,
         };
     }
-    for enc in [encoding_rs::EUC_JP, encoding_rs::SHIFT_JIS] {
-        if let Some(text) = enc.decode_without_bom_handling_and_without_replacement(body) {
-            return Decoded {
-                text: text.into_owned(),
-                encoding: enc.name(),
-                lossy: false,
-            };
-        }
+    if let Some((text, encoding)) = japanese(body) {
+        return Decoded {
+            text,
+            encoding,
+            lossy: false,
+        };
     }
     let (text, _) = encoding_rs::EUC_JP.decode_without_bom_handling(body);
     Decoded {

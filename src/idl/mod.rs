@@ -31,7 +31,7 @@
 //! codes are in [`codes`] and documented in `check --explain`. Each diagnostic is reported once
 //! even when a file is included by many others.
 
-mod decode;
+pub(crate) mod decode;
 mod doc;
 mod expr;
 mod lex;

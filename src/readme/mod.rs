@@ -277,7 +277,8 @@ pub enum Read {
     Unreadable(String, &'static str, Pos),
 }
 
-/// Reads the README at `path`: at most [`MAX_README`] + 1 bytes, UTF-8 (a BOM is dropped).
+/// Reads the README at `path`: at most [`MAX_README`] + 1 bytes, UTF-8 (a BOM is dropped), else
+/// EUC-JP or Shift_JIS when one of them decodes every byte.
 pub fn read(path: &Path) -> Read {
     use std::io::Read as _;
     let meta = match std::fs::symlink_metadata(path) {
@@ -325,7 +326,20 @@ pub fn read(path: &Path) -> Read {
         );
     }
     let body = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(&bytes);
-    match std::str::from_utf8(body) {
+    // Not UTF-8: a Japanese README saved on Windows (Shift_JIS) or Unix (EUC-JP), as older
+    // component repositories have them, is read in that encoding when every byte decodes.
+    let decoded;
+    let text = match std::str::from_utf8(body) {
+        Ok(t) => Ok(t),
+        Err(e) => match crate::idl::decode::japanese(body) {
+            Some((t, _)) => {
+                decoded = t;
+                Ok(decoded.as_str())
+            }
+            None => Err(e),
+        },
+    };
+    match text {
         Ok(t) => match (generated_at(t), rtcbuilder2(t)) {
             (Some(pos), _) => Read::Generated(pos, "rtc-template / RTCBuilder markers"),
             (None, Some(Rtcbuilder2 {
@@ -342,7 +356,7 @@ pub fn read(path: &Path) -> Read {
             // The valid prefix is UTF-8: the position is where it ends.
             let prefix = std::str::from_utf8(&body[..e.valid_up_to()]).unwrap_or_default();
             Read::Unreadable(
-                "the README is not valid UTF-8; it is not shown".into(),
+                "the README is neither UTF-8 nor Shift_JIS nor EUC-JP; it is not shown".into(),
                 "save it as UTF-8",
                 Pos::at_offset(prefix, prefix.len()),
             )
