@@ -778,6 +778,16 @@ fn single_files_yaml_and_the_examples() {
     assert_eq!(changes(&json)[0]["file"], "new/Localization/RTC.yaml");
 }
 
+/// A git repository in `d` whose first commit holds [`BASE`] at `file`.
+fn first_commit(d: &Path, file: &str) {
+    assert!(git(d, &["init", "-q"]), "git is needed");
+    assert!(git(d, &["config", "user.name", "Test"]));
+    assert!(git(d, &["config", "user.email", "test@example.org"]));
+    write(d, file, BASE);
+    assert!(git(d, &["add", "-A"]));
+    assert!(git(d, &["commit", "-q", "-m", "first"]));
+}
+
 fn git(dir: &Path, args: &[&str]) -> bool {
     std::process::Command::new("git")
         .args(args)
@@ -1326,12 +1336,7 @@ fn catalog_json_is_a_side() {
 fn a_revision_that_looks_like_an_option_is_refused() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path();
-    assert!(git(d, &["init", "-q"]), "git is needed");
-    assert!(git(d, &["config", "user.name", "Test"]));
-    assert!(git(d, &["config", "user.email", "test@example.org"]));
-    write(d, "components/Base/RTC.xml", BASE);
-    assert!(git(d, &["add", "-A"]));
-    assert!(git(d, &["commit", "-q", "-m", "first"]));
+    first_commit(d, "components/Base/RTC.xml");
     let target = d.join("written-by-git");
     let arg = format!("--output={}:components", target.display());
     let out = rtcdoc(&["diff", "--", &arg, "components"], d);
@@ -1476,12 +1481,7 @@ fn catalog_json_against_its_own_input_reports_nothing() {
 fn history_and_diff_agree_on_an_id_that_names_another_component() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path();
-    assert!(git(d, &["init", "-q"]), "git is needed");
-    assert!(git(d, &["config", "user.name", "Test"]));
-    assert!(git(d, &["config", "user.email", "t@example.com"]));
-    write(d, "Base/RTC.xml", BASE);
-    assert!(git(d, &["add", "-A"]));
-    assert!(git(d, &["commit", "-q", "-m", "first"]));
+    first_commit(d, "Base/RTC.xml");
     let moved = BASE
         .replace("RTC:Lab:Mobile:Base:1.0.0", "RTC:Lab:Vehicle:Base:1.0.0")
         .replace(r#"rtc:category="Mobile""#, r#"rtc:category="Vehicle""#);
