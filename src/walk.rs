@@ -7,7 +7,7 @@
 //! directory is skipped when it lies inside the input; the order is sorted and stable.
 
 use crate::parse::{self, SourceFormat};
-use globset::{Glob, GlobSet, GlobSetBuilder};
+use globset::{GlobSet, GlobSetBuilder};
 use std::path::{Path, PathBuf};
 
 /// A profile file found by the walk. Its bytes are read when it is parsed, so a large
@@ -161,8 +161,12 @@ pub struct WalkResult {
 pub enum WalkError {
     #[error("input `{0}` does not exist")]
     Missing(PathBuf),
-    #[error("invalid exclude pattern `{pattern}`: {message}")]
-    BadGlob { pattern: String, message: String },
+    #[error("invalid {kind} pattern `{pattern}`: {message}")]
+    BadGlob {
+        kind: &'static str,
+        pattern: String,
+        message: String,
+    },
 }
 
 /// Guesses the format of a file from its extension and content; `None` when it is not an RTC
@@ -180,26 +184,30 @@ pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
     }
 }
 
-fn build_globs(patterns: &[String]) -> Result<GlobSet, WalkError> {
+/// The `kind` (`include` or `exclude`) patterns as one set: `*` and `?` stay within one folder,
+/// `**` crosses folders.
+fn build_globs(kind: &'static str, patterns: &[String]) -> Result<GlobSet, WalkError> {
+    let bad = |pattern: String, e: globset::Error| WalkError::BadGlob {
+        kind,
+        pattern,
+        message: e.to_string(),
+    };
     let mut b = GlobSetBuilder::new();
     for p in patterns {
-        let g = Glob::new(p).map_err(|e| WalkError::BadGlob {
-            pattern: p.clone(),
-            message: e.to_string(),
-        })?;
+        let g = globset::GlobBuilder::new(p)
+            .literal_separator(true)
+            .build()
+            .map_err(|e| bad(p.clone(), e))?;
         b.add(g);
     }
-    b.build().map_err(|e| WalkError::BadGlob {
-        pattern: patterns.join(", "),
-        message: e.to_string(),
-    })
+    b.build().map_err(|e| bad(patterns.join(", "), e))
 }
 
 /// Whether an input-relative path is left out by the `--exclude` patterns `patterns` (for files
 /// the walk does not list itself, such as a component folder's README). A bad pattern, which
 /// the walk reports, matches nothing here.
 pub fn exclude_matcher(patterns: &[String]) -> impl Fn(&str) -> bool + Sync {
-    let set = build_globs(patterns).unwrap_or_else(|_| GlobSet::empty());
+    let set = build_globs("exclude", patterns).unwrap_or_else(|_| GlobSet::empty());
     move |rel: &str| set.is_match(rel)
 }
 
@@ -387,12 +395,12 @@ impl<'a> Walker<'a> {
             } else {
                 input.to_path_buf()
             },
-            excludes: build_globs(&opts.exclude)?,
+            excludes: build_globs("exclude", &opts.exclude)?,
             exclude_patterns: opts.exclude.clone(),
             includes: if opts.include.is_empty() {
                 None
             } else {
-                Some(build_globs(&opts.include)?)
+                Some(build_globs("include", &opts.include)?)
             },
             skip_dirs,
             #[cfg(unix)]

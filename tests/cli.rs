@@ -220,3 +220,52 @@ fn quiet_and_verbose() {
         String::from_utf8_lossy(&q.stderr)
     );
 }
+
+/// `*` in `--include`/`--exclude` stays within one folder and `**` crosses folders, as the
+/// guide says; a bad pattern is named with the option it came from.
+#[test]
+fn a_glob_star_stays_within_one_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/old/RTC.xml", &xml_profile("Top", &[]));
+    write(d, "in/old/sub/RTC.xml", &xml_profile("Deep", &[]));
+    let names = |args: &[&str]| -> Vec<String> {
+        let mut all = vec!["build", "in", "-f", "json", "-o", "out", "-q"];
+        all.extend_from_slice(args);
+        let o = rtcdoc(&all, d);
+        assert!(
+            o.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let cat: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(d.join("out/catalog.json")).unwrap()).unwrap();
+        let mut n: Vec<String> = cat["components"]
+            .as_object()
+            .unwrap()
+            .values()
+            .map(|c| c["source"].as_str().unwrap().to_string())
+            .collect();
+        n.sort();
+        n
+    };
+    assert_eq!(names(&["--exclude", "old/*.xml"]), ["old/sub/RTC.xml"]);
+    assert_eq!(
+        names(&["--exclude", "old/**/*.xml", "--allow-empty"]),
+        Vec::<String>::new()
+    );
+    assert_eq!(names(&["--include", "*/RTC.xml"]), ["old/RTC.xml"]);
+    assert_eq!(
+        names(&["--include", "**/RTC.xml"]),
+        ["old/RTC.xml", "old/sub/RTC.xml"]
+    );
+    for option in ["--include", "--exclude"] {
+        let o = rtcdoc(&["check", "in", option, "["], d);
+        assert_eq!(o.status.code(), Some(2));
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            e.contains(&format!("invalid {} pattern `[`", &option[2..])),
+            "{option}: {e}"
+        );
+    }
+}

@@ -108,6 +108,10 @@ fn parsed_html(text: &str) -> String {
     let events: Vec<Event<'_>> = Parser::new_ext(text, opts)
         .map(|e| match e {
             Event::SoftBreak => Event::HardBreak,
+            // Words in angle brackets that are no HTML the page keeps (`std::vector<double>`,
+            // `<N> joints`, `<port_name>`) are text, not tags for the sanitiser to drop.
+            Event::InlineHtml(h) if !kept_html(&h) => Event::Text(h),
+            Event::Html(h) if !kept_html(&h) => Event::Text(h),
             other => other,
         })
         .collect();
@@ -126,6 +130,175 @@ fn parsed_html(text: &str) -> String {
         return raw.replace("<br />", "<br>");
     }
     sanitizer().clean(&raw).to_string()
+}
+
+/// The elements of HTML, current and obsolete, sorted.
+const HTML_ELEMENTS: &[&str] = &[
+    "a",
+    "abbr",
+    "acronym",
+    "address",
+    "applet",
+    "area",
+    "article",
+    "aside",
+    "audio",
+    "b",
+    "base",
+    "basefont",
+    "bdi",
+    "bdo",
+    "bgsound",
+    "big",
+    "blink",
+    "blockquote",
+    "body",
+    "br",
+    "button",
+    "canvas",
+    "caption",
+    "center",
+    "cite",
+    "code",
+    "col",
+    "colgroup",
+    "data",
+    "datalist",
+    "dd",
+    "del",
+    "details",
+    "dfn",
+    "dialog",
+    "dir",
+    "div",
+    "dl",
+    "dt",
+    "em",
+    "embed",
+    "fieldset",
+    "figcaption",
+    "figure",
+    "font",
+    "footer",
+    "form",
+    "frame",
+    "frameset",
+    "h1",
+    "h2",
+    "h3",
+    "h4",
+    "h5",
+    "h6",
+    "head",
+    "header",
+    "hgroup",
+    "hr",
+    "html",
+    "i",
+    "iframe",
+    "image",
+    "img",
+    "input",
+    "ins",
+    "isindex",
+    "kbd",
+    "keygen",
+    "label",
+    "legend",
+    "li",
+    "link",
+    "listing",
+    "main",
+    "map",
+    "mark",
+    "marquee",
+    "math",
+    "menu",
+    "menuitem",
+    "meta",
+    "meter",
+    "multicol",
+    "nav",
+    "nextid",
+    "nobr",
+    "noembed",
+    "noframes",
+    "noscript",
+    "object",
+    "ol",
+    "optgroup",
+    "option",
+    "output",
+    "p",
+    "param",
+    "picture",
+    "plaintext",
+    "portal",
+    "pre",
+    "progress",
+    "q",
+    "rb",
+    "rp",
+    "rt",
+    "rtc",
+    "ruby",
+    "s",
+    "samp",
+    "script",
+    "search",
+    "section",
+    "select",
+    "slot",
+    "small",
+    "source",
+    "spacer",
+    "span",
+    "strike",
+    "strong",
+    "style",
+    "sub",
+    "summary",
+    "sup",
+    "svg",
+    "table",
+    "tbody",
+    "td",
+    "template",
+    "textarea",
+    "tfoot",
+    "th",
+    "thead",
+    "time",
+    "title",
+    "tr",
+    "track",
+    "tt",
+    "u",
+    "ul",
+    "var",
+    "video",
+    "wbr",
+    "xmp",
+];
+
+/// Whether raw HTML in profile text is HTML: a comment, or a tag (the fragment's first) that
+/// names an HTML element. The sanitiser then keeps it (`<br>`, `<b>`, `</sub>`) or removes it
+/// (`<script>`, `<img>`). Anything else in angle brackets (`<double>`, `<N>`, `<port_name>`)
+/// is text.
+fn kept_html(html: &str) -> bool {
+    let h = html.trim_start();
+    if h.starts_with("<!--") {
+        return true;
+    }
+    let Some(rest) = h.strip_prefix('<') else {
+        return false;
+    };
+    let rest = rest.strip_prefix('/').unwrap_or(rest);
+    let end = rest
+        .find(|c: char| c.is_whitespace() || c == '/' || c == '>')
+        .unwrap_or(rest.len());
+    let name = rest[..end].to_ascii_lowercase();
+    HTML_ELEMENTS.binary_search(&name.as_str()).is_ok()
 }
 
 /// The first line of `text`, trimmed and cut to at most `max` characters (with `…`), for
@@ -148,6 +321,32 @@ pub fn first_line(text: &str, max: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Angle-bracketed words that are no HTML stay as text; tags the page keeps stay tags,
+    /// and a script is still removed.
+    #[test]
+    fn words_in_angle_brackets_are_text() {
+        for (text, want) in [
+            (
+                "outputs std::vector<double> values",
+                "std::vector&lt;double&gt; values",
+            ),
+            (
+                "array of std::vector<int> for <N> joints",
+                "std::vector&lt;int&gt; for &lt;N&gt; joints",
+            ),
+            ("set <port_name> first", "set &lt;port_name&gt; first"),
+            ("<N> joints\n\nsecond", "&lt;N&gt; joints"),
+            ("a <b>bold</b> word", "a <b>bold</b> word"),
+            ("x<sub>2</sub>", "x<sub>2</sub>"),
+        ] {
+            let html = to_html(text);
+            assert!(html.contains(want), "{text:?} gave {html:?}");
+        }
+        assert!(HTML_ELEMENTS.windows(2).all(|w| w[0] < w[1]), "sorted");
+        let html = to_html("a <script>alert(1)</script> b");
+        assert!(!html.contains("script"), "{html}");
+    }
 
     #[test]
     fn rtcbuilder_line_break_tags_are_line_breaks() {
