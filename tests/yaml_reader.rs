@@ -691,3 +691,25 @@ mod fuzz {
         }
     }
 }
+
+/// A byte order mark before RTCBuilder's `---` (a Windows editor's save) changes nothing: the
+/// same profile, values and positions (after the first line) as without it.
+#[test]
+fn a_byte_order_mark_before_the_document_marker_is_read() {
+    for example in ["UsbCamera", "Localization"] {
+        let path =
+            Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("examples/{example}/RTC.yaml"));
+        let plain = std::fs::read(&path).expect("example");
+        assert!(
+            plain.starts_with(b"---\n"),
+            "{example} starts with the document marker"
+        );
+        let mut bom = b"\xEF\xBB\xBF".to_vec();
+        bom.extend_from_slice(&plain);
+        let a = yaml::parse(&plain, "RTC.yaml", &Limits::default()).expect("plain");
+        let b = yaml::parse(&bom, "RTC.yaml", &Limits::default())
+            .unwrap_or_else(|d| panic!("{example} with a BOM: {}", d.message));
+        assert_eq!(a.profile, b.profile, "{example}");
+        assert_eq!(a.diagnostics, b.diagnostics, "{example}");
+    }
+}

@@ -74,10 +74,13 @@ fn root_reader<'a>(
     what: &str,
     hint: &str,
 ) -> Result<(Mapping, Reader<'a>), Diagnostic> {
+    // A byte order mark (Windows editors write one) is no part of the first document: without
+    // it, `---` on the first line is the document marker.
     let src = source(bytes, file, limits)?;
+    let src = src.strip_prefix('\u{feff}').unwrap_or(src);
     let value = match super::yaml_fast::parse(src, limits.max_depth, root_key) {
         Some(v) => Some(v),
-        None => slow_value(bytes, file, limits, root_key)?,
+        None => slow_value(src.as_bytes(), file, limits, root_key)?,
     };
     let Some(value) = value else {
         return Err(Diagnostic::error(
