@@ -391,6 +391,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("service_ports", "Service ports", "サービスポート"),
     ("severity", "Severity", "重大度"),
     ("severity_breaking", "breaking", "破壊的"),
+    ("severity_error", "error", "エラー"),
     ("severity_info", "info", "情報"),
     ("severity_warning", "warning", "警告"),
     ("show_in_category", "Jump to a category", "カテゴリへ移動"),

@@ -841,3 +841,38 @@ fn component_tables_have_no_empty_column_and_say_the_widget_once() {
         "lifecycle: {md}"
     );
 }
+
+/// The diagnostics page names severities in the site's language, in its badges and in its
+/// filter, as the other pages do; the filter's values stay the codes' severities.
+#[test]
+fn the_diagnostics_page_names_severities_in_the_sites_language() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = common::root().join("examples");
+    let input = input.display().to_string();
+    for (lang, warning, error) in [("en", "warning", "error"), ("ja", "警告", "エラー")] {
+        let out = dir.path().join(lang);
+        let o = common::rtcdoc(
+            &[
+                "build",
+                &input,
+                "--language",
+                lang,
+                "-o",
+                &out.display().to_string(),
+                "-q",
+            ],
+            dir.path(),
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let page = std::fs::read_to_string(out.join("diagnostics.html")).unwrap();
+        assert!(
+            page.contains(&format!(r#"<span class="sev warning">{warning}</span>"#)),
+            "{lang}"
+        );
+        assert!(
+            page.contains(&format!(r#"<option value="warning">{warning}</option>"#))
+                && page.contains(&format!(r#"<option value="error">{error}</option>"#)),
+            "{lang}"
+        );
+    }
+}
