@@ -551,6 +551,8 @@ fn cli_sarif() {
     assert!(v["$schema"].as_str().is_some_and(|s| s.contains("sarif")));
     let run0 = &v["runs"][0];
     assert_eq!(run0["tool"]["driver"]["name"], "rtcdoc");
+    // Columns are characters, as in the human output; SARIF assumes UTF-16 units unless told.
+    assert_eq!(run0["columnKind"], "unicodeCodePoints");
     let rules = run0["tool"]["driver"]["rules"].as_array().expect("rules");
     assert!(rules.iter().any(|r| r["id"] == "RTC203"));
     assert!(rules

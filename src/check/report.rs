@@ -133,6 +133,8 @@ pub fn to_sarif(report: &Report) -> Value {
                 "rules": rules,
             }},
             "results": results,
+            // Columns count characters (Unicode code points), not UTF-16 units.
+            "columnKind": "unicodeCodePoints",
         }],
     })
 }
