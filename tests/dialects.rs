@@ -430,3 +430,21 @@ fn facets_fold_spellings_and_variants_get_language_slugs() {
     assert_eq!(cat.components[1].display_name(), "RobotController (Python)");
     assert_eq!(cat.components[2].qualifier, None);
 }
+
+/// The same profile in the current spellings: `rtcdoc diff` finds no change (the older
+/// spellings are read into the fields they mean; which ones a file used is no value of it).
+#[test]
+fn a_file_resaved_in_the_current_spellings_is_no_change() {
+    let old = std::fs::read_to_string(fixture("rtcbuilder01.xml")).unwrap();
+    let new = old
+        .replace("rtcExt:varname=", "rtcExt:variableName=")
+        .replace("rtc:subscriprionType=", "rtc:subscriptionType=");
+    assert_ne!(old, new, "the fixture uses both older spellings");
+    let dir = tempfile::tempdir().unwrap();
+    common::write(dir.path(), "old/RTC.xml", &old);
+    common::write(dir.path(), "new/RTC.xml", &new);
+    let o = common::rtcdoc(&["diff", "old", "new", "--fail-on", "info"], dir.path());
+    let out = String::from_utf8_lossy(&o.stdout).into_owned() + &String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.contains("0 breaking, 0 warnings, 0 infos"), "{out}");
+}

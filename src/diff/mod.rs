@@ -701,7 +701,7 @@ fn fingerprint(p: &Profile) -> u64 {
             }
             Value::Object(m) => {
                 5u8.hash(h);
-                for (k, x) in m.iter().filter(|(k, _)| *k != "pos" && *k != "actionsPos") {
+                for (k, x) in m.iter().filter(|(k, _)| !bookkeeping(k)) {
                     k.hash(h);
                     feed(x, h);
                 }
@@ -727,12 +727,19 @@ fn pos_of(v: &Value) -> Option<Pos> {
     (line > 0).then_some(Pos::new(line, column))
 }
 
-/// `v` without its `pos` keys, for comparing leaves.
+/// The reader's bookkeeping, not values of the profile: positions, and which older spellings
+/// the file used (`writtenAs`; the values are read into the fields they mean, so a file
+/// re-saved with the current spellings has the same values).
+fn bookkeeping(key: &str) -> bool {
+    matches!(key, "pos" | "actionsPos" | "writtenAs")
+}
+
+/// `v` without its bookkeeping keys, for comparing leaves.
 fn strip_pos(v: Value) -> Value {
     match v {
         Value::Object(m) => Value::Object(
             m.into_iter()
-                .filter(|(k, _)| k != "pos" && k != "actionsPos")
+                .filter(|(k, _)| !bookkeeping(k))
                 .map(|(k, v)| (k, strip_pos(v)))
                 .collect(),
         ),
@@ -746,8 +753,7 @@ fn node(key: &str, v: Value) -> Node {
         // A constraint is compared whole (as a formula, by the classification).
         Value::Object(mut m) if !fields::compared_whole(key) => {
             let pos = m.get("pos").and_then(pos_of);
-            m.remove("pos");
-            m.remove("actionsPos");
+            m.retain(|k, _| !bookkeeping(k));
             Node::Record(
                 m.into_iter()
                     .map(|(k, v)| (k.clone(), node(&k, v)))
