@@ -591,10 +591,10 @@ fn the_dotted_id_form_names_the_same_component() {
     );
     let (exit, json) = run_diff(dir.path(), &[]);
     assert_eq!(exit, 0, "{json:#}");
-    // The id is only respelled; the reader notes the older spelling (`writtenAs`).
-    assert_eq!(codes_of(&json), ["DIFF308", "DIFF308"], "{json:#}");
+    // The id is only respelled: one info on the id. Which spellings the file used
+    // (`writtenAs`) is the reader's bookkeeping, not a second change.
+    assert_eq!(codes_of(&json), ["DIFF308"], "{json:#}");
     assert_eq!(changes(&json)[0]["path"], "id");
-    assert_eq!(changes(&json)[1]["path"], "writtenAs");
 }
 
 #[test]
@@ -1089,12 +1089,14 @@ fn markdown_output() {
     assert!(md.contains(
         "| 🔴 breaking | DIFF104 `data-port-type-changed` | `dataPorts/odometry/type` | `RTC::TimedPose2D` | `RTC::TimedPose3D` |"
     ), "{md}");
-    // Infos are folded; a `|` in a value is escaped.
+    // Infos are folded in a list, where a `|` in a value is no table's and is shown as
+    // written.
     assert!(
         md.contains("<details><summary>2 informational change(s)</summary>"),
         "{md}"
     );
-    assert!(md.contains("Gain \\| of the loop"), "{md}");
+    assert!(md.contains("Gain | of the loop"), "{md}");
+    assert!(!md.contains("Gain \\| of the loop"), "{md}");
     assert!(!md.contains("| Gain | of"), "{md}");
 }
 
@@ -1528,4 +1530,27 @@ fn history_and_diff_agree_on_an_id_that_names_another_component() {
     );
     let text = newest["changes"].to_string();
     assert!(!text.contains("names the same component"), "{text}");
+}
+
+/// The Markdown report shows values as written: inside code spans nothing is escaped but the
+/// table's `|`; outside them `<` cannot open a tag.
+#[test]
+fn markdown_shows_values_in_code_spans_as_written() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/RTC.xml", BASE);
+    let new = BASE.replace(
+        r#"rtc:defaultValue="5.0""#,
+        r#"rtc:defaultValue="a\b&lt;c&gt;|d""#,
+    );
+    assert_ne!(new, BASE);
+    write(dir.path(), "new/RTC.xml", &new);
+    let o = rtcdoc(&["diff", "old", "new", "--format", "markdown"], dir.path());
+    let md = String::from_utf8_lossy(&o.stdout).into_owned();
+    let row = md
+        .lines()
+        .find(|l| l.contains("configurations/gain/defaultValue"))
+        .unwrap_or_else(|| panic!("no row for the default: {md}"));
+    assert!(row.contains(r"| `5.0` | `a\b<c>\|d` |"), "{row}");
+    assert!(row.contains(r"to `a\b<c>\|d`"), "{row}");
+    assert!(!row.contains("&lt;") && !row.contains(r"\\"), "{row}");
 }

@@ -95,34 +95,80 @@ fn by_component(changes: &[Change]) -> Vec<(&str, Vec<&Change>)> {
     out
 }
 
-/// Text for a Markdown table cell: one line, `|` escaped, at most [`CELL_CHARS`] characters.
-fn cell(s: &str) -> String {
+/// One line of at most [`CELL_CHARS`] characters.
+fn single_line(s: &str) -> String {
     let one: String = s.split_whitespace().collect::<Vec<_>>().join(" ");
-    let one = if one.chars().count() > CELL_CHARS {
+    if one.chars().count() > CELL_CHARS {
         format!("{}…", one.chars().take(CELL_CHARS - 1).collect::<String>())
     } else {
         one
-    };
-    one.replace('\\', "\\\\")
-        .replace('|', "\\|")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    }
 }
 
+/// Text for a Markdown table cell ([`one_line`]) that may hold `` `code` `` spans, as messages
+/// do: outside the spans `\`, `<` and `>` are escaped; inside them nothing is (Markdown shows
+/// a code span as written); `|` is escaped everywhere, as a table needs.
+fn cell(s: &str) -> String {
+    text(s, true)
+}
+
+/// [`cell`] for a list item: the same, but `|` is no special character there.
+fn item(s: &str) -> String {
+    text(s, false)
+}
+
+fn text(s: &str, table: bool) -> String {
+    let one = single_line(s);
+    let mut out = String::with_capacity(one.len() + 8);
+    // Only balanced spans are code: an odd last backtick is text.
+    let spans = one.matches('`').count() / 2 * 2;
+    let mut ticks = 0;
+    for c in one.chars() {
+        let in_code = ticks % 2 == 1;
+        match c {
+            '`' => {
+                if ticks < spans {
+                    ticks += 1;
+                    out.push('`');
+                } else {
+                    out.push_str("\\`");
+                }
+            }
+            '|' if table => out.push_str("\\|"),
+            '\\' if !in_code => out.push_str("\\\\"),
+            '<' if !in_code => out.push_str("&lt;"),
+            '>' if !in_code => out.push_str("&gt;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A value as a code span in a table cell: shown as written, whatever it holds (a fence
+/// longer than its longest run of backticks, padded where it starts or ends with one; `|`
+/// escaped for the table).
 fn code_cell(s: &Option<String>) -> String {
     match s {
         None => "—".into(),
         Some(s) if s.is_empty() => "(empty)".into(),
-        Some(s) => {
-            let c = cell(s);
-            // A backtick inside would end the code span: show such values as text.
-            if c.contains('`') {
-                c
-            } else {
-                format!("`{c}`")
-            }
-        }
+        Some(s) => code_span(&single_line(s), true),
     }
+}
+
+fn code_span(s: &str, table: bool) -> String {
+    let longest = s.split(|c| c != '`').map(str::len).max().unwrap_or(0);
+    let fence = "`".repeat(longest + 1);
+    let pad = if s.starts_with('`') || s.ends_with('`') {
+        " "
+    } else {
+        ""
+    };
+    let body = if table {
+        s.replace('|', "\\|")
+    } else {
+        s.to_string()
+    };
+    format!("{fence}{pad}{body}{pad}{fence}")
 }
 
 /// Longest cell text: long descriptions and constraint formulas stay readable in a table.
@@ -154,9 +200,9 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
     let c = &diff.components;
     let _ = writeln!(
         out,
-        "Comparing `{}` → `{}`: {} of {} matched component(s) changed, {} added, {} removed{}; the check {verdict}.\n",
-        cell(old),
-        cell(new),
+        "Comparing {} → {}: {} of {} matched component(s) changed, {} added, {} removed{}; the check {verdict}.\n",
+        code_span(&single_line(old), false),
+        code_span(&single_line(new), false),
         c.changed,
         c.matched,
         c.added,
@@ -173,7 +219,7 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
         let title = if component.is_empty() {
             "Inputs".to_string()
         } else {
-            format!("`{}`", cell(component))
+            code_span(&single_line(component), false)
         };
         let count = |l: Level| changes.iter().filter(|c| c.severity == l).count();
         let _ = writeln!(
@@ -219,7 +265,7 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
                 let path = if ch.path.is_empty() {
                     String::new()
                 } else {
-                    format!("`{}` ", cell(&ch.path))
+                    format!("{} ", code_span(&single_line(&ch.path), false))
                 };
                 let _ = writeln!(
                     section,
@@ -227,7 +273,7 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
                     ch.code,
                     path,
                     ch.name,
-                    cell(&ch.message)
+                    item(&ch.message)
                 );
             }
             section.push_str("\n</details>\n\n");
