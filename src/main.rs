@@ -1065,6 +1065,10 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         if let (true, Some(d)) = (opts.sources_only, &file.dir) {
             paths = vec![d.clone()];
         }
+    } else if args.paths.len() == 1 && args.paths[0].is_dir() {
+        // One directory, as `build DIR` takes it: the directory, and the sources added to it.
+        pin(&file, &args.read.sources, &mut opts, cli.quiet)?;
+        opts.sources_only = false;
     } else {
         opts.sources_only = false;
     }

@@ -242,10 +242,12 @@ fn sources_are_pinned_in_the_lock_and_linked_at_their_commit() {
         )),
         "{md}"
     );
-    // `check` reads the same sources.
-    let (code, err) = p.run(&["check"]);
-    assert_eq!(code, 0, "{err}");
-    assert!(err.contains("4 component profiles"), "{err}");
+    // `check` reads the same sources, also with the directory named as `build DIR` takes it.
+    for args in [&["check"][..], &["check", "."]] {
+        let (code, err) = p.run(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        assert!(err.contains("4 component profiles"), "{args:?}: {err}");
+    }
 }
 
 #[test]
