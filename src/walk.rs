@@ -185,7 +185,8 @@ pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
 }
 
 /// The `kind` (`include` or `exclude`) patterns as one set: `*` and `?` stay within one folder,
-/// `**` crosses folders.
+/// `**` crosses folders, and a pattern without `/` matches a name in any folder (`*.yml`, as in
+/// `.gitignore`).
 fn build_globs(kind: &'static str, patterns: &[String]) -> Result<GlobSet, WalkError> {
     let bad = |pattern: String, e: globset::Error| WalkError::BadGlob {
         kind,
@@ -194,7 +195,14 @@ fn build_globs(kind: &'static str, patterns: &[String]) -> Result<GlobSet, WalkE
     };
     let mut b = GlobSetBuilder::new();
     for p in patterns {
-        let g = globset::GlobBuilder::new(p)
+        let anywhere;
+        let pattern = if p.contains('/') {
+            p.as_str()
+        } else {
+            anywhere = format!("**/{p}");
+            anywhere.as_str()
+        };
+        let g = globset::GlobBuilder::new(pattern)
             .literal_separator(true)
             .build()
             .map_err(|e| bad(p.clone(), e))?;

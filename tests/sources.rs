@@ -667,3 +667,26 @@ fn whats_new_filters_by_source() {
         row("image")
     );
 }
+
+/// A `path` the source's commit does not have is exit 2 before anything is written: `build`,
+/// `check` and `update` leave the lock as it was.
+#[test]
+fn a_source_path_the_commit_lacks_writes_no_lock() {
+    let p = Project::new();
+    let repo = p.root.join("repo");
+    commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let good = p.lock();
+    p.config(&format!(
+        "[[source]]\ngit = \"{0}\"\n\n[[source]]\nname = \"bad\"\ngit = \"{0}\"\npath = \"NoSuchDir\"\n",
+        url(&repo)
+    ));
+    for args in [&["build", "-f", "json"][..], &["check"], &["update"]] {
+        let (code, err) = p.run(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains("no folder `NoSuchDir`"), "{args:?}: {err}");
+        assert_eq!(p.lock(), good, "{args:?} wrote the lock");
+    }
+}

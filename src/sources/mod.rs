@@ -419,6 +419,25 @@ fn rev_parse(mirror: &Path, what: &str) -> Result<Option<String>> {
         .filter(|s| s.len() == 40 && s.bytes().all(|b| b.is_ascii_hexdigit())))
 }
 
+/// Whether `path` is a folder at `commit` in the mirror.
+fn has_folder(mirror: &Path, commit: &str, path: &str) -> Result<bool> {
+    // `commit` is the 40 hex digits resolved from the mirror: never read as an option.
+    let mut c = git_command(Some(mirror));
+    c.args(["cat-file", "-t"]).arg(format!("{commit}:{path}"));
+    let out = run(c)?;
+    Ok(out.status.success() && String::from_utf8_lossy(&out.stdout).trim() == "tree")
+}
+
+/// The error for a source whose `path` is no folder at `commit`.
+fn no_folder(s: &Source, commit: &str) -> anyhow::Error {
+    anyhow::anyhow!(
+        "source `{}`: no folder `{}` at commit {commit} of `{}`; fix `path` in rtcdoc.toml (relative to the repository's root)",
+        s.name,
+        s.path,
+        s.git
+    )
+}
+
 /// The commit `rev` names in the mirror: a branch, else a tag, else a commit (full or
 /// abbreviated hex); `None`: the remote's default branch.
 fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
@@ -624,6 +643,10 @@ pub fn prepare(
                 }
             }
         };
+        // A `path` the commit lacks fails here, before the lock is written.
+        if !s.path.is_empty() && !has_folder(&mirror, &commit, &s.path)? {
+            return Err(no_folder(s, &commit));
+        }
         new_lock.sources.push(lock::Entry {
             name: s.name.clone(),
             git: s.git.clone(),
@@ -797,13 +820,7 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
             }
         }
         if !any && !s.path.is_empty() {
-            bail!(
-                "source `{}`: no folder `{}` at commit {} of `{}`; fix `path` in rtcdoc.toml (relative to the repository's root)",
-                s.name,
-                s.path,
-                p.commit,
-                s.git
-            );
+            return Err(no_folder(s, &p.commit));
         }
         write_blobs(Some(&p.mirror), &blobs, &root, max_file_size).with_context(|| {
             format!("source `{}`: cannot read its files from the cache", s.name)
