@@ -1059,18 +1059,15 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         args.read.input.config.as_deref(),
     )?;
     let mut opts = load_options(&file, &args.read.input);
-    if args.paths.is_empty() {
-        // The configuration's input (its `input`, or its sources only) as `build` reads it.
+    // No path: the configuration's input (its `input`, or its sources only), and one
+    // directory: it and the sources added to it — both as `build` reads them.
+    if args.paths.is_empty() || (args.paths.len() == 1 && args.paths[0].is_dir()) {
         pin(&file, &args.read.sources, &mut opts, cli.quiet)?;
-        if let (true, Some(d)) = (opts.sources_only, &file.dir) {
-            paths = vec![d.clone()];
-        }
-    } else if args.paths.len() == 1 && args.paths[0].is_dir() {
-        // One directory, as `build DIR` takes it: the directory, and the sources added to it.
-        pin(&file, &args.read.sources, &mut opts, cli.quiet)?;
-        opts.sources_only = false;
-    } else {
-        opts.sources_only = false;
+    }
+    match (args.paths.is_empty(), opts.sources_only, &file.dir) {
+        (true, true, Some(d)) => paths = vec![d.clone()],
+        (true, _, _) => {}
+        (false, _, _) => opts.sources_only = false,
     }
     let mut reports = Vec::new();
     let mut counts = (0, 0, 0);

@@ -532,20 +532,16 @@ pub fn all_values(p: &RtSystem, show_host: bool) -> Vec<(String, String)> {
         use serde_json::Value as J;
         match v {
             J::Object(m) => {
-                if !show_host
-                    && (m.get("private") == Some(&J::Bool(true))
-                        || m.get("value")
-                            .and_then(J::as_str)
-                            .is_some_and(is_naming_path))
-                {
+                // Host data was stripped ([`strip_host_data`]): a property it emptied is
+                // left out whole.
+                if !show_host && m.get("private") == Some(&J::Bool(true)) {
                     return;
                 }
                 for (k, x) in m {
                     if matches!(
                         k.as_str(),
                         "pos" | "idParts" | "shortName" | "dataTypeScoped" | "pseudo" | "private"
-                    ) || (!show_host && k == "pathUri")
-                    {
+                    ) {
                         continue;
                     }
                     let p = if path.is_empty() {
@@ -567,7 +563,14 @@ pub fn all_values(p: &RtSystem, show_host: bool) -> Vec<(String, String)> {
         }
     }
     let mut out = Vec::new();
-    if let Ok(v) = serde_json::to_value(p) {
+    let value = if show_host {
+        serde_json::to_value(p)
+    } else {
+        let mut public = p.clone();
+        strip_host_data(&mut public);
+        serde_json::to_value(&public)
+    };
+    if let Ok(v) = value {
         walk(&v, "", show_host, &mut out);
     }
     out
@@ -605,12 +608,18 @@ fn is_host_name(h: &str) -> bool {
             .all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b'.')
 }
 
+/// A property that is host data: flagged private by the reader (IORs, host names,
+/// endpoints) or holding a naming path.
+fn is_host_value(q: &crate::model::system::SystemProperty) -> bool {
+    q.private || q.value.as_deref().is_some_and(is_naming_path)
+}
+
 /// How many host values the pages and the JSON leave out of `p` unless asked to show them:
 /// private properties, properties whose value is a naming path, and instances' `pathUri`.
 pub fn host_values(p: &RtSystem) -> usize {
     p.all_properties()
         .iter()
-        .filter(|q| q.private || q.value.as_deref().is_some_and(is_naming_path))
+        .filter(|q| is_host_value(q))
         .count()
         + p.components
             .iter()
@@ -680,7 +689,7 @@ fn for_each_property_mut(
 /// something was there), and instances' `pathUri`.
 pub fn strip_host_data(p: &mut RtSystem) {
     for_each_property_mut(p, &mut |q| {
-        if q.private || q.value.as_deref().is_some_and(is_naming_path) {
+        if is_host_value(q) {
             q.private = true;
             q.value = None;
         }
