@@ -738,6 +738,10 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                     watch,
                     config_file: file.path.clone(),
                     reconfigure: Some(reconfigure),
+                    file_name: Some({
+                        let root = root.clone();
+                        std::sync::Arc::new(move |f: &str| display_path(&root, f))
+                    }),
                 },
                 std::sync::Arc::new(move |line: &str| {
                     if !quiet || line.starts_with("error") {

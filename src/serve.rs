@@ -50,6 +50,22 @@ const LIVERELOAD: &str = r#"(function () {
 })();
 "#;
 
+/// A finding as the command line prints it: `file:line:col: severity[CODE]: message`, then its
+/// hint, the file named by `file_name`.
+fn finding(
+    d: &crate::diagnostic::Diagnostic,
+    file_name: Option<&(dyn Fn(&str) -> String + Send + Sync)>,
+) -> String {
+    let mut d = d.clone();
+    if let Some(f) = file_name {
+        d.file = f(&d.file);
+    }
+    match &d.hint {
+        Some(h) => format!("{d}\n  = help: {h}"),
+        None => d.to_string(),
+    }
+}
+
 /// Re-reads the build options (after the configuration file changed).
 pub type Reconfigure = Arc<dyn Fn() -> Result<BuildOptions> + Send + Sync>;
 
@@ -64,7 +80,13 @@ pub struct ServeOptions {
     /// The configuration file; when it changes, `reconfigure` gives the new options.
     pub config_file: Option<PathBuf>,
     pub reconfigure: Option<Reconfigure>,
+    /// How a rebuild's findings name their files (the command line: as the user can open them,
+    /// as its first build's findings do); `None`: as the catalogue has them.
+    pub file_name: Option<FileName>,
 }
+
+/// Names a finding's file (catalogue path) for the user.
+pub type FileName = Arc<dyn Fn(&str) -> String + Send + Sync>;
 
 struct Shared {
     files: RwLock<Arc<BTreeMap<String, Vec<u8>>>>,
@@ -177,6 +199,7 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
     let output = crate::output::absolute(&opts.build.output).unwrap_or_default();
     let config_file = opts.config_file.clone();
     let reconfigure = opts.reconfigure.clone();
+    let file_name = opts.file_name.clone();
     let watch_extra: Vec<PathBuf> = opts.watch.clone();
     threads.push(std::thread::spawn(move || {
         let _watcher = watcher; // kept alive for the life of the loop
@@ -242,7 +265,7 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
                     let text = match e {
                         UpdateError::Profiles(d) => d
                             .iter()
-                            .map(|d| d.to_string())
+                            .map(|d| finding(d, file_name.as_deref()))
                             .collect::<Vec<_>>()
                             .join("\n"),
                         UpdateError::Other(t) => t,

@@ -375,20 +375,51 @@ fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
         .spawn()
         .unwrap();
     let mut lines = Vec::new();
-    let reader = BufReader::new(child.stderr.take().unwrap());
-    for line in reader.lines().map_while(Result::ok) {
+    let mut reader = BufReader::new(child.stderr.take().unwrap()).lines();
+    for line in reader.by_ref().map_while(Result::ok) {
         let done = line.starts_with("serving at");
         lines.push(line);
         if done || lines.len() > 200 {
             break;
         }
     }
-    let _ = child.kill();
-    let _ = child.wait();
     let text = lines.join("\n");
     assert!(
         text.contains("in/bad/RTC.xml:10:95: error[RTC303]"),
         "{text}"
     );
     assert!(text.contains("serving at http://127.0.0.1:"), "{text}");
+    // A live rebuild's findings name the file as the first build's do (below `in/`). Edited until the watcher, armed in the background, sees it.
+    let plain = d.join("in/plain/RTC.xml");
+    let good = std::fs::read_to_string(&plain).unwrap();
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in reader.map_while(Result::ok) {
+            if tx.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    let mut after = Vec::new();
+    'edits: for attempt in 0..20 {
+        let broken = format!("{good}<after{attempt} the root>");
+        std::fs::write(&plain, broken).unwrap();
+        while let Ok(line) = rx.recv_timeout(std::time::Duration::from_millis(500)) {
+            after.push(line);
+            if after.iter().any(|l| l.contains("RTC001")) {
+                break 'edits;
+            }
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    let text = after.join("\n");
+    let finding = after
+        .iter()
+        .find(|l| l.contains("RTC001"))
+        .unwrap_or_else(|| panic!("no rebuild error: {text}"));
+    assert!(
+        finding.starts_with("in/plain/RTC.xml:9:1: error[RTC001]"),
+        "{text}"
+    );
 }

@@ -161,6 +161,7 @@ fn server_serves_rebuilds_and_live_reloads() {
             watch: vec![],
             config_file: None,
             reconfigure: None,
+            file_name: None,
         },
         std::sync::Arc::new(|_: &str| {}),
     )

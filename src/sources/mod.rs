@@ -224,6 +224,11 @@ fn check_path(path: &str) -> Result<String> {
 /// A source's default name: the last segment of its URL or path, without `.git`.
 pub fn name_from_url(git: &str) -> String {
     let trimmed = git.trim_end_matches(['/', '\\']);
+    // `…/comp/.git` (a work tree's git directory) is named after `comp`, as `git clone` names it.
+    let trimmed = trimmed
+        .strip_suffix(".git")
+        .filter(|t| t.ends_with(['/', '\\']))
+        .map_or(trimmed, |t| t.trim_end_matches(['/', '\\']));
     let last = trimmed.rsplit(['/', '\\', ':']).next().unwrap_or(trimmed);
     let last = last.strip_suffix(".git").unwrap_or(last);
     let name: String = last
@@ -935,6 +940,9 @@ mod tests {
         assert_eq!(name_from_url("https://github.com/o/Camera.git"), "Camera");
         assert_eq!(name_from_url("git@host:o/nav-stack"), "nav-stack");
         assert_eq!(name_from_url("/srv/repos/arm/"), "arm");
+        assert_eq!(name_from_url("../comp/.git"), "comp");
+        assert_eq!(name_from_url("C:\\work\\comp\\.git\\"), "comp");
+        assert_eq!(name_from_url("/srv/.git"), "srv");
     }
 
     #[test]
