@@ -710,13 +710,20 @@ fn parse_log(text: &str, repo: usize) -> Vec<Version> {
         } else {
             first
         };
+        // A copy (`--follow` finds copies too) starts a history of its own: its original is
+        // still there, with its own history. (A copy whose original was deleted later goes on
+        // at the original's path by its component id: [`follow_by_id`].)
+        let copy = status.starts_with('C');
         out.push(version(
             repo,
             (commit, date, author, subject),
             new,
             file,
-            status.starts_with('A'),
+            copy || status.starts_with('A'),
         ));
+        if copy {
+            break;
+        }
     }
     out
 }

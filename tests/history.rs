@@ -366,7 +366,8 @@ fn a_source_repository_gives_its_history_up_to_the_pinned_commit() {
 }
 
 /// `git log --follow` of `path` (relative to `dir`): (commit, file) of each version, newest
-/// first, the commits that deleted it left out — what a component's history lists.
+/// first, the commits that deleted it left out, up to a copy (whose original has a history of
+/// its own) — what a component's history lists.
 fn follow(dir: &Path, path: &str, limit: usize) -> Vec<(String, String)> {
     let o = std::process::Command::new("git")
         .args(["log", "--follow", "--name-status", "--format=@%H"])
@@ -386,6 +387,9 @@ fn follow(dir: &Path, path: &str, limit: usize) -> Vec<(String, String)> {
         if !status.starts_with('D') {
             out.push((commit, status.rsplit('\t').next().unwrap().to_string()));
         }
+        if status.starts_with('C') {
+            break;
+        }
     }
     out
 }
@@ -393,7 +397,8 @@ fn follow(dir: &Path, path: &str, limit: usize) -> Vec<(String, String)> {
 /// Several profiles in one repository are read from one log of the whole repository: it must
 /// give what `git log --follow` of each file gives — with an input folder inside the
 /// repository, a profile added by the root commit only (D: the whole log's), one deleted and
-/// added again (where `--follow` finds a similar file to continue with), one added later, a
+/// added again (where `--follow` takes a similar file, another component's, for the original of
+/// a copy: the history starts at the copy), one added later, a
 /// renamed folder, a limit, and merges.
 #[test]
 fn histories_of_many_profiles_are_those_of_git_log_follow() {

@@ -493,6 +493,43 @@ fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
     assert_eq!(h[2]["first"], true);
 }
 
+#[test]
+fn a_copy_whose_original_stays_starts_a_history_of_its_own() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let ports = [
+        ("DataInPort", "cmd", "RTC::TimedLong"),
+        ("DataOutPort", "status", "RTC::TimedLong"),
+        ("DataOutPort", "odometry", "RTC::TimedDouble"),
+    ];
+    let original = common::xml_profile("Orig", &ports);
+    write(&repo, "Orig/RTC.xml", &original);
+    commit(&repo, 1, "First");
+    let edited = with(&original, &[("rtc:name=\"cmd\"", "rtc:name=\"command\"")]);
+    write(&repo, "Orig/RTC.xml", &edited);
+    commit(&repo, 2, "Edit the original");
+    // Another component made from a copy of the original, which stays.
+    write(&repo, "Base/RTC.xml", &edited.replace("Orig", "Base"));
+    commit(&repo, 3, "Copy");
+    // git's --follow takes the copy for the original's history.
+    let follow = std::process::Command::new("git")
+        .args(["log", "--follow", "--format=%s", "--", "Base/RTC.xml"])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&follow.stdout);
+    assert!(text.contains("First"), "{text}");
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let h = base_history(&site);
+    assert_eq!(subjects_and_files(&h), [("Copy", "Base/RTC.xml")], "{h:#?}");
+    assert_eq!(h[0]["first"], true, "{h:#?}");
+}
+
 /// A profile whose file is its newest commit byte for byte is that version (not parsed again),
 /// and the same blob, an older version of another profile, is still read for that one.
 #[test]
