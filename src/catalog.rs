@@ -812,6 +812,10 @@ pub struct Catalog {
     /// The `[[source]]` repositories read ([`Catalog::attach_sources`]), by name.
     #[serde(skip)]
     pub sources: Vec<crate::model::SourceInfo>,
+    /// What cut the git histories short (a repository git refuses, a shallow clone, a file
+    /// whose log git could not give), sorted: `build` prints them as warnings.
+    #[serde(skip)]
+    pub history_notes: Vec<String>,
     #[serde(skip)]
     type_index: HashMap<String, DataTypeIx>,
     #[serde(skip)]
@@ -1490,6 +1494,7 @@ impl Catalog {
             systems: Vec::new(),
             detached_backups: Vec::new(),
             sources: Vec::new(),
+            history_notes: Vec::new(),
             type_index,
             interface_index,
         };

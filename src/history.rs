@@ -79,12 +79,40 @@ impl Repo {
     }
 }
 
-/// Whether `dir` is inside a git work tree (and git runs).
-fn is_work_tree(dir: &Path) -> bool {
+/// Whether `dir` is inside a git work tree (and git runs), with a note when git refuses the
+/// repository (owned by another user) or it is a shallow clone: its histories are cut short.
+fn work_tree(dir: &Path) -> (bool, Option<String>) {
     let mut c = Repo::WorkTree(dir.to_path_buf()).git();
-    c.args(["rev-parse", "--is-inside-work-tree"]);
-    c.stderr(Stdio::null());
-    matches!(c.output(), Ok(o) if o.status.success() && o.stdout.starts_with(b"true"))
+    c.args([
+        "rev-parse",
+        "--is-inside-work-tree",
+        "--is-shallow-repository",
+        "--show-toplevel",
+    ]);
+    let Ok(o) = c.output() else {
+        return (false, None);
+    };
+    let err = String::from_utf8_lossy(&o.stderr);
+    if !o.status.success() {
+        let note = crate::sources::refused_repository(&err).map(|top| {
+            format!(
+                "git refuses the repository at `{top}` (it belongs to another user), so no component has a git history; {}",
+                crate::sources::safe_directory_hint(top)
+            )
+        });
+        return (false, note);
+    }
+    let out = String::from_utf8_lossy(&o.stdout);
+    let mut lines = out.lines();
+    let inside = lines.next() == Some("true");
+    let shallow = lines.next() == Some("true");
+    let top = lines.next().unwrap_or_default();
+    let note = (inside && shallow).then(|| {
+        format!(
+            "the repository at `{top}` is a shallow clone: each history starts at its oldest commit, not where the file began; fetch the whole history (`git fetch --unshallow`, or `fetch-depth: 0` for actions/checkout)"
+        )
+    });
+    (inside, note)
 }
 
 /// Fills in `history` of every component: up to `limit` commits of its file (0: none, and no
@@ -100,6 +128,7 @@ pub fn attach(catalog: &mut Catalog, roots: &Roots, opts: &crate::build::LoadOpt
     attach_components(catalog, &mut repos, roots, opts, &|_| true);
     attach_systems(catalog, &mut repos, opts.history, &opts.limits);
     attach_idl(catalog, &mut repos, roots, opts.history, &opts.limits);
+    repos.finish(catalog);
 }
 
 /// [`attach`] for the components whose file (input path) is in `only`: the others keep the
@@ -118,6 +147,7 @@ pub fn attach_some(
     attach_components(catalog, &mut repos, roots, opts, &|c| {
         only.contains(&c.source)
     });
+    repos.finish(catalog);
 }
 
 /// Fills in `history` of the components `wanted` says.
@@ -139,7 +169,7 @@ fn attach_components(
         })
         .collect();
     let parse = |bytes: &[u8], file: &str| parse_blob(bytes, file, limits);
-    let mut logs = read_logs(&repos.list, &located, limit);
+    let mut logs = read_logs(repos, &located, limit);
     // A profile git's `--follow` lost at an older path: found again by its component id.
     let list = &repos.list;
     logs.par_iter_mut()
@@ -216,6 +246,8 @@ struct Repos<'a> {
     /// The work tree around the input directory, if it is in one.
     local: Option<Repo>,
     sources: &'a [crate::sources::Pinned],
+    /// What cut the histories short ([`Catalog::history_notes`]).
+    notes: std::sync::Mutex<std::collections::BTreeSet<String>>,
 }
 
 /// Where a document's file is: (repository index, revision, path in the repository).
@@ -223,11 +255,27 @@ type Located = (usize, String, String);
 
 impl<'a> Repos<'a> {
     fn new(roots: &Roots, sources: &'a [crate::sources::Pinned]) -> Self {
+        let (inside, note) = work_tree(&roots.local);
         Repos {
             list: Vec::new(),
-            local: is_work_tree(&roots.local).then(|| Repo::WorkTree(roots.local.clone())),
+            local: inside.then(|| Repo::WorkTree(roots.local.clone())),
             sources,
+            notes: std::sync::Mutex::new(note.into_iter().collect()),
         }
+    }
+
+    fn note(&self, note: String) {
+        self.notes
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .insert(note);
+    }
+
+    /// Hands the notes to the catalogue.
+    fn finish(self, catalog: &mut Catalog) {
+        let mut notes = self.notes.into_inner().unwrap_or_else(|e| e.into_inner());
+        notes.extend(std::mem::take(&mut catalog.history_notes));
+        catalog.history_notes = notes.into_iter().collect();
     }
 
     /// The repository, revision and path of a document read from `origin` (a `[[source]]`) or
@@ -268,13 +316,13 @@ type Parsed<D> = Vec<HashMap<String, Result<D, String>>>;
 /// them read (one `git cat-file --batch` per repository) and parsed once by `parse` (bytes, a
 /// path the blob had: its extension names the format when the content does not).
 fn read_versions<D: Send>(
-    repos: &[Repo],
+    repos: &Repos<'_>,
     located: &[Option<Located>],
     limit: usize,
     parse: ParseFn<'_, D>,
 ) -> (Vec<Vec<Version>>, Parsed<D>) {
     let logs = read_logs(repos, located, limit);
-    let parsed = read_parsed(repos, &logs, parse, &mut |_, _, _, _| true);
+    let parsed = read_parsed(&repos.list, &logs, parse, &mut |_, _, _, _| true);
     (logs, parsed)
 }
 
@@ -282,7 +330,8 @@ fn read_versions<D: Send>(
 ///
 /// From one log of the whole repository where it has several of the files ([`WholeLog`]),
 /// else (or where `--follow` could find a rename or copy) a `git log --follow` per file.
-fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<Vec<Version>> {
+fn read_logs(all: &Repos<'_>, located: &[Option<Located>], limit: usize) -> Vec<Vec<Version>> {
+    let repos = &all.list;
     let mut groups: BTreeMap<(usize, &str), Vec<&str>> = BTreeMap::new();
     for (repo, rev, path) in located.iter().flatten() {
         groups.entry((*repo, rev)).or_default().push(path);
@@ -300,7 +349,14 @@ fn read_logs(repos: &[Repo], located: &[Option<Located>], limit: usize) -> Vec<V
             Some((repo, rev, path)) => wholes
                 .get(&(*repo, rev.as_str()))
                 .and_then(|w| w.log(*repo, path, limit))
-                .unwrap_or_else(|| log(&repos[*repo], *repo, rev, path, limit)),
+                .unwrap_or_else(|| {
+                    log(&repos[*repo], *repo, rev, path, limit).unwrap_or_else(|e| {
+                        all.note(format!(
+                            "git could not give the history of `{path}` ({e}); it shows only its working copy and backups: `git log --follow -- {path}` in the repository says more"
+                        ));
+                        Vec::new()
+                    })
+                }),
             None => Vec::new(),
         })
         .collect()
@@ -410,7 +466,8 @@ fn follow_by_id(
             &parent,
             &pathspec(repo, old_path),
             limit - versions.len(),
-        );
+        )
+        .unwrap_or_default();
         if more.is_empty() {
             return;
         }
@@ -469,10 +526,17 @@ fn pathspec(repo: &Repo, top: &str) -> String {
     }
 }
 
-/// The commits that changed `path` up to `rev`, following renames.
-fn log(repo: &Repo, at: usize, rev: &str, path: &str, limit: usize) -> Vec<Version> {
+/// The commits that changed `path` up to `rev`, following renames, or git's first line of
+/// error.
+fn log(
+    repo: &Repo,
+    at: usize,
+    rev: &str,
+    path: &str,
+    limit: usize,
+) -> Result<Vec<Version>, String> {
     if rev.starts_with('-') || path.is_empty() {
-        return Vec::new();
+        return Ok(Vec::new());
     }
     let mut c = repo.git();
     c.args([
@@ -487,14 +551,17 @@ fn log(repo: &Repo, at: usize, rev: &str, path: &str, limit: usize) -> Vec<Versi
     ])
     .arg(format!("--max-count={limit}"))
     .args(["--end-of-options", rev, "--", path]);
-    c.stderr(Stdio::null());
-    let Ok(out) = c.output() else {
-        return Vec::new();
-    };
+    let out = c.output().map_err(|e| format!("git: {e}"))?;
     if !out.status.success() {
-        return Vec::new();
+        let err = String::from_utf8_lossy(&out.stderr);
+        return Err(err
+            .lines()
+            .find(|l| !l.trim().is_empty())
+            .unwrap_or("git log failed")
+            .trim()
+            .to_string());
     }
-    parse_log(&String::from_utf8_lossy(&out.stdout), at)
+    Ok(parse_log(&String::from_utf8_lossy(&out.stdout), at))
 }
 
 /// A commit as `git log` describes it: id, author date, author, subject.
@@ -1042,7 +1109,7 @@ fn attach_systems(catalog: &mut Catalog, repos: &mut Repos<'_>, limit: usize, li
         .iter()
         .map(|s| repos.locate(s.origin.as_ref(), &s.source))
         .collect();
-    let (logs, parsed) = read_versions(&repos.list, &located, limit, &|bytes, file| {
+    let (logs, parsed) = read_versions(repos, &located, limit, &|bytes, file| {
         parse_system_blob(bytes, file, limits)
     });
     let histories: Vec<Vec<Entry>> = catalog
@@ -1116,7 +1183,7 @@ fn attach_idl(
         .map(|f| repos.locate(f.origin.as_ref(), &f.path))
         .collect();
     let parse = |bytes: &[u8], file: &str| parse_idl_blob(bytes, file, limits);
-    let (logs, parsed) = read_versions(&repos.list, &located, limit, &parse);
+    let (logs, parsed) = read_versions(repos, &located, limit, &parse);
     // The file as it is: only a file of the input directory can differ from its newest commit
     // (a source's is read at its pinned commit).
     let current: Vec<Option<Result<crate::idl::IdlSet, String>>> = catalog

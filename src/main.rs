@@ -674,6 +674,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 &check_cmd,
             );
             if !cli.quiet {
+                for note in &loaded.catalog.history_notes {
+                    eprintln!("warning: history: {note}");
+                }
                 let html = opts.formats.is_empty() || opts.formats.contains(&Format::Html);
                 if html && opts.site.base_url.is_none() {
                     eprintln!("note: no sitemap.xml: it needs absolute URLs; pass --base-url URL (or set base-url in rtcdoc.toml)");

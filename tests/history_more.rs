@@ -568,3 +568,164 @@ fn a_blob_that_is_one_file_and_another_s_older_version_is_read_for_both() {
     assert!(b[0].get("error").is_none(), "{b:#?}");
     assert!(!codes(&b[0]).is_empty(), "{b:#?}");
 }
+
+/// `rtcdoc build INPUT -o OUT -f json` with `env`: its stderr, and the subjects of the history
+/// of component `RTC:Lab:Mobile:Base:1.1.0` (from `history_repo`).
+fn build_warnings(input: &Path, out: &Path, env: &[(&str, &Path)]) -> (String, Vec<String>) {
+    let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"));
+    c.args([
+        "build",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "-f",
+        "json",
+    ])
+    .current_dir(input)
+    .env("NO_COLOR", "1");
+    for (k, v) in env {
+        c.env(k, v);
+    }
+    let o = c.output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success(), "{err}");
+    let json: Value = serde_json::from_str(&page(out, "catalog.json")).unwrap();
+    let subjects = json["components"]["RTC:Lab:Mobile:Base:1.1.0"]["history"]
+        .as_array()
+        .map(|h| {
+            h.iter()
+                .map(|e| e["subject"].as_str().unwrap_or_default().to_string())
+                .collect()
+        })
+        .unwrap_or_default();
+    (err, subjects)
+}
+
+/// The command in backticks after `run` in a warning line.
+fn command_after(err: &str, before: &str) -> Vec<String> {
+    let rest = err.split(before).nth(1).expect(before);
+    let cmd = rest.split('`').nth(1).expect("a command in backticks");
+    cmd.split(' ').map(str::to_string).collect()
+}
+
+#[test]
+fn a_shallow_clone_is_named_and_the_hint_fetches_the_whole_history() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let clone = dir.path().join("clone");
+    let url = format!("file://{}", repo.display());
+    let o = std::process::Command::new("git")
+        .args(["clone", "-q", "--depth", "1", &url])
+        .arg(&clone)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (err, subjects) = build_warnings(&clone, &dir.path().join("s1"), &[]);
+    assert_eq!(subjects, ["Rename cmd"], "{err}");
+    assert!(
+        err.contains("warning: history: the repository at `") && err.contains("is a shallow clone"),
+        "{err}"
+    );
+    // The hint, followed, fetches the whole history: no warning, every commit.
+    let hint = command_after(&err, "fetch the whole history (");
+    assert_eq!(hint, ["git", "fetch", "--unshallow"]);
+    let o = std::process::Command::new(&hint[0])
+        .args(&hint[1..])
+        .current_dir(&clone)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (err, subjects) = build_warnings(&clone, &dir.path().join("s2"), &[]);
+    assert!(!err.contains("warning: history"), "{err}");
+    assert_eq!(subjects.len(), 4, "{subjects:?}");
+}
+
+#[test]
+fn a_repository_git_refuses_is_named_and_the_hint_makes_it_read() {
+    // Only root can give the repository to another user (git refuses a repository that another
+    // user owns: "dubious ownership").
+    let is_root = std::process::Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
+    if !is_root {
+        println!("skipped: needs root to give the repository to another user");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    for e in walkdir::WalkDir::new(&repo).into_iter().flatten() {
+        std::os::unix::fs::lchown(e.path(), Some(4321), Some(4321)).unwrap();
+    }
+    // A home of its own: the hint writes the user's global git configuration.
+    let home = dir.path().join("home");
+    std::fs::create_dir_all(&home).unwrap();
+    let env = [("HOME", home.as_path())];
+    let (err, subjects) = build_warnings(&repo, &dir.path().join("s1"), &env);
+    assert!(subjects.is_empty(), "{subjects:?}");
+    assert!(
+        err.contains("warning: history: git refuses the repository at `"),
+        "{err}"
+    );
+    let hint = command_after(&err, "if you trust it, run ");
+    assert_eq!(
+        hint[..5],
+        ["git", "config", "--global", "--add", "safe.directory"]
+    );
+    // `rtcdoc diff REV:PATH` there says the same.
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(["diff", "HEAD~1:./", "HEAD:./"])
+        .current_dir(&repo)
+        .env("HOME", &home)
+        .output()
+        .unwrap();
+    let diff_err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{diff_err}");
+    assert_eq!(
+        command_after(&diff_err, "if you trust it, run "),
+        hint,
+        "{diff_err}"
+    );
+    let o = std::process::Command::new(&hint[0])
+        .args(&hint[1..])
+        .env("HOME", &home)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (err, subjects) = build_warnings(&repo, &dir.path().join("s2"), &env);
+    assert!(!err.contains("warning: history"), "{err}");
+    assert_eq!(subjects.len(), 4, "{subjects:?}");
+}
+
+#[test]
+fn a_log_git_cannot_give_is_named_with_git_s_words() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    // The first commit's tree is lost (a damaged or partly copied repository).
+    let o = std::process::Command::new("git")
+        .args(["rev-parse", "HEAD~3^{tree}"])
+        .current_dir(&repo)
+        .output()
+        .unwrap();
+    let tree = String::from_utf8_lossy(&o.stdout).trim().to_string();
+    std::fs::remove_file(repo.join(".git/objects").join(&tree[..2]).join(&tree[2..])).unwrap();
+    let (err, subjects) = build_warnings(&repo, &dir.path().join("s"), &[]);
+    assert!(subjects.is_empty(), "{subjects:?}");
+    assert!(
+        err.contains("warning: history: git could not give the history of `Base/RTC.xml` (fatal: "),
+        "{err}"
+    );
+    assert!(err.contains("`git log --follow -- Base/RTC.xml`"), "{err}");
+}

@@ -222,6 +222,13 @@ fn git_checkout(which: &str, object: &str, dest: &Path) -> Result<ObjectKind> {
         );
     }
     let inside = git(&["rev-parse", "--is-inside-work-tree"])?;
+    if let Some(top) = crate::sources::refused_repository(&String::from_utf8_lossy(&inside.stderr))
+    {
+        bail!(
+            "{which} `{object}` names a git revision, but git refuses the repository at `{top}` (it belongs to another user); {}, or give a directory",
+            crate::sources::safe_directory_hint(top)
+        );
+    }
     if !inside.status.success() {
         bail!(
             "{which} `{object}` names a git revision, but the current directory is not in a git repository ({}); run rtcdoc diff inside the repository, or give a directory",

@@ -345,6 +345,20 @@ pub fn mirror_path(cache: &Path, s: &Source) -> PathBuf {
 
 /// `git` with the safe environment: no system configuration, no prompt, no hooks, only the
 /// `file`, `https` and `ssh` protocols, nothing of a repository around the current directory.
+/// The repository git refuses because another user owns it, from git's error output
+/// ("detected dubious ownership in repository at 'DIR'" … `safe.directory`): `DIR`.
+pub(crate) fn refused_repository(stderr: &str) -> Option<&str> {
+    if !stderr.contains("safe.directory") {
+        return None;
+    }
+    stderr.split('\'').nth(1)
+}
+
+/// What to do about a repository git refuses ([`refused_repository`]).
+pub(crate) fn safe_directory_hint(dir: &str) -> String {
+    format!("if you trust it, run `git config --global --add safe.directory {dir}`")
+}
+
 pub(crate) fn git_command(git_dir: Option<&Path>) -> Command {
     let mut c = Command::new("git");
     for k in [
