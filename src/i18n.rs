@@ -157,6 +157,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("dataflow_none", "No data flows: no out-port and in-port of different components carry the same data type.", "データの流れはありません: 異なるコンポーネントの出力ポートと入力ポートで同じデータ型を運ぶものがありません。"),
     ("dataflow_not_drawn", "The drawing shows the groups with the most port pairs and their heaviest flows; the table lists every flow. Not drawn", "図には、ポートの組の多いグループとその主な流れだけを描いています。すべての流れは表にあります。図にないもの"),
     ("dataflow_pair_count", "port pairs", "組のポート"),
+    ("dataflow_pair_count_one", "port pair", "組のポート"),
     ("dataflow_pairs", "Port pairs", "ポートの組"),
     ("dataflow_to", "To", "送り先"),
     ("dataflow_type", "Dataflow type", "データフロー型"),

@@ -425,3 +425,50 @@ fn rendered_diagrams_have_no_connector_through_a_box_and_every_name_whole() {
         "the neighbourhood drawings are measured too"
     );
 }
+
+/// The export holds every flow, one within a group too: two components of one category, one
+/// feeding the other, are that category's edge to itself (the page's drawing shows the flows
+/// between groups; its table lists that one).
+#[test]
+fn the_dataflow_export_holds_the_flows_within_a_group() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let profile = |name: &str, category: &str, dir: &str| {
+        common::xml_profile(name, &[(dir, "p", "RTC::TimedLong")]).replace(
+            "rtc:category=\"Cat\"",
+            &format!("rtc:category=\"{category}\""),
+        )
+    };
+    common::write(
+        &input,
+        "Src/RTC.xml",
+        &profile("Src", "Sensor", "DataOutPort"),
+    );
+    common::write(
+        &input,
+        "Dst/RTC.xml",
+        &profile("Dst", "Sensor", "DataInPort"),
+    );
+    let export = |format: &str| {
+        let f = dir.path().join(format!("flow.{format}"));
+        graph_with(&input, &["--dataflow", "category"], format, &f);
+        std::fs::read_to_string(f).unwrap()
+    };
+    let dot = export("dot");
+    assert!(dot.contains("n0:p0:e -> n0:p1:w"), "{dot}");
+    assert!(
+        dot.contains("Sensor → Sensor: 1 port pair (RTC::TimedLong)"),
+        "{dot}"
+    );
+    assert!(export("mermaid").contains("n0 -- \"out → in\" --> n0"));
+    assert!(export("svg").contains(">Sensor<"));
+    // A second group: both flows.
+    common::write(
+        &input,
+        "Act/RTC.xml",
+        &profile("Act", "Actuator", "DataInPort"),
+    );
+    let dot = export("dot");
+    assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
+    assert!(dot.contains("Sensor → Actuator: 1 port pair"), "{dot}");
+}

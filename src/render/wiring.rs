@@ -341,8 +341,9 @@ pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) ->
 /// The catalogue's data flow between groups (`rows`, heaviest first) as instances and
 /// connectors to draw or export: with `caps` (groups, flows), the groups with the most port
 /// pairs between groups and the heaviest flows between those, and how many groups and
-/// flows that leaves out; without, every group and every flow between two groups. Each group
-/// has an out-port and an in-port as needed, one connector per flow.
+/// flows that leaves out; without (the export), every group and every flow, a flow within one
+/// group too (from the group's out-port to its own in-port). Each group has an out-port and an
+/// in-port as needed, one connector per flow.
 pub fn dataflow_wiring(
     rows: &[crate::render::facts::FlowRow<'_>],
     lang: Lang,
@@ -352,10 +353,15 @@ pub fn dataflow_wiring(
     use crate::render::facts::FlowRow;
     use std::collections::BTreeMap;
     let (max_groups, max_flows) = caps.unwrap_or((usize::MAX, usize::MAX));
-    let between: Vec<&FlowRow<'_>> = rows.iter().filter(|r| r.from.1 != r.to.1).collect();
+    // The drawing on the page shows the flows between groups (its table lists them all).
+    let between: Vec<&FlowRow<'_>> = rows
+        .iter()
+        .filter(|r| caps.is_none() || r.from.1 != r.to.1)
+        .collect();
     let mut weight: BTreeMap<&str, (u64, &str)> = BTreeMap::new();
     for r in &between {
-        for (name, page) in [&r.from, &r.to] {
+        let ends = if r.from.1 == r.to.1 { 1 } else { 2 };
+        for (name, page) in [&r.from, &r.to].into_iter().take(ends) {
             weight.entry(page.stem.as_str()).or_insert((0, name)).0 += r.pairs;
         }
     }
@@ -422,7 +428,11 @@ pub fn dataflow_wiring(
                 r.from.0,
                 r.to.0,
                 r.pairs,
-                lang.t("dataflow_pair_count"),
+                lang.t(if r.pairs == 1 {
+                    "dataflow_pair_count_one"
+                } else {
+                    "dataflow_pair_count"
+                }),
                 types.join(", "),
                 if r.more_types > 0 {
                     format!(", +{}", r.more_types)
