@@ -173,6 +173,21 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("doc_type", "Type description", "型の説明"),
     ("document", "Documentation", "ドキュメント"),
     ("ec_events", "Execution context events", "実行コンテキストのイベント"),
+    (
+        "empty_facets",
+        "None: the catalogue documents no component profile.",
+        "ありません。カタログにコンポーネントのプロファイルがありません。",
+    ),
+    (
+        "empty_interfaces",
+        "None: no service port of the catalogue names an interface type.",
+        "ありません。カタログのサービスポートはインターフェース型を示していません。",
+    ),
+    (
+        "empty_types",
+        "None: no data port of the catalogue names a data type.",
+        "ありません。カタログのデータポートはデータ型を示していません。",
+    ),
     ("errors", "errors", "エラー"),
     ("event", "Event", "イベント"),
     ("event_target", "Target state", "遷移先"),

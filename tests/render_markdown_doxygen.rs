@@ -584,3 +584,47 @@ fn doxygen_tag_file_lets_another_manual_link_entries() {
     assert!(index.contains("href=\"../../out/html/rtc_comp_objectdetector.html\""));
     assert!(index.contains("rtc_comp_usbcamera.html#rtc_comp_usbcamera__port_image"));
 }
+
+/// A catalogue of RT Systems only: the empty indexes (vendors, categories, data types,
+/// interfaces) say so in every format, and Doxygen, whose Doxyfile fails on a warning, has none
+/// (an empty `<ul>` was "error: empty list!").
+#[test]
+fn empty_indexes_say_none_in_every_format() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    std::fs::create_dir_all(&input).unwrap();
+    std::fs::copy(
+        root().join("tests/fixtures/rts/full.xml"),
+        input.join("system.xml"),
+    )
+    .unwrap();
+    let none = "None: the catalogue documents no component profile.";
+    let (_m, md) = render(&input, Format::Markdown, Lang::En);
+    let vendors = std::fs::read_to_string(md.join("vendors.md")).unwrap();
+    assert!(vendors.contains(none), "{vendors}");
+    let types = std::fs::read_to_string(md.join("types.md")).unwrap();
+    assert!(
+        types.contains("None: no data port of the catalogue names a data type.")
+            && !types.contains('|'),
+        "{types}"
+    );
+    let (_h, html) = render(&input, Format::Html, Lang::En);
+    for page in ["vendors/index.html", "categories/index.html"] {
+        let text = std::fs::read_to_string(html.join(page)).unwrap();
+        assert!(
+            text.contains(none) && !text.contains("<ul class=\"facets\">"),
+            "{text}"
+        );
+    }
+    let text = std::fs::read_to_string(html.join("interfaces/index.html")).unwrap();
+    assert!(!text.contains("<table>"), "{text}");
+    let (_d, dox) = render(&input, Format::Doxygen, Lang::En);
+    let vendors = std::fs::read_to_string(dox.join("vendors.dox")).unwrap();
+    assert!(
+        vendors.contains(none) && !vendors.contains("<ul>"),
+        "{vendors}"
+    );
+    if have("doxygen") {
+        run_doxygen(&dox);
+    }
+}

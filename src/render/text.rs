@@ -363,7 +363,11 @@ pub fn facet_index_page<M: Markup>(
             ))
         })
         .collect();
-    M::linked_list(&mut out, &items);
+    if items.is_empty() {
+        M::paragraph(&mut out, &M::esc(lang.t("empty_facets")));
+    } else {
+        M::linked_list(&mut out, &items);
+    }
     out
 }
 
@@ -813,6 +817,14 @@ pub fn type_index_page<M: Markup>(
                 .collect()
         })
         .collect();
+    if rows.is_empty() {
+        let key = match v.kind {
+            TypeKind::Data => "empty_types",
+            TypeKind::Interface => "empty_interfaces",
+        };
+        M::paragraph(&mut out, &M::esc(lang.t(key)));
+        return out;
+    }
     let headers = match v.kind {
         TypeKind::Data => [
             lang.t("data_type"),
