@@ -298,6 +298,14 @@ fn cases() -> Vec<Case> {
             vec!["DIFF210"],
             "from `m` to `mm`",
         ),
+        // An empty value is said to be empty: `` would open a code span.
+        case(
+            "DIFF210",
+            vec![(r#"rtc:unit="m">"#, r#"rtc:unit="">"#)],
+            "configurations/gain/unit",
+            vec!["DIFF210"],
+            "from `m` to (empty)",
+        ),
         case(
             "DIFF211",
             vec![(

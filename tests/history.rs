@@ -266,8 +266,9 @@ fn the_component_page_has_a_history_section_in_every_output() {
     );
     assert!(rows[2].contains("<li>dataPorts/cmd: "), "{}", rows[2]);
     assert!(
-        rows[2]
-            .contains("<li>basicInfo/version: `Base` has breaking changes but keeps version 1.0.0"),
+        rows[2].contains(
+            "<li>basicInfo/version: <code>Base</code> has breaking changes but keeps version 1.0.0"
+        ),
         "{}",
         rows[2]
     );

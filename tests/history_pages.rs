@@ -76,9 +76,10 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         &format!("<section id=\"v-{}\"", ids[0]),
         "</section>",
     );
-    // Every change with its code, severity, path and message; DIFF208 among them.
+    // Every change with its code, severity, path and message (its code spans as code, as in
+    // Markdown and Doxygen); DIFF208 among them.
     for s in [
-        "<span class=\"sev breaking\">breaking</span></th><td data-label=\"Code\"><code>DIFF102</code></td><td data-label=\"Where\"><code>dataPorts/cmd</code></td><td data-label=\"Message\">data port `cmd` was removed</td>",
+        "<span class=\"sev breaking\">breaking</span></th><td data-label=\"Code\"><code>DIFF102</code></td><td data-label=\"Where\"><code>dataPorts/cmd</code></td><td data-label=\"Message\">data port <code>cmd</code> was removed</td>",
         "<code>DIFF208</code>",
         "<code>DIFF301</code></td><td data-label=\"Where\"><code>dataPorts/velocity</code>",
         "1 breaking, 1 warning, 1 info",

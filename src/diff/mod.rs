@@ -1255,6 +1255,8 @@ fn unreadable(
 fn quoted(s: Option<&str>) -> String {
     match s {
         None => "(absent)".into(),
+        // `` would open a code span instead of showing an empty one.
+        Some("") => "(empty)".into(),
         Some(s) => format!("`{s}`"),
     }
 }

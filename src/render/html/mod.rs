@@ -977,6 +977,7 @@ impl HtmlRenderer {
         env.add_function("fields", builtins::fields);
         env.add_function("type_link", builtins::type_link);
         env.add_function("peers", builtins::peers);
+        env.add_filter("code_spans", code_spans);
         env
     }
 }
@@ -1019,6 +1020,15 @@ impl minijinja::value::Object for Labels {
 /// How `{{ … }}` prints a value: strings are escaped with [`svg::esc_into`] (minijinja's default
 /// would also escape `/`, making every URL longer without adding safety), the rest as minijinja
 /// does.
+/// The `code_spans` filter: the text escaped, its code spans as `<code>`
+/// ([`svg::esc_code_into`]).
+fn code_spans(s: &str) -> Value {
+    let mut out = String::with_capacity(s.len() + 16);
+    // Writing to a String cannot fail.
+    let _ = svg::esc_code_into(&mut out, s);
+    Value::from_safe_string(out)
+}
+
 fn formatter(
     out: &mut minijinja::Output<'_>,
     state: &minijinja::State<'_, '_>,

@@ -43,6 +43,11 @@ impl Out<'_> {
         let _ = esc_into(&mut self.buf, s);
     }
 
+    /// `{{ s|code_spans }}`: escaped, code spans as `<code>`.
+    fn text_with_code(&mut self, s: &str) {
+        let _ = super::svg::esc_code_into(&mut self.buf, s);
+    }
+
     /// `{{ t.key }}`.
     fn label(&mut self, key: &str) {
         let s = self.g.lang.t(key);
@@ -819,7 +824,7 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
             o.raw("<ul>");
             for b in &h.breaking {
                 o.raw("<li>");
-                o.text(b);
+                o.text_with_code(b);
                 o.raw("</li>");
             }
             o.raw("</ul>");

@@ -41,6 +41,31 @@ pub fn esc(s: &str) -> String {
 /// Writes `s` escaped for HTML/SVG text and attribute values: `& < > " '` become references,
 /// control characters other than newline and tab become spaces. Runs of ordinary text are
 /// written in one piece.
+/// `s` escaped, its code spans (`` `name` ``, as [`crate::render::text::code_spans`] finds
+/// them) as `<code>`: a diff message, a finding or its hint as Markdown and Doxygen show it.
+pub fn esc_code_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
+    if !s.contains('`') {
+        return esc_into(out, s);
+    }
+    let chars: Vec<char> = s.chars().collect();
+    let mut at = 0;
+    let mut piece = String::new();
+    for (open, close) in crate::render::text::code_spans(&chars, true) {
+        piece.clear();
+        piece.extend(&chars[at..open]);
+        esc_into(out, &piece)?;
+        piece.clear();
+        piece.extend(&chars[open + 1..close]);
+        out.write_str("<code>")?;
+        esc_into(out, &piece)?;
+        out.write_str("</code>")?;
+        at = close + 1;
+    }
+    piece.clear();
+    piece.extend(&chars[at..]);
+    esc_into(out, &piece)
+}
+
 pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
     let b = s.as_bytes();
     let mut start = 0;
@@ -617,6 +642,23 @@ mod tests {
             "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt; \n\t"
         );
         assert_eq!(esc("画<像"), "画&lt;像");
+    }
+
+    #[test]
+    fn code_spans_are_code_and_the_rest_is_escaped() {
+        let code = |s: &str| {
+            let mut out = String::new();
+            esc_code_into(&mut out, s).unwrap();
+            out
+        };
+        assert_eq!(
+            code("port `a<b>` of `画像` & more"),
+            "port <code>a&lt;b&gt;</code> of <code>画像</code> &amp; more"
+        );
+        // A lone or empty pair of backticks is text, as in Markdown and Doxygen.
+        assert_eq!(code("a ` b"), "a ` b");
+        assert_eq!(code("a `  ` b"), "a `  ` b");
+        assert_eq!(code("no spans <here>"), esc("no spans <here>"));
     }
 
     /// Character by character, as the escaper is specified.
