@@ -33,12 +33,56 @@
 //! `and` is false if any operand is false, `or` is true if any operand is true. Evaluation
 //! never panics and its recursion is bounded by [`MAX_DEPTH`].
 
+use crate::i18n::Lang;
 use crate::model::{Comparison, Condition, Constraint, ConstraintKind, Pos};
 use crate::value::{self, ScalarType, ValueType};
 
-/// Renders a constraint as a short plain-text formula. `x` stands for the value.
+/// Renders a constraint as a short plain-text formula. `x` stands for the value. (English:
+/// messages and `catalog.json`; pages use [`describe_in`].)
 pub fn describe(c: &Constraint) -> String {
-    describe_kind(c, false)
+    describe_in(c, Lang::En)
+}
+
+/// [`describe`] with its words (`one of`, `or`, `and`, `not`, the legend of a pattern) in `lang`.
+pub fn describe_in(c: &Constraint, lang: Lang) -> String {
+    describe_kind(c, false, lang)
+}
+
+/// The words of a formula in each language.
+struct Words {
+    one_of: &'static str,
+    or: &'static str,
+    and: &'static str,
+    not_null: &'static str,
+    /// `{}`: the negated formula.
+    not: (&'static str, &'static str),
+    any_case: &'static str,
+    legend: [&'static str; 3],
+}
+
+fn words(lang: Lang) -> &'static Words {
+    const EN: Words = Words {
+        one_of: "one of: ",
+        or: " or ",
+        and: " and ",
+        not_null: "not null",
+        not: ("not (", ")"),
+        any_case: " (any case)",
+        legend: ["any text", "one character", "escape"],
+    };
+    const JA: Words = Words {
+        one_of: "次のいずれか: ",
+        or: " または ",
+        and: " かつ ",
+        not_null: "null でない",
+        not: ("(", ") でない"),
+        any_case: " (大文字と小文字を区別しない)",
+        legend: ["任意の文字列", "任意の1文字", "エスケープ"],
+    };
+    match lang {
+        Lang::En => &EN,
+        Lang::Ja => &JA,
+    }
 }
 
 fn text(s: &Option<crate::model::Text>) -> &str {
@@ -54,9 +98,10 @@ fn comparison_text(
     comparison: Comparison,
     literal: &Option<crate::model::Text>,
     match_case: &Option<crate::model::Text>,
+    lang: Lang,
 ) -> String {
     let case = if is_case_insensitive(match_case) {
-        " (any case)"
+        words(lang).any_case
     } else {
         ""
     };
@@ -81,10 +126,10 @@ fn like_text(
     }
 }
 
-fn describe_kind(c: &Constraint, nested: bool) -> String {
+fn describe_kind(c: &Constraint, nested: bool, lang: Lang) -> String {
     match &c.kind {
         ConstraintKind::Unit { key, condition } => {
-            let body = describe_condition(condition, nested && key.is_none());
+            let body = describe_condition(condition, nested && key.is_none(), lang);
             match key.as_deref().map(str::trim).filter(|k| !k.is_empty()) {
                 Some(k) => format!("{k}: {body}"),
                 None => body,
@@ -94,14 +139,14 @@ fn describe_kind(c: &Constraint, nested: bool) -> String {
             let parts: Vec<String> = items
                 .iter()
                 .enumerate()
-                .map(|(i, item)| format!("[{i}] {}", describe_kind(item, false)))
+                .map(|(i, item)| format!("[{i}] {}", describe_kind(item, false, lang)))
                 .collect();
             parts.join("; ")
         }
         ConstraintKind::Hash { items } => {
             let parts: Vec<String> = items
                 .iter()
-                .map(|item| describe_kind(item, false))
+                .map(|item| describe_kind(item, false, lang))
                 .collect();
             parts.join("; ")
         }
@@ -117,13 +162,14 @@ fn unit_condition(c: &Constraint) -> Option<&Condition> {
     }
 }
 
-fn describe_condition(cond: &Condition, nested: bool) -> String {
+fn describe_condition(cond: &Condition, nested: bool, lang: Lang) -> String {
+    let w = words(lang);
     match cond {
         Condition::Compare {
             comparison,
             literal,
             match_case,
-        } => comparison_text(*comparison, literal, match_case),
+        } => comparison_text(*comparison, literal, match_case, lang),
         Condition::Between { lower, upper } => format!("{} ≤ x ≤ {}", text(lower), text(upper)),
         Condition::IsNull { .. } => "null".to_string(),
         Condition::Like {
@@ -134,35 +180,40 @@ fn describe_condition(cond: &Condition, nested: bool) -> String {
         } => like_text(
             literal,
             [
-                (wild_card, "any text"),
-                (single_char, "one character"),
-                (escape_char, "escape"),
+                (wild_card, w.legend[0]),
+                (single_char, w.legend[1]),
+                (escape_char, w.legend[2]),
             ],
         ),
         Condition::Not { operand } => match unit_condition(operand) {
-            Some(Condition::IsNull { .. }) => "not null".to_string(),
+            Some(Condition::IsNull { .. }) => w.not_null.to_string(),
             Some(Condition::Compare {
                 comparison: Comparison::EqualTo,
                 literal,
                 match_case,
-            }) => comparison_text(Comparison::NotEqualTo, literal, match_case),
-            _ => format!("not ({})", describe_kind(operand, false)),
+            }) => comparison_text(Comparison::NotEqualTo, literal, match_case, lang),
+            _ => format!(
+                "{}{}{}",
+                w.not.0,
+                describe_kind(operand, false, lang),
+                w.not.1
+            ),
         },
-        Condition::Or { operands } => {
-            let s = match enumeration(operands) {
-                Some(l) if l.len() > 1 => format!("one of: {}", l.join(", ")),
-                _ => operands
+        Condition::Or { operands } => match enumeration(operands) {
+            Some(l) if l.len() > 1 => format!("{}{}", w.one_of, l.join(", ")),
+            _ => {
+                let s = operands
                     .iter()
-                    .map(|o| describe_kind(o, true))
+                    .map(|o| describe_kind(o, true, lang))
                     .collect::<Vec<_>>()
-                    .join(" or "),
-            };
-            if nested && !s.starts_with("one of") {
-                format!("({s})")
-            } else {
-                s
+                    .join(w.or);
+                if nested {
+                    format!("({s})")
+                } else {
+                    s
+                }
             }
-        }
+        },
         Condition::And { operands } => {
             if let [a, b] = operands.as_slice() {
                 if let Some(s) = range_pair(a, b).or_else(|| range_pair(b, a)) {
@@ -171,9 +222,9 @@ fn describe_condition(cond: &Condition, nested: bool) -> String {
             }
             let s = operands
                 .iter()
-                .map(|o| describe_kind(o, true))
+                .map(|o| describe_kind(o, true, lang))
                 .collect::<Vec<_>>()
-                .join(" and ");
+                .join(w.and);
             if nested {
                 format!("({s})")
             } else {
@@ -907,6 +958,36 @@ pub(crate) mod tests {
             cmp(Comparison::GreaterThanOrEqualTo, "200"),
         ]);
         assert_eq!(describe(&o), "x ≤ 100 or x ≥ 200");
+    }
+
+    #[test]
+    fn the_words_of_a_formula_are_in_the_page_language() {
+        let e = or(vec![
+            cmp(Comparison::EqualTo, "RGB"),
+            cmp(Comparison::EqualTo, "GRAY"),
+        ]);
+        assert_eq!(describe_in(&e, Lang::Ja), "次のいずれか: RGB, GRAY");
+        let o = or(vec![
+            cmp(Comparison::LessThanOrEqualTo, "100"),
+            and(vec![
+                cmp(Comparison::GreaterThanOrEqualTo, "200"),
+                cmp(Comparison::NotEqualTo, "300"),
+            ]),
+        ]);
+        assert_eq!(describe(&o), "x ≤ 100 or (x ≥ 200 and x ≠ 300)");
+        assert_eq!(
+            describe_in(&o, Lang::Ja),
+            "x ≤ 100 または (x ≥ 200 かつ x ≠ 300)"
+        );
+        let n = unit(Condition::Not {
+            operand: unit(Condition::IsNull { text: None }),
+        });
+        assert_eq!(describe_in(&n, Lang::Ja), "null でない");
+        let not_or = unit(Condition::Not { operand: o });
+        assert_eq!(
+            describe_in(&not_or, Lang::Ja),
+            "(x ≤ 100 または (x ≥ 200 かつ x ≠ 300)) でない"
+        );
     }
 
     #[test]

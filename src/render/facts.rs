@@ -255,7 +255,7 @@ fn data_port_facts(p: &DataPort, lang: Lang, with_unit: bool) -> Vec<Fact> {
         .text("unit", unit.filter(|_| with_unit).unwrap_or(""));
     // RTCBuilder's `dp_constraint` placeholder constrains nothing (RTC306): not shown.
     if let Some(c) = p.constraint.as_ref().filter(|c| c.placeholder().is_none()) {
-        f.text("constraint", &constraint::describe(c));
+        f.text("constraint", &constraint::describe_in(c, lang));
     }
     if let Some(d) = &p.doc {
         f.data_doc(d, model::non_empty(&p.type_), unit);
@@ -377,12 +377,12 @@ pub fn service_interface(i: &ServiceInterface, lang: Lang) -> Vec<Fact> {
         .done()
 }
 
-/// The constraint of a configuration parameter for humans (shared [`constraint::describe`]).
-pub fn configuration_constraint(c: &Configuration) -> Option<String> {
+/// The constraint of a configuration parameter for humans (shared [`constraint::describe_in`]).
+pub fn configuration_constraint(c: &Configuration, lang: Lang) -> Option<String> {
     c.constraint
         .as_ref()
         .filter(|k| k.placeholder().is_none())
-        .map(constraint::describe)
+        .map(|k| constraint::describe_in(k, lang))
         .filter(|s| !s.trim().is_empty())
 }
 

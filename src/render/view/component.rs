@@ -298,7 +298,7 @@ fn configuration_views(c: &crate::catalog::Component, lang: Lang) -> Vec<Configu
             type_: non_empty(&conf.type_).unwrap_or(""),
             default: conf.default_value.as_deref().unwrap_or_default(),
             unit: facts::configuration_unit(conf).unwrap_or(""),
-            constraint: facts::configuration_constraint(conf).unwrap_or_default(),
+            constraint: facts::configuration_constraint(conf, lang).unwrap_or_default(),
             widget: facts::configuration_widget(conf, lang).unwrap_or_default(),
             description: conf.doc.as_ref().and_then(|d| non_empty(&d.description)),
             details: facts::configuration_without_widget(conf, lang),
