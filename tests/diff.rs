@@ -896,6 +896,26 @@ fn a_git_revision_is_read_without_touching_the_work_tree() {
     let out = rtcdoc(&["diff", "HEAD:nothing-here", "components"], d);
     assert_eq!(out.status.code(), Some(2));
 
+    // `REV:.` is the current folder, as `REV:./` (git itself refuses `.`).
+    let sub = d.join("components");
+    let out = rtcdoc(&["diff", "HEAD:.", ".", "--format", "json"], &sub);
+    let json: Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&out.stderr)));
+    assert_eq!(codes_of(&json), ["DIFF104", "DIFF208"]);
+    // A bare revision names no folder: the message says how, and that works.
+    let out = rtcdoc(&["diff", "HEAD", "."], &sub);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    let shown = err
+        .split("for this folder")
+        .next()
+        .and_then(|s| s.rsplit('`').nth(1))
+        .unwrap_or_else(|| panic!("{err}"));
+    assert_eq!(shown, "HEAD:./", "{err}");
+    let out = rtcdoc(&["diff", shown, ".", "--format", "json"], &sub);
+    let json: Value = serde_json::from_slice(&out.stdout).expect("json");
+    assert_eq!(codes_of(&json), ["DIFF104", "DIFF208"]);
+
     // Outside a repository.
     let outside = tempfile::tempdir().expect("tempdir");
     write(outside.path(), "c/RTC.xml", BASE);

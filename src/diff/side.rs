@@ -32,7 +32,12 @@ impl Spec {
         match arg.split_once(':') {
             Some((rev, path)) if !rev.is_empty() => Spec::Git {
                 rev: rev.to_string(),
-                path: path.to_string(),
+                // `REV:.` is this folder, as on the command line (git itself wants `REV:./`).
+                path: match path.strip_suffix('.') {
+                    Some("") => "./".to_string(),
+                    Some(dir) if dir.ends_with('/') => dir.to_string(),
+                    _ => path.to_string(),
+                },
             },
             _ => Spec::Local(PathBuf::from(arg)),
         }
@@ -111,9 +116,14 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
     match spec {
         Spec::Local(p) => {
             if !p.exists() {
+                let shown = p.display().to_string();
+                if is_revision(&shown) {
+                    bail!(
+                        "{which} `{shown}` is a git revision, not a directory: name a folder in it, `{shown}:./` for this folder or `{shown}:components` (a path from the repository's top)"
+                    );
+                }
                 bail!(
-                    "{which} `{}` does not exist; give a directory, a profile file or REV:PATH (a git revision and a path, e.g. origin/main:components)",
-                    p.display()
+                    "{which} `{shown}` does not exist; give a directory, a profile file or REV:PATH (a git revision and a path, e.g. origin/main:components)"
                 );
             }
             if p.is_file() && is_catalog_json(p) {
@@ -201,6 +211,19 @@ fn git(args: &[&str]) -> Result<std::process::Output> {
         .stdin(Stdio::null())
         .output()
         .context("cannot run `git` (REV:PATH needs git on the PATH)")
+}
+
+/// Whether `name` is a commit of the repository around the current directory.
+fn is_revision(name: &str) -> bool {
+    !name.starts_with('-')
+        && git(&[
+            "rev-parse",
+            "--verify",
+            "--quiet",
+            "--end-of-options",
+            &format!("{name}^{{commit}}"),
+        ])
+        .is_ok_and(|o| o.status.success())
 }
 
 fn stderr_line(out: &std::process::Output) -> String {
@@ -326,6 +349,15 @@ mod tests {
                 path: "".into()
             }
         );
+        for (dot, path) in [("HEAD~1:.", "./"), ("v1:comp/.", "comp/"), ("v1:a.", "a.")] {
+            assert_eq!(
+                Spec::parse(dot),
+                Spec::Git {
+                    rev: dot.split(':').next().unwrap().into(),
+                    path: path.into()
+                }
+            );
+        }
         assert_eq!(
             Spec::parse("no/such/dir"),
             Spec::Local("no/such/dir".into())
