@@ -224,7 +224,7 @@ fn placeholders_are_found_in_xml_and_yaml_alike() {
             "{port:?}"
         );
         assert_eq!(
-            facts::configuration_constraint(&p.configurations()[0]),
+            facts::configuration_constraint(&p.configurations()[0], rtcdoc::i18n::Lang::En),
             None
         );
         // … but kept.
