@@ -48,10 +48,13 @@ pub fn tally<T>(
 pub fn registry_entry<T>(
     table: &'static [T],
     code: &str,
-    code_of: impl Fn(&T) -> &str,
+    code_and_name: impl Fn(&T) -> (&str, &str),
 ) -> Option<&'static T> {
     let code = code.trim();
-    table.iter().find(|e| code_of(e).eq_ignore_ascii_case(code))
+    table.iter().find(|e| {
+        let (c, name) = code_and_name(e);
+        c.eq_ignore_ascii_case(code) || name.eq_ignore_ascii_case(code)
+    })
 }
 
 /// `--explain` text of a registry entry: `CODE (name) — summary`, then each part as a paragraph.

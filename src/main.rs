@@ -199,7 +199,8 @@ struct CheckArgs {
     /// Treat a class of findings as errors for the exit status (`--deny warnings`).
     #[arg(long, value_enum, value_name = "WHAT")]
     deny: Vec<Deny>,
-    /// Print the rationale and spec section of a rule code (e.g. `--explain RTC303`) and exit.
+    /// Print the rationale and spec section of a rule, by code or name (`--explain RTC303`,
+    /// `--explain duplicate-parameter`), and exit.
     #[arg(long, value_name = "CODE")]
     explain: Option<String>,
     #[command(flatten)]
@@ -236,8 +237,8 @@ struct DiffArgs {
     /// The least severe change that makes the exit status 1.
     #[arg(long, value_enum, value_name = "LEVEL", default_value = "breaking")]
     fail_on: rtcdoc::diff::report::FailOn,
-    /// Print the classification and reasoning of a change code (e.g. `--explain DIFF104`) and
-    /// exit.
+    /// Print the classification and reasoning of a change, by code or name (`--explain DIFF104`,
+    /// `--explain data-port-type-changed`), and exit.
     #[arg(long, value_name = "CODE")]
     explain: Option<String>,
     #[command(flatten)]
@@ -1045,10 +1046,16 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
                 print!("{}", check::explain(r));
                 ExitCode::SUCCESS
             }
+            None if rtcdoc::diff::codes::code(code).is_some() => {
+                eprintln!(
+                    "error: `{code}` is a code of rtcdoc diff: run `rtcdoc diff --explain {code}`"
+                );
+                ExitCode::from(2)
+            }
             None => {
                 let codes: Vec<&str> = check::RULES.iter().map(|r| r.code).collect();
                 eprintln!(
-                    "error: no rule has the code `{code}`; the codes are {}",
+                    "error: no rule has the code or name `{code}`; the codes are {}",
                     codes.join(", ")
                 );
                 ExitCode::from(2)
@@ -1193,10 +1200,14 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
                 print!("{}", diff::codes::explain(c));
                 ExitCode::SUCCESS
             }
+            None if rtcdoc::check::rule(code).is_some() => {
+                eprintln!("error: `{code}` is a code of rtcdoc check: run `rtcdoc check --explain {code}`");
+                ExitCode::from(2)
+            }
             None => {
                 let codes: Vec<&str> = diff::CODES.iter().map(|c| c.code).collect();
                 eprintln!(
-                    "error: no change has the code `{code}`; the codes are {}",
+                    "error: no change has the code or name `{code}`; the codes are {}",
                     codes.join(", ")
                 );
                 ExitCode::from(2)

@@ -506,6 +506,37 @@ fn cli_exit_codes() {
     );
 }
 
+/// `--explain` takes a rule's name as well as its code, and a code of the other command says
+/// which command explains it; that command does.
+#[test]
+fn explain_takes_names_and_points_to_the_other_command() {
+    let text = |o: std::process::Output| {
+        (
+            o.status.code(),
+            String::from_utf8_lossy(&o.stdout).to_string(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+        )
+    };
+    let (code, out, _) = text(run(&["check", "--explain", "duplicate-parameter"]));
+    assert_eq!(code, Some(0));
+    assert!(out.starts_with("RTC207 (duplicate-parameter)"), "{out}");
+    let (code, out, _) = text(run(&["diff", "--explain", "data-port-type-changed"]));
+    assert_eq!(code, Some(0));
+    assert!(out.starts_with("DIFF104 (data-port-type-changed)"), "{out}");
+    for (cmd, code_, other, first) in [
+        ("check", "DIFF101", "diff", "DIFF101 ("),
+        ("diff", "RTC101", "check", "RTC101 ("),
+    ] {
+        let (code, _, err) = text(run(&[cmd, "--explain", code_]));
+        assert_eq!(code, Some(2));
+        let hint = format!("run `rtcdoc {other} --explain {code_}`");
+        assert!(err.contains(&hint), "{err}");
+        let (code, out, _) = text(run(&[other, "--explain", code_]));
+        assert_eq!(code, Some(0));
+        assert!(out.starts_with(first), "{out}");
+    }
+}
+
 #[test]
 fn cli_json_schema() {
     let out = run(&[

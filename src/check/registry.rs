@@ -788,7 +788,7 @@ pub fn rule_exact(code: &str) -> Option<&'static Rule> {
 }
 
 pub fn rule(code: &str) -> Option<&'static Rule> {
-    crate::diagnostic::registry_entry(RULES, code, |r| r.code)
+    crate::diagnostic::registry_entry(RULES, code, |r| (r.code, r.name))
 }
 
 /// `--explain` text for a rule.

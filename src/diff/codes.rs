@@ -606,9 +606,9 @@ pub static CODES: &[Code] = &[
     },
 ];
 
-/// The registry entry of `code` (any case).
+/// The registry entry of `code` or of its name (`data-port-type-changed`), in any case.
 pub fn code(code: &str) -> Option<&'static Code> {
-    crate::diagnostic::registry_entry(CODES, code, |c| c.code)
+    crate::diagnostic::registry_entry(CODES, code, |c| (c.code, c.name))
 }
 
 /// `--explain` text for a code.
