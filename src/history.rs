@@ -248,6 +248,9 @@ struct Repos<'a> {
     sources: &'a [crate::sources::Pinned],
     /// What cut the histories short ([`Catalog::history_notes`]).
     notes: std::sync::Mutex<std::collections::BTreeSet<String>>,
+    /// The files whose log git could not give: the command that shows git's whole message
+    /// (and where to run it), and git's first line, by file.
+    failed: std::sync::Mutex<BTreeMap<String, (String, String)>>,
 }
 
 /// Where a document's file is: (repository index, revision, path in the repository).
@@ -261,19 +264,39 @@ impl<'a> Repos<'a> {
             local: inside.then(|| Repo::WorkTree(roots.local.clone())),
             sources,
             notes: std::sync::Mutex::new(note.into_iter().collect()),
+            failed: Default::default(),
         }
     }
 
-    fn note(&self, note: String) {
-        self.notes
+    /// Git could not give the log of `path` at `rev` of `repo`: `error`.
+    fn failed(&self, repo: &Repo, rev: &str, path: &str, error: String) {
+        let command = match repo {
+            Repo::WorkTree(_) => format!("`git log --follow -- {path}` in the input directory"),
+            Repo::Mirror(m) => format!(
+                "`git --git-dir {} log --follow {rev} -- {path}`",
+                m.display()
+            ),
+        };
+        self.failed
             .lock()
             .unwrap_or_else(|e| e.into_inner())
-            .insert(note);
+            .insert(path.to_string(), (command, error));
     }
 
-    /// Hands the notes to the catalogue.
+    /// Hands the notes to the catalogue: one for all the files whose log git could not give.
     fn finish(self, catalog: &mut Catalog) {
         let mut notes = self.notes.into_inner().unwrap_or_else(|e| e.into_inner());
+        let failed = self.failed.into_inner().unwrap_or_else(|e| e.into_inner());
+        if let Some((path, (command, error))) = failed.iter().next() {
+            notes.insert(match failed.len() {
+                1 => format!(
+                    "git could not give the history of `{path}` ({error}); it shows only its working copy and backups: {command} says more"
+                ),
+                n => format!(
+                    "git could not give the history of {n} files (the first, `{path}`: {error}); they show only their working copy and backups: {command} says more"
+                ),
+            });
+        }
         notes.extend(std::mem::take(&mut catalog.history_notes));
         catalog.history_notes = notes.into_iter().collect();
     }
@@ -351,9 +374,7 @@ fn read_logs(all: &Repos<'_>, located: &[Option<Located>], limit: usize) -> Vec<
                 .and_then(|w| w.log(*repo, path, limit))
                 .unwrap_or_else(|| {
                     log(&repos[*repo], *repo, rev, path, limit).unwrap_or_else(|e| {
-                        all.note(format!(
-                            "git could not give the history of `{path}` ({e}); it shows only its working copy and backups: `git log --follow -- {path}` in the repository says more"
-                        ));
+                        all.failed(&repos[*repo], rev, path, e);
                         Vec::new()
                     })
                 }),

@@ -597,12 +597,31 @@ fn shell_quote(s: &str) -> String {
     }
 }
 
+/// The READMEs of the components and the images they show (paths relative to the input).
+fn shown_files(cat: &rtcdoc::catalog::Catalog) -> std::collections::HashSet<&str> {
+    cat.components
+        .iter()
+        .filter_map(|c| c.readme.as_ref())
+        .flat_map(|r| {
+            std::iter::once(r.file.as_str()).chain(r.images.iter().map(|i| i.path.as_str()))
+        })
+        .collect()
+}
+
 /// `--verbose`: every file that could have been a profile and was not taken, with the reason;
-/// the other files (sources, images, …) as one count by extension.
-fn print_skipped(skipped: &[rtcdoc::walk::Skipped], root: &Path) {
+/// the other files (sources, images, …) as one count by extension. The READMEs and images the
+/// component pages show (`shown`) are not skipped.
+fn print_skipped(
+    skipped: &[rtcdoc::walk::Skipped],
+    root: &Path,
+    shown: &std::collections::HashSet<&str>,
+) {
     use rtcdoc::walk::SkipKind;
     let mut others: std::collections::BTreeMap<String, usize> = Default::default();
     for s in skipped {
+        if shown.contains(s.rel.as_str()) {
+            continue;
+        }
         if s.kind == SkipKind::OtherFile {
             let ext = Path::new(&s.rel)
                 .extension()
@@ -665,7 +684,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 if let Some(p) = &file.path {
                     eprintln!("configuration: {}", p.display());
                 }
-                print_skipped(&loaded.skipped, &root);
+                print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
             }
             print_findings(
                 &loaded.catalog.diagnostics,
@@ -1116,7 +1135,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             c.file = display_path(&root, &c.file);
         }
         if cli.verbose {
-            print_skipped(&loaded.skipped, &root);
+            print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
         }
         reports.push(r);
         // Not freed one allocation at a time: the process ends soon (see `Command::Build`).

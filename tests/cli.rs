@@ -203,6 +203,8 @@ fn quiet_and_verbose() {
     let d = dir.path();
     write(d, "in/a/RTC.xml", &xml_profile("A", &[]));
     write(d, "in/notes.txt", "hello");
+    // The component's README (shown on its page) is not a skipped file.
+    write(d, "in/a/README.md", "# A\n\nThe A component.\n");
     let v = rtcdoc(&["build", "in", "-f", "json", "-o", "o1", "--verbose"], d);
     let err = String::from_utf8_lossy(&v.stderr);
     // Files that cannot be profiles are counted by kind, not listed one by one.

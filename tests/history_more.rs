@@ -727,5 +727,8 @@ fn a_log_git_cannot_give_is_named_with_git_s_words() {
         err.contains("warning: history: git could not give the history of `Base/RTC.xml` (fatal: "),
         "{err}"
     );
-    assert!(err.contains("`git log --follow -- Base/RTC.xml`"), "{err}");
+    assert!(
+        err.contains("`git log --follow -- Base/RTC.xml` in the input directory says more"),
+        "{err}"
+    );
 }
