@@ -100,14 +100,14 @@ fn qualifier_slug(q: &str) -> String {
     slugify(&q.replace("++", "pp").replace('#', "sharp"))
 }
 
-/// What tells the profiles `members` (indices into `loaded`) apart by place: the folders of
+/// What tells the files `sources` apart by place: the folders of
 /// their paths that they do not all share (common leading and trailing folders dropped), as
 /// few leading ones of those as make them distinct; the file name when they share a folder.
-fn folder_qualifiers(loaded: &[LoadedProfile], members: &[usize]) -> Vec<String> {
-    let dirs: Vec<Vec<&str>> = members
+pub(crate) fn folder_qualifiers(sources: &[&str]) -> Vec<String> {
+    let dirs: Vec<Vec<&str>> = sources
         .iter()
-        .map(|&i| {
-            let mut d: Vec<&str> = loaded[i].source.split('/').collect();
+        .map(|s| {
+            let mut d: Vec<&str> = s.split('/').collect();
             d.pop();
             d
         })
@@ -139,16 +139,9 @@ fn folder_qualifiers(loaded: &[LoadedProfile], members: &[usize]) -> Vec<String>
             return q;
         }
     }
-    members
+    sources
         .iter()
-        .map(|&i| {
-            loaded[i]
-                .source
-                .rsplit('/')
-                .next()
-                .unwrap_or("")
-                .to_string()
-        })
+        .map(|s| s.rsplit('/').next().unwrap_or("").to_string())
         .collect()
 }
 
@@ -194,11 +187,14 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
         langs.dedup();
         for l in &langs {
             let part: Vec<usize> = rest.iter().copied().filter(|&i| &lang(i) == l).collect();
+            let sources = |members: &[usize]| -> Vec<&str> {
+                members.iter().map(|&i| loaded[i].source.as_str()).collect()
+            };
             let places = if part.len() > 1 {
-                folder_qualifiers(loaded, &part)
+                folder_qualifiers(&sources(&part))
             } else {
                 // Alone in its language (none): told apart from the rest by place.
-                let all = folder_qualifiers(loaded, &rest);
+                let all = folder_qualifiers(&sources(&rest));
                 let at = rest.iter().position(|&i| i == part[0]).unwrap_or(0);
                 vec![all[at].clone()]
             };
@@ -1639,7 +1635,7 @@ impl Catalog {
                 ),
                 self.systems
                     .iter()
-                    .map(|s| (s.source.as_str(), s.slug.as_str(), s.profile.name().into())),
+                    .map(|s| (s.source.as_str(), s.slug.as_str(), s.display_name())),
             ),
         };
         // The history pages: the catalogue's What's new, then one per component with a

@@ -601,7 +601,19 @@ fn build_warnings(input: &Path, out: &Path, env: &[(&str, &Path)]) -> (String, V
     (err, subjects)
 }
 
-/// The command in backticks after `run` in a warning line.
+/// A temporary directory with `repo`, a work tree of [`common::history_repo::history_repo`];
+/// `None` without git.
+fn history_repo() -> Option<(tempfile::TempDir, std::path::PathBuf)> {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return None;
+    }
+    Some((dir, repo))
+}
+
+/// The command in backticks after `before` in a warning line.
 fn command_after(err: &str, before: &str) -> Vec<String> {
     let rest = err.split(before).nth(1).expect(before);
     let cmd = rest.split('`').nth(1).expect("a command in backticks");
@@ -610,12 +622,9 @@ fn command_after(err: &str, before: &str) -> Vec<String> {
 
 #[test]
 fn a_shallow_clone_is_named_and_the_hint_fetches_the_whole_history() {
-    let dir = tempfile::tempdir().unwrap();
-    let repo = dir.path().join("repo");
-    if !common::history_repo::history_repo(&repo) {
-        println!("skipped: git not available");
+    let Some((dir, repo)) = history_repo() else {
         return;
-    }
+    };
     let clone = dir.path().join("clone");
     let url = format!("file://{}", repo.display());
     let o = std::process::Command::new("git")
@@ -656,12 +665,9 @@ fn a_repository_git_refuses_is_named_and_the_hint_makes_it_read() {
         println!("skipped: needs root to give the repository to another user");
         return;
     }
-    let dir = tempfile::tempdir().unwrap();
-    let repo = dir.path().join("repo");
-    if !common::history_repo::history_repo(&repo) {
-        println!("skipped: git not available");
+    let Some((dir, repo)) = history_repo() else {
         return;
-    }
+    };
     for e in walkdir::WalkDir::new(&repo).into_iter().flatten() {
         std::os::unix::fs::lchown(e.path(), Some(4321), Some(4321)).unwrap();
     }
@@ -707,12 +713,9 @@ fn a_repository_git_refuses_is_named_and_the_hint_makes_it_read() {
 
 #[test]
 fn a_log_git_cannot_give_is_named_with_git_s_words() {
-    let dir = tempfile::tempdir().unwrap();
-    let repo = dir.path().join("repo");
-    if !common::history_repo::history_repo(&repo) {
-        println!("skipped: git not available");
+    let Some((dir, repo)) = history_repo() else {
         return;
-    }
+    };
     // The first commit's tree is lost (a damaged or partly copied repository).
     let o = std::process::Command::new("git")
         .args(["rev-parse", "HEAD~3^{tree}"])

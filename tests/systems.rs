@@ -90,6 +90,42 @@ fn systems_are_loaded_and_linked() {
     assert!(cat.connectors_carrying("RTC::TimedLong").is_empty());
 }
 
+/// RTSystemEditor names most systems `RTSystem`: systems of one name are told apart by the
+/// folders where their paths differ, on their pages, in the index and in the Markdown.
+#[test]
+fn systems_of_one_name_are_told_apart_by_their_folders() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let system = read(&site_fixture().join("system/PatrolSystem.xml"));
+    for d in ["ev3/demo", "mouse/demo"] {
+        common::write(&input, &format!("{d}/PatrolSystem.xml"), &system);
+    }
+    common::write(
+        &input,
+        "other/Solo.xml",
+        &system.replace("PatrolSystem", "Solo"),
+    );
+    let out = dir.path().join("site");
+    let loaded = build_site(&input, &out, SiteOptions::default());
+    let names: Vec<String> = loaded
+        .catalog
+        .systems
+        .iter()
+        .map(|s| s.display_name().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        ["PatrolSystem (ev3)", "PatrolSystem (mouse)", "Solo"]
+    );
+    let index = read(&out.join("systems/index.html"));
+    assert!(index.contains(">PatrolSystem (ev3)</a>"), "{index}");
+    assert!(index.contains(">PatrolSystem (mouse)</a>"), "{index}");
+    let page = read(&out.join(format!("systems/{}.html", loaded.catalog.systems[1].slug)));
+    let title = &page[page.find("<title>").unwrap() + 7..];
+    assert!(title.starts_with("PatrolSystem (mouse) "), "{title}");
+    assert!(page.contains("</span> PatrolSystem (mouse)</h1>"), "{page}");
+}
+
 #[test]
 fn a_system_alone_is_something_to_document() {
     let cat = load(&site_fixture().join("system/PatrolSystem.xml"));
@@ -119,6 +155,10 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     let html = read(&out.join("systems/patrolsystem.html"));
     let title = &html[html.find("<title>").unwrap() + 7..];
     assert!(title.starts_with("PatrolSystem "), "{title}");
+    // On a phone the tables are cards: every value cell names its column.
+    let cells = html.matches("<td").count();
+    assert!(cells > 20, "{cells}");
+    assert_eq!(html.matches(" data-label=\"").count(), cells, "{html}");
     // Every instance, linked to its component; drift flagged.
     let inst = section(&html, "instances");
     for (row, comp) in [
@@ -179,10 +219,13 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     // Configuration used next to the defaults: differences marked, values checked.
     let conf = section(&html, "configuration");
     assert!(
-        conf.contains("<mark>0.02</mark></td><td>0.01</td>"),
+        conf.contains("<mark>0.02</mark></td><td data-label=\"Component default\">0.01</td>"),
         "{conf}"
     );
-    assert!(conf.contains("<mark>0.5</mark></td><td>0.3</td>"), "{conf}");
+    assert!(
+        conf.contains("<mark>0.5</mark></td><td data-label=\"Component default\">0.3</td>"),
+        "{conf}"
+    );
     // Orders and groups.
     assert!(section(&html, "orders").contains("after Camera0 (timeout 500 ms, SYNC)"));
     assert!(section(&html, "groups").contains("Camera0, Planner0"));

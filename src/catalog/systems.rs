@@ -53,6 +53,10 @@ pub struct System {
     pub format: SourceFormat,
     /// File-name-safe, stable identifier of the system's page (`systems/<slug>.html`).
     pub slug: String,
+    /// What tells this system apart from others of the same name (RTSystemEditor names most
+    /// systems `RTSystem`): the folders (else the file name) where their paths differ.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub qualifier: Option<String>,
     /// One per instance (`system.components`), in the same order.
     pub instances: Vec<InstanceLink>,
     /// One per data port connector, in the same order.
@@ -227,8 +231,9 @@ impl Catalog {
             .map(|l| (l.system.name().to_string(), l.source.clone()))
             .collect();
         let slugs = unique_slugs(&names);
+        let qualifiers = name_qualifiers(&names);
         let mut systems = Vec::with_capacity(loaded.len());
-        for (l, slug) in loaded.into_iter().zip(slugs) {
+        for ((l, slug), qualifier) in loaded.into_iter().zip(slugs).zip(qualifiers) {
             let sys = &l.system;
             let instances: Vec<InstanceLink> = {
                 let mut seen: HashMap<String, usize> = HashMap::new();
@@ -280,6 +285,7 @@ impl Catalog {
                 origin: None,
                 format: l.format,
                 slug,
+                qualifier,
                 instances,
                 data_connectors,
                 service_connectors,
@@ -699,7 +705,35 @@ pub fn strip_host_data(p: &mut RtSystem) {
     }
 }
 
+/// For each (name, source): what tells it apart from the others of its name, if any
+/// ([`crate::catalog::folder_qualifiers`] of their paths).
+fn name_qualifiers(names: &[(String, String)]) -> Vec<Option<String>> {
+    let mut by_name: HashMap<&str, Vec<usize>> = HashMap::new();
+    for (i, (name, _)) in names.iter().enumerate() {
+        by_name.entry(name.as_str()).or_default().push(i);
+    }
+    let mut out = vec![None; names.len()];
+    for members in by_name.values().filter(|m| m.len() > 1) {
+        let sources: Vec<&str> = members.iter().map(|&i| names[i].1.as_str()).collect();
+        for (&i, q) in members
+            .iter()
+            .zip(crate::catalog::folder_qualifiers(&sources))
+        {
+            out[i] = Some(q);
+        }
+    }
+    out
+}
+
 impl System {
+    /// The name, with the qualifier when others share it: `RTSystem (demoEV3)`.
+    pub fn display_name(&self) -> std::borrow::Cow<'_, str> {
+        match &self.qualifier {
+            Some(q) => format!("{} ({q})", self.profile.name()).into(),
+            None => self.profile.name().into(),
+        }
+    }
+
     /// A copy without host data ([`strip_host_data`]), for published output.
     pub fn without_host_data(&self) -> System {
         let mut s = self.clone();

@@ -369,7 +369,7 @@ fn system_page(cat: &Catalog, si: SystemIx, lang: Lang, site: (bool, Option<&str
         out,
         "\\page {} {}",
         target(cat, page),
-        title(s.profile.name())
+        title(&s.display_name())
     );
     d!(out);
     crumbs(&mut out, cat, PageKind::Systems);

@@ -531,7 +531,7 @@ fn system_page(
     let s = &cat[si];
     let page = cat.system_page(si);
     let mut out = String::new();
-    w!(out, "# {}", inline(s.profile.name()));
+    w!(out, "# {}", inline(&s.display_name()));
     w!(out);
     w!(
         out,
@@ -553,7 +553,7 @@ fn system_page(
     // The wiring diagram, after the body's sections.
     let (inst, conns) =
         super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
-    let name = s.profile.name();
+    let name = &*s.display_name();
     let caption = format!("{} {name}", lang.t("sys_wiring"));
     heading(&mut out, 2, "sec-wiring", &caption);
     let svg = match diagrams {

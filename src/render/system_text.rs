@@ -327,7 +327,7 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
 pub fn used_in(cat: &Catalog, ci: ComponentIx) -> Vec<(String, &System)> {
     cat.systems_using(ci)
         .into_iter()
-        .map(|(s, names)| (format!("{} ({})", s.profile.name(), names.join(", ")), s))
+        .map(|(s, names)| (format!("{} ({})", s.display_name(), names.join(", ")), s))
         .collect()
 }
 
@@ -340,7 +340,7 @@ pub fn carrying<'a>(cat: &'a Catalog, name: &str) -> Vec<(String, &'a System)> {
             (
                 format!(
                     "{}: {} → {}",
-                    s.profile.name(),
+                    s.display_name(),
                     end(&c.source),
                     end(&c.target)
                 ),

@@ -117,7 +117,7 @@ pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
                 None => String::new(),
             };
             let (wire, conns) = crate::render::wiring::system_wiring(cat, s, site.lang, &link);
-            let title = format!("{} {}", site.lang.t("sys_wiring"), s.profile.name());
+            let title = format!("{} {}", site.lang.t("sys_wiring"), s.display_name());
             (
                 drawing_path(site.catalog, s),
                 standalone_system_diagram(&title, &wire, &conns),

@@ -114,7 +114,7 @@ pub fn systems_index_view(cat: &Catalog) -> SystemsIndexView<'_> {
         .map(|(si, s)| {
             let parts = s.profile.id_parts.as_ref();
             SystemRow {
-                name: Linked::new(s.profile.name(), Some(cat.system_page(si)), None),
+                name: Linked::new(&s.display_name(), Some(cat.system_page(si)), None),
                 version: parts.and_then(|p| non_empty(&p.version)).unwrap_or(""),
                 vendor: parts.and_then(|p| non_empty(&p.vendor)).unwrap_or(""),
                 instances: s.profile.components.len(),

@@ -508,7 +508,7 @@ pub fn system_view(
         }
     };
     let p: &RtSystem = &s.profile;
-    let name = p.name().to_string();
+    let name = s.display_name().into_owned();
     let summary = summary_facts(s, lang);
     let properties = visible_properties(p, show_host);
     let hidden = if show_host {
