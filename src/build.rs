@@ -50,10 +50,16 @@ pub struct StrictFailure {
 }
 
 /// The input holds nothing to document (and `--allow-empty` was not given): the message names
-/// the directory and what was skipped.
+/// the directory and what was skipped, which `--verbose` lists.
 #[derive(Debug, thiserror::Error)]
-#[error("{0}")]
-pub struct NothingToDocument(pub String);
+#[error("{message}")]
+pub struct NothingToDocument {
+    pub message: String,
+    /// The input directory (the sources' files are named `<source>/<path>`).
+    pub input: PathBuf,
+    /// What the walk did not take.
+    pub skipped: Vec<Skipped>,
+}
 
 /// The result of loading a directory.
 pub struct Loaded {
@@ -271,13 +277,22 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                 .iter()
                 .map(|p| p.source.name.as_str())
                 .collect();
-            return Err(NothingToDocument(format!(
-                "nothing to document: no RTC component profile, RT System profile or IDL file in the sources {} at their pinned commits; check each source's `path` and the --include/--exclude patterns, or pass --allow-empty",
-                names.join(", ")
-            ))
+            return Err(NothingToDocument {
+                message: format!(
+                    "nothing to document: no RTC component profile, RT System profile or IDL file in the sources {} at their pinned commits; check each source's `path` and the --include/--exclude patterns, or pass --allow-empty",
+                    names.join(", ")
+                ),
+                input: input.to_path_buf(),
+                skipped,
+            }
             .into());
         }
-        return Err(NothingToDocument(nothing_found(input, &skipped, &backups)).into());
+        return Err(NothingToDocument {
+            message: nothing_found(input, &skipped, &backups),
+            input: input.to_path_buf(),
+            skipped,
+        }
+        .into());
     }
     diagnostics.extend(idl.diagnostics.iter().cloned());
     diagnostics.extend(source_notes);
@@ -438,7 +453,7 @@ fn nothing_found(input: &Path, skipped: &[walk::Skipped], backups: &[Backup]) ->
         format!("skipped {}", parts.join(", "))
     };
     format!(
-        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`) and no IDL file in `{}` ({looked}; \
+        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`), RT System profile (RtsProfile XML, .rtsys, or YAML with `rtsProfile`) or IDL file in `{}` ({looked}; \
          `--verbose` lists them). Check the path and the --include/--exclude patterns, or pass \
          --allow-empty to build an empty catalogue anyway",
         input.display()

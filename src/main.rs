@@ -341,6 +341,13 @@ fn main() -> ExitCode {
     match run(&cli) {
         Ok(code) => code,
         Err(e) => {
+            // `--verbose` lists what the walk skipped, as the message says it does.
+            if let Some(n) = e
+                .downcast_ref::<build::NothingToDocument>()
+                .filter(|_| cli.verbose)
+            {
+                print_skipped(&n.skipped, &input_root(&n.input), &Default::default());
+            }
             eprintln!("error: {e:#}");
             ExitCode::from(2)
         }

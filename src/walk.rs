@@ -133,7 +133,7 @@ pub fn describe_non_profile(bytes: &[u8]) -> String {
     if parse::yaml::has_root_key(bytes, "rtsProfile") {
         return "is an RT System profile (YAML rtsProfile), not a component profile".into();
     }
-    "is neither XML nor YAML with a top-level `rtcProfile` key".into()
+    "is neither XML nor YAML with a top-level `rtcProfile` (component) or `rtsProfile` (RT System) key".into()
 }
 
 /// Options of a walk.

@@ -194,7 +194,7 @@ fn profile_named_files_that_are_no_profiles_are_warned_about() {
         ),
         (
             "in/yaml/RTC.yaml",
-            "RTC.yaml is neither XML nor YAML with a top-level `rtcProfile` key",
+            "RTC.yaml is neither XML nor YAML with a top-level `rtcProfile` (component) or `rtsProfile` (RT System) key",
         ),
     ] {
         assert!(
@@ -277,6 +277,15 @@ fn nothing_to_document_is_an_error_unless_allowed() {
             "{err}"
         );
         assert!(err.contains("--allow-empty"), "{err}");
+        // `--verbose` lists them, as the message says.
+        let out = rtcdoc(&[cmd, "in", "--verbose"], d);
+        assert_eq!(out.status.code(), Some(2));
+        let err = stderr(&out);
+        assert!(
+            err.contains("skipped in/data/notes.xml: is XML with the root element `notes`"),
+            "{err}"
+        );
+        assert!(err.contains("skipped 1 other file(s)"), "{err}");
     }
     assert!(!d.join("site").exists());
     let ok = rtcdoc(&["build", "in", "--allow-empty", "-o", "site"], d);
