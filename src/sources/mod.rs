@@ -951,12 +951,16 @@ mod tests {
         assert!(check_path("/a").is_err());
         assert_eq!(check_path("a/./b/").unwrap(), "a/b");
         assert!(check_path("a/../../b").is_err());
-        assert_eq!(name_from_url("https://github.com/o/Camera.git"), "Camera");
-        assert_eq!(name_from_url("git@host:o/nav-stack"), "nav-stack");
-        assert_eq!(name_from_url("/srv/repos/arm/"), "arm");
-        assert_eq!(name_from_url("../comp/.git"), "comp");
-        assert_eq!(name_from_url("C:\\work\\comp\\.git\\"), "comp");
-        assert_eq!(name_from_url("/srv/.git"), "srv");
+        for (url, name) in [
+            ("https://github.com/o/Camera.git", "Camera"),
+            ("git@host:o/nav-stack", "nav-stack"),
+            ("/srv/repos/arm/", "arm"),
+            ("../comp/.git", "comp"),
+            ("C:\\work\\comp\\.git\\", "comp"),
+            ("/srv/.git", "srv"),
+        ] {
+            assert_eq!(name_from_url(url), name, "{url}");
+        }
     }
 
     #[test]
