@@ -182,14 +182,33 @@ pub fn sort(diagnostics: &mut [Diagnostic]) {
     });
 }
 
-impl std::fmt::Display for Diagnostic {
-    /// `file:line:col: severity[CODE]: message`, the compiler-style one-liner.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.file)?;
+impl Diagnostic {
+    /// The finding as the command line prints it: the one-liner with its file named `file` (as
+    /// the user can open it), then `  = help: …` when it has a hint.
+    pub fn cli_text(&self, file: &str) -> String {
+        let mut s = String::new();
+        // Writing to a String cannot fail.
+        let _ = self.write_line(&mut s, file);
+        if let Some(h) = &self.hint {
+            s.push_str("\n  = help: ");
+            s.push_str(h);
+        }
+        s
+    }
+
+    fn write_line(&self, f: &mut impl std::fmt::Write, file: &str) -> std::fmt::Result {
+        write!(f, "{file}")?;
         if let Some(p) = self.pos {
             write!(f, ":{}:{}", p.line, p.column)?;
         }
         write!(f, ": {}[{}]: {}", self.severity, self.code, self.message)
+    }
+}
+
+impl std::fmt::Display for Diagnostic {
+    /// `file:line:col: severity[CODE]: message`, the compiler-style one-liner.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.write_line(f, &self.file)
     }
 }
 

@@ -246,8 +246,9 @@ struct Repos<'a> {
     /// The work tree around the input directory, if it is in one.
     local: Option<Repo>,
     sources: &'a [crate::sources::Pinned],
-    /// What cut the histories short ([`Catalog::history_notes`]).
-    notes: std::sync::Mutex<std::collections::BTreeSet<String>>,
+    /// Why the work tree's histories are cut short (a shallow clone) or missing (a repository
+    /// git refuses), for [`Catalog::history_notes`].
+    note: Option<String>,
     /// The files whose log git could not give: the command that shows git's whole message
     /// (and where to run it), and git's first line, by file.
     failed: std::sync::Mutex<BTreeMap<String, (String, String)>>,
@@ -263,7 +264,7 @@ impl<'a> Repos<'a> {
             list: Vec::new(),
             local: inside.then(|| Repo::WorkTree(roots.local.clone())),
             sources,
-            notes: std::sync::Mutex::new(note.into_iter().collect()),
+            note,
             failed: Default::default(),
         }
     }
@@ -285,7 +286,7 @@ impl<'a> Repos<'a> {
 
     /// Hands the notes to the catalogue: one for all the files whose log git could not give.
     fn finish(self, catalog: &mut Catalog) {
-        let mut notes = self.notes.into_inner().unwrap_or_else(|e| e.into_inner());
+        let mut notes: std::collections::BTreeSet<String> = self.note.into_iter().collect();
         let failed = self.failed.into_inner().unwrap_or_else(|e| e.into_inner());
         if let Some((path, (command, error))) = failed.iter().next() {
             notes.insert(match failed.len() {
@@ -574,13 +575,7 @@ fn log(
     .args(["--end-of-options", rev, "--", path]);
     let out = c.output().map_err(|e| format!("git: {e}"))?;
     if !out.status.success() {
-        let err = String::from_utf8_lossy(&out.stderr);
-        return Err(err
-            .lines()
-            .find(|l| !l.trim().is_empty())
-            .unwrap_or("git log failed")
-            .trim()
-            .to_string());
+        return Err(crate::sources::first_error_line(&out));
     }
     Ok(parse_log(&String::from_utf8_lossy(&out.stdout), at))
 }

@@ -539,12 +539,7 @@ fn print_findings(
     }
     let cap = if verbose { usize::MAX } else { PRINT_CAP };
     for d in shown.iter().take(cap) {
-        let mut d = (*d).clone();
-        d.file = display_path(root, &d.file);
-        eprintln!("{d}");
-        if let Some(h) = &d.hint {
-            eprintln!("  = help: {h}");
-        }
+        eprintln!("{}", d.cli_text(&display_path(root, &d.file)));
     }
     if shown.len() > cap {
         eprintln!(

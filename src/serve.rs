@@ -50,19 +50,17 @@ const LIVERELOAD: &str = r#"(function () {
 })();
 "#;
 
-/// A finding as the command line prints it: `file:line:col: severity[CODE]: message`, then its
-/// hint, the file named by `file_name`.
+/// A finding as the command line prints it ([`Diagnostic::cli_text`]), its file named by
+/// `file_name`.
+///
+/// [`Diagnostic::cli_text`]: crate::diagnostic::Diagnostic::cli_text
 fn finding(
     d: &crate::diagnostic::Diagnostic,
     file_name: Option<&(dyn Fn(&str) -> String + Send + Sync)>,
 ) -> String {
-    let mut d = d.clone();
-    if let Some(f) = file_name {
-        d.file = f(&d.file);
-    }
-    match &d.hint {
-        Some(h) => format!("{d}\n  = help: {h}"),
-        None => d.to_string(),
+    match file_name {
+        Some(f) => d.cli_text(&f(&d.file)),
+        None => d.cli_text(&d.file),
     }
 }
 

@@ -415,7 +415,8 @@ fn run_ok(c: Command, fail: impl FnOnce(String) -> String) -> Result<std::proces
     Ok(out)
 }
 
-fn first_error_line(out: &std::process::Output) -> String {
+/// Git's first `fatal:`/`error:` line of `out`, else its first line.
+pub(crate) fn first_error_line(out: &std::process::Output) -> String {
     let text = String::from_utf8_lossy(&out.stderr);
     text.lines()
         .map(str::trim)
