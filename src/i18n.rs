@@ -35,6 +35,17 @@ impl Lang {
         }
     }
 
+    /// `n` and the label `key`, or `key_one` where `n` is 1: `1 port pair`, `2 port pairs`.
+    pub fn count(self, n: impl Into<u64>, key: &str) -> String {
+        let n: u64 = n.into();
+        let text = if n == 1 {
+            self.t(&format!("{key}_one"))
+        } else {
+            self.t(key)
+        };
+        format!("{n} {text}")
+    }
+
     /// All labels of this language as (key, text) pairs (for template contexts).
     pub fn labels(self) -> impl Iterator<Item = (&'static str, &'static str)> {
         LABELS.iter().map(move |(k, en, ja)| {
@@ -439,6 +450,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_contexts", "Execution contexts", "実行コンテキスト"),
     ("sys_data_connectors", "data connectors", "データポートコネクタ"),
     ("sys_data_connectors_h", "Data port connectors", "データポートコネクタ"),
+    ("sys_data_connectors_one", "data connector", "データポートコネクタ"),
     ("sys_dataflow", "Dataflow", "データフロー型"),
     ("sys_drift", "version drift: the catalogue has", "バージョンの相違: カタログの版は"),
     ("sys_format_version", "Profile format version", "プロファイル形式のバージョン"),
@@ -446,6 +458,8 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_host_hidden", "host values hidden (host names, IORs, endpoints, naming paths); set show-host-data = true in rtcdoc.toml to publish them", "個のホスト情報を非表示 (ホスト名、IOR、エンドポイント、ネーミングパス)。公開するには rtcdoc.toml で show-host-data = true"),
     ("sys_id", "System id", "システムID"),
     ("sys_in_port", "in-port", "入力ポート"),
+    ("sys_instance_count", "instances", "インスタンス"),
+    ("sys_instance_count_one", "instance", "インスタンス"),
     ("sys_interface_type", "Interface type", "インターフェース型"),
     ("sys_members", "Members", "メンバー"),
     ("sys_not_in_catalogue", "not in the catalogue", "カタログにない"),
@@ -459,6 +473,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_sequence", "Sequence", "順番"),
     ("sys_service_connectors", "service connectors", "サービスポートコネクタ"),
     ("sys_service_connectors_h", "Service port connectors", "サービスポートコネクタ"),
+    ("sys_service_connectors_one", "service connector", "サービスポートコネクタ"),
     ("sys_service_port", "service port", "サービスポート"),
     ("sys_set", "Configuration set", "コンフィギュレーションセット"),
     ("sys_source", "Source", "送信元"),
@@ -545,5 +560,14 @@ mod tests {
             }
         }
         assert_eq!(label_index(""), None);
+    }
+
+    #[test]
+    fn a_count_of_one_takes_the_singular_label() {
+        assert_eq!(Lang::En.count(1u64, "sys_data_connectors"), "1 data connector");
+        assert_eq!(Lang::En.count(3u64, "sys_data_connectors"), "3 data connectors");
+        assert_eq!(Lang::En.count(0u64, "sys_instance_count"), "0 instances");
+        assert_eq!(Lang::En.count(1u64, "dataflow_pair_count"), "1 port pair");
+        assert_eq!(Lang::Ja.count(1u64, "sys_instance_count"), "1 インスタンス");
     }
 }

@@ -105,6 +105,8 @@ fn systems_of_one_name_are_told_apart_by_their_folders() {
         "other/Solo.xml",
         &system.replace("PatrolSystem", "Solo"),
     );
+    let camera = read(&site_fixture().join("components/Camera/RTC.xml"));
+    common::write(&input, "components/Camera/RTC.xml", &camera);
     let out = dir.path().join("site");
     let loaded = build_site(&input, &out, SiteOptions::default());
     let names: Vec<String> = loaded
@@ -124,6 +126,22 @@ fn systems_of_one_name_are_told_apart_by_their_folders() {
     let title = &page[page.find("<title>").unwrap() + 7..];
     assert!(title.starts_with("PatrolSystem (mouse) "), "{title}");
     assert!(page.contains("</span> PatrolSystem (mouse)</h1>"), "{page}");
+    // The component's "used in" list: the system's name (qualified) and then the instances,
+    // so that the qualifier and the instance names are not two alike parentheses.
+    let camera = read(&out.join("components/camera.html"));
+    for want in [
+        ">PatrolSystem (ev3): Camera0</a>",
+        ">PatrolSystem (mouse): Camera0</a>",
+        ">Solo: Camera0</a>",
+    ] {
+        assert!(camera.contains(want), "{want}\n{camera}");
+    }
+    let md: std::collections::BTreeMap<String, String> =
+        rtcdoc::render::markdown::pages(&loaded.catalog, "Cat", rtcdoc::i18n::Lang::En)
+            .into_iter()
+            .collect();
+    let camera = &md["components/camera.md"];
+    assert!(camera.contains("[PatrolSystem (ev3): Camera0]("), "{camera}");
 }
 
 #[test]
@@ -215,7 +233,7 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     }
     assert_eq!(svg.matches("class=\"connector data\"").count(), 1);
     assert_eq!(svg.matches("class=\"connector service\"").count(), 1);
-    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connectors, 1 service connectors. <a href=\"patrolsystem.svg\">Open the drawing on its own</a></figcaption>"), "{html}");
+    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connector, 1 service connector. <a href=\"patrolsystem.svg\">Open the drawing on its own</a></figcaption>"), "{html}");
     // Configuration used next to the defaults: differences marked, values checked.
     let conf = section(&html, "configuration");
     assert!(
@@ -233,7 +251,7 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     let planner = read(&out.join("components/planner.html"));
     let used = section(&planner, "systems");
     assert!(
-        used.contains(r#"<a href="../systems/patrolsystem.html">PatrolSystem (Planner0)</a>"#),
+        used.contains(r#"<a href="../systems/patrolsystem.html">PatrolSystem: Planner0</a>"#),
         "{used}"
     );
     let ty = read(&out.join("types/rtc-cameraimage.html"));
@@ -374,7 +392,7 @@ fn markdown_doxygen_and_json_carry_systems() {
         .contains("- [Systems](systems.md)\n    - [PatrolSystem](systems/patrolsystem.md)"));
     assert!(md["systems.md"].contains("[PatrolSystem](systems/patrolsystem.md)"));
     assert!(md["components/planner.md"]
-        .contains("[PatrolSystem (Planner0)](../systems/patrolsystem.md)"));
+        .contains("[PatrolSystem: Planner0](../systems/patrolsystem.md)"));
     assert!(md["types/rtc-cameraimage.md"]
         .contains("[PatrolSystem: Camera0.image → Planner0.image](../systems/patrolsystem.md#data-connectors)"));
     // Doxygen: pages and references, listed in the Doxyfile.
@@ -389,7 +407,7 @@ fn markdown_doxygen_and_json_carry_systems() {
     assert!(dox["systems.dox"].contains("\\subpage rtc_sys_patrolsystem"));
     assert!(dox["mainpage.dox"].contains("\\subpage rtc_systems (1)"));
     assert!(dox["components/camera.dox"]
-        .contains("\\ref rtc_sys_patrolsystem \"PatrolSystem (Camera0)\""));
+        .contains("\\ref rtc_sys_patrolsystem \"PatrolSystem: Camera0\""));
     assert!(dox["Doxyfile"].contains("systems/patrolsystem.dox"));
     // JSON: systems with their links; host data left out by default.
     let dir = tempfile::tempdir().unwrap();

@@ -6,7 +6,7 @@
 use super::text::{pairs_table, Markup};
 use super::view::system::{system_view, EndView, Link, SystemView};
 use crate::catalog::systems::{end_port_name, System};
-use crate::catalog::{Catalog, ComponentIx};
+use crate::catalog::Catalog;
 use crate::i18n::Lang;
 use crate::model::system::PortEnd;
 use crate::model::{non_empty, Text};
@@ -321,14 +321,6 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
         let pairs = v.groups.iter().map(|g| (&g.id, g.members.join(", ")));
         pairs_table::<M, _, _>(out, [lang.t("sys_groups"), lang.t("sys_members")], pairs);
     }
-}
-
-/// The systems using component `ci` as (system name and instances, system) for a list.
-pub fn used_in(cat: &Catalog, ci: ComponentIx) -> Vec<(String, &System)> {
-    cat.systems_using(ci)
-        .into_iter()
-        .map(|(s, names)| (format!("{} ({})", s.display_name(), names.join(", ")), s))
-        .collect()
 }
 
 /// The connectors carrying data type `name` as (text, system) for a list.

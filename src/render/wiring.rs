@@ -424,15 +424,10 @@ pub fn dataflow_wiring(
             to: (b, pb),
             service: false,
             label: format!(
-                "{} → {}: {} {} ({}{})",
+                "{} → {}: {} ({}{})",
                 r.from.0,
                 r.to.0,
-                r.pairs,
-                lang.t(if r.pairs == 1 {
-                    "dataflow_pair_count_one"
-                } else {
-                    "dataflow_pair_count"
-                }),
+                lang.count(r.pairs, "dataflow_pair_count"),
                 types.join(", "),
                 if r.more_types > 0 {
                     format!(", +{}", r.more_types)

@@ -60,14 +60,11 @@ impl Site<'_> {
         let diagram_title = format!("{} {name}", lang.t("sys_wiring"));
         let diagram_svg = system_diagram(&diagram_title, &wire, &conns);
         let diagram_text = format!(
-            "{}: {} {}, {} {}, {} {}.",
+            "{}: {}, {}, {}.",
             diagram_title,
-            p.components.len(),
-            lang.t("instances").to_lowercase(),
-            p.data_port_connectors.len(),
-            lang.t("sys_data_connectors"),
-            p.service_port_connectors.len(),
-            lang.t("sys_service_connectors"),
+            lang.count(p.components.len() as u64, "sys_instance_count"),
+            lang.count(p.data_port_connectors.len() as u64, "sys_data_connectors"),
+            lang.count(p.service_port_connectors.len() as u64, "sys_service_connectors"),
         );
 
         minijinja::context! {

@@ -390,7 +390,7 @@ pub fn component_view<'a>(
             .into_iter()
             .map(|(s, names)| {
                 Linked::new(
-                    &format!("{} ({})", s.display_name(), names.join(", ")),
+                    &format!("{}: {}", s.display_name(), names.join(", ")),
                     cat.page_of_system(s),
                     None,
                 )
