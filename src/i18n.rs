@@ -564,8 +564,14 @@ mod tests {
 
     #[test]
     fn a_count_of_one_takes_the_singular_label() {
-        assert_eq!(Lang::En.count(1u64, "sys_data_connectors"), "1 data connector");
-        assert_eq!(Lang::En.count(3u64, "sys_data_connectors"), "3 data connectors");
+        assert_eq!(
+            Lang::En.count(1u64, "sys_data_connectors"),
+            "1 data connector"
+        );
+        assert_eq!(
+            Lang::En.count(3u64, "sys_data_connectors"),
+            "3 data connectors"
+        );
         assert_eq!(Lang::En.count(0u64, "sys_instance_count"), "0 instances");
         assert_eq!(Lang::En.count(1u64, "dataflow_pair_count"), "1 port pair");
         assert_eq!(Lang::Ja.count(1u64, "sys_instance_count"), "1 インスタンス");

@@ -141,7 +141,10 @@ fn systems_of_one_name_are_told_apart_by_their_folders() {
             .into_iter()
             .collect();
     let camera = &md["components/camera.md"];
-    assert!(camera.contains("[PatrolSystem (ev3): Camera0]("), "{camera}");
+    assert!(
+        camera.contains("[PatrolSystem (ev3): Camera0]("),
+        "{camera}"
+    );
 }
 
 #[test]
@@ -157,6 +160,26 @@ fn a_system_alone_is_something_to_document() {
     let ports = cat.instance_ports(&cat.systems[0], 1);
     let names: Vec<&str> = ports.iter().map(|p| p.name.as_str()).collect();
     assert_eq!(names, ["image", "path", "camera"]);
+    // Sides: `image` is a connector's target; `path` ends at no connector and has no kind.
+    let dirs: Vec<_> = ports.iter().map(|p| p.direction).collect();
+    use rtcdoc::model::PortDirection::{In, Out};
+    assert_eq!(dirs, [Some(In), None, None]);
+    // RTSystemEditor's `port.port_type` property gives an unconnected port its side.
+    let dir = tempfile::tempdir().unwrap();
+    let text = read(&site_fixture().join("system/PatrolSystem.xml")).replace(
+        r#"<rts:DataPorts rts:name="path"/>"#,
+        r#"<rts:DataPorts rts:name="path"><rtsExt:Properties rtsExt:name="port.port_type" rtsExt:value="DataOutPort"/></rts:DataPorts>"#,
+    );
+    common::write(dir.path(), "PatrolSystem.xml", &text);
+    let cat = load(&dir.path().join("PatrolSystem.xml"));
+    let ports = cat.instance_ports(&cat.systems[0], 1);
+    let dirs: Vec<_> = ports.iter().map(|p| p.direction).collect();
+    assert_eq!(dirs, [Some(In), Some(Out), None]);
+    // … and the drawing puts it with the out-ports.
+    let out = dir.path().join("site");
+    build_site(dir.path(), &out, SiteOptions::default());
+    let svg = read(&out.join("systems/patrolsystem.svg"));
+    assert!(svg.contains("out-port Planner0.path"), "{svg}");
 }
 
 #[test]

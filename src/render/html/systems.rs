@@ -64,7 +64,10 @@ impl Site<'_> {
             diagram_title,
             lang.count(p.components.len() as u64, "sys_instance_count"),
             lang.count(p.data_port_connectors.len() as u64, "sys_data_connectors"),
-            lang.count(p.service_port_connectors.len() as u64, "sys_service_connectors"),
+            lang.count(
+                p.service_port_connectors.len() as u64,
+                "sys_service_connectors"
+            ),
         );
 
         minijinja::context! {
