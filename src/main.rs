@@ -515,6 +515,14 @@ fn build_overrides(args: &BuildArgs) -> Overrides {
 /// How many errors and warnings `build` and `serve` print before pointing at `rtcdoc check`.
 const PRINT_CAP: usize = 50;
 
+/// Notes on history rtcdoc could not read whole (a shallow clone, a repository git refuses,
+/// logs git could not give), each with what to do.
+fn print_history_notes(notes: &[String]) {
+    for note in notes {
+        eprintln!("warning: history: {note}");
+    }
+}
+
 /// Prints what the rules found, like cargo: errors, then warnings (unless `quiet`), then infos
 /// (only with `verbose`), each as `file:line:col: severity[CODE]: message` with files named as
 /// the user can open them. Without `verbose` at most [`PRINT_CAP`] are printed; the rest are
@@ -696,9 +704,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 &check_cmd,
             );
             if !cli.quiet {
-                for note in &loaded.catalog.history_notes {
-                    eprintln!("warning: history: {note}");
-                }
+                print_history_notes(&loaded.catalog.history_notes);
                 let html = opts.formats.is_empty() || opts.formats.contains(&Format::Html);
                 if html && opts.site.base_url.is_none() {
                     eprintln!("note: no sitemap.xml: it needs absolute URLs; pass --base-url URL (or set base-url in rtcdoc.toml)");
@@ -781,6 +787,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 cli.quiet,
                 &check_cmd,
             );
+            if !cli.quiet {
+                print_history_notes(handle.first_history_notes());
+            }
             eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
             if args.open || serve_cfg.open.unwrap_or(false) {
                 rtcdoc::serve::open_browser(&handle.url());

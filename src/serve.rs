@@ -107,12 +107,19 @@ pub struct ServerHandle {
     threads: Vec<std::thread::JoinHandle<()>>,
     /// What the first build found (the CLI prints it like `build` does).
     first_diagnostics: Vec<crate::diagnostic::Diagnostic>,
+    /// The first build's notes on missing or cut history ([`crate::catalog::Catalog::history_notes`]).
+    first_history_notes: Vec<String>,
 }
 
 impl ServerHandle {
     /// The diagnostics of the first build.
     pub fn first_diagnostics(&self) -> &[crate::diagnostic::Diagnostic] {
         &self.first_diagnostics
+    }
+    /// The first build's notes on history it could not read whole (a shallow clone, a
+    /// repository git refuses), as `build` prints them.
+    pub fn first_history_notes(&self) -> &[String] {
+        &self.first_history_notes
     }
     /// The port the server listens on.
     pub fn port(&self) -> u16 {
@@ -155,6 +162,7 @@ impl Drop for ServerHandle {
 pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result<ServerHandle> {
     let mut ws = Workspace::open(&opts.build)?;
     let first_diagnostics = ws.catalog().diagnostics.clone();
+    let first_history_notes = ws.catalog().history_notes.clone();
     let shared = Arc::new(Shared {
         files: RwLock::new(Arc::new(ws.files().clone())),
         error: RwLock::new(None),
@@ -282,6 +290,7 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
         shared,
         threads,
         first_diagnostics,
+        first_history_notes,
     })
 }
 

@@ -620,6 +620,33 @@ fn command_after(err: &str, before: &str) -> Vec<String> {
     cmd.split(' ').map(str::to_string).collect()
 }
 
+/// What `rtcdoc serve DIR` prints up to "serving at …" (then it is stopped).
+fn serve_first_lines(input: &Path) -> String {
+    use std::io::{BufRead, BufReader};
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(["serve", "--port", "0"])
+        .arg(input)
+        .env("NO_COLOR", "1")
+        .stderr(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut lines = Vec::new();
+    for line in BufReader::new(child.stderr.take().unwrap())
+        .lines()
+        .map_while(Result::ok)
+    {
+        let done = line.starts_with("serving at");
+        lines.push(line);
+        if done || lines.len() > 200 {
+            break;
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    lines.join("\n")
+}
+
 #[test]
 fn a_shallow_clone_is_named_and_the_hint_fetches_the_whole_history() {
     let Some((dir, repo)) = history_repo() else {
@@ -638,6 +665,13 @@ fn a_shallow_clone_is_named_and_the_hint_fetches_the_whole_history() {
     assert!(
         err.contains("warning: history: the repository at `") && err.contains("is a shallow clone"),
         "{err}"
+    );
+    // `rtcdoc serve` says the same before it serves.
+    let serve = serve_first_lines(&clone);
+    assert!(
+        serve.contains("warning: history: the repository at `")
+            && serve.contains("is a shallow clone"),
+        "{serve}"
     );
     // The hint, followed, fetches the whole history: no warning, every commit.
     let hint = command_after(&err, "fetch the whole history (");
