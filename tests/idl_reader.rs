@@ -628,6 +628,38 @@ fn includes_by_relative_path_search_path_and_file_name() {
     );
 }
 
+/// An include found only by file name, with two equally distant copies: the shallower one
+/// (the project's own `idl/Shared.idl`, not a copy kept deeper down), whatever the order.
+#[test]
+fn an_include_by_file_name_takes_the_shallowest_of_equally_close_copies() {
+    let shared = |v: &str| format!("module Shared {{ struct V{v} {{ long x; }}; }};");
+    for names in [
+        ["lib/attic/old/Shared.idl", "lib/idl/Shared.idl"],
+        ["lib/idl/Shared.idl", "lib/zz/old/Shared.idl"],
+    ] {
+        let deep = names.iter().position(|n| n.contains("old")).unwrap();
+        let mut files: Vec<SourceFile> = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| {
+                let v = if i == deep { "Deep" } else { "Top" };
+                SourceFile::new(*n, shared(v).into_bytes())
+            })
+            .collect();
+        files.push(SourceFile::new(
+            "app/App.idl",
+            b"#include \"Shared.idl\"\nstruct A { Shared::VTop t; };".to_vec(),
+        ));
+        let set = read(files);
+        let app = set.files.iter().find(|f| f.path == "app/App.idl").unwrap();
+        assert_eq!(
+            app.includes[0].resolved.as_deref(),
+            Some("lib/idl/Shared.idl"),
+            "{names:?}"
+        );
+    }
+}
+
 #[test]
 fn include_cycles_are_reported_once_and_guarded_ones_not_at_all() {
     let set = read(vec![fixture("cycle/a.idl"), fixture("cycle/b.idl")]);

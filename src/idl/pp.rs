@@ -166,7 +166,7 @@ impl<'a> Sources<'a> {
 
     /// Resolves an include name written in file `from`: relative to that file, then through
     /// the search path, then by file name among all files (the closest one by path, then the
-    /// first in order), the last step case-insensitively.
+    /// shallowest, then the first in order), the last step case-insensitively.
     pub fn resolve_include(&self, from: usize, name: &str) -> Option<usize> {
         let base = dir_of(&self.files[from].path);
         let rel = if base.is_empty() {
@@ -202,9 +202,15 @@ impl<'a> Sources<'a> {
         } else {
             exact
         };
-        pool.into_iter()
-            .filter(|&i| i != from)
-            .max_by(|&a, &b| common(a).cmp(&common(b)).then(b.cmp(&a)))
+        // Equally close copies: the shallowest (a project's `idl/X.idl`, not its
+        // `idl/test/X.idl` or a vendored copy deeper down), then the first in order.
+        let depth = |i: usize| self.files[i].path.split(['/', '\\']).count();
+        pool.into_iter().filter(|&i| i != from).max_by(|&a, &b| {
+            common(a)
+                .cmp(&common(b))
+                .then(depth(b).cmp(&depth(a)))
+                .then(b.cmp(&a))
+        })
     }
 }
 
