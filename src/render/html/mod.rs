@@ -505,11 +505,7 @@ impl<'a> Site<'a> {
             &inst,
             &conns,
             crate::layout::wiring::Effort::Quick,
-        )
-        .replacen(
-            "class=\"diagram system-diagram\"",
-            "class=\"diagram system-diagram neighbourhood-diagram\"",
-            1,
+            " neighbourhood-diagram",
         );
         let list = rows
             .iter()

@@ -159,15 +159,17 @@ fn rounded_path(d: &mut String, pts: &[(f32, f32)]) {
 
 /// The wiring diagram. `title` names the drawing for assistive technology.
 pub fn system_diagram(title: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
-    system_diagram_with(title, inst, conns, Effort::Full)
+    system_diagram_with(title, inst, conns, Effort::Full, "")
 }
 
-/// [`system_diagram`] laid out with the given [`Effort`].
+/// [`system_diagram`] laid out with the given [`Effort`]; `class` (empty, or starting with a
+/// space) is added to the drawing's classes.
 pub fn system_diagram_with(
     title: &str,
     inst: &[WireInstance],
     conns: &[WireConnector],
     effort: Effort,
+    class: &str,
 ) -> String {
     let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
     let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
@@ -175,9 +177,9 @@ pub fn system_diagram_with(
     // About what the drawing takes (a box with its ports ~700 bytes, a connector with its
     // route and title ~400), so that it is rarely copied to grow.
     let mut s = String::with_capacity(2048 + inst.len() * 768 + conns.len() * 448);
-    s.push_str(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram system-diagram" viewBox="0 0 "#,
-    );
+    s.push_str(r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram system-diagram"#);
+    s.push_str(class);
+    s.push_str(r#"" viewBox="0 0 "#);
     num(&mut s, l.width);
     s.push(' ');
     num(&mut s, l.height);
