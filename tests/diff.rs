@@ -1560,6 +1560,31 @@ fn history_and_diff_agree_on_an_id_that_names_another_component() {
     assert!(!text.contains("names the same component"), "{text}");
 }
 
+/// A value holding a backtick is quoted with a longer fence (CommonMark), so that the message
+/// shows it whole as code in every output instead of breaking at the backtick.
+#[test]
+fn a_value_with_a_backtick_is_quoted_whole() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/RTC.xml", BASE);
+    let new = BASE.replace(r#"rtc:defaultValue="5.0""#, r#"rtc:defaultValue="x`y""#);
+    assert_ne!(new, BASE);
+    write(dir.path(), "new/RTC.xml", &new);
+    let o = rtcdoc(&["diff", "old", "new", "--format", "json"], dir.path());
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let change = json["changes"]
+        .as_array()
+        .expect("changes")
+        .iter()
+        .find(|c| c["path"] == "configurations/gain/defaultValue")
+        .expect("the default's change");
+    assert_eq!(change["new"], "x`y");
+    let message = change["message"].as_str().unwrap_or_default();
+    assert!(message.contains("to ``x`y``"), "{message}");
+    let o = rtcdoc(&["diff", "old", "new", "--format", "markdown"], dir.path());
+    let md = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(md.contains("| `5.0` | ``x`y`` |"), "{md}");
+}
+
 /// The Markdown report shows values as written: inside code spans nothing is escaped but the
 /// table's `|`; outside them `<` cannot open a tag.
 #[test]

@@ -1257,7 +1257,7 @@ fn quoted(s: Option<&str>) -> String {
         None => "(absent)".into(),
         // `` would open a code span instead of showing an empty one.
         Some("") => "(empty)".into(),
-        Some(s) => format!("`{s}`"),
+        Some(s) => crate::render::text::code_span(s),
     }
 }
 

@@ -83,14 +83,14 @@ fn push_escaped_chars(s: &str, out: &mut String, full: bool) {
     let mut i = 0;
     while i < chars.len() {
         let ch = chars[i];
-        if let Some(&&(start, end)) = span.peek() {
-            if i == start {
+        if let Some(&&sp) = span.peek() {
+            if i == sp.open {
                 out.push_str("<tt>");
-                let inner: String = chars[start + 1..end].iter().collect();
+                let inner: String = sp.content(&chars).iter().collect();
                 push_escaped_chars(&inner, out, full);
                 out.push_str("</tt>");
                 span.next();
-                i = end + 1;
+                i = sp.close + 1;
                 continue;
             }
         }

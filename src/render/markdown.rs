@@ -114,10 +114,10 @@ fn escape_line_chars(line: &str, out: &mut String) {
         if i < skip_to {
             continue;
         }
-        if let Some(&&(start, end)) = span.peek() {
-            if i == start {
-                out.extend(&chars[start..=end]);
-                skip_to = end + 1;
+        if let Some(&&sp) = span.peek() {
+            if i == sp.open {
+                out.extend(&chars[sp.open..=sp.close]);
+                skip_to = sp.close + 1;
                 span.next();
                 (hyphens, dots) = (0, 0);
                 continue;

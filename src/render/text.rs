@@ -13,29 +13,93 @@ use super::view::{Linked, Peers};
 use crate::catalog::{Catalog, Component, Ix, Output, Page, PerEntry};
 use crate::i18n::Lang;
 
-/// The code spans of a line of profile text, as HTML renders them (Markdown's single-backtick
-/// spans): `(start, end)` char indices of each opening and closing backtick, the content
-/// between them not blank, and free of `|` unless `pipes` (a Markdown table cell would split
-/// at it). Every output shows them as code, so a profile's `` `count` `` reads the same
-/// everywhere.
-pub fn code_spans(chars: &[char], pipes: bool) -> Vec<(usize, usize)> {
+/// A code span of a line of text: `chars[open..=close]`, fenced by runs of `fence` backticks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CodeSpan {
+    pub open: usize,
+    pub close: usize,
+    pub fence: usize,
+}
+
+impl CodeSpan {
+    /// The code between the fences, as CommonMark shows it: one space stripped from each end
+    /// when both ends have one (``` `` a`b `` ``` is `` a`b ``).
+    pub fn content<'c>(&self, chars: &'c [char]) -> &'c [char] {
+        let inner = &chars[self.open + self.fence..=self.close - self.fence];
+        match inner {
+            [' ', middle @ .., ' '] if middle.iter().any(|&c| c != ' ') => middle,
+            _ => inner,
+        }
+    }
+}
+
+/// The code spans of a line of profile text, as CommonMark reads them (a run of backticks
+/// opens a span that the next run of as many backticks closes, so ``` ``a`b`` ``` holds a
+/// backtick), the content not blank, and free of `|` unless `pipes` (a Markdown table cell
+/// would split at it). Every output shows them as code, so a profile's `` `count` `` reads
+/// the same everywhere.
+pub fn code_spans(chars: &[char], pipes: bool) -> Vec<CodeSpan> {
+    let run = |at: usize| chars[at..].iter().take_while(|&&c| c == '`').count();
     let mut out = Vec::new();
     let mut i = 0;
     while i < chars.len() {
-        if chars[i] == '`' {
-            if let Some(len) = chars[i + 1..].iter().position(|&c| c == '`') {
-                let content = &chars[i + 1..i + 1 + len];
-                if (pipes || !content.contains(&'|')) && content.iter().any(|c| !c.is_whitespace())
-                {
-                    out.push((i, i + 1 + len));
-                    i += len + 2;
-                    continue;
+        if chars[i] != '`' {
+            i += 1;
+            continue;
+        }
+        let fence = run(i);
+        let mut j = i + fence;
+        let mut close = None;
+        while j < chars.len() {
+            if chars[j] == '`' {
+                let n = run(j);
+                if n == fence {
+                    close = Some(j + n - 1);
+                    break;
                 }
+                j += n;
+            } else {
+                j += 1;
             }
         }
-        i += 1;
+        if let Some(close) = close {
+            let span = CodeSpan {
+                open: i,
+                close,
+                fence,
+            };
+            let content = &chars[i + fence..=close - fence];
+            if (pipes || !content.contains(&'|')) && content.iter().any(|c| !c.is_whitespace()) {
+                out.push(span);
+                i = close + 1;
+                continue;
+            }
+        }
+        i += fence;
     }
     out
+}
+
+/// `s` as one code span of Markdown: fenced by one backtick more than its longest run of
+/// backticks, padded with a space where needed (CommonMark's rule), so that a value holding
+/// backticks reads whole; [`code_spans`] reads it back.
+pub fn code_span(s: &str) -> String {
+    let mut longest = 0;
+    let mut run = 0;
+    for c in s.chars() {
+        run = if c == '`' { run + 1 } else { 0 };
+        longest = longest.max(run);
+    }
+    let fence = "`".repeat(longest + 1);
+    // A space inside each fence, where the value starts or ends with a backtick (which would
+    // join the fence) or starts and ends with a space (which a reader strips once).
+    let spaced = s.starts_with(' ') && s.ends_with(' ') && s.chars().any(|c| c != ' ');
+    let pad = if s.starts_with('`') || s.ends_with('`') || spaced {
+        " "
+    } else {
+        ""
+    };
+    format!("{fence}{pad}{s}{pad}{fence}")
 }
 
 /// The syntax of one text output format.

@@ -1013,9 +1013,6 @@ impl minijinja::value::Object for Labels {
     }
 }
 
-/// How `{{ … }}` prints a value: strings are escaped with [`svg::esc_into`] (minijinja's default
-/// would also escape `/`, making every URL longer without adding safety), the rest as minijinja
-/// does.
 /// The `code_spans` filter: the text escaped, its code spans as `<code>`
 /// ([`svg::esc_code_into`]).
 fn code_spans(s: &str) -> Value {
@@ -1025,6 +1022,9 @@ fn code_spans(s: &str) -> Value {
     Value::from_safe_string(out)
 }
 
+/// How `{{ … }}` prints a value: strings are escaped with [`svg::esc_into`] (minijinja's default
+/// would also escape `/`, making every URL longer without adding safety), the rest as minijinja
+/// does.
 fn formatter(
     out: &mut minijinja::Output<'_>,
     state: &minijinja::State<'_, '_>,

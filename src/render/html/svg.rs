@@ -50,16 +50,16 @@ pub fn esc_code_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::
     let chars: Vec<char> = s.chars().collect();
     let mut at = 0;
     let mut piece = String::new();
-    for (open, close) in crate::render::text::code_spans(&chars, true) {
+    for span in crate::render::text::code_spans(&chars, true) {
         piece.clear();
-        piece.extend(&chars[at..open]);
+        piece.extend(&chars[at..span.open]);
         esc_into(out, &piece)?;
         piece.clear();
-        piece.extend(&chars[open + 1..close]);
+        piece.extend(span.content(&chars));
         out.write_str("<code>")?;
         esc_into(out, &piece)?;
         out.write_str("</code>")?;
-        at = close + 1;
+        at = span.close + 1;
     }
     piece.clear();
     piece.extend(&chars[at..]);
@@ -659,6 +659,23 @@ mod tests {
         assert_eq!(code("a ` b"), "a ` b");
         assert_eq!(code("a `  ` b"), "a `  ` b");
         assert_eq!(code("no spans <here>"), esc("no spans <here>"));
+        // Longer fences hold backticks (CommonMark); a run of another length does not close.
+        assert_eq!(code("a ``x`y`` b"), "a <code>x`y</code> b");
+        assert_eq!(code("`` `x` ``"), "<code>`x`</code>");
+        assert_eq!(code("`a``b`"), "<code>a``b</code>");
+        assert_eq!(code("``a` b"), "``a` b");
+    }
+
+    proptest::proptest! {
+        /// A value written as one code span ([`crate::render::text::code_span`]) reads back
+        /// whole, as one `<code>`, whatever backticks and spaces it holds.
+        #[test]
+        fn a_value_as_a_code_span_reads_back_whole(s in "[`a <|]{0,12}") {
+            proptest::prop_assume!(s.chars().any(|c| !c.is_whitespace()));
+            let mut out = String::new();
+            esc_code_into(&mut out, &crate::render::text::code_span(&s)).unwrap();
+            proptest::prop_assert_eq!(out, format!("<code>{}</code>", esc(&s)));
+        }
     }
 
     /// Character by character, as the escaper is specified.
