@@ -31,15 +31,21 @@ impl Lang {
                 Lang::En => LABELS[i].1,
                 Lang::Ja => LABELS[i].2,
             },
-            None => "??",
+            None => {
+                // A key that is no label is a bug of ours: tests fail on it; a release build
+                // shows `??` rather than stop.
+                debug_assert!(false, "no label `{key}`");
+                "??"
+            }
         }
     }
 
     /// `n` and the label `key`, or `key_one` where `n` is 1: `1 port pair`, `2 port pairs`.
     pub fn count(self, n: impl Into<u64>, key: &str) -> String {
         let n: u64 = n.into();
-        let text = if n == 1 {
-            self.t(&format!("{key}_one"))
+        let one = format!("{key}_one");
+        let text = if n == 1 && label_index(&one).is_some() {
+            self.t(&one)
         } else {
             self.t(key)
         };
@@ -446,6 +452,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_condition", "Condition", "条件"),
     ("sys_configuration", "Configuration used", "使用するコンフィギュレーション"),
     ("sys_connector", "Connector", "コネクタ"),
+    ("sys_connector_id", "Connector id", "コネクタID"),
     ("sys_context", "Execution context", "実行コンテキスト"),
     ("sys_contexts", "Execution contexts", "実行コンテキスト"),
     ("sys_data_connectors", "data connectors", "データポートコネクタ"),
@@ -529,7 +536,49 @@ mod tests {
         }
         assert_eq!(Lang::Ja.t("data_ports"), "データポート");
         assert_eq!(Lang::En.t("data_ports"), "Data ports");
-        assert_eq!(Lang::En.t("no-such-key"), "??");
+    }
+
+    /// A key that is no label stops a test (in a release build it shows as `??`).
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "no label `no-such-key`")]
+    fn an_unknown_label_key_fails_a_test() {
+        Lang::En.t("no-such-key");
+    }
+
+    /// Every label a built-in template names (`t.key`) is one.
+    #[test]
+    fn every_label_a_template_names_exists() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/themes/default");
+        let mut seen = 0;
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().and_then(|e| e.to_str()) != Some("html") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            let bytes = text.as_bytes();
+            for (at, _) in text.match_indices("t.") {
+                let before = at.checked_sub(1).map(|i| bytes[i]);
+                if before.is_some_and(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'.') {
+                    continue;
+                }
+                let key: String = text[at + 2..]
+                    .chars()
+                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                    .collect();
+                if key.is_empty() || !key.starts_with(|c: char| c.is_ascii_lowercase()) {
+                    continue;
+                }
+                seen += 1;
+                assert!(
+                    label_index(&key).is_some(),
+                    "{}: t.{key} is no label",
+                    path.display()
+                );
+            }
+        }
+        assert!(seen > 100, "{seen}");
     }
 
     /// The label keys hash apart, so a lookup compares one key at most.

@@ -100,11 +100,11 @@ fn systems_of_one_name_are_told_apart_by_their_folders() {
     for d in ["ev3/demo", "mouse/demo"] {
         common::write(&input, &format!("{d}/PatrolSystem.xml"), &system);
     }
-    common::write(
-        &input,
-        "other/Solo.xml",
-        &system.replace("PatrolSystem", "Solo"),
-    );
+    // Solo has no service connector.
+    let start = system.find("<rts:ServicePortConnectors").unwrap();
+    let end = system.find("</rts:ServicePortConnectors>").unwrap() + 28;
+    let solo = format!("{}{}", &system[..start], &system[end..]).replace("PatrolSystem", "Solo");
+    common::write(&input, "other/Solo.xml", &solo);
     let camera = read(&site_fixture().join("components/Camera/RTC.xml"));
     common::write(&input, "components/Camera/RTC.xml", &camera);
     let out = dir.path().join("site");
@@ -145,6 +145,12 @@ fn systems_of_one_name_are_told_apart_by_their_folders() {
         camera.contains("[PatrolSystem (ev3): Camera0]("),
         "{camera}"
     );
+    // A section without connectors says so as the HTML page does, not with an empty table.
+    let solo = &md["systems/solo.md"];
+    let section = solo.split("Service port connectors").nth(1).unwrap();
+    let section = section.split("\n#").next().unwrap();
+    assert!(section.contains("\n—\n"), "{solo}");
+    assert!(!section.contains("| Connector |"), "{solo}");
 }
 
 #[test]
@@ -411,6 +417,10 @@ fn markdown_doxygen_and_json_carry_systems() {
         assert!(page.contains(want), "{want} in\n{page}");
     }
     assert!(!page.contains("robot-pc.local"));
+    assert!(
+        page.contains("| Connector | Connector id | Source | Target |"),
+        "{page}"
+    );
     assert!(md["SUMMARY.md"]
         .contains("- [Systems](systems.md)\n    - [PatrolSystem](systems/patrolsystem.md)"));
     assert!(md["systems.md"].contains("[PatrolSystem](systems/patrolsystem.md)"));

@@ -234,11 +234,21 @@ fn connector_table<'a, M: Markup>(
             row
         })
         .collect();
-    let headers: Vec<&str> = ["sys_connector", "id", "sys_source", "sys_target"]
-        .iter()
-        .chain(rest_keys)
-        .map(|k| lang.t(k))
-        .collect();
+    if rows.is_empty() {
+        // As the HTML page: the heading, then a dash (not a table of headers only).
+        M::paragraph(out, "—");
+        return;
+    }
+    let headers: Vec<&str> = [
+        "sys_connector",
+        "sys_connector_id",
+        "sys_source",
+        "sys_target",
+    ]
+    .iter()
+    .chain(rest_keys)
+    .map(|k| lang.t(k))
+    .collect();
     M::table(out, &headers, &rows);
 }
 
