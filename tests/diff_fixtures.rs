@@ -722,6 +722,38 @@ fn a_yaml_system_profile_is_checked_too() {
     assert!(c["line"].as_u64().unwrap_or(0) > 0, "{c:#}");
 }
 
+/// RTSystemEditor's copies leave several connectors with one connector id: the ends tell them
+/// apart, so removing one of them is that connector removed, not another one changed.
+#[test]
+fn connectors_sharing_an_id_are_told_apart_by_their_ends() {
+    let original = std::fs::read_to_string(nav_system()).expect("system");
+    let old = original.replace(r#"rts:connectorId="c3""#, r#"rts:connectorId="c1""#);
+    assert_ne!(old, original);
+    let start = old
+        .find(r#"rts:name="odometry_odom""#)
+        .expect("odometry_odom");
+    let start = old[..start]
+        .rfind("<rts:DataPortConnectors")
+        .expect("its element");
+    let end = start
+        + old[start..]
+            .find("</rts:DataPortConnectors>")
+            .expect("its end")
+        + "</rts:DataPortConnectors>".len();
+    let new = format!("{}{}", &old[..start], &old[end..]);
+    let dir = tempfile::tempdir().expect("tempdir");
+    write(dir.path(), "old/NavSystem.xml", &old);
+    write(dir.path(), "new/NavSystem.xml", &new);
+    let (exit, json) = run(dir.path(), &["old/NavSystem.xml", "new/NavSystem.xml"]);
+    assert_eq!(exit, 1, "{json:#}");
+    assert_eq!(codes_of(&json), ["DIFF154"], "{json:#}");
+    assert_eq!(
+        changes(&json)[0]["path"],
+        "dataPortConnectors/odometry_odom",
+        "{json:#}"
+    );
+}
+
 /// The old NavSystem of the DIFF15x/25x/35x pairs.
 fn nav_system() -> PathBuf {
     fixture("DIFF154").join("old/systems/NavSystem.xml")

@@ -1059,24 +1059,33 @@ fn paired_connectors<C: Connector>(old: &[C], new: &[C]) -> (Vec<String>, Vec<St
 /// Indices of paired items: both, or only the old (removed) or only the new (added) one.
 type Pairs = Vec<(Option<usize>, Option<usize>)>;
 
-/// Connectors paired by connector id, then the rest by their ends; in OLD's order, then the
-/// added ones in NEW's order.
+/// Connectors paired by connector id and ends together, then the rest by connector id, then
+/// by their ends (RTSystemEditor's copies leave several connectors with one id: the ends tell
+/// them apart); in OLD's order, then the added ones in NEW's order.
 fn match_connectors<T>(
     old: &[T],
     new: &[T],
     id: impl Fn(&T) -> Option<String>,
     ends: impl Fn(&T) -> Option<String>,
 ) -> Pairs {
-    let (mut pairs, ro, rn) = pair_by(old, new, &id);
-    let old_left: Vec<&T> = ro.iter().map(|&i| &old[i]).collect();
-    let new_left: Vec<&T> = rn.iter().map(|&j| &new[j]).collect();
-    let (p2, ro2, rn2) = pair_by(&old_left, &new_left, |c: &&T| ends(c));
-    pairs.extend(p2.into_iter().map(|(i, j)| (ro[i], rn[j])));
+    let both = |c: &T| Some(format!("{}\u{0}{}", id(c)?, ends(c)?));
+    let keys: [&dyn Fn(&T) -> Option<String>; 3] = [&both, &id, &ends];
+    let mut pairs = Vec::new();
+    let (mut ro, mut rn): (Vec<usize>, Vec<usize>) =
+        ((0..old.len()).collect(), (0..new.len()).collect());
+    for key in keys {
+        let old_left: Vec<&T> = ro.iter().map(|&i| &old[i]).collect();
+        let new_left: Vec<&T> = rn.iter().map(|&j| &new[j]).collect();
+        let (p, ro2, rn2) = pair_by(&old_left, &new_left, |c: &&T| key(c));
+        pairs.extend(p.into_iter().map(|(i, j)| (ro[i], rn[j])));
+        ro = ro2.into_iter().map(|i| ro[i]).collect();
+        rn = rn2.into_iter().map(|j| rn[j]).collect();
+    }
     pairs.sort_unstable();
     let mut out: Vec<(Option<usize>, Option<usize>)> =
         pairs.into_iter().map(|(i, j)| (Some(i), Some(j))).collect();
-    out.extend(ro2.into_iter().map(|i| (Some(ro[i]), None)));
-    out.extend(rn2.into_iter().map(|j| (None, Some(rn[j]))));
+    out.extend(ro.into_iter().map(|i| (Some(i), None)));
+    out.extend(rn.into_iter().map(|j| (None, Some(j))));
     out
 }
 
