@@ -85,6 +85,14 @@ const RTC_MODULE_TYPES: &[&str] = &[
     "OGMap",
 ];
 
+/// Whether `name` (any spelling) is one of the types of OpenRTM's own `RTC` module, which an
+/// installation of OpenRTM brings (a project that does not copy its IDL still uses them).
+pub fn is_openrtm_type(name: &str) -> bool {
+    canonical_type(name)
+        .strip_prefix("RTC::")
+        .is_some_and(|short| RTC_MODULE_TYPES.contains(&short))
+}
+
 /// The canonical spelling of a data or interface type name.
 ///
 /// - `IDL:RTC/TimedLong:1.0` → `RTC::TimedLong` (repository id: `/` separates modules, the

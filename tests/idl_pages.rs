@@ -343,3 +343,41 @@ fn a_type_without_idl_says_where_its_definition_would_come_from() {
     let o = rtcdoc(&["check", "in"], dir.path());
     assert!(!stderr(&o).contains("show no definition"), "{}", stderr(&o));
 }
+
+/// A project's own IDL may add to module `RTC` without copying OpenRTM's: a type of OpenRTM's
+/// own `RTC` module that no IDL read defines is an info (its IDL was not given), while a type
+/// of the project's, missing from the module the project's IDL declares, stays a warning.
+#[test]
+fn openrtm_s_own_types_missing_beside_a_project_s_module_rtc_are_an_info() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    write(
+        &input,
+        "c/RTC.xml",
+        &xml_profile(
+            "c",
+            &[
+                ("DataInPort", "pose", "RTC::TimedPose2D"),
+                ("DataOutPort", "plan", "RTC::PlanMisspelt"),
+            ],
+        ),
+    );
+    write(
+        &input,
+        "c/idl/Follower.idl",
+        "module RTC { struct Plan { double x; }; };\n",
+    );
+    let o = rtcdoc(&["check", "in", "--format", "json"], dir.path());
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let severity = |ty: &str| -> String {
+        json["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .find(|d| d["code"] == "RTC403" && d["message"].as_str().unwrap_or("").contains(ty))
+            .map(|d| d["severity"].as_str().unwrap_or("").to_string())
+            .unwrap_or_else(|| panic!("no RTC403 for {ty}: {json:#}"))
+    };
+    assert_eq!(severity("RTC::TimedPose2D"), "info");
+    assert_eq!(severity("RTC::PlanMisspelt"), "warning");
+}

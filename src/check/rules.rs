@@ -1093,9 +1093,12 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
                 );
                 // A warning when the IDL read declares the type's module (the type is missing
                 // from its own files); an info when its module is elsewhere (its IDL, often
-                // OpenRTM's own, was not given).
+                // OpenRTM's own, was not given) or the type is one of OpenRTM's own (a
+                // project's IDL may add to the `RTC` module without copying OpenRTM's).
                 let module = name.rsplit_once("::").map(|(m, _)| m);
-                if module.is_none_or(|m| cat.idl.find(m).is_none()) {
+                if crate::types::is_openrtm_type(name)
+                    || module.is_none_or(|m| cat.idl.find(m).is_none())
+                {
                     for d in &mut s.out {
                         d.severity = Severity::Info;
                     }
