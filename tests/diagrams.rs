@@ -261,6 +261,12 @@ fn graphviz_dot_accepts_every_dot_export() {
             "dot rejects {f:?}: {}",
             String::from_utf8_lossy(&o.stderr)
         );
+        // The edges' labels are on the drawing, not only in tooltips.
+        let svg = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            svg.contains("<text") && svg.contains("port pairs (") && svg.contains("</text>"),
+            "{svg}"
+        );
         n += 1;
     }
     for f in neighbourhood_exports("dot", dir.path()) {
@@ -456,11 +462,18 @@ fn the_dataflow_export_holds_the_flows_within_a_group() {
     };
     let dot = export("dot");
     assert!(dot.contains("n0:p0:e -> n0:p1:w"), "{dot}");
+    // The edge says what it carries where it is drawn (the guide: labelled with the number
+    // of port pairs and the types); the tooltip also names the groups.
     assert!(
-        dot.contains("Sensor → Sensor: 1 port pair (RTC::TimedLong)"),
+        dot.contains(r#"n0:p0:e -> n0:p1:w [label="1 port pair (RTC::TimedLong)", tooltip="Sensor → Sensor: 1 port pair (RTC::TimedLong)"];"#),
         "{dot}"
     );
-    assert!(export("mermaid").contains("n0 -- \"out → in\" --> n0"));
+    let mermaid = export("mermaid");
+    assert!(
+        mermaid.contains("n0 -- \"1 port pair (RTC::TimedLong)\" --> n0"),
+        "{mermaid}"
+    );
+
     assert!(export("svg").contains(">Sensor<"));
     // A second group: both flows.
     common::write(

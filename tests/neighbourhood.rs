@@ -141,12 +141,17 @@ fn graph_component_writes_the_neighbourhood_and_names_close_matches() {
         m.contains("[\"+3 more<br/><small>RTC::TimedLong</small>\"]"),
         "{m}"
     );
-    assert!(m.contains("\"value → in\" --> n0"), "{m}");
-    // By id too; DOT.
+    // Edges labelled with the ports and the type (the guide).
+    assert!(m.contains("\"value → in (RTC::TimedLong)\" --> n0"), "{m}");
+    // By id too; DOT, its edges labelled alike.
     let o = run(&["graph", &input, "--component", "RTC:Test:Cat:Hub:1.0.0"]);
     assert!(o.status.success());
     let d = String::from_utf8(o.stdout).unwrap();
     assert!(d.starts_with("digraph \"Neighbourhood of Hub\""), "{d}");
+    assert!(
+        d.contains("[label=\"value → in (RTC::TimedLong)\", tooltip="),
+        "{d}"
+    );
     // A name that is no component: exit 2 and the closest names.
     let o = run(&["graph", &input, "--component", "hubb"]);
     assert_eq!(o.status.code(), Some(2));

@@ -456,6 +456,26 @@ fn the_data_flow_page_counts_port_pairs_between_groups() {
         svg.matches("class=\"connector data\"").count() >= 8,
         "{svg}"
     );
+    // Each group's ports are named in the page's language.
+    assert!(svg.contains("aria-label=\"Sensor out-port\""), "{svg}");
+    let dir = tempfile::tempdir().unwrap();
+    let o = common::rtcdoc(
+        &[
+            "build",
+            common::root().join("examples").to_str().unwrap(),
+            "-o",
+            "ja",
+            "-f",
+            "html",
+            "--language",
+            "ja",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let ja = std::fs::read_to_string(dir.path().join("ja/dataflow.html")).unwrap();
+    assert!(ja.contains("aria-label=\"Sensor 出力ポート\""), "{ja}");
+    assert!(!ja.contains("Sensor out"), "{ja}");
     // Linked from every page's navigation and the Markdown front page and summary.
     assert!(read("html/index.html").contains("<a href=\"dataflow.html\">Data flow</a>"));
     assert!(read("markdown/SUMMARY.md").contains("[Data flow](dataflow.md)"));

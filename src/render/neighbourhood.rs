@@ -244,11 +244,22 @@ pub fn wiring(
                     ")",
                 ]
                 .concat();
+                // On an exported graph's edge: the ports and the type.
+                let caption = [
+                    f.ports[from.1].name.as_str(),
+                    if row.service { " — " } else { " → " },
+                    &t.ports[to.1].name,
+                    " (",
+                    row.type_name,
+                    ")",
+                ]
+                .concat();
                 conns.push(WireConnector {
                     from,
                     to,
                     service: row.service,
                     label,
+                    caption: Some(caption),
                 });
             };
         for (nb, ports) in row.neighbours.iter().zip(&row.ports_at) {

@@ -43,7 +43,12 @@ pub struct WireConnector {
     pub from: (usize, usize),
     pub to: (usize, usize),
     pub service: bool,
+    /// What the connector is, for assistive technology and tooltips.
     pub label: String,
+    /// The text written on the edge of an exported graph (DOT `label`, Mermaid's link text),
+    /// where the ports alone do not say what the edge is; `None`: DOT shows none and Mermaid
+    /// `out → in`.
+    pub caption: Option<String>,
 }
 
 /// The instances and connectors of system `s`. A port of a component in the catalogue links
@@ -156,6 +161,7 @@ pub fn system_wiring(
                 Some(None) => format!("{source} → {target}"),
                 None => format!("{source} — {target}"),
             },
+            caption: None,
         });
     }
     (wire, conns)
@@ -262,13 +268,17 @@ pub fn to_dot(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> Str
         let side = |class: &str| if class == "in" { "w" } else { "e" };
         let _ = writeln!(
             s,
-            "  n{}:p{}:{} -> n{}:p{}:{} [tooltip=\"{}\"{}];",
+            "  n{}:p{}:{} -> n{}:p{}:{} [{}tooltip=\"{}\"{}];",
             c.from.0,
             c.from.1,
             side(a.ports[c.from.1].class),
             c.to.0,
             c.to.1,
             side(b.ports[c.to.1].class),
+            c.caption
+                .as_deref()
+                .map(|t| format!("label=\"{}\", ", dot_str(t)))
+                .unwrap_or_default(),
             dot_str(&c.label),
             if c.service {
                 ", style=dashed, dir=none"
@@ -298,8 +308,8 @@ fn mermaid_str(s: &str) -> String {
 
 /// The wiring as a Mermaid flowchart (`flowchart LR`): each instance a node named by the
 /// instance and its component, each data connector an arrow labelled `out → in`, each service
-/// connector a dotted line labelled with its two ports. Mermaid has no ports: the labels carry
-/// them.
+/// connector a dotted line labelled with its two ports (or either with its caption). Mermaid
+/// has no ports: the labels carry them.
 pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
     let mut s = String::from("flowchart LR\n");
     let _ = writeln!(s, "  %% {}", name.replace(['\n', '\r'], " "));
@@ -328,12 +338,15 @@ pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) ->
         } else {
             ("--", "→", "-->")
         };
-        let (from, to) = (mermaid_str(&pa.name), mermaid_str(&pb.name));
-        let _ = writeln!(
-            s,
-            "  n{} {open} \"{from} {between} {to}\" {close} n{}",
-            c.from.0, c.to.0
-        );
+        let text = match &c.caption {
+            Some(t) => mermaid_str(t),
+            None => format!(
+                "{} {between} {}",
+                mermaid_str(&pa.name),
+                mermaid_str(&pb.name)
+            ),
+        };
+        let _ = writeln!(s, "  n{} {open} \"{text}\" {close} n{}", c.from.0, c.to.0);
     }
     s
 }
@@ -394,7 +407,12 @@ pub fn dataflow_wiring(
         if let Some(p) = inst[i].ports.iter().position(|p| p.class == class) {
             return p;
         }
-        let label = format!("{} {class}", inst[i].name);
+        let kind = lang.t(if class == "in" {
+            "sys_in_port"
+        } else {
+            "sys_out_port"
+        });
+        let label = format!("{} {kind}", inst[i].name);
         inst[i].ports.push(WirePort {
             name: class.to_string(),
             class,
@@ -419,22 +437,23 @@ pub fn dataflow_wiring(
     for (r, a, b) in drawn.into_iter().take(max_flows) {
         let (pa, pb) = (port(&mut inst, a, "out"), port(&mut inst, b, "in"));
         let types: Vec<&str> = r.types.iter().map(|(n, _)| *n).collect();
+        // `3 port pairs (RTC::TimedLong, +2)`: what the edge carries.
+        let caption = format!(
+            "{} ({}{})",
+            lang.count(r.pairs, "dataflow_pair_count"),
+            types.join(", "),
+            if r.more_types > 0 {
+                format!(", +{}", r.more_types)
+            } else {
+                String::new()
+            }
+        );
         conns.push(WireConnector {
             from: (a, pa),
             to: (b, pb),
             service: false,
-            label: format!(
-                "{} → {}: {} ({}{})",
-                r.from.0,
-                r.to.0,
-                lang.count(r.pairs, "dataflow_pair_count"),
-                types.join(", "),
-                if r.more_types > 0 {
-                    format!(", +{}", r.more_types)
-                } else {
-                    String::new()
-                }
-            ),
+            label: format!("{} → {}: {caption}", r.from.0, r.to.0),
+            caption: Some(caption),
         });
     }
     // A group whose flows were all left out is not drawn either.

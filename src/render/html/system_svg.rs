@@ -426,12 +426,14 @@ mod tests {
                 to: (1, 0),
                 service: false,
                 label: "a.o → b.i".into(),
+                caption: None,
             },
             WireConnector {
                 from: (1, 1),
                 to: (0, 1),
                 service: false,
                 label: "b.o → a.i".into(),
+                caption: None,
             },
         ];
         let l = wiring_layout(&v, &c);
