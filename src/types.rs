@@ -85,6 +85,33 @@ const RTC_MODULE_TYPES: &[&str] = &[
     "OGMap",
 ];
 
+/// The IDL files OpenRTM-aist installs (`rtm/idl`): projects often keep copies of them.
+pub const OPENRTM_IDL_FILES: &[&str] = &[
+    "BasicDataType.idl",
+    "CameraCommonInterface.idl",
+    "DataPort.idl",
+    "DataPortUDP.idl",
+    "ExtendedDataTypes.idl",
+    "Img.idl",
+    "InterfaceDataTypes.idl",
+    "Manager.idl",
+    "ManipulatorCommonInterface_Common.idl",
+    "ManipulatorCommonInterface_DataTypes.idl",
+    "ManipulatorCommonInterface_Middle.idl",
+    "OpenRTM.idl",
+    "RTC.idl",
+    "SDOPackage.idl",
+    "SDOPackage11.idl",
+    "SharedMemory.idl",
+];
+
+/// Whether the file at `path` (its name, any folder) is a copy of one of OpenRTM's own IDL
+/// files ([`OPENRTM_IDL_FILES`]).
+pub fn is_openrtm_idl_file(path: &str) -> bool {
+    let name = path.rsplit(['/', '\\']).next().unwrap_or(path);
+    OPENRTM_IDL_FILES.contains(&name)
+}
+
 /// Whether `name` (any spelling) is one of the types of OpenRTM's own `RTC` module, which an
 /// installation of OpenRTM brings (a project that does not copy its IDL still uses them).
 pub fn is_openrtm_type(name: &str) -> bool {

@@ -183,6 +183,14 @@ const CASES: &[Case] = &[
         says: "`Nav::Battery` is defined in `new/idl/Nav.idl`",
     },
     Case {
+        code: "DIFF335",
+        path: "idlFiles/BasicDataType.idl",
+        component: "old/idl/BasicDataType.idl",
+        all: &["DIFF335"],
+        file: "",
+        says: "`old/idl/BasicDataType.idl`, a copy of OpenRTM's own IDL, is no longer read: its 2 type(s) (`RTC::Time`, `RTC::TimedShort`) come from an OpenRTM installation; pass `--idl-path` with OpenRTM's IDL to compare them",
+    },
+    Case {
         code: "DIFF333",
         path: "servicePorts/Map/interfaces/planner/type/operations/cancel",
         component: NAV,
@@ -988,4 +996,21 @@ fn compare_systems_is_callable_per_pair_of_versions() {
     assert_eq!(found[0].code, "DIFF253");
     assert_eq!(found[0].component, "RTSystem:Lab:NavSystem:1.0");
     assert!(found[0].file.is_none() && found[0].line.is_some());
+}
+
+/// A copy of OpenRTM's IDL read on the NEW side only is one DIFF335 too ("now read"), not
+/// one DIFF334 per type; with the copy on both sides there is nothing to report.
+#[test]
+fn a_copy_of_openrtm_s_idl_added_is_one_info() {
+    let dir = fixture("DIFF335");
+    let (exit, json) = run(&dir, &["new", "old"]);
+    assert_eq!(exit, 0, "{json:#}");
+    assert_eq!(codes_of(&json), ["DIFF335"], "{json:#}");
+    let c = &changes(&json)[0];
+    assert_eq!(c["file"], "old/idl/BasicDataType.idl", "{c:#}");
+    assert!(c["line"].as_u64().unwrap_or(0) > 0, "{c:#}");
+    let message = c["message"].as_str().unwrap_or_default();
+    assert!(message.contains("is now read: its 2 type(s)"), "{message}");
+    let (exit, json) = run(&dir, &["old", "old", "--fail-on", "info"]);
+    assert_eq!(exit, 0, "{json:#}");
 }

@@ -111,6 +111,7 @@ pub const IDL_DOCUMENTATION_CHANGED: &str = "DIFF331";
 pub const IDL_TYPE_ON_ONE_SIDE: &str = "DIFF332";
 pub const IDL_REQUIRED_OPERATION_REMOVED: &str = "DIFF333";
 pub const IDL_TYPE_ADDED: &str = "DIFF334";
+pub const OPENRTM_IDL_COPY: &str = "DIFF335";
 pub const SYSTEM_ADDED: &str = "DIFF351";
 pub const SYSTEM_INSTANCE_ADDED: &str = "DIFF352";
 pub const SYSTEM_CONNECTOR_ADDED: &str = "DIFF353";
@@ -568,6 +569,13 @@ pub static CODES: &[Code] = &[
         name: "idl-type-added",
         summary: "the IDL files define a new type",
         explanation: "A struct, union, enum, typedef, interface or exception is defined on the new side only (by scoped name). Nothing that worked before depends on it. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332); the history of an IDL file reports it for every type the file begins to define.",
+    },
+    Code {
+        code: OPENRTM_IDL_COPY,
+        level: Info,
+        name: "openrtm-idl-copy",
+        summary: "a copy of one of OpenRTM's own IDL files is read on one side only",
+        explanation: "Projects often keep a copy of OpenRTM's IDL (`BasicDataType.idl`, `ExtendedDataTypes.idl`, `InterfaceDataTypes.idl`, …) beside their own. When one side has such a copy and the other does not, the types only it defines are not gone from the components' world: an OpenRTM installation defines them. Reported once per file, naming its types, instead of each type as removed (DIFF140) or added (DIFF334). To compare the types themselves, give both sides OpenRTM's IDL with `--idl-path`.",
     },
     Code {
         code: SYSTEM_ADDED,

@@ -1339,18 +1339,90 @@ pub(super) fn one_sided_types(
     if old.is_empty() || new.is_empty() {
         return;
     }
-    let reported: BTreeSet<String> = out
+    let mut reported: BTreeSet<String> = out
         .iter()
         .filter(|c| c.code == codes::IDL_TYPE_ON_ONE_SIDE)
         .map(|c| c.path.clone())
         .collect();
+    let (o, n) = (defined_types(old), defined_types(new));
+    openrtm_copies((&o, old_name), &n, false, &mut reported, out);
+    openrtm_copies((&n, new_name), &o, true, &mut reported, out);
     types_on_one_side(
-        (&defined_types(old), old_name),
-        (&defined_types(new), new_name),
+        (&o, old_name),
+        (&n, new_name),
         None,
         &|name| reported.contains(&format!("idl/{name}")),
         out,
     );
+}
+
+/// DIFF335 for each copy of one of OpenRTM's own IDL files whose types (other than those
+/// `reported`) `side` defines and `other` does not: one change per file, on the NEW side when
+/// `added`; its types join `reported`.
+fn openrtm_copies(
+    (side, name): (&BTreeMap<String, (String, crate::model::Pos)>, super::Namer),
+    other: &BTreeMap<String, (String, crate::model::Pos)>,
+    added: bool,
+    reported: &mut BTreeSet<String>,
+    out: &mut Vec<Change>,
+) {
+    // Each file's types, and the first of their definitions (where the change is located).
+    let mut by_file: BTreeMap<&str, (Vec<&str>, Option<crate::model::Pos>)> = BTreeMap::new();
+    for (ty, (file, pos)) in side {
+        if crate::types::is_openrtm_idl_file(file)
+            && !other.contains_key(ty)
+            && !reported.contains(&format!("idl/{ty}"))
+        {
+            let (types, first) = by_file.entry(file).or_default();
+            types.push(ty);
+            if !pos.is_unknown()
+                && first.is_none_or(|f| (pos.line, pos.column) < (f.line, f.column))
+            {
+                *first = Some(*pos);
+            }
+        }
+    }
+    for (file, (types, first)) in by_file {
+        let shown = name(file);
+        const NAMED: usize = 5;
+        let mut list: Vec<String> = types.iter().take(NAMED).map(|t| format!("`{t}`")).collect();
+        if types.len() > NAMED {
+            list.push(format!("+{}", types.len() - NAMED));
+        }
+        let message = format!(
+            "`{shown}`, a copy of OpenRTM's own IDL, is {} read: its {} type(s) ({}) come from an OpenRTM installation; pass `--idl-path` with OpenRTM's IDL to compare them",
+            if added { "now" } else { "no longer" },
+            types.len(),
+            list.join(", ")
+        );
+        let (old_v, new_v) = if added {
+            (None, Some(shown.clone()))
+        } else {
+            (Some(shown.clone()), None)
+        };
+        let mut c = super::change(
+            codes::OPENRTM_IDL_COPY,
+            shown.clone(),
+            format!(
+                "idlFiles/{}",
+                file.rsplit(['/', '\\']).next().unwrap_or(file)
+            ),
+            old_v,
+            new_v,
+            message,
+        );
+        if added {
+            c.file = Some(shown);
+            c.line = first.map(|p| p.line);
+            c.column = first.map(|p| p.column);
+        } else {
+            c.old_file = Some(shown);
+            c.old_line = first.map(|p| p.line);
+            c.old_column = first.map(|p| p.column);
+        }
+        out.push(c);
+        reported.extend(types.iter().map(|t| format!("idl/{t}")));
+    }
 }
 
 /// Two versions of IDL files compared type by type (an IDL file's history): every type both

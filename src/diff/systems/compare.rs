@@ -1059,6 +1059,9 @@ fn paired_connectors<C: Connector>(old: &[C], new: &[C]) -> (Vec<String>, Vec<St
 /// Indices of paired items: both, or only the old (removed) or only the new (added) one.
 type Pairs = Vec<(Option<usize>, Option<usize>)>;
 
+/// A key that pairs connectors (`None`: the connector has none).
+type Key<'k, T> = dyn Fn(&T) -> Option<String> + 'k;
+
 /// Connectors paired by connector id and ends together, then the rest by connector id, then
 /// by their ends (RTSystemEditor's copies leave several connectors with one id: the ends tell
 /// them apart); in OLD's order, then the added ones in NEW's order.
@@ -1069,7 +1072,7 @@ fn match_connectors<T>(
     ends: impl Fn(&T) -> Option<String>,
 ) -> Pairs {
     let both = |c: &T| Some(format!("{}\u{0}{}", id(c)?, ends(c)?));
-    let keys: [&dyn Fn(&T) -> Option<String>; 3] = [&both, &id, &ends];
+    let keys: [&Key<'_, T>; 3] = [&both, &id, &ends];
     let mut pairs = Vec::new();
     let (mut ro, mut rn): (Vec<usize>, Vec<usize>) =
         ((0..old.len()).collect(), (0..new.len()).collect());
