@@ -958,3 +958,49 @@ mod fuzz {
         }
     }
 }
+
+/// `typedef struct X {…} Y;` (and its union and enum forms, as CORBA service IDL writes them)
+/// declares X where the typedef stands and Y as its alias.
+#[test]
+fn a_struct_union_or_enum_declared_in_a_typedef_is_read() {
+    let set = one(
+        "Life.idl",
+        "module Life {\n\
+         /// A name and its value.\n\
+         typedef struct NameValuePair { string name; long value; } NVP;\n\
+         typedef sequence<NVP> Criteria;\n\
+         typedef enum Colour { RED, GREEN } Col, Hue;\n\
+         typedef union Choice switch (long) { case 1: long a; default: double b; } Pick;\n\
+         struct After { Col c; NVP p; };\n\
+         };\n",
+    );
+    assert!(set.diagnostics.is_empty(), "{:?}", diags(&set));
+    assert!(matches!(
+        def(&set, "Life::NameValuePair"),
+        IdlDefinition::Struct(_)
+    ));
+    assert!(matches!(def(&set, "Life::Colour"), IdlDefinition::Enum(_)));
+    assert!(matches!(def(&set, "Life::Choice"), IdlDefinition::Union(_)));
+    for (alias, of) in [
+        ("Life::NVP", "Life::NameValuePair"),
+        ("Life::Col", "Life::Colour"),
+        ("Life::Hue", "Life::Colour"),
+        ("Life::Pick", "Life::Choice"),
+    ] {
+        let IdlDefinition::Typedef(t) = def(&set, alias) else {
+            panic!("{alias} is no typedef")
+        };
+        assert_eq!(named(&t.ty).1, Some(of), "{alias}");
+    }
+    let IdlDefinition::Typedef(t) = def(&set, "Life::NVP") else {
+        panic!()
+    };
+    assert!(
+        t.doc
+            .as_ref()
+            .is_some_and(|d| d.text.contains("A name and its value")),
+        "{:?}",
+        t.doc
+    );
+    assert!(set.find("Life::Criteria").is_some() && set.find("Life::After").is_some());
+}

@@ -58,6 +58,9 @@ struct Parser<'o> {
     consts: HashMap<String, Value>,
     depth: usize,
     file_doc: Option<Box<IdlDoc>>,
+    /// A struct, union or enum being declared inside a typedef (`typedef struct X {…} Y;`):
+    /// its `}` is followed by the typedef's names, not by `;`.
+    declarator_follows: bool,
 }
 
 /// Parses one file's preprocessed tokens.
@@ -77,6 +80,7 @@ pub(crate) fn parse(toks: Vec<Token>, file: &str, opts: &IdlOptions) -> Parsed {
         consts: HashMap::new(),
         depth: 0,
         file_doc: None,
+        declarator_follows: false,
     };
     if p.toks.last().is_none_or(|t| t.tok != Tok::Eof) {
         p.toks.push(Token {
@@ -194,6 +198,15 @@ impl Parser<'_> {
     }
     fn peek_tok(&mut self) -> Tok {
         self.peek().tok.clone()
+    }
+    /// The `n`-th token after the next one (0: the next), trivia passed over, without moving.
+    fn peek_ahead(&mut self, n: usize) -> Option<&Tok> {
+        self.skip_trivia();
+        self.toks[self.i..]
+            .iter()
+            .map(|t| &t.tok)
+            .filter(|t| !matches!(t, Tok::Doc { .. } | Tok::Pragma(_) | Tok::IncludeMark))
+            .nth(n)
     }
     fn pos(&mut self) -> Pos {
         self.peek().pos
@@ -781,6 +794,9 @@ impl Parser<'_> {
     /// The `};` that ends the body of `kind` `name` (`hint`: what to say when the `}` is missing).
     fn close(&mut self, kind: &str, name: &str, hint: &str) -> PResult<()> {
         self.expect_punct("}", &format!("to close {kind} `{name}`"), hint)?;
+        if std::mem::take(&mut self.declarator_follows) {
+            return Ok(());
+        }
         self.expect_punct(
             ";",
             &format!("after the `}}` of {kind} `{name}`"),
@@ -1028,7 +1044,28 @@ impl Parser<'_> {
 
     fn typedef(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
         self.advance();
-        let ty = self.type_spec()?;
+        let ty = match self.constructed_in_typedef() {
+            Some((kind, name)) => {
+                // `typedef struct X {…} Y;`: X declared where the typedef stands, Y an alias.
+                let inner = Head {
+                    doc: head.doc.clone(),
+                    pos: self.pos(),
+                };
+                self.declarator_follows = true;
+                let r = match kind.as_str() {
+                    "struct" => self.structure(out, inner),
+                    "union" => self.union(out, inner),
+                    _ => self.enumeration(out, inner),
+                };
+                self.declarator_follows = false;
+                r?;
+                IdlType::Named {
+                    name,
+                    resolved: None,
+                }
+            }
+            None => self.type_spec()?,
+        };
         let start = out.len();
         self.comma_separated(|p| {
             let (name, _, array) = p.declarator("a type name")?;
@@ -1050,6 +1087,23 @@ impl Parser<'_> {
             _ => None,
         }));
         Ok(())
+    }
+
+    /// The kind and name of a struct, union or enum whose body follows in a typedef
+    /// (`typedef struct X {`, `typedef union X switch`, `typedef enum X {`).
+    fn constructed_in_typedef(&mut self) -> Option<(String, String)> {
+        let Some(Tok::Ident(kind)) = self.peek_ahead(0).cloned() else {
+            return None;
+        };
+        let Some(Tok::Ident(name)) = self.peek_ahead(1).cloned() else {
+            return None;
+        };
+        let body = match kind.as_str() {
+            "struct" | "enum" => matches!(self.peek_ahead(2), Some(Tok::Punct("{"))),
+            "union" => matches!(self.peek_ahead(2), Some(Tok::Ident(w)) if w == "switch"),
+            _ => false,
+        };
+        body.then_some((kind, name))
     }
 
     fn constant(&mut self, out: &mut Vec<IdlDefinition>, head: Head) -> PResult<()> {
