@@ -1004,3 +1004,35 @@ fn a_struct_union_or_enum_declared_in_a_typedef_is_read() {
     );
     assert!(set.find("Life::Criteria").is_some() && set.find("Life::After").is_some());
 }
+
+/// A name an interface inherits is found in its scope: a base's exception in `raises`, a base's
+/// struct as a return type, through two levels of inheritance and across modules.
+#[test]
+fn names_an_interface_inherits_are_found() {
+    let set = one(
+        "Naming.idl",
+        "module Naming {\n\
+         interface Base { exception NotFound { string why; }; struct Goal { double x; }; };\n\
+         interface Mid : Base {};\n\
+         };\n\
+         module Ext {\n\
+         interface Leaf : Naming::Mid {\n\
+         Goal lookup(in string name) raises(NotFound);\n\
+         };\n\
+         interface Loop1 : Loop2 {}; interface Loop2 : Loop1 { Missing m(); };\n\
+         };\n",
+    );
+    let unresolved: Vec<String> = diags(&set)
+        .into_iter()
+        .filter(|d| d.contains("RTC029"))
+        .collect();
+    assert_eq!(unresolved.len(), 1, "{unresolved:?}");
+    assert!(unresolved[0].contains("`Missing`"), "{unresolved:?}");
+    let leaf = interface(&set, "Ext::Leaf");
+    let op = &leaf.operations[0];
+    assert_eq!(
+        named(op.return_type.as_ref().unwrap()).1,
+        Some("Naming::Base::Goal")
+    );
+    assert_eq!(named(&op.raises[0]).1, Some("Naming::Base::NotFound"));
+}

@@ -294,10 +294,17 @@ impl IdlSet {
 
     fn resolve_names(&mut self, diags: &mut Vec<Diagnostic>) {
         let known: HashSet<String> = self.by_scoped.keys().cloned().collect();
+        // Every interface's bases (scoped names), so that a name an interface inherits is
+        // found in its scope (CORBA: an interface's scope holds its bases' declarations).
+        let mut bases: HashMap<String, Vec<String>> = HashMap::new();
+        for file in &self.files {
+            collect_bases(&file.definitions, &mut Vec::new(), &known, &mut bases);
+        }
         for file in &mut self.files {
             let mut unresolved: Vec<(String, Pos)> = Vec::new();
             let mut r = Resolver {
                 known: &known,
+                bases: &bases,
                 scope: Vec::new(),
                 unresolved: &mut unresolved,
             };
@@ -395,8 +402,50 @@ impl IdlSet {
 
 /// Resolves `IdlType::Named` by IDL scoping rules: the enclosing scopes from the innermost
 /// outward, then the global scope; a name starting with `::` from the global scope only.
+/// The bases of every interface in `defs` (in `scope`), resolved from the scope that holds the
+/// interface, into `out` by the interface's scoped name.
+fn collect_bases(
+    defs: &[IdlDefinition],
+    scope: &mut Vec<String>,
+    known: &HashSet<String>,
+    out: &mut HashMap<String, Vec<String>>,
+) {
+    for d in defs {
+        match d {
+            IdlDefinition::Module(m) => {
+                scope.push(m.name.clone());
+                collect_bases(&m.definitions, scope, known, out);
+                scope.pop();
+            }
+            IdlDefinition::Interface(i) => {
+                let outer = Resolver {
+                    known,
+                    bases: &HashMap::new(),
+                    scope: scope.clone(),
+                    unresolved: &mut Vec::new(),
+                };
+                let resolved: Vec<String> = i
+                    .bases
+                    .iter()
+                    .filter_map(|b| match b {
+                        IdlType::Named { name, .. } => outer.lookup(name),
+                        _ => None,
+                    })
+                    .collect();
+                scope.push(i.name.clone());
+                out.insert(scope.join("::"), resolved);
+                collect_bases(&i.definitions, scope, known, out);
+                scope.pop();
+            }
+            _ => {}
+        }
+    }
+}
+
 struct Resolver<'k, 'u> {
     known: &'k HashSet<String>,
+    /// Each interface's bases ([`collect_bases`]).
+    bases: &'k HashMap<String, Vec<String>>,
     scope: Vec<String>,
     unresolved: &'u mut Vec<(String, Pos)>,
 }
@@ -489,6 +538,30 @@ impl Resolver<'_, '_> {
             if self.known.contains(&cand) {
                 return Some(cand);
             }
+            if k > 0 {
+                if let Some(found) = self.inherited(&self.scope[..k].join("::"), name) {
+                    return Some(found);
+                }
+            }
+        }
+        None
+    }
+
+    /// `name` declared in a base of interface `iface`, its bases' bases after (each interface
+    /// looked at once, whatever cycles the input has).
+    fn inherited(&self, iface: &str, name: &str) -> Option<String> {
+        let mut queue: std::collections::VecDeque<&str> =
+            self.bases.get(iface)?.iter().map(String::as_str).collect();
+        let mut seen: HashSet<&str> = HashSet::from([iface]);
+        while let Some(b) = queue.pop_front() {
+            if !seen.insert(b) {
+                continue;
+            }
+            let cand = format!("{b}::{name}");
+            if self.known.contains(&cand) {
+                return Some(cand);
+            }
+            queue.extend(self.bases.get(b).into_iter().flatten().map(String::as_str));
         }
         None
     }
