@@ -1036,3 +1036,33 @@ fn names_an_interface_inherits_are_found() {
     );
     assert_eq!(named(&op.raises[0]).1, Some("Naming::Base::NotFound"));
 }
+
+/// A `#pragma version`/`ID` name is looked up as IDL names are: in the scope the pragma stands
+/// in, then in each enclosing one, so a pragma inside a module may name the module itself.
+#[test]
+fn a_pragma_may_name_its_enclosing_module() {
+    let set = one(
+        "poa.idl",
+        "#pragma prefix \"omg.org\"\n\
+         module PortableServer {\n\
+         #pragma version PortableServer 2.3\n\
+         exception ForwardRequest { long forward_reference; };\n\
+         #pragma version ForwardRequest 2.3\n\
+         struct Inner { long x; };\n\
+         #pragma ID Inner \"IDL:own/Inner:9.9\"\n\
+         };\n",
+    );
+    assert!(set.diagnostics.is_empty(), "{:?}", diags(&set));
+    let id = |n: &str| match def(&set, n) {
+        IdlDefinition::Module(m) => m.repository_id.clone(),
+        IdlDefinition::Exception(e) => e.repository_id.clone(),
+        IdlDefinition::Struct(s) => s.repository_id.clone(),
+        other => panic!("{n} is a {}", other.kind_word()),
+    };
+    assert_eq!(id("PortableServer"), "IDL:omg.org/PortableServer:2.3");
+    assert_eq!(
+        id("PortableServer::ForwardRequest"),
+        "IDL:omg.org/PortableServer/ForwardRequest:2.3"
+    );
+    assert_eq!(id("PortableServer::Inner"), "IDL:own/Inner:9.9");
+}

@@ -31,7 +31,9 @@ enum OverrideKind {
 }
 
 struct Override {
-    target: String,
+    /// The names the pragma's name may stand for, innermost scope first (IDL name lookup: the
+    /// scope the pragma stands in, then each enclosing one); the first declared one is meant.
+    target: Vec<String>,
     kind: OverrideKind,
     pos: Pos,
 }
@@ -501,14 +503,20 @@ impl Parser<'_> {
     }
 
     /// The scoped name a pragma or `typeid` names from the current scope.
-    fn target_name(&self, name: &str) -> String {
+    fn target_name(&self, name: &str) -> Vec<String> {
         if let Some(abs) = name.strip_prefix("::") {
-            abs.to_string()
-        } else if self.scope.is_empty() {
-            name.to_string()
-        } else {
-            format!("{}::{name}", self.scope.join("::"))
+            return vec![abs.to_string()];
         }
+        (0..=self.scope.len())
+            .rev()
+            .map(|k| {
+                if k == 0 {
+                    name.to_string()
+                } else {
+                    format!("{}::{name}", self.scope[..k].join("::"))
+                }
+            })
+            .collect()
     }
 
     fn scoped(&self, name: &str) -> String {
@@ -535,7 +543,29 @@ impl Parser<'_> {
     }
 
     fn apply_overrides(&mut self, defs: &mut [IdlDefinition]) {
-        let overrides = std::mem::take(&mut self.overrides);
+        // Each pragma's name resolved to the first of its candidates this file declares
+        // (`#pragma version PortableServer 2.3` inside `module PortableServer` names the module).
+        let mut declared = std::collections::HashSet::new();
+        walk_ids(defs, &mut |scoped, _| {
+            declared.insert(scoped.to_string());
+        });
+        struct Meant {
+            target: String,
+            kind: OverrideKind,
+            pos: Pos,
+        }
+        let overrides: Vec<Meant> = std::mem::take(&mut self.overrides)
+            .into_iter()
+            .map(|o| {
+                let first = o.target.first().cloned().unwrap_or_default();
+                let meant = o.target.into_iter().find(|t| declared.contains(t));
+                Meant {
+                    target: meant.unwrap_or(first),
+                    kind: o.kind,
+                    pos: o.pos,
+                }
+            })
+            .collect();
         let mut used = vec![false; overrides.len()];
         walk_ids(defs, &mut |scoped, id| {
             for (k, o) in overrides.iter().enumerate() {
