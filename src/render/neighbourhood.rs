@@ -229,38 +229,7 @@ pub fn wiring(
                 if conns.iter().any(|c| c.from == from && c.to == to) {
                     return;
                 }
-                let (f, t) = (&inst[from.0], &inst[to.0]);
-                // `A.out → B.in (type)`; `—` between service ports.
-                let label = [
-                    f.name.as_str(),
-                    ".",
-                    &f.ports[from.1].name,
-                    if row.service { " — " } else { " → " },
-                    &t.name,
-                    ".",
-                    &t.ports[to.1].name,
-                    " (",
-                    row.type_name,
-                    ")",
-                ]
-                .concat();
-                // On an exported graph's edge: the ports and the type.
-                let caption = [
-                    f.ports[from.1].name.as_str(),
-                    if row.service { " — " } else { " → " },
-                    &t.ports[to.1].name,
-                    " (",
-                    row.type_name,
-                    ")",
-                ]
-                .concat();
-                conns.push(WireConnector {
-                    from,
-                    to,
-                    service: row.service,
-                    label,
-                    caption: Some(caption),
-                });
+                conns.push(connector(inst, from, to, row));
             };
         for (nb, ports) in row.neighbours.iter().zip(&row.ports_at) {
             let b = match box_of.iter().find(|(k, _)| *k == nb.component) {
@@ -313,6 +282,27 @@ pub fn wiring(
     }
     place_in_columns(&mut inst, &conns);
     (inst, conns)
+}
+
+/// The connector from port `from` to port `to` (box, port) of `row`: labelled
+/// `A.out → B.in (type)` (`—` between service ports), its exported edge `out → in (type)`.
+fn connector(
+    inst: &[WireInstance],
+    from: (usize, usize),
+    to: (usize, usize),
+    row: &NeighbourRow<'_>,
+) -> WireConnector {
+    let (f, t) = (&inst[from.0], &inst[to.0]);
+    let (a, b) = (&f.ports[from.1].name, &t.ports[to.1].name);
+    let between = if row.service { " — " } else { " → " };
+    let of = [" (", row.type_name, ")"].concat();
+    WireConnector {
+        from,
+        to,
+        service: row.service,
+        label: [f.name.as_str(), ".", a, between, &t.name, ".", b, &of].concat(),
+        caption: Some([a.as_str(), between, b, &of].concat()),
+    }
 }
 
 /// Fixes the arrangement the layout keeps (as it keeps RTSystemEditor's saved positions): the
