@@ -203,7 +203,8 @@ fn audit_with(
 }
 
 /// Every page kind × {light, dark, 390 px}: no axe-core violation (WCAG 2.0–2.2 A/AA and best
-/// practice), at 390 px no page wider than the screen and no region that scrolls sideways;
+/// practice), no column header with a word broken across lines, at 390 px no page wider than
+/// the screen and no region that scrolls sideways;
 /// each search's first result is the expected page, shows its kind, `?q=` follows the box and
 /// Enter opens the first result.
 fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
@@ -232,6 +233,9 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
         }
         for c in p["clipped"].as_array().into_iter().flatten() {
             problems.push(format!("{page} {mode}: text past its cell: {c}"));
+        }
+        for w in p["broken"].as_array().into_iter().flatten() {
+            problems.push(format!("{page} {mode}: column header word broken: {w}"));
         }
         if mode == "phone" {
             let w = p["width"].as_u64().unwrap_or(u64::MAX);

@@ -127,9 +127,25 @@ try {
             clipped.push(el.textContent.slice(0, 80));
           }
         }
-        return { width, scrollers, clipped };
+        // Column headers wrap between words only: a word of Latin letters laid out on two
+        // lines ("REQUIRE / D") is broken (CJK text may wrap between any characters).
+        const broken = [];
+        for (const th of document.querySelectorAll('thead th')) {
+          if (th.getBoundingClientRect().width < 2) continue;
+          const walker = document.createTreeWalker(th, NodeFilter.SHOW_TEXT);
+          for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+            for (const m of node.data.matchAll(/[A-Za-z]{2,}/g)) {
+              const range = document.createRange();
+              range.setStart(node, m.index);
+              range.setEnd(node, m.index + m[0].length);
+              const tops = new Set(Array.from(range.getClientRects()).map((r) => Math.round(r.top)));
+              if (tops.size > 1) broken.push(m[0]);
+            }
+          }
+        }
+        return { width, scrollers, clipped, broken };
       });
-      report.pages.push({ page: rel, mode: m.name, violations: res, width: layout.width, scrollers: m.width < 500 ? layout.scrollers : [], clipped: layout.clipped });
+      report.pages.push({ page: rel, mode: m.name, violations: res, width: layout.width, scrollers: m.width < 500 ? layout.scrollers : [], clipped: layout.clipped, broken: layout.broken });
     }
   }
   // Search: type QUERY into the search page, wait for results; check ?q= and Enter.
