@@ -47,6 +47,9 @@ fn html_page_draws_and_lists_the_neighbourhood_with_caps_stated() {
         list.contains("fed by:") && list.contains("feeds:") && list.contains("uses:"),
         "{list}"
     );
+    // A service interface is `port.interface`, as the port tables and peers write it.
+    assert!(list.contains("<code>map.map</code>"), "{list}");
+    assert!(list.contains(" · maps.map</a>"), "{list}");
     assert!(
         list.contains("<li class=\"more\"><a href=\"../types/rtc-timedlong.html\">+3 — see all on the type page</a></li>"),
         "{list}"

@@ -18,13 +18,13 @@ pub struct NeighbourItem<'a> {
     pub page: &'a Page,
     /// The anchor of its first matching port on its page.
     pub anchor: &'a str,
-    /// Its matching ports' names (`port / interface` for a service interface).
+    /// Its matching ports' names (`port.interface` for a service interface, as the port tables write it).
     pub ports: Vec<String>,
 }
 
 /// One port of the component and its neighbours, as listed.
 pub struct NeighbourRow<'a> {
-    /// The port's name (`port / interface` for a service interface).
+    /// The port's name (`port.interface` for a service interface, as the port tables write it).
     pub port: String,
     /// The port's anchor on the component's page.
     pub anchor: &'a str,
@@ -53,7 +53,7 @@ fn port_name(cat: &Catalog, ci: ComponentIx, at: PortAt) -> String {
         PortAt::Interface(s, i) => {
             let sp = &p.service_ports[s];
             format!(
-                "{} / {}",
+                "{}.{}",
                 non_empty(&sp.name).unwrap_or(""),
                 non_empty(&sp.interfaces[i].name).unwrap_or("")
             )
