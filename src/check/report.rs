@@ -65,12 +65,16 @@ fn sarif_level(s: Severity) -> &'static str {
     }
 }
 
-/// Percent-encodes a relative path for a SARIF `uri` (keeps `/` and unreserved characters).
+/// Percent-encodes a relative path for a SARIF `uri` (keeps `/`, unreserved characters and
+/// sub-delimiters).
 pub fn path_to_uri(path: &str) -> String {
     let path = path.replace('\\', "/");
     let mut out = String::with_capacity(path.len());
     for b in path.bytes() {
-        if b.is_ascii_alphanumeric() || b"-._~/".contains(&b) {
+        // Unreserved characters and the sub-delimiters a path segment may hold as they are
+        // (RFC 3986 §3.3: `lib+ext`, not `lib%2Bext`, which a reader may not match with the
+        // file); `:` is encoded, as a first segment's colon would read as a scheme.
+        if b.is_ascii_alphanumeric() || b"-._~/!$&'()*+,;=@".contains(&b) {
             out.push(b as char);
         } else {
             out.push_str(&format!("%{b:02X}"));
@@ -302,5 +306,11 @@ mod tests {
     fn uris() {
         assert_eq!(path_to_uri("a b/RTC.xml"), "a%20b/RTC.xml");
         assert_eq!(path_to_uri("x\\y.xml"), "x/y.xml");
+        assert_eq!(
+            path_to_uri("lib+ext/A (1)/RTC.xml"),
+            "lib+ext/A%20(1)/RTC.xml"
+        );
+        assert_eq!(path_to_uri("c:/x#?%.xml"), "c%3A/x%23%3F%25.xml");
+        assert_eq!(path_to_uri("日本/RTC.xml"), "%E6%97%A5%E6%9C%AC/RTC.xml");
     }
 }
