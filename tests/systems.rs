@@ -875,3 +875,39 @@ fn a_connector_without_a_data_type_is_labelled_by_its_ends() {
     assert!(bare.contains(r#"tooltip="Cam0.out → View0.in""#), "{bare}");
     assert!(!bare.contains("()"), "{bare}");
 }
+
+/// A connector whose components are not in the catalogue is checked against the data types the
+/// system file itself records for its ports (RTSystemEditor's `dataport.data_type`).
+#[test]
+fn a_connector_type_is_checked_against_the_types_the_system_records() {
+    let text = read(&site_fixture().join("system/PatrolSystem.xml"));
+    let recorded = |ty: &str| {
+        text.replace(
+            r#"<rtsExt:Properties rtsExt:name="port.port_type" rtsExt:value="DataOutPort"/>"#,
+            &format!(
+                r#"<rtsExt:Properties rtsExt:name="port.port_type" rtsExt:value="DataOutPort"/><rtsExt:Properties rtsExt:name="dataport.data_type" rtsExt:value="{ty}"/>"#
+            ),
+        )
+    };
+    let mismatches = |xml: &str| -> Vec<String> {
+        let dir = tempfile::tempdir().unwrap();
+        common::write(dir.path(), "in/PatrolSystem.xml", xml);
+        let o = common::rtcdoc(&["check", "in", "--format", "json"], dir.path());
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+        json["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .filter(|d| d["code"] == "RTC602")
+            .map(|d| d["message"].as_str().unwrap_or_default().to_string())
+            .collect()
+    };
+    let bad = recorded("IDL:RTC/TimedLong:1.0");
+    assert_ne!(bad, text);
+    assert_eq!(
+        mismatches(&bad),
+        ["connector `Camera0.image_Planner0.image` carries `IDL:RTC/CameraImage:1.0`, but port Camera0.image (as the system file records it) carries `RTC::TimedLong`"]
+    );
+    assert!(mismatches(&recorded("IDL:RTC/CameraImage:1.0")).is_empty());
+    assert!(mismatches(&text).is_empty());
+}

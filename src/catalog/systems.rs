@@ -448,15 +448,9 @@ impl Catalog {
         // RTSystemEditor records each port's kind as the property `port.port_type`
         // (`DataInPort`, `DataOutPort`, `CorbaPort`): a port that no connector ends at still
         // gets its side when the component is not in the catalogue.
-        let port_type = |p: &crate::model::system::SystemPort| {
-            p.properties
-                .iter()
-                .find(|q| non_empty(&q.name).map(str::trim) == Some("port.port_type"))
-                .and_then(|q| non_empty(&q.value))
-                .and_then(PortDirection::parse)
-        };
         for p in &inst.data_ports {
-            add(&own(&p.name, &p.short_name), false, port_type(p));
+            let kind = p.property("port.port_type").and_then(PortDirection::parse);
+            add(&own(&p.name, &p.short_name), false, kind);
         }
         for p in &inst.service_ports {
             add(&own(&p.name, &p.short_name), true, None);

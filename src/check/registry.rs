@@ -687,7 +687,7 @@ pub static RULES: &[Rule] = &[
         severity: Error,
         name: "system-type-mismatch",
         summary: "a data connector's type differs from the types of its ports",
-        explanation: "OpenRTM connects a data out-port to an in-port only when both carry the same data type, and a data port connector records that type (`dataType`, often as a repository id such as `IDL:RTC/TimedLong:1.0`). Types are compared by their scoped IDL names, so `TimedLong`, `RTC::TimedLong` and the repository id are one. Reported when the connector's type differs from the type of its source or target port in the component profiles of the catalogue, or the two ports carry different types.",
+        explanation: "OpenRTM connects a data out-port to an in-port only when both carry the same data type, and a data port connector records that type (`dataType`, often as a repository id such as `IDL:RTC/TimedLong:1.0`). Types are compared by their scoped IDL names, so `TimedLong`, `RTC::TimedLong` and the repository id are one. Reported when the connector's type differs from the type of its source or target port in the component profiles of the catalogue (for a component not in the catalogue, the type the system file records for the port, RTSystemEditor's `dataport.data_type`), or the two ports carry different types.",
         spec: "RtsProfile schema (DataPortConnectors dataType), spec 2.3.9 (dataPort type)",
         hint: "connect ports of the same data type, or correct the connector's dataType",
     },

@@ -126,8 +126,21 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             let t = non_empty(&comp.profile.data_ports[*index].type_)?;
             Some((canonical_type(t), format!("{}.{name}", comp.profile.name())))
         };
-        let a = port_type(&l.source);
-        let b = port_type(&l.target);
+        // A component not in the catalogue: the type the system file records for the port
+        // (RTSystemEditor's `dataport.data_type`).
+        let recorded = |e: &Option<PortEnd>, el: &crate::catalog::systems::EndLink| {
+            let inst = p.components.get(el.instance?)?;
+            let name = end_port_name(e.as_ref()?);
+            let port = inst.data_ports.iter().find(|dp| dp.own_name() == name)?;
+            let t = port.property("dataport.data_type")?;
+            let who = non_empty(&inst.instance_name).unwrap_or("");
+            Some((
+                canonical_type(t),
+                format!("{who}.{name} (as the system file records it)"),
+            ))
+        };
+        let a = port_type(&l.source).or_else(|| recorded(&c.source, &l.source));
+        let b = port_type(&l.target).or_else(|| recorded(&c.target, &l.target));
         let cname = non_empty(&c.name).unwrap_or("");
         if let Some(t) = non_empty(&c.data_type) {
             let want = canonical_type(t);

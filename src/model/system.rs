@@ -393,6 +393,25 @@ node! {
     }
 }
 
+impl SystemPort {
+    /// The port's own name: without the `<instance>.` prefix, else as written.
+    pub fn own_name(&self) -> &str {
+        non_empty(&self.short_name)
+            .or_else(|| non_empty(&self.name))
+            .unwrap_or("")
+    }
+
+    /// The value of the port's property `key` (RTSystemEditor records `port.port_type`,
+    /// `dataport.data_type` and others), trimmed; `None` when absent or empty.
+    pub fn property(&self, key: &str) -> Option<&str> {
+        self.properties
+            .iter()
+            .find(|q| non_empty(&q.name).map(str::trim) == Some(key))
+            .and_then(|q| non_empty(&q.value))
+            .map(str::trim)
+    }
+}
+
 /// A port name without its `<instance>.` prefix (RTSystemEditor writes `Instance0.port`); other
 /// names are returned as they are.
 pub fn short_port_name<'a>(name: &'a str, instance: Option<&str>) -> &'a str {
