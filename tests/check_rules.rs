@@ -72,6 +72,7 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC606", "System.xml", 5, 7),
     ("RTC607", "System.xml", 5, 7),
     ("RTC608", "System.xml", 9, 5),
+    ("RTC609", "System.xml", 14, 3),
     ("RTC701", "README.md", 2, 1),
     // A folder named README.md: a finding about the whole file, without a position.
     ("RTC702", "README.md", 0, 0),

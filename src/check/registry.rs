@@ -88,6 +88,7 @@ pub const SYSTEM_DUPLICATE_INSTANCE: &str = "RTC605";
 pub const SYSTEM_CONFIG_INVALID: &str = "RTC606";
 pub const SYSTEM_CONFIG_UNDECLARED: &str = "RTC607";
 pub const SYSTEM_UNKNOWN_INSTANCE: &str = "RTC608";
+pub const SYSTEM_DUPLICATE_CONNECTOR_ID: &str = "RTC609";
 // Component folders (issue 17).
 pub const README_GENERATED: &str = crate::readme::GENERATED;
 pub const README_UNREADABLE: &str = crate::readme::UNREADABLE;
@@ -744,6 +745,15 @@ pub static RULES: &[Rule] = &[
         explanation: "Each end of a connector names its instance by `instanceName`; no instance of the system has that name, so the connector joins nothing.",
         spec: "RtsProfile schema (sourceDataPort, targetDataPort, sourceServicePort, targetServicePort instanceName)",
         hint: "name an instance of the system, or remove the connector",
+    },
+    Rule {
+        code: SYSTEM_DUPLICATE_CONNECTOR_ID,
+        severity: Warning,
+        name: "system-duplicate-connector-id",
+        summary: "two connectors of a system have the same connector id",
+        explanation: "A port keeps its connections by connector id: OpenRTM refuses to connect a port that already has a connector of the id given (RTSystemEditor's copy and paste leaves such twins), and tools that key connectors by id (`rtcdoc diff` among them) must tell the twins apart by their ends.",
+        spec: "RtsProfile schema (DataPortConnectors, ServicePortConnectors connectorId)",
+        hint: "give each connector its own connectorId (RTSystemEditor makes a new one when the connector is drawn again)",
     },
     Rule {
         code: README_GENERATED,

@@ -44,6 +44,31 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             );
         }
     }
+    // Connector ids.
+    let mut ids: HashMap<&str, &str> = HashMap::new();
+    let connectors = p
+        .data_port_connectors
+        .iter()
+        .map(|c| (&c.connector_id, &c.name, c.pos))
+        .chain(
+            p.service_port_connectors
+                .iter()
+                .map(|c| (&c.connector_id, &c.name, c.pos)),
+        );
+    for (id, name, pos) in connectors {
+        let Some(id) = non_empty(id) else { continue };
+        let name = non_empty(name).unwrap_or("");
+        match ids.get(id) {
+            Some(first) => sink.emit(
+                r::SYSTEM_DUPLICATE_CONNECTOR_ID,
+                pos,
+                format!("connector `{name}` has the id `{id}` of connector `{first}`"),
+            ),
+            None => {
+                ids.insert(id, name);
+            }
+        }
+    }
     // Instances against the catalogue; their configuration.
     for (i, c) in p.components.iter().enumerate() {
         let name = non_empty(&c.instance_name).unwrap_or("");
