@@ -304,13 +304,14 @@ mod tests {
 
     #[test]
     fn uris() {
-        assert_eq!(path_to_uri("a b/RTC.xml"), "a%20b/RTC.xml");
-        assert_eq!(path_to_uri("x\\y.xml"), "x/y.xml");
-        assert_eq!(
-            path_to_uri("lib+ext/A (1)/RTC.xml"),
-            "lib+ext/A%20(1)/RTC.xml"
-        );
-        assert_eq!(path_to_uri("c:/x#?%.xml"), "c%3A/x%23%3F%25.xml");
-        assert_eq!(path_to_uri("日本/RTC.xml"), "%E6%97%A5%E6%9C%AC/RTC.xml");
+        for (path, uri) in [
+            ("a b/RTC.xml", "a%20b/RTC.xml"),
+            ("x\\y.xml", "x/y.xml"),
+            ("lib+ext/A (1)/RTC.xml", "lib+ext/A%20(1)/RTC.xml"),
+            ("c:/x#?%.xml", "c%3A/x%23%3F%25.xml"),
+            ("日本/RTC.xml", "%E6%97%A5%E6%9C%AC/RTC.xml"),
+        ] {
+            assert_eq!(path_to_uri(path), uri, "{path}");
+        }
     }
 }

@@ -420,21 +420,16 @@ mod tests {
             inst("a", &[("o", "out"), ("i", "in")], None),
             inst("b", &[("i", "in"), ("o", "out")], None),
         ];
+        let data = |from, to, label: &str| WireConnector {
+            from,
+            to,
+            service: false,
+            label: label.into(),
+            caption: None,
+        };
         let c = vec![
-            WireConnector {
-                from: (0, 0),
-                to: (1, 0),
-                service: false,
-                label: "a.o → b.i".into(),
-                caption: None,
-            },
-            WireConnector {
-                from: (1, 1),
-                to: (0, 1),
-                service: false,
-                label: "b.o → a.i".into(),
-                caption: None,
-            },
+            data((0, 0), (1, 0), "a.o → b.i"),
+            data((1, 1), (0, 1), "b.o → a.i"),
         ];
         let l = wiring_layout(&v, &c);
         assert!(l.nodes[1].x > l.nodes[0].x, "{l:?}");
