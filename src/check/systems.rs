@@ -45,7 +45,7 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
         }
     }
     // Connector ids.
-    let mut ids: HashMap<&str, &str> = HashMap::new();
+    let mut ids: HashMap<&str, (&str, crate::model::Pos)> = HashMap::new();
     let connectors = p
         .data_port_connectors
         .iter()
@@ -59,13 +59,17 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
         let Some(id) = non_empty(id) else { continue };
         let name = non_empty(name).unwrap_or("");
         match ids.get(id) {
-            Some(first) => sink.emit(
+            // Twins often share their name too: the first one is named by its line.
+            Some((first, at)) => sink.emit(
                 r::SYSTEM_DUPLICATE_CONNECTOR_ID,
                 pos,
-                format!("connector `{name}` has the id `{id}` of connector `{first}`"),
+                format!(
+                    "connector `{name}` has the id `{id}` of connector `{first}` (line {})",
+                    at.line
+                ),
             ),
             None => {
-                ids.insert(id, name);
+                ids.insert(id, (name, pos));
             }
         }
     }

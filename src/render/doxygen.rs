@@ -76,9 +76,19 @@ fn push_escaped(s: &str, out: &mut String, full: bool) {
 }
 
 fn push_escaped_chars(s: &str, out: &mut String, full: bool) {
+    push_escaped_in(s, out, full, true);
+}
+
+/// [`push_escaped_chars`]; `spans`: code spans become `<tt>` (not inside one: its backticks are
+/// text).
+fn push_escaped_in(s: &str, out: &mut String, full: bool, spans: bool) {
     let chars: Vec<char> = s.chars().collect();
     // Code spans become `<tt>` (Markdown is off in the Doxyfile): code, as the site shows it.
-    let spans = super::text::code_spans(&chars, true);
+    let spans = if spans {
+        super::text::code_spans(&chars, true)
+    } else {
+        Vec::new()
+    };
     let mut span = spans.iter().peekable();
     let mut i = 0;
     while i < chars.len() {
@@ -87,7 +97,7 @@ fn push_escaped_chars(s: &str, out: &mut String, full: bool) {
             if i == sp.open {
                 out.push_str("<tt>");
                 let inner: String = sp.content(&chars).iter().collect();
-                push_escaped_chars(&inner, out, full);
+                push_escaped_in(&inner, out, full, false);
                 out.push_str("</tt>");
                 span.next();
                 i = sp.close + 1;
@@ -674,6 +684,13 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_code_span_holding_backticks_is_one_tt() {
+        let mut out = String::new();
+        push_escaped_chars("a ``k`1`` b <c>", &mut out, false);
+        assert_eq!(out, "a <tt>k`1</tt> b \\<c\\>");
     }
 
     #[test]
