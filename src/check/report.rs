@@ -144,7 +144,8 @@ pub fn to_sarif(report: &Report) -> Value {
 }
 
 /// Byte range to underline for a 1-based line/column (columns count characters): the XML tag
-/// name (`<rtc:DataPorts`) or the YAML key / word starting there. `None` when the position is
+/// name (`<rtc:DataPorts`), attribute name (`rtc:activityType`) or the YAML key / word starting
+/// there. `None` when the position is
 /// outside the text.
 pub fn span_at(text: &str, line: u32, column: u32) -> Option<std::ops::Range<usize>> {
     let mut start = 0usize;
@@ -165,8 +166,17 @@ pub fn span_at(text: &str, line: u32, column: u32) -> Option<std::ops::Range<usi
             .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
             .unwrap_or(tag.len())
     } else {
-        rest.find(|c: char| c.is_whitespace() || c == ':' || c == '>')
-            .unwrap_or(rest.len())
+        // A word: up to white space, `>`, an XML attribute's `=`, or a YAML key's `:` (one
+        // followed by white space or the end; `rtc:activityType` is one attribute name).
+        let b = rest.as_bytes();
+        rest.char_indices()
+            .find(|&(i, c)| {
+                c.is_whitespace()
+                    || c == '>'
+                    || c == '='
+                    || (c == ':' && b.get(i + 1).is_none_or(|n| n.is_ascii_whitespace()))
+            })
+            .map_or(rest.len(), |(i, _)| i)
     };
     let len = if len == 0 {
         rest.chars().next().map_or(0, char::len_utf8)
@@ -296,6 +306,14 @@ mod tests {
         let t = "<a>\n  <rtc:DataPorts rtc:name=\"x\"/>\nkey: value\n";
         assert_eq!(&t[span_at(t, 2, 3).unwrap()], "<rtc:DataPorts");
         assert_eq!(&t[span_at(t, 3, 1).unwrap()], "key");
+        // An attribute: its whole name, namespace prefix included.
+        assert_eq!(&t[span_at(t, 2, 18).unwrap()], "rtc:name");
+        let y = "a:
+  rtc:x: 1
+url: http://h
+";
+        assert_eq!(&y[span_at(y, 1, 1).unwrap()], "a");
+        assert_eq!(&y[span_at(y, 2, 3).unwrap()], "rtc:x");
         assert_eq!(span_at(t, 9, 1), None);
         assert!(span_at(t, 1, 99).is_some());
         let j = "名前: 値\n";
