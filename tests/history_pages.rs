@@ -447,3 +447,55 @@ fn the_added_codes_of_the_catalogue_are_the_diff_engines() {
     theirs.sort();
     assert_eq!(ours, theirs);
 }
+
+/// A backup's name gives its time in the saving machine's zone, without the zone: What's new
+/// and the feed read it in the zone of the component's commits, so a backup saved at 12:43 in
+/// Japan comes before a commit made at 18:18 +09:00 that day (read as UTC it came after).
+#[test]
+fn a_backup_orders_among_commits_in_their_time_zone() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !history_repo::init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let v = history_repo::versions();
+    write(&repo, "Base/RTC.xml", &v[0].1);
+    assert!(history_repo::git(
+        &repo,
+        &["add", "-A"],
+        "2017-04-27 08:00:00 +0900"
+    ));
+    assert!(history_repo::git(
+        &repo,
+        &["commit", "-q", "-m", "morning"],
+        "2017-04-27 08:00:00 +0900"
+    ));
+    // RTCBuilder saved version 2 at 12:43:18 local time (its backup), then version 4 was committed.
+    write(&repo, "Base/RTC.xml20170427124318", &v[1].1);
+    write(&repo, "Base/RTC.xml", &v[3].1);
+    assert!(history_repo::git(
+        &repo,
+        &["add", "Base/RTC.xml"],
+        "2017-04-27 18:18:45 +0900"
+    ));
+    assert!(history_repo::git(
+        &repo,
+        &["commit", "-q", "-m", "evening"],
+        "2017-04-27 18:18:45 +0900"
+    ));
+    let site = dir.path().join("site");
+    history_repo::build(
+        &repo,
+        &site,
+        &["-f", "markdown", "--base-url", "https://example.org/"],
+    );
+    let md = page(&site, "whats-new.md");
+    let commit = md
+        .find(" · 2017-04-27T18:18:45+09:00 · ")
+        .unwrap_or_else(|| panic!("{md}"));
+    let backup = md
+        .find(" · 2017-04-27 12:43:18 · RTC.xml20170427124318 — ")
+        .unwrap_or_else(|| panic!("{md}"));
+    assert!(commit < backup, "the 18:18 commit first:\n{md}");
+}

@@ -197,14 +197,49 @@ pub fn instant(date: &str) -> Option<i64> {
 fn entries_newest_first(cat: &Catalog) -> Vec<(ComponentIx, usize)> {
     let mut all: Vec<(Option<i64>, ComponentIx, usize)> = Ix::enumerate(&cat.components)
         .flat_map(|(ci, c)| {
+            let zone = local_offset(c);
             c.history
                 .iter()
                 .enumerate()
-                .map(move |(ei, e)| (e.date.as_deref().and_then(instant), ci, ei))
+                .map(move |(ei, e)| (zoned_date(e, zone).as_deref().and_then(instant), ci, ei))
         })
         .collect();
     all.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
     all.into_iter().map(|(_, ci, ei)| (ci, ei)).collect()
+}
+
+/// The UTC offset (`+09:00`) of the machine a component's backups were saved on, which their
+/// names do not say: that of its commits (their author dates), else of its profile's dates.
+fn local_offset(c: &crate::catalog::Component) -> Option<&str> {
+    fn offset(d: &str) -> Option<&str> {
+        d.trim().get(19..25).filter(|o| o.starts_with(['+', '-']))
+    }
+    c.history
+        .iter()
+        .filter(|e| e.backup.is_none())
+        .filter_map(|e| e.date.as_deref().and_then(offset))
+        .next()
+        .or_else(|| {
+            let b = &c.profile.basic_info;
+            [&b.update_date, &b.creation_date]
+                .into_iter()
+                .find_map(|d| d.as_deref().and_then(offset))
+        })
+}
+
+/// An entry's date with a time zone where it has none (a backup's, `YYYY-MM-DD hh:mm:ss` in
+/// the saving machine's local time) and `zone` is known, so that it orders among commits.
+fn zoned_date<'e>(
+    e: &'e crate::catalog::history::Entry,
+    zone: Option<&str>,
+) -> Option<std::borrow::Cow<'e, str>> {
+    let d = e.date.as_deref()?.trim();
+    match zone {
+        Some(z) if e.backup.is_some() && d.len() == 19 => {
+            Some(format!("{}T{}{z}", &d[..10], &d[11..19]).into())
+        }
+        _ => Some(d.into()),
+    }
 }
 
 /// One change on What's new.
@@ -340,9 +375,10 @@ pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
         }
         let c = &cat[ci];
         let e = &c.history[ei];
-        let (Some(page), Some(updated)) =
-            (cat.history_page(ci), e.date.as_deref().and_then(rfc3339))
-        else {
+        let (Some(page), Some(updated)) = (
+            cat.history_page(ci),
+            zoned_date(e, local_offset(c)).as_deref().and_then(rfc3339),
+        ) else {
             continue;
         };
         if e.changes.is_empty() {
