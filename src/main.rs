@@ -1289,7 +1289,8 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
             } else {
                 report::Verbosity::Normal
             };
-            match report::write_human(&mut stream, &result, verbosity)
+            let revs = [&old_spec, &new_spec].map(side::Spec::file_prefix);
+            match report::write_human(&mut stream, &result, verbosity, [&revs[0], &revs[1]])
                 .and_then(|_| std::io::Write::flush(&mut stream))
             {
                 Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {}

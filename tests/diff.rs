@@ -1607,3 +1607,46 @@ fn markdown_shows_values_in_code_spans_as_written() {
     assert!(row.contains(r"to `a\b<c>\|d`"), "{row}");
     assert!(!row.contains("&lt;") && !row.contains(r"\\"), "{row}");
 }
+
+/// The human report names a file of a side read at a revision as `REV:path`, which `git show`
+/// opens (here a type removed from an IDL file: its old line is in the old file, not in the
+/// work tree's).
+#[test]
+fn a_location_at_a_revision_is_named_with_the_revision() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    first_commit(d, "Base/RTC.xml");
+    let idl = "module Lab {\n  struct Kept { long a; };\n\n\n  struct Gone { long b; };\n};\n";
+    write(d, "idl/Lab.idl", idl);
+    assert!(git(d, &["add", "-A"]));
+    assert!(git(d, &["commit", "-q", "-m", "idl"]));
+    write(
+        d,
+        "idl/Lab.idl",
+        "module Lab {\n  struct Kept { long a; };\n};\n",
+    );
+    let out = rtcdoc(&["diff", "HEAD:.", "."], d);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(text.contains("DIFF140"), "{text}");
+    let at = text
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("--> HEAD:./idl/Lab.idl:"))
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!(at.starts_with("5:"), "{text}");
+    // Followed: git shows the old file, whose line 5 is the removed type.
+    let shown = std::process::Command::new("git")
+        .args(["show", "HEAD:./idl/Lab.idl"])
+        .current_dir(d)
+        .output()
+        .expect("git");
+    let old = String::from_utf8_lossy(&shown.stdout);
+    assert_eq!(
+        old.lines().nth(4),
+        Some("  struct Gone { long b; };"),
+        "{old}"
+    );
+    // The other way round, the type is added on the NEW side, which is the revision.
+    let out = rtcdoc(&["diff", ".", "HEAD:."], d);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(text.contains("--> HEAD:./idl/Lab.idl:5:"), "{text}");
+}

@@ -358,7 +358,10 @@ pub fn write_human(
     out: &mut dyn WriteColor,
     diff: &Diff,
     verbosity: Verbosity,
+    revs: [&str; 2],
 ) -> std::io::Result<()> {
+    // A side read at a git revision names its files `REV:path`, as `git show` opens them.
+    let [old_rev, new_rev] = revs;
     let colour = |l: Level| match l {
         Level::Breaking => Color::Red,
         Level::Warning => Color::Yellow,
@@ -407,17 +410,23 @@ pub fn write_human(
             };
             if let Some((f, l)) = in_old {
                 out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
-                writeln!(out, "      --> {f}:{l}:{}", c.old_column.unwrap_or(1))?;
+                writeln!(
+                    out,
+                    "      --> {old_rev}{f}:{l}:{}",
+                    c.old_column.unwrap_or(1)
+                )?;
                 out.reset()?;
             } else if let Some(f) = &c.file {
                 out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
                 match c.line {
-                    Some(l) => writeln!(out, "      --> {f}:{l}:{}", c.column.unwrap_or(1))?,
-                    None => writeln!(out, "      --> {f}")?,
+                    Some(l) => {
+                        writeln!(out, "      --> {new_rev}{f}:{l}:{}", c.column.unwrap_or(1))?
+                    }
+                    None => writeln!(out, "      --> {new_rev}{f}")?,
                 }
                 out.reset()?;
             } else if let Some(f) = &c.old_file {
-                writeln!(out, "      (was {f})")?;
+                writeln!(out, "      (was {old_rev}{f})")?;
             }
         }
     }

@@ -22,6 +22,17 @@ pub enum Spec {
 }
 
 impl Spec {
+    /// What goes before a file of this side for a reader to open it: `REV:` for a revision
+    /// (`REV:./` when its path is relative to the current folder, as `git show` reads it),
+    /// nothing for a folder on disk.
+    pub fn file_prefix(&self) -> String {
+        match self {
+            Spec::Git { rev, path } if path.starts_with("./") => format!("{rev}:./"),
+            Spec::Git { rev, .. } => format!("{rev}:"),
+            Spec::Local(_) | Spec::Source(_) => String::new(),
+        }
+    }
+
     /// Reads a command-line argument: an existing path is local (so `C:\dir` and files with a
     /// `:` in their name work), else `REV:PATH` when it has a `:`, else a local path (which
     /// does not exist: [`load`] says so).
