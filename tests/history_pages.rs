@@ -499,3 +499,35 @@ fn a_backup_orders_among_commits_in_their_time_zone() {
         .unwrap_or_else(|| panic!("{md}"));
     assert!(commit < backup, "the 18:18 commit first:\n{md}");
 }
+
+/// A change's message quotes values as written: a description holding RTCBuilder's `<br/>`
+/// stays one code span in Markdown and Doxygen (it was broken into stray backticks).
+#[test]
+fn a_quoted_value_with_a_line_break_tag_stays_one_code_span() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    let v1 = history_repo::versions().remove(0).1;
+    let v2 = history_repo::edit(
+        &v1,
+        &[(
+            r#"rtc:name="Base""#,
+            r#"rtc:name="Base" rtc:description="line one&lt;br/&gt;line two""#,
+        )],
+    );
+    if !history_repo::commit_versions(&repo, vec![("one", v1), ("two", v2)]) {
+        println!("skipped: git not available");
+        return;
+    }
+    let site = dir.path().join("site");
+    build(&repo, &site, &[]);
+    let md = page(&site, "markdown/history/base.md");
+    assert!(md.contains("`line one<br/>line two`"), "{md}");
+    assert!(!md.contains("\\`"), "{md}");
+    let dox = page(&site, "doxygen/history/base.dox");
+    assert!(dox.contains("<tt>line one\\<br/\\>line two</tt>"), "{dox}");
+    let html = page(&site, "html/history/base.html");
+    assert!(
+        html.contains("<code>line one&lt;br/&gt;line two</code>"),
+        "{html}"
+    );
+}

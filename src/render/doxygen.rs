@@ -195,6 +195,12 @@ impl Markup for Dox {
     fn esc(s: &str) -> String {
         text(s)
     }
+    fn message(s: &str) -> String {
+        let line = s.replace(['\r', '\n'], " ");
+        let mut out = String::with_capacity(line.len() + 8);
+        push_escaped(line.trim(), &mut out, true);
+        out
+    }
     fn link(text_: &str, target: &str) -> String {
         refer(target, text_)
     }

@@ -77,7 +77,7 @@ fn history_item<M: Markup>(
                     M::esc(&c.severity_label),
                     M::esc(&c.code),
                     M::esc(&c.path),
-                    M::esc(&c.message),
+                    M::message(&c.message),
                 ]
             })
             .collect();
@@ -142,7 +142,7 @@ pub fn whats_new_page<M: Markup>(
                     M::esc(&r.change.severity_label),
                     M::esc(&r.change.code),
                     M::esc(&r.change.path),
-                    M::esc(&r.change.message)
+                    M::message(&r.change.message)
                 )
             })
             .collect();

@@ -108,6 +108,9 @@ pub trait Markup {
     const OUTPUT: Output;
     /// Escapes plain text for an inline position (a table cell, a heading).
     fn esc(s: &str) -> String;
+    /// Escapes a message of rtcdoc's (a change's): one line, its code spans (the values it
+    /// quotes) kept as written, without reading profile markup such as `<br/>` in them.
+    fn message(s: &str) -> String;
     /// A cross-reference with plain `text`; `target` (a URL or a label) is generated and safe.
     fn link(text: &str, target: &str) -> String;
     /// Bold text; `escaped` is already escaped.
