@@ -27,10 +27,7 @@ impl Lang {
     /// blank). Tests assert every key has both languages.
     pub fn t(self, key: &str) -> &'static str {
         match label_index(key) {
-            Some(i) => match self {
-                Lang::En => LABELS[i].1,
-                Lang::Ja => LABELS[i].2,
-            },
+            Some(i) => self.at(i),
             None => {
                 // A key that is no label is a bug of ours: tests fail on it; a release build
                 // shows `??` rather than stop.
@@ -43,13 +40,19 @@ impl Lang {
     /// `n` and the label `key`, or `key_one` where `n` is 1: `1 port pair`, `2 port pairs`.
     pub fn count(self, n: impl Into<u64>, key: &str) -> String {
         let n: u64 = n.into();
-        let one = format!("{key}_one");
-        let text = if n == 1 && label_index(&one).is_some() {
-            self.t(&one)
-        } else {
-            self.t(key)
-        };
+        let one = (n == 1)
+            .then(|| label_index(&format!("{key}_one")))
+            .flatten();
+        let text = one.map_or_else(|| self.t(key), |i| self.at(i));
         format!("{n} {text}")
+    }
+
+    /// The text of label `i` of [`LABELS`] in this language.
+    fn at(self, i: usize) -> &'static str {
+        match self {
+            Lang::En => LABELS[i].1,
+            Lang::Ja => LABELS[i].2,
+        }
     }
 
     /// All labels of this language as (key, text) pairs (for template contexts).

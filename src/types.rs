@@ -108,8 +108,7 @@ pub const OPENRTM_IDL_FILES: &[&str] = &[
 /// Whether the file at `path` (its name, any folder) is a copy of one of OpenRTM's own IDL
 /// files ([`OPENRTM_IDL_FILES`]).
 pub fn is_openrtm_idl_file(path: &str) -> bool {
-    let name = path.rsplit(['/', '\\']).next().unwrap_or(path);
-    OPENRTM_IDL_FILES.contains(&name)
+    OPENRTM_IDL_FILES.contains(&crate::idl::pp::file_name(path))
 }
 
 /// Whether `name` (any spelling) is one of the types of OpenRTM's own `RTC` module, which an

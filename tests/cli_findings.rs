@@ -374,24 +374,7 @@ fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
         );
     }
     // The first build's findings are printed before "serving at".
-    use std::io::{BufRead, BufReader};
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
-        .args(["serve", "in", "--port", "0"])
-        .current_dir(d)
-        .env("NO_COLOR", "1")
-        .stderr(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut lines = Vec::new();
-    let mut reader = BufReader::new(child.stderr.take().unwrap()).lines();
-    for line in reader.by_ref().map_while(Result::ok) {
-        let done = line.starts_with("serving at");
-        lines.push(line);
-        if done || lines.len() > 200 {
-            break;
-        }
-    }
+    let (mut child, reader, lines) = common::serve_until_ready(&["serve", "in", "--port", "0"], d);
     let text = lines.join("\n");
     assert!(
         text.contains("in/bad/RTC.xml:10:95: error[RTC303]"),

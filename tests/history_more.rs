@@ -622,26 +622,9 @@ fn command_after(err: &str, before: &str) -> Vec<String> {
 
 /// What `rtcdoc serve DIR` prints up to "serving at …" (then it is stopped).
 fn serve_first_lines(input: &Path) -> String {
-    use std::io::{BufRead, BufReader};
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
-        .args(["serve", "--port", "0"])
-        .arg(input)
-        .env("NO_COLOR", "1")
-        .stderr(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut lines = Vec::new();
-    for line in BufReader::new(child.stderr.take().unwrap())
-        .lines()
-        .map_while(Result::ok)
-    {
-        let done = line.starts_with("serving at");
-        lines.push(line);
-        if done || lines.len() > 200 {
-            break;
-        }
-    }
+    let input = input.to_string_lossy();
+    let (mut child, _, lines) =
+        common::serve_until_ready(&["serve", "--port", "0", &input], Path::new("."));
     let _ = child.kill();
     let _ = child.wait();
     lines.join("\n")

@@ -460,30 +460,22 @@ fn a_backup_orders_among_commits_in_their_time_zone() {
         return;
     }
     let v = history_repo::versions();
+    // `Base/RTC.xml` committed at `time` on 2017-04-27, +09:00.
+    let commit_at = |time: &str, subject: &str| {
+        let date = format!("2017-04-27 {time} +0900");
+        assert!(history_repo::git(&repo, &["add", "Base/RTC.xml"], &date));
+        assert!(history_repo::git(
+            &repo,
+            &["commit", "-q", "-m", subject],
+            &date
+        ));
+    };
     write(&repo, "Base/RTC.xml", &v[0].1);
-    assert!(history_repo::git(
-        &repo,
-        &["add", "-A"],
-        "2017-04-27 08:00:00 +0900"
-    ));
-    assert!(history_repo::git(
-        &repo,
-        &["commit", "-q", "-m", "morning"],
-        "2017-04-27 08:00:00 +0900"
-    ));
+    commit_at("08:00:00", "morning");
     // RTCBuilder saved version 2 at 12:43:18 local time (its backup), then version 4 was committed.
     write(&repo, "Base/RTC.xml20170427124318", &v[1].1);
     write(&repo, "Base/RTC.xml", &v[3].1);
-    assert!(history_repo::git(
-        &repo,
-        &["add", "Base/RTC.xml"],
-        "2017-04-27 18:18:45 +0900"
-    ));
-    assert!(history_repo::git(
-        &repo,
-        &["commit", "-q", "-m", "evening"],
-        "2017-04-27 18:18:45 +0900"
-    ));
+    commit_at("18:18:45", "evening");
     let site = dir.path().join("site");
     history_repo::build(
         &repo,

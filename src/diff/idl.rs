@@ -1403,10 +1403,7 @@ fn openrtm_copies(
         let mut c = super::change(
             codes::OPENRTM_IDL_COPY,
             shown.clone(),
-            format!(
-                "idlFiles/{}",
-                file.rsplit(['/', '\\']).next().unwrap_or(file)
-            ),
+            format!("idlFiles/{}", crate::idl::pp::file_name(file)),
             old_v,
             new_v,
             message,

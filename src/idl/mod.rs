@@ -36,7 +36,7 @@ mod doc;
 mod expr;
 mod lex;
 mod parse;
-mod pp;
+pub(crate) mod pp;
 
 pub use crate::model::idl::*;
 

@@ -56,7 +56,8 @@ pub(crate) fn normalize(path: &str) -> String {
     parts.join("/")
 }
 
-fn file_name(path: &str) -> &str {
+/// The file name of a path, with `/` or `\\` between folders.
+pub(crate) fn file_name(path: &str) -> &str {
     path.rsplit(['/', '\\']).next().unwrap_or(path)
 }
 

@@ -86,6 +86,36 @@ pub fn rtcdoc(args: &[&str], cwd: &Path) -> std::process::Output {
         .expect("run rtcdoc")
 }
 
+/// The standard error of a running `rtcdoc serve`, line by line.
+pub type ServeLines = std::io::Lines<std::io::BufReader<std::process::ChildStderr>>;
+
+/// `rtcdoc ARGS` (a `serve`) started in `cwd`, its standard error read up to the line
+/// "serving at …" (or 200 lines): the process, the rest of its standard error, the lines read.
+pub fn serve_until_ready(
+    args: &[&str],
+    cwd: &Path,
+) -> (std::process::Child, ServeLines, Vec<String>) {
+    use std::io::BufRead;
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(args)
+        .current_dir(cwd)
+        .env("NO_COLOR", "1")
+        .stderr(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .expect("start rtcdoc serve");
+    let mut reader = std::io::BufReader::new(child.stderr.take().expect("stderr")).lines();
+    let mut lines = Vec::new();
+    for line in reader.by_ref().map_while(Result::ok) {
+        let done = line.starts_with("serving at");
+        lines.push(line);
+        if done || lines.len() > 200 {
+            break;
+        }
+    }
+    (child, reader, lines)
+}
+
 /// `dir/in` holding copies of the hostile-input fixtures `xss.xml` and `xss.yaml`.
 pub fn hostile_input(dir: &Path) -> PathBuf {
     let input = dir.join("in");

@@ -212,7 +212,7 @@ fn entries_newest_first(cat: &Catalog) -> Vec<(ComponentIx, usize)> {
 /// names do not say: that of its commits (their author dates), else of its profile's dates.
 fn local_offset(c: &crate::catalog::Component) -> Option<&str> {
     fn offset(d: &str) -> Option<&str> {
-        d.trim().get(19..25).filter(|o| o.starts_with(['+', '-']))
+        zone_of(d.trim())
     }
     c.history
         .iter()
@@ -225,6 +225,11 @@ fn local_offset(c: &crate::catalog::Component) -> Option<&str> {
                 .into_iter()
                 .find_map(|d| d.as_deref().and_then(offset))
         })
+}
+
+/// The UTC offset (`+09:00`) a trimmed ISO 8601 date ends with, if any.
+fn zone_of(d: &str) -> Option<&str> {
+    d.get(19..25).filter(|o| o.starts_with(['+', '-']))
 }
 
 /// An entry's date with a time zone where it has none (a backup's, `YYYY-MM-DD hh:mm:ss` in
@@ -356,8 +361,7 @@ pub struct FeedEntry<'a> {
 pub fn rfc3339(date: &str) -> Option<String> {
     instant(date)?;
     let d = date.trim();
-    let offset = d.get(19..25).filter(|o| o.starts_with(['+', '-']));
-    Some(if let Some(o) = offset {
+    Some(if let Some(o) = zone_of(d) {
         format!("{}T{}{o}", &d[..10], &d[11..19])
     } else if d.len() >= 19 {
         format!("{}T{}Z", &d[..10], &d[11..19])
