@@ -108,7 +108,9 @@ pub const OPENRTM_IDL_FILES: &[&str] = &[
 /// Whether the file at `path` (its name, any folder) is a copy of one of OpenRTM's own IDL
 /// files ([`OPENRTM_IDL_FILES`]).
 pub fn is_openrtm_idl_file(path: &str) -> bool {
-    OPENRTM_IDL_FILES.contains(&crate::idl::pp::file_name(path))
+    // Not `idl::pp::file_name`: `types` stays below `idl` (no import circle).
+    let name = path.rsplit(['/', '\\']).next().unwrap_or(path);
+    OPENRTM_IDL_FILES.contains(&name)
 }
 
 /// Whether `name` (any spelling) is one of the types of OpenRTM's own `RTC` module, which an
