@@ -816,6 +816,66 @@ pub struct Catalog {
     type_index: HashMap<String, DataTypeIx>,
     #[serde(skip)]
     interface_index: HashMap<String, InterfaceIx>,
+    /// How many components each type's producers and consumers (providers and requirers)
+    /// name ([`Catalog::index_peers`]).
+    #[serde(skip)]
+    peer_runs: PeerRuns,
+}
+
+/// For each data type and interface, for its two directions: the length of the list of uses
+/// and how many components the list names, when it is sorted by component (as the catalogue
+/// makes it); `None` otherwise, and a list whose length no longer matches is counted again.
+#[derive(Debug, Clone, Default)]
+struct PeerRuns {
+    data: Vec<[Counted; 2]>,
+    interfaces: Vec<[Counted; 2]>,
+}
+
+/// The length of a list of uses, and how many components it names when it is sorted.
+type Counted = (usize, Option<usize>);
+
+/// The uses of a type that a port connects to ([`Catalog::data_port_peers`]), in catalogue
+/// order (so grouped by component), and how many components they name when the catalogue
+/// knows it: then a port's peers are found without walking a popular type's whole list.
+#[derive(Debug)]
+pub struct PeerRefs<'a, R> {
+    pub refs: &'a [R],
+    pub components: Option<usize>,
+}
+
+impl<R> Clone for PeerRefs<'_, R> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<R> Copy for PeerRefs<'_, R> {}
+
+impl<'a, R> PeerRefs<'a, R> {
+    /// References whose components are not counted (every one is looked at).
+    pub fn uncounted(refs: &'a [R]) -> Self {
+        PeerRefs {
+            refs,
+            components: None,
+        }
+    }
+}
+
+/// How many components `refs` name, when they are sorted by component (each component's
+/// references together) and every one resolves; `None` otherwise.
+fn component_runs<R>(refs: &[R], component: impl Fn(&R) -> Option<ComponentIx>) -> Option<usize> {
+    let mut runs = 0;
+    let mut last = None;
+    for r in refs {
+        let c = component(r)?;
+        match last {
+            Some(l) if c < l => return None,
+            Some(l) if c == l => {}
+            _ => runs += 1,
+        }
+        last = Some(c);
+    }
+    Some(runs)
 }
 
 /// What a page documents.
@@ -1163,10 +1223,20 @@ fn interface_slot(i: &ServiceInterface) -> usize {
 
 /// The uses of type `t` that a use in slot `slot` connects to: those of the other direction
 /// (none for the others, or when the catalogue does not have the type).
-fn peers<U: Uses>(t: Option<&TypeEntry<U>>, slot: usize) -> &[U::Ref] {
+fn peers<'a, U: Uses>(
+    t: Option<(&'a TypeEntry<U>, &[Counted; 2])>,
+    slot: usize,
+) -> PeerRefs<'a, U::Ref> {
     match (t, slot) {
-        (Some(t), 0 | 1) => t.uses.by_role()[1 - slot].1,
-        _ => &[],
+        (Some((t, runs)), 0 | 1) => {
+            let refs = t.uses.by_role()[1 - slot].1;
+            let (len, components) = runs[1 - slot];
+            PeerRefs {
+                refs,
+                components: components.filter(|_| len == refs.len()),
+            }
+        }
+        _ => PeerRefs::uncounted(&[]),
     }
 }
 
@@ -1493,8 +1563,10 @@ impl Catalog {
             history_notes: Vec::new(),
             type_index,
             interface_index,
+            peer_runs: PeerRuns::default(),
         };
         catalog.index_pages();
+        catalog.index_peers();
         catalog
     }
 
@@ -1987,6 +2059,7 @@ impl Catalog {
         }
         self.type_index = handle_map(&self.data_types, |t| t.name.clone());
         self.index_pages();
+        self.index_peers();
     }
 
     /// The data type entry for any spelling of a type name.
@@ -2011,10 +2084,16 @@ impl Catalog {
 
     /// Ports of other components that can connect to data port `port` of `component`:
     /// out → in ports of the same type, in → out ports of the same type.
-    pub fn data_port_peers(&self, component: ComponentIx, port: usize) -> &[PortRef] {
+    pub fn data_port_peers(&self, component: ComponentIx, port: usize) -> PeerRefs<'_, PortRef> {
         let p = &self[component].profile.data_ports[port];
+        let t = p.type_.as_deref().and_then(|t| self.data_type_index(t));
         peers(
-            p.type_.as_deref().and_then(|t| self.data_type(t)),
+            t.and_then(|t| {
+                Some((
+                    self.data_types.get(t.get())?,
+                    self.peer_runs.data.get(t.get())?,
+                ))
+            }),
             port_slot(p),
         )
     }
@@ -2026,12 +2105,43 @@ impl Catalog {
         component: ComponentIx,
         port: usize,
         interface: usize,
-    ) -> &[InterfaceRef] {
+    ) -> PeerRefs<'_, InterfaceRef> {
         let i = &self[component].profile.service_ports[port].interfaces[interface];
+        let t = i.type_.as_deref().and_then(|t| self.interface_index_of(t));
         peers(
-            i.type_.as_deref().and_then(|t| self.interface(t)),
+            t.and_then(|t| {
+                Some((
+                    self.interfaces.get(t.get())?,
+                    self.peer_runs.interfaces.get(t.get())?,
+                ))
+            }),
             interface_slot(i),
         )
+    }
+
+    /// Counts the components of each type's two directions of uses ([`PeerRuns`]), for
+    /// [`Catalog::data_port_peers`] and [`Catalog::interface_peers`].
+    fn index_peers(&mut self) {
+        fn counted<R>(refs: &[R], component: impl Fn(&R) -> Option<ComponentIx>) -> Counted {
+            (refs.len(), component_runs(refs, component))
+        }
+        let data = self
+            .data_types
+            .iter()
+            .map(|t| {
+                let [(_, a), (_, b), _] = t.uses.by_role();
+                [a, b].map(|refs| counted(refs, |r| self.port_component(r)))
+            })
+            .collect();
+        let interfaces = self
+            .interfaces
+            .iter()
+            .map(|t| {
+                let [(_, a), (_, b), _] = t.uses.by_role();
+                [a, b].map(|refs| counted(refs, |r| self.interface_component(r)))
+            })
+            .collect();
+        self.peer_runs = PeerRuns { data, interfaces };
     }
 
     /// What the catalogue documents, for a summary line: `83 component profiles, 1 RT System

@@ -254,6 +254,7 @@ fn every_port_links_to_its_type_or_interface_page_and_peers() {
             // PEER_COMPONENTS_CAP components.
             let mut firsts = cat
                 .data_port_peers(ci, pi)
+                .refs
                 .iter()
                 .filter(|r| r.component != c.id)
                 .collect::<Vec<_>>();

@@ -7,7 +7,7 @@
 //! without saying so. Every component page asks, so it costs one pass over each port's peer
 //! list and no lookup by name.
 
-use super::{Catalog, ComponentIx, Ix, TypeIx};
+use super::{Catalog, ComponentIx, Ix, PeerRefs, TypeIx};
 use crate::model::{Direction, PortDirection};
 
 /// At most this many peer components are named per port, in every output: in a port's
@@ -18,32 +18,42 @@ pub const PEER_COMPONENTS_CAP: usize = 5;
 /// The peers of a port of component `ci` as every output shows them: the ports of *other*
 /// components (`all`, in catalogue order, so sorted by component) grouped by component, and
 /// the number of groups (components) in all. A component's own ports are never its peers.
-pub fn peer_groups<R>(
+pub fn peer_groups<'a, R>(
     ci: ComponentIx,
-    all: &[R],
+    all: PeerRefs<'a, R>,
     component: impl Fn(&R) -> ComponentIx,
-) -> (Vec<(ComponentIx, Vec<&R>)>, usize) {
+) -> (Vec<(ComponentIx, Vec<&'a R>)>, usize) {
     capped_groups(ci, all, PEER_COMPONENTS_CAP, component)
 }
 
 /// [`peer_groups`] with at most `cap` groups collected.
-fn capped_groups<R>(
+fn capped_groups<'a, R>(
     ci: ComponentIx,
-    all: &[R],
+    all: PeerRefs<'a, R>,
     cap: usize,
     component: impl Fn(&R) -> ComponentIx,
-) -> (Vec<(ComponentIx, Vec<&R>)>, usize) {
+) -> (Vec<(ComponentIx, Vec<&'a R>)>, usize) {
     // Only the groups shown are collected; the others are counted (a popular type's list holds
-    // thousands of references, and every one of its ports asks).
-    let mut groups: Vec<(ComponentIx, Vec<&R>)> = Vec::new();
+    // thousands of references, and every one of its ports asks). When the catalogue knows how
+    // many components the list names, the walk stops after the groups shown: the component's
+    // own references are one run of the sorted list, found by bisection.
+    let known = all.components.map(|runs| {
+        let at = all.refs.partition_point(|r| component(r) < ci);
+        let own = all.refs.get(at).is_some_and(|r| component(r) == ci);
+        runs - usize::from(own)
+    });
+    let mut groups: Vec<(ComponentIx, Vec<&'a R>)> = Vec::new();
     let mut total = 0;
     let mut last = None;
-    for r in all {
+    for r in all.refs {
         let c = component(r);
         if c == ci {
             continue;
         }
         if last != Some(c) {
+            if known.is_some() && total == cap {
+                break;
+            }
             last = Some(c);
             total += 1;
             if total <= cap {
@@ -56,7 +66,7 @@ fn capped_groups<R>(
             }
         }
     }
-    (groups, total)
+    (groups, known.unwrap_or(total))
 }
 
 /// A port of a component: a data port, or an interface of a service port (indices into the
@@ -135,7 +145,7 @@ impl Neighbourhood {
 
 /// [`capped_groups`] as neighbours, each with its ports (`at`: where a reference is).
 fn neighbours<R>(
-    (ci, all, cap): (ComponentIx, &[R], usize),
+    (ci, all, cap): (ComponentIx, PeerRefs<'_, R>, usize),
     component: impl Fn(&R) -> ComponentIx,
     at: impl Fn(&R) -> Option<PortAt>,
 ) -> (Vec<Neighbour>, usize) {
@@ -213,7 +223,7 @@ impl Catalog {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::catalog::LoadedProfile;
+    use crate::catalog::{InterfaceRef, LoadedProfile, PortRef};
 
     fn profile(name: &str, ports: &[(&str, &str)], services: &[(&str, &str)]) -> LoadedProfile {
         crate::catalog::tests::xml_profile(name, "C", ports, services)
@@ -286,5 +296,60 @@ mod tests {
             Vec::new(),
         );
         assert!(lonely.neighbourhood(Ix::new(0), 5).is_empty());
+    }
+
+    /// The counted path (the catalogue knows how many components a list names, the walk stops
+    /// after the groups shown) gives what walking the whole list gives, for every port, at
+    /// every cap, with the component anywhere in the list (first, middle, last, absent).
+    #[test]
+    fn counted_peers_are_the_walked_ones() {
+        let mut loaded = Vec::new();
+        for k in 0..12 {
+            let mut ports = vec![("DataInPort", "RTC::TimedLong")];
+            if k % 3 == 0 {
+                ports.push(("DataOutPort", "RTC::TimedLong"));
+                ports.push(("DataOutPort", "RTC::TimedLong"));
+            }
+            if k % 4 == 1 {
+                ports.push(("DataOutPort", "RTC::TimedLong"));
+            }
+            let services: &[(&str, &str)] = match k % 3 {
+                0 => &[("Provided", "Map"), ("Required", "Map")],
+                1 => &[("Required", "Map")],
+                _ => &[("Provided", "Map")],
+            };
+            loaded.push(profile(&format!("C{k:02}"), &ports, services));
+        }
+        let cat = Catalog::build(loaded, Vec::new());
+        let mut counted = 0;
+        for (ci, c) in Ix::enumerate(&cat.components) {
+            for pi in 0..c.profile.data_ports.len() {
+                let refs = cat.data_port_peers(ci, pi);
+                counted += usize::from(refs.components.is_some());
+                for cap in [0, 1, 2, 5, 20] {
+                    let f = |r: &PortRef| cat.port_component(r).unwrap_or(Ix::NONE);
+                    assert_eq!(
+                        capped_groups(ci, refs, cap, f),
+                        capped_groups(ci, PeerRefs::uncounted(refs.refs), cap, f),
+                        "{} port {pi}, cap {cap}",
+                        c.profile.name()
+                    );
+                }
+            }
+            for (si, sp) in c.profile.service_ports.iter().enumerate() {
+                for ii in 0..sp.interfaces.len() {
+                    let refs = cat.interface_peers(ci, si, ii);
+                    counted += usize::from(refs.components.is_some());
+                    for cap in [0, 1, 3, 20] {
+                        let f = |r: &InterfaceRef| cat.interface_component(r).unwrap_or(Ix::NONE);
+                        assert_eq!(
+                            capped_groups(ci, refs, cap, f),
+                            capped_groups(ci, PeerRefs::uncounted(refs.refs), cap, f),
+                        );
+                    }
+                }
+            }
+        }
+        assert!(counted > 20, "the counted path was taken {counted} times");
     }
 }

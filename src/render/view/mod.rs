@@ -75,7 +75,7 @@ impl<'a> Peers<'a> {
     #[allow(clippy::too_many_arguments)]
     pub fn of<R>(
         ci: ComponentIx,
-        refs: &'a [R],
+        refs: crate::catalog::PeerRefs<'a, R>,
         component: impl Fn(&R) -> ComponentIx,
         resolve: impl Fn(&R) -> Option<(ComponentIx, String, &'a str)>,
         cat: &'a Catalog,
