@@ -992,7 +992,12 @@ fn order_by_barycentres(g: &mut Graph<'_>) {
     let mut best = g.order.clone();
     let mut best_ports = g.port_order.clone();
     let mut best_n = crossings(g);
+    // Once an order without crossings is found no later round can be kept (each must be
+    // strictly better), so the rounds stop there: the same order is kept either way.
     for round in 0..12 {
+        if best_n == 0 {
+            break;
+        }
         let down = round % 2 == 0;
         let seq: Vec<usize> = if down {
             (1..g.layers).collect()
