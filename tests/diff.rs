@@ -1422,6 +1422,52 @@ fn a_removed_port_points_at_the_port_in_the_old_file() {
     assert!(text.contains("--> old/Base/RTC.xml:8:3"), "{text}");
 }
 
+/// A removed configuration parameter too: the human report points at it in OLD's file,
+/// although the JSON also gives NEW's configuration set as `line` (an annotation of NEW's file
+/// needs one there).
+#[test]
+fn a_removed_parameter_points_at_the_parameter_in_the_old_file() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    let profile = |params: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?>
+<rtc:RtcProfile rtc:version="0.2" rtc:id="RTC:V:C:T:1.0.0" xmlns:rtc="http://www.openrtp.org/namespaces/rtc">
+  <rtc:BasicInfo rtc:name="T" rtc:vendor="V" rtc:category="C" rtc:version="1.0.0"/>
+  <rtc:ConfigurationSet>
+    <rtc:Configuration rtc:defaultValue="0" rtc:type="int" rtc:name="keep"/>{params}
+  </rtc:ConfigurationSet>
+</rtc:RtcProfile>
+"#
+        )
+    };
+    write(
+        d,
+        "old/T/RTC.xml",
+        &profile("\n    <rtc:Configuration rtc:defaultValue=\"0\" rtc:type=\"short\" rtc:name=\"gone\"/>"),
+    );
+    write(d, "new/T/RTC.xml", &profile(""));
+    let out = rtcdoc(&["diff", "old", "new", "--format", "json"], d);
+    let json: Value = serde_json::from_slice(&out.stdout).expect("json");
+    let c = changes(&json)
+        .into_iter()
+        .find(|c| c["code"] == "DIFF109")
+        .expect("DIFF109");
+    assert_eq!(
+        (
+            c["oldLine"].as_u64(),
+            c["oldColumn"].as_u64(),
+            c["line"].as_u64()
+        ),
+        (Some(6), Some(5), Some(4)),
+        "{c:#}"
+    );
+    let out = rtcdoc(&["diff", "old", "new"], d);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(text.contains("--> old/T/RTC.xml:6:5"), "{text}");
+    assert!(!text.contains("--> new/T/RTC.xml:4"), "{text}");
+}
+
 /// Documentation left blank is documentation left out: RTCBuilder writes an empty
 /// `rtcDoc:Doc` (every attribute `""`) where other versions of it write none, which is no
 /// change; filling the description in still is one.

@@ -405,7 +405,7 @@ pub fn write_human(
             }
             // An item that exists only in OLD is shown where it is there.
             let in_old = match (&c.old_file, c.old_line) {
-                (Some(f), Some(l)) if c.line.is_none() => Some((f, l)),
+                (Some(f), Some(l)) => Some((f, l)),
                 _ => None,
             };
             if let Some((f, l)) = in_old {
