@@ -1500,6 +1500,24 @@ fn blank_documentation_and_none_are_the_same() {
     );
 }
 
+/// A `Language` element without targets adds a language kind, not an empty list of targets
+/// (an empty list is no list).
+#[test]
+fn a_language_without_targets_adds_only_its_kind() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let lang = r#"  <rtc:Language xsi:type="rtcExt:language_ext" rtc:kind="C++"/>
+"#;
+    assert!(BASE.contains(lang), "the fixture has a Language element");
+    write(dir.path(), "old/RTC.xml", &BASE.replace(lang, ""));
+    write(dir.path(), "new/RTC.xml", BASE);
+    let (_, json) = run_diff(dir.path(), &["--fail-on", "never"]);
+    let found: Vec<(&str, &str)> = changes(&json)
+        .iter()
+        .map(|c| (c["code"].as_str().unwrap(), c["path"].as_str().unwrap()))
+        .collect();
+    assert_eq!(found, [("DIFF308", "language/kind")], "{json:#}");
+}
+
 /// A catalog.json against the directory it was built from is no change, and says nothing
 /// else either: a profile with a check rule's error was read (it is no "could not be read"
 /// warning), and the host data the JSON leaves out is neither reported as added nor printed.

@@ -820,7 +820,9 @@ fn walk<'a>(
 ) {
     match (o, n) {
         (Node::Leaf(a), Node::Leaf(b)) => {
-            if a != b {
+            // An empty list is no list: a `Language` element without targets adds no targets.
+            let absent = |v: &Value| v.is_null() || v.as_array().is_some_and(Vec::is_empty);
+            if a != b && !(absent(a) && absent(b)) {
                 out.push(Found {
                     path: path.clone(),
                     raw: Raw::Changed(a.clone(), b.clone()),
