@@ -1518,6 +1518,72 @@ fn a_language_without_targets_adds_only_its_kind() {
     assert_eq!(found, [("DIFF308", "language/kind")], "{json:#}");
 }
 
+/// An RT System of two instances and one connector between their ports `p` (`kind`:
+/// `Data` or `Service`; `id`: the connector id attribute or ""), its ends in the order given.
+fn two_instance_system(kind: &str, id: &str, ends: [(&str, &str); 2]) -> String {
+    let end = |side: &str, (inst, port): (&str, &str)| {
+        format!(
+            r#"    <rts:{side}{kind}Port rts:portName="{inst}.{port}" rts:instanceName="{inst}" rts:componentId="RTC:Me:Cat:{inst}:1.0"/>
+"#
+        )
+    };
+    let instance = |inst: &str| {
+        format!(
+            r#"  <rts:Components rts:instanceName="{inst}" rts:id="RTC:Me:Cat:{inst}:1.0" rts:compositeType="None" rts:isRequired="true">
+    <rts:{kind}Ports rts:name="{inst}.p"/>
+    <rts:{kind}Ports rts:name="{inst}.q"/>
+  </rts:Components>
+"#
+        )
+    };
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<rts:RtsProfile rts:version="0.2" rts:id="RTSystem:Me:Sys:1.0" xmlns:rts="http://www.openrtp.org/namespaces/rts">
+{}{}{}  <rts:{kind}PortConnectors rts:name="conn" {id}>
+{}{}  </rts:{kind}PortConnectors>
+</rts:RtsProfile>
+"#,
+        instance("A0"),
+        instance("B0"),
+        instance("C0"),
+        end("source", ends[0]),
+        end("target", ends[1]),
+    )
+}
+
+/// A connector between the same two ports with its ends listed the other way round is the same
+/// connection (OpenRTM connects two ports whichever comes first): no change, with a connector
+/// id or without (then it is paired by its ends); other ports are still DIFF155, naming the
+/// port no longer connected.
+#[test]
+fn a_connector_with_its_ends_swapped_is_the_same_connection() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    for kind in ["Data", "Service"] {
+        for id in [r#"rts:connectorId="c1""#, ""] {
+            let old = two_instance_system(kind, id, [("A0", "p"), ("B0", "p")]);
+            let new = two_instance_system(kind, id, [("B0", "p"), ("A0", "p")]);
+            write(dir.path(), "old/Sys.xml", &old);
+            write(dir.path(), "new/Sys.xml", &new);
+            let (exit, json) = run_diff(dir.path(), &["--fail-on", "info"]);
+            assert!(changes(&json).is_empty(), "{kind} {id}: {json:#}");
+            assert_eq!(exit, 0, "{kind} {id}");
+        }
+        let old = two_instance_system(kind, "rts:connectorId=\"c1\"", [("A0", "p"), ("B0", "p")]);
+        let new = two_instance_system(kind, "rts:connectorId=\"c1\"", [("C0", "p"), ("A0", "p")]);
+        write(dir.path(), "old/Sys.xml", &old);
+        write(dir.path(), "new/Sys.xml", &new);
+        let (_, json) = run_diff(dir.path(), &["--fail-on", "never"]);
+        let found = changes(&json);
+        assert_eq!(found.len(), 1, "{json:#}");
+        assert_eq!(found[0]["code"], "DIFF155", "{json:#}");
+        let message = found[0]["message"].as_str().unwrap_or_default();
+        assert!(
+            message.ends_with("instead of `A0.p` → `B0.p`: `B0.p` is no longer connected by it"),
+            "{message}"
+        );
+    }
+}
+
 /// A catalog.json against the directory it was built from is no change, and says nothing
 /// else either: a profile with a check rule's error was read (it is no "could not be read"
 /// warning), and the host data the JSON leaves out is neither reported as added nor printed.

@@ -344,7 +344,7 @@ pub static CODES: &[Code] = &[
         level: Breaking,
         name: "system-connector-ends-changed",
         summary: "a connector of an RT System now joins other ports",
-        explanation: "The connector (matched by its id) now starts or ends at another instance or port: the port it left stops receiving (or providing), and the port it reaches gets data or calls it did not get before. The message names both ends before and after.",
+        explanation: "The connector (matched by its id) now starts or ends at another instance or port: the port it left stops receiving (or providing), and the port it reaches gets data or calls it did not get before. The message names both ends before and after, and the ports no longer connected. The same two ports listed the other way round (source and target swapped) are no change: OpenRTM connects two ports whichever comes first, and a data connector's direction comes from the ports' types.",
     },
     Code {
         code: SYSTEM_CONNECTOR_DATA_TYPE,

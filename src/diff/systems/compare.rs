@@ -216,9 +216,30 @@ fn end_key(end: Option<&PortEnd>) -> (String, String) {
     (instance, port)
 }
 
+/// The key that pairs connectors by their ends: the two ports in either order (OpenRTM
+/// connects the same two ports whichever is listed first; a data connector's direction comes
+/// from the ports' types).
 fn ends_key(source: Option<&PortEnd>, target: Option<&PortEnd>) -> Option<String> {
     let (a, b) = (end_key(source), end_key(target));
-    (!(a.1.is_empty() && b.1.is_empty())).then(|| format!("{}.{} > {}.{}", a.0, a.1, b.0, b.1))
+    if a.1.is_empty() && b.1.is_empty() {
+        return None;
+    }
+    let (a, b) = (format!("{}.{}", a.0, a.1), format!("{}.{}", b.0, b.1));
+    Some(if a <= b {
+        format!("{a} > {b}")
+    } else {
+        format!("{b} > {a}")
+    })
+}
+
+/// How a matched connector's ends compare.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum EndsAre {
+    Same,
+    /// The same two ports, listed the other way round: the same connection.
+    Swapped,
+    /// Other ports (reported as DIFF155).
+    Changed,
 }
 
 /// The component key (vendor, category, name; any case and spacing) and version of an id.
@@ -740,7 +761,7 @@ impl Cx<'_> {
     fn data_connector(&mut self, label: &str, a: &DataPortConnector, b: &DataPortConnector) {
         let base = format!("dataPortConnectors/{label}");
         let at = At::New(b.pos);
-        let ends_changed = self.ends("data port connector", &base, label, a, b);
+        let ends = self.ends("data port connector", &base, label, a, b);
         let mut reported: BTreeSet<&str> = BTreeSet::new();
         // The data type, by meaning.
         if a.data_type != b.data_type {
@@ -852,7 +873,7 @@ impl Cx<'_> {
                     "properties",
                 ],
             );
-            strip_ends(&mut v, ends_changed);
+            strip_ends(&mut v, ends);
             v
         };
         self.other(&base, rest(a), rest(b), b.pos);
@@ -881,41 +902,45 @@ impl Cx<'_> {
         );
     }
 
-    /// DIFF155 when a matched connector joins other ports; whether it does.
-    fn ends<C: Connector>(&mut self, kind: &str, base: &str, label: &str, a: &C, b: &C) -> bool {
+    /// DIFF155 when a matched connector joins other ports; how its ends compare.
+    fn ends<C: Connector>(&mut self, kind: &str, base: &str, label: &str, a: &C, b: &C) -> EndsAre {
         let ((os, ot), (ns, nt), at) = (a.ends(), b.ends(), b.pos());
         if end_key(os) == end_key(ns) && end_key(ot) == end_key(nt) {
-            return false;
+            return EndsAre::Same;
+        }
+        if end_key(os) == end_key(nt) && end_key(ot) == end_key(ns) {
+            return EndsAre::Swapped;
         }
         let (was, now) = (
             format!("{} to {}", end_text(os), end_text(ot)),
             format!("{} to {}", end_text(ns), end_text(nt)),
         );
         let mut left = Vec::new();
-        if end_key(os) != end_key(ns) {
+        if end_key(os) != end_key(ns) && end_key(os) != end_key(nt) {
             left.push(end_text(os));
         }
-        if end_key(ot) != end_key(nt) {
+        if end_key(ot) != end_key(nt) && end_key(ot) != end_key(ns) {
             left.push(end_text(ot));
         }
+        let left = match left.as_slice() {
+            [one] => format!(": `{one}` is no longer connected by it"),
+            [one, two] => format!(": `{one}` and `{two}` are no longer connected by it"),
+            _ => String::new(),
+        };
         self.push(
             codes::SYSTEM_CONNECTOR_ENDS,
             base.to_string(),
             (Some(was.clone()), Some(now.clone())),
             format!(
-                "{kind} `{label}` now connects `{}` → `{}` instead of `{}` → `{}`: {} no longer connected by it",
+                "{kind} `{label}` now connects `{}` → `{}` instead of `{}` → `{}`{left}",
                 end_text(ns),
                 end_text(nt),
                 end_text(os),
                 end_text(ot),
-                left.iter()
-                    .map(|l| format!("`{l}` is"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
             ),
             At::New(at),
         );
-        true
+        EndsAre::Changed
     }
 
     fn connector_properties(
@@ -1018,9 +1043,31 @@ fn real_sets(c: &SystemComponent) -> Vec<(String, &SystemConfigurationSet)> {
 
 /// Removes the instance names (and, when they changed, the ports) from the `source` and
 /// `target` ends of a connector's JSON.
-fn strip_ends(v: &mut Value, ends_changed: bool) {
+fn strip_ends(v: &mut Value, ends: EndsAre) {
+    // The same two ports listed the other way round are compared in one order.
+    if ends == EndsAre::Swapped {
+        if let Some(m) = v.as_object_mut() {
+            let key = |e: Option<&Value>| {
+                ["instanceName", "portName"].map(|k| {
+                    e.and_then(|e| e.get(k))
+                        .and_then(Value::as_str)
+                        .unwrap_or("")
+                        .to_string()
+                })
+            };
+            if key(m.get("source")) > key(m.get("target")) {
+                let (s, t) = (m.remove("source"), m.remove("target"));
+                if let Some(t) = t {
+                    m.insert("source".into(), t);
+                }
+                if let Some(s) = s {
+                    m.insert("target".into(), s);
+                }
+            }
+        }
+    }
     // Ends reported as changed are not reported again among the rest.
-    let keys: &[&str] = if ends_changed {
+    let keys: &[&str] = if ends == EndsAre::Changed {
         &["instanceName", "portName", "componentId"]
     } else {
         &["instanceName"]
