@@ -137,3 +137,51 @@ fn the_size_hint_works_when_followed() {
     let err = String::from_utf8_lossy(&o.stderr).into_owned();
     assert!(o.status.success() && !err.contains("RTC002"), "{err}");
 }
+
+/// Following RTC404's hint works: the file it names defines the type, and an `idlFile` that
+/// names it is neither RTC404 nor RTC405.
+#[test]
+fn the_idl_file_hint_works_when_followed() {
+    let dir = tempfile::tempdir().unwrap();
+    let fixture =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/check/RTC404-bad");
+    let profile = std::fs::read_to_string(fixture.join("A.xml")).unwrap();
+    write(dir.path(), "in/A.xml", &profile);
+    write(
+        dir.path(),
+        "in/idl/Lab.idl",
+        &std::fs::read_to_string(fixture.join("idl/Lab.idl")).unwrap(),
+    );
+    let codes_and_hints = |d: &std::path::Path| -> Vec<(String, String)> {
+        let o = rtcdoc(&["check", "in", "--format", "json"], d);
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+        json["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .filter(|d| matches!(d["code"].as_str(), Some("RTC404" | "RTC405")))
+            .map(|d| {
+                let s = |k: &str| d[k].as_str().unwrap_or_default().to_string();
+                (s("code"), s("hint"))
+            })
+            .collect()
+    };
+    let found = codes_and_hints(dir.path());
+    assert_eq!(found.len(), 1, "{found:?}");
+    let hint = &found[0].1;
+    let named = hint
+        .strip_prefix("make `idlFile` name `")
+        .and_then(|h| h.split_once('`'))
+        .map(|(n, _)| n)
+        .unwrap_or_else(|| panic!("the hint names a file: {hint}"));
+    assert_eq!(named, "Lab.idl", "{hint}");
+    write(
+        dir.path(),
+        "in/A.xml",
+        &profile.replace(
+            "/home/me/idl/LabTypes.idl",
+            &format!("/home/me/idl/{named}"),
+        ),
+    );
+    assert_eq!(codes_and_hints(dir.path()), Vec::new());
+}

@@ -580,9 +580,9 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "idl-file-not-found",
         summary: "a port's idlFile names no IDL file that was read",
-        explanation: "`idlFile` is usually an absolute path on the author's machine, so it is matched by file name among the IDL files read (below the input and on the IDL path). When IDL files were read but none has that name, the port's type cannot be checked against its declared file. Not reported when no IDL was read at all.",
+        explanation: "`idlFile` is usually an absolute path on the author's machine, so it is matched by file name among the IDL files read (below the input and on the IDL path). When the port's type was read from another file but no file of the named one's name was read, the `idlFile` is either misnamed (code generated from the profile includes the named file) or names a file that was not given: the message names the file that defines the type. A type no IDL file read defines is RTC403 instead. Not reported when no IDL was read at all.",
         spec: "2.3.9 (dataPort idlFile), 2.3.11 (serviceInterface idlFile)",
-        hint: "add the IDL file below the input or pass `--idl-path DIR`, or correct the `idlFile` name",
+        hint: "set `idlFile` to the file that defines the type (the message names it), or add the named IDL file below the input or pass `--idl-path DIR`",
     },
     Rule {
         code: IDL_FILE_MISMATCH,

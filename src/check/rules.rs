@@ -1039,11 +1039,12 @@ fn documentation(p: &Profile, s: &mut Findings) {
 
 /// The file name of an IDL path, for comparison (`C:\…\BasicDataType.idl` → `basicdatatype.idl`).
 fn idl_file_name(path: &str) -> String {
-    path.trim()
-        .rsplit(['/', '\\'])
-        .next()
-        .unwrap_or("")
-        .to_ascii_lowercase()
+    shown_file_name(path).to_ascii_lowercase()
+}
+
+/// The file name of an IDL path as written (`C:\…\BasicDataType.idl` → `BasicDataType.idl`).
+fn shown_file_name(path: &str) -> &str {
+    path.trim().rsplit(['/', '\\']).next().unwrap_or("")
 }
 
 /// RTC403–RTC406: port types against the IDL read.
@@ -1107,14 +1108,22 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         } else if let Some(f) = idl_file.as_deref() {
             let wanted = idl_file_name(f);
             if !idl_names.contains(&wanted) {
+                // The type was read from another file: name it, as the first thing to try.
+                let (defined_in, named) =
+                    (shown_file_name(&found[0].file.path), shown_file_name(f));
                 s.emit(
                     r::IDL_FILE_NOT_FOUND,
                     *pos,
                     format!(
-                        "idlFile `{}` of `{port}` names no IDL file that was read",
+                        "idlFile `{}` of `{port}` names no IDL file that was read; `{name}` is defined in `{defined_in}`",
                         f.trim()
                     ),
                 );
+                if let Some(d) = s.out.last_mut() {
+                    d.hint = Some(format!(
+                        "make `idlFile` name `{defined_in}` (the file that defines `{name}`), or add `{named}` below the input or pass `--idl-path DIR`"
+                    ));
+                }
             } else if !found.iter().any(|i| idl_file_name(&i.file.path) == wanted) {
                 s.emit(
                     r::IDL_FILE_MISMATCH,
