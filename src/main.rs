@@ -161,7 +161,8 @@ struct SiteArgs {
     /// Theme directory overriding built-in templates and assets file by file.
     #[arg(long, value_name = "DIR")]
     theme: Option<PathBuf>,
-    /// Language of generated labels (profile text is shown as written).
+    /// Language of generated labels (profile text is shown as written; the messages of
+    /// findings and changes stay English, each with its code).
     #[arg(long, value_enum)]
     language: Option<Lang>,
 }
