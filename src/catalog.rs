@@ -2122,26 +2122,23 @@ impl Catalog {
     /// Counts the components of each type's two directions of uses ([`PeerRuns`]), for
     /// [`Catalog::data_port_peers`] and [`Catalog::interface_peers`].
     fn index_peers(&mut self) {
-        fn counted<R>(refs: &[R], component: impl Fn(&R) -> Option<ComponentIx>) -> Counted {
-            (refs.len(), component_runs(refs, component))
+        /// The two directions of each entry's uses, counted.
+        fn counted<U: Uses>(
+            entries: &[TypeEntry<U>],
+            component: impl Fn(&U::Ref) -> Option<ComponentIx> + Copy,
+        ) -> Vec<[Counted; 2]> {
+            entries
+                .iter()
+                .map(|t| {
+                    let [(_, a), (_, b), _] = t.uses.by_role();
+                    [a, b].map(|refs| (refs.len(), component_runs(refs, component)))
+                })
+                .collect()
         }
-        let data = self
-            .data_types
-            .iter()
-            .map(|t| {
-                let [(_, a), (_, b), _] = t.uses.by_role();
-                [a, b].map(|refs| counted(refs, |r| self.port_component(r)))
-            })
-            .collect();
-        let interfaces = self
-            .interfaces
-            .iter()
-            .map(|t| {
-                let [(_, a), (_, b), _] = t.uses.by_role();
-                [a, b].map(|refs| counted(refs, |r| self.interface_component(r)))
-            })
-            .collect();
-        self.peer_runs = PeerRuns { data, interfaces };
+        self.peer_runs = PeerRuns {
+            data: counted(&self.data_types, |r| self.port_component(r)),
+            interfaces: counted(&self.interfaces, |r| self.interface_component(r)),
+        };
     }
 
     /// What the catalogue documents, for a summary line: `83 component profiles, 1 RT System

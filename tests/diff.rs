@@ -1384,6 +1384,17 @@ fn a_revision_that_looks_like_an_option_is_refused() {
     );
 }
 
+/// The first change of `code` that `rtcdoc diff old new --format json` reports in `d`.
+fn the_change(d: &std::path::Path, code: &str) -> Value {
+    let out = rtcdoc(&["diff", "old", "new", "--format", "json"], d);
+    let json: Value = serde_json::from_slice(&out.stdout).expect("json");
+    changes(&json)
+        .into_iter()
+        .find(|c| c["code"] == code)
+        .cloned()
+        .unwrap_or_else(|| panic!("no {code}: {json:#}"))
+}
+
 /// A removed port is located where it exists: in OLD's file, at the port.
 #[test]
 fn a_removed_port_points_at_the_port_in_the_old_file() {
@@ -1403,12 +1414,7 @@ fn a_removed_port_points_at_the_port_in_the_old_file() {
         "new/Base/RTC.xml",
         &profile(&[("DataInPort", "cmd", "RTC::TimedLong")]),
     );
-    let out = rtcdoc(&["diff", "old", "new", "--format", "json"], d);
-    let json: Value = serde_json::from_slice(&out.stdout).expect("json");
-    let c = changes(&json)
-        .into_iter()
-        .find(|c| c["code"] == "DIFF102")
-        .expect("DIFF102");
+    let c = the_change(d, "DIFF102");
     assert_eq!(c["oldFile"], "old/Base/RTC.xml");
     assert_eq!(
         (c["oldLine"].as_u64(), c["oldColumn"].as_u64()),
@@ -1447,12 +1453,7 @@ fn a_removed_parameter_points_at_the_parameter_in_the_old_file() {
         &profile("\n    <rtc:Configuration rtc:defaultValue=\"0\" rtc:type=\"short\" rtc:name=\"gone\"/>"),
     );
     write(d, "new/T/RTC.xml", &profile(""));
-    let out = rtcdoc(&["diff", "old", "new", "--format", "json"], d);
-    let json: Value = serde_json::from_slice(&out.stdout).expect("json");
-    let c = changes(&json)
-        .into_iter()
-        .find(|c| c["code"] == "DIFF109")
-        .expect("DIFF109");
+    let c = the_change(d, "DIFF109");
     assert_eq!(
         (
             c["oldLine"].as_u64(),
