@@ -911,3 +911,36 @@ fn a_connector_type_is_checked_against_the_types_the_system_records() {
     assert!(mismatches(&recorded("IDL:RTC/CameraImage:1.0")).is_empty());
     assert!(mismatches(&text).is_empty());
 }
+
+/// Several profiles with the id an instance names (a component kept in two repositories, or
+/// its C++ and Python variants): the instance is linked to the one nearest to the system file,
+/// not to the first by path.
+#[test]
+fn an_instance_links_to_the_nearest_profile_of_its_id() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    let cam = common::xml_profile("Cam", &[("DataOutPort", "out", "RTC::CameraImage")])
+        .replace("RTC:Test:Cat:Cam:1.0.0", "RTC:Lab:Sensor:Cam:1.0.0")
+        .replace(
+            r#"rtc:vendor="Test" rtc:category="Cat""#,
+            r#"rtc:vendor="Lab" rtc:category="Sensor""#,
+        );
+    common::write(d, "in/a_lab/Cam/RTC.xml", &cam);
+    common::write(d, "in/b_lab/Cam/RTC.xml", &cam);
+    common::write(
+        d,
+        "in/b_lab/systems/Demo.xml",
+        &common::naming_path_system("Demo"),
+    );
+    let cat = load(&d.join("in"));
+    let s = &cat.systems[0];
+    let linked = cat.instance_component(s, 0).expect("Cam0 is linked");
+    assert_eq!(linked.source, "b_lab/Cam/RTC.xml");
+    // Moved beside the other copy, the system links to that one.
+    std::fs::rename(d.join("in/b_lab/systems"), d.join("in/a_lab/systems")).expect("move");
+    let cat = load(&d.join("in"));
+    let linked = cat
+        .instance_component(&cat.systems[0], 0)
+        .expect("Cam0 is linked");
+    assert_eq!(linked.source, "a_lab/Cam/RTC.xml");
+}

@@ -240,7 +240,8 @@ impl Catalog {
                 sys.components
                     .iter()
                     .map(|inst| {
-                        let mut link = self.match_instance(inst, &exact, &by_vendor_name);
+                        let mut link =
+                            self.match_instance(inst, &l.source, (&exact, &by_vendor_name));
                         let base = format!(
                             "inst-{}",
                             slugify(non_empty(&inst.instance_name).unwrap_or("instance"))
@@ -300,8 +301,11 @@ impl Catalog {
     fn match_instance(
         &self,
         inst: &SystemComponent,
-        exact: &HashMap<(String, String, String), Vec<ComponentIx>>,
-        by_vendor_name: &HashMap<(String, String), Vec<ComponentIx>>,
+        system_source: &str,
+        (exact, by_vendor_name): (
+            &HashMap<(String, String, String), Vec<ComponentIx>>,
+            &HashMap<(String, String), Vec<ComponentIx>>,
+        ),
     ) -> InstanceLink {
         let Some(parts) = &inst.id_parts else {
             return InstanceLink::default();
@@ -320,18 +324,27 @@ impl Catalog {
         let Some(list) = found else {
             return InstanceLink::default();
         };
-        // Several profiles of one id (the C++ and Python variants): the one of the same
-        // version, else the first by path.
+        // Several profiles of one id (the C++ and Python variants, copies in other
+        // repositories): of those of the same version (else of all), the nearest to the system
+        // file (the most folders in common), the first by path among equally near ones.
         let version_of = |ci: ComponentIx| {
             non_empty(&self[ci].profile.basic_info.version)
                 .unwrap_or("")
                 .trim()
                 .to_string()
         };
-        let ci = list
+        let same: Vec<ComponentIx> = list
             .iter()
             .copied()
-            .find(|&ci| version_of(ci) == version)
+            .filter(|&ci| version_of(ci) == version)
+            .collect();
+        let candidates = if same.is_empty() { list } else { &same };
+        let nearness = |ci: ComponentIx| shared_folders(&self[ci].source, system_source);
+        let ci = candidates
+            .iter()
+            .copied()
+            .rev()
+            .max_by_key(|&ci| nearness(ci))
             .unwrap_or(list[0]);
         let theirs = version_of(ci);
         InstanceLink {
@@ -744,4 +757,20 @@ impl System {
         strip_host_data(&mut s.profile);
         s
     }
+}
+
+/// How many leading folders the paths `a` and `b` have in common (`a/b/x.xml` and
+/// `a/b/c/y.xml`: 2).
+fn shared_folders(a: &str, b: &str) -> usize {
+    let folders = |p: &str| {
+        let p = p.replace('\\', "/");
+        let mut parts: Vec<String> = p.split('/').map(str::to_string).collect();
+        parts.pop();
+        parts
+    };
+    folders(a)
+        .iter()
+        .zip(folders(b).iter())
+        .take_while(|(x, y)| x == y)
+        .count()
 }
