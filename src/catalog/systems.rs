@@ -302,10 +302,7 @@ impl Catalog {
         &self,
         inst: &SystemComponent,
         system_source: &str,
-        (exact, by_vendor_name): (
-            &HashMap<(String, String, String), Vec<ComponentIx>>,
-            &HashMap<(String, String), Vec<ComponentIx>>,
-        ),
+        (exact, by_vendor_name): (&ByKey, &ByVendorName),
     ) -> InstanceLink {
         let Some(parts) = &inst.id_parts else {
             return InstanceLink::default();
@@ -758,6 +755,11 @@ impl System {
         s
     }
 }
+
+/// The components by their (vendor, category, name) key.
+type ByKey = HashMap<(String, String, String), Vec<ComponentIx>>;
+/// The components by their (vendor, name) key.
+type ByVendorName = HashMap<(String, String), Vec<ComponentIx>>;
 
 /// How many leading folders the paths `a` and `b` have in common (`a/b/x.xml` and
 /// `a/b/c/y.xml`: 2).
