@@ -193,8 +193,8 @@ impl Catalog {
     /// gets a slug and its links to the components and ports of the catalogue.
     pub fn attach_systems(&mut self, mut loaded: Vec<LoadedSystem>) {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
-        let mut exact: HashMap<(String, String, String), Vec<ComponentIx>> = HashMap::new();
-        let mut by_vendor_name: HashMap<(String, String), Vec<ComponentIx>> = HashMap::new();
+        let mut exact: ByKey = HashMap::new();
+        let mut by_vendor_name: ByVendorName = HashMap::new();
         // The components are keyed only when there are systems to match.
         let components = if loaded.is_empty() {
             &[][..]
