@@ -558,8 +558,11 @@ fn print_findings(
     }
 }
 
-/// `rtcdoc check` with the input options a build used, so that it reports the same findings.
-fn check_command(input: &Path, i: &InputArgs) -> String {
+/// `rtcdoc check` with the input and source options a build used, so that it reports the same
+/// findings (and reads the `[[source]]` repositories from the same cache, without fetching when
+/// the build did not).
+fn check_command(input: &Path, read: &ReadArgs) -> String {
+    let i = &read.input;
     let mut cmd = format!("rtcdoc check {}", shell_quote(&input.to_string_lossy()));
     if let Some(c) = &i.config {
         cmd.push_str(&format!(" --config {}", shell_quote(&c.to_string_lossy())));
@@ -581,13 +584,26 @@ fn check_command(input: &Path, i: &InputArgs) -> String {
             shell_quote(&d.to_string_lossy())
         ));
     }
+    let s = &read.sources;
+    if let Some(d) = &s.cache_dir {
+        cmd.push_str(&format!(
+            " --cache-dir {}",
+            shell_quote(&d.to_string_lossy())
+        ));
+    }
+    for (flag, on) in [("--locked", s.locked), ("--offline", s.offline)] {
+        if on {
+            cmd.push(' ');
+            cmd.push_str(flag);
+        }
+    }
     cmd
 }
 
 /// `rtcdoc check` of a configuration with sources only (no input directory).
-fn check_command_sources(file: &config::Loaded, i: &InputArgs) -> String {
-    let mut cmd = check_command(Path::new("."), i);
-    if i.config.is_none() {
+fn check_command_sources(file: &config::Loaded, read: &ReadArgs) -> String {
+    let mut cmd = check_command(Path::new("."), read);
+    if read.input.config.is_none() {
         if let Some(p) = &file.path {
             cmd = format!("{} --config {}", cmd, shell_quote(&p.to_string_lossy()));
         }
@@ -673,9 +689,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             pin(&file, &args.read.sources, &mut opts.load, cli.quiet)?;
             let root = input_root(&opts.input);
             let check_cmd = if opts.load.sources_only {
-                check_command_sources(&file, &args.read.input)
+                check_command_sources(&file, &args.read)
             } else {
-                check_command(&opts.input, &args.read.input)
+                check_command(&opts.input, &args.read)
             };
             let bar = Bar::new(!cli.quiet);
             let result = build::build_with(&opts, &bar);
@@ -753,7 +769,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             }
             let quiet = cli.quiet;
             let root = input_root(&build.input);
-            let check_cmd = check_command(&build.input, &args.read.input);
+            let check_cmd = check_command(&build.input, &args.read);
             let (input, explicit) = (args.input.clone(), args.read.input.config.clone());
             let source_args = args.read.sources.clone();
             let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {

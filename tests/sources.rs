@@ -372,6 +372,45 @@ fn offline_uses_the_cache_only_and_says_what_is_missing() {
     assert!(err.contains("source `nav`: git cannot fetch"), "{err}");
 }
 
+/// The `rtcdoc check` that a build's summary suggests works when followed: it repeats
+/// `--cache-dir`, `--offline` and `--locked`, so it reads the same cache without fetching.
+#[test]
+fn the_suggested_check_command_reads_the_same_cache() {
+    let p = Project::new();
+    let repo = p.root.join("bad");
+    let profile =
+        std::fs::read_to_string(root().join("tests/fixtures/check/RTC303-bad.xml")).unwrap();
+    commit(&repo, &[("Bad/RTC.xml", profile)], None);
+    p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
+    assert_eq!(p.run(&["build", "-o", "site"]).0, 0);
+    // The repository gone: only the cache has it.
+    std::fs::rename(&repo, p.root.join("elsewhere")).unwrap();
+    let (code, err) = p.run(&["build", "-o", "site", "--offline", "--locked"]);
+    assert_eq!(code, 0, "{err}");
+    let suggested = err
+        .split("(details: ")
+        .nth(1)
+        .and_then(|rest| rest.split(')').next())
+        .unwrap_or_else(|| panic!("no suggested command: {err}"));
+    assert!(
+        suggested.contains("--cache-dir")
+            && suggested.contains("--offline")
+            && suggested.contains("--locked"),
+        "{suggested}"
+    );
+    let bin = env!("CARGO_BIN_EXE_rtcdoc");
+    let command = suggested.replacen("rtcdoc", bin, 1);
+    let out = Command::new("sh")
+        .args(["-c", &command])
+        .current_dir(&p.proj)
+        .output()
+        .expect("sh runs");
+    let text =
+        String::from_utf8_lossy(&out.stderr).into_owned() + &String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{command}: {text}");
+    assert!(text.contains("error[RTC303]"), "{text}");
+}
+
 #[test]
 fn options_and_command_transports_are_refused_before_git_runs() {
     let p = Project::new();
