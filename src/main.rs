@@ -268,8 +268,8 @@ struct GraphArgs {
     /// Directory or file holding the system profile (and the component profiles its instances
     /// use) [default: `.`].
     input: Option<PathBuf>,
-    /// The system to draw, by name, page slug or input-relative file path; needed when the
-    /// input holds several.
+    /// The system to draw, by name (also as the pages show it, `RTSystem (ev3)`), page slug or
+    /// input-relative file path; needed when the input holds several.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["dataflow", "component"])]
     system: Option<String>,
     /// Instead of a system: the neighbourhood of one component, by name, id or page slug (the
@@ -916,13 +916,18 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
     let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
         Some(want) => systems
             .iter()
-            .filter(|s| s.profile.name() == want || &s.slug == want || &s.source == want)
+            .filter(|s| {
+                s.profile.name() == want
+                    || s.display_name() == want.as_str()
+                    || &s.slug == want
+                    || &s.source == want
+            })
             .collect(),
         None => systems.iter().collect(),
     };
     let listed = |list: &[&rtcdoc::catalog::systems::System]| {
         list.iter()
-            .map(|s| format!("{} ({})", s.profile.name(), s.source))
+            .map(|s| format!("{} — {}", s.display_name(), s.source))
             .collect::<Vec<_>>()
             .join(", ")
     };
@@ -941,13 +946,13 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
         many => match &args.system {
             // Several systems of that name: only a file path tells them apart.
             Some(want) => anyhow::bail!(
-                "{} systems in {} are named {want:?}; choose one by its file with --system PATH: {}",
+                "{} systems in {} are named {want:?}; choose one by its name as the pages show it or by its file, with --system: {}",
                 many.len(),
                 input.display(),
                 listed(many)
             ),
             None => anyhow::bail!(
-                "{} holds {} systems; choose one with --system NAME (or, for systems of one name, its file path): {}",
+                "{} holds {} systems; choose one with --system NAME (its name as the pages show it, or its file path): {}",
                 input.display(),
                 many.len(),
                 listed(many)
