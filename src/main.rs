@@ -898,6 +898,10 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let (inst, conns, _, _) =
             rtcdoc::render::wiring::dataflow_wiring(&rows, lang, &|_| String::new(), None);
         let name = format!("{} — {}", lang.t("dataflow"), lang.t(key));
+        if inst.is_empty() {
+            // An empty graph is written (a script expects one), with the reason on stderr.
+            eprintln!("note: {}", lang.t("dataflow_none"));
+        }
         return write_graph(args, &name, &name, &inst, &conns);
     }
     if let Some(want) = &args.component {

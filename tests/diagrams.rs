@@ -485,3 +485,32 @@ fn the_dataflow_export_holds_the_flows_within_a_group() {
     assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
     assert!(dot.contains("Sensor → Actuator: 1 port pair"), "{dot}");
 }
+
+/// A catalogue without data flows exports an empty graph and says why on stderr (the page
+/// says the same), rather than an empty graph alone.
+#[test]
+fn an_empty_dataflow_export_says_why() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    common::write(
+        &input,
+        "Src/RTC.xml",
+        &common::xml_profile("Src", &[("DataOutPort", "p", "RTC::TimedLong")]),
+    );
+    common::write(
+        &input,
+        "Dst/RTC.xml",
+        &common::xml_profile("Dst", &[("DataInPort", "p", "RTC::TimedDouble")]),
+    );
+    let o = common::rtcdoc(
+        &["graph", "in", "--dataflow", "category", "-f", "dot"],
+        dir.path(),
+    );
+    assert!(o.status.success());
+    let (out, err) = (
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr),
+    );
+    assert!(out.starts_with("digraph") && !out.contains("->"), "{out}");
+    assert!(err.contains("note: No data flows"), "{err}");
+}
