@@ -319,6 +319,8 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("history_unreadable", "could not be read", "読み込めません"),
     ("history_version", "Version", "バージョン"),
     ("history_working_copy", "working copy (not committed)", "作業コピー（未コミット）"),
+    ("history_current_file", "current file", "現在のファイル"),
+    ("history_current_files", "Current files", "現在のファイル"),
     ("id_label", "Id", "ID"),
     ("idl_aliases", "Aliases", "別名の型"),
     ("idl_attributes", "Attributes", "属性"),

@@ -523,3 +523,67 @@ fn a_quoted_value_with_a_line_break_tag_stays_one_code_span() {
         "{html}"
     );
 }
+
+/// A profile kept outside git beside its RTCBuilder backups: the file itself is the newest
+/// version. What's new lists it first (under "Current files", dated by its `updateDate`, whose
+/// milliseconds RTCBuilder writes), its history calls it the current file (there is no commit
+/// it could be "not committed" to), and the feed has it first.
+#[test]
+fn a_profile_outside_git_is_the_newest_version_everywhere() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let v = history_repo::versions();
+    let dated = |p: &str, date: &str| {
+        history_repo::edit(
+            p,
+            &[(
+                r#"rtc:executionRate="100.0""#,
+                &format!(r#"rtc:executionRate="100.0" rtc:updateDate="{date}""#),
+            )],
+        )
+    };
+    write(
+        &input,
+        "Base/RTC.xml",
+        &dated(&v[3].1, "2017-04-28T09:30:00.159+09:00"),
+    );
+    write(
+        &input,
+        "Base/RTC.xml20170427124318",
+        &dated(&v[1].1, "2017-04-27T12:43:18.000+09:00"),
+    );
+    write(
+        &input,
+        "Base/RTC.xml20170426080000",
+        &dated(&v[0].1, "2017-04-26T08:00:00.000+09:00"),
+    );
+    let site = dir.path().join("site");
+    history_repo::build(
+        &input,
+        &site,
+        &["-f", "html,markdown", "--base-url", "https://example.org/"],
+    );
+    let md = page(&site, "markdown/whats-new.md");
+    let current = md
+        .find("## Current files")
+        .unwrap_or_else(|| panic!("{md}"));
+    let day = md.find("## 2017-04-27").unwrap_or_else(|| panic!("{md}"));
+    assert!(current < day, "the file itself first:\n{md}");
+    assert!(
+        md.contains(" 1.1.0 · 2017-04-28T09:30:00+09:00 · Base/RTC.xml — "),
+        "{md}"
+    );
+    assert!(!md.contains("## Without a date"), "{md}");
+    let history = page(&site, "markdown/history/base.md");
+    assert!(
+        history.contains("current file") && !history.contains("not committed"),
+        "{history}"
+    );
+    let feed = page(&site, "html/feed.xml");
+    let first = between(&feed, "<entry>", "</entry>");
+    assert!(
+        first.contains("<updated>2017-04-28T09:30:00+09:00</updated>")
+            && first.contains("velocity"),
+        "{feed}"
+    );
+}

@@ -114,11 +114,7 @@ pub fn whats_new_page<M: Markup>(
         M::paragraph(&mut out, &M::esc(lang.t("whats_new_none")));
     }
     for (day, rows) in &v.days {
-        let (anchor, heading) = if day.is_empty() {
-            ("d-none".to_string(), lang.t("history_no_date").to_string())
-        } else {
-            (format!("d-{day}"), day.clone())
-        };
+        let (anchor, heading) = crate::render::view::history_page::day_heading(day, lang);
         M::heading(&mut out, page, 2, &anchor, &heading);
         let items: Vec<String> = rows
             .iter()
@@ -136,9 +132,11 @@ pub fn whats_new_page<M: Markup>(
                 if !r.version.is_empty() {
                     head = format!("{head} {}", M::esc(&r.version));
                 }
+                if !r.date.is_empty() {
+                    head = format!("{head} · {}", M::esc(&r.date));
+                }
                 format!(
-                    "{head} · {} · {commit} — {} {} {}: {}",
-                    M::esc(&r.date),
+                    "{head} · {commit} — {} {} {}: {}",
                     M::esc(&r.change.severity_label),
                     M::esc(&r.change.code),
                     M::esc(&r.change.path),

@@ -51,30 +51,25 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             let days: Vec<Day<'_>> = v
                 .days
                 .iter()
-                .map(|(day, rows)| Day {
-                    id: if day.is_empty() {
-                        "d-none".into()
-                    } else {
-                        format!("d-{day}")
-                    },
-                    heading: if day.is_empty() {
-                        lang.t("history_no_date").to_string()
-                    } else {
-                        day.clone()
-                    },
-                    rows: rows
-                        .iter()
-                        .map(|r| NewsRow {
-                            link: Link {
-                                text: r.component.clone(),
-                                href: cat
-                                    .history_page(r.ci)
-                                    .map(|to| cat.href(here, to, Some(&r.anchor), Output::Html))
-                                    .unwrap_or_default(),
-                            },
-                            row: r,
-                        })
-                        .collect(),
+                .map(|(day, rows)| {
+                    let (id, heading) = crate::render::view::history_page::day_heading(day, lang);
+                    Day {
+                        id,
+                        heading,
+                        rows: rows
+                            .iter()
+                            .map(|r| NewsRow {
+                                link: Link {
+                                    text: r.component.clone(),
+                                    href: cat
+                                        .history_page(r.ci)
+                                        .map(|to| cat.href(here, to, Some(&r.anchor), Output::Html))
+                                        .unwrap_or_default(),
+                                },
+                                row: r,
+                            })
+                            .collect(),
+                    }
                 })
                 .collect();
             minijinja::context! {

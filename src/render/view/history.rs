@@ -47,7 +47,7 @@ impl HistoryView {
         let mut i = 0;
         while i < h.len() && rows.len() < ROWS {
             if h[i].stands_out() {
-                rows.push(row(&h[i], lang, url));
+                rows.push(row(&h[i], committed(h), lang, url));
                 i += 1;
                 continue;
             }
@@ -90,10 +90,27 @@ pub fn folded(run: usize, lang: Lang) -> HistoryRow {
     }
 }
 
-/// The row of version `e`; `url` makes the link of a commit's file.
-pub fn row(e: &Entry, lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> HistoryRow {
-    let label = if e.commit.is_none() && e.backup.is_none() {
-        lang.t("history_working_copy").to_string()
+/// Whether a history has commits (then its current file, when it is a version, is a working
+/// copy not committed yet; without them it is the current file beside its backups).
+pub fn committed(h: &[Entry]) -> bool {
+    h.iter().any(|e| e.commit.is_some())
+}
+
+/// The row of version `e` of a history that has commits or not ([`committed`]); `url` makes
+/// the link of a commit's file.
+pub fn row(
+    e: &Entry,
+    committed: bool,
+    lang: Lang,
+    url: &dyn Fn(&str, &str) -> Option<String>,
+) -> HistoryRow {
+    let label = if e.is_current() {
+        lang.t(if committed {
+            "history_working_copy"
+        } else {
+            "history_current_file"
+        })
+        .to_string()
     } else {
         e.label().to_string()
     };

@@ -2,7 +2,7 @@
 //! What's new ([`WhatsNewView`]) and the entries of the Atom feed ([`feed_entries`]). Built
 //! once from the catalogue's histories ([`crate::catalog::history`]), shown by every output.
 
-use super::history::{row, HistoryRow};
+use super::history::{committed, row, HistoryRow};
 use crate::catalog::history::Entry;
 use crate::catalog::{Catalog, Component, ComponentIx, Ix, Page};
 use crate::i18n::Lang;
@@ -117,7 +117,7 @@ pub fn history_page_view<'a>(
     while i < h.len() {
         let e = &h[i];
         if e.stands_out() {
-            let row = row(e, lang, &url);
+            let row = row(e, committed(h), lang, &url);
             items.push(HistoryItem {
                 anchor: entry_anchor(e),
                 heading: [row.version.as_str(), row.label.as_str()]
@@ -171,9 +171,14 @@ pub fn instant(date: &str) -> Option<i64> {
     } else {
         (0, 0, 0)
     };
-    let offset = match b.get(19) {
+    // The offset, after the fraction of a second if any (`…:08.159+09:00`).
+    let at = match b.get(19) {
+        Some(b'.') => 20 + b[20..].iter().take_while(|c| c.is_ascii_digit()).count(),
+        _ => 19,
+    };
+    let offset = match b.get(at) {
         Some(sign @ (b'+' | b'-')) => {
-            let o = num(20..22)? * 3600 + num(23..25)? * 60;
+            let o = num(at + 1..at + 3)? * 3600 + num(at + 4..at + 6)? * 60;
             if *sign == b'+' {
                 o
             } else {
@@ -192,16 +197,17 @@ pub fn instant(date: &str) -> Option<i64> {
     Some(days * 86400 + hh * 3600 + mm * 60 + ss - offset)
 }
 
-/// Every history entry of the catalogue, newest first: (component, entry position), ordered by
-/// date (entries without one last), then component page order, then history order.
+/// Every history entry of the catalogue, newest first: (component, entry position), the
+/// current files first (each is the newest version of its component), then ordered by date
+/// (entries without one last), then component page order, then history order.
 fn entries_newest_first(cat: &Catalog) -> Vec<(ComponentIx, usize)> {
-    let mut all: Vec<(Option<i64>, ComponentIx, usize)> = Ix::enumerate(&cat.components)
+    let mut all: Vec<((bool, Option<i64>), ComponentIx, usize)> = Ix::enumerate(&cat.components)
         .flat_map(|(ci, c)| {
             let zone = local_offset(c);
-            c.history
-                .iter()
-                .enumerate()
-                .map(move |(ei, e)| (zoned_date(e, zone).as_deref().and_then(instant), ci, ei))
+            c.history.iter().enumerate().map(move |(ei, e)| {
+                let date = entry_date(c, e, zone);
+                ((e.is_current(), date.as_deref().and_then(instant)), ci, ei)
+            })
         })
         .collect();
     all.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
@@ -227,9 +233,58 @@ fn local_offset(c: &crate::catalog::Component) -> Option<&str> {
         })
 }
 
+/// The date of entry `e` of component `c`: a backup's in the zone of `zone`
+/// ([`zoned_date`]); for the current file, which git did not date, its profile's `updateDate`
+/// (RTCBuilder sets it when it saves).
+fn entry_date<'e>(
+    c: &'e crate::catalog::Component,
+    e: &'e crate::catalog::history::Entry,
+    zone: Option<&str>,
+) -> Option<std::borrow::Cow<'e, str>> {
+    zoned_date(e, zone).or_else(|| {
+        let d = e
+            .is_current()
+            .then(|| crate::model::non_empty(&c.profile.basic_info.update_date))
+            .flatten()?
+            .trim();
+        // RTCBuilder writes milliseconds (`2017-04-13T00:13:08.159+09:00`): whole seconds.
+        let d = match d.get(19..20) {
+            Some(".") => {
+                let digits = d[20..].bytes().take_while(u8::is_ascii_digit).count();
+                format!("{}{}", &d[..19], &d[20 + digits..])
+            }
+            _ => d.to_string(),
+        };
+        instant(&d).is_some().then_some(d.into())
+    })
+}
+
+/// The heading of a day of What's new and its anchor: a date, the current files
+/// ([`CURRENT_FILES`]) or the versions without a date (empty).
+pub fn day_heading(day: &str, lang: Lang) -> (String, String) {
+    match day {
+        "" => ("d-none".to_string(), lang.t("history_no_date").to_string()),
+        CURRENT_FILES => (
+            "d-current".to_string(),
+            lang.t("history_current_files").to_string(),
+        ),
+        _ => (format!("d-{day}"), day.to_string()),
+    }
+}
+
+/// The day of What's new that holds the current files (uncommitted edits, or profiles kept
+/// outside git beside their backups): listed first.
+pub const CURRENT_FILES: &str = "current";
+
 /// The UTC offset (`+09:00`) a trimmed ISO 8601 date ends with, if any.
 fn zone_of(d: &str) -> Option<&str> {
-    d.get(19..25).filter(|o| o.starts_with(['+', '-']))
+    // After the seconds and their fraction, if any (`…:08.159+09:00`, as RTCBuilder writes).
+    let fraction = match d.get(19..20) {
+        Some(".") => 1 + d[20..].bytes().take_while(u8::is_ascii_digit).count(),
+        _ => 0,
+    };
+    d.get(19 + fraction..25 + fraction)
+        .filter(|o| o.starts_with(['+', '-']))
 }
 
 /// An entry's date with a time zone where it has none (a backup's, `YYYY-MM-DD hh:mm:ss` in
@@ -295,8 +350,14 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
             continue;
         }
         shown += take;
-        let date = e.date.clone().unwrap_or_default();
-        let day = date.get(..10).unwrap_or(&date).to_string();
+        let date = entry_date(c, e, None)
+            .map(|d| d.into_owned())
+            .unwrap_or_default();
+        let day = if e.is_current() {
+            CURRENT_FILES.to_string()
+        } else {
+            date.get(..10).unwrap_or(&date).to_string()
+        };
         let source = c
             .origin
             .as_ref()
@@ -381,14 +442,16 @@ pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
         let e = &c.history[ei];
         let (Some(page), Some(updated)) = (
             cat.history_page(ci),
-            zoned_date(e, local_offset(c)).as_deref().and_then(rfc3339),
+            entry_date(c, e, local_offset(c))
+                .as_deref()
+                .and_then(rfc3339),
         ) else {
             continue;
         };
         if e.changes.is_empty() {
             continue;
         }
-        let r = row(e, lang, &|_, _| None);
+        let r = row(e, committed(&c.history), lang, &|_, _| None);
         let mut title = c.display_name().into_owned();
         if !r.version.is_empty() {
             title = format!("{title} {}", r.version);
@@ -433,6 +496,8 @@ mod tests {
             ("1970-01-01T00:00:00+00:00", Some(0)),
             ("1970-01-01T09:00:00+09:00", Some(0)),
             ("2024-01-02 10:00:00", Some(1_704_189_600)),
+            // RTCBuilder's dates have milliseconds.
+            ("1970-01-01T09:00:00.159+09:00", Some(0)),
             ("yesterday", None),
         ] {
             assert_eq!(instant(date), want, "{date}");
@@ -441,6 +506,7 @@ mod tests {
         for (date, want) in [
             ("2015-07-26 07:20:22", "2015-07-26T07:20:22Z"),
             ("2024-01-02T10:00:00+09:00", "2024-01-02T10:00:00+09:00"),
+            ("2017-04-13T00:13:08.159+09:00", "2017-04-13T00:13:08+09:00"),
         ] {
             assert_eq!(rfc3339(date).as_deref(), Some(want), "{date}");
         }
