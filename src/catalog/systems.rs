@@ -764,15 +764,12 @@ type ByVendorName = HashMap<(String, String), Vec<ComponentIx>>;
 /// How many leading folders the paths `a` and `b` have in common (`a/b/x.xml` and
 /// `a/b/c/y.xml`: 2).
 fn shared_folders(a: &str, b: &str) -> usize {
-    let folders = |p: &str| {
-        let p = p.replace('\\', "/");
-        let mut parts: Vec<String> = p.split('/').map(str::to_string).collect();
-        parts.pop();
-        parts
-    };
+    // Catalogue paths are written with `/`.
+    fn folders(p: &str) -> std::str::Split<'_, char> {
+        p.rsplit_once('/').map_or("", |(d, _)| d).split('/')
+    }
     folders(a)
-        .iter()
-        .zip(folders(b).iter())
+        .zip(folders(b))
         .take_while(|(x, y)| x == y)
         .count()
 }

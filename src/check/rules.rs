@@ -1044,7 +1044,7 @@ fn idl_file_name(path: &str) -> String {
 
 /// The file name of an IDL path as written (`C:\…\BasicDataType.idl` → `BasicDataType.idl`).
 fn shown_file_name(path: &str) -> &str {
-    path.trim().rsplit(['/', '\\']).next().unwrap_or("")
+    crate::idl::pp::file_name(path.trim())
 }
 
 /// RTC403–RTC406: port types against the IDL read.

@@ -171,11 +171,8 @@ pub fn instant(date: &str) -> Option<i64> {
     } else {
         (0, 0, 0)
     };
-    // The offset, after the fraction of a second if any (`…:08.159+09:00`).
-    let at = match b.get(19) {
-        Some(b'.') => 20 + b[20..].iter().take_while(|c| c.is_ascii_digit()).count(),
-        _ => 19,
-    };
+    // The offset, after the fraction of a second if any.
+    let at = 19 + fraction_len(date.trim());
     let offset = match b.get(at) {
         Some(sign @ (b'+' | b'-')) => {
             let o = num(at + 1..at + 3)? * 3600 + num(at + 4..at + 6)? * 60;
@@ -247,13 +244,10 @@ fn entry_date<'e>(
             .then(|| crate::model::non_empty(&c.profile.basic_info.update_date))
             .flatten()?
             .trim();
-        // RTCBuilder writes milliseconds (`2017-04-13T00:13:08.159+09:00`): whole seconds.
-        let d = match d.get(19..20) {
-            Some(".") => {
-                let digits = d[20..].bytes().take_while(u8::is_ascii_digit).count();
-                format!("{}{}", &d[..19], &d[20 + digits..])
-            }
-            _ => d.to_string(),
+        // Whole seconds (RTCBuilder writes milliseconds).
+        let d = match fraction_len(d) {
+            0 => d.to_string(),
+            f => format!("{}{}", &d[..19], &d[19 + f..]),
         };
         instant(&d).is_some().then_some(d.into())
     })
@@ -276,15 +270,24 @@ pub fn day_heading(day: &str, lang: Lang) -> (String, String) {
 /// outside git beside their backups): listed first.
 pub const CURRENT_FILES: &str = "current";
 
+/// The length of the fraction of a second after a trimmed ISO 8601 date's seconds (`.159` in
+/// `2017-04-13T00:13:08.159+09:00`, as RTCBuilder writes), 0 without one.
+fn fraction_len(d: &str) -> usize {
+    match d.as_bytes().get(19) {
+        Some(b'.') => {
+            1 + d.as_bytes()[20..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count()
+        }
+        _ => 0,
+    }
+}
+
 /// The UTC offset (`+09:00`) a trimmed ISO 8601 date ends with, if any.
 fn zone_of(d: &str) -> Option<&str> {
-    // After the seconds and their fraction, if any (`…:08.159+09:00`, as RTCBuilder writes).
-    let fraction = match d.get(19..20) {
-        Some(".") => 1 + d[20..].bytes().take_while(u8::is_ascii_digit).count(),
-        _ => 0,
-    };
-    d.get(19 + fraction..25 + fraction)
-        .filter(|o| o.starts_with(['+', '-']))
+    let f = fraction_len(d);
+    d.get(19 + f..25 + f).filter(|o| o.starts_with(['+', '-']))
 }
 
 /// An entry's date with a time zone where it has none (a backup's, `YYYY-MM-DD hh:mm:ss` in
