@@ -12,6 +12,9 @@
 //! `~/.cargo/bin` — so later steps find rtcdoc only through what the action installs.
 #![cfg(unix)]
 
+mod common;
+use common::OutputWithin;
+
 use serde_norway::Value;
 use std::collections::BTreeMap;
 use std::fs;
@@ -407,7 +410,7 @@ impl Runner {
                     cmd.env(k.as_str().expect("env name"), value);
                 }
             }
-            let out = cmd.output().expect("run bash");
+            let out = cmd.output_within(common::COMMAND_LIMIT).expect("run bash");
             let text = format!(
                 "{}{}",
                 String::from_utf8_lossy(&out.stdout),
@@ -514,7 +517,7 @@ fn error_fixture() -> String {
 fn counts(input: &str) -> (usize, usize) {
     let out = Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
         .args(["check", "--format", "json", input])
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("run rtcdoc");
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON report");
     let diags = json["diagnostics"].as_array().expect("diagnostics");

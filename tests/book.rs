@@ -2,13 +2,14 @@
 //! rule the binary has.
 
 mod common;
+use common::OutputWithin;
 use common::*;
 
 #[test]
 fn guide_builds_with_mdbook_without_warnings() {
     if std::process::Command::new("mdbook")
         .arg("--version")
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .is_err()
     {
         println!("skipped: mdbook not installed");
@@ -20,7 +21,7 @@ fn guide_builds_with_mdbook_without_warnings() {
         .arg(root().join("book"))
         .arg("-d")
         .arg(dir.path())
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     let log = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{log}");
@@ -48,7 +49,7 @@ fn guide_builds_with_mdbook_without_warnings() {
         .arg(root().join("book/ja"))
         .arg("-d")
         .arg(dir.path().join("ja"))
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert!(
         ja.status.success(),
@@ -59,7 +60,7 @@ fn guide_builds_with_mdbook_without_warnings() {
         let r = std::process::Command::new("python3")
             .arg(tool)
             .arg(dir.path())
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .unwrap();
         assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stdout));
     }
@@ -187,7 +188,7 @@ fn raw_tag_finder_finds_what_mdbook_would_take_for_html() {
 fn help_flags(sub: &str) -> Vec<String> {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
         .args([sub, "--help"])
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);

@@ -9,6 +9,7 @@
 //! (their text is translated; an explicit `{#id}` keeps the English anchor).
 
 mod common;
+use common::OutputWithin;
 use common::*;
 use std::path::Path;
 
@@ -195,7 +196,7 @@ fn both_books_use_the_same_language_switch() {
 fn japanese_guide_builds_with_mdbook_beside_the_english_one() {
     if std::process::Command::new("mdbook")
         .arg("--version")
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .is_err()
     {
         println!("skipped: mdbook not installed");
@@ -211,7 +212,7 @@ fn japanese_guide_builds_with_mdbook_beside_the_english_one() {
             .arg(root().join(book))
             .arg("-d")
             .arg(&dest)
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .unwrap();
         let log = String::from_utf8_lossy(&out.stderr);
         assert!(out.status.success(), "{book}: {log}");
@@ -237,7 +238,7 @@ fn japanese_guide_builds_with_mdbook_beside_the_english_one() {
         let r = std::process::Command::new("python3")
             .arg(tool)
             .arg(dir.path())
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .unwrap();
         assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stdout));
     }

@@ -1,6 +1,7 @@
 //! The build pipeline end to end: walk, load, catalogue, JSON output and output safety.
 
 mod common;
+use common::OutputWithin;
 use common::*;
 use rtcdoc::build::{self, BuildOptions, LoadOptions};
 use rtcdoc::render::{Format, SiteOptions};
@@ -343,7 +344,7 @@ fn corpus_json_loses_nothing() {
         .arg(&tool)
         .arg(&input)
         .arg(out.join("catalog.json"))
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("python3");
     let stdout = String::from_utf8_lossy(&run.stdout);
     println!("{stdout}");

@@ -1,6 +1,7 @@
 //! The command line around the core: init, configuration, completions, man page.
 
 mod common;
+use common::OutputWithin;
 use common::*;
 use std::path::Path;
 
@@ -78,7 +79,7 @@ fn init_with_prefixes(args: &[&str], cwd: &Path, prefixes: &Path) -> std::proces
         .env_remove("RTM_ROOT")
         .env_remove("OPENRTM_DIR")
         .env_remove("OpenRTM_DIR")
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("run rtcdoc")
 }
 
@@ -270,4 +271,14 @@ fn a_glob_star_stays_within_one_folder() {
             "{option}: {e}"
         );
     }
+}
+
+/// The tests' deadline on the commands they run works: a command that does not end within its
+/// limit is killed and fails its test, naming the command, instead of stalling `cargo test`.
+#[test]
+#[should_panic(expected = "did not end within 1 s and was killed")]
+fn a_command_that_hangs_fails_its_test() {
+    let _ = std::process::Command::new("sleep")
+        .arg("30")
+        .output_within(std::time::Duration::from_secs(1));
 }

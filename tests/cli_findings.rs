@@ -3,6 +3,7 @@
 //! inputs with nothing to document, flags `serve` does not take.
 
 mod common;
+use common::OutputWithin;
 use common::*;
 use std::path::Path;
 
@@ -343,7 +344,7 @@ fn markdown_output_keeps_its_marker_out_of_the_book() {
         let b = std::process::Command::new("mdbook")
             .arg("build")
             .current_dir(d.join("book"))
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .unwrap();
         assert!(b.status.success(), "{}", String::from_utf8_lossy(&b.stderr));
         let leaked: Vec<_> = walkdir::WalkDir::new(d.join("book/book"))
@@ -374,7 +375,7 @@ fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
         );
     }
     // The first build's findings are printed before "serving at".
-    let (mut child, reader, lines) = common::serve_until_ready(&["serve", "in", "--port", "0"], d);
+    let (mut child, rx, lines) = common::serve_until_ready(&["serve", "in", "--port", "0"], d);
     let text = lines.join("\n");
     assert!(
         text.contains("in/bad/RTC.xml:10:95: error[RTC303]"),
@@ -384,14 +385,6 @@ fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
     // A live rebuild's findings name the file as the first build's do (below `in/`). Edited until the watcher, armed in the background, sees it.
     let plain = d.join("in/plain/RTC.xml");
     let good = std::fs::read_to_string(&plain).unwrap();
-    let (tx, rx) = std::sync::mpsc::channel();
-    std::thread::spawn(move || {
-        for line in reader.map_while(Result::ok) {
-            if tx.send(line).is_err() {
-                break;
-            }
-        }
-    });
     let mut after = Vec::new();
     'edits: for attempt in 0..20 {
         let broken = format!("{good}<after{attempt} the root>");

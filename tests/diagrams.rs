@@ -3,6 +3,7 @@
 //! and every diagram of the example and corpus sites measured in headless Chromium.
 
 mod common;
+use common::OutputWithin;
 
 use rtcdoc::layout::wiring::{layout, problems, Edge, Node, Port, PortKind};
 use std::path::Path;
@@ -239,7 +240,7 @@ fn graphviz_dot_accepts_every_dot_export() {
         let o = std::process::Command::new("dot")
             .arg("-Tsvg")
             .arg(&f)
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .expect("run dot");
         assert!(
             o.status.success() && o.stdout.starts_with(b"<?xml"),
@@ -254,7 +255,7 @@ fn graphviz_dot_accepts_every_dot_export() {
         let o = std::process::Command::new("dot")
             .arg("-Tsvg")
             .arg(&f)
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .expect("run dot");
         assert!(
             o.status.success() && o.stdout.starts_with(b"<?xml"),
@@ -273,7 +274,7 @@ fn graphviz_dot_accepts_every_dot_export() {
         let o = std::process::Command::new("dot")
             .arg("-Tsvg")
             .arg(&f)
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .expect("run dot");
         assert!(
             o.status.success() && o.stdout.starts_with(b"<?xml"),

@@ -4,6 +4,7 @@
 //! absence of the spurious findings, XML/YAML agreement, and that nothing is lost.
 
 mod common;
+use common::OutputWithin;
 
 use rtcdoc::build::{self, LoadOptions};
 use rtcdoc::catalog::Component;
@@ -280,7 +281,7 @@ fn dialect_fixtures_lose_nothing() {
             .arg(&tool)
             .arg(&input)
             .arg(out.join("catalog.json"))
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .expect("python3");
         let stdout = String::from_utf8_lossy(&run.stdout);
         assert!(run.status.success(), "nothing_lost.py failed:\n{stdout}");

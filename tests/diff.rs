@@ -3,6 +3,7 @@
 //! a git revision of a temporary repository, every output format and every `--fail-on` level.
 
 mod common;
+use common::OutputWithin;
 use common::{root, rtcdoc, write};
 use serde_json::Value;
 use std::path::Path;
@@ -802,7 +803,7 @@ fn git(dir: &Path, args: &[&str]) -> bool {
         .current_dir(dir)
         .env("GIT_CONFIG_NOSYSTEM", "1")
         .env("HOME", dir)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .map(|o| o.status.success())
         .unwrap_or(false)
 }
@@ -926,7 +927,7 @@ fn a_git_revision_is_read_without_touching_the_work_tree() {
             "GIT_CEILING_DIRECTORIES",
             outside.path().parent().expect("parent"),
         )
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("run");
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
@@ -1768,7 +1769,7 @@ fn a_location_at_a_revision_is_named_with_the_revision() {
     let shown = std::process::Command::new("git")
         .args(["show", "HEAD:./idl/Lab.idl"])
         .current_dir(d)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("git");
     let old = String::from_utf8_lossy(&shown.stdout);
     assert_eq!(

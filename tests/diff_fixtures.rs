@@ -6,6 +6,7 @@
 //! `--idl-path`, two system files, a reformatted system).
 
 mod common;
+use common::OutputWithin;
 use common::{root, rtcdoc, write};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -531,7 +532,7 @@ fn git(dir: &Path, args: &[&str]) -> bool {
         .env("GIT_AUTHOR_EMAIL", "t@example.com")
         .env("GIT_COMMITTER_NAME", "t")
         .env("GIT_COMMITTER_EMAIL", "t@example.com")
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .map(|o| o.status.success())
         .unwrap_or(false)
 }

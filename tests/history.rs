@@ -7,6 +7,7 @@ use common::history_repo::{
     build, build_source_project, codes, commit_versions, edit as with, git, page,
 };
 use common::write;
+use common::OutputWithin;
 use serde_json::Value;
 use std::path::Path;
 
@@ -377,7 +378,7 @@ fn follow(dir: &Path, path: &str, limit: usize) -> Vec<(String, String)> {
         .current_dir(dir)
         .env("GIT_CONFIG_NOSYSTEM", "1")
         .env("HOME", dir)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert!(o.status.success());
     let mut out = Vec::new();

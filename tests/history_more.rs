@@ -5,6 +5,7 @@
 
 mod common;
 use common::history_repo::{build, build_source_project, codes, commit, edit as with, init, page};
+use common::OutputWithin;
 use common::{root, write};
 use serde_json::Value;
 use std::path::Path;
@@ -426,7 +427,7 @@ fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
             "mobile/base/RTC.xml",
         ])
         .current_dir(&repo)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert_eq!(String::from_utf8_lossy(&follow.stdout).trim(), "Reorganise");
 
@@ -519,7 +520,7 @@ fn a_copy_whose_original_stays_starts_a_history_of_its_own() {
     let follow = std::process::Command::new("git")
         .args(["log", "--follow", "--format=%s", "--", "Base/RTC.xml"])
         .current_dir(&repo)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     let text = String::from_utf8_lossy(&follow.stdout);
     assert!(text.contains("First"), "{text}");
@@ -586,7 +587,7 @@ fn build_warnings(input: &Path, out: &Path, env: &[(&str, &Path)]) -> (String, V
     for (k, v) in env {
         c.env(k, v);
     }
-    let o = c.output().unwrap();
+    let o = c.output_within(common::COMMAND_LIMIT).unwrap();
     let err = String::from_utf8_lossy(&o.stderr).to_string();
     assert!(o.status.success(), "{err}");
     let json: Value = serde_json::from_str(&page(out, "catalog.json")).unwrap();
@@ -640,7 +641,7 @@ fn a_shallow_clone_is_named_and_the_hint_fetches_the_whole_history() {
     let o = std::process::Command::new("git")
         .args(["clone", "-q", "--depth", "1", &url])
         .arg(&clone)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let (err, subjects) = build_warnings(&clone, &dir.path().join("s1"), &[]);
@@ -662,7 +663,7 @@ fn a_shallow_clone_is_named_and_the_hint_fetches_the_whole_history() {
     let o = std::process::Command::new(&hint[0])
         .args(&hint[1..])
         .current_dir(&clone)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let (err, subjects) = build_warnings(&clone, &dir.path().join("s2"), &[]);
@@ -676,7 +677,7 @@ fn a_repository_git_refuses_is_named_and_the_hint_makes_it_read() {
     // user owns: "dubious ownership").
     let is_root = std::process::Command::new("id")
         .arg("-u")
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
     if !is_root {
         println!("skipped: needs root to give the repository to another user");
@@ -708,7 +709,7 @@ fn a_repository_git_refuses_is_named_and_the_hint_makes_it_read() {
         .args(["diff", "HEAD~1:./", "HEAD:./"])
         .current_dir(&repo)
         .env("HOME", &home)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     let diff_err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{diff_err}");
@@ -720,7 +721,7 @@ fn a_repository_git_refuses_is_named_and_the_hint_makes_it_read() {
     let o = std::process::Command::new(&hint[0])
         .args(&hint[1..])
         .env("HOME", &home)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let (err, subjects) = build_warnings(&repo, &dir.path().join("s2"), &env);
@@ -737,7 +738,7 @@ fn a_log_git_cannot_give_is_named_with_git_s_words() {
     let o = std::process::Command::new("git")
         .args(["rev-parse", "HEAD~3^{tree}"])
         .current_dir(&repo)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .unwrap();
     let tree = String::from_utf8_lossy(&o.stdout).trim().to_string();
     std::fs::remove_file(repo.join(".git/objects").join(&tree[..2]).join(&tree[2..])).unwrap();

@@ -5,6 +5,7 @@
 
 mod common;
 use common::history_repo::{self, history_repo, page};
+use common::OutputWithin;
 use common::{tree, write};
 use std::path::{Path, PathBuf};
 
@@ -38,7 +39,7 @@ fn commits(repo: &Path) -> Vec<String> {
     let o = std::process::Command::new("git")
         .args(["log", "--format=%h", "--abbrev=12"])
         .current_dir(repo)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("git log");
     String::from_utf8_lossy(&o.stdout)
         .lines()
@@ -359,7 +360,7 @@ fn the_atom_feed_is_valid_stable_and_only_with_a_base_url() {
         let o = std::process::Command::new("xmllint")
             .args(["--noout"])
             .arg(site.join("html/feed.xml"))
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     }

@@ -3,6 +3,7 @@
 //! Skipped, with a visible message, when `/usr/bin/chromium` is not installed.
 
 mod common;
+use common::OutputWithin;
 mod html_support;
 
 use html_support::*;
@@ -36,7 +37,7 @@ fn dump_dom(url: &str, profile_dir: &Path) -> String {
         .arg(format!("--user-data-dir={}", profile_dir.display()))
         .arg("--dump-dom")
         .arg(url)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("run chromium");
     String::from_utf8_lossy(&o.stdout).into_owned()
 }

@@ -1,6 +1,7 @@
 //! The HTML catalogue site: structure, cross-links, sanitisation, determinism, themes, validity.
 
 mod common;
+use common::OutputWithin;
 mod html_support;
 
 use html_support::*;
@@ -174,7 +175,7 @@ fn examples_site_has_every_page_and_no_broken_link() {
         let o = std::process::Command::new("python3")
             .arg(tool)
             .arg(&out)
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .expect("python3");
         assert!(
             o.status.success(),
@@ -574,7 +575,7 @@ fn tidy_reports_no_errors() {
         let o = std::process::Command::new("tidy")
             .args(["-q", "-e"])
             .arg(out.join(rel))
-            .output()
+            .output_within(common::COMMAND_LIMIT)
             .expect("tidy");
         let report = String::from_utf8_lossy(&o.stderr);
         for line in report.lines().filter(|l| l.contains("Error:")) {

@@ -124,6 +124,8 @@ fn a_broken_profile_keeps_the_last_good_site() {
 
 fn http_get(port: u16, path: &str) -> (String, String) {
     let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+    // A server that never answers fails the test instead of stalling the run.
+    s.set_read_timeout(Some(Duration::from_secs(60))).unwrap();
     write!(
         s,
         "GET {path} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"

@@ -2,6 +2,7 @@
 //! URLs, no network), pinned in `rtcdoc.lock`, read from git objects.
 
 mod common;
+use common::OutputWithin;
 use common::*;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -20,7 +21,7 @@ fn git(dir: &Path, args: &[&str]) -> String {
         .current_dir(dir)
         .env("GIT_CONFIG_NOSYSTEM", "1")
         .env("GIT_CONFIG_GLOBAL", "/dev/null")
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("git runs");
     assert!(
         out.status.success(),
@@ -403,7 +404,7 @@ fn the_suggested_check_command_reads_the_same_cache() {
     let out = Command::new("sh")
         .args(["-c", &command])
         .current_dir(&p.proj)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("sh runs");
     let text =
         String::from_utf8_lossy(&out.stderr).into_owned() + &String::from_utf8_lossy(&out.stdout);

@@ -3,6 +3,7 @@
 //! the check rules.
 
 mod common;
+use common::OutputWithin;
 mod html_support;
 
 use html_support::{broken_links, build_site, tags};
@@ -503,7 +504,7 @@ fn doxygen_runs_on_a_system_without_warnings() {
     let d = std::process::Command::new("doxygen")
         .arg("Doxyfile")
         .current_dir(&out)
-        .output()
+        .output_within(common::COMMAND_LIMIT)
         .expect("doxygen");
     let err = String::from_utf8_lossy(&d.stderr);
     assert!(

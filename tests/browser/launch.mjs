@@ -3,7 +3,9 @@
 // A fresh machine's first Chromium start can take well over puppeteer's default 30 s (the
 // font cache is built then, and `cargo test` runs other tests beside it on few cores), so the
 // start may take up to two minutes and is tried three times before the harness gives up with
-// Chromium's own error. `--disable-dev-shm-usage` keeps Chromium off a small /dev/shm (containers).
+// Chromium's own error. A call to the started browser that gets no answer within three minutes
+// fails (the test fails, naming it, instead of stalling the run). `--disable-dev-shm-usage`
+// keeps Chromium off a small /dev/shm (containers).
 import puppeteer from 'puppeteer-core';
 
 export const CHROMIUM = process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium';
@@ -26,7 +28,7 @@ export async function launchChromium(extra = []) {
         headless: true,
         args: [...BASE_ARGS, ...extra],
         timeout: 120000,
-        protocolTimeout: 600000,
+        protocolTimeout: 180000,
       });
     } catch (e) {
       last = e;

@@ -1,6 +1,7 @@
 //! Running the real tools on the Markdown and Doxygen outputs: `doxygen` (warnings are errors)
 //! and `mdbook` (no warning, no broken link in the built book). A test whose tool is missing
 //! prints `skipped: <tool> not installed` and passes; CI installs both.
+use super::OutputWithin;
 
 use super::root;
 use std::collections::{HashMap, HashSet};
@@ -11,7 +12,7 @@ use std::process::Command;
 pub fn have(tool: &str) -> bool {
     let ok = Command::new(tool)
         .arg("--version")
-        .output()
+        .output_within(super::COMMAND_LIMIT)
         .map(|o| o.status.success())
         .unwrap_or(false);
     if !ok {
@@ -24,7 +25,7 @@ pub fn have(tool: &str) -> bool {
 pub fn run_doxygen(dir: &Path) {
     let o = Command::new("doxygen")
         .current_dir(dir)
-        .output()
+        .output_within(super::COMMAND_LIMIT)
         .expect("run doxygen");
     let stderr = String::from_utf8_lossy(&o.stderr);
     let stdout = String::from_utf8_lossy(&o.stdout);
@@ -51,7 +52,7 @@ pub fn run_mdbook(src: &Path) -> (tempfile::TempDir, PathBuf) {
     let o = Command::new("mdbook")
         .arg("build")
         .current_dir(dir.path())
-        .output()
+        .output_within(super::COMMAND_LIMIT)
         .expect("run mdbook");
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "mdbook failed:\n{stderr}");
@@ -62,7 +63,11 @@ pub fn run_mdbook(src: &Path) -> (tempfile::TempDir, PathBuf) {
     let broken = broken_links(&book);
     assert!(broken.is_empty(), "broken links: {broken:#?}");
     if let Some(tool) = Some(root().join("../shared/tools/linkcheck.py")).filter(|p| p.is_file()) {
-        if let Ok(o) = Command::new("python3").arg(&tool).arg(&book).output() {
+        if let Ok(o) = Command::new("python3")
+            .arg(&tool)
+            .arg(&book)
+            .output_within(super::COMMAND_LIMIT)
+        {
             assert!(
                 o.status.success(),
                 "linkcheck.py: {}",

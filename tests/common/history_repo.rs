@@ -2,6 +2,7 @@
 //! show: a first version, a release that adds a data port, a service port with its interface
 //! and a configuration parameter, a commit that changes nothing of the specification, and a
 //! breaking rename without a version bump (DIFF208). Commits are dated 2024-01-01 … 04.
+use super::OutputWithin;
 
 use std::path::Path;
 
@@ -63,7 +64,7 @@ pub fn git(dir: &Path, args: &[&str], date: &str) -> bool {
         .env("HOME", dir)
         .env("GIT_AUTHOR_DATE", date)
         .env("GIT_COMMITTER_DATE", date)
-        .output()
+        .output_within(super::COMMAND_LIMIT)
         .map(|o| o.status.success())
         .unwrap_or(false)
 }

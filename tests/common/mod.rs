@@ -5,6 +5,78 @@ pub mod books;
 pub mod history_repo;
 
 use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+/// How long one run of `rtcdoc` (or git, mdbook, doxygen) may take in a test before it is
+/// killed and the test fails: far above any real run, so that a hang fails its test with the
+/// command's name instead of stalling the whole test run.
+pub const COMMAND_LIMIT: Duration = Duration::from_secs(300);
+
+/// How long one browser harness (a Chromium started by node) may take.
+pub const BROWSER_LIMIT: Duration = Duration::from_secs(600);
+
+/// `Command::output` with a deadline.
+pub trait OutputWithin {
+    /// Runs the command to its end, its standard output and error captured, as
+    /// [`std::process::Command::output`] does; panics naming the command (and what it printed
+    /// so far) when it has not ended within `limit`, after killing it.
+    fn output_within(&mut self, limit: Duration) -> std::io::Result<std::process::Output>;
+}
+
+impl OutputWithin for std::process::Command {
+    fn output_within(&mut self, limit: Duration) -> std::io::Result<std::process::Output> {
+        use std::io::Read;
+        use std::process::Stdio;
+        let mut child = self
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()?;
+        let drain = |pipe: Option<Box<dyn Read + Send>>| {
+            std::thread::spawn(move || {
+                let mut bytes = Vec::new();
+                if let Some(mut p) = pipe {
+                    let _ = p.read_to_end(&mut bytes);
+                }
+                bytes
+            })
+        };
+        let out = drain(
+            child
+                .stdout
+                .take()
+                .map(|p| Box::new(p) as Box<dyn Read + Send>),
+        );
+        let err = drain(
+            child
+                .stderr
+                .take()
+                .map(|p| Box::new(p) as Box<dyn Read + Send>),
+        );
+        let start = std::time::Instant::now();
+        let status = loop {
+            if let Some(status) = child.try_wait()? {
+                break status;
+            }
+            if start.elapsed() > limit {
+                let _ = child.kill();
+                let _ = child.wait();
+                let err = err.join().unwrap_or_default();
+                panic!(
+                    "{self:?} did not end within {} s and was killed; its standard error:\n{}",
+                    limit.as_secs(),
+                    String::from_utf8_lossy(&err)
+                );
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        };
+        Ok(std::process::Output {
+            status,
+            stdout: out.join().unwrap_or_default(),
+            stderr: err.join().unwrap_or_default(),
+        })
+    }
+}
 
 /// The crate root.
 pub fn root() -> PathBuf {
@@ -31,7 +103,7 @@ pub fn run_browser_harness(cmd: &mut std::process::Command) -> Option<std::proce
     let _turn = ONE_BROWSER
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
-    match cmd.output() {
+    match cmd.output_within(BROWSER_LIMIT) {
         Ok(o) => Some(o),
         Err(e) => {
             println!("skipped: cannot run node: {e}");
@@ -82,15 +154,17 @@ pub fn rtcdoc(args: &[&str], cwd: &Path) -> std::process::Output {
         // The fixtures are in this repository: their pages must not show its history (which
         // differs between clones). Temporary repositories of the history tests are elsewhere.
         .env("GIT_CEILING_DIRECTORIES", root())
-        .output()
+        .output_within(COMMAND_LIMIT)
         .expect("run rtcdoc")
 }
 
-/// The standard error of a running `rtcdoc serve`, line by line.
-pub type ServeLines = std::io::Lines<std::io::BufReader<std::process::ChildStderr>>;
+/// The rest of the standard error of a running `rtcdoc serve`, line by line, as a reader
+/// thread receives it (`recv_timeout` waits for a line without hanging the test).
+pub type ServeLines = std::sync::mpsc::Receiver<String>;
 
 /// `rtcdoc ARGS` (a `serve`) started in `cwd`, its standard error read up to the line
 /// "serving at …" (or 200 lines): the process, the rest of its standard error, the lines read.
+/// Panics, after killing it, when it prints no "serving at" line within [`COMMAND_LIMIT`].
 pub fn serve_until_ready(
     args: &[&str],
     cwd: &Path,
@@ -104,16 +178,44 @@ pub fn serve_until_ready(
         .stdout(std::process::Stdio::null())
         .spawn()
         .expect("start rtcdoc serve");
-    let mut reader = std::io::BufReader::new(child.stderr.take().expect("stderr")).lines();
+    let stderr = child.stderr.take().expect("stderr");
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in std::io::BufReader::new(stderr)
+            .lines()
+            .map_while(Result::ok)
+        {
+            if tx.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    let deadline = std::time::Instant::now() + COMMAND_LIMIT;
     let mut lines = Vec::new();
-    for line in reader.by_ref().map_while(Result::ok) {
-        let done = line.starts_with("serving at");
-        lines.push(line);
-        if done || lines.len() > 200 {
-            break;
+    loop {
+        let left = deadline.saturating_duration_since(std::time::Instant::now());
+        match rx.recv_timeout(left) {
+            Ok(line) => {
+                let done = line.starts_with("serving at");
+                lines.push(line);
+                if done || lines.len() > 200 {
+                    break;
+                }
+            }
+            Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => break,
+            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => {
+                let _ = child.kill();
+                let _ = child.wait();
+                panic!(
+                    "rtcdoc {} printed no \"serving at\" within {} s; it printed:\n{}",
+                    args.join(" "),
+                    COMMAND_LIMIT.as_secs(),
+                    lines.join("\n")
+                );
+            }
         }
     }
-    (child, reader, lines)
+    (child, rx, lines)
 }
 
 /// `dir/in` holding copies of the hostile-input fixtures `xss.xml` and `xss.yaml`.
