@@ -580,6 +580,22 @@ fn a_profile_outside_git_is_the_newest_version_everywhere() {
         history.contains("current file") && !history.contains("not committed"),
         "{history}"
     );
+    // Its row is dated as What's new dates it, on the history page and the component page.
+    let current_row = |text: &str| {
+        text.lines()
+            .find(|l| l.contains("current file") && l.contains('|'))
+            .unwrap_or_else(|| panic!("{text}"))
+            .to_string()
+    };
+    assert!(
+        history.contains("| Date | 2017-04-28T09:30:00+09:00 |\n| Commit | current file |"),
+        "{history}"
+    );
+    let component = page(&site, "markdown/components/base.md");
+    assert!(
+        current_row(&component).contains("2017-04-28T09:30:00+09:00"),
+        "{component}"
+    );
     let feed = page(&site, "html/feed.xml");
     let first = between(&feed, "<entry>", "</entry>");
     assert!(

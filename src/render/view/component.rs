@@ -398,9 +398,12 @@ pub fn component_view<'a>(
             .collect(),
         backups: BackupRow::of(c, lang),
         history_page: cat.history_page(ci),
-        history: super::history::HistoryView::of(&c.history, lang, &|commit, path| {
-            super::history_page::commit_url(cat, c, source_url, commit, path)
-        }),
+        history: super::history::HistoryView::of(
+            &c.history,
+            lang,
+            &|commit, path| super::history_page::commit_url(cat, c, source_url, commit, path),
+            super::history_page::current_file_date(c).as_deref(),
+        ),
         neighbourhood: nb::rows(cat, ci, &nb::neighbourhood(cat, ci)),
     }
 }

@@ -41,13 +41,23 @@ pub struct HistoryView {
 
 impl HistoryView {
     /// The section of the history `h` (a component's, a system's); `url` makes the link of a
-    /// commit's file (commit, path).
-    pub fn of(h: &[Entry], lang: Lang, url: &dyn Fn(&str, &str) -> Option<String>) -> Self {
+    /// commit's file (commit, path); `current_date` dates the current file's row, which git
+    /// did not date (a component's profile's `updateDate`).
+    pub fn of(
+        h: &[Entry],
+        lang: Lang,
+        url: &dyn Fn(&str, &str) -> Option<String>,
+        current_date: Option<&str>,
+    ) -> Self {
         let mut rows = Vec::new();
         let mut i = 0;
         while i < h.len() && rows.len() < ROWS {
             if h[i].stands_out() {
-                rows.push(row(&h[i], committed(h), lang, url));
+                let mut r = row(&h[i], committed(h), lang, url);
+                if h[i].is_current() && r.date.is_empty() {
+                    r.date = current_date.unwrap_or_default().to_string();
+                }
+                rows.push(r);
                 i += 1;
                 continue;
             }

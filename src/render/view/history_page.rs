@@ -117,7 +117,10 @@ pub fn history_page_view<'a>(
     while i < h.len() {
         let e = &h[i];
         if e.stands_out() {
-            let row = row(e, committed(h), lang, &url);
+            let mut row = row(e, committed(h), lang, &url);
+            if e.is_current() && row.date.is_empty() {
+                row.date = current_file_date(c).unwrap_or_default();
+            }
             items.push(HistoryItem {
                 anchor: entry_anchor(e),
                 heading: [row.version.as_str(), row.label.as_str()]
@@ -239,18 +242,28 @@ fn entry_date<'e>(
     zone: Option<&str>,
 ) -> Option<std::borrow::Cow<'e, str>> {
     zoned_date(e, zone).or_else(|| {
-        let d = e
-            .is_current()
-            .then(|| crate::model::non_empty(&c.profile.basic_info.update_date))
-            .flatten()?
-            .trim();
-        // Whole seconds (RTCBuilder writes milliseconds).
-        let d = match fraction_len(d) {
-            0 => d.to_string(),
-            f => format!("{}{}", &d[..19], &d[19 + f..]),
-        };
-        instant(&d).is_some().then_some(d.into())
+        e.is_current()
+            .then(|| current_file_date(c))
+            .flatten()
+            .map(Into::into)
     })
+}
+
+/// The date of component `c`'s current file, which git did not date: its profile's
+/// `updateDate` (RTCBuilder sets it when it saves), in whole seconds (RTCBuilder writes
+/// milliseconds); `None` when it has none that reads as a date.
+pub fn current_file_date(c: &crate::catalog::Component) -> Option<String> {
+    update_date(&c.profile.basic_info.update_date)
+}
+
+/// A profile's `updateDate` as the date of its current file (see [`current_file_date`]).
+pub fn update_date(written: &Option<crate::model::Text>) -> Option<String> {
+    let d = crate::model::non_empty(written)?.trim();
+    let d = match fraction_len(d) {
+        0 => d.to_string(),
+        f => format!("{}{}", &d[..19], &d[19 + f..]),
+    };
+    instant(&d).is_some().then_some(d)
 }
 
 /// The heading of a day of What's new and its anchor: a date, the current files

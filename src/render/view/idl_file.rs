@@ -36,7 +36,7 @@ pub fn idl_file_view(
     let history = cat
         .idl_history
         .get(&file.path)
-        .map(|h| HistoryView::of(h, lang, &url))
+        .map(|h| HistoryView::of(h, lang, &url, None))
         .unwrap_or_default();
     let source_url = crate::render::html::repo::document_source_url(
         &cat.sources,

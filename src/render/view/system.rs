@@ -568,6 +568,7 @@ pub fn system_view(
                 s.origin.as_ref(),
                 source_url,
             ),
+            super::history_page::update_date(&s.profile.update_date).as_deref(),
         ),
     }
 }
