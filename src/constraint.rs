@@ -35,6 +35,7 @@
 
 use crate::i18n::Lang;
 use crate::model::{Comparison, Condition, Constraint, ConstraintKind, Pos};
+use crate::quote::Code;
 use crate::value::{self, ScalarType, ValueType};
 
 /// Renders a constraint as a short plain-text formula. `x` stands for the value. (English:
@@ -462,7 +463,7 @@ impl Eval<'_> {
                         match self.condition(condition, &Subject::One(e), depth + 1) {
                             Truth::True => {}
                             Truth::False(w) => {
-                                return Truth::False(format!("element {i} (`{e}`): {w}"))
+                                return Truth::False(format!("element {i} ({}): {w}", Code(e)))
                             }
                             Truth::Unknown(w) => unknown = unknown.or(Some(w)),
                         }
@@ -526,7 +527,8 @@ impl Eval<'_> {
                 Some((k, v)) => pairs.push((k.trim(), v.trim())),
                 None => {
                     return Truth::Unknown(format!(
-                        "a hash constraint needs `key:value` pairs; `{part}` is not one"
+                        "a hash constraint needs `key:value` pairs; {} is not one",
+                        Code(part)
                     ))
                 }
             }
@@ -541,11 +543,11 @@ impl Eval<'_> {
                 }
             };
             let Some((_, v)) = pairs.iter().find(|(k, _)| *k == key) else {
-                return Truth::False(format!("the value sets no `{key}`"));
+                return Truth::False(format!("the value sets no {}", Code(key)));
             };
             match self.item(item, v, depth) {
                 Truth::True => {}
-                Truth::False(why) => return Truth::False(format!("`{key}`: {why}")),
+                Truth::False(why) => return Truth::False(format!("{}: {why}", Code(key))),
                 Truth::Unknown(why) => unknown = unknown.or(Some(why)),
             }
         }
@@ -571,8 +573,8 @@ impl Eval<'_> {
         unknown.map_or_else(
             || {
                 Truth::False(format!(
-                    "`{}` satisfies none of the keyed alternatives ({})",
-                    self.raw.trim(),
+                    "{} satisfies none of the keyed alternatives ({})",
+                    Code(self.raw.trim()),
                     keys.join(", ")
                 ))
             },
@@ -610,9 +612,11 @@ impl Eval<'_> {
                 }
                 // An enumeration (an Or of equalities) that fails says so once.
                 let one_of = match (enumeration(operands), subject) {
-                    (Some(l), Subject::One(v)) if l.len() > 1 => {
-                        Some(format!("`{}` is not one of: {}", v.trim(), l.join(", ")))
-                    }
+                    (Some(l), Subject::One(v)) if l.len() > 1 => Some(format!(
+                        "{} is not one of: {}",
+                        Code(v.trim()),
+                        l.join(", ")
+                    )),
                     _ => None,
                 };
                 let mut unknown = None;

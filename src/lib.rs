@@ -25,6 +25,7 @@ pub mod layout;
 pub mod model;
 pub mod output;
 pub mod parse;
+pub mod quote;
 pub mod readme;
 pub mod render;
 pub mod serve;

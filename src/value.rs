@@ -6,6 +6,7 @@
 //! turns that spelling into a [`ValueType`] and checks that a value (a `defaultValue` or a
 //! constraint literal) can be read as that type. Vector values are comma-separated, the way
 //! OpenRTM's configuration admin reads them (`1.0, 2.0, 3.0`).
+use crate::quote::Code;
 
 /// A scalar type a configuration value can have.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -144,7 +145,7 @@ pub fn parse_scalar(ty: ScalarType, s: &str) -> Result<Option<Scalar>, ParseErro
             let digits = t.strip_prefix('+').unwrap_or(t);
             let n: i128 = digits
                 .parse()
-                .map_err(|_| format!("`{t}` is not an integer"))?;
+                .map_err(|_| format!("{} is not an integer", Code(t)))?;
             if n < min || n > max {
                 return Err(format!(
                     "{n} is outside the range {min}..={max} of the type"
@@ -154,15 +155,20 @@ pub fn parse_scalar(ty: ScalarType, s: &str) -> Result<Option<Scalar>, ParseErro
         }
         ScalarType::Float => parse_float(t)
             .map(|f| Some(Scalar::Number(f)))
-            .ok_or_else(|| format!("`{t}` is not a number")),
+            .ok_or_else(|| format!("{} is not a number", Code(t))),
         ScalarType::Bool => parse_config_bool(t)
             .map(|b| Some(Scalar::Bool(b)))
-            .ok_or_else(|| format!("`{t}` is not a boolean (true/false, 1/0, yes/no, on/off)")),
+            .ok_or_else(|| {
+                format!(
+                    "{} is not a boolean (true/false, 1/0, yes/no, on/off)",
+                    Code(t)
+                )
+            }),
         ScalarType::Char => {
             if s.chars().count() == 1 || t.chars().count() == 1 {
                 Ok(None)
             } else {
-                Err(format!("`{s}` is not a single character"))
+                Err(format!("{} is not a single character", Code(s)))
             }
         }
         ScalarType::Text => Ok(None),

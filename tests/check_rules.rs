@@ -759,3 +759,39 @@ fn a_rate_of_zero_is_accepted_where_no_rate_drives_the_context() {
         assert_eq!(found, flagged, "{execution_type} at {rate}");
     }
 }
+
+/// A value that holds backticks is quoted whole: the finding's code spans (read as CommonMark
+/// reads them, as every output does) are the value, and the HTML report shows it as one piece
+/// of code (it showed `1`, then `5` as text, then code running on into the message).
+#[test]
+fn a_value_with_backticks_is_quoted_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    let profile =
+        std::fs::read_to_string(common::root().join("tests/fixtures/check/RTC303-bad.xml"))
+            .unwrap()
+            .replace(r#"rtc:defaultValue="150""#, r#"rtc:defaultValue="1`5``0""#);
+    common::write(dir.path(), "in/A.xml", &profile);
+    let o = common::rtcdoc(&["check", "in", "--format", "json"], dir.path());
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let message = json["diagnostics"]
+        .as_array()
+        .expect("diagnostics")
+        .iter()
+        .find(|d| d["code"] == "RTC301")
+        .and_then(|d| d["message"].as_str())
+        .expect("RTC301")
+        .to_string();
+    let chars: Vec<char> = message.chars().collect();
+    let spans: Vec<String> = rtcdoc::render::text::code_spans(&chars, true)
+        .iter()
+        .map(|s| s.content(&chars).iter().collect())
+        .collect();
+    assert_eq!(spans, ["1`5``0", "speed", "1`5``0"], "{message}");
+    let o = common::rtcdoc(&["build", "in", "-o", "site", "-q"], dir.path());
+    assert!(o.status.success() || o.status.code() == Some(1), "{o:?}");
+    let page = std::fs::read_to_string(dir.path().join("site/diagnostics.html")).unwrap();
+    assert!(
+        page.contains("default value <code>1`5``0</code> of configuration <code>speed</code>"),
+        "{page}"
+    );
+}

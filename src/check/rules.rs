@@ -7,6 +7,7 @@ use crate::catalog::{Catalog, Component, ComponentIx};
 use crate::constraint::{self, Problem, Verdict};
 use crate::diagnostic::{Diagnostic, Severity};
 use crate::model::{is_placeholder, non_empty, parse_bool, IdParts, Pos, Profile};
+use crate::quote::Code;
 use crate::value::{self, ValueType};
 use std::collections::{BTreeMap, HashMap};
 
@@ -213,12 +214,16 @@ fn enumerations(p: &Profile, s: &mut Findings) {
                 let hint = allowed
                     .iter()
                     .find(|a| a.eq_ignore_ascii_case(v))
-                    .map(|a| format!(" (write `{a}`: the value is case-sensitive)"))
+                    .map(|a| format!(" (write {}: the value is case-sensitive)", Code(a)))
                     .unwrap_or_default();
                 s.emit(
                     r::INVALID_ENUM,
                     pos,
-                    format!("{what} `{v}` is not one of {}{hint}", allowed.join(", ")),
+                    format!(
+                        "{what} {} is not one of {}{hint}",
+                        Code(v),
+                        allowed.join(", ")
+                    ),
                 );
             }
         }
@@ -314,12 +319,12 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
             Some(_) => s.emit(
                 r::EXECUTION_RATE,
                 at,
-                format!("executionRate `{}` is not greater than 0", rate.trim()),
+                format!("executionRate {} is not greater than 0", Code(rate.trim())),
             ),
             None => s.emit(
                 r::EXECUTION_RATE,
                 at,
-                format!("executionRate `{}` is not a number", rate.trim()),
+                format!("executionRate {} is not a number", Code(rate.trim())),
             ),
         }
     }
@@ -331,12 +336,12 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
             Ok(n) => s.emit(
                 r::MAX_INSTANCES,
                 at,
-                format!("maxInstances `{n}` is negative"),
+                format!("maxInstances {} is negative", Code(&n.to_string())),
             ),
             Err(_) => s.emit(
                 r::MAX_INSTANCES,
                 at,
-                format!("maxInstances `{t}` is not an integer"),
+                format!("maxInstances {} is not an integer", Code(t)),
             ),
         }
     }
@@ -349,7 +354,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
                 s.emit(
                     r::DATE_TIME,
                     b.attr_pos.or(name, b.pos),
-                    format!("{name} `{d}` is not a valid xsd:dateTime: {why}"),
+                    format!("{name} {} is not a valid xsd:dateTime: {why}", Code(d)),
                 );
             }
         }
@@ -360,7 +365,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
                 s.emit(
                     r::BOOLEAN,
                     pos,
-                    format!("{what} `{t}` is not a boolean (true, false, 1, 0)"),
+                    format!("{what} {} is not a boolean (true, false, 1, 0)", Code(t)),
                 );
             }
         }
@@ -461,7 +466,7 @@ fn identity(p: &Profile, s: &mut Findings) {
                 s.emit(
                     r::VENDOR_VERSION_CHARS,
                     b.attr_pos.or(name, bpos),
-                    format!("{name} `{t}` contains {}", bad.join(" and ")),
+                    format!("{name} {} contains {}", Code(t), bad.join(" and ")),
                 );
             }
         }
@@ -699,12 +704,15 @@ fn known_values(p: &Profile, s: &mut Findings) {
                 code,
                 pos,
                 format!(
-                    "{what} `{}` is not a known value{}",
-                    bad.join("`, `"),
+                    "{what} {} is not a known value{}",
+                    bad.iter()
+                        .map(|b| Code(b).to_string())
+                        .collect::<Vec<_>>()
+                        .join(", "),
                     if bad.len() == 1 && bad[0] == t {
                         String::new()
                     } else {
-                        format!(" (in `{t}`)")
+                        format!(" (in {})", Code(t))
                     }
                 ),
             );
@@ -810,7 +818,8 @@ fn configuration_values(p: &Profile, s: &mut Findings) {
                     r::DEFAULT_TYPE,
                     c.attr_pos.or("defaultValue", c.pos),
                     format!(
-                        "default value `{v}` of configuration `{name}` is not a valid {}: {why}",
+                        "default value {} of configuration `{name}` is not a valid {}: {why}",
+                        Code(v),
                         c.type_.as_deref().unwrap_or("").trim()
                     ),
                 );
@@ -846,15 +855,17 @@ fn configuration_values(p: &Profile, s: &mut Findings) {
                 r::CONSTRAINT_VIOLATED,
                 c.attr_pos.or("defaultValue", c.pos),
                 format!(
-                    "default value `{v}` of configuration `{name}` does not satisfy its constraint `{}`: {why}",
-                    constraint::describe(k)
+                    "default value {} of configuration `{name}` does not satisfy its constraint {}: {why}",
+                    Code(v),
+                    Code(&constraint::describe(k))
                 ),
             ),
             Verdict::Unevaluable(why) => s.emit(
                 r::CONSTRAINT_MALFORMED,
                 k.pos,
                 format!(
-                    "the constraint of configuration `{name}` cannot be evaluated for `{v}`: {why}"
+                    "the constraint of configuration `{name}` cannot be evaluated for {}: {why}",
+                    Code(v)
                 ),
             ),
         }
@@ -991,7 +1002,10 @@ fn placeholders(p: &Profile, s: &mut Findings) {
             s.emit(
                 r::PLACEHOLDER,
                 b.attr_pos.or(field, b.pos),
-                format!("BasicInfo {field} `{t}` is RTCBuilder's placeholder, never filled in"),
+                format!(
+                    "BasicInfo {field} {} is RTCBuilder's placeholder, never filled in",
+                    Code(t)
+                ),
             );
         }
     }
@@ -1004,7 +1018,10 @@ fn placeholders(p: &Profile, s: &mut Findings) {
         s.emit(
             r::PLACEHOLDER,
             b.doc.as_ref().map_or(b.pos, |d| d.pos),
-            format!("the component description `{t}` is RTCBuilder's placeholder, never filled in"),
+            format!(
+                "the component description {} is RTCBuilder's placeholder, never filled in",
+                Code(t)
+            ),
         );
     }
     let constrained = p
@@ -1025,8 +1042,9 @@ fn placeholders(p: &Profile, s: &mut Findings) {
                 r::PLACEHOLDER,
                 k.pos,
                 format!(
-                    "the constraint of {what} `{}` is RTCBuilder's placeholder `{l}`; it constrains nothing",
-                    name.as_deref().unwrap_or("")
+                    "the constraint of {what} `{}` is RTCBuilder's placeholder {}; it constrains nothing",
+                    name.as_deref().unwrap_or(""),
+                    Code(l)
                 ),
             );
         }

@@ -9,6 +9,7 @@ use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
 use crate::model::system::PortEnd;
+use crate::quote::Code;
 use crate::types::canonical_type;
 use std::collections::HashMap;
 
@@ -121,7 +122,10 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
                     ConfigCheck::BadType(why) | ConfigCheck::Violated(why) => sink.emit(
                         r::SYSTEM_CONFIG_INVALID,
                         d.pos,
-                        format!("instance `{name}`, set `{set_id}`: `{n}` = `{v}` is {why}"),
+                        format!(
+                            "instance `{name}`, set `{set_id}`: `{n}` = {} is {why}",
+                            Code(v)
+                        ),
                     ),
                 }
             }

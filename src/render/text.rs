@@ -80,27 +80,7 @@ pub fn code_spans(chars: &[char], pipes: bool) -> Vec<CodeSpan> {
     out
 }
 
-/// `s` as one code span of Markdown: fenced by one backtick more than its longest run of
-/// backticks, padded with a space where needed (CommonMark's rule), so that a value holding
-/// backticks reads whole; [`code_spans`] reads it back.
-pub fn code_span(s: &str) -> String {
-    let mut longest = 0;
-    let mut run = 0;
-    for c in s.chars() {
-        run = if c == '`' { run + 1 } else { 0 };
-        longest = longest.max(run);
-    }
-    let fence = "`".repeat(longest + 1);
-    // A space inside each fence, where the value starts or ends with a backtick (which would
-    // join the fence) or starts and ends with a space (which a reader strips once).
-    let spaced = s.starts_with(' ') && s.ends_with(' ') && s.chars().any(|c| c != ' ');
-    let pad = if s.starts_with('`') || s.ends_with('`') || spaced {
-        " "
-    } else {
-        ""
-    };
-    format!("{fence}{pad}{s}{pad}{fence}")
-}
+pub use crate::quote::code_span;
 
 /// The syntax of one text output format.
 pub trait Markup {
