@@ -515,3 +515,87 @@ fn an_empty_dataflow_export_says_why() {
     assert!(out.starts_with("digraph") && !out.contains("->"), "{out}");
     assert!(err.contains("note: No data flows"), "{err}");
 }
+
+/// A data connector saved with its in-port as the source (RTSystemEditor saves the end the user
+/// dragged from first) is drawn from the out-port to the in-port, as every other: in the DOT
+/// and Mermaid exports and on the system page, where the producer stands left of the consumer.
+#[test]
+fn a_connector_saved_from_its_in_port_flows_from_the_out_port() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let ty = "RTC::TimedBooleanSeq";
+    common::write(
+        d,
+        "in/Sensor/RTC.xml",
+        &common::xml_profile("Sensor", &[("DataOutPort", "bumper", ty)]),
+    );
+    common::write(
+        d,
+        "in/Ctrl/RTC.xml",
+        &common::xml_profile("Ctrl", &[("DataInPort", "bumper", ty)]),
+    );
+    let instance = |name: &str, comp: &str| {
+        format!(
+            r#"  <rts:Components rts:isRequired="false" rts:compositeType="None" rts:activeConfigurationSet="default" rts:instanceName="{name}" rts:pathUri="localhost/{name}.rtc" rts:id="RTC:Test:Cat:{comp}:1.0.0">
+    <rts:DataPorts rts:name="{name}.bumper"/>
+    <rts:ConfigurationSets rts:id="default"/>
+  </rts:Components>
+"#
+        )
+    };
+    let end = |tag: &str, name: &str, comp: &str| {
+        format!(
+            r#"    <rts:{tag} rts:portName="{name}.bumper" rts:instanceName="{name}" rts:componentId="RTC:Test:Cat:{comp}:1.0.0"/>
+"#
+        )
+    };
+    common::write(
+        d,
+        "in/System.xml",
+        &format!(
+            r#"<?xml version="1.0"?>
+<rts:RtsProfile rts:version="0.2" rts:id="RTSystem:Test:Demo:1.0.0" xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">
+{}{}  <rts:DataPortConnectors rts:connectorId="c1" rts:name="Ctrl0.bumper_Sensor0.bumper" rts:dataType="IDL:RTC/TimedBooleanSeq:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush">
+{}{}  </rts:DataPortConnectors>
+</rts:RtsProfile>
+"#,
+            instance("Sensor0", "Sensor"),
+            instance("Ctrl0", "Ctrl"),
+            end("sourceDataPort", "Ctrl0", "Ctrl"),
+            end("targetDataPort", "Sensor0", "Sensor"),
+        ),
+    );
+    let stdout = |args: &[&str]| {
+        let o = common::rtcdoc(args, d);
+        assert!(o.status.success(), "{o:?}");
+        String::from_utf8(o.stdout).unwrap()
+    };
+    // Sensor0 is n0, Ctrl0 n1 (the file's order).
+    let dot = stdout(&["graph", "in"]);
+    let arrow = dot
+        .lines()
+        .find(|l| l.contains(" -> "))
+        .unwrap_or_else(|| panic!("{dot}"));
+    assert!(
+        arrow.trim_start().starts_with("n0:")
+            && arrow.contains("-> n1:")
+            && arrow.contains("Sensor0.bumper → Ctrl0.bumper"),
+        "{arrow}"
+    );
+    let mermaid = stdout(&["graph", "in", "-f", "mermaid"]);
+    assert!(
+        mermaid.contains("n0 -- \"bumper → bumper\" --> n1"),
+        "{mermaid}"
+    );
+    stdout(&["build", "in", "-o", "site", "-q"]);
+    let page = std::fs::read_to_string(d.join("site/systems/demo.html")).unwrap();
+    let box_x = |name: &str| -> f32 {
+        let at = page
+            .find(&format!("aria-label=\"{name} "))
+            .unwrap_or_else(|| panic!("{name}: {page}"));
+        let rest = &page[at..];
+        let x = rest.split("class=\"rtc-box\" x=\"").nth(1).expect("box");
+        x[..x.find('"').unwrap()].parse().unwrap()
+    };
+    assert!(box_x("Sensor0") < box_x("Ctrl0"), "{page}");
+}

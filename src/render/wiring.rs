@@ -147,13 +147,23 @@ pub fn system_wiring(
         else {
             continue;
         };
-        let (source, target) = (
+        let (mut source, mut target) = (
             format!("{}.{}", txt(&se.instance_name), end_port_name(se)),
             format!("{}.{}", txt(&te.instance_name), end_port_name(te)),
         );
+        let (mut from, mut to) = ((a, pa), (b, pb));
+        // Data flows from the out-port to the in-port whichever end the file names first
+        // (RTSystemEditor saves the end the user dragged from as the source).
+        if data_type.is_some()
+            && wire[a].ports[pa].class == "in"
+            && wire[b].ports[pb].class == "out"
+        {
+            std::mem::swap(&mut from, &mut to);
+            std::mem::swap(&mut source, &mut target);
+        }
         conns.push(WireConnector {
-            from: (a, pa),
-            to: (b, pb),
+            from,
+            to,
             service: data_type.is_none(),
             // A data connector without a data type says nothing about it (no empty `()`).
             label: match data_type {
