@@ -1066,3 +1066,27 @@ fn a_pragma_may_name_its_enclosing_module() {
     );
     assert_eq!(id("PortableServer::Inner"), "IDL:own/Inner:9.9");
 }
+
+/// A `///` after a declaration's `;` or `,` on its own line describes that declaration, as
+/// `///<` does (a real pattern: it was read as the next member's doc, moving every text one
+/// member down and losing the last); one on a line of its own still describes the next.
+#[test]
+fn a_same_line_doc_comment_describes_its_own_member() {
+    let set = one(
+        "Map.idl",
+        "module Lab {\n  enum Style { BYTE, /// One byte a cell.\n    TWO_BIT /// Two bits.\n  };\n  struct Map {\n    Style style; /// How cells are stored.\n    /// The cells.\n    sequence<octet> cells;\n    double resolution; /// Metres per cell.\n  };\n};\n",
+    );
+    let map = strukt(&set, "Lab::Map");
+    let docs: Vec<&str> = map.fields.iter().map(|f| brief(&f.doc)).collect();
+    assert_eq!(
+        docs,
+        ["How cells are stored.", "The cells.", "Metres per cell."],
+        "{:?}",
+        diags(&set)
+    );
+    let IdlDefinition::Enum(style) = def(&set, "Lab::Style") else {
+        panic!("an enum");
+    };
+    let docs: Vec<&str> = style.values.iter().map(|v| brief(&v.doc)).collect();
+    assert_eq!(docs, ["One byte a cell.", "Two bits."]);
+}

@@ -227,9 +227,28 @@ impl<'a> Lexer<'a> {
         Ok(())
     }
 
+    /// A doc comment between a name and a `}` on the name's line (`TWO_BIT /// Two bits.`,
+    /// the last enumerator) describes that name, as after a `,` ([`Lexer::line_comment`]).
+    fn last_enumerator_docs(&mut self) {
+        for i in 1..self.out.len().saturating_sub(1) {
+            let (before, rest) = self.out.split_at_mut(i);
+            let (Some(prev), [doc, next, ..]) = (before.last(), rest) else {
+                continue;
+            };
+            if let (Tok::Ident(_), Tok::Doc { after, .. }, Tok::Punct("}")) =
+                (&prev.tok, &mut doc.tok, &next.tok)
+            {
+                if prev.pos.line == doc.pos.line {
+                    *after = true;
+                }
+            }
+        }
+    }
+
     fn run(&mut self) -> Option<(Pos, String, bool)> {
         match self.run_inner() {
             Ok(()) => {
+                self.last_enumerator_docs();
                 let p = self.pos();
                 self.out.push(Token {
                     tok: Tok::Eof,
@@ -316,10 +335,19 @@ impl<'a> Lexer<'a> {
             (false, body)
         };
         if doc {
-            let (after, rest) = match rest.strip_prefix('<') {
+            let (marked, rest) = match rest.strip_prefix('<') {
                 Some(r) => (true, r),
                 None => (false, rest),
             };
+            // A `///` on the line of a declaration, after its `;` or `,`, describes that
+            // declaration (`Style style; /// How the map is stored.`), as its writer meant
+            // and as `///<` says: read as a doc comment before the next declaration, it moved
+            // every such text one member down and lost the last one. (The last enumerator,
+            // without a `,`, is [`Lexer::last_enumerator_docs`]'.)
+            let after = marked
+                || self.out.last().is_some_and(|t| {
+                    t.pos.line == start.line && matches!(t.tok, Tok::Punct(";" | ","))
+                });
             let text = rest
                 .strip_prefix(' ')
                 .unwrap_or(rest)
