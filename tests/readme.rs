@@ -562,6 +562,10 @@ fn rtcbuilder2_readmes_are_recognised_by_their_structure() {
     build_into(&input, &out, vec![Format::Html], SiteOptions::default());
     let blank = read(&out.join("components/blank.html"));
     assert!(!blank.contains("id=\"readme\""), "{blank}");
+    // A configuration parameter's section (`#### speed` under the last generated heading) is
+    // generated too: it was taken for the author's text and shown as the README.
+    let configured = read(&out.join("components/configured.html"));
+    assert!(!configured.contains("id=\"readme\""), "{configured}");
     let filled = read(&out.join("components/filled.html"));
     let section = readme_section(&filled);
     assert!(
@@ -587,6 +591,7 @@ fn rtcbuilder2_readmes_are_recognised_by_their_structure() {
         "{err}"
     );
     assert!(err.contains("Blank/README.md:19:1"), "{err}");
+    assert!(err.contains("Configured/README.md:19:1"), "{err}");
     assert!(!err.contains("Filled/README.md"), "{err}");
     // Not a template: a hand-written README with a `Basic Information` heading but no table.
     let own = dir.path().join("own");

@@ -227,7 +227,16 @@ fn rtcbuilder2(text: &str) -> Option<Rtcbuilder2> {
         return None;
     }
     // The author's part starts at the first heading after the last generated one.
-    let last_generated = headings.iter().rposition(|(_, _, h)| generated(h))?;
+    let mut last_generated = headings.iter().rposition(|(_, _, h)| generated(h))?;
+    // The headings below it are generated too: RTCBuilder writes a `#### <parameter>` with
+    // its table under `### Configuration definition` for each parameter.
+    let level = headings[last_generated].1;
+    while headings
+        .get(last_generated + 1)
+        .is_some_and(|(_, l, _)| *l > level)
+    {
+        last_generated += 1;
+    }
     // Of the author's part, the sections with text (a heading is kept when it or a section
     // below it has text: the template's empty `## Demo` says nothing).
     let own = &headings[last_generated + 1..];
