@@ -722,8 +722,8 @@ impl<U: Uses> TypeEntry<U> {
 }
 
 /// A category or vendor and its components. Spellings that differ only in case or spacing
-/// ("Hardware Interface" / "Hardware interface") are one facet, named by the most frequent
-/// spelling.
+/// ("Hardware Interface" / "Hardware interface" / "Hardware_interface") are one facet, named
+/// by the most frequent spelling.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Facet {
@@ -752,10 +752,20 @@ pub fn facet_key(s: &str) -> String {
         .collect()
 }
 
+/// The key that groups category and vendor spellings into one facet: [`facet_key`], and `_`
+/// and `-` count as spaces too (`Information_acquisition` is `Information acquisition`, as
+/// their slugs already said). Systems match their instances on [`facet_key`] alone: there
+/// `Camera_1` and `Camera1` are two components.
+pub fn facet_group_key(s: &str) -> String {
+    let mut k = facet_key(s);
+    k.retain(|c| c != '_' && c != '-');
+    k
+}
+
 /// The facet of `value` (a component's category or vendor, as written) among `facets`.
 pub fn facet_of<'a>(facets: &'a [Facet], value: &str) -> Option<&'a Facet> {
-    let key = facet_key(value);
-    facets.iter().find(|f| facet_key(&f.name) == key)
+    let key = facet_group_key(value);
+    facets.iter().find(|f| facet_group_key(&f.name) == key)
 }
 
 /// The file names of `idlFile` values, sorted and without repeats: `idlFile` is usually an
@@ -1481,7 +1491,7 @@ impl Catalog {
                     .filter(|s| !s.is_empty())
                     .unwrap_or("");
                 groups
-                    .entry(facet_key(k))
+                    .entry(facet_group_key(k))
                     .or_default()
                     .entry(k.to_string())
                     .or_default()

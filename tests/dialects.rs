@@ -381,7 +381,7 @@ fn dotted_and_colon_ids_are_one_id() {
     assert_eq!(loaded.catalog.components[0].display_name(), "Planner (a)");
 }
 
-/// Categories differing only in case or spacing are one facet; the C++ and Python variants
+/// Categories differing only in case or spacing (`_` and `-` count as spaces) are one facet; the C++ and Python variants
 /// of one component get their language as slug and qualifier.
 #[test]
 fn facets_fold_spellings_and_variants_get_language_slugs() {
@@ -411,22 +411,28 @@ fn facets_fold_spellings_and_variants_get_language_slugs() {
                 "b/RTC.xml",
             ),
             comp("Other", "Hardware interface", "C++", "c/RTC.xml"),
+            comp("Third", "Hardware_interface", "C++", "d/RTC.xml"),
         ],
         vec![],
     );
     assert_eq!(cat.categories.len(), 1);
     let f = &cat.categories[0];
     assert_eq!(f.name, "Hardware interface");
-    assert_eq!(f.variants, vec!["Hardware Interface"]);
+    assert_eq!(f.variants, vec!["Hardware Interface", "Hardware_interface"]);
     assert_eq!(f.slug, "hardware-interface");
     assert_eq!(
         cat.members(f).map(|ci| ci.get()).collect::<Vec<_>>(),
-        vec![0, 1, 2]
+        vec![0, 1, 2, 3]
     );
     let slugs: Vec<&str> = cat.components.iter().map(|c| c.slug.as_str()).collect();
     assert_eq!(
         slugs,
-        vec!["robotcontroller-cpp", "robotcontroller-python", "other"]
+        vec![
+            "robotcontroller-cpp",
+            "robotcontroller-python",
+            "other",
+            "third"
+        ]
     );
     assert_eq!(cat.components[1].display_name(), "RobotController (Python)");
     assert_eq!(cat.components[2].qualifier, None);
