@@ -269,7 +269,8 @@ struct GraphArgs {
     /// use) [default: `.`].
     input: Option<PathBuf>,
     /// The system to draw, by name (also as the pages show it, `RTSystem (ev3)`), page slug or
-    /// input-relative file path; needed when the input holds several.
+    /// file path (relative to the input, or to the current directory); needed when the input
+    /// holds several.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["dataflow", "component"])]
     system: Option<String>,
     /// Instead of a system: the neighbourhood of one component, by name, id or page slug (the
@@ -917,6 +918,11 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
         return write_graph(args, &title, &title, &inst, &conns);
     }
     let systems = &loaded.catalog.systems;
+    // A file path as the shell completes it (from the current directory, not the input).
+    let want_file = args
+        .system
+        .as_deref()
+        .and_then(|w| std::fs::canonicalize(w).ok());
     let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
         Some(want) => systems
             .iter()
@@ -925,6 +931,8 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
                     || s.display_name() == want.as_str()
                     || &s.slug == want
                     || &s.source == want
+                    || want_file.is_some()
+                        && std::fs::canonicalize(input.join(&s.source)).ok() == want_file
             })
             .collect(),
         None => systems.iter().collect(),
