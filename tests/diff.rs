@@ -1782,3 +1782,33 @@ fn a_location_at_a_revision_is_named_with_the_revision() {
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
     assert!(text.contains("--> HEAD:./idl/Lab.idl:5:"), "{text}");
 }
+
+/// A revision that holds no specification: the error names it as written (not the temporary
+/// folder it was read into, which is gone by then), says what was looked for, and its hint,
+/// `--allow-empty`, works: the component of the other side is reported removed.
+#[test]
+fn a_revision_without_a_profile_is_named_and_allow_empty_compares_it() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path();
+    first_commit(d, "RTC.xml");
+    write(d, "README.md", "# Base\n");
+    std::fs::remove_file(d.join("RTC.xml")).unwrap();
+    assert!(git(d, &["add", "-A"]));
+    assert!(git(d, &["commit", "-q", "-m", "only the README"]));
+    let out = rtcdoc(&["diff", "HEAD~1:./", "HEAD:./"], d);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("NEW `HEAD:./`: nothing to document")
+            && err.contains("IDL file in `HEAD:./` (it holds no .xml, .yaml, .rtsys or .idl file)")
+            && !err.contains("rtcdoc-diff-"),
+        "{err}"
+    );
+    let out = rtcdoc(&["diff", "HEAD~1:./", "HEAD:./", "--allow-empty"], d);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("breaking[DIFF101]: component `Base` was removed"),
+        "{text}"
+    );
+}

@@ -199,8 +199,25 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                     )
                 }
             };
-            let loaded =
-                build::load(&input, opts).with_context(|| format!("{which} `{object}`"))?;
+            let loaded = build::load(&input, opts)
+                .map_err(|e| {
+                    // Named as the user wrote it: the temporary folder is gone when it is read.
+                    match e.downcast::<build::NothingToDocument>() {
+                        Ok(mut n) => {
+                            n.message = n
+                                .message
+                                .replace(&temp.path().display().to_string(), &object)
+                                // Only such files are taken out of the revision.
+                                .replace(
+                                    "it holds no files; `--verbose` lists them",
+                                    "it holds no .xml, .yaml, .rtsys or .idl file",
+                                );
+                            anyhow::Error::new(n)
+                        }
+                        Err(e) => e,
+                    }
+                })
+                .with_context(|| format!("{which} `{object}`"))?;
             Ok(Side {
                 loaded,
                 root,
