@@ -1379,16 +1379,35 @@ impl Catalog {
                 by_id.entry(key).or_default().push(i);
             }
         }
+        // The implementation language a profile declares (`C++`, `Python`), as written.
+        let lang = |i: usize| {
+            components[i]
+                .profile
+                .language
+                .as_ref()
+                .and_then(|l| crate::model::non_empty(&l.kind))
+                .map(|k| k.trim().to_ascii_lowercase())
+        };
         for (id, idx) in &by_id {
             if idx.len() > 1 {
                 for &i in idx {
+                    // The C++ and Python implementations of one component share its id
+                    // (RTCBuilder generates both from one specification): each is told apart
+                    // by its language (its page, `diff`), so only profiles of the same
+                    // language, or without one, are ambiguous.
+                    let clashes = |j: usize| {
+                        j != i && (lang(i).is_none() || lang(j).is_none() || lang(i) == lang(j))
+                    };
                     // Name a few of the other files, not all: a copied profile can be
                     // duplicated hundreds of times and the message must stay short.
                     let others: Vec<&str> = idx
                         .iter()
-                        .filter(|&&j| j != i)
+                        .filter(|&&j| clashes(j))
                         .map(|&j| components[j].source.as_str())
                         .collect();
+                    if others.is_empty() {
+                        continue;
+                    }
                     let mut list = others
                         .iter()
                         .take(3)

@@ -795,3 +795,44 @@ fn a_value_with_backticks_is_quoted_whole() {
         "{page}"
     );
 }
+
+/// The C++ and Python implementations of one component share its id (RTCBuilder generates
+/// both from one specification): no RTC010 between them. Two profiles of one language still
+/// clash, and only they are named.
+#[test]
+fn implementations_in_two_languages_share_an_id_without_rtc010() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = std::fs::read_to_string(common::root().join("tests/fixtures/check/RTC010-bad/A.xml"))
+        .unwrap();
+    let with_lang = |kind: &str| {
+        a.replace(
+            "</rtc:RtcProfile>",
+            &format!("  <rtc:Language xsi:type=\"rtcExt:language_ext\" rtc:kind=\"{kind}\"/>\n</rtc:RtcProfile>"),
+        )
+    };
+    common::write(dir.path(), "in/cpp/RTC.xml", &with_lang("C++"));
+    common::write(dir.path(), "in/py/RTC.xml", &with_lang("Python"));
+    let rtc010 = |d: &Path| -> Vec<(String, String)> {
+        let o = common::rtcdoc(&["check", "in", "--format", "json"], d);
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+        json["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .filter(|d| d["code"] == "RTC010")
+            .map(|d| {
+                let s = |k: &str| d[k].as_str().unwrap_or_default().to_string();
+                (s("file"), s("message"))
+            })
+            .collect()
+    };
+    assert_eq!(rtc010(dir.path()), Vec::new());
+    common::write(dir.path(), "in/py-copy/RTC.xml", &with_lang("Python"));
+    let found = rtc010(dir.path());
+    let files: Vec<&str> = found.iter().map(|(f, _)| f.as_str()).collect();
+    assert_eq!(files, ["in/py-copy/RTC.xml", "in/py/RTC.xml"], "{found:?}");
+    assert!(
+        found.iter().all(|(_, m)| !m.contains("cpp/RTC.xml")),
+        "{found:?}"
+    );
+}

@@ -184,7 +184,7 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "duplicate-id",
         summary: "two profiles declare the same component id",
-        explanation: "The id identifies a component uniquely (`RTC:<vendor>:<category>:<name>:<version>`). Two profiles with the same id are ambiguous for repositories and tools that look components up by id; rtcdoc renders both on separate pages. Reported by the catalogue for every profile involved.",
+        explanation: "The id identifies a component uniquely (`RTC:<vendor>:<category>:<name>:<version>`). Two profiles with the same id are ambiguous for repositories and tools that look components up by id; rtcdoc renders both on separate pages. Reported by the catalogue for every profile involved. Not for the implementations of one component in different languages (`rtc:Language` `C++` and `Python`, which RTCBuilder generates from one specification with one id): rtcdoc tells them apart by their language (`RobotController (Python)`, and `diff` pairs them so); profiles of the same language, or without one, are still reported.",
         spec: "2.3.1.1 (id)",
         hint: "give each component its own id: change the name, category or version (and the id with it), or exclude a stale copy of the profile",
     },

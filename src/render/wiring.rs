@@ -124,6 +124,14 @@ pub fn system_wiring(
             location: c.location.as_ref().and_then(|l| l.xy()),
         });
     }
+    let conns = system_connectors(s, &wire);
+    (wire, conns)
+}
+
+/// The connectors of system `s` between its drawn instances `wire`: data connectors from the
+/// out-port to the in-port, service connectors undirected.
+fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
+    let p = &s.profile;
     let port_at = |i: usize, name: &str| wire.get(i)?.ports.iter().position(|q| q.name == name);
     let mut conns: Vec<WireConnector> = Vec::new();
     // Both kinds of connector: the ends' instances (resolved by the catalogue) and ports.
@@ -174,7 +182,7 @@ pub fn system_wiring(
             caption: None,
         });
     }
-    (wire, conns)
+    conns
 }
 
 /// `s` with each character of `table` replaced by its text, and control characters by a space.
