@@ -462,11 +462,24 @@ fn follow_by_id(
         if candidates.is_empty() {
             return;
         }
-        let oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
+        let mut oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
+        // The file as that commit added it, too: the id may have changed since (a new vendor
+        // or category after the copy), and the deleted original has the id of then.
+        let added = match &oldest.at {
+            Where::Blob { oid, .. } => Some((oid.clone(), oldest.entry.file.clone())),
+            _ => None,
+        };
+        if let Some((oid, _)) = &added {
+            oids.push(oid.clone());
+        }
         let mut blobs: Vec<Blob> = Vec::with_capacity(oids.len());
         if cat_file(repo, &oids, &mut |_, b| blobs.push(b)).is_err() {
             return;
         }
+        let then = added.and_then(|(_, file)| {
+            let bytes = blobs.pop()?.ok()?;
+            parse(&bytes, &file).ok()
+        });
         let same: Vec<&String> = candidates
             .iter()
             .zip(&blobs)
@@ -475,7 +488,12 @@ fn follow_by_id(
                     .as_ref()
                     .ok()
                     .and_then(|b| parse(b, path).ok())
-                    .is_some_and(|p| crate::diff::same_component(&p, profile))
+                    .is_some_and(|p| {
+                        crate::diff::same_component(&p, profile)
+                            || then
+                                .as_ref()
+                                .is_some_and(|t| crate::diff::same_component(&p, t))
+                    })
             })
             .map(|((_, path), _)| path)
             .collect();

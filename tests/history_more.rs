@@ -492,6 +492,31 @@ fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
     // The copy changed nothing; the original is the first version.
     assert!(h[1]["changes"].as_array().unwrap().is_empty(), "{h:#?}");
     assert_eq!(h[2]["first"], true);
+    // The id changes after the copy (a new vendor): the original, which has the id of before,
+    // is still found (it was compared with today's id only, and the history stopped at the
+    // copy).
+    let moved = with(
+        &edited,
+        &[
+            ("RTC:Test:Cat:Base", "RTC:Lab:Cat:Base"),
+            ("rtc:vendor=\"Test\"", "rtc:vendor=\"Lab\""),
+        ],
+    );
+    write(&repo, "new/Base/RTC.xml", &moved);
+    commit(&repo, 5, "New vendor");
+    let site = dir.path().join("site-vendor");
+    build(&repo, &site, &["-f", "json"]);
+    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Lab:Cat:Base:1.0.0"]["history"]
+        .as_array()
+        .expect("a history")
+        .clone();
+    let found: Vec<&str> = subjects_and_files(&h).into_iter().map(|(s, _)| s).collect();
+    assert_eq!(
+        found,
+        ["New vendor", "Edit the copy", "Copy", "First"],
+        "{h:#?}"
+    );
 }
 
 #[test]
