@@ -8,6 +8,7 @@ use crate::render::{Format, Prefixed, RenderContext, SiteOptions};
 use crate::walk::{self, Skipped, WalkOptions};
 use anyhow::{bail, Context, Result};
 use rayon::prelude::*;
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -74,6 +75,53 @@ pub struct Loaded {
     /// Where the catalogue's files are (the input directory, the sources' temporary folder,
     /// kept while the catalogue is in use).
     pub roots: crate::catalog::sources::Roots,
+    /// The types and interfaces that IDL files below the input define and no page shows
+    /// (no port uses them, nor a type a port uses): scoped names, in file order
+    /// ([`idl_on_no_page`]). `catalog.json` has them.
+    pub idl_on_no_page: Vec<String>,
+}
+
+/// The types and interfaces declared at module level in the IDL files `input_files` (paths
+/// as the IDL set names them) that have no page: no data type or interface entry of `cat`
+/// resolves to them. Constants, exceptions, forward and nested declarations are left out
+/// (they are shown where they are used).
+pub fn idl_on_no_page(cat: &Catalog, input_files: &HashSet<&str>) -> Vec<String> {
+    use crate::idl::IdlDefinition as D;
+    let shown: HashSet<&str> = cat
+        .data_types
+        .iter()
+        .map(|t| t.name.as_str())
+        .chain(cat.interfaces.iter().map(|t| t.name.as_str()))
+        .filter_map(|n| cat.idl.find(n))
+        .map(|item| item.definition.scoped_name())
+        .collect();
+    fn walk<'a>(defs: &'a [D], shown: &HashSet<&str>, out: &mut Vec<&'a str>) {
+        for d in defs {
+            match d {
+                D::Module(m) => walk(&m.definitions, shown, out),
+                D::Struct(_) | D::Union(_) | D::Enum(_) | D::Typedef(_) | D::Interface(_)
+                    if !shown.contains(d.scoped_name()) =>
+                {
+                    out.push(d.scoped_name());
+                }
+                _ => {}
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for f in cat
+        .idl
+        .files
+        .iter()
+        .filter(|f| input_files.contains(f.path.as_str()))
+    {
+        walk(&f.definitions, &shown, &mut out);
+    }
+    let mut seen = HashSet::new();
+    out.into_iter()
+        .filter(|n| seen.insert(*n))
+        .map(str::to_string)
+        .collect()
 }
 
 /// Receives progress reports of a long build (the CLI draws a progress bar from them).
@@ -306,12 +354,15 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     };
     let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();
+    let input_idl: HashSet<&str> = found.idl.iter().map(|(_, rel)| rel.as_str()).collect();
+    let idl_on_no_page = idl_on_no_page(&catalog, &input_idl);
     Ok(Loaded {
         catalog,
         skipped,
         files,
         failed_systems,
         roots,
+        idl_on_no_page,
     })
 }
 

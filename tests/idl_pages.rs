@@ -381,3 +381,43 @@ fn openrtm_s_own_types_missing_beside_a_project_s_module_rtc_are_an_info() {
     assert_eq!(severity("RTC::TimedPose2D"), "info");
     assert_eq!(severity("RTC::PlanMisspelt"), "warning");
 }
+
+/// An IDL file's types that no port uses have no page: the build and `check` say so, naming
+/// them (an input of IDL alone built an empty site without a word), and catalog.json has them.
+/// A type a port uses, and the types inside it, are not named.
+#[test]
+fn idl_types_on_no_page_are_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(
+        d,
+        "in/idl/Lab.idl",
+        "module Lab {\n  struct Point2D { double x; double y; };\n  struct Pose { Point2D position; double heading; };\n  interface Ranger { double range(); };\n};\n",
+    );
+    let note = |args: &[&str]| -> String {
+        let o = common::rtcdoc(args, d);
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        err.lines()
+            .find(|l| l.contains("are on no page"))
+            .unwrap_or("")
+            .to_string()
+    };
+    let built = note(&["build", "in", "-o", "site", "-f", "html,json"]);
+    assert!(
+        built.starts_with("note: 3 type(s) and interface(s) that the IDL files below the input define are on no page (Lab::Point2D, Lab::Pose, Lab::Ranger)"),
+        "{built}"
+    );
+    let json = std::fs::read_to_string(d.join("site/json/catalog.json")).unwrap();
+    assert!(json.contains("Lab::Ranger"), "catalog.json has them");
+    // A port uses Pose: it and the Point2D inside it get pages; Ranger is still named.
+    common::write(
+        d,
+        "in/Nav/RTC.xml",
+        &common::xml_profile("Nav", &[("DataInPort", "pose", "Lab::Pose")]),
+    );
+    let checked = note(&["check", "in"]);
+    assert!(
+        checked.starts_with("note: 1 type(s) and interface(s) that the IDL files below the input define are on no page (Lab::Ranger)"),
+        "{checked}"
+    );
+}

@@ -119,6 +119,7 @@ fn from_catalog_json(which: &str, shown: &str, path: &Path) -> Result<build::Loa
         files,
         failed_systems: Vec::new(),
         roots: Default::default(),
+        idl_on_no_page: Vec::new(),
     })
 }
 
