@@ -368,8 +368,13 @@ fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
 
 /// The history of component `RTC:Test:Cat:Base:1.0.0` in the catalog.json of `site`.
 fn base_history(site: &Path) -> Vec<Value> {
+    history_of(site, "RTC:Test:Cat:Base:1.0.0")
+}
+
+/// The history of component `id` in the catalog.json of `site`.
+fn history_of(site: &Path, id: &str) -> Vec<Value> {
     let json: Value = serde_json::from_str(&page(site, "catalog.json")).unwrap();
-    json["components"]["RTC:Test:Cat:Base:1.0.0"]["history"]
+    json["components"][id]["history"]
         .as_array()
         .expect("a history")
         .clone()
@@ -506,11 +511,7 @@ fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
     commit(&repo, 5, "New vendor");
     let site = dir.path().join("site-vendor");
     build(&repo, &site, &["-f", "json"]);
-    let json: Value = serde_json::from_str(&page(&site, "catalog.json")).unwrap();
-    let h = json["components"]["RTC:Lab:Cat:Base:1.0.0"]["history"]
-        .as_array()
-        .expect("a history")
-        .clone();
+    let h = history_of(&site, "RTC:Lab:Cat:Base:1.0.0");
     let found: Vec<&str> = subjects_and_files(&h).into_iter().map(|(s, _)| s).collect();
     assert_eq!(
         found,
