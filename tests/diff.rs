@@ -1785,7 +1785,8 @@ fn a_location_at_a_revision_is_named_with_the_revision() {
 
 /// A revision that holds no specification: the error names it as written (not the temporary
 /// folder it was read into, which is gone by then), says what was looked for, and its hint,
-/// `--allow-empty`, works: the component of the other side is reported removed.
+/// `--allow-empty`, works: the component of the other side is reported removed. `--verbose`
+/// names the files it skipped in the revision as `git show` opens them.
 #[test]
 fn a_revision_without_a_profile_is_named_and_allow_empty_compares_it() {
     let dir = tempfile::tempdir().expect("tempdir");
@@ -1810,5 +1811,15 @@ fn a_revision_without_a_profile_is_named_and_allow_empty_compares_it() {
     assert!(
         text.contains("breaking[DIFF101]: component `Base` was removed"),
         "{text}"
+    );
+    // A file it holds that is no profile: `--verbose` names it as `git show` opens it.
+    write(d, "notes.xml", "<notes/>\n");
+    assert!(git(d, &["add", "-A"]));
+    assert!(git(d, &["commit", "-q", "-m", "notes"]));
+    let out = rtcdoc(&["--verbose", "diff", "HEAD~2:./", "HEAD:./"], d);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("skipped HEAD:./notes.xml: is XML with the root element `notes`"),
+        "{err}"
     );
 }

@@ -213,6 +213,13 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                                     "it holds no files; `--verbose` lists them",
                                     "it holds no .xml, .yaml, .rtsys or .idl file",
                                 );
+                            // `--verbose` names the files skipped below it as `git show`
+                            // opens them (`HEAD:./a.xml`).
+                            n.input = PathBuf::from(if path.is_empty() {
+                                format!("{rev}:./")
+                            } else {
+                                object.clone()
+                            });
                             anyhow::Error::new(n)
                         }
                         Err(e) => e,
