@@ -60,6 +60,8 @@ pub struct NothingToDocument {
     pub input: PathBuf,
     /// What the walk did not take.
     pub skipped: Vec<Skipped>,
+    /// What the message says of RTCBuilder's backups found without their profile.
+    pub backups: Option<String>,
 }
 
 /// The result of loading a directory.
@@ -77,51 +79,8 @@ pub struct Loaded {
     pub roots: crate::catalog::sources::Roots,
     /// The types and interfaces that IDL files below the input define and no page shows
     /// (no port uses them, nor a type a port uses): scoped names, in file order
-    /// ([`idl_on_no_page`]). `catalog.json` has them.
+    /// ([`Catalog::idl_on_no_page`]). `catalog.json` has them.
     pub idl_on_no_page: Vec<String>,
-}
-
-/// The types and interfaces declared at module level in the IDL files `input_files` (paths
-/// as the IDL set names them) that have no page: no data type or interface entry of `cat`
-/// resolves to them. Constants, exceptions, forward and nested declarations are left out
-/// (they are shown where they are used).
-pub fn idl_on_no_page(cat: &Catalog, input_files: &HashSet<&str>) -> Vec<String> {
-    use crate::idl::IdlDefinition as D;
-    let shown: HashSet<&str> = cat
-        .data_types
-        .iter()
-        .map(|t| t.name.as_str())
-        .chain(cat.interfaces.iter().map(|t| t.name.as_str()))
-        .filter_map(|n| cat.idl.find(n))
-        .map(|item| item.definition.scoped_name())
-        .collect();
-    fn walk<'a>(defs: &'a [D], shown: &HashSet<&str>, out: &mut Vec<&'a str>) {
-        for d in defs {
-            match d {
-                D::Module(m) => walk(&m.definitions, shown, out),
-                D::Struct(_) | D::Union(_) | D::Enum(_) | D::Typedef(_) | D::Interface(_)
-                    if !shown.contains(d.scoped_name()) =>
-                {
-                    out.push(d.scoped_name());
-                }
-                _ => {}
-            }
-        }
-    }
-    let mut out = Vec::new();
-    for f in cat
-        .idl
-        .files
-        .iter()
-        .filter(|f| input_files.contains(f.path.as_str()))
-    {
-        walk(&f.definitions, &shown, &mut out);
-    }
-    let mut seen = HashSet::new();
-    out.into_iter()
-        .filter(|n| seen.insert(*n))
-        .map(str::to_string)
-        .collect()
 }
 
 /// Receives progress reports of a long build (the CLI draws a progress bar from them).
@@ -332,13 +291,21 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                 ),
                 input: input.to_path_buf(),
                 skipped,
+                backups: None,
             }
             .into());
         }
+        let backups = backups_part(&backups);
         return Err(NothingToDocument {
-            message: nothing_found(input, &skipped, &backups),
+            message: nothing_found(
+                &input.display().to_string(),
+                &skipped,
+                backups.as_deref(),
+                "it holds no files",
+            ),
             input: input.to_path_buf(),
             skipped,
+            backups,
         }
         .into());
     }
@@ -355,7 +322,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();
     let input_idl: HashSet<&str> = found.idl.iter().map(|(_, rel)| rel.as_str()).collect();
-    let idl_on_no_page = idl_on_no_page(&catalog, &input_idl);
+    let idl_on_no_page = catalog.idl_on_no_page(&input_idl);
     Ok(Loaded {
         catalog,
         skipped,
@@ -469,8 +436,26 @@ fn read_idl(found: &[(PathBuf, String)], opts: &LoadOptions) -> Result<crate::id
     Ok(set)
 }
 
-/// The message of [`NothingToDocument`]: the directory and what the walk left out, by kind.
-fn nothing_found(input: &Path, skipped: &[walk::Skipped], backups: &[Backup]) -> String {
+/// What [`NothingToDocument`] says of RTCBuilder's backups found without their `RTC.xml`.
+fn backups_part(backups: &[Backup]) -> Option<String> {
+    let newest = backups.iter().max_by(|a, b| a.source.cmp(&b.source))?;
+    Some(format!(
+        "{} RTCBuilder backup(s) without their RTC.xml (to document the newest, copy `{}` to `{}`)",
+        backups.len(),
+        newest.source,
+        newest.profile_path()
+    ))
+}
+
+/// The message of [`NothingToDocument`]: where (`shown`, as the user named it), what the walk
+/// left out by kind (`--verbose` lists those files) and the backups without their profile;
+/// `empty` when it left out nothing (`it holds no files`).
+pub fn nothing_found(
+    shown: &str,
+    skipped: &[walk::Skipped],
+    backups: Option<&str>,
+    empty: &str,
+) -> String {
     use walk::SkipKind;
     let count = |k: SkipKind| skipped.iter().filter(|s| s.kind == k).count();
     let mut parts = Vec::new();
@@ -490,24 +475,16 @@ fn nothing_found(input: &Path, skipped: &[walk::Skipped], backups: &[Backup]) ->
             parts.push(format!("{n} {what}"));
         }
     }
-    if let Some(newest) = backups.iter().max_by(|a, b| a.source.cmp(&b.source)) {
-        parts.push(format!(
-            "{} RTCBuilder backup(s) without their RTC.xml (to document the newest, copy `{}` to `{}`)",
-            backups.len(),
-            newest.source,
-            newest.profile_path()
-        ));
-    }
+    parts.extend(backups.map(str::to_string));
     let looked = if parts.is_empty() {
-        "it holds no files".to_string()
+        empty.to_string()
     } else {
-        format!("skipped {}", parts.join(", "))
+        format!("skipped {}; `--verbose` lists them", parts.join(", "))
     };
     format!(
-        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`), RT System profile (RtsProfile XML, .rtsys, or YAML with `rtsProfile`) or IDL file in `{}` ({looked}; \
-         `--verbose` lists them). Check the path and the --include/--exclude patterns, or pass \
-         --allow-empty to build an empty catalogue anyway",
-        input.display()
+        "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`), RT System profile (RtsProfile XML, .rtsys, or YAML with `rtsProfile`) or IDL file in `{shown}` ({looked}). \
+         Check the path and the --include/--exclude patterns, or pass --allow-empty to build an \
+         empty catalogue anyway"
     )
 }
 

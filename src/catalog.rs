@@ -37,7 +37,7 @@ pub use crate::slug::{fnv1a, slugify};
 use crate::types::canonical_type;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 /// One loaded profile and where it came from.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -159,14 +159,7 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
     for (i, b) in base.iter().enumerate() {
         groups.entry(b.as_str()).or_default().push(i);
     }
-    let lang = |i: usize| -> Option<String> {
-        loaded[i]
-            .profile
-            .language
-            .as_ref()
-            .and_then(|l| crate::model::non_empty(&l.kind))
-            .map(str::to_string)
-    };
+    let lang = |i: usize| loaded[i].profile.language_kind().map(str::to_string);
     let mut qualifier: Vec<Option<String>> = vec![None; loaded.len()];
     for idx in groups.values().filter(|g| g.len() > 1) {
         let count = |l: &Option<String>| idx.iter().filter(|&&j| &lang(j) == l).count();
@@ -1379,24 +1372,20 @@ impl Catalog {
                 by_id.entry(key).or_default().push(i);
             }
         }
-        // The implementation language a profile declares (`C++`, `Python`), as written.
-        let lang = |i: usize| {
-            components[i]
-                .profile
-                .language
-                .as_ref()
-                .and_then(|l| crate::model::non_empty(&l.kind))
-                .map(|k| k.trim().to_ascii_lowercase())
-        };
+        let lang = |i: usize| components[i].profile.language_kind();
         for (id, idx) in &by_id {
             if idx.len() > 1 {
                 for &i in idx {
                     // The C++ and Python implementations of one component share its id
                     // (RTCBuilder generates both from one specification): each is told apart
-                    // by its language (its page, `diff`), so only profiles of the same
-                    // language, or without one, are ambiguous.
+                    // by its language (its page, and `diff` pairs them so), so only profiles
+                    // of the same language, or without one, are ambiguous.
                     let clashes = |j: usize| {
-                        j != i && (lang(i).is_none() || lang(j).is_none() || lang(i) == lang(j))
+                        j != i
+                            && match (lang(i), lang(j)) {
+                                (Some(a), Some(b)) => a == b,
+                                _ => true,
+                            }
                     };
                     // Name a few of the other files, not all: a copied profile can be
                     // duplicated hundreds of times and the message must stay short.
@@ -2188,6 +2177,50 @@ impl Catalog {
             .map(|t| t.name.as_str())
             .chain(self.interfaces.iter().map(|t| t.name.as_str()))
             .filter(|n| self.idl.find_all(n).is_empty())
+            .collect()
+    }
+
+    /// The types and interfaces declared at module level in the IDL files `input_files`
+    /// (paths as the IDL set names them: the files below the input, not those of
+    /// `--idl-path`) that have no page: no data type or interface entry resolves to them, in
+    /// file order. Constants, exceptions, forward and nested declarations are left out (they
+    /// are shown where they are used).
+    pub fn idl_on_no_page(&self, input_files: &HashSet<&str>) -> Vec<String> {
+        use crate::idl::IdlDefinition as D;
+        fn walk<'a>(defs: &'a [D], shown: &HashSet<&str>, out: &mut Vec<&'a str>) {
+            for d in defs {
+                match d {
+                    D::Module(m) => walk(&m.definitions, shown, out),
+                    D::Struct(_) | D::Union(_) | D::Enum(_) | D::Typedef(_) | D::Interface(_)
+                        if !shown.contains(d.scoped_name()) =>
+                    {
+                        out.push(d.scoped_name());
+                    }
+                    _ => {}
+                }
+            }
+        }
+        let shown: HashSet<&str> = self
+            .data_types
+            .iter()
+            .map(|t| t.name.as_str())
+            .chain(self.interfaces.iter().map(|t| t.name.as_str()))
+            .filter_map(|n| self.idl.find(n))
+            .map(|item| item.definition.scoped_name())
+            .collect();
+        let mut out = Vec::new();
+        for f in self
+            .idl
+            .files
+            .iter()
+            .filter(|f| input_files.contains(f.path.as_str()))
+        {
+            walk(&f.definitions, &shown, &mut out);
+        }
+        let mut seen = HashSet::new();
+        out.into_iter()
+            .filter(|n| seen.insert(*n))
+            .map(str::to_string)
             .collect()
     }
 

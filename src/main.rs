@@ -337,23 +337,6 @@ fn tune_allocator() {
 #[cfg(feature = "system-alloc")]
 fn tune_allocator() {}
 
-/// The note on the types and interfaces that IDL files below the input define and no page
-/// shows (`build::Loaded::idl_on_no_page`); `None` when every one has a page.
-fn idl_on_no_page_note(names: &[String]) -> Option<String> {
-    const SHOWN: usize = 5;
-    if names.is_empty() {
-        return None;
-    }
-    let mut list = names[..names.len().min(SHOWN)].join(", ");
-    if names.len() > SHOWN {
-        list.push_str(&format!(" and {} more", names.len() - SHOWN));
-    }
-    Some(format!(
-        "{} type(s) and interface(s) that the IDL files below the input define are on no page ({list}): a page is made for what a port uses (`rtc:type` of a data port or service interface) and the types inside it; catalog.json has them all",
-        names.len()
-    ))
-}
-
 fn main() -> ExitCode {
     tune_allocator();
     let cli = Cli::parse();
@@ -750,7 +733,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 if let Some(note) = rtcdoc::check::undefined_types_note(&loaded.catalog) {
                     eprintln!("note: {note}");
                 }
-                if let Some(note) = idl_on_no_page_note(&loaded.idl_on_no_page) {
+                if let Some(note) = rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page) {
                     eprintln!("note: {note}");
                 }
                 eprintln!(
@@ -1188,7 +1171,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             eprintln!("note: {note}");
         }
         if let (Some(note), true) = (
-            idl_on_no_page_note(&loaded.idl_on_no_page),
+            rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page),
             human && !cli.quiet,
         ) {
             eprintln!("note: {note}");

@@ -289,6 +289,13 @@ fn nothing_to_document_is_an_error_unless_allowed() {
         assert!(err.contains("skipped 1 other file(s)"), "{err}");
     }
     assert!(!d.join("site").exists());
+    // An empty folder: nothing for `--verbose` to list, so the message does not offer it.
+    std::fs::create_dir_all(d.join("empty")).unwrap();
+    let err = stderr(&rtcdoc(&["check", "empty"], d));
+    assert!(
+        err.contains("in `empty` (it holds no files).") && !err.contains("--verbose"),
+        "{err}"
+    );
     let ok = rtcdoc(&["build", "in", "--allow-empty", "-o", "site"], d);
     assert!(ok.status.success(), "{}", stderr(&ok));
     assert!(d.join("site/index.html").is_file());

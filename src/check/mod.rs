@@ -224,20 +224,11 @@ impl Report {
 /// interfaces are defined in no IDL file read: RTC::TimedLong, … ; add …`. `None` when every
 /// type is defined.
 pub fn undefined_types_note(cat: &crate::catalog::Catalog) -> Option<String> {
-    const SHOWN: usize = 5;
     let names = cat.undefined_types();
     if names.is_empty() {
         return None;
     }
-    let mut list = names
-        .iter()
-        .take(SHOWN)
-        .copied()
-        .collect::<Vec<_>>()
-        .join(", ");
-    if names.len() > SHOWN {
-        list.push_str(&format!(" and {} more", names.len() - SHOWN));
-    }
+    let list = first_names(&names);
     let what = if cat.idl.is_empty() {
         "no IDL file was read: the pages of".to_string()
     } else {
@@ -247,4 +238,33 @@ pub fn undefined_types_note(cat: &crate::catalog::Catalog) -> Option<String> {
         "{what} {} data type(s) and interface(s) show no definition ({list}); add their IDL files below the input, pass --idl-path DIR (an OpenRTM installation's rtm/idl), or run `rtcdoc init` to find one",
         names.len()
     ))
+}
+
+/// The note on the types and interfaces that IDL files below the input define and no page
+/// shows (`build::Loaded::idl_on_no_page`); `None` when every one has a page.
+pub fn idl_on_no_page_note(names: &[String]) -> Option<String> {
+    if names.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "{} type(s) and interface(s) that the IDL files below the input define are on no page ({}): a page is made for what a port uses (`rtc:type` of a data port or service interface) and the types inside it; catalog.json has them all",
+        names.len(),
+        first_names(names)
+    ))
+}
+
+/// The first five of `names`, then how many more (`A, B, C, D, E and 3 more`): a note names
+/// a few, not hundreds.
+fn first_names<S: AsRef<str>>(names: &[S]) -> String {
+    const SHOWN: usize = 5;
+    let mut list = names
+        .iter()
+        .take(SHOWN)
+        .map(AsRef::as_ref)
+        .collect::<Vec<_>>()
+        .join(", ");
+    if names.len() > SHOWN {
+        list.push_str(&format!(" and {} more", names.len() - SHOWN));
+    }
+    list
 }

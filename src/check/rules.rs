@@ -336,7 +336,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
             Ok(n) => s.emit(
                 r::MAX_INSTANCES,
                 at,
-                format!("maxInstances {} is negative", Code(&n.to_string())),
+                format!("maxInstances `{n}` is negative"),
             ),
             Err(_) => s.emit(
                 r::MAX_INSTANCES,

@@ -132,12 +132,7 @@ fn ident(c: &Component) -> Ident {
 
 fn ident_of(p: &Profile, source: &str) -> Ident {
     let b = &p.basic_info;
-    let language = p
-        .language
-        .as_ref()
-        .and_then(|l| non_empty(&l.kind))
-        .unwrap_or("")
-        .to_string();
+    let language = p.language_kind().unwrap_or("").to_string();
     let raw = non_empty(&p.id);
     if let Some(parts) = raw.and_then(|id| IdParts::parse(id, b)) {
         let key = Key(

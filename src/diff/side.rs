@@ -205,14 +205,13 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                     // Named as the user wrote it: the temporary folder is gone when it is read.
                     match e.downcast::<build::NothingToDocument>() {
                         Ok(mut n) => {
-                            n.message = n
-                                .message
-                                .replace(&temp.path().display().to_string(), &object)
-                                // Only such files are taken out of the revision.
-                                .replace(
-                                    "it holds no files; `--verbose` lists them",
-                                    "it holds no .xml, .yaml, .rtsys or .idl file",
-                                );
+                            // Only such files are taken out of the revision.
+                            n.message = build::nothing_found(
+                                &object,
+                                &n.skipped,
+                                n.backups.as_deref(),
+                                "it holds no .xml, .yaml, .rtsys or .idl file",
+                            );
                             // `--verbose` names the files skipped below it as `git show`
                             // opens them (`HEAD:./a.xml`).
                             n.input = PathBuf::from(if path.is_empty() {

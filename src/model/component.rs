@@ -1068,6 +1068,12 @@ impl Profile {
         non_empty(&self.basic_info.name).unwrap_or("(unnamed component)")
     }
 
+    /// The implementation language the profile declares (`rtc:Language` `kind`: `C++`,
+    /// `Python`), trimmed; `None` when it names none.
+    pub fn language_kind(&self) -> Option<&str> {
+        self.language.as_ref().and_then(|l| non_empty(&l.kind))
+    }
+
     /// The action of `kind`, when the profile lists it.
     pub fn action(&self, kind: ActionKind) -> Option<&Action> {
         self.actions.iter().find(|a| a.kind == kind)

@@ -53,11 +53,7 @@ impl HistoryView {
         let mut i = 0;
         while i < h.len() && rows.len() < ROWS {
             if h[i].stands_out() {
-                let mut r = row(&h[i], committed(h), lang, url);
-                if h[i].is_current() && r.date.is_empty() {
-                    r.date = current_date.unwrap_or_default().to_string();
-                }
-                rows.push(r);
+                rows.push(row(&h[i], committed(h), lang, url, current_date));
                 i += 1;
                 continue;
             }
@@ -107,12 +103,13 @@ pub fn committed(h: &[Entry]) -> bool {
 }
 
 /// The row of version `e` of a history that has commits or not ([`committed`]); `url` makes
-/// the link of a commit's file.
+/// the link of a commit's file; `current_date` dates the current file, which git did not date.
 pub fn row(
     e: &Entry,
     committed: bool,
     lang: Lang,
     url: &dyn Fn(&str, &str) -> Option<String>,
+    current_date: Option<&str>,
 ) -> HistoryRow {
     let label = if e.is_current() {
         lang.t(if committed {
@@ -153,7 +150,12 @@ pub fn row(
     HistoryRow {
         url: e.commit.as_deref().and_then(|commit| url(commit, &e.file)),
         label,
-        date: e.date.clone().unwrap_or_default(),
+        date: e
+            .date
+            .as_deref()
+            .or(current_date.filter(|_| e.is_current()))
+            .unwrap_or_default()
+            .to_string(),
         author: e.author.clone().unwrap_or_default(),
         subject: e.subject.clone().unwrap_or_default(),
         version,

@@ -113,14 +113,12 @@ pub fn history_page_view<'a>(
     let url = |commit: &str, path: &str| commit_url(cat, c, source_url, commit, path);
     let mut items = Vec::new();
     let h = &c.history;
+    let current = current_file_date(c);
     let mut i = 0;
     while i < h.len() {
         let e = &h[i];
         if e.stands_out() {
-            let mut row = row(e, committed(h), lang, &url);
-            if e.is_current() && row.date.is_empty() {
-                row.date = current_file_date(c).unwrap_or_default();
-            }
+            let row = row(e, committed(h), lang, &url, current.as_deref());
             items.push(HistoryItem {
                 anchor: entry_anchor(e),
                 heading: [row.version.as_str(), row.label.as_str()]
@@ -467,7 +465,7 @@ pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
         if e.changes.is_empty() {
             continue;
         }
-        let r = row(e, committed(&c.history), lang, &|_, _| None);
+        let r = row(e, committed(&c.history), lang, &|_, _| None, None);
         let mut title = c.display_name().into_owned();
         if !r.version.is_empty() {
             title = format!("{title} {}", r.version);
