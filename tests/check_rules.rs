@@ -771,14 +771,8 @@ fn a_value_with_backticks_is_quoted_whole() {
             .unwrap()
             .replace(r#"rtc:defaultValue="150""#, r#"rtc:defaultValue="1`5``0""#);
     common::write(dir.path(), "in/A.xml", &profile);
-    let o = common::rtcdoc(&["check", "in", "--format", "json"], dir.path());
-    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
-    let message = json["diagnostics"]
-        .as_array()
-        .expect("diagnostics")
-        .iter()
-        .find(|d| d["code"] == "RTC301")
-        .and_then(|d| d["message"].as_str())
+    let message = common::findings(dir.path(), "in", &["RTC301"])[0]["message"]
+        .as_str()
         .expect("RTC301")
         .to_string();
     let chars: Vec<char> = message.chars().collect();
@@ -813,15 +807,10 @@ fn implementations_in_two_languages_share_an_id_without_rtc010() {
     common::write(dir.path(), "in/cpp/RTC.xml", &with_lang("C++"));
     common::write(dir.path(), "in/py/RTC.xml", &with_lang("Python"));
     let rtc010 = |d: &Path| -> Vec<(String, String)> {
-        let o = common::rtcdoc(&["check", "in", "--format", "json"], d);
-        let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
-        json["diagnostics"]
-            .as_array()
-            .expect("diagnostics")
+        common::findings(d, "in", &["RTC010"])
             .iter()
-            .filter(|d| d["code"] == "RTC010")
-            .map(|d| {
-                let s = |k: &str| d[k].as_str().unwrap_or_default().to_string();
+            .map(|f| {
+                let s = |k: &str| f[k].as_str().unwrap_or_default().to_string();
                 (s("file"), s("message"))
             })
             .collect()

@@ -153,15 +153,10 @@ fn the_idl_file_hint_works_when_followed() {
         &std::fs::read_to_string(fixture.join("idl/Lab.idl")).unwrap(),
     );
     let codes_and_hints = |d: &std::path::Path| -> Vec<(String, String)> {
-        let o = rtcdoc(&["check", "in", "--format", "json"], d);
-        let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
-        json["diagnostics"]
-            .as_array()
-            .expect("diagnostics")
+        common::findings(d, "in", &["RTC404", "RTC405"])
             .iter()
-            .filter(|d| matches!(d["code"].as_str(), Some("RTC404" | "RTC405")))
-            .map(|d| {
-                let s = |k: &str| d[k].as_str().unwrap_or_default().to_string();
+            .map(|f| {
+                let s = |k: &str| f[k].as_str().unwrap_or_default().to_string();
                 (s("code"), s("hint"))
             })
             .collect()

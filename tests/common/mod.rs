@@ -158,6 +158,20 @@ pub fn rtcdoc(args: &[&str], cwd: &Path) -> std::process::Output {
         .expect("run rtcdoc")
 }
 
+/// The findings of `rtcdoc check INPUT --format json`, run in `cwd`, whose code is one of
+/// `codes`, in the report's order.
+pub fn findings(cwd: &Path, input: &str, codes: &[&str]) -> Vec<serde_json::Value> {
+    let o = rtcdoc(&["check", input, "--format", "json"], cwd);
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("check prints JSON");
+    json["diagnostics"]
+        .as_array()
+        .expect("diagnostics")
+        .iter()
+        .filter(|d| codes.iter().any(|c| d["code"] == *c))
+        .cloned()
+        .collect()
+}
+
 /// The rest of the standard error of a running `rtcdoc serve`, line by line, as a reader
 /// thread receives it (`recv_timeout` waits for a line without hanging the test).
 pub type ServeLines = std::sync::mpsc::Receiver<String>;
