@@ -8,6 +8,7 @@
 
 #[cfg(feature = "alloc-stats")]
 pub mod alloc_stats;
+pub mod allocator;
 pub mod build;
 pub mod bytes;
 pub mod catalog;

@@ -16,7 +16,7 @@ use std::process::ExitCode;
 /// than the system allocator.
 #[cfg(not(any(feature = "alloc-stats", feature = "system-alloc")))]
 #[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static GLOBAL: rtcdoc::allocator::Mi = rtcdoc::allocator::Mi;
 
 /// mimalloc with byte counters (memory profiling, feature `alloc-stats`).
 #[cfg(feature = "alloc-stats")]
@@ -359,10 +359,11 @@ fn main() -> ExitCode {
 /// A progress bar on standard error, drawn only when it is a terminal. With the environment
 /// variable `RTCDOC_TIMING` set, the time of every stage and the peak RSS so far are printed as
 /// well (for profiling).
-struct Bar(
-    indicatif::ProgressBar,
-    Option<std::sync::Mutex<(String, std::time::Instant)>>,
-);
+struct Bar(indicatif::ProgressBar, Option<std::sync::Mutex<StageClock>>);
+
+/// The stage being timed (`RTCDOC_TIMING`): its name, when it started, and the process's CPU
+/// time then.
+struct StageClock(String, std::time::Instant, Option<u64>);
 
 impl Bar {
     fn new(enabled: bool) -> Bar {
@@ -396,6 +397,18 @@ fn peak_rss() -> Option<String> {
     Some(format!("{} MB", kb / 1024))
 }
 
+/// The CPU time (user and system, all threads) the process has used so far, in milliseconds
+/// (`/proc/self/stat`, Linux only; the kernel counts it in ticks of 10 ms).
+fn cpu_ms() -> Option<u64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // The fields after the command name (which may hold spaces), from field 3 (`state`) on.
+    let rest = &stat[stat.rfind(')')? + 2..];
+    let mut f = rest.split(' ').skip(11);
+    let utime: u64 = f.next()?.parse().ok()?;
+    let stime: u64 = f.next()?.parse().ok()?;
+    Some((utime + stime) * 10)
+}
+
 /// The live heap and the stage's peak heap (feature `alloc-stats`); nothing otherwise.
 #[cfg(feature = "alloc-stats")]
 fn heap_stats() -> String {
@@ -415,25 +428,36 @@ fn heap_stats() -> &'static str {
     ""
 }
 
-fn timing() -> Option<std::sync::Mutex<(String, std::time::Instant)>> {
-    std::env::var_os("RTCDOC_TIMING")
-        .map(|_| std::sync::Mutex::new((String::new(), std::time::Instant::now())))
+fn timing() -> Option<std::sync::Mutex<StageClock>> {
+    std::env::var_os("RTCDOC_TIMING").map(|_| {
+        std::sync::Mutex::new(StageClock(
+            String::new(),
+            std::time::Instant::now(),
+            cpu_ms(),
+        ))
+    })
 }
 
 impl Progress for Bar {
     fn stage(&self, name: &str, total: usize) {
         if let Some(t) = &self.1 {
             let mut t = t.lock().unwrap_or_else(|e| e.into_inner());
+            let cpu = cpu_ms();
             if !t.0.is_empty() {
+                let wall = t.1.elapsed().as_secs_f64() * 1000.0;
+                let used = match (t.2, cpu) {
+                    (Some(a), Some(b)) => format!("  cpu {:>5} ms", b.saturating_sub(a)),
+                    _ => String::new(),
+                };
                 eprintln!(
-                    "timing: {:<20} {:>8.1} ms  (peak RSS so far: {}){}",
+                    "timing: {:<20} {:>8.1} ms{used}  (peak RSS so far: {}){}",
                     t.0,
-                    t.1.elapsed().as_secs_f64() * 1000.0,
+                    wall,
                     peak_rss().unwrap_or_else(|| "?".into()),
                     heap_stats()
                 );
             }
-            *t = (name.to_string(), std::time::Instant::now());
+            *t = StageClock(name.to_string(), std::time::Instant::now(), cpu);
         }
         self.0.set_message(name.to_string());
         self.0.set_length(total as u64);
