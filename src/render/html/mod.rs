@@ -471,6 +471,8 @@ struct Site<'a> {
     vendor_of: PerEntry<Component, usize>,
     /// Where README links go ([`readme::Targets`]).
     readme_targets: std::sync::Arc<readme::Targets>,
+    /// The lifecycle diagram in the site's language, made once.
+    lifecycle: svg::LifecycleDiagram,
 }
 
 impl<'a> Site<'a> {
@@ -856,21 +858,7 @@ impl<'a> Site<'a> {
             &service,
         );
         let implemented = |name: &str| actions.iter().any(|a| a.name == name && a.implemented);
-        let lifecycle = svg::lifecycle_diagram(
-            &svg::LifecycleLabels {
-                title: self.t("lifecycle_diagram"),
-                created: self.t("state_created"),
-                inactive: self.t("state_inactive"),
-                active: self.t("state_active"),
-                error: self.t("state_error"),
-                finalized: self.t("state_finalized"),
-                ec_events: self.t("ec_events"),
-                fsm: self.t("fsm_actions"),
-                implemented: self.t("legend_implemented"),
-                not_implemented: self.t("legend_not_implemented"),
-            },
-            &implemented,
-        );
+        let lifecycle = self.lifecycle.render(&implemented);
         (diagram, lifecycle)
     }
 }
@@ -1085,6 +1073,18 @@ impl HtmlRenderer {
                 "../",
                 |ci| catalog.component_page(ci).path("html"),
             )),
+            lifecycle: svg::LifecycleDiagram::new(&svg::LifecycleLabels {
+                title: lang.t("lifecycle_diagram"),
+                created: lang.t("state_created"),
+                inactive: lang.t("state_inactive"),
+                active: lang.t("state_active"),
+                error: lang.t("state_error"),
+                finalized: lang.t("state_finalized"),
+                ec_events: lang.t("ec_events"),
+                fsm: lang.t("fsm_actions"),
+                implemented: lang.t("legend_implemented"),
+                not_implemented: lang.t("legend_not_implemented"),
+            }),
         };
         site.summaries = Ix::all(catalog.components.len())
             .map(|ci| site.summary(ci))

@@ -551,83 +551,130 @@ pub struct LifecycleLabels<'a> {
     pub not_implemented: &'a str,
 }
 
-/// Renders the lifecycle state diagram (Created, Inactive, Active, Error, Finalized) with the
-/// callbacks on their transitions; `implemented(callback_name)` says which to highlight.
-pub fn lifecycle_diagram(l: &LifecycleLabels<'_>, implemented: &dyn Fn(&str) -> bool) -> String {
-    let mut s = String::with_capacity(4096);
-    let _ = write!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram lifecycle-diagram" viewBox="0 0 800 410" width="800" height="410" role="img" aria-label="{}"><title>{}</title>"#,
-        esc(l.title),
-        esc(l.title)
-    );
-    s.push_str(r#"<defs><marker id="lc-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="8" markerHeight="8" orient="auto-start-reverse"><path class="arrowhead" d="M0 0 L10 5 L0 10 z"/></marker></defs>"#);
-    let cb = |s: &mut String, x: u32, y: u32, anchor: &str, name: &str| {
-        let on = implemented(name);
+/// The lifecycle state diagram of one language, made once per build: its text with, in
+/// place of each callback label, the label in both forms (implemented or not), so that a page's
+/// diagram is a run of copies ([`LifecycleDiagram::render`]).
+pub struct LifecycleDiagram {
+    /// Text, then the callback named (if any) in its two forms, in drawing order.
+    parts: Vec<(String, Option<LifecycleCallback>)>,
+}
+
+/// A callback label of [`LifecycleDiagram`] in both forms.
+struct LifecycleCallback {
+    name: &'static str,
+    implemented: String,
+    not_implemented: String,
+}
+
+impl LifecycleDiagram {
+    /// The diagram (Created, Inactive, Active, Error, Finalized, with the callbacks on their
+    /// transitions) with the labels `l`.
+    pub fn new(l: &LifecycleLabels<'_>) -> LifecycleDiagram {
+        let mut parts: Vec<(String, Option<LifecycleCallback>)> = Vec::new();
+        let mut s = String::with_capacity(1024);
         let _ = write!(
             s,
-            r#"<text class="cb{}" x="{x}" y="{y}" text-anchor="{anchor}">{}{}</text>"#,
-            if on { " impl" } else { "" },
-            if on { "✔ " } else { "" },
-            esc(name)
+            r#"<svg xmlns="http://www.w3.org/2000/svg" class="diagram lifecycle-diagram" viewBox="0 0 800 410" width="800" height="410" role="img" aria-label="{}"><title>{}</title>"#,
+            esc(l.title),
+            esc(l.title)
         );
-    };
-    let state = |s: &mut String, x: u32, y: u32, name: &str, class: &str| {
-        let _ = write!(
-            s,
-            r#"<rect class="state {class}" x="{x}" y="{y}" width="130" height="44" rx="14"/><text class="state-name" x="{}" y="{}" text-anchor="middle">{}</text>"#,
-            x + 65,
-            y + 27,
-            esc(name)
-        );
-    };
-    let arrow = |s: &mut String, d: &str| {
-        let _ = write!(
-            s,
-            r#"<path class="transition" d="{d}" marker-end="url(#lc-arrow)"/>"#
-        );
-    };
-    // Initial pseudo-state and the states.
-    s.push_str(r#"<circle class="initial" cx="20" cy="152" r="7"/>"#);
-    arrow(&mut s, "M27 152 L48 152");
-    for (x, y, name, class) in [
-        (50, 130, l.created, "created"),
-        (320, 130, l.inactive, "inactive"),
-        (600, 130, l.active, "active"),
-        (600, 300, l.error, "error"),
-        (320, 300, l.finalized, "finalized"),
-    ] {
-        state(&mut s, x, y, name, class);
-    }
-    for (path, callbacks) in LIFECYCLE_TRANSITIONS {
-        arrow(&mut s, path);
-        for &(x, y, anchor, name) in *callbacks {
-            cb(&mut s, x, y, anchor, name);
+        s.push_str(r#"<defs><marker id="lc-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="8" markerHeight="8" orient="auto-start-reverse"><path class="arrowhead" d="M0 0 L10 5 L0 10 z"/></marker></defs>"#);
+        let label = |on: bool, x: u32, y: u32, anchor: &str, name: &str| {
+            format!(
+                r#"<text class="cb{}" x="{x}" y="{y}" text-anchor="{anchor}">{}{}</text>"#,
+                if on { " impl" } else { "" },
+                if on { "✔ " } else { "" },
+                esc(name)
+            )
+        };
+        let mut cb = |s: &mut String, x: u32, y: u32, anchor: &str, name: &'static str| {
+            let callback = LifecycleCallback {
+                name,
+                implemented: label(true, x, y, anchor, name),
+                not_implemented: label(false, x, y, anchor, name),
+            };
+            parts.push((std::mem::take(s), Some(callback)));
+        };
+        let state = |s: &mut String, x: u32, y: u32, name: &str, class: &str| {
+            let _ = write!(
+                s,
+                r#"<rect class="state {class}" x="{x}" y="{y}" width="130" height="44" rx="14"/><text class="state-name" x="{}" y="{}" text-anchor="middle">{}</text>"#,
+                x + 65,
+                y + 27,
+                esc(name)
+            );
+        };
+        let arrow = |s: &mut String, d: &str| {
+            let _ = write!(
+                s,
+                r#"<path class="transition" d="{d}" marker-end="url(#lc-arrow)"/>"#
+            );
+        };
+        // Initial pseudo-state and the states.
+        s.push_str(r#"<circle class="initial" cx="20" cy="152" r="7"/>"#);
+        arrow(&mut s, "M27 152 L48 152");
+        for (x, y, name, class) in [
+            (50, 130, l.created, "created"),
+            (320, 130, l.inactive, "inactive"),
+            (600, 130, l.active, "active"),
+            (600, 300, l.error, "error"),
+            (320, 300, l.finalized, "finalized"),
+        ] {
+            state(&mut s, x, y, name, class);
         }
-    }
-    // Execution-context events and FSM callbacks, not tied to one transition.
-    for (title, y, callbacks) in [
-        (l.ec_events, 24, LIFECYCLE_EC_EVENTS),
-        (l.fsm, 240, LIFECYCLE_FSM),
-    ] {
+        for (path, callbacks) in LIFECYCLE_TRANSITIONS {
+            arrow(&mut s, path);
+            for &(x, y, anchor, name) in *callbacks {
+                cb(&mut s, x, y, anchor, name);
+            }
+        }
+        // Execution-context events and FSM callbacks, not tied to one transition.
+        for (title, y, callbacks) in [
+            (l.ec_events, 24, LIFECYCLE_EC_EVENTS),
+            (l.fsm, 240, LIFECYCLE_FSM),
+        ] {
+            let _ = write!(
+                s,
+                r#"<text class="note-title" x="20" y="{y}">{}</text>"#,
+                esc(title)
+            );
+            for &(x, y, anchor, name) in callbacks {
+                cb(&mut s, x, y, anchor, name);
+            }
+        }
+        // Legend.
         let _ = write!(
             s,
-            r#"<text class="note-title" x="20" y="{y}">{}</text>"#,
-            esc(title)
+            r#"<text class="cb impl" x="20" y="360">✔ {}</text><text class="cb" x="20" y="378">{}</text>"#,
+            esc(l.implemented),
+            esc(l.not_implemented)
         );
-        for &(x, y, anchor, name) in callbacks {
-            cb(&mut s, x, y, anchor, name);
-        }
+        s.push_str("</svg>");
+        parts.push((s, None));
+        LifecycleDiagram { parts }
     }
-    // Legend.
-    let _ = write!(
-        s,
-        r#"<text class="cb impl" x="20" y="360">✔ {}</text><text class="cb" x="20" y="378">{}</text>"#,
-        esc(l.implemented),
-        esc(l.not_implemented)
-    );
-    s.push_str("</svg>");
-    s
+
+    /// The diagram of a component: `implemented(callback_name)` says which callbacks to
+    /// highlight.
+    pub fn render(&self, implemented: &dyn Fn(&str) -> bool) -> String {
+        let len = self
+            .parts
+            .iter()
+            .map(|(text, cb)| text.len() + cb.as_ref().map_or(0, |c| c.implemented.len()))
+            .sum();
+        let mut s = String::with_capacity(len);
+        for (text, cb) in &self.parts {
+            s.push_str(text);
+            if let Some(c) = cb {
+                s.push_str(if implemented(c.name) {
+                    &c.implemented
+                } else {
+                    &c.not_implemented
+                });
+            }
+        }
+        s
+    }
 }
 
 #[cfg(test)]
