@@ -115,6 +115,13 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         walk::candidates(input, &walk_opts)?
     };
     let mut roots = crate::catalog::sources::Roots::local(&input_root(input));
+    // The history asks git whether the input is in a work tree: asked now, so that git's
+    // start-up overlaps the reading of the profiles.
+    if opts.history > 0 && opts.history_reader.is_some() && !opts.sources_only {
+        roots.work_tree_probe = std::sync::Arc::new(std::sync::Mutex::new(Some(
+            crate::sources::WorkTreeProbe::start(&roots.local),
+        )));
+    }
     let mut source_notes = Vec::new();
     if !opts.sources.is_empty() {
         progress.stage("reading sources", 0);
@@ -156,46 +163,11 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     progress.stage("reading profiles", found.files.len());
     // A file named on the command line is read as a profile whatever its name.
     let named = !opts.sources_only && input.is_file();
-    enum Outcome {
-        NotProfile(String),
-        System(crate::catalog::systems::LoadedSystem, Vec<Diagnostic>),
-        Loaded(LoadedProfile, Vec<Diagnostic>),
-        Failed(Diagnostic),
-        SystemFailed(Diagnostic),
-    }
-    let outcomes: Vec<Outcome> = found
-        .files
-        .par_iter()
-        .map(|(path, rel)| {
-            let outcome = match walk::read_profile(path, opts.limits.max_file_size, named) {
-                Ok(walk::ReadFile::Other(head)) if parse::rts::is_system(&head) => {
-                    match read_system(path, rel, &opts.limits) {
-                        Ok((s, d)) => Outcome::System(s, d),
-                        Err(d) => Outcome::SystemFailed(d),
-                    }
-                }
-                Ok(walk::ReadFile::Other(head)) => {
-                    Outcome::NotProfile(walk::describe_non_profile(&head))
-                }
-                Ok(walk::ReadFile::Profile(format, bytes)) => {
-                    match parse::parse(format, &bytes, rel, &opts.limits) {
-                        Ok(parsed) => Outcome::Loaded(
-                            LoadedProfile {
-                                source: rel.clone(),
-                                format,
-                                profile: Box::new(parsed.profile),
-                            },
-                            parsed.diagnostics,
-                        ),
-                        Err(d) => Outcome::Failed(d),
-                    }
-                }
-                Err(e) => Outcome::Failed(Diagnostic::io(rel, &e)),
-            };
-            progress.advance(1);
-            outcome
-        })
-        .collect();
+    // The IDL files are read beside the profiles (their reading is mostly serial).
+    let (outcomes, idl) = rayon::join(
+        || read_outcomes(&found.files, opts, named, progress),
+        || read_idl(&found.idl, opts),
+    );
     progress.stage("cross-referencing", 0);
     let mut skipped = found.skipped;
     let mut diagnostics = Vec::new();
@@ -276,7 +248,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             }
         }
     }
-    let idl = read_idl(&found.idl, opts)?;
+    let idl = idl?;
     if files == 0 && systems.is_empty() && found.idl.is_empty() && !opts.allow_empty {
         if opts.sources_only {
             let names: Vec<&str> = opts
@@ -392,6 +364,57 @@ pub(crate) fn system_format(path: &Path, bytes: &[u8]) -> parse::SourceFormat {
         }
         _ => parse::SourceFormat::Yaml,
     }
+}
+
+/// What reading one candidate file gave.
+enum Outcome {
+    NotProfile(String),
+    System(crate::catalog::systems::LoadedSystem, Vec<Diagnostic>),
+    Loaded(LoadedProfile, Vec<Diagnostic>),
+    Failed(Diagnostic),
+    SystemFailed(Diagnostic),
+}
+
+/// Reads and parses the candidate `files` in parallel, in their order (`named`: the file was
+/// named on the command line, read as a profile whatever its name).
+fn read_outcomes(
+    files: &[(PathBuf, String)],
+    opts: &LoadOptions,
+    named: bool,
+    progress: &dyn Progress,
+) -> Vec<Outcome> {
+    files
+        .par_iter()
+        .map(|(path, rel)| {
+            let outcome = match walk::read_profile(path, opts.limits.max_file_size, named) {
+                Ok(walk::ReadFile::Other(head)) if parse::rts::is_system(&head) => {
+                    match read_system(path, rel, &opts.limits) {
+                        Ok((s, d)) => Outcome::System(s, d),
+                        Err(d) => Outcome::SystemFailed(d),
+                    }
+                }
+                Ok(walk::ReadFile::Other(head)) => {
+                    Outcome::NotProfile(walk::describe_non_profile(&head))
+                }
+                Ok(walk::ReadFile::Profile(format, bytes)) => {
+                    match parse::parse(format, &bytes, rel, &opts.limits) {
+                        Ok(parsed) => Outcome::Loaded(
+                            LoadedProfile {
+                                source: rel.clone(),
+                                format,
+                                profile: Box::new(parsed.profile),
+                            },
+                            parsed.diagnostics,
+                        ),
+                        Err(d) => Outcome::Failed(d),
+                    }
+                }
+                Err(e) => Outcome::Failed(Diagnostic::io(rel, &e)),
+            };
+            progress.advance(1);
+            outcome
+        })
+        .collect()
 }
 
 /// Reads the IDL files found below the input and on the IDL path (each file once, in order).

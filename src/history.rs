@@ -62,57 +62,12 @@ enum Repo {
 impl Repo {
     fn git(&self) -> Command {
         let mut c = match self {
-            Repo::WorkTree(dir) => {
-                let mut c = crate::sources::git_command(None);
-                c.current_dir(dir);
-                // The user's limit on finding the repository around the input is kept (the
-                // sources' commands drop it: they name their repository).
-                if let Some(v) = std::env::var_os("GIT_CEILING_DIRECTORIES") {
-                    c.env("GIT_CEILING_DIRECTORIES", v);
-                }
-                c
-            }
+            Repo::WorkTree(dir) => crate::sources::work_tree_git(dir),
             Repo::Mirror(m) => crate::sources::git_command(Some(m)),
         };
         c.args(["-c", "log.showSignature=false", "--literal-pathspecs"]);
         c
     }
-}
-
-/// Whether `dir` is inside a git work tree (and git runs), with a note when git refuses the
-/// repository (owned by another user) or it is a shallow clone: its histories are cut short.
-fn work_tree(dir: &Path) -> (bool, Option<String>) {
-    let mut c = Repo::WorkTree(dir.to_path_buf()).git();
-    c.args([
-        "rev-parse",
-        "--is-inside-work-tree",
-        "--is-shallow-repository",
-        "--show-toplevel",
-    ]);
-    let Ok(o) = c.output() else {
-        return (false, None);
-    };
-    let err = String::from_utf8_lossy(&o.stderr);
-    if !o.status.success() {
-        let note = crate::sources::refused_repository(&err).map(|top| {
-            format!(
-                "git refuses the repository at `{top}` (it belongs to another user), so no component has a git history; {}",
-                crate::sources::safe_directory_hint(top)
-            )
-        });
-        return (false, note);
-    }
-    let out = String::from_utf8_lossy(&o.stdout);
-    let mut lines = out.lines();
-    let inside = lines.next() == Some("true");
-    let shallow = lines.next() == Some("true");
-    let top = lines.next().unwrap_or_default();
-    let note = (inside && shallow).then(|| {
-        format!(
-            "the repository at `{top}` is a shallow clone: each history starts at its oldest commit, not where the file began; fetch the whole history (`git fetch --unshallow`, or `fetch-depth: 0` for actions/checkout)"
-        )
-    });
-    (inside, note)
 }
 
 /// Fills in `history` of every component: up to `limit` commits of its file (0: none, and no
@@ -259,7 +214,7 @@ type Located = (usize, String, String);
 
 impl<'a> Repos<'a> {
     fn new(roots: &Roots, sources: &'a [crate::sources::Pinned]) -> Self {
-        let (inside, note) = work_tree(&roots.local);
+        let crate::sources::WorkTree { inside, note } = roots.work_tree();
         Repos {
             list: Vec::new(),
             local: inside.then(|| Repo::WorkTree(roots.local.clone())),

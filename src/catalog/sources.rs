@@ -20,6 +20,9 @@ pub struct Roots {
     pub sources_dir: Option<Arc<tempfile::TempDir>>,
     /// The sources read, by name.
     pub sources: Vec<SourceInfo>,
+    /// Whether `local` is in a git work tree, asked when the build started
+    /// ([`Roots::work_tree`] takes the answer once).
+    pub work_tree_probe: Arc<std::sync::Mutex<Option<crate::sources::WorkTreeProbe>>>,
 }
 
 impl Roots {
@@ -29,6 +32,20 @@ impl Roots {
             local: dir.to_path_buf(),
             ..Roots::default()
         }
+    }
+
+    /// Whether `local` is in a git work tree: the answer of the probe the build started, the
+    /// first time; asked again afterwards (`serve` reads histories again after edits, and the
+    /// folder may have become a repository meanwhile).
+    pub fn work_tree(&self) -> crate::sources::WorkTree {
+        let probe = self
+            .work_tree_probe
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .take();
+        probe
+            .unwrap_or_else(|| crate::sources::WorkTreeProbe::start(&self.local))
+            .wait()
     }
 
     /// The source a catalogue path (`<name>/…`) belongs to.

@@ -343,6 +343,93 @@ pub fn mirror_path(cache: &Path, s: &Source) -> PathBuf {
     ))
 }
 
+/// `git` run in the input directory `dir` (its history): [`git_command`], except that the
+/// user's limit on finding the repository around it (`GIT_CEILING_DIRECTORIES`) is kept (the
+/// sources' commands drop it: they name their repository).
+pub(crate) fn work_tree_git(dir: &Path) -> Command {
+    let mut c = git_command(None);
+    c.current_dir(dir);
+    if let Some(v) = std::env::var_os("GIT_CEILING_DIRECTORIES") {
+        c.env("GIT_CEILING_DIRECTORIES", v);
+    }
+    c
+}
+
+/// Whether the input directory is inside a git work tree (and git runs), with a note when git
+/// refuses the repository (owned by another user) or it is a shallow clone: its histories are
+/// cut short.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct WorkTree {
+    pub inside: bool,
+    pub note: Option<String>,
+}
+
+/// The `git rev-parse` that answers [`WorkTree`] for a directory, started and not yet waited
+/// for: a build starts it before reading the profiles, so that git's start-up overlaps them.
+#[derive(Debug)]
+pub struct WorkTreeProbe(Option<std::process::Child>);
+
+impl WorkTreeProbe {
+    /// Starts `git rev-parse` in `dir` (a probe that answers "not a work tree" when git does
+    /// not start).
+    pub fn start(dir: &Path) -> WorkTreeProbe {
+        let mut c = work_tree_git(dir);
+        c.args([
+            "-c",
+            "log.showSignature=false",
+            "--literal-pathspecs",
+            "rev-parse",
+            "--is-inside-work-tree",
+            "--is-shallow-repository",
+            "--show-toplevel",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+        WorkTreeProbe(c.spawn().ok())
+    }
+
+    /// Waits for git's answer.
+    pub fn wait(mut self) -> WorkTree {
+        let Some(Ok(o)) = self.0.take().map(|c| c.wait_with_output()) else {
+            return WorkTree::default();
+        };
+        let err = String::from_utf8_lossy(&o.stderr);
+        if !o.status.success() {
+            let note = refused_repository(&err).map(|top| {
+                format!(
+                    "git refuses the repository at `{top}` (it belongs to another user), so no component has a git history; {}",
+                    safe_directory_hint(top)
+                )
+            });
+            return WorkTree {
+                inside: false,
+                note,
+            };
+        }
+        let out = String::from_utf8_lossy(&o.stdout);
+        let mut lines = out.lines();
+        let inside = lines.next() == Some("true");
+        let shallow = lines.next() == Some("true");
+        let top = lines.next().unwrap_or_default();
+        let note = (inside && shallow).then(|| {
+            format!(
+                "the repository at `{top}` is a shallow clone: each history starts at its oldest commit, not where the file began; fetch the whole history (`git fetch --unshallow`, or `fetch-depth: 0` for actions/checkout)"
+            )
+        });
+        WorkTree { inside, note }
+    }
+}
+
+impl Drop for WorkTreeProbe {
+    /// A probe nobody waited for (the build failed first): git is stopped and reaped.
+    fn drop(&mut self) {
+        if let Some(mut c) = self.0.take() {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}
+
 /// `git` with the safe environment: no system configuration, no prompt, no hooks, only the
 /// `file`, `https` and `ssh` protocols, nothing of a repository around the current directory.
 /// The repository git refuses because another user owns it, from git's error output
