@@ -97,11 +97,31 @@ macro_rules! spellings {
     };
 }
 
+/// A row's spellings in one format (`xml` or `yaml`): the row's own list for that format, else
+/// its `both` list, else its JSON name alone.
+macro_rules! spelled {
+    ($format:ident, $json:literal;) => {
+        spellings!([$json])
+    };
+    (xml, $json:literal; xml $list:tt $($rest:tt)*) => {
+        spellings!($list)
+    };
+    (yaml, $json:literal; yaml $list:tt $($rest:tt)*) => {
+        spellings!($list)
+    };
+    ($format:ident, $json:literal; both $list:tt $($rest:tt)*) => {
+        spellings!($list)
+    };
+    ($format:ident, $json:literal; $other:ident $list:tt $($rest:tt)*) => {
+        spelled!($format, $json; $($rest)*)
+    };
+}
+
 macro_rules! table {
     ($(
         $node:ident $([$pos:ident])? {
-            $( $var:ident : $acc:ident = $json:literal, $kind:ident, $doc:literal,
-               xml $xml:tt, yaml $yaml:tt; )*
+            $( $var:ident : $acc:ident = $json:literal, $kind:ident, $doc:literal
+               $(, $format:ident $list:tt)*; )*
         }
     )*) => {
         /// The nodes of a component profile and of an RT System profile.
@@ -131,8 +151,8 @@ macro_rules! table {
                 node: Node::$node,
                 rust: stringify!($acc),
                 json: $json,
-                xml: spellings!($xml),
-                yaml: spellings!($yaml),
+                xml: spelled!(xml, $json; $($format $list)*),
+                yaml: spelled!(yaml, $json; $($format $list)*),
                 kind: Kind::$kind,
                 doc: $doc,
             },)*];)*
@@ -185,323 +205,250 @@ const POSITION_YAML: &[Spelling] = spellings!(["rtcExt::position", "position" @ 
 /// `rtcExt:comment` in YAML.
 const COMMENT_YAML: &[Spelling] = spellings!(["rtcExt::comment"]);
 
-// node [keeps positions] { Variant: rust_field = "json", Text|Date, documentation?,
-//                          xml [attribute names], yaml [keys]; }
+// node [keeps positions] { Variant: rust_field = "json", Text|Date, documentation?
+//                          [, xml [attribute names]] [, yaml [keys]] [, both [names]]; }
+// A format without a list of its own reads the `both` list, or else the row's JSON name alone.
 table! {
     Profile [pos] {
-        ProfileId: id = "id", Text, false, xml ["id"], yaml ["id"];
-        ProfileVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
+        ProfileId: id = "id", Text, false;
+        ProfileVersion: version = "version", Text, false;
     }
     BasicInfo [pos] {
-        BasicName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        BasicComponentType: component_type = "componentType", Text, false,
-            xml ["componentType"], yaml ["componentType"];
-        BasicActivityType: activity_type = "activityType", Text, false,
-            xml ["activityType"], yaml ["activityType"];
-        BasicComponentKind: component_kind = "componentKind", Text, false,
-            xml ["componentKind"], yaml ["componentKind"];
-        BasicRtcType: rtc_type = "rtcType", Text, false, xml ["rtcType"], yaml ["rtcType"];
-        BasicCategory: category = "category", Text, false, xml ["category"], yaml ["category"];
-        BasicDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        BasicExecutionRate: execution_rate = "executionRate", Text, false,
-            xml ["executionRate"], yaml ["executionRate"];
-        BasicExecutionType: execution_type = "executionType", Text, false,
-            xml ["executionType"], yaml ["executionType"];
-        BasicMaxInstances: max_instances = "maxInstances", Text, false,
-            xml ["maxInstances"], yaml ["maxInstances"];
-        BasicVendor: vendor = "vendor", Text, false, xml ["vendor"], yaml ["vendor"];
-        BasicVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
-        BasicAbstract: abstract_ = "abstract", Text, true, xml ["abstract"], yaml ["abstract"];
-        BasicHardwareProfile: hardware_profile = "hardwareProfile", Text, true,
-            xml ["hardwareProfile"], yaml ["hardwareProfile"];
-        BasicCreationDate: creation_date = "creationDate", Date, false,
-            xml ["creationDate"], yaml ["creationDate"];
-        BasicUpdateDate: update_date = "updateDate", Date, false,
-            xml ["updateDate"], yaml ["updateDate"];
-        BasicComment: comment = "comment", Text, true, xml ["comment"], yaml COMMENT_YAML;
-        BasicSaveProject: save_project = "saveProject", Text, false,
-            xml ["saveProject"], yaml ["rtcExt::saveProject"];
+        BasicName: name = "name", Text, false;
+        BasicComponentType: component_type = "componentType", Text, false;
+        BasicActivityType: activity_type = "activityType", Text, false;
+        BasicComponentKind: component_kind = "componentKind", Text, false;
+        BasicRtcType: rtc_type = "rtcType", Text, false;
+        BasicCategory: category = "category", Text, false;
+        BasicDescription: description = "description", Text, true;
+        BasicExecutionRate: execution_rate = "executionRate", Text, false;
+        BasicExecutionType: execution_type = "executionType", Text, false;
+        BasicMaxInstances: max_instances = "maxInstances", Text, false;
+        BasicVendor: vendor = "vendor", Text, false;
+        BasicVersion: version = "version", Text, false;
+        BasicAbstract: abstract_ = "abstract", Text, true;
+        BasicHardwareProfile: hardware_profile = "hardwareProfile", Text, true;
+        BasicCreationDate: creation_date = "creationDate", Date, false;
+        BasicUpdateDate: update_date = "updateDate", Date, false;
+        BasicComment: comment = "comment", Text, true, yaml COMMENT_YAML;
+        BasicSaveProject: save_project = "saveProject", Text, false, yaml ["rtcExt::saveProject"];
     }
     BasicDoc {
-        BasicDocDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        BasicDocInout: inout = "inout", Text, true, xml ["inout"], yaml ["inout"];
-        BasicDocAlgorithm: algorithm = "algorithm", Text, true,
-            xml ["algorithm"], yaml ["algorithm"];
-        BasicDocCreator: creator = "creator", Text, true, xml ["creator"], yaml ["creator"];
-        BasicDocLicense: license = "license", Text, true, xml ["license"], yaml ["license"];
-        BasicDocReference: reference = "reference", Text, true,
-            xml ["reference"], yaml ["reference"];
+        BasicDocDescription: description = "description", Text, true;
+        BasicDocInout: inout = "inout", Text, true;
+        BasicDocAlgorithm: algorithm = "algorithm", Text, true;
+        BasicDocCreator: creator = "creator", Text, true;
+        BasicDocLicense: license = "license", Text, true;
+        BasicDocReference: reference = "reference", Text, true;
     }
     Action {
-        ActionImplemented: implemented = "implemented", Text, false,
-            xml ["implemented"], yaml ["implemented"];
+        ActionImplemented: implemented = "implemented", Text, false;
     }
     ActionDoc {
-        ActionDocDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        ActionDocPreCondition: pre_condition = "preCondition", Text, true,
-            xml ["preCondition"], yaml ["preCondition"];
-        ActionDocPostCondition: post_condition = "postCondition", Text, true,
-            xml ["postCondition"], yaml ["postCondition"];
+        ActionDocDescription: description = "description", Text, true;
+        ActionDocPreCondition: pre_condition = "preCondition", Text, true;
+        ActionDocPostCondition: post_condition = "postCondition", Text, true;
     }
     Configuration [pos] {
-        ConfigurationName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        ConfigurationType: type_ = "type", Text, false, xml ["type"], yaml ["type"];
-        ConfigurationDefaultValue: default_value = "defaultValue", Text, false,
-            xml ["defaultValue"], yaml ["defaultValue"];
-        ConfigurationUnit: unit = "unit", Text, false, xml ["unit"], yaml ["unit"];
-        ConfigurationComment: comment = "comment", Text, true,
-            xml ["comment"], yaml COMMENT_YAML;
-        ConfigurationVariableName: variable_name = "variableName", Text, false,
-            xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
+        ConfigurationName: name = "name", Text, false;
+        ConfigurationType: type_ = "type", Text, false;
+        ConfigurationDefaultValue: default_value = "defaultValue", Text, false;
+        ConfigurationUnit: unit = "unit", Text, false;
+        ConfigurationComment: comment = "comment", Text, true, yaml COMMENT_YAML;
+        ConfigurationVariableName: variable_name = "variableName",
+            Text, false, xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
     }
     ConfigurationDoc {
-        ConfigurationDocDataname: dataname = "dataname", Text, true,
-            xml ["dataname"], yaml ["dataname"];
-        ConfigurationDocDefaultValue: default_value = "defaultValue", Text, true,
-            xml ["defaultValue"], yaml ["defaultValue"];
-        ConfigurationDocDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        ConfigurationDocUnit: unit = "unit", Text, true, xml ["unit"], yaml ["unit"];
-        ConfigurationDocRange: range = "range", Text, true, xml ["range"], yaml ["range"];
-        ConfigurationDocConstraint: constraint = "constraint", Text, true,
-            xml ["constraint"], yaml ["constraint"];
+        ConfigurationDocDataname: dataname = "dataname", Text, true;
+        ConfigurationDocDefaultValue: default_value = "defaultValue", Text, true;
+        ConfigurationDocDescription: description = "description", Text, true;
+        ConfigurationDocUnit: unit = "unit", Text, true;
+        ConfigurationDocRange: range = "range", Text, true;
+        ConfigurationDocConstraint: constraint = "constraint", Text, true;
     }
     DataPort [pos] {
-        DataPortPortType: port_type = "portType", Text, false,
-            xml ["portType"], yaml ["portType"];
-        DataPortName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        DataPortType: type_ = "type", Text, false, xml ["type"], yaml ["type"];
-        DataPortIdlFile: idl_file = "idlFile", Text, false, xml ["idlFile"], yaml ["idlFile"];
-        DataPortInterfaceType: interface_type = "interfaceType", Text, false,
-            xml ["interfaceType"], yaml ["interfaceType"];
-        DataPortDataflowType: dataflow_type = "dataflowType", Text, false,
-            xml ["dataflowType"], yaml ["dataflowType"];
+        DataPortPortType: port_type = "portType", Text, false;
+        DataPortName: name = "name", Text, false;
+        DataPortType: type_ = "type", Text, false;
+        DataPortIdlFile: idl_file = "idlFile", Text, false;
+        DataPortInterfaceType: interface_type = "interfaceType", Text, false;
+        DataPortDataflowType: dataflow_type = "dataflowType", Text, false;
         // RTCBuilder 0.1 (2009) misspells it.
-        DataPortSubscriptionType: subscription_type = "subscriptionType", Text, false,
-            xml ["subscriptionType", "subscriprionType" @ RTCBUILDER_01],
-            yaml ["subscriptionType", "subscriprionType" @ RTCBUILDER_01];
-        DataPortUnit: unit = "unit", Text, false, xml ["unit"], yaml ["unit"];
-        DataPortComment: comment = "comment", Text, true, xml ["comment"], yaml COMMENT_YAML;
-        DataPortVariableName: variable_name = "variableName", Text, false,
-            xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
-        DataPortPosition: position = "position", Text, false,
-            xml ["position"], yaml POSITION_YAML;
+        DataPortSubscriptionType: subscription_type = "subscriptionType",
+            Text, false, both ["subscriptionType", "subscriprionType" @ RTCBUILDER_01];
+        DataPortUnit: unit = "unit", Text, false;
+        DataPortComment: comment = "comment", Text, true, yaml COMMENT_YAML;
+        DataPortVariableName: variable_name = "variableName",
+            Text, false, xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
+        DataPortPosition: position = "position", Text, false, yaml POSITION_YAML;
     }
     DataPortDoc {
-        DataPortDocDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        DataPortDocType: type_ = "type", Text, true, xml ["type"], yaml ["type"];
-        DataPortDocNumber: number = "number", Text, true, xml ["number"], yaml ["number"];
-        DataPortDocSemantics: semantics = "semantics", Text, true,
-            xml ["semantics"], yaml ["semantics"];
-        DataPortDocUnit: unit = "unit", Text, true, xml ["unit"], yaml ["unit"];
+        DataPortDocDescription: description = "description", Text, true;
+        DataPortDocType: type_ = "type", Text, true;
+        DataPortDocNumber: number = "number", Text, true;
+        DataPortDocSemantics: semantics = "semantics", Text, true;
+        DataPortDocUnit: unit = "unit", Text, true;
         // RTCBuilder writes `occerrence`: accepted silently as the same field.
-        DataPortDocOccurrence: occurrence = "occurrence", Text, true,
-            xml ["occurrence", "occerrence"], yaml ["occurrence", "occerrence"];
-        DataPortDocOperation: operation = "operation", Text, true,
-            xml ["operation"], yaml ["operation"];
+        DataPortDocOccurrence: occurrence = "occurrence",
+            Text, true, both ["occurrence", "occerrence"];
+        DataPortDocOperation: operation = "operation", Text, true;
     }
     Event {
-        EventName: name = "name", Text, false, xml ["name"], yaml [];
-        EventType: type_ = "type", Text, false, xml ["type"], yaml [];
-        EventSource: source = "source", Text, false, xml ["source"], yaml [];
-        EventTarget: target = "target", Text, false, xml ["target"], yaml [];
-        EventCondition: condition = "condition", Text, false, xml ["condition"], yaml [];
+        EventName: name = "name", Text, false, yaml [];
+        EventType: type_ = "type", Text, false, yaml [];
+        EventSource: source = "source", Text, false, yaml [];
+        EventTarget: target = "target", Text, false, yaml [];
+        EventCondition: condition = "condition", Text, false, yaml [];
     }
     ServicePort [pos] {
-        ServicePortName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        ServicePortComment: comment = "comment", Text, true,
-            xml ["comment"], yaml COMMENT_YAML;
-        ServicePortPosition: position = "position", Text, false,
-            xml ["position"], yaml POSITION_YAML;
+        ServicePortName: name = "name", Text, false;
+        ServicePortComment: comment = "comment", Text, true, yaml COMMENT_YAML;
+        ServicePortPosition: position = "position", Text, false, yaml POSITION_YAML;
     }
     ServicePortDoc {
-        ServicePortDocDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        ServicePortDocIfdescription: ifdescription = "ifdescription", Text, true,
-            xml ["ifdescription"], yaml ["ifdescription"];
+        ServicePortDocDescription: description = "description", Text, true;
+        ServicePortDocIfdescription: ifdescription = "ifdescription", Text, true;
     }
     TransMethod {
-        TransMethodKind: kind = "kind", Text, false, xml ["kind"], yaml ["kind"];
+        TransMethodKind: kind = "kind", Text, false;
     }
     ServiceInterface [pos] {
-        InterfaceName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        InterfaceType: type_ = "type", Text, false, xml ["type"], yaml ["type"];
-        InterfaceDirection: direction = "direction", Text, false,
-            xml ["direction"], yaml ["direction"];
-        InterfaceInstanceName: instance_name = "instanceName", Text, false,
-            xml ["instanceName"], yaml ["instanceName"];
-        InterfaceIdlFile: idl_file = "idlFile", Text, false, xml ["idlFile"], yaml ["idlFile"];
-        InterfacePath: path = "path", Text, false, xml ["path"], yaml ["path"];
-        InterfaceComment: comment = "comment", Text, true, xml ["comment"], yaml COMMENT_YAML;
-        InterfaceVariableName: variable_name = "variableName", Text, false,
-            xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
+        InterfaceName: name = "name", Text, false;
+        InterfaceType: type_ = "type", Text, false;
+        InterfaceDirection: direction = "direction", Text, false;
+        InterfaceInstanceName: instance_name = "instanceName", Text, false;
+        InterfaceIdlFile: idl_file = "idlFile", Text, false;
+        InterfacePath: path = "path", Text, false;
+        InterfaceComment: comment = "comment", Text, true, yaml COMMENT_YAML;
+        InterfaceVariableName: variable_name = "variableName",
+            Text, false, xml VARIABLE_NAME_XML, yaml VARIABLE_NAME_YAML;
     }
     ServiceInterfaceDoc {
-        InterfaceDocDescription: description = "description", Text, true,
-            xml ["description"], yaml ["description"];
-        InterfaceDocArgument: doc_argument = "docArgument", Text, true,
-            xml ["docArgument"], yaml ["docArgument"];
-        InterfaceDocReturn: doc_return = "docReturn", Text, true,
-            xml ["docReturn"], yaml ["docReturn"];
-        InterfaceDocException: doc_exception = "docException", Text, true,
-            xml ["docException"], yaml ["docException"];
-        InterfaceDocPreCondition: doc_pre_condition = "docPreCondition", Text, true,
-            xml ["docPreCondition"], yaml ["docPreCondition"];
-        InterfaceDocPostCondition: doc_post_condition = "docPostCondition", Text, true,
-            xml ["docPostCondition"], yaml ["docPostCondition"];
+        InterfaceDocDescription: description = "description", Text, true;
+        InterfaceDocArgument: doc_argument = "docArgument", Text, true;
+        InterfaceDocReturn: doc_return = "docReturn", Text, true;
+        InterfaceDocException: doc_exception = "docException", Text, true;
+        InterfaceDocPreCondition: doc_pre_condition = "docPreCondition", Text, true;
+        InterfaceDocPostCondition: doc_post_condition = "docPostCondition", Text, true;
     }
     Parameter {
-        ParameterName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        ParameterDefaultValue: default_value = "defaultValue", Text, false,
-            xml ["defaultValue"], yaml ["defaultValue"];
+        ParameterName: name = "name", Text, false;
+        ParameterDefaultValue: default_value = "defaultValue", Text, false;
     }
     Property {
-        PropertyName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        PropertyValue: value = "value", Text, false, xml ["value"], yaml ["value"];
+        PropertyName: name = "name", Text, false;
+        PropertyValue: value = "value", Text, false;
     }
     Language {
-        LanguageKind: kind = "kind", Text, false, xml ["kind"], yaml ["kind"];
+        LanguageKind: kind = "kind", Text, false;
     }
     Target {
-        TargetLangVersion: lang_version = "langVersion", Text, false,
-            xml ["langVersion"], yaml ["langVersion"];
-        TargetOs: os = "os", Text, false, xml ["os"], yaml ["os"];
-        TargetOther: other = "other", Text, false, xml ["other"], yaml ["other"];
-        TargetCpuOther: cpu_other = "cpuOther", Text, false,
-            xml ["cpuOther"], yaml ["cpuOther"];
+        TargetLangVersion: lang_version = "langVersion", Text, false;
+        TargetOs: os = "os", Text, false;
+        TargetOther: other = "other", Text, false;
+        TargetCpuOther: cpu_other = "cpuOther", Text, false;
     }
     // The PIM calls the library's name `path`: accepted silently.
     Library {
-        LibraryName: name = "name", Text, false, xml ["name", "path"], yaml ["name", "path"];
-        LibraryVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
-        LibraryOther: other = "other", Text, false, xml ["other"], yaml ["other"];
+        LibraryName: name = "name", Text, false, both ["name", "path"];
+        LibraryVersion: version = "version", Text, false;
+        LibraryOther: other = "other", Text, false;
     }
     // RT System profiles (`model/system.rs`): the XML attributes and YAML keys are the same
     // names, in either the `rts` or the `rtsExt` namespace (YAML: with or without `rtsExt::`).
     RtSystem {
-        SystemId: id = "id", Text, false, xml ["id"], yaml ["id"];
-        SystemVersion: version = "version", Text, false, xml ["version"], yaml ["version"];
-        SystemAbstract: abstract_ = "abstract", Text, false, xml ["abstract"], yaml ["abstract"];
-        SystemCreationDate: creation_date = "creationDate", Date, false,
-            xml ["creationDate"], yaml ["creationDate"];
-        SystemUpdateDate: update_date = "updateDate", Date, false,
-            xml ["updateDate"], yaml ["updateDate"];
-        SystemComment: comment = "comment", Text, false, xml ["comment"], yaml ["comment"];
+        SystemId: id = "id", Text, false;
+        SystemVersion: version = "version", Text, false;
+        SystemAbstract: abstract_ = "abstract", Text, false;
+        SystemCreationDate: creation_date = "creationDate", Date, false;
+        SystemUpdateDate: update_date = "updateDate", Date, false;
+        SystemComment: comment = "comment", Text, false;
     }
     SystemProperty {
-        SystemPropertyName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        SystemPropertyValue: value = "value", Text, false, xml ["value"], yaml ["value"];
+        SystemPropertyName: name = "name", Text, false;
+        SystemPropertyValue: value = "value", Text, false;
     }
     SubSystem {
-        SubSystemPath: path = "path", Text, false, xml ["path"], yaml ["path"];
+        SubSystemPath: path = "path", Text, false;
     }
     SystemComponent {
-        InstanceId: id = "id", Text, false, xml ["id"], yaml ["id"];
-        InstancePathUri: path_uri = "pathUri", Text, false, xml ["pathUri"], yaml ["pathUri"];
+        InstanceId: id = "id", Text, false;
+        InstancePathUri: path_uri = "pathUri", Text, false;
         InstanceActiveConfigurationSet: active_configuration_set = "activeConfigurationSet",
-            Text, false, xml ["activeConfigurationSet"], yaml ["activeConfigurationSet"];
-        InstanceName: instance_name = "instanceName", Text, false,
-            xml ["instanceName"], yaml ["instanceName"];
-        InstanceCompositeType: composite_type = "compositeType", Text, false,
-            xml ["compositeType"], yaml ["compositeType"];
-        InstanceIsRequired: is_required = "isRequired", Text, false,
-            xml ["isRequired"], yaml ["isRequired"];
-        InstanceComment: comment = "comment", Text, false, xml ["comment"], yaml ["comment"];
-        InstanceVisible: visible = "visible", Text, false, xml ["visible"], yaml ["visible"];
+            Text, false;
+        InstanceName: instance_name = "instanceName", Text, false;
+        InstanceCompositeType: composite_type = "compositeType", Text, false;
+        InstanceIsRequired: is_required = "isRequired", Text, false;
+        InstanceComment: comment = "comment", Text, false;
+        InstanceVisible: visible = "visible", Text, false;
     }
     SystemPort {
-        SystemPortName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        SystemPortComment: comment = "comment", Text, false, xml ["comment"], yaml ["comment"];
-        SystemPortVisible: visible = "visible", Text, false, xml ["visible"], yaml ["visible"];
+        SystemPortName: name = "name", Text, false;
+        SystemPortComment: comment = "comment", Text, false;
+        SystemPortVisible: visible = "visible", Text, false;
     }
     SystemConfigurationSet {
-        SystemConfigurationSetId: id = "id", Text, false, xml ["id"], yaml ["id"];
+        SystemConfigurationSetId: id = "id", Text, false;
     }
     ConfigurationData {
-        ConfigurationDataName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        ConfigurationDataData: data = "data", Text, false, xml ["data"], yaml ["data"];
+        ConfigurationDataName: name = "name", Text, false;
+        ConfigurationDataData: data = "data", Text, false;
     }
     ExecutionContext {
-        ExecutionContextId: id = "id", Text, false, xml ["id"], yaml ["id"];
-        ExecutionContextKind: kind = "kind", Text, false, xml ["kind"], yaml ["kind"];
-        ExecutionContextRate: rate = "rate", Text, false, xml ["rate"], yaml ["rate"];
+        ExecutionContextId: id = "id", Text, false;
+        ExecutionContextKind: kind = "kind", Text, false;
+        ExecutionContextRate: rate = "rate", Text, false;
     }
     TargetComponent {
-        TargetComponentId: component_id = "componentId", Text, false,
-            xml ["componentId"], yaml ["componentId"];
-        TargetInstanceName: instance_name = "instanceName", Text, false,
-            xml ["instanceName"], yaml ["instanceName"];
-        TargetId: id = "id", Text, false, xml ["id"], yaml ["id"];
+        TargetComponentId: component_id = "componentId", Text, false;
+        TargetInstanceName: instance_name = "instanceName", Text, false;
+        TargetId: id = "id", Text, false;
     }
     Location {
-        LocationX: x = "x", Text, false, xml ["x"], yaml ["x"];
-        LocationY: y = "y", Text, false, xml ["y"], yaml ["y"];
-        LocationHeight: height = "height", Text, false, xml ["height"], yaml ["height"];
-        LocationWidth: width = "width", Text, false, xml ["width"], yaml ["width"];
-        LocationDirection: direction = "direction", Text, false,
-            xml ["direction"], yaml ["direction"];
+        LocationX: x = "x", Text, false;
+        LocationY: y = "y", Text, false;
+        LocationHeight: height = "height", Text, false;
+        LocationWidth: width = "width", Text, false;
+        LocationDirection: direction = "direction", Text, false;
     }
     // rtsprofile (Python) writes `groupID`, the schema `groupId`: either fills the id (a
     // second one is a repeated attribute in XML).
     Group {
-        GroupId: group_id = "groupId", Text, false,
-            xml ["groupId", "groupID"], yaml ["groupId", "groupID"];
+        GroupId: group_id = "groupId", Text, false, both ["groupId", "groupID"];
     }
     PortEnd {
-        PortEndComponentId: component_id = "componentId", Text, false,
-            xml ["componentId"], yaml ["componentId"];
-        PortEndInstanceName: instance_name = "instanceName", Text, false,
-            xml ["instanceName"], yaml ["instanceName"];
-        PortEndPortName: port_name = "portName", Text, false,
-            xml ["portName"], yaml ["portName"];
+        PortEndComponentId: component_id = "componentId", Text, false;
+        PortEndInstanceName: instance_name = "instanceName", Text, false;
+        PortEndPortName: port_name = "portName", Text, false;
     }
     DataPortConnector {
-        DataConnectorId: connector_id = "connectorId", Text, false,
-            xml ["connectorId"], yaml ["connectorId"];
-        DataConnectorName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        DataConnectorDataType: data_type = "dataType", Text, false,
-            xml ["dataType"], yaml ["dataType"];
-        DataConnectorInterfaceType: interface_type = "interfaceType", Text, false,
-            xml ["interfaceType"], yaml ["interfaceType"];
-        DataConnectorDataflowType: dataflow_type = "dataflowType", Text, false,
-            xml ["dataflowType"], yaml ["dataflowType"];
-        DataConnectorSubscriptionType: subscription_type = "subscriptionType", Text, false,
-            xml ["subscriptionType"], yaml ["subscriptionType"];
-        DataConnectorPushInterval: push_interval = "pushInterval", Text, false,
-            xml ["pushInterval"], yaml ["pushInterval"];
-        DataConnectorComment: comment = "comment", Text, false,
-            xml ["comment"], yaml ["comment"];
-        DataConnectorVisible: visible = "visible", Text, false,
-            xml ["visible"], yaml ["visible"];
+        DataConnectorId: connector_id = "connectorId", Text, false;
+        DataConnectorName: name = "name", Text, false;
+        DataConnectorDataType: data_type = "dataType", Text, false;
+        DataConnectorInterfaceType: interface_type = "interfaceType", Text, false;
+        DataConnectorDataflowType: dataflow_type = "dataflowType", Text, false;
+        DataConnectorSubscriptionType: subscription_type = "subscriptionType", Text, false;
+        DataConnectorPushInterval: push_interval = "pushInterval", Text, false;
+        DataConnectorComment: comment = "comment", Text, false;
+        DataConnectorVisible: visible = "visible", Text, false;
     }
     ServicePortConnector {
-        ServiceConnectorId: connector_id = "connectorId", Text, false,
-            xml ["connectorId"], yaml ["connectorId"];
-        ServiceConnectorName: name = "name", Text, false, xml ["name"], yaml ["name"];
-        ServiceConnectorTransMethod: trans_method = "transMethod", Text, false,
-            xml ["transMethod"], yaml ["transMethod"];
-        ServiceConnectorComment: comment = "comment", Text, false,
-            xml ["comment"], yaml ["comment"];
-        ServiceConnectorVisible: visible = "visible", Text, false,
-            xml ["visible"], yaml ["visible"];
+        ServiceConnectorId: connector_id = "connectorId", Text, false;
+        ServiceConnectorName: name = "name", Text, false;
+        ServiceConnectorTransMethod: trans_method = "transMethod", Text, false;
+        ServiceConnectorComment: comment = "comment", Text, false;
+        ServiceConnectorVisible: visible = "visible", Text, false;
     }
     Order {}
     OrderTarget {
-        OrderTargetSequence: sequence = "sequence", Text, false,
-            xml ["sequence"], yaml ["sequence"];
+        OrderTargetSequence: sequence = "sequence", Text, false;
     }
     WaitTime {
-        WaitTimeWaitTime: wait_time = "waitTime", Text, false,
-            xml ["waitTime"], yaml ["waitTime"];
+        WaitTimeWaitTime: wait_time = "waitTime", Text, false;
     }
     Preceding {
-        PrecedingTimeout: timeout = "timeout", Text, false, xml ["timeout"], yaml ["timeout"];
-        PrecedingSendingTiming: sending_timing = "sendingTiming", Text, false,
-            xml ["sendingTiming"], yaml ["sendingTiming"];
+        PrecedingTimeout: timeout = "timeout", Text, false;
+        PrecedingSendingTiming: sending_timing = "sendingTiming", Text, false;
     }
 }
 
