@@ -1224,12 +1224,16 @@ fn interface_slot(i: &ServiceInterface) -> usize {
     }
 }
 
-/// The uses of type `t` that a use in slot `slot` connects to: those of the other direction
-/// (none for the others, or when the catalogue does not have the type).
+/// The uses of type `t` among `entries` (their components counted in `runs`) that a use in
+/// slot `slot` connects to: those of the other direction (none for the others, or when the
+/// catalogue does not have the type).
 fn peers<'a, U: Uses>(
-    t: Option<(&'a TypeEntry<U>, &[Counted; 2])>,
+    entries: &'a [TypeEntry<U>],
+    runs: &[[Counted; 2]],
+    t: Option<Ix<TypeEntry<U>>>,
     slot: usize,
 ) -> PeerRefs<'a, U::Ref> {
+    let t = t.and_then(|t| Some((entries.get(t.get())?, runs.get(t.get())?)));
     match (t, slot) {
         (Some((t, runs)), 0 | 1) => {
             let refs = t.uses.by_role()[1 - slot].1;
@@ -2105,15 +2109,7 @@ impl Catalog {
     pub fn data_port_peers(&self, component: ComponentIx, port: usize) -> PeerRefs<'_, PortRef> {
         let p = &self[component].profile.data_ports[port];
         let t = p.type_.as_deref().and_then(|t| self.data_type_index(t));
-        peers(
-            t.and_then(|t| {
-                Some((
-                    self.data_types.get(t.get())?,
-                    self.peer_runs.data.get(t.get())?,
-                ))
-            }),
-            port_slot(p),
-        )
+        peers(&self.data_types, &self.peer_runs.data, t, port_slot(p))
     }
 
     /// Interfaces matching interface `interface` of service port `port`: required ↔ provided of
@@ -2127,12 +2123,9 @@ impl Catalog {
         let i = &self[component].profile.service_ports[port].interfaces[interface];
         let t = i.type_.as_deref().and_then(|t| self.interface_index_of(t));
         peers(
-            t.and_then(|t| {
-                Some((
-                    self.interfaces.get(t.get())?,
-                    self.peer_runs.interfaces.get(t.get())?,
-                ))
-            }),
+            &self.interfaces,
+            &self.peer_runs.interfaces,
+            t,
             interface_slot(i),
         )
     }
