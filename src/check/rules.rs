@@ -534,19 +534,15 @@ fn names<'a>(p: &'a Profile, s: &mut Findings) {
     let mut ports: HashMap<&str, (Pos, &str)> = HashMap::new();
     let mut port =
         |s: &mut Findings, kind: &'static str, v: &'a Option<crate::model::Text>, pos: Pos| {
-            let Some(n) = non_empty(v) else { return };
-            match ports.get(n) {
-                Some((first, first_kind)) => s.emit(
+            if let Some((n, (first, first_kind))) = seen_before(&mut ports, v, (pos, kind)) {
+                s.emit(
                     r::DUPLICATE_PORT,
                     pos,
                     format!(
                         "{kind} `{n}` has the same name as the {first_kind} at line {}",
                         first.line
                     ),
-                ),
-                None => {
-                    ports.insert(n, (pos, kind));
-                }
+                );
             }
         };
     for d in &p.data_ports {
@@ -613,18 +609,18 @@ fn names<'a>(p: &'a Profile, s: &mut Findings) {
     }
 }
 
-/// A name met before in its list, with where it was first; else `None`, and the name is
-/// remembered at `pos`.
-fn seen_before<'a>(
-    seen: &mut HashMap<&'a str, Pos>,
+/// A name met before in its list, with what it was first met with (where, usually); else
+/// `None`, and the name is remembered with `first` (an empty name is never remembered).
+pub(super) fn seen_before<'a, T: Copy>(
+    seen: &mut HashMap<&'a str, T>,
     name: &'a Option<crate::model::Text>,
-    pos: Pos,
-) -> Option<(&'a str, Pos)> {
+    first: T,
+) -> Option<(&'a str, T)> {
     let n = non_empty(name)?;
     match seen.get(n) {
-        Some(first) => Some((n, *first)),
+        Some(before) => Some((n, *before)),
         None => {
-            seen.insert(n, pos);
+            seen.insert(n, first);
             None
         }
     }

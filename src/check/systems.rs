@@ -3,7 +3,7 @@
 //! instance names, and configuration values against the components' declarations.
 
 use super::registry as r;
-use super::rules::Findings;
+use super::rules::{seen_before, Findings};
 use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
@@ -57,21 +57,17 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
                 .map(|c| (&c.connector_id, &c.name, c.pos)),
         );
     for (id, name, pos) in connectors {
-        let Some(id) = non_empty(id) else { continue };
         let name = non_empty(name).unwrap_or("");
-        match ids.get(id) {
-            // Twins often share their name too: the first one is named by its line.
-            Some((first, at)) => sink.emit(
+        // Twins often share their name too: the first one is named by its line.
+        if let Some((id, (first, at))) = seen_before(&mut ids, id, (name, pos)) {
+            sink.emit(
                 r::SYSTEM_DUPLICATE_CONNECTOR_ID,
                 pos,
                 format!(
                     "connector `{name}` has the id `{id}` of connector `{first}` (line {})",
                     at.line
                 ),
-            ),
-            None => {
-                ids.insert(id, (name, pos));
-            }
+            );
         }
     }
     // Instances against the catalogue; their configuration.
