@@ -49,43 +49,6 @@ pub fn describe_in(c: &Constraint, lang: Lang) -> String {
     describe_kind(c, false, lang)
 }
 
-/// The words of a formula in each language.
-struct Words {
-    one_of: &'static str,
-    or: &'static str,
-    and: &'static str,
-    not_null: &'static str,
-    /// `{}`: the negated formula.
-    not: (&'static str, &'static str),
-    any_case: &'static str,
-    legend: [&'static str; 3],
-}
-
-fn words(lang: Lang) -> &'static Words {
-    const EN: Words = Words {
-        one_of: "one of: ",
-        or: " or ",
-        and: " and ",
-        not_null: "not null",
-        not: ("not (", ")"),
-        any_case: " (any case)",
-        legend: ["any text", "one character", "escape"],
-    };
-    const JA: Words = Words {
-        one_of: "次のいずれか: ",
-        or: " または ",
-        and: " かつ ",
-        not_null: "null でない",
-        not: ("(", ") でない"),
-        any_case: " (大文字と小文字を区別しない)",
-        legend: ["任意の文字列", "任意の1文字", "エスケープ"],
-    };
-    match lang {
-        Lang::En => &EN,
-        Lang::Ja => &JA,
-    }
-}
-
 fn text(s: &Option<crate::model::Text>) -> &str {
     s.as_deref().map(str::trim).unwrap_or("")
 }
@@ -102,7 +65,7 @@ fn comparison_text(
     lang: Lang,
 ) -> String {
     let case = if is_case_insensitive(match_case) {
-        words(lang).any_case
+        lang.t("constraint_any_case")
     } else {
         ""
     };
@@ -164,7 +127,6 @@ fn unit_condition(c: &Constraint) -> Option<&Condition> {
 }
 
 fn describe_condition(cond: &Condition, nested: bool, lang: Lang) -> String {
-    let w = words(lang);
     match cond {
         Condition::Compare {
             comparison,
@@ -181,13 +143,13 @@ fn describe_condition(cond: &Condition, nested: bool, lang: Lang) -> String {
         } => like_text(
             literal,
             [
-                (wild_card, w.legend[0]),
-                (single_char, w.legend[1]),
-                (escape_char, w.legend[2]),
+                (wild_card, lang.t("constraint_any_text")),
+                (single_char, lang.t("constraint_one_char")),
+                (escape_char, lang.t("constraint_escape")),
             ],
         ),
         Condition::Not { operand } => match unit_condition(operand) {
-            Some(Condition::IsNull { .. }) => w.not_null.to_string(),
+            Some(Condition::IsNull { .. }) => lang.t("constraint_not_null").to_string(),
             Some(Condition::Compare {
                 comparison: Comparison::EqualTo,
                 literal,
@@ -195,25 +157,14 @@ fn describe_condition(cond: &Condition, nested: bool, lang: Lang) -> String {
             }) => comparison_text(Comparison::NotEqualTo, literal, match_case, lang),
             _ => format!(
                 "{}{}{}",
-                w.not.0,
+                lang.t("constraint_not_before"),
                 describe_kind(operand, false, lang),
-                w.not.1
+                lang.t("constraint_not_after")
             ),
         },
         Condition::Or { operands } => match enumeration(operands) {
-            Some(l) if l.len() > 1 => format!("{}{}", w.one_of, l.join(", ")),
-            _ => {
-                let s = operands
-                    .iter()
-                    .map(|o| describe_kind(o, true, lang))
-                    .collect::<Vec<_>>()
-                    .join(w.or);
-                if nested {
-                    format!("({s})")
-                } else {
-                    s
-                }
-            }
+            Some(l) if l.len() > 1 => format!("{}{}", lang.t("constraint_one_of"), l.join(", ")),
+            _ => joined(operands, lang.t("constraint_or"), nested, lang),
         },
         Condition::And { operands } => {
             if let [a, b] = operands.as_slice() {
@@ -221,17 +172,23 @@ fn describe_condition(cond: &Condition, nested: bool, lang: Lang) -> String {
                     return s;
                 }
             }
-            let s = operands
-                .iter()
-                .map(|o| describe_kind(o, true, lang))
-                .collect::<Vec<_>>()
-                .join(w.and);
-            if nested {
-                format!("({s})")
-            } else {
-                s
-            }
+            joined(operands, lang.t("constraint_and"), nested, lang)
         }
+    }
+}
+
+/// The operands of an `or` / `and` joined by `word`; in parentheses when `nested` in another
+/// formula.
+fn joined(operands: &[Constraint], word: &str, nested: bool, lang: Lang) -> String {
+    let s = operands
+        .iter()
+        .map(|o| describe_kind(o, true, lang))
+        .collect::<Vec<_>>()
+        .join(word);
+    if nested {
+        format!("({s})")
+    } else {
+        s
     }
 }
 
