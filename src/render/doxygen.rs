@@ -216,14 +216,6 @@ impl Markup for Dox {
     fn paragraph(out: &mut String, escaped: &str) {
         d!(out, "<p>{escaped}</p>");
     }
-    fn list(out: &mut String, items: &[&str]) {
-        d!(out, "<ul>");
-        for l in items {
-            d!(out, "<li>{}</li>", text(l));
-        }
-        d!(out, "</ul>");
-        d!(out);
-    }
     fn linked_list(out: &mut String, items: &[String]) {
         d!(out, "<ul>");
         for l in items {

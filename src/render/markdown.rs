@@ -227,12 +227,6 @@ impl Markup for Md {
         w!(out, "{escaped}");
         w!(out);
     }
-    fn list(out: &mut String, items: &[&str]) {
-        for l in items {
-            w!(out, "- {}", inline(l));
-        }
-        w!(out);
-    }
     fn linked_list(out: &mut String, items: &[String]) {
         for l in items {
             w!(out, "- {l}");

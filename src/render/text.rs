@@ -102,7 +102,10 @@ pub trait Markup {
     /// A paragraph of already escaped text.
     fn paragraph(out: &mut String, escaped: &str);
     /// A bulleted list of plain-text items.
-    fn list(out: &mut String, items: &[&str]);
+    fn list(out: &mut String, items: &[&str]) {
+        let escaped: Vec<String> = items.iter().map(|l| Self::esc(l)).collect();
+        Self::linked_list(out, &escaped);
+    }
     /// A bulleted list of already escaped items (links).
     fn linked_list(out: &mut String, items: &[String]);
     /// A heading of `level` (2 or 3) on `page`, with the stable `anchor`.
