@@ -529,27 +529,14 @@ pub fn pin_sources(
     )
 }
 
-/// Values given on the command line; each one that is set wins over the file.
+/// Values given on the command line: the settings of `rtcdoc.toml` that have a flag, each one
+/// given winning over the file's (a path as given, not against the file's folder), and the
+/// flag that only the command line has.
 #[derive(Debug, Clone, Default)]
 pub struct Overrides {
-    pub input: Option<PathBuf>,
-    pub output: Option<PathBuf>,
-    pub formats: Vec<Format>,
-    pub strict: bool,
-    pub title: Option<String>,
-    pub base_url: Option<String>,
-    pub theme: Option<PathBuf>,
-    pub language: Option<Lang>,
-    pub include: Vec<String>,
-    pub exclude: Vec<String>,
-    pub max_file_size: Option<u64>,
-    pub max_depth: Option<usize>,
+    pub settings: Config,
     /// `--allow-empty`: an input without profiles is not an error.
     pub allow_empty: bool,
-    /// `--idl-path DIR` (repeatable).
-    pub idl_path: Vec<PathBuf>,
-    /// `--history N`.
-    pub history: Option<usize>,
 }
 
 /// The catalogue title when none is configured, in the UI language.
@@ -562,8 +549,8 @@ pub fn default_title(lang: Lang) -> String {
 
 /// Combines defaults, the configuration file and command-line overrides (in rising order of
 /// precedence) into the options of a build.
-pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptions {
-    let c = &file.config;
+pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::BuildOptions {
+    let (c, cli) = (&file.config, &overrides.settings);
     let input = cli
         .input
         .clone()
@@ -575,33 +562,33 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
         .clone()
         .or_else(|| c.output.as_deref().map(|p| file.resolve(p)))
         .unwrap_or_else(|| file.resolve(Path::new("site")));
-    let formats = if cli.formats.is_empty() {
-        c.formats.clone().unwrap_or_else(|| vec![Format::Html])
-    } else {
-        cli.formats.clone()
-    };
-    let pick = |cli: &Vec<String>, file: &Option<Vec<String>>| {
-        if cli.is_empty() {
-            file.clone().unwrap_or_default()
-        } else {
-            cli.clone()
-        }
-    };
     let limits = file.limits();
     crate::build::BuildOptions {
         input,
         output,
-        formats,
-        strict: cli.strict || c.strict.unwrap_or(false),
+        formats: cli
+            .formats
+            .clone()
+            .or_else(|| c.formats.clone())
+            .unwrap_or_else(|| vec![Format::Html]),
+        strict: cli.strict.or(c.strict).unwrap_or(false),
         load: crate::build::LoadOptions {
-            include: pick(&cli.include, &c.include),
-            exclude: pick(&cli.exclude, &c.exclude),
+            include: cli
+                .include
+                .clone()
+                .or_else(|| c.include.clone())
+                .unwrap_or_default(),
+            exclude: cli
+                .exclude
+                .clone()
+                .or_else(|| c.exclude.clone())
+                .unwrap_or_default(),
             limits: Limits {
                 max_file_size: cli.max_file_size.unwrap_or(limits.max_file_size),
                 max_depth: cli.max_depth.unwrap_or(limits.max_depth),
             },
             skip_dirs: vec![],
-            allow_empty: cli.allow_empty,
+            allow_empty: overrides.allow_empty,
             // Filled by [`pin_sources`]: fetching is not a matter of combining settings.
             sources: Vec::new(),
             // Sources configured and no input directory named: only the sources are read.
@@ -613,14 +600,14 @@ pub fn build_options(file: &Loaded, cli: &Overrides) -> crate::build::BuildOptio
                 .or(c.history)
                 .unwrap_or(crate::history::DEFAULT_LIMIT),
             history_reader: Some(crate::history::attach),
-            idl_path: if cli.idl_path.is_empty() {
-                c.idl_path
+            idl_path: match &cli.idl_path {
+                Some(paths) => paths.clone(),
+                None => c
+                    .idl_path
                     .iter()
                     .flatten()
                     .map(|p| file.resolve(p))
-                    .collect()
-            } else {
-                cli.idl_path.clone()
+                    .collect(),
             },
         },
         site: crate::render::SiteOptions {
@@ -694,12 +681,15 @@ mod precedence_tests {
     fn flags_override_the_file() {
         let f = loaded("title = \"Lab\"\noutput = \"public\"\nformats = [\"json\"]\nlanguage = \"ja\"\nexclude = [\"old/**\"]\nmax-depth = 10\n");
         let cli = Overrides {
-            title: Some("CLI".into()),
-            output: Some(PathBuf::from("out")),
-            formats: vec![Format::Html],
-            language: Some(Lang::En),
-            exclude: vec!["x/**".into()],
-            max_depth: Some(5),
+            settings: Config {
+                title: Some("CLI".into()),
+                output: Some(PathBuf::from("out")),
+                formats: Some(vec![Format::Html]),
+                language: Some(Lang::En),
+                exclude: Some(vec!["x/**".into()]),
+                max_depth: Some(5),
+                ..Default::default()
+            },
             ..Default::default()
         };
         let o = build_options(&f, &cli);

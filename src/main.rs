@@ -505,22 +505,29 @@ fn overrides(
     i: &InputArgs,
     build: Option<&BuildArgs>,
 ) -> Overrides {
+    // A list flag not given sets nothing (the file's list applies).
+    fn given<T: Clone>(list: &[T]) -> Option<Vec<T>> {
+        (!list.is_empty()).then(|| list.to_vec())
+    }
     Overrides {
-        input: input.clone(),
-        output: build.and_then(|b| b.output.clone()),
-        formats: build.map(|b| b.format.clone()).unwrap_or_default(),
-        strict: build.is_some_and(|b| b.strict),
-        title: site.title.clone(),
-        base_url: site.base_url.clone(),
-        theme: site.theme.clone(),
-        language: site.language,
-        include: i.include.clone(),
-        exclude: i.exclude.clone(),
-        max_file_size: i.max_file_size,
-        max_depth: i.max_depth,
+        settings: config::Config {
+            input: input.clone(),
+            output: build.and_then(|b| b.output.clone()),
+            formats: build.and_then(|b| given(&b.format)),
+            strict: build.is_some_and(|b| b.strict).then_some(true),
+            title: site.title.clone(),
+            base_url: site.base_url.clone(),
+            theme: site.theme.clone(),
+            language: site.language,
+            include: given(&i.include),
+            exclude: given(&i.exclude),
+            max_file_size: i.max_file_size,
+            max_depth: i.max_depth,
+            idl_path: given(&i.idl_path),
+            history: build.and_then(|b| b.history),
+            ..Default::default()
+        },
         allow_empty: i.allow_empty,
-        idl_path: i.idl_path.clone(),
-        history: build.and_then(|b| b.history),
     }
 }
 
