@@ -3,6 +3,7 @@
 //! it as `rtcdoc diff` classifies them. Plain data here; `crate::history` reads git and the
 //! backups and fills it in (this layer knows neither git nor the diff engine).
 
+use crate::model::is_false;
 use serde::{Deserialize, Serialize};
 
 /// One version of a component profile and what changed to reach it.
@@ -46,10 +47,6 @@ pub struct Entry {
     /// (whitespace, formatting, attribute order), which the pages fold.
     #[serde(default)]
     pub changes: Vec<Change>,
-}
-
-fn is_false(b: &bool) -> bool {
-    !*b
 }
 
 impl Entry {

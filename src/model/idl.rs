@@ -6,12 +6,8 @@
 //! (`IDL:RTC/TimedLong:1.0`, after `#pragma prefix/ID/version`, `typeid`, `typeprefix`), the doc
 //! comment attached to it, its position in the original file and that file's display path.
 
-use crate::model::Pos;
+use crate::model::{is_false, Pos};
 use serde::{Deserialize, Serialize};
-
-fn is_false(b: &bool) -> bool {
-    !*b
-}
 
 /// Declares a kind of IDL declaration: the struct with its derives and, before the fields
 /// written, the six every declaration starts with.

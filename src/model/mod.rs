@@ -58,6 +58,11 @@ pub mod system;
 
 pub use component::*;
 
+/// For `skip_serializing_if`: a flag the JSON leaves out while it is false.
+pub(crate) fn is_false(b: &bool) -> bool {
+    !*b
+}
+
 /// Where a document came from when it was read from a `[[source]]` repository of
 /// `rtcdoc.toml` (not from the input directory): the source's name, the commit it is pinned
 /// at and the file's path in that repository.
