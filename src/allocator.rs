@@ -9,6 +9,7 @@
 //! `mi_realloc`: 2–3 % fewer instructions in a build (see book/src/performance.md). Larger
 //! alignments take mimalloc's aligned calls, as before.
 
+use libmimalloc_sys as mi;
 use std::alloc::{GlobalAlloc, Layout};
 use std::ffi::c_void;
 
@@ -18,43 +19,51 @@ const MIN_ALIGN: usize = 8;
 /// mimalloc, plain calls for alignments up to [`MIN_ALIGN`].
 pub struct Mi;
 
+/// A mimalloc call that allocates `size` bytes (`mi_malloc`, `mi_zalloc`).
+type Plain = unsafe extern "C" fn(usize) -> *mut c_void;
+/// A mimalloc call that allocates `size` bytes aligned to `alignment`.
+type Aligned = unsafe extern "C" fn(usize, usize) -> *mut c_void;
+
+/// `plain` for a layout whose alignment every block has, `aligned` otherwise.
+///
+/// # Safety
+/// As [`GlobalAlloc::alloc`]: `layout` has a non-zero size.
+#[inline(always)]
+unsafe fn allocate(layout: Layout, plain: Plain, aligned: Aligned) -> *mut u8 {
+    let p = if layout.align() <= MIN_ALIGN {
+        unsafe { plain(layout.size()) }
+    } else {
+        unsafe { aligned(layout.size(), layout.align()) }
+    };
+    p as *mut u8
+}
+
 // SAFETY: each call goes to mimalloc, which returns blocks of at least the size asked for and
 // aligned to at least `MIN_ALIGN` (the plain calls) or to the alignment asked for (the aligned
 // calls); memory is freed by `mi_free`, which takes blocks of either kind.
 unsafe impl GlobalAlloc for Mi {
     #[inline]
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let p = if layout.align() <= MIN_ALIGN {
-            unsafe { libmimalloc_sys::mi_malloc(layout.size()) }
-        } else {
-            unsafe { libmimalloc_sys::mi_malloc_aligned(layout.size(), layout.align()) }
-        };
-        p as *mut u8
+        unsafe { allocate(layout, mi::mi_malloc, mi::mi_malloc_aligned) }
     }
 
     #[inline]
     unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        let p = if layout.align() <= MIN_ALIGN {
-            unsafe { libmimalloc_sys::mi_zalloc(layout.size()) }
-        } else {
-            unsafe { libmimalloc_sys::mi_zalloc_aligned(layout.size(), layout.align()) }
-        };
-        p as *mut u8
+        unsafe { allocate(layout, mi::mi_zalloc, mi::mi_zalloc_aligned) }
     }
 
     #[inline]
     unsafe fn dealloc(&self, ptr: *mut u8, _layout: Layout) {
-        unsafe { libmimalloc_sys::mi_free(ptr as *mut c_void) }
+        unsafe { mi::mi_free(ptr as *mut c_void) }
     }
 
     #[inline]
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let ptr = ptr as *mut c_void;
         let p = if layout.align() <= MIN_ALIGN {
-            unsafe { libmimalloc_sys::mi_realloc(ptr as *mut c_void, new_size) }
+            unsafe { mi::mi_realloc(ptr, new_size) }
         } else {
-            unsafe {
-                libmimalloc_sys::mi_realloc_aligned(ptr as *mut c_void, new_size, layout.align())
-            }
+            unsafe { mi::mi_realloc_aligned(ptr, new_size, layout.align()) }
         };
         p as *mut u8
     }
