@@ -163,8 +163,14 @@ impl super::Catalog {
     /// [`since`] (only for its elements that still exist; the interfaces of a service port added
     /// whole take the port's) and the history pages.
     pub fn history_attached(&mut self) {
-        for c in &mut self.components {
+        use rayon::prelude::*;
+        self.components.par_iter_mut().for_each(|c| {
             let mut since = since(&c.history);
+            if since.is_empty() {
+                // Nothing added in the history: nothing to keep (the usual case without one).
+                c.since = since;
+                return;
+            }
             let keys = ElementKeys::of(&c.profile);
             // The interfaces of a service port added whole came with it (the diff names the
             // port only).
@@ -177,7 +183,7 @@ impl super::Catalog {
             }
             since.retain(|k, _| keys.all().any(|x| x == k));
             c.since = since;
-        }
+        });
         self.index_history_pages();
     }
 }
