@@ -1175,16 +1175,23 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
         }
     }
     let mut want = vec![(0.0f32, 0.0f32); g.items.len()];
+    // The lists of one layer, reused from layer to layer and round to round.
+    let widest = g.order.iter().map(Vec::len).max().unwrap_or(0);
+    let mut target = Vec::with_capacity(widest);
+    let mut weight = Vec::with_capacity(widest);
+    let mut off = Vec::with_capacity(widest);
+    let mut pooled = Pooled::with_capacity(widest);
     for round in 0..16 {
         // A round that moves nothing leaves every later round nothing to move (each layer's
         // tops depend only on the tops): stop there, with the very same result.
         let mut moved = false;
-        let seq: Vec<usize> = if round % 2 == 0 {
-            (0..g.layers).collect()
-        } else {
-            (0..g.layers).rev().collect()
-        };
-        for l in seq {
+        for step in 0..g.layers {
+            // Down the layers in even rounds, up in odd ones.
+            let l = if round % 2 == 0 {
+                step
+            } else {
+                g.layers - 1 - step
+            };
             // Desired tops.
             for &it in &g.order[l] {
                 want[it] = (0.0, 0.0);
@@ -1195,9 +1202,9 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
                 want[p.item].1 += p.weight;
             }
             let list = &g.order[l];
-            let mut target = Vec::with_capacity(list.len());
-            let mut weight = Vec::with_capacity(list.len());
-            let mut off = Vec::with_capacity(list.len());
+            target.clear();
+            weight.clear();
+            off.clear();
             let mut acc = 0.0;
             for (k, &it) in list.iter().enumerate() {
                 if k > 0 {
@@ -1212,7 +1219,7 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
                 target.push(t - acc);
                 weight.push(w);
             }
-            let z = isotonic(&target, &weight);
+            let z = pooled.isotonic(&target, &weight);
             for (k, &it) in list.iter().enumerate() {
                 let y = z[k] + off[k];
                 moved |= y.to_bits() != top[it].to_bits();
@@ -1269,33 +1276,51 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
     out
 }
 
-/// Weighted isotonic regression (non-decreasing) by pooling adjacent violators.
-fn isotonic(target: &[f32], weight: &[f32]) -> Vec<f32> {
-    // Blocks: (value, weight, count).
-    let mut blocks: Vec<(f32, f32, usize)> = Vec::with_capacity(target.len());
-    for (&t, &w) in target.iter().zip(weight) {
-        blocks.push((t, w, 1));
-        while blocks.len() >= 2 {
-            let b = blocks[blocks.len() - 1];
-            let a = blocks[blocks.len() - 2];
-            if a.0 <= b.0 {
-                break;
-            }
-            let w = a.1 + b.1;
-            let v = if w > 0.0 {
-                (a.0 * a.1 + b.0 * b.1) / w
-            } else {
-                (a.0 + b.0) / 2.0
-            };
-            blocks.pop();
-            blocks.pop();
-            blocks.push((v, w, a.2 + b.2));
+/// Weighted isotonic regression (non-decreasing) by pooling adjacent violators, with its
+/// lists kept from call to call.
+struct Pooled {
+    /// Blocks: (value, weight, count).
+    blocks: Vec<(f32, f32, usize)>,
+    out: Vec<f32>,
+}
+
+impl Pooled {
+    fn with_capacity(n: usize) -> Pooled {
+        Pooled {
+            blocks: Vec::with_capacity(n),
+            out: Vec::with_capacity(n),
         }
     }
-    blocks
-        .into_iter()
-        .flat_map(|(v, _, n)| std::iter::repeat_n(v, n))
-        .collect()
+
+    /// The non-decreasing values nearest `target` under `weight`.
+    fn isotonic(&mut self, target: &[f32], weight: &[f32]) -> &[f32] {
+        let blocks = &mut self.blocks;
+        blocks.clear();
+        for (&t, &w) in target.iter().zip(weight) {
+            blocks.push((t, w, 1));
+            while blocks.len() >= 2 {
+                let b = blocks[blocks.len() - 1];
+                let a = blocks[blocks.len() - 2];
+                if a.0 <= b.0 {
+                    break;
+                }
+                let w = a.1 + b.1;
+                let v = if w > 0.0 {
+                    (a.0 * a.1 + b.0 * b.1) / w
+                } else {
+                    (a.0 + b.0) / 2.0
+                };
+                blocks.pop();
+                blocks.pop();
+                blocks.push((v, w, a.2 + b.2));
+            }
+        }
+        self.out.clear();
+        for &(v, _, n) in blocks.iter() {
+            self.out.extend(std::iter::repeat_n(v, n));
+        }
+        &self.out
+    }
 }
 
 /// Geometry problems of a layout, described (an empty list when it is sound): a connector
@@ -1438,9 +1463,12 @@ mod tests {
 
     #[test]
     fn isotonic_pools_violators() {
+        let mut pooled = Pooled::with_capacity(0);
         assert_eq!(
-            isotonic(&[1.0, 3.0, 2.0], &[1.0, 1.0, 1.0]),
-            vec![1.0, 2.5, 2.5]
+            pooled.isotonic(&[1.0, 3.0, 2.0], &[1.0, 1.0, 1.0]),
+            [1.0, 2.5, 2.5]
         );
+        // The lists kept from the call before leave nothing behind.
+        assert_eq!(pooled.isotonic(&[4.0], &[1.0]), [4.0]);
     }
 }
