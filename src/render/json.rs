@@ -266,7 +266,6 @@ pub fn write_json_with(
     show_host_data: bool,
     w: &mut dyn std::io::Write,
 ) -> anyhow::Result<()> {
-    use rayon::prelude::*;
     let redacted: Vec<System>;
     let systems = if show_host_data {
         &catalog.systems[..]
@@ -278,42 +277,88 @@ pub fn write_json_with(
             .collect();
         &redacted[..]
     };
-    let skeleton = serde_json::to_vec_pretty(&document(catalog, title, &[], systems))?;
-    let at = skeleton
-        .windows(COMPONENTS_KEY.len())
-        .position(|win| win == COMPONENTS_KEY)
-        .ok_or_else(|| anyhow::anyhow!("internal error: no components key in catalog.json"))?;
-    let open = at + COMPONENTS_KEY.len() - 1; // the `}` of `{}`
-    w.write_all(&skeleton[..open])?;
-    if !catalog.components.is_empty() {
-        // Chunks of components, so that a 10,000-component catalogue is never in memory as
-        // JSON all at once.
-        let mut separator: &[u8] = b"\n";
-        for chunk in catalog.components.chunks(64) {
-            let parts = chunk
-                .par_iter()
-                .map(|c| {
-                    let mut buf = Vec::with_capacity(16 * 1024);
-                    buf.extend_from_slice(b"    ");
-                    serde_json::to_writer(&mut buf, &*c.id)?;
-                    buf.extend_from_slice(b": ");
-                    let mut value = Vec::with_capacity(16 * 1024);
-                    serde_json::to_writer_pretty(&mut value, c)?;
-                    indent_into(&mut buf, &value);
-                    Ok(buf)
-                })
-                .collect::<serde_json::Result<Vec<Vec<u8>>>>()?;
-            for part in &parts {
-                w.write_all(separator)?;
-                w.write_all(part)?;
-                separator = b",\n";
-            }
-        }
-        w.write_all(b"\n  ")?;
+    // The document without its components is written as serde_json makes it (not held whole:
+    // at 10,000 components its diagnostics and type uses are tens of megabytes); the components
+    // go where its empty `components` object opens.
+    let mut splice = Splice {
+        out: w,
+        head: Vec::new(),
+        spliced: false,
+        components: &|w: &mut dyn std::io::Write| write_components(catalog, w),
+    };
+    serde_json::to_writer_pretty(&mut splice, &document(catalog, title, &[], systems))?;
+    if !splice.spliced {
+        anyhow::bail!("internal error: no components key in catalog.json");
     }
-    w.write_all(&skeleton[open..])?;
     w.write_all(b"\n")?;
     Ok(())
+}
+
+/// The components of `catalog.json`, each the value of its id's entry as the pretty printer
+/// writes it four spaces deep, from the line break after the object's `{` to the one before its
+/// `}`. Chunks of components are serialized in parallel, so that a 10,000-component catalogue
+/// is never in memory as JSON all at once.
+fn write_components(catalog: &Catalog, w: &mut dyn std::io::Write) -> anyhow::Result<()> {
+    use rayon::prelude::*;
+    if catalog.components.is_empty() {
+        return Ok(());
+    }
+    let mut separator: &[u8] = b"\n";
+    for chunk in catalog.components.chunks(64) {
+        let parts = chunk
+            .par_iter()
+            .map(|c| {
+                let mut buf = Vec::with_capacity(16 * 1024);
+                buf.extend_from_slice(b"    ");
+                serde_json::to_writer(&mut buf, &*c.id)?;
+                buf.extend_from_slice(b": ");
+                let mut value = Vec::with_capacity(16 * 1024);
+                serde_json::to_writer_pretty(&mut value, c)?;
+                indent_into(&mut buf, &value);
+                Ok(buf)
+            })
+            .collect::<serde_json::Result<Vec<Vec<u8>>>>()?;
+        for part in &parts {
+            w.write_all(separator)?;
+            w.write_all(part)?;
+            separator = b",\n";
+        }
+    }
+    w.write_all(b"\n  ")?;
+    Ok(())
+}
+
+/// A writer that passes the pretty-printed document through to `out`, holding back only its
+/// head until [`COMPONENTS_KEY`] has passed, and writes the components (`components`) between
+/// that key's `{` and `}`.
+struct Splice<'w, 'c> {
+    out: &'w mut dyn std::io::Write,
+    /// What came before the key was found (the generator, format version and title).
+    head: Vec<u8>,
+    spliced: bool,
+    components: &'c dyn Fn(&mut dyn std::io::Write) -> anyhow::Result<()>,
+}
+
+impl std::io::Write for Splice<'_, '_> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if self.spliced {
+            return self.out.write(buf);
+        }
+        self.head.extend_from_slice(buf);
+        if let Some(at) = memchr::memmem::find(&self.head, COMPONENTS_KEY) {
+            let open = at + COMPONENTS_KEY.len() - 1; // the `}` of `{}`
+            self.out.write_all(&self.head[..open])?;
+            (self.components)(&mut *self.out).map_err(std::io::Error::other)?;
+            self.out.write_all(&self.head[open..])?;
+            self.head = Vec::new();
+            self.spliced = true;
+        }
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.out.flush()
+    }
 }
 
 /// Appends a component's pretty JSON as the value of a top-level object entry: every line
