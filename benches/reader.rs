@@ -9,7 +9,7 @@ use std::hint::black_box;
 
 /// The allocator the `rtcdoc` binary uses, so the numbers match real runs.
 #[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static GLOBAL: rtcdoc::allocator::Mi = rtcdoc::allocator::Mi;
 
 fn example(rel: &str) -> Vec<u8> {
     let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 /// `bench/gen_catalogue.py`) below `dir`.
 /// The allocator the `rtcdoc` binary uses, so the numbers match real runs.
 #[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static GLOBAL: rtcdoc::allocator::Mi = rtcdoc::allocator::Mi;
 
 fn synthetic(dir: &Path, n: usize) {
     let ex = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
