@@ -252,8 +252,7 @@ pub fn walk(input: &Path, opts: &WalkOptions) -> Result<WalkResult, WalkError> {
     let sniffed: Vec<(PathBuf, String, std::io::Result<Recognised>)> = candidates
         .into_par_iter()
         .map(|(path, rel)| {
-            let r = sniff(&path)
-                .map(|(_, head, format)| format.ok_or_else(|| describe_non_profile(&head)));
+            let r = sniff(&path).map(|s| s.format.ok_or_else(|| describe_non_profile(&s.head)));
             (path, rel, r)
         })
         .collect();
@@ -304,17 +303,39 @@ pub fn detect_named(bytes: &[u8]) -> Option<SourceFormat> {
     }
 }
 
-/// Opens a candidate and reads its head: the open file (positioned after the head), the head
-/// and the format when the head shows a profile.
-fn sniff(path: &Path) -> std::io::Result<(std::fs::File, Vec<u8>, Option<SourceFormat>)> {
+/// A candidate opened by [`sniff`]: the file (positioned after its head), its length when it
+/// was opened, the head, and the format when the head shows a profile.
+struct Sniffed {
+    file: std::fs::File,
+    len: u64,
+    head: Vec<u8>,
+    format: Option<SourceFormat>,
+}
+
+/// Opens a candidate and reads its head. The buffer is sized from the file's length, so that a
+/// head is read in one call (`read_to_end` into an empty buffer reads in steps that double
+/// from 32 bytes: ten calls for a 30 KB profile); a length that changed by the time of reading
+/// only costs more calls.
+fn sniff(path: &Path) -> std::io::Result<Sniffed> {
     use std::io::Read;
-    let mut f = std::fs::File::open(path)?;
-    let mut head = Vec::new();
-    (&mut f)
+    let mut file = std::fs::File::open(path)?;
+    let len = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut head = Vec::with_capacity(capacity(len.min(SNIFF_BYTES)));
+    (&mut file)
         .take(SNIFF_BYTES.saturating_add(1))
         .read_to_end(&mut head)?;
     let format = detect(path, &head);
-    Ok((f, head, format))
+    Ok(Sniffed {
+        file,
+        len,
+        head,
+        format,
+    })
+}
+
+/// Room for `n` bytes and the read that finds the end of the file.
+fn capacity(n: u64) -> usize {
+    usize::try_from(n.saturating_add(1)).unwrap_or(usize::MAX)
 }
 
 /// What the head of a candidate shows: its format, or what it is instead (for a message).
@@ -334,7 +355,12 @@ pub(crate) enum ReadFile {
 /// whole. `Err(head)` when the file is not a profile.
 pub(crate) fn read_profile(path: &Path, limit: u64, named: bool) -> std::io::Result<ReadFile> {
     use std::io::Read;
-    let (f, mut buf, format) = sniff(path)?;
+    let Sniffed {
+        file,
+        len,
+        head: mut buf,
+        format,
+    } = sniff(path)?;
     let format = if named { detect_named(&buf) } else { format };
     let Some(format) = format else {
         return Ok(ReadFile::Other(buf));
@@ -344,7 +370,8 @@ pub(crate) fn read_profile(path: &Path, limit: u64, named: bool) -> std::io::Res
     if have > cap {
         buf.truncate(usize::try_from(cap).unwrap_or(usize::MAX));
     } else {
-        f.take(cap - have).read_to_end(&mut buf)?;
+        buf.reserve(capacity(len.min(cap).saturating_sub(have)));
+        file.take(cap - have).read_to_end(&mut buf)?;
     }
     Ok(ReadFile::Profile(format, buf))
 }
@@ -647,6 +674,34 @@ mod tests {
     /// (files, skipped) as comparable lists.
     fn flat(c: Candidates) -> (Vec<(PathBuf, String)>, Vec<Skipped>) {
         (c.files, c.skipped)
+    }
+
+    /// A profile is read whole whatever its size around the head's, an oversized one up to the
+    /// limit and one byte, and a file that is not a profile only as far as its head.
+    #[test]
+    fn profiles_are_read_whole_or_to_the_limit() {
+        let dir = tempfile::tempdir().unwrap();
+        let head = SNIFF_BYTES as usize;
+        for size in [0, 20, head - 1, head, head + 1, 3 * head + 17] {
+            let mut text = b"<?xml version=\"1.0\"?>\n<rtc:RtcProfile>".to_vec();
+            text.resize(size.max(text.len()), b' ');
+            let path = dir.path().join(format!("RTC{size}.xml"));
+            std::fs::write(&path, &text).unwrap();
+            match read_profile(&path, 1 << 30, false).unwrap() {
+                ReadFile::Profile(SourceFormat::Xml, bytes) => assert!(bytes == text, "{size}"),
+                _ => panic!("{size}: not read as a profile"),
+            }
+            match read_profile(&path, 100, false).unwrap() {
+                ReadFile::Profile(_, bytes) => assert_eq!(bytes.len(), text.len().min(101)),
+                _ => panic!("{size}: not read as a profile"),
+            }
+        }
+        let other = dir.path().join("notes.xml");
+        std::fs::write(&other, vec![b'x'; 3 * head]).unwrap();
+        match read_profile(&other, 1 << 30, false).unwrap() {
+            ReadFile::Other(bytes) => assert_eq!(bytes.len(), head + 1),
+            ReadFile::Profile(..) => panic!("read as a profile"),
+        }
     }
 
     /// The parallel walk gives what one sorted walk of the whole tree gives: same files, same
