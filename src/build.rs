@@ -154,6 +154,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         found.idl.append(&mut from_sources.idl);
         found.idl.sort_by(|a, b| a.1.cmp(&b.1));
         found.skipped.append(&mut from_sources.skipped);
+        found.readme_dirs.append(&mut from_sources.readme_dirs);
         source_notes = m.notes;
         roots.sources = opts.sources.iter().map(|p| p.info()).collect();
         roots.sources_dir = Some(std::sync::Arc::new(m.dir));
@@ -290,6 +291,8 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         idl,
         systems,
         backups,
+        // A file named on the command line: the walk listed no folder.
+        readme_dirs: (!named).then_some(found.readme_dirs),
     };
     let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();

@@ -1305,6 +1305,9 @@ pub struct Documents {
     pub idl: crate::idl::IdlSet,
     pub systems: Vec<systems::LoadedSystem>,
     pub backups: Vec<backups::Backup>,
+    /// The folders that may hold a README (the walk met an entry named like one there:
+    /// [`crate::walk::Candidates::readme_dirs`]); `None`: every component folder is looked in.
+    pub readme_dirs: Option<std::collections::BTreeSet<String>>,
 }
 
 impl Catalog {
@@ -1321,7 +1324,7 @@ impl Catalog {
         catalog.attach_idl(docs.idl);
         catalog.attach_systems(docs.systems);
         catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
-        catalog.attach_readmes(root, excluded);
+        catalog.attach_readmes(root, excluded, docs.readme_dirs.as_ref());
         catalog.attach_sources(root.sources.clone());
         catalog
     }

@@ -397,6 +397,8 @@ impl Workspace {
             idl,
             systems,
             backups,
+            // A README may have come since the walk: every component folder is looked in.
+            readme_dirs: None,
         };
         let mut catalog = Catalog::assemble(
             docs,

@@ -8,6 +8,7 @@
 
 use crate::parse::{self, SourceFormat};
 use globset::{GlobSet, GlobSetBuilder};
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 /// A profile file found by the walk. Its bytes are read when it is parsed, so a large
@@ -281,6 +282,10 @@ pub struct Candidates {
     /// `*.idl` files (data types and service interfaces), read by [`crate::idl`].
     pub idl: Vec<(PathBuf, String)>,
     pub skipped: Vec<Skipped>,
+    /// The folders (relative, `""` for the top) the walk met an entry named like a README in
+    /// (of any kind: [`crate::readme::read_folder`] decides what it is), so that no other
+    /// folder has to be listed again to look for one.
+    pub readme_dirs: BTreeSet<String>,
 }
 
 impl Candidates {
@@ -288,6 +293,7 @@ impl Candidates {
         self.files.append(&mut other.files);
         self.idl.append(&mut other.idl);
         self.skipped.append(&mut other.skipped);
+        self.readme_dirs.append(&mut other.readme_dirs);
     }
 }
 
@@ -495,6 +501,7 @@ impl<'a> Walker<'a> {
     /// one ([`Walker::keep`]), and not one an exclude pattern matches — `--exclude
     /// examples/Templates` leaves out everything below it, which is reported once.
     fn enter(&self, e: &walkdir::DirEntry, out: &mut Candidates) -> bool {
+        self.note_readme(e, out);
         if !self.keep(e) {
             return false;
         }
@@ -564,6 +571,16 @@ impl<'a> Walker<'a> {
         all
     }
 
+    /// Notes the folder of an entry named like a README, whatever kind of entry it is (a
+    /// folder noted in vain only costs looking in it).
+    fn note_readme(&self, e: &walkdir::DirEntry, out: &mut Candidates) {
+        if crate::readme::readme_rank(&e.file_name().to_string_lossy()).is_some() {
+            let rel = rel_path(&self.root, e.path());
+            let dir = rel.rsplit_once('/').map_or("", |(d, _)| d);
+            out.readme_dirs.insert(dir.to_string());
+        }
+    }
+
     /// Files: a candidate, or skipped with the reason; directories: nothing (symbolic links
     /// are reported).
     fn visit(&self, entry: walkdir::Result<walkdir::DirEntry>, out: &mut Candidates) {
@@ -582,6 +599,7 @@ impl<'a> Walker<'a> {
                 return;
             }
         };
+        self.note_readme(&entry, out);
         if !entry.file_type().is_file() {
             if entry.file_type().is_symlink() {
                 out.skipped.push(Skipped {
@@ -674,6 +692,61 @@ mod tests {
     /// (files, skipped) as comparable lists.
     fn flat(c: Candidates) -> (Vec<(PathBuf, String)>, Vec<Skipped>) {
         (c.files, c.skipped)
+    }
+
+    /// Every folder in which a README would be found ([`crate::readme::find`]) is among the
+    /// folders the walk noted: a README of any kind (file, folder, link), any spelling, at the
+    /// top or deep, beside excluded and hidden entries.
+    #[test]
+    fn the_walk_notes_every_folder_with_a_readme() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        for rel in [
+            "RTC.xml",
+            "README.md",
+            "a/RTC.xml",
+            "a/README.md",
+            "b/RTC.xml",
+            "b/readme.MARKDOWN",
+            "c/RTC.xml",
+            "c/notes.md",
+            "d/RTC.xml",
+            "f/g/RTC.xml",
+            "f/g/ReadMe.md",
+            "x/RTC.xml",
+            "x/README.md",
+        ] {
+            write(d, rel);
+        }
+        std::fs::create_dir_all(d.join("d/README.md")).unwrap();
+        std::fs::create_dir_all(d.join("e")).unwrap();
+        write(d, "e/RTC.xml");
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(d.join("a/README.md"), d.join("e/README.md")).unwrap();
+        let opts = WalkOptions {
+            exclude: vec!["x/README.md".into()],
+            ..WalkOptions::default()
+        };
+        let c = candidates(d, &opts).unwrap();
+        let mut folders = vec![String::new()];
+        for (_, rel) in &c.files {
+            if let Some((dir, _)) = rel.rsplit_once('/') {
+                folders.push(dir.to_string());
+            }
+        }
+        let mut with_readme = 0;
+        for f in &folders {
+            if crate::readme::find(&d.join(f)).is_some() {
+                with_readme += 1;
+                assert!(
+                    c.readme_dirs.contains(f),
+                    "{f:?} not noted: {:?}",
+                    c.readme_dirs
+                );
+            }
+        }
+        assert!(with_readme >= 6, "{with_readme}");
+        assert!(!c.readme_dirs.contains("c"), "{:?}", c.readme_dirs);
     }
 
     /// A profile is read whole whatever its size around the head's, an oversized one up to the

@@ -9,15 +9,20 @@ use std::path::Path;
 impl Catalog {
     /// Reads the README of every component folder (below the input at `root`), attaches it to
     /// the components of that folder and adds the findings (once per README). A README whose
-    /// path `excluded` accepts (`--exclude`) is not read.
+    /// path `excluded` accepts (`--exclude`) is not read. With `only`, the folders the walk
+    /// met an entry named like a README in, the other folders are not listed again.
     pub fn attach_readmes(
         &mut self,
         root: &super::sources::Roots,
         excluded: &(dyn Fn(&str) -> bool + Sync),
+        only: Option<&std::collections::BTreeSet<String>>,
     ) {
         let mut folders: BTreeMap<String, Vec<usize>> = BTreeMap::new();
         for (ci, c) in self.components.iter().enumerate() {
             let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
+            if only.is_some_and(|o| !o.contains(dir)) {
+                continue;
+            }
             folders.entry(dir.to_string()).or_default().push(ci);
         }
         use rayon::prelude::*;
