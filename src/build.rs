@@ -117,10 +117,8 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut roots = crate::catalog::sources::Roots::local(&input_root(input));
     // The history asks git whether the input is in a work tree: asked now, so that git's
     // start-up overlaps the reading of the profiles.
-    if opts.history > 0 && opts.history_reader.is_some() && !opts.sources_only {
-        roots.work_tree_probe = std::sync::Arc::new(std::sync::Mutex::new(Some(
-            crate::sources::WorkTreeProbe::start(&roots.local),
-        )));
+    if opts.history > 0 && opts.history_reader.is_some() {
+        roots.start_work_tree_probe();
     }
     let mut source_notes = Vec::new();
     if !opts.sources.is_empty() {

@@ -34,6 +34,14 @@ impl Roots {
         }
     }
 
+    /// Starts asking git whether `local` is in a work tree, for [`Roots::work_tree`] to take
+    /// the answer later (git's start-up then overlaps other work).
+    pub fn start_work_tree_probe(&mut self) {
+        self.work_tree_probe = Arc::new(std::sync::Mutex::new(Some(
+            crate::sources::WorkTreeProbe::start(&self.local),
+        )));
+    }
+
     /// Whether `local` is in a git work tree: the answer of the probe the build started, the
     /// first time; asked again afterwards (`serve` reads histories again after edits, and the
     /// folder may have become a repository meanwhile).

@@ -284,7 +284,7 @@ pub fn write_json_with(
         out: w,
         head: Vec::new(),
         spliced: false,
-        components: &|w: &mut dyn std::io::Write| write_components(catalog, w),
+        catalog,
     };
     serde_json::to_writer_pretty(&mut splice, &document(catalog, title, &[], systems))?;
     if !splice.spliced {
@@ -329,14 +329,14 @@ fn write_components(catalog: &Catalog, w: &mut dyn std::io::Write) -> anyhow::Re
 }
 
 /// A writer that passes the pretty-printed document through to `out`, holding back only its
-/// head until [`COMPONENTS_KEY`] has passed, and writes the components (`components`) between
-/// that key's `{` and `}`.
+/// head until [`COMPONENTS_KEY`] has passed, and writes the components of `catalog` between
+/// that key's `{` and `}` ([`write_components`]).
 struct Splice<'w, 'c> {
     out: &'w mut dyn std::io::Write,
     /// What came before the key was found (the generator, format version and title).
     head: Vec<u8>,
     spliced: bool,
-    components: &'c dyn Fn(&mut dyn std::io::Write) -> anyhow::Result<()>,
+    catalog: &'c Catalog,
 }
 
 impl std::io::Write for Splice<'_, '_> {
@@ -348,7 +348,7 @@ impl std::io::Write for Splice<'_, '_> {
         if let Some(at) = memchr::memmem::find(&self.head, COMPONENTS_KEY) {
             let open = at + COMPONENTS_KEY.len() - 1; // the `}` of `{}`
             self.out.write_all(&self.head[..open])?;
-            (self.components)(&mut *self.out).map_err(std::io::Error::other)?;
+            write_components(self.catalog, &mut *self.out).map_err(std::io::Error::other)?;
             self.out.write_all(&self.head[open..])?;
             self.head = Vec::new();
             self.spliced = true;

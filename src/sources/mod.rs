@@ -375,9 +375,6 @@ impl WorkTreeProbe {
     pub fn start(dir: &Path) -> WorkTreeProbe {
         let mut c = work_tree_git(dir);
         c.args([
-            "-c",
-            "log.showSignature=false",
-            "--literal-pathspecs",
             "rev-parse",
             "--is-inside-work-tree",
             "--is-shallow-repository",
@@ -430,8 +427,6 @@ impl Drop for WorkTreeProbe {
     }
 }
 
-/// `git` with the safe environment: no system configuration, no prompt, no hooks, only the
-/// `file`, `https` and `ssh` protocols, nothing of a repository around the current directory.
 /// The repository git refuses because another user owns it, from git's error output
 /// ("detected dubious ownership in repository at 'DIR'" … `safe.directory`): `DIR`.
 pub(crate) fn refused_repository(stderr: &str) -> Option<&str> {
@@ -446,6 +441,8 @@ pub(crate) fn safe_directory_hint(dir: &str) -> String {
     format!("if you trust it, run `git config --global --add safe.directory {dir}`")
 }
 
+/// `git` with the safe environment: no system configuration, no prompt, no hooks, only the
+/// `file`, `https` and `ssh` protocols, nothing of a repository around the current directory.
 pub(crate) fn git_command(git_dir: Option<&Path>) -> Command {
     let mut c = Command::new("git");
     for k in [
