@@ -1116,57 +1116,78 @@ impl HtmlRenderer {
             generator: &generator,
         };
         all_paths.extend(Ix::all(catalog.components.len()).map(|ci| site.component_path(ci)));
-        let (search_written, pages_written) = rayon::join(
-            || -> Result<usize> {
-                if !wanted("search-index.js") {
-                    return Ok(0);
-                }
-                // Streamed: the index is never held whole beside the pages.
-                out.write_with("search-index.js", &mut |w| {
-                    Ok(search::index_js(catalog, lang, w)?)
-                })?;
-                Ok(1)
-            },
+        // The other pages are listed and rendered beside the component pages, not after them:
+        // listing them draws the system diagrams and sorts the findings, which would otherwise
+        // keep one core busy while the other waits.
+        let ((search_written, pages_written), others) = rayon::join(
             || {
-                (0..catalog.components.len())
-                    .into_par_iter()
-                    .map(Ix::new)
-                    .filter(|&ci| wanted(&site.component_path(ci)))
-                    .map(|ci| -> Result<usize> {
-                        let page = site.component_page(ci);
-                        let html = if native {
-                            native::component_page(&page, &globals)
-                        } else {
-                            tmpl.render(&page)
-                                .with_context(|| format!("rendering component `{}`", page.name))?
-                        };
-                        out.write_owned(&site.component_path(ci), html.into_bytes())?;
+                rayon::join(
+                    || -> Result<usize> {
+                        if !wanted("search-index.js") {
+                            return Ok(0);
+                        }
+                        // Streamed: the index is never held whole beside the pages.
+                        out.write_with("search-index.js", &mut |w| {
+                            Ok(search::index_js(catalog, lang, w)?)
+                        })?;
                         Ok(1)
-                    })
-                    .try_reduce(|| 0, |a, b| Ok(a + b))
+                    },
+                    || {
+                        (0..catalog.components.len())
+                            .into_par_iter()
+                            .map(Ix::new)
+                            .filter(|&ci| wanted(&site.component_path(ci)))
+                            .map(|ci| -> Result<usize> {
+                                let page = site.component_page(ci);
+                                let html = if native {
+                                    native::component_page(&page, &globals)
+                                } else {
+                                    tmpl.render(&page).with_context(|| {
+                                        format!("rendering component `{}`", page.name)
+                                    })?
+                                };
+                                out.write_owned(&site.component_path(ci), html.into_bytes())?;
+                                Ok(1)
+                            })
+                            .try_reduce(|| 0, |a, b| Ok(a + b))
+                    },
+                )
             },
+            || render_other_pages(&site, &env, out, wanted),
         );
-        written += search_written? + pages_written?;
-
-        let pages = other_pages(&site);
-        all_paths.extend(pages.iter().map(|p| p.path.clone()));
-        written += pages
-            .par_iter()
-            .filter(|pg| wanted(&pg.path))
-            .map(|pg| -> Result<usize> {
-                let html = env
-                    .get_template(pg.template)?
-                    .render(pg.context.value())
-                    .with_context(|| format!("rendering `{}`", pg.path))?;
-                out.write_owned(&pg.path, html.into_bytes())?;
-                Ok(1)
-            })
-            .try_reduce(|| 0, |a, b| Ok(a + b))?;
+        let (other_paths, others_written) = others?;
+        written += search_written? + pages_written? + others_written;
+        all_paths.extend(other_paths);
 
         written += write_feeds(catalog, opts, out, wanted, &mut all_paths)?;
         all_paths.sort();
         Ok(Rendered { written, all_paths })
     }
+}
+
+/// The pages other than the component pages ([`other_pages`]), those `wanted` rendered and
+/// written in parallel: every page's path, and how many were written.
+fn render_other_pages(
+    site: &Site<'_>,
+    env: &Environment<'_>,
+    out: &dyn Sink,
+    wanted: &(dyn Fn(&str) -> bool + Sync),
+) -> Result<(Vec<String>, usize)> {
+    let pages = other_pages(site);
+    let paths = pages.iter().map(|p| p.path.clone()).collect();
+    let written = pages
+        .par_iter()
+        .filter(|pg| wanted(&pg.path))
+        .map(|pg| -> Result<usize> {
+            let html = env
+                .get_template(pg.template)?
+                .render(pg.context.value())
+                .with_context(|| format!("rendering `{}`", pg.path))?;
+            out.write_owned(&pg.path, html.into_bytes())?;
+            Ok(1)
+        })
+        .try_reduce(|| 0, |a, b| Ok(a + b))?;
+    Ok((paths, written))
 }
 
 /// The files for other programs, those `wanted`: the sitemap and the Atom feed of the
