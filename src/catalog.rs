@@ -1330,6 +1330,67 @@ impl Catalog {
     }
 }
 
+/// The data-type and interface entries of `components`, from each component's canonical
+/// port type names (`canonical`, in [`Profile::port_types`] order).
+fn type_indexes(
+    components: &[Component],
+    canonical: Vec<Vec<Option<String>>>,
+) -> (Vec<DataType>, Vec<InterfaceType>) {
+    let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
+    let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
+    for ((ci, c), keys) in components.iter().enumerate().zip(canonical) {
+        // Each port's and interface's type in `port_types` order: whether it is an
+        // interface, its spelling and `idlFile`, its role slot and where it is.
+        let data = c
+            .profile
+            .data_ports
+            .iter()
+            .enumerate()
+            .map(|(pi, p)| (false, &p.type_, &p.idl_file, port_slot(p), (ci, pi, 0)));
+        let service = c
+            .profile
+            .service_interfaces()
+            .map(|(pi, ii, i)| (true, &i.type_, &i.idl_file, interface_slot(i), (ci, pi, ii)));
+        for ((interface, t, idl_file, slot, at), key) in data.chain(service).zip(keys) {
+            let (Some(key), Some(t)) = (key, t.as_deref()) else {
+                continue;
+            };
+            let accs = if interface { &mut ifaces } else { &mut types };
+            let acc = accs.entry(key).or_default();
+            acc.add(t, idl_file.as_deref(), slot, at);
+        }
+    }
+    let port = |v: Vec<UseAt>| {
+        v.into_iter()
+            .map(|(ci, pi, _)| {
+                let c = &components[ci];
+                PortRef {
+                    component: c.id.clone(),
+                    port: member_key(c.profile.data_ports.iter().map(|p| name_of(&p.name)), pi),
+                    at: RefHandle::new(Ix::new(ci), pi, 0),
+                }
+            })
+            .collect()
+    };
+    let iref = |v: Vec<UseAt>| {
+        v.into_iter()
+            .map(|(ci, pi, ii)| {
+                let c = &components[ci];
+                let sp = &c.profile.service_ports[pi];
+                InterfaceRef {
+                    component: c.id.clone(),
+                    port: member_key(c.profile.service_ports.iter().map(|p| name_of(&p.name)), pi),
+                    interface: member_key(sp.interfaces.iter().map(|i| name_of(&i.name)), ii),
+                    at: RefHandle::new(Ix::new(ci), pi, ii),
+                }
+            })
+            .collect()
+    };
+    let data_types: Vec<DataType> = TypeAcc::entries(types, port);
+    let interfaces: Vec<InterfaceType> = TypeAcc::entries(ifaces, iref);
+    (data_types, interfaces)
+}
+
 impl Catalog {
     /// Builds the catalogue. Components are ordered by source path; `diagnostics` are the load
     /// diagnostics (reader warnings and errors of files that could not be read).
@@ -1441,61 +1502,6 @@ impl Catalog {
                     .collect()
             })
             .collect();
-        let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
-        let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
-        for ((ci, c), keys) in components.iter().enumerate().zip(canonical) {
-            // Each port's and interface's type in `port_types` order: whether it is an
-            // interface, its spelling and `idlFile`, its role slot and where it is.
-            let data = c
-                .profile
-                .data_ports
-                .iter()
-                .enumerate()
-                .map(|(pi, p)| (false, &p.type_, &p.idl_file, port_slot(p), (ci, pi, 0)));
-            let service = c
-                .profile
-                .service_interfaces()
-                .map(|(pi, ii, i)| (true, &i.type_, &i.idl_file, interface_slot(i), (ci, pi, ii)));
-            for ((interface, t, idl_file, slot, at), key) in data.chain(service).zip(keys) {
-                let (Some(key), Some(t)) = (key, t.as_deref()) else {
-                    continue;
-                };
-                let accs = if interface { &mut ifaces } else { &mut types };
-                let acc = accs.entry(key).or_default();
-                acc.add(t, idl_file.as_deref(), slot, at);
-            }
-        }
-        let port = |v: Vec<UseAt>| {
-            v.into_iter()
-                .map(|(ci, pi, _)| {
-                    let c = &components[ci];
-                    PortRef {
-                        component: c.id.clone(),
-                        port: member_key(c.profile.data_ports.iter().map(|p| name_of(&p.name)), pi),
-                        at: RefHandle::new(Ix::new(ci), pi, 0),
-                    }
-                })
-                .collect()
-        };
-        let iref = |v: Vec<UseAt>| {
-            v.into_iter()
-                .map(|(ci, pi, ii)| {
-                    let c = &components[ci];
-                    let sp = &c.profile.service_ports[pi];
-                    InterfaceRef {
-                        component: c.id.clone(),
-                        port: member_key(
-                            c.profile.service_ports.iter().map(|p| name_of(&p.name)),
-                            pi,
-                        ),
-                        interface: member_key(sp.interfaces.iter().map(|i| name_of(&i.name)), ii),
-                        at: RefHandle::new(Ix::new(ci), pi, ii),
-                    }
-                })
-                .collect()
-        };
-        let data_types: Vec<DataType> = TypeAcc::entries(types, port);
-        let interfaces: Vec<InterfaceType> = TypeAcc::entries(ifaces, iref);
 
         let facet = |key: &dyn Fn(&Profile) -> Option<&str>| -> Vec<Facet> {
             // key → (spelling → components)
@@ -1541,10 +1547,22 @@ impl Catalog {
                 })
                 .collect()
         };
-        let categories = facet(&|p| p.basic_info.category.as_deref());
-        let vendors = facet(&|p| p.basic_info.vendor.as_deref());
-
-        crate::diagnostic::sort(&mut diagnostics);
+        // The type indexes, the facets and the findings' order are independent: made side by
+        // side.
+        let ((data_types, interfaces), ((categories, vendors), ())) = rayon::join(
+            || type_indexes(&components, canonical),
+            || {
+                rayon::join(
+                    || {
+                        rayon::join(
+                            || facet(&|p| p.basic_info.category.as_deref()),
+                            || facet(&|p| p.basic_info.vendor.as_deref()),
+                        )
+                    },
+                    || crate::diagnostic::sort(&mut diagnostics),
+                )
+            },
+        );
         Catalog::with_entries(
             components,
             data_types,
