@@ -174,9 +174,11 @@ impl Diagnostic {
 }
 
 /// Sorts diagnostics the way every output shows them: by file, position, severity, code and
-/// message (a total order, so output is deterministic).
+/// message (a total order, so output is deterministic). The sort is stable and runs on every
+/// core (rayon's merge sort: the same order as `slice::sort_by`).
 pub fn sort(diagnostics: &mut [Diagnostic]) {
-    diagnostics.sort_by(|a, b| {
+    use rayon::slice::ParallelSliceMut;
+    diagnostics.par_sort_by(|a, b| {
         (&a.file, a.pos, a.severity, a.code, &a.message)
             .cmp(&(&b.file, b.pos, b.severity, b.code, &b.message))
     });
