@@ -10,15 +10,35 @@ pub fn text_width(s: &str, px: f32) -> f32 {
     s.chars().map(|c| advance(c, px)).sum()
 }
 
-/// The width of one character at `px` (see [`text_width`]).
-fn advance(c: char, px: f32) -> f32 {
-    let em = match c {
+/// The width of a character in em (see [`text_width`]).
+const fn em(c: char) -> f32 {
+    match c {
         _ if (c as u32) >= 0x2E80 => 1.0,
         'M' | 'W' | 'm' | 'w' => 0.9,
         'I' => 0.4,
         'A'..='Z' => 0.74,
         'i' | 'j' | 'l' | 't' | 'f' | 'r' | '.' | ',' | ':' | ';' | '\'' | '|' => 0.4,
         _ => 0.62,
+    }
+}
+
+/// [`em`] of the ASCII characters, looked up (most names are ASCII).
+const ASCII_EM: [f32; 128] = {
+    let mut t = [0.0; 128];
+    let mut c = 0;
+    while c < 128 {
+        t[c] = em(c as u8 as char);
+        c += 1;
+    }
+    t
+};
+
+/// The width of one character at `px` (see [`text_width`]).
+#[inline]
+fn advance(c: char, px: f32) -> f32 {
+    let em = match ASCII_EM.get(c as usize) {
+        Some(&e) => e,
+        None => em(c),
     };
     px * em
 }
@@ -78,9 +98,23 @@ impl Font {
 /// as it grows (the same additions in the same order as measuring it whole), not measured
 /// again for each piece.
 pub fn wrap(s: &str, max: f32, font: Font) -> Vec<String> {
-    if font.width(s) <= max || s.is_empty() {
-        return vec![s.to_string()];
+    wrap_measured(s, max, font).0
+}
+
+/// [`wrap`], and the width of the widest line (`font.width` of each line, the largest; 0 for
+/// no line wider than 0): a text that fits on one line is measured once, not twice.
+pub fn wrap_measured(s: &str, max: f32, font: Font) -> (Vec<String>, f32) {
+    let whole = font.width(s);
+    if whole <= max || s.is_empty() {
+        return (vec![s.to_string()], f32::max(0.0, whole));
     }
+    let lines = wrap_lines(s, max, font);
+    let widest = lines.iter().map(|l| font.width(l)).fold(0.0, f32::max);
+    (lines, widest)
+}
+
+/// The lines of a text too wide for one (see [`wrap`]).
+fn wrap_lines(s: &str, max: f32, font: Font) -> Vec<String> {
     // Pieces between break opportunities.
     let mut pieces: Vec<String> = Vec::new();
     let mut cur = String::new();
@@ -162,5 +196,31 @@ mod tests {
         assert!(lines.iter().all(|l| w(l) <= 60.0));
         // CJK characters are a whole em wide.
         assert_eq!(text_width("画像", 10.0), 20.0);
+    }
+
+    #[test]
+    fn the_measured_wrap_gives_the_widest_line_as_measuring_each_gives_it() {
+        for font in [Font::regular(11.0), Font::bold(15.0)] {
+            for s in [
+                "",
+                "short",
+                "ManipulatorCommonInterface_Middle.ManipulatorCommonInterface_Middle",
+                "画像処理コンポーネント画像処理コンポーネント画像処理",
+                &"x".repeat(100),
+            ] {
+                let (lines, widest) = wrap_measured(s, 60.0, font);
+                assert_eq!(lines, wrap(s, 60.0, font), "{s:?}");
+                let each = lines.iter().map(|l| font.width(l)).fold(0.0, f32::max);
+                assert_eq!(widest.to_bits(), each.to_bits(), "{s:?}");
+            }
+        }
+        // The table of ASCII widths agrees with the rules for every character it holds.
+        for c in (0u8..128).map(char::from) {
+            assert_eq!(
+                advance(c, 11.0).to_bits(),
+                (11.0 * em(c)).to_bits(),
+                "{c:?}"
+            );
+        }
     }
 }

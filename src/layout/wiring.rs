@@ -28,7 +28,7 @@
 //!
 //! Boxes are sized to their names, wrapped on several lines when very long, never cut.
 
-use super::text::{bold_width, text_width, wrap, Font};
+use super::text::{bold_width, text_width, wrap_measured, Font};
 
 /// What a port is, for its side and symbol.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -714,34 +714,30 @@ fn channel_of(a: &Stop, b: &Stop, g: &Graph<'_>) -> usize {
 
 /// Box geometry relative to its top-left corner.
 fn node_box(n: &Node, side: &[Side], port_order: &[Vec<usize>; 2]) -> NodeBox {
-    let title = wrap(&n.name, TITLE_MAX, Font::bold(TITLE_PX));
-    let subtitle = if n.component.is_empty() {
-        Vec::new()
+    let (title, title_w) = wrap_measured(&n.name, TITLE_MAX, Font::bold(TITLE_PX));
+    let (subtitle, subtitle_w) = if n.component.is_empty() {
+        (Vec::new(), 0.0)
     } else {
-        wrap(&n.component, TITLE_MAX, Font::regular(SUBTITLE_PX))
+        wrap_measured(&n.component, TITLE_MAX, Font::regular(SUBTITLE_PX))
     };
-    let port_lines: Vec<Vec<String>> = n
+    // Each port's lines and the width of the widest.
+    let (mut port_lines, port_ws): (Vec<Vec<String>>, Vec<f32>) = n
         .ports
         .iter()
-        .map(|p| wrap(&p.name, PORT_MAX, Font::regular(PORT_PX)))
-        .collect();
+        .map(|p| wrap_measured(&p.name, PORT_MAX, Font::regular(PORT_PX)))
+        .unzip();
     let side_w = |s: usize| {
         port_order[s]
             .iter()
-            .map(|&k| max_w(&port_lines[k], &port_w))
+            .map(|&k| port_ws[k])
             .fold(0.0, f32::max)
     };
     let (lw, rw) = (side_w(0), side_w(1));
     let ports_w = PORT_INSET + lw + if lw > 0.0 && rw > 0.0 { 20.0 } else { 0.0 } + rw + PORT_INSET;
-    let w = [
-        120.0,
-        max_w(&title, &title_w) + 24.0,
-        max_w(&subtitle, &subtitle_w) + 24.0,
-        ports_w,
-    ]
-    .into_iter()
-    .fold(0.0, f32::max)
-    .ceil();
+    let w = [120.0, title_w + 24.0, subtitle_w + 24.0, ports_w]
+        .into_iter()
+        .fold(0.0, f32::max)
+        .ceil();
     let header =
         6.0 + TITLE_LINE * title.len() as f32 + SUBTITLE_LINE * subtitle.len() as f32 + 4.0;
     let title_y = 6.0 + 14.0;
@@ -762,7 +758,8 @@ fn node_box(n: &Node, side: &[Side], port_order: &[Vec<usize>; 2]) -> NodeBox {
     for (s, list) in port_order.iter().enumerate() {
         let mut y = header;
         for &k in list {
-            let lines = port_lines[k].clone();
+            // The sides share no port: each port's lines are taken once.
+            let lines = std::mem::take(&mut port_lines[k]);
             let row = (PORT_LINE * lines.len() as f32 + 9.0).max(ROW_MIN);
             let cy = (y + row / 2.0).round();
             let (x, text_x) = if s == 0 {
