@@ -105,6 +105,10 @@ documented! {
     ServiceInterface: ServiceInterfaceDoc, "serviceInterface";
 }
 
+/// The XML and the YAML reader of one kind of profile ([`Limits::read`]), each given the bytes,
+/// the file name used in diagnostics and the limits.
+type Readers<T> = [fn(&[u8], &str, &Limits) -> Result<T, Diagnostic>; 2];
+
 /// Limits that protect against hostile input.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Limits {
@@ -115,6 +119,23 @@ pub struct Limits {
 }
 
 impl Limits {
+    /// `bytes` read by the reader of `format` among `readers` (XML, YAML) once they pass
+    /// [`Limits::check_size`]: how the component and the system profile readers ([`parse`],
+    /// [`rts::parse`]) both start.
+    fn read<T>(
+        &self,
+        format: SourceFormat,
+        bytes: &[u8],
+        file: &str,
+        [xml, yaml]: Readers<T>,
+    ) -> Result<T, Diagnostic> {
+        self.check_size(bytes, file)?;
+        match format {
+            SourceFormat::Xml => xml(bytes, file, self),
+            SourceFormat::Yaml => yaml(bytes, file, self),
+        }
+    }
+
     /// `RTC002` when `bytes` are more than [`Limits::max_file_size`]: every reader checks this
     /// before it decodes anything.
     pub fn check_size(&self, bytes: &[u8], file: &str) -> Result<(), Diagnostic> {
@@ -189,11 +210,7 @@ pub fn parse(
     file: &str,
     limits: &Limits,
 ) -> Result<Parsed, Diagnostic> {
-    limits.check_size(bytes, file)?;
-    let mut parsed = match format {
-        SourceFormat::Xml => xml::parse(bytes, file, limits),
-        SourceFormat::Yaml => yaml::parse(bytes, file, limits),
-    }?;
+    let mut parsed = limits.read(format, bytes, file, [xml::parse, yaml::parse])?;
     // The model keeps actions in spec order whatever order the file used (RTCBuilder's YAML
     // sorts keys alphabetically).
     parsed.profile.actions.sort_by_key(|a| a.kind);

@@ -28,11 +28,8 @@ pub fn parse(
     file: &str,
     limits: &Limits,
 ) -> Result<ParsedSystem, Diagnostic> {
-    limits.check_size(bytes, file)?;
-    let (system, diagnostics) = match format {
-        SourceFormat::Xml => super::xml::rts::parse(bytes, file, limits)?,
-        SourceFormat::Yaml => super::yaml::rts::parse(bytes, file, limits)?,
-    };
+    let readers = [super::xml::rts::parse, super::yaml::rts::parse];
+    let (system, diagnostics) = limits.read(format, bytes, file, readers)?;
     Ok(ParsedSystem {
         system,
         diagnostics,
