@@ -64,13 +64,13 @@ impl Entry {
         self.first || self.release || self.error.is_some() || !self.changes.is_empty()
     }
 
-    /// The commit's short form (12 digits), else the backup's file name.
     /// The file as it is, not a commit or backup: uncommitted edits, or the newest version of
     /// a profile kept outside git beside its backups.
     pub fn is_current(&self) -> bool {
         self.commit.is_none() && self.backup.is_none()
     }
 
+    /// The commit's short form (12 digits), else the backup's file name, else the file's.
     pub fn label(&self) -> &str {
         match (&self.commit, &self.backup) {
             (Some(c), _) => c.get(..12).unwrap_or(c),

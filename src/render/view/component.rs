@@ -143,7 +143,6 @@ fn short(t: &Option<model::Text>) -> String {
         .unwrap_or_default()
 }
 
-/// The data ports of component `ci`, each with its type linked and its peers.
 /// The change path of each element "since" notes can be on (none without a history).
 fn since_keys(c: &crate::catalog::Component) -> crate::catalog::history::ElementKeys {
     if c.since.is_empty() {
@@ -158,6 +157,7 @@ fn since<'a>(c: &'a crate::catalog::Component, key: Option<&String>) -> Option<&
     key.and_then(|k| c.since.get(k)).map(String::as_str)
 }
 
+/// The data ports of component `ci`, each with its type linked and its peers.
 fn data_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<DataPortView<'_>> {
     let c = &cat[ci];
     let keys = since_keys(c);
