@@ -13,8 +13,14 @@
 //! documents.
 
 use super::{add_text, close, is_ascii_name_byte, is_name, is_ns_declaration};
-use super::{is_schema_plumbing, unescape_attr, Attr, Node, Ns, Seen, TreeBuilder};
+use super::{is_schema_plumbing, unescape_attr, Attr, Node, Ns, TreeBuilder};
 use std::borrow::Cow;
+
+/// An attribute as written: name, offset of the name, raw value.
+type RawAttr<'t> = (&'t str, usize, &'t str);
+
+/// The most attributes a tag may have on this path (duplicates are looked for pairwise).
+const MAX_ATTRS: usize = 64;
 
 /// One namespace binding: prefix (`""` for the default namespace) and what it resolves to.
 struct Binding<'t> {
@@ -43,6 +49,8 @@ pub(super) fn build<'t>(text: &'t str, file: &str, max_depth: usize) -> Option<N
     // Bindings in scope, innermost last; `scopes[k]` is where element k's bindings start.
     let mut bindings: Vec<Binding<'t>> = Vec::new();
     let mut scopes: Vec<usize> = Vec::new();
+    // The raw attributes of the tag being read, the same list for every tag.
+    let mut raw: Vec<RawAttr<'t>> = Vec::new();
     let mut root: Option<Node<'t>> = None;
     while i < bytes.len() {
         if bytes[i] != b'<' {
@@ -77,7 +85,8 @@ pub(super) fn build<'t>(text: &'t str, file: &str, max_depth: usize) -> Option<N
                 if (root.is_some() && stack.is_empty()) || stack.len() >= b.max_depth {
                     return None;
                 }
-                let (node, empty, next) = start_tag(&mut b, &mut bindings, &mut scopes, i)?;
+                let (node, empty, next) =
+                    start_tag(&mut b, &mut bindings, &mut scopes, &mut raw, i)?;
                 if empty {
                     bindings.truncate(scopes.pop()?);
                     close(node, &mut stack, &mut root);
@@ -131,6 +140,7 @@ fn start_tag<'t>(
     b: &mut TreeBuilder<'t, '_>,
     bindings: &mut Vec<Binding<'t>>,
     scopes: &mut Vec<usize>,
+    raw: &mut Vec<RawAttr<'t>>,
     at: usize,
 ) -> Option<(Node<'t>, bool, usize)> {
     let text = b.text;
@@ -147,8 +157,7 @@ fn start_tag<'t>(
     let (prefix, local) = split(qname)?;
     scopes.push(bindings.len());
     // Raw attributes first: declarations apply to the tag's own name and attributes.
-    let mut raw: Vec<(&'t str, usize, &'t str)> = Vec::new();
-    let mut seen = Seen::default();
+    raw.clear();
     let mut i = name_end;
     let (empty, next) = loop {
         let ws = bytes[i..]
@@ -176,13 +185,18 @@ fn start_tag<'t>(
         let v_start = i + 1;
         let v_end = v_start + memchr::memchr(q, &bytes[v_start..])?;
         let value = &text[v_start..v_end];
-        if value.contains(['<', '>']) || !seen.insert(Cow::Borrowed(key)) {
+        // A duplicate is looked for among the attributes before it; a tag with very many is
+        // left to `build_tree` (whose check stays linear).
+        if value.contains(['<', '>'])
+            || raw.len() >= MAX_ATTRS
+            || raw.iter().any(|&(k, _, _)| k == key)
+        {
             return None;
         }
         raw.push((key, key_start, value));
         i = v_end + 1;
     };
-    for &(key, _, value) in &raw {
+    for &(key, _, value) in raw.iter() {
         if key == "xmlns" {
             bindings.push(Binding {
                 prefix: "",
@@ -201,7 +215,7 @@ fn start_tag<'t>(
     let ns = resolve(bindings, prefix, true)?;
     let pos = b.cursor.pos(at);
     let mut attrs = Vec::new();
-    for (key, key_off, value) in raw {
+    for &(key, key_off, value) in raw.iter() {
         if is_ns_declaration(key.as_bytes()) {
             continue;
         }
@@ -372,6 +386,23 @@ mod tests {
         }
         let deep = format!("<rtc:RtcProfile{NS}>{}", "<a>".repeat(100_000));
         assert_eq!(fast(&deep), None);
+        // Up to MAX_ATTRS attributes a tag is read here; with more, or a duplicate among
+        // them (first, last, far apart), by `build_tree`.
+        let attrs = |n: usize| (0..n).map(|k| format!(" a{k}=\"{k}\"")).collect::<String>();
+        let many = |extra: &str, n: usize| {
+            format!(
+                "<rtc:RtcProfile{NS}><x{}{extra}/></rtc:RtcProfile>",
+                attrs(n)
+            )
+        };
+        let fits = many("", super::MAX_ATTRS);
+        assert_eq!(fast(&fits), Some(slow(&fits)));
+        assert_eq!(fast(&many("", super::MAX_ATTRS + 1)), None);
+        for dup in [" a0=\"again\"", " a9=\"again\""] {
+            let d = many(dup, 20);
+            assert_eq!(fast(&d), None, "{d}");
+            assert!(slow(&d).starts_with("error"), "{d}");
+        }
     }
 
     /// A generated element: name, attributes, and content (text or child elements).

@@ -412,8 +412,20 @@ pub(super) fn is_blank(s: &str) -> bool {
 
 /// A byte of an ASCII XML name (`rtc:DataPorts`, `a.b-c_d`).
 pub(super) fn is_ascii_name_byte(c: &u8) -> bool {
-    c.is_ascii_alphanumeric() || matches!(c, b'_' | b':' | b'-' | b'.')
+    NAME_BYTE[usize::from(*c)]
 }
+
+/// [`is_ascii_name_byte`] of every byte, looked up: names are scanned a byte at a time.
+const NAME_BYTE: [bool; 256] = {
+    let mut t = [false; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        t[c] = b.is_ascii_alphanumeric() || matches!(b, b'_' | b':' | b'-' | b'.');
+        c += 1;
+    }
+    t
+};
 
 /// A loose check of XML 1.0 `Name` (§2.3): quick-xml accepts anything up to whitespace or `>`.
 pub(super) fn is_name(s: &str) -> bool {
