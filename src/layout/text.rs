@@ -115,42 +115,45 @@ pub fn wrap_measured(s: &str, max: f32, font: Font) -> (Vec<String>, f32) {
 
 /// The lines of a text too wide for one (see [`wrap`]).
 fn wrap_lines(s: &str, max: f32, font: Font) -> Vec<String> {
-    // Pieces between break opportunities.
-    let mut pieces: Vec<String> = Vec::new();
-    let mut cur = String::new();
+    // Pieces between break opportunities (slices of `s`).
+    let mut pieces: Vec<&str> = Vec::new();
+    let mut start = 0;
     let mut prev: Option<char> = None;
-    for c in s.chars() {
+    for (i, c) in s.char_indices() {
         if let Some(p) = prev {
-            if c.is_uppercase() && p.is_lowercase() && !cur.is_empty() {
-                pieces.push(std::mem::take(&mut cur));
+            if c.is_uppercase() && p.is_lowercase() && i > start {
+                pieces.push(&s[start..i]);
+                start = i;
             }
         }
-        cur.push(c);
         if matches!(c, '_' | '.' | ':' | '/' | '-' | ',' | ' ') {
-            pieces.push(std::mem::take(&mut cur));
+            let end = i + c.len_utf8();
+            pieces.push(&s[start..end]);
+            start = end;
         }
         prev = Some(c);
     }
-    if !cur.is_empty() {
-        pieces.push(cur);
+    if start < s.len() {
+        pieces.push(&s[start..]);
     }
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
     // The characters of `line` added up.
     let mut sum = 0.0f32;
     for piece in pieces {
-        let joined = font.add(sum, &piece);
+        let joined = font.add(sum, piece);
         if font.finish(joined) <= max {
-            line.push_str(&piece);
+            line.push_str(piece);
             sum = joined;
             continue;
         }
         if !line.is_empty() {
             lines.push(std::mem::take(&mut line));
         }
-        let alone = font.add(0.0, &piece);
+        let alone = font.add(0.0, piece);
         if font.finish(alone) <= max {
-            line = piece;
+            // `line` is empty here (just handed over, or never filled).
+            line.push_str(piece);
             sum = alone;
             continue;
         }
@@ -196,6 +199,31 @@ mod tests {
         assert!(lines.iter().all(|l| w(l) <= 60.0));
         // CJK characters are a whole em wide.
         assert_eq!(text_width("画像", 10.0), 20.0);
+    }
+
+    proptest::proptest! {
+        /// Any name: the lines give it back whole, none is empty, and each fits unless it is a
+        /// single character.
+        #[test]
+        fn wrapped_lines_keep_every_character_and_fit(
+            parts in proptest::collection::vec(
+                proptest::sample::select(&["a", "B", "Cam", "_", ".", " ", "-", "画", "w", "x1"][..]),
+                0..60,
+            ),
+            max in 20.0f32..200.0,
+        ) {
+            let s: String = parts.concat();
+            let font = Font::regular(11.0);
+            let (lines, widest) = wrap_measured(&s, max, font);
+            proptest::prop_assert_eq!(lines.concat(), s.clone());
+            if lines.len() > 1 {
+                for l in &lines {
+                    proptest::prop_assert!(!l.is_empty());
+                    proptest::prop_assert!(font.width(l) <= max || l.chars().count() == 1, "{:?}", lines);
+                }
+            }
+            proptest::prop_assert!(widest >= 0.0);
+        }
     }
 
     #[test]
