@@ -1035,14 +1035,17 @@ fn name_of(n: &Option<Text>) -> &str {
     n.as_deref().unwrap_or_default()
 }
 
-/// Ids of the components of `loaded` ([`Component::id`]).
-fn component_ids(loaded: &[LoadedProfile]) -> Vec<ComponentId> {
-    let keys: Vec<String> = loaded
-        .iter()
+/// The key of each component of `loaded` (in parallel), and whether its profile writes an id:
+/// `RTC:vendor:category:name:version` from the id written (the dotted form of RTCBuilder 0.1
+/// read as the colon form with the same parts), the id as written when it has no such parts,
+/// or made from the basic info when the profile writes none.
+fn id_keys(loaded: &[LoadedProfile]) -> Vec<(String, bool)> {
+    loaded
+        .par_iter()
         .map(|l| {
             let p = &l.profile;
             let written = p.id.as_deref().map(str::trim).filter(|s| !s.is_empty());
-            match written.and_then(|id| crate::model::IdParts::parse(id, &p.basic_info)) {
+            let key = match written.and_then(|id| crate::model::IdParts::parse(id, &p.basic_info)) {
                 Some(x) => format!("RTC:{}:{}:{}:{}", x.vendor, x.category, x.name, x.version),
                 None => match written {
                     Some(id) => id.to_string(),
@@ -1059,14 +1062,21 @@ fn component_ids(loaded: &[LoadedProfile]) -> Vec<ComponentId> {
                         )
                     }
                 },
-            }
+            };
+            (key, written.is_some())
         })
-        .collect();
+        .collect()
+}
+
+/// Ids of the components of `loaded` ([`Component::id`]), from their [`id_keys`]: the key, or
+/// the key and the source path when other components have the same key.
+fn component_ids(loaded: &[LoadedProfile], keys: &[(String, bool)]) -> Vec<ComponentId> {
     let mut count: HashMap<&str, usize> = HashMap::new();
-    for k in &keys {
+    for (k, _) in keys {
         *count.entry(k.as_str()).or_default() += 1;
     }
     keys.iter()
+        .map(|(k, _)| k)
         .zip(loaded)
         .map(|(k, l)| {
             if count[k.as_str()] > 1 {
@@ -1400,7 +1410,8 @@ impl Catalog {
         // Component slugs from names, disambiguated by language or folder.
         let slugs = component_slugs(&loaded);
         let all_anchors: Vec<Anchors> = loaded.par_iter().map(|l| anchors(&l.profile)).collect();
-        let ids = component_ids(&loaded);
+        let keys = id_keys(&loaded);
+        let ids = component_ids(&loaded, &keys);
         let components: Vec<Component> = loaded
             .into_iter()
             .zip(slugs)
@@ -1424,19 +1435,9 @@ impl Catalog {
 
         // Duplicate ids: kept apart (both rendered), warned about. The dotted form of
         // RTCBuilder 0.1 names the same component as the colon form with the same parts.
-        let mut by_id: BTreeMap<String, Vec<usize>> = BTreeMap::new();
-        for (i, c) in components.iter().enumerate() {
-            if let Some(id) = c
-                .profile
-                .id
-                .as_deref()
-                .map(str::trim)
-                .filter(|s| !s.is_empty())
-            {
-                let key = match crate::model::IdParts::parse(id, &c.profile.basic_info) {
-                    Some(p) => format!("RTC:{}:{}:{}:{}", p.vendor, p.category, p.name, p.version),
-                    None => id.to_string(),
-                };
+        let mut by_id: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
+        for (i, (key, written)) in keys.iter().enumerate() {
+            if *written {
                 by_id.entry(key).or_default().push(i);
             }
         }
