@@ -1548,22 +1548,18 @@ impl Catalog {
                 })
                 .collect()
         };
-        // The type indexes, the facets and the findings' order are independent: made side by
-        // side.
-        let ((data_types, interfaces), ((categories, vendors), ())) = rayon::join(
+        // The type indexes and the two facet lists are independent: made side by side. The
+        // findings' sort runs on every core by itself.
+        let ((data_types, interfaces), (categories, vendors)) = rayon::join(
             || type_indexes(&components, canonical),
             || {
                 rayon::join(
-                    || {
-                        rayon::join(
-                            || facet(&|p| p.basic_info.category.as_deref()),
-                            || facet(&|p| p.basic_info.vendor.as_deref()),
-                        )
-                    },
-                    || crate::diagnostic::sort(&mut diagnostics),
+                    || facet(&|p| p.basic_info.category.as_deref()),
+                    || facet(&|p| p.basic_info.vendor.as_deref()),
                 )
             },
         );
+        crate::diagnostic::sort(&mut diagnostics);
         Catalog::with_entries(
             components,
             data_types,

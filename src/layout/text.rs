@@ -98,14 +98,22 @@ impl Font {
 /// as it grows (the same additions in the same order as measuring it whole), not measured
 /// again for each piece.
 pub fn wrap(s: &str, max: f32, font: Font) -> Vec<String> {
-    wrap_measured(s, max, font).0
+    match one_line(s, max, font) {
+        Some(_) => vec![s.to_string()],
+        None => wrap_lines(s, max, font),
+    }
+}
+
+/// The width of `s` when it stays on one line (it fits, or is empty); `None` when it wraps.
+fn one_line(s: &str, max: f32, font: Font) -> Option<f32> {
+    let whole = font.width(s);
+    (whole <= max || s.is_empty()).then_some(whole)
 }
 
 /// [`wrap`], and the width of the widest line (`font.width` of each line, the largest; 0 for
 /// no line wider than 0): a text that fits on one line is measured once, not twice.
 pub fn wrap_measured(s: &str, max: f32, font: Font) -> (Vec<String>, f32) {
-    let whole = font.width(s);
-    if whole <= max || s.is_empty() {
+    if let Some(whole) = one_line(s, max, font) {
         return (vec![s.to_string()], f32::max(0.0, whole));
     }
     let lines = wrap_lines(s, max, font);

@@ -1117,8 +1117,8 @@ impl HtmlRenderer {
         };
         all_paths.extend(Ix::all(catalog.components.len()).map(|ci| site.component_path(ci)));
         // The other pages are listed and rendered beside the component pages, not after them:
-        // listing them draws the system diagrams and sorts the findings, which would otherwise
-        // keep one core busy while the other waits.
+        // listing them lays out the data-flow and system drawings and paginates the findings,
+        // which would otherwise keep one core busy while the other waits.
         let ((search_written, pages_written), others) = rayon::join(
             || {
                 rayon::join(
@@ -1133,23 +1133,13 @@ impl HtmlRenderer {
                         Ok(1)
                     },
                     || {
-                        (0..catalog.components.len())
-                            .into_par_iter()
-                            .map(Ix::new)
-                            .filter(|&ci| wanted(&site.component_path(ci)))
-                            .map(|ci| -> Result<usize> {
-                                let page = site.component_page(ci);
-                                let html = if native {
-                                    native::component_page(&page, &globals)
-                                } else {
-                                    tmpl.render(&page).with_context(|| {
-                                        format!("rendering component `{}`", page.name)
-                                    })?
-                                };
-                                out.write_owned(&site.component_path(ci), html.into_bytes())?;
-                                Ok(1)
-                            })
-                            .try_reduce(|| 0, |a, b| Ok(a + b))
+                        render_component_pages(
+                            &site,
+                            &globals,
+                            (!native).then_some(&tmpl),
+                            out,
+                            wanted,
+                        )
                     },
                 )
             },
@@ -1163,6 +1153,34 @@ impl HtmlRenderer {
         all_paths.sort();
         Ok(Rendered { written, all_paths })
     }
+}
+
+/// The component pages, those `wanted`, rendered and written in parallel: by the built-in
+/// writer (`native`), or by `template` when the theme overrides `component.html`. How many
+/// were written.
+fn render_component_pages(
+    site: &Site<'_>,
+    globals: &native::Globals<'_>,
+    template: Option<&minijinja::Template<'_, '_>>,
+    out: &dyn Sink,
+    wanted: &(dyn Fn(&str) -> bool + Sync),
+) -> Result<usize> {
+    (0..site.catalog.components.len())
+        .into_par_iter()
+        .map(Ix::new)
+        .filter(|&ci| wanted(&site.component_path(ci)))
+        .map(|ci| -> Result<usize> {
+            let page = site.component_page(ci);
+            let html = match template {
+                None => native::component_page(&page, globals),
+                Some(t) => t
+                    .render(&page)
+                    .with_context(|| format!("rendering component `{}`", page.name))?,
+            };
+            out.write_owned(&site.component_path(ci), html.into_bytes())?;
+            Ok(1)
+        })
+        .try_reduce(|| 0, |a, b| Ok(a + b))
 }
 
 /// The pages other than the component pages ([`other_pages`]), those `wanted` rendered and
