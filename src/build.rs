@@ -376,6 +376,9 @@ enum Outcome {
     SystemFailed(Diagnostic),
 }
 
+/// The most files a core reads without offering the rest to the other cores.
+pub(crate) const READ_PIECE: usize = 8;
+
 /// Reads and parses the candidate `files` in parallel, in their order (`named`: the file was
 /// named on the command line, read as a profile whatever its name).
 fn read_outcomes(
@@ -386,6 +389,10 @@ fn read_outcomes(
 ) -> Vec<Outcome> {
     files
         .par_iter()
+        // Small pieces, so that no core is left idle while the other reads a long run of
+        // files alone (rayon's adaptive split leaves pieces of a quarter of the list on two
+        // cores: the last one was read alone for 30 ms at 3,000 profiles).
+        .with_max_len(READ_PIECE)
         .map(|(path, rel)| {
             let outcome = match walk::read_profile(path, opts.limits.max_file_size, named) {
                 Ok(walk::ReadFile::Other(head)) if parse::rts::is_system(&head) => {

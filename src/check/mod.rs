@@ -38,6 +38,8 @@ pub fn run(catalog: &Catalog) -> Vec<Diagnostic> {
             catalog
                 .components
                 .par_iter()
+                // Small pieces, so that the cores finish together (see `build::READ_PIECE`).
+                .with_max_len(crate::build::READ_PIECE)
                 .flat_map_iter(|c| {
                     let mut found = rules::component(c);
                     sort(&mut found);

@@ -1086,16 +1086,26 @@ impl HtmlRenderer {
                 not_implemented: lang.t("legend_not_implemented"),
             }),
         };
-        site.summaries = Ix::all(catalog.components.len())
-            .map(|ci| site.summary(ci))
-            .collect();
+        // The summaries are made on every core while every template is compiled once, up
+        // front (errors surface before any page is written).
+        let (summaries, compiled) = rayon::join(
+            || {
+                (0..catalog.components.len())
+                    .into_par_iter()
+                    .map(|i| site.summary(Ix::new(i)))
+                    .collect()
+            },
+            || -> Result<()> {
+                for (name, _) in DEFAULT_THEME.iter().filter(|(n, _)| n.ends_with(".html")) {
+                    env.get_template(name)
+                        .with_context(|| format!("theme template `{name}`"))?;
+                }
+                Ok(())
+            },
+        );
+        compiled?;
+        site.summaries = summaries;
         let site = site;
-
-        // Compile every template once, up front (errors surface before any page is written).
-        for (name, _) in DEFAULT_THEME.iter().filter(|(n, _)| n.ends_with(".html")) {
-            env.get_template(name)
-                .with_context(|| format!("theme template `{name}`"))?;
-        }
 
         let mut all_paths: Vec<String> = Vec::new();
         let mut written = 0usize;
