@@ -1264,30 +1264,34 @@ type UseAt = (usize, usize, usize);
 /// What the ports say about one type name while the catalogue is assembled: its spellings,
 /// `idlFile`s and uses, in the three slots of [`Uses::by_role`] (the two directions, others).
 #[derive(Default)]
-struct TypeAcc {
-    spellings: Vec<String>,
-    idl_files: Vec<String>,
+struct TypeAcc<'a> {
+    spellings: Vec<&'a str>,
+    idl_files: Vec<&'a str>,
     uses: [Vec<UseAt>; 3],
 }
 
-impl TypeAcc {
+impl<'a> TypeAcc<'a> {
     /// A use spelled `t` with `idl_file`, in role slot `slot`, at `at`.
-    fn add(&mut self, t: &str, idl_file: Option<&str>, slot: usize, at: UseAt) {
-        self.spellings.push(t.trim().to_string());
+    fn add(&mut self, t: &'a str, idl_file: Option<&'a str>, slot: usize, at: UseAt) {
+        self.spellings.push(t.trim());
         if let Some(f) = idl_file.filter(|f| !f.trim().is_empty()) {
-            self.idl_files.push(f.trim().to_string());
+            self.idl_files.push(f.trim());
         }
         self.uses[slot].push(at);
     }
 
     /// One entry per name of `accs`, in name order, each with its slug; `refs` makes the
-    /// references of each slot.
+    /// references of each slot. The entries are made on every core.
     fn entries<U: Uses>(
-        accs: BTreeMap<String, TypeAcc>,
-        refs: impl Fn(Vec<UseAt>) -> Vec<U::Ref>,
-    ) -> Vec<TypeEntry<U>> {
+        accs: BTreeMap<String, TypeAcc<'a>>,
+        refs: impl Fn(Vec<UseAt>) -> Vec<U::Ref> + Sync,
+    ) -> Vec<TypeEntry<U>>
+    where
+        TypeEntry<U>: Send,
+    {
         let names: Vec<(String, String)> = accs.keys().map(|k| (k.clone(), k.clone())).collect();
-        accs.into_iter()
+        let accs: Vec<(String, TypeAcc<'a>)> = accs.into_iter().collect();
+        accs.into_par_iter()
             .zip(unique_slugs(&names))
             .map(|((name, acc), slug)| TypeEntry {
                 name,
@@ -1301,10 +1305,10 @@ impl TypeAcc {
     }
 }
 
-fn sorted_unique(mut v: Vec<String>) -> Vec<String> {
-    v.sort();
+fn sorted_unique(mut v: Vec<&str>) -> Vec<String> {
+    v.sort_unstable();
     v.dedup();
-    v
+    v.into_iter().map(str::to_string).collect()
 }
 
 /// Everything read from one input, before it is a catalogue ([`Catalog::assemble`]).
@@ -1346,8 +1350,8 @@ fn type_indexes(
     components: &[Component],
     canonical: Vec<Vec<Option<String>>>,
 ) -> (Vec<DataType>, Vec<InterfaceType>) {
-    let mut types: BTreeMap<String, TypeAcc> = BTreeMap::new();
-    let mut ifaces: BTreeMap<String, TypeAcc> = BTreeMap::new();
+    let mut types: BTreeMap<String, TypeAcc<'_>> = BTreeMap::new();
+    let mut ifaces: BTreeMap<String, TypeAcc<'_>> = BTreeMap::new();
     for ((ci, c), keys) in components.iter().enumerate().zip(canonical) {
         // Each port's and interface's type in `port_types` order: whether it is an
         // interface, its spelling and `idlFile`, its role slot and where it is.
