@@ -1334,9 +1334,11 @@ impl Catalog {
         root: &sources::Roots,
         excluded: &(dyn Fn(&str) -> bool + Sync),
     ) -> Catalog {
-        let mut catalog = Catalog::build(docs.profiles, docs.diagnostics);
-        catalog.attach_idl(docs.idl);
-        catalog.attach_systems(docs.systems);
+        // The page list and the peer runs are made once, when the entries are all there.
+        let mut catalog = Catalog::build_entries(docs.profiles, docs.diagnostics);
+        catalog.attach_idl_entries(docs.idl);
+        catalog.attach_system_entries(docs.systems);
+        catalog.index();
         catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
         catalog.attach_readmes(root, excluded, docs.readme_dirs.as_ref());
         catalog.attach_sources(root.sources.clone());
@@ -1408,7 +1410,15 @@ fn type_indexes(
 impl Catalog {
     /// Builds the catalogue. Components are ordered by source path; `diagnostics` are the load
     /// diagnostics (reader warnings and errors of files that could not be read).
-    pub fn build(mut loaded: Vec<LoadedProfile>, mut diagnostics: Vec<Diagnostic>) -> Catalog {
+    pub fn build(loaded: Vec<LoadedProfile>, diagnostics: Vec<Diagnostic>) -> Catalog {
+        let mut catalog = Catalog::build_entries(loaded, diagnostics);
+        catalog.index();
+        catalog
+    }
+
+    /// [`Catalog::build`] without the page list and the peer runs ([`Catalog::index`]), for
+    /// [`Catalog::assemble`], which makes them once, after the IDL and the systems.
+    fn build_entries(mut loaded: Vec<LoadedProfile>, mut diagnostics: Vec<Diagnostic>) -> Catalog {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
 
         // Component slugs from names, disambiguated by language or folder.
@@ -1564,7 +1574,7 @@ impl Catalog {
             },
         );
         crate::diagnostic::sort(&mut diagnostics);
-        Catalog::with_entries(
+        Catalog::unindexed(
             components,
             data_types,
             interfaces,
@@ -1586,10 +1596,34 @@ impl Catalog {
         diagnostics: Vec<Diagnostic>,
         idl: crate::idl::IdlSet,
     ) -> Catalog {
+        let mut catalog = Catalog::unindexed(
+            components,
+            data_types,
+            interfaces,
+            categories,
+            vendors,
+            diagnostics,
+            idl,
+        );
+        catalog.index();
+        catalog
+    }
+
+    /// [`Catalog::with_entries`] without the page list and the peer runs ([`Catalog::index`]).
+    #[allow(clippy::too_many_arguments)]
+    fn unindexed(
+        components: Vec<Component>,
+        data_types: Vec<DataType>,
+        interfaces: Vec<InterfaceType>,
+        categories: Vec<Facet>,
+        vendors: Vec<Facet>,
+        diagnostics: Vec<Diagnostic>,
+        idl: crate::idl::IdlSet,
+    ) -> Catalog {
         let type_index = handle_map(&data_types, |t| t.name.clone());
         let interface_index = handle_map(&interfaces, |t| t.name.clone());
         let by_id = handle_map(&components, |c| c.id.clone());
-        let mut catalog = Catalog {
+        Catalog {
             components,
             data_types,
             interfaces,
@@ -1608,10 +1642,13 @@ impl Catalog {
             type_index,
             interface_index,
             peer_runs: PeerRuns::default(),
-        };
-        catalog.index_pages();
-        catalog.index_peers();
-        catalog
+        }
+    }
+
+    /// Makes the page list and the peer runs of the entries as they are now.
+    fn index(&mut self) {
+        self.index_pages();
+        self.index_peers();
     }
 
     /// This catalogue, made by [`Catalog::with_entries`] from its entries as `catalog.json`
@@ -1982,10 +2019,18 @@ impl Catalog {
     /// (so a page: a nested `RTC::Time` is documented, not only the `RTC::TimedLong` a port
     /// names), and each type learns which types contain it.
     pub fn attach_idl(&mut self, idl: crate::idl::IdlSet) {
+        if self.attach_idl_entries(idl) {
+            self.index();
+        }
+    }
+
+    /// [`Catalog::attach_idl`] without remaking the page list and the peer runs; whether the
+    /// entries changed (there was IDL).
+    fn attach_idl_entries(&mut self, idl: crate::idl::IdlSet) -> bool {
         use crate::idl::{IdlDefinition, IdlType};
         self.idl = idl;
         if self.idl.is_empty() {
-            return;
+            return false;
         }
         // The named types a definition refers to (resolved scoped names).
         fn named(ty: &IdlType, out: &mut Vec<String>) {
@@ -2102,8 +2147,7 @@ impl Catalog {
             }
         }
         self.type_index = handle_map(&self.data_types, |t| t.name.clone());
-        self.index_pages();
-        self.index_peers();
+        true
     }
 
     /// The data type entry for any spelling of a type name.
