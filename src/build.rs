@@ -377,7 +377,7 @@ enum Outcome {
 }
 
 /// The most files a core reads without offering the rest to the other cores.
-pub(crate) const READ_PIECE: usize = 8;
+const READ_PIECE: usize = 8;
 
 /// Reads and parses the candidate `files` in parallel, in their order (`named`: the file was
 /// named on the command line, read as a profile whatever its name).
