@@ -1574,7 +1574,7 @@ impl Catalog {
             },
         );
         crate::diagnostic::sort(&mut diagnostics);
-        Catalog::unindexed(
+        Catalog::with_entries(
             components,
             data_types,
             interfaces,
@@ -1585,33 +1585,11 @@ impl Catalog {
         )
     }
 
-    /// A catalogue of these entries with their lookups and pages (no systems, backups or
-    /// sources yet). Entries read back from `catalog.json` still need [`Catalog::bound`].
-    pub fn with_entries(
-        components: Vec<Component>,
-        data_types: Vec<DataType>,
-        interfaces: Vec<InterfaceType>,
-        categories: Vec<Facet>,
-        vendors: Vec<Facet>,
-        diagnostics: Vec<Diagnostic>,
-        idl: crate::idl::IdlSet,
-    ) -> Catalog {
-        let mut catalog = Catalog::unindexed(
-            components,
-            data_types,
-            interfaces,
-            categories,
-            vendors,
-            diagnostics,
-            idl,
-        );
-        catalog.index();
-        catalog
-    }
-
-    /// [`Catalog::with_entries`] without the page list and the peer runs ([`Catalog::index`]).
+    /// A catalogue of these entries with their lookups, without the page list and the peer runs
+    /// (no systems, backups or sources yet). Entries read back from `catalog.json` get those and
+    /// their handles from [`Catalog::bound`].
     #[allow(clippy::too_many_arguments)]
-    fn unindexed(
+    pub fn with_entries(
         components: Vec<Component>,
         data_types: Vec<DataType>,
         interfaces: Vec<InterfaceType>,
@@ -1652,8 +1630,8 @@ impl Catalog {
     }
 
     /// This catalogue, made by [`Catalog::with_entries`] from its entries as `catalog.json`
-    /// holds them, with each reference given its handle. Every reference must name an entry of
-    /// the catalogue.
+    /// holds them, with each reference given its handle and the page list and peer runs made.
+    /// Every reference must name an entry of the catalogue.
     pub fn bound(self) -> Result<Catalog, String> {
         let mut catalog = self;
         if catalog.by_id.len() < catalog.components.len() {
@@ -1696,6 +1674,7 @@ impl Catalog {
                 ));
             }
         }
+        catalog.index();
         Ok(catalog)
     }
 
