@@ -214,7 +214,7 @@ impl std::fmt::Display for Diagnostic {
     }
 }
 
-/// Codes of the diagnostics produced while loading profiles (the `check` rules add their own).
+/// Codes of the diagnostics produced while loading profiles and IDL (the `check` rules add their own).
 pub mod codes {
     /// The file is not well-formed XML or YAML.
     pub const MALFORMED: &str = "RTC001";
@@ -247,4 +247,26 @@ pub mod codes {
     pub const DUPLICATE_ACROSS_SOURCES: &str = "RTC014";
     /// A file of a `[[source]]` repository that is not read: a symbolic link or a submodule.
     pub const SOURCE_SKIPPED: &str = "RTC015";
+    // The IDL reader's (RTC020–RTC029), used as `crate::idl::codes`.
+    /// A syntax error (with the declaration skipped up to the next `;` or `}`).
+    pub const IDL_SYNTAX: &str = "RTC020";
+    /// A malformed or unbalanced preprocessor directive, or `#error`.
+    pub const IDL_PREPROCESSOR: &str = "RTC021";
+    /// An `#include` that names no file among those read.
+    pub const IDL_INCLUDE: &str = "RTC022";
+    /// Files that include each other without include guards.
+    pub const IDL_INCLUDE_CYCLE: &str = "RTC023";
+    /// A limit against hostile input: file size, nesting, include depth, token count.
+    pub const IDL_LIMIT: &str = "RTC024";
+    /// The file is not UTF-8 (which encoding was used), or not decodable.
+    pub const IDL_ENCODING: &str = "RTC025";
+    /// A declaration rtcdoc does not model (valuetype, component, …), skipped.
+    pub const IDL_SKIPPED: &str = "RTC026";
+    /// A directive or pragma that was ignored: unknown, unsupported, malformed, or naming
+    /// nothing.
+    pub const IDL_DIRECTIVE: &str = "RTC027";
+    /// The same name declared twice in one file.
+    pub const IDL_REDEFINITION: &str = "RTC028";
+    /// A type name that no IDL file read defines.
+    pub const IDL_UNRESOLVED: &str = "RTC029";
 }

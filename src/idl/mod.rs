@@ -92,29 +92,15 @@ impl Default for IdlOptions {
     }
 }
 
-/// Codes of the IDL reader's diagnostics (RTC020–RTC029).
+/// Codes of the IDL reader's diagnostics (RTC020–RTC029), spelled once with the loader's in
+/// [`crate::diagnostic::codes`].
 pub mod codes {
-    /// A syntax error (with the declaration skipped up to the next `;` or `}`).
-    pub const SYNTAX: &str = "RTC020";
-    /// A malformed or unbalanced preprocessor directive, or `#error`.
-    pub const PREPROCESSOR: &str = "RTC021";
-    /// An `#include` that names no file among those read.
-    pub const INCLUDE: &str = "RTC022";
-    /// Files that include each other without include guards.
-    pub const INCLUDE_CYCLE: &str = "RTC023";
-    /// A limit against hostile input: file size, nesting, include depth, token count.
-    pub const LIMIT: &str = "RTC024";
-    /// The file is not UTF-8 (which encoding was used), or not decodable.
-    pub const ENCODING: &str = "RTC025";
-    /// A declaration rtcdoc does not model (valuetype, component, …), skipped.
-    pub const SKIPPED: &str = "RTC026";
-    /// A directive or pragma that was ignored: unknown, unsupported, malformed, or naming
-    /// nothing.
-    pub const DIRECTIVE: &str = "RTC027";
-    /// The same name declared twice in one file.
-    pub const REDEFINITION: &str = "RTC028";
-    /// A type name that no IDL file read defines.
-    pub const UNRESOLVED: &str = "RTC029";
+    pub use crate::diagnostic::codes::{
+        IDL_DIRECTIVE as DIRECTIVE, IDL_ENCODING as ENCODING, IDL_INCLUDE as INCLUDE,
+        IDL_INCLUDE_CYCLE as INCLUDE_CYCLE, IDL_LIMIT as LIMIT, IDL_PREPROCESSOR as PREPROCESSOR,
+        IDL_REDEFINITION as REDEFINITION, IDL_SKIPPED as SKIPPED, IDL_SYNTAX as SYNTAX,
+        IDL_UNRESOLVED as UNRESOLVED,
+    };
 }
 
 /// Where a definition is: the file and the index path through nested definitions.
