@@ -9,6 +9,7 @@
 #                                            the examples; CORPUS=DIR, default ../shared/corpus/rtc-xml)
 #        OPENRTM_IDL=DIR SHAPE=corpus …     (with the *.idl of an OpenRTM installation's IDL directory)
 #        BASELINE=/path/to/rtcdoc …         (also an older binary's HTML build, in the same pairs)
+#        BIN=/path/to/rtcdoc …              (measure this binary; default: cargo build --release)
 #        HUGO=0 bench/catalogue.sh 30000    (without Hugo: it needs about 0.5 GB per 1,000 pages)
 #        HUGO_MAX=N …                       (Hugo only up to N profiles; default 10000, so that the
 #                                            30,000 point measures rtcdoc and the floor alone)
@@ -63,8 +64,12 @@ if ! command -v hugo >/dev/null || [ ! -x /usr/bin/time ]; then
     apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq hugo time >/dev/null
   fi
 fi
-cargo build --release --quiet
-bin=$PWD/target/release/rtcdoc
+if [ -n "${BIN:-}" ]; then
+  bin=$(realpath "$BIN")
+else
+  cargo build --release --quiet
+  bin=$PWD/target/release/rtcdoc
+fi
 
 # measure CMD...: runs CMD under /usr/bin/time, prints "seconds rss_mb"
 measure() {
