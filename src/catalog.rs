@@ -1336,8 +1336,8 @@ impl Catalog {
     ) -> Catalog {
         // The page list and the peer runs are made once, when the entries are all there.
         let mut catalog = Catalog::build_entries(docs.profiles, docs.diagnostics);
-        catalog.attach_idl_entries(docs.idl);
-        catalog.attach_system_entries(docs.systems);
+        catalog.attach_idl(docs.idl);
+        catalog.attach_systems(docs.systems);
         catalog.index();
         catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
         catalog.attach_readmes(root, excluded, docs.readme_dirs.as_ref());
@@ -1588,7 +1588,6 @@ impl Catalog {
     /// A catalogue of these entries with their lookups, without the page list and the peer runs
     /// (no systems, backups or sources yet). Entries read back from `catalog.json` get those and
     /// their handles from [`Catalog::bound`].
-    #[allow(clippy::too_many_arguments)]
     pub fn with_entries(
         components: Vec<Component>,
         data_types: Vec<DataType>,
@@ -1996,20 +1995,13 @@ impl Catalog {
     /// exception reachable from a port type or an interface (through fields, union cases,
     /// typedefs, sequences, operation parameters and results) gets a data-type entry of its own
     /// (so a page: a nested `RTC::Time` is documented, not only the `RTC::TimedLong` a port
-    /// names), and each type learns which types contain it.
+    /// names), and each type learns which types contain it. Their pages join the page list when
+    /// it is made ([`Catalog::assemble`]).
     pub fn attach_idl(&mut self, idl: crate::idl::IdlSet) {
-        if self.attach_idl_entries(idl) {
-            self.index();
-        }
-    }
-
-    /// [`Catalog::attach_idl`] without remaking the page list and the peer runs; whether the
-    /// entries changed (there was IDL).
-    fn attach_idl_entries(&mut self, idl: crate::idl::IdlSet) -> bool {
         use crate::idl::{IdlDefinition, IdlType};
         self.idl = idl;
         if self.idl.is_empty() {
-            return false;
+            return;
         }
         // The named types a definition refers to (resolved scoped names).
         fn named(ty: &IdlType, out: &mut Vec<String>) {
@@ -2126,7 +2118,6 @@ impl Catalog {
             }
         }
         self.type_index = handle_map(&self.data_types, |t| t.name.clone());
-        true
     }
 
     /// The data type entry for any spelling of a type name.

@@ -189,15 +189,10 @@ fn find_port(c: &Component, name: &str) -> Option<PortLink> {
 }
 
 impl Catalog {
-    /// Takes in the RT System profiles read for this catalogue (after [`Catalog::build`]): each
-    /// gets a slug and its links to the components and ports of the catalogue.
-    pub fn attach_systems(&mut self, loaded: Vec<LoadedSystem>) {
-        self.attach_system_entries(loaded);
-        self.index_pages();
-    }
-
-    /// [`Catalog::attach_systems`] without remaking the page list.
-    pub(super) fn attach_system_entries(&mut self, mut loaded: Vec<LoadedSystem>) {
+    /// Takes in the RT System profiles read for this catalogue: each gets a slug and its links
+    /// to the components and ports of the catalogue. Their pages join the page list when it is
+    /// made ([`Catalog::assemble`], [`Catalog::bound`]).
+    pub fn attach_systems(&mut self, mut loaded: Vec<LoadedSystem>) {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
         let mut exact: ByKey = HashMap::new();
         let mut by_vendor_name: ByVendorName = HashMap::new();

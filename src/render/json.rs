@@ -442,7 +442,7 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         }
         idl_files.push(file);
     }
-    let mut catalog = Catalog::with_entries(
+    let mut entries = Catalog::with_entries(
         doc.components.0.into_owned(),
         doc.data_types.0.into_owned(),
         doc.interfaces.0.into_owned(),
@@ -450,12 +450,10 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         doc.vendors.0.into_owned(),
         doc.diagnostics.into_owned(),
         IdlSet::from_files(idl_files),
-    )
-    .bound()
-    .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-    catalog.idl_history = idl_history;
-    // The systems' links are made again; their histories are kept as read.
-    catalog.attach_systems(
+    );
+    // The systems' links are made again; their histories are kept as read. Binding makes the
+    // page list, system pages included.
+    entries.attach_systems(
         doc.systems
             .0
             .into_owned()
@@ -463,6 +461,10 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
             .map(Into::into)
             .collect(),
     );
+    let mut catalog = entries
+        .bound()
+        .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    catalog.idl_history = idl_history;
     catalog.detached_backups = doc.backups.into_owned();
     catalog.set_origins(doc.sources.into_owned());
     if page_entries(&catalog) != doc.pages {
