@@ -803,3 +803,32 @@ fn stray_text_kept_as_extra() {
     assert_eq!(p.diagnostics[0].code, codes::UNKNOWN);
     assert_eq!(p.diagnostics[0].pos, Some(Pos::new(2, 31)));
 }
+
+/// Each node and its doc are named in messages: the action's from a table made once, the
+/// others given with the node (none is formatted per node any more).
+#[test]
+fn unknown_attributes_name_their_node_and_its_doc() {
+    let xml = br#"<rtc:RtcProfile xmlns:rtc="http://www.openrtp.org/namespaces/rtc" xmlns:rtcDoc="http://www.openrtp.org/namespaces/rtc_doc">
+<rtc:Actions><rtc:OnExecute rtc:implemented="true" rtc:x="1"><rtc:Doc rtcDoc:y="2"/></rtc:OnExecute></rtc:Actions>
+<rtc:ConfigurationSet><rtc:Configuration rtc:name="c"><rtc:Doc rtcDoc:z="3"/></rtc:Configuration></rtc:ConfigurationSet>
+<rtc:ServicePorts rtc:name="s"><rtc:Doc rtcDoc:w="4"/><rtc:ServiceInterface rtc:name="i"><rtc:Doc rtcDoc:v="5"/></rtc:ServiceInterface></rtc:ServicePorts>
+</rtc:RtcProfile>"#;
+    let p = match parse(xml, "names.xml", &Limits::default()) {
+        Ok(p) => p,
+        Err(d) => panic!("should parse: {d}"),
+    };
+    let messages: Vec<&str> = p.diagnostics.iter().map(|d| d.message.as_str()).collect();
+    for (attr, on) in [
+        ("rtc:x", "action OnExecute"),
+        ("rtcDoc:y", "action OnExecute doc"),
+        ("rtcDoc:z", "configuration doc"),
+        ("rtcDoc:w", "service port doc"),
+        ("rtcDoc:v", "service interface doc"),
+    ] {
+        let want = format!("unknown attribute `{attr}` on {on}; kept as an extra property");
+        assert!(
+            messages.contains(&want.as_str()),
+            "{want} not in {messages:#?}"
+        );
+    }
+}

@@ -204,8 +204,9 @@ fn required(p: &Profile, s: &mut Findings) {
 /// RTC102: enumerations of the XSD.
 fn enumerations(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
+    // `what` is formatted only for a finding (most values are valid).
     let exact = |s: &mut Findings,
-                 what: &str,
+                 what: &dyn std::fmt::Display,
                  v: &Option<crate::model::Text>,
                  allowed: &[&str],
                  pos: Pos| {
@@ -230,7 +231,7 @@ fn enumerations(p: &Profile, s: &mut Findings) {
     };
     exact(
         s,
-        "componentType",
+        &"componentType",
         &b.component_type,
         &["STATIC", "UNIQUE", "COMMUTATIVE"],
         b.attr_pos.or("componentType", b.pos),
@@ -240,7 +241,7 @@ fn enumerations(p: &Profile, s: &mut Findings) {
     if non_empty(&b.activity_type) != Some("EVENT_DRIVEN") {
         exact(
             s,
-            "activityType",
+            &"activityType",
             &b.activity_type,
             &["PERIODIC", "SPORADIC", "EVENTDRIVEN"],
             b.attr_pos.or("activityType", b.pos),
@@ -249,7 +250,7 @@ fn enumerations(p: &Profile, s: &mut Findings) {
     for d in &p.data_ports {
         exact(
             s,
-            &format!(
+            &format_args!(
                 "portType of data port `{}`",
                 d.name.as_deref().unwrap_or("")
             ),
@@ -359,7 +360,10 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
             }
         }
     }
-    let boolean = |s: &mut Findings, what: String, v: &Option<crate::model::Text>, pos: Pos| {
+    let boolean = |s: &mut Findings,
+                   what: &dyn std::fmt::Display,
+                   v: &Option<crate::model::Text>,
+                   pos: Pos| {
         if let Some(t) = v {
             if parse_bool(Some(t)).is_none() {
                 s.emit(
@@ -373,7 +377,7 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
     for a in &p.actions {
         boolean(
             s,
-            format!("implemented of action {}", a.kind.xml_name()),
+            &format_args!("implemented of action {}", a.kind.xml_name()),
             &a.implemented,
             a.pos,
         );
@@ -689,7 +693,7 @@ fn known_values(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
     let check = |s: &mut Findings,
                  code,
-                 what: &str,
+                 what: &dyn std::fmt::Display,
                  v: &Option<crate::model::Text>,
                  known: &[&str],
                  pos| {
@@ -717,7 +721,7 @@ fn known_values(p: &Profile, s: &mut Findings) {
     check(
         s,
         r::COMPONENT_KIND,
-        "componentKind",
+        &"componentKind",
         &b.component_kind,
         COMPONENT_KINDS,
         b.attr_pos.or("componentKind", b.pos),
@@ -725,7 +729,7 @@ fn known_values(p: &Profile, s: &mut Findings) {
     check(
         s,
         r::EXECUTION_TYPE,
-        "executionType",
+        &"executionType",
         &b.execution_type,
         EXECUTION_TYPES,
         b.attr_pos.or("executionType", b.pos),
@@ -735,7 +739,7 @@ fn known_values(p: &Profile, s: &mut Findings) {
         check(
             s,
             r::INTERFACE_TYPE,
-            &format!("interfaceType of data port `{n}`:"),
+            &format_args!("interfaceType of data port `{n}`:"),
             &d.interface_type,
             INTERFACE_TYPES,
             d.attr_pos.or("interfaceType", d.pos),
@@ -743,7 +747,7 @@ fn known_values(p: &Profile, s: &mut Findings) {
         check(
             s,
             r::DATAFLOW_TYPE,
-            &format!("dataflowType of data port `{n}`:"),
+            &format_args!("dataflowType of data port `{n}`:"),
             &d.dataflow_type,
             DATAFLOW_TYPES,
             d.attr_pos.or("dataflowType", d.pos),
@@ -751,7 +755,7 @@ fn known_values(p: &Profile, s: &mut Findings) {
         check(
             s,
             r::SUBSCRIPTION_TYPE,
-            &format!("subscriptionType of data port `{n}`:"),
+            &format_args!("subscriptionType of data port `{n}`:"),
             &d.subscription_type,
             SUBSCRIPTION_TYPES,
             d.attr_pos.or("subscriptionType", d.pos),

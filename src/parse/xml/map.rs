@@ -259,17 +259,16 @@ impl Mapper<'_> {
         }
     }
 
-    /// Child `n` of `on` as its `Doc` element (`{on} doc`), the first only ([`Mapper::once`]).
+    /// Child `n` of `on` as its `Doc` element (named `doc_on`, `{on} doc`, in messages: given,
+    /// not formatted for every node), the first only ([`Mapper::once`]).
     pub(super) fn doc<T: Fields + Default>(
         &mut self,
         slot: &mut Option<T>,
         n: &Node,
-        on: &str,
+        [on, doc_on]: [&str; 2],
         extra: &mut Extras,
     ) {
-        self.once(slot, n, on, extra, |m, n| {
-            map_leaf(m, n, &format!("{on} doc"))
-        });
+        self.once(slot, n, on, extra, |m, n| map_leaf(m, n, doc_on));
     }
 
     /// Child `n` of `on` as the one element `slot` holds: mapped by `map` the first time, a
@@ -327,7 +326,7 @@ pub(super) fn map_profile(m: &mut Mapper, n: &Node) -> Profile {
 pub(super) fn map_basic_info(m: &mut Mapper, n: &Node) -> BasicInfo {
     let on = "basic info";
     let (b, _) = map_node(m, n, on, |m, c, b: &mut BasicInfo, extra| match c.key() {
-        Some("Doc") => m.doc(&mut b.doc, c, on, extra),
+        Some("Doc") => m.doc(&mut b.doc, c, [on, "basic info doc"], extra),
         // XSD 6.3 `VersionUpLogs`; the 9.2 sample writes `VersionUpLog`. Empty ones are
         // common in real files and say nothing.
         Some("VersionUpLogs" | "VersionUpLog") => {
@@ -357,9 +356,29 @@ pub(super) fn map_actions(m: &mut Mapper, n: &Node, actions: &mut Vec<Action>, e
     m.stray_text(n, on, extra);
 }
 
+/// `action OnInitialize` and `action OnInitialize doc`: an action's names in messages, made
+/// once (they were formatted for every action of every profile).
+fn action_names(kind: ActionKind) -> [&'static str; 2] {
+    static NAMES: std::sync::LazyLock<Vec<(ActionKind, [String; 2])>> =
+        std::sync::LazyLock::new(|| {
+            ActionKind::ALL
+                .iter()
+                .map(|k| {
+                    let on = format!("action {}", k.xml_name());
+                    let doc = format!("{on} doc");
+                    (*k, [on, doc])
+                })
+                .collect()
+        });
+    let names = NAMES.iter().find(|(k, _)| *k == kind);
+    names.map_or(["action", "action doc"], |(_, [on, doc])| {
+        [on.as_str(), doc.as_str()]
+    })
+}
+
 /// spec 2.3.4 `action_status`, 2.4.3 `doc_action`.
 pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
-    let on = format!("action {}", kind.xml_name());
+    let [on, doc_on] = action_names(kind);
     let mut act = Action {
         kind,
         implemented: None,
@@ -368,14 +387,14 @@ pub(super) fn map_action(m: &mut Mapper, n: &Node, kind: ActionKind) -> Action {
         extra: crate::model::Extras::new(),
     };
     let mut extra = crate::model::Extras::new();
-    scalar_attrs(m, n, &mut act, &on, &mut extra);
+    scalar_attrs(m, n, &mut act, on, &mut extra);
     for c in &n.children {
         match c.key() {
-            Some("Doc") => m.doc(&mut act.doc, c, &on, &mut extra),
-            _ => m.unknown_elem(c, &on, &mut extra),
+            Some("Doc") => m.doc(&mut act.doc, c, [on, doc_on], &mut extra),
+            _ => m.unknown_elem(c, on, &mut extra),
         }
     }
-    m.stray_text(n, &on, &mut extra);
+    m.stray_text(n, on, &mut extra);
     act.extra = extra;
     act
 }
@@ -400,13 +419,13 @@ pub(super) fn map_configuration_set(m: &mut Mapper, n: &Node) -> ConfigurationSe
     cs
 }
 
-/// Node `n` as the [`Documented`] node `T` (named `on` in messages): its scalars by the field
-/// table, the children all of them have (`Doc`, `Properties`, and `Constraint` where `T` has
-/// one), any other child by `other` (false: unknown).
+/// Node `n` as the [`Documented`] node `T` (named `on` in messages, its doc `doc_on`): its
+/// scalars by the field table, the children all of them have (`Doc`, `Properties`, and
+/// `Constraint` where `T` has one), any other child by `other` (false: unknown).
 fn map_documented<'n, 't, T: Documented>(
     m: &mut Mapper,
     n: &'n Node<'t>,
-    on: &str,
+    [on, doc_on]: [&str; 2],
     mut other: impl FnMut(&mut Mapper, &'n Node<'t>, &mut T) -> bool,
 ) -> T {
     let (t, aliases) = map_node(m, n, on, |m, c, t: &mut T, extra| {
@@ -415,7 +434,7 @@ fn map_documented<'n, 't, T: Documented>(
         }
         let parts = t.parts();
         match (c.key(), parts.constraint) {
-            (Some("Doc"), _) => m.doc(parts.doc, c, on, extra),
+            (Some("Doc"), _) => m.doc(parts.doc, c, [on, doc_on], extra),
             (Some("Properties"), _) => parts.properties.push(map_leaf(m, c, "property")),
             (Some("Constraint"), Some(slot)) => m.once(slot, c, on, extra, map_constraint),
             _ => m.unknown_elem(c, on, extra),
@@ -427,18 +446,24 @@ fn map_documented<'n, 't, T: Documented>(
 
 /// spec 2.3.6 `configuration`, 2.4.4 doc, 2.5.2 ext.
 pub(super) fn map_configuration(m: &mut Mapper, n: &Node) -> Configuration {
-    map_documented(m, n, "configuration", |_, _, _| false)
+    let on = ["configuration", "configuration doc"];
+    map_documented(m, n, on, |_, _, _| false)
 }
 
 /// spec 2.3.7 `dataport`, 2.4.5 doc, 2.5.3 ext; FSM `EventPort`s carry `Event` children.
 pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
-    map_documented(m, n, "data port", |m, c, d: &mut DataPort| {
-        let event = c.key() == Some("Event");
-        if event {
-            d.events.push(map_event(m, c));
-        }
-        event
-    })
+    map_documented(
+        m,
+        n,
+        ["data port", "data port doc"],
+        |m, c, d: &mut DataPort| {
+            let event = c.key() == Some("Event");
+            if event {
+                d.events.push(map_event(m, c));
+            }
+            event
+        },
+    )
 }
 
 /// An FSM event of an `EventPort` (RTCBuilder 2.x; not in spec v0.2); its doc is a data port
@@ -446,7 +471,7 @@ pub(super) fn map_data_port(m: &mut Mapper, n: &Node) -> DataPort {
 pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
     let on = "event";
     let (e, _) = map_node(m, n, on, |m, c, e: &mut Event, extra| match c.key() {
-        Some("Doc") => m.doc(&mut e.doc, c, on, extra),
+        Some("Doc") => m.doc(&mut e.doc, c, [on, "event doc"], extra),
         _ => m.unknown_elem(c, on, extra),
     });
     e
@@ -454,7 +479,7 @@ pub(super) fn map_event(m: &mut Mapper, n: &Node) -> Event {
 
 /// spec 2.3.8 `serviceport`, 2.4.7 doc, 2.5.4 ext, 2.3.10 `transmission_method`.
 pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
-    let on = "service port";
+    let on = ["service port", "service port doc"];
     map_documented(m, n, on, |m, c, s: &mut ServicePort| {
         match c.key() {
             Some("ServiceInterface") => s.interfaces.push(map_service_interface(m, c)),
@@ -467,7 +492,8 @@ pub(super) fn map_service_port(m: &mut Mapper, n: &Node) -> ServicePort {
 
 /// spec 2.3.9 `serviceinterface`, 2.4.8 doc, 2.5.5 ext.
 pub(super) fn map_service_interface(m: &mut Mapper, n: &Node) -> ServiceInterface {
-    map_documented(m, n, "service interface", |_, _, _| false)
+    let on = ["service interface", "service interface doc"];
+    map_documented(m, n, on, |_, _, _| false)
 }
 
 /// spec 2.3.11 `parameter`.
