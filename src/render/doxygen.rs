@@ -195,11 +195,8 @@ impl Markup for Dox {
     fn esc(s: &str) -> String {
         text(s)
     }
-    fn message(s: &str) -> String {
-        let line = s.replace(['\r', '\n'], " ");
-        let mut out = String::with_capacity(line.len() + 8);
-        push_escaped(line.trim(), &mut out, true);
-        out
+    fn message_line(line: &str, out: &mut String) {
+        push_escaped(line, out, true);
     }
     fn link(text_: &str, target: &str) -> String {
         refer(target, text_)

@@ -205,11 +205,8 @@ impl Markup for Md {
     fn esc(s: &str) -> String {
         inline(s)
     }
-    fn message(s: &str) -> String {
-        let line = s.replace(['\r', '\n'], " ");
-        let mut out = String::with_capacity(line.len() + 8);
-        escape_line(line.trim(), &mut out);
-        out
+    fn message_line(line: &str, out: &mut String) {
+        escape_line(line, out);
     }
     fn link(text: &str, target: &str) -> String {
         link(text, target)

@@ -88,9 +88,17 @@ pub trait Markup {
     const OUTPUT: Output;
     /// Escapes plain text for an inline position (a table cell, a heading).
     fn esc(s: &str) -> String;
-    /// Escapes a message of rtcdoc's (a change's): one line, its code spans (the values it
+    /// Escapes a message of rtcdoc's (a change's): one line (its line breaks become spaces,
+    /// the ends trimmed) escaped by [`Markup::message_line`].
+    fn message(s: &str) -> String {
+        let line = s.replace(['\r', '\n'], " ");
+        let mut out = String::with_capacity(line.len() + 8);
+        Self::message_line(line.trim(), &mut out);
+        out
+    }
+    /// Escapes one line of a message of rtcdoc's onto `out`: its code spans (the values it
     /// quotes) kept as written, without reading profile markup such as `<br/>` in them.
-    fn message(s: &str) -> String;
+    fn message_line(line: &str, out: &mut String);
     /// A cross-reference with plain `text`; `target` (a URL or a label) is generated and safe.
     fn link(text: &str, target: &str) -> String;
     /// Bold text; `escaped` is already escaped.
