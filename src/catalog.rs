@@ -8,7 +8,7 @@
 //!   id + service port name + interface name ([`member_key`] tells repeated names apart). Maps
 //!   built once resolve them ([`Catalog::component`], [`Catalog::resolve_port`],
 //!   [`Catalog::data_type`]). Ids make two catalogues comparable entry by entry (`rtcdoc diff`)
-//!   and `catalog.json` readable back ([`Catalog::with_entries`] and [`Catalog::bound`], `render::json::read_catalog`).
+//!   and `catalog.json` readable back ([`Catalog::with_lookups`] and [`Catalog::bound`], `render::json::read_catalog`).
 //! - **Indexes**, built in O(n) over the ports of all profiles: who produces and who consumes
 //!   each data type, who provides and who requires each service interface, which IDL types hold
 //!   which ([`Catalog::attach_idl`]), category and vendor facets, slugs and row anchors.
@@ -775,8 +775,9 @@ pub fn idl_file_names(files: &[String]) -> Vec<String> {
     names
 }
 
-/// The whole catalogue.
-#[derive(Debug, Clone, Serialize)]
+/// The whole catalogue. [`Catalog::default`] is an empty one, without lookups
+/// ([`Catalog::with_lookups`]).
+#[derive(Debug, Clone, Default, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Catalog {
     pub components: Vec<Component>,
@@ -1574,32 +1575,6 @@ impl Catalog {
             },
         );
         crate::diagnostic::sort(&mut diagnostics);
-        Catalog::with_entries(
-            components,
-            data_types,
-            interfaces,
-            categories,
-            vendors,
-            diagnostics,
-            Default::default(),
-        )
-    }
-
-    /// A catalogue of these entries with their lookups, without the page list and the peer runs
-    /// (no systems, backups or sources yet). Entries read back from `catalog.json` get those and
-    /// their handles from [`Catalog::bound`].
-    pub fn with_entries(
-        components: Vec<Component>,
-        data_types: Vec<DataType>,
-        interfaces: Vec<InterfaceType>,
-        categories: Vec<Facet>,
-        vendors: Vec<Facet>,
-        diagnostics: Vec<Diagnostic>,
-        idl: crate::idl::IdlSet,
-    ) -> Catalog {
-        let type_index = handle_map(&data_types, |t| t.name.clone());
-        let interface_index = handle_map(&interfaces, |t| t.name.clone());
-        let by_id = handle_map(&components, |c| c.id.clone());
         Catalog {
             components,
             data_types,
@@ -1607,19 +1582,19 @@ impl Catalog {
             categories,
             vendors,
             diagnostics,
-            idl,
-            idl_history: Default::default(),
-            pages: Vec::new(),
-            page_starts: PageStarts::default(),
-            by_id,
-            systems: Vec::new(),
-            detached_backups: Vec::new(),
-            sources: Vec::new(),
-            history_notes: Vec::new(),
-            type_index,
-            interface_index,
-            peer_runs: PeerRuns::default(),
+            ..Catalog::default()
         }
+        .with_lookups()
+    }
+
+    /// This catalogue, its entries set on [`Catalog::default`], with their lookups, without the
+    /// page list and the peer runs (no systems, backups or sources yet). Entries read back from
+    /// `catalog.json` get those and their handles from [`Catalog::bound`].
+    pub fn with_lookups(mut self) -> Catalog {
+        self.type_index = handle_map(&self.data_types, |t| t.name.clone());
+        self.interface_index = handle_map(&self.interfaces, |t| t.name.clone());
+        self.by_id = handle_map(&self.components, |c| c.id.clone());
+        self
     }
 
     /// Makes the page list and the peer runs of the entries as they are now.
@@ -1628,7 +1603,7 @@ impl Catalog {
         self.index_peers();
     }
 
-    /// This catalogue, made by [`Catalog::with_entries`] from its entries as `catalog.json`
+    /// This catalogue, made by [`Catalog::with_lookups`] of its entries as `catalog.json`
     /// holds them, with each reference given its handle and the page list and peer runs made.
     /// Every reference must name an entry of the catalogue.
     pub fn bound(self) -> Result<Catalog, String> {

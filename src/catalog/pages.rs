@@ -178,17 +178,7 @@ mod tests {
 
     #[test]
     fn links_go_up_to_the_root_and_down() {
-        let cat = Catalog::with_entries(
-            Vec::new(),
-            Vec::new(),
-            Vec::new(),
-            Vec::new(),
-            Vec::new(),
-            Vec::new(),
-            crate::idl::IdlSet::default(),
-        )
-        .bound()
-        .expect("empty catalogue");
+        let cat = Catalog::default().bound().expect("empty catalogue");
         let comp = page(PageKind::Component, "components/camera");
         let vendor = page(PageKind::Vendor, "vendors/acme-inc");
         let index = page(PageKind::Index, "index");

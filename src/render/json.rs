@@ -442,15 +442,15 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         }
         idl_files.push(file);
     }
-    let mut entries = Catalog::with_entries(
-        doc.components.0.into_owned(),
-        doc.data_types.0.into_owned(),
-        doc.interfaces.0.into_owned(),
-        doc.categories.0.into_owned(),
-        doc.vendors.0.into_owned(),
-        doc.diagnostics.into_owned(),
-        IdlSet::from_files(idl_files),
-    );
+    let mut entries = Catalog::default();
+    entries.components = doc.components.0.into_owned();
+    entries.data_types = doc.data_types.0.into_owned();
+    entries.interfaces = doc.interfaces.0.into_owned();
+    entries.categories = doc.categories.0.into_owned();
+    entries.vendors = doc.vendors.0.into_owned();
+    entries.diagnostics = doc.diagnostics.into_owned();
+    entries.idl = IdlSet::from_files(idl_files);
+    let mut entries = entries.with_lookups();
     // The systems' links are made again; their histories are kept as read. Binding makes the
     // page list, system pages included.
     entries.attach_systems(
