@@ -689,6 +689,15 @@ mod tests {
         std::fs::write(p, "<rtc:RtcProfile/>").unwrap();
     }
 
+    /// A temporary folder with a profile at each of `rels` (folders made as needed).
+    fn tree(rels: &[&str]) -> tempfile::TempDir {
+        let dir = tempfile::tempdir().unwrap();
+        for rel in rels {
+            write(dir.path(), rel);
+        }
+        dir
+    }
+
     /// (files, skipped) as comparable lists.
     fn flat(c: Candidates) -> (Vec<(PathBuf, String)>, Vec<Skipped>) {
         (c.files, c.skipped)
@@ -699,9 +708,7 @@ mod tests {
     /// top or deep, beside excluded and hidden entries.
     #[test]
     fn the_walk_notes_every_folder_with_a_readme() {
-        let dir = tempfile::tempdir().unwrap();
-        let d = dir.path();
-        for rel in [
+        let dir = tree(&[
             "RTC.xml",
             "README.md",
             "a/RTC.xml",
@@ -715,9 +722,8 @@ mod tests {
             "f/g/ReadMe.md",
             "x/RTC.xml",
             "x/README.md",
-        ] {
-            write(d, rel);
-        }
+        ]);
+        let d = dir.path();
         std::fs::create_dir_all(d.join("d/README.md")).unwrap();
         std::fs::create_dir_all(d.join("e")).unwrap();
         write(d, "e/RTC.xml");
@@ -782,9 +788,7 @@ mod tests {
     /// the top and deeper, root files among directories, and patterns.
     #[test]
     fn parallel_walk_equals_one_sorted_walk() {
-        let dir = tempfile::tempdir().unwrap();
-        let d = dir.path();
-        for rel in [
+        let dir = tree(&[
             "a.xml",
             "m.yaml",
             "z.txt",
@@ -798,9 +802,8 @@ mod tests {
             "deep/x/RTC.XML",
             "skip/me/RTC.xml",
             "n/keep.xml",
-        ] {
-            write(d, rel);
-        }
+        ]);
+        let d = dir.path();
         #[cfg(unix)]
         {
             std::os::unix::fs::symlink(d.join("b"), d.join("link-dir")).unwrap();
