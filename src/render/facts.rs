@@ -580,31 +580,29 @@ mod tests {
         );
     }
 
+    /// Property `key` is labelled `en` in English and `ja` in Japanese.
+    fn labelled(key: &str, en: &str, ja: &str) {
+        assert_eq!(property_label(key, Lang::En), en);
+        assert_eq!(property_label(key, Lang::Ja), ja);
+    }
+
     #[test]
     fn known_property_keys_get_labels() {
-        for (key, en, ja) in [
-            ("FSM", "Finite state machine (FSM)", "有限状態機械 (FSM)"),
-            ("FSMType", "FSM type", "FSM の種類"),
-            (
-                "__container__lib_2",
-                "Container library 2",
-                "コンテナライブラリ 2",
-            ),
-            (
-                "__iso__exeType_hardRT",
-                "ISO 22166-202: exeType_hardRT",
-                "ISO 22166-202: exeType_hardRT",
-            ),
-            (
-                "__container__lib_x",
-                "__container__lib_x",
-                "__container__lib_x",
-            ),
-            ("__iso__", "__iso__", "__iso__"),
-            ("SIM_Version", "SIM_Version", "SIM_Version"),
-        ] {
-            assert_eq!(property_label(key, Lang::En), en);
-            assert_eq!(property_label(key, Lang::Ja), ja);
+        labelled("FSM", "Finite state machine (FSM)", "有限状態機械 (FSM)");
+        labelled("FSMType", "FSM type", "FSM の種類");
+        labelled(
+            "__container__lib_2",
+            "Container library 2",
+            "コンテナライブラリ 2",
+        );
+        labelled(
+            "__iso__exeType_hardRT",
+            "ISO 22166-202: exeType_hardRT",
+            "ISO 22166-202: exeType_hardRT",
+        );
+        // A library suffix that is not a number, a bare prefix and unknown keys: as written.
+        for key in ["__container__lib_x", "__iso__", "SIM_Version"] {
+            labelled(key, key, key);
         }
     }
 }
