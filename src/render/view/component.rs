@@ -157,59 +157,77 @@ fn since<'a>(c: &'a crate::catalog::Component, key: Option<&String>) -> Option<&
     key.and_then(|k| c.since.get(k)).map(String::as_str)
 }
 
+/// Each of `items`, a list of component `c`'s profile, with its index, its anchor (of
+/// `anchors`) and its "since" note (by the change paths `keys` of [`since_keys`]).
+fn anchored<'a, 'k, T>(
+    c: &'a crate::catalog::Component,
+    items: &'a [T],
+    (anchors, keys): (&'a [String], &'k [String]),
+) -> impl Iterator<Item = (usize, &'a T, &'a str, Option<&'a str>)> + 'k
+where
+    'a: 'k,
+{
+    items
+        .iter()
+        .enumerate()
+        .map(move |(i, x)| (i, x, anchors[i].as_str(), since(c, keys.get(i))))
+}
+
 /// The data ports of component `ci`, each with its type linked and its peers.
 fn data_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<DataPortView<'_>> {
     let c = &cat[ci];
     let keys = since_keys(c);
-    c.profile
-        .data_ports
-        .iter()
-        .enumerate()
-        .map(|(pi, dp)| {
-            let ti = non_empty(&dp.type_).and_then(|t| cat.data_type_index(t));
-            let type_page = ti.map(|ti| cat.data_type_page(ti));
-            DataPortView {
-                side: dp.side(),
-                unit: facts::data_port_unit(dp).unwrap_or(""),
-                events: dp
-                    .events
-                    .iter()
-                    .map(|e| (e.name.as_deref().unwrap_or_default(), facts::event(e, lang)))
-                    .collect(),
-                port: PortView {
-                    anchor: &c.anchors.data_ports[pi],
-                    since: since(c, keys.data_ports.get(pi)),
-                    name: dp.name.as_deref().unwrap_or_default(),
-                    direction: port_dir(lang, dp),
-                    type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
-                    type_short: short(&dp.type_),
-                    description: dp.doc.as_ref().and_then(|d| non_empty(&d.description)),
-                    details: facts::data_port_attributes_without_unit(dp, lang),
-                    peers: Peers::of(
-                        ci,
-                        cat.data_port_peers(ci, pi),
-                        |r| cat.port_component(r).unwrap_or(Ix::NONE),
-                        |r| {
-                            let (pc, port) = cat.resolve_port(r)?;
-                            let comp = &cat[pc];
-                            Some((
-                                pc,
-                                comp.profile.data_ports[port]
-                                    .name
-                                    .as_deref()
-                                    .unwrap_or_default()
-                                    .to_string(),
-                                comp.anchors.data_ports[port].as_str(),
-                            ))
-                        },
-                        cat,
-                        type_page,
-                        lang.t("more_on_type_page"),
-                    ),
-                },
-            }
-        })
-        .collect()
+    anchored(
+        c,
+        &c.profile.data_ports,
+        (&c.anchors.data_ports, &keys.data_ports),
+    )
+    .map(|(pi, dp, anchor, since)| {
+        let ti = non_empty(&dp.type_).and_then(|t| cat.data_type_index(t));
+        let type_page = ti.map(|ti| cat.data_type_page(ti));
+        let peers = Peers::of(
+            ci,
+            cat.data_port_peers(ci, pi),
+            |r| cat.port_component(r).unwrap_or(Ix::NONE),
+            |r| {
+                let (pc, port) = cat.resolve_port(r)?;
+                let comp = &cat[pc];
+                Some((
+                    pc,
+                    comp.profile.data_ports[port]
+                        .name
+                        .as_deref()
+                        .unwrap_or_default()
+                        .to_string(),
+                    comp.anchors.data_ports[port].as_str(),
+                ))
+            },
+            cat,
+            type_page,
+            lang.t("more_on_type_page"),
+        );
+        DataPortView {
+            side: dp.side(),
+            unit: facts::data_port_unit(dp).unwrap_or(""),
+            events: dp
+                .events
+                .iter()
+                .map(|e| (e.name.as_deref().unwrap_or_default(), facts::event(e, lang)))
+                .collect(),
+            port: PortView {
+                anchor,
+                since,
+                name: dp.name.as_deref().unwrap_or_default(),
+                direction: port_dir(lang, dp),
+                type_: non_empty(&dp.type_).map(|t| Linked::new(t, type_page, None)),
+                type_short: short(&dp.type_),
+                description: dp.doc.as_ref().and_then(|d| non_empty(&d.description)),
+                details: facts::data_port_attributes_without_unit(dp, lang),
+                peers,
+            },
+        }
+    })
+    .collect()
 }
 
 /// The service ports of component `ci`, each with its interfaces, their types linked and
@@ -217,69 +235,68 @@ fn data_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<DataPortVi
 fn service_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<ServicePortView<'_>> {
     let c = &cat[ci];
     let keys = since_keys(c);
-    c.profile
-        .service_ports
-        .iter()
-        .enumerate()
-        .map(|(si, sp)| ServicePortView {
-            anchor: &c.anchors.service_ports[si],
+    let ports = (&c.anchors.service_ports[..], &keys.service_ports[..]);
+    anchored(c, &c.profile.service_ports, ports)
+        .map(|(si, sp, anchor, since)| ServicePortView {
+            anchor,
             name: sp.name.as_deref().unwrap_or_default(),
-            since: since(c, keys.service_ports.get(si)),
+            since,
             side: sp.side(),
             details: facts::service_port(sp, lang),
-            interfaces: sp
-                .interfaces
-                .iter()
-                .enumerate()
-                .map(|(ii, i)| {
-                    let it = non_empty(&i.type_)
-                        .and_then(|t| cat.interface_index_of(t))
-                        .map(|x| cat.interface_page(x));
-                    InterfaceView {
-                        provided: i.direction_kind() == Some(Direction::Provided),
-                        port: PortView {
-                            anchor: &c.anchors.interfaces[si][ii],
-                            name: i.name.as_deref().unwrap_or_default(),
-                            since: since(c, keys.interfaces.get(si).and_then(|x| x.get(ii))),
-                            direction: match i.direction_kind() {
-                                Some(Direction::Provided) => {
-                                    Dir::new(lang.t("provided"), "provided")
-                                }
-                                Some(Direction::Required) => {
-                                    Dir::new(lang.t("required"), "required")
-                                }
-                                None => Dir::new(non_empty(&i.direction).unwrap_or(""), "other"),
-                            },
-                            type_: non_empty(&i.type_).map(|t| Linked::new(t, it, None)),
-                            type_short: short(&i.type_),
-                            description: i.doc.as_ref().and_then(|d| non_empty(&d.description)),
-                            details: facts::service_interface(i, lang),
-                            peers: Peers::of(
-                                ci,
-                                cat.interface_peers(ci, si, ii),
-                                |r| cat.interface_component(r).unwrap_or(Ix::NONE),
-                                |r| {
-                                    let (pc, port, x) = cat.resolve_interface(r)?;
-                                    let comp = &cat[pc];
-                                    let sp = &comp.profile.service_ports[port];
-                                    Some((
-                                        pc,
-                                        format!(
-                                            "{}.{}",
-                                            sp.name.as_deref().unwrap_or(""),
-                                            sp.interfaces[x].name.as_deref().unwrap_or("")
-                                        ),
-                                        comp.anchors.interfaces[port][x].as_str(),
-                                    ))
-                                },
-                                cat,
-                                it,
-                                lang.t("more_on_interface_page"),
+            interfaces: anchored(
+                c,
+                &sp.interfaces,
+                (
+                    &c.anchors.interfaces[si],
+                    keys.interfaces.get(si).map_or(&[], Vec::as_slice),
+                ),
+            )
+            .map(|(ii, i, anchor, since)| {
+                let it = non_empty(&i.type_)
+                    .and_then(|t| cat.interface_index_of(t))
+                    .map(|x| cat.interface_page(x));
+                let peers = Peers::of(
+                    ci,
+                    cat.interface_peers(ci, si, ii),
+                    |r| cat.interface_component(r).unwrap_or(Ix::NONE),
+                    |r| {
+                        let (pc, port, x) = cat.resolve_interface(r)?;
+                        let comp = &cat[pc];
+                        let sp = &comp.profile.service_ports[port];
+                        Some((
+                            pc,
+                            format!(
+                                "{}.{}",
+                                sp.name.as_deref().unwrap_or(""),
+                                sp.interfaces[x].name.as_deref().unwrap_or("")
                             ),
+                            comp.anchors.interfaces[port][x].as_str(),
+                        ))
+                    },
+                    cat,
+                    it,
+                    lang.t("more_on_interface_page"),
+                );
+                InterfaceView {
+                    provided: i.direction_kind() == Some(Direction::Provided),
+                    port: PortView {
+                        anchor,
+                        name: i.name.as_deref().unwrap_or_default(),
+                        since,
+                        direction: match i.direction_kind() {
+                            Some(Direction::Provided) => Dir::new(lang.t("provided"), "provided"),
+                            Some(Direction::Required) => Dir::new(lang.t("required"), "required"),
+                            None => Dir::new(non_empty(&i.direction).unwrap_or(""), "other"),
                         },
-                    }
-                })
-                .collect(),
+                        type_: non_empty(&i.type_).map(|t| Linked::new(t, it, None)),
+                        type_short: short(&i.type_),
+                        description: i.doc.as_ref().and_then(|d| non_empty(&d.description)),
+                        details: facts::service_interface(i, lang),
+                        peers,
+                    },
+                }
+            })
+            .collect(),
         })
         .collect()
 }
@@ -287,14 +304,12 @@ fn service_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<Service
 /// The configuration parameters of component `c`.
 fn configuration_views(c: &crate::catalog::Component, lang: Lang) -> Vec<ConfigurationView<'_>> {
     let keys = since_keys(c);
-    c.profile
-        .configurations()
-        .iter()
-        .enumerate()
-        .map(|(k, conf)| ConfigurationView {
-            anchor: &c.anchors.configurations[k],
+    let configurations = (&c.anchors.configurations[..], &keys.configurations[..]);
+    anchored(c, c.profile.configurations(), configurations)
+        .map(|(_, conf, anchor, since)| ConfigurationView {
+            anchor,
             name: conf.name.as_deref().unwrap_or_default(),
-            since: since(c, keys.configurations.get(k)),
+            since,
             type_: non_empty(&conf.type_).unwrap_or(""),
             default: conf.default_value.as_deref().unwrap_or_default(),
             unit: facts::configuration_unit(conf).unwrap_or(""),
