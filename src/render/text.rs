@@ -343,10 +343,16 @@ pub fn crumbs<'a>(
         .collect()
 }
 
-/// The start of an index page: its title and the way back to the front page.
-fn index_head<M: Markup>(cat: &Catalog, page: &Page, title: &str, site_title: &str) -> String {
+/// The start of a page: its title and the way back ([`crumbs`]: the front page, then `index`
+/// if given).
+fn head<M: Markup>(
+    cat: &Catalog,
+    (page, title): (&Page, &str),
+    site_title: &str,
+    index: Option<(&Page, &str)>,
+) -> String {
     let mut out = String::new();
-    M::page_head(&mut out, cat, page, title, &crumbs(cat, site_title, None));
+    M::page_head(&mut out, cat, page, title, &crumbs(cat, site_title, index));
     out
 }
 
@@ -386,9 +392,8 @@ pub fn facet_page<M: Markup>(
     site_title: &str,
     lang: Lang,
 ) -> String {
-    let mut out = String::new();
-    let crumbs = crumbs(cat, site_title, Some((v.index, lang.t(v.kind.index_key()))));
-    M::page_head(&mut out, cat, v.page, &v.name, &crumbs);
+    let index = (v.index, lang.t(v.kind.index_key()));
+    let mut out = head::<M>(cat, (v.page, &v.name), site_title, Some(index));
     if !v.variants.is_empty() {
         let names: Vec<String> = v.variants.iter().map(|n| M::esc(n)).collect();
         M::paragraph(
@@ -408,7 +413,7 @@ pub fn facet_index_page<M: Markup>(
     site_title: &str,
     lang: Lang,
 ) -> String {
-    let mut out = index_head::<M>(cat, v.page, lang.t(v.kind.index_key()), site_title);
+    let mut out = head::<M>(cat, (v.page, lang.t(v.kind.index_key())), site_title, None);
     let items: Vec<String> = v
         .facets
         .iter()
@@ -437,7 +442,7 @@ pub fn systems_index_page<M: Markup>(
     site_title: &str,
     lang: Lang,
 ) -> String {
-    let mut out = index_head::<M>(cat, v.page, lang.t("systems"), site_title);
+    let mut out = head::<M>(cat, (v.page, lang.t("systems")), site_title, None);
     M::paragraph(&mut out, &M::esc(lang.t("systems_intro")));
     let rows: Vec<Vec<String>> = v
         .systems
@@ -798,17 +803,8 @@ pub fn type_page<M: Markup>(
     lang: Lang,
 ) -> String {
     let page = v.page;
-    let mut out = String::new();
-    let index_key = v.kind.index_key();
-    let crumbs = [
-        Linked::new(
-            site_title,
-            Some(cat.site_page(crate::catalog::PageKind::Index)),
-            None,
-        ),
-        Linked::new(lang.t(index_key), Some(v.index), None),
-    ];
-    M::page_head(&mut out, cat, page, v.name, &crumbs);
+    let index = (v.index, lang.t(v.kind.index_key()));
+    let mut out = head::<M>(cat, (page, v.name), site_title, Some(index));
     if v.unprovided {
         M::note(&mut out, lang.t("not_provided"));
     }
@@ -861,7 +857,7 @@ pub fn type_index_page<M: Markup>(
     lang: Lang,
 ) -> String {
     let page = v.page;
-    let mut out = index_head::<M>(cat, page, lang.t(v.kind.index_key()), site_title);
+    let mut out = head::<M>(cat, (page, lang.t(v.kind.index_key())), site_title, None);
     let rows: Vec<Vec<String>> = v
         .rows
         .iter()
