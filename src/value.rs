@@ -36,6 +36,19 @@ pub enum ValueType {
 impl ValueType {
     /// Reads a type spelling (any case, extra spaces and a `std::` prefix allowed).
     pub fn parse(spelling: &str) -> ValueType {
+        // Most profiles spell the type as one plain lower-case word (`double`, `std::string`),
+        // which the normalisation below would leave as it is and which names no vector.
+        let plain = spelling
+            .bytes()
+            .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_' || b == b':');
+        if plain {
+            return scalar(spelling).map_or(ValueType::Unknown, ValueType::Scalar);
+        }
+        Self::parse_spelled(spelling)
+    }
+
+    /// [`ValueType::parse`] for any spelling: spaces and case normalised first.
+    fn parse_spelled(spelling: &str) -> ValueType {
         let norm = spelling
             .split_whitespace()
             .collect::<Vec<_>>()
@@ -201,6 +214,23 @@ pub fn check_value(ty: ValueType, value: &str) -> Result<(), ParseError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// The plain-word shortcut reads every spelling as the normalising reader does.
+        #[test]
+        fn plain_words_read_as_normalised(
+            spelling in crate::test_text::concat_of(&[
+                "std::", "corba::", "vector", "<", ">", "[]", " ", "\t", "unsigned", "long",
+                "short", "int", "double", "Double", "string", "bool", "uint8_t", "_", "x",
+                "\u{3000}", "é",
+            ], 6),
+        ) {
+            proptest::prop_assert_eq!(
+                ValueType::parse(&spelling),
+                ValueType::parse_spelled(&spelling)
+            );
+        }
+    }
 
     #[test]
     fn type_spellings() {

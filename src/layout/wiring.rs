@@ -823,13 +823,20 @@ fn links<'g>(g: &'g Graph<'_>) -> impl Iterator<Item = (&'g Stop, &'g Stop)> + '
 }
 
 fn index_of(g: &Graph<'_>) -> Vec<f32> {
-    let mut idx = vec![0.0f32; g.items.len()];
+    let mut idx = Vec::new();
+    index_into(g, &mut idx);
+    idx
+}
+
+/// Each item's index in its layer, into `idx`.
+fn index_into(g: &Graph<'_>, idx: &mut Vec<f32>) {
+    idx.clear();
+    idx.resize(g.items.len(), 0.0);
     for l in &g.order {
         for (k, &it) in l.iter().enumerate() {
             idx[it] = k as f32;
         }
     }
-    idx
 }
 
 /// Crossings the ordering implies, channel by channel: two links between the same two layers
@@ -837,15 +844,46 @@ fn index_of(g: &Graph<'_>) -> Vec<f32> {
 /// two items of one layer, drawn on that layer's side of the channel), and two U-turns on the
 /// same side whose spans interleave.
 fn crossings(g: &Graph<'_>) -> usize {
-    let idx = index_of(g);
+    Counter::default().count(g)
+}
+
+/// The lists [`crossings`] fills, kept from count to count: sifting counts the crossings of
+/// every place of every item.
+#[derive(Default)]
+struct Counter {
+    idx: Vec<f32>,
+    /// Per channel: the links across it, by their ends' positions (left, right).
+    across: Vec<Vec<(f32, f32)>>,
+    /// Per channel: the U-turns in it (left bank?, lo, hi).
+    uturn: Vec<Vec<(bool, f32, f32)>>,
+}
+
+impl Counter {
+    /// [`crossings`] of the graph's present order.
+    fn count(&mut self, g: &Graph<'_>) -> usize {
+        let chans = g.layers + 1;
+        index_into(g, &mut self.idx);
+        self.across.resize_with(chans, Vec::new);
+        self.across.iter_mut().for_each(Vec::clear);
+        self.uturn.resize_with(chans, Vec::new);
+        self.uturn.iter_mut().for_each(Vec::clear);
+        let (idx, across, uturn) = (&self.idx, &mut self.across, &mut self.uturn);
+        count_crossings(g, idx, across, uturn)
+    }
+}
+
+/// The count itself, on emptied lists of one per channel.
+fn count_crossings(
+    g: &Graph<'_>,
+    idx: &[f32],
+    across: &mut [Vec<(f32, f32)>],
+    uturn: &mut [Vec<(bool, f32, f32)>],
+) -> usize {
     let chans = g.layers + 1;
-    let mut across: Vec<Vec<(f32, f32)>> = vec![Vec::new(); chans];
-    // (left bank?, lo, hi)
-    let mut uturn: Vec<Vec<(bool, f32, f32)>> = vec![Vec::new(); chans];
     for (a, b) in links(g) {
         let c = channel_of(a, b, g);
         let (la, lb) = (g.items[stop_item(g, a)].1, g.items[stop_item(g, b)].1);
-        let (pa, pb) = (stop_pos(g, &idx, a), stop_pos(g, &idx, b));
+        let (pa, pb) = (stop_pos(g, idx, a), stop_pos(g, idx, b));
         if la == lb {
             uturn[c].push((la + 1 == c, pa.min(pb), pa.max(pb)));
         } else {
@@ -892,7 +930,8 @@ fn sift(g: &mut Graph<'_>, only_dummies: bool) {
     if links_n > 400 {
         return;
     }
-    let mut best = crossings(g);
+    let mut counter = Counter::default();
+    let mut best = counter.count(g);
     for _ in 0..2 {
         for it in 0..g.items.len() {
             if only_dummies && g.items[it].0 != Item::Dummy {
@@ -909,7 +948,7 @@ fn sift(g: &mut Graph<'_>, only_dummies: bool) {
             let mut best_at = cur;
             for at in 0..=g.order[l].len() {
                 g.order[l].insert(at, it);
-                let n = crossings(g);
+                let n = counter.count(g);
                 g.order[l].remove(at);
                 if n < best {
                     best = n;
@@ -919,7 +958,7 @@ fn sift(g: &mut Graph<'_>, only_dummies: bool) {
             g.order[l].insert(best_at, it);
         }
         sort_ports(g);
-        best = crossings(g);
+        best = counter.count(g);
     }
 }
 
@@ -988,7 +1027,8 @@ fn sort_ports(g: &mut Graph<'_>) {
 fn order_by_barycentres(g: &mut Graph<'_>) {
     let mut best = g.order.clone();
     let mut best_ports = g.port_order.clone();
-    let mut best_n = crossings(g);
+    let mut counter = Counter::default();
+    let mut best_n = counter.count(g);
     // Once an order without crossings is found no later round can be kept (each must be
     // strictly better), so the rounds stop there: the same order is kept either way.
     for round in 0..12 {
@@ -1037,7 +1077,7 @@ fn order_by_barycentres(g: &mut Graph<'_>) {
         if round >= 4 {
             sort_ports(g);
         }
-        let n = crossings(g);
+        let n = counter.count(g);
         if n < best_n {
             best_n = n;
             best = g.order.clone();
@@ -1047,7 +1087,7 @@ fn order_by_barycentres(g: &mut Graph<'_>) {
     g.order = best;
     g.port_order = best_ports;
     sort_ports(g);
-    if crossings(g) > best_n {
+    if counter.count(g) > best_n {
         g.port_order = best_ports_fallback(g, best_n);
     }
     sift(g, false);
