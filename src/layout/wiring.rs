@@ -410,9 +410,9 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         layer,
         layers,
         side,
-        items: Vec::new(),
-        node_item: Vec::new(),
-        stops: Vec::new(),
+        items: Vec::with_capacity(nodes.len() + edges.len()),
+        node_item: Vec::with_capacity(nodes.len()),
+        stops: Vec::with_capacity(edges.len()),
         order: vec![Vec::new(); layers],
         port_order: Vec::new(),
     };
@@ -428,16 +428,15 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         }
         let ch = |(v, k): (usize, usize)| g.layer[v] + usize::from(g.side[v][k] == Side::Right);
         let (cs, ct) = (ch(e.from), ch(e.to));
-        let mut stops = vec![Stop::Port {
+        // A dummy in each layer between the two ends, from the source's side.
+        let dummies = cs.abs_diff(ct);
+        let mut stops = Vec::with_capacity(dummies + 2);
+        stops.push(Stop::Port {
             node: e.from.0,
             port: e.from.1,
-        }];
-        let dummy_layers: Vec<usize> = if cs < ct {
-            (cs..ct).collect()
-        } else {
-            (ct..cs).rev().collect()
-        };
-        for l in dummy_layers {
+        });
+        for k in 0..dummies {
+            let l = if cs < ct { cs + k } else { cs - 1 - k };
             stops.push(Stop::Dummy(g.items.len()));
             g.items.push((Item::Dummy, l));
         }
@@ -450,7 +449,8 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
     // Port order: declared order on each side, to begin with.
     g.port_order = (0..nodes.len())
         .map(|v| {
-            let mut s: [Vec<usize>; 2] = [Vec::new(), Vec::new()];
+            let n = g.side[v].len();
+            let mut s: [Vec<usize>; 2] = [Vec::with_capacity(n), Vec::with_capacity(n)];
             for (k, &sd) in g.side[v].iter().enumerate() {
                 s[side_ix(sd)].push(k);
             }
@@ -459,6 +459,13 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         .collect();
 
     // Initial order: by position (locations) or by input order.
+    let mut in_layer = vec![0usize; layers];
+    for &(_, l) in &g.items {
+        in_layer[l] += 1;
+    }
+    for (order, &n) in g.order.iter_mut().zip(&in_layer) {
+        order.reserve_exact(n);
+    }
     for (it, &(_, l)) in g.items.iter().enumerate() {
         g.order[l].push(it);
     }
@@ -540,6 +547,7 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
     // overlaps.
     let mut track: Vec<Vec<(usize, usize, usize)>> = vec![Vec::new(); layers + 1];
     let mut tracks_in = vec![0usize; layers + 1];
+    let mut placed: Vec<(f32, f32, usize)> = Vec::new();
     for c in 0..=layers {
         let list = &mut segs[c];
         list.sort_by(|a, b| {
@@ -547,7 +555,8 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
                 .partial_cmp(&(b.class, b.key, b.edge, b.j))
                 .unwrap_or(std::cmp::Ordering::Equal)
         });
-        let mut placed: Vec<(f32, f32, usize)> = Vec::new();
+        placed.clear();
+        track[c].reserve_exact(list.len());
         for s in list.iter() {
             let t = placed
                 .iter()
@@ -628,7 +637,7 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
                 Stop::Dummy(it) => item_y(it),
             }
         };
-        let mut pts: Vec<(f32, f32)> = Vec::new();
+        let mut pts: Vec<(f32, f32)> = Vec::with_capacity(2 * st.len());
         if let Stop::Port { node, port } = st[0] {
             let p = &boxes[node].ports[port];
             pts.push((p.x, p.y));
@@ -968,12 +977,15 @@ fn sift(g: &mut Graph<'_>, only_dummies: bool) {
 fn sort_ports(g: &mut Graph<'_>) {
     let idx = index_of(g);
     let all: Vec<(Stop, Stop)> = links(g).map(|(a, b)| (*a, *b)).collect();
+    let mut key: Vec<Vec<(f32, usize)>> = g
+        .nodes
+        .iter()
+        .map(|n| vec![(0.0, 0); n.ports.len()])
+        .collect();
     for l in 0..g.layers {
-        let mut key: Vec<Vec<(f32, usize)>> = g
-            .nodes
-            .iter()
-            .map(|n| vec![(0.0, 0); n.ports.len()])
-            .collect();
+        for k in key.iter_mut().flatten() {
+            *k = (0.0, 0);
+        }
         for (a, b) in &all {
             for (s, o) in [(a, b), (b, a)] {
                 let Stop::Port { node, port } = *s else {
@@ -1191,7 +1203,13 @@ fn place_vertically(g: &Graph<'_>, boxes: &[NodeBox], locs: Option<&[(i64, i64)]
         other_offset: f32,
         weight: f32,
     }
-    let mut pulls: Vec<Vec<Pull>> = (0..g.layers).map(|_| Vec::new()).collect();
+    let mut per_layer = vec![0usize; g.layers];
+    for (a, b) in links(g) {
+        for s in [a, b] {
+            per_layer[g.items[stop_item(g, s)].1] += 1;
+        }
+    }
+    let mut pulls: Vec<Vec<Pull>> = per_layer.iter().map(|&n| Vec::with_capacity(n)).collect();
     for (a, b) in links(g) {
         for (s, o) in [(a, b), (b, a)] {
             let (si, oi) = (stop_item(g, s), stop_item(g, o));

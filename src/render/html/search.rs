@@ -81,6 +81,24 @@ fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
     // camelCase / digit boundaries: UsbCamera → usb, camera (only when there are two parts
     // or more).
     let mut part_start = 0;
+    if run.is_ascii() {
+        // The same boundaries, by bytes (for ASCII the character classes are the byte ones).
+        let b = run.as_bytes();
+        for i in 1..b.len() {
+            let (p, c) = (b[i - 1], b[i]);
+            let boundary = (p.is_ascii_lowercase() && c.is_ascii_uppercase())
+                || (p.is_ascii_alphabetic() && c.is_ascii_digit())
+                || (p.is_ascii_digit() && c.is_ascii_alphabetic());
+            if boundary {
+                out.push(lower(&run[part_start..i]));
+                part_start = i;
+            }
+        }
+        if part_start > 0 {
+            out.push(lower(&run[part_start..]));
+        }
+        return;
+    }
     let mut prev: Option<char> = None;
     for (i, c) in run.char_indices() {
         if let Some(p) = prev {
