@@ -9,49 +9,15 @@
 //! with `data` or `service`. The drawing is a `role="group"` (not `role="img"`: it holds links),
 //! each instance and port a link named by `aria-label` and a `<title>`.
 
-use super::svg::esc_into;
+use super::svg::{attr_num, esc_into, num};
 use crate::layout::wiring::{layout_with, Edge, Effort, Node, NodeBox, Port, PortKind, Side};
 use crate::render::wiring::{WireConnector, WireInstance};
-use std::fmt::Write;
-
-/// Appends a coordinate of the drawing exactly as `f32`'s `Display` writes it. The layout's
-/// coordinates are whole or half pixels, which are written here as an integer and `.5`
-/// without `Display`'s general shortest-digits search (half of the drawing's time at 10,000
-/// profiles went there) and without the formatting machinery; any other value is handed to
-/// `Display`.
-fn num(s: &mut String, v: f32) {
-    let twice = v * 2.0;
-    // Below a million an f32 is exact to 1/16, so a whole or half value's shortest digits
-    // are its integer part and `.5`; -0 is left to `Display` (it writes `-0`).
-    if v.abs() < 1e6 && twice == twice.trunc() && !(v == 0.0 && v.is_sign_negative()) {
-        let t = twice as i64;
-        if t < 0 {
-            s.push('-');
-        }
-        let m = t.unsigned_abs();
-        s.push_str(itoa::Buffer::new().format(m / 2));
-        if m % 2 == 1 {
-            s.push_str(".5");
-        }
-    } else {
-        let _ = write!(s, "{v}");
-    }
-}
 
 /// Appends `x,y`.
 fn point(s: &mut String, x: f32, y: f32) {
     num(s, x);
     s.push(',');
     num(s, y);
-}
-
-/// Appends ` name="value"` for a coordinate.
-fn attr_num(s: &mut String, name: &str, v: f32) {
-    s.push(' ');
-    s.push_str(name);
-    s.push_str("=\"");
-    num(s, v);
-    s.push('"');
 }
 
 impl WireInstance {
@@ -343,23 +309,6 @@ pub fn standalone_system_diagram(
 mod tests {
     use super::*;
     use crate::render::wiring::WirePort;
-
-    proptest::proptest! {
-        /// A coordinate is written exactly as `Display` writes it: whole and half values by
-        /// the short path (both signs, around the million where it stops), anything else by
-        /// `Display` itself.
-        #[test]
-        fn num_writes_what_display_writes(
-            halves in -2_100_000i32..2_100_000,
-            any in proptest::num::f32::ANY,
-        ) {
-            for v in [halves as f32 / 2.0, any, -0.0, 0.0, 0.25, 999_999.5, 1e6] {
-                let mut s = String::new();
-                num(&mut s, v);
-                proptest::prop_assert_eq!(s, format!("{v}"));
-            }
-        }
-    }
 
     fn inst(name: &str, ports: &[(&str, &'static str)], loc: Option<(i64, i64)>) -> WireInstance {
         WireInstance {
