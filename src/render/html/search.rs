@@ -78,29 +78,25 @@ fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
         return;
     }
     out.push(lower(run));
-    // camelCase / digit boundaries: UsbCamera → usb, camera (only when there are two parts
-    // or more).
-    let mut part_start = 0;
+    // An ASCII word by its bytes (for ASCII the character classes are the byte ones: no
+    // decoding), any other by its characters.
     if run.is_ascii() {
-        // The same boundaries, by bytes (for ASCII the character classes are the byte ones).
-        let b = run.as_bytes();
-        for i in 1..b.len() {
-            let (p, c) = (b[i - 1], b[i]);
-            let boundary = (p.is_ascii_lowercase() && c.is_ascii_uppercase())
-                || (p.is_ascii_alphabetic() && c.is_ascii_digit())
-                || (p.is_ascii_digit() && c.is_ascii_alphabetic());
-            if boundary {
-                out.push(lower(&run[part_start..i]));
-                part_start = i;
-            }
-        }
-        if part_start > 0 {
-            out.push(lower(&run[part_start..]));
-        }
-        return;
+        push_parts(run, run.bytes().map(char::from).enumerate(), out);
+    } else {
+        push_parts(run, run.char_indices(), out);
     }
+}
+
+/// The camelCase / digit parts of a word (`UsbCamera` → usb, camera), from its characters
+/// with their byte offsets; only when there are two parts or more.
+fn push_parts<'a>(
+    run: &'a str,
+    chars: impl Iterator<Item = (usize, char)>,
+    out: &mut Vec<Cow<'a, str>>,
+) {
+    let mut part_start = 0;
     let mut prev: Option<char> = None;
-    for (i, c) in run.char_indices() {
+    for (i, c) in chars {
         if let Some(p) = prev {
             let boundary = (p.is_lowercase() && c.is_uppercase())
                 || (p.is_alphabetic() && c.is_ascii_digit())
