@@ -81,27 +81,36 @@ fn flush<'a>(run: &'a str, cjk: bool, out: &mut Vec<Cow<'a, str>>) {
     // An ASCII word by its bytes (for ASCII the character classes are the byte ones: no
     // decoding), any other by its characters.
     if run.is_ascii() {
-        push_parts(run, run.bytes().map(char::from).enumerate(), out);
+        let boundary = |p: char, c: char| {
+            (p.is_ascii_lowercase() && c.is_ascii_uppercase())
+                || (p.is_ascii_alphabetic() && c.is_ascii_digit())
+                || (p.is_ascii_digit() && c.is_ascii_alphabetic())
+        };
+        push_parts(run, run.bytes().map(char::from).enumerate(), boundary, out);
     } else {
-        push_parts(run, run.char_indices(), out);
+        let boundary = |p: char, c: char| {
+            (p.is_lowercase() && c.is_uppercase())
+                || (p.is_alphabetic() && c.is_ascii_digit())
+                || (p.is_ascii_digit() && c.is_alphabetic())
+        };
+        push_parts(run, run.char_indices(), boundary, out);
     }
 }
 
 /// The camelCase / digit parts of a word (`UsbCamera` → usb, camera), from its characters
-/// with their byte offsets; only when there are two parts or more.
+/// with their byte offsets and the test of a boundary between two characters; only when there
+/// are two parts or more.
 fn push_parts<'a>(
     run: &'a str,
     chars: impl Iterator<Item = (usize, char)>,
+    boundary: impl Fn(char, char) -> bool,
     out: &mut Vec<Cow<'a, str>>,
 ) {
     let mut part_start = 0;
     let mut prev: Option<char> = None;
     for (i, c) in chars {
         if let Some(p) = prev {
-            let boundary = (p.is_lowercase() && c.is_uppercase())
-                || (p.is_alphabetic() && c.is_ascii_digit())
-                || (p.is_ascii_digit() && c.is_alphabetic());
-            if boundary {
+            if boundary(p, c) {
                 out.push(lower(&run[part_start..i]));
                 part_start = i;
             }
