@@ -871,64 +871,53 @@ impl Counter {
     /// [`crossings`] of the graph's present order.
     fn count(&mut self, g: &Graph<'_>) -> usize {
         let chans = g.layers + 1;
-        index_into(g, &mut self.idx);
-        self.across.resize_with(chans, Vec::new);
-        self.across.iter_mut().for_each(Vec::clear);
-        self.uturn.resize_with(chans, Vec::new);
-        self.uturn.iter_mut().for_each(Vec::clear);
-        let (idx, across, uturn) = (&self.idx, &mut self.across, &mut self.uturn);
-        count_crossings(g, idx, across, uturn)
-    }
-}
-
-/// The count itself, on emptied lists of one per channel.
-fn count_crossings(
-    g: &Graph<'_>,
-    idx: &[f32],
-    across: &mut [Vec<(f32, f32)>],
-    uturn: &mut [Vec<(bool, f32, f32)>],
-) -> usize {
-    let chans = g.layers + 1;
-    for (a, b) in links(g) {
-        let c = channel_of(a, b, g);
-        let (la, lb) = (g.items[stop_item(g, a)].1, g.items[stop_item(g, b)].1);
-        let (pa, pb) = (stop_pos(g, idx, a), stop_pos(g, idx, b));
-        if la == lb {
-            uturn[c].push((la + 1 == c, pa.min(pb), pa.max(pb)));
-        } else {
-            across[c].push(if la < lb { (pa, pb) } else { (pb, pa) });
-        }
-    }
-    let mut n = 0;
-    for c in 0..chans {
-        let v = &across[c];
-        let u = &uturn[c];
-        for i in 0..v.len() {
-            for j in i + 1..v.len() {
-                if (v[i].0 - v[j].0) * (v[i].1 - v[j].1) < 0.0 {
-                    n += 1;
-                }
-            }
-            for &(left, lo, hi) in u {
-                let p = if left { v[i].0 } else { v[i].1 };
-                if p > lo + 1e-3 && p < hi - 1e-3 {
-                    n += 1;
-                }
+        let Counter { idx, across, uturn } = self;
+        index_into(g, idx);
+        across.resize_with(chans, Vec::new);
+        across.iter_mut().for_each(Vec::clear);
+        uturn.resize_with(chans, Vec::new);
+        uturn.iter_mut().for_each(Vec::clear);
+        for (a, b) in links(g) {
+            let c = channel_of(a, b, g);
+            let (la, lb) = (g.items[stop_item(g, a)].1, g.items[stop_item(g, b)].1);
+            let (pa, pb) = (stop_pos(g, idx, a), stop_pos(g, idx, b));
+            if la == lb {
+                uturn[c].push((la + 1 == c, pa.min(pb), pa.max(pb)));
+            } else {
+                across[c].push(if la < lb { (pa, pb) } else { (pb, pa) });
             }
         }
-        for i in 0..u.len() {
-            for j in i + 1..u.len() {
-                let (a, b) = (u[i], u[j]);
-                if a.0 == b.0
-                    && ((a.1 < b.1 && b.1 < a.2 && a.2 < b.2)
-                        || (b.1 < a.1 && a.1 < b.2 && b.2 < a.2))
-                {
-                    n += 1;
+        let mut n = 0;
+        for c in 0..chans {
+            let v = &across[c];
+            let u = &uturn[c];
+            for i in 0..v.len() {
+                for j in i + 1..v.len() {
+                    if (v[i].0 - v[j].0) * (v[i].1 - v[j].1) < 0.0 {
+                        n += 1;
+                    }
+                }
+                for &(left, lo, hi) in u {
+                    let p = if left { v[i].0 } else { v[i].1 };
+                    if p > lo + 1e-3 && p < hi - 1e-3 {
+                        n += 1;
+                    }
+                }
+            }
+            for i in 0..u.len() {
+                for j in i + 1..u.len() {
+                    let (a, b) = (u[i], u[j]);
+                    if a.0 == b.0
+                        && ((a.1 < b.1 && b.1 < a.2 && a.2 < b.2)
+                            || (b.1 < a.1 && a.1 < b.2 && b.2 < a.2))
+                    {
+                        n += 1;
+                    }
                 }
             }
         }
+        n
     }
-    n
 }
 
 /// Sifting: each movable item tried at every place of its layer, kept where the implied
