@@ -44,6 +44,8 @@ fn prose_html(text: &str) -> Option<String> {
     if memchr::memchr_iter(b'~', text.as_bytes()).nth(1).is_some() {
         return None;
     }
+    // A table needs a header line and a delimiter line: in one line, `|` is text.
+    let one_line = memchr::memchr(b'\n', text.as_bytes()).is_none();
     let mut out = String::with_capacity(text.len() + 16);
     out.push_str("<p>");
     for (i, line) in text.split('\n').enumerate() {
@@ -54,39 +56,121 @@ fn prose_html(text: &str) -> Option<String> {
         if line.ends_with(' ') || line.starts_with(' ') {
             return None;
         }
-        let b = line.as_bytes();
-        // `<` and `&` followed by a space or a digit start no tag, autolink or entity.
-        let literal = |i: usize| {
-            b.get(i + 1)
-                .is_some_and(|c| *c == b' ' || c.is_ascii_digit())
-        };
-        // `_` between two ASCII letters or digits (`image_width`) can neither open nor close
-        // emphasis; anywhere else it might.
-        let inert = |i: usize| {
-            i > 0
-                && b[i - 1].is_ascii_alphanumeric()
-                && b.get(i + 1).is_some_and(u8::is_ascii_alphanumeric)
-        };
-        // One pass over the bytes: control characters (C0, DEL, and C1 as C2 80–9F), the
-        // characters Markdown reads specially, and `<`, `&` and `_` where they might be.
-        let special = (0..b.len()).any(|i| match b[i] {
-            0..=0x1f | 0x7f | b'\\' | b'`' | b'*' | b'[' | b']' | b'!' | b'|' => true,
-            b'<' | b'&' => !literal(i),
-            b'_' => !inert(i),
-            0xc2 => b.get(i + 1).is_some_and(|n| (0x80..=0x9f).contains(n)),
-            _ => false,
-        });
-        if special {
-            return None;
-        }
         if i > 0 {
             out.push_str("<br>\n");
         }
-        // The parser's own text escaper (`<`, `>`, `&`); writing to a String cannot fail.
-        let _ = pulldown_cmark_escape::escape_html_body_text(&mut out, line);
+        prose_line(line, one_line, &mut out)?;
     }
     out.push_str("</p>\n");
     Some(out)
+}
+
+/// True for a byte that is text wherever it stands inside a line: not a control character
+/// (C0, DEL, or the lead byte 0xC2 of C1 and of other Latin-1 characters), no character
+/// Markdown reads specially and none that HTML escapes. Comparisons joined by `&`, so that
+/// [`crate::bytes::run_len`] tests sixteen bytes at once.
+const fn ordinary(c: u8) -> bool {
+    (c >= 0x20)
+        & (c != 0x7f)
+        & (c != 0xc2)
+        & (c != b'\\')
+        & (c != b'`')
+        & (c != b'*')
+        & (c != b'[')
+        & (c != b']')
+        & (c != b'!')
+        & (c != b'|')
+        & (c != b'_')
+        & (c != b'<')
+        & (c != b'>')
+        & (c != b'&')
+}
+
+/// The bytes that are not [`ordinary`], as a table for the byte-by-byte part of the scan (a
+/// test holds the two to the same set).
+static SPECIAL: [bool; 256] = crate::render::byte_set(true, b"\\`*[]!|_<>&\x7f\xc2");
+
+/// Writes the HTML of one line of [`prose_html`]'s text to `out`, or `None` when the line
+/// holds anything the parser might read as markup. Code spans of single backticks closed on
+/// the same line are taken (`arrival_radius` in backticks is common in descriptions).
+fn prose_line(line: &str, one_line: bool, out: &mut String) -> Option<()> {
+    let b = line.as_bytes();
+    // `<` and `&` followed by a space or a digit start no tag, autolink or entity.
+    let literal = |i: usize| {
+        b.get(i + 1)
+            .is_some_and(|c| *c == b' ' || c.is_ascii_digit())
+    };
+    // `_` between two ASCII letters or digits (`image_width`) can neither open nor close
+    // emphasis; anywhere else it might.
+    let inert = |i: usize| {
+        i > 0
+            && b[i - 1].is_ascii_alphanumeric()
+            && b.get(i + 1).is_some_and(u8::is_ascii_alphanumeric)
+    };
+    let mut at = 0;
+    while at < b.len() {
+        let run = crate::bytes::run_len(&b[at..], ordinary, |c| !SPECIAL[usize::from(c)]);
+        // Ordinary bytes are whole characters: the run ends before an ASCII byte, 0xC2 or
+        // the end of the line, all of them character boundaries.
+        out.push_str(line.get(at..at + run)?);
+        at += run;
+        let Some(&c) = b.get(at) else { break };
+        match c {
+            b'<' | b'&' if literal(at) => out.push_str(if c == b'<' { "&lt;" } else { "&amp;" }),
+            b'>' => out.push_str("&gt;"),
+            b'_' if inert(at) => out.push('_'),
+            b'|' if one_line => out.push('|'),
+            // A Latin-1 character that is no C1 control (U+00A0–U+00BF).
+            0xc2 if b.get(at + 1).is_some_and(|n| *n >= 0xa0) => {
+                out.push_str(line.get(at..at + 2)?)
+            }
+            b'`' => {
+                at = code_span(line, at, one_line, out)?;
+                continue;
+            }
+            _ => return None,
+        }
+        at += if c == 0xc2 { 2 } else { 1 };
+    }
+    Some(())
+}
+
+/// Writes the code span that opens with the single backtick at `open` and returns where the
+/// line goes on after it, or `None` when it is no such span: a run of two or more backticks,
+/// no closing backtick on the line, or a control character (or, in text of several lines, a
+/// `|`) inside.
+fn code_span(line: &str, open: usize, one_line: bool, out: &mut String) -> Option<usize> {
+    let b = line.as_bytes();
+    if b.get(open + 1) == Some(&b'`') {
+        return None;
+    }
+    let close = open + 1 + memchr::memchr(b'`', &b[open + 1..])?;
+    if b.get(close + 1) == Some(&b'`') {
+        return None;
+    }
+    let code = line.get(open + 1..close)?;
+    let bad = code
+        .bytes()
+        .zip(code.bytes().skip(1).chain([0]))
+        .any(|(c, n)| {
+            c < 0x20
+                || c == 0x7f
+                || (c == 0xc2 && (0x80..0xa0).contains(&n))
+                || (c == b'|' && !one_line)
+        });
+    if code.is_empty() || bad {
+        return None;
+    }
+    // One space is stripped from each side when both are there and the span is not all spaces.
+    let code = match code.strip_prefix(' ').and_then(|c| c.strip_suffix(' ')) {
+        Some(inner) if code.bytes().any(|c| c != b' ') => inner,
+        _ => code,
+    };
+    out.push_str("<code>");
+    // The parser's own text escaper (`<`, `>`, `&`); writing to a String cannot fail.
+    let _ = pulldown_cmark_escape::escape_html_body_text(&mut *out, code);
+    out.push_str("</code>");
+    Some(close + 1)
 }
 
 /// True when the line starts like an ordered list item: up to nine digits, `.` or `)`, then a
@@ -418,34 +502,106 @@ mod tests {
             ("x > 0", "<p>x &gt; 0</p>\n"),
             ("< 3.14", "<p>&lt; 3.14</p>\n"),
             ("~10 Hz", "<p>~10 Hz</p>\n"),
+            // Code spans of one backtick pair, and `|` in one line.
+            (
+                "see `arrival_radius`",
+                "<p>see <code>arrival_radius</code></p>\n",
+            ),
+            (
+                "`a<b & *c*` ok",
+                "<p><code>a&lt;b &amp; *c*</code> ok</p>\n",
+            ),
+            (
+                "` x `\n`C:\\tmp`",
+                "<p><code>x</code><br>\n<code>C:\\tmp</code></p>\n",
+            ),
+            ("` `", "<p><code> </code></p>\n"),
+            ("`  ` x", "<p><code>  </code> x</p>\n"),
+            ("IDLE | RUNNING", "<p>IDLE | RUNNING</p>\n"),
+            ("\u{a0}x\u{b0}", "<p>\u{a0}x\u{b0}</p>\n"),
         ] {
             assert_eq!(prose_html(t).as_deref(), Some(html), "{t:?}");
             assert_eq!(parsed_html(t), html, "{t:?}");
         }
+        // The last line: code spans the fast path leaves to the parser, and a possible table.
         for t in [
-            "", "a\n\nb", "1. x", "2) x", "1.", "a *b*", " a", "a  \nb", "x\r\ny", "- a", "_a_",
-            "a _b_", "a_", "~~a~~", "> q", "<b>", "&amp;", "a<b", "~~~",
+            "",
+            "a\n\nb",
+            "1. x",
+            "2) x",
+            "1.",
+            "a *b*",
+            " a",
+            "a  \nb",
+            "x\r\ny",
+            "- a",
+            "_a_",
+            "a _b_",
+            "a_",
+            "~~a~~",
+            "> q",
+            "<b>",
+            "&amp;",
+            "a<b",
+            "~~~",
+            "`a",
+            "``a``",
+            "`a\nb`",
+            "```",
+            "``",
+            "a|b\n|-|-|",
+            "`a`_b",
+            "`a|b`\nc",
+            "`\u{85}`",
         ] {
             assert_eq!(prose_html(t), None, "{t:?}");
         }
     }
 
+    #[test]
+    fn the_byte_table_is_the_ordinary_test() {
+        for c in 0..=255u8 {
+            assert_eq!(ordinary(c), !SPECIAL[usize::from(c)], "{c:#x}");
+        }
+    }
+
+    /// Where the fast path takes `t`, it writes what the parser writes.
+    fn fast_path_agrees(t: &str) -> Result<(), proptest::test_runner::TestCaseError> {
+        if let Some(fast) = prose_html(t) {
+            proptest::prop_assert_eq!(fast, parsed_html(t));
+        }
+        Ok(())
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig { cases: 4096, ..Default::default() })]
         #[test]
-        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}_'\"*\\-\n\t\u{3042}\u{FF01}<>&~]{0,40}") {
-            if let Some(fast) = prose_html(&t) {
-                proptest::prop_assert_eq!(fast, parsed_html(&t));
-            }
+        fn prose_matches_the_parser(t in "[a-zA-Z0-9 .,:;()?/=+#@%$^{}_'\"*\\-\n\t\u{3042}\u{FF01}\u{a0}\u{85}<>&~`|\\\\]{0,40}") {
+            fast_path_agrees(&t)?;
         }
 
         /// A small alphabet of the characters that decide between literal text and markup
         /// (`<a>`, `&#1;`, `1. `, `~a~`), so that such sequences actually occur.
         #[test]
-        fn prose_matches_the_parser_on_markup_characters(t in "[ab1.;#<>&~/ )\n:-]{0,16}") {
-            if let Some(fast) = prose_html(&t) {
-                proptest::prop_assert_eq!(fast, parsed_html(&t));
-            }
+        fn prose_matches_the_parser_on_markup_characters(t in "[ab1.;#<>&~/ )\n:`|_\\\\-]{0,16}") {
+            fast_path_agrees(&t)?;
+        }
+
+        /// Text around a code span of one backtick pair, so that spans actually occur.
+        #[test]
+        fn code_spans_match_the_parser(
+            before in "[a_ `<&|*]{0,6}",
+            code in "[a_ `<&|*\\\\\n\t]{0,8}",
+            after in "[a_ `<&|*]{0,6}",
+        ) {
+            let t = format!("{before}`{code}`{after}");
+            fast_path_agrees(&t)?;
+        }
+
+        /// `|` in one line is text; in several lines it may build a table.
+        #[test]
+        fn pipes_match_the_parser(t in "[a|\n -]{0,10}") {
+            fast_path_agrees(&t)?;
         }
     }
 
