@@ -260,7 +260,7 @@ fn participant(r: &mut Reader, m: &Mapping, pos: Pos) -> TargetComponent {
     let mut extra = crate::model::Extras::new();
     for (k, v) in m {
         let (n, kp) = r.key(k);
-        match (n.as_str(), untag_ref(v)) {
+        match (&*n, untag_ref(v)) {
             ("participant", Value::Mapping(pm)) if found.is_none() => {
                 found = Some(target(r, pm, kp, "a participant"))
             }

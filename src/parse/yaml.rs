@@ -22,6 +22,7 @@ use crate::model::fields::{Fields, Kind};
 use crate::model::*;
 use serde::de::{DeserializeSeed, MapAccess, SeqAccess, Visitor};
 use serde_norway::{Mapping, Value};
+use std::borrow::Cow;
 use std::fmt;
 
 /// Upper bound of the number of YAML nodes (after alias expansion) a document may have. The
@@ -450,7 +451,7 @@ struct Locator<'a> {
 impl<'a> Locator<'a> {
     fn new(src: &'a str) -> Self {
         let mut line_starts = vec![0];
-        line_starts.extend(src.match_indices('\n').map(|(i, _)| i + 1));
+        line_starts.extend(memchr::memchr_iter(b'\n', src.as_bytes()).map(|i| i + 1));
         Locator {
             src,
             line_starts,
@@ -646,12 +647,17 @@ fn each_item<'v>(
 
 /// Text of a scalar key (keys are normally strings).
 fn key_text(k: &Value) -> String {
+    key_str(k).into_owned()
+}
+
+/// [`key_text`], borrowed from a string key (nearly every key).
+fn key_str(k: &Value) -> Cow<'_, str> {
     match untag_ref(k) {
-        Value::String(s) => s.clone(),
-        Value::Bool(b) => b.to_string(),
-        Value::Number(n) => n.to_string(),
-        Value::Null => "~".to_string(),
-        _ => "(complex key)".to_string(),
+        Value::String(s) => Cow::Borrowed(s),
+        Value::Bool(b) => Cow::Borrowed(if *b { "true" } else { "false" }),
+        Value::Number(n) => Cow::Owned(n.to_string()),
+        Value::Null => Cow::Borrowed("~"),
+        _ => Cow::Borrowed("(complex key)"),
     }
 }
 
@@ -773,8 +779,8 @@ impl Reader<'_> {
     }
 
     /// Key text and its position; moves the locator.
-    fn key(&mut self, k: &Value) -> (String, Pos) {
-        let name = key_text(k);
+    fn key<'v>(&mut self, k: &'v Value) -> (Cow<'v, str>, Pos) {
+        let name = key_str(k);
         let pos = self.loc.key(&name);
         (name, pos)
     }
@@ -1103,7 +1109,7 @@ impl Reader<'_> {
             if self.scalar(p, &n, v, kp, &mut Aliases::new()) {
                 continue;
             }
-            match n.as_str() {
+            match &*n {
                 "basicInfo" => {
                     p.basic_info.pos = kp;
                     self.basic_info(v, kp, &mut p.basic_info, &mut p.extra);
@@ -1150,20 +1156,20 @@ impl Reader<'_> {
             if self.scalar(b, &n, v, kp, &mut al) {
                 continue;
             }
-            if matches!(n.as_str(), "doc" | "versionUpLog") {
+            if matches!(&*n, "doc" | "versionUpLog") {
                 al.push((
                     if n == "doc" {
                         "rtcDoc::doc"
                     } else {
                         "rtcExt::versionUpLogs"
                     },
-                    n.clone(),
+                    n.to_string(),
                     kp,
                     super::dialect::RTC_TEMPLATE,
                 ));
             }
             let x = &mut b.extra;
-            match n.as_str() {
+            match &*n {
                 "rtcExt::versionUpLogs" | "rtcExt::versionUpLog" | "versionUpLog" => {
                     b.version_up_logs = self.texts(v, &n, kp, x)
                 }
@@ -1199,7 +1205,7 @@ impl Reader<'_> {
                 other => self.scalar_text(other, true),
             };
             let int = text.as_deref().and_then(|t| t.trim().parse::<i64>().ok());
-            match (n.as_str(), idx) {
+            match (&*n, idx) {
                 (_, Some(i)) => {
                     parts.ymdhms[i] = int;
                     bad |= int.is_none();
@@ -1274,7 +1280,7 @@ impl Reader<'_> {
                         continue;
                     }
                     doc_alias(&n, kp, &mut al);
-                    match n.as_str() {
+                    match &*n {
                         "rtcDoc::doc" | "doc" => {
                             a.doc = self.doc(v, &n, kp, &mut a.extra, "an action's rtcDoc::doc")
                         }
@@ -1500,7 +1506,7 @@ impl Reader<'_> {
             // `{constraint: …}` wrapper (e.g. inside `not`).
             for (k, v) in m {
                 let (n, kp) = self.key(k);
-                match (n.as_str(), untag_ref(v)) {
+                match (&*n, untag_ref(v)) {
                     ("constraint", Value::Mapping(inner))
                         if matches!(c.kind, ConstraintKind::Empty) =>
                     {
@@ -1724,10 +1730,7 @@ impl Reader<'_> {
         }
         for (k, v) in self.map(v, name, pos, sink)? {
             let (n, kp) = self.key(k);
-            match keys
-                .iter()
-                .position(|spellings| spellings.contains(&n.as_str()))
-            {
+            match keys.iter().position(|spellings| spellings.contains(&&*n)) {
                 Some(i) => texts[i] = self.text(v, &n, kp, sink),
                 None => self.unknown(&n, v, kp, name, sink),
             }
