@@ -1,7 +1,8 @@
-//! The built-in theme's component pages are written by Rust code (`render/html/native.rs`)
-//! rather than by running `base.html` + `component.html`. These tests hold the two to the same
-//! bytes: a theme directory holding an unchanged copy of `component.html` makes rtcdoc run the
-//! templates, and the whole site must come out identical to the default build — for the
+//! The built-in theme's component, data type and interface pages are written by Rust code
+//! (`render/html/native.rs`) rather than by running `base.html` + `component.html` (`type.html`,
+//! `interface.html`, with `macros.html`). These tests hold the two to the same bytes: a theme
+//! directory holding unchanged copies of those templates makes rtcdoc run them, and the whole
+//! site must come out identical to the default build — for the
 //! examples, every fixture set (hostile text, odd dialects, diagnostics), both languages, a
 //! title with markup, a catalogue whose shared type overflows the "connects to" lists and, when
 //! present, the real-world corpus.
@@ -28,6 +29,9 @@ fn template_theme(dir: &Path, names: &[&str]) -> PathBuf {
     theme
 }
 
+/// The templates the built-in writer stands for.
+const NATIVE: [&str; 3] = ["component.html", "type.html", "interface.html"];
+
 /// Builds `input` with the built-in theme and through the templates; asserts byte equality of
 /// every file and returns how many component pages were compared.
 fn same_both_ways(input: &Path, site: SiteOptions) -> usize {
@@ -39,7 +43,7 @@ fn same_both_ways(input: &Path, site: SiteOptions) -> usize {
         input,
         &templated,
         SiteOptions {
-            theme_dir: Some(template_theme(dir.path(), &["component.html"])),
+            theme_dir: Some(template_theme(dir.path(), &NATIVE)),
             ..site
         },
     );
@@ -92,6 +96,72 @@ fn examples_and_fixtures_match_the_templates() {
     }
 }
 
+/// Type and interface pages with every part the templates can print: an IDL file section
+/// (linked by `source-url`), struct fields, a union's cases and switch, typedefs, enum values,
+/// an interface with bases, attributes (read-only too), operations with documented parameters,
+/// `oneway` and `raises`, an interface required and not provided, a type contained in another.
+#[test]
+fn every_part_of_a_type_page_matches_the_templates() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    for idl in ["MyDataTypes.idl", "MyService.idl"] {
+        let text =
+            std::fs::read_to_string(common::root().join("tests/fixtures/idl").join(idl)).unwrap();
+        common::write(&input, &format!("idl/{idl}"), &text);
+    }
+    let service = r#"  <rtc:ServicePorts xsi:type="rtcExt:serviceport_ext" rtcExt:position="TOP" rtc:name="Paths">
+    <rtc:ServiceInterface xsi:type="rtcExt:serviceinterface_ext" rtc:type="Demo::PathService" rtc:idlFile="MyService.idl" rtc:instanceName="paths" rtc:direction="Required" rtc:name="paths"/>
+  </rtc:ServicePorts>
+</rtc:RtcProfile>"#;
+    let a = common::xml_profile(
+        "A",
+        &[
+            ("DataOutPort", "foo", "RTC::TimedFoo"),
+            ("DataOutPort", "time", "RTC::Time"),
+            ("DataOutPort", "reading", "RTC::Reading"),
+            ("DataOutPort", "colour", "RTC::Colour"),
+            ("DataOutPort", "big", "RTC::Big"),
+        ],
+    )
+    .replace("</rtc:RtcProfile>", service);
+    common::write(&input, "a/RTC.xml", &a);
+    common::write(
+        &input,
+        "b/RTC.xml",
+        &common::xml_profile("B", &[("DataInPort", "foo", "RTC::TimedFoo")]),
+    );
+    let site = || SiteOptions {
+        source_url: Some("https://example.org/repo/blob/main/{path}".into()),
+        ..SiteOptions::default()
+    };
+    same_both_ways(&input, site());
+    let out = dir.path().join("out");
+    build_site(&input, &out, site());
+    let mut all = String::new();
+    for sub in ["types", "interfaces"] {
+        for (_, bytes) in common::tree(&out.join(sub)) {
+            all.push_str(&String::from_utf8_lossy(&bytes));
+        }
+    }
+    for part in [
+        "<section id=\"idl-file\">",
+        "class=\"idl-fields\"",
+        "class=\"idl-values\"",
+        "class=\"idl-attributes\"",
+        "class=\"idl-operation\"",
+        "<dl class=\"params\"><dt>",
+        " <code>raises (</code>",
+        "<code>oneway </code>",
+        "<section id=\"contained-in\">",
+        "<section id=\"producers\">",
+        "<section id=\"providers\">",
+        "class=\"warning flag\"",
+        "<table class=\"uses\">",
+    ] {
+        assert!(all.contains(part), "no compared page shows {part}");
+    }
+}
+
 #[test]
 fn japanese_labels_and_a_marked_up_title_match_the_templates() {
     let pages = same_both_ways(
@@ -139,6 +209,61 @@ fn corpus_matches_the_templates() {
         return;
     };
     assert!(same_both_ways(&corpus, SiteOptions::default()) > 100);
+}
+
+/// A theme that overrides `macros.html` gets its macros on the type, interface and component
+/// pages (none of them is written by the Rust writer then).
+#[test]
+fn overridden_macros_are_used() {
+    let dir = tempfile::tempdir().unwrap();
+    let theme = dir.path().join("theme");
+    let macros = std::fs::read_to_string(common::root().join("themes/default/macros.html"))
+        .unwrap()
+        .replace("<table class=\"uses\">", "<table class=\"uses mine\">")
+        .replace(
+            "<table class=\"history-table\">",
+            "<table class=\"history-table mine\">",
+        );
+    common::write(&theme, "macros.html", &macros);
+    let site = |theme_dir: Option<PathBuf>| SiteOptions {
+        theme_dir,
+        ..SiteOptions::default()
+    };
+    let out = dir.path().join("site");
+    build_site(&examples(), &out, site(Some(theme.clone())));
+    let types = common::tree(&out.join("types"));
+    assert!(types.len() > 3);
+    assert!(types
+        .iter()
+        .any(|(_, b)| String::from_utf8_lossy(b).contains("uses mine")));
+    // RTCBuilder's dated backups give the components a history section (read by the CLI).
+    let backups = common::root().join("tests/fixtures/backups");
+    let pages = |name: &str, theme_args: &[&str]| {
+        let out = dir.path().join(name);
+        let mut args = vec![
+            "build",
+            backups.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "-q",
+        ];
+        args.extend(theme_args);
+        let run = common::rtcdoc(&args, dir.path());
+        assert!(run.status.success(), "{run:?}");
+        common::tree(&out.join("components"))
+    };
+    let themed = pages("backups", &["--theme", theme.to_str().unwrap()]);
+    assert!(themed.iter().any(|(_, b)| {
+        let page = String::from_utf8_lossy(b);
+        page.contains("<section id=\"change-history\">") && page.contains("history-table mine")
+    }));
+    let plain = pages("plain", &[]);
+    assert!(plain
+        .iter()
+        .any(|(_, b)| String::from_utf8_lossy(b).contains("<section id=\"change-history\">")));
+    assert!(plain
+        .iter()
+        .all(|(_, b)| !String::from_utf8_lossy(b).contains("mine")));
 }
 
 /// A theme that overrides either template gets its own markup on every component page (the

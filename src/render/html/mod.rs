@@ -907,6 +907,9 @@ type LazyContext<'a> = Box<dyn Fn() -> Value + Send + Sync + 'a>;
 enum PageContext<'a> {
     Ready(Value),
     Lazy(LazyContext<'a>),
+    /// A data type's or interface's page: written by [`native::type_page`] unless the theme
+    /// overrides a template it stands for, else its context.
+    Type(Box<dyn Fn() -> TypePage + Send + Sync + 'a>),
 }
 
 impl PageContext<'_> {
@@ -914,6 +917,7 @@ impl PageContext<'_> {
         match self {
             PageContext::Ready(v) => v.clone(),
             PageContext::Lazy(f) => f(),
+            PageContext::Type(f) => ctx(&f()),
         }
     }
 }
@@ -1153,7 +1157,7 @@ impl HtmlRenderer {
                     },
                 )
             },
-            || render_other_pages(&site, &env, out, wanted),
+            || render_other_pages(&site, &env, &globals, out, wanted),
         );
         let (other_paths, others_written) = others?;
         written += search_written? + pages_written? + others_written;
@@ -1198,19 +1202,32 @@ fn render_component_pages(
 fn render_other_pages(
     site: &Site<'_>,
     env: &Environment<'_>,
+    globals: &native::Globals<'_>,
     out: &dyn Sink,
     wanted: &(dyn Fn(&str) -> bool + Sync),
 ) -> Result<(Vec<String>, usize)> {
     let pages = other_pages(site);
     let paths = pages.iter().map(|p| p.path.clone()).collect();
+    // Type and interface pages are written natively unless the theme overrides their templates.
+    let native =
+        |template: &str| !theme_overrides(site.opts, &["base.html", "macros.html", template]);
+    let (native_type, native_interface) = (native("type.html"), native("interface.html"));
     let written = pages
         .par_iter()
         .filter(|pg| wanted(&pg.path))
         .map(|pg| -> Result<usize> {
-            let html = env
-                .get_template(pg.template)?
-                .render(pg.context.value())
-                .with_context(|| format!("rendering `{}`", pg.path))?;
+            let html = match &pg.context {
+                PageContext::Type(f)
+                    if (pg.template == "type.html" && native_type)
+                        || (pg.template == "interface.html" && native_interface) =>
+                {
+                    native::type_page(&f(), globals)
+                }
+                context => env
+                    .get_template(pg.template)?
+                    .render(context.value())
+                    .with_context(|| format!("rendering `{}`", pg.path))?,
+            };
             out.write_owned(&pg.path, html.into_bytes())?;
             Ok(1)
         })
@@ -1317,23 +1334,65 @@ fn sitemap(catalog: &Catalog, base_url: &str) -> String {
 }
 
 /// Whether component pages are written by [`native::component_page`]: when the theme directory
-/// overrides neither of the templates it stands for.
+/// overrides none of the templates it stands for.
 fn native_component_pages(opts: &SiteOptions) -> bool {
-    opts.theme_dir.as_deref().is_none_or(|d| {
-        !["base.html", "component.html"]
-            .iter()
-            .any(|f| d.join(f).is_file())
-    })
+    !theme_overrides(opts, &["base.html", "macros.html", "component.html"])
+}
+
+/// Whether the theme directory overrides any of the built-in templates `files`.
+fn theme_overrides(opts: &SiteOptions, files: &[&str]) -> bool {
+    opts.theme_dir
+        .as_deref()
+        .is_some_and(|d| files.iter().any(|f| d.join(f).is_file()))
 }
 
 fn ctx<S: Serialize>(v: &S) -> Value {
     Value::from_serialize(v)
 }
 
-/// Every page except component pages.
-/// The template context of a data type's or interface's page (`type.html`,
-/// `interface.html`), from its view.
-fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
+/// What a data type's or interface's page prints (`type.html`, `interface.html`): the
+/// template context, and what [`native::type_page`] writes for the built-in theme. The keys of
+/// the other kind are left out.
+#[derive(Serialize)]
+struct TypePage {
+    #[serde(skip)]
+    kind: TypeKind,
+    root: &'static str,
+    title: String,
+    name: String,
+    crumbs: Vec<Link>,
+    spellings: Vec<String>,
+    idl_files: Vec<String>,
+    def: Option<crate::render::idl_view::DefinitionView>,
+    others: Vec<PortUse>,
+    idl_file: Option<IdlFilePage>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    contained_in: Option<Vec<Link>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    producers: Option<Vec<PortUse>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    consumers: Option<Vec<PortUse>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    carried_by: Option<Vec<Link>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unprovided: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    providers: Option<Vec<PortUse>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    requirers: Option<Vec<PortUse>>,
+}
+
+/// The IDL file section of a type's page.
+#[derive(Serialize)]
+struct IdlFilePage {
+    file: String,
+    source_url: Option<String>,
+    history: Vec<crate::render::view::history::HistoryRow>,
+    older: Option<String>,
+}
+
+/// The page of a data type or interface, from its view.
+fn type_page(site: &Site<'_>, v: &view::types::TypeView<'_>) -> TypePage {
     let (catalog, lang) = (site.catalog, site.lang);
     let link = |l: &Linked<'_>| Link {
         text: l.text.clone(),
@@ -1355,36 +1414,31 @@ fn type_context(site: &Site<'_>, v: &view::types::TypeView<'_>) -> Value {
         TypeKind::Interface => ("interface", "interfaces"),
     };
     let root = "../";
-    let common = minijinja::context! {
-        root => root,
-        title => page_title(site, &format!("{} {}", v.name, lang.t(key))),
-        name => v.name,
-        crumbs => ctx(&crumbs_section(lang, root, crumbs_key)),
-        spellings => ctx(&v.spellings),
-        idl_files => ctx(&crate::catalog::idl_file_names(v.idl_files)),
-        def => ctx(&crate::render::idl_view::definition(catalog, v.name)),
-        others => ctx(&uses("sec-others")),
-        idl_file => v.idl_file.as_ref().map(|f| minijinja::context! {
-            file => f.file,
-            source_url => f.source_url,
-            history => ctx(&f.history.rows),
-            older => f.history.older_note(lang),
+    let data = v.kind == TypeKind::Data;
+    TypePage {
+        kind: v.kind,
+        root,
+        title: page_title(site, &format!("{} {}", v.name, lang.t(key))),
+        name: v.name.to_string(),
+        crumbs: crumbs_section(lang, root, crumbs_key),
+        spellings: v.spellings.to_vec(),
+        idl_files: crate::catalog::idl_file_names(v.idl_files),
+        def: crate::render::idl_view::definition(catalog, v.name),
+        others: uses("sec-others"),
+        idl_file: v.idl_file.as_ref().map(|f| IdlFilePage {
+            file: f.file.clone(),
+            source_url: f.source_url.clone(),
+            history: f.history.rows.clone(),
+            older: f.history.older_note(lang),
         }),
-    };
-    let own = match v.kind {
-        TypeKind::Data => minijinja::context! {
-            contained_in => ctx(&v.contained_in.iter().map(link).collect::<Vec<_>>()),
-            producers => ctx(&uses("sec-producers")),
-            consumers => ctx(&uses("sec-consumers")),
-            carried_by => ctx(&v.carried_by.iter().map(link).collect::<Vec<_>>()),
-        },
-        TypeKind::Interface => minijinja::context! {
-            unprovided => v.unprovided,
-            providers => ctx(&uses("sec-providers")),
-            requirers => ctx(&uses("sec-requirers")),
-        },
-    };
-    minijinja::context! { ..common, ..own }
+        contained_in: data.then(|| v.contained_in.iter().map(link).collect()),
+        producers: data.then(|| uses("sec-producers")),
+        consumers: data.then(|| uses("sec-consumers")),
+        carried_by: data.then(|| v.carried_by.iter().map(link).collect()),
+        unprovided: (!data).then_some(v.unprovided),
+        providers: (!data).then(|| uses("sec-providers")),
+        requirers: (!data).then(|| uses("sec-requirers")),
+    }
 }
 
 /// The index of the data types (`types.html`) or of the interfaces (`interfaces.html`), from
@@ -1576,8 +1630,8 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             pages.push(Job {
                 path: catalog.type_page(i).path("html"),
                 template,
-                context: PageContext::Lazy(Box::new(move || {
-                    type_context(site, &view::types::entry_view(catalog, i, lang, source_url))
+                context: PageContext::Type(Box::new(move || {
+                    type_page(site, &view::types::entry_view(catalog, i, lang, source_url))
                 })),
             });
         }
