@@ -1596,6 +1596,7 @@ fn index_job<'a>(site: &'a Site<'a>) -> Job<'a> {
     }
 }
 
+/// Every page except component pages: its path, template and context.
 fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
     let catalog = site.catalog;
     let lang = site.lang;
