@@ -1,5 +1,5 @@
 //! The built-in theme's component, data type and interface pages are written by Rust code
-//! (`render/html/native.rs`) rather than by running `base.html` + `component.html` (`type.html`,
+//! (`render/html/native/`) rather than by running `base.html` + `component.html` (`type.html`,
 //! `interface.html`, with `macros.html`). These tests hold the two to the same bytes: a theme
 //! directory holding unchanged copies of those templates makes rtcdoc run them, and the whole
 //! site must come out identical to the default build — for the
