@@ -158,7 +158,7 @@ fn code_span(line: &str, open: usize, one_line: bool, out: &mut String) -> Optio
                 || (c == 0xc2 && (0x80..0xa0).contains(&n))
                 || (c == b'|' && !one_line)
         });
-    if code.is_empty() || bad {
+    if bad {
         return None;
     }
     // One space is stripped from each side when both are there and the span is not all spaces.

@@ -907,8 +907,8 @@ type LazyContext<'a> = Box<dyn Fn() -> Value + Send + Sync + 'a>;
 enum PageContext<'a> {
     Ready(Value),
     Lazy(LazyContext<'a>),
-    /// A data type's or interface's page: written by [`native::type_page`] unless the theme
-    /// overrides a template it stands for, else its context.
+    /// A data type's or interface's page, written by [`native::type_page`] (made only when the
+    /// theme overrides none of the templates it stands for).
     Type(Box<dyn Fn() -> TypePage + Send + Sync + 'a>),
 }
 
@@ -1208,21 +1208,12 @@ fn render_other_pages(
 ) -> Result<(Vec<String>, usize)> {
     let pages = other_pages(site);
     let paths = pages.iter().map(|p| p.path.clone()).collect();
-    // Type and interface pages are written natively unless the theme overrides their templates.
-    let native =
-        |template: &str| !theme_overrides(site.opts, &["base.html", "macros.html", template]);
-    let (native_type, native_interface) = (native("type.html"), native("interface.html"));
     let written = pages
         .par_iter()
         .filter(|pg| wanted(&pg.path))
         .map(|pg| -> Result<usize> {
             let html = match &pg.context {
-                PageContext::Type(f)
-                    if (pg.template == "type.html" && native_type)
-                        || (pg.template == "interface.html" && native_interface) =>
-                {
-                    native::type_page(&f(), globals)
-                }
+                PageContext::Type(f) => native::type_page(&f(), globals),
                 context => env
                     .get_template(pg.template)?
                     .render(context.value())
@@ -1627,13 +1618,19 @@ fn other_pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             TypeKind::Data => "type.html",
             TypeKind::Interface => "interface.html",
         };
+        // Written natively unless the theme overrides a template the page stands for.
+        let native = !theme_overrides(site.opts, &["base.html", "macros.html", template]);
         for i in kind.entries(catalog) {
+            let page =
+                move || type_page(site, &view::types::entry_view(catalog, i, lang, source_url));
             pages.push(Job {
                 path: catalog.type_page(i).path("html"),
                 template,
-                context: PageContext::Type(Box::new(move || {
-                    type_page(site, &view::types::entry_view(catalog, i, lang, source_url))
-                })),
+                context: if native {
+                    PageContext::Type(Box::new(page))
+                } else {
+                    PageContext::Lazy(Box::new(move || ctx(&page())))
+                },
             });
         }
     }

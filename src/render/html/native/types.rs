@@ -31,8 +31,8 @@ pub(in crate::render::html) fn type_page(page: &TypePage, g: &Globals<'_>) -> St
     );
     o.code(&page.name);
     o.raw("</h1>\n");
-    if let Some(unprovided) = page.unprovided {
-        if unprovided {
+    if !data {
+        if page.unprovided == Some(true) {
             o.label_in(
                 "<p class=\"warning flag\" role=\"note\">⚠ ",
                 "not_provided",
