@@ -28,6 +28,11 @@ pub enum FactKind {
     /// Free text written for humans (descriptions, comments, algorithm notes), which may hold
     /// Markdown; the HTML site renders it as sanitised Markdown.
     Text,
+    /// A short documented value (a data name, range, unit, number, occurrence): Markdown inside
+    /// its lines (code spans, emphasis) but never a block, so that a range written `> 0.01` is
+    /// a comparison and not a quotation, and `# of samples` no heading. The Markdown and
+    /// Doxygen outputs show every free text that way.
+    Phrase,
 }
 
 /// One labelled value of a page.
@@ -124,18 +129,29 @@ impl Facts {
         let doc_type = model::non_empty(&d.type_)
             .filter(|t| type_.map(canonical_type) != Some(canonical_type(t)));
         let doc_unit = model::non_empty(&d.unit).filter(|u| unit != Some(*u));
-        self.md_str("fact_doc_type", doc_type)
-            .md("fact_number", &d.number)
+        self.phrase_str("fact_doc_type", doc_type)
+            .phrase("fact_number", &d.number)
             .md("fact_semantics", &d.semantics)
-            .md_str("fact_doc_unit", doc_unit)
-            .md("fact_occurrence", &d.occurrence)
-            .md("fact_operation", &d.operation)
+            .phrase_str("fact_doc_unit", doc_unit)
+            .phrase("fact_occurrence", &d.occurrence)
+            .phrase("fact_operation", &d.operation)
     }
     /// [`Facts::md`] for a value already trimmed and checked non-empty.
     fn md_str(&mut self, key: &'static str, v: Option<&str>) -> &mut Self {
+        self.kind_str(key, v, FactKind::Text)
+    }
+    /// Like [`Facts::md`], for a short documented value ([`FactKind::Phrase`]).
+    fn phrase(&mut self, key: &'static str, v: &Option<crate::model::Text>) -> &mut Self {
+        self.kind_str(key, model::non_empty(v), FactKind::Phrase)
+    }
+    /// [`Facts::phrase`] for a value already trimmed and checked non-empty.
+    fn phrase_str(&mut self, key: &'static str, v: Option<&str>) -> &mut Self {
+        self.kind_str(key, v, FactKind::Phrase)
+    }
+    fn kind_str(&mut self, key: &'static str, v: Option<&str>, kind: FactKind) -> &mut Self {
         if let Some(s) = v {
             let mut f = Fact::new(self.lang.t(key), s);
-            f.kind = FactKind::Text;
+            f.kind = kind;
             self.out.push(f);
         }
         self
@@ -414,17 +430,17 @@ fn configuration_doc(c: &Configuration, lang: Lang) -> Facts {
     if let Some(d) = &c.doc {
         let default = model::non_empty(&c.default_value);
         let unit = configuration_unit(c);
-        f.md("fact_dataname", &d.dataname)
-            .md_str(
+        f.phrase("fact_dataname", &d.dataname)
+            .phrase_str(
                 "fact_doc_default",
                 model::non_empty(&d.default_value).filter(|v| default != Some(*v)),
             )
-            .md_str(
+            .phrase_str(
                 "fact_doc_unit",
                 model::non_empty(&d.unit).filter(|u| unit != Some(*u)),
             )
-            .md("fact_range", &d.range)
-            .md("fact_doc_constraint", &d.constraint);
+            .phrase("fact_range", &d.range)
+            .phrase("fact_doc_constraint", &d.constraint);
     }
     f
 }

@@ -34,6 +34,52 @@ pub fn to_html(text: &str) -> String {
     }
 }
 
+/// Renders a short documented value ([`crate::render::facts::FactKind::Phrase`]) as
+/// [`to_html`] does, with what would open a block at the start of a line taken as text: a
+/// range `> 0.01` stays a comparison, `# of samples` and `1. axis` stay text. Code spans,
+/// emphasis and line breaks are kept.
+pub fn phrase_to_html(text: &str) -> String {
+    let text = crate::model::prose(text);
+    let mut inline = String::with_capacity(text.len() + 8);
+    for (i, line) in text.split('\n').enumerate() {
+        if i > 0 {
+            inline.push('\n');
+        }
+        let line = line.trim_start_matches([' ', '\t']);
+        match block_marker(line) {
+            Some(at) => {
+                inline.push_str(&line[..at]);
+                inline.push('\\');
+                inline.push_str(&line[at..]);
+            }
+            None => inline.push_str(line),
+        }
+    }
+    to_html(&inline)
+}
+
+/// Where a backslash keeps `line` (without leading blanks) from opening a block: before a
+/// quotation, heading, list, fence, HTML block, table or rule marker, or before the `.` / `)`
+/// of an ordered list number. `None` when the line opens none.
+fn block_marker(line: &str) -> Option<usize> {
+    let b = line.as_bytes();
+    let first = *b.first()?;
+    let blank_after = |i: usize| b.get(i).is_none_or(|c| *c == b' ' || *c == b'\t');
+    let marker = match first {
+        b'>' | b'#' | b'=' | b'|' | b'~' | b'<' => true,
+        // A bullet, or a rule / setext underline (`---`, `***`, `___`).
+        b'-' | b'+' | b'*' | b'_' => {
+            blank_after(1) || b.iter().all(|c| matches!(c, b' ' | b'\t') || *c == first)
+        }
+        b'`' => line.starts_with("```"),
+        b'0'..=b'9' if list_number(line) => {
+            return b.iter().position(|c| matches!(c, b'.' | b')'));
+        }
+        _ => false,
+    };
+    marker.then_some(0)
+}
+
 /// The HTML of text that contains nothing Markdown or HTML would read specially — one
 /// paragraph of lines without leading/trailing blanks or markup characters, where `<`, `>` and
 /// `&` can only be literal (`x > 0`, `< 3.14`, `a & b`) and a leading number is no list item
@@ -603,6 +649,37 @@ mod tests {
         fn pipes_match_the_parser(t in "[a|\n -]{0,10}") {
             fast_path_agrees(&t)?;
         }
+
+        /// A short documented value opens no block (a blank line still parts paragraphs),
+        /// whatever its lines start with.
+        #[test]
+        fn phrases_open_no_block(t in "[a1.)>#=|~<`*_+\\- \t\n]{0,14}") {
+            let html = phrase_to_html(&t);
+            for tag in ["<blockquote", "<h", "<ul", "<ol", "<li", "<pre", "<table", "<div"] {
+                proptest::prop_assert!(!html.contains(tag), "{:?} gave {}", t, html);
+            }
+        }
+    }
+
+    #[test]
+    fn phrases_keep_their_markers_as_text() {
+        for (text, want) in [
+            ("> 0.01", "<p>&gt; 0.01</p>\n"),
+            ("# of samples", "<p># of samples</p>\n"),
+            ("1. axis", "<p>1. axis</p>\n"),
+            ("2) axis", "<p>2) axis</p>\n"),
+            ("- 1 to 1", "<p>- 1 to 1</p>\n"),
+            ("-1.0 to 1.0", "<p>-1.0 to 1.0</p>\n"),
+            ("metres\n---", "<p>metres<br>\n---</p>\n"),
+            ("  < 3.14", "<p>&lt; 3.14</p>\n"),
+            ("`x` > 0", "<p><code>x</code> &gt; 0</p>\n"),
+            ("*rad*\n> 0", "<p><em>rad</em><br>\n&gt; 0</p>\n"),
+            ("```\nx", "<p>```<br>\nx</p>\n"),
+        ] {
+            assert_eq!(phrase_to_html(text), want, "{text:?}");
+        }
+        // Free text keeps its blocks.
+        assert!(to_html("> quoted").starts_with("<blockquote>"));
     }
 
     #[test]

@@ -190,6 +190,7 @@ impl From<Fact> for Field {
         let (text, html) = match f.kind {
             FactKind::Value => (Some(f.value), None),
             FactKind::Text => (None, Some(markdown::to_html(&f.value))),
+            FactKind::Phrase => (None, Some(markdown::phrase_to_html(&f.value))),
         };
         Field {
             label: f.label.into_owned(),
