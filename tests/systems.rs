@@ -309,11 +309,12 @@ fn host_data_is_hidden_unless_asked_for() {
         "IOR:010000001a",
         "nameserver.example",
         "localhost:2809/Camera0.rtc",
+        "robot-pc.host_cxt",
     ] {
         assert!(!html.contains(secret), "{secret} published");
     }
     assert!(
-        html.contains("7 host values hidden"),
+        html.contains("8 host values hidden"),
         "the page says what it left out"
     );
     assert!(html.contains("lab B"), "other properties stay");
@@ -333,6 +334,7 @@ fn host_data_is_hidden_unless_asked_for() {
         "IOR:010000001a",
         "nameserver.example",
         "localhost:2809/Camera0.rtc",
+        "robot-pc.host_cxt",
     ] {
         assert!(html.contains(secret), "{secret} shown with show-host-data");
     }
@@ -413,7 +415,7 @@ fn markdown_doxygen_and_json_carry_systems() {
         // The same columns as the HTML page: id, ends linked to the ports, comment.
         "| Camera0.image\\_Planner0.image | c1-image | Camera0.[image](../components/camera.md#port-image) | Planner0.[image](../components/planner.md#port-image) | [IDL:RTC/CameraImage:1.0](../types/rtc-cameraimage.md) | corba\\_cdr | push | periodic | 0.5 | frames to planner |",
         "| Planner0.camera\\_Camera0.control | c2-control | Planner0.[camera](../components/planner.md#sport-camera) | Camera0.[control](../components/camera.md#sport-control) | [CameraControl](../interfaces/cameracontrol.md) | corba | camera control |",
-        "7 host values hidden",
+        "8 host values hidden",
     ] {
         assert!(page.contains(want), "{want} in\n{page}");
     }

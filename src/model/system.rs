@@ -256,8 +256,10 @@ impl SystemProperty {
 /// Whether a property carries private host data: its name is `os.hostname`, `corba.endpoint`,
 /// `corba.endpoints`, or ends in `.host`, `hostname` or an `ior` segment (`IOR`,
 /// `dataport.corba_cdr.inport_ior`; `behavior` is not one), or its value is an IOR string
-/// (`IOR:` + hex digits) or a `host:port` endpoint (also `giop:tcp:host:port`, `[::1]:2809`,
-/// and lists of them). Names compare case-insensitively.
+/// (`IOR:` + hex digits), a `host:port` endpoint (also `giop:tcp:host:port`, `[::1]:2809`,
+/// and lists of them) or a name-service path in a host's context (`lab-pc.host_cxt/Cam0.rtc`,
+/// what OpenRTM's default `naming.names` format `%h.host_cxt/%n.rtc` gives). Names compare
+/// case-insensitively.
 pub fn is_private_property(name: Option<&str>, value: Option<&str>) -> bool {
     if let Some(n) = name {
         let n = n.trim().to_ascii_lowercase();
@@ -272,7 +274,21 @@ pub fn is_private_property(name: Option<&str>, value: Option<&str>) -> bool {
             return true;
         }
     }
-    value.is_some_and(|v| is_ior(v) || v.split([',', ' ', ';']).any(is_endpoint))
+    value.is_some_and(|v| {
+        is_ior(v)
+            || v.split([',', ' ', ';'])
+                .any(|p| is_endpoint(p) || in_host_context(p))
+    })
+}
+
+/// A name-service path with a context named after a host: `lab-pc.host_cxt/Cam0.rtc`
+/// (`%h.host_cxt`, OpenRTM's default, before it is filled in, names no host).
+fn in_host_context(path: &str) -> bool {
+    path.split('/').any(|c| {
+        let c = c.trim().to_ascii_lowercase();
+        c.strip_suffix(".host_cxt")
+            .is_some_and(|host| !host.is_empty() && host != "%h")
+    })
 }
 
 /// `IOR:` followed by hex digits (a stringified CORBA object reference).
@@ -901,6 +917,13 @@ mod tests {
         assert!(p("x", "giop:tcp:robot.local:2810"));
         assert!(p("x", "a, myhost:2809"));
         assert!(p("x", "[::1]:2809"));
+        assert!(p("naming.names", "secret-lab-pc.host_cxt/Cam0.rtc"));
+        assert!(p(
+            "naming.names",
+            "a.rtc, /robots/WIN-LDAKBFMO7VE.Host_Cxt/Mapper0.rtc"
+        ));
+        assert!(!p("naming.names", "%h.host_cxt/%n.rtc"));
+        assert!(!p("naming.names", "robots/Cam0.rtc"));
         assert!(!p("behavior", "x"));
         assert!(!p("x", "12:30"));
         assert!(!p("x", "IOR:xyz"));
