@@ -225,9 +225,9 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # Language of generated labels: "en" or "ja". Profile text is always shown as written.
 # language = "en"
 
-# Globs (relative to input) of files to take, and to leave out.
+# Globs (relative to input) of files to take, and to leave out (for example "old/**").
 # include = ["**"]
-# exclude = ["**/backup/**"]
+# exclude = []
 
 {idl}
 
@@ -325,9 +325,9 @@ fn template_ja(idl: Option<&crate::init::Detected>) -> String {
 # プロファイルの文章は常に書かれたとおりに表示します。
 language = "ja"
 
-# 読み込むファイルと除外するファイルの glob (input からの相対パス)。
+# 読み込むファイルと除外するファイルの glob (input からの相対パス。例: "old/**")。
 # include = ["**"]
-# exclude = ["**/backup/**"]
+# exclude = []
 
 {idl}
 
@@ -443,7 +443,34 @@ mod tests {
         let c = parse(&uncommented(&t), Path::new("x")).unwrap();
         assert_eq!(c.formats, Some(vec![Format::Html]));
         assert_eq!(c.language, Some(Lang::En));
-        assert_eq!(c.serve.unwrap().port, Some(3000));
+        assert_eq!(c.serve.as_ref().and_then(|s| s.port), Some(3000));
+        // A setting with a default shows it (the others show an example): uncommented, the
+        // build's options are the defaults.
+        let file = Loaded {
+            config: c,
+            dir: None,
+            path: None,
+        };
+        let (all, none) = (
+            build_options(&file, &Overrides::default()),
+            build_options(&Loaded::default(), &Overrides::default()),
+        );
+        assert_eq!(all.load.exclude, none.load.exclude);
+        assert_eq!(all.load.include, vec!["**".to_string()], "every file");
+        assert!(none.load.include.is_empty(), "no include: every file");
+        assert_eq!(
+            (all.strict, all.load.history, &all.site.title, all.formats),
+            (
+                none.strict,
+                none.load.history,
+                &none.site.title,
+                none.formats
+            )
+        );
+        assert_eq!(
+            format!("{:?}", all.load.limits),
+            format!("{:?}", none.load.limits)
+        );
     }
 
     #[test]
@@ -547,16 +574,22 @@ pub fn default_title(lang: Lang) -> String {
     }
 }
 
+/// The input when the command line names none: the configuration's `input`, else the
+/// configuration file's folder, else the current directory (`build`, `check` and `serve` alike).
+pub fn default_input(file: &Loaded) -> PathBuf {
+    file.config
+        .input
+        .as_deref()
+        .map(|p| file.resolve(p))
+        .or_else(|| file.dir.clone())
+        .unwrap_or_else(|| PathBuf::from("."))
+}
+
 /// Combines defaults, the configuration file and command-line overrides (in rising order of
 /// precedence) into the options of a build.
 pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::BuildOptions {
     let (c, cli) = (&file.config, &overrides.settings);
-    let input = cli
-        .input
-        .clone()
-        .or_else(|| c.input.as_deref().map(|p| file.resolve(p)))
-        .or_else(|| file.dir.clone())
-        .unwrap_or_else(|| PathBuf::from("."));
+    let input = cli.input.clone().unwrap_or_else(|| default_input(file));
     let output = cli
         .output
         .clone()

@@ -311,7 +311,7 @@ impl Workspace {
         for path in changed {
             let Some(rel) = self.rel(path) else { continue };
             let bytes = if path.exists() {
-                std::fs::read(path).ok()
+                walk::read_at_most(path, load.limits.max_file_size.saturating_add(1)).ok()
             } else {
                 None
             };
@@ -471,7 +471,7 @@ impl Workspace {
             .and_then(|e| e.to_str())
             .is_some_and(|e| walk::is_document_extension(&e.to_ascii_lowercase()));
         is_candidate
-            && std::fs::read(path)
+            && walk::read_at_most(path, walk::SNIFF_BYTES)
                 .map(|b| parse::rts::is_system(&b))
                 .unwrap_or(false)
     }

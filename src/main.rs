@@ -58,7 +58,8 @@ enum Command {
     /// Write the wiring of an RT System, a component's neighbourhood or the catalogue's data
     /// flow as Graphviz DOT, Mermaid or SVG (to stdout or -o FILE).
     Graph(GraphArgs),
-    /// Write an `rtcdoc.toml` with every setting commented out at its default.
+    /// Write an `rtcdoc.toml` with every setting commented out: at its default, or as an example
+    /// where it has none.
     Init(InitArgs),
     /// Move the `[[source]]` repositories of rtcdoc.toml (all, or those named) to the current
     /// commit of their `rev` and write rtcdoc.lock.
@@ -90,7 +91,8 @@ struct InputArgs {
     /// Configuration file [default: rtcdoc.toml in the input directory or the current directory].
     #[arg(long, value_name = "FILE")]
     config: Option<PathBuf>,
-    /// Accept an input without any component profile (otherwise an error, exit 2).
+    /// Accept an input that holds nothing to document: no component profile, RT System
+    /// profile or IDL file (otherwise an error, exit 2).
     #[arg(long)]
     allow_empty: bool,
     /// Directory of IDL files to read as well, searched recursively (repeatable), e.g. an
@@ -169,17 +171,23 @@ struct SiteArgs {
 
 #[derive(Args)]
 struct BuildArgs {
-    /// Directory (or single file) of profiles [default: the config's `input`, else `.`].
+    /// Directory (or single file) of profiles [default: the config's `input`, else the config
+    /// file's folder, else `.`].
     input: Option<PathBuf>,
-    /// Output directory, replaced on success [default: `site`].
+    /// Output directory, replaced on success [default: the config's `output`, else `site`;
+    /// relative to the config file's folder when there is a config file].
     #[arg(short, long)]
     output: Option<PathBuf>,
     /// Output format(s); several at once go to OUT/<format>/ [default: html].
     #[arg(short, long, value_enum, value_delimiter = ',')]
     format: Vec<Format>,
     /// Fail (exit 1) without writing anything when any profile has an error.
-    #[arg(long)]
+    #[arg(long, overrides_with = "no_strict")]
     strict: bool,
+    /// Write the output even when a profile has an error (turns off `strict = true` of the
+    /// config file).
+    #[arg(long, overrides_with = "strict")]
+    no_strict: bool,
     /// Commits read per file (component profile, RT System profile, IDL file) for its history
     /// (from git, and RTCBuilder's backups); 0 turns the history off [default: 100].
     #[arg(long, value_name = "N")]
@@ -192,7 +200,8 @@ struct BuildArgs {
 
 #[derive(Args)]
 struct CheckArgs {
-    /// Directories or files to check [default: `.`].
+    /// Directories or files to check [default: the config's `input`, else the config file's
+    /// folder, else `.`].
     paths: Vec<PathBuf>,
     /// Output format: human (rustc-like, on stderr), json or sarif (on stdout).
     #[arg(long, value_enum, default_value = "human")]
@@ -249,7 +258,8 @@ struct DiffArgs {
 /// `serve` renders HTML into memory: it takes no output directory, format or `--strict`.
 #[derive(Args)]
 struct ServeArgs {
-    /// Directory of profiles [default: the config's `input`, else `.`].
+    /// Directory of profiles [default: the config's `input`, else the config file's folder,
+    /// else `.`].
     input: Option<PathBuf>,
     #[command(flatten)]
     site: SiteArgs,
@@ -259,14 +269,17 @@ struct ServeArgs {
     #[arg(short, long)]
     port: Option<u16>,
     /// Open the site in the default browser.
-    #[arg(long)]
+    #[arg(long, overrides_with = "no_open")]
     open: bool,
+    /// Don't open a browser (turns off `open = true` of the config file's `[serve]`).
+    #[arg(long, overrides_with = "open")]
+    no_open: bool,
 }
 
 #[derive(Args)]
 struct GraphArgs {
     /// Directory or file holding the system profile (and the component profiles its instances
-    /// use) [default: `.`].
+    /// use) [default: the config's `input`, else the config file's folder, else `.`].
     input: Option<PathBuf>,
     /// The system to draw, by name (also as the pages show it, `RTSystem (ev3)`), page slug or
     /// file path (relative to the input, or to the current directory); needed when the input
@@ -489,6 +502,19 @@ fn pin(
     Ok(())
 }
 
+/// [`load_config`] for a command: with `--verbose`, the file used is named.
+fn config_for(
+    cli: &Cli,
+    input: Option<&Path>,
+    explicit: Option<&Path>,
+) -> anyhow::Result<config::Loaded> {
+    let file = load_config(input, explicit)?;
+    if let (true, Some(p)) = (cli.verbose, &file.path) {
+        eprintln!("configuration: {}", p.display());
+    }
+    Ok(file)
+}
+
 fn load_config(input: Option<&Path>, explicit: Option<&Path>) -> anyhow::Result<config::Loaded> {
     let cwd = PathBuf::from(".");
     let mut search: Vec<&Path> = Vec::new();
@@ -514,7 +540,11 @@ fn overrides(
             input: input.clone(),
             output: build.and_then(|b| b.output.clone()),
             formats: build.and_then(|b| given(&b.format)),
-            strict: build.is_some_and(|b| b.strict).then_some(true),
+            strict: build.and_then(|b| match (b.strict, b.no_strict) {
+                (true, _) => Some(true),
+                (_, true) => Some(false),
+                _ => None,
+            }),
             title: site.title.clone(),
             base_url: site.base_url.clone(),
             theme: site.theme.clone(),
@@ -609,6 +639,9 @@ fn check_command(input: &Path, read: &ReadArgs) -> String {
     }
     if let Some(n) = i.max_depth {
         cmd.push_str(&format!(" --max-depth {n}"));
+    }
+    if i.allow_empty {
+        cmd.push_str(" --allow-empty");
     }
     for d in &i.idl_path {
         cmd.push_str(&format!(
@@ -716,7 +749,11 @@ fn print_skipped(
 fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
         Command::Build(args) => {
-            let file = load_config(args.input.as_deref(), args.read.input.config.as_deref())?;
+            let file = config_for(
+                cli,
+                args.input.as_deref(),
+                args.read.input.config.as_deref(),
+            )?;
             let mut opts = config::build_options(&file, &build_overrides(args));
             pin(&file, &args.read.sources, &mut opts.load, cli.quiet)?;
             let root = input_root(&opts.input);
@@ -740,9 +777,6 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 }
             };
             if cli.verbose {
-                if let Some(p) = &file.path {
-                    eprintln!("configuration: {}", p.display());
-                }
                 print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
             }
             print_findings(
@@ -789,7 +823,11 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
         Command::Check(args) => check(cli, args),
         Command::Diff(args) => diff(cli, args),
         Command::Serve(args) => {
-            let file = load_config(args.input.as_deref(), args.read.input.config.as_deref())?;
+            let file = config_for(
+                cli,
+                args.input.as_deref(),
+                args.read.input.config.as_deref(),
+            )?;
             let cli_over = overrides(&args.input, &args.site, &args.read.input, None);
             let mut build = config::build_options(&file, &cli_over);
             build.formats = vec![Format::Html];
@@ -843,7 +881,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 print_history_notes(handle.first_history_notes());
             }
             eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
-            if args.open || serve_cfg.open.unwrap_or(false) {
+            if args.open || (!args.no_open && serve_cfg.open.unwrap_or(false)) {
                 rtcdoc::serve::open_browser(&handle.url());
             }
             handle.wait();
@@ -885,10 +923,10 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Man => {
-            clap_mangen::Man::new(Cli::command()).render(&mut std::io::stdout())?;
+            man_page(&mut std::io::stdout().lock())?;
             Ok(ExitCode::SUCCESS)
         }
-        Command::Graph(args) => graph(args),
+        Command::Graph(args) => graph(cli, args),
         Command::Update(args) => {
             let file = load_config(None, args.config.as_deref())?;
             let mode = rtcdoc::sources::Mode {
@@ -908,18 +946,67 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     }
 }
 
+/// The man page: name, synopsis, description and global options, then every command with its
+/// synopsis, description and options (one page, as `rtcdoc man` promises; no `rtcdoc-build(1)`
+/// pages exist to point at), and the exit status.
+fn man_page(out: &mut dyn std::io::Write) -> std::io::Result<()> {
+    use clap_mangen::Man;
+    let cmd = Cli::command();
+    let man = Man::new(cmd.clone());
+    man.render_title(out)?;
+    man.render_name_section(out)?;
+    man.render_synopsis_section(out)?;
+    man.render_description_section(out)?;
+    man.render_options_section(out)?;
+    writeln!(out, ".SH COMMANDS")?;
+    for sub in cmd.get_subcommands().filter(|s| s.get_name() != "help") {
+        let name = format!("rtcdoc {}", sub.get_name());
+        let sub_man = Man::new(sub.clone().bin_name(name.clone()));
+        let mut buf = Vec::new();
+        sub_man.render_synopsis_section(&mut buf)?;
+        sub_man.render_description_section(&mut buf)?;
+        sub_man.render_options_section(&mut buf)?;
+        // The command's sections become paragraphs of one subsection.
+        let text = String::from_utf8_lossy(&buf)
+            .replace(".SH SYNOPSIS\n", &format!(".SS \"{name}\"\n"))
+            .replace(".SH DESCRIPTION\n", ".PP\n")
+            .replace(".SH OPTIONS\n", ".PP\nOptions:\n");
+        out.write_all(text.as_bytes())?;
+    }
+    writeln!(out, ".SH \"EXIT STATUS\"")?;
+    for (code, meaning) in [
+        ("0", "success"),
+        (
+            "1",
+            "a profile has an error (check, build --strict), or a change reached --fail-on (diff)",
+        ),
+        (
+            "2",
+            "the command could not run: bad usage, an unreadable input or configuration",
+        ),
+    ] {
+        writeln!(out, ".TP\n{code}\n{meaning}")?;
+    }
+    man.render_version_section(out)
+}
+
 /// `rtcdoc graph`: the wiring of one system of the input as DOT, Mermaid or SVG.
-fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
-    let input = args.input.clone().unwrap_or_else(|| PathBuf::from("."));
-    let file = load_config(Some(&input), args.input_args.config.as_deref())?;
+fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
+    let file = config_for(
+        cli,
+        args.input.as_deref(),
+        args.input_args.config.as_deref(),
+    )?;
+    let input = args
+        .input
+        .clone()
+        .unwrap_or_else(|| config::default_input(&file));
     let mut opts = load_options(&file, &args.input_args);
     if args.input.is_none() {
         pin(&file, &SourceArgs::default(), &mut opts, true)?;
     } else {
         opts.sources_only = false;
     }
-    // A folder holding only a system profile is a fine input here.
-    opts.allow_empty = true;
     let loaded = build::load(&input, &opts)?;
     let lang = file.config.language.unwrap_or_default();
     if let Some(grouping) = args.dataflow {
@@ -933,7 +1020,7 @@ fn graph(args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let (inst, conns, _, _) =
             rtcdoc::render::wiring::dataflow_wiring(&rows, lang, &|_| String::new(), None);
         let name = format!("{} — {}", lang.t("dataflow"), lang.t(key));
-        if inst.is_empty() {
+        if inst.is_empty() && !cli.quiet {
             // An empty graph is written (a script expects one), with the reason on stderr.
             eprintln!("note: {}", lang.t("dataflow_none"));
         }
@@ -1160,27 +1247,24 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             }
         });
     }
-    let mut paths = if args.paths.is_empty() {
-        vec![PathBuf::from(".")]
-    } else {
-        args.paths.clone()
-    };
     // Same input options as `build`: rtcdoc.toml, then the command line.
-    let file = load_config(
-        paths.first().map(PathBuf::as_path),
+    let file = config_for(
+        cli,
+        args.paths.first().map(PathBuf::as_path),
         args.read.input.config.as_deref(),
     )?;
     let mut opts = load_options(&file, &args.read.input);
-    // No path: the configuration's input (its `input`, or its sources only), and one
-    // directory: it and the sources added to it — both as `build` reads them.
+    // No path: the configuration's input (its `input`, its folder, or its sources only), and
+    // one directory: it and the sources added to it — both as `build` reads them.
     if args.paths.is_empty() || (args.paths.len() == 1 && args.paths[0].is_dir()) {
         pin(&file, &args.read.sources, &mut opts, cli.quiet)?;
     }
-    match (args.paths.is_empty(), opts.sources_only, &file.dir) {
-        (true, true, Some(d)) => paths = vec![d.clone()],
-        (true, _, _) => {}
-        (false, _, _) => opts.sources_only = false,
-    }
+    let paths = if args.paths.is_empty() {
+        vec![config::default_input(&file)]
+    } else {
+        opts.sources_only = false;
+        args.paths.clone()
+    };
     let mut reports = Vec::new();
     let mut counts = (0, 0, 0);
     // The sources' files, kept for the snippets of the human report.
@@ -1328,7 +1412,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         side::Spec::Local(p) => Some(p.as_path()),
         side::Spec::Git { .. } | side::Spec::Source(_) => None,
     };
-    let file = load_config(config_dir, args.read.input.config.as_deref())?;
+    let file = config_for(cli, config_dir, args.read.input.config.as_deref())?;
     let mut opts = load_options(&file, &args.read.input);
     opts.sources_only = false;
     // `NAME` or `NAME@REV` of a `[[source]]` (not a path on disk): that source alone, at its

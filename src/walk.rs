@@ -23,7 +23,7 @@ pub struct Source {
 }
 
 /// How much of a file the walk reads to recognise a profile.
-const SNIFF_BYTES: u64 = 64 * 1024;
+pub(crate) const SNIFF_BYTES: u64 = 64 * 1024;
 
 /// A file the walk looked at and did not take, with the reason.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -380,6 +380,17 @@ pub(crate) fn read_profile(path: &Path, limit: u64, named: bool) -> std::io::Res
         file.take(cap - have).read_to_end(&mut buf)?;
     }
     Ok(ReadFile::Profile(format, buf))
+}
+
+/// At most `cap` bytes of the file at `path`: what a watcher rereads is bounded like what a
+/// walk reads (a file past the size limit is then reported, not read whole).
+pub fn read_at_most(path: &Path, cap: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let file = std::fs::File::open(path)?;
+    let len = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut buf = Vec::with_capacity(capacity(len.min(cap)));
+    file.take(cap).read_to_end(&mut buf)?;
+    Ok(buf)
 }
 
 /// The traversal part of [`walk`]: which files are candidates, without reading any. The

@@ -195,7 +195,33 @@ fn completions_and_man_page() {
     assert!(man.status.success());
     let text = String::from_utf8_lossy(&man.stdout);
     assert!(text.contains(".TH rtcdoc 1"));
-    assert!(text.contains("build"));
+    // One page: every command with its own options, no pointers to pages that don't exist.
+    for command in [
+        "build",
+        "check",
+        "diff",
+        "serve",
+        "graph",
+        "init",
+        "update",
+        "completions",
+        "man",
+    ] {
+        assert!(
+            text.contains(&format!(".SS \"rtcdoc {command}\"")),
+            "{command}"
+        );
+    }
+    for option in [
+        "\\-\\-no\\-strict",
+        "\\-\\-fail\\-on",
+        "\\-\\-dataflow",
+        "\\-\\-no\\-open",
+    ] {
+        assert!(text.contains(option), "{option}");
+    }
+    assert!(!text.contains("rtcdoc\\-build(1)"), "{text}");
+    assert!(text.contains(".SH \"EXIT STATUS\""));
 }
 
 #[test]
@@ -222,6 +248,32 @@ fn quiet_and_verbose() {
         "{}",
         String::from_utf8_lossy(&q.stderr)
     );
+    // Every command that reads a configuration names it with --verbose.
+    write(d, "in/rtcdoc.toml", "title = \"T\"\n");
+    write(d, "new/a/RTC.xml", &xml_profile("A", &[]));
+    for args in [
+        &["build", "in", "-o", "o3"][..],
+        &["check", "in"],
+        &["diff", "new", "in"],
+        &["graph", "in", "--dataflow", "category"],
+    ] {
+        let v = rtcdoc(&[&["-v"][..], args].concat(), d);
+        let err = String::from_utf8_lossy(&v.stderr);
+        assert!(
+            err.contains("configuration: in/rtcdoc.toml"),
+            "{args:?}: {err}"
+        );
+    }
+    // --quiet silences notes: an empty data-flow graph is written without its note.
+    let q = rtcdoc(&["-q", "graph", "in", "--dataflow", "category"], d);
+    assert!(q.status.success());
+    assert!(
+        q.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&q.stderr)
+    );
+    let loud = rtcdoc(&["graph", "in", "--dataflow", "category"], d);
+    assert!(String::from_utf8_lossy(&loud.stderr).contains("note:"));
 }
 
 /// `*` in `--include`/`--exclude` stays within one folder and `**` crosses folders, as the

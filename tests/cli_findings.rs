@@ -415,3 +415,125 @@ fn serve_refuses_flags_it_would_ignore_and_prints_the_first_findings() {
         "{text}"
     );
 }
+
+/// Without a path, `check` reads what `build` reads: the configuration's `input`, else the
+/// configuration file's folder.
+#[test]
+fn check_without_a_path_reads_the_configured_input() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "a/ok/RTC.xml", &xml_profile("Ok", &[]));
+    write(d, "b/bad/RTC.xml", &fixture("RTC303-bad.xml"));
+    write(d, "rtcdoc.toml", "input = \"a\"\n");
+    let built = rtcdoc(&["build", "-o", "site"], d);
+    assert_eq!(built.status.code(), Some(0), "{}", stderr(&built));
+    let checked = rtcdoc(&["check"], d);
+    assert_eq!(checked.status.code(), Some(0), "{}", stderr(&checked));
+    assert!(!stderr(&checked).contains("RTC303"), "{}", stderr(&checked));
+    // A configuration elsewhere with no `input`: its own folder.
+    write(d, "b/rtcdoc.toml", "title = \"B\"\n");
+    let other = rtcdoc(&["check", "--config", "b/rtcdoc.toml"], d);
+    assert_eq!(other.status.code(), Some(1), "{}", stderr(&other));
+    assert!(
+        stderr(&other).contains("b/bad/RTC.xml"),
+        "{}",
+        stderr(&other)
+    );
+}
+
+/// `strict = true` of the file is turned off by `--no-strict`; of two flags the last wins.
+#[test]
+fn no_strict_overrides_the_configuration() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    with_findings(d);
+    write(d, "in/rtcdoc.toml", "strict = true\n");
+    let strict = rtcdoc(&["build", "in", "-o", "site"], d);
+    assert_eq!(strict.status.code(), Some(1), "{}", stderr(&strict));
+    assert!(!d.join("site").exists());
+    let relaxed = rtcdoc(&["build", "in", "-o", "site", "--no-strict"], d);
+    assert_eq!(relaxed.status.code(), Some(0), "{}", stderr(&relaxed));
+    assert!(d.join("site/index.html").exists());
+    let last = rtcdoc(&["build", "in", "-o", "site", "--no-strict", "--strict"], d);
+    assert_eq!(last.status.code(), Some(1), "{}", stderr(&last));
+}
+
+/// `--allow-empty` is honoured by `graph` and kept in the `check` command `build` suggests,
+/// which then works as printed.
+#[test]
+fn allow_empty_is_honoured_and_kept_in_the_suggested_check() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::create_dir_all(d.join("empty")).unwrap();
+    let refused = rtcdoc(&["graph", "empty", "--dataflow", "category"], d);
+    assert_eq!(refused.status.code(), Some(2), "{}", stderr(&refused));
+    assert!(
+        stderr(&refused).contains("--allow-empty"),
+        "{}",
+        stderr(&refused)
+    );
+    let empty = rtcdoc(
+        &["graph", "empty", "--dataflow", "category", "--allow-empty"],
+        d,
+    );
+    assert_eq!(empty.status.code(), Some(0), "{}", stderr(&empty));
+    let built = rtcdoc(&["build", "empty", "-o", "site", "--allow-empty"], d);
+    assert_eq!(built.status.code(), Some(0), "{}", stderr(&built));
+    let err = stderr(&built);
+    let suggested = err
+        .split("rtcdoc check ")
+        .nth(1)
+        .and_then(|rest| rest.split(')').next())
+        .unwrap_or_else(|| panic!("no check command suggested:\n{err}"));
+    let args: Vec<&str> = std::iter::once("check")
+        .chain(suggested.split_whitespace())
+        .collect();
+    assert!(args.contains(&"--allow-empty"), "{args:?}");
+    let checked = rtcdoc(&args, d);
+    assert_eq!(checked.status.code(), Some(0), "{}", stderr(&checked));
+}
+
+/// `[serve] open = true` opens a browser (the platform's opener, here a stand-in that notes
+/// the URL); `--no-open` turns it off.
+#[cfg(target_os = "linux")]
+#[test]
+fn no_open_overrides_the_configuration() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "in/a/RTC.xml", &xml_profile("A", &[]));
+    write(d, "in/rtcdoc.toml", "[serve]\nopen = true\n");
+    let opened = d.join("opened.txt");
+    let opener = d.join("bin/xdg-open");
+    write(
+        d,
+        "bin/xdg-open",
+        &format!("#!/bin/sh\necho \"$1\" >> '{}'\n", opened.display()),
+    );
+    std::fs::set_permissions(&opener, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let path = std::env::join_paths(std::iter::once(d.join("bin")).chain(std::env::split_paths(
+        &std::env::var_os("PATH").unwrap_or_default(),
+    )))
+    .unwrap();
+    let env = [("PATH", path)];
+    for (flags, opens) in [(&["--no-open"][..], false), (&[][..], true)] {
+        let mut args = vec!["serve", "in", "--port", "0"];
+        args.extend_from_slice(flags);
+        let (mut child, _rx, _lines) = common::serve_until_ready_with(&args, d, &env);
+        // The opener is started right after "serving at"; give it time to write.
+        let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
+        while opens && !opened.exists() && std::time::Instant::now() < deadline {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+        if !opens {
+            std::thread::sleep(std::time::Duration::from_millis(500));
+        }
+        let _ = child.kill();
+        let _ = child.wait();
+        assert_eq!(opened.exists(), opens, "{flags:?}");
+        if opens {
+            let url = std::fs::read_to_string(&opened).unwrap();
+            assert!(url.starts_with("http://127.0.0.1:"), "{url}");
+        }
+    }
+}

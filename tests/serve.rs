@@ -122,6 +122,33 @@ fn a_broken_profile_keeps_the_last_good_site() {
     assert!(ws.files() == &before, "the last good site stays");
 }
 
+/// A profile that grows past the size limit while served is reported (RTC002) from what was
+/// read up to the limit, not read whole.
+#[test]
+fn a_profile_grown_past_the_limit_is_reported_not_read() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("cat");
+    copy_examples(&input);
+    let mut opts = options(&input);
+    opts.load.limits.max_file_size = 64 * 1024;
+    let mut ws = Workspace::open(&opts).unwrap();
+    let pp = input.join("PathPlanner/RTC.xml");
+    let text = std::fs::read_to_string(&pp).unwrap();
+    let padding = "<!-- padding -->".repeat(8 * 1024);
+    std::fs::write(
+        &pp,
+        text.replacen("</rtc:BasicInfo>", &format!("</rtc:BasicInfo>{padding}"), 1),
+    )
+    .unwrap();
+    match ws.update(std::slice::from_ref(&pp)) {
+        Err(UpdateError::Profiles(d)) => {
+            assert_eq!(d[0].code, "RTC002", "{d:?}");
+            assert!(d[0].message.contains("65536"), "{}", d[0].message);
+        }
+        other => panic!("expected RTC002, got {other:?}"),
+    }
+}
+
 fn http_get(port: u16, path: &str) -> (String, String) {
     let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
     // A server that never answers fails the test instead of stalling the run.

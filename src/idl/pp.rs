@@ -112,9 +112,9 @@ impl<'a> Sources<'a> {
                 Diagnostic::error(
                     codes::LIMIT,
                     &path,
+                    // Read to one byte past the limit: the size beyond it is not known.
                     format!(
-                        "the file has {} bytes, more than the limit of {} bytes; it is not read",
-                        f.bytes.len(),
+                        "file is larger than the limit of {} bytes; it is not read",
                         self.opts.max_file_size
                     ),
                 )

@@ -145,9 +145,9 @@ impl Limits {
         Err(Diagnostic::error(
             crate::diagnostic::codes::TOO_LARGE,
             file,
+            // Files are read to one byte past the limit: the size beyond it is not known.
             format!(
-                "file is {} bytes, larger than the limit of {} bytes",
-                bytes.len(),
+                "file is larger than the limit of {} bytes; it is not read",
                 self.max_file_size
             ),
         )

@@ -183,11 +183,21 @@ pub fn serve_until_ready(
     args: &[&str],
     cwd: &Path,
 ) -> (std::process::Child, ServeLines, Vec<String>) {
+    serve_until_ready_with(args, cwd, &[])
+}
+
+/// [`serve_until_ready`] with extra environment variables.
+pub fn serve_until_ready_with(
+    args: &[&str],
+    cwd: &Path,
+    env: &[(&str, std::ffi::OsString)],
+) -> (std::process::Child, ServeLines, Vec<String>) {
     use std::io::BufRead;
     let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
         .args(args)
         .current_dir(cwd)
         .env("NO_COLOR", "1")
+        .envs(env.iter().map(|(k, v)| (k, v)))
         .stderr(std::process::Stdio::piped())
         .stdout(std::process::Stdio::null())
         .spawn()
