@@ -248,7 +248,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         }
     }
     let idl = idl?;
-    if files == 0 && systems.is_empty() && found.idl.is_empty() && !opts.allow_empty {
+    if files == 0
+        && systems.is_empty()
+        && failed_systems.is_empty()
+        && found.idl.is_empty()
+        && !opts.allow_empty
+    {
         if opts.sources_only {
             let names: Vec<&str> = opts
                 .sources

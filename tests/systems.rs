@@ -960,3 +960,25 @@ fn an_instance_links_to_the_nearest_profile_of_its_id() {
         .expect("Cam0 is linked");
     assert_eq!(linked.source, "a_lab/Cam/RTC.xml");
 }
+
+/// A system profile that cannot be read (Shift_JIS bytes under a UTF-8 declaration) is its
+/// error, even when it is the only file: not "nothing to document".
+#[test]
+fn an_unreadable_system_alone_is_reported() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let mut bytes = b"<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\" rts:id=\"RTSystem:V:S:1.0\" rts:comment=\"".to_vec();
+    // 「画像」 in Shift_JIS.
+    bytes.extend_from_slice(&[0x89, 0xe6, 0x91, 0x9c]);
+    bytes.extend_from_slice(b"\"/>\n");
+    std::fs::create_dir_all(d.join("in")).unwrap();
+    std::fs::write(d.join("in/System.xml"), &bytes).unwrap();
+    for input in ["in", "in/System.xml"] {
+        let out = common::rtcdoc(&["check", input], d);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{input}: {err}");
+        assert!(err.contains("error[RTC005]"), "{input}: {err}");
+        assert!(err.contains("in/System.xml"), "{input}: {err}");
+        assert!(!err.contains("nothing to document"), "{input}: {err}");
+    }
+}
