@@ -339,6 +339,15 @@ const CASES: &[Case] = &[
         says: "property `dataport.publisher.push_policy` of connector `odometry_odom` changed from `all` to `skip`",
     },
     Case {
+        code: "DIFF257",
+        path: "",
+        component: "RTSystem:Lab:NavigationSystem:1.0",
+        // Compared as one system: its other change is found, its new id is no change of its own.
+        all: &["DIFF252", "DIFF257"],
+        file: SYSTEM,
+        says: "RT System `NavSystem` (old/systems/NavSystem.xml) is now `NavigationSystem`: its id changed from `RTSystem:Lab:NavSystem:1.0` to `RTSystem:Lab:NavigationSystem:1.0`",
+    },
+    Case {
         code: "DIFF351",
         path: "",
         component: NAV_SYSTEM,
@@ -1014,4 +1023,25 @@ fn a_copy_of_openrtm_s_idl_added_is_one_info() {
     assert!(message.contains("is now read: its 2 type(s)"), "{message}");
     let (exit, json) = run(&dir, &["old", "old", "--fail-on", "info"]);
     assert_eq!(exit, 0, "{json:#}");
+}
+
+/// Two system files named on the command line hold one system each: a new id is that system
+/// renamed (DIFF257, its contents compared), not one system removed and another added.
+#[test]
+fn the_one_system_of_each_side_renamed_is_compared() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let pair = fixture("DIFF257");
+    for (from, to) in [
+        ("old/systems/NavSystem.xml", "NavSystem.xml"),
+        ("new/systems/NavSystem.xml", "NavSystem-renamed.xml"),
+    ] {
+        std::fs::copy(pair.join(from), d.join(to)).unwrap();
+    }
+    let (exit, json) = run(d, &["NavSystem.xml", "NavSystem-renamed.xml"]);
+    assert_eq!(codes_of(&json), ["DIFF252", "DIFF257"], "{json:#}");
+    assert_eq!(exit, 0, "warnings do not fail by default");
+    // A removed system beside another one (no one-to-one) stays removed.
+    let (_, json) = run(&fixture("DIFF151"), &["old", "new"]);
+    assert_eq!(codes_of(&json), ["DIFF151"], "{json:#}");
 }

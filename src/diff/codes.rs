@@ -99,6 +99,7 @@ pub const SYSTEM_EXECUTION_RATE: &str = "DIFF253";
 pub const SYSTEM_EXECUTION_CONTEXT: &str = "DIFF254";
 pub const SYSTEM_CONNECTOR_TRANSPORT: &str = "DIFF255";
 pub const SYSTEM_CONNECTOR_POLICY: &str = "DIFF256";
+pub const SYSTEM_RENAMED: &str = "DIFF257";
 pub const PORT_ADDED: &str = "DIFF301";
 pub const INTERFACE_ADDED: &str = "DIFF302";
 pub const CONFIGURATION_ADDED: &str = "DIFF303";
@@ -485,6 +486,13 @@ pub static CODES: &[Code] = &[
         name: "system-connector-policy-changed",
         summary: "a data connector of an RT System delivers data under another policy",
         explanation: "The subscription type (`flush`, `new`, `periodic`), push interval, push policy (`all`, `fifo`, `skip`, `new`), skip count or buffer settings of the connector changed: every connection still works, but the consumer may receive fewer, later or other samples (a `new` subscription drops samples the consumer is too slow for). The connector's `dataport.subscription_type`, `dataport.publisher.*`, `dataport.push_rate` and `dataport.*buffer*` properties count too.",
+    },
+    Code {
+        code: SYSTEM_RENAMED,
+        level: Warning,
+        name: "system-renamed",
+        summary: "an RT System profile names its system differently (another vendor or name in its id)",
+        explanation: "A system is matched by the vendor and name of its id. When no system of the other side has the id, a system of the same file (or the one system of each side) is taken as the same system renamed: its instances, connectors and configuration are then compared as usual. The file still restores the system; what names the system by its id (scripts, a name service context, documentation) must follow.",
     },
     Code {
         code: PORT_ADDED,

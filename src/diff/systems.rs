@@ -233,7 +233,8 @@ fn system_key(s: &LoadedSystem) -> String {
 /// only as removed (DIFF151) or added (DIFF351). Several systems with one id (RTSystemEditor's
 /// `DefaultSystem`) are paired by identical file path, then by identical values (copies), and
 /// when one is left on each side, those two; what is still left on both sides is DIFF003.
-/// Returns the counts.
+/// Systems left unpaired are then paired as renamed (DIFF257) by identical file path, or when
+/// each side holds just one system. Returns the counts.
 pub(super) fn compare_all(
     old: &[LoadedSystem],
     new: &[LoadedSystem],
@@ -253,60 +254,25 @@ pub(super) fn compare_all(
     for (i, s) in new.iter().enumerate() {
         groups.entry(system_key(s)).or_default().1.push(i);
     }
-    for (olds, news) in groups.into_values() {
-        let shared = olds.len() > 1 || news.len() > 1;
-        let label = |s: &LoadedSystem, file: &str| -> String {
-            match (non_empty(&s.system.id), shared) {
-                (Some(id), false) => id.to_string(),
-                (Some(id), true) => format!("{id} ({file})"),
-                (None, _) => format!("(no id: {file})"),
-            }
-        };
-        let mut pairs = Vec::new();
-        let (mut lo, mut ln) = (olds, news);
-        if lo.len() == 1 && ln.len() == 1 {
-            pairs.push((lo[0], ln[0]));
-            lo.clear();
-            ln.clear();
+    // Ids several systems of a side share: their systems are named with their file.
+    let shared: std::collections::BTreeSet<&str> = groups
+        .iter()
+        .filter(|(_, (o, n))| o.len() > 1 || n.len() > 1)
+        .map(|(k, _)| k.as_str())
+        .collect();
+    let label = |s: &LoadedSystem, file: &str| -> String {
+        match (
+            non_empty(&s.system.id),
+            shared.contains(system_key(s).as_str()),
+        ) {
+            (Some(id), false) => id.to_string(),
+            (Some(id), true) => format!("{id} ({file})"),
+            (None, _) => format!("(no id: {file})"),
         }
-        // Same file on both sides: the same system.
-        lo.retain(
-            |&o| match ln.iter().position(|&n| new[n].source == old[o].source) {
-                Some(at) => {
-                    pairs.push((o, ln.remove(at)));
-                    false
-                }
-                None => true,
-            },
-        );
-        // Copies: a system equal to one of the other side (positions aside) is that one.
-        if !lo.is_empty() && !ln.is_empty() {
-            let mut by_print: BTreeMap<String, Vec<usize>> = BTreeMap::new();
-            for &n in ln.iter().rev() {
-                by_print
-                    .entry(compare::fingerprint(&new[n].system))
-                    .or_default()
-                    .push(n);
-            }
-            lo.retain(|&o| {
-                match by_print
-                    .get_mut(&compare::fingerprint(&old[o].system))
-                    .and_then(Vec::pop)
-                {
-                    Some(n) => {
-                        ln.retain(|&x| x != n);
-                        pairs.push((o, n));
-                        false
-                    }
-                    None => true,
-                }
-            });
-        }
-        if lo.len() == 1 && ln.len() == 1 {
-            pairs.push((lo[0], ln[0]));
-            lo.clear();
-            ln.clear();
-        }
+    };
+    let (mut pairs, mut removed, mut added) = (Vec::new(), Vec::new(), Vec::new());
+    for (olds, news) in groups.values() {
+        let (lo, ln) = pair_group(olds.clone(), news.clone(), old, new, &mut pairs);
         if !lo.is_empty() && !ln.is_empty() {
             let files = |v: &[usize], s: &[LoadedSystem], name: Namer| {
                 v.iter().map(|&i| name(&s[i].source)).collect()
@@ -322,67 +288,182 @@ pub(super) fn compare_all(
                     ln.len()
                 ),
             ));
-            lo.clear();
-            ln.clear();
-        }
-        for (o, n) in pairs {
-            counts.matched += 1;
-            let (os, ns) = (&old[o], &new[n]);
-            let (of, nf) = (old_name(&os.source), new_name(&ns.source));
-            let found = compare_systems_as(&label(ns, &nf), &os.system, &ns.system);
-            if !found.is_empty() {
-                counts.changed += 1;
-            }
-            out.extend(found.into_iter().map(|mut c| {
-                c.file = Some(nf.clone());
-                c.old_file = Some(of.clone());
-                c
-            }));
-        }
-        for o in lo {
-            counts.removed += 1;
-            let s = &old[o];
-            let file = old_name(&s.source);
-            let at = Some(s.system.pos).filter(|p| p.line > 0);
-            let mut c = super::change(
-                codes::SYSTEM_REMOVED,
-                label(s, &file),
-                String::new(),
-                non_empty(&s.system.id).map(str::to_string),
-                None,
-                format!(
-                    "RT System `{}` ({file}, {} instance(s), {} connector(s)) was removed: it can no longer be restored",
-                    s.system.name(),
-                    s.system.components.len(),
-                    s.system.data_port_connectors.len() + s.system.service_port_connectors.len()
-                ),
-            );
-            c.old_file = Some(file);
-            c.old_line = at.map(|p| p.line);
-            c.old_column = at.map(|p| p.column);
-            out.push(c);
-        }
-        for n in ln {
-            counts.added += 1;
-            let s = &new[n];
-            let file = new_name(&s.source);
-            let mut c = super::change(
-                codes::SYSTEM_ADDED,
-                label(s, &file),
-                String::new(),
-                None,
-                non_empty(&s.system.id).map(str::to_string),
-                format!(
-                    "RT System `{}` ({file}, {} instance(s)) was added",
-                    s.system.name(),
-                    s.system.components.len()
-                ),
-            );
-            c.file = Some(file);
-            c.line = Some(s.system.pos.line).filter(|l| *l > 0);
-            c.column = Some(s.system.pos.column).filter(|_| s.system.pos.line > 0);
-            out.push(c);
+        } else {
+            removed.extend(lo);
+            added.extend(ln);
         }
     }
+    let renamed = pair_renamed(&mut removed, &mut added, old, new);
+    for (o, n, was_renamed) in pairs
+        .into_iter()
+        .map(|(o, n)| (o, n, false))
+        .chain(renamed.into_iter().map(|(o, n)| (o, n, true)))
+    {
+        counts.matched += 1;
+        let (os, ns) = (&old[o], &new[n]);
+        let (of, nf) = (old_name(&os.source), new_name(&ns.source));
+        let mut found = compare_systems_as(&label(ns, &nf), &os.system, &ns.system);
+        if was_renamed {
+            // The new id is the rename's, not a change of its own.
+            found.retain(|c| !(c.code == codes::SYSTEM_OTHER && c.path == "id"));
+            found.push(renamed_change(os, ns, &label(ns, &nf), &of));
+        }
+        if !found.is_empty() {
+            counts.changed += 1;
+        }
+        out.extend(found.into_iter().map(|mut c| {
+            c.file = Some(nf.clone());
+            c.old_file = Some(of.clone());
+            c
+        }));
+    }
+    for o in removed {
+        counts.removed += 1;
+        let s = &old[o];
+        let file = old_name(&s.source);
+        let at = Some(s.system.pos).filter(|p| p.line > 0);
+        let mut c = super::change(
+            codes::SYSTEM_REMOVED,
+            label(s, &file),
+            String::new(),
+            non_empty(&s.system.id).map(str::to_string),
+            None,
+            format!(
+                "RT System `{}` ({file}, {} instance(s), {} connector(s)) was removed: it can no longer be restored",
+                s.system.name(),
+                s.system.components.len(),
+                s.system.data_port_connectors.len() + s.system.service_port_connectors.len()
+            ),
+        );
+        c.old_file = Some(file);
+        c.old_line = at.map(|p| p.line);
+        c.old_column = at.map(|p| p.column);
+        out.push(c);
+    }
+    for n in added {
+        counts.added += 1;
+        let s = &new[n];
+        let file = new_name(&s.source);
+        let mut c = super::change(
+            codes::SYSTEM_ADDED,
+            label(s, &file),
+            String::new(),
+            None,
+            non_empty(&s.system.id).map(str::to_string),
+            format!(
+                "RT System `{}` ({file}, {} instance(s)) was added",
+                s.system.name(),
+                s.system.components.len()
+            ),
+        );
+        c.file = Some(file);
+        c.line = Some(s.system.pos.line).filter(|l| *l > 0);
+        c.column = Some(s.system.pos.column).filter(|_| s.system.pos.line > 0);
+        out.push(c);
+    }
     counts
+}
+
+/// Pairs the systems of one key ([`system_key`]) into `pairs`: one on each side, else by
+/// identical file path, then by identical values (copies), then the last one of each side.
+/// Returns the systems left on each side.
+fn pair_group(
+    mut lo: Vec<usize>,
+    mut ln: Vec<usize>,
+    old: &[LoadedSystem],
+    new: &[LoadedSystem],
+    pairs: &mut Vec<(usize, usize)>,
+) -> (Vec<usize>, Vec<usize>) {
+    if lo.len() == 1 && ln.len() == 1 {
+        pairs.push((lo[0], ln[0]));
+        return (Vec::new(), Vec::new());
+    }
+    // Same file on both sides: the same system.
+    lo.retain(
+        |&o| match ln.iter().position(|&n| new[n].source == old[o].source) {
+            Some(at) => {
+                pairs.push((o, ln.remove(at)));
+                false
+            }
+            None => true,
+        },
+    );
+    // Copies: a system equal to one of the other side (positions aside) is that one.
+    if !lo.is_empty() && !ln.is_empty() {
+        let mut by_print: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+        for &n in ln.iter().rev() {
+            by_print
+                .entry(compare::fingerprint(&new[n].system))
+                .or_default()
+                .push(n);
+        }
+        lo.retain(|&o| {
+            match by_print
+                .get_mut(&compare::fingerprint(&old[o].system))
+                .and_then(Vec::pop)
+            {
+                Some(n) => {
+                    ln.retain(|&x| x != n);
+                    pairs.push((o, n));
+                    false
+                }
+                None => true,
+            }
+        });
+    }
+    if lo.len() == 1 && ln.len() == 1 {
+        pairs.push((lo[0], ln[0]));
+        return (Vec::new(), Vec::new());
+    }
+    (lo, ln)
+}
+
+/// Of the systems no system of the other side shares an id with, the pairs that are one
+/// system renamed: the same file on both sides, or the one system of each side. They are
+/// taken out of `removed` and `added`.
+fn pair_renamed(
+    removed: &mut Vec<usize>,
+    added: &mut Vec<usize>,
+    old: &[LoadedSystem],
+    new: &[LoadedSystem],
+) -> Vec<(usize, usize)> {
+    let mut pairs = Vec::new();
+    if old.len() == 1 && new.len() == 1 && removed.len() == 1 && added.len() == 1 {
+        pairs.push((removed[0], added[0]));
+        removed.clear();
+        added.clear();
+        return pairs;
+    }
+    removed.retain(
+        |&o| match added.iter().position(|&n| new[n].source == old[o].source) {
+            Some(at) => {
+                pairs.push((o, added.remove(at)));
+                false
+            }
+            None => true,
+        },
+    );
+    pairs
+}
+
+/// DIFF257: the system of `os` is `ns` under another id.
+fn renamed_change(os: &LoadedSystem, ns: &LoadedSystem, label: &str, old_file: &str) -> Change {
+    let (from, to) = (non_empty(&os.system.id), non_empty(&ns.system.id));
+    let mut c = super::change(
+        codes::SYSTEM_RENAMED,
+        label.to_string(),
+        String::new(),
+        from.map(str::to_string),
+        to.map(str::to_string),
+        format!(
+            "RT System `{}` ({old_file}) is now `{}`: its id changed from {} to {}; the instances, connectors and configuration are compared as one system",
+            os.system.name(),
+            ns.system.name(),
+            from.map_or("none".to_string(), |i| format!("`{i}`")),
+            to.map_or("none".to_string(), |i| format!("`{i}`")),
+        ),
+    );
+    c.line = Some(ns.system.pos.line).filter(|l| *l > 0);
+    c.column = Some(ns.system.pos.column).filter(|_| ns.system.pos.line > 0);
+    c
 }
