@@ -373,6 +373,48 @@ fn offline_uses_the_cache_only_and_says_what_is_missing() {
     assert!(err.contains("source `nav`: git cannot fetch"), "{err}");
 }
 
+/// A first fetch that fails leaves nothing in the cache, and its error does not offer
+/// `--offline` (there is no cache to build from); `--offline` then says the source is not
+/// cached. Git's message names the path as written (`./x`, not `././x`). A mirror that holds
+/// nothing (an empty repository fetched) is not taken for a cached source either.
+#[test]
+fn a_failed_first_fetch_leaves_no_mirror_and_offers_no_offline_build() {
+    let p = Project::new();
+    p.config("[[source]]\ngit = \"./does-not-exist.git\"\nrev = \"main\"\n");
+    let (code, err) = p.run(&["build"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("source `does-not-exist`: git cannot fetch `./does-not-exist.git`"),
+        "{err}"
+    );
+    assert!(err.contains("'./does-not-exist.git'"), "{err}");
+    assert!(!err.contains("--offline"), "{err}");
+    let cached: Vec<_> = std::fs::read_dir(&p.cache)
+        .map(|d| d.flatten().map(|e| e.file_name()).collect())
+        .unwrap_or_default();
+    assert!(cached.is_empty(), "{cached:?}");
+    let (code, err) = p.run(&["build", "--offline"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("source `does-not-exist` (`./does-not-exist.git`) is not in the cache"),
+        "{err}"
+    );
+
+    let empty = p.root.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    git(&empty, &["init", "-q"]);
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\nrev = \"main\"\n",
+        url(&empty)
+    ));
+    let (code, err) = p.run(&["build"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("no branch, tag or commit `main`"), "{err}");
+    let (code, err) = p.run(&["build", "--offline"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("is not in the cache"), "{err}");
+}
+
 /// The `rtcdoc check` that a build's summary suggests works when followed: it repeats
 /// `--cache-dir`, `--offline` and `--locked`, so it reads the same cache without fetching.
 #[test]

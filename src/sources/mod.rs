@@ -175,7 +175,9 @@ pub fn check_url(git: &str, base: &Path) -> Result<String> {
     } else {
         base.join(p)
     };
-    Ok(abs.to_string_lossy().into_owned())
+    // `./x` beside a configuration in `.` is `./x`, not `././x` (as git would echo it).
+    let tidy: PathBuf = abs.components().collect();
+    Ok(tidy.to_string_lossy().into_owned())
 }
 
 /// A rev rtcdoc accepts: a branch, tag or commit name, never an option or a revision
@@ -566,9 +568,22 @@ fn is_mirror(mirror: &Path) -> bool {
     mirror.join("HEAD").is_file() && mirror.join("objects").is_dir()
 }
 
+/// Whether a mirror was ever fetched into: it holds a ref. A mirror left empty by a failed
+/// first fetch (as older rtcdoc left them) counts as not cached.
+fn fetched(mirror: &Path) -> bool {
+    if !is_mirror(mirror) {
+        return false;
+    }
+    let mut c = git_command(Some(mirror));
+    c.args(["for-each-ref", "--count=1", "--format=x"]);
+    run(c).is_ok_and(|o| o.status.success() && !o.stdout.is_empty())
+}
+
 /// Fetches a source's branches, tags and default branch into its mirror (created if needed);
-/// `commit`, when given and still missing, is asked for by name.
+/// `commit`, when given and still missing, is asked for by name. A first fetch that fails
+/// leaves no mirror behind.
 fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
+    let cached = fetched(mirror);
     if !is_mirror(mirror) {
         if let Some(parent) = mirror.parent() {
             std::fs::create_dir_all(parent).with_context(|| {
@@ -606,13 +621,26 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
     ])
     .arg(&s.url)
     .args(&specs);
-    run_ok(c, |why| {
+    let fetched = run_ok(c, |why| {
         format!(
-            "source `{}`: git cannot fetch `{}` ({why}); check the URL or path and your access to it (ssh key, token), or build with --offline from the cache",
+            "source `{}`: git cannot fetch `{}` ({why}); check the URL or path and your access to it (ssh key, token){}",
             s.name,
-            s.git
+            s.git,
+            if cached {
+                ", or build with --offline from the cache"
+            } else {
+                ""
+            }
         )
-    })?;
+    });
+    if let Err(e) = fetched {
+        if !cached && is_mirror(mirror) {
+            // Nothing was ever fetched into it: no mirror stays that `--offline` would take
+            // for a cached one.
+            let _ = std::fs::remove_dir_all(mirror);
+        }
+        return Err(e);
+    }
     if let Some(commit) = commit {
         if rev_parse(mirror, commit)?.is_none() {
             // Not on a branch or tag any more: ask for it by name (servers allow it when it
@@ -784,7 +812,7 @@ fn refresh(s: &Source, mirror: &Path, mode: &Mode, fill: &str) -> Result<()> {
     if !mode.offline {
         return fetch(s, mirror, None);
     }
-    if !is_mirror(mirror) {
+    if !fetched(mirror) {
         bail!(
             "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline{fill} to fill the cache",
             s.name,
