@@ -604,7 +604,19 @@ fn symbolic_links_and_submodules_are_not_followed() {
     std::fs::create_dir_all(repo.join("Linked")).unwrap();
     #[cfg(unix)]
     std::os::unix::fs::symlink(outside.join("RTC.xml"), repo.join("Linked/RTC.xml")).unwrap();
-    commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    let first = commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    // A submodule (a gitlink: a folder of another repository at a commit), named as folders
+    // are, without an extension.
+    git(
+        &repo,
+        &[
+            "update-index",
+            "--add",
+            "--cacheinfo",
+            &format!("160000,{first},vendor/sub"),
+        ],
+    );
+    git(&repo, &["commit", "-q", "-m", "submodule"]);
     p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
     let (code, err) = p.run(&["build", "-f", "json", "-v"]);
     assert_eq!(code, 0, "{err}");
@@ -613,6 +625,10 @@ fn symbolic_links_and_submodules_are_not_followed() {
         err.contains(
             "repo/Linked/RTC.xml: info[RTC015]: a symbolic link in the repository; not followed"
         ),
+        "{err}"
+    );
+    assert!(
+        err.contains("repo/vendor/sub: info[RTC015]: a submodule; its files are not read"),
         "{err}"
     );
 }

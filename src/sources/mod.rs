@@ -923,10 +923,13 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
             let mut meta = meta.split_whitespace();
             let (mode, ty, sha, size) = (meta.next(), meta.next(), meta.next(), meta.next());
             let shown = format!("{}/{rel}", s.name);
-            if !wanted(rel) || !safe(rel) {
+            if !safe(rel) {
                 continue;
             }
+            // A submodule is noted whatever its name (a folder of another repository); a file
+            // or a link only when rtcdoc would read a file of its name.
             match (mode, ty) {
+                _ if ty != Some("commit") && !wanted(rel) => {}
                 (Some("100644" | "100755"), Some("blob")) => {
                     if let (Some(sha), Some(_)) = (sha, size.and_then(|n| n.parse::<u64>().ok())) {
                         blobs.push((sha.to_string(), rel.to_string()));
