@@ -289,6 +289,32 @@ fn builds_keep_the_locked_commit_until_update_moves_it() {
     assert_eq!(p.component_names(), ["repo/A/RTC.xml", "repo/B/RTC.xml"]);
 }
 
+/// `rev = "HEAD"` (what `git ls-remote` lists first) is the remote's default branch, as no
+/// `rev` is: the checked-out branch of the repository, not another branch; `diff NAME@HEAD`
+/// too.
+#[test]
+fn rev_head_is_the_default_branch() {
+    let p = Project::new();
+    let repo = p.root.join("repo");
+    commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    git(&repo, &["checkout", "-q", "-b", "work"]);
+    let work = commit(&repo, &[("B/RTC.xml", xml_profile("B", &[]))], None);
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\nrev = \"HEAD\"\n",
+        url(&repo)
+    ));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        p.lock().contains(&work) && p.lock().contains("rev = \"HEAD\""),
+        "{}",
+        p.lock()
+    );
+    assert_eq!(p.component_names(), ["repo/A/RTC.xml", "repo/B/RTC.xml"]);
+    let (code, err) = p.run(&["diff", "repo", "repo@HEAD"]);
+    assert_eq!(code, 0, "{err}");
+}
+
 #[test]
 fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let p = Project::new();

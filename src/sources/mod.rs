@@ -38,7 +38,7 @@ use std::process::{Command, Stdio};
 pub struct SourceConfig {
     /// The repository: an https or ssh URL, `git@host:path`, a `file://` URL or a local path.
     pub git: String,
-    /// A branch, tag or commit; default the remote's default branch.
+    /// A branch, tag or commit; default (or `HEAD`) the remote's default branch.
     pub rev: Option<String>,
     /// The sub-folder to document; default the whole repository.
     pub path: Option<String>,
@@ -544,10 +544,16 @@ fn no_folder(s: &Source, commit: &str) -> anyhow::Error {
     )
 }
 
+/// Whether `rev` means the remote's default branch: none given, or `HEAD` (as `git ls-remote`
+/// lists it first).
+fn default_branch(rev: Option<&str>) -> bool {
+    rev.is_none_or(|r| r == "HEAD")
+}
+
 /// The commit `rev` names in the mirror: a branch, else a tag, else a commit (full or
-/// abbreviated hex); `None`: the remote's default branch.
+/// abbreviated hex); `None` or `HEAD`: the remote's default branch.
 fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
-    let Some(rev) = rev else {
+    let Some(rev) = rev.filter(|r| !default_branch(Some(r))) else {
         return rev_parse(mirror, DEFAULT_REF);
     };
     for r in [format!("refs/heads/{rev}"), format!("refs/tags/{rev}")] {
@@ -604,7 +610,7 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
         "+refs/heads/*:refs/heads/*".to_string(),
         "+refs/tags/*:refs/tags/*".to_string(),
     ];
-    if s.rev.is_none() {
+    if default_branch(s.rev.as_deref()) {
         specs.push(format!("+HEAD:{DEFAULT_REF}"));
     }
     let mut c = git_command(Some(mirror));
@@ -757,7 +763,7 @@ pub fn prepare(
                 refresh(s, &mirror, mode, " (or `rtcdoc update`)")?;
                 match resolve(&mirror, s.rev.as_deref())? {
                     Some(c) => c,
-                    None => match &s.rev {
+                    None => match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
                         Some(rev) => bail!(
                             "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `git ls-remote {}` and fix `rev` in rtcdoc.toml",
                             s.name,
