@@ -315,6 +315,41 @@ fn rev_head_is_the_default_branch() {
     assert_eq!(code, 0, "{err}");
 }
 
+/// The `git ls-remote` a bad `rev` suggests works from where rtcdoc was run, not only from the
+/// folder of `rtcdoc.toml` (its `git` path is relative to that folder).
+#[test]
+fn the_suggested_ls_remote_works_from_the_current_directory() {
+    let p = Project::new();
+    commit(
+        &p.proj.join("repo"),
+        &[("A/RTC.xml", xml_profile("A", &[]))],
+        None,
+    );
+    write(
+        &p.proj,
+        "cfg/rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\nrev = \"no-such\"\n",
+    );
+    let (code, err) = p.run(&["build", "--config", "cfg/rtcdoc.toml"]);
+    assert_eq!(code, 2, "{err}");
+    let command = err
+        .split("list them with `")
+        .nth(1)
+        .and_then(|rest| rest.split('`').next())
+        .unwrap_or_else(|| panic!("a git ls-remote to run: {err}"));
+    assert!(command.starts_with("git ls-remote "), "{err}");
+    let o = Command::new("sh")
+        .args(["-c", command])
+        .current_dir(&p.proj)
+        .output_within(common::COMMAND_LIMIT)
+        .unwrap();
+    assert!(
+        o.status.success() && String::from_utf8_lossy(&o.stdout).contains("refs/heads/main"),
+        "{command}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
 #[test]
 fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let p = Project::new();

@@ -567,6 +567,13 @@ fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
     Ok(None)
 }
 
+/// The `git ls-remote` that lists a source's branches and tags, run from the current
+/// directory: a local path as git is given it (made relative to where rtcdoc runs, not to
+/// `rtcdoc.toml`).
+fn ls_remote(s: &Source) -> String {
+    format!("git ls-remote {}", crate::quote::shell_word(&s.url))
+}
+
 /// Where the remote's default branch is kept in a mirror.
 const DEFAULT_REF: &str = "refs/rtcdoc/default";
 
@@ -765,12 +772,12 @@ pub fn prepare(
                     Some(c) => c,
                     None => match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
                         Some(rev) => bail!(
-                            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `git ls-remote {}` and fix `rev` in rtcdoc.toml",
+                            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `{}` and fix `rev` in rtcdoc.toml",
                             s.name,
                             s.git,
                             shallow_note(&mirror),
                             if mode.offline { " (as cached: run without --offline to fetch)" } else { "" },
-                            s.git
+                            ls_remote(s)
                         ),
                         None => bail!(
                             "source `{}`: `{}` has no default branch (an empty repository?); push a commit or set `rev`",
@@ -839,11 +846,11 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
     refresh(&s, &mirror, mode, "")?;
     let Some(commit) = resolve(&mirror, Some(rev))? else {
         bail!(
-            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `git ls-remote {}`",
+            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `{}`",
             s.name,
             s.git,
             shallow_note(&mirror),
-            s.git
+            ls_remote(&s)
         );
     };
     Ok(Pinned {
