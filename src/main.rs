@@ -123,6 +123,8 @@ impl SourceArgs {
             cache_dir: self.cache_dir.clone(),
             locked: self.locked,
             offline: self.offline,
+            // Filled by `config::pin_sources`, which knows the file read.
+            config: None,
         }
     }
 }

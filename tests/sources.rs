@@ -350,6 +350,66 @@ fn the_suggested_ls_remote_works_from_the_current_directory() {
     );
 }
 
+/// The `rtcdoc update` that the --locked and --offline errors suggest carries the --config and
+/// --cache-dir given: following it writes the lock the command reads and fills the cache it
+/// reads, so the command then succeeds.
+#[test]
+fn the_suggested_update_carries_config_and_cache_dir() {
+    let p = Project::new();
+    commit(
+        &p.proj.join("repo"),
+        &[("A/RTC.xml", xml_profile("A", &[]))],
+        None,
+    );
+    write(
+        &p.proj,
+        "cfg/rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\n",
+    );
+    let run = |args: &[&str]| {
+        let mut all = args.to_vec();
+        all.extend(["--config", "cfg/rtcdoc.toml", "--cache-dir", "../cache2"]);
+        all.extend(["-f", "json"]);
+        let o = rtcdoc(&all, &p.proj);
+        (
+            o.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&o.stderr).into_owned(),
+        )
+    };
+    // Runs the `rtcdoc update …` the error names, as printed, from the same directory.
+    let follow = |err: &str| {
+        let command = err
+            .split('`')
+            .find(|c| c.starts_with("rtcdoc update"))
+            .unwrap_or_else(|| panic!("an rtcdoc update to run: {err}"));
+        assert_eq!(
+            command, "rtcdoc update --config cfg/rtcdoc.toml --cache-dir ../cache2",
+            "{err}"
+        );
+        let bin = env!("CARGO_BIN_EXE_rtcdoc");
+        let o = Command::new("sh")
+            .args(["-c", &command.replacen("rtcdoc", &format!("'{bin}'"), 1)])
+            .current_dir(&p.proj)
+            .output_within(common::COMMAND_LIMIT)
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    let (code, err) = run(&["build", "--locked"]);
+    assert_eq!(code, 2, "{err}");
+    follow(&err);
+    assert!(p.proj.join("cfg/rtcdoc.lock").is_file());
+    let (code, err) = run(&["build", "--locked"]);
+    assert_eq!(code, 0, "{err}");
+
+    std::fs::remove_dir_all(p.root.join("cache2")).unwrap();
+    let (code, err) = run(&["build", "--offline"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--offline forbids fetching"), "{err}");
+    follow(&err);
+    let (code, err) = run(&["build", "--offline", "--locked"]);
+    assert_eq!(code, 0, "{err}");
+}
+
 #[test]
 fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let p = Project::new();
@@ -358,7 +418,10 @@ fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let (code, err) = p.run(&["build", "--locked"]);
     assert_eq!(code, 2);
     assert!(
-        err.contains("--locked: there is no `./rtcdoc.lock`; run `rtcdoc update`"),
+        err.contains(&format!(
+            "--locked: there is no `./rtcdoc.lock`; run `rtcdoc update --cache-dir {}`",
+            p.cache
+        )),
         "{err}"
     );
     assert!(!p.proj.join("site").exists() && !p.proj.join("rtcdoc.lock").exists());
@@ -625,7 +688,10 @@ fn a_lock_naming_a_commit_the_remote_lost_says_to_update() {
         err.contains("source `repo`: `file://") && err.contains("no longer has the commit"),
         "{err}"
     );
-    assert!(err.contains("run `rtcdoc update repo`"), "{err}");
+    assert!(
+        err.contains(&format!("run `rtcdoc update repo --cache-dir {other}`")),
+        "{err}"
+    );
     let o = rtcdoc(&["update", "--cache-dir", &other], &p.proj);
     assert!(o.status.success());
     let o = rtcdoc(&["build", "--cache-dir", &other], &p.proj);

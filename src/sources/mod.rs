@@ -96,6 +96,31 @@ pub struct Mode {
     pub cache_dir: Option<PathBuf>,
     pub locked: bool,
     pub offline: bool,
+    /// The configuration file, when `rtcdoc update` would not find it by itself (it is not
+    /// `rtcdoc.toml` in the current directory): named in the commands the errors suggest.
+    pub config: Option<PathBuf>,
+}
+
+impl Mode {
+    /// `rtcdoc update [NAME]` with the `--config` and `--cache-dir` that make it act on the
+    /// same configuration and cache as the command that suggests it.
+    pub fn update_command(&self, name: Option<&str>) -> String {
+        use crate::quote::shell_word;
+        let mut cmd = "rtcdoc update".to_string();
+        if let Some(n) = name {
+            cmd.push(' ');
+            cmd.push_str(&shell_word(n));
+        }
+        if let Some(c) = &self.config {
+            cmd.push_str(" --config ");
+            cmd.push_str(&shell_word(&c.to_string_lossy()));
+        }
+        if let Some(d) = &self.cache_dir {
+            cmd.push_str(" --cache-dir ");
+            cmd.push_str(&shell_word(&d.to_string_lossy()));
+        }
+        cmd
+    }
 }
 
 /// The sources of a configuration, checked: names unique, URLs, revs and paths safe. `base`
@@ -694,7 +719,7 @@ pub fn prepare(
     mode: &Mode,
     update: Option<&[String]>,
 ) -> Result<(Vec<Pinned>, lock::Changes)> {
-    let old = lock::read(lock_path)?;
+    let old = lock::read(lock_path, &mode.update_command(None))?;
     if let Some(names) = update {
         for n in names {
             if !sources.iter().any(|s| &s.name == n) {
@@ -727,16 +752,17 @@ pub fn prepare(
         if mode.locked {
             if old.is_none() {
                 bail!(
-                    "--locked: there is no `{}`; run `rtcdoc update` (or a build without --locked) to write it, and commit it",
-                    lock_path.display()
+                    "--locked: there is no `{}`; run `{}` (or a build without --locked) to write it, and commit it",
+                    lock_path.display(),
+                    mode.update_command(None)
                 );
             }
             if locked.is_none() || update.is_some() {
                 bail!(
-                    "--locked: `{}` would have to change: the source `{}` is new or its `git` or `rev` was edited; run `rtcdoc update {}` and commit the lock",
+                    "--locked: `{}` would have to change: the source `{}` is new or its `git` or `rev` was edited; run `{}` and commit the lock",
                     lock_path.display(),
                     s.name,
-                    s.name
+                    mode.update_command(Some(&s.name))
                 );
             }
         }
@@ -746,20 +772,21 @@ pub fn prepare(
                 if rev_parse(&mirror, &commit)?.is_none() {
                     if mode.offline {
                         bail!(
-                            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `rtcdoc update`) to fill the cache",
+                            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `{}`) to fill the cache",
                             s.name,
-                            mirror.display()
+                            mirror.display(),
+                            mode.update_command(None)
                         );
                     }
                     fetch(s, &mirror, Some(&commit))?;
                     if rev_parse(&mirror, &commit)?.is_none() {
                         bail!(
-                            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `rtcdoc update {}` to move to the current `{}`",
+                            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `{}` to move to the current `{}`",
                             s.name,
                             s.git,
                             lock_path.display(),
                             shallow_note(&mirror),
-                            s.name,
+                            mode.update_command(Some(&s.name)),
                             s.rev.as_deref().unwrap_or("default branch")
                         );
                     }
@@ -767,7 +794,12 @@ pub fn prepare(
                 commit
             }
             None => {
-                refresh(s, &mirror, mode, " (or `rtcdoc update`)")?;
+                refresh(
+                    s,
+                    &mirror,
+                    mode,
+                    &format!(" (or `{}`)", mode.update_command(None)),
+                )?;
                 match resolve(&mirror, s.rev.as_deref())? {
                     Some(c) => c,
                     None => match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
@@ -809,9 +841,10 @@ pub fn prepare(
     if old.as_ref() != Some(&new_lock) {
         if mode.locked {
             bail!(
-                "--locked: `{}` would have to change ({}); run `rtcdoc update` and commit the lock",
+                "--locked: `{}` would have to change ({}); run `{}` and commit the lock",
                 lock_path.display(),
-                changes.describe()
+                changes.describe(),
+                mode.update_command(None)
             );
         }
         lock::write(lock_path, &new_lock)?;
