@@ -87,10 +87,11 @@ pub struct Loaded {
 }
 
 impl Loaded {
-    /// Resolves a path from the file against the file's directory.
+    /// Resolves a path from the file against the file's directory (`input = "."` beside a
+    /// file in `.` is `.`, not `./.`).
     pub fn resolve(&self, p: &Path) -> PathBuf {
         match &self.dir {
-            Some(d) if p.is_relative() => d.join(p),
+            Some(d) if p.is_relative() => d.join(p).components().collect(),
             _ => p.to_path_buf(),
         }
     }

@@ -410,6 +410,50 @@ fn the_suggested_update_carries_config_and_cache_dir() {
     assert_eq!(code, 0, "{err}");
 }
 
+/// A folder of the input named like a source: the error says why an exclude pattern is no
+/// way out (the source's files are named `<name>/…` too) and names a source name that works,
+/// and the input is named as written (`.`, not `./.`).
+#[test]
+fn a_folder_named_like_a_source_names_a_way_out_that_works() {
+    let p = Project::new();
+    let repo = p.root.join("repo");
+    commit(&repo, &[("B/RTC.xml", xml_profile("B", &[]))], None);
+    write(&p.proj, "a/prof/RTC.xml", &xml_profile("Prof", &[]));
+    let table = format!("[[source]]\ngit = \"{}\"\nname = \"a\"\n", url(&repo));
+    p.config(&format!("input = \".\"\n{table}"));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains(
+            "`a/prof/RTC.xml` of the input directory `.` is in a folder named like a source (`a`)"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("an `exclude` pattern for it would leave out the source's files as well"),
+        "{err}"
+    );
+    let name = err
+        .split("name = \"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .unwrap_or_else(|| panic!("a name to give: {err}"));
+    p.config(&format!(
+        "input = \".\"\n{}",
+        table.replace("name = \"a\"", &format!("name = \"{name}\""))
+    ));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        p.component_names(),
+        ["a-source/B/RTC.xml", "a/prof/RTC.xml"]
+    );
+    assert!(
+        err.contains("(details: rtcdoc check . --cache-dir"),
+        "{err}"
+    );
+}
+
 #[test]
 fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let p = Project::new();
