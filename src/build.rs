@@ -135,10 +135,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             .chain(&found.idl)
             .find(|(_, rel)| rel.split('/').next().is_some_and(|f| names.contains(&f)))
         {
+            // Not "exclude the folder": the source's files are named `<name>/…` too, and an
+            // exclude pattern matching the folder leaves them out as well.
+            let folder = rel.split('/').next().unwrap_or_default();
             bail!(
-                "`{rel}` of the input directory `{}` is in a folder named like a source (`{}`); rename that [[source]] (`name = \"…\"`) or exclude the folder",
+                "`{rel}` of the input directory `{}` is in a folder named like a source (`{folder}`): the source's files are named `{folder}/…` too; give that [[source]] another name (`name = \"{folder}-source\"`) or move the folder out of the input directory (an `exclude` pattern for it would leave out the source's files as well)",
                 input.display(),
-                rel.split('/').next().unwrap_or_default()
             );
         }
         let mut from_sources = walk::candidates(

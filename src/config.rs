@@ -87,10 +87,11 @@ pub struct Loaded {
 }
 
 impl Loaded {
-    /// Resolves a path from the file against the file's directory.
+    /// Resolves a path from the file against the file's directory (`input = "."` beside a
+    /// file in `.` is `.`, not `./.`).
     pub fn resolve(&self, p: &Path) -> PathBuf {
         match &self.dir {
-            Some(d) if p.is_relative() => d.join(p),
+            Some(d) if p.is_relative() => d.join(p).components().collect(),
             _ => p.to_path_buf(),
         }
     }
@@ -548,10 +549,21 @@ pub fn pin_sources(
                 .display()
         )
     })?;
+    // The commands the errors suggest (`rtcdoc update`) name the file unless it is the one
+    // they would find: `rtcdoc.toml` in the current directory.
+    let in_cwd = |p: &Path| {
+        p.file_name() == Some(std::ffi::OsStr::new(FILE_NAME))
+            && p.parent()
+                .is_none_or(|d| d.as_os_str().is_empty() || d == Path::new("."))
+    };
+    let mode = crate::sources::Mode {
+        config: file.path.clone().filter(|p| !in_cwd(p)),
+        ..mode.clone()
+    };
     crate::sources::prepare(
         &sources,
         &base.join(crate::sources::lock::FILE_NAME),
-        mode,
+        &mode,
         update,
     )
 }

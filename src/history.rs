@@ -193,6 +193,35 @@ fn attach_components(
             c.history = h;
         }
     }
+    let undated: Vec<&str> = catalog
+        .components
+        .iter()
+        .filter(|c| wanted(c))
+        .flat_map(|c| &c.backups)
+        .filter(|b| b.saved.is_none())
+        .map(|b| b.source.as_str())
+        .collect();
+    if let Some(note) = undated_backups_note(&undated) {
+        catalog.history_notes.push(note);
+    }
+}
+
+/// The note on backups whose names hold no valid save date and time
+/// ([`crate::catalog::backups::saved_at`]): they cannot be placed among the versions, so the
+/// history leaves them out (they are still listed on the component's page).
+fn undated_backups_note(files: &[&str]) -> Option<String> {
+    let first = files.first()?;
+    let (what, it, each) = match files.len() {
+        1 => (format!("the backup `{first}` has"), "it is", "it"),
+        n => (
+            format!("{n} backups (the first, `{first}`) have"),
+            "they are",
+            "each",
+        ),
+    };
+    Some(format!(
+        "{what} no valid save date and time in the name (`RTC.xml` then yyyymmddhhmmss), so {it} left out of the history (a version without a date has no place in it); rename {each} by the time it was saved (`RTC.xml20240131235900`), or delete it"
+    ))
 }
 
 /// The repositories histories are read from, each once.
@@ -919,11 +948,13 @@ fn history_of(
     current: Option<(usize, String)>,
     idl: &crate::idl::IdlSet,
 ) -> Vec<Entry> {
-    // Backups, newest first, merged into the commits by date.
+    // Backups, newest first, merged into the commits by date; one whose name holds no date
+    // has no place among them and is left out ([`undated_backups_note`] says so).
     let mut backups: Vec<Version> = c
         .backups
         .iter()
         .enumerate()
+        .filter(|(_, b)| b.saved.is_some())
         .map(|(i, b)| Version {
             added: false,
             at: Where::Backup(i),

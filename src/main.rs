@@ -7,6 +7,7 @@ use rtcdoc::build::{self, Progress};
 use rtcdoc::config::{self, Overrides};
 use rtcdoc::diagnostic::Severity;
 use rtcdoc::i18n::Lang;
+use rtcdoc::quote::shell_word as shell_quote;
 use rtcdoc::render::Format;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -124,6 +125,8 @@ impl SourceArgs {
             cache_dir: self.cache_dir.clone(),
             locked: self.locked,
             offline: self.offline,
+            // Filled by `config::pin_sources`, which knows the file read.
+            config: None,
         }
     }
 }
@@ -675,18 +678,6 @@ fn check_command_sources(file: &config::Loaded, read: &ReadArgs) -> String {
     }
     cmd.replacen("rtcdoc check . ", "rtcdoc check ", 1)
         .replacen("rtcdoc check .", "rtcdoc check", 1)
-}
-
-/// `s` as one POSIX shell word.
-fn shell_quote(s: &str) -> String {
-    let plain = !s.is_empty()
-        && s.bytes()
-            .all(|b| b.is_ascii_alphanumeric() || b"_./:=@%+,-".contains(&b));
-    if plain {
-        s.to_string()
-    } else {
-        format!("'{}'", s.replace('\'', "'\\''"))
-    }
 }
 
 /// The READMEs of the components and the images they show (paths relative to the input).

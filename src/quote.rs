@@ -12,6 +12,19 @@ pub fn code_span(s: &str) -> String {
     Code(s).to_string()
 }
 
+/// `s` as one word of a POSIX shell, for a command a message tells the user to run: as is when
+/// it holds only characters no shell reads specially, else in single quotes.
+pub fn shell_word(s: &str) -> String {
+    let plain = !s.is_empty()
+        && s.bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b"_./:=@%+,-".contains(&b));
+    if plain {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', "'\\''"))
+    }
+}
+
 /// A value quoted as one code span where it is formatted (`format!("value {}", Code(v))`):
 /// [`code_span`] without a string of its own.
 #[derive(Debug, Clone, Copy)]

@@ -223,6 +223,88 @@ fn backups_are_the_history_without_git() {
     assert_eq!(h[3]["first"], true);
 }
 
+/// A backup whose name holds no date of the calendar (month 13) cannot be placed among the
+/// versions: it is left out of the history, with a note saying why and what to do, and the
+/// real oldest backup stays the first version (not compared with it: no false DIFF102). It is
+/// still listed as a backup of the component.
+#[test]
+fn a_backup_named_with_an_impossible_date_is_left_out_of_the_history_with_a_note() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let v = versions();
+    write(&input, "Base/RTC.xml20240101090000", &v[0].1);
+    write(&input, "Base/RTC.xml20201345999999", &v[1].1);
+    write(&input, "Base/RTC.xml", &v[1].1);
+    let out = dir.path().join("site");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            input.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "-f",
+            "json",
+        ],
+        dir.path(),
+    );
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(o.status.success(), "{err}");
+    assert!(
+        err.contains("warning: history: the backup `Base/RTC.xml20201345999999` has no valid save date and time in the name"),
+        "{err}"
+    );
+    assert!(err.contains("rename it by the time it was saved"), "{err}");
+    let json: Value = serde_json::from_str(&page(&out, "catalog.json")).unwrap();
+    let c = &json["components"]["RTC:Lab:Mobile:Base:1.0.0"];
+    let h = c["history"].as_array().unwrap();
+    let files: Vec<&str> = h.iter().map(|e| e["file"].as_str().unwrap()).collect();
+    assert_eq!(
+        files,
+        ["Base/RTC.xml", "Base/RTC.xml20240101090000"],
+        "{h:#?}"
+    );
+    assert_eq!(h[1]["first"], true);
+    assert_eq!(codes(&h[0]), ["DIFF301"]);
+    let backups: Vec<&str> = c["backups"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| b["source"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        backups,
+        ["Base/RTC.xml20201345999999", "Base/RTC.xml20240101090000"]
+    );
+    assert!(c["backups"][0].get("saved").is_none());
+
+    // Renamed by its save time, as the note says, it takes its place among the versions.
+    std::fs::rename(
+        input.join("Base/RTC.xml20201345999999"),
+        input.join("Base/RTC.xml20240102090000"),
+    )
+    .unwrap();
+    let o = common::rtcdoc(
+        &[
+            "build",
+            input.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "-f",
+            "json",
+        ],
+        dir.path(),
+    );
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert!(o.status.success() && !err.contains("history:"), "{err}");
+    let json: Value = serde_json::from_str(&page(&out, "catalog.json")).unwrap();
+    let h = json["components"]["RTC:Lab:Mobile:Base:1.0.0"]["history"]
+        .as_array()
+        .unwrap()
+        .clone();
+    assert_eq!(h.len(), 3, "{h:#?}");
+    assert_eq!(h[1]["file"], "Base/RTC.xml20240102090000");
+}
+
 #[test]
 fn the_component_page_has_a_history_section_in_every_output() {
     let dir = tempfile::tempdir().unwrap();

@@ -289,6 +289,171 @@ fn builds_keep_the_locked_commit_until_update_moves_it() {
     assert_eq!(p.component_names(), ["repo/A/RTC.xml", "repo/B/RTC.xml"]);
 }
 
+/// `rev = "HEAD"` (what `git ls-remote` lists first) is the remote's default branch, as no
+/// `rev` is: the checked-out branch of the repository, not another branch; `diff NAME@HEAD`
+/// too.
+#[test]
+fn rev_head_is_the_default_branch() {
+    let p = Project::new();
+    let repo = p.root.join("repo");
+    commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    git(&repo, &["checkout", "-q", "-b", "work"]);
+    let work = commit(&repo, &[("B/RTC.xml", xml_profile("B", &[]))], None);
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\nrev = \"HEAD\"\n",
+        url(&repo)
+    ));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        p.lock().contains(&work) && p.lock().contains("rev = \"HEAD\""),
+        "{}",
+        p.lock()
+    );
+    assert_eq!(p.component_names(), ["repo/A/RTC.xml", "repo/B/RTC.xml"]);
+    let (code, err) = p.run(&["diff", "repo", "repo@HEAD"]);
+    assert_eq!(code, 0, "{err}");
+}
+
+/// The `git ls-remote` a bad `rev` suggests works from where rtcdoc was run, not only from the
+/// folder of `rtcdoc.toml` (its `git` path is relative to that folder).
+#[test]
+fn the_suggested_ls_remote_works_from_the_current_directory() {
+    let p = Project::new();
+    commit(
+        &p.proj.join("repo"),
+        &[("A/RTC.xml", xml_profile("A", &[]))],
+        None,
+    );
+    write(
+        &p.proj,
+        "cfg/rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\nrev = \"no-such\"\n",
+    );
+    let (code, err) = p.run(&["build", "--config", "cfg/rtcdoc.toml"]);
+    assert_eq!(code, 2, "{err}");
+    let command = err
+        .split("list them with `")
+        .nth(1)
+        .and_then(|rest| rest.split('`').next())
+        .unwrap_or_else(|| panic!("a git ls-remote to run: {err}"));
+    assert!(command.starts_with("git ls-remote "), "{err}");
+    let o = Command::new("sh")
+        .args(["-c", command])
+        .current_dir(&p.proj)
+        .output_within(common::COMMAND_LIMIT)
+        .unwrap();
+    assert!(
+        o.status.success() && String::from_utf8_lossy(&o.stdout).contains("refs/heads/main"),
+        "{command}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+/// The `rtcdoc update` that the --locked and --offline errors suggest carries the --config and
+/// --cache-dir given: following it writes the lock the command reads and fills the cache it
+/// reads, so the command then succeeds.
+#[test]
+fn the_suggested_update_carries_config_and_cache_dir() {
+    let p = Project::new();
+    commit(
+        &p.proj.join("repo"),
+        &[("A/RTC.xml", xml_profile("A", &[]))],
+        None,
+    );
+    write(
+        &p.proj,
+        "cfg/rtcdoc.toml",
+        "[[source]]\ngit = \"../repo\"\n",
+    );
+    let run = |args: &[&str]| {
+        let mut all = args.to_vec();
+        all.extend(["--config", "cfg/rtcdoc.toml", "--cache-dir", "../cache2"]);
+        all.extend(["-f", "json"]);
+        let o = rtcdoc(&all, &p.proj);
+        (
+            o.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&o.stderr).into_owned(),
+        )
+    };
+    // Runs the `rtcdoc update …` the error names, as printed, from the same directory.
+    let follow = |err: &str| {
+        let command = err
+            .split('`')
+            .find(|c| c.starts_with("rtcdoc update"))
+            .unwrap_or_else(|| panic!("an rtcdoc update to run: {err}"));
+        assert_eq!(
+            command, "rtcdoc update --config cfg/rtcdoc.toml --cache-dir ../cache2",
+            "{err}"
+        );
+        let bin = env!("CARGO_BIN_EXE_rtcdoc");
+        let o = Command::new("sh")
+            .args(["-c", &command.replacen("rtcdoc", &format!("'{bin}'"), 1)])
+            .current_dir(&p.proj)
+            .output_within(common::COMMAND_LIMIT)
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    let (code, err) = run(&["build", "--locked"]);
+    assert_eq!(code, 2, "{err}");
+    follow(&err);
+    assert!(p.proj.join("cfg/rtcdoc.lock").is_file());
+    let (code, err) = run(&["build", "--locked"]);
+    assert_eq!(code, 0, "{err}");
+
+    std::fs::remove_dir_all(p.root.join("cache2")).unwrap();
+    let (code, err) = run(&["build", "--offline"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--offline forbids fetching"), "{err}");
+    follow(&err);
+    let (code, err) = run(&["build", "--offline", "--locked"]);
+    assert_eq!(code, 0, "{err}");
+}
+
+/// A folder of the input named like a source: the error says why an exclude pattern is no
+/// way out (the source's files are named `<name>/…` too) and names a source name that works,
+/// and the input is named as written (`.`, not `./.`).
+#[test]
+fn a_folder_named_like_a_source_names_a_way_out_that_works() {
+    let p = Project::new();
+    let repo = p.root.join("repo");
+    commit(&repo, &[("B/RTC.xml", xml_profile("B", &[]))], None);
+    write(&p.proj, "a/prof/RTC.xml", &xml_profile("Prof", &[]));
+    let table = format!("[[source]]\ngit = \"{}\"\nname = \"a\"\n", url(&repo));
+    p.config(&format!("input = \".\"\n{table}"));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains(
+            "`a/prof/RTC.xml` of the input directory `.` is in a folder named like a source (`a`)"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("an `exclude` pattern for it would leave out the source's files as well"),
+        "{err}"
+    );
+    let name = err
+        .split("name = \"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .unwrap_or_else(|| panic!("a name to give: {err}"));
+    p.config(&format!(
+        "input = \".\"\n{}",
+        table.replace("name = \"a\"", &format!("name = \"{name}\""))
+    ));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        p.component_names(),
+        ["a-source/B/RTC.xml", "a/prof/RTC.xml"]
+    );
+    assert!(
+        err.contains("(details: rtcdoc check . --cache-dir"),
+        "{err}"
+    );
+}
+
 #[test]
 fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let p = Project::new();
@@ -297,7 +462,10 @@ fn locked_fails_when_the_lock_is_missing_or_would_change() {
     let (code, err) = p.run(&["build", "--locked"]);
     assert_eq!(code, 2);
     assert!(
-        err.contains("--locked: there is no `./rtcdoc.lock`; run `rtcdoc update`"),
+        err.contains(&format!(
+            "--locked: there is no `./rtcdoc.lock`; run `rtcdoc update --cache-dir {}`",
+            p.cache
+        )),
         "{err}"
     );
     assert!(!p.proj.join("site").exists() && !p.proj.join("rtcdoc.lock").exists());
@@ -371,6 +539,48 @@ fn offline_uses_the_cache_only_and_says_what_is_missing() {
     let (code, err) = p.run(&["build"]);
     assert_eq!(code, 2);
     assert!(err.contains("source `nav`: git cannot fetch"), "{err}");
+}
+
+/// A first fetch that fails leaves nothing in the cache, and its error does not offer
+/// `--offline` (there is no cache to build from); `--offline` then says the source is not
+/// cached. Git's message names the path as written (`./x`, not `././x`). A mirror that holds
+/// nothing (an empty repository fetched) is not taken for a cached source either.
+#[test]
+fn a_failed_first_fetch_leaves_no_mirror_and_offers_no_offline_build() {
+    let p = Project::new();
+    p.config("[[source]]\ngit = \"./does-not-exist.git\"\nrev = \"main\"\n");
+    let (code, err) = p.run(&["build"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("source `does-not-exist`: git cannot fetch `./does-not-exist.git`"),
+        "{err}"
+    );
+    assert!(err.contains("'./does-not-exist.git'"), "{err}");
+    assert!(!err.contains("--offline"), "{err}");
+    let cached: Vec<_> = std::fs::read_dir(&p.cache)
+        .map(|d| d.flatten().map(|e| e.file_name()).collect())
+        .unwrap_or_default();
+    assert!(cached.is_empty(), "{cached:?}");
+    let (code, err) = p.run(&["build", "--offline"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("source `does-not-exist` (`./does-not-exist.git`) is not in the cache"),
+        "{err}"
+    );
+
+    let empty = p.root.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    git(&empty, &["init", "-q"]);
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\nrev = \"main\"\n",
+        url(&empty)
+    ));
+    let (code, err) = p.run(&["build"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("no branch, tag or commit `main`"), "{err}");
+    let (code, err) = p.run(&["build", "--offline"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("is not in the cache"), "{err}");
 }
 
 /// The `rtcdoc check` that a build's summary suggests works when followed: it repeats
@@ -522,7 +732,10 @@ fn a_lock_naming_a_commit_the_remote_lost_says_to_update() {
         err.contains("source `repo`: `file://") && err.contains("no longer has the commit"),
         "{err}"
     );
-    assert!(err.contains("run `rtcdoc update repo`"), "{err}");
+    assert!(
+        err.contains(&format!("run `rtcdoc update repo --cache-dir {other}`")),
+        "{err}"
+    );
     let o = rtcdoc(&["update", "--cache-dir", &other], &p.proj);
     assert!(o.status.success());
     let o = rtcdoc(&["build", "--cache-dir", &other], &p.proj);
@@ -562,7 +775,19 @@ fn symbolic_links_and_submodules_are_not_followed() {
     std::fs::create_dir_all(repo.join("Linked")).unwrap();
     #[cfg(unix)]
     std::os::unix::fs::symlink(outside.join("RTC.xml"), repo.join("Linked/RTC.xml")).unwrap();
-    commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    let first = commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
+    // A submodule (a gitlink: a folder of another repository at a commit), named as folders
+    // are, without an extension.
+    git(
+        &repo,
+        &[
+            "update-index",
+            "--add",
+            "--cacheinfo",
+            &format!("160000,{first},vendor/sub"),
+        ],
+    );
+    git(&repo, &["commit", "-q", "-m", "submodule"]);
     p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
     let (code, err) = p.run(&["build", "-f", "json", "-v"]);
     assert_eq!(code, 0, "{err}");
@@ -571,6 +796,10 @@ fn symbolic_links_and_submodules_are_not_followed() {
         err.contains(
             "repo/Linked/RTC.xml: info[RTC015]: a symbolic link in the repository; not followed"
         ),
+        "{err}"
+    );
+    assert!(
+        err.contains("repo/vendor/sub: info[RTC015]: a submodule; its files are not read"),
         "{err}"
     );
 }

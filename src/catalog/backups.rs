@@ -78,13 +78,18 @@ use crate::walk::backup_timestamp as timestamp;
 pub use crate::walk::is_backup_name;
 
 /// The save time a backup's name encodes (`yyyymmddhhmmss`, or just `yyyymmdd`), as
-/// `YYYY-MM-DD hh:mm:ss`; `None` when the digits are not a plausible date.
+/// `YYYY-MM-DD hh:mm:ss`; `None` when the digits are no date and time of a calendar (month 13,
+/// 31 February, hour 24): such a backup has no place among the versions of its profile, and the
+/// history leaves it out (with a note).
 pub fn saved_at(path: &str) -> Option<String> {
     let name = path.rsplit('/').next().unwrap_or(path);
     let d = timestamp(name)?;
     let num = |r: std::ops::Range<usize>| d.get(r).and_then(|s| s.parse::<u32>().ok());
     let (y, mo, day) = (num(0..4)?, num(4..6)?, num(6..8)?);
-    if !(1990..=2999).contains(&y) || !(1..=12).contains(&mo) || !(1..=31).contains(&day) {
+    if !(1990..=2999).contains(&y)
+        || !(1..=12).contains(&mo)
+        || !(1..=days_in(y, mo)).contains(&day)
+    {
         return None;
     }
     match d.len() {
@@ -95,6 +100,16 @@ pub fn saved_at(path: &str) -> Option<String> {
                 .then(|| format!("{y:04}-{mo:02}-{day:02} {h:02}:{mi:02}:{s:02}"))
         }
         _ => None,
+    }
+}
+
+/// The days of month `m` (1–12) of year `y` (Gregorian).
+fn days_in(y: u32, m: u32) -> u32 {
+    match m {
+        2 if y % 4 == 0 && (y % 100 != 0 || y % 400 == 0) => 29,
+        2 => 28,
+        4 | 6 | 9 | 11 => 30,
+        _ => 31,
     }
 }
 
@@ -201,6 +216,14 @@ mod tests {
         );
         assert_eq!(saved_at("RTC.xml20150726").as_deref(), Some("2015-07-26"));
         assert_eq!(saved_at("RTC.xml20151399072022"), None);
+        assert_eq!(saved_at("RTC.xml20201345999999"), None);
+        assert_eq!(saved_at("RTC.xml20230231120000"), None);
+        assert_eq!(saved_at("RTC.xml20150726240000"), None);
+        assert_eq!(
+            saved_at("RTC.xml20240229235959").as_deref(),
+            Some("2024-02-29 23:59:59")
+        );
+        assert_eq!(saved_at("RTC.xml21000229"), None);
         assert_eq!(saved_at("RTC.xml201507260720"), None);
         let b = Backup::unreadable("x/RTC.xml20150726072022".into(), "bad".into());
         assert_eq!(b.profile_path(), "x/RTC.xml");

@@ -119,8 +119,9 @@ pub fn changes(old: Option<&Lock>, new: &Lock) -> Changes {
     c
 }
 
-/// Reads the lock at `path`; `None` when there is none.
-pub fn read(path: &Path) -> Result<Option<Lock>> {
+/// Reads the lock at `path`; `None` when there is none. `update`: the `rtcdoc update` command
+/// that writes it again (with the options it needs), for the errors.
+pub fn read(path: &Path, update: &str) -> Result<Option<Lock>> {
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
@@ -131,21 +132,21 @@ pub fn read(path: &Path) -> Result<Option<Lock>> {
             crate::model::Pos::at_offset(&text, s.start)
         });
         anyhow::anyhow!(
-            "{}:{pos}: {}; the lock is written by rtcdoc: delete it and run `rtcdoc update` to write it again",
+            "{}:{pos}: {}; the lock is written by rtcdoc: delete it and run `{update}` to write it again",
             path.display(),
             e.message().trim_end()
         )
     })?;
     if let Some(v) = lock.version.filter(|v| *v != VERSION) {
         bail!(
-            "{}: lock format {v}; this rtcdoc writes format {VERSION}: delete it and run `rtcdoc update`",
+            "{}: lock format {v}; this rtcdoc writes format {VERSION}: delete it and run `{update}`",
             path.display()
         );
     }
     for e in &lock.sources {
         if e.commit.len() != 40 || !e.commit.bytes().all(|b| b.is_ascii_hexdigit()) {
             bail!(
-                "{}: the source `{}` has the commit `{}`, not 40 hex digits; delete the lock and run `rtcdoc update`",
+                "{}: the source `{}` has the commit `{}`, not 40 hex digits; delete the lock and run `{update}`",
                 path.display(),
                 e.name,
                 e.commit

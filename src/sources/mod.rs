@@ -38,7 +38,7 @@ use std::process::{Command, Stdio};
 pub struct SourceConfig {
     /// The repository: an https or ssh URL, `git@host:path`, a `file://` URL or a local path.
     pub git: String,
-    /// A branch, tag or commit; default the remote's default branch.
+    /// A branch, tag or commit; default (or `HEAD`) the remote's default branch.
     pub rev: Option<String>,
     /// The sub-folder to document; default the whole repository.
     pub path: Option<String>,
@@ -96,6 +96,31 @@ pub struct Mode {
     pub cache_dir: Option<PathBuf>,
     pub locked: bool,
     pub offline: bool,
+    /// The configuration file, when `rtcdoc update` would not find it by itself (it is not
+    /// `rtcdoc.toml` in the current directory): named in the commands the errors suggest.
+    pub config: Option<PathBuf>,
+}
+
+impl Mode {
+    /// `rtcdoc update [NAME]` with the `--config` and `--cache-dir` that make it act on the
+    /// same configuration and cache as the command that suggests it.
+    pub fn update_command(&self, name: Option<&str>) -> String {
+        use crate::quote::shell_word;
+        let mut cmd = "rtcdoc update".to_string();
+        if let Some(n) = name {
+            cmd.push(' ');
+            cmd.push_str(&shell_word(n));
+        }
+        if let Some(c) = &self.config {
+            cmd.push_str(" --config ");
+            cmd.push_str(&shell_word(&c.to_string_lossy()));
+        }
+        if let Some(d) = &self.cache_dir {
+            cmd.push_str(" --cache-dir ");
+            cmd.push_str(&shell_word(&d.to_string_lossy()));
+        }
+        cmd
+    }
 }
 
 /// The sources of a configuration, checked: names unique, URLs, revs and paths safe. `base`
@@ -175,7 +200,9 @@ pub fn check_url(git: &str, base: &Path) -> Result<String> {
     } else {
         base.join(p)
     };
-    Ok(abs.to_string_lossy().into_owned())
+    // `./x` beside a configuration in `.` is `./x`, not `././x` (as git would echo it).
+    let tidy: PathBuf = abs.components().collect();
+    Ok(tidy.to_string_lossy().into_owned())
 }
 
 /// A rev rtcdoc accepts: a branch, tag or commit name, never an option or a revision
@@ -542,10 +569,16 @@ fn no_folder(s: &Source, commit: &str) -> anyhow::Error {
     )
 }
 
+/// Whether `rev` means the remote's default branch: none given, or `HEAD` (as `git ls-remote`
+/// lists it first).
+fn default_branch(rev: Option<&str>) -> bool {
+    rev.is_none_or(|r| r == "HEAD")
+}
+
 /// The commit `rev` names in the mirror: a branch, else a tag, else a commit (full or
-/// abbreviated hex); `None`: the remote's default branch.
+/// abbreviated hex); `None` or `HEAD`: the remote's default branch.
 fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
-    let Some(rev) = rev else {
+    let Some(rev) = rev.filter(|r| !default_branch(Some(r))) else {
         return rev_parse(mirror, DEFAULT_REF);
     };
     for r in [format!("refs/heads/{rev}"), format!("refs/tags/{rev}")] {
@@ -559,6 +592,13 @@ fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
     Ok(None)
 }
 
+/// The `git ls-remote` that lists a source's branches and tags, run from the current
+/// directory: a local path as git is given it (made relative to where rtcdoc runs, not to
+/// `rtcdoc.toml`).
+fn ls_remote(s: &Source) -> String {
+    format!("git ls-remote {}", crate::quote::shell_word(&s.url))
+}
+
 /// Where the remote's default branch is kept in a mirror.
 const DEFAULT_REF: &str = "refs/rtcdoc/default";
 
@@ -566,9 +606,22 @@ fn is_mirror(mirror: &Path) -> bool {
     mirror.join("HEAD").is_file() && mirror.join("objects").is_dir()
 }
 
+/// Whether a mirror was ever fetched into: it holds a ref. A mirror left empty by a failed
+/// first fetch (as older rtcdoc left them) counts as not cached.
+fn fetched(mirror: &Path) -> bool {
+    if !is_mirror(mirror) {
+        return false;
+    }
+    let mut c = git_command(Some(mirror));
+    c.args(["for-each-ref", "--count=1", "--format=x"]);
+    run(c).is_ok_and(|o| o.status.success() && !o.stdout.is_empty())
+}
+
 /// Fetches a source's branches, tags and default branch into its mirror (created if needed);
-/// `commit`, when given and still missing, is asked for by name.
+/// `commit`, when given and still missing, is asked for by name. A first fetch that fails
+/// leaves no mirror behind.
 fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
+    let cached = fetched(mirror);
     if !is_mirror(mirror) {
         if let Some(parent) = mirror.parent() {
             std::fs::create_dir_all(parent).with_context(|| {
@@ -589,7 +642,7 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
         "+refs/heads/*:refs/heads/*".to_string(),
         "+refs/tags/*:refs/tags/*".to_string(),
     ];
-    if s.rev.is_none() {
+    if default_branch(s.rev.as_deref()) {
         specs.push(format!("+HEAD:{DEFAULT_REF}"));
     }
     let mut c = git_command(Some(mirror));
@@ -606,13 +659,26 @@ fn fetch(s: &Source, mirror: &Path, commit: Option<&str>) -> Result<()> {
     ])
     .arg(&s.url)
     .args(&specs);
-    run_ok(c, |why| {
+    let fetched = run_ok(c, |why| {
         format!(
-            "source `{}`: git cannot fetch `{}` ({why}); check the URL or path and your access to it (ssh key, token), or build with --offline from the cache",
+            "source `{}`: git cannot fetch `{}` ({why}); check the URL or path and your access to it (ssh key, token){}",
             s.name,
-            s.git
+            s.git,
+            if cached {
+                ", or build with --offline from the cache"
+            } else {
+                ""
+            }
         )
-    })?;
+    });
+    if let Err(e) = fetched {
+        if !cached && is_mirror(mirror) {
+            // Nothing was ever fetched into it: no mirror stays that `--offline` would take
+            // for a cached one.
+            let _ = std::fs::remove_dir_all(mirror);
+        }
+        return Err(e);
+    }
     if let Some(commit) = commit {
         if rev_parse(mirror, commit)?.is_none() {
             // Not on a branch or tag any more: ask for it by name (servers allow it when it
@@ -653,7 +719,7 @@ pub fn prepare(
     mode: &Mode,
     update: Option<&[String]>,
 ) -> Result<(Vec<Pinned>, lock::Changes)> {
-    let old = lock::read(lock_path)?;
+    let old = lock::read(lock_path, &mode.update_command(None))?;
     if let Some(names) = update {
         for n in names {
             if !sources.iter().any(|s| &s.name == n) {
@@ -686,16 +752,17 @@ pub fn prepare(
         if mode.locked {
             if old.is_none() {
                 bail!(
-                    "--locked: there is no `{}`; run `rtcdoc update` (or a build without --locked) to write it, and commit it",
-                    lock_path.display()
+                    "--locked: there is no `{}`; run `{}` (or a build without --locked) to write it, and commit it",
+                    lock_path.display(),
+                    mode.update_command(None)
                 );
             }
             if locked.is_none() || update.is_some() {
                 bail!(
-                    "--locked: `{}` would have to change: the source `{}` is new or its `git` or `rev` was edited; run `rtcdoc update {}` and commit the lock",
+                    "--locked: `{}` would have to change: the source `{}` is new or its `git` or `rev` was edited; run `{}` and commit the lock",
                     lock_path.display(),
                     s.name,
-                    s.name
+                    mode.update_command(Some(&s.name))
                 );
             }
         }
@@ -705,20 +772,21 @@ pub fn prepare(
                 if rev_parse(&mirror, &commit)?.is_none() {
                     if mode.offline {
                         bail!(
-                            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `rtcdoc update`) to fill the cache",
+                            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `{}`) to fill the cache",
                             s.name,
-                            mirror.display()
+                            mirror.display(),
+                            mode.update_command(None)
                         );
                     }
                     fetch(s, &mirror, Some(&commit))?;
                     if rev_parse(&mirror, &commit)?.is_none() {
                         bail!(
-                            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `rtcdoc update {}` to move to the current `{}`",
+                            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `{}` to move to the current `{}`",
                             s.name,
                             s.git,
                             lock_path.display(),
                             shallow_note(&mirror),
-                            s.name,
+                            mode.update_command(Some(&s.name)),
                             s.rev.as_deref().unwrap_or("default branch")
                         );
                     }
@@ -726,17 +794,22 @@ pub fn prepare(
                 commit
             }
             None => {
-                refresh(s, &mirror, mode, " (or `rtcdoc update`)")?;
+                refresh(
+                    s,
+                    &mirror,
+                    mode,
+                    &format!(" (or `{}`)", mode.update_command(None)),
+                )?;
                 match resolve(&mirror, s.rev.as_deref())? {
                     Some(c) => c,
-                    None => match &s.rev {
+                    None => match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
                         Some(rev) => bail!(
-                            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `git ls-remote {}` and fix `rev` in rtcdoc.toml",
+                            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `{}` and fix `rev` in rtcdoc.toml",
                             s.name,
                             s.git,
                             shallow_note(&mirror),
                             if mode.offline { " (as cached: run without --offline to fetch)" } else { "" },
-                            s.git
+                            ls_remote(s)
                         ),
                         None => bail!(
                             "source `{}`: `{}` has no default branch (an empty repository?); push a commit or set `rev`",
@@ -768,9 +841,10 @@ pub fn prepare(
     if old.as_ref() != Some(&new_lock) {
         if mode.locked {
             bail!(
-                "--locked: `{}` would have to change ({}); run `rtcdoc update` and commit the lock",
+                "--locked: `{}` would have to change ({}); run `{}` and commit the lock",
                 lock_path.display(),
-                changes.describe()
+                changes.describe(),
+                mode.update_command(None)
             );
         }
         lock::write(lock_path, &new_lock)?;
@@ -784,7 +858,7 @@ fn refresh(s: &Source, mirror: &Path, mode: &Mode, fill: &str) -> Result<()> {
     if !mode.offline {
         return fetch(s, mirror, None);
     }
-    if !is_mirror(mirror) {
+    if !fetched(mirror) {
         bail!(
             "source `{}` (`{}`) is not in the cache (`{}`) and --offline forbids fetching; run once without --offline{fill} to fill the cache",
             s.name,
@@ -805,11 +879,11 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
     refresh(&s, &mirror, mode, "")?;
     let Some(commit) = resolve(&mirror, Some(rev))? else {
         bail!(
-            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `git ls-remote {}`",
+            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `{}`",
             s.name,
             s.git,
             shallow_note(&mirror),
-            s.git
+            ls_remote(&s)
         );
     };
     Ok(Pinned {
@@ -895,10 +969,13 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
             let mut meta = meta.split_whitespace();
             let (mode, ty, sha, size) = (meta.next(), meta.next(), meta.next(), meta.next());
             let shown = format!("{}/{rel}", s.name);
-            if !wanted(rel) || !safe(rel) {
+            if !safe(rel) {
                 continue;
             }
+            // A submodule is noted whatever its name (a folder of another repository); a file
+            // or a link only when rtcdoc would read a file of its name.
             match (mode, ty) {
+                _ if ty != Some("commit") && !wanted(rel) => {}
                 (Some("100644" | "100755"), Some("blob")) => {
                     if let (Some(sha), Some(_)) = (sha, size.and_then(|n| n.parse::<u64>().ok())) {
                         blobs.push((sha.to_string(), rel.to_string()));
