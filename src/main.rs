@@ -786,7 +786,9 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                 if let Some(note) = loaded.catalog.backup_note() {
                     eprintln!("note: {note}");
                 }
-                if let Some(note) = rtcdoc::check::undefined_types_note(&loaded.catalog) {
+                if let Some(note) =
+                    rtcdoc::check::undefined_types_note(&loaded.catalog, file.path.as_deref())
+                {
                     eprintln!("note: {note}");
                 }
                 if let Some(note) = rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page) {
@@ -1271,7 +1273,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         }
         let human = matches!(args.format, CheckFormat::Human);
         if let (Some(note), true) = (
-            rtcdoc::check::undefined_types_note(&loaded.catalog),
+            rtcdoc::check::undefined_types_note(&loaded.catalog, file.path.as_deref()),
             human && !cli.quiet,
         ) {
             eprintln!("note: {note}");

@@ -344,6 +344,39 @@ fn a_type_without_idl_says_where_its_definition_would_come_from() {
     assert!(!stderr(&o).contains("show no definition"), "{}", stderr(&o));
 }
 
+/// With a configuration file, the note points at its `idl-path` (`rtcdoc init` would refuse
+/// to overwrite it), and following it works.
+#[test]
+fn with_a_configuration_the_note_points_at_its_idl_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(
+        d,
+        "in/c/RTC.xml",
+        &xml_profile("c", &[("DataInPort", "pose", "RTC::TimedPose2D")]),
+    );
+    write(d, "in/rtcdoc.toml", "title = \"Lab\"\n");
+    write(
+        d,
+        "openrtm-idl/Pose.idl",
+        "module RTC { struct Time { unsigned long sec; unsigned long nsec; }; struct Pose2D { double x; }; struct TimedPose2D { Time tm; Pose2D data; }; };\n",
+    );
+    let err = stderr(&rtcdoc(&["check", "in"], d));
+    assert!(err.contains("or set `idl-path` in in/rtcdoc.toml"), "{err}");
+    assert!(!err.contains("rtcdoc init"), "{err}");
+    let idl = d.join("openrtm-idl");
+    write(
+        d,
+        "in/rtcdoc.toml",
+        &format!(
+            "title = \"Lab\"\nidl-path = [{:?}]\n",
+            idl.to_string_lossy()
+        ),
+    );
+    let err = stderr(&rtcdoc(&["check", "in"], d));
+    assert!(!err.contains("show no definition"), "{err}");
+}
+
 /// A project's own IDL may add to module `RTC` without copying OpenRTM's: a type of OpenRTM's
 /// own `RTC` module that no IDL read defines is an info (its IDL was not given), while a type
 /// of the project's, missing from the module the project's IDL declares, stays a warning.

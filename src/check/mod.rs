@@ -235,7 +235,12 @@ impl Report {
 /// verbosity (the per-use findings, RTC5xx infos, need `--verbose`): `note: 3 data types and
 /// interfaces are defined in no IDL file read: RTC::TimedLong, … ; add …`. `None` when every
 /// type is defined.
-pub fn undefined_types_note(cat: &crate::catalog::Catalog) -> Option<String> {
+/// `config` is the configuration file read, if any: `idl-path` is then set there, since
+/// `rtcdoc init` would refuse to overwrite it.
+pub fn undefined_types_note(
+    cat: &crate::catalog::Catalog,
+    config: Option<&std::path::Path>,
+) -> Option<String> {
     let names = cat.undefined_types();
     if names.is_empty() {
         return None;
@@ -246,8 +251,18 @@ pub fn undefined_types_note(cat: &crate::catalog::Catalog) -> Option<String> {
     } else {
         "the pages of".to_string()
     };
+    let last = match config {
+        Some(file) => format!(
+            "or set `idl-path` in {} (an OpenRTM installation's rtm/idl)",
+            file.display()
+        ),
+        None => {
+            "pass --idl-path DIR (an OpenRTM installation's rtm/idl), or run `rtcdoc init` to find one"
+                .to_string()
+        }
+    };
     Some(format!(
-        "{what} {} data type(s) and interface(s) show no definition ({list}); add their IDL files below the input, pass --idl-path DIR (an OpenRTM installation's rtm/idl), or run `rtcdoc init` to find one",
+        "{what} {} data type(s) and interface(s) show no definition ({list}); add their IDL files below the input, {last}",
         names.len()
     ))
 }

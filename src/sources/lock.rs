@@ -77,6 +77,10 @@ impl Changes {
             .moved
             .iter()
             .map(|(n, old, new)| match old {
+                // Only its `git` or `rev` changed: it pins the same commit.
+                Some(o) if o == new => {
+                    format!("{n} still at {} (its git or rev changed)", short(new))
+                }
                 Some(o) => format!("{n} {} -> {}", short(o), short(new)),
                 None => format!("{n} added at {}", short(new)),
             })
@@ -237,5 +241,36 @@ mod tests {
         sorted.sort();
         assert_eq!(back, sorted);
         assert_eq!(to_text(&back), text);
+    }
+
+    #[test]
+    fn changes_say_what_moved() {
+        let entry = |name: &str, rev: &str, commit: char| Entry {
+            name: name.into(),
+            git: "../r".into(),
+            rev: Some(rev.into()),
+            commit: commit.to_string().repeat(40),
+        };
+        let old = Lock {
+            version: Some(1),
+            sources: vec![
+                entry("a", "main", '1'),
+                entry("b", "main", '2'),
+                entry("gone", "main", '3'),
+            ],
+        };
+        let new = Lock {
+            version: Some(1),
+            sources: vec![
+                entry("a", "main", '4'),
+                entry("b", "v1", '2'),
+                entry("c", "main", '5'),
+            ],
+        };
+        assert_eq!(
+            changes(Some(&old), &new).describe(),
+            "a 111111111111 -> 444444444444, b still at 222222222222 (its git or rev changed), c added at 555555555555, gone removed"
+        );
+        assert_eq!(changes(Some(&new), &new).describe(), "no source moved");
     }
 }
