@@ -140,11 +140,34 @@ pub fn version_or_date(e: &Entry) -> Option<String> {
 
 /// When each element of a history (newest first) was added: the change path of every element
 /// an entry after the oldest one added, with the version (else the date) of the newest such
-/// entry. An element added, removed and added again is dated by its last addition.
+/// entry. An element added, removed and added again is dated by its last addition. A version
+/// string an older entry already had is no answer ("since 1.0.0" when 1.0.0 first came
+/// without it): such an entry is named by its date.
 pub fn since(history: &[Entry]) -> std::collections::BTreeMap<String, String> {
     let mut out = std::collections::BTreeMap::new();
-    for e in history.iter().rev().filter(|e| !e.first) {
-        let Some(label) = version_or_date(e) else {
+    let mut seen = std::collections::BTreeSet::new();
+    for e in history.iter().rev() {
+        let version = e
+            .version
+            .as_deref()
+            .map(str::trim)
+            .filter(|v| !v.is_empty());
+        let new_version = version.is_some_and(|v| !seen.contains(v));
+        if let Some(v) = version {
+            seen.insert(v.to_string());
+        }
+        if e.first {
+            continue;
+        }
+        let date = e
+            .date
+            .as_deref()
+            .map(|d| d.get(..10).unwrap_or(d).to_string());
+        let label = match (new_version, date) {
+            (false, Some(day)) => Some(day),
+            _ => version_or_date(e),
+        };
+        let Some(label) = label else {
             continue;
         };
         for c in e
@@ -237,5 +260,48 @@ impl ElementKeys {
             .chain(&self.service_ports)
             .chain(self.interfaces.iter().flatten())
             .chain(&self.configurations)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A version string the first version already had names no addition: its date does.
+    #[test]
+    fn since_names_a_version_only_where_it_is_new() {
+        let entry = |version: &str, date: &str, added: &[&str], first: bool| Entry {
+            version: Some(version.into()),
+            date: Some(format!("{date}T10:00:00+09:00")),
+            first,
+            changes: added
+                .iter()
+                .map(|p| Change {
+                    code: "DIFF301".into(),
+                    path: (*p).into(),
+                    ..Default::default()
+                })
+                .collect(),
+            ..Default::default()
+        };
+        // Newest first.
+        let history = [
+            entry("1.1.0", "2024-05-02", &["dataPorts/c"], false),
+            entry("1.1.0", "2024-04-01", &["dataPorts/b"], false),
+            entry("1.0.0", "2024-03-05", &["dataPorts/a"], false),
+            entry("1.0.0", "2024-01-10", &[], true),
+        ];
+        let got = since(&history);
+        let want: Vec<(&str, &str)> = vec![
+            ("dataPorts/a", "2024-03-05"),
+            ("dataPorts/b", "1.1.0"),
+            ("dataPorts/c", "2024-05-02"),
+        ];
+        assert_eq!(
+            got.iter()
+                .map(|(k, v)| (k.as_str(), v.as_str()))
+                .collect::<Vec<_>>(),
+            want
+        );
     }
 }
