@@ -506,12 +506,8 @@ fn pin(
 }
 
 /// [`load_config`] for a command: with `--verbose`, the file used is named.
-fn config_for(
-    cli: &Cli,
-    input: Option<&Path>,
-    explicit: Option<&Path>,
-) -> anyhow::Result<config::Loaded> {
-    let file = load_config(input, explicit)?;
+fn config_for(cli: &Cli, input: Option<&Path>, i: &InputArgs) -> anyhow::Result<config::Loaded> {
+    let file = load_config(input, i.config.as_deref())?;
     if let (true, Some(p)) = (cli.verbose, &file.path) {
         eprintln!("configuration: {}", p.display());
     }
@@ -740,11 +736,7 @@ fn print_skipped(
 fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
         Command::Build(args) => {
-            let file = config_for(
-                cli,
-                args.input.as_deref(),
-                args.read.input.config.as_deref(),
-            )?;
+            let file = config_for(cli, args.input.as_deref(), &args.read.input)?;
             let mut opts = config::build_options(&file, &build_overrides(args));
             pin(&file, &args.read.sources, &mut opts.load, cli.quiet)?;
             let root = input_root(&opts.input);
@@ -816,11 +808,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
         Command::Check(args) => check(cli, args),
         Command::Diff(args) => diff(cli, args),
         Command::Serve(args) => {
-            let file = config_for(
-                cli,
-                args.input.as_deref(),
-                args.read.input.config.as_deref(),
-            )?;
+            let file = config_for(cli, args.input.as_deref(), &args.read.input)?;
             let cli_over = overrides(&args.input, &args.site, &args.read.input, None);
             let mut build = config::build_options(&file, &cli_over);
             build.formats = vec![Format::Html];
@@ -985,11 +973,7 @@ fn man_page(out: &mut dyn std::io::Write) -> std::io::Result<()> {
 
 /// `rtcdoc graph`: the wiring of one system of the input as DOT, Mermaid or SVG.
 fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
-    let file = config_for(
-        cli,
-        args.input.as_deref(),
-        args.input_args.config.as_deref(),
-    )?;
+    let file = config_for(cli, args.input.as_deref(), &args.input_args)?;
     let input = args
         .input
         .clone()
@@ -1244,7 +1228,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     let file = config_for(
         cli,
         args.paths.first().map(PathBuf::as_path),
-        args.read.input.config.as_deref(),
+        &args.read.input,
     )?;
     let mut opts = load_options(&file, &args.read.input);
     // No path: the configuration's input (its `input`, its folder, or its sources only), and
@@ -1405,7 +1389,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         side::Spec::Local(p) => Some(p.as_path()),
         side::Spec::Git { .. } | side::Spec::Source(_) => None,
     };
-    let file = config_for(cli, config_dir, args.read.input.config.as_deref())?;
+    let file = config_for(cli, config_dir, &args.read.input)?;
     let mut opts = load_options(&file, &args.read.input);
     opts.sources_only = false;
     // `NAME` or `NAME@REV` of a `[[source]]` (not a path on disk): that source alone, at its

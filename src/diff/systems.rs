@@ -379,15 +379,7 @@ fn pair_group(
         return (Vec::new(), Vec::new());
     }
     // Same file on both sides: the same system.
-    lo.retain(
-        |&o| match ln.iter().position(|&n| new[n].source == old[o].source) {
-            Some(at) => {
-                pairs.push((o, ln.remove(at)));
-                false
-            }
-            None => true,
-        },
-    );
+    pair_same_file(&mut lo, &mut ln, old, new, pairs);
     // Copies: a system equal to one of the other side (positions aside) is that one.
     if !lo.is_empty() && !ln.is_empty() {
         let mut by_print: BTreeMap<String, Vec<usize>> = BTreeMap::new();
@@ -434,16 +426,27 @@ fn pair_renamed(
         added.clear();
         return pairs;
     }
-    removed.retain(
-        |&o| match added.iter().position(|&n| new[n].source == old[o].source) {
+    pair_same_file(removed, added, old, new, &mut pairs);
+    pairs
+}
+
+/// Pairs the systems of `lo` and `ln` that are in the same file on both sides, taking them out.
+fn pair_same_file(
+    lo: &mut Vec<usize>,
+    ln: &mut Vec<usize>,
+    old: &[LoadedSystem],
+    new: &[LoadedSystem],
+    pairs: &mut Vec<(usize, usize)>,
+) {
+    lo.retain(
+        |&o| match ln.iter().position(|&n| new[n].source == old[o].source) {
             Some(at) => {
-                pairs.push((o, added.remove(at)));
+                pairs.push((o, ln.remove(at)));
                 false
             }
             None => true,
         },
     );
-    pairs
 }
 
 /// DIFF257: the system of `os` is `ns` under another id.

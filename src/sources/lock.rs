@@ -245,28 +245,25 @@ mod tests {
 
     #[test]
     fn changes_say_what_moved() {
-        let entry = |name: &str, rev: &str, commit: char| Entry {
-            name: name.into(),
-            git: "../r".into(),
-            rev: Some(rev.into()),
-            commit: commit.to_string().repeat(40),
-        };
-        let old = Lock {
+        // Sources as (name, rev, the digit its commit repeats).
+        let lock = |sources: &[(&str, &str, char)]| Lock {
             version: Some(1),
-            sources: vec![
-                entry("a", "main", '1'),
-                entry("b", "main", '2'),
-                entry("gone", "main", '3'),
-            ],
+            sources: sources
+                .iter()
+                .map(|&(name, rev, digit)| Entry {
+                    name: name.into(),
+                    git: "../r".into(),
+                    rev: Some(rev.into()),
+                    commit: digit.to_string().repeat(40),
+                })
+                .collect(),
         };
-        let new = Lock {
-            version: Some(1),
-            sources: vec![
-                entry("a", "main", '4'),
-                entry("b", "v1", '2'),
-                entry("c", "main", '5'),
-            ],
-        };
+        let old = lock(&[
+            ("a", "main", '1'),
+            ("b", "main", '2'),
+            ("gone", "main", '3'),
+        ]);
+        let new = lock(&[("a", "main", '4'), ("b", "v1", '2'), ("c", "main", '5')]);
         assert_eq!(
             changes(Some(&old), &new).describe(),
             "a 111111111111 -> 444444444444, b still at 222222222222 (its git or rev changed), c added at 555555555555, gone removed"
