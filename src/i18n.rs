@@ -492,6 +492,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_pseudo", "editor data", "エディタのデータ"),
     ("sys_push_interval", "Push interval", "プッシュ間隔"),
     ("sys_required", "Required", "必須"),
+    ("sys_saved_as", "saved in the file as", "ファイル上の向き"),
     ("sys_sequence", "Sequence", "順番"),
     ("sys_service_connectors", "service connectors", "サービスポートコネクタ"),
     ("sys_service_connectors_h", "Service port connectors", "サービスポートコネクタ"),

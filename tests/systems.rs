@@ -958,3 +958,83 @@ fn an_instance_links_to_the_nearest_profile_of_its_id() {
         .expect("Cam0 is linked");
     assert_eq!(linked.source, "a_lab/Cam/RTC.xml");
 }
+
+/// Two components, `Src` (out-port `out`) and `Dst` (in-port `in`), and a system `Rev` whose
+/// one data connector `c1` is saved in-port first, as RTSystemEditor saves a connector dragged
+/// from its in-port: source `Dst0.in`, target `Src0.out`.
+fn reversed_connector_input(d: &std::path::Path) -> PathBuf {
+    let input = d.join("in");
+    common::write(
+        &input,
+        "comps/Src/RTC.xml",
+        &common::xml_profile("Src", &[("DataOutPort", "out", "RTC::TimedDouble")]),
+    );
+    common::write(
+        &input,
+        "comps/Dst/RTC.xml",
+        &common::xml_profile("Dst", &[("DataInPort", "in", "RTC::TimedDouble")]),
+    );
+    let inst = |name: &str, comp: &str, port: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Test:Rev:1.0" rts:version="0.2">{}{}<rts:DataPortConnectors rts:connectorId="c1" rts:name="in_out" rts:dataType="IDL:RTC/TimedDouble:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:Test:Cat:Dst:1.0.0" rts:instanceName="Dst0" rts:portName="Dst0.in"/><rts:targetDataPort rts:componentId="RTC:Test:Cat:Src:1.0.0" rts:instanceName="Src0" rts:portName="Src0.out"/></rts:DataPortConnectors></rts:RtsProfile>"#,
+        inst("Src0", "Src", "out"),
+        inst("Dst0", "Dst", "in"),
+    );
+    common::write(&input, "system/Rev.xml", &xml);
+    input
+}
+
+/// A data connector saved in-port first is listed the way data flows, as the diagrams draw it
+/// (source the out-port, target the in-port), with a note of how the file saved it; the type
+/// page's list of connectors says so too.
+#[test]
+fn a_connector_saved_in_port_first_is_listed_the_way_data_flows() {
+    use rtcdoc::render::markdown;
+    let dir = tempfile::tempdir().unwrap();
+    let input = reversed_connector_input(dir.path());
+    let out = dir.path().join("site");
+    build_site(&input, &out, SiteOptions::default());
+    let html = read(&out.join("systems/rev.html"));
+    let data = section(&html, "data-connectors");
+    let cells: Vec<&str> = data.split("<td data-label=").collect();
+    assert!(
+        cells[1].starts_with(r#""Source">"#)
+            && cells[1].contains("Src0</a>.")
+            && cells[1].contains("<code>out</code>"),
+        "{data}"
+    );
+    assert!(
+        cells[2].starts_with(r#""Target">"#)
+            && cells[2].contains("Dst0</a>.")
+            && cells[2].contains("<code>in</code>"),
+        "{data}"
+    );
+    assert!(
+        data.contains("saved in the file as: Dst0.in → Src0.out"),
+        "{data}"
+    );
+    let cat = load(&input);
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", rtcdoc::i18n::Lang::En)
+            .into_iter()
+            .collect();
+    let page = &md["systems/rev.md"];
+    assert!(
+        page.contains("| in\\_out (saved in the file as: Dst0.in → Src0.out) | c1 | Src0.[out](../components/src.md#port-out) | Dst0.[in](../components/dst.md#port-in) |"),
+        "{page}"
+    );
+    let ty = md
+        .iter()
+        .find(|(k, v)| k.starts_with("types/") && v.contains("Rev: "))
+        .map(|(_, v)| v)
+        .expect("a type page lists the connector");
+    assert!(ty.contains("Rev: Src0.out → Dst0.in"), "{ty}");
+    // The diagram agrees.
+    let o = common::rtcdoc(&["graph", "in", "-f", "mermaid"], dir.path());
+    let mermaid = String::from_utf8_lossy(&o.stdout);
+    assert!(mermaid.contains("\"out → in\""), "{mermaid}");
+}

@@ -211,21 +211,26 @@ fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Ta
 }
 
 /// A section of connectors: the heading `(anchor, title key)`, then a table of the connectors
-/// in `rows`: their name, id, source and target, then the cells of `rest` under the headers
-/// keyed `rest_keys`.
+/// in `rows`: their name (with a note, such as how the file saved a connector it saved
+/// in-port first), id, source and target, then the cells of `rest` under the headers keyed
+/// `rest_keys`.
 fn connector_table<'a, M: Markup>(
     out: &mut String,
     lang: Lang,
     t: &Targets<'_>,
     (anchor, title): (&str, &str),
     rest_keys: &[&str],
-    rows: impl Iterator<Item = ([&'a str; 2], [&'a EndView; 2], Vec<String>)>,
+    rows: impl Iterator<Item = ([&'a str; 2], Option<&'a str>, [&'a EndView; 2], Vec<String>)>,
 ) {
     (t.heading)(out, anchor, lang.t(title));
     let rows: Vec<Vec<String>> = rows
-        .map(|([name, id], [source, target], rest)| {
+        .map(|([name, id], note, [source, target], rest)| {
+            let name = match note {
+                Some(n) => M::esc(&format!("{name} ({n})")),
+                None => M::esc(name),
+            };
             let mut row = vec![
-                M::esc(name),
+                name,
                 M::esc(id),
                 end_text::<M>(source),
                 end_text::<M>(target),
@@ -275,7 +280,8 @@ fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targe
                 M::esc(&c.push_interval),
                 M::esc(&c.comment),
             ];
-            ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+            let note = c.saved_as.as_deref();
+            ([&*c.name, &*c.id], note, [&c.source, &c.target], rest)
         }),
     );
     connector_table::<M>(
@@ -291,7 +297,7 @@ fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targe
                 M::esc(&c.trans_method),
                 M::esc(&c.comment),
             ];
-            ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+            ([&*c.name, &*c.id], None, [&c.source, &c.target], rest)
         }),
     );
 }
@@ -333,19 +339,29 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
     }
 }
 
-/// The connectors carrying data type `name` as (text, system) for a list.
+/// The connectors carrying data type `name` as (text, system) for a list, each from its
+/// out-port to its in-port ([`Catalog::reversed_data_connectors`]).
 pub fn carrying<'a>(cat: &'a Catalog, name: &str) -> Vec<(String, &'a System)> {
+    // The connectors come system by system: each system's directions are found once.
+    let mut reversed: Option<(*const System, Vec<bool>)> = None;
     cat.connectors_carrying(name)
         .into_iter()
         .map(|(s, k)| {
             let c = &s.profile.data_port_connectors[k];
+            if reversed.as_ref().map(|r| r.0) != Some(s as *const System) {
+                reversed = Some((s, cat.reversed_data_connectors(s)));
+            }
+            let turned = reversed
+                .as_ref()
+                .and_then(|r| r.1.get(k).copied())
+                .unwrap_or(false);
+            let (from, to) = if turned {
+                (&c.target, &c.source)
+            } else {
+                (&c.source, &c.target)
+            };
             (
-                format!(
-                    "{}: {} → {}",
-                    s.display_name(),
-                    end(&c.source),
-                    end(&c.target)
-                ),
+                format!("{}: {} → {}", s.display_name(), end(from), end(to)),
                 s,
             )
         })

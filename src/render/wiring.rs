@@ -124,13 +124,14 @@ pub fn system_wiring(
             location: c.location.as_ref().and_then(|l| l.xy()),
         });
     }
-    let conns = system_connectors(s, &wire);
+    let conns = system_connectors(s, &wire, &catalog.reversed_data_connectors(s));
     (wire, conns)
 }
 
 /// The connectors of system `s` between its drawn instances `wire`: data connectors from the
-/// out-port to the in-port, service connectors undirected.
-fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
+/// out-port to the in-port (`reversed`: those saved in-port first,
+/// [`Catalog::reversed_data_connectors`]), service connectors undirected.
+fn system_connectors(s: &System, wire: &[WireInstance], reversed: &[bool]) -> Vec<WireConnector> {
     let p = &s.profile;
     let port_at = |i: usize, name: &str| wire.get(i)?.ports.iter().position(|q| q.name == name);
     let mut conns: Vec<WireConnector> = Vec::new();
@@ -139,14 +140,24 @@ fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
         .data_port_connectors
         .iter()
         .zip(&s.data_connectors)
-        .map(|(c, l)| (l, &c.source, &c.target, Some(non_empty(&c.data_type))))
+        .enumerate()
+        .map(|(k, (c, l))| {
+            let turned = reversed.get(k).copied().unwrap_or(false);
+            (
+                l,
+                &c.source,
+                &c.target,
+                Some(non_empty(&c.data_type)),
+                turned,
+            )
+        })
         .chain(
             p.service_port_connectors
                 .iter()
                 .zip(&s.service_connectors)
-                .map(|(c, l)| (l, &c.source, &c.target, None)),
+                .map(|(c, l)| (l, &c.source, &c.target, None, false)),
         );
-    for (l, se, te, data_type) in ends {
+    for (l, se, te, data_type, turned) in ends {
         let (Some(a), Some(b), Some(se), Some(te)) = (l.source.instance, l.target.instance, se, te)
         else {
             continue;
@@ -162,10 +173,7 @@ fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
         let (mut from, mut to) = ((a, pa), (b, pb));
         // Data flows from the out-port to the in-port whichever end the file names first
         // (RTSystemEditor saves the end the user dragged from as the source).
-        if data_type.is_some()
-            && wire[a].ports[pa].class == "in"
-            && wire[b].ports[pb].class == "out"
-        {
+        if turned {
             std::mem::swap(&mut from, &mut to);
             std::mem::swap(&mut source, &mut target);
         }
