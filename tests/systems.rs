@@ -1038,3 +1038,92 @@ fn a_connector_saved_in_port_first_is_listed_the_way_data_flows() {
     let mermaid = String::from_utf8_lossy(&o.stdout);
     assert!(mermaid.contains("\"out → in\""), "{mermaid}");
 }
+
+/// A system of `Src0` (`Src`: out-port `out`) and `Dst0` (`Dst`: in-port `in`) with three
+/// data connectors: `c1` Src0.out → Dst0.in, `c2` from `Src0.nosuchport` (a port `Src` does not
+/// have, RTC601) and `c3` to `Ghost0.in` (no such instance, RTC608).
+fn dangling_connector_input(d: &std::path::Path) -> PathBuf {
+    let input = d.join("in");
+    common::write(
+        &input,
+        "comps/Src/RTC.xml",
+        &common::xml_profile("Src", &[("DataOutPort", "out", "RTC::TimedDouble")]),
+    );
+    common::write(
+        &input,
+        "comps/Dst/RTC.xml",
+        &common::xml_profile("Dst", &[("DataInPort", "in", "RTC::TimedDouble")]),
+    );
+    let inst = |name: &str, comp: &str, port: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
+        )
+    };
+    let conn = |id: &str, (si, sp): (&str, &str), (ti, tp): (&str, &str)| {
+        format!(
+            r#"<rts:DataPortConnectors rts:connectorId="{id}" rts:name="{sp}_{tp}" rts:dataType="IDL:RTC/TimedDouble:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:Test:Cat:Src:1.0.0" rts:instanceName="{si}" rts:portName="{si}.{sp}"/><rts:targetDataPort rts:componentId="RTC:Test:Cat:Dst:1.0.0" rts:instanceName="{ti}" rts:portName="{ti}.{tp}"/></rts:DataPortConnectors>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Test:Hostile:1.0" rts:version="0.2">{}{}{}{}{}</rts:RtsProfile>"#,
+        inst("Src0", "Src", "out"),
+        inst("Dst0", "Dst", "in"),
+        conn("c1", ("Src0", "out"), ("Dst0", "in")),
+        conn("c2", ("Src0", "nosuchport"), ("Dst0", "in")),
+        conn("c3", ("Src0", "out"), ("Ghost0", "in")),
+    );
+    common::write(&input, "system/Hostile.xml", &xml);
+    input
+}
+
+/// A connector that cannot be drawn (its end names no instance of the system) is named, with
+/// the reason, by every drawing and caption instead of vanishing; a port the component's profile
+/// does not have is drawn in a style of its own.
+#[test]
+fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
+    use rtcdoc::render::markdown;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = dangling_connector_input(d);
+    let note = "Not drawn: out_in [c3] (Src0.out → Ghost0.in): the system has no instance Ghost0";
+    let graph = |format: &str| {
+        let o = common::rtcdoc(&["graph", "in", "-f", format], d);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(String::from_utf8_lossy(&o.stderr).contains(note));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let dot = graph("dot");
+    assert!(dot.contains(&format!("label=\"{note}\\l\"")), "{dot}");
+    assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
+    assert!(dot.contains("<i>nosuchport</i> ?"), "{dot}");
+    let mermaid = graph("mermaid");
+    assert!(mermaid.contains(&format!("%% {note}")), "{mermaid}");
+    let svg = graph("svg");
+    assert!(
+        svg.contains("<text class=\"not-drawn\" x=\"8\"") && svg.contains(note),
+        "{svg}"
+    );
+    assert!(svg.contains(r#"class="port out unknown" aria-label="out-port Src0.nosuchport (not in the component&#39;s profile)""#), "{svg}");
+    assert!(
+        svg.contains(r#"class="port out" aria-label="out-port Src0.out""#),
+        "{svg}"
+    );
+    // The page's caption counts the file's connectors and names the one left out.
+    let out = d.join("site");
+    build_site(&input, &out, SiteOptions::default());
+    let html = read(&out.join("systems/hostile.html"));
+    let caption = &html[html.find("<figcaption>").unwrap()..html.find("</figcaption>").unwrap()];
+    assert!(caption.contains("3 data connectors"), "{caption}");
+    assert!(caption.contains(&format!("{note}.")), "{caption}");
+    let md: std::collections::BTreeMap<String, String> = markdown::pages(
+        &rtcdoc::build::load(&input, &LoadOptions::default())
+            .unwrap()
+            .catalog,
+        "Cat",
+        rtcdoc::i18n::Lang::En,
+    )
+    .into_iter()
+    .collect();
+    let page = &md["systems/hostile.md"];
+    assert!(page.contains("Not drawn: out\\_in \\[c3\\]"), "{page}");
+}

@@ -548,15 +548,15 @@ fn system_page(
         &super::system_text::Targets { heading: &head },
     );
     // The wiring diagram, after the body's sections.
-    let (inst, conns) =
-        super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
+    let w = super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
+    let (inst, conns) = (&w.instances, &w.connectors);
     let name = &*s.display_name();
     let caption = format!("{} {name}", lang.t("sys_wiring"));
     heading(&mut out, 2, "sec-wiring", &caption);
     let svg = match diagrams {
         super::DiagramFormat::Mermaid => {
             w!(out, "```mermaid");
-            out.push_str(&super::wiring::to_mermaid(name, &inst, &conns));
+            out.push_str(&super::wiring::to_mermaid(name, inst, conns, &w.not_drawn));
             w!(out, "```");
             None
         }
@@ -564,10 +564,18 @@ fn system_page(
             let file = page.file_name("svg");
             w!(out, "![{}]({})", inline(&caption), file);
             Some(super::html::standalone_system_diagram(
-                &caption, &inst, &conns,
+                &caption,
+                inst,
+                conns,
+                &w.not_drawn,
             ))
         }
     };
+    // What the drawing leaves out, said under it.
+    for n in &w.not_drawn {
+        w!(out);
+        w!(out, "{}", inline(&format!("{n}.")));
+    }
     (out, svg)
 }
 
