@@ -512,6 +512,10 @@ fn doxygen_runs_on_a_system_without_warnings() {
         "doxygen said:\n{err}"
     );
     assert!(out.join("html/rtc_sys_patrolsystem.html").is_file());
+    // The wiring drawing, shown on the system's page.
+    assert!(out.join("html/patrolsystem.svg").is_file());
+    let page = read(&out.join("html/rtc_sys_patrolsystem.html"));
+    assert!(page.contains(r#"data="patrolsystem.svg""#), "{page}");
 }
 
 #[test]
@@ -1126,4 +1130,87 @@ fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
     .collect();
     let page = &md["systems/hostile.md"];
     assert!(page.contains("Not drawn: out\\_in \\[c3\\]"), "{page}");
+}
+
+/// The wiring diagram comes right after the summary in every output, as on the HTML page:
+/// Markdown (an SVG beside the page, or a Mermaid block) and Doxygen (the SVG beside the page,
+/// `\image html`), before the instances and long before every value of the file.
+#[test]
+fn the_wiring_diagram_follows_the_summary_in_every_output() {
+    use rtcdoc::render::{doxygen, markdown};
+    let cat = load(&site_fixture());
+    let lang = rtcdoc::i18n::Lang::En;
+    let order = |page: &str, marks: &[&str]| {
+        let at: Vec<usize> = marks
+            .iter()
+            .map(|m| {
+                page.find(m)
+                    .unwrap_or_else(|| panic!("no {m:?} in\n{page}"))
+            })
+            .collect();
+        assert!(
+            at.windows(2).all(|w| w[0] < w[1]),
+            "{marks:?} out of order in\n{page}"
+        );
+    };
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", lang).into_iter().collect();
+    order(
+        &md["systems/patrolsystem.md"],
+        &[
+            "| System id |",
+            "## Wiring of PatrolSystem",
+            "![Wiring of PatrolSystem](patrolsystem.svg)",
+            "## Instances",
+            "## Every value of the file",
+        ],
+    );
+    assert!(md["systems/patrolsystem.svg"].contains("<svg"));
+    let dox: std::collections::BTreeMap<String, String> =
+        doxygen::pages(&cat, "Cat", lang).into_iter().collect();
+    order(
+        &dox["systems/patrolsystem.dox"],
+        &[
+            "<td>System id</td>",
+            "\\section rtc_sys_patrolsystem__sec_wiring Wiring of PatrolSystem",
+            "/// \\image html patrolsystem.svg\n",
+            "\\section rtc_sys_patrolsystem__instances Instances",
+            "Every value of the file",
+        ],
+    );
+    assert!(dox["systems/patrolsystem.svg"].contains("<svg"));
+    assert!(dox["Doxyfile"].contains("IMAGE_PATH             = systems\n"));
+    assert!(
+        !dox["Doxyfile"].contains("patrolsystem.svg"),
+        "an image, not an input"
+    );
+    // Mermaid, where the configuration asks for it: the same place.
+    let dir = tempfile::tempdir().unwrap();
+    common::write(
+        dir.path(),
+        "rtcdoc.toml",
+        "[markdown]\ndiagrams = \"mermaid\"\n",
+    );
+    let out = dir.path().join("md");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            site_fixture().to_str().unwrap(),
+            "-f",
+            "markdown",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    order(
+        &read(&out.join("systems/patrolsystem.md")),
+        &[
+            "| System id |",
+            "```mermaid",
+            "## Instances",
+            "## Every value of the file",
+        ],
+    );
 }

@@ -15,6 +15,9 @@ use crate::model::{non_empty, Text};
 pub struct Targets<'a> {
     /// Writes a section heading: (out, anchor, text).
     pub heading: &'a dyn Fn(&mut String, &str, &str),
+    /// Writes the wiring diagram's section, right after the summary (where the HTML page
+    /// shows it).
+    pub wiring: &'a dyn Fn(&mut String),
 }
 
 fn txt(v: &Option<Text>) -> String {
@@ -89,6 +92,7 @@ pub fn system_body<M: Markup>(
             &M::esc(&format!("{} {}", v.hidden, lang.t("sys_host_hidden"))),
         );
     }
+    (t.wiring)(out);
     instances::<M>(out, &v, lang, show_host, t);
     configuration::<M>(out, &v, lang, t);
     connectors::<M>(out, &v, lang, t);
