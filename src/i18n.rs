@@ -483,6 +483,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_instance_count", "instances", "インスタンス"),
     ("sys_instance_count_one", "instance", "インスタンス"),
     ("sys_interface_type", "Interface type", "インターフェース型"),
+    ("sys_member_of", "member of", "所属する複合コンポーネント:"),
     ("sys_members", "Members", "メンバー"),
     ("sys_no_end", "an end is missing", "端が書かれていない"),
     ("sys_no_instance", "the system has no instance", "システムにないインスタンス:"),

@@ -1214,3 +1214,62 @@ fn the_wiring_diagram_follows_the_summary_in_every_output() {
         ],
     );
 }
+
+/// A composite instance (RTSystemEditor's `PeriodicECShared` with participants) shows its
+/// members, each linked to its row, and each member the composite it belongs to, on the HTML
+/// page and in the Markdown one.
+#[test]
+fn a_composite_instance_lists_its_members() {
+    use rtcdoc::render::markdown;
+    let dir = tempfile::tempdir().unwrap();
+    let inst = |name: &str, composite: &str, inner: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Lab:Test:{name}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="{composite}">{inner}</rts:Components>"#
+        )
+    };
+    let member = |name: &str| {
+        format!(
+            r#"<rts:Participants><rts:Participant rts:instanceName="{name}" rts:componentId="RTC:Lab:Test:{name}:1.0.0"/></rts:Participants>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Comp:1.0" rts:version="0.2">{}{}{}{}</rts:RtsProfile>"#,
+        inst("A0", "None", ""),
+        inst("B0", "None", ""),
+        inst("C0", "None", ""),
+        inst(
+            "CompositeRTC",
+            "PeriodicECShared",
+            &format!("{}{}", member("A0"), member("B0"))
+        ),
+    );
+    common::write(dir.path(), "in/Comp.xml", &xml);
+    let out = dir.path().join("site");
+    build_site(&dir.path().join("in"), &out, SiteOptions::default());
+    let html = read(&out.join("systems/comp.html"));
+    let inst = section(&html, "instances");
+    assert!(
+        inst.contains(
+            r##"PeriodicECShared<br>Members: <a href="#inst-a0">A0</a>, <a href="#inst-b0">B0</a>"##
+        ),
+        "{inst}"
+    );
+    assert_eq!(
+        inst.matches(r##"<br>member of <a href="#inst-compositertc">CompositeRTC</a>"##)
+            .count(),
+        2,
+        "{inst}"
+    );
+    let cat = load(&dir.path().join("in"));
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", rtcdoc::i18n::Lang::En)
+            .into_iter()
+            .collect();
+    let page = &md["systems/comp.md"];
+    assert!(
+        page.contains("| PeriodicECShared; Members: A0, B0 |"),
+        "{page}"
+    );
+    assert!(page.contains("| None; member of CompositeRTC |"), "{page}");
+    assert!(!page.contains("C0 | None; member"), "{page}");
+}

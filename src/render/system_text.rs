@@ -132,7 +132,7 @@ fn instances<M: Markup>(
                 M::esc(&r.active_set),
                 M::esc(&r.contexts),
                 M::esc(&r.required),
-                M::esc(&r.composite),
+                M::esc(&composite_text(r, lang)),
                 M::esc(&r.comment),
             ];
             if show_host {
@@ -156,6 +156,30 @@ fn instances<M: Markup>(
         heads.push(lang.t("sys_path_uri"));
     }
     M::table(out, &heads, &rows);
+}
+
+/// The composite type of an instance with its members (`PeriodicECShared; Members: A0, B0`)
+/// or the composites it is a member of (`None; member of CompositeRTC`).
+fn composite_text(r: &super::view::system::InstanceRow, lang: Lang) -> String {
+    let mut parts = vec![r.composite.clone()];
+    let names = |l: &[Link]| {
+        l.iter()
+            .map(|x| x.text.as_str())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if !r.members.is_empty() {
+        parts.push(format!("{}: {}", lang.t("sys_members"), names(&r.members)));
+    }
+    if !r.member_of.is_empty() {
+        parts.push(format!(
+            "{} {}",
+            lang.t("sys_member_of"),
+            names(&r.member_of)
+        ));
+    }
+    parts.retain(|p| !p.is_empty());
+    parts.join("; ")
 }
 
 fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {

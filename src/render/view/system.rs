@@ -41,6 +41,11 @@ pub struct InstanceRow {
     pub contexts: String,
     pub required: String,
     pub composite: String,
+    /// A composite instance's members (its participants), each linked to its row when it is
+    /// an instance of the system.
+    pub members: Vec<Link>,
+    /// The composite instances this instance is a member of, linked to their rows.
+    pub member_of: Vec<Link>,
     pub comment: String,
     pub path_uri: String,
 }
@@ -252,13 +257,28 @@ fn visible_properties(p: &RtSystem, show_host: bool) -> Vec<KeyValue> {
         .collect()
 }
 
-/// The instances of system `s`, each linked to its component's page.
+/// A link to another page of the catalogue (with an anchor on it).
+type PageHref<'a> = dyn Fn(&Page, Option<&str>) -> String + 'a;
+
+/// The instances of system `s`, each linked to its component's page, a composite's members
+/// and the composites an instance is a member of to their rows (`local`).
 fn instance_rows(
     cat: &Catalog,
     s: &System,
     show_host: bool,
-    href: &dyn Fn(&Page, Option<&str>) -> String,
+    (href, local): (&PageHref<'_>, &dyn Fn(&str) -> String),
 ) -> Vec<InstanceRow> {
+    // An instance named by a composite: linked to its row (the first of that name).
+    let row_link = |name: &str| Link {
+        text: name.to_string(),
+        href: s
+            .profile
+            .components
+            .iter()
+            .position(|k| non_empty(&k.instance_name) == Some(name))
+            .map(|j| local(&s.instances[j].anchor))
+            .unwrap_or_default(),
+    };
     s.profile
         .components
         .iter()
@@ -298,6 +318,24 @@ fn instance_rows(
                 contexts,
                 required: txt(&c.is_required),
                 composite: txt(&c.composite_type),
+                members: c
+                    .participants
+                    .iter()
+                    .filter_map(|t| non_empty(&t.instance_name))
+                    .map(&row_link)
+                    .collect(),
+                member_of: s
+                    .profile
+                    .components
+                    .iter()
+                    .filter(|k| {
+                        k.participants
+                            .iter()
+                            .any(|t| non_empty(&t.instance_name) == non_empty(&c.instance_name))
+                    })
+                    .filter_map(|k| non_empty(&k.instance_name))
+                    .map(&row_link)
+                    .collect(),
                 comment: txt(&c.comment),
                 path_uri: if show_host {
                     txt(&c.path_uri)
@@ -564,7 +602,7 @@ pub fn system_view(
         crate::catalog::systems::host_values(p)
     };
 
-    let instances = instance_rows(cat, s, show_host, &href);
+    let instances = instance_rows(cat, s, show_host, (&href, &local));
 
     let configs = instance_configs(cat, s, lang);
 
