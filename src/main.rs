@@ -1001,7 +1001,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
             // An empty graph is written (a script expects one), with the reason on stderr.
             eprintln!("note: {}", lang.t("dataflow_none"));
         }
-        return write_graph(args, &name, &name, &inst, &conns);
+        return write_graph(args, &name, &name, (&inst, &conns, &[]));
     }
     if let Some(want) = &args.component {
         let cat = &loaded.catalog;
@@ -1013,7 +1013,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let (inst, conns) = nb::wiring(cat, ci, &rows, lang, &|_, _| String::new());
         let name = cat[ci].display_name();
         let title = format!("{} {name}", lang.t("neighbourhood_of"));
-        return write_graph(args, &title, &title, &inst, &conns);
+        return write_graph(args, &title, &title, (&inst, &conns, &[]));
     }
     let systems = &loaded.catalog.systems;
     // A file path as the shell completes it (from the current directory, not the input).
@@ -1071,16 +1071,19 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
     };
     // Links as from the site's root (the drawing stands on its own).
     let cat = &loaded.catalog;
-    let (inst, conns) = rtcdoc::render::wiring::system_wiring(cat, s, lang, &|to, a| {
+    let w = rtcdoc::render::wiring::system_wiring(cat, s, lang, &|to, a| {
         cat.href_from_root(to, Some(a), rtcdoc::catalog::Output::Html)
     });
     let name = s.profile.name();
+    // A connector left out of the drawing is named on stderr too (and in the drawing).
+    for n in &w.not_drawn {
+        eprintln!("note: {n}");
+    }
     write_graph(
         args,
         name,
         &format!("{} {name}", lang.t("sys_wiring")),
-        &inst,
-        &conns,
+        (&w.instances, &w.connectors, &w.not_drawn),
     )
 }
 
@@ -1164,18 +1167,23 @@ fn strsim_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
-/// Writes a graph (a system's wiring, the data flow, a neighbourhood) in the chosen format.
+/// Writes a graph (a system's wiring, the data flow, a neighbourhood) in the chosen format:
+/// its instances, its connectors and the connectors it leaves out (sentences that say why).
 fn write_graph(
     args: &GraphArgs,
     name: &str,
     title: &str,
-    inst: &[rtcdoc::render::wiring::WireInstance],
-    conns: &[rtcdoc::render::wiring::WireConnector],
+    (inst, conns, not_drawn): (
+        &[rtcdoc::render::wiring::WireInstance],
+        &[rtcdoc::render::wiring::WireConnector],
+        &[String],
+    ),
 ) -> anyhow::Result<ExitCode> {
+    use rtcdoc::render::{html, wiring};
     let text = match args.format {
-        GraphFormat::Dot => rtcdoc::render::wiring::to_dot(name, inst, conns),
-        GraphFormat::Mermaid => rtcdoc::render::wiring::to_mermaid(name, inst, conns),
-        GraphFormat::Svg => rtcdoc::render::html::standalone_system_diagram(title, inst, conns),
+        GraphFormat::Dot => wiring::to_dot(name, inst, conns, not_drawn),
+        GraphFormat::Mermaid => wiring::to_mermaid(name, inst, conns, not_drawn),
+        GraphFormat::Svg => html::standalone_system_diagram(title, inst, conns, not_drawn),
     };
     match &args.output {
         Some(path) => std::fs::write(path, text.as_bytes())

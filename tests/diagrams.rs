@@ -5,7 +5,7 @@
 mod common;
 use common::OutputWithin;
 
-use rtcdoc::layout::wiring::{layout, problems, Edge, Node, Port, PortKind};
+use rtcdoc::layout::wiring::{layout, problems, shared_tracks, Edge, Node, Port, PortKind};
 use std::path::Path;
 
 fn node(name: &str, ports: &[(&str, PortKind)], location: Option<(i64, i64)>) -> Node {
@@ -57,6 +57,67 @@ fn a_generated_40_instance_system_is_sound() {
     assert!(l.routes.iter().all(Option::is_some));
     // Readable: text is not shrunk, the drawing grows instead.
     assert!(l.width > 600.0 && l.height > 300.0);
+}
+
+/// A generated system of `n` instances (two in-ports, two out-ports, a service port `srv` and
+/// a client port `cli` each): each fed by earlier ones, and about `n / 7` service connectors
+/// between instances far apart, the pairs drawn by a fixed pseudo-random sequence (`seed`).
+fn generated_system(n: usize, seed: u64) -> (Vec<Node>, Vec<Edge>) {
+    use PortKind::*;
+    let mut state = seed;
+    let mut next = |m: usize| {
+        // A linear congruential generator (Knuth's MMIX constants): the same pairs every run.
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 33) as usize) % m
+    };
+    let nodes: Vec<Node> = (0..n)
+        .map(|i| {
+            node(
+                &format!("Node{i}"),
+                &[
+                    ("in1", In),
+                    ("in2", In),
+                    ("out1", Out),
+                    ("out2", Out),
+                    ("srv", Service),
+                    ("cli", Service),
+                ],
+                None,
+            )
+        })
+        .collect();
+    let mut edges = Vec::new();
+    for i in 1..n {
+        edges.push(edge((next(i), 2 + next(2)), (i, 0), false));
+        if next(3) == 0 {
+            edges.push(edge((next(i), 2 + next(2)), (i, 1), false));
+        }
+    }
+    for _ in 0..n / 7 {
+        let (a, b) = (next(n), next(n));
+        if a != b {
+            edges.push(edge((a, 5), (b, 4), true));
+        }
+    }
+    (nodes, edges)
+}
+
+/// Every connector has its own track where it would overlap another (no two unrelated
+/// connectors run along one line, so that one seems to branch into the other), in large
+/// generated systems such as the 200-instance one where two service connectors shared a
+/// horizontal run (a port of one at the height another passed the layer before).
+#[test]
+fn no_two_connectors_share_a_track_in_large_generated_systems() {
+    for (n, seed) in [(200, 1), (200, 7), (120, 3), (60, 11)] {
+        let (nodes, edges) = generated_system(n, seed);
+        let l = layout(&nodes, &edges);
+        let shared = shared_tracks(&l, &edges);
+        assert!(shared.is_empty(), "{n} instances, seed {seed}: {shared:#?}");
+        let p = problems(&l);
+        assert!(p.is_empty(), "{n} instances, seed {seed}: {p:#?}");
+    }
 }
 
 #[test]

@@ -514,6 +514,10 @@ fn doxygen_runs_on_a_system_without_warnings() {
         "doxygen said:\n{err}"
     );
     assert!(out.join("html/rtc_sys_patrolsystem.html").is_file());
+    // The wiring drawing, shown on the system's page.
+    assert!(out.join("html/patrolsystem.svg").is_file());
+    let page = read(&out.join("html/rtc_sys_patrolsystem.html"));
+    assert!(page.contains(r#"data="patrolsystem.svg""#), "{page}");
 }
 
 #[test]
@@ -981,4 +985,315 @@ fn an_unreadable_system_alone_is_reported() {
         assert!(err.contains("in/System.xml"), "{input}: {err}");
         assert!(!err.contains("nothing to document"), "{input}: {err}");
     }
+}
+
+/// Two components, `Src` (out-port `out`) and `Dst` (in-port `in`), and a system `Rev` whose
+/// one data connector `c1` is saved in-port first, as RTSystemEditor saves a connector dragged
+/// from its in-port: source `Dst0.in`, target `Src0.out`.
+fn reversed_connector_input(d: &std::path::Path) -> PathBuf {
+    let input = d.join("in");
+    common::write(
+        &input,
+        "comps/Src/RTC.xml",
+        &common::xml_profile("Src", &[("DataOutPort", "out", "RTC::TimedDouble")]),
+    );
+    common::write(
+        &input,
+        "comps/Dst/RTC.xml",
+        &common::xml_profile("Dst", &[("DataInPort", "in", "RTC::TimedDouble")]),
+    );
+    let inst = |name: &str, comp: &str, port: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Test:Rev:1.0" rts:version="0.2">{}{}<rts:DataPortConnectors rts:connectorId="c1" rts:name="in_out" rts:dataType="IDL:RTC/TimedDouble:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:Test:Cat:Dst:1.0.0" rts:instanceName="Dst0" rts:portName="Dst0.in"/><rts:targetDataPort rts:componentId="RTC:Test:Cat:Src:1.0.0" rts:instanceName="Src0" rts:portName="Src0.out"/></rts:DataPortConnectors></rts:RtsProfile>"#,
+        inst("Src0", "Src", "out"),
+        inst("Dst0", "Dst", "in"),
+    );
+    common::write(&input, "system/Rev.xml", &xml);
+    input
+}
+
+/// A data connector saved in-port first is listed the way data flows, as the diagrams draw it
+/// (source the out-port, target the in-port), with a note of how the file saved it; the type
+/// page's list of connectors says so too.
+#[test]
+fn a_connector_saved_in_port_first_is_listed_the_way_data_flows() {
+    use rtcdoc::render::markdown;
+    let dir = tempfile::tempdir().unwrap();
+    let input = reversed_connector_input(dir.path());
+    let out = dir.path().join("site");
+    build_site(&input, &out, SiteOptions::default());
+    let html = read(&out.join("systems/rev.html"));
+    let data = section(&html, "data-connectors");
+    let cells: Vec<&str> = data.split("<td data-label=").collect();
+    assert!(
+        cells[1].starts_with(r#""Source">"#)
+            && cells[1].contains("Src0</a>.")
+            && cells[1].contains("<code>out</code>"),
+        "{data}"
+    );
+    assert!(
+        cells[2].starts_with(r#""Target">"#)
+            && cells[2].contains("Dst0</a>.")
+            && cells[2].contains("<code>in</code>"),
+        "{data}"
+    );
+    assert!(
+        data.contains("saved in the file as: Dst0.in → Src0.out"),
+        "{data}"
+    );
+    let cat = load(&input);
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", rtcdoc::i18n::Lang::En)
+            .into_iter()
+            .collect();
+    let page = &md["systems/rev.md"];
+    assert!(
+        page.contains("| in\\_out (saved in the file as: Dst0.in → Src0.out) | c1 | Src0.[out](../components/src.md#port-out) | Dst0.[in](../components/dst.md#port-in) |"),
+        "{page}"
+    );
+    let ty = md
+        .iter()
+        .find(|(k, v)| k.starts_with("types/") && v.contains("Rev: "))
+        .map(|(_, v)| v)
+        .expect("a type page lists the connector");
+    assert!(ty.contains("Rev: Src0.out → Dst0.in"), "{ty}");
+    // The diagram agrees.
+    let o = common::rtcdoc(&["graph", "in", "-f", "mermaid"], dir.path());
+    let mermaid = String::from_utf8_lossy(&o.stdout);
+    assert!(mermaid.contains("\"out → in\""), "{mermaid}");
+}
+
+/// A system of `Src0` (`Src`: out-port `out`) and `Dst0` (`Dst`: in-port `in`) with three
+/// data connectors: `c1` Src0.out → Dst0.in, `c2` from `Src0.nosuchport` (a port `Src` does not
+/// have, RTC601) and `c3` to `Ghost0.in` (no such instance, RTC608).
+fn dangling_connector_input(d: &std::path::Path) -> PathBuf {
+    let input = d.join("in");
+    common::write(
+        &input,
+        "comps/Src/RTC.xml",
+        &common::xml_profile("Src", &[("DataOutPort", "out", "RTC::TimedDouble")]),
+    );
+    common::write(
+        &input,
+        "comps/Dst/RTC.xml",
+        &common::xml_profile("Dst", &[("DataInPort", "in", "RTC::TimedDouble")]),
+    );
+    let inst = |name: &str, comp: &str, port: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
+        )
+    };
+    let conn = |id: &str, (si, sp): (&str, &str), (ti, tp): (&str, &str)| {
+        format!(
+            r#"<rts:DataPortConnectors rts:connectorId="{id}" rts:name="{sp}_{tp}" rts:dataType="IDL:RTC/TimedDouble:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:Test:Cat:Src:1.0.0" rts:instanceName="{si}" rts:portName="{si}.{sp}"/><rts:targetDataPort rts:componentId="RTC:Test:Cat:Dst:1.0.0" rts:instanceName="{ti}" rts:portName="{ti}.{tp}"/></rts:DataPortConnectors>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Test:Hostile:1.0" rts:version="0.2">{}{}{}{}{}</rts:RtsProfile>"#,
+        inst("Src0", "Src", "out"),
+        inst("Dst0", "Dst", "in"),
+        conn("c1", ("Src0", "out"), ("Dst0", "in")),
+        conn("c2", ("Src0", "nosuchport"), ("Dst0", "in")),
+        conn("c3", ("Src0", "out"), ("Ghost0", "in")),
+    );
+    common::write(&input, "system/Hostile.xml", &xml);
+    input
+}
+
+/// A connector that cannot be drawn (its end names no instance of the system) is named, with
+/// the reason, by every drawing and caption instead of vanishing; a port the component's profile
+/// does not have is drawn in a style of its own.
+#[test]
+fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
+    use rtcdoc::render::markdown;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = dangling_connector_input(d);
+    let note = "Not drawn: out_in [c3] (Src0.out → Ghost0.in): the system has no instance Ghost0";
+    let graph = |format: &str| {
+        let o = common::rtcdoc(&["graph", "in", "-f", format], d);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(String::from_utf8_lossy(&o.stderr).contains(note));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let dot = graph("dot");
+    assert!(dot.contains(&format!("label=\"{note}\\l\"")), "{dot}");
+    assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
+    assert!(dot.contains("<i>nosuchport</i> ?"), "{dot}");
+    let mermaid = graph("mermaid");
+    assert!(mermaid.contains(&format!("%% {note}")), "{mermaid}");
+    let svg = graph("svg");
+    assert!(
+        svg.contains("<text class=\"not-drawn\" x=\"8\"") && svg.contains(note),
+        "{svg}"
+    );
+    assert!(svg.contains(r#"class="port out unknown" aria-label="out-port Src0.nosuchport (not in the component&#39;s profile)""#), "{svg}");
+    assert!(
+        svg.contains(r#"class="port out" aria-label="out-port Src0.out""#),
+        "{svg}"
+    );
+    // The page's caption counts the file's connectors and names the one left out.
+    let out = d.join("site");
+    build_site(&input, &out, SiteOptions::default());
+    let html = read(&out.join("systems/hostile.html"));
+    let caption = &html[html.find("<figcaption>").unwrap()..html.find("</figcaption>").unwrap()];
+    assert!(caption.contains("3 data connectors"), "{caption}");
+    assert!(caption.contains(&format!("{note}.")), "{caption}");
+    let md: std::collections::BTreeMap<String, String> = markdown::pages(
+        &rtcdoc::build::load(&input, &LoadOptions::default())
+            .unwrap()
+            .catalog,
+        "Cat",
+        rtcdoc::i18n::Lang::En,
+    )
+    .into_iter()
+    .collect();
+    let page = &md["systems/hostile.md"];
+    assert!(page.contains("Not drawn: out\\_in \\[c3\\]"), "{page}");
+}
+
+/// The wiring diagram comes right after the summary in every output, as on the HTML page:
+/// Markdown (an SVG beside the page, or a Mermaid block) and Doxygen (the SVG beside the page,
+/// `\image html`), before the instances and long before every value of the file.
+#[test]
+fn the_wiring_diagram_follows_the_summary_in_every_output() {
+    use rtcdoc::render::{doxygen, markdown};
+    let cat = load(&site_fixture());
+    let lang = rtcdoc::i18n::Lang::En;
+    let order = |page: &str, marks: &[&str]| {
+        let at: Vec<usize> = marks
+            .iter()
+            .map(|m| {
+                page.find(m)
+                    .unwrap_or_else(|| panic!("no {m:?} in\n{page}"))
+            })
+            .collect();
+        assert!(
+            at.windows(2).all(|w| w[0] < w[1]),
+            "{marks:?} out of order in\n{page}"
+        );
+    };
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", lang).into_iter().collect();
+    order(
+        &md["systems/patrolsystem.md"],
+        &[
+            "| System id |",
+            "## Wiring of PatrolSystem",
+            "![Wiring of PatrolSystem](patrolsystem.svg)",
+            "## Instances",
+            "## Every value of the file",
+        ],
+    );
+    assert!(md["systems/patrolsystem.svg"].contains("<svg"));
+    let dox: std::collections::BTreeMap<String, String> =
+        doxygen::pages(&cat, "Cat", lang).into_iter().collect();
+    order(
+        &dox["systems/patrolsystem.dox"],
+        &[
+            "<td>System id</td>",
+            "\\section rtc_sys_patrolsystem__sec_wiring Wiring of PatrolSystem",
+            "/// \\image html patrolsystem.svg\n",
+            "\\section rtc_sys_patrolsystem__instances Instances",
+            "Every value of the file",
+        ],
+    );
+    assert!(dox["systems/patrolsystem.svg"].contains("<svg"));
+    assert!(dox["Doxyfile"].contains("IMAGE_PATH             = systems\n"));
+    assert!(
+        !dox["Doxyfile"].contains("patrolsystem.svg"),
+        "an image, not an input"
+    );
+    // Mermaid, where the configuration asks for it: the same place.
+    let dir = tempfile::tempdir().unwrap();
+    common::write(
+        dir.path(),
+        "rtcdoc.toml",
+        "[markdown]\ndiagrams = \"mermaid\"\n",
+    );
+    let out = dir.path().join("md");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            site_fixture().to_str().unwrap(),
+            "-f",
+            "markdown",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    order(
+        &read(&out.join("systems/patrolsystem.md")),
+        &[
+            "| System id |",
+            "```mermaid",
+            "## Instances",
+            "## Every value of the file",
+        ],
+    );
+}
+
+/// A composite instance (RTSystemEditor's `PeriodicECShared` with participants) shows its
+/// members, each linked to its row, and each member the composite it belongs to, on the HTML
+/// page and in the Markdown one.
+#[test]
+fn a_composite_instance_lists_its_members() {
+    use rtcdoc::render::markdown;
+    let dir = tempfile::tempdir().unwrap();
+    let inst = |name: &str, composite: &str, inner: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Lab:Test:{name}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="{composite}">{inner}</rts:Components>"#
+        )
+    };
+    let member = |name: &str| {
+        format!(
+            r#"<rts:Participants><rts:Participant rts:instanceName="{name}" rts:componentId="RTC:Lab:Test:{name}:1.0.0"/></rts:Participants>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Comp:1.0" rts:version="0.2">{}{}{}{}</rts:RtsProfile>"#,
+        inst("A0", "None", ""),
+        inst("B0", "None", ""),
+        inst("C0", "None", ""),
+        inst(
+            "CompositeRTC",
+            "PeriodicECShared",
+            &format!("{}{}", member("A0"), member("B0"))
+        ),
+    );
+    common::write(dir.path(), "in/Comp.xml", &xml);
+    let out = dir.path().join("site");
+    build_site(&dir.path().join("in"), &out, SiteOptions::default());
+    let html = read(&out.join("systems/comp.html"));
+    let inst = section(&html, "instances");
+    assert!(
+        inst.contains(
+            r##"PeriodicECShared<br>Members: <a href="#inst-a0">A0</a>, <a href="#inst-b0">B0</a>"##
+        ),
+        "{inst}"
+    );
+    assert_eq!(
+        inst.matches(r##"<br>member of <a href="#inst-compositertc">CompositeRTC</a>"##)
+            .count(),
+        2,
+        "{inst}"
+    );
+    let cat = load(&dir.path().join("in"));
+    let md: std::collections::BTreeMap<String, String> =
+        markdown::pages(&cat, "Cat", rtcdoc::i18n::Lang::En)
+            .into_iter()
+            .collect();
+    let page = &md["systems/comp.md"];
+    assert!(
+        page.contains("| PeriodicECShared; Members: A0, B0 |"),
+        "{page}"
+    );
+    assert!(page.contains("| None; member of CompositeRTC |"), "{page}");
+    assert!(!page.contains("C0 | None; member"), "{page}");
 }

@@ -391,6 +391,33 @@ impl Catalog {
         out
     }
 
+    /// For each data connector of `sys`, whether the file saved it in-port first: its source
+    /// end an in-port and its target end an out-port ([`Catalog::instance_ports`]), as
+    /// RTSystemEditor saves the end the user dragged from as the source. Diagrams and tables
+    /// show such a connector from its out-port to its in-port, the way data flows.
+    pub fn reversed_data_connectors(&self, sys: &System) -> Vec<bool> {
+        let mut ports: HashMap<usize, Vec<InstancePort>> = HashMap::new();
+        let mut direction = |i: Option<usize>, e: &Option<PortEnd>| -> Option<PortDirection> {
+            let (i, e) = (i?, e.as_ref()?);
+            let name = end_port_name(e);
+            ports
+                .entry(i)
+                .or_insert_with(|| self.instance_ports(sys, i))
+                .iter()
+                .find(|p| p.name == name && !p.service)?
+                .direction
+        };
+        sys.profile
+            .data_port_connectors
+            .iter()
+            .zip(&sys.data_connectors)
+            .map(|(c, l)| {
+                direction(l.source.instance, &c.source) == Some(PortDirection::In)
+                    && direction(l.target.instance, &c.target) == Some(PortDirection::Out)
+            })
+            .collect()
+    }
+
     /// The ports of instance `i` of `sys`: the component profile's (data ports, then service
     /// ports) when it is in the catalogue, then any other port the system file names for the
     /// instance (its port lists, its connector ends), in the order first met.

@@ -500,15 +500,6 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         Stop::Port { node, .. } => g.layer[node],
         Stop::Dummy(it) => g.items[it].1,
     };
-    struct Seg {
-        edge: usize,
-        j: usize,
-        lo: f32,
-        hi: f32,
-        /// 0 U-turn on the left bank, 1 crossing downwards, 2 upwards, 3 U-turn on the right.
-        class: u8,
-        key: f32,
-    }
     let mut segs: Vec<Vec<Seg>> = (0..=layers).map(|_| Vec::new()).collect();
     for (e, st) in g.stops.iter().enumerate() {
         let Some(st) = st else { continue };
@@ -540,6 +531,7 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
                 hi: ya.max(yb),
                 class,
                 key,
+                ends: [(left_bank(la), ya), (left_bank(lb), yb)],
             });
         }
     }
@@ -557,7 +549,7 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         });
         placed.clear();
         track[c].reserve_exact(list.len());
-        for s in list.iter() {
+        for s in track_order(list).into_iter().map(|k| &list[k]) {
             let t = placed
                 .iter()
                 .filter(|p| p.0 < s.hi + 6.0 && s.lo < p.1 + 6.0)
@@ -663,6 +655,84 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         routes,
         from_locations: locs.is_some(),
     }
+}
+
+/// A vertical segment of a connector in a channel: from the connector's stop `j` to stop
+/// `j + 1`, between `lo` and `hi`.
+struct Seg {
+    edge: usize,
+    j: usize,
+    lo: f32,
+    hi: f32,
+    /// 0 U-turn on the left bank, 1 crossing downwards, 2 upwards, 3 U-turn on the right.
+    class: u8,
+    key: f32,
+    /// Its two ends: (on the left bank, y). The connector runs level from each end's bank to
+    /// the segment's track.
+    ends: [(bool, f32); 2],
+}
+
+/// The order in which the segments `list` (sorted as preferred) get their tracks, each right
+/// of every earlier one it overlaps: the preferred order, except that a segment with an end
+/// on the left bank at the height of another's end on the right bank goes before it (left of
+/// it). Else their level runs, one from the left bank to its track and one from the right
+/// bank to its own, would overlap on one line, and one connector would seem to branch into
+/// the other. (A cycle of such constraints, two connectors meeting at two heights the other
+/// way round each, keeps the preferred order.)
+fn track_order(list: &[Seg]) -> Vec<usize> {
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+    const LEVEL: f32 = 2.0;
+    // Right-bank ends by height: (y, segment).
+    let mut right: Vec<(f32, usize)> = list
+        .iter()
+        .enumerate()
+        .flat_map(|(k, s)| s.ends.iter().filter(|e| !e.0).map(move |e| (e.1, k)))
+        .collect();
+    right.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    let mut after: Vec<Vec<usize>> = vec![Vec::new(); list.len()];
+    let mut before = vec![0usize; list.len()];
+    for (k, s) in list.iter().enumerate() {
+        for &(_, y) in s.ends.iter().filter(|e| e.0) {
+            let from = right.partition_point(|r| r.0 < y - LEVEL);
+            for &(ry, m) in &right[from..] {
+                if ry > y + LEVEL {
+                    break;
+                }
+                if list[m].edge != s.edge && !after[k].contains(&m) {
+                    after[k].push(m);
+                    before[m] += 1;
+                }
+            }
+        }
+    }
+    // Kahn's algorithm, the preferred (smallest) index first among those free to go.
+    let mut free: BinaryHeap<Reverse<usize>> = (0..list.len())
+        .filter(|&k| before[k] == 0)
+        .map(Reverse)
+        .collect();
+    let mut done = vec![false; list.len()];
+    let mut order = Vec::with_capacity(list.len());
+    while order.len() < list.len() {
+        let k = match free.pop() {
+            Some(Reverse(k)) if done[k] => continue,
+            Some(Reverse(k)) => k,
+            // A cycle: the first segment left goes, whatever waits for it.
+            None => match (0..list.len()).find(|&k| !done[k]) {
+                Some(k) => k,
+                None => break,
+            },
+        };
+        done[k] = true;
+        order.push(k);
+        for &m in &after[k] {
+            before[m] = before[m].saturating_sub(1);
+            if before[m] == 0 && !done[m] {
+                free.push(Reverse(m));
+            }
+        }
+    }
+    order
 }
 
 /// Drops repeated points and middle points of straight runs.
@@ -1439,6 +1509,58 @@ pub fn problems(l: &WiringLayout) -> Vec<String> {
                 if segment_enters(a, b, bx) {
                     out.push(format!("connector {e} runs through box {i}"));
                 }
+            }
+        }
+    }
+    out
+}
+
+/// Connectors that share a stretch of track (an empty list when none do): two segments of
+/// different connectors on one line overlapping by more than 2 px, which would make one seem to
+/// branch into the other. Connectors that share a port (fan-out from one out-port) may share
+/// the way out of it.
+pub fn shared_tracks(l: &WiringLayout, edges: &[Edge]) -> Vec<String> {
+    // Every segment: (horizontal, the line's coordinate, from, to along it, connector).
+    let mut segs: Vec<(bool, f32, f32, f32, usize)> = Vec::new();
+    for (e, r) in l.routes.iter().enumerate() {
+        let Some(r) = r else { continue };
+        for w in r.windows(2) {
+            let ((ax, ay), (bx, by)) = (w[0], w[1]);
+            if (ay - by).abs() < 0.01 {
+                segs.push((true, ay, ax.min(bx), ax.max(bx), e));
+            } else if (ax - bx).abs() < 0.01 {
+                segs.push((false, ax, ay.min(by), ay.max(by), e));
+            }
+        }
+    }
+    segs.sort_by(|a, b| {
+        (a.0, a.1, a.2)
+            .partial_cmp(&(b.0, b.1, b.2))
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    let related = |a: usize, b: usize| {
+        let (ea, eb) = (&edges[a], &edges[b]);
+        a == b
+            || [ea.from, ea.to]
+                .iter()
+                .any(|p| *p == eb.from || *p == eb.to)
+    };
+    let mut out = Vec::new();
+    for (i, a) in segs.iter().enumerate() {
+        for b in &segs[i + 1..] {
+            if b.0 != a.0 || (b.1 - a.1).abs() > 0.01 || b.2 >= a.3 {
+                break;
+            }
+            if a.3.min(b.3) - b.2 > 2.0 && !related(a.4, b.4) {
+                let axis = if a.0 { "y" } else { "x" };
+                out.push(format!(
+                    "connectors {} and {} share {axis}={} from {} to {}",
+                    a.4,
+                    b.4,
+                    a.1,
+                    b.2,
+                    a.3.min(b.3)
+                ));
             }
         }
     }

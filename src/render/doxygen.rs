@@ -365,10 +365,32 @@ fn crumb_home(out: &mut String, cat: &Catalog) {
     d!(out);
 }
 
-/// `systems/<slug>.dox`.
-fn system_page(cat: &Catalog, si: SystemIx, lang: Lang, site: (bool, Option<&str>)) -> String {
+/// `systems/<slug>.dox`, and its wiring diagram as an SVG file beside it (its stem:
+/// [`Page::path`]), shown after the summary as on the HTML page (`\image html`: the Doxyfile's
+/// `IMAGE_PATH` names the folder; Graphviz is not needed).
+fn system_page(
+    cat: &Catalog,
+    si: SystemIx,
+    lang: Lang,
+    site: (bool, Option<&str>),
+) -> (String, String) {
     let s = &cat[si];
     let page = cat.system_page(si);
+    let w = super::wiring::system_wiring(cat, s, lang, &|_, _| String::new());
+    let caption = format!("{} {}", lang.t("sys_wiring"), s.display_name());
+    let svg =
+        super::html::standalone_system_diagram(&caption, &w.instances, &w.connectors, &w.not_drawn);
+    let wiring = |out: &mut String| {
+        section(out, page, "sec-wiring", &caption);
+        // No caption: the section's heading says what it is, and the drawing has its title.
+        d!(out, "\\image html {}", page.file_name("svg"));
+        d!(out);
+        // What the drawing leaves out, said under it.
+        for n in &w.not_drawn {
+            d!(out, "<p>{}</p>", text(&format!("{n}.")));
+            d!(out);
+        }
+    };
     let mut out = String::new();
     d!(
         out,
@@ -385,9 +407,12 @@ fn system_page(cat: &Catalog, si: SystemIx, lang: Lang, site: (bool, Option<&str
         s,
         lang,
         site,
-        &super::system_text::Targets { heading: &head },
+        &super::system_text::Targets {
+            heading: &head,
+            wiring: &wiring,
+        },
     );
-    out
+    (out, svg)
 }
 
 /// `index.dox` (`\\mainpage`) from the front page's view: the counts, every category and
@@ -457,8 +482,9 @@ fn doxyfile_string(s: &str) -> String {
     format!("\"{}\"", one.replace('\\', "\\\\").replace('"', "\\\""))
 }
 
-/// The `Doxyfile`: relative paths only, warnings are errors, HTML + LaTeX + man + tag file.
-pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
+/// The `Doxyfile`: relative paths only, warnings are errors, HTML + LaTeX + man + tag file;
+/// `images`, the folders of the images the pages show (`IMAGE_PATH`, when there are any).
+pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String], images: &[String]) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -513,6 +539,10 @@ pub fn doxyfile(site_title: &str, lang: Lang, inputs: &[String]) -> String {
     ];
     for (k, v) in settings {
         let _ = writeln!(s, "{k:<22} = {v}");
+    }
+    // The systems' wiring drawings (`\image html`), beside their pages.
+    if !images.is_empty() {
+        let _ = writeln!(s, "{:<22} = {}", "IMAGE_PATH", images.join(" "));
     }
     let _ = write!(s, "{:<22} =", "INPUT");
     for i in inputs {
@@ -601,22 +631,23 @@ fn other_pages(
         let v = facet_view(cat, FacetKind::Vendor, fi, lang);
         (v.page.path_in(DOX), facet_page::<Dox>(cat, &v, "", lang))
     }));
+    let mut drawings: Vec<(String, String)> = Vec::new();
     if !cat.systems.is_empty() {
         out.push((
             cat.site_page(PageKind::Systems).path_in(DOX),
             systems_index_page::<Dox>(cat, &systems_index_view(cat), "", lang),
         ));
-        out.par_extend(
-            (0..cat.systems.len())
-                .into_par_iter()
-                .map(Ix::new)
-                .map(|si| {
-                    (
-                        cat.system_page(si).path_in(DOX),
-                        system_page(cat, si, lang, site),
-                    )
-                }),
-        );
+        let (pages, svgs): (Vec<_>, Vec<_>) = (0..cat.systems.len())
+            .into_par_iter()
+            .map(Ix::new)
+            .map(|si| {
+                let page = cat.system_page(si);
+                let (text, svg) = system_page(cat, si, lang, site);
+                ((page.path_in(DOX), text), (page.path("svg"), svg))
+            })
+            .unzip();
+        out.extend(pages);
+        drawings = svgs;
     }
     out.extend(super::history_text::pages::<Dox>(cat, site.1, lang));
     let mut inputs: Vec<String> = out.iter().map(|(p, _)| p.clone()).collect();
@@ -626,7 +657,17 @@ fn other_pages(
         at..at,
         Ix::all(cat.components.len()).map(|ci| component_path(cat, ci)),
     );
-    out.push(("Doxyfile".into(), doxyfile(site_title, lang, &inputs)));
+    let mut images: Vec<String> = drawings
+        .iter()
+        .filter_map(|(p, _)| Some(std::path::Path::new(p).parent()?.to_str()?.to_string()))
+        .collect();
+    images.dedup();
+    out.push((
+        "Doxyfile".into(),
+        doxyfile(site_title, lang, &inputs, &images),
+    ));
+    // The systems' drawings: images (`IMAGE_PATH`), not inputs.
+    out.extend(drawings);
     out
 }
 
@@ -740,7 +781,7 @@ mod tests {
 
     #[test]
     fn doxyfile_has_no_absolute_paths_and_quotes_the_title() {
-        let d = doxyfile("My \"cat\"", Lang::Ja, &["mainpage.dox".into()]);
+        let d = doxyfile("My \"cat\"", Lang::Ja, &["mainpage.dox".into()], &[]);
         assert!(d.contains(r#"PROJECT_NAME           = "My \"cat\"""#));
         assert!(d.contains("OUTPUT_LANGUAGE        = Japanese"));
         assert!(d.contains("WARN_AS_ERROR          = FAIL_ON_WARNINGS"));

@@ -516,7 +516,8 @@ fn dataflow_page(cat: &Catalog, title: &str, lang: Lang) -> String {
 }
 
 /// `systems/<slug>.md`, and its wiring diagram as an SVG file (written beside it, with the
-/// page's stem: [`Page::path`]) unless it is drawn as a Mermaid block.
+/// page's stem: [`Page::path`]) unless it is drawn as a Mermaid block; the diagram's section
+/// comes after the summary.
 fn system_page(
     cat: &Catalog,
     si: SystemIx,
@@ -539,35 +540,54 @@ fn system_page(
     w!(out);
     // The section anchors are the HTML page's (`data-connectors`, …): type pages link them.
     let head = |o: &mut String, anchor: &str, text: &str| heading(o, 2, anchor, text);
+    let w = super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
+    let name = &*s.display_name();
+    let caption = format!("{} {name}", lang.t("sys_wiring"));
+    let svg = match diagrams {
+        super::DiagramFormat::Mermaid => None,
+        super::DiagramFormat::Svg => Some(super::html::standalone_system_diagram(
+            &caption,
+            &w.instances,
+            &w.connectors,
+            &w.not_drawn,
+        )),
+    };
+    // The wiring diagram after the summary, as on the HTML page.
+    let wiring = |out: &mut String| {
+        heading(out, 2, "sec-wiring", &caption);
+        match diagrams {
+            super::DiagramFormat::Mermaid => {
+                w!(out, "```mermaid");
+                out.push_str(&super::wiring::to_mermaid(
+                    name,
+                    &w.instances,
+                    &w.connectors,
+                    &w.not_drawn,
+                ));
+                w!(out, "```");
+            }
+            super::DiagramFormat::Svg => {
+                w!(out, "![{}]({})", inline(&caption), page.file_name("svg"));
+            }
+        }
+        // What the drawing leaves out, said under it.
+        for n in &w.not_drawn {
+            w!(out);
+            w!(out, "{}", inline(&format!("{n}.")));
+        }
+        w!(out);
+    };
     super::system_text::system_body::<Md>(
         &mut out,
         cat,
         s,
         lang,
         site,
-        &super::system_text::Targets { heading: &head },
+        &super::system_text::Targets {
+            heading: &head,
+            wiring: &wiring,
+        },
     );
-    // The wiring diagram, after the body's sections.
-    let (inst, conns) =
-        super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
-    let name = &*s.display_name();
-    let caption = format!("{} {name}", lang.t("sys_wiring"));
-    heading(&mut out, 2, "sec-wiring", &caption);
-    let svg = match diagrams {
-        super::DiagramFormat::Mermaid => {
-            w!(out, "```mermaid");
-            out.push_str(&super::wiring::to_mermaid(name, &inst, &conns));
-            w!(out, "```");
-            None
-        }
-        super::DiagramFormat::Svg => {
-            let file = page.file_name("svg");
-            w!(out, "![{}]({})", inline(&caption), file);
-            Some(super::html::standalone_system_diagram(
-                &caption, &inst, &conns,
-            ))
-        }
-    };
     (out, svg)
 }
 

@@ -180,6 +180,7 @@ fn port_of(
         class,
         href,
         label,
+        unknown: false,
     });
     inst.ports.len() - 1
 }
@@ -272,6 +273,7 @@ pub fn wiring(
                     class,
                     href: String::new(),
                     label: format!("{name} ({})", row.type_name),
+                    unknown: false,
                 }],
                 name,
                 location: None,

@@ -15,6 +15,9 @@ use crate::model::{non_empty, Text};
 pub struct Targets<'a> {
     /// Writes a section heading: (out, anchor, text).
     pub heading: &'a dyn Fn(&mut String, &str, &str),
+    /// Writes the wiring diagram's section, right after the summary (where the HTML page
+    /// shows it).
+    pub wiring: &'a dyn Fn(&mut String),
 }
 
 fn txt(v: &Option<Text>) -> String {
@@ -89,6 +92,7 @@ pub fn system_body<M: Markup>(
             &M::esc(&format!("{} {}", v.hidden, lang.t("sys_host_hidden"))),
         );
     }
+    (t.wiring)(out);
     instances::<M>(out, &v, lang, show_host, t);
     configuration::<M>(out, &v, lang, t);
     connectors::<M>(out, &v, lang, t);
@@ -128,7 +132,7 @@ fn instances<M: Markup>(
                 M::esc(&r.active_set),
                 M::esc(&r.contexts),
                 M::esc(&r.required),
-                M::esc(&r.composite),
+                M::esc(&composite_text(r, lang)),
                 M::esc(&r.comment),
             ];
             if show_host {
@@ -152,6 +156,30 @@ fn instances<M: Markup>(
         heads.push(lang.t("sys_path_uri"));
     }
     M::table(out, &heads, &rows);
+}
+
+/// The composite type of an instance with its members (`PeriodicECShared; Members: A0, B0`)
+/// or the composites it is a member of (`None; member of CompositeRTC`).
+fn composite_text(r: &super::view::system::InstanceRow, lang: Lang) -> String {
+    let mut parts = vec![r.composite.clone()];
+    let names = |l: &[Link]| {
+        l.iter()
+            .map(|x| x.text.as_str())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if !r.members.is_empty() {
+        parts.push(format!("{}: {}", lang.t("sys_members"), names(&r.members)));
+    }
+    if !r.member_of.is_empty() {
+        parts.push(format!(
+            "{} {}",
+            lang.t("sys_member_of"),
+            names(&r.member_of)
+        ));
+    }
+    parts.retain(|p| !p.is_empty());
+    parts.join("; ")
 }
 
 fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
@@ -211,21 +239,26 @@ fn configuration<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Ta
 }
 
 /// A section of connectors: the heading `(anchor, title key)`, then a table of the connectors
-/// in `rows`: their name, id, source and target, then the cells of `rest` under the headers
-/// keyed `rest_keys`.
+/// in `rows`: their name (with a note, such as how the file saved a connector it saved
+/// in-port first), id, source and target, then the cells of `rest` under the headers keyed
+/// `rest_keys`.
 fn connector_table<'a, M: Markup>(
     out: &mut String,
     lang: Lang,
     t: &Targets<'_>,
     (anchor, title): (&str, &str),
     rest_keys: &[&str],
-    rows: impl Iterator<Item = ([&'a str; 2], [&'a EndView; 2], Vec<String>)>,
+    rows: impl Iterator<Item = ([&'a str; 2], Option<&'a str>, [&'a EndView; 2], Vec<String>)>,
 ) {
     (t.heading)(out, anchor, lang.t(title));
     let rows: Vec<Vec<String>> = rows
-        .map(|([name, id], [source, target], rest)| {
+        .map(|([name, id], note, [source, target], rest)| {
+            let name = match note {
+                Some(n) => M::esc(&format!("{name} ({n})")),
+                None => M::esc(name),
+            };
             let mut row = vec![
-                M::esc(name),
+                name,
                 M::esc(id),
                 end_text::<M>(source),
                 end_text::<M>(target),
@@ -275,7 +308,8 @@ fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targe
                 M::esc(&c.push_interval),
                 M::esc(&c.comment),
             ];
-            ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+            let note = c.saved_as.as_deref();
+            ([&*c.name, &*c.id], note, [&c.source, &c.target], rest)
         }),
     );
     connector_table::<M>(
@@ -291,7 +325,7 @@ fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targe
                 M::esc(&c.trans_method),
                 M::esc(&c.comment),
             ];
-            ([&*c.name, &*c.id], [&c.source, &c.target], rest)
+            ([&*c.name, &*c.id], None, [&c.source, &c.target], rest)
         }),
     );
 }
@@ -333,19 +367,29 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
     }
 }
 
-/// The connectors carrying data type `name` as (text, system) for a list.
+/// The connectors carrying data type `name` as (text, system) for a list, each from its
+/// out-port to its in-port ([`Catalog::reversed_data_connectors`]).
 pub fn carrying<'a>(cat: &'a Catalog, name: &str) -> Vec<(String, &'a System)> {
+    // The connectors come system by system: each system's directions are found once.
+    let mut reversed: Option<(*const System, Vec<bool>)> = None;
     cat.connectors_carrying(name)
         .into_iter()
         .map(|(s, k)| {
             let c = &s.profile.data_port_connectors[k];
+            if reversed.as_ref().map(|r| r.0) != Some(s as *const System) {
+                reversed = Some((s, cat.reversed_data_connectors(s)));
+            }
+            let turned = reversed
+                .as_ref()
+                .and_then(|r| r.1.get(k).copied())
+                .unwrap_or(false);
+            let (from, to) = if turned {
+                (&c.target, &c.source)
+            } else {
+                (&c.source, &c.target)
+            };
             (
-                format!(
-                    "{}: {} → {}",
-                    s.display_name(),
-                    end(&c.source),
-                    end(&c.target)
-                ),
+                format!("{}: {} → {}", s.display_name(), end(from), end(to)),
                 s,
             )
         })

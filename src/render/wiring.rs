@@ -23,6 +23,9 @@ pub struct WirePort {
     pub href: String,
     /// Accessible name of the link.
     pub label: String,
+    /// A port the system file names but the component's profile (in the catalogue) does not
+    /// have (RTC601): drawn in a style of its own.
+    pub unknown: bool,
 }
 
 /// An instance as drawn.
@@ -51,6 +54,15 @@ pub struct WireConnector {
     pub caption: Option<String>,
 }
 
+/// The wiring of a system as drawn: its instances, the connectors drawn between them, and
+/// a sentence for each connector that could not be drawn (an end naming no instance of the
+/// system, RTC608, or no end at all), which every drawing and caption shows.
+pub struct SystemWiring {
+    pub instances: Vec<WireInstance>,
+    pub connectors: Vec<WireConnector>,
+    pub not_drawn: Vec<String>,
+}
+
 /// The instances and connectors of system `s`. A port of a component in the catalogue links
 /// to its row on the component's page through `link(page, anchor)` (the caller's
 /// [`Catalog::href`] from where the drawing is shown); an instance links to its row (`#…`).
@@ -59,7 +71,7 @@ pub fn system_wiring(
     s: &System,
     lang: Lang,
     link: &dyn Fn(&crate::catalog::Page, &str) -> String,
-) -> (Vec<WireInstance>, Vec<WireConnector>) {
+) -> SystemWiring {
     let p = &s.profile;
     let mut wire: Vec<WireInstance> = Vec::with_capacity(p.components.len());
     for (i, c) in p.components.iter().enumerate() {
@@ -93,11 +105,22 @@ pub fn system_wiring(
                     "service" => lang.t("sys_service_port"),
                     _ => lang.t("port"),
                 };
+                // The component is in the catalogue, but this port is not in its profile.
+                let unknown = comp.is_some() && pt.link.is_none();
                 WirePort {
-                    label: format!("{kind} {iname}.{}", pt.name),
+                    label: if unknown {
+                        format!(
+                            "{kind} {iname}.{} ({})",
+                            pt.name,
+                            lang.t("sys_port_not_in_profile")
+                        )
+                    } else {
+                        format!("{kind} {iname}.{}", pt.name)
+                    },
                     name: pt.name,
                     class,
                     href,
+                    unknown,
                 }
             })
             .collect();
@@ -124,35 +147,111 @@ pub fn system_wiring(
             location: c.location.as_ref().and_then(|l| l.xy()),
         });
     }
-    let conns = system_connectors(s, &wire);
-    (wire, conns)
+    let (connectors, not_drawn) =
+        system_connectors(s, &wire, &catalog.reversed_data_connectors(s), lang);
+    SystemWiring {
+        instances: wire,
+        connectors,
+        not_drawn,
+    }
+}
+
+/// A connector as a note names it: its name and its id in brackets (`out_in [c3]`: names
+/// repeat), either alone, or `—`.
+fn connector_name(name: &Option<Text>, id: &Option<Text>) -> String {
+    match (non_empty(name), non_empty(id)) {
+        (Some(n), Some(i)) if n != i => format!("{n} [{i}]"),
+        (Some(n), _) => n.to_string(),
+        (None, Some(i)) => i.to_string(),
+        (None, None) => "—".to_string(),
+    }
+}
+
+/// Why a connector named `name`, from end `se` to end `te`, is not drawn, as a sentence
+/// (`Not drawn: c3 (Src0.out → Ghost0.in): the system has no instance Ghost0`): its ends as the
+/// file names them and what is missing.
+fn not_drawn_note(
+    lang: Lang,
+    name: &str,
+    (se, te): (
+        &Option<crate::model::system::PortEnd>,
+        &Option<crate::model::system::PortEnd>,
+    ),
+    (a, b): (Option<usize>, Option<usize>),
+) -> String {
+    let end = |e: &Option<crate::model::system::PortEnd>| {
+        e.as_ref()
+            .map(|e| format!("{}.{}", txt(&e.instance_name), end_port_name(e)))
+            .unwrap_or_else(|| "?".to_string())
+    };
+    let missing: Vec<String> = [(se, a), (te, b)]
+        .into_iter()
+        .filter(|(_, i)| i.is_none())
+        .map(|(e, _)| match e {
+            Some(e) => format!("{} {}", lang.t("sys_no_instance"), txt(&e.instance_name)),
+            None => lang.t("sys_no_end").to_string(),
+        })
+        .collect();
+    let reason = if missing.is_empty() {
+        lang.t("sys_no_port").to_string()
+    } else {
+        missing.join("; ")
+    };
+    format!(
+        "{}: {name} ({} → {}): {reason}",
+        lang.t("sys_not_drawn"),
+        end(se),
+        end(te)
+    )
 }
 
 /// The connectors of system `s` between its drawn instances `wire`: data connectors from the
-/// out-port to the in-port, service connectors undirected.
-fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
+/// out-port to the in-port (`reversed`: those saved in-port first,
+/// [`Catalog::reversed_data_connectors`]), service connectors undirected.
+fn system_connectors(
+    s: &System,
+    wire: &[WireInstance],
+    reversed: &[bool],
+    lang: Lang,
+) -> (Vec<WireConnector>, Vec<String>) {
     let p = &s.profile;
     let port_at = |i: usize, name: &str| wire.get(i)?.ports.iter().position(|q| q.name == name);
     let mut conns: Vec<WireConnector> = Vec::new();
+    let mut not_drawn: Vec<String> = Vec::new();
     // Both kinds of connector: the ends' instances (resolved by the catalogue) and ports.
     let ends = p
         .data_port_connectors
         .iter()
         .zip(&s.data_connectors)
-        .map(|(c, l)| (l, &c.source, &c.target, Some(non_empty(&c.data_type))))
+        .enumerate()
+        .map(|(k, (c, l))| {
+            let turned = reversed.get(k).copied().unwrap_or(false);
+            let name = connector_name(&c.name, &c.connector_id);
+            let data_type = Some(non_empty(&c.data_type));
+            (l, name, (&c.source, &c.target), data_type, turned)
+        })
         .chain(
             p.service_port_connectors
                 .iter()
                 .zip(&s.service_connectors)
-                .map(|(c, l)| (l, &c.source, &c.target, None)),
+                .map(|(c, l)| {
+                    let name = connector_name(&c.name, &c.connector_id);
+                    (l, name, (&c.source, &c.target), None, false)
+                }),
         );
-    for (l, se, te, data_type) in ends {
-        let (Some(a), Some(b), Some(se), Some(te)) = (l.source.instance, l.target.instance, se, te)
-        else {
-            continue;
+    for (l, name, ends, data_type, turned) in ends {
+        let (a, b) = (l.source.instance, l.target.instance);
+        let drawn = match (a, b, ends.0, ends.1) {
+            (Some(a), Some(b), Some(se), Some(te)) => {
+                match (port_at(a, end_port_name(se)), port_at(b, end_port_name(te))) {
+                    (Some(pa), Some(pb)) => Some((a, b, se, te, pa, pb)),
+                    _ => None,
+                }
+            }
+            _ => None,
         };
-        let (Some(pa), Some(pb)) = (port_at(a, end_port_name(se)), port_at(b, end_port_name(te)))
-        else {
+        let Some((a, b, se, te, pa, pb)) = drawn else {
+            not_drawn.push(not_drawn_note(lang, &name, ends, (a, b)));
             continue;
         };
         let (mut source, mut target) = (
@@ -162,10 +261,7 @@ fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
         let (mut from, mut to) = ((a, pa), (b, pb));
         // Data flows from the out-port to the in-port whichever end the file names first
         // (RTSystemEditor saves the end the user dragged from as the source).
-        if data_type.is_some()
-            && wire[a].ports[pa].class == "in"
-            && wire[b].ports[pb].class == "out"
-        {
+        if turned {
             std::mem::swap(&mut from, &mut to);
             std::mem::swap(&mut source, &mut target);
         }
@@ -182,7 +278,7 @@ fn system_connectors(s: &System, wire: &[WireInstance]) -> Vec<WireConnector> {
             caption: None,
         });
     }
-    conns
+    (conns, not_drawn)
 }
 
 /// `s` with each character of `table` replaced by its text, and control characters by a space.
@@ -219,11 +315,29 @@ fn dot_str(s: &str) -> String {
 /// The wiring as a Graphviz DOT digraph (data flowing left to right): each instance a table
 /// with its name, its component and its ports (in-ports in the left column, the others in the
 /// right one, each a DOT port `pK`); data connectors as arrows between ports, service
-/// connectors dashed without arrowheads. `rtstodot` parity: `dot -Tsvg` draws it.
-pub fn to_dot(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
+/// connectors dashed without arrowheads. `rtstodot` parity: `dot -Tsvg` draws it. A port not in
+/// its component's profile is in italics with a `?`; `not_drawn` (the connectors left out, and
+/// why) is the graph's label, below the drawing.
+pub fn to_dot(
+    name: &str,
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+    not_drawn: &[String],
+) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "digraph \"{}\" {{", dot_str(name));
     s.push_str("  rankdir=LR;\n  node [shape=plaintext, fontname=\"sans-serif\", fontsize=11];\n  edge [fontname=\"sans-serif\", fontsize=9];\n");
+    if !not_drawn.is_empty() {
+        // Each line left-justified (`\l`), under the drawing.
+        let lines: String = not_drawn
+            .iter()
+            .map(|n| format!("{}\\l", dot_str(n)))
+            .collect();
+        let _ = writeln!(
+            s,
+            "  graph [fontname=\"sans-serif\", fontsize=10, labelloc=b, labeljust=l, label=\"{lines}\"];"
+        );
+    }
     for (i, it) in inst.iter().enumerate() {
         let left: Vec<usize> = (0..it.ports.len())
             .filter(|&k| it.ports[k].class == "in")
@@ -255,11 +369,16 @@ pub fn to_dot(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> Str
                             "service" => "◯ ",
                             _ => "",
                         };
+                        let name = if p.unknown {
+                            format!("<i>{}</i> ?", dot_html(&p.name))
+                        } else {
+                            dot_html(&p.name)
+                        };
                         let _ = write!(
                             s,
                             "<td port=\"p{k}\" align=\"{align}\">{}{}{}</td>",
                             if align == "left" { mark } else { "" },
-                            dot_html(&p.name),
+                            name,
                             if align == "right" && p.class == "out" {
                                 " ▶"
                             } else if align == "right" && p.class == "service" {
@@ -327,10 +446,19 @@ fn mermaid_str(s: &str) -> String {
 /// The wiring as a Mermaid flowchart (`flowchart LR`): each instance a node named by the
 /// instance and its component, each data connector an arrow labelled `out → in`, each service
 /// connector a dotted line labelled with its two ports (or either with its caption). Mermaid
-/// has no ports: the labels carry them.
-pub fn to_mermaid(name: &str, inst: &[WireInstance], conns: &[WireConnector]) -> String {
+/// has no ports: the labels carry them. `not_drawn` (the connectors left out, and why) are
+/// comments: Mermaid has no caption; the page that shows the block says them.
+pub fn to_mermaid(
+    name: &str,
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+    not_drawn: &[String],
+) -> String {
     let mut s = String::from("flowchart LR\n");
     let _ = writeln!(s, "  %% {}", name.replace(['\n', '\r'], " "));
+    for n in not_drawn {
+        let _ = writeln!(s, "  %% {}", n.replace(['\n', '\r'], " "));
+    }
     for (i, it) in inst.iter().enumerate() {
         let label = if it.component.is_empty() {
             mermaid_str(&it.name)
@@ -436,6 +564,7 @@ pub fn dataflow_wiring(
             class,
             href: String::new(),
             label,
+            unknown: false,
         });
         inst[i].ports.len() - 1
     };

@@ -137,9 +137,33 @@ pub fn system_diagram_with(
     effort: Effort,
     class: &str,
 ) -> String {
+    draw(title, inst, conns, (effort, class), &[])
+}
+
+/// Line height and font size of the notes under a drawing.
+const NOTE_LINE: f32 = 16.0;
+const NOTE_PX: f32 = 12.0;
+
+/// [`system_diagram_with`], with `notes` (what the drawing leaves out) as lines of text under it.
+fn draw(
+    title: &str,
+    inst: &[WireInstance],
+    conns: &[WireConnector],
+    (effort, class): (Effort, &str),
+    notes: &[String],
+) -> String {
     let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
     let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
-    let l = layout_with(&nodes, &edges, effort);
+    let mut l = layout_with(&nodes, &edges, effort);
+    let notes_top = l.height;
+    if !notes.is_empty() {
+        let widest = notes
+            .iter()
+            .map(|n| crate::layout::text::text_width(n, NOTE_PX))
+            .fold(0.0f32, f32::max);
+        l.width = l.width.max(widest + 24.0);
+        l.height += 8.0 + NOTE_LINE * notes.len() as f32;
+    }
     // About what the drawing takes (a box with its ports ~700 bytes, a connector with its
     // route and title ~400), so that it is rarely copied to grow.
     let mut s = String::with_capacity(2048 + inst.len() * 768 + conns.len() * 448);
@@ -174,6 +198,13 @@ pub fn system_diagram_with(
     s.push_str("</g>");
     for (it, b) in inst.iter().zip(&l.nodes) {
         instance(&mut s, it, b);
+    }
+    for (k, n) in notes.iter().enumerate() {
+        s.push_str(r#"<text class="not-drawn" x="8""#);
+        attr_num(&mut s, "y", notes_top + NOTE_LINE * (k as f32 + 1.0));
+        s.push('>');
+        esc_to(&mut s, n);
+        s.push_str("</text>");
     }
     s.push_str("</svg>");
     s
@@ -230,6 +261,9 @@ fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
         href_attr(s, &p.href);
         s.push_str(r#" class="port "#);
         s.push_str(p.class);
+        if p.unknown {
+            s.push_str(" unknown");
+        }
         s.push_str(r#"" aria-label=""#);
         esc_to(s, &p.label);
         s.push_str(r#""><title>"#);
@@ -270,14 +304,16 @@ fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
 }
 
 /// Colours of a drawing opened on its own (no site style sheet): the light theme's.
-const STANDALONE_STYLE: &str = "<style>text{font-family:system-ui,sans-serif;font-size:12px;fill:#1f2328}.rtc-box{fill:#f3f6fb;stroke:#33415c;stroke-width:1.6}.rtc-name{font-size:15px;font-weight:700}.stereotype{fill:#5b6472;font-size:12px;font-weight:400}.port-name{font-size:11px}.port-square{stroke:#33415c;stroke-width:1.2;fill:#fff}a.in .port-square{fill:#1f7a4d}a.out .port-square{fill:#b8561c}a.service .port-square{fill:#5b6472}.connector{fill:none;stroke:#33415c;stroke-width:1.6}.connector.service{stroke-dasharray:6 4}</style>";
+const STANDALONE_STYLE: &str = "<style>text{font-family:system-ui,sans-serif;font-size:12px;fill:#1f2328}.rtc-box{fill:#f3f6fb;stroke:#33415c;stroke-width:1.6}.rtc-name{font-size:15px;font-weight:700}.stereotype{fill:#5b6472;font-size:12px;font-weight:400}.port-name{font-size:11px}.port-square{stroke:#33415c;stroke-width:1.2;fill:#fff}a.in .port-square{fill:#1f7a4d}a.out .port-square{fill:#b8561c}a.service .port-square{fill:#5b6472}.connector{fill:none;stroke:#33415c;stroke-width:1.6}.connector.service{stroke-dasharray:6 4}a.unknown .port-square{fill:#fff;stroke-dasharray:2 2}a.unknown .port-name{font-style:italic}.not-drawn{fill:#a4262c}</style>";
 
 /// The wiring diagram as a file of its own (`rtcdoc graph --format svg`): the same drawing
-/// with its colours in a `<style>` element.
+/// with its colours in a `<style>` element, and `notes` (what it leaves out: the connectors
+/// not drawn, and why) as lines of text under it.
 pub fn standalone_system_diagram(
     title: &str,
     inst: &[WireInstance],
     conns: &[WireConnector],
+    notes: &[String],
 ) -> String {
     // No links: the pages they would point to are not beside the file.
     let bare: Vec<WireInstance> = inst
@@ -291,7 +327,7 @@ pub fn standalone_system_diagram(
             i
         })
         .collect();
-    let svg = system_diagram(title, &bare, conns);
+    let svg = draw(title, &bare, conns, (Effort::Full, ""), notes);
     match svg.find("</title>") {
         Some(i) => {
             let at = i + "</title>".len();
@@ -323,6 +359,7 @@ mod tests {
                     class: c,
                     href: format!("#{name}-{n}"),
                     label: format!("port {name}.{n}"),
+                    unknown: false,
                 })
                 .collect(),
             location: loc,

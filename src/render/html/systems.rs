@@ -56,10 +56,11 @@ impl Site<'_> {
             Some(from) => cat.href(from, to, Some(a), crate::catalog::Output::Html),
             None => String::new(),
         };
-        let (wire, conns) = crate::render::wiring::system_wiring(cat, s, lang, &link);
+        let w = crate::render::wiring::system_wiring(cat, s, lang, &link);
         let diagram_title = format!("{} {name}", lang.t("sys_wiring"));
-        let diagram_svg = system_diagram(&diagram_title, &wire, &conns);
-        let diagram_text = format!(
+        let diagram_svg = system_diagram(&diagram_title, &w.instances, &w.connectors);
+        // The caption counts what the file has and names each connector left out, and why.
+        let mut diagram_text = format!(
             "{}: {}, {}, {}.",
             diagram_title,
             lang.count(p.components.len() as u64, "sys_instance_count"),
@@ -69,6 +70,11 @@ impl Site<'_> {
                 "sys_service_connectors"
             ),
         );
+        for n in &w.not_drawn {
+            diagram_text.push(' ');
+            diagram_text.push_str(n);
+            diagram_text.push('.');
+        }
 
         minijinja::context! {
             root => ROOT,
@@ -116,11 +122,11 @@ pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
                 Some(from) => cat.href(from, to, Some(a), crate::catalog::Output::Html),
                 None => String::new(),
             };
-            let (wire, conns) = crate::render::wiring::system_wiring(cat, s, site.lang, &link);
+            let w = crate::render::wiring::system_wiring(cat, s, site.lang, &link);
             let title = format!("{} {}", site.lang.t("sys_wiring"), s.display_name());
             (
                 drawing_path(site.catalog, s),
-                standalone_system_diagram(&title, &wire, &conns),
+                standalone_system_diagram(&title, &w.instances, &w.connectors, &w.not_drawn),
             )
         })
         .collect()

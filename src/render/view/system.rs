@@ -41,6 +41,11 @@ pub struct InstanceRow {
     pub contexts: String,
     pub required: String,
     pub composite: String,
+    /// A composite instance's members (its participants), each linked to its row when it is
+    /// an instance of the system.
+    pub members: Vec<Link>,
+    /// The composite instances this instance is a member of, linked to their rows.
+    pub member_of: Vec<Link>,
     pub comment: String,
     pub path_uri: String,
 }
@@ -81,8 +86,13 @@ pub struct EndView {
 pub struct DataConnRow {
     pub name: String,
     pub id: String,
+    /// The out-port end: where the data comes from, whichever end the file names first.
     pub source: EndView,
+    /// The in-port end.
     pub target: EndView,
+    /// For a connector the file saved in-port first: how it saved it (`saved as: Dst0.in →
+    /// Src0.out`), so that the table shows the data flow and loses nothing.
+    pub saved_as: Option<String>,
     pub data_type: Option<Link>,
     pub interface_type: String,
     pub dataflow_type: String,
@@ -247,13 +257,28 @@ fn visible_properties(p: &RtSystem, show_host: bool) -> Vec<KeyValue> {
         .collect()
 }
 
-/// The instances of system `s`, each linked to its component's page.
+/// A link to another page of the catalogue (with an anchor on it).
+type PageHref<'a> = dyn Fn(&Page, Option<&str>) -> String + 'a;
+
+/// The instances of system `s`, each linked to its component's page, a composite's members
+/// and the composites an instance is a member of to their rows (`local`).
 fn instance_rows(
     cat: &Catalog,
     s: &System,
     show_host: bool,
-    href: &dyn Fn(&Page, Option<&str>) -> String,
+    (href, local): (&PageHref<'_>, &dyn Fn(&str) -> String),
 ) -> Vec<InstanceRow> {
+    // An instance named by a composite: linked to its row (the first of that name).
+    let row_link = |name: &str| Link {
+        text: name.to_string(),
+        href: s
+            .profile
+            .components
+            .iter()
+            .position(|k| non_empty(&k.instance_name) == Some(name))
+            .map(|j| local(&s.instances[j].anchor))
+            .unwrap_or_default(),
+    };
     s.profile
         .components
         .iter()
@@ -293,6 +318,24 @@ fn instance_rows(
                 contexts,
                 required: txt(&c.is_required),
                 composite: txt(&c.composite_type),
+                members: c
+                    .participants
+                    .iter()
+                    .filter_map(|t| non_empty(&t.instance_name))
+                    .map(&row_link)
+                    .collect(),
+                member_of: s
+                    .profile
+                    .components
+                    .iter()
+                    .filter(|k| {
+                        k.participants
+                            .iter()
+                            .any(|t| non_empty(&t.instance_name) == non_empty(&c.instance_name))
+                    })
+                    .filter_map(|k| non_empty(&k.instance_name))
+                    .map(&row_link)
+                    .collect(),
                 comment: txt(&c.comment),
                 path_uri: if show_host {
                     txt(&c.path_uri)
@@ -373,32 +416,74 @@ fn instance_configs(cat: &Catalog, s: &System, lang: Lang) -> Vec<InstanceConfig
         .collect()
 }
 
-/// The connectors of system `s`: the data connectors with their data type linked, the service
-/// connectors with the interfaces of the ports they join; the ends of both linked.
-fn connector_rows(links: &Links<'_>) -> (Vec<DataConnRow>, Vec<ServiceConnRow>) {
+/// A connector end as plain text: `instance.port`.
+fn end_plain(e: &EndView) -> String {
+    match &e.instance {
+        Some(i) => format!("{}.{}", i.text, e.port.text),
+        None => e.port.text.clone(),
+    }
+}
+
+/// The row of data connector `c` with its ends (out-port end first) and data type linked.
+fn data_row(
+    cat: &Catalog,
+    href: &dyn Fn(&Page, Option<&str>) -> String,
+    c: &crate::model::system::DataPortConnector,
+    (source, target): (EndView, EndView),
+    saved_as: Option<String>,
+) -> DataConnRow {
+    DataConnRow {
+        name: txt(&c.name),
+        id: txt(&c.connector_id),
+        source,
+        target,
+        saved_as,
+        data_type: non_empty(&c.data_type).map(|t| Link {
+            text: t.to_string(),
+            href: cat
+                .data_type_index(t)
+                .map(|d| href(cat.data_type_page(d), None))
+                .unwrap_or_default(),
+        }),
+        interface_type: txt(&c.interface_type),
+        dataflow_type: txt(&c.dataflow_type),
+        subscription_type: txt(&c.subscription_type),
+        push_interval: txt(&c.push_interval),
+        comment: txt(&c.comment),
+    }
+}
+
+/// The connectors of system `s`: the data connectors with their data type linked (from their
+/// out-port to their in-port, [`Catalog::reversed_data_connectors`]), the service connectors
+/// with the interfaces of the ports they join; the ends of both linked.
+fn connector_rows(links: &Links<'_>, lang: Lang) -> (Vec<DataConnRow>, Vec<ServiceConnRow>) {
     let &Links { cat, s, href, .. } = links;
     let p = &s.profile;
+    let reversed = cat.reversed_data_connectors(s);
     let data = p
         .data_port_connectors
         .iter()
         .zip(&s.data_connectors)
-        .map(|(c, l)| DataConnRow {
-            name: txt(&c.name),
-            id: txt(&c.connector_id),
-            source: end_view(links, &c.source, &l.source),
-            target: end_view(links, &c.target, &l.target),
-            data_type: non_empty(&c.data_type).map(|t| Link {
-                text: t.to_string(),
-                href: cat
-                    .data_type_index(t)
-                    .map(|d| href(cat.data_type_page(d), None))
-                    .unwrap_or_default(),
-            }),
-            interface_type: txt(&c.interface_type),
-            dataflow_type: txt(&c.dataflow_type),
-            subscription_type: txt(&c.subscription_type),
-            push_interval: txt(&c.push_interval),
-            comment: txt(&c.comment),
+        .zip(reversed)
+        .map(|((c, l), turned)| {
+            let (source, target) = (
+                end_view(links, &c.source, &l.source),
+                end_view(links, &c.target, &l.target),
+            );
+            let saved_as = turned.then(|| {
+                format!(
+                    "{}: {} → {}",
+                    lang.t("sys_saved_as"),
+                    end_plain(&source),
+                    end_plain(&target)
+                )
+            });
+            let (source, target) = if turned {
+                (target, source)
+            } else {
+                (source, target)
+            };
+            data_row(cat, href, c, (source, target), saved_as)
         })
         .collect();
     let service = p
@@ -517,7 +602,7 @@ pub fn system_view(
         crate::catalog::systems::host_values(p)
     };
 
-    let instances = instance_rows(cat, s, show_host, &href);
+    let instances = instance_rows(cat, s, show_host, (&href, &local));
 
     let configs = instance_configs(cat, s, lang);
 
@@ -527,7 +612,7 @@ pub fn system_view(
         href: &href,
         local: &local,
     };
-    let (data_connectors, service_connectors) = connector_rows(&links);
+    let (data_connectors, service_connectors) = connector_rows(&links, lang);
 
     let orders = order_views(p, lang);
     let groups: Vec<GroupView> = p
