@@ -377,19 +377,13 @@ fn system_page(
     let s = &cat[si];
     let page = cat.system_page(si);
     let w = super::wiring::system_wiring(cat, s, lang, &|_, _| String::new());
-    let caption = format!("{} {}", lang.t("sys_wiring"), s.display_name());
+    let caption = super::system_text::wiring_caption(s, lang);
     let svg =
         super::html::standalone_system_diagram(&caption, &w.instances, &w.connectors, &w.not_drawn);
-    let wiring = |out: &mut String| {
-        section(out, page, "sec-wiring", &caption);
-        // No caption: the section's heading says what it is, and the drawing has its title.
+    // No caption: the section's heading says what it is, and the drawing has its title.
+    let drawing = |out: &mut String| {
         d!(out, "\\image html {}", page.file_name("svg"));
         d!(out);
-        // What the drawing leaves out, said under it.
-        for n in &w.not_drawn {
-            d!(out, "<p>{}</p>", text(&format!("{n}.")));
-            d!(out);
-        }
     };
     let mut out = String::new();
     d!(
@@ -401,17 +395,8 @@ fn system_page(
     d!(out);
     crumbs(&mut out, cat, PageKind::Systems);
     let head = |o: &mut String, anchor: &str, text_: &str| section(o, page, anchor, text_);
-    super::system_text::system_body::<Dox>(
-        &mut out,
-        cat,
-        s,
-        lang,
-        site,
-        &super::system_text::Targets {
-            heading: &head,
-            wiring: &wiring,
-        },
-    );
+    let targets = super::system_text::Targets::new(&head, &caption, &drawing, &w.not_drawn);
+    super::system_text::system_body::<Dox>(&mut out, cat, s, lang, site, &targets);
     (out, svg)
 }
 

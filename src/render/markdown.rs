@@ -541,8 +541,7 @@ fn system_page(
     // The section anchors are the HTML page's (`data-connectors`, …): type pages link them.
     let head = |o: &mut String, anchor: &str, text: &str| heading(o, 2, anchor, text);
     let w = super::wiring::system_wiring(cat, s, lang, &|to, a| cat.href(page, to, Some(a), MD));
-    let name = &*s.display_name();
-    let caption = format!("{} {name}", lang.t("sys_wiring"));
+    let caption = super::system_text::wiring_caption(s, lang);
     let svg = match diagrams {
         super::DiagramFormat::Mermaid => None,
         super::DiagramFormat::Svg => Some(super::html::standalone_system_diagram(
@@ -552,14 +551,12 @@ fn system_page(
             &w.not_drawn,
         )),
     };
-    // The wiring diagram after the summary, as on the HTML page.
-    let wiring = |out: &mut String| {
-        heading(out, 2, "sec-wiring", &caption);
+    let drawing = |out: &mut String| {
         match diagrams {
             super::DiagramFormat::Mermaid => {
                 w!(out, "```mermaid");
                 out.push_str(&super::wiring::to_mermaid(
-                    name,
+                    &s.display_name(),
                     &w.instances,
                     &w.connectors,
                     &w.not_drawn,
@@ -570,24 +567,10 @@ fn system_page(
                 w!(out, "![{}]({})", inline(&caption), page.file_name("svg"));
             }
         }
-        // What the drawing leaves out, said under it.
-        for n in &w.not_drawn {
-            w!(out);
-            w!(out, "{}", inline(&format!("{n}.")));
-        }
         w!(out);
     };
-    super::system_text::system_body::<Md>(
-        &mut out,
-        cat,
-        s,
-        lang,
-        site,
-        &super::system_text::Targets {
-            heading: &head,
-            wiring: &wiring,
-        },
-    );
+    let targets = super::system_text::Targets::new(&head, &caption, &drawing, &w.not_drawn);
+    super::system_text::system_body::<Md>(&mut out, cat, s, lang, site, &targets);
     (out, svg)
 }
 

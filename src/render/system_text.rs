@@ -15,9 +15,49 @@ use crate::model::{non_empty, Text};
 pub struct Targets<'a> {
     /// Writes a section heading: (out, anchor, text).
     pub heading: &'a dyn Fn(&mut String, &str, &str),
-    /// Writes the wiring diagram's section, right after the summary (where the HTML page
+    /// The wiring diagram, shown in its section right after the summary (where the HTML page
     /// shows it).
-    pub wiring: &'a dyn Fn(&mut String),
+    pub wiring: Wiring<'a>,
+}
+
+/// A system's wiring diagram in a text output: its section's heading, the drawing (an image
+/// or a Mermaid block, which the output writes) and, under it, what the drawing leaves out.
+pub struct Wiring<'a> {
+    pub caption: &'a str,
+    pub drawing: &'a dyn Fn(&mut String),
+    pub not_drawn: &'a [String],
+}
+
+impl<'a> Targets<'a> {
+    pub fn new(
+        heading: &'a dyn Fn(&mut String, &str, &str),
+        caption: &'a str,
+        drawing: &'a dyn Fn(&mut String),
+        not_drawn: &'a [String],
+    ) -> Self {
+        Targets {
+            heading,
+            wiring: Wiring {
+                caption,
+                drawing,
+                not_drawn,
+            },
+        }
+    }
+}
+
+/// The caption of a system's wiring diagram, in every output.
+pub fn wiring_caption(s: &crate::catalog::systems::System, lang: Lang) -> String {
+    format!("{} {}", lang.t("sys_wiring"), s.display_name())
+}
+
+fn wiring_section<M: Markup>(out: &mut String, t: &Targets<'_>) {
+    let w = &t.wiring;
+    (t.heading)(out, "sec-wiring", w.caption);
+    (w.drawing)(out);
+    for n in w.not_drawn {
+        M::paragraph(out, &M::esc(&format!("{n}.")));
+    }
 }
 
 fn txt(v: &Option<Text>) -> String {
@@ -92,7 +132,7 @@ pub fn system_body<M: Markup>(
             &M::esc(&format!("{} {}", v.hidden, lang.t("sys_host_hidden"))),
         );
     }
-    (t.wiring)(out);
+    wiring_section::<M>(out, t);
     instances::<M>(out, &v, lang, show_host, t);
     configuration::<M>(out, &v, lang, t);
     connectors::<M>(out, &v, lang, t);
