@@ -295,6 +295,12 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("feed_title", "Changes (Atom feed)", "変更 (Atom フィード)"),
     ("file", "File", "ファイル"),
     ("filter", "Filter", "絞り込み"),
+    ("filter_count", "{n} of {total} components shown", "{total} 件中 {n} 件を表示"),
+    (
+        "filter_none",
+        "No component matches the filter. The search box at the top reads descriptions too.",
+        "条件に合うコンポーネントはありません。上の検索ボックスでは概要の文も検索できます。",
+    ),
     ("filter_placeholder", "Filter by name…", "名前で絞り込み…"),
     ("fsm_actions", "FSM and mode callbacks", "FSM・モードのコールバック"),
     ("hardware_profile", "Hardware profile", "ハードウェアプロファイル"),

@@ -77,6 +77,20 @@ fn search_finds_english_and_japanese_words_from_file_urls() {
     );
     let names = result_names(&dom);
     assert!(names.iter().any(|n| n == "UsbCamera"), "画像 → {names:?}");
+    // A full-width query (as a Japanese input method types it) is read in NFKC.
+    let wide: String = "ｃａｍｅｒａ"
+        .bytes()
+        .map(|b| format!("%{b:02X}"))
+        .collect();
+    let dom = dump_dom(
+        &format!("{}?q={wide}", file_url(&out.join("search.html"))),
+        &prof,
+    );
+    let names = result_names(&dom);
+    assert!(
+        names.iter().any(|n| n == "UsbCamera"),
+        "ｃａｍｅｒａ → {names:?}"
+    );
     // A port name and a data type find their components.
     let dom = dump_dom(
         &format!("{}?q=TimedVelocity2D", file_url(&out.join("search.html"))),
@@ -268,6 +282,29 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
         assert!(
             s["opened"].as_str().is_some_and(|u| u.contains(expect)),
             "Enter opens the first result: {s}"
+        );
+    }
+    if let Some(p) = report.get("popup") {
+        assert_eq!(p["opened"], true, "the header search shows results: {p}");
+        assert_eq!(p["focus_in_form"], false, "Tab went past the results: {p}");
+        assert_eq!(
+            p["closed"], true,
+            "the popup closes when the focus leaves it: {p}"
+        );
+    }
+    if let Some(f) = report
+        .get("index_filter")
+        .filter(|f| !f["nothing"].is_null())
+    {
+        let none = &f["nothing"];
+        assert_eq!(none["shown"], 0, "{f}");
+        assert_eq!(none["text"], none["none"], "no match is said: {f}");
+        let some = &f["some"];
+        let (shown, rows) = (&some["shown"], &some["rows"]);
+        assert_eq!(
+            some["text"],
+            format!("{shown} of {rows} components shown"),
+            "{f}"
         );
     }
 }

@@ -180,6 +180,40 @@ try {
     }
     report.searches.push({ q, expect, url_q: got.query, results: got.results.slice(0, 20), count: got.results.length, opened });
   }
+  // The header search's popup: open with results, it closes when Tab takes the focus past
+  // its last link (it would cover what has the focus).
+  if (searches.length) {
+    const q = searches[0].split('=')[0];
+    await page.setViewport({ width: 1280, height: 900 });
+    await page.goto(url('index.html'), { waitUntil: 'load' });
+    await page.focus('#search-input');
+    await page.keyboard.type(q);
+    await page.waitForFunction(() => !document.getElementById('search-popup').hidden, { timeout: 5000 }).catch(() => {});
+    const opened = await page.evaluate(() => !document.getElementById('search-popup').hidden);
+    const links = await page.evaluate(() => document.querySelectorAll('#search-popup a').length);
+    for (let i = 0; i <= links; i++) { await page.keyboard.press('Tab'); }
+    const after = await page.evaluate(() => ({
+      hidden: document.getElementById('search-popup').hidden,
+      inForm: !!(document.activeElement && document.activeElement.closest('form.search')),
+    }));
+    report.popup = { opened, links, closed: after.hidden, focus_in_form: after.inForm };
+    // The index's filter says how many rows it leaves, and what to do when it leaves none.
+    const filterStatus = async (typed) => {
+      await page.goto(url('index.html'), { waitUntil: 'load' });
+      if (!(await page.$('#f-text'))) { return null; }
+      // No text given: the name of the first component listed.
+      if (!typed) {
+        typed = await page.evaluate(() => document.querySelector('section.category tbody tr > *').textContent.trim());
+      }
+      await page.type('#f-text', typed);
+      return page.evaluate(() => {
+        const st = document.getElementById('filter-status');
+        const rows = Array.from(document.querySelectorAll('section.category tbody tr'));
+        return { text: st.textContent, none: st.getAttribute('data-none'), shown: rows.filter((r) => !r.hidden).length, rows: rows.length };
+      });
+    };
+    report.index_filter = { nothing: await filterStatus('zzzzqqq'), some: await filterStatus('') };
+  }
   // What's new: each filter alone, on a freshly loaded page.
   for (const f of filters) {
     const [id, value] = f.split('=');

@@ -52,11 +52,13 @@
   var ven = document.getElementById('f-vendor');
   var src = document.getElementById('f-source');
   form.addEventListener('submit', function (ev) { ev.preventDefault(); });
+  var status = document.getElementById('filter-status');
   function apply() {
     var q = text.value.trim().toLowerCase();
     var c = cat.value;
     var v = ven.value;
     var s = src ? src.value : '';
+    var total = 0, matched = 0;
     document.querySelectorAll('section.category').forEach(function (sec) {
       var shown = 0;
       var catOk = !c || sec.getAttribute('data-category') === c;
@@ -65,10 +67,18 @@
           (!s || tr.getAttribute('data-source') === s) &&
           (!q || tr.textContent.toLowerCase().indexOf(q) >= 0);
         tr.hidden = !ok;
+        total++;
         if (ok) { shown++; }
       });
       sec.hidden = shown === 0;
+      matched += shown;
     });
+    // How many rows the filter leaves, and a way on when it leaves none.
+    if (status) {
+      var active = q || c || v || s;
+      status.textContent = !active ? '' : matched ? status.getAttribute('data-count')
+        .replace('{n}', matched).replace('{total}', total) : status.getAttribute('data-none');
+    }
   }
   [text, cat, ven, src].forEach(function (e) {
     if (!e) { return; }

@@ -27,7 +27,9 @@
   }
   var wordChar = /[\p{L}\p{N}_]/u;
 
+  // NFKC, as the index: full-width `Ｋｏｂｕｋｉ` is `Kobuki`, half-width `ｶﾒﾗ` is `カメラ`.
   function tokenize(text) {
+    text = text.normalize('NFKC');
     var out = [];
     var word = '';
     var cjk = [];
@@ -251,6 +253,13 @@
       if (next < 0) { input.focus(); } else if (next < l.length) { l[next].focus(); }
     }
   });
+  // The popup closes when the focus leaves the search (Tab past its last result): it would
+  // cover what has the focus.
+  if (form && popup && !page) {
+    form.addEventListener('focusout', function (ev) {
+      if (!ev.relatedTarget || !form.contains(ev.relatedTarget)) { popup.hidden = true; }
+    });
+  }
   document.addEventListener('click', function (ev) {
     if (popup && !page && !popup.hidden && !form.contains(ev.target)) { popup.hidden = true; }
   });

@@ -5,8 +5,9 @@
 //! document kind has entries: components, data types, interfaces and RT Systems. Tokens are lower-case
 //! words in three ranked groups (name, identifiers, prose: see [`Groups`]). Latin words are also split at camelCase and
 //! `::` boundaries; runs of CJK characters become overlapping bigrams (a lone character stays a
-//! unigram), so Japanese text needs no dictionary. `search.js` tokenizes queries the same way
-//! and matches each query token as a prefix of some entry token.
+//! unigram), so Japanese text needs no dictionary. Text is read in NFKC first ([`nfkc`]: full-
+//! and half-width forms are one). `search.js` tokenizes queries the same way and matches each
+//! query token as a prefix of some entry token.
 
 use crate::catalog::{Catalog, ComponentIx, Ix};
 use crate::i18n::Lang;
@@ -142,7 +143,7 @@ fn add<'a>(tokens: &mut Vec<Cow<'a, str>>, s: Option<&'a str>) {
             .nth(MAX_DESCRIPTION)
             .map_or(s.len(), |(i, _)| i)
     };
-    match crate::model::prose(s) {
+    match nfkc(crate::model::prose(s)) {
         Cow::Borrowed(s) => tokenize(&s[..head(s)], tokens),
         Cow::Owned(o) => {
             let mut own = Vec::new();
@@ -150,6 +151,16 @@ fn add<'a>(tokens: &mut Vec<Cow<'a, str>>, s: Option<&'a str>) {
             tokens.extend(own.into_iter().map(|t| Cow::Owned(t.into_owned())));
         }
     }
+}
+
+/// `s` in Unicode normalisation form NFKC, as `search.js` reads queries: full-width `Ｋｏｂｕｋｉ`
+/// is `Kobuki`, half-width `ｶﾒﾗ` is `カメラ`. Borrowed when it already is (ASCII, most Japanese).
+pub fn nfkc(s: Cow<'_, str>) -> Cow<'_, str> {
+    use unicode_normalization::{is_nfkc_quick, IsNormalized, UnicodeNormalization};
+    if s.is_ascii() || is_nfkc_quick(s.chars()) == IsNormalized::Yes {
+        return s;
+    }
+    Cow::Owned(s.nfkc().collect())
 }
 
 /// Longest description text indexed per description, in characters (keeps entries small).
@@ -639,6 +650,22 @@ mod tests {
             reference(&text, &mut slow);
             proptest::prop_assert_eq!(fast, slow, "{:?}", text);
         }
+    }
+
+    /// Full- and half-width forms are indexed as their usual ones (as `search.js` reads a
+    /// query), and text already in NFKC is not copied.
+    #[test]
+    fn width_forms_are_indexed_in_nfkc() {
+        let mut t = Vec::new();
+        add(&mut t, Some("Ｋｏｂｕｋｉ の ｶﾒﾗ"));
+        let set: BTreeSet<String> = t.into_iter().map(Cow::into_owned).collect();
+        for want in ["kobuki", "カメ", "メラ", "の"] {
+            assert!(set.contains(want), "{want} in {set:?}");
+        }
+        assert!(matches!(
+            nfkc(Cow::Borrowed("画像を取得 RTC")),
+            Cow::Borrowed(_)
+        ));
     }
 
     fn toks(s: &str) -> Vec<String> {

@@ -708,9 +708,12 @@ fn configurations(o: &mut Out<'_>, p: &ComponentPage) {
 
 fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
     o.section_start("lifecycle", false, "actions");
-    o.raw("<div class=\"diagram-wrap\">");
+    // A region the keyboard can scroll (the drawing has no link to take the focus).
+    o.raw("<div class=\"diagram-wrap\"><div class=\"diagram-scroll\" tabindex=\"0\" role=\"region\" aria-label=\"");
+    o.label("actions");
+    o.raw("\">");
     o.raw(&p.lifecycle_svg);
-    o.raw("</div>\n");
+    o.raw("</div></div>\n");
     let cols = &p.action_cols;
     o.table_wrap("actions", &heads(&["callback", "implemented"], cols));
     for a in &p.actions {
