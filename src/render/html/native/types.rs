@@ -333,11 +333,10 @@ fn idl_operations(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
 fn idl_operation(o: &mut Out<'_>, op: &OperationView, root: &str) {
     o.raw("<div class=\"idl-operation\" id=\"op-");
     o.text(&op.name);
-    o.raw("\">\n<p class=\"signature\"><code>");
+    o.raw("\">\n<p class=\"signature\">");
     if op.oneway {
-        o.raw("oneway ");
+        o.raw("<code>oneway </code>");
     }
-    o.raw("</code>");
     idl_type(o, &op.returns, root);
     o.raw(" <code><strong>");
     o.text(&op.name);
