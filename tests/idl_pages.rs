@@ -454,3 +454,81 @@ fn idl_types_on_no_page_are_named() {
         "{checked}"
     );
 }
+
+/// Everything an IDL comment says reaches the type and interface pages of every output: the
+/// text after the first sentence, `@section`s, `@exception`, `@pre`/`@post`, a member's second
+/// sentence; inline commands (`@c`, `\ref`) keep their words; a Japanese site shows the `@if jp`
+/// part of a bilingual comment, and a comment written only in Japanese shows on both.
+#[test]
+fn every_part_of_an_idl_comment_is_on_its_pages() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(
+        d,
+        "in/Arm/RTC.xml",
+        &xml_profile("Arm", &[("DataInPort", "pose", "Lab::Pose")]),
+    );
+    let profile = read(&d.join("in/Arm/RTC.xml")).replace(
+        "</rtc:RtcProfile>",
+        "<rtc:ServicePorts rtc:name=\"arm\"><rtc:ServiceInterface rtc:name=\"arm\" rtc:type=\"Lab::Arm\" rtc:direction=\"Provided\" rtc:instanceName=\"arm\" rtc:idlFile=\"Lab.idl\"/></rtc:ServicePorts></rtc:RtcProfile>",
+    );
+    assert!(profile.contains("Lab::Arm"));
+    write(d, "in/Arm/RTC.xml", &profile);
+    write(
+        d,
+        "in/Arm/idl/Lab.idl",
+        "module Lab {\n\
+  /*!\n   * @if jp\n   * @brief 腕のサービス\n   * @else\n   * @brief Moves the arm.\n   *\n   * @section Description\n   * Sends motion commands to the controller.\n   * @endif\n   */\n\
+  interface Arm {\n\
+    /*!\n     * Start a motion. Returns at once.\n     * @param target goal in metres\n     * @return @c true when accepted\n     * @exception Busy when already moving\n     * @pre the arm is homed\n     * @post the arm moves\n     */\n\
+    boolean move(in double target);\n\
+    /*!\n     * @if jp\n     * 止める。\n     * @endif\n     */\n\
+    void stop();\n\
+  };\n\
+  /// A pose. See \\ref Arm for the frame.\n\
+  struct Pose {\n\
+    double x; ///< X in metres. Positive forward.\n\
+  };\n\
+};\n",
+    );
+    let o = rtcdoc(
+        &["build", "in", "-o", "site", "-f", "html,markdown,doxygen"],
+        d,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let all = |format: &str, folder: &str| -> String {
+        std::fs::read_dir(d.join("site").join(format).join(folder))
+            .unwrap()
+            .map(|e| read(&e.unwrap().path()))
+            .collect()
+    };
+    for (format, types, interfaces) in [
+        ("html", "types", "interfaces"),
+        ("markdown", "types", "interfaces"),
+        ("doxygen", "types", "interfaces"),
+    ] {
+        let text = all(format, types) + &all(format, interfaces);
+        for want in [
+            "Moves the arm",
+            "Sends motion commands to the controller",
+            "Returns at once",
+            "Busy",
+            "when already moving",
+            "the arm is homed",
+            "the arm moves",
+            "true when accepted",
+            "Positive forward",
+            "See Arm for the frame",
+            // A comment only in Japanese is shown on the English site too.
+            "止める",
+        ] {
+            assert!(text.contains(want), "{format}: {want}");
+        }
+    }
+    let o = rtcdoc(&["build", "in", "-o", "ja", "--language", "ja"], d);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let html = read(&d.join("ja/interfaces/lab-arm.html"));
+    assert!(html.contains("腕のサービス"), "{html}");
+    assert!(!html.contains("Moves the arm"), "{html}");
+    assert!(html.contains("事前条件: the arm is homed"), "{html}");
+}

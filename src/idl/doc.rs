@@ -57,11 +57,45 @@ const LABELS: &[&str] = &[
     "typeinfo",
 ];
 
+/// Doxygen's commands inside a sentence: `@c word` / `@p word` (code), `@a` / `@e` / `@em`
+/// (emphasis), `@b` (bold), `@ref name`, `@link … @endlink` and `\n` (a line break). They mark
+/// their word up; they start no part of the comment.
+const INLINE: &[&str] = &["c", "p", "a", "e", "em", "b", "ref", "link", "endlink", "n"];
+
+/// `text` with its inline commands ([`INLINE`]) taken out, their words kept as written and
+/// `\n` a line break: `Returns @c true when ready` → `Returns true when ready`.
+fn inline_commands(text: &str) -> std::borrow::Cow<'_, str> {
+    let cmds: Vec<Cmd<'_>> = commands(text)
+        .into_iter()
+        .filter(|c| INLINE.contains(&c.name))
+        .collect();
+    if cmds.is_empty() {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len());
+    let mut pos = 0;
+    for c in cmds {
+        out.push_str(&text[pos..c.start]);
+        pos = c.end;
+        if c.name == "n" {
+            out.push('\n');
+        }
+        // The one blank between the command and its word goes with the command.
+        if text[pos..].starts_with([' ', '\t']) {
+            pos += 1;
+        }
+    }
+    out.push_str(&text[pos..]);
+    std::borrow::Cow::Owned(out)
+}
+
 /// Parses a doc comment's stripped text.
 pub(crate) fn parse_doc(text: &str) -> IdlDoc {
+    let original = text;
+    let text = &*inline_commands(text);
     let (main, langs) = split_languages(text);
     let mut doc = parse_body(&main);
-    doc.text = text.to_string();
+    doc.text = original.to_string();
     for (lang, body) in langs {
         let mut d = parse_body(&body);
         d.text = body.trim().to_string();
@@ -344,6 +378,19 @@ mod tests {
         let d = parse_doc("mail n-ando@aist.go.jp \\brief B");
         assert_eq!(d.brief, "B");
         assert_eq!(d.details, "mail n-ando@aist.go.jp");
+    }
+
+    #[test]
+    fn inline_commands_keep_their_words() {
+        let d =
+            parse_doc("Returns @c true when ready, else \\p fallback.\n@return @c true on success");
+        assert_eq!(d.brief, "Returns true when ready, else fallback.");
+        assert_eq!(d.returns.as_deref(), Some("true on success"));
+        let d = parse_doc("Same as \\ref b but in metres. \\n Second line.");
+        assert_eq!(d.brief, "Same as b but in metres.");
+        assert_eq!(d.details, "Second line.");
+        // The comment as written is kept.
+        assert!(d.text.contains("\\ref b"));
     }
 
     #[test]

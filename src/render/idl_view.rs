@@ -93,6 +93,98 @@ pub struct DefinitionView {
     pub bases: Vec<TypeRef>,
 }
 
+/// The documentation of `doc` for a page in `lang`: the `@if jp` (or `ja`) part of OpenRTM's
+/// bilingual comments for Japanese, the rest for English; a comment written in one language
+/// only is shown in it for both.
+fn in_lang(doc: Option<&IdlDoc>, lang: Lang) -> Option<&IdlDoc> {
+    let d = doc?;
+    let ja = d
+        .languages
+        .iter()
+        .find(|l| matches!(l.lang.as_str(), "jp" | "ja"))
+        .map(|l| &*l.doc);
+    let en = d
+        .languages
+        .iter()
+        .find(|l| matches!(l.lang.as_str(), "en" | "eng"))
+        .map(|l| &*l.doc);
+    let empty = |x: &IdlDoc| x.brief.is_empty() && x.details.is_empty();
+    Some(match (lang, ja, en) {
+        (Lang::Ja, Some(j), _) if !empty(j) => j,
+        (Lang::En, _, Some(e)) if !empty(e) => e,
+        (_, Some(j), _) if empty(d) && !empty(j) => j,
+        _ => d,
+    })
+}
+
+/// Everything of `d` after its brief and details, in reading order, each part a paragraph:
+/// the sections (`Title: text`), the parameters and return value (`with_params`: an operation
+/// shows them apart), the exceptions, notes, see-also and every other tag (`pre: …`), so that
+/// nothing a comment says is left off its page.
+fn more(d: &IdlDoc, lang: Lang, with_params: bool) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut push = |label: &str, text: &str| {
+        let text = text.trim();
+        match (label.is_empty(), text.is_empty()) {
+            (_, true) if label.is_empty() => {}
+            (true, _) => out.push(text.to_string()),
+            (false, true) => out.push(label.to_string()),
+            (false, false) => out.push(format!("{label}: {text}")),
+        }
+    };
+    for sec in &d.sections {
+        push(&sec.title, &sec.text);
+    }
+    if with_params {
+        for p in &d.params {
+            push(&p.name, &p.text);
+        }
+        if let Some(r) = &d.returns {
+            push(lang.t("idl_returns"), r);
+        }
+    }
+    for e in &d.exceptions {
+        push(&format!("{} {}", lang.t("idl_raises"), e.name), &e.text);
+    }
+    for n in &d.notes {
+        push(lang.t("idl_note"), n);
+    }
+    for x in &d.see {
+        push(lang.t("idl_see"), x);
+    }
+    for t in &d.tags {
+        let label = match t.tag.as_str() {
+            "pre" => lang.t("pre_condition"),
+            "post" => lang.t("post_condition"),
+            other => other,
+        };
+        push(label, &t.text);
+    }
+    out
+}
+
+/// All of a member's documentation (a field, value, attribute, parameter or operation) on one
+/// line, for a table cell: the brief, then [`more`].
+fn line(doc: Option<&IdlDoc>, lang: Lang, with_params: bool) -> String {
+    let Some(d) = in_lang(doc, lang) else {
+        return String::new();
+    };
+    let mut parts = vec![brief(Some(d))];
+    if !d.brief.is_empty() {
+        // Without a brief, the first paragraph of the details is the brief.
+        parts.push(d.details.clone());
+    } else if let Some((_, rest)) = d.details.split_once("\n\n") {
+        parts.push(rest.to_string());
+    }
+    parts.extend(more(d, lang, with_params));
+    parts.retain(|p| !p.is_empty());
+    parts
+        .join(" ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 /// One line of documentation: the brief, else the first paragraph.
 fn brief(doc: Option<&IdlDoc>) -> String {
     doc.map(|d| {
@@ -113,6 +205,7 @@ fn brief(doc: Option<&IdlDoc>) -> String {
 /// Resolves type names to the catalogue's pages.
 struct Linker<'a> {
     catalog: &'a Catalog,
+    lang: Lang,
 }
 
 impl Linker<'_> {
@@ -148,7 +241,7 @@ impl Linker<'_> {
             name: f.name.clone(),
             ty: self.type_ref(&f.ty),
             array: f.array.iter().map(|b| format!("[{}]", b.expr)).collect(),
-            doc: brief(f.doc.as_deref()),
+            doc: line(f.doc.as_deref(), self.lang, true),
             labels,
         }
     }
@@ -156,10 +249,9 @@ impl Linker<'_> {
 
 /// The view of operation `o` of an interface, its types linked.
 fn operation_view(l: &Linker<'_>, o: &crate::idl::IdlOperation) -> OperationView {
+    let doc = in_lang(o.doc.as_deref(), l.lang);
     let doc_of = |name: &str| {
-        o.doc
-            .as_ref()
-            .and_then(|d| d.params.iter().find(|p| p.name == name))
+        doc.and_then(|d| d.params.iter().find(|p| p.name == name))
             .map(|p| p.text.clone())
     };
     OperationView {
@@ -186,31 +278,27 @@ fn operation_view(l: &Linker<'_>, o: &crate::idl::IdlOperation) -> OperationView
                 ty: l.type_ref(&p.ty),
                 name: p.name.clone(),
                 doc: doc_of(&p.name)
-                    .or_else(|| p.doc.as_ref().map(|d| brief(Some(d))))
+                    .or_else(|| p.doc.as_deref().map(|d| line(Some(d), l.lang, true)))
                     .unwrap_or_default(),
             })
             .collect(),
         raises: o.raises.iter().map(|t| l.type_ref(t)).collect(),
-        doc: brief(o.doc.as_deref()),
-        returns_doc: o
-            .doc
-            .as_ref()
-            .and_then(|d| d.returns.clone())
-            .unwrap_or_default(),
+        doc: line(o.doc.as_deref(), l.lang, false),
+        returns_doc: doc.and_then(|d| d.returns.clone()).unwrap_or_default(),
     }
 }
 
 /// The view of the definition of `name` (any spelling the catalogue accepts), or `None` when no
 /// IDL file read defines it. A typedef is shown as what it is, with the type it names linked.
-pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
+pub fn definition(catalog: &Catalog, name: &str, lang: Lang) -> Option<DefinitionView> {
     let scoped = crate::types::canonical_type(name);
     let item = catalog
         .idl
         .find(&scoped)
         .or_else(|| catalog.idl.find(name))?;
     let d = item.definition;
-    let l = Linker { catalog };
-    let doc = d.doc();
+    let l = Linker { catalog, lang };
+    let doc = in_lang(d.doc(), lang);
     let mut v = DefinitionView {
         kind: d.kind_word(),
         scoped_name: d.scoped_name().to_string(),
@@ -220,7 +308,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
         brief: brief(doc),
         details: doc
             .map(|d| {
-                if d.brief.is_empty() {
+                let details = if d.brief.is_empty() {
                     // The first paragraph is the brief already.
                     d.details
                         .split_once("\n\n")
@@ -228,7 +316,11 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                         .unwrap_or_default()
                 } else {
                     d.details.trim().to_string()
-                }
+                };
+                let mut parts = vec![details];
+                parts.extend(more(d, lang, true));
+                parts.retain(|p| !p.is_empty());
+                parts.join("\n\n")
             })
             .unwrap_or_default(),
         fields: Vec::new(),
@@ -252,7 +344,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                 .iter()
                 .map(|x| ValueView {
                     name: x.name.clone(),
-                    doc: brief(x.doc.as_deref()),
+                    doc: line(x.doc.as_deref(), lang, true),
                 })
                 .collect()
         }
@@ -287,7 +379,7 @@ pub fn definition(catalog: &Catalog, name: &str) -> Option<DefinitionView> {
                     name: a.name.clone(),
                     ty: l.type_ref(&a.ty),
                     readonly: a.readonly,
-                    doc: brief(a.doc.as_deref()),
+                    doc: line(a.doc.as_deref(), lang, true),
                 })
                 .collect();
             v.operations = i.operations.iter().map(|o| operation_view(&l, o)).collect();
@@ -398,7 +490,7 @@ pub fn write_definition<M: Markup>(
     lang: Lang,
     heading: &dyn Fn(&mut String, &str, &str),
 ) {
-    let Some(d) = definition(cat, name) else {
+    let Some(d) = definition(cat, name, lang) else {
         M::paragraph(out, &M::esc(lang.t("idl_no_definition")));
         return;
     };

@@ -65,6 +65,10 @@ fn block_marker(line: &str) -> Option<usize> {
     let b = line.as_bytes();
     let first = *b.first()?;
     let blank_after = |i: usize| b.get(i).is_none_or(|c| *c == b' ' || *c == b'\t');
+    // A table's delimiter row (`-|`, `:--|--:`): with its first character escaped it is text.
+    if b.contains(&b'-') && b.iter().all(|c| b"|-: \t".contains(c)) {
+        return Some(0);
+    }
     let marker = match first {
         b'>' | b'#' | b'=' | b'|' | b'~' | b'<' => true,
         // A bullet, or a rule / setext underline (`---`, `***`, `___`).
@@ -677,6 +681,10 @@ mod tests {
             ("```\nx", "<p>```<br>\nx</p>\n"),
         ] {
             assert_eq!(phrase_to_html(text), want, "{text:?}");
+        }
+        // No table either.
+        for t in ["-|\n-|", "a | b\n--|--", "x\n:-:|"] {
+            assert!(!phrase_to_html(t).contains("<table"), "{t:?}");
         }
         // Free text keeps its blocks.
         assert!(to_html("> quoted").starts_with("<blockquote>"));

@@ -1415,7 +1415,7 @@ fn type_page(site: &Site<'_>, v: &view::types::TypeView<'_>) -> TypePage {
         crumbs: crumbs_section(lang, root, crumbs_key),
         spellings: v.spellings.to_vec(),
         idl_files: crate::catalog::idl_file_names(v.idl_files),
-        def: crate::render::idl_view::definition(catalog, v.name),
+        def: crate::render::idl_view::definition(catalog, v.name, lang),
         others: uses("sec-others"),
         idl_file: v.idl_file.as_ref().map(|f| IdlFilePage {
             file: f.file.clone(),

@@ -310,14 +310,26 @@ fn write_index(
         let page = catalog.data_type_page(ti).path("html");
         put(
             w,
-            &entry_js(&idl_entry(catalog, "t", &page, &t.name, &t.spellings)),
+            &entry_js(&idl_entry(
+                catalog,
+                "t",
+                &page,
+                (&t.name, &t.spellings),
+                lang,
+            )),
         )?;
     }
     for (ii, t) in Ix::enumerate(&catalog.interfaces) {
         let page = catalog.interface_page(ii).path("html");
         put(
             w,
-            &entry_js(&idl_entry(catalog, "i", &page, &t.name, &t.spellings)),
+            &entry_js(&idl_entry(
+                catalog,
+                "i",
+                &page,
+                (&t.name, &t.spellings),
+                lang,
+            )),
         )?;
     }
     for e in system_entries(catalog) {
@@ -439,10 +451,10 @@ fn idl_entry(
     catalog: &Catalog,
     kind: &str,
     page: &str,
-    name: &str,
-    spellings: &[String],
+    (name, spellings): (&str, &[String]),
+    lang: Lang,
 ) -> serde_json::Value {
-    let def = crate::render::idl_view::definition(catalog, name);
+    let def = crate::render::idl_view::definition(catalog, name, lang);
     let mut g = Groups::default();
     add(&mut g.name, Some(name));
     for s in spellings {
