@@ -1336,7 +1336,7 @@ impl Catalog {
         excluded: &(dyn Fn(&str) -> bool + Sync),
     ) -> Catalog {
         // The page list and the peer runs are made once, when the entries are all there.
-        let mut catalog = Catalog::build_entries(docs.profiles, docs.diagnostics);
+        let mut catalog = Catalog::build_entries(docs.profiles, docs.diagnostics, &docs.idl);
         catalog.attach_idl(docs.idl);
         catalog.attach_systems(docs.systems);
         catalog.index();
@@ -1412,14 +1412,21 @@ impl Catalog {
     /// Builds the catalogue. Components are ordered by source path; `diagnostics` are the load
     /// diagnostics (reader warnings and errors of files that could not be read).
     pub fn build(loaded: Vec<LoadedProfile>, diagnostics: Vec<Diagnostic>) -> Catalog {
-        let mut catalog = Catalog::build_entries(loaded, diagnostics);
+        let mut catalog =
+            Catalog::build_entries(loaded, diagnostics, &crate::idl::IdlSet::default());
         catalog.index();
         catalog
     }
 
     /// [`Catalog::build`] without the page list and the peer runs ([`Catalog::index`]), for
     /// [`Catalog::assemble`], which makes them once, after the IDL and the systems.
-    fn build_entries(mut loaded: Vec<LoadedProfile>, mut diagnostics: Vec<Diagnostic>) -> Catalog {
+    /// A port type spelled as a repository id is keyed by the definition `idl` has under that
+    /// id ([`crate::idl::IdlSet::canonical_name`]).
+    fn build_entries(
+        mut loaded: Vec<LoadedProfile>,
+        mut diagnostics: Vec<Diagnostic>,
+        idl: &crate::idl::IdlSet,
+    ) -> Catalog {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
 
         // Component slugs from names, disambiguated by language or folder.
@@ -1513,7 +1520,7 @@ impl Catalog {
                     .map(|t| {
                         t.as_deref()
                             .filter(|t| !t.trim().is_empty())
-                            .map(canonical_type)
+                            .map(|t| idl.canonical_name(t))
                     })
                     .collect()
             })
@@ -2102,7 +2109,7 @@ impl Catalog {
 
     /// The handle of the data type of any spelling of a type name.
     pub fn data_type_index(&self, name: &str) -> Option<DataTypeIx> {
-        self.type_index.get(&canonical_type(name)).copied()
+        self.type_index.get(&self.idl.canonical_name(name)).copied()
     }
 
     /// The interface entry for any spelling of an interface type name.
@@ -2112,7 +2119,9 @@ impl Catalog {
 
     /// The handle of the interface of any spelling of an interface type name.
     pub fn interface_index_of(&self, name: &str) -> Option<InterfaceIx> {
-        self.interface_index.get(&canonical_type(name)).copied()
+        self.interface_index
+            .get(&self.idl.canonical_name(name))
+            .copied()
     }
 
     /// Ports of other components that can connect to data port `port` of `component`:

@@ -454,3 +454,45 @@ fn idl_types_on_no_page_are_named() {
         "{checked}"
     );
 }
+
+/// A port type written as a repository id with the `#pragma prefix` of its file (as
+/// RTCBuilder writes it) is the type that file defines: one page, `Lab::Pose`, with its
+/// definition.
+#[test]
+fn a_repository_id_with_a_pragma_prefix_is_the_type_it_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(
+        d,
+        "in/idl/Lab.idl",
+        "#pragma prefix \"example.com\"\nmodule Lab {\n  struct Pose { double x; double y; };\n};\n",
+    );
+    common::write(
+        d,
+        "in/Nav/RTC.xml",
+        &common::xml_profile(
+            "Nav",
+            &[
+                ("DataInPort", "pose", "IDL:example.com/Lab/Pose:1.0"),
+                ("DataOutPort", "out", "Lab::Pose"),
+            ],
+        ),
+    );
+    let o = common::rtcdoc(
+        &["build", "in", "-o", "site", "-f", "html,markdown,json"],
+        d,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("on no page"), "{}", stderr(&o));
+    let page = read(&d.join("site/html/types/lab-pose.html"));
+    assert!(page.contains("id=\"definition\""), "{page}");
+    assert!(page.contains("IDL:example.com/Lab/Pose:1.0"), "{page}");
+    assert!(!d.join("site/html/types/example-com-lab-pose.html").exists());
+    let md = read(&d.join("site/markdown/types/lab-pose.md"));
+    assert!(md.contains("idl/Lab.idl"), "{md}");
+    let json = read(&d.join("site/json/catalog.json"));
+    assert!(
+        !json.contains("\"name\": \"example.com::Lab::Pose\""),
+        "{json}"
+    );
+}
