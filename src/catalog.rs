@@ -2039,12 +2039,31 @@ impl Catalog {
         let mut seen: std::collections::BTreeSet<String> = queue.iter().cloned().collect();
         let mut contains: BTreeMap<String, Vec<String>> = BTreeMap::new();
         let mut found: Vec<String> = Vec::new();
+        let mut bases: Vec<String> = Vec::new();
         while let Some(name) = queue.pop_front() {
             let Some(item) = self.idl.find(&name) else {
                 continue;
             };
             let holder = canonical_type(item.definition.scoped_name());
             let holder_is_type = !matches!(item.definition, IdlDefinition::Interface(_));
+            // An interface's bases get pages of their own (a provider implements their
+            // operations too), and the types their operations use.
+            if let IdlDefinition::Interface(i) = item.definition {
+                for b in &i.bases {
+                    let mut r = Vec::new();
+                    named(b, &mut r);
+                    let Some(base) = r.first().and_then(|r| self.idl.find(r)) else {
+                        continue;
+                    };
+                    let scoped = canonical_type(base.definition.scoped_name());
+                    if matches!(base.definition, IdlDefinition::Interface(_))
+                        && seen.insert(scoped.clone())
+                    {
+                        bases.push(scoped.clone());
+                        queue.push_back(scoped);
+                    }
+                }
+            }
             for r in refs(item.definition) {
                 let Some(target) = self.idl.find(&r) else {
                     continue;
@@ -2100,6 +2119,43 @@ impl Catalog {
             }
         }
         self.type_index = handle_map(&self.data_types, |t| t.name.clone());
+        self.add_base_interfaces(bases);
+    }
+
+    /// Interface entries (no port uses them) for `bases`, the base interfaces of interfaces
+    /// with pages ([`Catalog::attach_idl`]).
+    fn add_base_interfaces(&mut self, bases: Vec<String>) {
+        if bases.is_empty() {
+            return;
+        }
+        let mut taken: std::collections::HashSet<String> = self
+            .interfaces
+            .iter()
+            .map(|t| t.slug.clone())
+            .chain(std::iter::once("index".to_string()))
+            .collect();
+        for name in bases {
+            if self.interface_index.contains_key(&name) {
+                continue;
+            }
+            let base = slugify(&name);
+            let mut slug = base.clone();
+            let mut n = 1;
+            while !taken.insert(slug.clone()) {
+                n += 1;
+                slug = format!("{base}-{n}");
+            }
+            self.interfaces.push(InterfaceType {
+                spellings: vec![name.clone()],
+                name,
+                slug,
+                idl_files: Vec::new(),
+                uses: InterfaceUses::default(),
+                contained_in: Vec::new(),
+            });
+        }
+        self.interfaces.sort_by(|a, b| a.name.cmp(&b.name));
+        self.interface_index = handle_map(&self.interfaces, |t| t.name.clone());
     }
 
     /// The data type entry for any spelling of a type name.
