@@ -1336,7 +1336,7 @@ impl Catalog {
         excluded: &(dyn Fn(&str) -> bool + Sync),
     ) -> Catalog {
         // The page list and the peer runs are made once, when the entries are all there.
-        let mut catalog = Catalog::build_entries(docs.profiles, docs.diagnostics);
+        let mut catalog = Catalog::build_entries(docs.profiles, docs.diagnostics, &docs.idl);
         catalog.attach_idl(docs.idl);
         catalog.attach_systems(docs.systems);
         catalog.index();
@@ -1412,14 +1412,21 @@ impl Catalog {
     /// Builds the catalogue. Components are ordered by source path; `diagnostics` are the load
     /// diagnostics (reader warnings and errors of files that could not be read).
     pub fn build(loaded: Vec<LoadedProfile>, diagnostics: Vec<Diagnostic>) -> Catalog {
-        let mut catalog = Catalog::build_entries(loaded, diagnostics);
+        let mut catalog =
+            Catalog::build_entries(loaded, diagnostics, &crate::idl::IdlSet::default());
         catalog.index();
         catalog
     }
 
     /// [`Catalog::build`] without the page list and the peer runs ([`Catalog::index`]), for
     /// [`Catalog::assemble`], which makes them once, after the IDL and the systems.
-    fn build_entries(mut loaded: Vec<LoadedProfile>, mut diagnostics: Vec<Diagnostic>) -> Catalog {
+    /// A port type spelled as a repository id is keyed by the definition `idl` has under that
+    /// id ([`crate::idl::IdlSet::canonical_name`]).
+    fn build_entries(
+        mut loaded: Vec<LoadedProfile>,
+        mut diagnostics: Vec<Diagnostic>,
+        idl: &crate::idl::IdlSet,
+    ) -> Catalog {
         loaded.sort_by(|a, b| a.source.cmp(&b.source));
 
         // Component slugs from names, disambiguated by language or folder.
@@ -1513,7 +1520,7 @@ impl Catalog {
                     .map(|t| {
                         t.as_deref()
                             .filter(|t| !t.trim().is_empty())
-                            .map(canonical_type)
+                            .map(|t| idl.canonical_name(t))
                     })
                     .collect()
             })
@@ -2032,12 +2039,31 @@ impl Catalog {
         let mut seen: std::collections::BTreeSet<String> = queue.iter().cloned().collect();
         let mut contains: BTreeMap<String, Vec<String>> = BTreeMap::new();
         let mut found: Vec<String> = Vec::new();
+        let mut bases: Vec<String> = Vec::new();
         while let Some(name) = queue.pop_front() {
             let Some(item) = self.idl.find(&name) else {
                 continue;
             };
             let holder = canonical_type(item.definition.scoped_name());
             let holder_is_type = !matches!(item.definition, IdlDefinition::Interface(_));
+            // An interface's bases get pages of their own (a provider implements their
+            // operations too), and the types their operations use.
+            if let IdlDefinition::Interface(i) = item.definition {
+                for b in &i.bases {
+                    let mut r = Vec::new();
+                    named(b, &mut r);
+                    let Some(base) = r.first().and_then(|r| self.idl.find(r)) else {
+                        continue;
+                    };
+                    let scoped = canonical_type(base.definition.scoped_name());
+                    if matches!(base.definition, IdlDefinition::Interface(_))
+                        && seen.insert(scoped.clone())
+                    {
+                        bases.push(scoped.clone());
+                        queue.push_back(scoped);
+                    }
+                }
+            }
             for r in refs(item.definition) {
                 let Some(target) = self.idl.find(&r) else {
                     continue;
@@ -2093,6 +2119,43 @@ impl Catalog {
             }
         }
         self.type_index = handle_map(&self.data_types, |t| t.name.clone());
+        self.add_base_interfaces(bases);
+    }
+
+    /// Interface entries (no port uses them) for `bases`, the base interfaces of interfaces
+    /// with pages ([`Catalog::attach_idl`]).
+    fn add_base_interfaces(&mut self, bases: Vec<String>) {
+        if bases.is_empty() {
+            return;
+        }
+        let mut taken: std::collections::HashSet<String> = self
+            .interfaces
+            .iter()
+            .map(|t| t.slug.clone())
+            .chain(std::iter::once("index".to_string()))
+            .collect();
+        for name in bases {
+            if self.interface_index.contains_key(&name) {
+                continue;
+            }
+            let base = slugify(&name);
+            let mut slug = base.clone();
+            let mut n = 1;
+            while !taken.insert(slug.clone()) {
+                n += 1;
+                slug = format!("{base}-{n}");
+            }
+            self.interfaces.push(InterfaceType {
+                spellings: vec![name.clone()],
+                name,
+                slug,
+                idl_files: Vec::new(),
+                uses: InterfaceUses::default(),
+                contained_in: Vec::new(),
+            });
+        }
+        self.interfaces.sort_by(|a, b| a.name.cmp(&b.name));
+        self.interface_index = handle_map(&self.interfaces, |t| t.name.clone());
     }
 
     /// The data type entry for any spelling of a type name.
@@ -2102,7 +2165,7 @@ impl Catalog {
 
     /// The handle of the data type of any spelling of a type name.
     pub fn data_type_index(&self, name: &str) -> Option<DataTypeIx> {
-        self.type_index.get(&canonical_type(name)).copied()
+        self.type_index.get(&self.idl.canonical_name(name)).copied()
     }
 
     /// The interface entry for any spelling of an interface type name.
@@ -2112,7 +2175,9 @@ impl Catalog {
 
     /// The handle of the interface of any spelling of an interface type name.
     pub fn interface_index_of(&self, name: &str) -> Option<InterfaceIx> {
-        self.interface_index.get(&canonical_type(name)).copied()
+        self.interface_index
+            .get(&self.idl.canonical_name(name))
+            .copied()
     }
 
     /// Ports of other components that can connect to data port `port` of `component`:

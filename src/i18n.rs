@@ -348,6 +348,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("idl_field", "Field", "フィールド"),
     ("idl_file", "IDL file", "IDLファイル"),
     ("idl_files", "IDL files", "IDLファイル"),
+    ("idl_inherited_from", "Inherited from", "継承元"),
     (
         "idl_no_definition",
         "Defined in no IDL file read, so its definition is not shown: add the IDL file below the input, pass --idl-path DIR, or let rtcdoc init find an OpenRTM installation.",

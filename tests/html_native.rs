@@ -151,6 +151,7 @@ fn every_part_of_a_type_page_matches_the_templates() {
         "class=\"idl-values\"",
         "class=\"idl-attributes\"",
         "class=\"idl-operation\"",
+        "<ul class=\"idl-inherited\"><li><a href=\"../interfaces/demo-base.html#op-ping\">",
         "<dl class=\"params\"><dt>",
         " <code>raises (</code>",
         "<code>oneway </code>",

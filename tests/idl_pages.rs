@@ -532,3 +532,123 @@ fn every_part_of_an_idl_comment_is_on_its_pages() {
     assert!(!html.contains("Moves the arm"), "{html}");
     assert!(html.contains("事前条件: the arm is homed"), "{html}");
 }
+
+/// A port type written as a repository id with the `#pragma prefix` of its file (as
+/// RTCBuilder writes it) is the type that file defines: one page, `Lab::Pose`, with its
+/// definition.
+#[test]
+fn a_repository_id_with_a_pragma_prefix_is_the_type_it_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(
+        d,
+        "in/idl/Lab.idl",
+        "#pragma prefix \"example.com\"\nmodule Lab {\n  struct Pose { double x; double y; };\n};\n",
+    );
+    common::write(
+        d,
+        "in/Nav/RTC.xml",
+        &common::xml_profile(
+            "Nav",
+            &[
+                ("DataInPort", "pose", "IDL:example.com/Lab/Pose:1.0"),
+                ("DataOutPort", "out", "Lab::Pose"),
+            ],
+        ),
+    );
+    let o = common::rtcdoc(
+        &["build", "in", "-o", "site", "-f", "html,markdown,json"],
+        d,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("on no page"), "{}", stderr(&o));
+    let page = read(&d.join("site/html/types/lab-pose.html"));
+    assert!(page.contains("id=\"definition\""), "{page}");
+    assert!(page.contains("IDL:example.com/Lab/Pose:1.0"), "{page}");
+    assert!(!d.join("site/html/types/example-com-lab-pose.html").exists());
+    let md = read(&d.join("site/markdown/types/lab-pose.md"));
+    assert!(md.contains("idl/Lab.idl"), "{md}");
+    let json = read(&d.join("site/json/catalog.json"));
+    assert!(
+        !json.contains("\"name\": \"example.com::Lab::Pose\""),
+        "{json}"
+    );
+}
+
+/// The base interfaces of an interface with a page get pages of their own (and the types
+/// their operations use), are linked, and their operations are listed on the derived page,
+/// transitively, in every output.
+#[test]
+fn base_interfaces_have_pages_and_their_operations_are_inherited() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(
+        d,
+        "in/idl/Arm.idl",
+        "module Lab {\n  struct Cfg { long rate; };\n  interface Root { void ping(); };\n  interface Base : Root { /** Reads the configuration. */ Cfg get_config(); void reset(); };\n  interface Arm : Base { void stop(); };\n};\n",
+    );
+    let service = r#"  <rtc:ServicePorts xsi:type="rtcExt:serviceport_ext" rtcExt:position="RIGHT" rtc:name="armPort">
+    <rtc:ServiceInterface xsi:type="rtcExt:serviceinterface_ext" rtc:type="Lab::Arm" rtc:idlFile="idl/Arm.idl" rtc:instanceName="" rtc:direction="Provided" rtc:name="arm"/>
+  </rtc:ServicePorts>
+</rtc:RtcProfile>"#;
+    let p = common::xml_profile("Comp", &[]).replace("</rtc:RtcProfile>", service);
+    common::write(d, "in/Comp/RTC.xml", &p);
+    let o = common::rtcdoc(
+        &[
+            "build",
+            "in",
+            "-o",
+            "site",
+            "-f",
+            "html,markdown,doxygen,json",
+        ],
+        d,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("on no page"), "{}", stderr(&o));
+    let s = d.join("site");
+    let arm = read(&s.join("html/interfaces/lab-arm.html"));
+    assert!(
+        arm.contains(
+            "Base interfaces: <a href=\"../interfaces/lab-base.html\"><code>Base</code></a>"
+        ),
+        "{arm}"
+    );
+    assert!(arm.contains("<h3>Inherited from <a href=\"../interfaces/lab-base.html\"><code>Lab::Base</code></a></h3>"), "{arm}");
+    assert!(arm.contains("<li><a href=\"../interfaces/lab-base.html#op-get_config\"><code>get_config</code></a>: Reads the configuration.</li>"), "{arm}");
+    assert!(
+        arm.contains("#op-reset\"") && arm.contains("../interfaces/lab-root.html#op-ping\""),
+        "{arm}"
+    );
+    let base = read(&s.join("html/interfaces/lab-base.html"));
+    assert!(base.contains("id=\"op-get_config\""), "{base}");
+    assert!(
+        base.contains("<a href=\"../types/lab-cfg.html\"><code>Cfg</code></a>"),
+        "{base}"
+    );
+    assert!(s.join("html/interfaces/lab-root.html").is_file());
+    let index = read(&s.join("html/interfaces/index.html"));
+    assert!(index.contains("lab-base.html"), "{index}");
+    let md = read(&s.join("markdown/interfaces/lab-arm.md"));
+    assert!(
+        md.contains("Base interfaces: [Base](../interfaces/lab-base.md)"),
+        "{md}"
+    );
+    assert!(
+        md.contains("Inherited from [Lab::Base](../interfaces/lab-base.md)"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| [reset](../interfaces/lab-base.md) |"),
+        "{md}"
+    );
+    assert!(s.join("markdown/interfaces/lab-base.md").is_file());
+    let dox = read(&s.join("doxygen/interfaces/lab-arm.dox"));
+    assert!(
+        dox.contains("\\ref rtc_if_lab_base \"get_config\""),
+        "{dox}"
+    );
+    assert!(dox.contains("\\ref rtc_if_lab_root \"ping\""), "{dox}");
+    let json = read(&s.join("json/catalog.json"));
+    assert!(json.contains("\"name\": \"Lab::Base\""), "{json}");
+}

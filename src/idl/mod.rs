@@ -352,6 +352,23 @@ impl IdlSet {
             .map(|i| i.definition.scoped_name().to_string())
     }
 
+    /// The canonical spelling of a type name ([`crate::types::canonical_type`]), a
+    /// repository id resolved against the ids of the definitions read (a `#pragma prefix`,
+    /// `ID` or `version` included): `IDL:example.com/Lab/Pose:1.0` is `Lab::Pose` when a file
+    /// read defines it under that id. Any other name, or an id no file defines, is spelled as
+    /// [`crate::types::canonical_type`] spells it.
+    pub fn canonical_name(&self, name: &str) -> String {
+        let trimmed = name.trim();
+        if trimmed.starts_with("IDL:") {
+            if let Some(l) = self.by_repo_id.get(trimmed).and_then(|l| l.first()) {
+                if let Some(item) = self.get(l) {
+                    return crate::types::canonical_type(item.definition.scoped_name());
+                }
+            }
+        }
+        crate::types::canonical_type(name)
+    }
+
     fn locate(&self, name: &str) -> Vec<DefLoc> {
         if let Some(rest) = name.strip_prefix("IDL:") {
             if let Some(l) = self.by_repo_id.get(name) {

@@ -91,6 +91,16 @@ pub struct DefinitionView {
     pub operations: Vec<OperationView>,
     pub attributes: Vec<AttributeView>,
     pub bases: Vec<TypeRef>,
+    /// The operations of an interface's bases (theirs too, each base once, nearest first):
+    /// a provider implements them as well.
+    pub inherited: Vec<InheritedView>,
+}
+
+/// The operations an interface inherits from one base, each shown on the base's page.
+#[derive(Debug, Clone, Serialize)]
+pub struct InheritedView {
+    pub base: TypeRef,
+    pub operations: Vec<OperationView>,
 }
 
 /// The documentation of `doc` for a page in `lang`: the `@if jp` (or `ja`) part of OpenRTM's
@@ -247,6 +257,47 @@ impl Linker<'_> {
     }
 }
 
+/// The operations interface `i` inherits, by base: its bases, then theirs, breadth first, each
+/// interface once (whatever cycles the input has), `i` itself never.
+fn inherited(l: &Linker<'_>, i: &crate::idl::IdlInterface) -> Vec<InheritedView> {
+    let idl = &l.catalog.idl;
+    let mut seen = std::collections::HashSet::from([i.scoped_name.clone()]);
+    let mut queue: std::collections::VecDeque<IdlType> = i.bases.iter().cloned().collect();
+    let mut out = Vec::new();
+    while let Some(b) = queue.pop_front() {
+        let IdlType::Named { name, resolved } = &b else {
+            continue;
+        };
+        let Some(item) = idl.find(resolved.as_deref().unwrap_or(name)) else {
+            continue;
+        };
+        let IdlDefinition::Interface(base) = item.definition else {
+            continue;
+        };
+        if !seen.insert(base.scoped_name.clone()) {
+            continue;
+        }
+        queue.extend(base.bases.iter().cloned());
+        if base.operations.is_empty() {
+            continue;
+        }
+        let found = l.entry_of(&base.scoped_name);
+        out.push(InheritedView {
+            base: TypeRef {
+                text: base.scoped_name.clone(),
+                page: found.as_ref().map(|(_, p)| p.clone()),
+                entry: found.map(|(e, _)| e),
+            },
+            operations: base
+                .operations
+                .iter()
+                .map(|o| operation_view(l, o))
+                .collect(),
+        });
+    }
+    out
+}
+
 /// The view of operation `o` of an interface, its types linked.
 fn operation_view(l: &Linker<'_>, o: &crate::idl::IdlOperation) -> OperationView {
     let doc = in_lang(o.doc.as_deref(), l.lang);
@@ -330,6 +381,7 @@ pub fn definition(catalog: &Catalog, name: &str, lang: Lang) -> Option<Definitio
         operations: Vec::new(),
         attributes: Vec::new(),
         bases: Vec::new(),
+        inherited: Vec::new(),
     };
     match d {
         IdlDefinition::Struct(s) => {
@@ -383,6 +435,7 @@ pub fn definition(catalog: &Catalog, name: &str, lang: Lang) -> Option<Definitio
                 })
                 .collect();
             v.operations = i.operations.iter().map(|o| operation_view(&l, o)).collect();
+            v.inherited = inherited(&l, i);
         }
         _ => {}
     }
@@ -478,6 +531,39 @@ fn operations_table<M: Markup>(
     );
 }
 
+/// The inherited operations of an interface, a table per base: each operation linked to the
+/// base's page, with its documentation.
+fn inherited_tables<M: Markup>(
+    out: &mut String,
+    inherited: &[InheritedView],
+    lang: Lang,
+    ty: &dyn Fn(&TypeRef) -> String,
+) {
+    for g in inherited {
+        let base = ty(&g.base);
+        M::paragraph(
+            out,
+            &format!("{} {base}", M::esc(lang.t("idl_inherited_from"))),
+        );
+        let rows: Vec<Vec<String>> = g
+            .operations
+            .iter()
+            .map(|o| {
+                let name = TypeRef {
+                    text: o.name.clone(),
+                    ..g.base.clone()
+                };
+                vec![ty(&name), M::esc(&o.doc)]
+            })
+            .collect();
+        M::table(
+            out,
+            &[lang.t("idl_operations"), lang.t("description")],
+            &rows,
+        );
+    }
+}
+
 /// The definition of `name` as Markdown or Doxygen (through [`Markup`]): where it is defined,
 /// its documentation, and tables of its fields, values, operations and attributes, with types
 /// linked to their pages from page `from`. `heading` writes a level-2 section heading. Nothing when no IDL
@@ -543,6 +629,7 @@ pub fn write_definition<M: Markup>(
     if !d.operations.is_empty() {
         operations_table::<M>(out, &d.operations, lang, &ty);
     }
+    inherited_tables::<M>(out, &d.inherited, lang, &ty);
     if !d.attributes.is_empty() {
         let rows: Vec<Vec<String>> = d
             .attributes

@@ -252,6 +252,7 @@ fn idl_definition(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
     idl_fields(o, def, root);
     idl_values(o, def);
     idl_operations(o, def, root);
+    idl_inherited(o, def, root);
     idl_attributes(o, def, root);
     o.raw("</section>");
 }
@@ -325,6 +326,36 @@ fn idl_operations(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
         for op in &def.operations {
             idl_operation(o, op, root);
         }
+    }
+    o.raw("\n");
+}
+
+/// The inherited operations of `idl_definition` (an interface's), a list per base, each
+/// operation linked to its place on the base's page.
+fn idl_inherited(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
+    for g in &def.inherited {
+        o.label_in("<h3>", "idl_inherited_from", " ");
+        idl_type(o, &g.base, root);
+        o.raw("</h3>\n<ul class=\"idl-inherited\">");
+        for op in &g.operations {
+            o.raw("<li>");
+            match g.base.page.as_deref().filter(|p| !p.is_empty()) {
+                Some(page) => {
+                    o.raw("<a href=\"");
+                    o.text(root);
+                    o.text(page);
+                    o.raw("#op-");
+                    o.text(&op.name);
+                    o.raw("\"><code>");
+                    o.text(&op.name);
+                    o.raw("</code></a>");
+                }
+                None => o.code(&op.name),
+            }
+            o.text_if(": ", &op.doc, "");
+            o.raw("</li>\n");
+        }
+        o.raw("</ul>\n");
     }
     o.raw("\n");
 }
