@@ -652,3 +652,27 @@ fn base_interfaces_have_pages_and_their_operations_are_inherited() {
     let json = read(&s.join("json/catalog.json"));
     assert!(json.contains("\"name\": \"Lab::Base\""), "{json}");
 }
+
+/// A union's `default:` case is labelled once.
+#[test]
+fn a_union_default_case_is_labelled_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(
+        d,
+        "in/C/RTC.xml",
+        &xml_profile("C", &[("DataInPort", "u", "Un::U")]),
+    );
+    write(
+        d,
+        "in/C/idl/U.idl",
+        "module Un { union U switch (long) { case 1: long a; default: octet o; }; };\n",
+    );
+    let o = rtcdoc(&["build", "in", "-o", "site", "-f", "html,markdown"], d);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let html = read(&d.join("site/html/types/un-u.html"));
+    assert!(html.contains("<code>default</code>"), "{html}");
+    assert!(!html.contains("default, default"), "{html}");
+    let md = read(&d.join("site/markdown/types/un-u.md"));
+    assert!(!md.contains("default, default"), "{md}");
+}

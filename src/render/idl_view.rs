@@ -406,9 +406,15 @@ pub fn definition(catalog: &Catalog, name: &str, lang: Lang) -> Option<Definitio
                 .cases
                 .iter()
                 .map(|c| {
-                    let mut labels: Vec<String> =
-                        c.labels.iter().map(|x| format!("case {x}")).collect();
-                    if c.is_default {
+                    // `default:` is the case's default flag (the reader may list it among the
+                    // labels too): said once.
+                    let mut labels: Vec<String> = c
+                        .labels
+                        .iter()
+                        .filter(|x| x.trim() != "default")
+                        .map(|x| format!("case {x}"))
+                        .collect();
+                    if c.is_default || c.labels.iter().any(|x| x.trim() == "default") {
                         labels.push("default".into());
                     }
                     l.field(&c.field, labels.join(", "))
