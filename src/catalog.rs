@@ -2084,23 +2084,12 @@ impl Catalog {
                 }
             }
         }
-        let mut taken: std::collections::HashSet<String> = self
-            .data_types
-            .iter()
-            .map(|t| t.slug.clone())
-            .chain(std::iter::once("index".to_string()))
-            .collect();
+        let mut taken = taken_slugs(self.data_types.iter().map(|t| t.slug.as_str()));
         for name in found {
             if self.type_index.contains_key(&canonical_type(&name)) {
                 continue;
             }
-            let base = slugify(&name);
-            let mut slug = base.clone();
-            let mut n = 1;
-            while !taken.insert(slug.clone()) {
-                n += 1;
-                slug = format!("{base}-{n}");
-            }
+            let slug = free_slug(&mut taken, &name);
             self.data_types.push(DataType {
                 spellings: vec![name.clone()],
                 name,
@@ -2128,23 +2117,12 @@ impl Catalog {
         if bases.is_empty() {
             return;
         }
-        let mut taken: std::collections::HashSet<String> = self
-            .interfaces
-            .iter()
-            .map(|t| t.slug.clone())
-            .chain(std::iter::once("index".to_string()))
-            .collect();
+        let mut taken = taken_slugs(self.interfaces.iter().map(|t| t.slug.as_str()));
         for name in bases {
             if self.interface_index.contains_key(&name) {
                 continue;
             }
-            let base = slugify(&name);
-            let mut slug = base.clone();
-            let mut n = 1;
-            while !taken.insert(slug.clone()) {
-                n += 1;
-                slug = format!("{base}-{n}");
-            }
+            let slug = free_slug(&mut taken, &name);
             self.interfaces.push(InterfaceType {
                 spellings: vec![name.clone()],
                 name,
@@ -2305,6 +2283,26 @@ impl Catalog {
         }
         c
     }
+}
+
+/// The slugs of a page kind's pages, and `index` (its index page).
+fn taken_slugs<'a>(slugs: impl Iterator<Item = &'a str>) -> std::collections::HashSet<String> {
+    slugs
+        .map(str::to_string)
+        .chain(std::iter::once("index".to_string()))
+        .collect()
+}
+
+/// The slug of `name` that no page in `taken` has yet (`name`, `name-2`, …), taken.
+fn free_slug(taken: &mut std::collections::HashSet<String>, name: &str) -> String {
+    let base = slugify(name);
+    let mut slug = base.clone();
+    let mut n = 1;
+    while !taken.insert(slug.clone()) {
+        n += 1;
+        slug = format!("{base}-{n}");
+    }
+    slug
 }
 
 #[cfg(test)]

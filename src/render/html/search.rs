@@ -308,29 +308,13 @@ fn write_index(
     }
     for (ti, t) in Ix::enumerate(&catalog.data_types) {
         let page = catalog.data_type_page(ti).path("html");
-        put(
-            w,
-            &entry_js(&idl_entry(
-                catalog,
-                "t",
-                &page,
-                (&t.name, &t.spellings),
-                lang,
-            )),
-        )?;
+        let entry = idl_entry(catalog, "t", &page, (&t.name, &t.spellings), lang);
+        put(w, &entry_js(&entry))?;
     }
     for (ii, t) in Ix::enumerate(&catalog.interfaces) {
         let page = catalog.interface_page(ii).path("html");
-        put(
-            w,
-            &entry_js(&idl_entry(
-                catalog,
-                "i",
-                &page,
-                (&t.name, &t.spellings),
-                lang,
-            )),
-        )?;
+        let entry = idl_entry(catalog, "i", &page, (&t.name, &t.spellings), lang);
+        put(w, &entry_js(&entry))?;
     }
     for e in system_entries(catalog) {
         put(w, &entry_js(&e))?;
