@@ -566,6 +566,14 @@ fn preprocessor_errors_are_reported() {
             "p.idl:10:1: error[RTC021]: `#ifdef` has no matching `#endif`",
         ]
     );
+    // `#error` is the file's own stop: its hint is not about balancing directives.
+    let hints: Vec<&str> = set
+        .diagnostics
+        .iter()
+        .map(|d| d.hint.as_deref().unwrap_or(""))
+        .collect();
+    assert!(hints[3].contains("on purpose"), "{hints:?}");
+    assert!(hints[0].contains("balance"), "{hints:?}");
 }
 
 #[test]

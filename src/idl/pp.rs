@@ -390,7 +390,15 @@ impl Pp<'_, '_> {
                         });
                     }
                 }
-                "error" => self.err(&path, t.pos, format!("#error {}", d.raw.trim())),
+                "error" => self.src.report(
+                    Diagnostic::error(
+                        codes::PREPROCESSOR,
+                        &path,
+                        format!("#error {}", d.raw.trim()),
+                    )
+                    .at(t.pos)
+                    .with_hint("the file stops the build on purpose here: define or undefine the macros its #if tests expect (pass the IDL directory of the installation it was written for), or exclude the file"),
+                ),
                 "warning" => self.src.report(
                     Diagnostic::warning(
                         codes::DIRECTIVE,
