@@ -274,6 +274,18 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
         conf.contains("<mark>0.5</mark></td><td data-label=\"Component default\">0.3</td>"),
         "{conf}"
     );
+    // RTSystemEditor's editor data (`__widget__`, …) has no component default or description
+    // to show: its tables have name and value only.
+    let widget = conf
+        .split("<caption><code>__widget__</code>")
+        .nth(1)
+        .and_then(|t| t.split("</table>").next())
+        .unwrap_or_else(|| panic!("no __widget__ table: {conf}"));
+    assert!(!widget.contains("Component default"), "{widget}");
+    assert!(
+        widget.contains("<th scope=\"col\">Value</th></tr>"),
+        "{widget}"
+    );
     // Orders and groups.
     assert!(section(&html, "orders").contains("after Camera0 (timeout 500 ms, SYNC)"));
     assert!(section(&html, "groups").contains("Camera0, Planner0"));
