@@ -676,3 +676,30 @@ fn a_union_default_case_is_labelled_once() {
     let md = read(&d.join("site/markdown/types/un-u.md"));
     assert!(!md.contains("default, default"), "{md}");
 }
+
+/// A column of an interface's tables that is empty in every row is left out (formats.md):
+/// `Raises` only where an operation raises something.
+#[test]
+fn empty_interface_columns_are_left_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = rtcdoc(
+        &[
+            "build",
+            &root().join("examples").to_string_lossy(),
+            "-o",
+            "site",
+            "-f",
+            "markdown,doxygen",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let md = |f: &str| read(&dir.path().join("site/markdown/interfaces").join(f));
+    let camera = md("camera-cameracontrol.md");
+    assert!(
+        camera.contains("| Operations | Returns | Parameters | Description |"),
+        "{camera}"
+    );
+    assert!(md("detection-modelrepository.md")
+        .contains("| Operations | Returns | Parameters | Raises | Description |"));
+}

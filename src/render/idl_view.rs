@@ -524,8 +524,10 @@ fn operations_table<M: Markup>(
             ]
         })
         .collect();
-    M::table(
+    // A column empty in every row (no operation raises anything) is left out.
+    super::text::sparse_table::<M>(
         out,
+        2,
         &[
             lang.t("idl_operations"),
             lang.t("idl_returns"),
@@ -649,8 +651,9 @@ pub fn write_definition<M: Markup>(
                 vec![M::esc(&name), ty(&a.ty), M::esc(&a.doc)]
             })
             .collect();
-        M::table(
+        super::text::sparse_table::<M>(
             out,
+            2,
             &[
                 lang.t("idl_attributes"),
                 lang.t("type"),

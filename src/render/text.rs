@@ -170,7 +170,12 @@ pub fn facts_table<M: Markup>(out: &mut String, lang: Lang, facts: &[Fact]) {
 
 /// A table whose columns from `keep` on are left out when they are empty in every row (a
 /// component without units gets no Unit column).
-fn sparse_table<M: Markup>(out: &mut String, keep: usize, headers: &[&str], rows: &[Vec<String>]) {
+pub(super) fn sparse_table<M: Markup>(
+    out: &mut String,
+    keep: usize,
+    headers: &[&str],
+    rows: &[Vec<String>],
+) {
     let shown: Vec<usize> = (0..headers.len())
         .filter(|&i| i < keep || rows.iter().any(|r| r.get(i).is_some_and(|c| !c.is_empty())))
         .collect();
