@@ -7,7 +7,7 @@ use rtcdoc::build::{self, Progress};
 use rtcdoc::config::{self, Overrides};
 use rtcdoc::diagnostic::Severity;
 use rtcdoc::i18n::Lang;
-use rtcdoc::quote::shell_word as shell_quote;
+use rtcdoc::quote::shell_word;
 use rtcdoc::render::Format;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -624,13 +624,13 @@ fn print_findings(
 /// the build did not).
 fn check_command(input: &Path, read: &ReadArgs) -> String {
     let i = &read.input;
-    let mut cmd = format!("rtcdoc check {}", shell_quote(&input.to_string_lossy()));
+    let mut cmd = format!("rtcdoc check {}", shell_word(&input.to_string_lossy()));
     if let Some(c) = &i.config {
-        cmd.push_str(&format!(" --config {}", shell_quote(&c.to_string_lossy())));
+        cmd.push_str(&format!(" --config {}", shell_word(&c.to_string_lossy())));
     }
     for (flag, values) in [("--include", &i.include), ("--exclude", &i.exclude)] {
         for v in values {
-            cmd.push_str(&format!(" {flag} {}", shell_quote(v)));
+            cmd.push_str(&format!(" {flag} {}", shell_word(v)));
         }
     }
     if let Some(n) = i.max_file_size {
@@ -643,16 +643,13 @@ fn check_command(input: &Path, read: &ReadArgs) -> String {
         cmd.push_str(" --allow-empty");
     }
     for d in &i.idl_path {
-        cmd.push_str(&format!(
-            " --idl-path {}",
-            shell_quote(&d.to_string_lossy())
-        ));
+        cmd.push_str(&format!(" --idl-path {}", shell_word(&d.to_string_lossy())));
     }
     let s = &read.sources;
     if let Some(d) = &s.cache_dir {
         cmd.push_str(&format!(
             " --cache-dir {}",
-            shell_quote(&d.to_string_lossy())
+            shell_word(&d.to_string_lossy())
         ));
     }
     for (flag, on) in [("--locked", s.locked), ("--offline", s.offline)] {
@@ -669,7 +666,7 @@ fn check_command_sources(file: &config::Loaded, read: &ReadArgs) -> String {
     let mut cmd = check_command(Path::new("."), read);
     if read.input.config.is_none() {
         if let Some(p) = &file.path {
-            cmd = format!("{} --config {}", cmd, shell_quote(&p.to_string_lossy()));
+            cmd = format!("{} --config {}", cmd, shell_word(&p.to_string_lossy()));
         }
     }
     cmd.replacen("rtcdoc check . ", "rtcdoc check ", 1)

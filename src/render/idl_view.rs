@@ -179,13 +179,7 @@ fn line(doc: Option<&IdlDoc>, lang: Lang, with_params: bool) -> String {
     let Some(d) = in_lang(doc, lang) else {
         return String::new();
     };
-    let mut parts = vec![brief(Some(d))];
-    if !d.brief.is_empty() {
-        // Without a brief, the first paragraph of the details is the brief.
-        parts.push(d.details.clone());
-    } else if let Some((_, rest)) = d.details.split_once("\n\n") {
-        parts.push(rest.to_string());
-    }
+    let mut parts = vec![brief(Some(d)), after_brief(d).to_string()];
     parts.extend(more(d, lang, with_params));
     parts.retain(|p| !p.is_empty());
     parts
@@ -193,6 +187,16 @@ fn line(doc: Option<&IdlDoc>, lang: Lang, with_params: bool) -> String {
         .split_whitespace()
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+/// The details that [`brief`] does not show: all of them after a brief, else all but their
+/// first paragraph (which is the brief).
+fn after_brief(d: &IdlDoc) -> &str {
+    if !d.brief.is_empty() {
+        &d.details
+    } else {
+        d.details.split_once("\n\n").map_or("", |(_, rest)| rest)
+    }
 }
 
 /// One line of documentation: the brief, else the first paragraph.
@@ -359,16 +363,7 @@ pub fn definition(catalog: &Catalog, name: &str, lang: Lang) -> Option<Definitio
         brief: brief(doc),
         details: doc
             .map(|d| {
-                let details = if d.brief.is_empty() {
-                    // The first paragraph is the brief already.
-                    d.details
-                        .split_once("\n\n")
-                        .map(|(_, rest)| rest.trim().to_string())
-                        .unwrap_or_default()
-                } else {
-                    d.details.trim().to_string()
-                };
-                let mut parts = vec![details];
+                let mut parts = vec![after_brief(d).trim().to_string()];
                 parts.extend(more(d, lang, true));
                 parts.retain(|p| !p.is_empty());
                 parts.join("\n\n")

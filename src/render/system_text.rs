@@ -411,18 +411,17 @@ fn orders_and_groups<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t:
 /// out-port to its in-port ([`Catalog::reversed_data_connectors`]).
 pub fn carrying<'a>(cat: &'a Catalog, name: &str) -> Vec<(String, &'a System)> {
     // The connectors come system by system: each system's directions are found once.
-    let mut reversed: Option<(*const System, Vec<bool>)> = None;
+    let mut reversed: Option<(&System, Vec<bool>)> = None;
     cat.connectors_carrying(name)
         .into_iter()
         .map(|(s, k)| {
             let c = &s.profile.data_port_connectors[k];
-            if reversed.as_ref().map(|r| r.0) != Some(s as *const System) {
+            if !reversed.as_ref().is_some_and(|r| std::ptr::eq(r.0, s)) {
                 reversed = Some((s, cat.reversed_data_connectors(s)));
             }
             let turned = reversed
                 .as_ref()
-                .and_then(|r| r.1.get(k).copied())
-                .unwrap_or(false);
+                .is_some_and(|r| r.1.get(k).copied().unwrap_or(false));
             let (from, to) = if turned {
                 (&c.target, &c.source)
             } else {
