@@ -999,10 +999,8 @@ fn an_unreadable_system_alone_is_reported() {
     }
 }
 
-/// Two components, `Src` (out-port `out`) and `Dst` (in-port `in`), and a system `Rev` whose
-/// one data connector `c1` is saved in-port first, as RTSystemEditor saves a connector dragged
-/// from its in-port: source `Dst0.in`, target `Src0.out`.
-fn reversed_connector_input(d: &std::path::Path) -> PathBuf {
+/// `d/in` holding two components: `Src` (out-port `out`) and `Dst` (in-port `in`).
+fn src_and_dst(d: &std::path::Path) -> PathBuf {
     let input = d.join("in");
     common::write(
         &input,
@@ -1014,11 +1012,23 @@ fn reversed_connector_input(d: &std::path::Path) -> PathBuf {
         "comps/Dst/RTC.xml",
         &common::xml_profile("Dst", &[("DataInPort", "in", "RTC::TimedDouble")]),
     );
-    let inst = |name: &str, comp: &str, port: &str| {
-        format!(
-            r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
-        )
-    };
+    input
+}
+
+/// An RT System instance `name` of component `comp` (vendor `Test`, category `Cat`) with data
+/// port `port`.
+fn instance_xml(name: &str, comp: &str, port: &str) -> String {
+    format!(
+        r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
+    )
+}
+
+/// Two components, `Src` (out-port `out`) and `Dst` (in-port `in`), and a system `Rev` whose
+/// one data connector `c1` is saved in-port first, as RTSystemEditor saves a connector dragged
+/// from its in-port: source `Dst0.in`, target `Src0.out`.
+fn reversed_connector_input(d: &std::path::Path) -> PathBuf {
+    let input = src_and_dst(d);
+    let inst = instance_xml;
     let xml = format!(
         r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Test:Rev:1.0" rts:version="0.2">{}{}<rts:DataPortConnectors rts:connectorId="c1" rts:name="in_out" rts:dataType="IDL:RTC/TimedDouble:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:Test:Cat:Dst:1.0.0" rts:instanceName="Dst0" rts:portName="Dst0.in"/><rts:targetDataPort rts:componentId="RTC:Test:Cat:Src:1.0.0" rts:instanceName="Src0" rts:portName="Src0.out"/></rts:DataPortConnectors></rts:RtsProfile>"#,
         inst("Src0", "Src", "out"),
@@ -1083,22 +1093,8 @@ fn a_connector_saved_in_port_first_is_listed_the_way_data_flows() {
 /// data connectors: `c1` Src0.out → Dst0.in, `c2` from `Src0.nosuchport` (a port `Src` does not
 /// have, RTC601) and `c3` to `Ghost0.in` (no such instance, RTC608).
 fn dangling_connector_input(d: &std::path::Path) -> PathBuf {
-    let input = d.join("in");
-    common::write(
-        &input,
-        "comps/Src/RTC.xml",
-        &common::xml_profile("Src", &[("DataOutPort", "out", "RTC::TimedDouble")]),
-    );
-    common::write(
-        &input,
-        "comps/Dst/RTC.xml",
-        &common::xml_profile("Dst", &[("DataInPort", "in", "RTC::TimedDouble")]),
-    );
-    let inst = |name: &str, comp: &str, port: &str| {
-        format!(
-            r#"<rts:Components rts:id="RTC:Test:Cat:{comp}:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="None"><rts:DataPorts rts:name="{name}.{port}"/></rts:Components>"#
-        )
-    };
+    let input = src_and_dst(d);
+    let inst = instance_xml;
     let conn = |id: &str, (si, sp): (&str, &str), (ti, tp): (&str, &str)| {
         format!(
             r#"<rts:DataPortConnectors rts:connectorId="{id}" rts:name="{sp}_{tp}" rts:dataType="IDL:RTC/TimedDouble:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:componentId="RTC:Test:Cat:Src:1.0.0" rts:instanceName="{si}" rts:portName="{si}.{sp}"/><rts:targetDataPort rts:componentId="RTC:Test:Cat:Dst:1.0.0" rts:instanceName="{ti}" rts:portName="{ti}.{tp}"/></rts:DataPortConnectors>"#
