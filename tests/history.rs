@@ -236,18 +236,23 @@ fn a_backup_named_with_an_impossible_date_is_left_out_of_the_history_with_a_note
     write(&input, "Base/RTC.xml20201345999999", &v[1].1);
     write(&input, "Base/RTC.xml", &v[1].1);
     let out = dir.path().join("site");
-    let o = common::rtcdoc(
-        &[
-            "build",
-            input.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-            "-f",
-            "json",
-        ],
-        dir.path(),
-    );
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    // The catalogue built as JSON, and what the build printed.
+    let build_json = || {
+        let o = common::rtcdoc(
+            &[
+                "build",
+                input.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+                "-f",
+                "json",
+            ],
+            dir.path(),
+        );
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        (o, err)
+    };
+    let (o, err) = build_json();
     assert!(o.status.success(), "{err}");
     assert!(
         err.contains("warning: history: the backup `Base/RTC.xml20201345999999` has no valid save date and time in the name"),
@@ -283,18 +288,7 @@ fn a_backup_named_with_an_impossible_date_is_left_out_of_the_history_with_a_note
         input.join("Base/RTC.xml20240102090000"),
     )
     .unwrap();
-    let o = common::rtcdoc(
-        &[
-            "build",
-            input.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-            "-f",
-            "json",
-        ],
-        dir.path(),
-    );
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    let (o, err) = build_json();
     assert!(o.status.success() && !err.contains("history:"), "{err}");
     let json: Value = serde_json::from_str(&page(&out, "catalog.json")).unwrap();
     let h = json["components"]["RTC:Lab:Mobile:Base:1.0.0"]["history"]
