@@ -1,5 +1,5 @@
 // The language switch of the user guide, the same file in both books (book/lang-switch.js and
-// book/ja/lang-switch.js; tests/book_ja.rs keeps them identical). The English guide is published
+// book/ja/lang-switch.js; tests/suite/book_ja.rs keeps them identical). The English guide is published
 // at <root>/ and the Japanese one at <root>/ja/ (`mdbook build book` and
 // `mdbook build book/ja -d ../book/ja`): this adds a link to the menu bar that opens the same
 // chapter — the same file name, and the same #anchor — in the other book. Both books list the

@@ -120,7 +120,7 @@ pub struct Change<Severity = String, Code = String> {
 
 /// The `rtcdoc diff` codes of an element added to a component (`crate::diff::codes`: a port, a
 /// provided or required interface, a configuration parameter), whose change path names it.
-/// Spelled here because the catalogue comes before the diff engine; `tests/history_pages.rs`
+/// Spelled here because the catalogue comes before the diff engine; `tests/suite/history_pages.rs`
 /// holds them equal.
 pub const ADDED_CODES: [&str; 4] = ["DIFF301", "DIFF302", "DIFF211", "DIFF303"];
 

@@ -1,0 +1,495 @@
+//! Headless Chromium against the generated site: search works offline from `file://` in English
+//! and Japanese, and no payload of the hostile fixture ends up executable in the live DOM.
+//! Skipped, with a visible message, when `/usr/bin/chromium` is not installed.
+
+use crate::common;
+use crate::html_support;
+use common::OutputWithin;
+
+use html_support::*;
+use rtcdoc::render::SiteOptions;
+use std::path::Path;
+
+const CHROMIUM: &str = "/usr/bin/chromium";
+
+fn chromium() -> bool {
+    if Path::new(CHROMIUM).exists() {
+        true
+    } else {
+        println!("skipped: chromium not installed");
+        false
+    }
+}
+
+/// The DOM of `url` after its scripts ran (virtual time lets deferred scripts finish).
+fn dump_dom(url: &str, profile_dir: &Path) -> String {
+    let o = std::process::Command::new(CHROMIUM)
+        .args([
+            "--headless=new",
+            "--disable-gpu",
+            "--no-sandbox",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--virtual-time-budget=5000",
+        ])
+        .arg(format!("--user-data-dir={}", profile_dir.display()))
+        .arg("--dump-dom")
+        .arg(url)
+        .output_within(common::COMMAND_LIMIT)
+        .expect("run chromium");
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn file_url(p: &Path) -> String {
+    format!("file://{}", p.display())
+}
+
+fn result_names(dom: &str) -> Vec<String> {
+    dom.split("class=\"r-name\">")
+        .skip(1)
+        .filter_map(|s| s.split('<').next())
+        .map(str::to_string)
+        .collect()
+}
+
+#[test]
+fn search_finds_english_and_japanese_words_from_file_urls() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let prof = dir.path().join("chromium");
+    // The search page runs `?q=` on load.
+    let dom = dump_dom(
+        &format!("{}?q=camera", file_url(&out.join("search.html"))),
+        &prof,
+    );
+    let names = result_names(&dom);
+    assert!(names.iter().any(|n| n == "UsbCamera"), "camera → {names:?}");
+    // The search box of the index page shows live results too; Japanese via bigrams.
+    let dom = dump_dom(
+        &format!("{}?q=%E7%94%BB%E5%83%8F", file_url(&out.join("index.html"))),
+        &prof,
+    );
+    let names = result_names(&dom);
+    assert!(names.iter().any(|n| n == "UsbCamera"), "画像 → {names:?}");
+    // A full-width query (as a Japanese input method types it) is read in NFKC.
+    let wide: String = "ｃａｍｅｒａ"
+        .bytes()
+        .map(|b| format!("%{b:02X}"))
+        .collect();
+    let dom = dump_dom(
+        &format!("{}?q={wide}", file_url(&out.join("search.html"))),
+        &prof,
+    );
+    let names = result_names(&dom);
+    assert!(
+        names.iter().any(|n| n == "UsbCamera"),
+        "ｃａｍｅｒａ → {names:?}"
+    );
+    // A port name and a data type find their components.
+    let dom = dump_dom(
+        &format!("{}?q=TimedVelocity2D", file_url(&out.join("search.html"))),
+        &prof,
+    );
+    assert!(!result_names(&dom).is_empty(), "type search");
+}
+
+/// RTCBuilder users often write their only Japanese summary in the abstract: the browser's
+/// search finds a component by it as well as by its description.
+#[test]
+fn search_finds_a_japanese_summary_written_only_in_the_abstract() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(
+        &common::root().join("tests/fixtures/prose"),
+        &out,
+        SiteOptions::default(),
+    );
+    // 四足歩行
+    let dom = dump_dom(
+        &format!(
+            "{}?q=%E5%9B%9B%E8%B6%B3%E6%AD%A9%E8%A1%8C",
+            file_url(&out.join("search.html"))
+        ),
+        &dir.path().join("chromium"),
+    );
+    let mut names = result_names(&dom);
+    names.sort();
+    assert_eq!(names, ["GaitPlanner", "Walker"], "四足歩行 → {names:?}");
+}
+
+#[test]
+fn no_payload_of_the_xss_fixture_is_live_in_the_browser() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let input = common::hostile_input(dir.path());
+    let out = dir.path().join("site");
+    let loaded = build_site(&input, &out, SiteOptions::default());
+    let prof = dir.path().join("chromium");
+    let mut urls: Vec<String> = loaded
+        .catalog
+        .components
+        .iter()
+        .map(|c| file_url(&out.join(format!("components/{}.html", c.slug))))
+        .collect();
+    urls.push(file_url(&out.join("index.html")));
+    // Search results are built from the index with textContent: search for the payloads.
+    urls.push(format!("{}?q=alert", file_url(&out.join("search.html"))));
+    urls.push(format!("{}?q=script", file_url(&out.join("index.html"))));
+    for url in urls {
+        let dom = dump_dom(&url, &prof);
+        assert!(dom.contains("</html>"), "{url}: page rendered");
+        for t in tags(&dom) {
+            for (k, v) in &t.attrs {
+                assert!(!k.starts_with("on"), "{url}: live event handler {t:?}");
+                let v = v.trim().to_ascii_lowercase();
+                assert!(!v.starts_with("javascript:"), "{url}: script URL {t:?}");
+            }
+            if t.name == "script" {
+                let src = t.attr("src").unwrap_or("");
+                assert!(
+                    ["search.js", "filter.js", "search-index.js"]
+                        .iter()
+                        .any(|ok| src.ends_with(ok)),
+                    "{url}: foreign script {t:?}"
+                );
+            }
+            assert!(
+                !matches!(t.name.as_str(), "iframe" | "img" | "object" | "embed"),
+                "{url}: {t:?}"
+            );
+        }
+    }
+}
+
+/// The audit harness of `tests/browser` (puppeteer-core driving this chromium, axe-core) on
+/// `site`: one page of each kind, and `pages`. Needs node and its `npm ci` install (done by
+/// `.ci/run`). `None`, with a "skipped" message, when either is missing.
+fn audit(site: &Path, searches: &[&str], pages: &[&str]) -> Option<serde_json::Value> {
+    audit_with(site, searches, pages, &[])
+}
+
+/// [`audit`] of `pages`, with What's new's `filters` (`SELECT_ID=VALUE`) tried one by one.
+fn audit_filtering(site: &Path, pages: &[&str], filters: &[&str]) -> Option<serde_json::Value> {
+    audit_with(site, &[], pages, filters)
+}
+
+fn audit_with(
+    site: &Path,
+    searches: &[&str],
+    pages: &[&str],
+    filters: &[&str],
+) -> Option<serde_json::Value> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
+    if !dir.join("node_modules/axe-core").is_dir()
+        || !dir.join("node_modules/puppeteer-core").is_dir()
+    {
+        println!("skipped: tests/browser/node_modules missing (run `npm ci` in tests/browser)");
+        return None;
+    }
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(dir.join("audit.mjs")).arg(site);
+    for s in searches {
+        cmd.arg("--search").arg(s);
+    }
+    for p in pages {
+        cmd.arg("--page").arg(p);
+    }
+    for f in filters {
+        cmd.arg("--filter").arg(f);
+    }
+    let o = common::run_browser_harness(&mut cmd)?;
+    assert!(
+        o.status.success(),
+        "audit.mjs failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    Some(serde_json::from_slice(&o.stdout).expect("audit.mjs prints one JSON object"))
+}
+
+/// Every page kind × {light, dark, 390 px}: no axe-core violation (WCAG 2.0–2.2 A/AA and best
+/// practice), no column header with a word broken across lines, at 390 px no page wider than
+/// the screen and no region that scrolls sideways;
+/// each search's first result is the expected page, shows its kind, `?q=` follows the box and
+/// Enter opens the first result.
+fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
+    let errors = report["errors"].as_array().expect("errors");
+    assert!(errors.is_empty(), "script errors: {errors:?}");
+    let pages = report["pages"].as_array().expect("pages");
+    for kind in kinds {
+        for mode in ["light", "dark", "phone"] {
+            assert!(
+                pages
+                    .iter()
+                    .any(|p| p["page"].as_str().is_some_and(|s| s.starts_with(kind))
+                        && p["mode"] == mode),
+                "no {kind} page audited in {mode}"
+            );
+        }
+    }
+    let mut problems = Vec::new();
+    for p in pages {
+        let (page, mode) = (&p["page"], &p["mode"]);
+        for v in p["violations"].as_array().into_iter().flatten() {
+            problems.push(format!(
+                "{page} {mode}: {} ({} nodes) {}",
+                v["id"], v["nodes"], v["sample"]
+            ));
+        }
+        for c in p["clipped"].as_array().into_iter().flatten() {
+            problems.push(format!("{page} {mode}: text past its cell: {c}"));
+        }
+        for w in p["broken"].as_array().into_iter().flatten() {
+            problems.push(format!("{page} {mode}: column header word broken: {w}"));
+        }
+        if mode == "phone" {
+            let w = p["width"].as_u64().unwrap_or(u64::MAX);
+            if w > 390 {
+                problems.push(format!("{page}: {w} px wide at 390 px"));
+            }
+            // A diagram scrolls in its own box rather than shrink below legible text (#26).
+            for s in p["scrollers"].as_array().into_iter().flatten() {
+                if s["cls"] != "diagram-scroll" {
+                    problems.push(format!("{page}: sideways-scrolling region {s}"));
+                }
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    for s in report["searches"].as_array().into_iter().flatten() {
+        let expect = s["expect"].as_str().unwrap_or("");
+        let first = &s["results"][0];
+        assert!(
+            first["href"].as_str().is_some_and(|h| h.contains(expect)),
+            "search {}: first result {first} is not {expect}",
+            s["q"]
+        );
+        assert!(
+            first["kind"].as_str().is_some_and(|k| !k.is_empty()),
+            "kind shown: {s}"
+        );
+        assert_eq!(s["url_q"], s["q"], "?q= follows the box");
+        assert!(
+            s["opened"].as_str().is_some_and(|u| u.contains(expect)),
+            "Enter opens the first result: {s}"
+        );
+    }
+    if let Some(p) = report.get("popup") {
+        assert_eq!(p["opened"], true, "the header search shows results: {p}");
+        assert_eq!(p["focus_in_form"], false, "Tab went past the results: {p}");
+        assert_eq!(
+            p["closed"], true,
+            "the popup closes when the focus leaves it: {p}"
+        );
+    }
+    if let Some(f) = report
+        .get("index_filter")
+        .filter(|f| !f["nothing"].is_null())
+    {
+        let none = &f["nothing"];
+        assert_eq!(none["shown"], 0, "{f}");
+        assert_eq!(none["text"], none["none"], "no match is said: {f}");
+        let some = &f["some"];
+        let (shown, rows) = (&some["shown"], &some["rows"]);
+        assert_eq!(
+            some["text"],
+            format!("{shown} of {rows} components shown"),
+            "{f}"
+        );
+    }
+}
+
+/// One page of every kind the site has (a page is audited when its path starts so).
+const PAGE_KINDS: &[&str] = &[
+    "index.html",
+    "search.html",
+    "no/such/deep/page.html",
+    "diagnostics.html",
+    "dataflow.html",
+    "components/",
+    "types/index.html",
+    "types/",
+    "interfaces/index.html",
+    "interfaces/",
+    "categories/index.html",
+    "categories/",
+    "vendors/index.html",
+    "vendors/",
+];
+
+#[test]
+fn every_page_kind_passes_axe_and_fits_a_phone_and_search_ranks_and_opens() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let searches = [
+        // A Japanese word of a port description (車輪オドメトリ, the odometry port).
+        "車輪=components/localization",
+        // Name before type: the type page first, then the components using it.
+        "TimedPose2D=types/rtc-timedpose2d",
+        // An IDL field name finds its struct, an operation name its interface.
+        "confidence=types/detection-detectedobject",
+        "setExposure=interfaces/camera-cameracontrol",
+    ];
+    // The Navigator has a README (a table, an SVG image, fragment and component links).
+    let readme_page = "components/navigator.html";
+    let Some(report) = audit(&out, &searches, &[readme_page]) else {
+        return;
+    };
+    assert_audit(&report, PAGE_KINDS);
+    let audited = report["pages"].as_array().expect("pages");
+    assert!(
+        audited.iter().filter(|p| p["page"] == readme_page).count() == 3,
+        "{readme_page} audited in every mode"
+    );
+}
+
+/// The history pages (What's new with its filter, a component's whole history, the component
+/// page with its "since" badges) of a site built from a git repository with a history.
+#[test]
+fn the_history_pages_pass_axe_and_fit_a_phone() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !common::history_repo::history_repo(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let out = dir.path().join("site");
+    let o = common::rtcdoc(
+        &["build", repo.to_str().unwrap(), "-o", out.to_str().unwrap()],
+        &repo,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(broken_links(&out).is_empty(), "{:?}", broken_links(&out));
+    let pages = [
+        "whats-new.html",
+        "history/base.html",
+        "components/base.html",
+    ];
+    let Some(report) = audit_filtering(
+        &out,
+        &pages,
+        &[
+            "f-nsev=breaking",
+            "f-nsev=info",
+            "f-nsev=",
+            "f-ncategory=Mobile",
+        ],
+    ) else {
+        return;
+    };
+    assert_audit(&report, &pages);
+    // The filter hides the rows it rules out, and a day left without rows (7 changes over two
+    // days: the rename's breaking, warning and info; the release's four infos).
+    let shown: Vec<(String, u64, u64)> = report["filters"]
+        .as_array()
+        .expect("filters")
+        .iter()
+        .map(|f| {
+            (
+                f["filter"].as_str().unwrap_or("").to_string(),
+                f["rows"].as_u64().unwrap_or(0),
+                f["days"].as_u64().unwrap_or(0),
+            )
+        })
+        .collect();
+    assert_eq!(
+        shown,
+        [
+            ("f-nsev=breaking".to_string(), 1, 1),
+            ("f-nsev=info".to_string(), 5, 2),
+            ("f-nsev=".to_string(), 7, 2),
+            ("f-ncategory=Mobile".to_string(), 7, 2),
+        ]
+    );
+}
+
+#[test]
+fn the_corpus_site_passes_axe_and_fits_a_phone() {
+    if !chromium() {
+        return;
+    }
+    let Some(corpus) = common::corpus() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&corpus, &out, SiteOptions::default());
+    // 温度センサ occurs in one file of the corpus, in a data port's description only.
+    let searches = [
+        "温度センサ=components/accandmagnsensor",
+        "TimedDoubleSeq=types/rtc-timeddoubleseq",
+        "ManipulatorCommonInterface_Middle=interfaces/jara-arm-manipulatorcommoninterface-middle",
+    ];
+    // A page whose service ports connect to many long port names.
+    let Some(report) = audit(&out, &searches, &["components/armcontroller.html"]) else {
+        return;
+    };
+    assert_audit(&report, PAGE_KINDS);
+    // The diagnostics page of the corpus stays small (it was 990 KB, a row per finding).
+    let diag = std::fs::metadata(out.join("diagnostics.html"))
+        .unwrap()
+        .len();
+    assert!(diag <= 300_000, "diagnostics.html is {diag} bytes");
+}
+
+/// Long port and interface names (`ManipulatorCommonInterface_Common.JARA_ARM_…`) wrap inside
+/// their cells at every width, never past them.
+#[test]
+fn long_names_wrap_inside_their_cells() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(
+        &common::root().join("tests/fixtures/long-names"),
+        &out,
+        SiteOptions::default(),
+    );
+    let Some(report) = audit(&out, &[], &["components/armcontroller.html"]) else {
+        return;
+    };
+    assert_audit(&report, &[]);
+}
+
+/// A component page listing RTCBuilder backups, and a system page with an empty configuration
+/// set, pass the audit in every mode.
+#[test]
+fn backups_and_empty_configuration_sets_pass_the_audit() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for (fixture, page) in [
+        ("backups", "components/pidcontroller.html"),
+        ("rtsys", "systems/wiring.html"),
+    ] {
+        let out = dir.path().join(fixture);
+        build_site(
+            &common::root().join("tests/fixtures").join(fixture),
+            &out,
+            SiteOptions::default(),
+        );
+        let Some(report) = audit(&out, &[], &[page]) else {
+            return;
+        };
+        assert_audit(&report, &[]);
+    }
+}
