@@ -2084,22 +2084,10 @@ impl Catalog {
                 }
             }
         }
-        let mut taken = taken_slugs(self.data_types.iter().map(|t| t.slug.as_str()));
-        for name in found {
-            if self.type_index.contains_key(&canonical_type(&name)) {
-                continue;
-            }
-            let slug = free_slug(&mut taken, &name);
-            self.data_types.push(DataType {
-                spellings: vec![name.clone()],
-                name,
-                slug,
-                idl_files: Vec::new(),
-                uses: PortUses::default(),
-                contained_in: Vec::new(),
-            });
-        }
-        self.data_types.sort_by(|a, b| a.name.cmp(&b.name));
+        let index = &self.type_index;
+        add_unused(&mut self.data_types, found, |name| {
+            index.contains_key(&canonical_type(name))
+        });
         for t in &mut self.data_types {
             if let Some(mut by) = contains.remove(&t.name) {
                 by.sort();
@@ -2117,22 +2105,8 @@ impl Catalog {
         if bases.is_empty() {
             return;
         }
-        let mut taken = taken_slugs(self.interfaces.iter().map(|t| t.slug.as_str()));
-        for name in bases {
-            if self.interface_index.contains_key(&name) {
-                continue;
-            }
-            let slug = free_slug(&mut taken, &name);
-            self.interfaces.push(InterfaceType {
-                spellings: vec![name.clone()],
-                name,
-                slug,
-                idl_files: Vec::new(),
-                uses: InterfaceUses::default(),
-                contained_in: Vec::new(),
-            });
-        }
-        self.interfaces.sort_by(|a, b| a.name.cmp(&b.name));
+        let index = &self.interface_index;
+        add_unused(&mut self.interfaces, bases, |name| index.contains_key(name));
         self.interface_index = handle_map(&self.interfaces, |t| t.name.clone());
     }
 
@@ -2283,6 +2257,31 @@ impl Catalog {
         }
         c
     }
+}
+
+/// Adds to `entries` an entry that no port uses (its IDL definition gives it a page) for each of
+/// `names` that `known` does not hold yet, with a free slug; then sorts the entries by name.
+fn add_unused<U: Default>(
+    entries: &mut Vec<TypeEntry<U>>,
+    names: Vec<String>,
+    known: impl Fn(&str) -> bool,
+) {
+    let mut taken = taken_slugs(entries.iter().map(|t| t.slug.as_str()));
+    for name in names {
+        if known(&name) {
+            continue;
+        }
+        let slug = free_slug(&mut taken, &name);
+        entries.push(TypeEntry {
+            spellings: vec![name.clone()],
+            name,
+            slug,
+            idl_files: Vec::new(),
+            uses: U::default(),
+            contained_in: Vec::new(),
+        });
+    }
+    entries.sort_by(|a, b| a.name.cmp(&b.name));
 }
 
 /// The slugs of a page kind's pages, and `index` (its index page).
