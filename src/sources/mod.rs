@@ -912,6 +912,13 @@ fn wanted(rel: &str) -> bool {
         || crate::readme::IMAGE_EXTENSIONS.contains(&ext.as_deref().unwrap_or(""))
 }
 
+/// Whether the last segment of `rel` has no extension, as folders are named (`idl`, `Linked`,
+/// `.github` too): a symbolic link of such a name may stand for a folder of profiles.
+fn folder_shaped(rel: &str) -> bool {
+    let last = rel.rsplit('/').next().unwrap_or(rel);
+    !last.trim_start_matches('.').contains('.')
+}
+
 /// A repository path safe to write below the temporary folder.
 fn safe(rel: &str) -> bool {
     !rel.is_empty()
@@ -972,9 +979,18 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
             if !safe(rel) {
                 continue;
             }
-            // A submodule is noted whatever its name (a folder of another repository); a file
-            // or a link only when rtcdoc would read a file of its name.
+            // A submodule is noted whatever its name (a folder of another repository); a link
+            // when rtcdoc would read a file of its name or when it is named as folders are (it
+            // may stand for a folder of profiles); a file only when rtcdoc reads its name.
             match (mode, ty) {
+                (Some("120000"), _) if !wanted(rel) && folder_shaped(rel) => notes.push(
+                    Diagnostic::info(
+                        codes::SOURCE_SKIPPED,
+                        &shown,
+                        "a symbolic link named as a folder is; not followed, nothing behind it is read (as in a directory)",
+                    )
+                    .with_hint("commit the folder itself instead of a link, or add the repository it belongs to as a [[source]] of its own"),
+                ),
                 _ if ty != Some("commit") && !wanted(rel) => {}
                 (Some("100644" | "100755"), Some("blob")) => {
                     if let (Some(sha), Some(_)) = (sha, size.and_then(|n| n.parse::<u64>().ok())) {

@@ -775,6 +775,12 @@ fn symbolic_links_and_submodules_are_not_followed() {
     std::fs::create_dir_all(repo.join("Linked")).unwrap();
     #[cfg(unix)]
     std::os::unix::fs::symlink(outside.join("RTC.xml"), repo.join("Linked/RTC.xml")).unwrap();
+    // A link to a folder of profiles (named as folders are), and one to a file rtcdoc does not
+    // read (not noted).
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(&outside, repo.join("shared")).unwrap();
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(outside.join("RTC.xml"), repo.join("notes.txt")).unwrap();
     let first = commit(&repo, &[("A/RTC.xml", xml_profile("A", &[]))], None);
     // A submodule (a gitlink: a folder of another repository at a commit), named as folders
     // are, without an extension.
@@ -802,6 +808,11 @@ fn symbolic_links_and_submodules_are_not_followed() {
         err.contains("repo/vendor/sub: info[RTC015]: a submodule; its files are not read"),
         "{err}"
     );
+    assert!(
+        err.contains("repo/shared: info[RTC015]: a symbolic link named as a folder is; not followed, nothing behind it is read"),
+        "{err}"
+    );
+    assert!(!err.contains("notes.txt"), "{err}");
 }
 
 #[test]
