@@ -158,13 +158,47 @@ pub fn text(s: &str) -> String {
     out
 }
 
-/// Escapes a page or section title: titles are not auto-linked, so `#` and `::` stay plain
-/// (they would otherwise show as `\#` in the HTML `<title>`, which Doxygen copies verbatim);
-/// everything Doxygen would interpret is escaped and line breaks become spaces.
+/// Escapes a page or section title. Doxygen shows a title twice: as the page's heading (and in
+/// the navigation), where its escapes work, and in the HTML `<title>`, where it copies most of
+/// them verbatim (`\&` shows as `\&amp;`, `\#` as `\#`). So a title escapes only what Doxygen
+/// would otherwise read: `\` `@` (commands), `<` `>` (tags), `&` as the entity `&amp;` (right in
+/// both places), and before a name only (an ASCII letter, `_` or any non-ASCII character) `%`
+/// (`%word` drops the `%`), `#` and a `::` that starts a word (`#word` and `::word` are link
+/// requests). `$`, `"`, `a::b`, `#1` and dash runs stay plain: titles get no typographic dashes.
+/// Line breaks and tabs become spaces; control characters are dropped.
 pub fn title(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 8);
     let one_line = s.split_whitespace().collect::<Vec<_>>().join(" ");
-    push_escaped(&one_line, &mut out, false);
+    let chars: Vec<char> = one_line.chars().collect();
+    let name_start = |i: usize| {
+        chars
+            .get(i)
+            .is_some_and(|&c| c.is_ascii_alphabetic() || c == '_' || !c.is_ascii())
+    };
+    let mut out = String::with_capacity(one_line.len() + 8);
+    for (i, &ch) in chars.iter().enumerate() {
+        let escaped = match ch {
+            '\\' | '@' | '<' | '>' => true,
+            '%' | '#' => name_start(i + 1),
+            // The first colon of a `::` that starts a word (not `a::b`).
+            ':' => {
+                chars.get(i + 1) == Some(&':')
+                    && name_start(i + 2)
+                    && !(i > 0 && (chars[i - 1].is_alphanumeric() || chars[i - 1] == '_'))
+                    && chars.get(i.wrapping_sub(1)) != Some(&':')
+            }
+            _ => false,
+        };
+        match ch {
+            '&' => out.push_str("&amp;"),
+            c if c.is_control() => {}
+            c => {
+                if escaped {
+                    out.push('\\');
+                }
+                out.push(c);
+            }
+        }
+    }
     if out.is_empty() {
         out.push('?');
     }
@@ -753,6 +787,10 @@ mod tests {
     fn titles_are_one_line_and_keep_type_names() {
         assert_eq!(title("RTC::TimedLong"), "RTC::TimedLong");
         assert_eq!(title("a\nb <c>"), r"a b \<c\>");
+        assert_eq!(
+            title("A & B #1 #team 100% %d %1 $x \"q\" a--b \\ @ #_x #日本 ::h RTC::X"),
+            r#"A &amp; B #1 \#team 100% \%d %1 $x "q" a--b \\ \@ \#_x \#日本 \::h RTC::X"#
+        );
         assert_eq!(title(""), "?");
     }
 

@@ -266,6 +266,56 @@ fn doxygen_keeps_metacharacters_literal() {
     assert_metachars_intact(&out.join("html/rtc_comp_metachars.html"));
 }
 
+/// Page titles show names as written: in the page heading always; in the HTML `<title>` (where
+/// Doxygen copies most escapes verbatim) for everything but `\`, `@`, and `%`, `#`, `::`
+/// before a name, which Doxygen would read and so stay escaped there.
+#[test]
+fn doxygen_titles_show_names_as_written() {
+    if !have("doxygen") {
+        return;
+    }
+    let d = tempfile::tempdir().expect("tempdir");
+    let input = d.path().join("in");
+    let vendor = "R&D <Lab> 100% #1 $x \"q\" a--b RTC::X 計測";
+    let category = "#team %d ::c @v \\n";
+    let xml = common::xml_profile("Titles", &[])
+        .replace(
+            "rtc:vendor=\"Test\"",
+            "rtc:vendor=\"R&amp;D &lt;Lab&gt; 100% #1 $x &quot;q&quot; a--b RTC::X 計測\"",
+        )
+        .replace(
+            "rtc:category=\"Cat\"",
+            &format!("rtc:category=\"{category}\""),
+        );
+    common::write(&input, "RTC.xml", &xml);
+    let (_t, out) = render(&input, Format::Doxygen, Lang::En);
+    run_doxygen(&out);
+    let (mut titles, mut headings) = (Vec::new(), Vec::new());
+    let between = |s: &str, open: &str, close: &str| {
+        let (_, rest) = s.split_once(open)?;
+        Some(html_text(rest.split_once(close)?.0).trim().to_string())
+    };
+    for (path, bytes) in read_tree(&out.join("html")) {
+        let s = String::from_utf8_lossy(&bytes);
+        if path.ends_with(".html") {
+            titles.extend(between(&s, "<title>", "</title>"));
+            headings.extend(between(&s, "<div class=\"title\">", "</div>"));
+        }
+    }
+    let site = "Robot <catalogue> & \"friends\"";
+    let title = format!("{site}: {vendor}");
+    assert!(
+        titles.contains(&title),
+        "no <title> {title:?} in {titles:#?}"
+    );
+    for name in [vendor, category, site] {
+        assert!(
+            headings.iter().any(|h| h == name),
+            "no heading {name:?} in {headings:#?}"
+        );
+    }
+}
+
 #[test]
 fn doxygen_never_emits_profile_markup() {
     if !have("doxygen") {
