@@ -96,11 +96,13 @@ pub struct DefinitionView {
     pub inherited: Vec<InheritedView>,
 }
 
-/// The operations an interface inherits from one base, each shown on the base's page.
+/// The operations and attributes an interface inherits from one base, each shown on the base's
+/// page.
 #[derive(Debug, Clone, Serialize)]
 pub struct InheritedView {
     pub base: TypeRef,
     pub operations: Vec<OperationView>,
+    pub attributes: Vec<AttributeView>,
 }
 
 /// The documentation of `doc` for a page in `lang`: the `@if jp` (or `ja`) part of OpenRTM's
@@ -261,7 +263,7 @@ impl Linker<'_> {
     }
 }
 
-/// The operations interface `i` inherits, by base: its bases, then theirs, breadth first, each
+/// The operations and attributes interface `i` inherits, by base: its bases, then theirs, breadth first, each
 /// interface once (whatever cycles the input has), `i` itself never.
 fn inherited(l: &Linker<'_>, i: &crate::idl::IdlInterface) -> Vec<InheritedView> {
     let idl = &l.catalog.idl;
@@ -282,7 +284,7 @@ fn inherited(l: &Linker<'_>, i: &crate::idl::IdlInterface) -> Vec<InheritedView>
             continue;
         }
         queue.extend(base.bases.iter().cloned());
-        if base.operations.is_empty() {
+        if base.operations.is_empty() && base.attributes.is_empty() {
             continue;
         }
         let found = l.entry_of(&base.scoped_name);
@@ -297,9 +299,24 @@ fn inherited(l: &Linker<'_>, i: &crate::idl::IdlInterface) -> Vec<InheritedView>
                 .iter()
                 .map(|o| operation_view(l, o))
                 .collect(),
+            attributes: base
+                .attributes
+                .iter()
+                .map(|a| attribute_view(l, a))
+                .collect(),
         });
     }
     out
+}
+
+/// The view of attribute `a` of an interface, its type linked.
+fn attribute_view(l: &Linker<'_>, a: &crate::idl::IdlAttribute) -> AttributeView {
+    AttributeView {
+        name: a.name.clone(),
+        ty: l.type_ref(&a.ty),
+        readonly: a.readonly,
+        doc: line(a.doc.as_deref(), l.lang, true),
+    }
 }
 
 /// The view of operation `o` of an interface, its types linked.
@@ -425,16 +442,7 @@ pub fn definition(catalog: &Catalog, name: &str, lang: Lang) -> Option<Definitio
         }
         IdlDefinition::Interface(i) => {
             v.bases = i.bases.iter().map(|b| l.type_ref(b)).collect();
-            v.attributes = i
-                .attributes
-                .iter()
-                .map(|a| AttributeView {
-                    name: a.name.clone(),
-                    ty: l.type_ref(&a.ty),
-                    readonly: a.readonly,
-                    doc: line(a.doc.as_deref(), lang, true),
-                })
-                .collect();
+            v.attributes = i.attributes.iter().map(|a| attribute_view(&l, a)).collect();
             v.operations = i.operations.iter().map(|o| operation_view(&l, o)).collect();
             v.inherited = inherited(&l, i);
         }
@@ -534,8 +542,8 @@ fn operations_table<M: Markup>(
     );
 }
 
-/// The inherited operations of an interface, a table per base: each operation linked to the
-/// base's page, with its documentation.
+/// The inherited operations and attributes of an interface, a table of each per base: each
+/// linked to the base's page, with its documentation.
 fn inherited_tables<M: Markup>(
     out: &mut String,
     inherited: &[InheritedView],
@@ -559,11 +567,35 @@ fn inherited_tables<M: Markup>(
                 vec![ty(&name), M::esc(&o.doc)]
             })
             .collect();
-        M::table(
-            out,
-            &[lang.t("idl_operations"), lang.t("description")],
-            &rows,
-        );
+        if !rows.is_empty() {
+            M::table(
+                out,
+                &[lang.t("idl_operations"), lang.t("description")],
+                &rows,
+            );
+        }
+        let rows: Vec<Vec<String>> = g
+            .attributes
+            .iter()
+            .map(|a| {
+                let name = TypeRef {
+                    text: a.name.clone(),
+                    ..g.base.clone()
+                };
+                let mut cell = ty(&name);
+                if a.readonly {
+                    cell.push_str(&format!(" ({})", M::esc(lang.t("idl_readonly"))));
+                }
+                vec![cell, M::esc(&a.doc)]
+            })
+            .collect();
+        if !rows.is_empty() {
+            M::table(
+                out,
+                &[lang.t("idl_attributes"), lang.t("description")],
+                &rows,
+            );
+        }
     }
 }
 

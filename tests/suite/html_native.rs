@@ -104,7 +104,8 @@ fn examples_and_fixtures_match_the_templates() {
 
 /// Type and interface pages with every part the templates can print: an IDL file section
 /// (linked by `source-url`), struct fields, a union's cases and switch, typedefs, enum values,
-/// an interface with bases, attributes (read-only too), operations with documented parameters,
+/// an interface with bases (their operations and attributes inherited), attributes (read-only
+/// too), operations with documented parameters,
 /// `oneway` and `raises`, an interface required and not provided, a type contained in another.
 #[test]
 fn every_part_of_a_type_page_matches_the_templates() {
@@ -152,6 +153,7 @@ fn every_part_of_a_type_page_matches_the_templates() {
         "class=\"idl-attributes\"",
         "class=\"idl-operation\"",
         "<ul class=\"idl-inherited\"><li><a href=\"../interfaces/demo-base.html#op-ping\">",
+        "<ul class=\"idl-inherited\"><li><a href=\"../interfaces/demo-other.html#attr-label\"><code>label</code></a> (read-only): A label.</li>",
         "<dl class=\"params\"><dt>",
         " <code>raises (</code>",
         "<code>oneway </code>",

@@ -576,8 +576,8 @@ fn a_repository_id_with_a_pragma_prefix_is_the_type_it_names() {
 }
 
 /// The base interfaces of an interface with a page get pages of their own (and the types
-/// their operations use), are linked, and their operations are listed on the derived page,
-/// transitively, in every output.
+/// their operations use), are linked, and their operations and attributes are listed on the
+/// derived page, transitively, in every output (a base with attributes only too).
 #[test]
 fn base_interfaces_have_pages_and_their_operations_are_inherited() {
     let dir = tempfile::tempdir().unwrap();
@@ -585,7 +585,7 @@ fn base_interfaces_have_pages_and_their_operations_are_inherited() {
     common::write(
         d,
         "in/idl/Arm.idl",
-        "module Lab {\n  struct Cfg { long rate; };\n  interface Root { void ping(); };\n  interface Base : Root { /** Reads the configuration. */ Cfg get_config(); void reset(); };\n  interface Arm : Base { void stop(); };\n};\n",
+        "module Lab {\n  struct Cfg { long rate; };\n  interface Root { void ping(); readonly attribute long serial; };\n  interface Base : Root { /** Reads the configuration. */ Cfg get_config(); void reset(); };\n  interface Named { /** The arm's name. */ attribute string label; };\n  interface Arm : Base, Named { void stop(); };\n};\n",
     );
     let service = r#"  <rtc:ServicePorts xsi:type="rtcExt:serviceport_ext" rtcExt:position="RIGHT" rtc:name="armPort">
     <rtc:ServiceInterface xsi:type="rtcExt:serviceinterface_ext" rtc:type="Lab::Arm" rtc:idlFile="idl/Arm.idl" rtc:instanceName="" rtc:direction="Provided" rtc:name="arm"/>
@@ -620,6 +620,10 @@ fn base_interfaces_have_pages_and_their_operations_are_inherited() {
         arm.contains("#op-reset\"") && arm.contains("../interfaces/lab-root.html#op-ping\""),
         "{arm}"
     );
+    assert!(arm.contains("<p>Attributes:</p>\n<ul class=\"idl-inherited\"><li><a href=\"../interfaces/lab-root.html#attr-serial\"><code>serial</code></a> (read-only)</li>"), "{arm}");
+    assert!(arm.contains("<h3>Inherited from <a href=\"../interfaces/lab-named.html\"><code>Lab::Named</code></a></h3>\n<p>Attributes:</p>\n<ul class=\"idl-inherited\"><li><a href=\"../interfaces/lab-named.html#attr-label\"><code>label</code></a>: The arm&#39;s name.</li>"), "{arm}");
+    let root = read(&s.join("html/interfaces/lab-root.html"));
+    assert!(root.contains("<tr id=\"attr-serial\">"), "{root}");
     let base = read(&s.join("html/interfaces/lab-base.html"));
     assert!(base.contains("id=\"op-get_config\""), "{base}");
     assert!(
@@ -643,12 +647,22 @@ fn base_interfaces_have_pages_and_their_operations_are_inherited() {
         "{md}"
     );
     assert!(s.join("markdown/interfaces/lab-base.md").is_file());
+    assert!(
+        md.contains("| [label](../interfaces/lab-named.md) | The arm\\'s name. |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| [serial](../interfaces/lab-root.md) (read-only) |"),
+        "{md}"
+    );
     let dox = read(&s.join("doxygen/interfaces/lab-arm.dox"));
     assert!(
         dox.contains("\\ref rtc_if_lab_base \"get_config\""),
         "{dox}"
     );
     assert!(dox.contains("\\ref rtc_if_lab_root \"ping\""), "{dox}");
+    assert!(dox.contains("\\ref rtc_if_lab_named \"label\""), "{dox}");
+    assert!(dox.contains("\\ref rtc_if_lab_root \"serial\""), "{dox}");
     let json = read(&s.join("json/catalog.json"));
     assert!(json.contains("\"name\": \"Lab::Base\""), "{json}");
 }

@@ -330,34 +330,59 @@ fn idl_operations(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
     o.raw("\n");
 }
 
-/// The inherited operations of `idl_definition` (an interface's), a list per base, each
-/// operation linked to its place on the base's page.
+/// The inherited operations and attributes of `idl_definition` (an interface's), lists per
+/// base, each member linked to its place on the base's page.
 fn idl_inherited(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
     for g in &def.inherited {
         o.label_in("<h3>", "idl_inherited_from", " ");
         idl_type(o, &g.base, root);
-        o.raw("</h3>\n<ul class=\"idl-inherited\">");
-        for op in &g.operations {
-            o.raw("<li>");
-            match g.base.page.as_deref().filter(|p| !p.is_empty()) {
-                Some(page) => {
-                    o.raw("<a href=\"");
-                    o.text(root);
-                    o.text(page);
-                    o.raw("#op-");
-                    o.text(&op.name);
-                    o.raw("\"><code>");
-                    o.text(&op.name);
-                    o.raw("</code></a>");
-                }
-                None => o.code(&op.name),
+        o.raw("</h3>\n");
+        let page = g.base.page.as_deref().filter(|p| !p.is_empty());
+        if !g.operations.is_empty() {
+            o.raw("<ul class=\"idl-inherited\">");
+            for op in &g.operations {
+                inherited_item(o, root, page, "#op-", &op.name);
+                o.text_if(": ", &op.doc, "");
+                o.raw("</li>\n");
             }
-            o.text_if(": ", &op.doc, "");
-            o.raw("</li>\n");
+            o.raw("</ul>\n");
         }
-        o.raw("</ul>\n");
+        if !g.attributes.is_empty() {
+            o.label_in(
+                "<p>",
+                "idl_attributes",
+                ":</p>\n<ul class=\"idl-inherited\">",
+            );
+            for a in &g.attributes {
+                inherited_item(o, root, page, "#attr-", &a.name);
+                if a.readonly {
+                    o.label_in(" (", "idl_readonly", ")");
+                }
+                o.text_if(": ", &a.doc, "");
+                o.raw("</li>\n");
+            }
+            o.raw("</ul>\n");
+        }
     }
     o.raw("\n");
+}
+
+/// `<li>` and member `name` of a base, linked to `page#<anchor><name>` when the base has a page.
+fn inherited_item(o: &mut Out<'_>, root: &str, page: Option<&str>, anchor: &str, name: &str) {
+    o.raw("<li>");
+    match page {
+        Some(page) => {
+            o.raw("<a href=\"");
+            o.text(root);
+            o.text(page);
+            o.raw(anchor);
+            o.text(name);
+            o.raw("\"><code>");
+            o.text(name);
+            o.raw("</code></a>");
+        }
+        None => o.code(name),
+    }
 }
 
 /// One operation: its signature, documentation and parameters.
@@ -425,7 +450,9 @@ fn idl_attributes(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
         o.head_cells(&["name", "type", "description"]);
         o.raw("</tr></thead>\n<tbody>\n");
         for a in &def.attributes {
-            o.raw("<tr>");
+            o.raw("<tr id=\"attr-");
+            o.text(&a.name);
+            o.raw("\">");
             o.td("name");
             o.code(&a.name);
             if a.readonly {
