@@ -1,6 +1,7 @@
 // Audits a generated rtcdoc site in headless Chromium (puppeteer-core driving the system
-// chromium): axe-core on one page of every kind in light, dark and at 390 px, the page width
-// and sideways-scrolling regions at 390 px, and the search (kinds, ranking, ?q=, Enter).
+// chromium): axe-core on one page of every kind in light, dark, at 390 px (phone), 800 px
+// (small tablet) and 900 px (narrow window), the page width and sideways-scrolling regions at
+// the three narrow widths, and the search (kinds, ranking, ?q=, Enter).
 //
 //   node tests/browser/audit.mjs SITE_DIR [--search QUERY=EXPECTED_HREF_PART ...] [--page REL ...]
 //                                 [--filter SELECT_ID=VALUE ...]
@@ -8,7 +9,7 @@
 // Each --filter (What's new) picks VALUE in the select SELECT_ID of whats-new.html, the others
 // reset, and reports the rows and day sections left shown: report.filters.
 //
-// Prints one JSON object on stdout: {pages:[{page, mode, violations:[...], width, scrollers:[...]}],
+// Prints one JSON object on stdout: {pages:[{page, mode, viewport, violations:[...], width, scrollers:[...]}],
 // searches:[...], errors:[...]} and exits 0; the Rust test (tests/html_browser.rs) asserts on it.
 import { launchChromium } from './launch.mjs';
 import fs from 'node:fs';
@@ -62,6 +63,10 @@ const MODES = [
   { name: 'light', width: 1280, height: 900, scheme: 'light' },
   { name: 'dark', width: 1280, height: 900, scheme: 'dark' },
   { name: 'phone', width: 390, height: 844, scheme: 'light' },
+  // Small tablets (tables as stacked cards up to 860 px) and a narrow desktop window (tables as
+  // tables): neither may scroll sideways.
+  { name: 'tablet', width: 800, height: 1024, scheme: 'light' },
+  { name: 'narrow', width: 900, height: 900, scheme: 'dark' },
 ];
 
 // The site is served over HTTP on loopback, as a static host would: a missing file gets
@@ -143,9 +148,20 @@ try {
             }
           }
         }
-        return { width, scrollers, clipped, broken };
+        // A stacked row (card) labels each cell from data-label: a cell whose content starts
+        // with the same label (a description cell's field list) shows it once, not twice.
+        const twice = [];
+        for (const td of document.querySelectorAll('.table-wrap td[data-label]')) {
+          const before = getComputedStyle(td, '::before');
+          if (before.content === 'none' || before.display === 'none') continue;
+          const dt = td.querySelector(':scope > dl > dt');
+          if (dt && dt.textContent.trim().toLowerCase() === td.dataset.label.trim().toLowerCase()) {
+            twice.push(td.dataset.label);
+          }
+        }
+        return { width, scrollers, clipped, broken, twice };
       });
-      report.pages.push({ page: rel, mode: m.name, violations: res, width: layout.width, scrollers: m.width < 500 ? layout.scrollers : [], clipped: layout.clipped, broken: layout.broken });
+      report.pages.push({ page: rel, mode: m.name, viewport: m.width, violations: res, width: layout.width, scrollers: m.width < 1000 ? layout.scrollers : [], clipped: layout.clipped, broken: layout.broken, twice: layout.twice });
     }
   }
   // Search: type QUERY into the search page, wait for results; check ?q= and Enter.

@@ -425,7 +425,16 @@ fn base_top(o: &mut Out<'_>, page: &Head<'_>) {
     o.text(root);
     o.raw("index.html\">");
     o.text(o.g.site_title);
-    o.raw("</a>\n<nav class=\"site-nav\" aria-label=\"");
+    o.raw("</a>\n<form class=\"search\" role=\"search\" action=\"");
+    o.text(root);
+    o.raw("search.html\" method=\"get\">\n<label for=\"search-input\" class=\"visually-hidden\">");
+    o.label("search");
+    o.raw("</label>\n<input id=\"search-input\" name=\"q\" type=\"search\" placeholder=\"");
+    o.label("search_placeholder");
+    o.raw("\" autocomplete=\"off\" aria-describedby=\"search-help\" aria-controls=\"search-popup\">\n<span id=\"search-help\" class=\"visually-hidden\">");
+    o.label("search_help");
+    o.raw("</span>\n<div id=\"search-popup\" class=\"search-popup\" hidden></div>\n</form>\n");
+    o.raw("<nav class=\"site-nav\" aria-label=\"");
     o.label("main_nav");
     o.raw("\">\n<ul>\n");
     for (shown, path, key) in [
@@ -446,15 +455,7 @@ fn base_top(o: &mut Out<'_>, page: &Head<'_>) {
     if o.g.has_diagnostics {
         nav_item(o, root, "diagnostics.html", "diagnostics");
     }
-    o.raw("\n</ul>\n</nav>\n<form class=\"search\" role=\"search\" action=\"");
-    o.text(root);
-    o.raw("search.html\" method=\"get\">\n<label for=\"search-input\" class=\"visually-hidden\">");
-    o.label("search");
-    o.raw("</label>\n<input id=\"search-input\" name=\"q\" type=\"search\" placeholder=\"");
-    o.label("search_placeholder");
-    o.raw("\" autocomplete=\"off\" aria-describedby=\"search-help\" aria-controls=\"search-popup\">\n<span id=\"search-help\" class=\"visually-hidden\">");
-    o.label("search_help");
-    o.raw("</span>\n<div id=\"search-popup\" class=\"search-popup\" hidden></div>\n</form>\n</div>\n</header>\n");
+    o.raw("\n</ul>\n</nav>\n</div>\n</header>\n");
     if !page.crumbs.is_empty() {
         o.label_in(
             "<nav class=\"crumbs\" aria-label=\"",
