@@ -556,45 +556,27 @@ fn inherited_tables<M: Markup>(
             out,
             &format!("{} {base}", M::esc(lang.t("idl_inherited_from"))),
         );
-        let rows: Vec<Vec<String>> = g
-            .operations
-            .iter()
-            .map(|o| {
-                let name = TypeRef {
-                    text: o.name.clone(),
-                    ..g.base.clone()
-                };
-                vec![ty(&name), M::esc(&o.doc)]
-            })
-            .collect();
-        if !rows.is_empty() {
-            M::table(
-                out,
-                &[lang.t("idl_operations"), lang.t("description")],
-                &rows,
-            );
-        }
-        let rows: Vec<Vec<String>> = g
-            .attributes
-            .iter()
-            .map(|a| {
-                let name = TypeRef {
-                    text: a.name.clone(),
-                    ..g.base.clone()
-                };
-                let mut cell = ty(&name);
-                if a.readonly {
-                    cell.push_str(&format!(" ({})", M::esc(lang.t("idl_readonly"))));
-                }
-                vec![cell, M::esc(&a.doc)]
-            })
-            .collect();
-        if !rows.is_empty() {
-            M::table(
-                out,
-                &[lang.t("idl_attributes"), lang.t("description")],
-                &rows,
-            );
+        // A member's name linked to the base's page, its note, and its documentation.
+        let row = |name: &str, note: &str, doc: &str| {
+            let link = ty(&TypeRef {
+                text: name.to_string(),
+                ..g.base.clone()
+            });
+            vec![format!("{link}{note}"), M::esc(doc)]
+        };
+        let readonly = format!(" ({})", M::esc(lang.t("idl_readonly")));
+        let operations = g.operations.iter().map(|o| row(&o.name, "", &o.doc));
+        let attributes = g.attributes.iter().map(|a| {
+            let note = if a.readonly { readonly.as_str() } else { "" };
+            row(&a.name, note, &a.doc)
+        });
+        for (key, rows) in [
+            ("idl_operations", operations.collect::<Vec<_>>()),
+            ("idl_attributes", attributes.collect()),
+        ] {
+            if !rows.is_empty() {
+                M::table(out, &[lang.t(key), lang.t("description")], &rows);
+            }
         }
     }
 }

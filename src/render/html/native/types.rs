@@ -298,6 +298,16 @@ fn type_and_doc(o: &mut Out<'_>, ty: &TypeRef, doc: &str, root: &str) {
     o.cell("description", doc, "</tr>\n");
 }
 
+/// `<tr id="<prefix><name>">` and the open name cell holding `name` as code.
+fn named_row(o: &mut Out<'_>, prefix: &str, name: &str) {
+    o.raw("<tr id=\"");
+    o.raw(prefix);
+    o.text(name);
+    o.raw("\">");
+    o.td("name");
+    o.code(name);
+}
+
 /// The values table of `idl_definition` (an enum's).
 fn idl_values(o: &mut Out<'_>, def: &DefinitionView) {
     if !def.values.is_empty() {
@@ -306,11 +316,7 @@ fn idl_values(o: &mut Out<'_>, def: &DefinitionView) {
         o.head_cells(&["name", "description"]);
         o.raw("</tr></thead>\n<tbody>\n");
         for v in &def.values {
-            o.raw("<tr id=\"value-");
-            o.text(&v.name);
-            o.raw("\">");
-            o.td("name");
-            o.code(&v.name);
+            named_row(o, "value-", &v.name);
             o.raw("</td>");
             o.cell("description", &v.doc, "</tr>\n");
         }
@@ -450,11 +456,7 @@ fn idl_attributes(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
         o.head_cells(&["name", "type", "description"]);
         o.raw("</tr></thead>\n<tbody>\n");
         for a in &def.attributes {
-            o.raw("<tr id=\"attr-");
-            o.text(&a.name);
-            o.raw("\">");
-            o.td("name");
-            o.code(&a.name);
+            named_row(o, "attr-", &a.name);
             if a.readonly {
                 o.label_in(" (", "idl_readonly", ")");
             }
