@@ -492,6 +492,8 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_instance_count", "instances", "インスタンス"),
     ("sys_instance_count_one", "instance", "インスタンス"),
     ("sys_interface_type", "Interface type", "インターフェース型"),
+    ("sys_legend_composite", "Double outline: composite component", "二重の枠: 複合コンポーネント"),
+    ("sys_legend_member", "dashed outline: member of a composite", "破線の枠: 複合コンポーネントのメンバー"),
     ("sys_member_of", "member of", "所属する複合コンポーネント:"),
     ("sys_members", "Members", "メンバー"),
     ("sys_no_end", "an end is missing", "端が書かれていない"),

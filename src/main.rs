@@ -1080,7 +1080,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
         args,
         name,
         &format!("{} {name}", lang.t("sys_wiring")),
-        (&w.instances, &w.connectors, &w.not_drawn),
+        (&w.instances, &w.connectors, &w.notes()),
     )
 }
 

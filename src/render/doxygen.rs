@@ -413,7 +413,7 @@ fn system_page(
     let w = super::wiring::system_wiring(cat, s, lang, &|_, _| String::new());
     let caption = super::system_text::wiring_caption(s, lang);
     let svg =
-        super::html::standalone_system_diagram(&caption, &w.instances, &w.connectors, &w.not_drawn);
+        super::html::standalone_system_diagram(&caption, &w.instances, &w.connectors, &w.notes());
     // No caption: the section's heading says what it is, and the drawing has its title.
     let drawing = |out: &mut String| {
         d!(out, "\\image html {}", page.file_name("svg"));
@@ -429,7 +429,8 @@ fn system_page(
     d!(out);
     crumbs(&mut out, cat, PageKind::Systems);
     let head = |o: &mut String, anchor: &str, text_: &str| section(o, page, anchor, text_);
-    let targets = super::system_text::Targets::new(&head, &caption, &drawing, &w.not_drawn);
+    let notes = w.notes();
+    let targets = super::system_text::Targets::new(&head, &caption, &drawing, &notes);
     super::system_text::system_body::<Dox>(&mut out, cat, s, lang, site, &targets);
     (out, svg)
 }

@@ -548,7 +548,7 @@ fn system_page(
             &caption,
             &w.instances,
             &w.connectors,
-            &w.not_drawn,
+            &w.notes(),
         )),
     };
     let drawing = |out: &mut String| {
@@ -559,7 +559,7 @@ fn system_page(
                     &s.display_name(),
                     &w.instances,
                     &w.connectors,
-                    &w.not_drawn,
+                    &w.notes(),
                 ));
                 w!(out, "```");
             }
@@ -569,7 +569,8 @@ fn system_page(
         }
         w!(out);
     };
-    let targets = super::system_text::Targets::new(&head, &caption, &drawing, &w.not_drawn);
+    let notes = w.notes();
+    let targets = super::system_text::Targets::new(&head, &caption, &drawing, &notes);
     super::system_text::system_body::<Md>(&mut out, cat, s, lang, site, &targets);
     (out, svg)
 }

@@ -7,7 +7,7 @@ use crate::catalog::neighbourhood::{Neighbourhood, PortAt, PEER_COMPONENTS_CAP};
 use crate::catalog::{Catalog, ComponentIx, Page, TypeIx};
 use crate::i18n::Lang;
 use crate::model::non_empty;
-use crate::render::wiring::{WireConnector, WireInstance, WirePort};
+use crate::render::wiring::{Role, WireConnector, WireInstance, WirePort};
 
 /// One neighbour component of a port, as listed.
 pub struct NeighbourItem<'a> {
@@ -205,6 +205,7 @@ pub fn wiring(
         href: href(cat.component_page(ci), None),
         ports: Vec::new(),
         location: None,
+        role: Role::default(),
     }];
     let mut conns: Vec<WireConnector> = Vec::new();
     let kind = |class: &str| match class {
@@ -243,6 +244,7 @@ pub fn wiring(
                         href: href(nb.page, None),
                         ports: Vec::new(),
                         location: None,
+                        role: Role::default(),
                     });
                     box_of.push((nb.component, inst.len() - 1));
                     inst.len() - 1
@@ -277,6 +279,7 @@ pub fn wiring(
                 }],
                 name,
                 location: None,
+                role: Role::default(),
             });
             let b = inst.len() - 1;
             connect(&inst, b, 0, &mut conns);

@@ -21,11 +21,12 @@ pub struct Targets<'a> {
 }
 
 /// A system's wiring diagram in a text output: its section's heading, the drawing (an image
-/// or a Mermaid block, which the output writes) and, under it, what the drawing leaves out.
+/// or a Mermaid block, which the output writes) and, under it, its notes (what the drawing
+/// leaves out, what its outlines mean).
 pub struct Wiring<'a> {
     pub caption: &'a str,
     pub drawing: &'a dyn Fn(&mut String),
-    pub not_drawn: &'a [String],
+    pub notes: &'a [String],
 }
 
 impl<'a> Targets<'a> {
@@ -33,14 +34,14 @@ impl<'a> Targets<'a> {
         heading: &'a dyn Fn(&mut String, &str, &str),
         caption: &'a str,
         drawing: &'a dyn Fn(&mut String),
-        not_drawn: &'a [String],
+        notes: &'a [String],
     ) -> Self {
         Targets {
             heading,
             wiring: Wiring {
                 caption,
                 drawing,
-                not_drawn,
+                notes,
             },
         }
     }
@@ -55,7 +56,7 @@ fn wiring_section<M: Markup>(out: &mut String, t: &Targets<'_>) {
     let w = &t.wiring;
     (t.heading)(out, "sec-wiring", w.caption);
     (w.drawing)(out);
-    for n in w.not_drawn {
+    for n in w.notes {
         M::paragraph(out, &M::esc(&format!("{n}.")));
     }
 }

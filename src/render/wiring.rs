@@ -39,6 +39,29 @@ pub struct WireInstance {
     pub ports: Vec<WirePort>,
     /// `rtsExt:Location` x/y, when given as integers.
     pub location: Option<(i64, i64)>,
+    /// What the instance is in a composite component, which the drawings mark.
+    pub role: Role,
+}
+
+/// An instance's part in composite components: a composite (a `compositeType` other than
+/// `None`, or participants) is drawn with a double outline, a member (a participant of
+/// another instance) with a dashed one; the accessible name says which.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Debug)]
+pub struct Role {
+    pub composite: bool,
+    pub member: bool,
+}
+
+impl Role {
+    /// The SVG classes of the instance's group after `instance` (` composite`, ` member`).
+    pub fn classes(self) -> &'static str {
+        match (self.composite, self.member) {
+            (false, false) => "",
+            (true, false) => " composite",
+            (false, true) => " member",
+            (true, true) => " composite member",
+        }
+    }
 }
 
 /// A connector between two ports: (instance, port) indices into the drawn instances.
@@ -54,13 +77,22 @@ pub struct WireConnector {
     pub caption: Option<String>,
 }
 
-/// The wiring of a system as drawn: its instances, the connectors drawn between them, and
-/// a sentence for each connector that could not be drawn (an end naming no instance of the
-/// system, RTC608, or no end at all), which every drawing and caption shows.
+/// The wiring of a system as drawn: its instances, the connectors drawn between them, a
+/// sentence for each connector that could not be drawn (an end naming no instance of the
+/// system, RTC608, or no end at all), and, when the system has composite components, what
+/// their outlines mean. Every drawing and caption shows both ([`SystemWiring::notes`]).
 pub struct SystemWiring {
     pub instances: Vec<WireInstance>,
     pub connectors: Vec<WireConnector>,
     pub not_drawn: Vec<String>,
+    pub legend: Option<String>,
+}
+
+impl SystemWiring {
+    /// The sentences under the drawing: the connectors not drawn, then the legend.
+    pub fn notes(&self) -> Vec<String> {
+        self.not_drawn.iter().chain(&self.legend).cloned().collect()
+    }
 }
 
 /// The instances and connectors of system `s`. A port of a component in the catalogue links
@@ -133,13 +165,50 @@ pub fn system_wiring(
                     .map(str::to_string)
             })
             .unwrap_or_default();
+        // A composite names its type and members; a member the composites it belongs to.
+        let members: Vec<&str> = c
+            .participants
+            .iter()
+            .filter_map(|t| non_empty(&t.instance_name))
+            .collect();
+        let kind = non_empty(&c.composite_type).filter(|t| *t != "None");
+        let member_of: Vec<&str> = p
+            .components
+            .iter()
+            .filter(|k| {
+                k.participants
+                    .iter()
+                    .any(|t| non_empty(&t.instance_name) == Some(iname.as_str()))
+            })
+            .filter_map(|k| non_empty(&k.instance_name))
+            .collect();
+        let role = Role {
+            composite: kind.is_some() || !members.is_empty(),
+            member: !member_of.is_empty(),
+        };
+        let mut about = lang.t("instance").to_string();
+        if let Some(kind) = kind {
+            about.push_str(&format!(", {}: {kind}", lang.t("sys_composite")));
+        }
+        if !members.is_empty() {
+            about.push_str(&format!(
+                ", {}: {}",
+                lang.t("sys_members"),
+                members.join(", ")
+            ));
+        }
+        if !member_of.is_empty() {
+            let of = lang.t("sys_member_of").trim_end_matches(':');
+            about.push_str(&format!(", {of}: {}", member_of.join(", ")));
+        }
         wire.push(WireInstance {
             // The accessible name starts with the box's visible text (WCAG 2.5.3).
             label: if component.is_empty() {
-                format!("{iname} ({})", lang.t("instance"))
+                format!("{iname} ({about})")
             } else {
-                format!("{iname} {component} ({})", lang.t("instance"))
+                format!("{iname} {component} ({about})")
             },
+            role,
             component,
             name: iname,
             href: format!("#{anchor}"),
@@ -150,10 +219,34 @@ pub fn system_wiring(
     let (connectors, not_drawn) =
         system_connectors(s, &wire, &catalog.reversed_data_connectors(s), lang);
     SystemWiring {
+        legend: composite_legend(&wire, lang),
         instances: wire,
         connectors,
         not_drawn,
     }
+}
+
+/// What the outlines of composite components and their members mean, naming them
+/// (`Double outline: composite component (Planner0); dashed outline: member of a composite
+/// (Camera0)`); `None` when the system has none.
+fn composite_legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
+    let names = |pick: fn(Role) -> bool| {
+        let n: Vec<&str> = wire
+            .iter()
+            .filter(|w| pick(w.role))
+            .map(|w| w.name.as_str())
+            .collect();
+        n.join(", ")
+    };
+    let parts: Vec<String> = [
+        ("sys_legend_composite", names(|r| r.composite)),
+        ("sys_legend_member", names(|r| r.member)),
+    ]
+    .into_iter()
+    .filter(|(_, n)| !n.is_empty())
+    .map(|(key, n)| format!("{} ({n})", lang.t(key)))
+    .collect();
+    (!parts.is_empty()).then(|| parts.join("; "))
 }
 
 /// A connector as a note names it: its name and its id in brackets (`out_in [c3]`: names
@@ -345,9 +438,24 @@ pub fn to_dot(
         let right: Vec<usize> = (0..it.ports.len())
             .filter(|&k| it.ports[k].class != "in")
             .collect();
+        // A composite: its table inside a second outline; a member: a dashed outline.
+        let dashed = if it.role.member {
+            " style=\"dashed\""
+        } else {
+            ""
+        };
+        let _ = write!(s, "  n{i} [label=<");
+        if it.role.composite {
+            let _ = write!(
+                s,
+                "<table border=\"1\" cellborder=\"0\" cellspacing=\"2\" cellpadding=\"0\"{dashed}><tr><td border=\"1\">"
+            );
+        }
         let _ = write!(
             s,
-            "  n{i} [label=<<table border=\"1\" cellborder=\"0\" cellspacing=\"0\" cellpadding=\"3\"><tr><td colspan=\"2\"><b>{}</b>",
+            "<table border=\"{}\" cellborder=\"0\" cellspacing=\"0\" cellpadding=\"3\"{}><tr><td colspan=\"2\"><b>{}</b>",
+            if it.role.composite { "0" } else { "1" },
+            if it.role.composite { "" } else { dashed },
             dot_html(&it.name)
         );
         if !it.component.is_empty() {
@@ -393,7 +501,11 @@ pub fn to_dot(
             }
             s.push_str("</tr>");
         }
-        s.push_str("</table>>];\n");
+        s.push_str("</table>");
+        if it.role.composite {
+            s.push_str("</td></tr></table>");
+        }
+        s.push_str(">];\n");
     }
     for c in conns {
         let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {
@@ -471,6 +583,24 @@ pub fn to_mermaid(
         };
         let _ = writeln!(s, "  n{i}[\"{label}\"]");
     }
+    // A composite's node a thick outline, a member's a dashed one.
+    for (class, style, pick) in [
+        (
+            "composite",
+            "stroke-width:4px",
+            (|r: Role| r.composite) as fn(Role) -> bool,
+        ),
+        ("member", "stroke-dasharray:6 3", |r: Role| r.member),
+    ] {
+        let nodes: Vec<String> = (0..inst.len())
+            .filter(|&i| pick(inst[i].role))
+            .map(|i| format!("n{i}"))
+            .collect();
+        if !nodes.is_empty() {
+            let _ = writeln!(s, "  classDef {class} {style}");
+            let _ = writeln!(s, "  class {} {class}", nodes.join(","));
+        }
+    }
     for c in conns {
         let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {
             continue;
@@ -545,6 +675,7 @@ pub fn dataflow_wiring(
                 label: name.to_string(),
                 ports: Vec::new(),
                 location: None,
+                role: Role::default(),
             }
         })
         .collect();

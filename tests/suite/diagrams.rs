@@ -211,6 +211,8 @@ fn system_inputs() -> Vec<(std::path::PathBuf, Option<String>)> {
     let mut v = vec![
         (root.join("tests/fixtures/diagrams"), None),
         (root.join("examples"), None),
+        // A composite component and its member (double and dashed outlines).
+        (root.join("tests/fixtures/systems/site"), None),
     ];
     if let Some(c) = common::corpus() {
         let dir = c.join("rts-xml");

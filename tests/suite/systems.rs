@@ -251,8 +251,8 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     let labels: Vec<&str> = links.iter().filter_map(|t| t.attr("aria-label")).collect();
     assert_eq!(links.len(), labels.len(), "every link is named");
     for l in [
-        "Camera0 Camera (Instance)",
-        "Planner0 Planner (Instance)",
+        "Camera0 Camera (Instance, member of: Planner0)",
+        "Planner0 Planner (Instance, Composite type: PeriodicECShared, Members: Camera0)",
         "out-port Camera0.image",
         "in-port Planner0.image",
         "out-port Planner0.path",
@@ -263,7 +263,7 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
     }
     assert_eq!(svg.matches("class=\"connector data\"").count(), 1);
     assert_eq!(svg.matches("class=\"connector service\"").count(), 1);
-    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connector, 1 service connector. <a href=\"patrolsystem.svg\">Open the drawing on its own</a></figcaption>"), "{html}");
+    assert!(html.contains("<figcaption>Wiring of PatrolSystem: 2 instances, 1 data connector, 1 service connector. Double outline: composite component (Planner0); dashed outline: member of a composite (Camera0). <a href=\"patrolsystem.svg\">Open the drawing on its own</a></figcaption>"), "{html}");
     // Configuration used next to the defaults: differences marked, values checked.
     let conf = section(&html, "configuration");
     assert!(
@@ -1304,4 +1304,51 @@ fn a_composite_instance_lists_its_members() {
     );
     assert!(page.contains("| None; member of CompositeRTC |"), "{page}");
     assert!(!page.contains("C0 | None; member"), "{page}");
+    // The wiring diagram: the composite with a double outline, its members dashed, C0 plain;
+    // each box's name says what it is, and the caption what the outlines mean.
+    let svg = section(&html, "diagram");
+    let legend = "Double outline: composite component (CompositeRTC); dashed outline: member of a composite (A0, B0)";
+    assert!(svg.contains(legend), "{svg}");
+    assert!(svg.contains(r##"<g class="instance composite"><a href="#inst-compositertc" aria-label="CompositeRTC CompositeRTC (Instance, Composite type: PeriodicECShared, Members: A0, B0)">"##), "{svg}");
+    assert_eq!(
+        svg.matches(r#"<rect class="rtc-box-inner""#).count(),
+        1,
+        "{svg}"
+    );
+    assert!(svg.contains(r##"<g class="instance member"><a href="#inst-a0" aria-label="A0 A0 (Instance, member of: CompositeRTC)">"##), "{svg}");
+    assert_eq!(
+        svg.matches(r#"<g class="instance member">"#).count(),
+        2,
+        "{svg}"
+    );
+    assert!(
+        svg.contains(r##"<g class="instance"><a href="#inst-c0""##),
+        "{svg}"
+    );
+    assert!(page.contains(&format!("{legend}.")), "{page}");
+    let alone = read(&out.join("systems/comp.svg"));
+    assert!(
+        alone.contains(r#"<text class="legend" x="8""#) && alone.contains(legend),
+        "{alone}"
+    );
+    let mmd = common::rtcdoc(&["graph", "in/Comp.xml", "-f", "mermaid"], dir.path());
+    let mmd = String::from_utf8_lossy(&mmd.stdout);
+    assert!(
+        mmd.contains("  classDef composite stroke-width:4px\n  class n3 composite\n"),
+        "{mmd}"
+    );
+    assert!(
+        mmd.contains("  classDef member stroke-dasharray:6 3\n  class n0,n1 member\n"),
+        "{mmd}"
+    );
+    let dot = common::rtcdoc(&["graph", "in/Comp.xml", "-f", "dot"], dir.path());
+    let (dot, note) = (
+        String::from_utf8_lossy(&dot.stdout),
+        String::from_utf8_lossy(&dot.stderr),
+    );
+    assert!(dot.contains(r#"n0 [label=<<table border="1" cellborder="0" cellspacing="0" cellpadding="3" style="dashed">"#), "{dot}");
+    assert!(dot.contains(r#"n3 [label=<<table border="1" cellborder="0" cellspacing="2" cellpadding="0"><tr><td border="1"><table border="0""#), "{dot}");
+    assert!(dot.contains(legend), "{dot}");
+    // The legend is no note on stderr (those name connectors left out).
+    assert!(!note.contains("outline"), "{note}");
 }

@@ -144,7 +144,8 @@ pub fn system_diagram_with(
 const NOTE_LINE: f32 = 16.0;
 const NOTE_PX: f32 = 12.0;
 
-/// [`system_diagram_with`], with `notes` (what the drawing leaves out) as lines of text under it.
+/// [`system_diagram_with`], with `notes` (what the drawing leaves out, then the legend of its
+/// composite outlines) as lines of text under it.
 fn draw(
     title: &str,
     inst: &[WireInstance],
@@ -199,8 +200,15 @@ fn draw(
     for (it, b) in inst.iter().zip(&l.nodes) {
         instance(&mut s, it, b);
     }
+    // The legend of composite outlines is the last note when there is one
+    // ([`crate::render::wiring::SystemWiring::notes`]): an explanation, not a warning.
+    let legend = inst.iter().any(|i| i.role.composite || i.role.member);
     for (k, n) in notes.iter().enumerate() {
-        s.push_str(r#"<text class="not-drawn" x="8""#);
+        s.push_str(if legend && k + 1 == notes.len() {
+            r#"<text class="legend" x="8""#
+        } else {
+            r#"<text class="not-drawn" x="8""#
+        });
         attr_num(&mut s, "y", notes_top + NOTE_LINE * (k as f32 + 1.0));
         s.push('>');
         esc_to(&mut s, n);
@@ -213,7 +221,9 @@ fn draw(
 /// Appends one instance: its box with title and component name, and its ports.
 fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
     let cx = b.x + b.w / 2.0;
-    s.push_str(r#"<g class="instance"><a"#);
+    s.push_str(r#"<g class="instance"#);
+    s.push_str(it.role.classes());
+    s.push_str(r#""><a"#);
     href_attr(s, &it.href);
     s.push_str(r#" aria-label=""#);
     esc_to(s, &it.label);
@@ -224,7 +234,17 @@ fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
     attr_num(s, "y", b.y);
     attr_num(s, "width", b.w);
     attr_num(s, "height", b.h);
-    s.push_str(r#" rx="4"/><text class="rtc-name""#);
+    s.push_str(r#" rx="4"/>"#);
+    if it.role.composite {
+        // A composite's second outline, inside the first.
+        s.push_str(r#"<rect class="rtc-box-inner""#);
+        attr_num(s, "x", b.x + 3.0);
+        attr_num(s, "y", b.y + 3.0);
+        attr_num(s, "width", b.w - 6.0);
+        attr_num(s, "height", b.h - 6.0);
+        s.push_str(r#" rx="2"/>"#);
+    }
+    s.push_str(r#"<text class="rtc-name""#);
     attr_num(s, "x", cx);
     attr_num(s, "y", b.title_y);
     s.push_str(r#" text-anchor="middle">"#);
@@ -304,11 +324,11 @@ fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
 }
 
 /// Colours of a drawing opened on its own (no site style sheet): the light theme's.
-const STANDALONE_STYLE: &str = "<style>text{font-family:system-ui,sans-serif;font-size:12px;fill:#1f2328}.rtc-box{fill:#f3f6fb;stroke:#33415c;stroke-width:1.6}.rtc-name{font-size:15px;font-weight:700}.stereotype{fill:#5b6472;font-size:12px;font-weight:400}.port-name{font-size:11px}.port-square{stroke:#33415c;stroke-width:1.2;fill:#fff}a.in .port-square{fill:#1f7a4d}a.out .port-square{fill:#b8561c}a.service .port-square{fill:#5b6472}.connector{fill:none;stroke:#33415c;stroke-width:1.6}.connector.service{stroke-dasharray:6 4}a.unknown .port-square{fill:#fff;stroke-dasharray:2 2}a.unknown .port-name{font-style:italic}.not-drawn{fill:#a4262c}</style>";
+const STANDALONE_STYLE: &str = "<style>text{font-family:system-ui,sans-serif;font-size:12px;fill:#1f2328}.rtc-box{fill:#f3f6fb;stroke:#33415c;stroke-width:1.6}.rtc-name{font-size:15px;font-weight:700}.stereotype{fill:#5b6472;font-size:12px;font-weight:400}.port-name{font-size:11px}.port-square{stroke:#33415c;stroke-width:1.2;fill:#fff}a.in .port-square{fill:#1f7a4d}a.out .port-square{fill:#b8561c}a.service .port-square{fill:#5b6472}.connector{fill:none;stroke:#33415c;stroke-width:1.6}.connector.service{stroke-dasharray:6 4}a.unknown .port-square{fill:#fff;stroke-dasharray:2 2}a.unknown .port-name{font-style:italic}.rtc-box-inner{fill:none;stroke:#33415c;stroke-width:1}.member>a>.rtc-box{stroke-dasharray:6 3}.not-drawn{fill:#a4262c}.legend{fill:#5b6472}</style>";
 
 /// The wiring diagram as a file of its own (`rtcdoc graph --format svg`): the same drawing
 /// with its colours in a `<style>` element, and `notes` (what it leaves out: the connectors
-/// not drawn, and why) as lines of text under it.
+/// not drawn, and why; then what the outlines of composites mean) as lines of text under it.
 pub fn standalone_system_diagram(
     title: &str,
     inst: &[WireInstance],
@@ -363,6 +383,7 @@ mod tests {
                 })
                 .collect(),
             location: loc,
+            role: Default::default(),
         }
     }
 

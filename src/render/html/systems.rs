@@ -70,7 +70,7 @@ impl Site<'_> {
                 "sys_service_connectors"
             ),
         );
-        for n in &w.not_drawn {
+        for n in &w.notes() {
             diagram_text.push(' ');
             diagram_text.push_str(n);
             diagram_text.push('.');
@@ -126,7 +126,7 @@ pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
             let title = format!("{} {}", site.lang.t("sys_wiring"), s.display_name());
             (
                 drawing_path(site.catalog, s),
-                standalone_system_diagram(&title, &w.instances, &w.connectors, &w.not_drawn),
+                standalone_system_diagram(&title, &w.instances, &w.connectors, &w.notes()),
             )
         })
         .collect()
