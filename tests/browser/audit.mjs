@@ -214,12 +214,16 @@ try {
     }));
     report.popup = { opened, links, closed: after.hidden, focus_in_form: after.inForm };
     // The index's filter says how many rows it leaves, and what to do when it leaves none.
-    const filterStatus = async (typed) => {
+    const filterStatus = async (typed, wide) => {
       await page.goto(url('index.html'), { waitUntil: 'load' });
       if (!(await page.$('#f-text'))) { return null; }
-      // No text given: the name of the first component listed.
+      // No text given: the name of the first component listed (`wide`: in full-width letters,
+      // as a Japanese input method may type them).
       if (!typed) {
         typed = await page.evaluate(() => document.querySelector('section.category tbody tr > *').textContent.trim());
+      }
+      if (wide) {
+        typed = typed.replace(/[!-~]/g, (ch) => String.fromCharCode(ch.charCodeAt(0) + 0xfee0));
       }
       await page.type('#f-text', typed);
       return page.evaluate(() => {
@@ -228,7 +232,7 @@ try {
         return { text: st.textContent, none: st.getAttribute('data-none'), shown: rows.filter((r) => !r.hidden).length, rows: rows.length };
       });
     };
-    report.index_filter = { nothing: await filterStatus('zzzzqqq'), some: await filterStatus('') };
+    report.index_filter = { nothing: await filterStatus('zzzzqqq'), some: await filterStatus(''), wide: await filterStatus('', true) };
   }
   // What's new: each filter alone, on a freshly loaded page.
   for (const f of filters) {

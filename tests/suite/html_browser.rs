@@ -311,6 +311,8 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
             format!("{shown} of {rows} components shown"),
             "{f}"
         );
+        // Full-width letters match as the search box's do (NFKC).
+        assert_eq!(f["wide"]["shown"], some["shown"], "{f}");
     }
 }
 

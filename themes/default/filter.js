@@ -54,7 +54,8 @@
   form.addEventListener('submit', function (ev) { ev.preventDefault(); });
   var status = document.getElementById('filter-status');
   function apply() {
-    var q = text.value.trim().toLowerCase();
+    // Read in NFKC, as the search is: full-width Ｃａｍｅｒａ finds Camera.
+    var q = text.value.normalize('NFKC').trim().toLowerCase();
     var c = cat.value;
     var v = ven.value;
     var s = src ? src.value : '';
@@ -65,7 +66,7 @@
       sec.querySelectorAll('tbody tr').forEach(function (tr) {
         var ok = catOk && (!v || tr.getAttribute('data-vendor') === v) &&
           (!s || tr.getAttribute('data-source') === s) &&
-          (!q || tr.textContent.toLowerCase().indexOf(q) >= 0);
+          (!q || tr.textContent.normalize('NFKC').toLowerCase().indexOf(q) >= 0);
         tr.hidden = !ok;
         total++;
         if (ok) { shown++; }
