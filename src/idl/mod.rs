@@ -170,6 +170,38 @@ pub struct IdlItem<'a> {
     pub definition: &'a IdlDefinition,
 }
 
+/// A syntax error at a name an object-like macro replaced, or right after one on the same
+/// line, gets a hint that says so: `#define A` (an include guard) makes `module A {` read
+/// `module {`, and the error alone points at the `{`.
+fn macro_hint(d: Diagnostic, expansions: &[pp::Expansion]) -> Diagnostic {
+    let Some(at) = d.pos.filter(|_| d.code == codes::SYNTAX) else {
+        return d;
+    };
+    let Some(e) = expansions
+        .iter()
+        .rev()
+        .find(|e| e.pos.line == at.line && e.pos.column <= at.column)
+    else {
+        return d;
+    };
+    let place = match &e.defined {
+        Some((file, pos)) => format!(" at {file}:{}:{}", pos.line, pos.column),
+        None => String::new(),
+    };
+    let name = &e.name;
+    let what = if e.text.is_empty() {
+        format!("`{name}` here is a macro defined empty{place} (an include guard?), so the preprocessor removed it")
+    } else {
+        format!(
+            "`{name}` here is a macro defined{place} as `{}`, so the preprocessor replaced it",
+            e.text
+        )
+    };
+    d.with_hint(format!(
+        "{what}: give the macro another name (`{name}_IDL`) or rename this `{name}`"
+    ))
+}
+
 /// Reads every file: each is a document of its own; includes resolve among them.
 pub fn read(files: &[SourceFile], opts: &IdlOptions) -> IdlSet {
     let mut src = pp::Sources::new(files, opts);
@@ -178,7 +210,7 @@ pub fn read(files: &[SourceFile], opts: &IdlOptions) -> IdlSet {
         let pre = pp::preprocess(&mut src, i);
         let parsed = parse::parse(pre.tokens, &f.path, opts);
         for d in parsed.diagnostics {
-            src.report(d);
+            src.report(macro_hint(d, &pre.expansions));
         }
         out.push(IdlFile {
             path: f.path.clone(),

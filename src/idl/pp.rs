@@ -219,6 +219,19 @@ impl<'a> Sources<'a> {
 struct Macro {
     tokens: Vec<Token>,
     function_like: bool,
+    /// Where `#define` wrote it (file and position); `None` for a define given to rtcdoc.
+    defined: Option<(String, Pos)>,
+}
+
+/// A name of the file that an object-like macro replaced (the parser's errors at or right
+/// after it say so: `#define A` as an include guard makes `module A {` read `module {`).
+#[derive(Debug, Clone)]
+pub(crate) struct Expansion {
+    pub name: String,
+    pub pos: Pos,
+    /// What it became, as written (empty: it vanished).
+    pub text: String,
+    pub defined: Option<(String, Pos)>,
 }
 
 struct Cond {
@@ -236,6 +249,8 @@ pub(crate) struct Preprocessed {
     pub tokens: Vec<Token>,
     pub includes: Vec<IdlInclude>,
     pub pragmas: Vec<IdlPragma>,
+    /// The macro uses of the file, in order.
+    pub expansions: Vec<Expansion>,
 }
 
 struct Pp<'s, 'a> {
@@ -245,6 +260,7 @@ struct Pp<'s, 'a> {
     out: Vec<Token>,
     includes: Vec<IdlInclude>,
     pragmas: Vec<IdlPragma>,
+    expansions: Vec<Expansion>,
     over_limit: bool,
 }
 
@@ -258,6 +274,7 @@ pub(crate) fn preprocess(src: &mut Sources<'_>, root: usize) -> Preprocessed {
             Macro {
                 tokens: strip_eof(lex_line(value, Pos::default())),
                 function_like: false,
+                defined: None,
             },
         );
     }
@@ -269,6 +286,7 @@ pub(crate) fn preprocess(src: &mut Sources<'_>, root: usize) -> Preprocessed {
         out: Vec::new(),
         includes: Vec::new(),
         pragmas: Vec::new(),
+        expansions: Vec::new(),
         over_limit: false,
     };
     pp.run_file(root, true);
@@ -288,6 +306,7 @@ pub(crate) fn preprocess(src: &mut Sources<'_>, root: usize) -> Preprocessed {
         tokens: pp.out,
         includes: pp.includes,
         pragmas: pp.pragmas,
+        expansions: pp.expansions,
     }
 }
 
@@ -586,6 +605,7 @@ impl Pp<'_, '_> {
             Macro {
                 tokens: strip_eof(lex_line(rest, start)),
                 function_like,
+                defined: Some((path.to_string(), pos)),
             },
         );
     }
@@ -724,7 +744,16 @@ impl Pp<'_, '_> {
                         .with_hint("remove or fix the text at this position"),
                 );
             }
-            Tok::Ident(_) => {
+            Tok::Ident(name) => {
+                if let Some(m) = self.defines.get(name).filter(|m| !m.function_like) {
+                    let text: Vec<String> = m.tokens.iter().map(Token::lexeme).collect();
+                    self.expansions.push(Expansion {
+                        name: name.clone(),
+                        pos: t.pos,
+                        text: text.join(" "),
+                        defined: m.defined.clone(),
+                    });
+                }
                 let mut out = std::mem::take(&mut self.out);
                 self.expand(t.clone(), &mut out, &mut Vec::new());
                 self.out = out;

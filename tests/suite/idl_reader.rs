@@ -1098,3 +1098,40 @@ fn a_same_line_doc_comment_describes_its_own_member() {
     let docs: Vec<&str> = style.values.iter().map(|v| brief(&v.doc)).collect();
     assert_eq!(docs, ["One byte a cell.", "Two bits."]);
 }
+
+/// A syntax error at a name a macro replaced says so, and the fix it names works: an include
+/// guard named like the module (`#define A`, then `module A {`) and a macro with a value.
+#[test]
+fn an_error_at_a_macro_name_says_the_preprocessor_replaced_it() {
+    let guard = "#ifndef A\n#define A\nmodule A {\n  struct S { long x; };\n};\n#endif\n";
+    let set = one("idl/A.idl", guard);
+    let hints: Vec<&str> = set
+        .diagnostics
+        .iter()
+        .filter_map(|d| d.hint.as_deref())
+        .collect();
+    assert_eq!(hints, ["`A` here is a macro defined empty at idl/A.idl:2:1 (an include guard?), so the preprocessor removed it: give the macro another name (`A_IDL`) or rename this `A`"], "{:?}", diags(&set));
+    // Followed: the guard renamed, the file reads.
+    let set = one(
+        "idl/A.idl",
+        &guard
+            .replace("ifndef A\n", "ifndef A_IDL\n")
+            .replace("define A\n", "define A_IDL\n"),
+    );
+    assert!(set.diagnostics.is_empty(), "{:?}", diags(&set));
+    assert!(set.find("A::S").is_some());
+    // A macro with a value.
+    let set = one("idl/P.idl", "#define Pose 1\nstruct Pose { long x; };\n");
+    let d = &set.diagnostics[0];
+    assert_eq!(d.hint.as_deref(), Some("`Pose` here is a macro defined at idl/P.idl:1:1 as `1`, so the preprocessor replaced it: give the macro another name (`Pose_IDL`) or rename this `Pose`"), "{:?}", diags(&set));
+    // An error elsewhere keeps its own hint.
+    let set = one("idl/Q.idl", "#define X\nstruct { long x; };\n");
+    assert!(
+        set.diagnostics[0]
+            .hint
+            .as_deref()
+            .is_some_and(|h| !h.contains("macro")),
+        "{:?}",
+        diags(&set)
+    );
+}
