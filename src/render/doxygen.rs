@@ -162,9 +162,10 @@ pub fn text(s: &str) -> String {
 /// the navigation), where its escapes work, and in the HTML `<title>`, where it copies most of
 /// them verbatim (`\&` shows as `\&amp;`, `\#` as `\#`). So a title escapes only what Doxygen
 /// would otherwise read: `\` `@` (commands), `<` `>` (tags), `&` as the entity `&amp;` (right in
-/// both places), and before a name only (an ASCII letter, `_` or any non-ASCII character) `%`
-/// (`%word` drops the `%`), `#` and a `::` that starts a word (`#word` and `::word` are link
-/// requests). `$`, `"`, `a::b`, `#1` and dash runs stay plain: titles get no typographic dashes.
+/// both places), before a name only (an ASCII letter, `_` or any non-ASCII character) `%`
+/// (`%word` drops the `%`), `#` and a `::` that starts a word (`#word`, `#~word` and `::word`
+/// are link requests), `$` before `Word:` (an RCS keyword), and a leading `-` (a list). `$x`,
+/// `"`, `a::b`, `#1` and dash runs stay plain: titles get no typographic dashes.
 /// Line breaks and tabs become spaces; control characters are dropped.
 pub fn title(s: &str) -> String {
     let one_line = s.split_whitespace().collect::<Vec<_>>().join(" ");
@@ -178,7 +179,19 @@ pub fn title(s: &str) -> String {
     for (i, &ch) in chars.iter().enumerate() {
         let escaped = match ch {
             '\\' | '@' | '<' | '>' => true,
-            '%' | '#' => name_start(i + 1),
+            '%' => name_start(i + 1),
+            // `#~Name` is a link request too (a destructor).
+            '#' => name_start(i + 1) || chars.get(i + 1) == Some(&'~'),
+            // `$Word: … $` is an RCS keyword.
+            '$' => {
+                let word = chars[i + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_alphanumeric() || **c == '_')
+                    .count();
+                word > 0 && chars.get(i + 1 + word) == Some(&':')
+            }
+            // A leading `-` (or `-#`) starts a list.
+            '-' => i == 0,
             // The first colon of a `::` that starts a word (not `a::b`).
             ':' => {
                 chars.get(i + 1) == Some(&':')
@@ -412,8 +425,12 @@ fn system_page(
     let page = cat.system_page(si);
     let w = super::wiring::system_wiring(cat, s, lang, &|_, _| String::new());
     let caption = super::system_text::wiring_caption(s, lang);
-    let svg =
-        super::html::standalone_system_diagram(&caption, &w.instances, &w.connectors, &w.notes());
+    let svg = super::html::standalone_system_diagram(
+        &caption,
+        &w.instances,
+        &w.connectors,
+        w.drawing_notes(),
+    );
     // No caption: the section's heading says what it is, and the drawing has its title.
     let drawing = |out: &mut String| {
         d!(out, "\\image html {}", page.file_name("svg"));
@@ -791,6 +808,10 @@ mod tests {
         assert_eq!(
             title("A & B #1 #team 100% %d %1 $x \"q\" a--b \\ @ #_x #日本 ::h RTC::X"),
             r#"A &amp; B #1 \#team 100% \%d %1 $x "q" a--b \\ \@ \#_x \#日本 \::h RTC::X"#
+        );
+        assert_eq!(
+            title("- R&D $Date: 1 $ $x #~Foo a-b"),
+            r"\- R&amp;D \$Date: 1 $ $x \#~Foo a-b"
         );
         assert_eq!(title(""), "?");
     }

@@ -267,8 +267,9 @@ fn doxygen_keeps_metacharacters_literal() {
 }
 
 /// Page titles show names as written: in the page heading always; in the HTML `<title>` (where
-/// Doxygen copies most escapes verbatim) for everything but `\`, `@`, and `%`, `#`, `::`
-/// before a name, which Doxygen would read and so stay escaped there.
+/// Doxygen copies most escapes verbatim) for everything but `\`, `@`, `%`, `#`, `::` before a
+/// name, `$Word:` (an RCS keyword) and a leading `-` (a list), which Doxygen would read and so
+/// stay escaped there.
 #[test]
 fn doxygen_titles_show_names_as_written() {
     if !have("doxygen") {
@@ -277,7 +278,7 @@ fn doxygen_titles_show_names_as_written() {
     let d = tempfile::tempdir().expect("tempdir");
     let input = d.path().join("in");
     let vendor = "R&D <Lab> 100% #1 $x \"q\" a--b RTC::X 計測";
-    let category = "#team %d ::c @v \\n";
+    let category = "- #team %d ::c @v \\n $Date: 1 $ #~Foo";
     let xml = common::xml_profile("Titles", &[])
         .replace(
             "rtc:vendor=\"Test\"",
