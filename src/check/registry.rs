@@ -229,7 +229,7 @@ pub static RULES: &[Rule] = &[
         severity: Info,
         name: "source-file-skipped",
         summary: "a symbolic link or submodule in a source repository is not followed",
-        explanation: "Files of `[[source]]` repositories are read from git objects at the pinned commit, never from a checked-out work tree. A symbolic link (mode 120000) could point anywhere on the machine that builds, and a submodule is another repository at another commit: neither is followed, as a symbolic link in an input directory is not. This note names each such file that rtcdoc would otherwise have read (a profile, an IDL file, a README or an image), each submodule, and each link named as a folder is (no extension: it may stand for a folder of profiles, and nothing behind it is read).",
+        explanation: "Files of `[[source]]` repositories are read from git objects at the pinned commit, never from a checked-out work tree. A symbolic link (mode 120000) could point anywhere on the machine that builds, and a submodule is another repository at another commit: neither is followed, as a symbolic link in an input directory is not. This note names each such file that rtcdoc would otherwise have read (a profile, an IDL file, a README or an image), each submodule, and each link without an extension (it may stand for a folder of profiles; nothing behind it is read).",
         spec: "rtcdoc's reading of git repositories",
         hint: "commit the file or folder itself instead of a link; add a submodule's repository as a [[source]] of its own",
     },

@@ -980,14 +980,14 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
                 continue;
             }
             // A submodule is noted whatever its name (a folder of another repository); a link
-            // when rtcdoc would read a file of its name or when it is named as folders are (it
+            // when rtcdoc would read a file of its name or when its name has no extension (it
             // may stand for a folder of profiles); a file only when rtcdoc reads its name.
             match (mode, ty) {
                 (Some("120000"), _) if !wanted(rel) && folder_shaped(rel) => notes.push(
                     Diagnostic::info(
                         codes::SOURCE_SKIPPED,
                         &shown,
-                        "a symbolic link named as a folder is; not followed, nothing behind it is read (as in a directory)",
+                        "a symbolic link without an extension (it may stand for a folder); not followed, nothing behind it is read (as in a directory)",
                     )
                     .with_hint("commit the folder itself instead of a link, or add the repository it belongs to as a [[source]] of its own"),
                 ),

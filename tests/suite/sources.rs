@@ -809,7 +809,7 @@ fn symbolic_links_and_submodules_are_not_followed() {
         "{err}"
     );
     assert!(
-        err.contains("repo/shared: info[RTC015]: a symbolic link named as a folder is; not followed, nothing behind it is read"),
+        err.contains("repo/shared: info[RTC015]: a symbolic link without an extension (it may stand for a folder); not followed, nothing behind it is read"),
         "{err}"
     );
     assert!(!err.contains("notes.txt"), "{err}");
