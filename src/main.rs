@@ -998,7 +998,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
             // An empty graph is written (a script expects one), with the reason on stderr.
             eprintln!("note: {}", lang.t("dataflow_none"));
         }
-        return write_graph(args, &name, &name, (&inst, &conns, &[]));
+        return write_graph(args, &name, &name, (&inst, &conns, (&[], None)));
     }
     if let Some(want) = &args.component {
         let cat = &loaded.catalog;
@@ -1010,7 +1010,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let (inst, conns) = nb::wiring(cat, ci, &rows, lang, &|_, _| String::new());
         let name = cat[ci].display_name();
         let title = format!("{} {name}", lang.t("neighbourhood_of"));
-        return write_graph(args, &title, &title, (&inst, &conns, &[]));
+        return write_graph(args, &title, &title, (&inst, &conns, (&[], None)));
     }
     let systems = &loaded.catalog.systems;
     // A file path as the shell completes it (from the current directory, not the input).
@@ -1080,7 +1080,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
         args,
         name,
         &format!("{} {name}", lang.t("sys_wiring")),
-        (&w.instances, &w.connectors, &w.notes()),
+        (&w.instances, &w.connectors, w.drawing_notes()),
     )
 }
 
@@ -1170,17 +1170,23 @@ fn write_graph(
     args: &GraphArgs,
     name: &str,
     title: &str,
-    (inst, conns, not_drawn): (
+    (inst, conns, notes): (
         &[rtcdoc::render::wiring::WireInstance],
         &[rtcdoc::render::wiring::WireConnector],
-        &[String],
+        rtcdoc::render::wiring::DrawingNotes<'_>,
     ),
 ) -> anyhow::Result<ExitCode> {
     use rtcdoc::render::{html, wiring};
+    let all: Vec<String> = notes
+        .0
+        .iter()
+        .cloned()
+        .chain(notes.1.map(str::to_string))
+        .collect();
     let text = match args.format {
-        GraphFormat::Dot => wiring::to_dot(name, inst, conns, not_drawn),
-        GraphFormat::Mermaid => wiring::to_mermaid(name, inst, conns, not_drawn),
-        GraphFormat::Svg => html::standalone_system_diagram(title, inst, conns, not_drawn),
+        GraphFormat::Dot => wiring::to_dot(name, inst, conns, &all),
+        GraphFormat::Mermaid => wiring::to_mermaid(name, inst, conns, &all),
+        GraphFormat::Svg => html::standalone_system_diagram(title, inst, conns, notes),
     };
     match &args.output {
         Some(path) => std::fs::write(path, text.as_bytes())

@@ -548,9 +548,10 @@ fn system_page(
             &caption,
             &w.instances,
             &w.connectors,
-            &w.notes(),
+            w.drawing_notes(),
         )),
     };
+    let notes = w.notes();
     let drawing = |out: &mut String| {
         match diagrams {
             super::DiagramFormat::Mermaid => {
@@ -559,7 +560,7 @@ fn system_page(
                     &s.display_name(),
                     &w.instances,
                     &w.connectors,
-                    &w.notes(),
+                    &notes,
                 ));
                 w!(out, "```");
             }
@@ -569,7 +570,6 @@ fn system_page(
         }
         w!(out);
     };
-    let notes = w.notes();
     let targets = super::system_text::Targets::new(&head, &caption, &drawing, &notes);
     super::system_text::system_body::<Md>(&mut out, cat, s, lang, site, &targets);
     (out, svg)

@@ -43,6 +43,10 @@ pub struct WireInstance {
     pub role: Role,
 }
 
+/// The notes under a drawing on its own: the connectors it leaves out (warnings), and the
+/// legend of its outlines (an explanation).
+pub type DrawingNotes<'a> = (&'a [String], Option<&'a str>);
+
 /// An instance's part in composite components: a composite (a `compositeType` other than
 /// `None`, or participants) is drawn with a double outline, a member (a participant of
 /// another instance) with a dashed one; the accessible name says which.
@@ -92,6 +96,11 @@ impl SystemWiring {
     /// The sentences under the drawing: the connectors not drawn, then the legend.
     pub fn notes(&self) -> Vec<String> {
         self.not_drawn.iter().chain(&self.legend).cloned().collect()
+    }
+    /// The notes as a drawing on its own writes them: the connectors not drawn (warnings), and
+    /// the legend (an explanation).
+    pub fn drawing_notes(&self) -> DrawingNotes<'_> {
+        (&self.not_drawn, self.legend.as_deref())
     }
 }
 
@@ -165,42 +174,7 @@ pub fn system_wiring(
                     .map(str::to_string)
             })
             .unwrap_or_default();
-        // A composite names its type and members; a member the composites it belongs to.
-        let members: Vec<&str> = c
-            .participants
-            .iter()
-            .filter_map(|t| non_empty(&t.instance_name))
-            .collect();
-        let kind = non_empty(&c.composite_type).filter(|t| *t != "None");
-        let member_of: Vec<&str> = p
-            .components
-            .iter()
-            .filter(|k| {
-                k.participants
-                    .iter()
-                    .any(|t| non_empty(&t.instance_name) == Some(iname.as_str()))
-            })
-            .filter_map(|k| non_empty(&k.instance_name))
-            .collect();
-        let role = Role {
-            composite: kind.is_some() || !members.is_empty(),
-            member: !member_of.is_empty(),
-        };
-        let mut about = lang.t("instance").to_string();
-        if let Some(kind) = kind {
-            about.push_str(&format!(", {}: {kind}", lang.t("sys_composite")));
-        }
-        if !members.is_empty() {
-            about.push_str(&format!(
-                ", {}: {}",
-                lang.t("sys_members"),
-                members.join(", ")
-            ));
-        }
-        if !member_of.is_empty() {
-            let of = lang.t("sys_member_of").trim_end_matches(':');
-            about.push_str(&format!(", {of}: {}", member_of.join(", ")));
-        }
+        let (role, about) = composite_role(p, c, &iname, lang);
         wire.push(WireInstance {
             // The accessible name starts with the box's visible text (WCAG 2.5.3).
             label: if component.is_empty() {
@@ -226,25 +200,92 @@ pub fn system_wiring(
     }
 }
 
+/// Instance `c`'s part in composite components of system profile `p` and the words its
+/// accessible name gets for it (`Instance, Composite type: PeriodicECShared, Members: A0, B0`
+/// or `Instance, member of: CompositeRTC`).
+fn composite_role(
+    p: &crate::model::system::RtSystem,
+    c: &crate::model::system::SystemComponent,
+    iname: &str,
+    lang: Lang,
+) -> (Role, String) {
+    // A composite names its type and members; a member the composites it belongs to.
+    // Each name once (a file may list a participant twice); a composite without a name
+    // still makes its members members.
+    let once = |names: &mut Vec<&'_ str>| {
+        let mut seen = std::collections::HashSet::new();
+        names.retain(|n| seen.insert(*n));
+    };
+    let mut members: Vec<&str> = c
+        .participants
+        .iter()
+        .filter_map(|t| non_empty(&t.instance_name))
+        .collect();
+    once(&mut members);
+    let kind = non_empty(&c.composite_type).filter(|t| *t != "None");
+    let composites: Vec<&crate::model::system::SystemComponent> = p
+        .components
+        .iter()
+        .filter(|k| {
+            k.participants
+                .iter()
+                .any(|t| non_empty(&t.instance_name) == Some(iname))
+        })
+        .collect();
+    let mut member_of: Vec<&str> = composites
+        .iter()
+        .filter_map(|k| non_empty(&k.instance_name))
+        .collect();
+    once(&mut member_of);
+    let role = Role {
+        composite: kind.is_some() || !c.participants.is_empty(),
+        member: !iname.is_empty() && !composites.is_empty(),
+    };
+    let mut about = lang.t("instance").to_string();
+    if let Some(kind) = kind {
+        about.push_str(&format!(", {}: {kind}", lang.t("sys_composite")));
+    }
+    if !members.is_empty() {
+        about.push_str(&format!(
+            ", {}: {}",
+            lang.t("sys_members"),
+            members.join(", ")
+        ));
+    }
+    if !member_of.is_empty() {
+        let of = lang.t("sys_member_of").trim_end_matches(':');
+        about.push_str(&format!(", {of}: {}", member_of.join(", ")));
+    }
+    (role, about)
+}
+
 /// What the outlines of composite components and their members mean, naming them
 /// (`Double outline: composite component (Planner0); dashed outline: member of a composite
 /// (Camera0)`); `None` when the system has none.
 fn composite_legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
-    let names = |pick: fn(Role) -> bool| {
-        let n: Vec<&str> = wire
-            .iter()
-            .filter(|w| pick(w.role))
-            .map(|w| w.name.as_str())
-            .collect();
-        n.join(", ")
+    let part = |key: &str, pick: fn(Role) -> bool| {
+        if !wire.iter().any(|w| pick(w.role)) {
+            return None;
+        }
+        // The named ones, each once (an instance may have no name, or share one).
+        let mut names: Vec<&str> = Vec::new();
+        for w in wire.iter().filter(|w| pick(w.role) && !w.name.is_empty()) {
+            if !names.contains(&w.name.as_str()) {
+                names.push(&w.name);
+            }
+        }
+        Some(if names.is_empty() {
+            lang.t(key).to_string()
+        } else {
+            format!("{} ({})", lang.t(key), names.join(", "))
+        })
     };
     let parts: Vec<String> = [
-        ("sys_legend_composite", names(|r| r.composite)),
-        ("sys_legend_member", names(|r| r.member)),
+        part("sys_legend_composite", |r| r.composite),
+        part("sys_legend_member", |r| r.member),
     ]
     .into_iter()
-    .filter(|(_, n)| !n.is_empty())
-    .map(|(key, n)| format!("{} ({n})", lang.t(key)))
+    .flatten()
     .collect();
     (!parts.is_empty()).then(|| parts.join("; "))
 }
@@ -432,80 +473,7 @@ pub fn to_dot(
         );
     }
     for (i, it) in inst.iter().enumerate() {
-        let left: Vec<usize> = (0..it.ports.len())
-            .filter(|&k| it.ports[k].class == "in")
-            .collect();
-        let right: Vec<usize> = (0..it.ports.len())
-            .filter(|&k| it.ports[k].class != "in")
-            .collect();
-        // A composite: its table inside a second outline; a member: a dashed outline.
-        let dashed = if it.role.member {
-            " style=\"dashed\""
-        } else {
-            ""
-        };
-        let _ = write!(s, "  n{i} [label=<");
-        if it.role.composite {
-            let _ = write!(
-                s,
-                "<table border=\"1\" cellborder=\"0\" cellspacing=\"2\" cellpadding=\"0\"{dashed}><tr><td border=\"1\">"
-            );
-        }
-        let _ = write!(
-            s,
-            "<table border=\"{}\" cellborder=\"0\" cellspacing=\"0\" cellpadding=\"3\"{}><tr><td colspan=\"2\"><b>{}</b>",
-            if it.role.composite { "0" } else { "1" },
-            if it.role.composite { "" } else { dashed },
-            dot_html(&it.name)
-        );
-        if !it.component.is_empty() {
-            let _ = write!(
-                s,
-                "<br/><font point-size=\"9\">{}</font>",
-                dot_html(&it.component)
-            );
-        }
-        s.push_str("</td></tr>");
-        for r in 0..left.len().max(right.len()) {
-            s.push_str("<tr>");
-            for (list, align) in [(&left, "left"), (&right, "right")] {
-                match list.get(r) {
-                    Some(&k) => {
-                        let p = &it.ports[k];
-                        let mark = match p.class {
-                            "in" => "▶ ",
-                            "service" => "◯ ",
-                            _ => "",
-                        };
-                        let name = if p.unknown {
-                            format!("<i>{}</i> ?", dot_html(&p.name))
-                        } else {
-                            dot_html(&p.name)
-                        };
-                        let _ = write!(
-                            s,
-                            "<td port=\"p{k}\" align=\"{align}\">{}{}{}</td>",
-                            if align == "left" { mark } else { "" },
-                            name,
-                            if align == "right" && p.class == "out" {
-                                " ▶"
-                            } else if align == "right" && p.class == "service" {
-                                " ◯"
-                            } else {
-                                ""
-                            }
-                        );
-                    }
-                    None => s.push_str("<td></td>"),
-                }
-            }
-            s.push_str("</tr>");
-        }
-        s.push_str("</table>");
-        if it.role.composite {
-            s.push_str("</td></tr></table>");
-        }
-        s.push_str(">];\n");
+        dot_node(&mut s, i, it);
     }
     for c in conns {
         let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {
@@ -538,6 +506,91 @@ pub fn to_dot(
     }
     s.push_str("}\n");
     s
+}
+
+/// Node `n<i>` of the DOT graph: instance `it` as an HTML-like table, its name and component
+/// on top, in-ports left and other ports right (each a `port` of the table); a composite inside
+/// a second outline, a member dashed.
+fn dot_node(s: &mut String, i: usize, it: &WireInstance) {
+    let left: Vec<usize> = (0..it.ports.len())
+        .filter(|&k| it.ports[k].class == "in")
+        .collect();
+    let right: Vec<usize> = (0..it.ports.len())
+        .filter(|&k| it.ports[k].class != "in")
+        .collect();
+    // A composite: its table inside a second outline; a member: a dashed outline.
+    let dashed = if it.role.member {
+        " style=\"dashed\""
+    } else {
+        ""
+    };
+    let _ = write!(s, "  n{i} [label=<");
+    if it.role.composite {
+        let _ = write!(
+            s,
+            "<table border=\"1\" cellborder=\"0\" cellspacing=\"2\" cellpadding=\"0\"{dashed}><tr><td border=\"1\">"
+        );
+    }
+    let _ = write!(
+        s,
+        "<table border=\"{}\" cellborder=\"0\" cellspacing=\"0\" cellpadding=\"3\"{}><tr><td colspan=\"2\"><b>{}</b>",
+        if it.role.composite { "0" } else { "1" },
+        if it.role.composite { "" } else { dashed },
+        // An empty `<b></b>` is a syntax error to Graphviz.
+        if it.name.is_empty() {
+            " ".to_string()
+        } else {
+            dot_html(&it.name)
+        }
+    );
+    if !it.component.is_empty() {
+        let _ = write!(
+            s,
+            "<br/><font point-size=\"9\">{}</font>",
+            dot_html(&it.component)
+        );
+    }
+    s.push_str("</td></tr>");
+    for r in 0..left.len().max(right.len()) {
+        s.push_str("<tr>");
+        for (list, align) in [(&left, "left"), (&right, "right")] {
+            match list.get(r) {
+                Some(&k) => {
+                    let p = &it.ports[k];
+                    let mark = match p.class {
+                        "in" => "▶ ",
+                        "service" => "◯ ",
+                        _ => "",
+                    };
+                    let name = if p.unknown {
+                        format!("<i>{}</i> ?", dot_html(&p.name))
+                    } else {
+                        dot_html(&p.name)
+                    };
+                    let _ = write!(
+                        s,
+                        "<td port=\"p{k}\" align=\"{align}\">{}{}{}</td>",
+                        if align == "left" { mark } else { "" },
+                        name,
+                        if align == "right" && p.class == "out" {
+                            " ▶"
+                        } else if align == "right" && p.class == "service" {
+                            " ◯"
+                        } else {
+                            ""
+                        }
+                    );
+                }
+                None => s.push_str("<td></td>"),
+            }
+        }
+        s.push_str("</tr>");
+    }
+    s.push_str("</table>");
+    if it.role.composite {
+        s.push_str("</td></tr></table>");
+    }
+    s.push_str(">];\n");
 }
 
 /// Escapes text for a quoted Mermaid label: Mermaid's entity codes for the characters that
@@ -581,25 +634,22 @@ pub fn to_mermaid(
                 mermaid_str(&it.component)
             )
         };
-        let _ = writeln!(s, "  n{i}[\"{label}\"]");
+        // A composite a subroutine node (double lines at its sides).
+        let (open, close) = if it.role.composite {
+            ("[[", "]]")
+        } else {
+            ("[", "]")
+        };
+        let _ = writeln!(s, "  n{i}{open}\"{label}\"{close}");
     }
-    // A composite's node a thick outline, a member's a dashed one.
-    for (class, style, pick) in [
-        (
-            "composite",
-            "stroke-width:4px",
-            (|r: Role| r.composite) as fn(Role) -> bool,
-        ),
-        ("member", "stroke-dasharray:6 3", |r: Role| r.member),
-    ] {
-        let nodes: Vec<String> = (0..inst.len())
-            .filter(|&i| pick(inst[i].role))
-            .map(|i| format!("n{i}"))
-            .collect();
-        if !nodes.is_empty() {
-            let _ = writeln!(s, "  classDef {class} {style}");
-            let _ = writeln!(s, "  class {} {class}", nodes.join(","));
-        }
+    // A member's node a dashed outline.
+    let members: Vec<String> = (0..inst.len())
+        .filter(|&i| inst[i].role.member)
+        .map(|i| format!("n{i}"))
+        .collect();
+    if !members.is_empty() {
+        let _ = writeln!(s, "  classDef member stroke-dasharray:6 3");
+        let _ = writeln!(s, "  class {} member", members.join(","));
     }
     for c in conns {
         let (Some(a), Some(b)) = (inst.get(c.from.0), inst.get(c.to.0)) else {

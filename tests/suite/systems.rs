@@ -1334,7 +1334,7 @@ fn a_composite_instance_lists_its_members() {
     let mmd = common::rtcdoc(&["graph", "in/Comp.xml", "-f", "mermaid"], dir.path());
     let mmd = String::from_utf8_lossy(&mmd.stdout);
     assert!(
-        mmd.contains("  classDef composite stroke-width:4px\n  class n3 composite\n"),
+        mmd.contains("  n3[[\"CompositeRTC<br/><small>CompositeRTC</small>\"]]\n"),
         "{mmd}"
     );
     assert!(
@@ -1351,4 +1351,62 @@ fn a_composite_instance_lists_its_members() {
     assert!(dot.contains(legend), "{dot}");
     // The legend is no note on stderr (those name connectors left out).
     assert!(!note.contains("outline"), "{note}");
+}
+
+/// An unnamed composite (a `Grouping`) with a connector that cannot be drawn: the drawing on
+/// its own keeps the connector's note a warning and the legend an explanation, the legend
+/// names each instance once and none by an empty name, and DOT gives Graphviz a label it
+/// reads.
+#[test]
+fn an_unnamed_composite_and_a_connector_not_drawn() {
+    let dir = tempfile::tempdir().unwrap();
+    let comp = |name: &str, kind: &str, inner: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Lab:Test:C:1.0.0" rts:instanceName="{name}" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="true" rts:compositeType="{kind}"><rts:DataPorts rts:name="{name}.out"/>{inner}</rts:Components>"#
+        )
+    };
+    let part = r#"<rts:Participants><rts:Participant rts:instanceName="M0" rts:componentId="RTC:Lab:Test:C:1.0.0"/></rts:Participants><rts:Participants><rts:Participant rts:instanceName="M0" rts:componentId="RTC:Lab:Test:C:1.0.0"/></rts:Participants>"#;
+    let conn = r#"<rts:DataPortConnectors rts:connectorId="c1" rts:name="c1" rts:dataType="IDL:RTC/TimedLong:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:portName="M0.out" rts:instanceName="M0" rts:componentId="RTC:Lab:Test:C:1.0.0"/><rts:targetDataPort rts:portName="Nobody.in" rts:instanceName="Nobody" rts:componentId="RTC:Lab:Test:C:1.0.0"/></rts:DataPortConnectors>"#;
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Un:1.0" rts:version="0.2">{}{}{conn}</rts:RtsProfile>"#,
+        comp("M0", "None", ""),
+        comp("", "Grouping", part),
+    );
+    common::write(dir.path(), "in/Un.xml", &xml);
+    let svg = common::rtcdoc(&["graph", "in/Un.xml", "-f", "svg"], dir.path());
+    let svg = String::from_utf8_lossy(&svg.stdout);
+    let text = |class: &str| -> Vec<&str> {
+        svg.split(&format!(r#"<text class="{class}" x="8""#))
+            .skip(1)
+            .map(|t| &t[t.find('>').unwrap() + 1..t.find("</text>").unwrap()])
+            .collect()
+    };
+    assert_eq!(text("not-drawn").len(), 1, "{svg}");
+    assert!(text("not-drawn")[0].starts_with("Not drawn: c1"), "{svg}");
+    assert_eq!(
+        text("legend"),
+        ["Double outline: composite component; dashed outline: member of a composite (M0)"],
+        "{svg}"
+    );
+    let dot = common::rtcdoc(&["graph", "in/Un.xml", "-f", "dot"], dir.path());
+    let dot = String::from_utf8_lossy(&dot.stdout).into_owned();
+    assert!(dot.contains("<b> </b>"), "{dot}");
+    if common::tool_available("dot") {
+        let out = std::process::Command::new("dot")
+            .args(["-Tsvg", "-o", "/dev/null"])
+            .stdin(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .and_then(|mut c| {
+                use std::io::Write as _;
+                c.stdin.take().expect("stdin").write_all(dot.as_bytes())?;
+                c.wait_with_output()
+            })
+            .expect("run dot");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
 }

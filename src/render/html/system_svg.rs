@@ -137,7 +137,7 @@ pub fn system_diagram_with(
     effort: Effort,
     class: &str,
 ) -> String {
-    draw(title, inst, conns, (effort, class), &[])
+    draw(title, inst, conns, (effort, class), (&[], None))
 }
 
 /// Line height and font size of the notes under a drawing.
@@ -151,8 +151,9 @@ fn draw(
     inst: &[WireInstance],
     conns: &[WireConnector],
     (effort, class): (Effort, &str),
-    notes: &[String],
+    (not_drawn, legend): crate::render::wiring::DrawingNotes<'_>,
 ) -> String {
+    let notes: Vec<&str> = not_drawn.iter().map(String::as_str).chain(legend).collect();
     let nodes: Vec<Node> = inst.iter().map(WireInstance::node).collect();
     let edges: Vec<Edge> = conns.iter().map(WireConnector::edge).collect();
     let mut l = layout_with(&nodes, &edges, effort);
@@ -200,11 +201,9 @@ fn draw(
     for (it, b) in inst.iter().zip(&l.nodes) {
         instance(&mut s, it, b);
     }
-    // The legend of composite outlines is the last note when there is one
-    // ([`crate::render::wiring::SystemWiring::notes`]): an explanation, not a warning.
-    let legend = inst.iter().any(|i| i.role.composite || i.role.member);
+    // The legend of composite outlines, last, is an explanation, not a warning.
     for (k, n) in notes.iter().enumerate() {
-        s.push_str(if legend && k + 1 == notes.len() {
+        s.push_str(if k >= not_drawn.len() {
             r#"<text class="legend" x="8""#
         } else {
             r#"<text class="not-drawn" x="8""#
@@ -333,7 +332,7 @@ pub fn standalone_system_diagram(
     title: &str,
     inst: &[WireInstance],
     conns: &[WireConnector],
-    notes: &[String],
+    notes: crate::render::wiring::DrawingNotes<'_>,
 ) -> String {
     // No links: the pages they would point to are not beside the file.
     let bare: Vec<WireInstance> = inst

@@ -126,7 +126,7 @@ pub(super) fn drawings(site: &Site<'_>) -> Vec<(String, String)> {
             let title = format!("{} {}", site.lang.t("sys_wiring"), s.display_name());
             (
                 drawing_path(site.catalog, s),
-                standalone_system_diagram(&title, &w.instances, &w.connectors, &w.notes()),
+                standalone_system_diagram(&title, &w.instances, &w.connectors, w.drawing_notes()),
             )
         })
         .collect()
