@@ -213,6 +213,18 @@ try {
       inForm: !!(document.activeElement && document.activeElement.closest('form.search')),
     }));
     report.popup = { opened, links, closed: after.hidden, focus_in_form: after.inForm };
+    // Printed (a page about 720 px wide): tables stay tables, their column headers shown.
+    const printed = pageKinds().find((p) => p.startsWith('components/'));
+    if (printed) {
+      await page.setViewport({ width: 718, height: 1000 });
+      await page.emulateMediaType('print');
+      await page.goto(url(printed), { waitUntil: 'load' });
+      report.print = await page.evaluate(() => Array.from(document.querySelectorAll('.table-wrap table')).map((t) => ({
+        display: getComputedStyle(t).display,
+        head: t.tHead ? getComputedStyle(t.tHead).position : 'none',
+      })));
+      await page.emulateMediaType(null);
+    }
     // The index's filter says how many rows it leaves, and what to do when it leaves none.
     const filterStatus = async (typed, wide) => {
       await page.goto(url('index.html'), { waitUntil: 'load' });

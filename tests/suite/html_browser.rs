@@ -289,6 +289,16 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
             "Enter opens the first result: {s}"
         );
     }
+    if let Some(tables) = report.get("print").and_then(|p| p.as_array()) {
+        assert!(!tables.is_empty(), "no table on the printed page");
+        for t in tables {
+            assert_eq!(t["display"], "table", "printed tables stay tables: {t}");
+            assert_ne!(
+                t["head"], "absolute",
+                "printed column headers are shown: {t}"
+            );
+        }
+    }
     if let Some(p) = report.get("popup") {
         assert_eq!(p["opened"], true, "the header search shows results: {p}");
         assert_eq!(p["focus_in_form"], false, "Tab went past the results: {p}");
