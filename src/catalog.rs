@@ -148,8 +148,9 @@ pub(crate) fn folder_qualifiers(sources: &[&str]) -> Vec<String> {
 /// Component slugs and qualifiers. A name used once keeps its plain slug; components sharing
 /// a name are told apart by their language when it is theirs alone among them
 /// (`robotcontroller-python`), else by language and the folders that differ
-/// (`robotcontroller-python-openrtm-rtm-tutorial-ev3`), else by the file name; a number only
-/// when all of that still collides.
+/// (`robotcontroller-python-openrtm-rtm-tutorial-ev3`; the language is left out only when
+/// none of the group is told apart by it), else by the file name; a number only when all of
+/// that still collides.
 fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
     let base: Vec<String> = loaded
         .par_iter()
@@ -175,6 +176,9 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
             // One left without a language of its own: the others are told apart already.
             continue;
         }
+        // Some named by their language alone: the others say theirs too, so that one group
+        // reads one way (`C++, projects` beside `Python`, not `projects`).
+        let by_language = rest.len() < idx.len();
         let mut langs: Vec<Option<String>> = rest.iter().map(|&i| lang(i)).collect();
         langs.sort();
         langs.dedup();
@@ -193,7 +197,7 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
             };
             for (&i, place) in part.iter().zip(places) {
                 qualifier[i] = Some(match l {
-                    Some(l) if langs.len() > 1 => format!("{l}, {place}"),
+                    Some(l) if langs.len() > 1 || by_language => format!("{l}, {place}"),
                     _ => place,
                 });
             }

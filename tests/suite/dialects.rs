@@ -438,6 +438,57 @@ fn facets_fold_spellings_and_variants_get_language_slugs() {
     assert_eq!(cat.components[2].qualifier, None);
 }
 
+/// A group of one name where one profile is told apart by its language and the others (of
+/// one language) by place reads one way: the others say their language too.
+#[test]
+fn a_group_told_apart_by_language_and_place_names_the_language_throughout() {
+    use rtcdoc::catalog::{Catalog, LoadedProfile};
+    use rtcdoc::model::Language;
+    let comp = |lang: &str, source: &str| {
+        let mut p = Profile::default();
+        p.basic_info.name = Some("MyFirst".into());
+        p.language = Some(Language {
+            kind: Some(lang.into()),
+            ..Default::default()
+        });
+        LoadedProfile {
+            source: source.into(),
+            format: rtcdoc::parse::SourceFormat::Xml,
+            profile: Box::new(p),
+        }
+    };
+    let cat = Catalog::build(
+        vec![
+            comp("C++", "Components/MyFirst/RTC.xml"),
+            comp("C++", "projects/test/MyFirst/RTC.xml"),
+            comp("Python", "py/MyFirst/RTC.xml"),
+        ],
+        vec![],
+    );
+    let names: Vec<String> = cat
+        .components
+        .iter()
+        .map(|c| c.display_name().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "MyFirst (C++, Components)",
+            "MyFirst (C++, projects)",
+            "MyFirst (Python)"
+        ]
+    );
+    let slugs: Vec<&str> = cat.components.iter().map(|c| c.slug.as_str()).collect();
+    assert_eq!(
+        slugs,
+        [
+            "myfirst-cpp-components",
+            "myfirst-cpp-projects",
+            "myfirst-python"
+        ]
+    );
+}
+
 /// The same profile in the current spellings: `rtcdoc diff` finds no change (the older
 /// spellings are read into the fields they mean; which ones a file used is no value of it).
 #[test]
