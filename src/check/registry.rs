@@ -697,7 +697,7 @@ pub static RULES: &[Rule] = &[
         severity: Info,
         name: "system-component-missing",
         summary: "an instance's component is not in the catalogue",
-        explanation: "An instance names its component by the `RTC:vendor:category:name:version` id of the component's profile. No component profile of the input has that vendor, category and name (nor, for a damaged category, that vendor and name alone), so the system page cannot link the instance, and its ports and configuration are not checked.",
+        explanation: "An instance names its component by the `RTC:vendor:category:name:version` id of the component's profile. No component profile of the input has that vendor, category and name (nor, for a damaged category, that vendor and name alone), so the system page cannot link the instance, and its ports and configuration are not checked. An id whose name is the instance's (`RTC:AIST:Controller:RobotController0:1.0.0`, as Choreonoid saves systems) gets a hint naming the component of that vendor and category whose name is the id's name without its trailing number, when the input has one.",
         spec: "RtsProfile schema (Components id), spec 2.3.1 (id)",
         hint: "add the component's RTC.xml below the input, or correct the instance's component id",
     },

@@ -82,6 +82,11 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
                     "instance `{name}`: no component profile of the input has the id `{id}` (vendor, category and name)"
                 ),
             );
+            if let Some(hint) = instance_named_id(cat, c) {
+                if let Some(d) = sink.out.last_mut() {
+                    d.hint = Some(hint);
+                }
+            }
             continue;
         };
         if let Some(theirs) = &s.instances[i].version_drift {
@@ -224,4 +229,31 @@ fn end(
             ),
         );
     }
+}
+
+/// A hint for an instance whose id names the instance instead of its component, as Choreonoid
+/// saves it (`RTC:AIST:Controller:RobotController0:1.0.0` for an instance `RobotController0`):
+/// the component of that vendor and category whose name is the id's name without its trailing
+/// number, when the input has one.
+fn instance_named_id(cat: &Catalog, c: &crate::model::system::SystemComponent) -> Option<String> {
+    use crate::catalog::facet_key;
+    let parts = c.id_parts.as_ref()?;
+    let named = non_empty(&parts.name)?;
+    let stem = named.trim_end_matches(|ch: char| ch.is_ascii_digit());
+    if stem.is_empty() || stem == named {
+        return None;
+    }
+    let (vendor, category) = (
+        facet_key(non_empty(&parts.vendor).unwrap_or("")),
+        facet_key(non_empty(&parts.category).unwrap_or("")),
+    );
+    let k = cat.components.iter().find(|k| {
+        k.profile.name() == stem
+            && facet_key(non_empty(&k.profile.basic_info.vendor).unwrap_or("")) == vendor
+            && facet_key(non_empty(&k.profile.basic_info.category).unwrap_or("")) == category
+    })?;
+    Some(format!(
+        "the id names `{named}`, an instance's name (as Choreonoid saves it); the input has the component `{stem}` ({}, id `{}`): write that id in the system file",
+        k.source, k.id
+    ))
 }

@@ -1410,3 +1410,42 @@ fn an_unnamed_composite_and_a_connector_not_drawn() {
         );
     }
 }
+
+/// An instance whose id names the instance, as Choreonoid saves it
+/// (`RTC:Test:Cat:Ctl0:1.0.0` for instance `Ctl0` of component `Ctl`): RTC603 points at the
+/// component the input has, and writing the id it names links the instance.
+#[test]
+fn an_id_naming_the_instance_points_at_the_component() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(d, "in/Ctl/RTC.xml", &common::xml_profile("Ctl", &[]));
+    let system = |id_name: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Cho:1.0" rts:version="0.2">{}</rts:RtsProfile>"#,
+            instance_xml("Ctl0", id_name, "out")
+        )
+    };
+    common::write(d, "in/sys/Cho.xml", &system("Ctl0"));
+    let found = common::findings(d, "in", &["RTC603"]);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!(
+        found[0]["hint"],
+        "the id names `Ctl0`, an instance's name (as Choreonoid saves it); the input has the component `Ctl` (Ctl/RTC.xml, id `RTC:Test:Cat:Ctl:1.0.0`): write that id in the system file",
+        "{found:?}"
+    );
+    // Followed: no finding.
+    common::write(d, "in/sys/Cho.xml", &system("Ctl"));
+    assert_eq!(
+        common::findings(d, "in", &["RTC603"]),
+        Vec::<serde_json::Value>::new()
+    );
+    // A name that only ends in a digit, without such a component, keeps the general hint.
+    common::write(d, "in/sys/Cho.xml", &system("Other2"));
+    let found = common::findings(d, "in", &["RTC603"]);
+    assert!(
+        found[0]["hint"]
+            .as_str()
+            .is_some_and(|h| h.starts_with("add the component's RTC.xml")),
+        "{found:?}"
+    );
+}
