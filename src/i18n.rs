@@ -486,7 +486,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("sys_drift", "version drift: the catalogue has", "バージョンの相違: カタログの版は"),
     ("sys_format_version", "Profile format version", "プロファイル形式のバージョン"),
     ("sys_groups", "Groups", "グループ"),
-    ("sys_host_hidden", "host values hidden (host names, IORs, endpoints, naming paths); set show-host-data = true in rtcdoc.toml to publish them", "個のホスト情報を非表示 (ホスト名、IOR、エンドポイント、ネーミングパス)。公開するには rtcdoc.toml で show-host-data = true"),
+    ("sys_host_hidden", "host values hidden (host names, IORs, endpoints, naming paths); set show-host-data = true in rtcdoc.toml to publish them", "個のホスト情報を非表示 (ホスト名、IOR、エンドポイント、ネーミングパス)。公開するには rtcdoc.toml で show-host-data = true と設定してください"),
     ("sys_id", "System id", "システムID"),
     ("sys_in_port", "in-port", "入力ポート"),
     ("sys_instance_count", "instances", "インスタンス"),

@@ -178,16 +178,22 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
         let cname = non_empty(&c.name).unwrap_or("");
         if let Some(t) = non_empty(&c.data_type) {
             let want = canonical_type(t);
-            for (pt, port) in [&a, &b].into_iter().flatten() {
-                if *pt != want {
-                    sink.emit(
-                        r::SYSTEM_TYPE_MISMATCH,
-                        c.pos,
-                        format!(
-                            "connector `{cname}` carries `{t}`, but port {port} carries `{pt}`"
-                        ),
-                    );
-                }
+            // One finding a connector, naming each end that differs.
+            let ends: Vec<String> = [&a, &b]
+                .into_iter()
+                .flatten()
+                .filter(|(pt, _)| *pt != want)
+                .map(|(pt, port)| format!("port {port} carries `{pt}`"))
+                .collect();
+            if !ends.is_empty() {
+                sink.emit(
+                    r::SYSTEM_TYPE_MISMATCH,
+                    c.pos,
+                    format!(
+                        "connector `{cname}` carries `{t}`, but {}",
+                        ends.join(" and ")
+                    ),
+                );
             }
         } else if let (Some((ta, pa)), Some((tb, pb))) = (&a, &b) {
             if ta != tb {

@@ -942,6 +942,16 @@ fn a_connector_type_is_checked_against_the_types_the_system_records() {
     );
     assert!(mismatches(&recorded("IDL:RTC/CameraImage:1.0")).is_empty());
     assert!(mismatches(&text).is_empty());
+    // Both ends differ: one finding naming both.
+    let both = bad.replace(
+        r#"<rts:DataPorts rts:name="image"/>"#,
+        r#"<rts:DataPorts rts:name="image"><rtsExt:Properties rtsExt:name="dataport.data_type" rtsExt:value="IDL:RTC/TimedLong:1.0"/></rts:DataPorts>"#,
+    );
+    assert_ne!(both, bad);
+    assert_eq!(
+        mismatches(&both),
+        ["connector `Camera0.image_Planner0.image` carries `IDL:RTC/CameraImage:1.0`, but port Camera0.image (as the system file records it) carries `RTC::TimedLong` and port Planner0.image (as the system file records it) carries `RTC::TimedLong`"]
+    );
 }
 
 /// Several profiles with the id an instance names (a component kept in two repositories, or
