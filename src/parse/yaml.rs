@@ -1193,6 +1193,17 @@ impl Reader<'_> {
             }
             other => return self.scalar_text(other, true),
         };
+        // Every field written without a value (`year:`, `month:`, … as some generators save an
+        // unset date): no date, as if the key were absent (the required-field rule says so
+        // once), not a second finding about an incomplete one.
+        let blank = |cv: &Value| match untag_ref(cv) {
+            Value::Null => true,
+            Value::String(t) => t.trim().is_empty(),
+            _ => false,
+        };
+        if m.iter().all(|(_, cv)| blank(cv)) {
+            return None;
+        }
         let mut parts = DateParts::default();
         let mut bad = false;
         for (k, cv) in m {

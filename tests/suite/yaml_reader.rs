@@ -301,6 +301,25 @@ fn rtcbuilder_dialect_dates_null_actions_properties_occerrence() {
     assert_eq!(s(&p.version), Some("0.3"));
 }
 
+/// A date whose every field is written without a value (an unset date, as OpenRTM's own
+/// examples save it) is no date: no finding of the reader (check's RTC101 says it once); a
+/// date with some fields is still an incomplete one, kept and reported.
+#[test]
+fn a_date_of_empty_fields_is_no_date() {
+    let doc = |date: &str| {
+        format!("rtcProfile:\n  version: \"0.2\"\n  id: \"RTC:L:C:N:1.0\"\n  basicInfo:\n    name: N\n    updateDate:\n{date}")
+    };
+    let empty = parse_str(&doc(
+        "      year: \n      month: \n      day: \n      hour: \n      minute: \n      second: \n",
+    ));
+    assert!(empty.diagnostics.is_empty(), "{:#?}", empty.diagnostics);
+    assert_eq!(empty.profile.basic_info.update_date, None);
+    assert!(empty.profile.basic_info.extra.is_empty());
+    let part = parse_str(&doc("      year: 2010\n      month: \n"));
+    assert_eq!(part.diagnostics.len(), 1, "{:#?}", part.diagnostics);
+    assert!(part.diagnostics[0].message.contains("not a complete date"));
+}
+
 #[test]
 fn spec_property_spelling() {
     let p = parse_str(
