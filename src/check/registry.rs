@@ -679,7 +679,7 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "system-unknown-port",
         summary: "a connector end names a port the component does not have",
-        explanation: "A connector of an RT System profile joins a port of one instance to a port of another. When the instance's component profile is in the catalogue and has no data or service port of that name (RTSystemEditor's `Instance0.port` and the plain `port` are both read), the connector cannot be restored: the port was renamed or removed since the system was saved, or the system was saved against another version of the component.",
+        explanation: "A connector of an RT System profile joins a port of one instance to a port of another. When the instance's component profile is in the catalogue and has no data or service port of that name (RTSystemEditor's `Instance0.port` and the plain `port` are both read), the connector cannot be restored: the port was renamed or removed since the system was saved, or the system was saved against another version of the component. When the component is not in the catalogue, the ports the system file lists for the instance are the reference: a connector end naming none of them is a misspelt or stale end.",
         spec: "RtsProfile schema (DataPortConnectors, ServicePortConnectors: sourceDataPort/targetDataPort portName), spec 10.4",
         hint: "reconnect the port in RTSystemEditor and save the system again, or restore the port in the component profile",
     },

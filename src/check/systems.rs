@@ -224,8 +224,8 @@ fn end(
         );
         return;
     };
-    if let (Some(comp), None) = (cat.instance_component(s, i), &el.port) {
-        sink.emit(
+    match (cat.instance_component(s, i), &el.port) {
+        (Some(comp), None) => sink.emit(
             r::SYSTEM_UNKNOWN_PORT,
             e.pos,
             format!(
@@ -233,7 +233,30 @@ fn end(
                 comp.profile.name(),
                 comp.source
             ),
-        );
+        ),
+        // A component not in the catalogue: the ports the system file lists for the instance.
+        (None, _) => {
+            let Some(c) = s.profile.components.get(i) else {
+                return;
+            };
+            let listed: Vec<&str> = c
+                .data_ports
+                .iter()
+                .chain(&c.service_ports)
+                .map(|p| p.own_name())
+                .collect();
+            if !listed.is_empty() && !listed.contains(&port) {
+                sink.emit(
+                    r::SYSTEM_UNKNOWN_PORT,
+                    e.pos,
+                    format!(
+                        "connector end `{inst}.{port}`: instance `{inst}` lists no port `{port}` in the system file (it lists {})",
+                        listed.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+                    ),
+                );
+            }
+        }
+        _ => {}
     }
 }
 

@@ -1459,3 +1459,42 @@ fn an_id_naming_the_instance_points_at_the_component() {
         "{found:?}"
     );
 }
+
+/// A connector end naming a port its instance does not list, when the component is not in the
+/// catalogue: the system file's own port list is the reference (RTC601), as for a misspelt
+/// `Comp3_inort2` beside the listed `Comp3_inport2`; an instance that lists no ports says
+/// nothing of its connectors.
+#[test]
+fn a_connector_end_not_among_the_instances_listed_ports_is_reported() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let conn = |to: &str| {
+        format!(
+            r#"<rts:DataPortConnectors rts:connectorId="c1" rts:name="c1"><rts:sourceDataPort rts:portName="A0.out" rts:instanceName="A0" rts:componentId="RTC:Test:Cat:A:1.0.0"/><rts:targetDataPort rts:portName="B0.{to}" rts:instanceName="B0" rts:componentId="RTC:Test:Cat:B:1.0.0"/></rts:DataPortConnectors>"#
+        )
+    };
+    let system = |to: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:P:1.0" rts:version="0.2">{}{}{}</rts:RtsProfile>"#,
+            instance_xml("A0", "A", "out"),
+            instance_xml("B0", "B", "inport2"),
+            conn(to)
+        )
+    };
+    common::write(d, "in/P.xml", &system("inort2"));
+    let found = common::findings(d, "in", &["RTC601"]);
+    let messages: Vec<&str> = found.iter().filter_map(|f| f["message"].as_str()).collect();
+    assert_eq!(
+        messages,
+        ["connector end `B0.inort2`: instance `B0` lists no port `inort2` in the system file (it lists `inport2`)"]
+    );
+    common::write(d, "in/P.xml", &system("inport2"));
+    assert!(common::findings(d, "in", &["RTC601"]).is_empty());
+    // No ports listed: nothing to compare with.
+    common::write(
+        d,
+        "in/P.xml",
+        &system("inort2").replace(r#"<rts:DataPorts rts:name="B0.inport2"/>"#, ""),
+    );
+    assert!(common::findings(d, "in", &["RTC601"]).is_empty());
+}
