@@ -880,13 +880,19 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             std::fs::write(&path, config::template_in(lang, idl.as_ref()))?;
             if !cli.quiet {
                 eprintln!("wrote {}", path.display());
-                if let Some(found) = &idl {
-                    eprintln!(
+                match &idl {
+                    Some(found) => eprintln!(
                         "found OpenRTM's IDL in {} ({}); uncomment `idl-path` in {} to use it",
                         found.dir.display(),
                         found.via,
                         config::FILE_NAME
-                    );
+                    ),
+                    // Said, so that the hint that sent the user here ends somewhere.
+                    None => eprintln!(
+                        "found no OpenRTM installation's IDL (looked at $RTM_ROOT, $OPENRTM_DIR and the usual install prefixes, or those in ${}); if you have one elsewhere, set `idl-path` in {} to its rtm/idl directory",
+                        rtcdoc::init::PREFIXES_VAR,
+                        config::FILE_NAME
+                    ),
                 }
             }
             Ok(ExitCode::SUCCESS)

@@ -135,12 +135,19 @@ fn init_suggests_a_detected_openrtm_idl_directory_commented_out() {
     let json = std::fs::read_to_string(d.join("site2/catalog.json")).unwrap();
     assert!(json.contains("BasicDataType.idl"), "{json}");
 
-    // Nothing installed below the prefixes: the usual template, without the sentence.
+    // Nothing installed below the prefixes: the usual template, without the sentence; init
+    // says it found nothing, and where the directory goes.
     let empty = d.join("empty");
     std::fs::create_dir_all(&empty).unwrap();
     let out = init_with_prefixes(&["init", "other"], d, &empty);
-    assert!(out.status.success());
-    assert!(!String::from_utf8_lossy(&out.stderr).contains("found"));
+    let none = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{none}");
+    assert!(
+        none.contains("found no OpenRTM installation's IDL")
+            && none.contains("set `idl-path` in rtcdoc.toml to its rtm/idl directory"),
+        "{none}"
+    );
+    assert!(!none.contains("found OpenRTM's IDL"), "{none}");
     let text = std::fs::read_to_string(d.join("other/rtcdoc.toml")).unwrap();
     assert_eq!(text, rtcdoc::config::template());
 }
