@@ -381,26 +381,33 @@ fn dotted_and_colon_ids_are_one_id() {
     assert_eq!(loaded.catalog.components[0].display_name(), "Planner (a)");
 }
 
+/// A profile as loaded from `source`, with name, category and implementation language.
+fn loaded_profile(
+    name: &str,
+    category: &str,
+    lang: &str,
+    source: &str,
+) -> rtcdoc::catalog::LoadedProfile {
+    let mut p = Profile::default();
+    p.basic_info.name = Some(name.into());
+    p.basic_info.category = Some(category.into());
+    p.language = Some(rtcdoc::model::Language {
+        kind: Some(lang.into()),
+        ..Default::default()
+    });
+    rtcdoc::catalog::LoadedProfile {
+        source: source.into(),
+        format: rtcdoc::parse::SourceFormat::Xml,
+        profile: Box::new(p),
+    }
+}
+
 /// Categories differing only in case or spacing (`_` and `-` count as spaces) are one facet; the C++ and Python variants
 /// of one component get their language as slug and qualifier.
 #[test]
 fn facets_fold_spellings_and_variants_get_language_slugs() {
-    use rtcdoc::catalog::{Catalog, LoadedProfile};
-    use rtcdoc::model::Language;
-    let comp = |name: &str, category: &str, lang: &str, source: &str| {
-        let mut p = Profile::default();
-        p.basic_info.name = Some(name.into());
-        p.basic_info.category = Some(category.into());
-        p.language = Some(Language {
-            kind: Some(lang.into()),
-            ..Default::default()
-        });
-        LoadedProfile {
-            source: source.into(),
-            format: rtcdoc::parse::SourceFormat::Xml,
-            profile: Box::new(p),
-        }
-    };
+    use rtcdoc::catalog::Catalog;
+    let comp = loaded_profile;
     let cat = Catalog::build(
         vec![
             comp("RobotController", "Hardware Interface", "C++", "a/RTC.xml"),
@@ -442,21 +449,8 @@ fn facets_fold_spellings_and_variants_get_language_slugs() {
 /// one language) by place reads one way: the others say their language too.
 #[test]
 fn a_group_told_apart_by_language_and_place_names_the_language_throughout() {
-    use rtcdoc::catalog::{Catalog, LoadedProfile};
-    use rtcdoc::model::Language;
-    let comp = |lang: &str, source: &str| {
-        let mut p = Profile::default();
-        p.basic_info.name = Some("MyFirst".into());
-        p.language = Some(Language {
-            kind: Some(lang.into()),
-            ..Default::default()
-        });
-        LoadedProfile {
-            source: source.into(),
-            format: rtcdoc::parse::SourceFormat::Xml,
-            profile: Box::new(p),
-        }
-    };
+    use rtcdoc::catalog::Catalog;
+    let comp = |lang: &str, source: &str| loaded_profile("MyFirst", "Cat", lang, source);
     let cat = Catalog::build(
         vec![
             comp("C++", "Components/MyFirst/RTC.xml"),
