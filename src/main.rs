@@ -1048,7 +1048,17 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
     let s = match chosen.as_slice() {
         [one] => *one,
         [] if systems.is_empty() => {
-            anyhow::bail!("no RT System profile in {}", input.display())
+            // What graph can draw from components alone, with a name that works.
+            let example = loaded
+                .catalog
+                .components
+                .first()
+                .map(|c| shell_word(&c.display_name()))
+                .unwrap_or_else(|| "NAME".into());
+            anyhow::bail!(
+                "no RT System profile in {}; graph draws a component's neighbourhood (--component {example}) or the data flow between categories (--dataflow category) without one",
+                input.display()
+            )
         }
         [] => anyhow::bail!(
             "no system named {:?} in {}; the systems are: {}",

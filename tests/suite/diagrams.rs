@@ -662,3 +662,35 @@ fn a_connector_saved_from_its_in_port_flows_from_the_out_port() {
     };
     assert!(box_x("Sensor0") < box_x("Ctrl0"), "{page}");
 }
+
+/// `rtcdoc graph` on an input without RT System profiles says what it can draw instead, with
+/// a component of the input; the command it names works.
+#[test]
+fn graph_without_a_system_names_what_it_can_draw() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(
+        d,
+        "in/Cam/RTC.xml",
+        &common::xml_profile("Cam", &[("DataOutPort", "out", "RTC::TimedLong")]),
+    );
+    let o = common::rtcdoc(&["graph", "in"], d);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("no RT System profile in in; graph draws a component's neighbourhood (--component Cam) or the data flow between categories (--dataflow category) without one"), "{err}");
+    for args in [
+        ["graph", "in", "--component", "Cam"],
+        ["graph", "in", "--dataflow", "category"],
+    ] {
+        let o = common::rtcdoc(&args, d);
+        assert!(
+            o.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        assert!(
+            String::from_utf8_lossy(&o.stdout).starts_with("digraph"),
+            "{args:?}"
+        );
+    }
+}
