@@ -193,7 +193,7 @@ pub fn system_wiring(
     let (connectors, not_drawn) =
         system_connectors(s, &wire, &catalog.reversed_data_connectors(s), lang);
     SystemWiring {
-        legend: composite_legend(&wire, lang),
+        legend: legend(&wire, lang),
         instances: wire,
         connectors,
         not_drawn,
@@ -259,17 +259,18 @@ fn composite_role(
     (role, about)
 }
 
-/// What the outlines of composite components and their members mean, naming them
-/// (`Double outline: composite component (Planner0); dashed outline: member of a composite
-/// (Camera0)`); `None` when the system has none.
-fn composite_legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
-    let part = |key: &str, pick: fn(Role) -> bool| {
-        if !wire.iter().any(|w| pick(w.role)) {
+/// What the drawing's marks mean, each naming its instances: the outlines of composite
+/// components and their members, and the hollow (kind unknown) and dotted (not in the
+/// component's profile, RTC601) port squares (`Double outline: composite component (Planner0);
+/// dashed outline: member of a composite (Camera0)`); `None` when the drawing has none.
+fn legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
+    let part = |key: &str, pick: &dyn Fn(&WireInstance) -> bool| {
+        if !wire.iter().any(pick) {
             return None;
         }
         // The named ones, each once (an instance may have no name, or share one).
         let mut names: Vec<&str> = Vec::new();
-        for w in wire.iter().filter(|w| pick(w.role) && !w.name.is_empty()) {
+        for w in wire.iter().filter(|w| pick(w) && !w.name.is_empty()) {
             if !names.contains(&w.name.as_str()) {
                 names.push(&w.name);
             }
@@ -280,14 +281,25 @@ fn composite_legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
             format!("{} ({})", lang.t(key), names.join(", "))
         })
     };
+    let port = |w: &WireInstance, unknown: bool| {
+        w.ports
+            .iter()
+            .any(|p| p.unknown == unknown && (unknown || p.class == "other"))
+    };
     let parts: Vec<String> = [
-        part("sys_legend_composite", |r| r.composite),
-        part("sys_legend_member", |r| r.member),
+        part("sys_legend_composite", &|w| w.role.composite),
+        part("sys_legend_member", &|w| w.role.member),
+        part("sys_legend_other_port", &|w| port(w, false)),
+        part("sys_legend_unknown_port", &|w| port(w, true)),
     ]
     .into_iter()
     .flatten()
     .collect();
-    (!parts.is_empty()).then(|| parts.join("; "))
+    // A sentence: its first letter a capital, whichever part comes first.
+    let text = parts.join("; ");
+    let mut chars = text.chars();
+    let first = chars.next()?;
+    Some(first.to_uppercase().chain(chars).collect())
 }
 
 /// A connector as a note names it: its name and its id in brackets (`out_in [c3]`: names

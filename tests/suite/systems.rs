@@ -1139,7 +1139,12 @@ fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
         String::from_utf8(o.stdout).unwrap()
     };
     let dot = graph("dot");
-    assert!(dot.contains(&format!("label=\"{note}\\l\"")), "{dot}");
+    // The note, then the legend of the drawing's marks (here the port not in the profile).
+    let legend = "Dotted square: a port its component's profile does not have (Src0)";
+    assert!(
+        dot.contains(&format!("label=\"{note}\\l{legend}\\l\"")),
+        "{dot}"
+    );
     assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
     assert!(dot.contains("<i>nosuchport</i> ?"), "{dot}");
     let mermaid = graph("mermaid");
@@ -1395,7 +1400,7 @@ fn an_unnamed_composite_and_a_connector_not_drawn() {
     assert!(text("not-drawn")[0].starts_with("Not drawn: c1"), "{svg}");
     assert_eq!(
         text("legend"),
-        ["Double outline: composite component; dashed outline: member of a composite (M0)"],
+        ["Double outline: composite component; dashed outline: member of a composite (M0); hollow square: a port of unknown kind"],
         "{svg}"
     );
     let dot = common::rtcdoc(&["graph", "in/Un.xml", "-f", "dot"], dir.path());
