@@ -275,10 +275,16 @@ fn legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
                 names.push(&w.name);
             }
         }
-        Some(if names.is_empty() {
+        // At most five named, so that the sentence stays a line under a large system.
+        const NAMED: usize = 5;
+        let mut shown: Vec<String> = names.iter().take(NAMED).map(|n| n.to_string()).collect();
+        if names.len() > NAMED {
+            shown.push(format!("+{} {}", names.len() - NAMED, lang.t("nb_more")));
+        }
+        Some(if shown.is_empty() {
             lang.t(key).to_string()
         } else {
-            format!("{} ({})", lang.t(key), names.join(", "))
+            format!("{} ({})", lang.t(key), shown.join(", "))
         })
     };
     let port = |w: &WireInstance, unknown: bool| {

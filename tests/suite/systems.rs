@@ -1503,3 +1503,30 @@ fn a_connector_end_not_among_the_instances_listed_ports_is_reported() {
     );
     assert!(common::findings(d, "in", &["RTC601"]).is_empty());
 }
+
+/// The legend names at most five instances a mark, then how many more: under a large system
+/// it stays one line (the drawing on its own is as wide as its widest note).
+#[test]
+fn the_legend_names_five_instances_and_counts_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let instances: String = (0..7)
+        .map(|i| instance_xml(&format!("I{i}"), "Gone", "p"))
+        .collect();
+    common::write(
+        d,
+        "in/Big.xml",
+        &format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Big:1.0" rts:version="0.2">{instances}</rts:RtsProfile>"#
+        ),
+    );
+    let o = common::rtcdoc(&["graph", "in", "-f", "svg"], d);
+    let svg = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        svg.contains(r#"<text class="legend" x="8" y="#)
+            && svg.contains(
+                ">Hollow square: a port of unknown kind (I0, I1, I2, I3, I4, +2 more)</text>"
+            ),
+        "{svg}"
+    );
+}
