@@ -377,12 +377,12 @@ impl Catalog {
 
     /// The data connectors carrying type `name` (any spelling): (system, connector index).
     pub fn connectors_carrying(&self, name: &str) -> Vec<(&System, usize)> {
-        let want = crate::types::canonical_type(name);
+        let want = self.idl.canonical_name(name);
         let mut out = Vec::new();
         for s in &self.systems {
             for (k, c) in s.profile.data_port_connectors.iter().enumerate() {
                 if let Some(t) = non_empty(&c.data_type) {
-                    if crate::types::canonical_type(t) == want {
+                    if self.idl.canonical_name(t) == want {
                         out.push((s, k));
                     }
                 }

@@ -10,7 +10,6 @@ use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
 use crate::model::system::PortEnd;
 use crate::quote::Code;
-use crate::types::canonical_type;
 use std::collections::HashMap;
 
 /// Every finding over every system of the catalogue.
@@ -150,7 +149,9 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             end(cat, s, e, el, sink);
         }
     }
-    // Connector types against port types.
+    // Connector types against port types, each spelling read as the IDL defines it (a
+    // repository id with a `#pragma prefix` names the type defined under it).
+    let canonical = |t: &str| cat.idl.canonical_name(t);
     for (c, l) in p.data_port_connectors.iter().zip(&s.data_connectors) {
         let port_type = |el: &crate::catalog::systems::EndLink| -> Option<(String, String)> {
             let comp = cat.instance_component(s, el.instance?)?;
@@ -158,7 +159,7 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
                 return None;
             };
             let t = non_empty(&comp.profile.data_ports[*index].type_)?;
-            Some((canonical_type(t), format!("{}.{name}", comp.profile.name())))
+            Some((canonical(t), format!("{}.{name}", comp.profile.name())))
         };
         // A component not in the catalogue: the type the system file records for the port
         // (RTSystemEditor's `dataport.data_type`).
@@ -169,7 +170,7 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             let t = port.property("dataport.data_type")?;
             let who = non_empty(&inst.instance_name).unwrap_or("");
             Some((
-                canonical_type(t),
+                canonical(t),
                 format!("{who}.{name} (as the system file records it)"),
             ))
         };
@@ -177,7 +178,7 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
         let b = port_type(&l.target).or_else(|| recorded(&c.target, &l.target));
         let cname = non_empty(&c.name).unwrap_or("");
         if let Some(t) = non_empty(&c.data_type) {
-            let want = canonical_type(t);
+            let want = canonical(t);
             // One finding a connector, naming each end that differs.
             let ends: Vec<String> = [&a, &b]
                 .into_iter()

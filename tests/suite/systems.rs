@@ -1530,3 +1530,44 @@ fn the_legend_names_five_instances_and_counts_the_rest() {
         "{svg}"
     );
 }
+
+/// A connector typed by a repository id under a `#pragma prefix`
+/// (`IDL:example.com/Lab/Pose:1.0`) carries the type its ports name `Lab::Pose`: no false
+/// RTC602, and the type's page lists the connector.
+#[test]
+fn a_prefixed_repository_id_on_a_connector_is_the_type_it_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(
+        d,
+        "in/idl/Lab.idl",
+        "#pragma prefix \"example.com\"\nmodule Lab { struct Pose { long x; }; };\n",
+    );
+    common::write(
+        d,
+        "in/Src/RTC.xml",
+        &common::xml_profile("Src", &[("DataOutPort", "out", "Lab::Pose")]),
+    );
+    common::write(
+        d,
+        "in/Dst/RTC.xml",
+        &common::xml_profile("Dst", &[("DataInPort", "in", "Lab::Pose")]),
+    );
+    let system = |ty: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Pre:1.0" rts:version="0.2">{}{}<rts:DataPortConnectors rts:connectorId="c1" rts:name="pose" rts:dataType="{ty}" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:portName="Src0.out" rts:instanceName="Src0" rts:componentId="RTC:Test:Cat:Src:1.0.0"/><rts:targetDataPort rts:portName="Dst0.in" rts:instanceName="Dst0" rts:componentId="RTC:Test:Cat:Dst:1.0.0"/></rts:DataPortConnectors></rts:RtsProfile>"#,
+            instance_xml("Src0", "Src", "out"),
+            instance_xml("Dst0", "Dst", "in")
+        )
+    };
+    common::write(d, "in/sys/Pre.xml", &system("IDL:example.com/Lab/Pose:1.0"));
+    assert_eq!(
+        common::findings(d, "in", &["RTC602"]),
+        Vec::<serde_json::Value>::new()
+    );
+    let cat = load(&d.join("in"));
+    assert_eq!(cat.connectors_carrying("Lab::Pose").len(), 1);
+    // Another type is still one.
+    common::write(d, "in/sys/Pre.xml", &system("IDL:RTC/TimedLong:1.0"));
+    assert_eq!(common::findings(d, "in", &["RTC602"]).len(), 1);
+}
