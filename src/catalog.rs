@@ -96,7 +96,7 @@ impl Component {
 }
 
 /// A slug for a qualifier (`C++` → `cpp`, `C#` → `csharp`).
-fn qualifier_slug(q: &str) -> String {
+pub(crate) fn qualifier_slug(q: &str) -> String {
     slugify(&q.replace("++", "pp").replace('#', "sharp"))
 }
 
@@ -1155,7 +1155,7 @@ fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
 }
 
 /// Each of `bases`, numbered from its second time on (`number(base, n)`), so that all differ.
-fn numbered(
+pub(crate) fn numbered(
     bases: impl Iterator<Item = String>,
     number: impl Fn(&str, usize) -> String,
 ) -> Vec<String> {

@@ -10,7 +10,7 @@
 //! Links are kept by component slug and port name (not by vector index) in what is serialised,
 //! so `catalog.json` stays readable when the component list changes.
 
-use super::{facet_key, slugify, unique_slugs, Catalog, Component};
+use super::{facet_key, qualifier_slug, slugify, unique_slugs, Catalog, Component};
 use super::{ComponentIx, Ix};
 use crate::model::system::{PortEnd, RtSystem, SystemComponent};
 use crate::model::{non_empty, PortDirection};
@@ -231,8 +231,8 @@ impl Catalog {
             .iter()
             .map(|l| (l.system.name().to_string(), l.source.clone()))
             .collect();
-        let slugs = unique_slugs(&names);
         let qualifiers = name_qualifiers(&names);
+        let slugs = system_slugs(&names, &qualifiers);
         let mut systems = Vec::with_capacity(loaded.len());
         for ((l, slug), qualifier) in loaded.into_iter().zip(slugs).zip(qualifiers) {
             let sys = &l.system;
@@ -744,6 +744,31 @@ pub fn strip_host_data(p: &mut RtSystem) {
     for c in &mut p.components {
         c.path_uri = None;
     }
+}
+
+/// The page slugs of systems `names` (name, source): a name used once keeps its plain slug; a
+/// system that shares its name with others gets its qualifier in the slug as in its title
+/// (`defaultsystem01-kobuki` for `DefaultSystem01 (kobuki)`), as a component does; a slug that
+/// still collides (names differing in case only, an overlong one) falls back to a hash of the
+/// file, and a number when even that does.
+fn system_slugs(names: &[(String, String)], qualifiers: &[Option<String>]) -> Vec<String> {
+    let hashed = unique_slugs(names);
+    let bases = names
+        .iter()
+        .zip(qualifiers)
+        .zip(hashed)
+        .map(|(((name, _), q), h)| match q {
+            Some(q) => {
+                let s = format!("{}-{}", slugify(name), qualifier_slug(q));
+                if s.len() > 96 {
+                    h
+                } else {
+                    s
+                }
+            }
+            None => h,
+        });
+    super::numbered(bases, |base, n| format!("{base}-{n}"))
 }
 
 /// For each (name, source): what tells it apart from the others of its name, if any

@@ -1571,3 +1571,40 @@ fn a_prefixed_repository_id_on_a_connector_is_the_type_it_names() {
     common::write(d, "in/sys/Pre.xml", &system("IDL:RTC/TimedLong:1.0"));
     assert_eq!(common::findings(d, "in", &["RTC602"]).len(), 1);
 }
+
+/// Systems sharing a name (RTSystemEditor's `DefaultSystem01`) get their qualifier in the page
+/// slug, as in their titles: `defaultsystem01-kobuki` for `DefaultSystem01 (kobuki)`, not a
+/// hash of the file.
+#[test]
+fn systems_sharing_a_name_have_readable_slugs() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for folder in ["kobuki", "nao"] {
+        common::write(
+            d,
+            &format!("in/{folder}/System.xml"),
+            &common::naming_path_system("DefaultSystem01"),
+        );
+    }
+    common::write(d, "in/other/Solo.xml", &common::naming_path_system("Solo"));
+    let cat = load(&d.join("in"));
+    let got: Vec<(String, String)> = cat
+        .systems
+        .iter()
+        .map(|s| (s.slug.clone(), s.display_name().into_owned()))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            (
+                "defaultsystem01-kobuki".to_string(),
+                "DefaultSystem01 (kobuki)".to_string()
+            ),
+            (
+                "defaultsystem01-nao".to_string(),
+                "DefaultSystem01 (nao)".to_string()
+            ),
+            ("solo".to_string(), "Solo".to_string()),
+        ]
+    );
+}
