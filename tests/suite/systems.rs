@@ -1382,10 +1382,9 @@ fn an_unnamed_composite_and_a_connector_not_drawn() {
     };
     let part = r#"<rts:Participants><rts:Participant rts:instanceName="M0" rts:componentId="RTC:Lab:Test:C:1.0.0"/></rts:Participants><rts:Participants><rts:Participant rts:instanceName="M0" rts:componentId="RTC:Lab:Test:C:1.0.0"/></rts:Participants>"#;
     let conn = r#"<rts:DataPortConnectors rts:connectorId="c1" rts:name="c1" rts:dataType="IDL:RTC/TimedLong:1.0" rts:interfaceType="corba_cdr" rts:dataflowType="push" rts:subscriptionType="flush"><rts:sourceDataPort rts:portName="M0.out" rts:instanceName="M0" rts:componentId="RTC:Lab:Test:C:1.0.0"/><rts:targetDataPort rts:portName="Nobody.in" rts:instanceName="Nobody" rts:componentId="RTC:Lab:Test:C:1.0.0"/></rts:DataPortConnectors>"#;
-    let xml = format!(
-        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Un:1.0" rts:version="0.2">{}{}{conn}</rts:RtsProfile>"#,
-        comp("M0", "None", ""),
-        comp("", "Grouping", part),
+    let xml = rts_system(
+        "Un",
+        &[&comp("M0", "None", ""), &comp("", "Grouping", part), conn],
     );
     common::write(dir.path(), "in/Un.xml", &xml);
     let svg = common::rtcdoc(&["graph", "in/Un.xml", "-f", "svg"], dir.path());
@@ -1434,12 +1433,7 @@ fn an_id_naming_the_instance_points_at_the_component() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     common::write(d, "in/Ctl/RTC.xml", &common::xml_profile("Ctl", &[]));
-    let system = |id_name: &str| {
-        format!(
-            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Cho:1.0" rts:version="0.2">{}</rts:RtsProfile>"#,
-            instance_xml("Ctl0", id_name, "out")
-        )
-    };
+    let system = |id_name: &str| rts_system("Cho", &[&instance_xml("Ctl0", id_name, "out")]);
     common::write(d, "in/sys/Cho.xml", &system("Ctl0"));
     let found = common::findings(d, "in", &["RTC603"]);
     assert_eq!(found.len(), 1, "{found:?}");
@@ -1479,11 +1473,13 @@ fn a_connector_end_not_among_the_instances_listed_ports_is_reported() {
         )
     };
     let system = |to: &str| {
-        format!(
-            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:P:1.0" rts:version="0.2">{}{}{}</rts:RtsProfile>"#,
-            instance_xml("A0", "A", "out"),
-            instance_xml("B0", "B", "inport2"),
-            conn(to)
+        rts_system(
+            "P",
+            &[
+                &instance_xml("A0", "A", "out"),
+                &instance_xml("B0", "B", "inport2"),
+                &conn(to),
+            ],
         )
     };
     common::write(d, "in/P.xml", &system("inort2"));
@@ -1513,13 +1509,7 @@ fn the_legend_names_five_instances_and_counts_the_rest() {
     let instances: String = (0..7)
         .map(|i| instance_xml(&format!("I{i}"), "Gone", "p"))
         .collect();
-    common::write(
-        d,
-        "in/Big.xml",
-        &format!(
-            r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:Big:1.0" rts:version="0.2">{instances}</rts:RtsProfile>"#
-        ),
-    );
+    common::write(d, "in/Big.xml", &rts_system("Big", &[&instances]));
     let o = common::rtcdoc(&["graph", "in", "-f", "svg"], d);
     let svg = String::from_utf8_lossy(&o.stdout);
     assert!(
@@ -1607,4 +1597,13 @@ fn systems_sharing_a_name_have_readable_slugs() {
             ("solo".to_string(), "Solo".to_string()),
         ]
     );
+}
+
+/// An RT System profile `RTSystem:Lab:<name>:1.0` holding `parts` (its components and
+/// connectors as XML), as RTSystemEditor writes one.
+fn rts_system(name: &str, parts: &[&str]) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?><rts:RtsProfile xmlns:rts="http://www.openrtp.org/namespaces/rts" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext" rts:id="RTSystem:Lab:{name}:1.0" rts:version="0.2">{}</rts:RtsProfile>"#,
+        parts.concat()
+    )
 }
