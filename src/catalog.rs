@@ -203,12 +203,12 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
             }
         }
     }
-    let mut used: HashMap<String, usize> = HashMap::new();
-    base.into_iter()
-        .zip(qualifier)
+    let bases: Vec<String> = base
+        .into_iter()
+        .zip(&qualifier)
         .zip(loaded)
         .map(|((b, q), l)| {
-            let mut s = match &q {
+            let mut s = match q {
                 Some(q) => format!("{b}-{}", qualifier_slug(q)),
                 // `index` is reserved for the index page of each page folder.
                 None if b == "index" => {
@@ -220,14 +220,31 @@ fn component_slugs(loaded: &[LoadedProfile]) -> Vec<(String, Option<String>)> {
                 let hash = fnv1a(l.source.as_bytes()) as u32 & 0xff_ffff;
                 s = format!("{}-{hash:06x}", s[..64].trim_end_matches('-'));
             }
-            let n = used.entry(s.clone()).or_default();
-            *n += 1;
-            if *n > 1 {
-                s = format!("{s}-{n}");
-            }
-            (s, q)
+            s
         })
-        .collect()
+        .collect();
+    let slugs = claim_slugs(&bases, |i| qualifier[i].is_none());
+    slugs.into_iter().zip(qualifier).collect()
+}
+
+/// Unique slugs for `bases`: those `first` marks are claimed before the others (a name used once
+/// keeps its plain slug, whatever sorts before it), each in order; a slug already taken gets the
+/// lowest free `-N` (N ≥ 2), never one that another page has as its own.
+pub(crate) fn claim_slugs(bases: &[String], first: impl Fn(usize) -> bool) -> Vec<String> {
+    let mut taken: std::collections::HashSet<String> = std::collections::HashSet::new();
+    let mut out = vec![String::new(); bases.len()];
+    for pass in [true, false] {
+        for (i, b) in bases.iter().enumerate().filter(|&(i, _)| first(i) == pass) {
+            let mut s = b.clone();
+            let mut n = 2;
+            while !taken.insert(s.clone()) {
+                s = format!("{b}-{n}");
+                n += 1;
+            }
+            out[i] = s;
+        }
+    }
+    out
 }
 
 /// Stable fragment ids for the rows of a component page, unique within the page.
@@ -1155,7 +1172,7 @@ fn unique_slugs(items: &[(String, String)]) -> Vec<String> {
 }
 
 /// Each of `bases`, numbered from its second time on (`number(base, n)`), so that all differ.
-pub(crate) fn numbered(
+fn numbered(
     bases: impl Iterator<Item = String>,
     number: impl Fn(&str, usize) -> String,
 ) -> Vec<String> {

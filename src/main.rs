@@ -1056,7 +1056,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
                 .map(|c| shell_word(&c.display_name()))
                 .unwrap_or_else(|| "NAME".into());
             anyhow::bail!(
-                "no RT System profile in {}; graph draws a component's neighbourhood (--component {example}) or the data flow between categories (--dataflow category) without one",
+                "no RT System profile in {}; graph draws a component's neighbourhood (--component={example}) or the data flow between categories (--dataflow category) without one",
                 input.display()
             )
         }
@@ -1096,7 +1096,15 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
         args,
         name,
         &format!("{} {name}", lang.t("sys_wiring")),
-        (&w.instances, &w.connectors, w.drawing_notes()),
+        (
+            &w.instances,
+            &w.connectors,
+            // DOT and Mermaid draw no port squares: their legend says what the outlines mean.
+            match args.format {
+                GraphFormat::Svg => w.drawing_notes(),
+                _ => (&w.not_drawn, w.outline_legend.as_deref()),
+            },
+        ),
     )
 }
 

@@ -750,7 +750,7 @@ pub fn strip_host_data(p: &mut RtSystem) {
 /// system that shares its name with others gets its qualifier in the slug as in its title
 /// (`defaultsystem01-kobuki` for `DefaultSystem01 (kobuki)`), as a component does; a slug that
 /// still collides (names differing in case only, an overlong one) falls back to a hash of the
-/// file, and a number when even that does.
+/// file, and a number when even that does ([`super::claim_slugs`]: the plain slugs first).
 fn system_slugs(names: &[(String, String)], qualifiers: &[Option<String>]) -> Vec<String> {
     let hashed = unique_slugs(names);
     let bases = names
@@ -768,7 +768,8 @@ fn system_slugs(names: &[(String, String)], qualifiers: &[Option<String>]) -> Ve
             }
             None => h,
         });
-    super::numbered(bases, |base, n| format!("{base}-{n}"))
+    let bases: Vec<String> = bases.collect();
+    super::claim_slugs(&bases, |i| qualifiers[i].is_none())
 }
 
 /// For each (name, source): what tells it apart from the others of its name, if any

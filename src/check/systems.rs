@@ -136,17 +136,17 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
         .data_port_connectors
         .iter()
         .zip(&s.data_connectors)
-        .map(|(c, l)| (&c.source, &c.target, l))
+        .map(|(c, l)| (&c.source, &c.target, l, false))
         .chain(
             p.service_port_connectors
                 .iter()
                 .zip(&s.service_connectors)
-                .map(|(c, l)| (&c.source, &c.target, l)),
+                .map(|(c, l)| (&c.source, &c.target, l, true)),
         );
-    for (src, dst, l) in ends {
+    for (src, dst, l, service) in ends {
         for (e, el) in [(src, &l.source), (dst, &l.target)] {
             let Some(e) = e else { continue };
-            end(cat, s, e, el, sink);
+            end(cat, s, (e, service), el, sink);
         }
     }
     // Connector types against port types, each spelling read as the IDL defines it (a
@@ -208,10 +208,11 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
     }
 }
 
+/// The findings of connector end `e` (of a service connector when `service`).
 fn end(
     cat: &Catalog,
     s: &System,
-    e: &PortEnd,
+    (e, service): (&PortEnd, bool),
     el: &crate::catalog::systems::EndLink,
     sink: &mut Findings<'_>,
 ) {
@@ -240,13 +241,18 @@ fn end(
             let Some(c) = s.profile.components.get(i) else {
                 return;
             };
-            let listed: Vec<&str> = c
-                .data_ports
-                .iter()
-                .chain(&c.service_ports)
-                .map(|p| p.own_name())
-                .collect();
-            if !listed.is_empty() && !listed.contains(&port) {
+            // The ports of the connector's kind (an instance may list only its data ports), each
+            // also by its last `.` part, as the catalogue finds ports.
+            let ports = if service {
+                &c.service_ports
+            } else {
+                &c.data_ports
+            };
+            let listed: Vec<&str> = ports.iter().map(|p| p.own_name().trim()).collect();
+            let last = |n: &str| n.rsplit('.').next().unwrap_or(n).to_string();
+            let want = port.trim();
+            let found = listed.iter().any(|n| *n == want || last(n) == last(want));
+            if !listed.is_empty() && !found {
                 sink.emit(
                     r::SYSTEM_UNKNOWN_PORT,
                     e.pos,
@@ -278,12 +284,15 @@ fn instance_named_id(cat: &Catalog, c: &crate::model::system::SystemComponent) -
         facet_key(non_empty(&parts.category).unwrap_or("")),
     );
     let k = cat.components.iter().find(|k| {
-        k.profile.name() == stem
+        facet_key(k.profile.name()) == facet_key(stem)
             && facet_key(non_empty(&k.profile.basic_info.vendor).unwrap_or("")) == vendor
             && facet_key(non_empty(&k.profile.basic_info.category).unwrap_or("")) == category
     })?;
+    // The id as the profile writes it (the catalogue's entry id may carry `@source`).
+    let written = k.id.split('@').next().unwrap_or_default();
     Some(format!(
-        "the id names `{named}`, an instance's name (as Choreonoid saves it); the input has the component `{stem}` ({}, id `{}`): write that id in the system file",
-        k.source, k.id
+        "the id names `{named}`, an instance's name (as Choreonoid saves it); the input has the component `{}` ({}, id `{written}`): write that id in the system file",
+        k.profile.name(),
+        k.source
     ))
 }

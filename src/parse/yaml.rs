@@ -1201,7 +1201,13 @@ impl Reader<'_> {
             Value::String(t) => t.trim().is_empty(),
             _ => false,
         };
-        if m.iter().all(|(_, cv)| blank(cv)) {
+        let date_key = |k: &Value| {
+            matches!(
+                &*key_text(k),
+                "year" | "month" | "day" | "hour" | "minute" | "second"
+            )
+        };
+        if !m.is_empty() && m.iter().all(|(k, cv)| date_key(k) && blank(cv)) {
             return None;
         }
         let mut parts = DateParts::default();

@@ -446,7 +446,7 @@ fn system_page(
     d!(out);
     crumbs(&mut out, cat, PageKind::Systems);
     let head = |o: &mut String, anchor: &str, text_: &str| section(o, page, anchor, text_);
-    let notes = w.notes();
+    let notes = w.notes(true);
     let targets = super::system_text::Targets::new(&head, &caption, &drawing, &notes);
     super::system_text::system_body::<Dox>(&mut out, cat, s, lang, site, &targets);
     (out, svg)

@@ -551,7 +551,7 @@ fn system_page(
             w.drawing_notes(),
         )),
     };
-    let notes = w.notes();
+    let notes = w.notes(matches!(diagrams, super::DiagramFormat::Svg));
     let drawing = |out: &mut String| {
         match diagrams {
             super::DiagramFormat::Mermaid => {

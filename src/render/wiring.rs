@@ -89,13 +89,22 @@ pub struct SystemWiring {
     pub instances: Vec<WireInstance>,
     pub connectors: Vec<WireConnector>,
     pub not_drawn: Vec<String>,
+    /// What the SVG drawing's marks mean (outlines and port squares).
     pub legend: Option<String>,
+    /// What the outlines mean, for DOT and Mermaid, which draw no port squares.
+    pub outline_legend: Option<String>,
 }
 
 impl SystemWiring {
-    /// The sentences under the drawing: the connectors not drawn, then the legend.
-    pub fn notes(&self) -> Vec<String> {
-        self.not_drawn.iter().chain(&self.legend).cloned().collect()
+    /// The sentences under the drawing: the connectors not drawn, then the legend (`squares`:
+    /// a drawing with port squares, the SVG; DOT and Mermaid have none).
+    pub fn notes(&self, squares: bool) -> Vec<String> {
+        let legend = if squares {
+            &self.legend
+        } else {
+            &self.outline_legend
+        };
+        self.not_drawn.iter().chain(legend).cloned().collect()
     }
     /// The notes as a drawing on its own writes them: the connectors not drawn (warnings), and
     /// the legend (an explanation).
@@ -193,7 +202,8 @@ pub fn system_wiring(
     let (connectors, not_drawn) =
         system_connectors(s, &wire, &catalog.reversed_data_connectors(s), lang);
     SystemWiring {
-        legend: legend(&wire, lang),
+        legend: legend(&wire, lang, true),
+        outline_legend: legend(&wire, lang, false),
         instances: wire,
         connectors,
         not_drawn,
@@ -261,9 +271,10 @@ fn composite_role(
 
 /// What the drawing's marks mean, each naming its instances: the outlines of composite
 /// components and their members, and the hollow (kind unknown) and dotted (not in the
-/// component's profile, RTC601) port squares (`Double outline: composite component (Planner0);
-/// dashed outline: member of a composite (Camera0)`); `None` when the drawing has none.
-fn legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
+/// component's profile, RTC601) port squares, those only when the drawing has `squares` (the
+/// SVG) (`Double outline: composite component (Planner0); dashed outline: member of a composite
+/// (Camera0)`); `None` when the drawing has none.
+fn legend(wire: &[WireInstance], lang: Lang, squares: bool) -> Option<String> {
     let part = |key: &str, pick: &dyn Fn(&WireInstance) -> bool| {
         if !wire.iter().any(pick) {
             return None;
@@ -295,8 +306,8 @@ fn legend(wire: &[WireInstance], lang: Lang) -> Option<String> {
     let parts: Vec<String> = [
         part("sys_legend_composite", &|w| w.role.composite),
         part("sys_legend_member", &|w| w.role.member),
-        part("sys_legend_other_port", &|w| port(w, false)),
-        part("sys_legend_unknown_port", &|w| port(w, true)),
+        part("sys_legend_other_port", &|w| squares && port(w, false)),
+        part("sys_legend_unknown_port", &|w| squares && port(w, true)),
     ]
     .into_iter()
     .flatten()

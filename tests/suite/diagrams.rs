@@ -677,12 +677,12 @@ fn graph_without_a_system_names_what_it_can_draw() {
     let o = common::rtcdoc(&["graph", "in"], d);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("no RT System profile in in; graph draws a component's neighbourhood (--component Cam) or the data flow between categories (--dataflow category) without one"), "{err}");
+    assert!(err.contains("no RT System profile in in; graph draws a component's neighbourhood (--component=Cam) or the data flow between categories (--dataflow category) without one"), "{err}");
     for args in [
-        ["graph", "in", "--component", "Cam"],
-        ["graph", "in", "--dataflow", "category"],
+        &["graph", "in", "--component=Cam"][..],
+        &["graph", "in", "--dataflow", "category"],
     ] {
-        let o = common::rtcdoc(&args, d);
+        let o = common::rtcdoc(args, d);
         assert!(
             o.status.success(),
             "{args:?}: {}",

@@ -1139,12 +1139,9 @@ fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
         String::from_utf8(o.stdout).unwrap()
     };
     let dot = graph("dot");
-    // The note, then the legend of the drawing's marks (here the port not in the profile).
+    // DOT draws no port squares: no legend of them (the SVG has it, below).
     let legend = "Dotted square: a port its component's profile does not have (Src0)";
-    assert!(
-        dot.contains(&format!("label=\"{note}\\l{legend}\\l\"")),
-        "{dot}"
-    );
+    assert!(dot.contains(&format!("label=\"{note}\\l\"")), "{dot}");
     assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
     assert!(dot.contains("<i>nosuchport</i> ?"), "{dot}");
     let mermaid = graph("mermaid");
@@ -1155,6 +1152,11 @@ fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
         "{svg}"
     );
     assert!(svg.contains(r#"class="port out unknown" aria-label="out-port Src0.nosuchport (not in the component&#39;s profile)""#), "{svg}");
+    assert!(
+        svg.contains(r#"<text class="legend" x="8" y="#)
+            && svg.contains(&legend.replace('\'', "&#39;")),
+        "{svg}"
+    );
     assert!(
         svg.contains(r#"class="port out" aria-label="out-port Src0.out""#),
         "{svg}"
@@ -1448,6 +1450,22 @@ fn an_id_naming_the_instance_points_at_the_component() {
         common::findings(d, "in", &["RTC603"]),
         Vec::<serde_json::Value>::new()
     );
+    // Two profiles of that id (C++ and Python copies): the hint still names the id as written,
+    // which links the instance.
+    common::write(d, "in/Ctl2/RTC.xml", &common::xml_profile("Ctl", &[]));
+    common::write(d, "in/sys/Cho.xml", &system("Ctl0"));
+    let found = common::findings(d, "in", &["RTC603"]);
+    assert!(
+        found[0]["hint"]
+            .as_str()
+            .is_some_and(|h| h.contains("id `RTC:Test:Cat:Ctl:1.0.0`)")),
+        "{found:?}"
+    );
+    common::write(d, "in/sys/Cho.xml", &system("Ctl"));
+    assert_eq!(
+        common::findings(d, "in", &["RTC603"]),
+        Vec::<serde_json::Value>::new()
+    );
     // A name that only ends in a digit, without such a component, keeps the general hint.
     common::write(d, "in/sys/Cho.xml", &system("Other2"));
     let found = common::findings(d, "in", &["RTC603"]);
@@ -1491,6 +1509,17 @@ fn a_connector_end_not_among_the_instances_listed_ports_is_reported() {
     );
     common::write(d, "in/P.xml", &system("inport2"));
     assert!(common::findings(d, "in", &["RTC601"]).is_empty());
+    // The instance lists its data ports only: a service connector's end is not judged by
+    // them; a port listed under another instance's prefix matches by its last part.
+    let service = r#"<rts:ServicePortConnectors rts:connectorId="s1" rts:name="s1"><rts:sourceServicePort rts:portName="A0.svc" rts:instanceName="A0" rts:componentId="RTC:Test:Cat:A:1.0.0"/><rts:targetServicePort rts:portName="B0.svc" rts:instanceName="B0" rts:componentId="RTC:Test:Cat:B:1.0.0"/></rts:ServicePortConnectors>"#;
+    let renamed = system("inport2")
+        .replace(r#"rts:name="B0.inport2""#, r#"rts:name="Old0.inport2""#)
+        .replace("</rts:RtsProfile>", &format!("{service}</rts:RtsProfile>"));
+    common::write(d, "in/P.xml", &renamed);
+    assert_eq!(
+        common::findings(d, "in", &["RTC601"]),
+        Vec::<serde_json::Value>::new()
+    );
     // No ports listed: nothing to compare with.
     common::write(
         d,
@@ -1597,6 +1626,23 @@ fn systems_sharing_a_name_have_readable_slugs() {
             ("solo".to_string(), "Solo".to_string()),
         ]
     );
+    // A qualified slug equal to another system's own slug: the plain one keeps it, every page
+    // gets its own file.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (folder, name) in [("a", "Demo X"), ("x", "Demo"), ("x-2", "Demo")] {
+        common::write(
+            d,
+            &format!("in/{folder}/S.xml"),
+            &common::naming_path_system(name),
+        );
+    }
+    let cat = load(&d.join("in"));
+    let mut slugs: Vec<&str> = cat.systems.iter().map(|s| s.slug.as_str()).collect();
+    assert_eq!(slugs[0], "demo-x", "{slugs:?}");
+    slugs.sort();
+    slugs.dedup();
+    assert_eq!(slugs.len(), 3, "{slugs:?}");
 }
 
 /// An RT System profile `RTSystem:Lab:<name>:1.0` holding `parts` (its components and

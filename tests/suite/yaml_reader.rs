@@ -315,6 +315,9 @@ fn a_date_of_empty_fields_is_no_date() {
     assert!(empty.diagnostics.is_empty(), "{:#?}", empty.diagnostics);
     assert_eq!(empty.profile.basic_info.update_date, None);
     assert!(empty.profile.basic_info.extra.is_empty());
+    // Keys that are no date fields are not an unset date: reported as before.
+    let odd = parse_str(&doc("      bogus: \n"));
+    assert!(!odd.diagnostics.is_empty(), "{:#?}", odd.diagnostics);
     let part = parse_str(&doc("      year: 2010\n      month: \n"));
     assert_eq!(part.diagnostics.len(), 1, "{:#?}", part.diagnostics);
     assert!(part.diagnostics[0].message.contains("not a complete date"));

@@ -70,7 +70,7 @@ impl Site<'_> {
                 "sys_service_connectors"
             ),
         );
-        for n in &w.notes() {
+        for n in &w.notes(true) {
             diagram_text.push(' ');
             diagram_text.push_str(n);
             diagram_text.push('.');
