@@ -235,13 +235,7 @@ pub(crate) fn claim_slugs(bases: &[String], first: impl Fn(usize) -> bool) -> Ve
     let mut out = vec![String::new(); bases.len()];
     for pass in [true, false] {
         for (i, b) in bases.iter().enumerate().filter(|&(i, _)| first(i) == pass) {
-            let mut s = b.clone();
-            let mut n = 2;
-            while !taken.insert(s.clone()) {
-                s = format!("{b}-{n}");
-                n += 1;
-            }
-            out[i] = s;
+            out[i] = claim(&mut taken, b.clone());
         }
     }
     out
@@ -2315,7 +2309,11 @@ fn taken_slugs<'a>(slugs: impl Iterator<Item = &'a str>) -> std::collections::Ha
 
 /// The slug of `name` that no page in `taken` has yet (`name`, `name-2`, …), taken.
 fn free_slug(taken: &mut std::collections::HashSet<String>, name: &str) -> String {
-    let base = slugify(name);
+    claim(taken, slugify(name))
+}
+
+/// `base`, else the first of `base-2`, `base-3`, … that `taken` does not hold; added to `taken`.
+fn claim(taken: &mut std::collections::HashSet<String>, base: String) -> String {
     let mut slug = base.clone();
     let mut n = 1;
     while !taken.insert(slug.clone()) {

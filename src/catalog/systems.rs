@@ -167,9 +167,14 @@ pub fn end_port_name(e: &PortEnd) -> &str {
         .unwrap_or("")
 }
 
+/// A port name's own part: the text after its last `.` (`Instance0.out` → `out`).
+pub fn port_own_part(name: &str) -> &str {
+    name.rsplit('.').next().unwrap_or(name)
+}
+
 /// The port of component `c` named `name` (its own name or `Instance.name`).
 fn find_port(c: &Component, name: &str) -> Option<PortLink> {
-    let candidates = [name, name.rsplit('.').next().unwrap_or(name)];
+    let candidates = [name, port_own_part(name)];
     let p = &c.profile;
     for n in candidates {
         let named = |name: Option<&str>| name.map(str::trim) == Some(n);
@@ -476,21 +481,15 @@ impl Catalog {
                 }),
             }
         };
-        let own = |n: &Option<crate::model::Text>, short: &Option<crate::model::Text>| {
-            non_empty(short)
-                .or_else(|| non_empty(n))
-                .unwrap_or("")
-                .to_string()
-        };
         // RTSystemEditor records each port's kind as the property `port.port_type`
         // (`DataInPort`, `DataOutPort`, `CorbaPort`): a port that no connector ends at still
         // gets its side when the component is not in the catalogue.
         for p in &inst.data_ports {
             let kind = p.property("port.port_type").and_then(PortDirection::parse);
-            add(&own(&p.name, &p.short_name), false, kind);
+            add(p.own_name(), false, kind);
         }
         for p in &inst.service_ports {
-            add(&own(&p.name, &p.short_name), true, None);
+            add(p.own_name(), true, None);
         }
         for (k, c) in sys.profile.data_port_connectors.iter().enumerate() {
             let l = &sys.data_connectors[k];

@@ -4,7 +4,9 @@
 
 use super::registry as r;
 use super::rules::{seen_before, Findings};
-use crate::catalog::systems::{check_configuration, end_port_name, ConfigCheck, PortLink, System};
+use crate::catalog::systems::{
+    check_configuration, end_port_name, port_own_part, ConfigCheck, PortLink, System,
+};
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
 use crate::model::non_empty;
@@ -249,9 +251,8 @@ fn end(
                 &c.data_ports
             };
             let listed: Vec<&str> = ports.iter().map(|p| p.own_name().trim()).collect();
-            let last = |n: &str| n.rsplit('.').next().unwrap_or(n).to_string();
-            let want = port.trim();
-            let found = listed.iter().any(|n| *n == want || last(n) == last(want));
+            let want = port_own_part(port.trim());
+            let found = listed.iter().any(|n| port_own_part(n) == want);
             if !listed.is_empty() && !found {
                 sink.emit(
                     r::SYSTEM_UNKNOWN_PORT,

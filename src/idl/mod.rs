@@ -184,17 +184,18 @@ fn macro_hint(d: Diagnostic, expansions: &[pp::Expansion]) -> Diagnostic {
     else {
         return d;
     };
-    let place = match &e.defined {
+    let m = &e.about;
+    let place = match &m.defined {
         Some((file, pos)) => format!(" at {file}:{}:{}", pos.line, pos.column),
         None => String::new(),
     };
-    let name = &e.name;
-    let what = if e.text.is_empty() {
+    let name = &m.name;
+    let what = if m.text.is_empty() {
         format!("`{name}` here is a macro defined empty{place} (an include guard?), so the preprocessor removed it")
     } else {
         format!(
             "`{name}` here is a macro defined{place} as `{}`, so the preprocessor replaced it",
-            e.text
+            m.text
         )
     };
     d.with_hint(format!(

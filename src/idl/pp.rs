@@ -219,19 +219,47 @@ impl<'a> Sources<'a> {
 struct Macro {
     tokens: Vec<Token>,
     function_like: bool,
+    /// What a use of it tells the parser's errors, shared by every use.
+    about: std::rc::Rc<MacroAbout>,
+}
+
+/// A macro as an error message names it.
+#[derive(Debug)]
+pub(crate) struct MacroAbout {
+    pub name: String,
+    /// What it stands for, as written (empty: a use vanishes).
+    pub text: String,
     /// Where `#define` wrote it (file and position); `None` for a define given to rtcdoc.
-    defined: Option<(String, Pos)>,
+    pub defined: Option<(String, Pos)>,
+}
+
+impl Macro {
+    fn new(
+        name: &str,
+        tokens: Vec<Token>,
+        function_like: bool,
+        defined: Option<(String, Pos)>,
+    ) -> Macro {
+        let text: Vec<String> = tokens.iter().map(Token::lexeme).collect();
+        let about = std::rc::Rc::new(MacroAbout {
+            name: name.to_string(),
+            text: text.join(" "),
+            defined,
+        });
+        Macro {
+            tokens,
+            function_like,
+            about,
+        }
+    }
 }
 
 /// A name of the file that an object-like macro replaced (the parser's errors at or right
 /// after it say so: `#define A` as an include guard makes `module A {` read `module {`).
 #[derive(Debug, Clone)]
 pub(crate) struct Expansion {
-    pub name: String,
     pub pos: Pos,
-    /// What it became, as written (empty: it vanished).
-    pub text: String,
-    pub defined: Option<(String, Pos)>,
+    pub about: std::rc::Rc<MacroAbout>,
 }
 
 struct Cond {
@@ -269,14 +297,9 @@ pub(crate) fn preprocess(src: &mut Sources<'_>, root: usize) -> Preprocessed {
     let mut defines = HashMap::new();
     for d in &src.opts.defines {
         let (name, value) = d.split_once('=').unwrap_or((d.as_str(), "1"));
-        defines.insert(
-            name.trim().to_string(),
-            Macro {
-                tokens: strip_eof(lex_line(value, Pos::default())),
-                function_like: false,
-                defined: None,
-            },
-        );
+        let name = name.trim();
+        let tokens = strip_eof(lex_line(value, Pos::default()));
+        defines.insert(name.to_string(), Macro::new(name, tokens, false, None));
     }
     let encoding = src.lexed(root).encoding;
     let mut pp = Pp {
@@ -600,13 +623,11 @@ impl Pp<'_, '_> {
             raw_pos.line,
             raw_pos.column + raw[..offset].chars().count() as u32,
         );
+        let tokens = strip_eof(lex_line(rest, start));
+        let defined = Some((path.to_string(), pos));
         self.defines.insert(
             name.to_string(),
-            Macro {
-                tokens: strip_eof(lex_line(rest, start)),
-                function_like,
-                defined: Some((path.to_string(), pos)),
-            },
+            Macro::new(name, tokens, function_like, defined),
         );
     }
 
@@ -746,12 +767,9 @@ impl Pp<'_, '_> {
             }
             Tok::Ident(name) => {
                 if let Some(m) = self.defines.get(name).filter(|m| !m.function_like) {
-                    let text: Vec<String> = m.tokens.iter().map(Token::lexeme).collect();
                     self.expansions.push(Expansion {
-                        name: name.clone(),
                         pos: t.pos,
-                        text: text.join(" "),
-                        defined: m.defined.clone(),
+                        about: m.about.clone(),
                     });
                 }
                 let mut out = std::mem::take(&mut self.out);

@@ -380,6 +380,21 @@ node! {
 }
 
 impl SystemComponent {
+    /// The instance names of its participants (its members, as a composite), each once, in
+    /// file order.
+    pub fn member_names(&self) -> Vec<&str> {
+        let mut names: Vec<&str> = Vec::new();
+        for n in self
+            .participants
+            .iter()
+            .filter_map(|t| non_empty(&t.instance_name))
+        {
+            if !names.contains(&n) {
+                names.push(n);
+            }
+        }
+        names
+    }
     /// `isRequired` as a boolean (absent or invalid: `None`).
     pub fn required(&self) -> Option<bool> {
         parse_bool(self.is_required.as_deref())
@@ -745,6 +760,16 @@ node! {
 }
 
 impl RtSystem {
+    /// The components (composites) whose participants include the instance named `name`; none
+    /// for an empty name.
+    pub fn composites_of<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a SystemComponent> {
+        self.components.iter().filter(move |k| {
+            !name.is_empty()
+                && k.participants
+                    .iter()
+                    .any(|t| non_empty(&t.instance_name) == Some(name))
+        })
+    }
     /// The system name from the id, or a placeholder.
     pub fn name(&self) -> &str {
         self.id_parts

@@ -219,37 +219,21 @@ fn composite_role(
     iname: &str,
     lang: Lang,
 ) -> (Role, String) {
-    // A composite names its type and members; a member the composites it belongs to.
-    // Each name once (a file may list a participant twice); a composite without a name
-    // still makes its members members.
-    let once = |names: &mut Vec<&'_ str>| {
-        let mut seen = std::collections::HashSet::new();
-        names.retain(|n| seen.insert(*n));
-    };
-    let mut members: Vec<&str> = c
-        .participants
-        .iter()
-        .filter_map(|t| non_empty(&t.instance_name))
-        .collect();
-    once(&mut members);
+    // A composite names its type and members; a member the composites it belongs to (a
+    // composite without a name still makes its members members).
+    let members = c.member_names();
     let kind = non_empty(&c.composite_type).filter(|t| *t != "None");
-    let composites: Vec<&crate::model::system::SystemComponent> = p
-        .components
-        .iter()
-        .filter(|k| {
-            k.participants
-                .iter()
-                .any(|t| non_empty(&t.instance_name) == Some(iname))
-        })
-        .collect();
-    let mut member_of: Vec<&str> = composites
-        .iter()
-        .filter_map(|k| non_empty(&k.instance_name))
-        .collect();
-    once(&mut member_of);
+    let mut member = false;
+    let mut member_of: Vec<&str> = Vec::new();
+    for k in p.composites_of(iname) {
+        member = true;
+        if let Some(n) = non_empty(&k.instance_name).filter(|n| !member_of.contains(n)) {
+            member_of.push(n);
+        }
+    }
     let role = Role {
         composite: kind.is_some() || !c.participants.is_empty(),
-        member: !iname.is_empty() && !composites.is_empty(),
+        member,
     };
     let mut about = lang.t("instance").to_string();
     if let Some(kind) = kind {

@@ -318,21 +318,10 @@ fn instance_rows(
                 contexts,
                 required: txt(&c.is_required),
                 composite: txt(&c.composite_type),
-                members: c
-                    .participants
-                    .iter()
-                    .filter_map(|t| non_empty(&t.instance_name))
-                    .map(&row_link)
-                    .collect(),
+                members: c.member_names().into_iter().map(&row_link).collect(),
                 member_of: s
                     .profile
-                    .components
-                    .iter()
-                    .filter(|k| {
-                        k.participants
-                            .iter()
-                            .any(|t| non_empty(&t.instance_name) == non_empty(&c.instance_name))
-                    })
+                    .composites_of(non_empty(&c.instance_name).unwrap_or(""))
                     .filter_map(|k| non_empty(&k.instance_name))
                     .map(&row_link)
                     .collect(),
