@@ -985,12 +985,9 @@ fn history_of(
                 Ok(&c.profile)
             }
             Where::Blob { repo, oid } => blob(parsed, *repo, oid),
-            Where::Backup(i) => match &c.backups[*i] {
-                b if b.profile.is_some() => Ok(b.profile.as_deref().expect("checked")),
-                b => Err(b
-                    .error
-                    .clone()
-                    .unwrap_or_else(|| "the backup could not be read".to_string())),
+            Where::Backup(i) => match &c.backups[*i].content {
+                crate::catalog::backups::BackupContent::Profile(p) => Ok(p),
+                crate::catalog::backups::BackupContent::Error(e) => Err(e.clone()),
             },
             Where::Current => Ok(&c.profile),
         }

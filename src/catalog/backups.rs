@@ -19,13 +19,21 @@ pub struct Backup {
     /// save; the name has no time zone). `None` when the digits are not a date.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub saved: Option<String>,
+    /// The profile it holds, or why it could not be read.
+    #[serde(flatten)]
+    pub content: BackupContent,
+}
+
+/// What a backup file gave: in the JSON, its whole `profile` or the `error` that kept it from
+/// being read.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+#[serde(rename_all = "camelCase")]
+pub enum BackupContent {
+    /// The profile as the backup holds it (for the component's history, and in the JSON).
+    Profile(Box<Profile>),
     /// Why the backup could not be read (a Shift_JIS file declaring UTF-8, a truncated save):
     /// shown beside it instead of an error about the component.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub error: Option<String>,
-    /// The profile as the backup holds it (for the component's history, and in the JSON).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub profile: Option<Box<Profile>>,
+    Error(String),
 }
 
 impl Backup {
@@ -33,8 +41,7 @@ impl Backup {
     pub fn read(source: String, profile: Box<Profile>) -> Backup {
         Backup {
             saved: saved_at(&source),
-            error: None,
-            profile: Some(profile),
+            content: BackupContent::Profile(profile),
             source,
         }
     }
@@ -43,20 +50,19 @@ impl Backup {
     pub fn unreadable(source: String, error: String) -> Backup {
         Backup {
             saved: saved_at(&source),
-            error: Some(error),
-            profile: None,
+            content: BackupContent::Error(error),
             source,
         }
     }
 
     /// The component name and version the backup declares (its BasicInfo then).
     pub fn declares(&self) -> (Option<&str>, Option<&str>) {
-        match &self.profile {
-            Some(p) => (
+        match &self.content {
+            BackupContent::Profile(p) => (
                 crate::model::non_empty(&p.basic_info.name),
                 crate::model::non_empty(&p.basic_info.version),
             ),
-            None => (None, None),
+            BackupContent::Error(_) => (None, None),
         }
     }
 
@@ -228,5 +234,29 @@ mod tests {
         let b = Backup::unreadable("x/RTC.xml20150726072022".into(), "bad".into());
         assert_eq!(b.profile_path(), "x/RTC.xml");
         assert_eq!(b.file_name(), "RTC.xml20150726072022");
+    }
+
+    /// A backup is, in the JSON, its source and save time with either its whole `profile` or
+    /// the `error` that kept it from being read, and reads back as it was written.
+    #[test]
+    fn json_has_the_profile_or_the_error() {
+        let mut profile = Profile::default();
+        profile.basic_info.name = Some("Camera".into());
+        let read = Backup::read("c/RTC.xml20150726072022".into(), Box::new(profile));
+        let bad = Backup::unreadable("c/RTC.xml20160101000000".into(), "truncated".into());
+        for (b, key, absent) in [(&read, "profile", "error"), (&bad, "error", "profile")] {
+            let json = serde_json::to_string(b).expect("serialises");
+            let start = format!(
+                r#"{{"source":"{}","saved":"{}","{key}":"#,
+                b.source,
+                b.saved.as_deref().unwrap_or("")
+            );
+            assert!(json.starts_with(&start), "{json}");
+            assert!(!json.contains(&format!(r#""{absent}":"#)), "{json}");
+            let back: Backup = serde_json::from_str(&json).expect("reads back");
+            assert_eq!(&back, b);
+        }
+        assert_eq!(read.declares(), (Some("Camera"), None));
+        assert_eq!(bad.declares(), (None, None));
     }
 }

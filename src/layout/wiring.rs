@@ -87,6 +87,28 @@ pub struct PortPlace {
     pub text_y: f32,
 }
 
+/// Lines of text set one under the other.
+#[derive(Debug, Clone)]
+pub struct TextLines {
+    pub lines: Vec<String>,
+    /// Baseline of the first line.
+    pub y: f32,
+    /// From one baseline to the next.
+    pub leading: f32,
+}
+
+impl TextLines {
+    /// Baseline of line `k`.
+    pub fn baseline(&self, k: usize) -> f32 {
+        self.y + self.leading * k as f32
+    }
+
+    /// Baseline of the last line (of the first when there are none).
+    pub fn last_baseline(&self) -> f32 {
+        self.baseline(self.lines.len().saturating_sub(1))
+    }
+}
+
 /// An instance as placed.
 #[derive(Debug, Clone)]
 pub struct NodeBox {
@@ -94,12 +116,10 @@ pub struct NodeBox {
     pub y: f32,
     pub w: f32,
     pub h: f32,
-    /// The instance name's lines, centred; baseline of the first at `title_y`.
-    pub title: Vec<String>,
-    pub title_y: f32,
-    /// The component name's lines, under the title.
-    pub subtitle: Vec<String>,
-    pub subtitle_y: f32,
+    /// The instance name, centred.
+    pub title: TextLines,
+    /// The component name, under the title.
+    pub subtitle: TextLines,
     /// Indexed like the node's ports.
     pub ports: Vec<PortPlace>,
 }
@@ -600,8 +620,8 @@ pub fn layout_with(nodes: &[Node], edges: &[Edge], effort: Effort) -> WiringLayo
         let dy = tops[g.node_item[v]];
         b.x += dx;
         b.y += dy;
-        b.title_y += dy;
-        b.subtitle_y += dy;
+        b.title.y += dy;
+        b.subtitle.y += dy;
         for p in &mut b.ports {
             p.x += dx;
             p.text_x += dx;
@@ -819,8 +839,16 @@ fn node_box(n: &Node, side: &[Side], port_order: &[Vec<usize>; 2]) -> NodeBox {
         .ceil();
     let header =
         6.0 + TITLE_LINE * title.len() as f32 + SUBTITLE_LINE * subtitle.len() as f32 + 4.0;
-    let title_y = 6.0 + 14.0;
-    let subtitle_y = 6.0 + TITLE_LINE * title.len() as f32 + 12.0;
+    let subtitle = TextLines {
+        y: 6.0 + TITLE_LINE * title.len() as f32 + 12.0,
+        lines: subtitle,
+        leading: SUBTITLE_LINE,
+    };
+    let title = TextLines {
+        lines: title,
+        y: 6.0 + 14.0,
+        leading: TITLE_LINE,
+    };
     let mut ports: Vec<PortPlace> = n
         .ports
         .iter()
@@ -865,9 +893,7 @@ fn node_box(n: &Node, side: &[Side], port_order: &[Vec<usize>; 2]) -> NodeBox {
         w,
         h,
         title,
-        title_y,
         subtitle,
-        subtitle_y,
         ports,
     }
 }
@@ -1448,20 +1474,20 @@ pub fn problems(l: &WiringLayout) -> Vec<String> {
         if !inside_drawing(b.x - 7.0, b.y) || !inside_drawing(b.x + b.w + 7.0, b.y + b.h) {
             out.push(format!("box {i} outside the drawing"));
         }
-        for t in &b.title {
+        for t in &b.title.lines {
             if title_w(t) > b.w - 4.0 {
                 out.push(format!("title {t:?} wider than its box"));
             }
         }
-        for t in &b.subtitle {
+        for t in &b.subtitle.lines {
             if subtitle_w(t) > b.w - 4.0 {
                 out.push(format!("component name {t:?} wider than its box"));
             }
         }
-        let title_bottom = if b.subtitle.is_empty() {
-            b.title_y + TITLE_LINE * (b.title.len() as f32 - 1.0)
+        let title_bottom = if b.subtitle.lines.is_empty() {
+            b.title.last_baseline()
         } else {
-            b.subtitle_y + SUBTITLE_LINE * (b.subtitle.len() as f32 - 1.0)
+            b.subtitle.last_baseline()
         } + 4.0;
         if title_bottom > b.y + b.h {
             out.push(format!("title of box {i} below the box"));

@@ -639,9 +639,11 @@ impl BackupRow {
             .map(|b| BackupRow {
                 file: b.file_name().to_string(),
                 saved: b.saved.clone().unwrap_or_default(),
-                declares: match &b.error {
-                    Some(e) => format!("{}: {e}", lang.t("backup_unreadable")),
-                    None => {
+                declares: match &b.content {
+                    crate::catalog::backups::BackupContent::Error(e) => {
+                        format!("{}: {e}", lang.t("backup_unreadable"))
+                    }
+                    crate::catalog::backups::BackupContent::Profile(_) => {
                         let (name, version) = b.declares();
                         [name, version]
                             .into_iter()

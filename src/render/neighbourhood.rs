@@ -28,13 +28,9 @@ pub struct NeighbourRow<'a> {
     pub port: String,
     /// The port's anchor on the component's page.
     pub anchor: &'a str,
-    /// The relation's label key: `nb_fed_by`, `nb_feeds`, `nb_used_by` or `nb_uses`.
-    pub relation: &'static str,
     /// The data type or interface, and its page (which lists every neighbour).
     pub type_name: &'a str,
     pub type_page: &'a Page,
-    /// `more_on_type_page` or `more_on_interface_page`.
-    pub more_key: &'static str,
     pub neighbours: Vec<NeighbourItem<'a>>,
     /// Neighbour components counted but not named.
     pub more: usize,
@@ -43,6 +39,28 @@ pub struct NeighbourRow<'a> {
     /// The neighbours' ports, as [`Catalog::neighbourhood`] found them (for the drawing).
     ports_at: Vec<Vec<PortAt>>,
     at: PortAt,
+}
+
+impl NeighbourRow<'_> {
+    /// The relation's label key: `nb_fed_by`, `nb_feeds`, `nb_used_by` or `nb_uses`.
+    pub fn relation(&self) -> &'static str {
+        match (self.service, self.upstream) {
+            (false, true) => "nb_fed_by",
+            (false, false) => "nb_feeds",
+            (true, true) => "nb_used_by",
+            (true, false) => "nb_uses",
+        }
+    }
+
+    /// Where the neighbours not named are all listed: `more_on_interface_page` or
+    /// `more_on_type_page`.
+    pub fn more_key(&self) -> &'static str {
+        if self.service {
+            "more_on_interface_page"
+        } else {
+            "more_on_type_page"
+        }
+    }
 }
 
 /// The name of a port of component `ci` as listed.
@@ -81,23 +99,16 @@ pub fn rows<'a>(cat: &'a Catalog, ci: ComponentIx, n: &Neighbourhood) -> Vec<Nei
         .iter()
         .map(|pn| {
             let service = pn.is_service();
-            let (type_name, more_key) = match pn.type_ {
-                TypeIx::Interface(i) => (cat[i].name.as_str(), "more_on_interface_page"),
-                TypeIx::Data(i) => (cat[i].name.as_str(), "more_on_type_page"),
+            let type_name = match pn.type_ {
+                TypeIx::Interface(i) => cat[i].name.as_str(),
+                TypeIx::Data(i) => cat[i].name.as_str(),
             };
             let type_page = cat.type_page(pn.type_);
             NeighbourRow {
                 port: port_name(cat, ci, pn.port),
                 anchor: port_anchor(cat, ci, pn.port),
-                relation: match (service, pn.upstream) {
-                    (false, true) => "nb_fed_by",
-                    (false, false) => "nb_feeds",
-                    (true, true) => "nb_used_by",
-                    (true, false) => "nb_uses",
-                },
                 type_name,
                 type_page,
-                more_key,
                 neighbours: pn
                     .shown
                     .iter()
@@ -128,7 +139,7 @@ pub fn rows<'a>(cat: &'a Catalog, ci: ComponentIx, n: &Neighbourhood) -> Vec<Nei
 
 /// The text of a row's "+N more" entry: `+12 — see all on the type page`.
 pub fn more_text(row: &NeighbourRow<'_>, lang: Lang) -> String {
-    format!("+{} — {}", row.more, lang.t(row.more_key))
+    format!("+{} — {}", row.more, lang.t(row.more_key()))
 }
 
 /// The drawn name of a port: a data port's name, a service port's name (its interfaces meet
@@ -267,7 +278,7 @@ pub fn wiring(
             };
             inst.push(WireInstance {
                 // The accessible name starts with the box's visible text (WCAG 2.5.3).
-                label: format!("{name} {} — {}", row.type_name, lang.t(row.more_key)),
+                label: format!("{name} {} — {}", row.type_name, lang.t(row.more_key())),
                 component: row.type_name.to_string(),
                 href: href(row.type_page, None),
                 ports: vec![WirePort {

@@ -251,7 +251,7 @@ fn neighbourhood_section<M: Markup>(
             vec![
                 M::link(&r.port, &cat.href(page, page, Some(r.anchor), M::OUTPUT)),
                 M::page_ref(cat, page, r.type_page),
-                M::esc(lang.t(r.relation)),
+                M::esc(lang.t(r.relation())),
                 parts.join("<br>"),
             ]
         })

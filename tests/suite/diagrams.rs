@@ -162,8 +162,8 @@ fn very_long_names_are_whole_and_inside_their_box() {
     let l = layout(&nodes, &edges);
     assert!(problems(&l).is_empty(), "{:?}", problems(&l));
     let b = &l.nodes[0];
-    assert!(b.title.len() >= 2, "wrapped: {:?}", b.title);
-    assert_eq!(b.title.concat(), nodes[0].name);
+    assert!(b.title.lines.len() >= 2, "wrapped: {:?}", b.title);
+    assert_eq!(b.title.lines.concat(), nodes[0].name);
     assert_eq!(b.ports[0].lines.concat(), long);
     assert!(b.ports[0].lines.len() >= 2);
     assert!(!format!("{l:?}").contains('…'));

@@ -517,7 +517,7 @@ impl<'a> Site<'a> {
                     text: r.port.clone(),
                     href: format!("#{}", r.anchor),
                 },
-                relation: self.t(r.relation),
+                relation: self.t(r.relation()),
                 type_ref: Some(PortTypeRef {
                     text: r.type_name.to_string(),
                     href: Some(href(r.type_page, None)),

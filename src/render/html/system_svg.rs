@@ -245,24 +245,25 @@ fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
     }
     s.push_str(r#"<text class="rtc-name""#);
     attr_num(s, "x", cx);
-    attr_num(s, "y", b.title_y);
+    attr_num(s, "y", b.title.y);
     s.push_str(r#" text-anchor="middle">"#);
-    for (k, line) in b.title.iter().enumerate() {
+    for (k, line) in b.title.lines.iter().enumerate() {
         if k == 0 {
             esc_to(s, line);
         } else {
             s.push_str("<tspan");
             attr_num(s, "x", cx);
-            s.push_str(r#" dy="18">"#);
+            attr_num(s, "dy", b.title.leading);
+            s.push('>');
             esc_to(s, line);
             s.push_str("</tspan>");
         }
     }
     // The component's name is a further line of the same text, after a space: the link's
     // visible text reads "instance component", as its accessible name begins.
-    let mut prev_y = b.title_y + 18.0 * (b.title.len() as f32 - 1.0);
-    for (k, line) in b.subtitle.iter().enumerate() {
-        let ty = b.subtitle_y + 15.0 * k as f32;
+    let mut prev_y = b.title.last_baseline();
+    for (k, line) in b.subtitle.lines.iter().enumerate() {
+        let ty = b.subtitle.baseline(k);
         s.push_str(r#"<tspan class="stereotype""#);
         attr_num(s, "x", cx);
         attr_num(s, "dy", ty - prev_y);
