@@ -48,4 +48,33 @@ pub(crate) mod test_text {
         use proptest::strategy::Strategy as _;
         proptest::collection::vec(proptest::sample::select(parts), 0..max).prop_map(|p| p.concat())
     }
+
+    /// The property that a fast path gives what its reference gives, on `cases` texts of
+    /// [`concat_of`]`(parts, max)`; a failure panics with the smallest text found.
+    pub fn agrees<T: PartialEq + std::fmt::Debug>(
+        (parts, max, cases): (&'static [&'static str], usize, u32),
+        fast: impl Fn(&str) -> T,
+        reference: impl Fn(&str) -> T,
+    ) {
+        let config = proptest::test_runner::Config {
+            cases,
+            failure_persistence: None,
+            ..Default::default()
+        };
+        let result =
+            proptest::test_runner::TestRunner::new(config).run(&concat_of(parts, max), |text| {
+                proptest::prop_assert_eq!(fast(&text), reference(&text), "{:?}", text);
+                Ok(())
+            });
+        if let Err(e) = result {
+            panic!("{e}");
+        }
+    }
+
+    /// A difference fails the property, and the failure names the smallest text.
+    #[test]
+    #[should_panic(expected = r#"minimal failing input: "b""#)]
+    fn agrees_fails_on_a_difference() {
+        agrees((&["a", "b"], 6, 64), |t| t.replace('b', "c"), str::to_string);
+    }
 }

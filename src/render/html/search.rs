@@ -629,23 +629,47 @@ mod tests {
         flush_cjk(&mut cjk, out);
     }
 
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig { cases: 2048, ..Default::default() })]
-        /// The slice-based tokenizer gives exactly the tokens of the reference.
-        #[test]
-        fn tokenize_matches_the_reference(
-            text in crate::test_text::concat_of(&[
-                "Usb", "camera", "RTC", "::", "Timed", "Long2", "x86", "_", " ", "-", "画像",
-                "を", "カメラ", "İ", "ΟΔΟΣ", "Σ", "ß", "é", "3D", "a1b2", "\u{1F600}", "ｶ",
-            ], 12),
-        ) {
+    /// The slice-based tokenizer gives exactly the tokens of the reference.
+    #[test]
+    fn tokenize_matches_the_reference() {
+        const PARTS: &[&str] = &[
+            "Usb",
+            "camera",
+            "RTC",
+            "::",
+            "Timed",
+            "Long2",
+            "x86",
+            "_",
+            " ",
+            "-",
+            "画像",
+            "を",
+            "カメラ",
+            "İ",
+            "ΟΔΟΣ",
+            "Σ",
+            "ß",
+            "é",
+            "3D",
+            "a1b2",
+            "\u{1F600}",
+            "ｶ",
+        ];
+        let fast = |text: &str| {
             let mut tokens = Vec::new();
-            tokenize(&text, &mut tokens);
-            let fast: BTreeSet<String> = tokens.into_iter().map(Cow::into_owned).collect();
-            let mut slow = BTreeSet::new();
-            reference(&text, &mut slow);
-            proptest::prop_assert_eq!(fast, slow, "{:?}", text);
-        }
+            tokenize(text, &mut tokens);
+            tokens
+                .into_iter()
+                .map(Cow::into_owned)
+                .collect::<BTreeSet<String>>()
+        };
+        let slow = |text: &str| {
+            let mut set = BTreeSet::new();
+            reference(text, &mut set);
+            set
+        };
+        crate::test_text::agrees((PARTS, 12, 2048), fast, slow);
     }
 
     /// Full- and half-width forms are indexed as their usual ones (as `search.js` reads a

@@ -799,19 +799,31 @@ mod tests {
             .collect()
     }
 
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig { cases: 2048, ..Default::default() })]
-        /// The block-wise escaper writes exactly what the character-wise reference does, for
-        /// text of any length around the block size with the special bytes anywhere in it.
-        #[test]
-        fn escaping_matches_the_reference(
-            text in crate::test_text::concat_of(&[
-                "a", "plain text ", "画像", "&", "<", ">", "\"", "'", "\n", "\t", "\r",
-                "\u{0}", "\u{1f}", " ", "\u{7f}", "é", "0123456789abcdef", "\u{1F600}",
-            ], 40),
-        ) {
-            proptest::prop_assert_eq!(esc(&text), reference(&text), "{:?}", text);
-        }
+    /// The block-wise escaper writes exactly what the character-wise reference does, for
+    /// text of any length around the block size with the special bytes anywhere in it.
+    #[test]
+    fn escaping_matches_the_reference() {
+        const PARTS: &[&str] = &[
+            "a",
+            "plain text ",
+            "画像",
+            "&",
+            "<",
+            ">",
+            "\"",
+            "'",
+            "\n",
+            "\t",
+            "\r",
+            "\u{0}",
+            "\u{1f}",
+            " ",
+            "\u{7f}",
+            "é",
+            "0123456789abcdef",
+            "\u{1F600}",
+        ];
+        crate::test_text::agrees((PARTS, 40, 2048), esc, reference);
     }
 
     #[test]
