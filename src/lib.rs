@@ -75,6 +75,10 @@ pub(crate) mod test_text {
     #[test]
     #[should_panic(expected = r#"minimal failing input: "b""#)]
     fn agrees_fails_on_a_difference() {
-        agrees((&["a", "b"], 6, 64), |t| t.replace('b', "c"), str::to_string);
+        agrees(
+            (&["a", "b"], 6, 64),
+            |t| t.replace('b', "c"),
+            str::to_string,
+        );
     }
 }

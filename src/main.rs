@@ -835,7 +835,6 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
                     build,
                     port: args.port.or(serve_cfg.port).unwrap_or(3000),
                     watch,
-                    config_file: file.path.clone(),
                     reconfigure: Some(reconfigure),
                     file_name: Some({
                         let root = root.clone();

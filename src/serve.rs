@@ -73,10 +73,9 @@ pub struct ServeOptions {
     pub build: BuildOptions,
     /// Port on 127.0.0.1; 0 picks a free one.
     pub port: u16,
-    /// Extra paths to watch (configuration file, theme directory).
+    /// Extra paths to watch (configuration file, theme directory): a change in one rebuilds
+    /// the whole site, with the options `reconfigure` gives when there is one.
     pub watch: Vec<PathBuf>,
-    /// The configuration file; when it changes, `reconfigure` gives the new options.
-    pub config_file: Option<PathBuf>,
     pub reconfigure: Option<Reconfigure>,
     /// How a rebuild's findings name their files (the command line: as the user can open them,
     /// as its first build's findings do); `None`: as the catalogue has them.
@@ -203,7 +202,6 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
 
     let s = shared.clone();
     let output = crate::output::absolute(&opts.build.output).unwrap_or_default();
-    let config_file = opts.config_file.clone();
     let reconfigure = opts.reconfigure.clone();
     let file_name = opts.file_name.clone();
     let watch_extra: Vec<PathBuf> = opts.watch.clone();
@@ -240,7 +238,6 @@ pub fn start(opts: ServeOptions, log: Arc<dyn Fn(&str) + Send + Sync>) -> Result
             let full = paths.iter().any(|p| {
                 // IDL files define what every type page shows: reload everything.
                 p.extension().is_some_and(|e| e.eq_ignore_ascii_case("idl"))
-                    || config_file.as_deref() == Some(p.as_path())
                     || watch_extra.iter().any(|w| p.starts_with(w))
             });
             let result = if full {

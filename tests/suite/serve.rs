@@ -188,7 +188,6 @@ fn server_serves_rebuilds_and_live_reloads() {
             build: options(&input),
             port: 0,
             watch: vec![],
-            config_file: None,
             reconfigure: None,
             file_name: None,
         },
@@ -237,5 +236,48 @@ fn server_serves_rebuilds_and_live_reloads() {
     );
     let (status, body) = http_get(port, "/components/pathplanner.html");
     assert!(status.contains("200") && body.contains("LIVE"));
+    handle.stop();
+}
+
+/// A change to a watched path (the configuration file) rebuilds the whole site with the
+/// options `reconfigure` reads anew.
+#[test]
+fn a_watched_configuration_change_reconfigures_the_site() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("cat");
+    copy_examples(&input);
+    let config = dir.path().join("title.txt");
+    std::fs::write(&config, "First title").unwrap();
+    let (path, base) = (config.clone(), options(&input));
+    let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
+        let mut o = base.clone();
+        o.site.title = std::fs::read_to_string(&path)?;
+        Ok(o)
+    });
+    let mut first = options(&input);
+    first.site.title = "First title".into();
+    let handle = rtcdoc::serve::start(
+        rtcdoc::serve::ServeOptions {
+            build: first,
+            port: 0,
+            watch: vec![config.clone()],
+            reconfigure: Some(reconfigure),
+            file_name: None,
+        },
+        std::sync::Arc::new(|_: &str| {}),
+    )
+    .unwrap();
+    let port = handle.port();
+    let (_, body) = http_get(port, "/");
+    assert!(body.contains("First title"));
+    let (mut ws, _) = tungstenite::connect(format!("ws://127.0.0.1:{port}/__rtcdoc/ws")).unwrap();
+    if let tungstenite::stream::MaybeTlsStream::Plain(s) = ws.get_mut() {
+        s.set_read_timeout(Some(Duration::from_secs(20))).ok();
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    std::fs::write(&config, "Second title").unwrap();
+    assert_eq!(next_message(&mut ws), "reload");
+    let (_, body) = http_get(port, "/");
+    assert!(body.contains("Second title") && !body.contains("First title"));
     handle.stop();
 }
