@@ -146,13 +146,17 @@ pub struct ConnectorLink {
 pub struct InstancePort {
     /// The port's own name (without `Instance0.`).
     pub name: String,
-    pub service: bool,
-    /// Data ports: in or out (from the profile, else from the connectors that use it).
-    pub direction: Option<PortDirection>,
+    pub kind: InstancePortKind,
     /// The port of the component profile.
     pub link: Option<PortLink>,
-    /// Data type (data ports of a profile).
-    pub data_type: Option<String>,
+}
+
+/// What an instance's port is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InstancePortKind {
+    /// A data port: in or out (from the profile, else from the connectors that use it).
+    Data(Option<PortDirection>),
+    Service,
 }
 
 /// The key components are matched on: (vendor, category, name), compared as facets are.
@@ -409,8 +413,10 @@ impl Catalog {
                 .entry(i)
                 .or_insert_with(|| self.instance_ports(sys, i))
                 .iter()
-                .find(|p| p.name == name && !p.service)?
-                .direction
+                .find_map(|p| match p.kind {
+                    InstancePortKind::Data(d) if p.name == name => Some(d),
+                    _ => None,
+                })?
         };
         sys.profile
             .data_port_connectors
@@ -436,7 +442,7 @@ impl Catalog {
                     index,
                     name: name(&p.name),
                 };
-                (link, p.direction(), non_empty(&p.type_).map(str::to_string))
+                (link, InstancePortKind::Data(p.direction()))
             });
             let service = c
                 .profile
@@ -448,36 +454,35 @@ impl Catalog {
                         index,
                         name: name(&p.name),
                     };
-                    (link, None, None)
+                    (link, InstancePortKind::Service)
                 });
-            for (link, direction, data_type) in data.chain(service) {
+            for (link, kind) in data.chain(service) {
                 let (PortLink::Data { name, .. } | PortLink::Service { name, .. }) = &link;
                 out.push(InstancePort {
                     name: name.clone(),
-                    service: matches!(link, PortLink::Service { .. }),
-                    direction,
-                    data_type,
+                    kind,
                     link: Some(link),
                 });
             }
         }
         let inst = &sys.profile.components[i];
-        let mut add = |name: &str, service: bool, dir: Option<PortDirection>| {
+        let mut add = |name: &str, kind: InstancePortKind| {
             if name.is_empty() {
                 return;
             }
             match out.iter_mut().find(|p| p.name == name) {
                 Some(p) => {
-                    if p.direction.is_none() && !p.service {
-                        p.direction = dir;
+                    // A data port's direction, when the profile and the port lists left it open.
+                    if p.kind == InstancePortKind::Data(None) {
+                        if let InstancePortKind::Data(d) = kind {
+                            p.kind = InstancePortKind::Data(d);
+                        }
                     }
                 }
                 None => out.push(InstancePort {
                     name: name.to_string(),
-                    service,
-                    direction: dir,
+                    kind,
                     link: None,
-                    data_type: None,
                 }),
             }
         };
@@ -486,21 +491,27 @@ impl Catalog {
         // gets its side when the component is not in the catalogue.
         for p in &inst.data_ports {
             let kind = p.property("port.port_type").and_then(PortDirection::parse);
-            add(p.own_name(), false, kind);
+            add(p.own_name(), InstancePortKind::Data(kind));
         }
         for p in &inst.service_ports {
-            add(p.own_name(), true, None);
+            add(p.own_name(), InstancePortKind::Service);
         }
         for (k, c) in sys.profile.data_port_connectors.iter().enumerate() {
             let l = &sys.data_connectors[k];
             if l.source.instance == Some(i) {
                 if let Some(e) = &c.source {
-                    add(end_port_name(e), false, Some(PortDirection::Out));
+                    add(
+                        end_port_name(e),
+                        InstancePortKind::Data(Some(PortDirection::Out)),
+                    );
                 }
             }
             if l.target.instance == Some(i) {
                 if let Some(e) = &c.target {
-                    add(end_port_name(e), false, Some(PortDirection::In));
+                    add(
+                        end_port_name(e),
+                        InstancePortKind::Data(Some(PortDirection::In)),
+                    );
                 }
             }
         }
@@ -509,7 +520,7 @@ impl Catalog {
             for (e, el) in [(&c.source, &l.source), (&c.target, &l.target)] {
                 if el.instance == Some(i) {
                     if let Some(e) = e {
-                        add(end_port_name(e), true, None);
+                        add(end_port_name(e), InstancePortKind::Service);
                     }
                 }
             }

@@ -3,7 +3,7 @@
 //! (`html::system_svg`, laid out by [`crate::layout::wiring`]), Graphviz DOT and Mermaid
 //! (`rtcdoc graph`, the Markdown output's `diagrams = "mermaid"`).
 
-use crate::catalog::systems::{end_port_name, PortLink, System};
+use crate::catalog::systems::{end_port_name, InstancePortKind, PortLink, System};
 use crate::catalog::Catalog;
 use crate::i18n::Lang;
 use crate::model::{non_empty, PortDirection, Text};
@@ -131,11 +131,11 @@ pub fn system_wiring(
             .instance_ports(s, i)
             .into_iter()
             .map(|pt| {
-                let class = match (pt.service, pt.direction) {
-                    (true, _) => "service",
-                    (false, Some(PortDirection::In)) => "in",
-                    (false, Some(PortDirection::Out)) => "out",
-                    _ => "other",
+                let class = match pt.kind {
+                    InstancePortKind::Service => "service",
+                    InstancePortKind::Data(Some(PortDirection::In)) => "in",
+                    InstancePortKind::Data(Some(PortDirection::Out)) => "out",
+                    InstancePortKind::Data(_) => "other",
                 };
                 let page = comp
                     .and_then(|k| catalog.component_index(&k.id))

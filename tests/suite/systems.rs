@@ -167,10 +167,12 @@ fn a_system_alone_is_something_to_document() {
     let ports = cat.instance_ports(&cat.systems[0], 1);
     let names: Vec<&str> = ports.iter().map(|p| p.name.as_str()).collect();
     assert_eq!(names, ["image", "path", "camera"]);
-    // Sides: `image` is a connector's target; `path` ends at no connector and has no kind.
-    let dirs: Vec<_> = ports.iter().map(|p| p.direction).collect();
+    // Sides: `image` is a connector's target; `path` ends at no connector and has no side;
+    // `camera` is a service port.
+    let kinds: Vec<_> = ports.iter().map(|p| p.kind).collect();
+    use rtcdoc::catalog::systems::InstancePortKind::{Data, Service};
     use rtcdoc::model::PortDirection::{In, Out};
-    assert_eq!(dirs, [Some(In), None, None]);
+    assert_eq!(kinds, [Data(Some(In)), Data(None), Service]);
     // RTSystemEditor's `port.port_type` property gives an unconnected port its side.
     let dir = tempfile::tempdir().unwrap();
     let text = read(&site_fixture().join("system/PatrolSystem.xml")).replace(
@@ -180,8 +182,8 @@ fn a_system_alone_is_something_to_document() {
     common::write(dir.path(), "PatrolSystem.xml", &text);
     let cat = load(&dir.path().join("PatrolSystem.xml"));
     let ports = cat.instance_ports(&cat.systems[0], 1);
-    let dirs: Vec<_> = ports.iter().map(|p| p.direction).collect();
-    assert_eq!(dirs, [Some(In), Some(Out), None]);
+    let kinds: Vec<_> = ports.iter().map(|p| p.kind).collect();
+    assert_eq!(kinds, [Data(Some(In)), Data(Some(Out)), Service]);
     // … and the drawing puts it with the out-ports.
     let out = dir.path().join("site");
     build_site(dir.path(), &out, SiteOptions::default());
