@@ -44,11 +44,11 @@ fn history_item<M: Markup>(
     lang: Lang,
 ) {
     let r = &item.row;
-    if item.anchor.is_empty() {
+    let Some(version) = &item.version else {
         M::paragraph(out, &M::esc(&r.summary));
         return;
-    }
-    M::heading(out, v.page, 2, &item.anchor, &item.heading);
+    };
+    M::heading(out, v.page, 2, &version.anchor, &version.heading);
     let commit = match &r.url {
         Some(url) => M::link(&r.label, url),
         None => M::esc(&r.label),
@@ -65,11 +65,11 @@ fn history_item<M: Markup>(
     .map(|(label, value)| vec![M::esc(label), value])
     .collect();
     M::table(out, &[lang.t("fact_field"), lang.t("fact_value")], &rows);
-    if item.release {
+    if version.release {
         M::paragraph(out, &M::esc(lang.t("history_release_note")));
     }
-    if !item.changes.is_empty() {
-        let rows: Vec<Vec<String>> = item
+    if !version.changes.is_empty() {
+        let rows: Vec<Vec<String>> = version
             .changes
             .iter()
             .map(|c| {

@@ -101,10 +101,15 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         &format!("<section id=\"v-{}\"", ids[2]),
         "</section>",
     );
+    // The release is marked once: beside the heading, not also in it.
+    let short = &ids[2][..12.min(ids[2].len())];
     assert!(
-        release.contains("<span class=\"release\">release</span>"),
+        release.contains(&format!(
+            "<h2>1.1.0 · {short} <span class=\"release\">release</span></h2>"
+        )),
         "{release}"
     );
+    assert_eq!(release.matches("release").count(), 2, "{release}");
     // Profile and commit text is escaped.
     assert!(
         release.contains("Release 1.1.0 &lt;with status&gt;"),
@@ -148,9 +153,15 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         "{md}"
     );
     assert!(
-        md.contains("A release: the version string changed."),
+        md.contains(&format!("## 1.1.0 · {short}\n\n| Field | Value |")),
         "{md}"
     );
+    assert_eq!(
+        md.matches("A release: the version string changed.").count(),
+        1,
+        "{md}"
+    );
+    assert!(!md.contains("(release)"), "{md}");
     assert!(
         md.contains("1 version without changes to the specification"),
         "{md}"

@@ -66,16 +66,22 @@ impl ChangeRow {
 /// nothing of the specification, folded.
 #[derive(Debug, Clone, Serialize)]
 pub struct HistoryItem {
-    /// The anchor of a version (`v-<commit or backup>`); empty for a folded run.
-    pub anchor: String,
-    /// The heading of a version: its version string and label; empty for a folded run.
-    pub heading: String,
-    /// What the component page's History section shows for it.
+    /// What the component page's History section shows for it; for a folded run, its summary
+    /// is all the page shows.
     pub row: HistoryRow,
+    /// A version shown on its own; `None` for a folded run.
+    pub version: Option<VersionItem>,
+}
+
+/// What a history page shows of a version beside its row.
+#[derive(Debug, Clone, Serialize)]
+pub struct VersionItem {
+    /// `v-<commit or backup>`.
+    pub anchor: String,
+    /// Its version string and label (the release is marked beside it, once).
+    pub heading: String,
     /// A release (a new version string).
     pub release: bool,
-    /// Why the version could not be read.
-    pub error: Option<String>,
     /// Every change from the version before.
     pub changes: Vec<ChangeRow>,
 }
@@ -119,30 +125,28 @@ pub fn history_page_view<'a>(
         let e = &h[i];
         if e.stands_out() {
             let row = row(e, committed(h), lang, &url, current.as_deref());
-            items.push(HistoryItem {
+            let version = VersionItem {
                 anchor: entry_anchor(e),
-                heading: [row.version.as_str(), row.label.as_str()]
+                heading: [e.version.as_deref().unwrap_or(""), row.label.as_str()]
                     .iter()
                     .filter(|s| !s.is_empty())
                     .copied()
                     .collect::<Vec<_>>()
                     .join(" · "),
-                row,
                 release: e.release && !e.first,
-                error: e.error.clone(),
                 changes: e.changes.iter().map(|c| ChangeRow::of(c, lang)).collect(),
+            };
+            items.push(HistoryItem {
+                row,
+                version: Some(version),
             });
             i += 1;
             continue;
         }
         let run = h[i..].iter().take_while(|e| !e.stands_out()).count();
         items.push(HistoryItem {
-            anchor: String::new(),
-            heading: String::new(),
             row: super::history::folded(run, lang),
-            release: false,
-            error: None,
-            changes: Vec::new(),
+            version: None,
         });
         i += run;
     }
