@@ -167,15 +167,26 @@ fn http_get(port: u16, path: &str) -> (String, String) {
     )
 }
 
-fn next_message(
-    ws: &mut tungstenite::WebSocket<tungstenite::stream::MaybeTlsStream<std::net::TcpStream>>,
-) -> String {
+fn next_message(ws: &mut Socket) -> String {
     loop {
         match ws.read().expect("websocket message") {
             tungstenite::Message::Text(t) => return t.to_string(),
             _ => continue,
         }
     }
+}
+
+type Socket = tungstenite::WebSocket<tungstenite::stream::MaybeTlsStream<std::net::TcpStream>>;
+
+/// The live-reload websocket of the server on `port`, once the watcher had a moment to be
+/// armed (slow machines).
+fn live_socket(port: u16) -> Socket {
+    let (mut ws, _) = tungstenite::connect(format!("ws://127.0.0.1:{port}/__rtcdoc/ws")).unwrap();
+    if let tungstenite::stream::MaybeTlsStream::Plain(s) = ws.get_mut() {
+        s.set_read_timeout(Some(Duration::from_secs(20))).ok();
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    ws
 }
 
 #[test]
@@ -210,12 +221,7 @@ fn server_serves_rebuilds_and_live_reloads() {
     let (_, js) = http_get(port, "/__rtcdoc/livereload.js");
     assert!(js.contains("WebSocket"));
 
-    let (mut ws, _) = tungstenite::connect(format!("ws://127.0.0.1:{port}/__rtcdoc/ws")).unwrap();
-    if let tungstenite::stream::MaybeTlsStream::Plain(s) = ws.get_mut() {
-        s.set_read_timeout(Some(Duration::from_secs(20))).ok();
-    }
-    // Give the watcher a moment to be armed on slow machines.
-    std::thread::sleep(Duration::from_millis(300));
+    let mut ws = live_socket(port);
     let pp: PathBuf = input.join("PathPlanner/RTC.xml");
     let start = Instant::now();
     edit(&pp, "Grid path planner", "Grid path planner LIVE");
@@ -270,11 +276,7 @@ fn a_watched_configuration_change_reconfigures_the_site() {
     let port = handle.port();
     let (_, body) = http_get(port, "/");
     assert!(body.contains("First title"));
-    let (mut ws, _) = tungstenite::connect(format!("ws://127.0.0.1:{port}/__rtcdoc/ws")).unwrap();
-    if let tungstenite::stream::MaybeTlsStream::Plain(s) = ws.get_mut() {
-        s.set_read_timeout(Some(Duration::from_secs(20))).ok();
-    }
-    std::thread::sleep(Duration::from_millis(300));
+    let mut ws = live_socket(port);
     std::fs::write(&config, "Second title").unwrap();
     assert_eq!(next_message(&mut ws), "reload");
     let (_, body) = http_get(port, "/");
