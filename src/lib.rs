@@ -49,17 +49,24 @@ pub(crate) mod test_text {
         proptest::collection::vec(proptest::sample::select(parts), 0..max).prop_map(|p| p.concat())
     }
 
-    /// The property that a fast path gives what its reference gives, on `cases` texts of
-    /// [`concat_of`]`(parts, max)`; a failure panics with the smallest text found.
+    /// The property that a fast path gives what its reference gives: on each of `known`
+    /// (texts that once failed), then on `cases` texts of [`concat_of`]`(parts, max)` (`None`:
+    /// proptest's default number, `PROPTEST_CASES`); a failure panics with the smallest text
+    /// found.
     pub fn agrees<T: PartialEq + std::fmt::Debug>(
-        (parts, max, cases): (&'static [&'static str], usize, u32),
+        (parts, max, cases): (&'static [&'static str], usize, Option<u32>),
+        known: &[&str],
         fast: impl Fn(&str) -> T,
         reference: impl Fn(&str) -> T,
     ) {
+        for text in known {
+            assert_eq!(fast(text), reference(text), "{text:?}");
+        }
+        let default = proptest::test_runner::Config::default();
         let config = proptest::test_runner::Config {
-            cases,
+            cases: cases.unwrap_or(default.cases),
             failure_persistence: None,
-            ..Default::default()
+            ..default
         };
         let result =
             proptest::test_runner::TestRunner::new(config).run(&concat_of(parts, max), |text| {
@@ -76,8 +83,21 @@ pub(crate) mod test_text {
     #[should_panic(expected = r#"minimal failing input: "b""#)]
     fn agrees_fails_on_a_difference() {
         agrees(
-            (&["a", "b"], 6, 64),
+            (&["a", "b"], 6, Some(64)),
+            &[],
             |t| t.replace('b', "c"),
+            str::to_string,
+        );
+    }
+
+    /// A known text is tried first, whatever the generated ones give.
+    #[test]
+    #[should_panic(expected = "\"x\"")]
+    fn agrees_tries_the_known_texts() {
+        agrees(
+            (&["a"], 2, Some(1)),
+            &["x"],
+            |t| t.replace('x', "y"),
             str::to_string,
         );
     }

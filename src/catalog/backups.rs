@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 /// One backup file of a component profile. In the JSON a backup is a document of its own:
 /// its path as `source` and, when it could be read, its whole `profile` (nothing is lost).
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
-#[serde(rename_all = "camelCase")]
+#[serde(rename_all = "camelCase", from = "BackupRead")]
 pub struct Backup {
     /// Path relative to the input directory, forward slashes.
     pub source: String,
@@ -34,6 +34,32 @@ pub enum BackupContent {
     /// Why the backup could not be read (a Shift_JIS file declaring UTF-8, a truncated save):
     /// shown beside it instead of an error about the component.
     Error(String),
+}
+
+/// A backup as catalog.json has it, read leniently: a profile wins over an error, and a
+/// backup with neither (a hand-edited file) reads as unreadable instead of failing the whole
+/// catalogue.
+#[derive(Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct BackupRead {
+    source: String,
+    saved: Option<String>,
+    error: Option<String>,
+    profile: Option<Box<Profile>>,
+}
+
+impl From<BackupRead> for Backup {
+    fn from(b: BackupRead) -> Backup {
+        Backup {
+            source: b.source,
+            saved: b.saved,
+            content: match (b.profile, b.error) {
+                (Some(p), _) => BackupContent::Profile(p),
+                (None, Some(e)) => BackupContent::Error(e),
+                (None, None) => BackupContent::Error("the backup could not be read".to_string()),
+            },
+        }
+    }
 }
 
 impl Backup {
@@ -258,5 +284,14 @@ mod tests {
         }
         assert_eq!(read.declares(), (Some("Camera"), None));
         assert_eq!(bad.declares(), (None, None));
+        // A hand-edited catalog.json: neither key reads as unreadable, both as the profile.
+        let neither: Backup = serde_json::from_str(r#"{"source":"c/RTC.xml1","error":null}"#)
+            .expect("reads as unreadable");
+        assert!(matches!(neither.content, BackupContent::Error(_)));
+        let both: Backup = serde_json::from_str(
+            r#"{"source":"c/RTC.xml1","error":"x","profile":{"basicInfo":{"name":"Camera"}}}"#,
+        )
+        .expect("reads the profile");
+        assert_eq!(both.declares(), (Some("Camera"), None));
     }
 }

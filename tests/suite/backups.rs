@@ -69,6 +69,12 @@ fn backups_are_versions_not_components() {
     assert_eq!(backups[1]["profile"]["basicInfo"]["version"], "1.0.0");
     assert_eq!(backups[1]["profile"]["dataPorts"][1]["name"], "output");
     assert!(backups[0]["profile"].is_null());
+    // catalog.json, backups and all, reads back to the same bytes.
+    let bytes = std::fs::read(out.join("json/catalog.json")).unwrap();
+    let back = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").expect("reads back");
+    let mut again = Vec::new();
+    rtcdoc::render::json::write_json_with(&back.catalog, &back.title, false, &mut again).unwrap();
+    assert!(again == bytes, "catalog.json round trip differs");
     // The backup's port `output` and placeholders appear nowhere as a component.
     let html = out.join("html");
     for page in [

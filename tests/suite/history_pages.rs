@@ -162,6 +162,15 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
         "{md}"
     );
     assert!(!md.contains("(release)"), "{md}");
+    let dox = page(&site, "doxygen/history/base.dox");
+    assert!(dox.contains(&format!(" 1.1.0 · {short}\n")), "{dox}");
+    assert_eq!(
+        dox.matches("A release: the version string changed.")
+            .count(),
+        1,
+        "{dox}"
+    );
+    assert!(!dox.contains("(release)"), "{dox}");
     assert!(
         md.contains("1 version without changes to the specification"),
         "{md}"

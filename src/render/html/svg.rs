@@ -823,7 +823,7 @@ mod tests {
             "0123456789abcdef",
             "\u{1F600}",
         ];
-        crate::test_text::agrees((PARTS, 40, 2048), esc, reference);
+        crate::test_text::agrees((PARTS, 40, Some(2048)), &[], esc, reference);
     }
 
     #[test]
