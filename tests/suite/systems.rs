@@ -1655,3 +1655,43 @@ fn rts_system(name: &str, parts: &[&str]) -> String {
         parts.concat()
     )
 }
+
+/// Whether an instance is required reads as yes or no in the page's language, as the
+/// lifecycle table says whether an action is implemented; a value that is no boolean is shown
+/// as written.
+#[test]
+fn required_instances_read_as_yes_or_no() {
+    let dir = tempfile::tempdir().unwrap();
+    let instance = |name: &str, required: &str| {
+        format!(
+            r#"<rts:Components rts:id="RTC:Lab:C:{name}:1.0" rts:instanceName="{name}0" rts:pathUri="" rts:activeConfigurationSet="default" rts:isRequired="{required}" rts:compositeType="None"/>"#
+        )
+    };
+    let (a, b, c) = (
+        instance("A", "true"),
+        instance("B", "false"),
+        instance("C", "maybe"),
+    );
+    common::write(dir.path(), "in/Req.xml", &rts_system("Req", &[&a, &b, &c]));
+    for (language, label, yes, no) in [
+        (rtcdoc::i18n::Lang::En, "Required", "yes", "no"),
+        (rtcdoc::i18n::Lang::Ja, "必須", "はい", "いいえ"),
+    ] {
+        let out = dir.path().join(format!("{language:?}"));
+        build_site(
+            &dir.path().join("in"),
+            &out,
+            SiteOptions {
+                language,
+                ..Default::default()
+            },
+        );
+        let html = read(&out.join("systems/req.html"));
+        let cells: Vec<&str> = html
+            .split(&format!(r#"<td class="nowrap" data-label="{label}">"#))
+            .skip(1)
+            .map(|rest| rest.split("</td>").next().unwrap_or(""))
+            .collect();
+        assert_eq!(cells, [yes, no, "maybe"], "{html}");
+    }
+}

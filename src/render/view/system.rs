@@ -263,8 +263,7 @@ type PageHref<'a> = dyn Fn(&Page, Option<&str>) -> String + 'a;
 /// The instances of system `s`, each linked to its component's page, a composite's members
 /// and the composites an instance is a member of to their rows (`local`).
 fn instance_rows(
-    cat: &Catalog,
-    s: &System,
+    (cat, s, lang): (&Catalog, &System, Lang),
     show_host: bool,
     (href, local): (&PageHref<'_>, &dyn Fn(&str) -> String),
 ) -> Vec<InstanceRow> {
@@ -316,7 +315,12 @@ fn instance_rows(
                 drift: s.instances[i].version_drift.clone(),
                 active_set: txt(&c.active_configuration_set),
                 contexts,
-                required: txt(&c.is_required),
+                // Yes or no in the page's language, as the lifecycle table says whether an
+                // action is implemented; a value that is no boolean, as written.
+                required: match c.required() {
+                    Some(r) => lang.t(if r { "yes" } else { "no" }).to_string(),
+                    None => txt(&c.is_required),
+                },
                 composite: txt(&c.composite_type),
                 members: c.member_names().into_iter().map(&row_link).collect(),
                 member_of: s
@@ -591,7 +595,7 @@ pub fn system_view(
         crate::catalog::systems::host_values(p)
     };
 
-    let instances = instance_rows(cat, s, show_host, (&href, &local));
+    let instances = instance_rows((cat, s, lang), show_host, (&href, &local));
 
     let configs = instance_configs(cat, s, lang);
 
