@@ -253,8 +253,9 @@ impl SystemProperty {
     }
 }
 
-/// Whether a property carries private host data: its name is `os.hostname`, `corba.endpoint`,
-/// `corba.endpoints`, or ends in `.host`, `hostname` or an `ior` segment (`IOR`,
+/// Whether a property carries private host data: its name is `os.hostname`, `os.release` or
+/// `os.version` (the saving machine's kernel release and build, e.g. `4.15.0-32-generic`,
+/// `#35~16.04.1-Ubuntu SMP …`), `corba.endpoint`, `corba.endpoints`, or ends in `.host`, `hostname` or an `ior` segment (`IOR`,
 /// `dataport.corba_cdr.inport_ior`; `behavior` is not one), or its value is an IOR string
 /// (`IOR:` + hex digits), a `host:port` endpoint (also `giop:tcp:host:port`, `[::1]:2809`,
 /// and lists of them) or a name-service path in a host's context (`lab-pc.host_cxt/Cam0.rtc`,
@@ -266,7 +267,12 @@ pub fn is_private_property(name: Option<&str>, value: Option<&str>) -> bool {
         let last = n.rsplit(['.', '_', ':']).next().unwrap_or(&n);
         if matches!(
             n.as_str(),
-            "os.hostname" | "corba.endpoint" | "corba.endpoints" | "host"
+            "os.hostname"
+                | "os.release"
+                | "os.version"
+                | "corba.endpoint"
+                | "corba.endpoints"
+                | "host"
         ) || n.ends_with(".host")
             || n.ends_with("hostname")
             || last == "ior"
@@ -931,6 +937,14 @@ mod tests {
     fn private_properties() {
         let p = |n: &str, v: &str| is_private_property(Some(n), Some(v));
         assert!(p("os.hostname", "x"));
+        assert!(p("os.release", "4.15.0-32-generic"));
+        assert!(p(
+            "OS.Version",
+            "#35~16.04.1-Ubuntu SMP Fri Aug 10 21:54:34 UTC 2018"
+        ));
+        // The platform alone names no machine.
+        assert!(!p("os.name", "Linux"));
+        assert!(!p("os.arch", "x86_64"));
         assert!(p("corba.endpoint", ""));
         assert!(p("corba.endpoints", ""));
         assert!(p("naming.host", "x"));
