@@ -171,6 +171,25 @@ pub fn end_port_name(e: &PortEnd) -> &str {
         .unwrap_or("")
 }
 
+/// For an instance whose component is not in the catalogue, whether the system file lists
+/// `port` among the instance's ports of its kind (data or service), each compared by its last
+/// `.` part as the catalogue finds ports; `None` when it lists no port of that kind (an
+/// instance may list only its data ports). `rtcdoc check` reports a connector end at a port
+/// not listed (RTC601), and the drawings mark that port.
+pub fn instance_lists_port(c: &SystemComponent, service: bool, port: &str) -> Option<bool> {
+    let ports = if service {
+        &c.service_ports
+    } else {
+        &c.data_ports
+    };
+    let want = port_own_part(port.trim());
+    (!ports.is_empty()).then(|| {
+        ports
+            .iter()
+            .any(|p| port_own_part(p.own_name().trim()) == want)
+    })
+}
+
 /// A port name's own part: the text after its last `.` (`Instance0.out` → `out`).
 pub fn port_own_part(name: &str) -> &str {
     name.rsplit('.').next().unwrap_or(name)

@@ -5,7 +5,7 @@
 use super::registry as r;
 use super::rules::{seen_before, Findings};
 use crate::catalog::systems::{
-    check_configuration, end_port_name, port_own_part, ConfigCheck, PortLink, System,
+    check_configuration, end_port_name, instance_lists_port, ConfigCheck, PortLink, System,
 };
 use crate::catalog::Catalog;
 use crate::diagnostic::Diagnostic;
@@ -243,17 +243,13 @@ fn end(
             let Some(c) = s.profile.components.get(i) else {
                 return;
             };
-            // The ports of the connector's kind (an instance may list only its data ports), each
-            // also by its last `.` part, as the catalogue finds ports.
-            let ports = if service {
-                &c.service_ports
-            } else {
-                &c.data_ports
-            };
-            let listed: Vec<&str> = ports.iter().map(|p| p.own_name().trim()).collect();
-            let want = port_own_part(port.trim());
-            let found = listed.iter().any(|n| port_own_part(n) == want);
-            if !listed.is_empty() && !found {
+            if instance_lists_port(c, service, port) == Some(false) {
+                let ports = if service {
+                    &c.service_ports
+                } else {
+                    &c.data_ports
+                };
+                let listed: Vec<&str> = ports.iter().map(|p| p.own_name().trim()).collect();
                 sink.emit(
                     r::SYSTEM_UNKNOWN_PORT,
                     e.pos,

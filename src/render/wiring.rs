@@ -3,7 +3,9 @@
 //! (`html::system_svg`, laid out by [`crate::layout::wiring`]), Graphviz DOT and Mermaid
 //! (`rtcdoc graph`, the Markdown output's `diagrams = "mermaid"`).
 
-use crate::catalog::systems::{end_port_name, InstancePortKind, PortLink, System};
+use crate::catalog::systems::{
+    end_port_name, instance_lists_port, InstancePortKind, PortLink, System,
+};
 use crate::catalog::Catalog;
 use crate::i18n::Lang;
 use crate::model::{non_empty, PortDirection, Text};
@@ -155,17 +157,19 @@ pub fn system_wiring(
                     "service" => lang.t("sys_service_port"),
                     _ => lang.t("port"),
                 };
-                // The component is in the catalogue, but this port is not in its profile.
-                let unknown = comp.is_some() && pt.link.is_none();
+                // A port its component's profile does not have, or, for a component not in
+                // the catalogue, one the system file does not list for the instance (RTC601).
+                let service = pt.kind == InstancePortKind::Service;
+                let why = match comp {
+                    Some(_) => pt.link.is_none().then_some("sys_port_not_in_profile"),
+                    None => (instance_lists_port(c, service, &pt.name) == Some(false))
+                        .then_some("sys_port_not_listed"),
+                };
+                let unknown = why.is_some();
                 WirePort {
-                    label: if unknown {
-                        format!(
-                            "{kind} {iname}.{} ({})",
-                            pt.name,
-                            lang.t("sys_port_not_in_profile")
-                        )
-                    } else {
-                        format!("{kind} {iname}.{}", pt.name)
+                    label: match why {
+                        Some(key) => format!("{kind} {iname}.{} ({})", pt.name, lang.t(key)),
+                        None => format!("{kind} {iname}.{}", pt.name),
                     },
                     name: pt.name,
                     class,

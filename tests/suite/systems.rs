@@ -1142,7 +1142,7 @@ fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
     };
     let dot = graph("dot");
     // DOT draws no port squares: no legend of them (the SVG has it, below).
-    let legend = "Dotted square: a port its component's profile does not have (Src0)";
+    let legend = "Dotted square: a port not in its component's profile (or its instance's port list) (Src0)";
     assert!(dot.contains(&format!("label=\"{note}\\l\"")), "{dot}");
     assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
     assert!(dot.contains("<i>nosuchport</i> ?"), "{dot}");
@@ -1508,6 +1508,20 @@ fn a_connector_end_not_among_the_instances_listed_ports_is_reported() {
     assert_eq!(
         messages,
         ["connector end `B0.inort2`: instance `B0` lists no port `inort2` in the system file (it lists `inport2`)"]
+    );
+    // The drawing marks that port as it marks one a profile lacks: dotted, named in the
+    // legend, and said in its label; the listed port is drawn as any other.
+    let out = d.join("site");
+    build_site(&d.join("in"), &out, SiteOptions::default());
+    let svg = read(&out.join("systems/p.svg"));
+    assert!(
+        svg.contains(r#"class="port in unknown" aria-label="in-port B0.inort2 (not among the instance&#39;s ports in the system file)""#),
+        "{svg}"
+    );
+    assert!(svg.contains(r#"aria-label="Port B0.inport2""#), "{svg}");
+    assert!(
+        svg.contains("dotted square: a port not in its component&#39;s profile (or its instance&#39;s port list) (B0)"),
+        "{svg}"
     );
     common::write(d, "in/P.xml", &system("inport2"));
     assert!(common::findings(d, "in", &["RTC601"]).is_empty());
