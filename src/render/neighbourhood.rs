@@ -312,12 +312,18 @@ fn connector(
     let (a, b) = (&f.ports[from.1].name, &t.ports[to.1].name);
     let between = if row.service { " — " } else { " → " };
     let of = [" (", row.type_name, ")"].concat();
+    // The "+N more" box has one nameless port: its end is the box's name alone.
+    let end = |name: &str, port: &str| match port {
+        "" => name.to_string(),
+        _ => [name, ".", port].concat(),
+    };
+    let short = |name: &str, port: &str| (if port.is_empty() { name } else { port }).to_string();
     WireConnector {
         from,
         to,
         service: row.service,
-        label: [f.name.as_str(), ".", a, between, &t.name, ".", b, &of].concat(),
-        caption: Some([a.as_str(), between, b, &of].concat()),
+        label: [end(&f.name, a), between.into(), end(&t.name, b), of.clone()].concat(),
+        caption: Some([short(&f.name, a), between.into(), short(&t.name, b), of].concat()),
     }
 }
 

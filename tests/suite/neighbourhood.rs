@@ -58,6 +58,12 @@ fn html_page_draws_and_lists_the_neighbourhood_with_caps_stated() {
         sec.contains(">+3 more<"),
         "the drawing says what it caps: {sec}"
     );
+    // Its connector names the box alone, without a port after it.
+    assert!(
+        sec.contains("<title>+3 more → Hub.in (RTC::TimedLong)</title>"),
+        "{sec}"
+    );
+    assert!(!sec.contains("more. "), "{sec}");
     // Named neighbours: 5 on `in`, 2 on `out` (Both, Sink), the map server; Both is on both
     // ports but one box.
     assert_eq!(list.matches("../components/").count(), 8, "{list}");
@@ -144,8 +150,9 @@ fn graph_component_writes_the_neighbourhood_and_names_close_matches() {
         m.contains("[\"+3 more<br/><small>RTC::TimedLong</small>\"]"),
         "{m}"
     );
-    // Edges labelled with the ports and the type (the guide).
+    // Edges labelled with the ports and the type (the guide); the "+3 more" box by its name.
     assert!(m.contains("\"value → in (RTC::TimedLong)\" --> n0"), "{m}");
+    assert!(m.contains("\"+3 more → in (RTC::TimedLong)\""), "{m}");
     // By id too; DOT, its edges labelled alike.
     let o = run(&["graph", &input, "--component", "RTC:Test:Cat:Hub:1.0.0"]);
     assert!(o.status.success());

@@ -1142,7 +1142,8 @@ fn a_connector_left_out_of_the_drawing_is_named_with_its_reason() {
     };
     let dot = graph("dot");
     // DOT draws no port squares: no legend of them (the SVG has it, below).
-    let legend = "Dotted square: a port not in its component's profile (or its instance's port list) (Src0)";
+    let legend =
+        "Dotted square: a port not in its component's profile (or its instance's port list) (Src0)";
     assert!(dot.contains(&format!("label=\"{note}\\l\"")), "{dot}");
     assert_eq!(dot.matches(" -> ").count(), 2, "{dot}");
     assert!(dot.contains("<i>nosuchport</i> ?"), "{dot}");
