@@ -118,6 +118,7 @@ pub const SYSTEM_INSTANCE_ADDED: &str = "DIFF352";
 pub const SYSTEM_CONNECTOR_ADDED: &str = "DIFF353";
 pub const SYSTEM_CONFIGURATION: &str = "DIFF354";
 pub const SYSTEM_OTHER: &str = "DIFF355";
+pub const SYSTEM_CONNECTOR_TYPE_REPAIRED: &str = "DIFF356";
 
 use Level::{Breaking, Info, Warning};
 
@@ -352,7 +353,7 @@ pub static CODES: &[Code] = &[
         level: Breaking,
         name: "system-connector-data-type-changed",
         summary: "a data connector of an RT System carries another data type",
-        explanation: "OpenRTM connects two data ports only when the connector's `dataport.data_type` equals the types of both ports: a connector saved with another type is refused when the system is restored, or joins peers built for different types (CDR is positional, so they decode each other's data wrongly). Spellings of one type (`RTC::TimedLong`, `IDL:RTC/TimedLong:1.0`) are compared in canonical form and are DIFF355 when only the spelling changed. The `dataport.data_type` property is folded into the attribute when both changed.",
+        explanation: "OpenRTM connects two data ports only when the connector's `dataport.data_type` equals the types of both ports: a connector saved with another type is refused when the system is restored, or joins peers built for different types (CDR is positional, so they decode each other's data wrongly). Spellings of one type (`RTC::TimedLong`, `IDL:RTC/TimedLong:1.0`) are compared in canonical form and are DIFF355 when only the spelling changed. The `dataport.data_type` property is folded into the attribute when both changed. A change to the type both ports carry as the file records them, from one they did not carry, is a repair (DIFF356).",
     },
     Code {
         code: DEFAULT_CHANGED,
@@ -619,6 +620,13 @@ pub static CODES: &[Code] = &[
         name: "system-other-changed",
         summary: "any other value of an RT System profile changed",
         explanation: "Every value of a system profile is compared, so that no change goes unreported; values without a classification of their own (the system's version, dates, comments, the boxes' positions in RTSystemEditor, start-up orders, groups, properties, values rtcdoc does not know, a type spelled differently) are reported here. Host data (IORs, host names, CORBA endpoints, naming paths such as `pc1:2809/Cam0.rtc` or `pc1/Cam0.rtc`, which change with every save and are not published) is not compared.",
+    },
+    Code {
+        code: SYSTEM_CONNECTOR_TYPE_REPAIRED,
+        level: Info,
+        name: "system-connector-data-type-repaired",
+        summary: "a data connector of an RT System now carries the type its ports carry",
+        explanation: "The connector's data type changed to the type that both its ports carry, as the system file records them (RTSystemEditor's `dataport.data_type` on each instance's port), where before it carried a type they did not: the connection that was refused when the system was restored now succeeds. Any other change of a connector's type is DIFF156; when the file records no type for a port, a change cannot be told to be a repair and is DIFF156 too.",
     },
 ];
 

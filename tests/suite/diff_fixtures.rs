@@ -290,6 +290,16 @@ const CASES: &[Case] = &[
         says: "now carries `IDL:RTC/TimedPose3D:1.0` instead of `IDL:RTC/TimedPose2D:1.0`",
     },
     Case {
+        code: "DIFF356",
+        path: "dataPortConnectors/odometry_odom/dataType",
+        component: NAV_SYSTEM,
+        // The same change as DIFF156's, but the file records both ports as TimedPose3D: the
+        // connector now carries their type, a repair.
+        all: &["DIFF356"],
+        file: SYSTEM,
+        says: "now carries `IDL:RTC/TimedPose3D:1.0`, the type its ports carry, instead of `IDL:RTC/TimedPose2D:1.0`, which they did not: a repair",
+    },
+    Case {
         code: "DIFF251",
         path: "components/Base0/id",
         component: NAV_SYSTEM,

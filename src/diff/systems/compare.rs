@@ -35,6 +35,7 @@ pub fn compare_systems_as(label: &str, old: &RtSystem, new: &RtSystem) -> Vec<Ch
     let (old, new) = (&public(old), &public(new));
     let mut cx = Cx {
         label,
+        sides: (old, new),
         out: Vec::new(),
     };
     cx.instances(old, new);
@@ -83,7 +84,35 @@ enum At {
 
 struct Cx<'a> {
     label: &'a str,
+    /// The two systems, for what a connector's ports carry.
+    sides: (&'a RtSystem, &'a RtSystem),
     out: Vec<Change>,
+}
+
+/// The type system `s` records for the data port at connector end `e` (RTSystemEditor's
+/// `dataport.data_type` on the instance's port), when it records one.
+fn recorded_type<'s>(s: &'s RtSystem, e: Option<&PortEnd>) -> Option<&'s str> {
+    let e = e?;
+    let instance = non_empty(&e.instance_name)?;
+    let name = crate::catalog::systems::end_port_name(e);
+    s.components
+        .iter()
+        .find(|c| non_empty(&c.instance_name) == Some(instance))?
+        .data_ports
+        .iter()
+        .find(|p| p.own_name() == name)?
+        .property("dataport.data_type")
+}
+
+/// Whether connector `c` of system `s` carries the type both its ports carry, as `s` records
+/// them; `None` when it records no type for a port.
+fn carries_its_ports_type(s: &RtSystem, c: &DataPortConnector) -> Option<bool> {
+    let ends = [
+        recorded_type(s, c.source.as_ref())?,
+        recorded_type(s, c.target.as_ref())?,
+    ];
+    let t = c.data_type.as_deref();
+    Some(ends.iter().all(|p| same_type(t, Some(p))))
 }
 
 fn text(s: &Option<Text>) -> Option<String> {
@@ -771,6 +800,19 @@ impl Cx<'_> {
                     &format!("the data type of connector `{label}`"),
                     (a.data_type.as_deref(), b.data_type.as_deref()),
                     "names the same type",
+                )
+            } else if carries_its_ports_type(self.sides.1, b) == Some(true)
+                && carries_its_ports_type(self.sides.0, a) == Some(false)
+            {
+                (
+                    codes::SYSTEM_CONNECTOR_TYPE_REPAIRED,
+                    format!(
+                        "data port connector `{label}` (`{}` → `{}`) now carries {}, the type its ports carry, instead of {}, which they did not: a repair",
+                        end_text(b.source.as_ref()),
+                        end_text(b.target.as_ref()),
+                        quoted(b.data_type.as_deref()),
+                        quoted(a.data_type.as_deref())
+                    ),
                 )
             } else {
                 (
