@@ -521,8 +521,8 @@ pub fn nothing_found(
     };
     format!(
         "nothing to document: no RTC component profile (RTC.xml, or YAML with `rtcProfile`), RT System profile (RtsProfile XML, .rtsys, or YAML with `rtsProfile`) or IDL file in `{shown}` ({looked}). \
-         Check the path and the --include/--exclude patterns, or pass --allow-empty to build an \
-         empty catalogue anyway"
+         Check the path and the --include/--exclude patterns, or pass --allow-empty to accept an \
+         empty input"
     )
 }
 

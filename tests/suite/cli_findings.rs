@@ -302,6 +302,24 @@ fn nothing_to_document_is_an_error_unless_allowed() {
     assert!(rtcdoc(&["check", "in", "--allow-empty"], d)
         .status
         .success());
+    // `diff` against a side left empty (its last profile deleted): the hint it gives works,
+    // and every component of the other side is then removed.
+    let camera = std::fs::read_to_string(common::root().join("examples/Joystick/RTC.xml")).unwrap();
+    write(d, "old/Joystick/RTC.xml", &camera);
+    let out = rtcdoc(&["diff", "old", "empty"], d);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("or pass --allow-empty to accept an empty input"),
+        "{}",
+        stderr(&out)
+    );
+    let out = rtcdoc(&["diff", "old", "empty", "--allow-empty"], d);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains("breaking[DIFF101]"),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
 }
 
 #[test]
