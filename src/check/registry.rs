@@ -402,7 +402,7 @@ pub static RULES: &[Rule] = &[
         summary: "vendor or version contains whitespace or `:`",
         explanation: "vendor and version are parts of the `:`-separated id; a `:` makes the id ambiguous and whitespace breaks naming-service paths and command lines that use the id.",
         spec: "2.3.1.1 (id), 2.3.2 (vendor, version)",
-        hint: "remove the spaces (e.g. `AIST Lab` → `AISTLab`) or the `:`, in BasicInfo and in the id",
+        hint: "remove what the message names, in BasicInfo and in the id (spaces: `AIST Lab` → `AISTLab`; a `:`); when vendor and version are swapped, swap them back",
     },
     Rule {
         code: NAME_WHITESPACE,
@@ -544,9 +544,9 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "dataname-mismatch",
         summary: "a configuration's documentation names another parameter of the component",
-        explanation: "RTCBuilder's documentation of a configuration parameter carries the name of the data it describes (`rtcDoc:dataname`): the parameter's own name or a label for people (`wheel base`, `画像幅`). When it is the name of *another* parameter of the component, the documentation was copied from that parameter and not updated (real profiles document `dir_lf0` under `dir_rf1`): the description, unit and range shown for the parameter may belong to the other one.",
+        explanation: "RTCBuilder's documentation of a configuration parameter carries the name of the data it describes (`rtcDoc:dataname`): the parameter's own name or a label for people (`wheel base`, `画像幅`). When it is the name of *another* parameter of the component, the documentation was copied from that parameter and not updated (real profiles document `dir_lf0` under `dir_rf1`): the description, unit and range shown for the parameter may belong to the other one (or, as often, only the data name was left unchanged).",
         spec: "2.4.4 (configuration documentation: dataname)",
-        hint: "correct the documentation's data name (and its text) to the parameter's own name",
+        hint: "set the documentation's data name to the parameter's own name, and check that its description, unit and range are this parameter's",
     },
     Rule {
         code: UNPROVIDED_INTERFACE,

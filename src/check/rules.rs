@@ -453,6 +453,11 @@ pub fn check_date_time(s: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// A version number: digits and dots, starting with a digit (`1.0.0`, `2`).
+fn looks_like_version(s: &str) -> bool {
+    s.starts_with(|c: char| c.is_ascii_digit()) && s.chars().all(|c| c.is_ascii_digit() || c == '.')
+}
+
 /// RTC201–RTC203: the id and the parts it is built from.
 fn identity(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
@@ -467,10 +472,18 @@ fn identity(p: &Profile, s: &mut Findings) {
                 bad.push("`:`");
             }
             if !bad.is_empty() {
+                // Text in the version and a version number as the vendor: the two swapped.
+                let swapped = match (name, b.vendor.as_deref().map(str::trim)) {
+                    ("version", Some(v)) if looks_like_version(v) => format!(
+                        " (the vendor {} looks like a version: are vendor and version swapped?)",
+                        Code(v)
+                    ),
+                    _ => String::new(),
+                };
                 s.emit(
                     r::VENDOR_VERSION_CHARS,
                     b.attr_pos.or(name, bpos),
-                    format!("{name} {} contains {}", Code(t), bad.join(" and ")),
+                    format!("{name} {} contains {}{swapped}", Code(t), bad.join(" and ")),
                 );
             }
         }
@@ -785,7 +798,7 @@ fn configuration_datanames(p: &Profile, s: &mut Findings) {
                 r::DATANAME_MISMATCH,
                 if doc.pos.is_unknown() { c.pos } else { doc.pos },
                 format!(
-                    "the documentation of configuration `{name}` names the parameter `{documented}` (rtcDoc:dataname): it was probably copied from `{documented}` and describes that one"
+                    "the documentation of configuration `{name}` names the parameter `{documented}` (rtcDoc:dataname): it was probably copied from `{documented}`: check that its text describes `{name}`"
                 ),
             );
         }

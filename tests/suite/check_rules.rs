@@ -825,3 +825,35 @@ fn implementations_in_two_languages_share_an_id_without_rtc010() {
         "{found:?}"
     );
 }
+
+/// RTC203 on a version of words beside a vendor that is a version number: the message asks
+/// whether the two are swapped (as in a 2015 SFML joystick profile), instead of only saying to
+/// remove the spaces; a vendor with spaces alone gets no such question.
+#[test]
+fn vendor_and_version_swapped_are_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let joystick =
+        std::fs::read_to_string(common::root().join("examples/Joystick/RTC.xml")).unwrap();
+    let swapped = joystick
+        .replace(
+            r#"rtc:version="1.0.0""#,
+            r#"rtc:version="Joystick Component""#,
+        )
+        .replace(r#"rtc:vendor="ExampleRobotics""#, r#"rtc:vendor="1.0.0""#);
+    common::write(d, "in/RTC.xml", &swapped);
+    let found = common::findings(d, "in", &["RTC203"]);
+    let messages: Vec<&str> = found.iter().filter_map(|f| f["message"].as_str()).collect();
+    assert_eq!(
+        messages,
+        ["version `Joystick Component` contains whitespace (the vendor `1.0.0` looks like a version: are vendor and version swapped?)"]
+    );
+    let spaced = joystick.replace(
+        r#"rtc:vendor="ExampleRobotics""#,
+        r#"rtc:vendor="Example Robotics""#,
+    );
+    common::write(d, "in/RTC.xml", &spaced);
+    let found = common::findings(d, "in", &["RTC203"]);
+    let messages: Vec<&str> = found.iter().filter_map(|f| f["message"].as_str()).collect();
+    assert_eq!(messages, ["vendor `Example Robotics` contains whitespace"]);
+}
