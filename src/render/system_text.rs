@@ -155,6 +155,7 @@ fn instances<M: Markup>(
     t: &Targets<'_>,
 ) {
     (t.heading)(out, "instances", lang.t("instances"));
+    let cols = v.comment_columns();
     let rows: Vec<Vec<String>> = v
         .instances
         .iter()
@@ -174,8 +175,10 @@ fn instances<M: Markup>(
                 M::esc(&r.contexts),
                 M::esc(&r.required),
                 M::esc(&composite_text(r, lang)),
-                M::esc(&r.comment),
             ];
+            if cols.instances {
+                row.push(M::esc(&r.comment));
+            }
             if show_host {
                 row.push(M::esc(&r.path_uri));
             }
@@ -191,8 +194,10 @@ fn instances<M: Markup>(
         lang.t("sys_contexts"),
         lang.t("sys_required"),
         lang.t("sys_composite"),
-        lang.t("comment"),
     ];
+    if cols.instances {
+        heads.push(lang.t("comment"));
+    }
     if show_host {
         heads.push(lang.t("sys_path_uri"));
     }
@@ -327,28 +332,37 @@ fn connector_table<'a, M: Markup>(
 }
 
 fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targets<'_>) {
+    let cols = v.comment_columns();
+    // The Comment column, last, only when some row has a comment.
+    let keys =
+        |all: &'static [&'static str], comment: bool| &all[..all.len() - usize::from(!comment)];
     connector_table::<M>(
         out,
         lang,
         t,
         ("data-connectors", "sys_data_connectors_h"),
-        &[
-            "type",
-            "sys_interface_type",
-            "sys_dataflow",
-            "sys_subscription",
-            "sys_push_interval",
-            "comment",
-        ],
+        keys(
+            &[
+                "type",
+                "sys_interface_type",
+                "sys_dataflow",
+                "sys_subscription",
+                "sys_push_interval",
+                "comment",
+            ],
+            cols.data,
+        ),
         v.data_connectors.iter().map(|c| {
-            let rest = vec![
+            let mut rest = vec![
                 c.data_type.as_ref().map(link::<M>).unwrap_or_default(),
                 M::esc(&c.interface_type),
                 M::esc(&c.dataflow_type),
                 M::esc(&c.subscription_type),
                 M::esc(&c.push_interval),
-                M::esc(&c.comment),
             ];
+            if cols.data {
+                rest.push(M::esc(&c.comment));
+            }
             let note = c.saved_as.as_deref();
             ([&*c.name, &*c.id], note, [&c.source, &c.target], rest)
         }),
@@ -358,14 +372,13 @@ fn connectors<M: Markup>(out: &mut String, v: &SystemView, lang: Lang, t: &Targe
         lang,
         t,
         ("service-connectors", "sys_service_connectors_h"),
-        &["interfaces", "sys_trans_method", "comment"],
+        keys(&["interfaces", "sys_trans_method", "comment"], cols.service),
         v.service_connectors.iter().map(|c| {
             let ifaces: Vec<String> = c.interfaces.iter().map(link::<M>).collect();
-            let rest = vec![
-                ifaces.join(", "),
-                M::esc(&c.trans_method),
-                M::esc(&c.comment),
-            ];
+            let mut rest = vec![ifaces.join(", "), M::esc(&c.trans_method)];
+            if cols.service {
+                rest.push(M::esc(&c.comment));
+            }
             ([&*c.name, &*c.id], None, [&c.source, &c.target], rest)
         }),
     );

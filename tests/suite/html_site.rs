@@ -879,7 +879,9 @@ fn the_diagnostics_page_names_severities_in_the_sites_language() {
         // The messages' and hints' code spans are code, as in Markdown and Doxygen.
         assert!(
             page.contains(" vendor <code>Example Robotics</code> contains whitespace")
-                && page.contains("(e.g. <code>AIST Lab</code> → <code>AISTLab</code>)")
+                && page.contains(
+                    "(spaces: <code>AIST Lab</code> → <code>AISTLab</code>; a <code>:</code>)"
+                )
                 && !page.contains("`Example Robotics`"),
             "{lang}"
         );

@@ -1710,3 +1710,49 @@ fn required_instances_read_as_yes_or_no() {
         assert_eq!(cells, [yes, no, "maybe"], "{html}");
     }
 }
+
+/// A Comment column empty in every row of a system page's table is left out, in HTML and
+/// Markdown alike; one comment brings it back, with the rows that have none left blank.
+#[test]
+fn empty_comment_columns_are_left_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (a, b) = (
+        instance_xml("A0", "A", "out"),
+        instance_xml("B0", "B", "in"),
+    );
+    let conn = r#"<rts:DataPortConnectors rts:connectorId="c1" rts:name="c1"><rts:sourceDataPort rts:portName="A0.out" rts:instanceName="A0"/><rts:targetDataPort rts:portName="B0.in" rts:instanceName="B0"/></rts:DataPortConnectors>"#;
+    let build = |xml: &str| {
+        common::write(d, "in/S.xml", xml);
+        let o = common::rtcdoc(
+            &["build", "in", "-o", "out", "-f", "html,markdown", "-q"],
+            d,
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        (
+            read(&d.join("out/html/systems/s.html")),
+            read(&d.join("out/markdown/systems/s.md")),
+        )
+    };
+    let (html, md) = build(&rts_system("S", &[&a, &b, conn]));
+    assert!(!html.contains(r#"data-label="Comment""#), "{html}");
+    assert!(!html.contains(r#"<th scope="col">Comment</th>"#), "{html}");
+    assert!(!md.contains("| Comment |"), "{md}");
+    let commented = a.replace(
+        r#"rts:compositeType="None">"#,
+        r#"rts:compositeType="None" rtsExt:comment="front camera" xmlns:rtsExt="http://www.openrtp.org/namespaces/rts_ext">"#,
+    );
+    let (html, md) = build(&rts_system("S", &[&commented, &b, conn]));
+    // The instances table has the column (B0's cell blank); the connector tables still do not.
+    assert_eq!(
+        html.matches(r#"<th scope="col">Comment</th>"#).count(),
+        1,
+        "{html}"
+    );
+    assert!(
+        html.contains(r#"<td data-label="Comment">front camera</td>"#),
+        "{html}"
+    );
+    assert!(html.contains(r#"<td data-label="Comment"></td>"#), "{html}");
+    assert_eq!(md.matches("| Comment |").count(), 1, "{md}");
+}

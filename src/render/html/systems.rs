@@ -91,6 +91,7 @@ impl Site<'_> {
             diagram_file => drawing_path(self.catalog, s).rsplit('/').next().unwrap_or_default().to_string(),
             instances => ctx(&v.instances),
             show_path => show_host,
+            comment_cols => ctx(&v.comment_columns()),
             configs => ctx(&v.configs),
             data_connectors => ctx(&v.data_connectors),
             service_connectors => ctx(&v.service_connectors),

@@ -154,6 +154,28 @@ pub struct SystemView {
     pub history: super::history::HistoryView,
 }
 
+/// Which tables of a system page have a comment in some row: a Comment column empty in every
+/// row is left out (as the component page leaves out its empty columns).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct CommentColumns {
+    pub instances: bool,
+    pub data: bool,
+    pub service: bool,
+}
+
+impl SystemView {
+    pub fn comment_columns(&self) -> CommentColumns {
+        CommentColumns {
+            instances: self.instances.iter().any(|r| !r.comment.is_empty()),
+            data: self.data_connectors.iter().any(|c| !c.comment.is_empty()),
+            service: self
+                .service_connectors
+                .iter()
+                .any(|c| !c.comment.is_empty()),
+        }
+    }
+}
+
 /// What the connector rows of system `s` link through: other pages of the catalogue (`href`)
 /// and the rows of this page (`local`).
 struct Links<'a> {
