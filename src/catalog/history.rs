@@ -142,8 +142,13 @@ pub fn version_or_date(e: &Entry) -> Option<String> {
 /// an entry after the oldest one added, with the version (else the date) of the newest such
 /// entry. An element added, removed and added again is dated by its last addition. A version
 /// string an older entry already had is no answer ("since 1.0.0" when 1.0.0 first came
-/// without it): such an entry is named by its date.
-pub fn since(history: &[Entry]) -> std::collections::BTreeMap<String, String> {
+/// without it): such an entry is named by its date — for the current file, which git did not
+/// date, by `current_date` (its profile's `updateDate`) — and an entry with neither gets no
+/// note rather than a wrong one.
+pub fn since(
+    history: &[Entry],
+    current_date: Option<&str>,
+) -> std::collections::BTreeMap<String, String> {
     let mut out = std::collections::BTreeMap::new();
     let mut seen = std::collections::BTreeSet::new();
     for e in history.iter().rev() {
@@ -162,9 +167,12 @@ pub fn since(history: &[Entry]) -> std::collections::BTreeMap<String, String> {
         let date = e
             .date
             .as_deref()
+            .or(current_date.filter(|_| e.is_current()))
+            .map(|d| d.trim())
             .map(|d| d.get(..10).unwrap_or(d).to_string());
         let label = match (new_version, date) {
             (false, Some(day)) => Some(day),
+            (false, None) if version.is_some() => None,
             _ => version_or_date(e),
         };
         let Some(label) = label else {
@@ -188,7 +196,8 @@ impl super::Catalog {
     pub fn history_attached(&mut self) {
         use rayon::prelude::*;
         self.components.par_iter_mut().for_each(|c| {
-            let mut since = since(&c.history);
+            let updated = crate::model::non_empty(&c.profile.basic_info.update_date);
+            let mut since = since(&c.history, updated);
             if since.is_empty() {
                 // Nothing added in the history: nothing to keep (the usual case without one).
                 c.since = since;
@@ -291,7 +300,7 @@ mod tests {
             entry("1.0.0", "2024-03-05", &["dataPorts/a"], false),
             entry("1.0.0", "2024-01-10", &[], true),
         ];
-        let got = since(&history);
+        let got = since(&history, None);
         let want: Vec<(&str, &str)> = vec![
             ("dataPorts/a", "2024-03-05"),
             ("dataPorts/b", "1.1.0"),
@@ -303,5 +312,47 @@ mod tests {
                 .collect::<Vec<_>>(),
             want
         );
+    }
+
+    /// The current file beside RTCBuilder backups of the same version (no git): what it added
+    /// is named by its `updateDate`, or has no note, never by the version the backups had.
+    #[test]
+    fn the_current_file_of_an_old_version_is_named_by_its_update_date() {
+        let added = |p: &str| Change {
+            code: "DIFF301".into(),
+            path: p.into(),
+            ..Default::default()
+        };
+        let history = [
+            Entry {
+                version: Some("1.0.0".into()),
+                changes: vec![added("dataPorts/b")],
+                ..Default::default()
+            },
+            Entry {
+                version: Some("1.0.0".into()),
+                backup: Some("c/RTC.xml20170409100337".into()),
+                date: Some("2017-04-09 10:03:37".into()),
+                changes: vec![added("dataPorts/a")],
+                ..Default::default()
+            },
+            Entry {
+                version: Some("0.9.0".into()),
+                backup: Some("c/RTC.xml20170101000000".into()),
+                date: Some("2017-01-01 00:00:00".into()),
+                first: true,
+                ..Default::default()
+            },
+        ];
+        assert!(history[0].is_current());
+        let got = since(&history, Some("2017-11-14T10:00:00"));
+        assert_eq!(
+            got.get("dataPorts/b").map(String::as_str),
+            Some("2017-11-14")
+        );
+        assert_eq!(got.get("dataPorts/a").map(String::as_str), Some("1.0.0"));
+        let got = since(&history, None);
+        assert_eq!(got.get("dataPorts/b"), None);
+        assert_eq!(got.get("dataPorts/a").map(String::as_str), Some("1.0.0"));
     }
 }
