@@ -80,7 +80,7 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
     // Every change with its code, severity, path and message (its code spans as code, as in
     // Markdown and Doxygen); DIFF208 among them.
     for s in [
-        "<span class=\"sev breaking\">breaking</span></th><td data-label=\"Code\"><code>DIFF102</code></td><td data-label=\"Where\"><code>dataPorts/cmd</code></td><td data-label=\"Message\">data port <code>cmd</code> was removed</td>",
+        "<span class=\"sev breaking\">breaking</span></th><td class=\"nowrap\" data-label=\"Code\"><code>DIFF102</code></td><td data-label=\"Where\"><code>dataPorts/cmd</code></td><td data-label=\"Message\">data port <code>cmd</code> was removed</td>",
         "<code>DIFF208</code>",
         "<code>DIFF301</code></td><td data-label=\"Where\"><code>dataPorts/velocity</code>",
         "1 breaking, 1 warning, 1 info",
@@ -150,6 +150,11 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
     );
     assert!(
         md.contains("| warning | DIFF208 | basicInfo/version |"),
+        "{md}"
+    );
+    // Breaking changes first, though their path sorts after the warning's.
+    assert!(
+        md.find("| breaking | DIFF102 |") < md.find("| warning | DIFF208 |"),
         "{md}"
     );
     assert!(

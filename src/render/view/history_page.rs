@@ -3,7 +3,7 @@
 //! once from the catalogue's histories ([`crate::catalog::history`]), shown by every output.
 
 use super::history::{committed, row, HistoryRow};
-use crate::catalog::history::Entry;
+use crate::catalog::history::{Change, Entry};
 use crate::catalog::{Catalog, Component, ComponentIx, Ix, Page};
 use crate::i18n::Lang;
 use serde::Serialize;
@@ -86,6 +86,19 @@ pub struct VersionItem {
     pub changes: Vec<ChangeRow>,
 }
 
+/// The rows of a version's changes: breaking first, then warnings, then the rest, each in the
+/// diff's order (by path), as `rtcdoc diff` lists them.
+fn by_severity(changes: &[Change], lang: Lang) -> Vec<ChangeRow> {
+    let rank = |c: &Change| match c.severity.as_str() {
+        "breaking" => 0,
+        "warning" => 1,
+        _ => 2,
+    };
+    let mut sorted: Vec<&Change> = changes.iter().collect();
+    sorted.sort_by_key(|c| rank(c));
+    sorted.into_iter().map(|c| ChangeRow::of(c, lang)).collect()
+}
+
 /// A component's history page.
 #[derive(Debug, Clone)]
 pub struct HistoryPageView<'a> {
@@ -134,7 +147,7 @@ pub fn history_page_view<'a>(
                     .collect::<Vec<_>>()
                     .join(" · "),
                 release: e.release && !e.first,
-                changes: e.changes.iter().map(|c| ChangeRow::of(c, lang)).collect(),
+                changes: by_severity(&e.changes, lang),
             };
             items.push(HistoryItem {
                 row,
