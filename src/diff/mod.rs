@@ -252,6 +252,7 @@ pub fn diff_with_systems(
     for (i, id) in new_ids.iter().enumerate() {
         groups.entry(&id.key).or_default().1.push(i);
     }
+    pair_renamed(&mut groups, (old, new));
     let mut out = Vec::new();
     let mut counts = Counts {
         old: old.components.len(),
@@ -421,6 +422,46 @@ struct Sides<'a> {
     new_ids: &'a [Ident],
     old_name: Namer<'a>,
     new_name: Namer<'a>,
+}
+
+/// Of the components no component of the other side shares an id key with, those that are one
+/// component renamed: the one component of each side (two files compared), or the same file on
+/// both sides. The NEW one is moved into the OLD one's group, so that the two are compared as
+/// a pair, as a component's history compares two versions of its file: the id's change is
+/// DIFF101 with every other change beside it, instead of the whole component removed and
+/// another added.
+fn pair_renamed(
+    groups: &mut BTreeMap<&Key, (Vec<usize>, Vec<usize>)>,
+    (old, new): (&Catalog, &Catalog),
+) {
+    let lone = |g: &(Vec<usize>, Vec<usize>), old_side: bool| {
+        let (mine, theirs) = if old_side { (&g.0, &g.1) } else { (&g.1, &g.0) };
+        (mine.len() == 1 && theirs.is_empty()).then(|| mine[0])
+    };
+    let removed: Vec<usize> = groups.values().filter_map(|g| lone(g, true)).collect();
+    let added: Vec<usize> = groups.values().filter_map(|g| lone(g, false)).collect();
+    let mut pairs: Vec<(usize, usize)> = Vec::new();
+    let one_each = old.components.len() == 1 && new.components.len() == 1;
+    for &o in &removed {
+        let found = added.iter().find(|&&n| {
+            (one_each || old.components[o].source == new.components[n].source)
+                && !pairs.iter().any(|&(_, m)| m == n)
+        });
+        if let Some(&n) = found {
+            pairs.push((o, n));
+        }
+    }
+    for &(o, n) in &pairs {
+        for g in groups.values_mut() {
+            if g.1 == [n] && g.0.is_empty() {
+                g.1.clear();
+            }
+            if g.0 == [o] && g.1.is_empty() {
+                g.1.push(n);
+            }
+        }
+    }
+    groups.retain(|_, g| !g.0.is_empty() || !g.1.is_empty());
 }
 
 /// Pairs the components of one id: one on each side is a pair; several are paired by language,

@@ -1823,3 +1823,77 @@ fn a_revision_without_a_profile_is_named_and_allow_empty_compares_it() {
         "{err}"
     );
 }
+
+/// A component under a new id that no component of the other side has: paired with the one
+/// component of the other side (two files compared) or with the one in the same file, and
+/// compared field by field (DIFF101 on its id, the other changes beside it), as its history
+/// compares two versions of its file; not removed and another added.
+#[test]
+fn a_component_under_a_new_id_is_compared_with_its_old_self() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let renamed = edited(&[
+        (":Base:1.0.0\"", ":Drive:1.0.0\""),
+        ("rtc:name=\"Base\"", "rtc:name=\"Drive\""),
+        ("rtc:unit=\"m/s\"", "rtc:unit=\"mm/s\""),
+    ]);
+    // Two files, one component each (an RTCBuilder backup against the profile).
+    write(d, "one/RTC.xml20150113093039", BASE);
+    write(d, "one/RTC.xml", &renamed);
+    let out = rtcdoc(
+        &[
+            "diff",
+            "one/RTC.xml20150113093039",
+            "one/RTC.xml",
+            "--format",
+            "json",
+        ],
+        d,
+    );
+    let json: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let codes: Vec<(&str, &str)> = json["changes"]
+        .as_array()
+        .expect("changes")
+        .iter()
+        .map(|c| {
+            (
+                c["code"].as_str().unwrap_or(""),
+                c["path"].as_str().unwrap_or(""),
+            )
+        })
+        .collect();
+    assert!(codes.contains(&("DIFF101", "id")), "{codes:?}");
+    assert!(
+        codes.contains(&("DIFF210", "dataPorts/cmd/unit")),
+        "{codes:?}"
+    );
+    assert!(
+        !codes.iter().any(|(c, _)| *c == "DIFF304"),
+        "no component added: {codes:?}"
+    );
+    // Two catalogues: the renamed one pairs with the one in its file; the other by its id.
+    write(d, "old/Base/RTC.xml", BASE);
+    write(d, "new/Base/RTC.xml", &renamed);
+    let other = BASE
+        .replace(":Base:", ":Arm:")
+        .replace("rtc:name=\"Base\"", "rtc:name=\"Arm\"");
+    write(d, "old/Arm/RTC.xml", &other);
+    write(d, "new/Arm/RTC.xml", &other);
+    let (_, json) = run_diff(d, &[]);
+    let counts = &json["summary"]["components"];
+    assert_eq!(
+        (
+            &counts["matched"],
+            &counts["changed"],
+            &counts["added"],
+            &counts["removed"]
+        ),
+        (
+            &Value::from(2),
+            &Value::from(1),
+            &Value::from(0),
+            &Value::from(0)
+        ),
+        "{json}"
+    );
+}
