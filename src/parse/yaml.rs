@@ -537,7 +537,23 @@ impl<'a> Locator<'a> {
         let mut i = self.cursor;
         while i < bytes.len() {
             match bytes[i] {
-                b' ' | b'\t' | b'\r' | b'\n' | b':' | b',' | b'[' => i += 1,
+                // The `:` of the key found last: a scalar after it on its line is that key's
+                // value (the previous item's last one, as in `isRequired: true`), not this
+                // item; a flow collection after it holds the items.
+                b':' => {
+                    let rest = &bytes[i + 1..];
+                    let blank = rest
+                        .iter()
+                        .take_while(|&&c| c == b' ' || c == b'\t')
+                        .count();
+                    match rest.get(blank) {
+                        None | Some(b'[' | b'{' | b'\r' | b'\n' | b'#') => i += 1,
+                        Some(_) => {
+                            i += 1 + rest.iter().position(|&c| c == b'\n').unwrap_or(rest.len());
+                        }
+                    }
+                }
+                b' ' | b'\t' | b'\r' | b'\n' | b',' | b'[' => i += 1,
                 b'#' => {
                     while i < bytes.len() && bytes[i] != b'\n' {
                         i += 1;

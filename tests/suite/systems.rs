@@ -1756,3 +1756,34 @@ fn empty_comment_columns_are_left_out() {
     assert!(html.contains(r#"<td data-label="Comment"></td>"#), "{html}");
     assert_eq!(md.matches("| Comment |").count(), 1, "{md}");
 }
+
+/// In a YAML system whose list items start with a `-` alone on its line (as rtshell and
+/// rtsprofile write them), each instance is placed at its own `-`, not at the end of the item
+/// before it.
+#[test]
+fn yaml_items_after_a_lone_dash_are_placed_at_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let item = |name: &str| {
+        format!(
+            "    -\n      id: \"RTC:Lab:C:{name}:1.0\"\n      instanceName: \"{name}0\"\n      isRequired: true\n"
+        )
+    };
+    let yaml = format!(
+        "rtsProfile:\n  id: \"RTSystem:Lab:S:1.0\"\n  version: \"0.2\"\n  components:\n{}{}",
+        item("Ghost"),
+        item("Other")
+    );
+    common::write(d, "in/sys.yaml", &yaml);
+    let found = common::findings(d, "in", &["RTC603"]);
+    let at: Vec<(u64, u64)> = found
+        .iter()
+        .map(|f| {
+            (
+                f["line"].as_u64().unwrap_or(0),
+                f["column"].as_u64().unwrap_or(0),
+            )
+        })
+        .collect();
+    assert_eq!(at, [(5, 5), (9, 5)], "{found:?}");
+}
