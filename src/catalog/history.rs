@@ -276,6 +276,18 @@ impl ElementKeys {
 mod tests {
     use super::*;
 
+    /// The DIFF301 changes of ports added at `paths`.
+    fn ports_added(paths: &[&str]) -> Vec<Change> {
+        paths
+            .iter()
+            .map(|p| Change {
+                code: "DIFF301".into(),
+                path: (*p).into(),
+                ..Default::default()
+            })
+            .collect()
+    }
+
     /// A version string the first version already had names no addition: its date does.
     #[test]
     fn since_names_a_version_only_where_it_is_new() {
@@ -283,14 +295,7 @@ mod tests {
             version: Some(version.into()),
             date: Some(format!("{date}T10:00:00+09:00")),
             first,
-            changes: added
-                .iter()
-                .map(|p| Change {
-                    code: "DIFF301".into(),
-                    path: (*p).into(),
-                    ..Default::default()
-                })
-                .collect(),
+            changes: ports_added(added),
             ..Default::default()
         };
         // Newest first.
@@ -318,31 +323,27 @@ mod tests {
     /// is named by its `updateDate`, or has no note, never by the version the backups had.
     #[test]
     fn the_current_file_of_an_old_version_is_named_by_its_update_date() {
-        let added = |p: &str| Change {
-            code: "DIFF301".into(),
-            path: p.into(),
+        // (version, backup and its save time, what it added), newest first.
+        let entry = |version: &str, backup: Option<(&str, &str)>, added: &[&str]| Entry {
+            version: Some(version.into()),
+            backup: backup.map(|(b, _)| b.into()),
+            date: backup.map(|(_, d)| d.into()),
+            first: added.is_empty(),
+            changes: ports_added(added),
             ..Default::default()
         };
         let history = [
-            Entry {
-                version: Some("1.0.0".into()),
-                changes: vec![added("dataPorts/b")],
-                ..Default::default()
-            },
-            Entry {
-                version: Some("1.0.0".into()),
-                backup: Some("c/RTC.xml20170409100337".into()),
-                date: Some("2017-04-09 10:03:37".into()),
-                changes: vec![added("dataPorts/a")],
-                ..Default::default()
-            },
-            Entry {
-                version: Some("0.9.0".into()),
-                backup: Some("c/RTC.xml20170101000000".into()),
-                date: Some("2017-01-01 00:00:00".into()),
-                first: true,
-                ..Default::default()
-            },
+            entry("1.0.0", None, &["dataPorts/b"]),
+            entry(
+                "1.0.0",
+                Some(("c/RTC.xml20170409100337", "2017-04-09 10:03:37")),
+                &["dataPorts/a"],
+            ),
+            entry(
+                "0.9.0",
+                Some(("c/RTC.xml20170101000000", "2017-01-01 00:00:00")),
+                &[],
+            ),
         ];
         assert!(history[0].is_current());
         let got = since(&history, Some("2017-11-14T10:00:00"));

@@ -936,15 +936,20 @@ mod tests {
     #[test]
     fn private_properties() {
         let p = |n: &str, v: &str| is_private_property(Some(n), Some(v));
-        assert!(p("os.hostname", "x"));
-        assert!(p("os.release", "4.15.0-32-generic"));
-        assert!(p(
-            "OS.Version",
-            "#35~16.04.1-Ubuntu SMP Fri Aug 10 21:54:34 UTC 2018"
-        ));
-        // The platform alone names no machine.
-        assert!(!p("os.name", "Linux"));
-        assert!(!p("os.arch", "x86_64"));
+        // The saving machine's name and kernel; the platform alone names no machine.
+        for (name, value, private) in [
+            ("os.hostname", "x", true),
+            ("os.release", "4.15.0-32-generic", true),
+            (
+                "OS.Version",
+                "#35~16.04.1-Ubuntu SMP Fri Aug 10 21:54:34 UTC 2018",
+                true,
+            ),
+            ("os.name", "Linux", false),
+            ("os.arch", "x86_64", false),
+        ] {
+            assert_eq!(p(name, value), private, "{name}");
+        }
         assert!(p("corba.endpoint", ""));
         assert!(p("corba.endpoints", ""));
         assert!(p("naming.host", "x"));

@@ -801,30 +801,31 @@ impl Cx<'_> {
                     (a.data_type.as_deref(), b.data_type.as_deref()),
                     "names the same type",
                 )
-            } else if carries_its_ports_type(self.sides.1, b) == Some(true)
-                && carries_its_ports_type(self.sides.0, a) == Some(false)
-            {
-                (
-                    codes::SYSTEM_CONNECTOR_TYPE_REPAIRED,
-                    format!(
-                        "data port connector `{label}` (`{}` → `{}`) now carries {}, the type its ports carry, instead of {}, which they did not: a repair",
-                        end_text(b.source.as_ref()),
-                        end_text(b.target.as_ref()),
-                        quoted(b.data_type.as_deref()),
-                        quoted(a.data_type.as_deref())
-                    ),
-                )
             } else {
-                (
-                    codes::SYSTEM_CONNECTOR_DATA_TYPE,
-                    format!(
-                        "data port connector `{label}` (`{}` → `{}`) now carries {} instead of {}: the ports must carry the new type, or the connection is refused",
-                        end_text(b.source.as_ref()),
-                        end_text(b.target.as_ref()),
-                        quoted(b.data_type.as_deref()),
-                        quoted(a.data_type.as_deref())
-                    ),
-                )
+                // To the type both ports carry, from one they did not: a repair.
+                let repaired = carries_its_ports_type(self.sides.1, b) == Some(true)
+                    && carries_its_ports_type(self.sides.0, a) == Some(false);
+                let (code, new_note, old_note) = if repaired {
+                    (
+                        codes::SYSTEM_CONNECTOR_TYPE_REPAIRED,
+                        ", the type its ports carry,",
+                        ", which they did not: a repair",
+                    )
+                } else {
+                    (
+                        codes::SYSTEM_CONNECTOR_DATA_TYPE,
+                        "",
+                        ": the ports must carry the new type, or the connection is refused",
+                    )
+                };
+                let message = format!(
+                    "data port connector `{label}` (`{}` → `{}`) now carries {}{new_note} instead of {}{old_note}",
+                    end_text(b.source.as_ref()),
+                    end_text(b.target.as_ref()),
+                    quoted(b.data_type.as_deref()),
+                    quoted(a.data_type.as_deref())
+                );
+                (code, message)
             };
             reported.insert("dataType");
             self.changed(
