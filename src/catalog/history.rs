@@ -176,6 +176,14 @@ pub fn since(
             _ => version_or_date(e),
         };
         let Some(label) = label else {
+            // No right name for these additions: no note, and not an older addition's.
+            for c in e
+                .changes
+                .iter()
+                .filter(|c| ADDED_CODES.contains(&c.code.as_str()))
+            {
+                out.remove(&c.path);
+            }
             continue;
         };
         for c in e
@@ -355,5 +363,20 @@ mod tests {
         let got = since(&history, None);
         assert_eq!(got.get("dataPorts/b"), None);
         assert_eq!(got.get("dataPorts/a").map(String::as_str), Some("1.0.0"));
+        // Added in 1.0.5, removed, and added again by the undated current file of a version
+        // already seen: no note, not 1.0.5's.
+        let backup = |name: &'static str, date: &'static str| Some((name, date));
+        let mut again = vec![
+            entry("1.1.0", None, &["dataPorts/a"]),
+            entry("1.1.0", backup("c/RTC.xml3", "2017-03-01 00:00:00"), &[]),
+            entry(
+                "1.0.5",
+                backup("c/RTC.xml2", "2017-02-01 00:00:00"),
+                &["dataPorts/a"],
+            ),
+            entry("1.0.0", backup("c/RTC.xml1", "2017-01-01 00:00:00"), &[]),
+        ];
+        again[1].first = false;
+        assert_eq!(since(&again, None).get("dataPorts/a"), None);
     }
 }

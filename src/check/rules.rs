@@ -472,12 +472,17 @@ fn identity(p: &Profile, s: &mut Findings) {
                 bad.push("`:`");
             }
             if !bad.is_empty() {
-                // Text in the version and a version number as the vendor: the two swapped.
+                // Words in the version and a version number as the vendor: the two swapped.
                 let swapped = match (name, b.vendor.as_deref().map(str::trim)) {
-                    ("version", Some(v)) if looks_like_version(v) => format!(
+                    ("version", Some(v))
+                        if looks_like_version(v)
+                            && !t.trim().starts_with(|c: char| c.is_ascii_digit()) =>
+                    {
+                        format!(
                         " (the vendor {} looks like a version: are vendor and version swapped?)",
                         Code(v)
-                    ),
+                    )
+                    }
                     _ => String::new(),
                 };
                 s.emit(

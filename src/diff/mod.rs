@@ -293,6 +293,10 @@ pub fn diff_with_systems(
                         &mut out,
                     );
                     breaks.note_ports(&new_ids[n].key, &component, &out[before..]);
+                    // Renamed (`pair_renamed`): to the systems, the old id is gone.
+                    if old_ids[o].key != new_ids[n].key {
+                        breaks.note_removed(&old_ids[o].key, &label(&old_ids[o], oc));
+                    }
                     if out.len() > before {
                         counts.changed += 1;
                     }
@@ -425,8 +429,9 @@ struct Sides<'a> {
 }
 
 /// Of the components no component of the other side shares an id key with, those that are one
-/// component renamed: the one component of each side (two files compared), or the same file on
-/// both sides. The NEW one is moved into the OLD one's group, so that the two are compared as
+/// component renamed: the one component of each side (two files, folders or revisions of one
+/// component compared), or the same file on both sides, when the two share a port or parameter
+/// name ([`shares_an_element`]). The NEW one is moved into the OLD one's group, so that the two are compared as
 /// a pair, as a component's history compares two versions of its file: the id's change is
 /// DIFF101 with every other change beside it, instead of the whole component removed and
 /// another added.
@@ -443,8 +448,11 @@ fn pair_renamed(
     let mut pairs: Vec<(usize, usize)> = Vec::new();
     let one_each = old.components.len() == 1 && new.components.len() == 1;
     for &o in &removed {
+        let oc = &old.components[o];
         let found = added.iter().find(|&&n| {
-            (one_each || old.components[o].source == new.components[n].source)
+            let nc = &new.components[n];
+            (one_each || oc.source == nc.source)
+                && shares_an_element(&oc.profile, &nc.profile)
                 && !pairs.iter().any(|&(_, m)| m == n)
         });
         if let Some(&n) = found {
@@ -462,6 +470,22 @@ fn pair_renamed(
         }
     }
     groups.retain(|_, g| !g.0.is_empty() || !g.1.is_empty());
+}
+
+/// Whether two profiles have a data port, service port or configuration parameter of the same
+/// name: what makes a component under a new id the same component rather than another one.
+fn shares_an_element(a: &Profile, b: &Profile) -> bool {
+    let names = |p: &Profile| -> Vec<(char, String)> {
+        let data = p.data_ports.iter().map(|x| ('d', &x.name));
+        let service = p.service_ports.iter().map(|x| ('s', &x.name));
+        let conf = p.configurations().iter().map(|x| ('c', &x.name));
+        data.chain(service)
+            .chain(conf)
+            .filter_map(|(kind, n)| non_empty(n).map(|n| (kind, n.trim().to_string())))
+            .collect()
+    };
+    let theirs = names(b);
+    names(a).iter().any(|n| theirs.contains(n))
 }
 
 /// Pairs the components of one id: one on each side is a pair; several are paired by language,

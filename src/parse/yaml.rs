@@ -537,9 +537,10 @@ impl<'a> Locator<'a> {
         let mut i = self.cursor;
         while i < bytes.len() {
             match bytes[i] {
-                // The `:` of the key found last: a scalar after it on its line is that key's
-                // value (the previous item's last one, as in `isRequired: true`), not this
-                // item; a flow collection after it holds the items.
+                // The `:` of the key found last: a scalar after it is that key's value (the
+                // previous item's last one, as in `isRequired: true`), not this item. It ends at
+                // the end of its line, or in flow style at a `,`, `}` or `]` outside quotes; a
+                // flow collection after the `:` holds the items.
                 b':' => {
                     let rest = &bytes[i + 1..];
                     let blank = rest
@@ -548,12 +549,10 @@ impl<'a> Locator<'a> {
                         .count();
                     match rest.get(blank) {
                         None | Some(b'[' | b'{' | b'\r' | b'\n' | b'#') => i += 1,
-                        Some(_) => {
-                            i += 1 + rest.iter().position(|&c| c == b'\n').unwrap_or(rest.len());
-                        }
+                        Some(_) => i += 1 + blank + scalar_len(&rest[blank..]),
                     }
                 }
-                b' ' | b'\t' | b'\r' | b'\n' | b',' | b'[' => i += 1,
+                b' ' | b'\t' | b'\r' | b'\n' | b',' | b'[' | b'}' => i += 1,
                 b'#' => {
                     while i < bytes.len() && bytes[i] != b'\n' {
                         i += 1;
@@ -1770,4 +1769,20 @@ impl Reader<'_> {
         }
         Some(texts)
     }
+}
+
+/// The length of the scalar at the start of `b`: up to the end of its line, or to a `,`, `}` or
+/// `]` (flow style), whichever comes first outside single or double quotes.
+fn scalar_len(b: &[u8]) -> usize {
+    let mut quote = None;
+    for (k, &c) in b.iter().enumerate() {
+        match (quote, c) {
+            (_, b'\n') => return k,
+            (None, b'"' | b'\'') => quote = Some(c),
+            (Some(q), _) if c == q => quote = None,
+            (None, b',' | b'}' | b']') => return k,
+            _ => {}
+        }
+    }
+    b.len()
 }

@@ -856,4 +856,12 @@ fn vendor_and_version_swapped_are_named() {
     let found = common::findings(d, "in", &["RTC203"]);
     let messages: Vec<&str> = found.iter().filter_map(|f| f["message"].as_str()).collect();
     assert_eq!(messages, ["vendor `Example Robotics` contains whitespace"]);
+    // A version with a space that is still a version number is not taken for a swap.
+    let spaced_version = joystick
+        .replace(r#"rtc:version="1.0.0""#, r#"rtc:version="1.0 rc1""#)
+        .replace(r#"rtc:vendor="ExampleRobotics""#, r#"rtc:vendor="2""#);
+    common::write(d, "in/RTC.xml", &spaced_version);
+    let found = common::findings(d, "in", &["RTC203"]);
+    let messages: Vec<&str> = found.iter().filter_map(|f| f["message"].as_str()).collect();
+    assert_eq!(messages, ["version `1.0 rc1` contains whitespace"]);
 }

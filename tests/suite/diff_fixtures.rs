@@ -1055,3 +1055,28 @@ fn the_one_system_of_each_side_renamed_is_compared() {
     let (_, json) = run(&fixture("DIFF151"), &["old", "new"]);
     assert_eq!(codes_of(&json), ["DIFF151"], "{json:#}");
 }
+
+/// A component renamed in its file (compared with its old self, DIFF101 on its id): the systems
+/// that still name the old id lose it as if it was removed (DIFF141).
+#[test]
+fn a_renamed_component_is_gone_for_the_systems_that_name_its_old_id() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let from = fixture("DIFF141").join("old");
+    copy_tree(&from, &d.join("old"));
+    copy_tree(&from, &d.join("new"));
+    let planner = d.join("new/Planner/RTC.xml");
+    let text = std::fs::read_to_string(&planner).unwrap();
+    assert!(text.contains(":Planner:1.0.0"), "{text}");
+    std::fs::write(&planner, text.replace(":Planner:1.0.0", ":Router:1.0.0")).unwrap();
+    let (code, json) = run(d, &["old", "new"]);
+    assert_eq!(code, 1, "{json}");
+    let codes = codes_of(&json);
+    assert!(codes.contains(&"DIFF101".to_string()), "{codes:?}");
+    assert_eq!(
+        codes.iter().filter(|c| *c == "DIFF141").count(),
+        2,
+        "the data and the service connector: {codes:?}"
+    );
+    assert_eq!(json["summary"]["components"]["removed"], 0, "{json}");
+}

@@ -154,7 +154,8 @@ fn the_history_page_shows_every_version_and_change_in_every_output() {
     );
     // Breaking changes first, though their path sorts after the warning's.
     assert!(
-        md.find("| breaking | DIFF102 |") < md.find("| warning | DIFF208 |"),
+        md.find("| breaking | DIFF102 |").expect("breaking row")
+            < md.find("| warning | DIFF208 |").expect("warning row"),
         "{md}"
     );
     assert!(

@@ -1786,4 +1786,20 @@ fn yaml_items_after_a_lone_dash_are_placed_at_it() {
         })
         .collect();
     assert_eq!(at, [(5, 5), (9, 5)], "{found:?}");
+    // Flow style on one line: each item at its own `{`, its keys read.
+    let flow = "rtsProfile:\n  id: \"RTSystem:Lab:S:1.0\"\n  components: [{id: \"RTC:Lab:C:Ghost:1.0\", instanceName: \"Ghost0\", isRequired: true}, {id: \"RTC:Lab:C:Other:1.0\", instanceName: \"Other0\", isRequired: false}]\n  dataPortConnectors: []\n";
+    common::write(d, "in/sys.yaml", flow);
+    let found = common::findings(d, "in", &["RTC603"]);
+    let at: Vec<(u64, u64, bool)> = found
+        .iter()
+        .map(|f| {
+            let m = f["message"].as_str().unwrap_or("");
+            (
+                f["line"].as_u64().unwrap_or(0),
+                f["column"].as_u64().unwrap_or(0),
+                m.contains("Other0") || m.contains("Ghost0"),
+            )
+        })
+        .collect();
+    assert_eq!(at, [(3, 16, true), (3, 87, true)], "{found:?}");
 }
