@@ -379,7 +379,8 @@ const CASES: &[Case] = &[
         component: NAV_SYSTEM,
         all: &["DIFF353"],
         file: SYSTEM,
-        says: "data port connector `odometry_goal` (`Base0.odometry` → `Planner0.goal`) was added",
+        // With its data type, as a removed connector's message has it (DIFF154).
+        says: "data port connector `odometry_goal` (`Base0.odometry` → `Planner0.goal`, IDL:RTC/TimedPose2D:1.0) was added",
     },
     Case {
         code: "DIFF354",

@@ -89,6 +89,13 @@ struct Cx<'a> {
     out: Vec<Change>,
 }
 
+/// `, <type>` for a data connector that records its data type, to follow its ends in a message.
+fn type_note(c: &DataPortConnector) -> String {
+    non_empty(&c.data_type)
+        .map(|t| format!(", {t}"))
+        .unwrap_or_default()
+}
+
 /// The type system `s` records for the data port at connector end `e` (RTSystemEditor's
 /// `dataport.data_type` on the instance's port), when it records one.
 fn recorded_type<'s>(s: &'s RtSystem, e: Option<&PortEnd>) -> Option<&'s str> {
@@ -731,14 +738,17 @@ impl Cx<'_> {
             ("dataPortConnectors", "to"),
             (&old.data_port_connectors, &new.data_port_connectors),
             |label, c, (s, t)| {
-                let ty = non_empty(&c.data_type)
-                    .map(|t| format!(", {t}"))
-                    .unwrap_or_default();
                 format!(
-                    "data port connector `{label}` (`{s}` → `{t}`{ty}) was removed: `{t}` no longer receives data from `{s}`"
+                    "data port connector `{label}` (`{s}` → `{t}`{}) was removed: `{t}` no longer receives data from `{s}`",
+                    type_note(c)
                 )
             },
-            |label, (s, t)| format!("data port connector `{label}` (`{s}` → `{t}`) was added"),
+            |label, c, (s, t)| {
+                format!(
+                    "data port connector `{label}` (`{s}` → `{t}`{}) was added",
+                    type_note(c)
+                )
+            },
             |cx, label, a, b| cx.data_connector(label, a, b),
         );
     }
@@ -751,7 +761,7 @@ impl Cx<'_> {
         (key, join): (&str, &str),
         (o, n): (&[C], &[C]),
         removed: impl Fn(&str, &C, (&str, &str)) -> String,
-        added: impl Fn(&str, (&str, &str)) -> String,
+        added: impl Fn(&str, &C, (&str, &str)) -> String,
         mut pair: impl FnMut(&mut Self, &str, &C, &C),
     ) {
         let ends = |c: &C| {
@@ -777,7 +787,7 @@ impl Cx<'_> {
                         codes::SYSTEM_CONNECTOR_ADDED,
                         format!("{key}/{}", nl[j]),
                         (None, Some(format!("{s} {join} {t}"))),
-                        added(&nl[j], (&s, &t)),
+                        added(&nl[j], &n[j], (&s, &t)),
                         At::New(n[j].pos()),
                     );
                 }
@@ -931,7 +941,7 @@ impl Cx<'_> {
                     "service port connector `{label}` (`{s}` — `{t}`) was removed: the interfaces these ports require from each other lose their provider, and calls through them fail"
                 )
             },
-            |label, (s, t)| format!("service port connector `{label}` (`{s}` — `{t}`) was added"),
+            |label, _, (s, t)| format!("service port connector `{label}` (`{s}` — `{t}`) was added"),
             |cx, label, a, b| {
                 let base = format!("servicePortConnectors/{label}");
                 let changed = cx.ends("service port connector", &base, label, a, b);
