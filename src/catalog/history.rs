@@ -175,23 +175,16 @@ pub fn since(
             (false, None) if version.is_some() => None,
             _ => version_or_date(e),
         };
-        let Some(label) = label else {
-            // No right name for these additions: no note, and not an older addition's.
-            for c in e
-                .changes
-                .iter()
-                .filter(|c| ADDED_CODES.contains(&c.code.as_str()))
-            {
-                out.remove(&c.path);
-            }
-            continue;
-        };
         for c in e
             .changes
             .iter()
             .filter(|c| ADDED_CODES.contains(&c.code.as_str()))
         {
-            out.insert(c.path.clone(), label.clone());
+            // Without a right name for the addition: no note, and not an older addition's.
+            match &label {
+                Some(l) => out.insert(c.path.clone(), l.clone()),
+                None => out.remove(&c.path),
+            };
         }
     }
     out
@@ -271,7 +264,8 @@ impl ElementKeys {
         }
     }
 
-    fn all(&self) -> impl Iterator<Item = &String> {
+    /// Every key: data ports, service ports, their interfaces, configuration parameters.
+    pub fn all(&self) -> impl Iterator<Item = &String> {
         self.data_ports
             .iter()
             .chain(&self.service_ports)

@@ -168,8 +168,7 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
         let recorded = |e: &Option<PortEnd>, el: &crate::catalog::systems::EndLink| {
             let inst = p.components.get(el.instance?)?;
             let name = end_port_name(e.as_ref()?);
-            let port = inst.data_ports.iter().find(|dp| dp.own_name() == name)?;
-            let t = port.property("dataport.data_type")?;
+            let t = inst.recorded_data_type(name)?;
             let who = non_empty(&inst.instance_name).unwrap_or("");
             Some((
                 canonical(t),

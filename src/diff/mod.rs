@@ -472,20 +472,19 @@ fn pair_renamed(
     groups.retain(|_, g| !g.0.is_empty() || !g.1.is_empty());
 }
 
-/// Whether two profiles have a data port, service port or configuration parameter of the same
-/// name: what makes a component under a new id the same component rather than another one.
+/// Whether two profiles have a data port, service port (or interface) or configuration
+/// parameter of the same name (their keys as the diff names them,
+/// [`crate::catalog::history::ElementKeys`]): what makes a component under a new id the same
+/// component rather than another one.
 fn shares_an_element(a: &Profile, b: &Profile) -> bool {
-    let names = |p: &Profile| -> Vec<(char, String)> {
-        let data = p.data_ports.iter().map(|x| ('d', &x.name));
-        let service = p.service_ports.iter().map(|x| ('s', &x.name));
-        let conf = p.configurations().iter().map(|x| ('c', &x.name));
-        data.chain(service)
-            .chain(conf)
-            .filter_map(|(kind, n)| non_empty(n).map(|n| (kind, n.trim().to_string())))
-            .collect()
-    };
-    let theirs = names(b);
-    names(a).iter().any(|n| theirs.contains(n))
+    use crate::catalog::history::ElementKeys;
+    let (a, b) = (ElementKeys::of(a), ElementKeys::of(b));
+    let theirs: std::collections::BTreeSet<&String> = b.all().collect();
+    let shared = a
+        .all()
+        .filter(|k| !k.contains("(unnamed)"))
+        .any(|k| theirs.contains(k));
+    shared
 }
 
 /// Pairs the components of one id: one on each side is a pair; several are paired by language,

@@ -386,6 +386,14 @@ node! {
 }
 
 impl SystemComponent {
+    /// The type the system file records for this instance's data port `port` (its own name):
+    /// RTSystemEditor's `dataport.data_type` on the port.
+    pub fn recorded_data_type(&self, port: &str) -> Option<&str> {
+        self.data_ports
+            .iter()
+            .find(|p| p.own_name() == port)?
+            .property("dataport.data_type")
+    }
     /// The instance names of its participants (its members, as a composite), each once, in
     /// file order.
     pub fn member_names(&self) -> Vec<&str> {

@@ -549,7 +549,7 @@ impl<'a> Locator<'a> {
                         .count();
                     match rest.get(blank) {
                         None | Some(b'[' | b'{' | b'\r' | b'\n' | b'#') => i += 1,
-                        Some(_) => i += 1 + blank + scalar_len(&rest[blank..]),
+                        Some(_) => i = scalar_end(self.src, i + 1 + blank),
                     }
                 }
                 b' ' | b'\t' | b'\r' | b'\n' | b',' | b'[' | b'}' => i += 1,
@@ -606,16 +606,8 @@ impl<'a> Locator<'a> {
         let rest = src.get(self.cursor..)?;
         let skipped = rest.len() - rest.trim_start_matches([' ', '\t']).len();
         let start = self.cursor + skipped;
-        let line = src[start..].split('\n').next()?;
-        let len = match line.chars().next() {
-            Some(q @ ('"' | '\'')) => line[1..].find(q).map_or(line.len(), |n| n + 2),
-            _ => {
-                let l = line.split(" #").next().unwrap_or(line);
-                l.find([',', ']', '}']).unwrap_or(l.len())
-            }
-        };
-        let text = line[..len].trim_end();
-        Some((text, start + text.len()))
+        let end = scalar_end(src, start);
+        Some((&src[start..end], end))
     }
 }
 
@@ -1771,18 +1763,17 @@ impl Reader<'_> {
     }
 }
 
-/// The length of the scalar at the start of `b`: up to the end of its line, or to a `,`, `}` or
-/// `]` (flow style), whichever comes first outside single or double quotes.
-fn scalar_len(b: &[u8]) -> usize {
-    let mut quote = None;
-    for (k, &c) in b.iter().enumerate() {
-        match (quote, c) {
-            (_, b'\n') => return k,
-            (None, b'"' | b'\'') => quote = Some(c),
-            (Some(q), _) if c == q => quote = None,
-            (None, b',' | b'}' | b']') => return k,
-            _ => {}
+/// The end of the one-line scalar that starts at `start` of `src`: a quoted one at its closing
+/// quote, a plain one at a `,`, `]` or `}` (flow style), a ` #` comment or the end of its line,
+/// without the blanks before it.
+fn scalar_end(src: &str, start: usize) -> usize {
+    let line = src[start..].split('\n').next().unwrap_or("");
+    let len = match line.chars().next() {
+        Some(q @ ('"' | '\'')) => line[1..].find(q).map_or(line.len(), |n| n + 2),
+        _ => {
+            let l = line.split(" #").next().unwrap_or(line);
+            l.find([',', ']', '}']).unwrap_or(l.len())
         }
-    }
-    b.len()
+    };
+    start + line[..len].trim_end().len()
 }

@@ -1438,44 +1438,35 @@ fn an_id_naming_the_instance_points_at_the_component() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     common::write(d, "in/Ctl/RTC.xml", &common::xml_profile("Ctl", &[]));
-    let system = |id_name: &str| rts_system("Cho", &[&instance_xml("Ctl0", id_name, "out")]);
-    common::write(d, "in/sys/Cho.xml", &system("Ctl0"));
-    let found = common::findings(d, "in", &["RTC603"]);
+    // The RTC603 findings of the system whose instance `Ctl0` names `id_name` in its id.
+    let rtc603 = |id_name: &str| {
+        let system = rts_system("Cho", &[&instance_xml("Ctl0", id_name, "out")]);
+        common::write(d, "in/sys/Cho.xml", &system);
+        common::findings(d, "in", &["RTC603"])
+    };
+    let hint = |found: &[serde_json::Value]| found[0]["hint"].as_str().unwrap_or("").to_string();
+    let found = rtc603("Ctl0");
     assert_eq!(found.len(), 1, "{found:?}");
     assert_eq!(
-        found[0]["hint"],
+        hint(&found),
         "the id names `Ctl0`, an instance's name (as Choreonoid saves it); the input has the component `Ctl` (Ctl/RTC.xml, id `RTC:Test:Cat:Ctl:1.0.0`): write that id in the system file",
         "{found:?}"
     );
     // Followed: no finding.
-    common::write(d, "in/sys/Cho.xml", &system("Ctl"));
-    assert_eq!(
-        common::findings(d, "in", &["RTC603"]),
-        Vec::<serde_json::Value>::new()
-    );
+    assert_eq!(rtc603("Ctl"), Vec::<serde_json::Value>::new());
     // Two profiles of that id (C++ and Python copies): the hint still names the id as written,
     // which links the instance.
     common::write(d, "in/Ctl2/RTC.xml", &common::xml_profile("Ctl", &[]));
-    common::write(d, "in/sys/Cho.xml", &system("Ctl0"));
-    let found = common::findings(d, "in", &["RTC603"]);
+    let found = rtc603("Ctl0");
     assert!(
-        found[0]["hint"]
-            .as_str()
-            .is_some_and(|h| h.contains("id `RTC:Test:Cat:Ctl:1.0.0`)")),
+        hint(&found).contains("id `RTC:Test:Cat:Ctl:1.0.0`)"),
         "{found:?}"
     );
-    common::write(d, "in/sys/Cho.xml", &system("Ctl"));
-    assert_eq!(
-        common::findings(d, "in", &["RTC603"]),
-        Vec::<serde_json::Value>::new()
-    );
+    assert_eq!(rtc603("Ctl"), Vec::<serde_json::Value>::new());
     // A name that only ends in a digit, without such a component, keeps the general hint.
-    common::write(d, "in/sys/Cho.xml", &system("Other2"));
-    let found = common::findings(d, "in", &["RTC603"]);
+    let found = rtc603("Other2");
     assert!(
-        found[0]["hint"]
-            .as_str()
-            .is_some_and(|h| h.starts_with("add the component's RTC.xml")),
+        hint(&found).starts_with("add the component's RTC.xml"),
         "{found:?}"
     );
 }

@@ -101,14 +101,10 @@ fn type_note(c: &DataPortConnector) -> String {
 fn recorded_type<'s>(s: &'s RtSystem, e: Option<&PortEnd>) -> Option<&'s str> {
     let e = e?;
     let instance = non_empty(&e.instance_name)?;
-    let name = crate::catalog::systems::end_port_name(e);
     s.components
         .iter()
         .find(|c| non_empty(&c.instance_name) == Some(instance))?
-        .data_ports
-        .iter()
-        .find(|p| p.own_name() == name)?
-        .property("dataport.data_type")
+        .recorded_data_type(crate::catalog::systems::end_port_name(e))
 }
 
 /// Whether connector `c` of system `s` carries the type both its ports carry, as `s` records
