@@ -36,6 +36,9 @@ pub struct LoadOptions {
     /// What reads the history ([`crate::history::attach`], set by `config::build_options`: the
     /// history compares versions with `diff`, a later layer than this one).
     pub history_reader: Option<HistoryReader>,
+    /// Whether and where each component's implementation is read (`[implementation]` of
+    /// `rtcdoc.toml`; its size limit is `limits.max_file_size`).
+    pub implementation: crate::catalog::implementations::Settings,
 }
 
 /// Fills in the components' history of a loaded catalogue (see [`LoadOptions::history`]).
@@ -298,6 +301,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         backups,
         // A file named on the command line: the walk listed no folder.
         readme_dirs: (!named).then_some(found.readme_dirs),
+        implementation: crate::catalog::implementations::Settings {
+            max_file_size: opts.limits.max_file_size,
+            // A profile named on the command line is checked alone, as written.
+            enabled: opts.implementation.enabled && !named,
+            ..opts.implementation.clone()
+        },
     };
     let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();

@@ -24,6 +24,7 @@
 pub mod backups;
 pub mod dataflow;
 pub mod history;
+pub mod implementations;
 pub mod neighbourhood;
 pub mod pages;
 pub mod readmes;
@@ -68,6 +69,10 @@ pub struct Component {
     /// The hand-written README of the profile's folder ([`crate::readme`]), when it has one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub readme: Option<crate::readme::Readme>,
+    /// What the component's code registers and where it differs from the profile
+    /// ([`crate::implementation`]); `None`: no source file found, or the check is off.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub implementation: Option<Box<crate::implementation::Implementation>>,
     /// RTCBuilder's backups of this profile (`RTC.xml<timestamp>` beside it), oldest first:
     /// older versions of it, not components ([`backups`]).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -1338,6 +1343,8 @@ pub struct Documents {
     /// The folders that may hold a README (the walk met an entry named like one there:
     /// [`crate::walk::Candidates::readme_dirs`]); `None`: every component folder is looked in.
     pub readme_dirs: Option<std::collections::BTreeSet<String>>,
+    /// Whether and how each component's implementation is read ([`crate::implementation`]).
+    pub implementation: implementations::Settings,
 }
 
 impl Catalog {
@@ -1357,6 +1364,7 @@ impl Catalog {
         catalog.index();
         catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
         catalog.attach_readmes(root, excluded, docs.readme_dirs.as_ref());
+        catalog.attach_implementations(root, excluded, &docs.implementation);
         catalog.attach_sources(root.sources.clone());
         catalog
     }
@@ -1459,6 +1467,7 @@ impl Catalog {
                 anchors,
                 qualifier,
                 readme: None,
+                implementation: None,
                 backups: Vec::new(),
                 history: Vec::new(),
                 since: BTreeMap::new(),

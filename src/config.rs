@@ -58,6 +58,60 @@ pub struct Config {
     /// `[[source]]` tables: git repositories documented at a pinned commit
     /// ([`crate::sources`]).
     pub source: Option<Vec<crate::sources::SourceConfig>>,
+    /// `[implementation]`: how each component's code is found and compared with its profile
+    /// ([`crate::implementation`]).
+    pub implementation: Option<ImplementationConfig>,
+}
+
+/// `[implementation]` settings.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct ImplementationConfig {
+    /// Read and compare implementations (default true).
+    pub check: Option<bool>,
+    /// `[[implementation.component]]`: the files of components whose name or id matches
+    /// `name` (a glob), relative to the profile's folder.
+    pub component: Option<Vec<ImplementationFiles>>,
+}
+
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct ImplementationFiles {
+    pub name: String,
+    pub files: Vec<String>,
+}
+
+impl ImplementationConfig {
+    /// The settings of a build (the size limit is filled in by the load).
+    fn settings(&self, file: &Path) -> Result<crate::catalog::implementations::Settings> {
+        let mut files = Vec::new();
+        for c in self.component.iter().flatten() {
+            let g = globset::Glob::new(&c.name).map_err(|e| {
+                anyhow::anyhow!(
+                    "{}: [[implementation.component]] name `{}` is not a valid glob ({e}); write a component name, an id, or a pattern such as `Camera*`",
+                    file.display(),
+                    c.name
+                )
+            })?;
+            if let Some(bad) = c
+                .files
+                .iter()
+                .find(|f| f.starts_with('/') || f.split(['/', '\\']).any(|s| s == ".."))
+            {
+                anyhow::bail!(
+                    "{}: [[implementation.component]] `{}`: the file `{bad}` is outside the component's folder; name files relative to the folder of its RTC.xml, without `..`",
+                    file.display(),
+                    c.name
+                );
+            }
+            files.push((g.compile_matcher(), c.files.clone()));
+        }
+        Ok(crate::catalog::implementations::Settings {
+            enabled: self.check.unwrap_or(true),
+            files,
+            ..Default::default()
+        })
+    }
 }
 
 /// `[markdown]` settings.
@@ -108,12 +162,16 @@ impl Loaded {
 
 /// Parses configuration text. Errors name the file, the line and column, and the key.
 pub fn parse(text: &str, file: &Path) -> Result<Config> {
-    toml::from_str::<Config>(text).map_err(|e| {
+    let c = toml::from_str::<Config>(text).map_err(|e| {
         let pos = e.span().map_or(crate::model::Pos::new(1, 1), |s| {
             crate::model::Pos::at_offset(text, s.start)
         });
         anyhow::anyhow!("{}:{pos}: {}", file.display(), e.message().trim_end())
-    })
+    })?;
+    if let Some(i) = &c.implementation {
+        i.settings(file)?;
+    }
+    Ok(c)
 }
 
 /// Reads `explicit` when given (it must exist), else the first `rtcdoc.toml` found in
@@ -645,6 +703,15 @@ pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::Buil
                 .or(c.history)
                 .unwrap_or(crate::history::DEFAULT_LIMIT),
             history_reader: Some(crate::history::attach),
+            // Checked when the file was parsed.
+            implementation: c
+                .implementation
+                .as_ref()
+                .and_then(|i| {
+                    i.settings(file.path.as_deref().unwrap_or(Path::new(FILE_NAME)))
+                        .ok()
+                })
+                .unwrap_or_default(),
             idl_path: match &cli.idl_path {
                 Some(paths) => paths.clone(),
                 None => c

@@ -98,6 +98,19 @@ pub struct Diagnostic {
     /// What to do about it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub hint: Option<String>,
+    /// The other place a finding is at (the profile element of a difference the code has):
+    /// SARIF's `relatedLocations`, a note in the human output.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub related: Option<Box<Related>>,
+}
+
+/// A second location of a [`Diagnostic`], with what is there.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Related {
+    pub file: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pos: Option<Pos>,
+    pub message: String,
 }
 
 /// [`Diagnostic`] as `catalog.json` has it.
@@ -112,6 +125,8 @@ struct DiagnosticRead {
     pos: Option<Pos>,
     #[serde(default)]
     hint: Option<String>,
+    #[serde(default)]
+    related: Option<Box<Related>>,
 }
 
 impl<'de> serde::Deserialize<'de> for Diagnostic {
@@ -124,6 +139,7 @@ impl<'de> serde::Deserialize<'de> for Diagnostic {
             file: r.file,
             pos: r.pos,
             hint: r.hint,
+            related: r.related,
         })
     }
 }
@@ -142,6 +158,7 @@ impl Diagnostic {
             file: file.to_string(),
             pos: None,
             hint: None,
+            related: None,
         }
     }
     pub fn error(code: &'static str, file: &str, message: impl Into<String>) -> Self {
@@ -158,6 +175,20 @@ impl Diagnostic {
         if !pos.is_unknown() {
             self.pos = Some(pos);
         }
+        self
+    }
+    /// Names a second location (see [`Diagnostic::related`]).
+    pub fn with_related(
+        mut self,
+        file: &str,
+        pos: Option<Pos>,
+        message: impl Into<String>,
+    ) -> Self {
+        self.related = Some(Box::new(Related {
+            file: file.to_string(),
+            pos: pos.filter(|p| !p.is_unknown()),
+            message: message.into(),
+        }));
         self
     }
     pub fn with_hint(mut self, hint: impl Into<String>) -> Self {

@@ -399,6 +399,10 @@ impl Workspace {
             backups,
             // A README may have come since the walk: every component folder is looked in.
             readme_dirs: None,
+            implementation: crate::catalog::implementations::Settings {
+                max_file_size: self.opts.load.limits.max_file_size,
+                ..self.opts.load.implementation.clone()
+            },
         };
         let mut catalog = Catalog::assemble(
             docs,

@@ -20,6 +20,7 @@ pub mod diff;
 pub mod history;
 pub mod i18n;
 pub mod idl;
+pub mod implementation;
 pub mod incremental;
 pub mod init;
 pub mod layout;

@@ -10,6 +10,7 @@
 //! [`run`] returns the rule diagnostics (not the loader's); [`check`] returns a [`Report`] with
 //! the loader's and the rules' diagnostics together, counts and the documentation coverage.
 
+mod drift;
 mod idl_coverage;
 pub mod registry;
 pub mod report;

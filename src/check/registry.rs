@@ -93,6 +93,18 @@ pub const SYSTEM_DUPLICATE_CONNECTOR_ID: &str = "RTC609";
 pub const README_GENERATED: &str = crate::readme::GENERATED;
 pub const README_UNREADABLE: &str = crate::readme::UNREADABLE;
 pub const README_IMAGE: &str = crate::readme::IMAGE;
+// Specification and implementation (issue 51).
+pub const DRIFT_ONLY_IN_PROFILE: &str = crate::implementation::drift::codes::ONLY_IN_PROFILE;
+pub const DRIFT_ONLY_IN_CODE: &str = crate::implementation::drift::codes::ONLY_IN_CODE;
+pub const DRIFT_NAME_CASE: &str = crate::implementation::drift::codes::NAME_CASE;
+pub const DRIFT_DATA_TYPE: &str = crate::implementation::drift::codes::DATA_TYPE;
+pub const DRIFT_DIRECTION: &str = crate::implementation::drift::codes::DIRECTION;
+pub const DRIFT_DEFAULT: &str = crate::implementation::drift::codes::DEFAULT;
+pub const DRIFT_CALLBACK_UNMARKED: &str = crate::implementation::drift::codes::CALLBACK_UNMARKED;
+pub const DRIFT_CALLBACK_MISSING: &str = crate::implementation::drift::codes::CALLBACK_MISSING;
+pub const DRIFT_SPEC_VALUE: &str = crate::implementation::drift::codes::SPEC_VALUE;
+pub const DRIFT_UNVERIFIED: &str = crate::implementation::drift::codes::UNVERIFIED;
+pub const SOURCE_UNREADABLE: &str = crate::implementation::codes::UNREADABLE;
 
 use Severity::{Error, Info, Warning};
 
@@ -781,6 +793,105 @@ pub static RULES: &[Rule] = &[
         explanation: "A README's relative image is copied into the site when it resolves inside the input directory to a regular file of type PNG, JPEG, GIF, WebP or SVG of at most 5 MiB. Any other — missing, outside the input, a link or a folder, of another type, too large — is dropped and its alt text shown instead; the message says why. (An absolute `http(s)` image becomes a link to it: the site makes no external requests.)",
         spec: "— (rtcdoc: component folder READMEs)",
         hint: "add the image or correct its path (relative to the README's folder), and use one of the types shown",
+    },
+    Rule {
+        code: DRIFT_ONLY_IN_PROFILE,
+        severity: Warning,
+        name: "only-in-profile",
+        summary: "a port, interface or parameter of the profile is not registered by the code",
+        explanation: "The component's source files (found beside the profile in RTCBuilder's layout: C++ `src/<Name>.cpp` and `include/<Name>/<Name>.h`, Python `<Name>.py`, Java `src/<Name>Impl.java`, or named in rtcdoc.toml) are read with a tokenizer that knows comments and strings, and what they register is compared with the profile: `addInPort` / `addOutPort`, `registerProvider` / `registerConsumer` on a `CorbaPort`, `bindParameter`. A data port, service port, service interface or configuration parameter the profile declares and the code never registers is documented but does not exist when the component runs. It is reported only when the code's registrations of that kind can all be read: a name built at run time or a macro makes it RTC810 instead.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "register it in the code, or remove it from the profile",
+    },
+    Rule {
+        code: DRIFT_ONLY_IN_CODE,
+        severity: Warning,
+        name: "only-in-code",
+        summary: "the code registers a port, interface or parameter the profile does not declare",
+        explanation: "The code registers it with a literal name (`addInPort(\"distance_sensor\", …)`, `bindParameter(\"Red\", …)`), and the profile has no element of that name, so the running component has something its documentation does not show. The finding is at the registration, with the profile as its related location.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "add it to the profile (RTCBuilder), or remove the registration",
+    },
+    Rule {
+        code: DRIFT_NAME_CASE,
+        severity: Warning,
+        name: "name-case",
+        summary: "a name differs between profile and code only in case",
+        explanation: "OpenRTM compares port and parameter names exactly: a system that connects the profile's `attach_Port` finds no port when the code registers `Attach_Port`. Reported once, instead of one name only in the profile and another only in the code.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "spell the name the same in both",
+    },
+    Rule {
+        code: DRIFT_DATA_TYPE,
+        severity: Warning,
+        name: "type-differs",
+        summary: "a port's data type or an interface's type differs between profile and code",
+        explanation: "For a data port, the code's type is `T` of the `InPort<T>` / `OutPort<T>` member the registration names (C++, Java), or the data object given to `OpenRTM_aist.InPort` (Python: `RTC.TimedLong(…)`, `instantiateDataType(RTC.TimedLong)`). For an interface it is the type name given to `registerProvider` / `registerConsumer`. Names are compared as scoped names (`RTC.TimedLong`, `IDL:RTC/TimedLong:1.0` and `RTC::TimedLong` are one); a name written without its module (`TimedLong` under `using namespace RTC`, Java's imports) matches on its last part. For a configuration parameter the declared type of the bound variable is compared by family (integer, real, string, bool) only.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "change the profile's type or the code's declaration so they agree",
+    },
+    Rule {
+        code: DRIFT_DIRECTION,
+        severity: Warning,
+        name: "direction-differs",
+        summary: "a port's direction or an interface's direction differs between profile and code",
+        explanation: "The profile says DataInPort and the code calls `addOutPort` (or the reverse), or an interface the profile marks Provided is registered with `registerConsumer` (or the reverse).",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "make the profile say what the code registers",
+    },
+    Rule {
+        code: DRIFT_DEFAULT,
+        severity: Warning,
+        name: "default-differs",
+        summary: "a configuration parameter's default value differs between profile and code",
+        explanation: "The default given to `bindParameter(name, var, \"default\")`, or the spec array's `conf.default.<name>`, is not the profile's `defaultValue` (compared as text, spaces at the ends ignored). The component then starts with another value than the documentation says.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "make the code's default and the profile's defaultValue the same",
+    },
+    Rule {
+        code: DRIFT_CALLBACK_UNMARKED,
+        severity: Warning,
+        name: "callback-unmarked",
+        summary: "a callback is implemented in the code, but the profile marks it not implemented",
+        explanation: "RTCBuilder generates each lifecycle callback commented out unless the profile marks it implemented. A callback the class defines with a body beyond the generated `return RTC::RTC_OK;` (and registrations) does work the profile says is not there: its Activity documentation is missing. Comments, commented-out definitions and the generated stubs are not implementations.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "mark the action implemented in the profile and document it",
+    },
+    Rule {
+        code: DRIFT_CALLBACK_MISSING,
+        severity: Warning,
+        name: "callback-missing",
+        summary: "the profile marks a callback implemented, but the code does not define it",
+        explanation: "The action is marked `implemented=\"true\"`, and no file read defines the callback (it is commented out or was removed), so the documented behaviour does not run. `onInitialize` is exempt: the base class defines it.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "mark the action not implemented, or define the callback",
+    },
+    Rule {
+        code: DRIFT_SPEC_VALUE,
+        severity: Warning,
+        name: "spec-array-differs",
+        summary: "the spec array says another version, vendor, category, activity type, … than BasicInfo",
+        explanation: "The spec array (`<name>_spec[]`) is what the running component reports to tools (rtshell, RTSystemEditor); it is generated from BasicInfo once. Compared: `implementation_id` with the name, `version`, `vendor`, `category`, `activity_type` (any case), `max_instance`, `language` (any case), and each parameter's `conf.__widget__` and `conf.__type__`. A value written as a macro (`PACKAGE_VERSION`) is not compared (RTC810).",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "regenerate the spec array from the profile, or correct the stale one",
+    },
+    Rule {
+        code: DRIFT_UNVERIFIED,
+        severity: Info,
+        name: "could-not-verify",
+        summary: "part of the code cannot be verified statically",
+        explanation: "A registration whose name is not a literal (built at run time, in a loop), a macro that registers ports, a service port whose name is not a literal, or code that registers nothing at all (ports added by a base class or a library): what it registers is not compared, and nothing of that kind is reported missing from the code. Never a warning: the code may well be right.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "nothing to change; if another file registers them, name it in rtcdoc.toml ([[implementation.component]])",
+    },
+    Rule {
+        code: SOURCE_UNREADABLE,
+        severity: Info,
+        name: "source-unreadable",
+        summary: "a source file of a component cannot be read",
+        explanation: "A source file larger than the file-size limit (16 MiB by default, --max-file-size), nested deeper than 256 brackets or with more than four million tokens is not read; the component's implementation is compared without it. The build goes on. Files in Shift_JIS are read as such; other invalid UTF-8 is replaced.",
+        spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
+        hint: "nothing to change if the file is generated or vendored; else split it",
     },
 ];
 

@@ -32,6 +32,8 @@ struct JsonDiagnostic<'a> {
     line: Option<u32>,
     column: Option<u32>,
     hint: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    related: Option<&'a crate::diagnostic::Related>,
 }
 
 /// The JSON document of a report.
@@ -47,6 +49,7 @@ pub fn to_json(report: &Report) -> Value {
             line: d.pos.map(|p| p.line),
             column: d.pos.map(|p| p.column),
             hint: d.hint.as_deref(),
+            related: d.related.as_deref(),
         })
         .collect();
     json!({
@@ -123,6 +126,18 @@ pub fn to_sarif(report: &Report) -> Value {
             });
             if let Some(i) = index.get(d.code) {
                 r["ruleIndex"] = json!(i);
+            }
+            if let Some(rel) = &d.related {
+                let mut physical = json!({"artifactLocation": {"uri": path_to_uri(&rel.file)}});
+                if let Some(p) = rel.pos {
+                    physical["region"] =
+                        json!({"startLine": p.line, "startColumn": p.column.max(1)});
+                }
+                r["relatedLocations"] = json!([{
+                    "id": 1,
+                    "physicalLocation": physical,
+                    "message": {"text": rel.message},
+                }]);
             }
             r
         })
@@ -259,6 +274,12 @@ pub fn write_human(
             notes.push(match d.pos {
                 Some(p) => format!("in {}:{}:{}", d.file, p.line, p.column),
                 None => format!("in {}", d.file),
+            });
+        }
+        if let Some(r) = &d.related {
+            notes.push(match r.pos {
+                Some(p) => format!("{}: {}:{}:{}", r.message, r.file, p.line, p.column),
+                None => format!("{}: {}", r.message, r.file),
             });
         }
         if let Some(h) = &d.hint {

@@ -51,6 +51,7 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
     configuration_datanames(p, &mut s);
     placeholders(p, &mut s);
     documentation(p, &mut s);
+    s.out.extend(super::drift::findings(c));
     s.out
 }
 

@@ -77,6 +77,20 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     // A folder named README.md: a finding about the whole file, without a position.
     ("RTC702", "README.md", 0, 0),
     ("RTC703", "README.md", 5, 11),
+    // The code beside the profile (RTCBuilder's C++ layout: src/Drift.cpp,
+    // include/Drift/Drift.h): at the source line, or at the profile element when the code has
+    // nothing there.
+    ("RTC801", "RTC.xml", 19, 3),
+    ("RTC802", "src/Drift.cpp", 36, 3),
+    ("RTC803", "src/Drift.cpp", 34, 3),
+    ("RTC804", "src/Drift.cpp", 34, 3),
+    ("RTC805", "src/Drift.cpp", 34, 3),
+    ("RTC806", "src/Drift.cpp", 38, 3),
+    ("RTC807", "src/Drift.cpp", 49, 26),
+    ("RTC808", "RTC.xml", 8, 5),
+    ("RTC809", "src/Drift.cpp", 10, 26),
+    ("RTC810", "src/Drift.cpp", 34, 3),
+    ("RTC811", "include/Drift/Drift.h", 25, 281),
 ];
 
 #[test]

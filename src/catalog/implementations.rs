@@ -1,0 +1,83 @@
+//! Each component's implementation, read from the source files beside its profile
+//! ([`crate::implementation`]) and compared with it.
+
+use super::Catalog;
+use crate::implementation::{self, drift};
+use rayon::prelude::*;
+
+/// How implementations are read: `rtcdoc.toml`'s `[implementation]`.
+#[derive(Debug, Clone)]
+pub struct Settings {
+    /// Read and compare implementations at all (`check = false` turns it off).
+    pub enabled: bool,
+    /// The largest source file read (the profiles' limit).
+    pub max_file_size: u64,
+    /// Files named per component (`[[implementation.component]]`): (component name or id glob,
+    /// files relative to the profile's folder).
+    pub files: Vec<(globset::GlobMatcher, Vec<String>)>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            enabled: true,
+            max_file_size: 16 * 1024 * 1024,
+            files: Vec::new(),
+        }
+    }
+}
+
+impl Catalog {
+    /// Finds, reads and compares every component's implementation (in parallel, a component
+    /// a task); the reading's findings join the catalogue's diagnostics.
+    pub fn attach_implementations(
+        &mut self,
+        root: &super::sources::Roots,
+        excluded: &(dyn Fn(&str) -> bool + Sync),
+        settings: &Settings,
+    ) {
+        if !settings.enabled {
+            return;
+        }
+        let read: Vec<_> = self
+            .components
+            .par_iter()
+            .map(|c| {
+                let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
+                let name = c.profile.basic_info.name.as_deref().unwrap_or("").trim();
+                let id = c.id.as_str();
+                let extra: &[String] = settings
+                    .files
+                    .iter()
+                    .find(|(g, _)| g.is_match(name) || g.is_match(id))
+                    .map_or(&[], |(_, f)| f.as_slice());
+                let langs = implementation::languages(
+                    c.profile.language.as_ref().and_then(|l| l.kind.as_deref()),
+                );
+                let abs = root.dir_of(&c.source).join(dir);
+                let Some((lang, files)) = implementation::find(&abs, dir, name, &langs, extra)
+                else {
+                    return (None, Vec::new());
+                };
+                let files: Vec<_> = files
+                    .into_iter()
+                    .filter(|(_, rel)| !excluded(rel))
+                    .collect();
+                if files.is_empty() {
+                    return (None, Vec::new());
+                }
+                let (imp, diags) = implementation::read(lang, &files, settings.max_file_size);
+                let imp = imp.map(|mut i| {
+                    i.drift = drift::compare(&c.profile, &i);
+                    Box::new(i)
+                });
+                (imp, diags)
+            })
+            .collect();
+        for (c, (imp, diags)) in self.components.iter_mut().zip(read) {
+            c.implementation = imp;
+            self.diagnostics.extend(diags);
+        }
+        crate::diagnostic::sort(&mut self.diagnostics);
+    }
+}

@@ -1,0 +1,114 @@
+//! RTC801–RTC810: where a component's code and its profile disagree
+//! ([`crate::implementation::drift`]), each at the source line with the profile element as its
+//! related location, and what the code registers that cannot be verified statically.
+
+use crate::catalog::Component;
+use crate::diagnostic::Diagnostic;
+use crate::implementation::drift::{codes, Drift, DriftKind};
+use crate::quote::Code;
+
+/// The findings of one component's implementation.
+pub(crate) fn findings(c: &Component) -> Vec<Diagnostic> {
+    let Some(imp) = &c.implementation else {
+        return Vec::new();
+    };
+    let mut out: Vec<Diagnostic> = imp.drift.iter().map(|d| finding(c, d)).collect();
+    for u in &imp.unverified {
+        out.push(
+            Diagnostic::info(
+                codes::UNVERIFIED,
+                &u.at.file,
+                format!("could not verify {}: {}", u.what, Code(&u.construct)),
+            )
+            .at(u.at.pos)
+            .with_related(&c.source, None, "the profile")
+            .with_hint("nothing to change: what the code builds at run time is not compared with the profile; keep the profile's elements in step with it by hand"),
+        );
+    }
+    let registers =
+        !(imp.data_ports.is_empty() && imp.service_ports.is_empty() && imp.parameters.is_empty());
+    let p = &c.profile;
+    let declares =
+        !(p.data_ports.is_empty() && p.service_ports.is_empty() && p.configurations().is_empty());
+    if !registers && declares && imp.unverified.is_empty() {
+        let file = imp.files.first().map_or(c.source.as_str(), String::as_str);
+        let base = imp
+            .class
+            .as_ref()
+            .and_then(|k| k.bases.first())
+            .map(|b| format!(" (the class derives from {})", Code(b)))
+            .unwrap_or_default();
+        out.push(
+            Diagnostic::info(
+                codes::UNVERIFIED,
+                file,
+                format!("could not verify the ports and parameters: the files read register none{base}; they may be registered in a base class, a library or another file"),
+            )
+            .with_related(&c.source, None, "the profile")
+            .with_hint("if another file registers them, name the component's files in rtcdoc.toml ([[implementation.component]] name = \"…\", files = [\"src/….cpp\"])"),
+        );
+    }
+    out
+}
+
+fn finding(c: &Component, d: &Drift) -> Diagnostic {
+    let el = Code(&d.element);
+    let p = d.profile.as_deref().unwrap_or("");
+    let k = d.code.as_deref().unwrap_or("");
+    let (message, hint) = match d.kind {
+        DriftKind::OnlyInProfile => (
+            format!("{el} is in the profile ({p}) but the code does not register it"),
+            "register it in the code (the generated onInitialize), or remove it from the profile if the component no longer has it (RTCBuilder, RTC.xml)",
+        ),
+        DriftKind::OnlyInCode => (
+            format!("the code registers {el} ({k}), which the profile does not declare"),
+            "add it to the profile (RTCBuilder, RTC.xml) so that it is documented, or remove the registration",
+        ),
+        DriftKind::NameCase => (
+            format!("{el}: the profile says {} and the code {}, which differ only in case", Code(p), Code(k)),
+            "OpenRTM names are case-sensitive (a connector to the profile's name fails): rename one of them so both spell it the same",
+        ),
+        DriftKind::DataType => (
+            format!("{el}: the profile says {} and the code {}", Code(p), Code(k)),
+            "change the profile's type to what the code uses, or the code's declaration to the profile's type (connectors are made by the profile's type)",
+        ),
+        DriftKind::Direction => (
+            format!("{el}: the profile says {} and the code registers it as {}", Code(p), Code(k)),
+            "make the profile's port type (or interface direction) say what the code registers",
+        ),
+        DriftKind::Default => (
+            format!("{el}: the profile's default is {} and the code's {}", Code(p), Code(k)),
+            "make the code's default (bindParameter, the spec array's conf.default) and the profile's defaultValue the same",
+        ),
+        DriftKind::CallbackUnmarked => (
+            format!("{el} is implemented in the code, but the profile marks it {p}"),
+            "mark the action implemented in the profile (RTCBuilder's Activity tab, rtc:implemented=\"true\") and document what it does",
+        ),
+        DriftKind::CallbackMissing => (
+            format!("{el}: the profile marks it {p}, but the code does not define it (commented out or removed)"),
+            "mark the action not implemented in the profile, or define the callback in the code",
+        ),
+        DriftKind::SpecValue => (
+            format!("{el}: the profile says {} and the spec array {}", Code(p), Code(k)),
+            "regenerate the spec array from the profile (RTCBuilder) or edit the one that is stale",
+        ),
+    };
+    let mut diag = match &d.at {
+        Some(at) => Diagnostic::warning(d.kind.code(), &at.file, message)
+            .at(at.pos)
+            .with_related(&c.source, d.profile_pos, "the profile says it here"),
+        // Nothing in the code to point at: the profile element, with the code's main file.
+        None => {
+            let mut diag = Diagnostic::warning(d.kind.code(), &c.source, message);
+            if let Some(p) = d.profile_pos {
+                diag = diag.at(p);
+            }
+            match c.implementation.as_ref().and_then(|i| i.files.first()) {
+                Some(f) => diag.with_related(f, None, "the code read"),
+                None => diag,
+            }
+        }
+    };
+    diag = diag.with_hint(hint);
+    diag
+}
