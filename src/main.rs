@@ -1307,6 +1307,9 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         let root = input_root(p);
         for d in &mut r.diagnostics {
             d.file = display_path(&root, &d.file);
+            if let Some(rel) = &mut d.related {
+                rel.file = display_path(&root, &rel.file);
+            }
         }
         for c in &mut r.coverage.components {
             c.source = display_path(&root, &c.source);

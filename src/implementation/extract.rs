@@ -692,5 +692,14 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         }
     }
     let _ = added;
+    for s in &imp.spec {
+        if let Some(u) = &s.unresolved {
+            imp.unverified.push(Unverified {
+                construct: u.clone(),
+                what: format!("the spec array's value of `{}`", s.key),
+                at: s.at.clone(),
+            });
+        }
+    }
     imp
 }

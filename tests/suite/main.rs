@@ -29,6 +29,7 @@ mod html_native;
 mod html_site;
 mod idl_pages;
 mod idl_reader;
+mod implementation;
 mod layers;
 mod neighbourhood;
 mod page_kinds;

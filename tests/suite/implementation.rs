@@ -1,0 +1,343 @@
+//! The implementation check: the code beside each profile (C++, Python, Java; generated and
+//! hand-edited; names built at run time, macros, base classes; hostile files) compared with
+//! the profile, in `check`, SARIF and `catalog.json`.
+
+use crate::common;
+use rtcdoc::build::{self, LoadOptions};
+use rtcdoc::check;
+use std::path::PathBuf;
+
+fn fixture(name: &str) -> PathBuf {
+    common::root()
+        .join("tests/fixtures/implementation")
+        .join(name)
+}
+
+/// (code, file, message) of every finding of `dir`.
+fn findings(dir: &std::path::Path) -> Vec<(String, String, String)> {
+    let loaded = build::load(dir, &LoadOptions::default()).expect("load");
+    check::check(&loaded.catalog)
+        .diagnostics
+        .into_iter()
+        .map(|d| (d.code.to_string(), d.file, d.message))
+        .collect()
+}
+
+fn codes(dir: &std::path::Path) -> Vec<String> {
+    let mut c: Vec<String> = findings(dir).into_iter().map(|f| f.0).collect();
+    c.sort();
+    c
+}
+
+#[test]
+fn generated_code_matches_its_profile() {
+    for f in ["python-generated", "java-generated"] {
+        assert_eq!(codes(&fixture(f)), Vec::<String>::new(), "{f}");
+    }
+}
+
+#[test]
+fn a_hand_edited_python_component_drifts() {
+    let f = findings(&fixture("python-edited"));
+    let mut c: Vec<&str> = f.iter().map(|f| f.0.as_str()).collect();
+    c.sort();
+    // The in-port renamed in the code only (ir_sensor → distance_sensor), STATIC in the spec
+    // array, onActivated written where the profile says not implemented.
+    assert_eq!(c, ["RTC801", "RTC802", "RTC807", "RTC809"], "{f:#?}");
+    assert!(f.iter().any(|x| x.0 == "RTC802"
+        && x.1.ends_with("SensorGUI.py")
+        && x.2.contains("distance_sensor")));
+    assert!(f
+        .iter()
+        .any(|x| x.0 == "RTC801" && x.1.ends_with("RTC.xml") && x.2.contains("ir_sensor")));
+    assert!(f.iter().any(|x| x.0 == "RTC809" && x.2.contains("STATIC")));
+    // The commented-out `#def onFinalize` is no callback.
+    assert!(!f.iter().any(|x| x.2.contains("onFinalize")));
+}
+
+#[test]
+fn python_registrations_and_types_are_read() {
+    let loaded = build::load(&fixture("python-generated"), &LoadOptions::default()).unwrap();
+    let imp = loaded.catalog.components[0]
+        .implementation
+        .as_ref()
+        .expect("implementation");
+    assert_eq!(imp.files, ["SensorGUI.py"]);
+    let ports: Vec<(&str, Option<&str>)> = imp
+        .data_ports
+        .iter()
+        .map(|p| (p.name.as_str(), p.data_type.as_deref()))
+        .collect();
+    assert_eq!(
+        ports,
+        [
+            ("ir_sensor", Some("RTC::TimedShortSeq")),
+            ("cmd", Some("RTC::TimedString"))
+        ]
+    );
+    assert_eq!(imp.parameters[0].default.as_deref(), Some("1.0"));
+    let cbs: Vec<(&str, bool)> = imp
+        .callbacks
+        .iter()
+        .map(|c| (c.name.as_str(), c.implemented))
+        .collect();
+    // onInitialize holds only registrations: the generated body.
+    assert_eq!(cbs, [("onInitialize", false), ("onExecute", true)]);
+    assert_eq!(
+        imp.spec_value("activity_type")
+            .and_then(|s| s.value.as_deref()),
+        Some("PERIODIC")
+    );
+}
+
+#[test]
+fn a_hand_edited_java_component_drifts() {
+    let f = findings(&fixture("java-edited"));
+    let c: Vec<&str> = f.iter().map(|f| f.0.as_str()).collect();
+    assert_eq!(c.len(), 2, "{f:#?}");
+    assert!(f
+        .iter()
+        .any(|x| x.0 == "RTC809" && x.1.ends_with("src/Counter.java") && x.2.contains("1.2.0")));
+    assert!(f.iter().any(|x| x.0 == "RTC803"
+        && x.1.ends_with("src/CounterImpl.java")
+        && x.2.contains("`limit`")));
+}
+
+#[test]
+fn what_cannot_be_read_statically_is_never_a_warning() {
+    let f = findings(&fixture("cpp-dynamic"));
+    assert!(f.iter().all(|x| x.0 == "RTC810"), "{f:#?}");
+    let said: Vec<&str> = f.iter().map(|x| x.2.as_str()).collect();
+    assert!(
+        said.iter()
+            .any(|m| m.contains("macro") && m.contains("ADD_JOINT_PORT")),
+        "{said:#?}"
+    );
+    assert!(
+        said.iter().any(|m| m.contains("std::to_string")),
+        "{said:#?}"
+    );
+    assert!(
+        said.iter()
+            .any(|m| m.contains("`version`") && m.contains("ARM_PACKAGE_VERSION")),
+        "{said:#?}"
+    );
+    let f = findings(&fixture("cpp-base-class"));
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].0, "RTC810");
+    assert!(f[0].2.contains("LimbBase"), "{}", f[0].2);
+}
+
+#[test]
+fn hostile_sources_are_bounded_named_and_never_abort_the_build() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = fixture("hostile");
+    for e in walkdir(&src) {
+        let rel = e.strip_prefix(&src).unwrap();
+        let to = dir.path().join(rel);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(&e, &to).unwrap();
+    }
+    // A 16 MiB source file (over the limit by one byte).
+    let huge = dir.path().join("Huge");
+    common::write(
+        &huge,
+        "RTC.xml",
+        &common::xml_profile("Huge", &[("DataInPort", "in", "RTC::TimedLong")]),
+    );
+    let mut big = b"// ".to_vec();
+    big.resize(16 * 1024 * 1024 + 1, b'x');
+    std::fs::create_dir_all(huge.join("src")).unwrap();
+    std::fs::write(huge.join("src/Huge.cpp"), big).unwrap();
+    let f = findings(dir.path());
+    let unreadable: Vec<&(String, String, String)> = f.iter().filter(|x| x.0 == "RTC811").collect();
+    assert_eq!(unreadable.len(), 2, "{f:#?}");
+    assert!(unreadable
+        .iter()
+        .any(|x| x.1 == "Deep/src/Deep.cpp" && x.2.contains("nested deeper")));
+    assert!(unreadable
+        .iter()
+        .any(|x| x.1 == "Huge/src/Huge.cpp" && x.2.contains("larger than")));
+    assert!(
+        !f.iter().any(|x| x.0.starts_with("RTC80")),
+        "no drift: {f:#?}"
+    );
+    let loaded = build::load(dir.path(), &LoadOptions::default()).unwrap();
+    let by_name = |n: &str| {
+        loaded
+            .catalog
+            .components
+            .iter()
+            .find(|c| c.profile.basic_info.name.as_deref() == Some(n))
+            .unwrap()
+    };
+    // Shift_JIS and invalid UTF-8 are read: their registrations are there.
+    for n in ["Sjis", "Bad"] {
+        let imp = by_name(n)
+            .implementation
+            .as_ref()
+            .unwrap_or_else(|| panic!("{n}"));
+        assert_eq!(imp.data_ports[0].name, "in", "{n}");
+    }
+    // The build goes on and writes the site.
+    let out = dir.path().join("site");
+    let o = common::rtcdoc(&["build", ".", "-o", out.to_str().unwrap()], dir.path());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.join("index.html").is_file());
+}
+
+fn walkdir(d: &std::path::Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(d).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            out.extend(walkdir(&p));
+        } else {
+            out.push(p);
+        }
+    }
+    out
+}
+
+#[test]
+fn sarif_names_the_profile_element_as_related_location() {
+    let dir = common::root().join("tests/fixtures/check");
+    let o = common::rtcdoc(&["check", "RTC803-bad", "--format", "sarif"], &dir);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let r = &v["runs"][0]["results"][0];
+    assert_eq!(r["ruleId"], "RTC803");
+    assert_eq!(
+        r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+        "RTC803-bad/src/Drift.cpp"
+    );
+    let rel = &r["relatedLocations"][0]["physicalLocation"];
+    assert_eq!(rel["artifactLocation"]["uri"], "RTC803-bad/RTC.xml");
+    assert_eq!(rel["region"]["startLine"], 17);
+    // The human output names both places too.
+    let o = common::rtcdoc(&["check", "RTC803-bad"], &dir);
+    let text = String::from_utf8_lossy(&o.stderr).to_string() + &String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("the profile says it here: RTC803-bad/RTC.xml:17:3"),
+        "{text}"
+    );
+}
+
+#[test]
+fn deny_warnings_fails_on_drift_and_passes_on_matching_code() {
+    let dir = common::root().join("tests/fixtures/check");
+    let o = common::rtcdoc(&["check", "RTC806-bad", "--deny", "warnings"], &dir);
+    assert_eq!(o.status.code(), Some(1));
+    let o = common::rtcdoc(&["check", "RTC806-good", "--deny", "warnings"], &dir);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // "Could not verify" is an info: it does not fail the gate.
+    let o = common::rtcdoc(&["check", "RTC810-bad", "--deny", "warnings"], &dir);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+#[test]
+fn the_configuration_turns_the_check_off_or_names_the_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = common::root().join("tests/fixtures/check/RTC806-bad");
+    for rel in ["RTC.xml", "src/Drift.cpp", "include/Drift/Drift.h"] {
+        common::write(
+            dir.path(),
+            rel,
+            &std::fs::read_to_string(src.join(rel)).unwrap(),
+        );
+    }
+    let has = |args: &[&str]| {
+        let o = common::rtcdoc(args, dir.path());
+        String::from_utf8_lossy(&o.stdout).contains("RTC806")
+    };
+    assert!(has(&["check", ".", "--format", "json"]));
+    common::write(
+        dir.path(),
+        "rtcdoc.toml",
+        "[implementation]\ncheck = false\n",
+    );
+    assert!(!has(&["check", ".", "--format", "json"]));
+    // The files moved and named: found again.
+    std::fs::rename(dir.path().join("src"), dir.path().join("code")).unwrap();
+    common::write(
+        dir.path(),
+        "rtcdoc.toml",
+        "[implementation]\ncheck = true\n",
+    );
+    assert!(
+        !has(&["check", ".", "--format", "json"]),
+        "not in RTCBuilder's layout any more"
+    );
+    common::write(
+        dir.path(),
+        "rtcdoc.toml",
+        "[[implementation.component]]\nname = \"Dr*\"\nfiles = [\"code/Drift.cpp\", \"include/Drift/Drift.h\"]\n",
+    );
+    assert!(has(&["check", ".", "--format", "json"]));
+    // A file outside the folder is refused when the configuration is read.
+    common::write(
+        dir.path(),
+        "rtcdoc.toml",
+        "[[implementation.component]]\nname = \"Drift\"\nfiles = [\"../x.cpp\"]\n",
+    );
+    let o = common::rtcdoc(&["check", "."], dir.path());
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("outside the component's folder"));
+}
+
+#[test]
+fn catalog_json_carries_the_implementation_and_reads_it_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            fixture("python-edited").to_str().unwrap(),
+            "-f",
+            "json",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let bytes = std::fs::read(out.join("catalog.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&bytes).unwrap();
+    let c = v["components"]
+        .as_object()
+        .unwrap()
+        .values()
+        .next()
+        .unwrap();
+    let imp = &c["implementation"];
+    assert_eq!(imp["language"], "Python");
+    assert_eq!(imp["dataPorts"][0]["name"], "distance_sensor");
+    let kinds: Vec<&str> = imp["drift"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["kind"].as_str().unwrap())
+        .collect();
+    assert!(
+        kinds.contains(&"onlyInCode") && kinds.contains(&"callbackUnmarked"),
+        "{kinds:?}"
+    );
+    let back = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").expect("reads back");
+    let mut again = Vec::new();
+    rtcdoc::render::json::write_json_with(&back.catalog, &back.title, false, &mut again).unwrap();
+    assert!(again == bytes, "catalog.json round trip differs");
+}
