@@ -101,6 +101,17 @@ impl Acc {
     }
 }
 
+/// Whether a value of the code and one of the profile say the same: equal as text (spaces at
+/// the ends ignored), equal as numbers (`0.0` and `0.00`), or equal once the backslashes a
+/// profile value pasted into a literal doubled are read as written (`host\\Comp0`).
+fn same_value(code: &str, profile: &str) -> bool {
+    let (c, p) = (code.trim(), profile.trim());
+    if c == p || c == p.replace("\\\\", "\\") {
+        return true;
+    }
+    matches!((c.parse::<f64>(), p.parse::<f64>()), (Ok(a), Ok(b)) if a == b)
+}
+
 /// A type name as comparable text: `IDL:RTC/TimedLong:1.0` and `RTC.TimedLong` as
 /// `RTC::TimedLong`, no spaces.
 pub fn type_key(t: &str) -> String {
@@ -172,14 +183,21 @@ pub fn compare(profile: &Profile, imp: &Implementation) -> Vec<Drift> {
         profile,
         imp,
         &mut acc,
-        registers && !unverified("data port"),
+        // A kind the code registers nothing of (ports made by helper objects or a base
+        // class) is not reported missing either.
+        registers && !imp.data_ports.is_empty() && !unverified("data port"),
     );
-    service_ports(profile, imp, &mut acc, registers && !unverified("service"));
+    service_ports(
+        profile,
+        imp,
+        &mut acc,
+        registers && !imp.service_ports.is_empty() && !unverified("service"),
+    );
     parameters(
         profile,
         imp,
         &mut acc,
-        registers && !unverified("configuration"),
+        registers && !imp.parameters.is_empty() && !unverified("configuration"),
     );
     callbacks(profile, imp, &mut acc);
     spec(profile, imp, &mut acc);
@@ -455,7 +473,7 @@ fn parameters(profile: &Profile, imp: &Implementation, acc: &mut Acc, complete: 
             );
         }
         if let (Some(pd), Some(cd)) = (text(&p.default_value), c.default.as_deref()) {
-            if pd != cd.trim() {
+            if !same_value(cd, pd) {
                 acc.push(
                     DriftKind::Default,
                     format!("{el}/defaultValue"),
@@ -602,10 +620,16 @@ fn spec(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
         let Some(cv) = s.value.as_deref() else {
             continue;
         };
-        let same = if key == "language" || key == "activity_type" {
-            cv.trim().eq_ignore_ascii_case(pv)
-        } else {
-            cv.trim() == pv
+        let same = match key {
+            "language" => cv.trim().eq_ignore_ascii_case(pv),
+            // RTCBuilder's Python and Java generators write componentType (`STATIC`) there,
+            // older templates the component kind (`DataFlowComponent`).
+            "activity_type" => [Some(pv), text(&b.component_type), text(&b.component_kind)]
+                .into_iter()
+                .flatten()
+                .any(|v| cv.trim().eq_ignore_ascii_case(v)),
+            "max_instance" => same_value(cv, pv),
+            _ => cv.trim() == pv,
         };
         if !same {
             let ppos = if key == "language" {
@@ -654,7 +678,13 @@ fn spec(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
             let Some(cv) = s.value.as_deref() else {
                 continue;
             };
-            if cv.trim() != pv {
+            // RTCBuilder stores a widget with its step: `spin.` is `spin` with none.
+            let pv = if what == "widget" {
+                pv.trim_end_matches('.')
+            } else {
+                pv
+            };
+            if !same_value(cv, pv) {
                 acc.push(
                     kind,
                     format!("configurationSet/{name}/{what}"),

@@ -754,3 +754,91 @@ pub fn dataflow_rows(
     rows.sort_by_key(|r| std::cmp::Reverse(r.pairs));
     rows
 }
+
+/// The Implementation section of a component page ([`crate::implementation`]): the files
+/// read, the language, and "matches the specification" or the differences.
+#[derive(serde::Serialize, Clone)]
+pub struct ImplementationSection {
+    /// `C++ · matches the specification` / `C++ · 3 differences from the specification`.
+    pub summary: String,
+    pub matches: bool,
+    /// The files read: (shown path, link to it at the pinned commit).
+    pub files: Vec<ImplementationFile>,
+    pub rows: Vec<DriftRow>,
+    /// What could not be verified, in words.
+    pub unverified: Vec<String>,
+}
+
+#[derive(serde::Serialize, Clone)]
+pub struct ImplementationFile {
+    pub text: String,
+    pub href: Option<String>,
+}
+
+/// A difference: the element, what the profile says, what the code says, where (and the rule).
+#[derive(serde::Serialize, Clone)]
+pub struct DriftRow {
+    pub element: String,
+    pub profile: String,
+    pub code: String,
+    pub at: String,
+    pub rule: &'static str,
+}
+
+impl ImplementationSection {
+    /// The section of `c`, when its implementation was read; `file_url` links a file read.
+    pub fn of(
+        c: &crate::catalog::Component,
+        lang: Lang,
+        file_url: &dyn Fn(&str) -> Option<String>,
+    ) -> Option<ImplementationSection> {
+        let imp = c.implementation.as_deref()?;
+        let absent = lang.t("impl_absent");
+        let rows: Vec<DriftRow> = imp
+            .drift
+            .iter()
+            .map(|d| DriftRow {
+                element: d.element.clone(),
+                profile: d.profile.clone().unwrap_or_else(|| absent.to_string()),
+                code: d.code.clone().unwrap_or_else(|| absent.to_string()),
+                at: match &d.at {
+                    Some(a) => format!("{}:{}", a.file, a.pos.line),
+                    None => match d.profile_pos {
+                        Some(p) => format!("{}:{}", c.source, p.line),
+                        None => c.source.clone(),
+                    },
+                },
+                rule: d.kind.code(),
+            })
+            .collect();
+        let state = if rows.is_empty() {
+            lang.t("impl_matches").to_string()
+        } else {
+            lang.t("impl_differences")
+                .replace("{n}", &rows.len().to_string())
+        };
+        Some(ImplementationSection {
+            summary: format!("{} · {state}", imp.language.name()),
+            matches: rows.is_empty(),
+            files: imp
+                .files
+                .iter()
+                .map(|f| ImplementationFile {
+                    text: f.clone(),
+                    href: file_url(f),
+                })
+                .collect(),
+            rows,
+            unverified: imp
+                .unverified
+                .iter()
+                .map(|u| {
+                    format!(
+                        "{}: {} ({}:{})",
+                        u.what, u.construct, u.at.file, u.at.pos.line
+                    )
+                })
+                .collect(),
+        })
+    }
+}

@@ -646,6 +646,61 @@ fn environment_sections<M: Markup>(out: &mut String, v: &ComponentView<'_>, lang
             &rows,
         );
     }
+    if let Some(im) = &v.implementation {
+        implementation_section::<M>(out, page, im, lang);
+    }
+}
+
+/// The Implementation section: the language and state, the files read (linked at the pinned
+/// commit), the differences as a table, what could not be verified.
+fn implementation_section<M: Markup>(
+    out: &mut String,
+    page: &Page,
+    im: &crate::render::facts::ImplementationSection,
+    lang: Lang,
+) {
+    M::heading(out, page, 2, "sec-implementation", lang.t("implementation"));
+    M::paragraph(out, &M::esc(lang.t("impl_intro")));
+    M::paragraph(out, &M::bold(&M::esc(&im.summary)));
+    M::paragraph(out, &M::bold(&M::esc(lang.t("impl_files"))));
+    let files: Vec<String> = im
+        .files
+        .iter()
+        .map(|f| match &f.href {
+            Some(h) => M::link(&f.text, h),
+            None => M::esc(&f.text),
+        })
+        .collect();
+    M::linked_list(out, &files);
+    if !im.rows.is_empty() {
+        let rows: Vec<Vec<String>> = im
+            .rows
+            .iter()
+            .map(|r| {
+                vec![
+                    M::esc(&r.element),
+                    M::esc(&r.profile),
+                    M::esc(&r.code),
+                    M::esc(&format!("{} ({})", r.at, r.rule)),
+                ]
+            })
+            .collect();
+        M::table(
+            out,
+            &[
+                lang.t("impl_element"),
+                lang.t("impl_profile_says"),
+                lang.t("impl_code_says"),
+                lang.t("impl_where"),
+            ],
+            &rows,
+        );
+    }
+    if !im.unverified.is_empty() {
+        M::paragraph(out, &M::esc(lang.t("impl_unverified")));
+        let items: Vec<String> = im.unverified.iter().map(|u| M::esc(u)).collect();
+        M::linked_list(out, &items);
+    }
 }
 
 /// A name with its "since" note (the version that added it): `status (since 1.1.0)`.

@@ -1,4 +1,4 @@
-/* Index page filter: by text, category, vendor and source (with [[source]] repositories). The full list is in the HTML; this only
+/* Index page filter: by text, category, vendor, source (with [[source]] repositories) and implementation (code matches or differs). The full list is in the HTML; this only
    hides rows and empty category sections. The diagnostics page: by severity and code. What's new: by
    severity, source and category. */
 (function () {
@@ -51,6 +51,7 @@
   var cat = document.getElementById('f-category');
   var ven = document.getElementById('f-vendor');
   var src = document.getElementById('f-source');
+  var imp = document.getElementById('f-impl');
   form.addEventListener('submit', function (ev) { ev.preventDefault(); });
   var status = document.getElementById('filter-status');
   function apply() {
@@ -59,6 +60,7 @@
     var c = cat.value;
     var v = ven.value;
     var s = src ? src.value : '';
+    var m = imp ? imp.value : '';
     var total = 0, matched = 0;
     document.querySelectorAll('section.category').forEach(function (sec) {
       var shown = 0;
@@ -66,6 +68,7 @@
       sec.querySelectorAll('tbody tr').forEach(function (tr) {
         var ok = catOk && (!v || tr.getAttribute('data-vendor') === v) &&
           (!s || tr.getAttribute('data-source') === s) &&
+          (!m || (tr.getAttribute('data-impl') || 'none') === m) &&
           (!q || tr.textContent.normalize('NFKC').toLowerCase().indexOf(q) >= 0);
         tr.hidden = !ok;
         total++;
@@ -76,12 +79,12 @@
     });
     // How many rows the filter leaves, and a way on when it leaves none.
     if (status) {
-      var active = q || c || v || s;
+      var active = q || c || v || s || m;
       status.textContent = !active ? '' : matched ? status.getAttribute('data-count')
         .replace('{n}', matched).replace('{total}', total) : status.getAttribute('data-none');
     }
   }
-  [text, cat, ven, src].forEach(function (e) {
+  [text, cat, ven, src, imp].forEach(function (e) {
     if (!e) { return; }
     e.addEventListener('input', apply);
     e.addEventListener('change', apply);

@@ -257,6 +257,9 @@ pub struct ComponentSummary {
     pub data_ports: usize,
     pub service_ports: usize,
     pub configurations: usize,
+    /// Its implementation: `ok` (the code matches the profile), `drift`, or empty (no code
+    /// read); the index filters by it.
+    pub implementation: &'static str,
 }
 
 #[derive(Serialize)]
@@ -433,6 +436,8 @@ struct ComponentPage {
     systems: Vec<Link>,
     /// RTCBuilder's backups of the profile: older versions, not components.
     backups: Vec<facts::BackupRow>,
+    /// The Implementation section ([`facts::ImplementationSection`]).
+    implementation: Option<facts::ImplementationSection>,
     /// The neighbourhood drawing (empty when no component connects to this one).
     neighbourhood_svg: String,
     /// The neighbourhood as a list, by port.
@@ -572,6 +577,11 @@ impl<'a> Site<'a> {
             data_ports: c.profile.data_ports.len(),
             service_ports: c.profile.service_ports.len(),
             configurations: c.profile.configurations().len(),
+            implementation: match &c.implementation {
+                Some(i) if i.drift.is_empty() => "ok",
+                Some(_) => "drift",
+                None => "",
+            },
         }
     }
 
@@ -812,6 +822,7 @@ impl<'a> Site<'a> {
                 .filter_map(|l| self.link(page, l))
                 .collect(),
             backups: facts::BackupRow::of(&self.catalog[v.ci], lang),
+            implementation: v.implementation.clone(),
             history: v.history.rows.clone(),
             history_older: v.history.older_note(lang),
             history_page: v
@@ -1579,6 +1590,7 @@ fn index_job<'a>(site: &'a Site<'a>) -> Job<'a> {
             groups => ctx(&groups),
             vendors => ctx(&vendors),
             sources => v.sources,
+            implementations => catalog_has_implementations(site.catalog),
             full_list => full,
             component_count => v.components,
             type_count => counts.0,
@@ -1586,6 +1598,11 @@ fn index_job<'a>(site: &'a Site<'a>) -> Job<'a> {
             system_count => counts.2,
         }),
     }
+}
+
+/// Whether any component's code was read (the index then filters by it).
+fn catalog_has_implementations(cat: &Catalog) -> bool {
+    cat.components.iter().any(|c| c.implementation.is_some())
 }
 
 /// Every page except component pages: its path, template and context.

@@ -63,6 +63,32 @@ pub fn document_source_url(
     }
 }
 
+/// The link of a source file read beside a component's profile (`file` as shown, in the
+/// profile's folder below): as [`document_source_url`], the file's path in the repository
+/// being the profile's folder there joined with the file's place below the profile's folder.
+pub fn sibling_source_url(
+    sources: &[crate::model::SourceInfo],
+    origin: Option<&crate::model::Origin>,
+    profile: &str,
+    file: &str,
+    template: Option<&str>,
+) -> Option<String> {
+    match origin {
+        Some(o) => {
+            // `<name>/<path in the repository>`: the shown prefix is what the origin's path
+            // lacks.
+            let prefix = profile.strip_suffix(o.path.as_str())?;
+            let in_repo = file.strip_prefix(prefix)?;
+            let o = crate::model::Origin {
+                path: in_repo.to_string(),
+                ..o.clone()
+            };
+            document_source_url(sources, Some(&o), file, template)
+        }
+        None => template.and_then(|t| source_url(t, file)),
+    }
+}
+
 /// The link of a document's file as a commit of its history had it (`commit`, `path` in the
 /// repository), when the template (its source's, else `template`) has `{commit}`.
 pub fn history_file_url(

@@ -103,6 +103,8 @@ pub struct ComponentView<'a> {
     /// The Document Profile.
     pub document: Vec<Fact>,
     pub readme: Option<&'a Readme>,
+    /// The Implementation section: the code read and how it agrees with the profile.
+    pub implementation: Option<facts::ImplementationSection>,
     pub data_ports: Vec<DataPortView<'a>>,
     pub service_ports: Vec<ServicePortView<'a>>,
     pub configurations: Vec<ConfigurationView<'a>>,
@@ -390,6 +392,15 @@ pub fn component_view<'a>(
             .map(|d| facts::document(d, lang))
             .unwrap_or_default(),
         readme: c.readme.as_ref(),
+        implementation: facts::ImplementationSection::of(c, lang, &|f| {
+            crate::render::html::repo::sibling_source_url(
+                &cat.sources,
+                c.origin.as_ref(),
+                &c.source,
+                f,
+                source_url,
+            )
+        }),
         data_ports,
         service_ports,
         configurations,

@@ -534,6 +534,9 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     if !p.backups.is_empty() {
         o.toc_entry(true, "backups", "backups");
     }
+    if p.implementation.is_some() {
+        o.toc_entry(true, "implementation", "implementation");
+    }
     if !p.history.is_empty() {
         o.toc_entry(true, "change-history", "change_history");
     }
@@ -822,6 +825,9 @@ fn rest(o: &mut Out<'_>, p: &ComponentPage) {
         o.table_wrap_end();
         o.raw("</section>\n\n");
     }
+    if let Some(im) = &p.implementation {
+        implementation_section(o, im);
+    }
     history_section(o, p);
     let heads = ["extra_path", "extra_kind", "value"];
     o.table(("extra", "extra"), ("", &heads), &p.extras, |o, e| {
@@ -900,4 +906,57 @@ fn history_table(o: &mut Out<'_>, rows: &[HistoryRow], older: Option<&str>) {
         o.text(n);
         o.raw("</p>\n");
     }
+}
+
+/// The Implementation section of a component page (`component.html`'s `implementation`).
+fn implementation_section(o: &mut Out<'_>, im: &crate::render::facts::ImplementationSection) {
+    o.section_start("implementation", false, "implementation");
+    o.label_in("<p>", "impl_intro", "</p>\n");
+    o.raw(if im.matches {
+        "<p class=\"impl-state ok\"><strong>"
+    } else {
+        "<p class=\"impl-state drift\"><strong>"
+    });
+    o.text(&im.summary);
+    o.raw("</strong></p>\n");
+    o.label_in("<h3>", "impl_files", "</h3>\n");
+    o.raw("<ul class=\"links\">\n");
+    for f in &im.files {
+        o.raw("<li>");
+        o.code_link(f.href.as_deref(), &f.text);
+        o.raw("</li>\n");
+    }
+    o.raw("</ul>\n");
+    if !im.rows.is_empty() {
+        o.table_wrap(
+            "",
+            &[
+                "impl_element",
+                "impl_profile_says",
+                "impl_code_says",
+                "impl_where",
+            ],
+        );
+        for r in &im.rows {
+            o.key_row_start(&r.element);
+            o.cell("impl_profile_says", &r.profile, "");
+            o.cell("impl_code_says", &r.code, "");
+            o.td("impl_where");
+            o.code(&r.at);
+            o.raw(" (");
+            o.text(r.rule);
+            o.raw(")</td></tr>\n");
+        }
+        o.table_wrap_end();
+    }
+    if !im.unverified.is_empty() {
+        o.label_in("<p>", "impl_unverified", "</p>\n<ul>\n");
+        for u in &im.unverified {
+            o.raw("<li>");
+            o.text(u);
+            o.raw("</li>\n");
+        }
+        o.raw("</ul>\n");
+    }
+    o.raw("</section>\n\n");
 }
