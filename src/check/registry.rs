@@ -481,9 +481,9 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "subscription-type",
         summary: "a data port's subscriptionType is not flush, new or periodic",
-        explanation: "Known: flush, new, periodic; any case, comma-separated lists allowed (New,Periodic), empty = unspecified.",
+        explanation: "Known: flush, new, periodic; any case, comma-separated lists allowed (New,Periodic), empty = unspecified. An in-port (DataInPort, EventPort) may also say Any: it is what OpenRTM's in-ports report (an in-port has no publisher and takes a connection of every subscription type) and what RTSystemEditor saves. An out-port's publisher is flush, new or periodic, so Any on an out-port is reported.",
         spec: "2.3.9 (subscriptionType), OpenRTM glossary",
-        hint: "use flush, new or periodic",
+        hint: "use flush, new or periodic (or Any on an in-port)",
     },
     Rule {
         code: DEFAULT_TYPE,

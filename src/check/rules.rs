@@ -692,6 +692,9 @@ const INTERFACE_TYPES: &[&str] = &[
 ];
 const DATAFLOW_TYPES: &[&str] = &["push", "pull"];
 const SUBSCRIPTION_TYPES: &[&str] = &["flush", "new", "periodic"];
+/// An in-port's: OpenRTM's `InPortBase` reports `Any` (it has no publisher and takes a
+/// connection of every kind), and RTSystemEditor saves what the port reports.
+const IN_PORT_SUBSCRIPTION_TYPES: &[&str] = &["flush", "new", "periodic", "any"];
 
 /// The items of a comma-separated value that are not in `known` (compared without case and
 /// without a `_`/space difference).
@@ -770,15 +773,38 @@ fn known_values(p: &Profile, s: &mut Findings) {
             DATAFLOW_TYPES,
             d.attr_pos.or("dataflowType", d.pos),
         );
+        let in_port = matches!(
+            d.direction(),
+            Some(crate::model::PortDirection::In | crate::model::PortDirection::Event)
+        );
+        let at = d.attr_pos.or("subscriptionType", d.pos);
+        if !in_port && non_empty(&d.subscription_type).is_some_and(is_any) {
+            // `Any` is an in-port's word; an out-port's publisher is flush, new or periodic.
+            s.emit(
+                r::SUBSCRIPTION_TYPE,
+                at,
+                format!("subscriptionType of data port `{n}` is `Any`, which OpenRTM in-ports report; an out-port publishes flush, new or periodic: name those it supports (New,Periodic) or leave it empty"),
+            );
+            continue;
+        }
         check(
             s,
             r::SUBSCRIPTION_TYPE,
             &format_args!("subscriptionType of data port `{n}`:"),
             &d.subscription_type,
-            SUBSCRIPTION_TYPES,
-            d.attr_pos.or("subscriptionType", d.pos),
+            if in_port {
+                IN_PORT_SUBSCRIPTION_TYPES
+            } else {
+                SUBSCRIPTION_TYPES
+            },
+            at,
         );
     }
+}
+
+/// `Any` (any case), alone.
+fn is_any(v: &str) -> bool {
+    v.trim().eq_ignore_ascii_case("any")
 }
 
 /// RTC307: a configuration whose documentation names another parameter of the component as

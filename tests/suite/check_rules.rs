@@ -760,6 +760,53 @@ fn a_rate_of_zero_is_accepted_where_no_rate_drives_the_context() {
     }
 }
 
+/// `Any` is what OpenRTM's in-ports report and RTSystemEditor saves: accepted on an in-port
+/// (and an FSM event port); on an out-port, whose publisher is flush, new or periodic, it is
+/// still RTC212, as is an unknown value on an in-port.
+#[test]
+fn subscription_type_any_is_an_in_port_value() {
+    let bad = std::fs::read_to_string(fixture("RTC212-bad.xml")).expect("fixture");
+    let written = r#"rtc:portType="DataInPort" rtc:name="in" rtc:type="RTC::TimedLong" rtcExt:position="LEFT" rtc:subscriptionType="often""#;
+    assert!(bad.contains(written));
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (port_type, subscription, flagged) in [
+        ("DataInPort", "Any", false),
+        ("DataInPort", "any", false),
+        ("EventPort", "Any", false),
+        ("DataInPort", "New,Any", false),
+        ("DataInPort", "often", true),
+        ("DataOutPort", "Any", true),
+        ("DataOutPort", "New,Periodic", false),
+    ] {
+        let text = bad.replace(
+            written,
+            &written
+                .replace("DataInPort", port_type)
+                .replace("often", subscription),
+        );
+        let file = dir.path().join(format!("{port_type}-{subscription}.xml"));
+        std::fs::write(&file, text).expect("write");
+        let r = report(&file);
+        let found: Vec<&str> = r
+            .diagnostics
+            .iter()
+            .filter(|d| d.code == "RTC212")
+            .map(|d| d.message.as_str())
+            .collect();
+        assert_eq!(
+            !found.is_empty(),
+            flagged,
+            "{port_type} {subscription}: {found:?}"
+        );
+        if port_type == "DataOutPort" && flagged {
+            assert!(
+                found[0].contains("which OpenRTM in-ports report"),
+                "{found:?}"
+            );
+        }
+    }
+}
+
 /// A value that holds backticks is quoted whole: the finding's code spans (read as CommonMark
 /// reads them, as every output does) are the value, and the HTML report shows it as one piece
 /// of code (it showed `1`, then `5` as text, then code running on into the message).
