@@ -346,7 +346,7 @@ pub static RULES: &[Rule] = &[
         severity: Error,
         name: "execution-rate",
         summary: "executionRate is not a number greater than 0",
-        explanation: "executionRate is the frequency (Hz) of the periodic execution context, an xsd:double. A rate of 0 or below cannot drive a periodic execution context, and text that is not a number cannot be read at all. An externally triggered or event-driven context (executionType ExtTrig… or EventDriven…) runs at no rate, so 0 is accepted there; a negative rate is not.",
+        explanation: "executionRate is the frequency (Hz) of the periodic execution context, an xsd:double. A negative rate cannot drive a periodic execution context, and text that is not a number cannot be read at all: both are errors. A rate of 0 is only a warning: OpenRTM then takes the rate set at run time (rtc.conf `exec_cxt.periodic.rate`, else its default), which is how a suite whose rates are set per deployment writes its profiles. An externally triggered or event-driven context (executionType ExtTrig… or EventDriven…) runs at no rate, so 0 is accepted there without a finding; a negative rate is not.",
         spec: "2.3.2 (basic_info executionRate), 6.1",
         hint: "write the rate in Hz as a positive number, e.g. executionRate=\"1000.0\"",
     },

@@ -304,6 +304,9 @@ fn position(s: &mut Findings, v: &Option<crate::model::Text>, port: Option<&str>
     }
 }
 
+/// What to do about a rate of 0 on a periodic context (RTC103 as a warning).
+const ZERO_RATE_HINT: &str = "if rtc.conf sets `exec_cxt.periodic.rate`, nothing to do; otherwise write the rate in Hz, e.g. executionRate=\"1000.0\"";
+
 /// RTC103–RTC106: executionRate, maxInstances, dates, booleans.
 fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
@@ -317,6 +320,22 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
         });
         match value::parse_float(rate) {
             Some(f) if f > 0.0 || (driven && f == 0.0) => {}
+            Some(0.0) => {
+                // A suite that sets the rate at run time writes 0: not an error that fails
+                // `check` on every profile, a warning that says where the rate comes from.
+                s.emit(
+                    r::EXECUTION_RATE,
+                    at,
+                    format!(
+                        "executionRate {} is 0: the periodic execution context's rate is then set at run time (rtc.conf `exec_cxt.periodic.rate`, else OpenRTM's default)",
+                        Code(rate.trim())
+                    ),
+                );
+                if let Some(d) = s.out.last_mut() {
+                    d.severity = Severity::Warning;
+                    d.hint = Some(ZERO_RATE_HINT.to_string());
+                }
+            }
             Some(_) => s.emit(
                 r::EXECUTION_RATE,
                 at,
