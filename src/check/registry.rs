@@ -256,7 +256,7 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "idl-include-not-found",
         summary: "an #include names no IDL file that was read",
-        explanation: "An include is looked for relative to the including file, then in the IDL search path, then by file name among every IDL file read (authors often include absolute paths of their own machines): of several copies, the one nearest the including file, then the shallowest. When none matches, the macros and include guards of that file are unknown, and the types it defines stay unresolved. A `<file>` include that is not found (usually an ORB's own file such as <orb.idl>) is reported as an info only.",
+        explanation: "An include is looked for relative to the including file, then in the IDL search path, then by file name among every IDL file read (authors often include absolute paths of their own machines): of several copies, the one nearest the including file, then the shallowest. When none matches, the macros and include guards of that file are unknown, and the types it defines stay unresolved. A `<file>` include that is not found is a warning too (`<BasicDataType.idl>` is how labs include OpenRTM's types), except an ORB's own file (<orb.idl>, <corba.idl>, <ir.idl>, <TimeBase.idl>, <CosNaming.idl> and the like, or one in TAO's or omniORB's folders such as <tao/…>), which no project has among its IDL: that is an info only.",
         spec: "OMG IDL 3.5 §7.3 (#include)",
         hint: "add the directory holding the file with --idl-path (e.g. the OpenRTM installation's rtm/idl), or remove the include",
     },

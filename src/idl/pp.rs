@@ -61,6 +61,29 @@ pub(crate) fn file_name(path: &str) -> &str {
     path.rsplit(['/', '\\']).next().unwrap_or(path)
 }
 
+/// Whether a `<…>` include names a file an ORB's IDL compiler supplies itself (`<orb.idl>`,
+/// TAO's and omniORB's folders): no project has it among its IDL files, so its absence is
+/// only an info. Any other `<…>` include (`<BasicDataType.idl>`, as labs include OpenRTM's
+/// types) is a file the project's build finds on its include path, and its absence is a
+/// warning as a quoted include's is.
+fn orb_supplied(name: &str) -> bool {
+    const FILES: &[&str] = &[
+        "orb.idl",
+        "corba.idl",
+        "ir.idl",
+        "iop.idl",
+        "giop.idl",
+        "messaging.idl",
+        "pollable.idl",
+        "timebase.idl",
+        "cosnaming.idl",
+    ];
+    const FOLDERS: &[&str] = &["tao", "orbsvcs", "omniorb4", "omniorb", "omnidynamic"];
+    let lower = normalize(name).to_ascii_lowercase();
+    let first = lower.split('/').next().unwrap_or("");
+    FOLDERS.contains(&first) || FILES.contains(&file_name(&lower))
+}
+
 fn dir_of(path: &str) -> &str {
     match path.rfind(['/', '\\']) {
         Some(i) => &path[..i],
@@ -670,18 +693,16 @@ impl Pp<'_, '_> {
             });
         }
         let Some(target) = target else {
-            let d = if system {
-                Diagnostic::info(
-                    codes::INCLUDE,
-                    path,
-                    format!("included file <{name}> was not found among the IDL files read"),
-                )
+            let written = if system {
+                format!("<{name}>")
             } else {
-                Diagnostic::warning(
-                    codes::INCLUDE,
-                    path,
-                    format!("included file \"{name}\" was not found among the IDL files read"),
-                )
+                format!("\"{name}\"")
+            };
+            let message = format!("included file {written} was not found among the IDL files read");
+            let d = if system && orb_supplied(name) {
+                Diagnostic::info(codes::INCLUDE, path, message)
+            } else {
+                Diagnostic::warning(codes::INCLUDE, path, message)
             };
             self.src.report(d.at(pos).with_hint(
                 "add the directory holding it with --idl-path (e.g. the OpenRTM installation's rtm/idl)",

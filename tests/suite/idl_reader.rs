@@ -1135,3 +1135,25 @@ fn an_error_at_a_macro_name_says_the_preprocessor_replaced_it() {
         diags(&set)
     );
 }
+
+/// A `<…>` include that is not found is a warning like a quoted one: `<BasicDataType.idl>` is
+/// how labs include OpenRTM's data types, and without them its macros and guards are unknown
+/// (an info, shown only with --verbose, hid that). Only an ORB's own file (`<orb.idl>`, TAO's
+/// and omniORB's folders), which no project has among its IDL, stays an info.
+#[test]
+fn an_angle_include_not_found_is_a_warning_unless_the_orb_supplies_it() {
+    let set = one(
+        "idl/Lab.idl",
+        "#include <BasicDataType.idl>\n#include <rtm/idl/ExtendedDataTypes.idl>\n#include <orb.idl>\n#include <tao/TimeBase.pidl>\n#include <omniORB4/CORBA.idl>\nmodule Lab { struct S { long a; }; };\n",
+    );
+    assert_eq!(
+        diags(&set),
+        [
+            "idl/Lab.idl:1:1: warning[RTC022]: included file <BasicDataType.idl> was not found among the IDL files read",
+            "idl/Lab.idl:2:1: warning[RTC022]: included file <rtm/idl/ExtendedDataTypes.idl> was not found among the IDL files read",
+            "idl/Lab.idl:3:1: info[RTC022]: included file <orb.idl> was not found among the IDL files read",
+            "idl/Lab.idl:4:1: info[RTC022]: included file <tao/TimeBase.pidl> was not found among the IDL files read",
+            "idl/Lab.idl:5:1: info[RTC022]: included file <omniORB4/CORBA.idl> was not found among the IDL files read",
+        ]
+    );
+}
