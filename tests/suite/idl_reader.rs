@@ -1157,3 +1157,77 @@ fn an_angle_include_not_found_is_a_warning_unless_the_orb_supplies_it() {
         ]
     );
 }
+
+/// An include is looked for as a C preprocessor with the IDL path as its `-I` folders looks for
+/// it: in the including file's own folder, then its own tree (the input directory or its own
+/// `[[source]]`), then the IDL path. Another source's copy of the file is not on that include
+/// path: it is not used (it was, silently: `labB`'s `BasicDataType.idl` satisfied `labA`'s
+/// include), and the warning names it.
+#[test]
+fn an_include_is_not_taken_from_another_sources_tree() {
+    use rtcdoc::idl::Tree;
+    let main = "#include \"BasicDataType.idl\"\nmodule A { struct S { long a; }; };\n";
+    let basic =
+        "#ifndef BASIC\n#define BASIC\nmodule RTC { struct Time { long sec; }; };\n#endif\n";
+    let file = |path: &str, text: &str, tree: Tree| SourceFile::new(path, text).in_tree(tree);
+    let a = || Tree::Source("labA".into());
+    let b = || Tree::Source("labB".into());
+    let resolved = |set: &IdlSet| set.files[0].includes[0].resolved.clone();
+    // Only another source has the file: not resolved, and the warning names both files.
+    let set = read(vec![
+        file("labA/idl/Main.idl", main, a()),
+        file("labB/idl/BasicDataType.idl", basic, b()),
+    ]);
+    assert_eq!(resolved(&set), None);
+    let d = &set.diagnostics[0];
+    assert_eq!((d.code, d.file.as_str()), ("RTC022", "labA/idl/Main.idl"));
+    assert_eq!(
+        d.message,
+        "included file \"BasicDataType.idl\" was not found in the source `labA` or on the IDL path; the source `labB` has `labB/idl/BasicDataType.idl`, which is not used: the files of the source `labB` are not on the include path of the source `labA`"
+    );
+    assert!(
+        d.hint.as_deref().unwrap_or("").contains("--idl-path"),
+        "{d:?}"
+    );
+    assert_eq!(set.diagnostics.len(), 1, "{:?}", diags(&set));
+    // The IDL path is searched from every tree, by its folder or by file name.
+    let on_path = |search_path: Vec<String>| {
+        let opts = IdlOptions {
+            search_path,
+            ..IdlOptions::default()
+        };
+        idl::read(
+            &[
+                file("labA/idl/Main.idl", main, a()),
+                file("labB/idl/BasicDataType.idl", basic, b()),
+                file("idl/BasicDataType.idl", basic, Tree::SearchPath),
+            ],
+            &opts,
+        )
+    };
+    for search_path in [vec!["idl".to_string()], Vec::new()] {
+        let set = on_path(search_path);
+        assert_eq!(resolved(&set).as_deref(), Some("idl/BasicDataType.idl"));
+        assert!(set.diagnostics.is_empty(), "{:?}", diags(&set));
+    }
+    // The own source's copy comes before the IDL path's, wherever it is in the source.
+    let set = read(vec![
+        file("labA/idl/Main.idl", main, a()),
+        file("labA/vendor/rtm/BasicDataType.idl", basic, a()),
+        file("labB/idl/BasicDataType.idl", basic, b()),
+        file("idl/BasicDataType.idl", basic, Tree::SearchPath),
+    ]);
+    assert_eq!(
+        resolved(&set).as_deref(),
+        Some("labA/vendor/rtm/BasicDataType.idl")
+    );
+    // The input directory is a tree of its own too: a source's copy does not serve it.
+    let set = read(vec![
+        SourceFile::new("idl/Main.idl", main),
+        file("labB/idl/BasicDataType.idl", basic, b()),
+    ]);
+    assert_eq!(resolved(&set), None);
+    assert!(set.diagnostics[0]
+        .message
+        .contains("was not found in the input directory or on the IDL path; the source `labB` has `labB/idl/BasicDataType.idl`"));
+}
