@@ -6,8 +6,9 @@
 #   bash .ci/wheel.sh            # from anywhere; uses python3 (or $PYTHON)
 #
 # maturin itself comes from PyPI (current 1.x release) into a tools venv kept under the cargo
-# target directory, which is also the build's: the release build shares its dependencies with
-# any other `cargo build --release` (CARGO_TARGET_DIR, default `target`).
+# target directory, which is also the build's: the wheel's binary is built with Cargo.toml's
+# `dist` profile (fat LTO, one code unit; pyproject.toml's `profile = "dist"`), in
+# $CARGO_TARGET_DIR/dist (CARGO_TARGET_DIR, default `target`).
 # Exits non-zero, with a message saying what to do, on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,9 +60,9 @@ echo "== wheel: installing maturin from PyPI"
 maturin="$tools/bin/maturin"
 "$maturin" --version
 
-echo "== wheel: maturin build --release --locked"
+echo "== wheel: maturin build --profile dist --locked"
 start=$(date +%s)
-"$maturin" build --release --locked --out "$work/wheels" ||
+"$maturin" build --profile dist --locked --out "$work/wheels" ||
   fail "maturin build failed (see its output above)"
 seconds=$(($(date +%s) - start))
 

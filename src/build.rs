@@ -443,17 +443,37 @@ fn read_outcomes(
 
 /// Reads the IDL files found below the input and on the IDL path (each file once, in order).
 /// An unreadable file is a diagnostic of the set, like a syntax error.
+/// Each file knows its tree (the input, a source by the first folder of its name, the IDL path):
+/// an include is looked for in the including file's own tree and on the IDL path only.
 fn read_idl(found: &[(PathBuf, String)], opts: &LoadOptions) -> Result<crate::idl::IdlSet> {
-    let mut all: Vec<(PathBuf, String)> = found.to_vec();
+    use crate::idl::Tree;
+    let tree_of = |rel: &str| {
+        let first = rel.split('/').next().unwrap_or_default();
+        match opts.sources.iter().find(|p| p.source.name == first) {
+            Some(p) => Tree::Source(p.source.name.clone()),
+            None => Tree::Input,
+        }
+    };
+    let mut all: Vec<(PathBuf, String, Tree)> = found
+        .iter()
+        .map(|(path, rel)| (path.clone(), rel.clone(), tree_of(rel)))
+        .collect();
+    let mut search_path: Vec<String> = Vec::new();
     for dir in &opts.idl_path {
-        all.extend(
-            walk::idl_files(dir)
-                .with_context(|| format!("--idl-path `{}`: not a directory", dir.display()))?,
-        );
+        let files = walk::idl_files(dir)
+            .with_context(|| format!("--idl-path `{}`: not a directory", dir.display()))?;
+        for (path, rel) in files {
+            // Named `<folder>/…` (walk::idl_files): the folder is the search path's entry.
+            let folder = rel.split('/').next().unwrap_or_default().to_string();
+            if !search_path.contains(&folder) {
+                search_path.push(folder);
+            }
+            all.push((path, rel, Tree::SearchPath));
+        }
     }
     let read: Vec<std::result::Result<crate::idl::SourceFile, Diagnostic>> = all
         .par_iter()
-        .map(|(path, rel)| {
+        .map(|(path, rel, tree)| {
             use std::io::Read;
             let mut bytes = Vec::new();
             std::fs::File::open(path)
@@ -461,7 +481,7 @@ fn read_idl(found: &[(PathBuf, String)], opts: &LoadOptions) -> Result<crate::id
                     f.take(opts.limits.max_file_size.saturating_add(1))
                         .read_to_end(&mut bytes)
                 })
-                .map(|_| crate::idl::SourceFile::new(rel.clone(), bytes))
+                .map(|_| crate::idl::SourceFile::new(rel.clone(), bytes).in_tree(tree.clone()))
                 .map_err(|e| Diagnostic::io(rel, &e))
         })
         .collect();
@@ -476,6 +496,7 @@ fn read_idl(found: &[(PathBuf, String)], opts: &LoadOptions) -> Result<crate::id
     let idl_opts = crate::idl::IdlOptions {
         max_file_size: opts.limits.max_file_size,
         max_depth: opts.limits.max_depth,
+        search_path,
         ..Default::default()
     };
     let mut set = crate::idl::read(&sources, &idl_opts);

@@ -305,6 +305,9 @@ fn position(s: &mut Findings, v: &Option<crate::model::Text>, port: Option<&str>
     }
 }
 
+/// What to do about a rate of 0 on a periodic context (RTC103 as a warning).
+const ZERO_RATE_HINT: &str = "if rtc.conf sets `exec_cxt.periodic.rate`, nothing to do; otherwise write the rate in Hz, e.g. executionRate=\"1000.0\"";
+
 /// RTC103–RTC106: executionRate, maxInstances, dates, booleans.
 fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
     let b = &p.basic_info;
@@ -318,6 +321,22 @@ fn numbers_dates_booleans(p: &Profile, s: &mut Findings) {
         });
         match value::parse_float(rate) {
             Some(f) if f > 0.0 || (driven && f == 0.0) => {}
+            Some(0.0) => {
+                // A suite that sets the rate at run time writes 0: not an error that fails
+                // `check` on every profile, a warning that says where the rate comes from.
+                s.emit(
+                    r::EXECUTION_RATE,
+                    at,
+                    format!(
+                        "executionRate {} is 0: the periodic execution context's rate is then set at run time (rtc.conf `exec_cxt.periodic.rate`, else OpenRTM's default)",
+                        Code(rate.trim())
+                    ),
+                );
+                if let Some(d) = s.out.last_mut() {
+                    d.severity = Severity::Warning;
+                    d.hint = Some(ZERO_RATE_HINT.to_string());
+                }
+            }
             Some(_) => s.emit(
                 r::EXECUTION_RATE,
                 at,
@@ -693,6 +712,9 @@ const INTERFACE_TYPES: &[&str] = &[
 ];
 const DATAFLOW_TYPES: &[&str] = &["push", "pull"];
 const SUBSCRIPTION_TYPES: &[&str] = &["flush", "new", "periodic"];
+/// An in-port's: OpenRTM's `InPortBase` reports `Any` (it has no publisher and takes a
+/// connection of every kind), and RTSystemEditor saves what the port reports.
+const IN_PORT_SUBSCRIPTION_TYPES: &[&str] = &["flush", "new", "periodic", "any"];
 
 /// The items of a comma-separated value that are not in `known` (compared without case and
 /// without a `_`/space difference).
@@ -771,15 +793,38 @@ fn known_values(p: &Profile, s: &mut Findings) {
             DATAFLOW_TYPES,
             d.attr_pos.or("dataflowType", d.pos),
         );
+        let in_port = matches!(
+            d.direction(),
+            Some(crate::model::PortDirection::In | crate::model::PortDirection::Event)
+        );
+        let at = d.attr_pos.or("subscriptionType", d.pos);
+        if !in_port && non_empty(&d.subscription_type).is_some_and(is_any) {
+            // `Any` is an in-port's word; an out-port's publisher is flush, new or periodic.
+            s.emit(
+                r::SUBSCRIPTION_TYPE,
+                at,
+                format!("subscriptionType of data port `{n}` is `Any`, which OpenRTM in-ports report; an out-port publishes flush, new or periodic: name those it supports (New,Periodic) or leave it empty"),
+            );
+            continue;
+        }
         check(
             s,
             r::SUBSCRIPTION_TYPE,
             &format_args!("subscriptionType of data port `{n}`:"),
             &d.subscription_type,
-            SUBSCRIPTION_TYPES,
-            d.attr_pos.or("subscriptionType", d.pos),
+            if in_port {
+                IN_PORT_SUBSCRIPTION_TYPES
+            } else {
+                SUBSCRIPTION_TYPES
+            },
+            at,
         );
     }
+}
+
+/// `Any` (any case), alone.
+fn is_any(v: &str) -> bool {
+    v.trim().eq_ignore_ascii_case("any")
 }
 
 /// RTC307: a configuration whose documentation names another parameter of the component as

@@ -45,18 +45,52 @@ use crate::model::Pos;
 use std::collections::{HashMap, HashSet};
 
 /// One input file: the path shown to users (relative to the input or the IDL search path
-/// root, `/`-separated) and its bytes.
+/// root, `/`-separated), its bytes and the tree it belongs to.
 #[derive(Debug, Clone)]
 pub struct SourceFile {
     pub path: String,
     pub bytes: Vec<u8>,
+    pub tree: Tree,
 }
 
 impl SourceFile {
+    /// A file of the input directory ([`Tree::Input`]).
     pub fn new(path: impl Into<String>, bytes: impl Into<Vec<u8>>) -> Self {
         SourceFile {
             path: path.into(),
             bytes: bytes.into(),
+            tree: Tree::Input,
+        }
+    }
+
+    /// The same file, of `tree`.
+    pub fn in_tree(self, tree: Tree) -> Self {
+        SourceFile { tree, ..self }
+    }
+}
+
+/// The tree of files a file was read from. An include is looked for as a C preprocessor
+/// looks for it: in the including file's own tree (its folder first), then on the IDL search
+/// path; never in another tree. Each `[[source]]` is a repository built on its own, so
+/// another source's copy of a file is not what its build includes: it is named in the
+/// RTC022 warning instead of being used.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
+pub enum Tree {
+    /// The input directory (every file of a caller that names no trees).
+    #[default]
+    Input,
+    /// A `[[source]]` repository, by name.
+    Source(String),
+    /// A directory of the IDL search path (`--idl-path`, `idl-path`): searched from every tree.
+    SearchPath,
+}
+
+impl std::fmt::Display for Tree {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Tree::Input => f.write_str("the input directory"),
+            Tree::Source(name) => write!(f, "the source `{name}`"),
+            Tree::SearchPath => f.write_str("the IDL path"),
         }
     }
 }
@@ -67,7 +101,7 @@ pub struct IdlOptions {
     /// Macros defined before every file: `NAME` (defined as `1`) or `NAME=VALUE`.
     pub defines: Vec<String>,
     /// Directories (display-path prefixes of the given files, e.g. `idl` or
-    /// `openrtm/rtm/idl`) searched for an include after the including file's own directory.
+    /// `openrtm/rtm/idl`) searched for an include after the including file's own tree.
     pub search_path: Vec<String>,
     /// Largest file read, in bytes (default 16 MiB).
     pub max_file_size: u64,

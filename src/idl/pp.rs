@@ -12,7 +12,7 @@
 use super::decode::decode;
 use super::expr::{Eval, Value};
 use super::lex::{lex, lex_line, Tok, Token};
-use super::{codes, IdlOptions, SourceFile};
+use super::{codes, IdlOptions, SourceFile, Tree};
 use crate::diagnostic::Diagnostic;
 use crate::model::idl::{IdlInclude, IdlPragma};
 use crate::model::Pos;
@@ -30,7 +30,7 @@ pub(crate) struct Sources<'a> {
     pub files: &'a [SourceFile],
     pub opts: &'a IdlOptions,
     lexed: Vec<Option<Rc<Lexed>>>,
-    by_path: HashMap<String, usize>,
+    by_path: HashMap<String, Vec<usize>>,
     by_name: HashMap<String, Vec<usize>>,
     pub diagnostics: Vec<Diagnostic>,
     seen: HashSet<(String, Option<Pos>, &'static str, String)>,
@@ -61,6 +61,29 @@ pub(crate) fn file_name(path: &str) -> &str {
     path.rsplit(['/', '\\']).next().unwrap_or(path)
 }
 
+/// Whether a `<…>` include names a file an ORB's IDL compiler supplies itself (`<orb.idl>`,
+/// TAO's and omniORB's folders): no project has it among its IDL files, so its absence is
+/// only an info. Any other `<…>` include (`<BasicDataType.idl>`, as labs include OpenRTM's
+/// types) is a file the project's build finds on its include path, and its absence is a
+/// warning as a quoted include's is.
+fn orb_supplied(name: &str) -> bool {
+    const FILES: &[&str] = &[
+        "orb.idl",
+        "corba.idl",
+        "ir.idl",
+        "iop.idl",
+        "giop.idl",
+        "messaging.idl",
+        "pollable.idl",
+        "timebase.idl",
+        "cosnaming.idl",
+    ];
+    const FOLDERS: &[&str] = &["tao", "orbsvcs", "omniorb4", "omniorb", "omnidynamic"];
+    let lower = normalize(name).to_ascii_lowercase();
+    let first = lower.split('/').next().unwrap_or("");
+    FOLDERS.contains(&first) || FILES.contains(&file_name(&lower))
+}
+
 fn dir_of(path: &str) -> &str {
     match path.rfind(['/', '\\']) {
         Some(i) => &path[..i],
@@ -70,10 +93,10 @@ fn dir_of(path: &str) -> &str {
 
 impl<'a> Sources<'a> {
     pub fn new(files: &'a [SourceFile], opts: &'a IdlOptions) -> Self {
-        let mut by_path = HashMap::new();
+        let mut by_path: HashMap<String, Vec<usize>> = HashMap::new();
         let mut by_name: HashMap<String, Vec<usize>> = HashMap::new();
         for (i, f) in files.iter().enumerate() {
-            by_path.entry(normalize(&f.path)).or_insert(i);
+            by_path.entry(normalize(&f.path)).or_default().push(i);
             by_name
                 .entry(file_name(&f.path).to_ascii_lowercase())
                 .or_default()
@@ -165,26 +188,55 @@ impl<'a> Sources<'a> {
         l
     }
 
-    /// Resolves an include name written in file `from`: relative to that file, then through
-    /// the search path, then by file name among all files (the closest one by path, then the
-    /// shallowest, then the first in order), the last step case-insensitively.
-    pub fn resolve_include(&self, from: usize, name: &str) -> Option<usize> {
+    /// Resolves an include name written in file `from`, as a C preprocessor with the IDL
+    /// search path as its `-I` folders would, and leniently (profiles and IDL files name
+    /// their includes by paths of their authors' machines): relative to that file; then by
+    /// file name among the files of its own tree; then through the search path; then by file
+    /// name among the search path's files. A file of another tree (another `[[source]]`, or
+    /// the input directory for a source's file) is not on the including file's include path:
+    /// `Err(Some(i))` names the copy found there, `Err(None)` says there is none.
+    pub fn resolve_include(&self, from: usize, name: &str) -> Result<usize, Option<usize>> {
+        let tree = &self.files[from].tree;
+        let own = |i: &usize| self.files[*i].tree == *tree;
+        let searched = |i: &usize| self.files[*i].tree == Tree::SearchPath;
+        let at = |p: &str, ok: &dyn Fn(&usize) -> bool| {
+            self.by_path
+                .get(p)
+                .and_then(|v| v.iter().copied().find(|i| ok(i)))
+        };
         let base = dir_of(&self.files[from].path);
         let rel = if base.is_empty() {
             normalize(name)
         } else {
             normalize(&format!("{base}/{name}"))
         };
-        if let Some(&i) = self.by_path.get(&rel) {
-            return Some(i);
+        if let Some(i) = at(&rel, &|i| own(i) || searched(i)) {
+            return Ok(i);
+        }
+        let by_name = self.by_file_name(from, name);
+        if let Some(i) = by_name.iter().copied().find(own) {
+            return Ok(i);
         }
         for dir in &self.opts.search_path {
             let p = normalize(&format!("{dir}/{name}"));
-            if let Some(&i) = self.by_path.get(&p) {
-                return Some(i);
+            if let Some(i) = at(&p, &|i| own(i) || searched(i)) {
+                return Ok(i);
             }
         }
-        let cands = self.by_name.get(&file_name(name).to_ascii_lowercase())?;
+        if let Some(i) = by_name.iter().copied().find(searched) {
+            return Ok(i);
+        }
+        Err(by_name.first().copied())
+    }
+
+    /// The files named like `name` (case-insensitively; of those, the ones of the same case
+    /// when there are any), best first: the closest to `from` by path, then the shallowest (a
+    /// project's `idl/X.idl`, not its `idl/test/X.idl` or a vendored copy deeper down), then
+    /// the first in order. `from` itself is not one.
+    fn by_file_name(&self, from: usize, name: &str) -> Vec<usize> {
+        let Some(cands) = self.by_name.get(&file_name(name).to_ascii_lowercase()) else {
+            return Vec::new();
+        };
         let from_path = normalize(&self.files[from].path);
         let common = |i: usize| {
             let p = normalize(&self.files[i].path);
@@ -198,20 +250,20 @@ impl<'a> Sources<'a> {
             .copied()
             .filter(|&i| file_name(&self.files[i].path) == file_name(name))
             .collect();
-        let pool = if exact.is_empty() {
+        let mut pool = if exact.is_empty() {
             cands.clone()
         } else {
             exact
         };
-        // Equally close copies: the shallowest (a project's `idl/X.idl`, not its
-        // `idl/test/X.idl` or a vendored copy deeper down), then the first in order.
+        pool.retain(|&i| i != from);
         let depth = |i: usize| self.files[i].path.split(['/', '\\']).count();
-        pool.into_iter().filter(|&i| i != from).max_by(|&a, &b| {
-            common(a)
-                .cmp(&common(b))
-                .then(depth(b).cmp(&depth(a)))
-                .then(b.cmp(&a))
-        })
+        pool.sort_by(|&a, &b| {
+            common(b)
+                .cmp(&common(a))
+                .then(depth(a).cmp(&depth(b)))
+                .then(a.cmp(&b))
+        });
+        pool
     }
 }
 
@@ -631,6 +683,50 @@ impl Pp<'_, '_> {
         );
     }
 
+    /// RTC022 for an include of `name` in file `idx` (`path`) that is not found: a warning,
+    /// an info for an ORB's own `<…>` file; `elsewhere` is a file of that name in another tree,
+    /// named so that the copy a lenient search would have taken is not silent.
+    fn not_found(
+        &mut self,
+        idx: usize,
+        path: &str,
+        name: &str,
+        system: bool,
+        pos: Pos,
+        elsewhere: Option<usize>,
+    ) {
+        let written = if system {
+            format!("<{name}>")
+        } else {
+            format!("\"{name}\"")
+        };
+        let files = self.src.files;
+        let (message, hint) = match elsewhere {
+            None => (
+                format!("included file {written} was not found among the IDL files read"),
+                "add the directory holding it with --idl-path (e.g. the OpenRTM installation's rtm/idl)".to_string(),
+            ),
+            Some(other) => (
+                format!(
+                    "included file {written} was not found in {own} or on the IDL path; {other} has `{}`, which is not used: the files of {other} are not on the include path of {own}",
+                    files[other].path,
+                    own = files[idx].tree,
+                    other = files[other].tree,
+                ),
+                format!(
+                    "add the file to {}, or add the directory holding it with --idl-path (e.g. the OpenRTM installation's rtm/idl)",
+                    files[idx].tree
+                ),
+            ),
+        };
+        let d = if system && orb_supplied(name) {
+            Diagnostic::info(codes::INCLUDE, path, message)
+        } else {
+            Diagnostic::warning(codes::INCLUDE, path, message)
+        };
+        self.src.report(d.at(pos).with_hint(hint));
+    }
+
     fn include(&mut self, idx: usize, path: &str, raw: &str, pos: Pos, emit: bool) {
         let (name, system) = if let Some(r) = raw.strip_prefix('<') {
             match r.find('>') {
@@ -661,7 +757,7 @@ impl Pp<'_, '_> {
             self.includes.push(IdlInclude {
                 name: name.to_string(),
                 system,
-                resolved: target.map(|t| self.src.files[t].path.clone()),
+                resolved: target.ok().map(|t| self.src.files[t].path.clone()),
                 pos,
             });
             self.out.push(Token {
@@ -669,24 +765,12 @@ impl Pp<'_, '_> {
                 pos,
             });
         }
-        let Some(target) = target else {
-            let d = if system {
-                Diagnostic::info(
-                    codes::INCLUDE,
-                    path,
-                    format!("included file <{name}> was not found among the IDL files read"),
-                )
-            } else {
-                Diagnostic::warning(
-                    codes::INCLUDE,
-                    path,
-                    format!("included file \"{name}\" was not found among the IDL files read"),
-                )
-            };
-            self.src.report(d.at(pos).with_hint(
-                "add the directory holding it with --idl-path (e.g. the OpenRTM installation's rtm/idl)",
-            ));
-            return;
+        let target = match target {
+            Ok(t) => t,
+            Err(elsewhere) => {
+                self.not_found(idx, path, name, system, pos, elsewhere);
+                return;
+            }
         };
         if let Some(at) = self.stack.iter().position(|&f| f == target) {
             // A guarded file that is already open adds nothing: skip it quietly, as cpp would.

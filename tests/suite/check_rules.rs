@@ -747,30 +747,95 @@ fn a_failed_enumeration_names_the_allowed_values_once() {
 }
 
 /// executionRate 0 is what profiles write for a context that runs at no rate (externally
-/// triggered, event-driven): accepted there; a periodic context, or a negative rate, is still
-/// RTC103.
+/// triggered, event-driven): accepted there. On a periodic context it is what a suite writes
+/// when rtc.conf sets the rate at run time (`exec_cxt.periodic.rate`): a warning that says so,
+/// not an error that fails `check`. A negative rate or one that is not a number is an error.
 #[test]
 fn a_rate_of_zero_is_accepted_where_no_rate_drives_the_context() {
+    use rtcdoc::diagnostic::Severity::{Error, Warning};
     let bad = std::fs::read_to_string(fixture("RTC103-bad.xml")).expect("fixture");
-    assert!(bad.contains(r#"rtc:executionType="PeriodicExecutionContext" rtc:executionRate="0""#));
+    let written = r#"rtc:executionType="PeriodicExecutionContext" rtc:executionRate="-10.0""#;
+    assert!(bad.contains(written));
     let dir = tempfile::tempdir().expect("tempdir");
-    for (execution_type, rate, flagged) in [
-        ("PeriodicExecutionContext", "0", true),
-        ("ExtTrigExecutionContext", "0.0", false),
-        ("EventDrivenExecutionContext", "0", false),
-        ("ExtTrigExecutionContext", "-1", true),
-        ("ExtTrigExecutionContext", "fast", true),
-        ("ExtTrigExecutionContext", "100.0", false),
+    for (execution_type, rate, found) in [
+        ("PeriodicExecutionContext", "-10.0", Some(Error)),
+        ("PeriodicExecutionContext", "0", Some(Warning)),
+        ("PeriodicExecutionContext", "0.0", Some(Warning)),
+        ("PeriodicExecutionContext", "-0.0", Some(Warning)),
+        ("PeriodicExecutionContext", "fast", Some(Error)),
+        ("ExtTrigExecutionContext", "0.0", None),
+        ("EventDrivenExecutionContext", "0", None),
+        ("ExtTrigExecutionContext", "-1", Some(Error)),
+        ("ExtTrigExecutionContext", "fast", Some(Error)),
+        ("ExtTrigExecutionContext", "100.0", None),
     ] {
         let text = bad.replace(
-            r#"rtc:executionType="PeriodicExecutionContext" rtc:executionRate="0""#,
+            written,
             &format!(r#"rtc:executionType="{execution_type}" rtc:executionRate="{rate}""#),
         );
         let file = dir.path().join(format!("{execution_type}-{rate}.xml"));
         std::fs::write(&file, text).expect("write");
         let r = report(&file);
-        let found = r.diagnostics.iter().any(|d| d.code == "RTC103");
-        assert_eq!(found, flagged, "{execution_type} at {rate}");
+        let d = r.diagnostics.iter().find(|d| d.code == "RTC103");
+        assert_eq!(d.map(|d| d.severity), found, "{execution_type} at {rate}");
+        if found == Some(Warning) {
+            let d = d.expect("RTC103");
+            assert!(
+                d.message.contains("set at run time")
+                    && d.message.contains("exec_cxt.periodic.rate"),
+                "{}",
+                d.message
+            );
+            // A warning does not fail `check` (without --deny warnings).
+            assert!(!r.failed(false), "{execution_type} at {rate}");
+        }
+    }
+}
+
+/// `Any` is what OpenRTM's in-ports report and RTSystemEditor saves: accepted on an in-port
+/// (and an FSM event port); on an out-port, whose publisher is flush, new or periodic, it is
+/// still RTC212, as is an unknown value on an in-port.
+#[test]
+fn subscription_type_any_is_an_in_port_value() {
+    let bad = std::fs::read_to_string(fixture("RTC212-bad.xml")).expect("fixture");
+    let written = r#"rtc:portType="DataInPort" rtc:name="in" rtc:type="RTC::TimedLong" rtcExt:position="LEFT" rtc:subscriptionType="often""#;
+    assert!(bad.contains(written));
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (port_type, subscription, flagged) in [
+        ("DataInPort", "Any", false),
+        ("DataInPort", "any", false),
+        ("EventPort", "Any", false),
+        ("DataInPort", "New,Any", false),
+        ("DataInPort", "often", true),
+        ("DataOutPort", "Any", true),
+        ("DataOutPort", "New,Periodic", false),
+    ] {
+        let text = bad.replace(
+            written,
+            &written
+                .replace("DataInPort", port_type)
+                .replace("often", subscription),
+        );
+        let file = dir.path().join(format!("{port_type}-{subscription}.xml"));
+        std::fs::write(&file, text).expect("write");
+        let r = report(&file);
+        let found: Vec<&str> = r
+            .diagnostics
+            .iter()
+            .filter(|d| d.code == "RTC212")
+            .map(|d| d.message.as_str())
+            .collect();
+        assert_eq!(
+            !found.is_empty(),
+            flagged,
+            "{port_type} {subscription}: {found:?}"
+        );
+        if port_type == "DataOutPort" && flagged {
+            assert!(
+                found[0].contains("which OpenRTM in-ports report"),
+                "{found:?}"
+            );
+        }
     }
 }
 

@@ -1135,3 +1135,99 @@ fn an_error_at_a_macro_name_says_the_preprocessor_replaced_it() {
         diags(&set)
     );
 }
+
+/// A `<…>` include that is not found is a warning like a quoted one: `<BasicDataType.idl>` is
+/// how labs include OpenRTM's data types, and without them its macros and guards are unknown
+/// (an info, shown only with --verbose, hid that). Only an ORB's own file (`<orb.idl>`, TAO's
+/// and omniORB's folders), which no project has among its IDL, stays an info.
+#[test]
+fn an_angle_include_not_found_is_a_warning_unless_the_orb_supplies_it() {
+    let set = one(
+        "idl/Lab.idl",
+        "#include <BasicDataType.idl>\n#include <rtm/idl/ExtendedDataTypes.idl>\n#include <orb.idl>\n#include <tao/TimeBase.pidl>\n#include <omniORB4/CORBA.idl>\nmodule Lab { struct S { long a; }; };\n",
+    );
+    assert_eq!(
+        diags(&set),
+        [
+            "idl/Lab.idl:1:1: warning[RTC022]: included file <BasicDataType.idl> was not found among the IDL files read",
+            "idl/Lab.idl:2:1: warning[RTC022]: included file <rtm/idl/ExtendedDataTypes.idl> was not found among the IDL files read",
+            "idl/Lab.idl:3:1: info[RTC022]: included file <orb.idl> was not found among the IDL files read",
+            "idl/Lab.idl:4:1: info[RTC022]: included file <tao/TimeBase.pidl> was not found among the IDL files read",
+            "idl/Lab.idl:5:1: info[RTC022]: included file <omniORB4/CORBA.idl> was not found among the IDL files read",
+        ]
+    );
+}
+
+/// An include is looked for as a C preprocessor with the IDL path as its `-I` folders looks for
+/// it: in the including file's own folder, then its own tree (the input directory or its own
+/// `[[source]]`), then the IDL path. Another source's copy of the file is not on that include
+/// path: it is not used (it was, silently: `labB`'s `BasicDataType.idl` satisfied `labA`'s
+/// include), and the warning names it.
+#[test]
+fn an_include_is_not_taken_from_another_sources_tree() {
+    use rtcdoc::idl::Tree;
+    let main = "#include \"BasicDataType.idl\"\nmodule A { struct S { long a; }; };\n";
+    let basic =
+        "#ifndef BASIC\n#define BASIC\nmodule RTC { struct Time { long sec; }; };\n#endif\n";
+    let file = |path: &str, text: &str, tree: Tree| SourceFile::new(path, text).in_tree(tree);
+    let a = || Tree::Source("labA".into());
+    let b = || Tree::Source("labB".into());
+    let resolved = |set: &IdlSet| set.files[0].includes[0].resolved.clone();
+    // Only another source has the file: not resolved, and the warning names both files.
+    let set = read(vec![
+        file("labA/idl/Main.idl", main, a()),
+        file("labB/idl/BasicDataType.idl", basic, b()),
+    ]);
+    assert_eq!(resolved(&set), None);
+    let d = &set.diagnostics[0];
+    assert_eq!((d.code, d.file.as_str()), ("RTC022", "labA/idl/Main.idl"));
+    assert_eq!(
+        d.message,
+        "included file \"BasicDataType.idl\" was not found in the source `labA` or on the IDL path; the source `labB` has `labB/idl/BasicDataType.idl`, which is not used: the files of the source `labB` are not on the include path of the source `labA`"
+    );
+    assert!(
+        d.hint.as_deref().unwrap_or("").contains("--idl-path"),
+        "{d:?}"
+    );
+    assert_eq!(set.diagnostics.len(), 1, "{:?}", diags(&set));
+    // The IDL path is searched from every tree, by its folder or by file name.
+    let on_path = |search_path: Vec<String>| {
+        let opts = IdlOptions {
+            search_path,
+            ..IdlOptions::default()
+        };
+        idl::read(
+            &[
+                file("labA/idl/Main.idl", main, a()),
+                file("labB/idl/BasicDataType.idl", basic, b()),
+                file("idl/BasicDataType.idl", basic, Tree::SearchPath),
+            ],
+            &opts,
+        )
+    };
+    for search_path in [vec!["idl".to_string()], Vec::new()] {
+        let set = on_path(search_path);
+        assert_eq!(resolved(&set).as_deref(), Some("idl/BasicDataType.idl"));
+        assert!(set.diagnostics.is_empty(), "{:?}", diags(&set));
+    }
+    // The own source's copy comes before the IDL path's, wherever it is in the source.
+    let set = read(vec![
+        file("labA/idl/Main.idl", main, a()),
+        file("labA/vendor/rtm/BasicDataType.idl", basic, a()),
+        file("labB/idl/BasicDataType.idl", basic, b()),
+        file("idl/BasicDataType.idl", basic, Tree::SearchPath),
+    ]);
+    assert_eq!(
+        resolved(&set).as_deref(),
+        Some("labA/vendor/rtm/BasicDataType.idl")
+    );
+    // The input directory is a tree of its own too: a source's copy does not serve it.
+    let set = read(vec![
+        SourceFile::new("idl/Main.idl", main),
+        file("labB/idl/BasicDataType.idl", basic, b()),
+    ]);
+    assert_eq!(resolved(&set), None);
+    assert!(set.diagnostics[0]
+        .message
+        .contains("was not found in the input directory or on the IDL path; the source `labB` has `labB/idl/BasicDataType.idl`"));
+}

@@ -970,3 +970,68 @@ fn a_source_path_the_commit_lacks_writes_no_lock() {
         assert_eq!(p.lock(), good, "{args:?} wrote the lock");
     }
 }
+
+/// A quoted include is looked for in the including file's folder and its own source, then on
+/// the IDL path, as the source's own build (a C preprocessor with `-I` folders) looks for it:
+/// another source's copy of `BasicDataType.idl` is not on that path. It satisfied the include
+/// silently; now the include is not resolved and the warning names both files.
+#[test]
+fn an_include_is_not_satisfied_by_another_sources_copy() {
+    let p = Project::new();
+    let basic = "#ifndef BASIC_IDL\n#define BASIC_IDL\nmodule RTC { struct Time { long sec; }; };\n#endif\n";
+    let lab_a = p.root.join("labA");
+    commit(
+        &lab_a,
+        &[
+            ("Cam/RTC.xml", xml_profile("Cam", &[])),
+            (
+                "Cam/idl/Cam.idl",
+                "#include \"BasicDataType.idl\"\nmodule Cam { struct Frame { RTC::Time tm; }; };\n"
+                    .to_string(),
+            ),
+        ],
+        None,
+    );
+    let lab_b = p.root.join("labB");
+    commit(
+        &lab_b,
+        &[
+            ("Arm/RTC.xml", xml_profile("Arm", &[])),
+            ("Arm/idl/BasicDataType.idl", basic.to_string()),
+        ],
+        None,
+    );
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\n\n[[source]]\ngit = \"{}\"\n",
+        url(&lab_a),
+        url(&lab_b)
+    ));
+    let includes = |extra: &[&str]| -> Vec<serde_json::Value> {
+        let mut args = vec!["check", "--format", "json", "--cache-dir", &p.cache];
+        args.extend(extra);
+        let o = rtcdoc(&args, &p.proj);
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout)
+            .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&o.stderr)));
+        json["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .filter(|d| d["code"] == "RTC022")
+            .cloned()
+            .collect()
+    };
+    let found = includes(&[]);
+    assert_eq!(found.len(), 1, "{found:#?}");
+    assert_eq!(found[0]["file"], "labA/Cam/idl/Cam.idl");
+    assert_eq!(found[0]["severity"], "warning");
+    let message = found[0]["message"].as_str().unwrap_or_default();
+    assert!(
+        message.contains("not found in the source `labA` or on the IDL path; the source `labB` has `labB/Arm/idl/BasicDataType.idl`, which is not used"),
+        "{message}"
+    );
+    // OpenRTM's IDL on the IDL path satisfies it, for every source.
+    write(&p.root, "openrtm/idl/BasicDataType.idl", basic);
+    let idl_path = p.root.join("openrtm/idl").display().to_string();
+    let found = includes(&["--idl-path", &idl_path]);
+    assert!(found.is_empty(), "{found:#?}");
+}
