@@ -205,15 +205,16 @@ pub fn compare(profile: &Profile, imp: &Implementation) -> Vec<Drift> {
 }
 
 /// Pairs profile names with code names: exact first, then equal but for case.
-fn pair<'p, 'c>(
-    profile: &[&'p str],
-    code: &[&'c str],
-) -> (
+/// Profile and code names paired: exact pairs, pairs equal but for case, the profile's
+/// unpaired, the code's unpaired.
+type Pairing = (
     Vec<(usize, usize)>,
     Vec<(usize, usize)>,
     Vec<usize>,
     Vec<usize>,
-) {
+);
+
+fn pair(profile: &[&str], code: &[&str]) -> Pairing {
     let mut exact = Vec::new();
     let mut case = Vec::new();
     let mut used_c = vec![false; code.len()];

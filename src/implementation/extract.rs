@@ -43,6 +43,19 @@ pub const CALLBACKS: &[&str] = &[
     "onModeChanged",
 ];
 
+/// A `registerProvider` / `registerConsumer` call: (port variable, instance name, type name,
+/// direction, where, the call as written).
+pub type InterfaceReg = (
+    String,
+    Option<String>,
+    Option<String>,
+    Direction,
+    At,
+    String,
+);
+/// A `bindParameter` call: (name, variable, default, where, the call as written).
+pub type ParamReg = (Option<String>, String, Option<String>, At, String);
+
 /// What one file gives, before the files of a component are joined.
 #[derive(Default)]
 pub struct FileFacts {
@@ -56,17 +69,10 @@ pub struct FileFacts {
     /// `CorbaPort("x")`)
     pub ctor_name: BTreeMap<String, String>,
     /// (port variable, instance name, type name, direction, where, construct)
-    pub iface_regs: Vec<(
-        String,
-        Option<String>,
-        Option<String>,
-        Direction,
-        At,
-        String,
-    )>,
+    pub iface_regs: Vec<InterfaceReg>,
     pub added_ports: Vec<String>,
     /// (name, variable, default, where, construct)
-    pub param_regs: Vec<(Option<String>, String, Option<String>, At, String)>,
+    pub param_regs: Vec<ParamReg>,
     /// variable → declared type
     pub var_types: BTreeMap<String, String>,
     /// Python: `self.X = …` right-hand sides, as (callee dotted name, first argument text,

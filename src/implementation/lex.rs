@@ -17,9 +17,20 @@ use crate::model::Pos;
 
 /// The languages an implementation is read in.
 #[derive(
-    Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize, serde::Deserialize,
+    Debug,
+    Clone,
+    Copy,
+    Default,
+    PartialEq,
+    Eq,
+    PartialOrd,
+    Ord,
+    Hash,
+    serde::Serialize,
+    serde::Deserialize,
 )]
 pub enum Language {
+    #[default]
     #[serde(rename = "C++")]
     Cpp,
     Python,
@@ -320,11 +331,9 @@ impl Lexer<'_> {
                         let sep = d == b'\''
                             && self.lang == Language::Cpp
                             && self.peek(1).is_ascii_alphanumeric();
-                        if d.is_ascii_alphanumeric() || d == b'.' || d == b'_' || sep {
-                            self.i += 1;
-                        } else if (d == b'+' || d == b'-')
-                            && matches!(self.b[self.i - 1], b'e' | b'E')
-                        {
+                        let exponent =
+                            (d == b'+' || d == b'-') && matches!(self.b[self.i - 1], b'e' | b'E');
+                        if d.is_ascii_alphanumeric() || d == b'.' || d == b'_' || sep || exponent {
                             self.i += 1;
                         } else {
                             break;

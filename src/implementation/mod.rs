@@ -159,12 +159,6 @@ pub struct Implementation {
     pub drift: Vec<drift::Drift>,
 }
 
-impl Default for Language {
-    fn default() -> Self {
-        Language::Cpp
-    }
-}
-
 impl Implementation {
     /// The spec array's value of `key`, when it is a literal.
     pub fn spec_value(&self, key: &str) -> Option<&SpecValue> {

@@ -41,7 +41,7 @@ fn a_hand_edited_python_component_drifts() {
     let f = findings(&fixture("python-edited"));
     let mut c: Vec<&str> = f.iter().map(|f| f.0.as_str()).collect();
     c.sort();
-    // The in-port renamed in the code only (ir_sensor → distance_sensor), STATIC in the spec
+    // The in-port renamed in the code only (ir_sensor → distance_sensor), SPORADIC in the spec
     // array, onActivated written where the profile says not implemented.
     assert_eq!(c, ["RTC801", "RTC802", "RTC807", "RTC809"], "{f:#?}");
     assert!(f.iter().any(|x| x.0 == "RTC802"
@@ -50,7 +50,9 @@ fn a_hand_edited_python_component_drifts() {
     assert!(f
         .iter()
         .any(|x| x.0 == "RTC801" && x.1.ends_with("RTC.xml") && x.2.contains("ir_sensor")));
-    assert!(f.iter().any(|x| x.0 == "RTC809" && x.2.contains("STATIC")));
+    assert!(f
+        .iter()
+        .any(|x| x.0 == "RTC809" && x.2.contains("SPORADIC")));
     // The commented-out `#def onFinalize` is no callback.
     assert!(!f.iter().any(|x| x.2.contains("onFinalize")));
 }
