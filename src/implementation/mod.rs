@@ -390,7 +390,7 @@ pub fn read(
 
 fn unreadable(file: &str, message: String, pos: Option<Pos>) -> Diagnostic {
     let d = Diagnostic::info(codes::UNREADABLE, file, message).with_hint(
-        "nothing to change if the file is generated or vendored; else split it, or name the component's own files in rtcdoc.toml ([implementation] files)",
+        "nothing to change if the file is generated or vendored; else split it, or name the component's own files in rtcdoc.toml ([[implementation.component]] files)",
     );
     match pos {
         Some(p) => d.at(p),
