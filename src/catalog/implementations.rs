@@ -21,7 +21,7 @@ impl Default for Settings {
     fn default() -> Self {
         Settings {
             enabled: true,
-            max_file_size: 16 * 1024 * 1024,
+            max_file_size: crate::parse::Limits::default().max_file_size,
             files: Vec::new(),
         }
     }

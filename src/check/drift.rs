@@ -25,12 +25,10 @@ pub(crate) fn findings(c: &Component) -> Vec<Diagnostic> {
             .with_hint("nothing to change: what the code builds at run time is not compared with the profile; keep the profile's elements in step with it by hand"),
         );
     }
-    let registers =
-        !(imp.data_ports.is_empty() && imp.service_ports.is_empty() && imp.parameters.is_empty());
     let p = &c.profile;
     let declares =
         !(p.data_ports.is_empty() && p.service_ports.is_empty() && p.configurations().is_empty());
-    if !registers && declares && imp.unverified.is_empty() {
+    if imp.registers_nothing() && declares && imp.unverified.is_empty() {
         let file = imp.files.first().map_or(c.source.as_str(), String::as_str);
         let base = imp
             .class

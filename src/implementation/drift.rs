@@ -170,35 +170,12 @@ fn text(s: &Option<crate::model::Text>) -> Option<&str> {
 /// Compares `imp` with `profile`.
 pub fn compare(profile: &Profile, imp: &Implementation) -> Vec<Drift> {
     let mut acc = Acc { out: Vec::new() };
-    let unverified = |what: &str| {
-        imp.unverified
-            .iter()
-            .any(|u| u.what.contains(what) || u.what.contains("macro"))
-    };
-    // Nothing registered at all (another file, a base class, a generator of its own): only the
-    // spec array and the callbacks are compared, and the page says what could not be verified.
-    let registers =
-        !(imp.data_ports.is_empty() && imp.service_ports.is_empty() && imp.parameters.is_empty());
-    data_ports(
-        profile,
-        imp,
-        &mut acc,
-        // A kind the code registers nothing of (ports made by helper objects or a base
-        // class) is not reported missing either.
-        registers && !imp.data_ports.is_empty() && !unverified("data port"),
-    );
-    service_ports(
-        profile,
-        imp,
-        &mut acc,
-        registers && !imp.service_ports.is_empty() && !unverified("service"),
-    );
-    parameters(
-        profile,
-        imp,
-        &mut acc,
-        registers && !imp.parameters.is_empty() && !unverified("configuration"),
-    );
+    // A kind the code registers nothing of (ports made by helper objects, a base class, another
+    // file), or some of through a name or macro that cannot be read, is not reported missing.
+    use super::Unread;
+    data_ports(profile, imp, &mut acc, imp.reads_all(Unread::DataPort));
+    service_ports(profile, imp, &mut acc, imp.reads_all(Unread::ServicePort));
+    parameters(profile, imp, &mut acc, imp.reads_all(Unread::Parameter));
     callbacks(profile, imp, &mut acc);
     spec(profile, imp, &mut acc);
     acc.out

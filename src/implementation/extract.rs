@@ -70,7 +70,6 @@ pub struct FileFacts {
     pub ctor_name: BTreeMap<String, String>,
     /// (port variable, instance name, type name, direction, where, construct)
     pub iface_regs: Vec<InterfaceReg>,
-    pub added_ports: Vec<String>,
     /// (name, variable, default, where, construct)
     pub param_regs: Vec<ParamReg>,
     /// variable → declared type
@@ -149,11 +148,6 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
                 let ty = args.get(1).and_then(|&a| t.literal(a));
                 f.iface_regs
                     .push((port, t.literal(args[0]), ty, dir, at(i), call_text(t, i)));
-            }
-        }
-        "addPort" if call && !definition => {
-            if let Some(v) = t.args(i + 1).first().and_then(|&a| last_ident(t, a)) {
-                f.added_ports.push(v);
             }
         }
         "bindParameter" if call && !definition => {
@@ -570,7 +564,6 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
     let mut port_regs = Vec::new();
     let mut iface_regs = Vec::new();
     let mut param_regs = Vec::new();
-    let mut added = Vec::new();
     for f in facts {
         if imp.spec.is_empty() {
             if let Some(s) = f.spec {
@@ -588,7 +581,6 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         port_regs.extend(f.port_regs);
         iface_regs.extend(f.iface_regs);
         param_regs.extend(f.param_regs);
-        added.extend(f.added_ports);
         for cb in f.callbacks {
             // A header's inline stub and the .cpp definition: the definition with a body wins.
             match imp
@@ -612,6 +604,7 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             .extend(f.macros.into_iter().map(|(m, at)| Unverified {
                 construct: m,
                 what: "registrations inside a macro".into(),
+                of: super::Unread::Any,
                 at,
             }));
     }
@@ -640,6 +633,7 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             None => imp.unverified.push(Unverified {
                 construct,
                 what: "a data port whose name is not a literal".into(),
+                of: super::Unread::DataPort,
                 at,
             }),
         }
@@ -649,6 +643,7 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             imp.unverified.push(Unverified {
                 construct,
                 what: "a service interface whose name is not a literal".into(),
+                of: super::Unread::ServicePort,
                 at,
             });
             continue;
@@ -661,6 +656,7 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
                     imp.unverified.push(Unverified {
                         construct: port.clone(),
                         what: "a service port whose name is not given by a literal".into(),
+                        of: super::Unread::ServicePort,
                         at: at.clone(),
                     });
                 }
@@ -693,16 +689,17 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             None => imp.unverified.push(Unverified {
                 construct,
                 what: "a configuration parameter whose name is not a literal".into(),
+                of: super::Unread::Parameter,
                 at,
             }),
         }
     }
-    let _ = added;
     for s in &imp.spec {
         if let Some(u) = &s.unresolved {
             imp.unverified.push(Unverified {
                 construct: u.clone(),
                 what: format!("the spec array's value of `{}`", s.key),
+                of: super::Unread::SpecValue,
                 at: s.at.clone(),
             });
         }

@@ -124,12 +124,27 @@ pub struct CodeClass {
     pub at: At,
 }
 
+/// What an [`Unverified`] construct could have registered: the kinds of element nothing is
+/// reported missing from the code of once one of them could not be read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub enum Unread {
+    DataPort,
+    ServicePort,
+    Parameter,
+    /// A macro: any kind.
+    Any,
+    /// A spec array value (no element kind).
+    SpecValue,
+}
+
 /// A construct a static reading cannot verify (a name built at run time, a macro).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Unverified {
     pub construct: String,
     pub what: String,
+    pub of: Unread,
     pub at: At,
 }
 
@@ -160,6 +175,28 @@ pub struct Implementation {
 }
 
 impl Implementation {
+    /// Whether the code read registers no port and no parameter at all (a base class, a
+    /// library or another file does).
+    pub fn registers_nothing(&self) -> bool {
+        self.data_ports.is_empty() && self.service_ports.is_empty() && self.parameters.is_empty()
+    }
+
+    /// Whether every registration of `kind` was read, so that what the code lacks of it can
+    /// be reported: the code registers some of it, and none through a name that is not a
+    /// literal or a macro.
+    pub fn reads_all(&self, kind: Unread) -> bool {
+        let some = match kind {
+            Unread::DataPort => !self.data_ports.is_empty(),
+            Unread::ServicePort => !self.service_ports.is_empty(),
+            Unread::Parameter => !self.parameters.is_empty(),
+            Unread::Any | Unread::SpecValue => true,
+        };
+        some && !self
+            .unverified
+            .iter()
+            .any(|u| u.of == kind || u.of == Unread::Any)
+    }
+
     /// The spec array's value of `key`, when it is a literal.
     pub fn spec_value(&self, key: &str) -> Option<&SpecValue> {
         self.spec.iter().find(|s| s.key == key)
