@@ -156,6 +156,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         found.files.append(&mut from_sources.files);
         found.idl.append(&mut from_sources.idl);
         found.idl.sort_by(|a, b| a.1.cmp(&b.1));
+        found.code.append(&mut from_sources.code);
         found.skipped.append(&mut from_sources.skipped);
         found.readme_dirs.append(&mut from_sources.readme_dirs);
         source_notes = m.notes;
@@ -253,7 +254,20 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         }
     }
     let idl = idl?;
+    let implementation = crate::catalog::implementations::Settings {
+        max_file_size: opts.limits.max_file_size,
+        // A profile named on the command line is checked alone, as written.
+        enabled: opts.implementation.enabled && !named,
+        ..opts.implementation.clone()
+    };
+    // Components with code and no profile, documented from their code.
+    let (recovered_profiles, recovered, recover_diags) =
+        crate::catalog::implementations::recover(&profiles, &found.code, &implementation);
+    let recovered_any = !recovered_profiles.is_empty();
+    profiles.extend(recovered_profiles);
+    diagnostics.extend(recover_diags);
     if files == 0
+        && !recovered_any
         && systems.is_empty()
         && failed_systems.is_empty()
         && found.idl.is_empty()
@@ -301,12 +315,8 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         backups,
         // A file named on the command line: the walk listed no folder.
         readme_dirs: (!named).then_some(found.readme_dirs),
-        implementation: crate::catalog::implementations::Settings {
-            max_file_size: opts.limits.max_file_size,
-            // A profile named on the command line is checked alone, as written.
-            enabled: opts.implementation.enabled && !named,
-            ..opts.implementation.clone()
-        },
+        implementation,
+        recovered,
     };
     let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();

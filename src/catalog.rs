@@ -73,6 +73,10 @@ pub struct Component {
     /// ([`crate::implementation`]); `None`: no source file found, or the check is off.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub implementation: Option<Box<crate::implementation::Implementation>>,
+    /// Set when the component has no profile: it is documented from its code
+    /// ([`crate::implementation::recover`]), and this names what the code does not say.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub recovered: Option<Box<crate::implementation::recover::Recovered>>,
     /// RTCBuilder's backups of this profile (`RTC.xml<timestamp>` beside it), oldest first:
     /// older versions of it, not components ([`backups`]).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -1345,6 +1349,9 @@ pub struct Documents {
     pub readme_dirs: Option<std::collections::BTreeSet<String>>,
     /// Whether and how each component's implementation is read ([`crate::implementation`]).
     pub implementation: implementations::Settings,
+    /// The components found in code alone ([`crate::implementation::recover::find_all`]),
+    /// by source; their profiles are among `profiles`.
+    pub recovered: BTreeMap<String, implementations::Recovery>,
 }
 
 impl Catalog {
@@ -1364,6 +1371,7 @@ impl Catalog {
         catalog.index();
         catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
         catalog.attach_readmes(root, excluded, docs.readme_dirs.as_ref());
+        catalog.attach_recovered(docs.recovered);
         catalog.attach_implementations(root, excluded, &docs.implementation);
         catalog.attach_sources(root.sources.clone());
         catalog
@@ -1468,6 +1476,7 @@ impl Catalog {
                 qualifier,
                 readme: None,
                 implementation: None,
+                recovered: None,
                 backups: Vec::new(),
                 history: Vec::new(),
                 since: BTreeMap::new(),

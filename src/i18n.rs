@@ -376,12 +376,33 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("impl_filter_none", "no code read", "コードなし"),
     ("impl_filter_ok", "matches the profile", "プロファイルと一致"),
     (
+        "impl_filter_recovered",
+        "no profile: recovered from the code",
+        "プロファイルなし（コードから復元）",
+    ),
+    (
         "impl_intro",
         "What the component's code registers, read from the files beside its profile and compared with it.",
         "プロファイルの横にあるソースコードが登録しているもの（ポート・パラメータ・コールバック・spec 配列）を読み、プロファイルと比べた結果です。",
     ),
     ("impl_matches", "matches the specification", "仕様と一致"),
     ("impl_profile_says", "Profile says", "プロファイル"),
+    ("impl_recovered", "recovered from the source", "ソースコードから復元"),
+    (
+        "impl_recovered_intro",
+        "This component has no profile (RTC.xml): it is documented from its code — the spec array, the ports, service ports and parameters it registers, the callbacks it implements. The command rtcdoc extract writes the RTC.xml this describes.",
+        "このコンポーネントにはプロファイル（RTC.xml）がありません。コード（spec 配列、登録しているポート・サービスポート・パラメータ、実装しているコールバック）から文書化しています。rtcdoc extract コマンドでこの内容の RTC.xml を書き出せます。",
+    ),
+    (
+        "impl_recovered_note",
+        "No profile: documented from the source code",
+        "プロファイルなし: ソースコードから文書化",
+    ),
+    (
+        "impl_unread",
+        "Not read from the code (left empty, not guessed):",
+        "コードから読み取れなかった値（推測せず空のまま）:",
+    ),
     (
         "impl_unverified",
         "Could not be verified (built at run time, a macro, a base class):",

@@ -293,10 +293,14 @@ impl Workspace {
         // link to components and are listed on their pages; they are few).
         // A README or an image one shows: the same (READMEs are read for every folder).
         // An RTCBuilder backup: the same (a save in RTCBuilder writes one beside the profile).
-        if changed
-            .iter()
-            .any(|p| self.is_system_file(p) || self.is_readme_file(p) || walk::is_backup(p))
-        {
+        if changed.iter().any(|p| {
+            self.is_system_file(p)
+                    || self.is_readme_file(p)
+                    || walk::is_backup(p)
+                    // Source code: the implementations, and the components recovered from it.
+                    || (self.opts.load.implementation.enabled
+                        && crate::implementation::recover::is_code_file(p))
+        }) {
             let opts = self.opts.clone();
             self.reload(&opts)
                 .map_err(|e| UpdateError::Other(format!("{e:#}")))?;
@@ -362,11 +366,21 @@ impl Workspace {
             .map(Into::into)
             .collect();
         let mut backups = std::mem::take(&mut old.detached_backups);
+        let mut recovered = BTreeMap::new();
         let mut profiles: BTreeMap<String, LoadedProfile> = old
             .components
             .into_iter()
             .map(|mut c| {
                 backups.append(&mut c.backups);
+                if let (Some(r), Some(i)) = (c.recovered.take(), c.implementation.take()) {
+                    recovered.insert(
+                        c.source.clone(),
+                        crate::catalog::implementations::Recovery {
+                            implementation: i,
+                            recovered: r,
+                        },
+                    );
+                }
                 histories.insert(c.source.clone(), std::mem::take(&mut c.history));
                 (
                     c.source.clone(),
@@ -403,6 +417,7 @@ impl Workspace {
                 max_file_size: self.opts.load.limits.max_file_size,
                 ..self.opts.load.implementation.clone()
             },
+            recovered,
         };
         let mut catalog = Catalog::assemble(
             docs,

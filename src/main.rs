@@ -62,6 +62,9 @@ enum Command {
     /// Write an `rtcdoc.toml` with every setting commented out: at its default, or as an example
     /// where it has none.
     Init(InitArgs),
+    /// Write the RTC.xml of a component that has code and no profile: read from its C++,
+    /// Python or Java source (spec array, ports, service ports, parameters, callbacks).
+    Extract(ExtractArgs),
     /// Move the `[[source]]` repositories of rtcdoc.toml (all, or those named) to the current
     /// commit of their `rev` and write rtcdoc.lock.
     Update(UpdateArgs),
@@ -129,6 +132,27 @@ impl SourceArgs {
             config: None,
         }
     }
+}
+
+#[derive(Args)]
+struct ExtractArgs {
+    /// The component's folder (or the source file holding its spec array); every component
+    /// implemented below a folder gets its profile.
+    #[arg(default_value = ".")]
+    path: PathBuf,
+    /// Print the profile on standard output instead of writing it (one component only).
+    #[arg(long, conflicts_with = "output")]
+    stdout: bool,
+    /// Write the profile to FILE instead of RTC.xml in the component folder (one component
+    /// only).
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// Overwrite profiles that exist already (their documentation is lost: the code has none).
+    #[arg(long)]
+    force: bool,
+    /// Skip source files larger than this (bytes; default 16 MiB).
+    #[arg(long, value_name = "BYTES")]
+    max_file_size: Option<u64>,
 }
 
 #[derive(Args)]
@@ -910,6 +934,7 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Graph(args) => graph(cli, args),
+        Command::Extract(args) => extract(cli, args),
         Command::Update(args) => {
             let file = load_config(None, args.config.as_deref())?;
             let mode = rtcdoc::sources::Mode {
@@ -1306,6 +1331,13 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
         // Name files as the user can open them: relative to the current directory.
         let root = input_root(p);
         for d in &mut r.diagnostics {
+            // The folder `rtcdoc extract` is to be run on, as the user names it.
+            if d.code == rtcdoc::implementation::codes::RECOVERED {
+                let folder = rtcdoc::implementation::recover::component_folder(&d.file);
+                d.hint = Some(rtcdoc::implementation::recover::extract_hint(
+                    &display_path(&root, folder),
+                ));
+            }
             d.file = display_path(&root, &d.file);
             if let Some(rel) = &mut d.related {
                 rel.file = display_path(&root, &rel.file);
@@ -1510,6 +1542,110 @@ fn source_spec(
     };
     let _ = SOURCE_NAMES.set(sources.iter().map(|x| x.name.clone()).collect());
     Ok(Spec::Source(Box::new(pinned)))
+}
+
+/// `rtcdoc extract`: the profile of each component implemented below the path, written
+/// beside its code (all checked first: nothing is written when one cannot be).
+fn extract(cli: &Cli, args: &ExtractArgs) -> anyhow::Result<ExitCode> {
+    use rtcdoc::implementation::recover;
+    if !args.path.exists() {
+        anyhow::bail!("`{}` does not exist", args.path.display());
+    }
+    let max = args
+        .max_file_size
+        .unwrap_or(rtcdoc::parse::Limits::default().max_file_size);
+    let mut found = recover::extract(&args.path, max)?;
+    // A component a profile documents already is `check`'s to compare, unless --force (or
+    // only printed).
+    let documented: Vec<String> = found
+        .iter()
+        .filter(|e| e.documented && !args.force && !args.stdout)
+        .map(|e| e.found.source.clone())
+        .collect();
+    if !documented.is_empty() {
+        found.retain(|e| !e.documented);
+        if found.is_empty() {
+            anyhow::bail!(
+                "every component in `{}` has a profile already ({}); nothing was written: `rtcdoc check` compares a profile with its code, `--stdout` prints the profile the code describes, and --force overwrites the profile (what only it says is lost)",
+                args.path.display(),
+                documented.join(", ")
+            );
+        }
+        if !cli.quiet && !found.is_empty() {
+            eprintln!(
+                "note: left out {} component(s) a profile documents already ({}); --force writes them too",
+                documented.len(),
+                documented.join(", ")
+            );
+        }
+    }
+    if found.is_empty() {
+        anyhow::bail!(
+            "no component implementation in `{}`: no C++, Python or Java file holds a spec array (`<name>_spec[]` with \"implementation_id\"); name the component's folder",
+            args.path.display()
+        );
+    }
+    if (args.stdout || args.output.is_some()) && found.len() > 1 {
+        let names: Vec<String> = found.iter().map(|e| e.found.source.clone()).collect();
+        anyhow::bail!(
+            "`{}` holds {} components ({}); name one of their files or folders to use {}",
+            args.path.display(),
+            found.len(),
+            names.join(", "),
+            if args.stdout { "--stdout" } else { "--output" }
+        );
+    }
+    if args.stdout {
+        print_stdout(found[0].xml.trim_end())?;
+        return Ok(ExitCode::SUCCESS);
+    }
+    let targets: Vec<PathBuf> = found
+        .iter()
+        .map(|e| args.output.clone().unwrap_or_else(|| e.target.clone()))
+        .collect();
+    if !args.force {
+        if let Some(t) = targets.iter().find(|t| t.exists()) {
+            anyhow::bail!(
+                "`{}` exists already; nothing was written (pass --force to overwrite it, and lose what only the profile says, or --stdout to compare)",
+                t.display()
+            );
+        }
+    }
+    for (e, target) in found.iter().zip(&targets) {
+        if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir)?;
+        }
+        std::fs::write(target, &e.xml)
+            .map_err(|err| anyhow::anyhow!("cannot write `{}`: {err}", target.display()))?;
+        if !cli.quiet {
+            let p = &e.found.profile;
+            let unread: Vec<String> = e
+                .found
+                .recovered
+                .unread
+                .iter()
+                .map(|u| format!("{} ({})", u.field, u.written))
+                .collect();
+            eprintln!(
+                "wrote {}: {} ({}; {} data port(s), {} service port(s), {} parameter(s)){}",
+                target.display(),
+                p.name(),
+                e.found.implementation.language.name(),
+                p.data_ports.len(),
+                p.service_ports.len(),
+                p.configurations().len(),
+                if unread.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        "; not read from the code, left empty: {}",
+                        unread.join(", ")
+                    )
+                }
+            );
+        }
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 /// `root/rel` with forward slashes and without a leading `./`.

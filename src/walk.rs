@@ -170,6 +170,17 @@ pub enum WalkError {
     },
 }
 
+/// Source files that may hold a component's implementation (by extension).
+pub fn is_code_file(path: &Path) -> bool {
+    matches!(
+        path.extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref(),
+        Some("cpp" | "cc" | "cxx" | "py" | "java")
+    )
+}
+
 /// Guesses the format of a file from its extension and content; `None` when it is not an RTC
 /// component profile.
 pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
@@ -281,6 +292,10 @@ pub struct Candidates {
     pub files: Vec<(PathBuf, String)>,
     /// `*.idl` files (data types and service interfaces), read by [`crate::idl`].
     pub idl: Vec<(PathBuf, String)>,
+    /// Source files (`.cpp`, `.py`, `.java` …) no exclude pattern matches: where a component
+    /// with code and no profile is found ([`crate::implementation::recover`]). They are also
+    /// in `skipped`, as other files: no profile is read from them.
+    pub code: Vec<(PathBuf, String)>,
     pub skipped: Vec<Skipped>,
     /// The folders (relative, `""` for the top) the walk met an entry named like a README in
     /// (of any kind: [`crate::readme::read_folder`] decides what it is), so that no other
@@ -292,6 +307,7 @@ impl Candidates {
     fn append(&mut self, mut other: Candidates) {
         self.files.append(&mut other.files);
         self.idl.append(&mut other.idl);
+        self.code.append(&mut other.code);
         self.skipped.append(&mut other.skipped);
         self.readme_dirs.append(&mut other.readme_dirs);
     }
@@ -636,6 +652,9 @@ impl<'a> Walker<'a> {
         let candidate =
             idl || ext.as_deref().is_some_and(is_document_extension) || named_like_profile(path);
         if !candidate {
+            if is_code_file(path) && self.excluded(&rel).is_none() {
+                out.code.push((path.to_path_buf(), rel.clone()));
+            }
             out.skipped.push(Skipped {
                 rel,
                 reason: "not an .xml/.yaml/.yml/.rtsys file".into(),

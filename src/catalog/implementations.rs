@@ -27,7 +27,71 @@ impl Default for Settings {
     }
 }
 
+/// A component documented from its code alone: its implementation and what the code does
+/// not say (the profile made from them is the component's).
+#[derive(Debug, Clone)]
+pub struct Recovery {
+    pub implementation: Box<implementation::Implementation>,
+    pub recovered: Box<implementation::recover::Recovered>,
+}
+
+/// The components of `code` (the source files of the walk) that no profile of `profiles`
+/// documents, as profiles to load and their recoveries by source; the reading's findings.
+pub fn recover(
+    profiles: &[super::LoadedProfile],
+    code: &[(std::path::PathBuf, String)],
+    settings: &Settings,
+) -> (
+    Vec<super::LoadedProfile>,
+    std::collections::BTreeMap<String, Recovery>,
+    Vec<crate::diagnostic::Diagnostic>,
+) {
+    use implementation::recover::{component_folder, find_all};
+    let mut loaded = Vec::new();
+    let mut by_source = std::collections::BTreeMap::new();
+    if !settings.enabled || code.is_empty() {
+        return (loaded, by_source, Vec::new());
+    }
+    let folders: std::collections::HashSet<String> = profiles
+        .iter()
+        .map(|p| component_folder(&p.source).to_string())
+        .collect();
+    let (found, diags) = find_all(code, &folders, settings.max_file_size);
+    for f in found {
+        loaded.push(super::LoadedProfile {
+            source: f.source.clone(),
+            format: crate::parse::SourceFormat::Xml,
+            profile: Box::new(f.profile),
+        });
+        by_source.insert(
+            f.source,
+            Recovery {
+                implementation: Box::new(f.implementation),
+                recovered: Box::new(f.recovered),
+            },
+        );
+    }
+    (loaded, by_source, diags)
+}
+
 impl Catalog {
+    /// Marks the components documented from their code alone ([`recover`]) and gives them
+    /// the implementation they were read from.
+    pub fn attach_recovered(
+        &mut self,
+        mut recovered: std::collections::BTreeMap<String, Recovery>,
+    ) {
+        if recovered.is_empty() {
+            return;
+        }
+        for c in &mut self.components {
+            if let Some(r) = recovered.remove(&c.source) {
+                c.implementation = Some(r.implementation);
+                c.recovered = Some(r.recovered);
+            }
+        }
+    }
+
     /// Finds, reads and compares every component's implementation (in parallel, a component
     /// a task); the reading's findings join the catalogue's diagnostics.
     pub fn attach_implementations(
@@ -43,6 +107,10 @@ impl Catalog {
             .components
             .par_iter()
             .map(|c| {
+                // A component recovered from its code is its code.
+                if c.recovered.is_some() {
+                    return (c.implementation.clone(), Vec::new());
+                }
                 let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
                 let name = c.profile.basic_info.name.as_deref().unwrap_or("").trim();
                 let id = c.id.as_str();

@@ -14,16 +14,19 @@ pub(crate) fn findings(c: &Component) -> Vec<Diagnostic> {
     };
     let mut out: Vec<Diagnostic> = imp.drift.iter().map(|d| finding(c, d)).collect();
     for u in &imp.unverified {
-        out.push(
-            Diagnostic::info(
-                codes::UNVERIFIED,
-                &u.at.file,
-                format!("could not verify {}: {}", u.what, Code(&u.construct)),
-            )
-            .at(u.at.pos)
-            .with_related(&c.source, None, "the profile")
-            .with_hint("nothing to change: what the code builds at run time is not compared with the profile; keep the profile's elements in step with it by hand"),
-        );
+        let d = Diagnostic::info(
+            codes::UNVERIFIED,
+            &u.at.file,
+            format!("could not verify {}: {}", u.what, Code(&u.construct)),
+        )
+        .at(u.at.pos)
+        .with_hint("nothing to change: what the code builds at run time is not compared with the profile; keep the profile's elements in step with it by hand");
+        // A component recovered from its code has no profile to point at.
+        out.push(if c.recovered.is_some() {
+            d
+        } else {
+            d.with_related(&c.source, None, "the profile")
+        });
     }
     let p = &c.profile;
     let declares =
@@ -47,6 +50,46 @@ pub(crate) fn findings(c: &Component) -> Vec<Diagnostic> {
         );
     }
     out
+}
+
+/// RTC812: `c` has code and no profile, and is documented from its code.
+pub(crate) fn recovered(
+    c: &Component,
+    r: &crate::implementation::recover::Recovered,
+) -> Diagnostic {
+    let pos = c
+        .implementation
+        .as_ref()
+        .and_then(|i| i.spec.first())
+        .map(|s| s.at.pos)
+        .unwrap_or_default();
+    let folder = crate::implementation::recover::component_folder(&c.source);
+    let unread = if r.unread.is_empty() {
+        String::new()
+    } else {
+        let list: Vec<String> = r
+            .unread
+            .iter()
+            .map(|u| {
+                if u.written.contains(char::is_whitespace) {
+                    format!("{} ({})", u.field, u.written)
+                } else {
+                    format!("{} ({})", u.field, Code(&u.written))
+                }
+            })
+            .collect();
+        format!("; not read from the code: {}", list.join(", "))
+    };
+    Diagnostic::info(
+        crate::implementation::codes::RECOVERED,
+        &c.source,
+        format!(
+            "{} has no profile: it is documented from its code{unread}",
+            Code(c.profile.name())
+        ),
+    )
+    .at(pos)
+    .with_hint(crate::implementation::recover::extract_hint(folder))
 }
 
 fn finding(c: &Component, d: &Drift) -> Diagnostic {

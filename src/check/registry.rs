@@ -105,6 +105,7 @@ pub const DRIFT_CALLBACK_MISSING: &str = crate::implementation::drift::codes::CA
 pub const DRIFT_SPEC_VALUE: &str = crate::implementation::drift::codes::SPEC_VALUE;
 pub const DRIFT_UNVERIFIED: &str = crate::implementation::drift::codes::UNVERIFIED;
 pub const SOURCE_UNREADABLE: &str = crate::implementation::codes::UNREADABLE;
+pub const SOURCE_RECOVERED: &str = crate::implementation::codes::RECOVERED;
 
 use Severity::{Error, Info, Warning};
 
@@ -892,6 +893,15 @@ pub static RULES: &[Rule] = &[
         explanation: "A source file larger than the file-size limit (16 MiB by default, --max-file-size), nested deeper than 256 brackets or with more than four million tokens is not read; the component's implementation is compared without it. The build goes on. Files in Shift_JIS are read as such; other invalid UTF-8 is replaced.",
         spec: "— (rtcdoc: the code RTCBuilder generates; OpenRTM-aist RTObject API)",
         hint: "nothing to change if the file is generated or vendored; else split it",
+    },
+    Rule {
+        code: SOURCE_RECOVERED,
+        severity: Info,
+        name: "recovered-from-source",
+        summary: "a component has code and no profile: it is documented from its code",
+        explanation: "A source file holding a spec array (`<name>_spec[]` in C++, `<name>_spec = [...]` in Python, the `component_conf` array in Java) in a folder no profile documents is a component without an RTC.xml. It is documented from what its code registers (ports with their data types, service ports and interfaces, configuration parameters with their defaults, the callbacks it implements) and marked \"recovered from the source\" on its page and in catalog.json. A value the code does not spell out — a macro such as `PACKAGE_VERSION`, a port whose variable's declaration was not found — is named in the message and left empty, never guessed. The profile rules do not run on it: there is no profile to correct. The component folder is the one above the file's `src/`, else its own; test and build folders are not looked in.",
+        spec: "— (rtcdoc: the code RTCBuilder generates)",
+        hint: "run `rtcdoc extract FOLDER` to write its RTC.xml (then describe the component there), or exclude the folder",
     },
 ];
 

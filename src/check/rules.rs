@@ -40,6 +40,13 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
         file: &c.source,
         out: Vec::new(),
     };
+    // A component documented from its code has no profile to check: it is named, with what
+    // its code does not say.
+    if let Some(r) = &c.recovered {
+        s.out.push(super::drift::recovered(c, r));
+        s.out.extend(super::drift::findings(c));
+        return s.out;
+    }
     let p = &c.profile;
     required(p, &mut s);
     enumerations(p, &mut s);

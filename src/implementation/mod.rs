@@ -6,6 +6,7 @@
 pub mod drift;
 pub mod extract;
 pub mod lex;
+pub mod recover;
 
 use crate::diagnostic::Diagnostic;
 use crate::model::Pos;
@@ -17,6 +18,8 @@ use std::path::Path;
 pub mod codes {
     /// A source file that could not be read (too large, too deeply nested): not verified.
     pub const UNREADABLE: &str = "RTC811";
+    /// A component with code and no profile, documented from its code ([`super::recover`]).
+    pub const RECOVERED: &str = "RTC812";
 }
 
 /// A place in a source file (the file as shown: relative to the input, forward slashes).

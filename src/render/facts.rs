@@ -767,6 +767,13 @@ pub struct ImplementationSection {
     pub rows: Vec<DriftRow>,
     /// What could not be verified, in words.
     pub unverified: Vec<String>,
+    /// The label of the section's introduction: `impl_intro`, or `impl_recovered_intro` for
+    /// a component documented from its code alone.
+    pub intro: &'static str,
+    /// A component recovered from its code: the values its code does not spell out.
+    pub unread: Vec<String>,
+    /// The component has no profile: it is documented from its code.
+    pub recovered: bool,
 }
 
 #[derive(serde::Serialize, Clone)]
@@ -811,7 +818,9 @@ impl ImplementationSection {
                 rule: d.kind.code(),
             })
             .collect();
-        let state = if rows.is_empty() {
+        let state = if c.recovered.is_some() {
+            lang.t("impl_recovered").to_string()
+        } else if rows.is_empty() {
             lang.t("impl_matches").to_string()
         } else {
             lang.t("impl_differences")
@@ -836,6 +845,23 @@ impl ImplementationSection {
                     format!(
                         "{}: {} ({}:{})",
                         u.what, u.construct, u.at.file, u.at.pos.line
+                    )
+                })
+                .collect(),
+            recovered: c.recovered.is_some(),
+            intro: if c.recovered.is_some() {
+                "impl_recovered_intro"
+            } else {
+                "impl_intro"
+            },
+            unread: c
+                .recovered
+                .iter()
+                .flat_map(|r| &r.unread)
+                .map(|u| {
+                    format!(
+                        "{}: {} ({}:{})",
+                        u.field, u.written, u.at.file, u.at.pos.line
                     )
                 })
                 .collect(),

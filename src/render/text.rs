@@ -517,6 +517,9 @@ pub fn component_sections<M: Markup>(
     lang: Lang,
 ) {
     let page = v.page;
+    if v.implementation.as_ref().is_some_and(|i| i.recovered) {
+        M::paragraph(out, &M::bold(&M::esc(lang.t("impl_recovered_note"))));
+    }
     M::heading(out, page, 2, "sec-basic-info", lang.t("fact_basic_info"));
     let (vendor_label, source_label) = (lang.t("vendor"), lang.t("source"));
     let rows: Vec<Vec<String>> = v
@@ -660,7 +663,7 @@ fn implementation_section<M: Markup>(
     lang: Lang,
 ) {
     M::heading(out, page, 2, "sec-implementation", lang.t("implementation"));
-    M::paragraph(out, &M::esc(lang.t("impl_intro")));
+    M::paragraph(out, &M::esc(lang.t(im.intro)));
     M::paragraph(out, &M::bold(&M::esc(&im.summary)));
     M::paragraph(out, &M::bold(&M::esc(lang.t("impl_files"))));
     let files: Vec<String> = im
@@ -696,10 +699,15 @@ fn implementation_section<M: Markup>(
             &rows,
         );
     }
-    if !im.unverified.is_empty() {
-        M::paragraph(out, &M::esc(lang.t("impl_unverified")));
-        let items: Vec<String> = im.unverified.iter().map(|u| M::esc(u)).collect();
-        M::linked_list(out, &items);
+    for (label, items) in [
+        ("impl_unread", &im.unread),
+        ("impl_unverified", &im.unverified),
+    ] {
+        if !items.is_empty() {
+            M::paragraph(out, &M::esc(lang.t(label)));
+            let items: Vec<String> = items.iter().map(|u| M::esc(u)).collect();
+            M::linked_list(out, &items);
+        }
     }
 }
 

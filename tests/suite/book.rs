@@ -208,7 +208,9 @@ fn help_flags(sub: &str) -> Vec<String> {
 fn help_guide_and_readme_name_the_same_flags() {
     let cli = std::fs::read_to_string(root().join("book/src/cli.md")).unwrap();
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    for sub in ["build", "check", "diff", "serve", "graph", "init"] {
+    for sub in [
+        "build", "check", "diff", "serve", "graph", "init", "extract",
+    ] {
         let flags = help_flags(sub);
         assert!(!flags.is_empty(), "{sub}");
         for f in &flags {

@@ -91,6 +91,8 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC809", "src/Drift.cpp", 10, 26),
     ("RTC810", "src/Drift.cpp", 34, 3),
     ("RTC811", "include/Drift/Drift.h", 25, 281),
+    // Code and no profile: documented from the code, at its spec array.
+    ("RTC812", "src/Drift.cpp", 7, 26),
 ];
 
 #[test]

@@ -343,3 +343,290 @@ fn catalog_json_carries_the_implementation_and_reads_it_back() {
     rtcdoc::render::json::write_json_with(&back.catalog, &back.title, false, &mut again).unwrap();
     assert!(again == bytes, "catalog.json round trip differs");
 }
+
+/// `rtcdoc ARGS` in `cwd` at a fixed extraction time (the profile's dates).
+fn rtcdoc_at(args: &[&str], cwd: &std::path::Path) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(args)
+        .current_dir(cwd)
+        .env("NO_COLOR", "1")
+        .env("SOURCE_DATE_EPOCH", "1704067200")
+        .output()
+        .expect("run rtcdoc")
+}
+
+fn copy_fixture(name: &str, to: &std::path::Path) {
+    let from = fixture(name);
+    for f in walkdir(&from) {
+        let rel = f.strip_prefix(&from).unwrap();
+        let target = to.join(rel);
+        std::fs::create_dir_all(target.parent().unwrap()).unwrap();
+        std::fs::copy(&f, &target).unwrap();
+    }
+}
+
+#[test]
+fn components_with_code_and_no_profile_are_documented_from_their_code() {
+    let loaded = build::load(&fixture("recovered"), &LoadOptions::default()).expect("load");
+    let cat = &loaded.catalog;
+    let by_name = |n: &str| {
+        cat.components
+            .iter()
+            .find(|c| c.profile.name() == n)
+            .unwrap_or_else(|| panic!("{n} not documented"))
+    };
+    // Code only: recovered, from the file holding the spec array; the test copy is not.
+    let g = by_name("Gripper");
+    assert_eq!(g.source, "Gripper/src/Gripper.cpp");
+    let r = g.recovered.as_ref().expect("marked as recovered");
+    let unread: Vec<(&str, &str)> = r
+        .unread
+        .iter()
+        .map(|u| (u.field.as_str(), u.written.as_str()))
+        .collect();
+    assert_eq!(unread, [("basicInfo/version", "GRIPPER_VERSION")]);
+    assert!(
+        g.profile.basic_info.version.is_none(),
+        "a macro is never guessed"
+    );
+    let ports: Vec<(&str, &str, &str)> = g
+        .profile
+        .data_ports
+        .iter()
+        .map(|p| {
+            (
+                p.name.as_deref().unwrap(),
+                p.port_type.as_deref().unwrap(),
+                p.type_.as_deref().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        ports,
+        [
+            ("command", "DataInPort", "RTC::TimedLong"),
+            ("width", "DataOutPort", "RTC::TimedDouble")
+        ]
+    );
+    let sp = &g.profile.service_ports[0];
+    assert_eq!(sp.name.as_deref(), Some("GripperService"));
+    assert_eq!(
+        sp.interfaces[0].type_.as_deref(),
+        Some("Hand::GripperService")
+    );
+    assert_eq!(sp.interfaces[0].direction.as_deref(), Some("Provided"));
+    let confs: Vec<(&str, &str, &str, Option<&str>)> = g
+        .profile
+        .configurations()
+        .iter()
+        .map(|c| {
+            (
+                c.name.as_deref().unwrap(),
+                c.type_.as_deref().unwrap(),
+                c.default_value.as_deref().unwrap(),
+                c.widget(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        confs,
+        [
+            ("force", "int", "20", Some("slider.1")),
+            ("mode", "string", "soft", Some("radio"))
+        ]
+    );
+    let implemented: Vec<&str> = g
+        .profile
+        .actions
+        .iter()
+        .filter(|a| a.is_implemented())
+        .map(|a| a.kind.xml_name())
+        .collect();
+    // onDeactivated is the generated stub.
+    assert_eq!(implemented, ["OnInitialize", "OnActivated", "OnExecute"]);
+    assert!(by_name("Counter").recovered.is_some());
+    assert_eq!(
+        by_name("Counter")
+            .profile
+            .basic_info
+            .component_type
+            .as_deref(),
+        Some("STATIC"),
+        "STATIC in activity_type is the component type"
+    );
+    // A folder with a profile is the profile's; a test copy is no component.
+    assert!(by_name("Documented").recovered.is_none());
+    assert!(!cat
+        .components
+        .iter()
+        .any(|c| c.profile.name() == "GripperTest"));
+    // check: one info per recovered component, no profile rule run on them, no warning.
+    let f = findings(&fixture("recovered"));
+    let recovered: Vec<&str> = f
+        .iter()
+        .filter(|x| x.0 == "RTC812")
+        .map(|x| x.1.as_str())
+        .collect();
+    assert_eq!(
+        recovered,
+        [
+            "Counter/Counter.py",
+            "Gripper/src/Gripper.cpp",
+            "lib/LeftArm.cpp",
+            "lib/RightArm.cpp"
+        ]
+    );
+    assert!(f
+        .iter()
+        .any(|x| x.0 == "RTC812" && x.2.contains("GRIPPER_VERSION")));
+    let loud: Vec<_> = f
+        .iter()
+        .filter(|x| !x.0.starts_with("RTC5") && x.0 != "RTC812" && x.0 != "RTC810")
+        .collect();
+    assert!(loud.is_empty(), "{loud:#?}");
+}
+
+#[test]
+fn a_recovered_component_is_marked_on_its_page_and_in_the_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let o = common::rtcdoc(
+        &[
+            "build",
+            fixture("recovered").to_str().unwrap(),
+            "-f",
+            "html,markdown,json",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let html = std::fs::read_to_string(out.join("html/components/gripper.html")).unwrap();
+    assert!(html.contains("<p class=\"note\"><a href=\"#implementation\">No profile: documented from the source code</a></p>"));
+    assert!(html.contains("C++ · recovered from the source"));
+    assert!(
+        html.contains("<li>basicInfo/version: GRIPPER_VERSION (Gripper/src/Gripper.cpp:10)</li>")
+    );
+    let md = std::fs::read_to_string(out.join("markdown/components/gripper.md")).unwrap();
+    assert!(
+        md.contains("**No profile: documented from the source code**"),
+        "{md}"
+    );
+    let index = std::fs::read_to_string(out.join("html/index.html")).unwrap();
+    assert!(index.contains("data-impl=\"recovered\""));
+    let bytes = std::fs::read(out.join("json/catalog.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&bytes).unwrap();
+    let g = v["components"]
+        .as_object()
+        .unwrap()
+        .values()
+        .find(|c| c["basicInfo"]["name"] == "Gripper")
+        .unwrap();
+    assert_eq!(g["recovered"]["unread"][0]["written"], "GRIPPER_VERSION");
+    let back = rtcdoc::render::json::read_catalog(&bytes, "catalog.json").expect("reads back");
+    let mut again = Vec::new();
+    rtcdoc::render::json::write_json_with(&back.catalog, &back.title, false, &mut again).unwrap();
+    assert!(again == bytes, "catalog.json round trip differs");
+}
+
+#[test]
+fn extract_writes_the_profile_the_code_describes_and_check_finds_no_drift() {
+    let dir = tempfile::tempdir().unwrap();
+    let work = dir.path().join("w");
+    copy_fixture("recovered", &work);
+    let o = rtcdoc_at(&["extract", "."], &work);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    // The folder of one component gets RTC.xml; a folder of two, one file each; the one a
+    // profile documents already is left alone.
+    for f in [
+        "Gripper/RTC.xml",
+        "Counter/RTC.xml",
+        "lib/LeftArm.xml",
+        "lib/RightArm.xml",
+    ] {
+        assert!(work.join(f).is_file(), "{f} not written: {err}");
+    }
+    assert!(
+        err.contains(
+            "left out 1 component(s) a profile documents already (Documented/Documented.py)"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("not read from the code, left empty: basicInfo/version (GRIPPER_VERSION)"),
+        "{err}"
+    );
+    let xml = std::fs::read_to_string(work.join("Gripper/RTC.xml")).unwrap();
+    assert!(xml.contains("<!-- basicInfo/version is not read from the code (GRIPPER_VERSION at src/Gripper.cpp:10): set it. -->"), "{xml}");
+    assert!(xml.contains("rtc:creationDate=\"2024-01-01T00:00:00+00:00\""));
+    // Read back: the profile is the component's, and its code matches it.
+    let p = rtcdoc::parse::parse(
+        rtcdoc::parse::SourceFormat::Xml,
+        xml.as_bytes(),
+        "RTC.xml",
+        &Default::default(),
+    )
+    .expect("reads back");
+    assert_eq!(p.profile.name(), "Gripper");
+    assert_eq!(p.profile.data_ports.len(), 2);
+    assert_eq!(p.profile.configurations()[0].widget(), Some("slider.1"));
+    let loaded = build::load(&work, &LoadOptions::default()).expect("load");
+    assert!(loaded
+        .catalog
+        .components
+        .iter()
+        .all(|c| c.recovered.is_none()));
+    for c in &loaded.catalog.components {
+        let imp = c
+            .implementation
+            .as_ref()
+            .unwrap_or_else(|| panic!("{}: no code read", c.source));
+        assert!(imp.drift.is_empty(), "{}: {:#?}", c.source, imp.drift);
+    }
+    let f = findings(&work);
+    let drift_or_errors: Vec<_> = f
+        .iter()
+        .filter(|x| {
+            x.0.starts_with("RTC80")
+                || x.0 == "RTC812"
+                || (x.0 == "RTC101" && !x.2.contains("`version`"))
+        })
+        .collect();
+    assert!(drift_or_errors.is_empty(), "{drift_or_errors:#?}");
+    // Again: nothing is overwritten without --force, and nothing written at all.
+    let before = std::fs::read(work.join("Counter/RTC.xml")).unwrap();
+    std::fs::remove_file(work.join("lib/LeftArm.xml")).unwrap();
+    let o = rtcdoc_at(&["extract", "lib"], &work);
+    assert!(!o.status.success());
+    assert!(
+        String::from_utf8_lossy(&o.stderr)
+            .contains("every component in `lib` has a profile already")
+            || String::from_utf8_lossy(&o.stderr).contains("exists already"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // --stdout prints what it would write, byte for byte; --force rewrites.
+    let o = rtcdoc_at(&["extract", "Counter", "--stdout"], &work);
+    assert!(o.status.success());
+    assert!(o.stdout == before, "the same input gives the same profile");
+    let o = rtcdoc_at(&["extract", "Counter", "--force"], &work);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::read(work.join("Counter/RTC.xml")).unwrap() == before);
+    // Several components and one output: refused, naming them.
+    let o = rtcdoc_at(&["extract", "lib", "--stdout"], &work);
+    assert!(!o.status.success());
+    assert!(
+        String::from_utf8_lossy(&o.stderr)
+            .contains("holds 2 components (lib/LeftArm.cpp, lib/RightArm.cpp)")
+            || String::from_utf8_lossy(&o.stderr)
+                .contains("holds 2 components (LeftArm.cpp, RightArm.cpp)"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // No component: a clear error.
+    let o = rtcdoc_at(&["extract", "Gripper/include"], &work);
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no component implementation in"));
+}

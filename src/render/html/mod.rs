@@ -578,6 +578,7 @@ impl<'a> Site<'a> {
             service_ports: c.profile.service_ports.len(),
             configurations: c.profile.configurations().len(),
             implementation: match &c.implementation {
+                Some(_) if c.recovered.is_some() => "recovered",
                 Some(i) if i.drift.is_empty() => "ok",
                 Some(_) => "drift",
                 None => "",

@@ -496,6 +496,11 @@ fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     o.raw("\n<article class=\"component\">\n<h1>");
     o.text(&p.name);
     o.raw("</h1>\n");
+    if p.implementation.as_ref().is_some_and(|i| i.recovered) {
+        o.raw("<p class=\"note\"><a href=\"#implementation\">");
+        o.label("impl_recovered_note");
+        o.raw("</a></p>\n");
+    }
     if let Some(s) = p.summary_html.as_deref().filter(|s| !s.is_empty()) {
         o.raw("<div class=\"summary\">");
         o.raw(s);
@@ -911,7 +916,7 @@ fn history_table(o: &mut Out<'_>, rows: &[HistoryRow], older: Option<&str>) {
 /// The Implementation section of a component page (`component.html`'s `implementation`).
 fn implementation_section(o: &mut Out<'_>, im: &crate::render::facts::ImplementationSection) {
     o.section_start("implementation", false, "implementation");
-    o.label_in("<p>", "impl_intro", "</p>\n");
+    o.label_in("<p>", im.intro, "</p>\n");
     o.raw(if im.matches {
         "<p class=\"impl-state ok\"><strong>"
     } else {
@@ -949,9 +954,15 @@ fn implementation_section(o: &mut Out<'_>, im: &crate::render::facts::Implementa
         }
         o.table_wrap_end();
     }
-    if !im.unverified.is_empty() {
-        o.label_in("<p>", "impl_unverified", "</p>\n<ul>\n");
-        for u in &im.unverified {
+    for (label, items) in [
+        ("impl_unread", &im.unread),
+        ("impl_unverified", &im.unverified),
+    ] {
+        if items.is_empty() {
+            continue;
+        }
+        o.label_in("<p>", label, "</p>\n<ul>\n");
+        for u in items {
             o.raw("<li>");
             o.text(u);
             o.raw("</li>\n");
