@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Generate a synthetic catalogue of N realistic RTC profiles for benchmarks.
 
-usage: gen_catalogue.py N OUT_DIR [--examples DIR] [--no-idl]
-       gen_catalogue.py N OUT_DIR --shape corpus [--corpus DIR] [--openrtm-idl DIR]
+usage: gen_catalogue.py N OUT_DIR [--examples DIR] [--no-idl] [--implementation]
+       gen_catalogue.py N OUT_DIR --shape corpus [--corpus DIR] [--openrtm-idl DIR] [--implementation]
 
 Clones the bundled example profiles (examples/) under new component names, vendors and
 categories, and spreads their data and interface types over groups so that cross-links look like
@@ -26,7 +26,16 @@ of VENDORS vendors, and the id built from them; everything else is the original'
 byte. --openrtm-idl DIR copies the *.idl files of an OpenRTM installation's IDL directory
 (BasicDataType.idl, ExtendedDataTypes.idl, InterfaceDataTypes.idl, …) into OUT_DIR/idl, so the
 build reads and renders OpenRTM's IDL as a catalogue with `idl-path` pointing there would.
+
+--implementation also writes, beside each profile, the code RTCBuilder generates from it, in
+its layout: C++ `src/<Name>.cpp` and `include/<Name>/<Name>.h`, or Python `<Name>.py` when the
+profile's language is Python: the spec array, the port and parameter declarations and
+registrations, every lifecycle callback (a body for those marked implemented, the generated
+stub commented out for the others) and RTCBuilder's comment blocks, so that the implementation
+check reads files of the real size (about 6-12 KB a component). The profiles are the same as
+without the flag, byte for byte.
 """
+import xml.etree.ElementTree as ET
 import os
 import re
 import shutil
@@ -294,6 +303,8 @@ def gen_corpus(n, out, corpus, idl_dir):
         os.makedirs(d)
         with open(os.path.join(d, fname), "w", encoding="utf-8") as fh:
             fh.write(t)
+        if "--implementation" in sys.argv and fname.endswith(".xml"):
+            write_implementation(d, t)
     idl_files = 0
     if idl_dir:
         d = os.path.join(out, "idl")
@@ -305,6 +316,231 @@ def gen_corpus(n, out, corpus, idl_dir):
     print(f"wrote {n} profiles cloned from {len(templates)} corpus profiles to {out}"
           + (f", {idl_files} IDL files" if idl_dir else ""))
     return 0
+
+
+CALLBACKS = ["onInitialize", "onFinalize", "onStartup", "onShutdown", "onActivated",
+             "onDeactivated", "onAborting", "onError", "onReset", "onExecute",
+             "onStateUpdate", "onRateChanged", "onAction", "onModeChanged"]
+BLOCK = """  /***
+   * The {cb} action, as RTCBuilder documents it: called by the execution context
+   * when the component enters the corresponding state. The return value tells the
+   * execution context whether the action succeeded.
+   *
+   * @param ec_id target ExecutionContext Id
+   * @return RTC::ReturnCode_t
+   *
+   */
+"""
+
+
+def profile_facts(text):
+    """(name, language, data ports, service ports, configurations, implemented callbacks) of an
+    RTC.xml, or None when it is not XML ElementTree reads."""
+    try:
+        root = ET.fromstring(text.encode("utf-8"))
+    except ET.ParseError:
+        return None
+    local = lambda t: t.rsplit("}", 1)[-1]
+    xsi = "{http://www.w3.org/2001/XMLSchema-instance}"
+    get = lambda e, k: next((v for a, v in e.attrib.items()
+                             if local(a) == k and not a.startswith(xsi)), "")
+    facts = {"name": "", "lang": "C++", "ports": [], "services": [], "confs": [], "impl": set(),
+             "spec": {}}
+    for e in root.iter():
+        t = local(e.tag)
+        if t == "BasicInfo":
+            facts["name"] = get(e, "name")
+            for k, key in [("vendor", "vendor"), ("category", "category"), ("version", "version"),
+                           ("activityType", "activity_type"), ("maxInstances", "max_instance"),
+                           ("description", "description")]:
+                facts["spec"][key] = get(e, k)
+        elif t == "DataPorts":
+            facts["ports"].append((get(e, "name"), get(e, "portType"), get(e, "type")))
+        elif t == "ServicePorts":
+            ifs = [(get(i, "name"), get(i, "type"), get(i, "direction"))
+                   for i in e if local(i.tag) == "ServiceInterface"]
+            facts["services"].append((get(e, "name"), ifs))
+        elif t == "Configuration":
+            facts["confs"].append((get(e, "name"), get(e, "type"), get(e, "defaultValue")))
+        elif t == "Language" and get(e, "kind"):
+            facts["lang"] = get(e, "kind")
+        elif t.startswith("On") and get(e, "implemented").lower() == "true":
+            facts["impl"].add("o" + t[1:])
+    return facts
+
+
+def ident(s):
+    return re.sub(r"\W", "_", s) or "x"
+
+
+def c_string(s):
+    return s.replace("\\", "\\\\").replace('"', '\\"').replace("\n", " ")
+
+
+def write_cpp(d, f):
+    n = ident(f["name"])
+    spec = [("implementation_id", f["name"]), ("type_name", f["name"])]
+    spec += [(k, v) for k, v in f["spec"].items()]
+    spec += [("language", "C++"), ("lang_type", "compile")]
+    spec += [(f"conf.default.{c}", v) for c, _, v in f["confs"] if c]
+    spec += [(f"conf.__type__.{c}", t) for c, t, _ in f["confs"] if c and t]
+    out = ["// -*- C++ -*-", "/*!", f" * @file  {n}.cpp", f" * @brief {c_string(f['spec'].get('description', ''))}",
+           " * @date $Date$", " *", " * $Id$", " */", "", f'#include "{n}.h"', "",
+           "// Module specification", "// <rtc-template block=\"module_spec\">",
+           f"static const char* {n.lower()}_spec[] =", "  {"]
+    out += [f'    "{c_string(k)}", "{c_string(v)}",' for k, v in spec]
+    out += ['    ""', "  };", "// </rtc-template>", "", "/*!", " * @brief constructor",
+            " * @param manager Maneger Object", " */", f"{n}::{n}(RTC::Manager* manager)",
+            "    // <rtc-template block=\"initializer\">", "  : RTC::DataFlowComponentBase(manager)"]
+    for p, kind, _ in f["ports"]:
+        v = ident(p)
+        suffix = "In" if kind == "DataInPort" else "Out"
+        out.append(f'    , m_{v}{suffix}("{c_string(p)}", m_{v})')
+    for s, _ in f["services"]:
+        out.append(f'    , m_{ident(s)}Port("{c_string(s)}")')
+    out += ["    // </rtc-template>", "{", "}", "", "/*!", " * @brief destructor", " */",
+            f"{n}::~{n}()", "{", "}", "", ""]
+    for cb in CALLBACKS:
+        args = "" if cb in ("onInitialize", "onFinalize") else "RTC::UniqueId /*ec_id*/"
+        body = []
+        if cb == "onInitialize":
+            body.append("  // Registration: InPort/OutPort/Service")
+            body.append("  // <rtc-template block=\"registration\">")
+            for p, kind, _ in f["ports"]:
+                v = ident(p)
+                if kind == "DataInPort":
+                    body.append(f'  addInPort("{c_string(p)}", m_{v}In);')
+                else:
+                    body.append(f'  addOutPort("{c_string(p)}", m_{v}Out);')
+            for s, ifs in f["services"]:
+                for i, t, direction in ifs:
+                    call = "registerConsumer" if direction == "Required" else "registerProvider"
+                    body.append(f'  m_{ident(s)}Port.{call}("{c_string(i)}", "{c_string(t)}", m_{ident(i)});')
+                body.append(f"  addPort(m_{ident(s)}Port);")
+            body += ["  // </rtc-template>", "", "  // <rtc-template block=\"bind_config\">",
+                     "  // Bind variables and configuration variable"]
+            for c, _, v in f["confs"]:
+                if c:
+                    body.append(f'  bindParameter("{c_string(c)}", m_{ident(c)}, "{c_string(v)}");')
+            body.append("  // </rtc-template>")
+        elif cb in f["impl"]:
+            body += ["  // The lab's code: read the inputs, compute, write the outputs.",
+                     "  static int calls = 0;", "  ++calls;"]
+        text = [f"RTC::ReturnCode_t {n}::{cb}({args})", "{"] + body + ["  return RTC::RTC_OK;", "}"]
+        if cb == "onInitialize" or cb in f["impl"]:
+            out += text
+        else:
+            out += ["/*"] + text + ["*/"]
+        out.append("")
+    out += ['extern "C"', "{", f"  void {n}Init(RTC::Manager* manager)", "  {",
+            f"    coil::Properties profile({n.lower()}_spec);",
+            f"    manager->registerFactory(profile, RTC::Create<{n}>, RTC::Delete<{n}>);",
+            "  }", "};", ""]
+    os.makedirs(os.path.join(d, "src"), exist_ok=True)
+    with open(os.path.join(d, "src", f"{n}.cpp"), "w", encoding="utf-8") as fh:
+        fh.write("\n".join(out))
+    h = [f"#ifndef {n.upper()}_H", f"#define {n.upper()}_H", "",
+         "#include <rtm/Manager.h>", "#include <rtm/DataFlowComponentBase.h>",
+         "#include <rtm/CorbaPort.h>", "#include <rtm/DataInPort.h>", "#include <rtm/DataOutPort.h>",
+         "", "using namespace RTC;", "", f"class {n}", "  : public RTC::DataFlowComponentBase", "{",
+         " public:", f"  {n}(RTC::Manager* manager);", f"  ~{n}() override;", ""]
+    for cb in CALLBACKS:
+        args = "" if cb in ("onInitialize", "onFinalize") else "RTC::UniqueId ec_id"
+        decl = f"  RTC::ReturnCode_t {cb}({args}) override;"
+        h += BLOCK.format(cb=cb).splitlines()
+        h.append(decl if cb == "onInitialize" or cb in f["impl"] else "  // " + decl.strip())
+        h.append("")
+    h += [" protected:", "  // <rtc-template block=\"config_declare\">"]
+    for c, t, _ in f["confs"]:
+        if c:
+            ty = {"string": "std::string", "": "std::string"}.get(t, t)
+            h.append(f"  {ty} m_{ident(c)};")
+    h += ["  // </rtc-template>", "  // <rtc-template block=\"inport_declare\">"]
+    for p, kind, t in f["ports"]:
+        ty = t or "RTC::TimedLong"
+        v = ident(p)
+        port = "InPort" if kind == "DataInPort" else "OutPort"
+        suffix = "In" if kind == "DataInPort" else "Out"
+        h += [f"  {ty} m_{v};", f"  /*!", f"   * {c_string(p)}", "   */", f"  RTC::{port}<{ty}> m_{v}{suffix};"]
+    h += ["  // </rtc-template>", "  // <rtc-template block=\"corbaport_declare\">"]
+    for s, ifs in f["services"]:
+        h.append(f"  RTC::CorbaPort m_{ident(s)}Port;")
+    h.append("  // </rtc-template>")
+    for s, ifs in f["services"]:
+        for i, t, direction in ifs:
+            h.append(f"  {ident(t)}SVC_impl m_{ident(i)};")
+    h += ["", " private:", "", "};", "", 'extern "C"', "{",
+          f"  DLL_EXPORT void {n}Init(RTC::Manager* manager);", "};", "", f"#endif // {n.upper()}_H", ""]
+    os.makedirs(os.path.join(d, "include", n), exist_ok=True)
+    with open(os.path.join(d, "include", n, f"{n}.h"), "w", encoding="utf-8") as fh:
+        fh.write("\n".join(h))
+
+
+def write_python(d, f):
+    n = ident(f["name"])
+    spec = [("implementation_id", f["name"]), ("type_name", f["name"])]
+    spec += list(f["spec"].items()) + [("language", "Python"), ("lang_type", "SCRIPT")]
+    spec += [(f"conf.default.{c}", v) for c, _, v in f["confs"] if c]
+    out = ["#!/usr/bin/env python", "# -*- coding: utf-8 -*-", f'"""{n}.py (generated by RTCBuilder)"""',
+           "import sys", "import time", "import RTC", "import OpenRTM_aist", "",
+           "# <rtc-template block=\"module_spec\">", f"{n.lower()}_spec = ["]
+    out += [f'    "{c_string(k)}", "{c_string(v)}",' for k, v in spec]
+    out += ['    ""]', "# </rtc-template>", "", "", f"class {n}(OpenRTM_aist.DataFlowComponentBase):",
+            "    def __init__(self, manager):", "        OpenRTM_aist.DataFlowComponentBase.__init__(self, manager)"]
+    for p, kind, t in f["ports"]:
+        v = ident(p)
+        dt = (t or "RTC::TimedLong").replace("::", ".")
+        cls = "InPort" if kind == "DataInPort" else "OutPort"
+        suffix = "In" if kind == "DataInPort" else "Out"
+        out += [f"        self._d_{v} = OpenRTM_aist.instantiateDataType({dt})",
+                f'        self._{v}{suffix} = OpenRTM_aist.{cls}("{c_string(p)}", self._d_{v})']
+    for c, t, v in f["confs"]:
+        if c:
+            # RTCBuilder's Python holds each parameter in a list of its type's literal.
+            number = t in ("int", "long", "short", "float", "double") and re.fullmatch(r"-?[\d.]+", v)
+            lit = v if number else f'"{c_string(v)}"'
+            out.append(f'        self._{ident(c)} = [{lit}]')
+    out.append("")
+    for cb in CALLBACKS:
+        args = "self" if cb in ("onInitialize", "onFinalize") else "self, ec_id"
+        body = []
+        if cb == "onInitialize":
+            for c, _, v in f["confs"]:
+                if c:
+                    body.append(f'        self.bindParameter("{c_string(c)}", self._{ident(c)}, "{c_string(v)}")')
+            for p, kind, _ in f["ports"]:
+                v = ident(p)
+                if kind == "DataInPort":
+                    body.append(f'        self.addInPort("{c_string(p)}", self._{v}In)')
+                else:
+                    body.append(f'        self.addOutPort("{c_string(p)}", self._{v}Out)')
+        elif cb in f["impl"]:
+            body.append("        self._calls = getattr(self, '_calls', 0) + 1")
+        lines = [f"    def {cb}({args}):", f'        """The {cb} action."""'] + body + ["        return RTC.RTC_OK"]
+        if cb == "onInitialize" or cb in f["impl"]:
+            out += lines
+        else:
+            out += ["    #" + l[4:] for l in lines]
+        out.append("")
+    out += ["", f"def {n}Init(manager):", f"    profile = OpenRTM_aist.Properties(defaults_str={n.lower()}_spec)",
+            f"    manager.registerFactory(profile, {n}, OpenRTM_aist.Delete)", ""]
+    with open(os.path.join(d, f"{n}.py"), "w", encoding="utf-8") as fh:
+        fh.write("\n".join(out))
+
+
+def write_implementation(d, text):
+    """The code RTCBuilder generates from the profile `text`, in its layout below `d`."""
+    f = profile_facts(text)
+    if f is None or not f["name"] or not re.fullmatch(r"\w+", f["name"]):
+        return False
+    lang = f["lang"].lower()
+    if lang.startswith("python"):
+        write_python(d, f)
+    elif lang.startswith("c++") or lang in ("", "cpp"):
+        write_cpp(d, f)
+    else:  # Java, Processing, C#: no code (as a catalogue of mixed languages has)
+        return False
+    return True
 
 
 def main():
@@ -380,6 +616,8 @@ def main():
         os.makedirs(d)
         with open(os.path.join(d, fname), "w", encoding="utf-8") as fh:
             fh.write(t)
+        if "--implementation" in sys.argv and fname.endswith(".xml"):
+            write_implementation(d, t)
     if with_idl:
         d = os.path.join(out, "idl")
         os.makedirs(d)
