@@ -283,3 +283,55 @@ fn a_watched_configuration_change_reconfigures_the_site() {
     assert!(body.contains("Second title") && !body.contains("First title"));
     handle.stop();
 }
+
+/// Source code edited, added or removed while serving: the implementations are read again and
+/// a component with code and no profile appears or goes, as a clean build has it.
+#[test]
+fn code_edits_update_the_implementation_and_the_recovered_components() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("cat");
+    let fixtures = root().join("tests/fixtures/implementation");
+    for (rel, bytes) in tree(&fixtures.join("python-edited")) {
+        let p = input.join("Sensor").join(&rel);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, bytes).unwrap();
+    }
+    let mut ws = Workspace::open(&options(&input)).unwrap();
+    let drift = |ws: &Workspace| {
+        ws.catalog().components[0]
+            .implementation
+            .as_ref()
+            .map_or(0, |i| i.drift.len())
+    };
+    assert!(drift(&ws) > 0);
+    // The code put back in line with the profile's in-port.
+    let py = std::fs::read_dir(input.join("Sensor"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| p.extension().is_some_and(|e| e == "py"))
+        .unwrap();
+    let text = std::fs::read_to_string(&py).unwrap();
+    std::fs::write(&py, text.replace("distance_sensor", "ir_sensor")).unwrap();
+    ws.update(std::slice::from_ref(&py)).unwrap();
+    assert_same_as_clean_build(&ws, &input);
+    // A component with code and no profile, added.
+    let counter = input.join("Counter/Counter.py");
+    std::fs::create_dir_all(counter.parent().unwrap()).unwrap();
+    std::fs::copy(fixtures.join("recovered/Counter/Counter.py"), &counter).unwrap();
+    ws.update(std::slice::from_ref(&counter)).unwrap();
+    assert!(ws
+        .catalog()
+        .components
+        .iter()
+        .any(|c| c.recovered.is_some() && c.profile.name() == "Counter"));
+    assert_same_as_clean_build(&ws, &input);
+    // A profile edit keeps the recovered component as it was.
+    let rtc = input.join("Sensor/RTC.xml");
+    edit(&rtc, "</rtc:BasicInfo>", "</rtc:BasicInfo>\n");
+    ws.update(std::slice::from_ref(&rtc)).unwrap();
+    assert_same_as_clean_build(&ws, &input);
+    std::fs::remove_file(&counter).unwrap();
+    ws.update(std::slice::from_ref(&counter)).unwrap();
+    assert!(!ws.catalog().components.iter().any(|c| c.recovered.is_some()));
+    assert_same_as_clean_build(&ws, &input);
+}
