@@ -645,7 +645,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "drift-resolved",
         summary: "the code and the profile of a component no longer disagree where they did in OLD",
-        explanation: "A finding of OLD's implementation check (RTC801-RTC809, identified by its component, kind and element, as for DIFF261) that NEW does not have: the code or the profile was changed so that the two agree. When NEW's code registers some of that kind of element through names rtcdoc cannot read (RTC810), a finding that only the code lacks an element is no longer made, so its disappearance is no proof of agreement: the message says so. The component's code removed altogether is DIFF363, not a resolution.",
+        explanation: "A finding of OLD's implementation check (RTC801-RTC809, identified by its component, kind and element, as for DIFF261) that NEW does not have: the code or the profile was changed so that the two agree. When NEW's code registers ports or parameters of that kind through a name or macro rtcdoc cannot read (RTC810), or none at all, a finding that the profile or the code has such an element the other lacks is no longer made, so its disappearance is no proof of agreement: the message says so (`no longer found, but not verified either`). The component's code removed altogether is DIFF363, not a resolution.",
     },
     Code {
         code: IMPLEMENTATION_ADDED,

@@ -148,18 +148,30 @@ fn introduced(component: &str, d: &Drift, (oc, old_name): Side, (nc, new_name): 
     }
 }
 
-/// The kind of element whose registrations a finding that the code lacks one is about, when
-/// such a finding is only made once the code's registrations of it were all read.
-fn gated(d: &Drift) -> Option<(Unread, &'static str)> {
-    if d.kind != DriftKind::OnlyInProfile {
-        return None;
-    }
+/// Why a finding that NEW no longer makes is not verified either, when it is about a port or
+/// parameter that NEW's code may register unseen: a finding that the code lacks an element is
+/// only made once all its registrations of that kind were read, and one that the code has an
+/// element goes away when the code registers it through a name that cannot be read (RTC810).
+fn unverified_in_new(d: &Drift, new_imp: &Implementation) -> Option<String> {
     let mut parts = d.element.split('/');
     let (list, _, rest) = (parts.next(), parts.next(), parts.next());
-    match (list, rest) {
-        (Some("dataPorts"), None) => Some((Unread::DataPort, "data ports")),
-        (Some("servicePorts"), None) => Some((Unread::ServicePort, "service ports")),
-        (Some("configurationSet"), None) => Some((Unread::Parameter, "configuration parameters")),
+    let (kind, what) = match (list, rest) {
+        (Some("dataPorts"), None) => (Unread::DataPort, "data ports"),
+        (Some("servicePorts"), None) => (Unread::ServicePort, "service ports"),
+        (Some("configurationSet"), None) => (Unread::Parameter, "configuration parameters"),
+        _ => return None,
+    };
+    let unread = new_imp
+        .unverified
+        .iter()
+        .any(|u| u.of == kind || u.of == Unread::Any);
+    match d.kind {
+        DriftKind::OnlyInProfile if !new_imp.reads_all(kind) => Some(format!(
+            "NEW's code registers no {what}, or some through a name or macro that cannot be read (RTC810), so what it lacks is not reported"
+        )),
+        DriftKind::OnlyInCode if unread => Some(format!(
+            "NEW's code registers some {what} through a name or macro that cannot be read (RTC810), so what it registers is not all known"
+        )),
         _ => None,
     }
 }
@@ -183,10 +195,8 @@ fn resolved(
         d.kind.code(),
         about(d.kind)
     );
-    let message = match gated(d).filter(|(kind, _)| !new_imp.reads_all(*kind)) {
-        Some((_, what)) => format!(
-            "{head} is no longer found, but not verified either: NEW's code registers no {what} or some through a name or macro that cannot be read, so what it lacks is not reported; {was}"
-        ),
+    let message = match unverified_in_new(d, new_imp) {
+        Some(why) => format!("{head} is no longer found, but not verified either: {why}; {was}"),
         None => format!("the code and the profile agree again on {head}; {was}"),
     };
     Change {
