@@ -659,7 +659,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "implementation-removed",
         summary: "OLD reads code for a component whose code NEW does not have",
-        explanation: "The source files found beside the profile in OLD are gone in NEW (removed, moved away from RTCBuilder's layout, excluded, or no longer readable). The disagreements OLD's code had with the profile are not resolved, only no longer compared: they are counted in the message instead of reported one by one as DIFF361. If the code moved, name its files in rtcdoc.toml (`[[implementation.component]]` with `files`).",
+        explanation: "The source files found beside the profile in OLD are gone in NEW (removed, moved away from RTCBuilder's layout, excluded, or no longer readable). The disagreements OLD's code had with the profile are not resolved, only no longer compared: they are counted in the message instead of reported one by one as DIFF361. If the code moved, name its files in rtcdoc.toml ([[implementation.component]] with its name and files).",
     },
 ];
 
