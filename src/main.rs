@@ -52,7 +52,8 @@ enum Command {
     /// Validate profiles (for CI); exits 1 when a profile has an error.
     Check(CheckArgs),
     /// Compare two versions of a catalogue (directories, profile files or REV:PATH of git) and
-    /// classify every change as breaking, warning or info; exits 1 when one reaches --fail-on.
+    /// classify every change as breaking, warning or info — also where a component's code starts
+    /// or stops disagreeing with its profile; exits 1 when one reaches --fail-on.
     Diff(DiffArgs),
     /// Build into memory, serve on 127.0.0.1, rebuild on changes and live-reload browsers.
     Serve(ServeArgs),

@@ -5,9 +5,10 @@
 //! Numbering: DIFF0xx are about the comparison itself, DIFF1xx breaking, DIFF2xx warnings,
 //! DIFF3xx information. Codes are never reused. The IDL-level codes (struct members, enum
 //! values, unions, typedefs, operations) are DIFF13x / DIFF23x / DIFF33x, the RT System
-//! connectors a component change breaks DIFF14x, and the changes of the RT System profiles
+//! connectors a component change breaks DIFF14x, the changes of the RT System profiles
 //! themselves (instances, connectors, configuration, execution contexts) DIFF15x / DIFF25x /
-//! DIFF35x.
+//! DIFF35x, and the changes of where a component's code and its profile disagree (its drift,
+//! [`crate::implementation::drift`]) DIFF26x / DIFF36x.
 
 use serde::Serialize;
 
@@ -100,6 +101,7 @@ pub const SYSTEM_EXECUTION_CONTEXT: &str = "DIFF254";
 pub const SYSTEM_CONNECTOR_TRANSPORT: &str = "DIFF255";
 pub const SYSTEM_CONNECTOR_POLICY: &str = "DIFF256";
 pub const SYSTEM_RENAMED: &str = "DIFF257";
+pub const DRIFT_INTRODUCED: &str = "DIFF261";
 pub const PORT_ADDED: &str = "DIFF301";
 pub const INTERFACE_ADDED: &str = "DIFF302";
 pub const CONFIGURATION_ADDED: &str = "DIFF303";
@@ -119,6 +121,9 @@ pub const SYSTEM_CONNECTOR_ADDED: &str = "DIFF353";
 pub const SYSTEM_CONFIGURATION: &str = "DIFF354";
 pub const SYSTEM_OTHER: &str = "DIFF355";
 pub const SYSTEM_CONNECTOR_TYPE_REPAIRED: &str = "DIFF356";
+pub const DRIFT_RESOLVED: &str = "DIFF361";
+pub const IMPLEMENTATION_ADDED: &str = "DIFF362";
+pub const IMPLEMENTATION_REMOVED: &str = "DIFF363";
 
 use Level::{Breaking, Info, Warning};
 
@@ -496,6 +501,13 @@ pub static CODES: &[Code] = &[
         explanation: "A system is matched by the vendor and name of its id. When no system of the other side has the id, a system of the same file (or the one system of each side) is taken as the same system renamed: its instances, connectors and configuration are then compared as usual. The file still restores the system; what names the system by its id (scripts, a name service context, documentation) must follow.",
     },
     Code {
+        code: DRIFT_INTRODUCED,
+        level: Warning,
+        name: "drift-introduced",
+        summary: "the code and the profile of a component disagree in NEW where they did not in OLD",
+        explanation: "A component's implementation (the C++, Python or Java code beside its profile) is compared with the profile on both sides, as `rtcdoc check` compares them (RTC801-RTC809: a port or parameter on one side only, another type, direction or default, a callback marked otherwise, a spec array value). A finding of NEW that OLD does not have is reported here, so that a pull request that edits only the code, or only the profile, and leaves the two disagreeing is caught: the documentation, and the systems built from the profile, no longer describe what the component does. A finding is identified by its component, its RTC80x kind and the element (`dataPorts/in`, `configurationSet/gain/defaultValue`), not by its line, so an edit that only moves code reports nothing; a finding that persists with other values is the same finding. The message says what the profile says and what the code says, and where in NEW's code. Not breaking by itself, since nothing connected to the component changed; make the profile and the code agree again (`rtcdoc check` gives a hint for each kind). The code of a component that OLD has none of (added, or newly readable) is compared too: its findings are reported here, beside DIFF362.",
+    },
+    Code {
         code: PORT_ADDED,
         level: Info,
         name: "port-added",
@@ -627,6 +639,27 @@ pub static CODES: &[Code] = &[
         name: "system-connector-data-type-repaired",
         summary: "a data connector of an RT System now carries the type its ports carry",
         explanation: "The connector's data type changed to the type that both its ports carry, as the system file records them (RTSystemEditor's `dataport.data_type` on each instance's port), where before it carried a type they did not: the connection that was refused when the system was restored now succeeds. Any other change of a connector's type is DIFF156; when the file records no type for a port, a change cannot be told to be a repair and is DIFF156 too.",
+    },
+    Code {
+        code: DRIFT_RESOLVED,
+        level: Info,
+        name: "drift-resolved",
+        summary: "the code and the profile of a component no longer disagree where they did in OLD",
+        explanation: "A finding of OLD's implementation check (RTC801-RTC809, identified by its component, kind and element, as for DIFF261) that NEW does not have: the code or the profile was changed so that the two agree. When NEW's code registers ports or parameters of that kind through a name or macro rtcdoc cannot read (RTC810), or none at all, a finding that the profile or the code has such an element the other lacks is no longer made, so its disappearance is no proof of agreement: the message says so (`no longer found, but not verified either`). The component's code removed altogether is DIFF363, not a resolution.",
+    },
+    Code {
+        code: IMPLEMENTATION_ADDED,
+        level: Info,
+        name: "implementation-added",
+        summary: "NEW reads code for a component whose code OLD does not have",
+        explanation: "Source files of the component are found beside its profile in NEW and not in OLD (the code was added, or could not be read before: too large, unreadable, excluded). Having code is no drift and affects nothing connected to the component; where the new code disagrees with the profile, each finding is reported as DIFF261. The message names the language and the files read.",
+    },
+    Code {
+        code: IMPLEMENTATION_REMOVED,
+        level: Info,
+        name: "implementation-removed",
+        summary: "OLD reads code for a component whose code NEW does not have",
+        explanation: "The source files found beside the profile in OLD are gone in NEW (removed, moved away from RTCBuilder's layout, excluded, or no longer readable). The disagreements OLD's code had with the profile are not resolved, only no longer compared: they are counted in the message instead of reported one by one as DIFF361. If the code moved, name its files in rtcdoc.toml ([[implementation.component]] with its name and files).",
     },
 ];
 

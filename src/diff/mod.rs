@@ -16,10 +16,12 @@
 //! compared inside (`idl`: members, enum values, union cases, typedefs, operations); with
 //! RT System profiles, the systems themselves are compared (instances, connectors,
 //! configuration, execution contexts) and the connectors the component changes break are
-//! reported ([`systems`]).
+//! reported ([`systems`]). Where each side's code and profile disagree (the implementation
+//! check's drift), a finding on one side only is a change too ([`drift`]).
 
 pub mod codes;
 mod constraint;
+mod drift;
 mod idl;
 pub mod report;
 pub mod side;
@@ -293,6 +295,9 @@ pub fn diff_with_systems(
                         &mut out,
                     );
                     breaks.note_ports(&new_ids[n].key, &component, &out[before..]);
+                    // Where the code and the profile disagree, on one side only: a pull
+                    // request that edits only the code changes this and nothing above.
+                    drift::compare(&component, (oc, old_name), (nc, new_name), &mut out);
                     // Renamed (`pair_renamed`): to the systems, the old id is gone.
                     if old_ids[o].key != new_ids[n].key {
                         breaks.note_removed(&old_ids[o].key, &label(&old_ids[o], oc));

@@ -398,6 +398,8 @@ fn every_code_from_a_one_edit_pair() {
         assert!(
             cases.iter().any(|k| k.code == c.code)
                 || CATALOGUE_CODES.contains(&c.code)
+                // The drift codes have a fixture pair of code edits (tests/suite/diff_drift.rs).
+                || crate::diff_drift::CODES.contains(&c.code)
                 // The IDL and connector codes have fixture pairs (tests/suite/diff_fixtures.rs).
                 || root().join("tests/fixtures/diff").join(c.code).is_dir(),
             "no test case for {}",

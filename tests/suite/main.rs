@@ -17,6 +17,7 @@ mod diagnostics_scale;
 mod diagrams;
 mod dialects;
 mod diff;
+mod diff_drift;
 mod diff_fixtures;
 mod function_length;
 mod guide_commands;
