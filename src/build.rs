@@ -126,7 +126,11 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     let mut source_notes = Vec::new();
     if !opts.sources.is_empty() {
         progress.stage("reading sources", 0);
-        let m = crate::sources::materialize(&opts.sources, opts.limits.max_file_size)?;
+        let m = crate::sources::materialize(
+            &opts.sources,
+            opts.limits.max_file_size,
+            &opts.implementation.selection(),
+        )?;
         let names: Vec<&str> = opts
             .sources
             .iter()

@@ -17,6 +17,20 @@ pub struct Settings {
     pub files: Vec<(globset::GlobMatcher, Vec<String>)>,
 }
 
+impl Settings {
+    /// The code a git revision's reading copies for these settings.
+    pub fn selection(&self) -> crate::sources::code::Selection {
+        crate::sources::code::Selection {
+            enabled: self.enabled,
+            named: self
+                .files
+                .iter()
+                .flat_map(|(_, f)| f.iter().cloned())
+                .collect(),
+        }
+    }
+}
+
 impl Default for Settings {
     fn default() -> Self {
         Settings {

@@ -271,7 +271,7 @@ fn stderr_line(out: &std::process::Output) -> String {
 }
 
 /// Writes the profile-like files of `object` (`REV:PATH`) below `dest`, and the source files
-/// beside them that the implementation check may read ([`implementation_files`]). The object is
+/// beside them that the implementation check may read ([`crate::sources::code::write`]). The object is
 /// data, never an option: it is refused when it starts with `-`, and passed after
 /// `--end-of-options` to every git command.
 fn git_checkout(which: &str, object: &str, dest: &Path, opts: &LoadOptions) -> Result<ObjectKind> {
@@ -345,15 +345,19 @@ fn git_checkout(which: &str, object: &str, dest: &Path, opts: &LoadOptions) -> R
                 let Some(sha) = sha else { continue };
                 if wanted(rel) {
                     files.push((sha.to_string(), rel.to_string()));
-                } else if opts.implementation.enabled && is_source_file(rel) {
+                } else if opts.implementation.enabled && crate::sources::code::is_source_file(rel) {
                     sources.push((sha.to_string(), rel.to_string()));
                 }
             }
-            let sources = implementation_files(&files, sources, &opts.implementation);
             crate::sources::write_blobs(None, &files, dest, u64::MAX)?;
-            // Cut at the size limit (one byte more), so that the check reports a larger file
-            // as not read (RTC811), as it does on disk.
-            crate::sources::write_blobs(None, &sources, dest, opts.limits.max_file_size)?;
+            crate::sources::code::write(
+                None,
+                &files,
+                sources,
+                dest,
+                &opts.implementation.selection(),
+                opts.limits.max_file_size,
+            )?;
             Ok(ObjectKind::Tree)
         }
         other => bail!("{which} `{object}` is a git {other}, not a directory or a file"),
@@ -368,89 +372,6 @@ fn wanted(rel: &str) -> bool {
     p.components()
         .all(|c| matches!(c, std::path::Component::Normal(_)))
         && crate::walk::is_specification_file(p)
-}
-
-/// How deep below a profile's folder the implementation check looks for the files named after
-/// the component, and how many entries it looks at (`implementation::find`).
-const SOURCE_DEPTH: usize = 5;
-const SOURCES_PER_FOLDER: usize = 2_000;
-
-/// A file the implementation check reads by its extension (C++, Python, Java), at a safe
-/// path outside hidden folders (the check's walk does not enter them).
-fn is_source_file(rel: &str) -> bool {
-    let p = Path::new(rel);
-    let ext = p
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    matches!(
-        ext.as_deref(),
-        Some("cpp" | "cc" | "cxx" | "h" | "hpp" | "hh" | "hxx" | "py" | "java")
-    ) && p.components().all(
-        |c| matches!(c, std::path::Component::Normal(n) if !n.to_string_lossy().starts_with('.')),
-    )
-}
-
-/// Of the source files `(sha, path)` of a revision, those the implementation check could read
-/// for the profiles among `profiles` (the profile-like files copied): below a profile's folder,
-/// at most [`SOURCE_DEPTH`] levels down (RTCBuilder's layout is 1–3), the shallowest
-/// [`SOURCES_PER_FOLDER`] of each folder; and the files `[[implementation.component]]` names,
-/// at any depth. Their size is bounded when they are written.
-fn implementation_files(
-    profiles: &[(String, String)],
-    sources: Vec<(String, String)>,
-    settings: &crate::catalog::implementations::Settings,
-) -> Vec<(String, String)> {
-    use std::collections::{BTreeMap, BTreeSet};
-    let folder = |rel: &str| rel.rsplit_once('/').map_or("", |(d, _)| d).to_string();
-    let dirs: BTreeSet<String> = profiles
-        .iter()
-        .filter(|(_, rel)| {
-            let ext = Path::new(rel)
-                .extension()
-                .and_then(|e| e.to_str())
-                .map(str::to_ascii_lowercase);
-            !matches!(ext.as_deref(), Some("idl"))
-        })
-        .map(|(_, rel)| folder(rel))
-        .collect();
-    let named: BTreeSet<&str> = settings
-        .files
-        .iter()
-        .flat_map(|(_, f)| f.iter().map(String::as_str))
-        .collect();
-    // Per profile folder, its candidates by depth below it.
-    let mut per_dir: BTreeMap<&str, Vec<(usize, usize)>> = BTreeMap::new();
-    let mut keep = vec![false; sources.len()];
-    for (i, (_, rel)) in sources.iter().enumerate() {
-        for dir in &dirs {
-            let below = if dir.is_empty() {
-                Some(rel.as_str())
-            } else {
-                rel.strip_prefix(dir.as_str())
-                    .and_then(|r| r.strip_prefix('/'))
-            };
-            let Some(below) = below else { continue };
-            if named.contains(below) {
-                keep[i] = true;
-            }
-            let depth = below.split('/').count();
-            if depth <= SOURCE_DEPTH {
-                per_dir.entry(dir).or_default().push((depth, i));
-            }
-        }
-    }
-    for v in per_dir.values_mut() {
-        v.sort_by(|a, b| (a.0, &sources[a.1].1).cmp(&(b.0, &sources[b.1].1)));
-        for &(_, i) in v.iter().take(SOURCES_PER_FOLDER) {
-            keep[i] = true;
-        }
-    }
-    sources
-        .into_iter()
-        .zip(keep)
-        .filter_map(|(s, k)| k.then_some(s))
-        .collect()
 }
 
 #[cfg(test)]
@@ -497,42 +418,5 @@ mod tests {
         assert!(wanted("idl/Nav.idl"));
         assert!(!wanted("a/main.cpp"));
         assert!(!wanted("../x.xml"));
-    }
-
-    #[test]
-    fn source_files_beside_profiles_are_copied() {
-        let sha = |rel: &str| (format!("sha-{rel}"), rel.to_string());
-        let profiles = [sha("comp/A/RTC.xml"), sha("idl/Nav.idl")];
-        let sources = [
-            "comp/A/src/A.cpp",
-            "comp/A/include/A/A.h",
-            "comp/A/a/b/c/d/e/too_deep.cpp",
-            "comp/A/a/b/c/d/five.py",
-            "comp/B/src/B.cpp",
-            "idl/gen/Nav.cpp",
-            "comp/A/x/y/z/w/v/Named.java",
-        ]
-        .map(sha)
-        .to_vec();
-        let mut settings = crate::catalog::implementations::Settings::default();
-        let glob = globset::Glob::new("A").map(|g| g.compile_matcher());
-        settings
-            .files
-            .push((glob.expect("glob"), vec!["x/y/z/w/v/Named.java".into()]));
-        let kept: Vec<String> = implementation_files(&profiles, sources, &settings)
-            .into_iter()
-            .map(|(_, rel)| rel)
-            .collect();
-        assert_eq!(
-            kept,
-            [
-                "comp/A/src/A.cpp",
-                "comp/A/include/A/A.h",
-                "comp/A/a/b/c/d/five.py",
-                "comp/A/x/y/z/w/v/Named.java",
-            ]
-        );
-        assert!(is_source_file("a/B.HPP") && is_source_file("B.py"));
-        assert!(!is_source_file("a/.hidden/B.cpp") && !is_source_file("a/B.txt"));
     }
 }

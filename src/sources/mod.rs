@@ -22,6 +22,7 @@
 //! the system configuration, without hooks, without a terminal prompt and with only the
 //! `file`, `https` and `ssh` protocols allowed (`GIT_ALLOW_PROTOCOL`).
 
+pub mod code;
 pub mod lock;
 
 use crate::diagnostic::{codes, Diagnostic};
@@ -934,7 +935,11 @@ fn safe(rel: &str) -> bool {
 /// Writes the readable files of every pinned source (at its commit, below its `path`) into a
 /// new temporary folder as `<name>/<path in the repository>`. `max_file_size` bounds what is
 /// kept of each file (one byte more, so that the readers report it as too large).
-pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized> {
+pub fn materialize(
+    pinned: &[Pinned],
+    max_file_size: u64,
+    implementation: &code::Selection,
+) -> Result<Materialized> {
     let dir = tempfile::Builder::new()
         .prefix("rtcdoc-sources-")
         .tempdir()
@@ -966,6 +971,7 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
             )
         })?;
         let mut blobs = Vec::new();
+        let mut code = Vec::new();
         let mut any = false;
         for entry in out.stdout.split(|b| *b == 0).filter(|e| !e.is_empty()) {
             let entry = String::from_utf8_lossy(entry);
@@ -991,6 +997,14 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
                     )
                     .with_hint("commit the folder itself instead of a link, or add the repository it belongs to as a [[source]] of its own"),
                 ),
+                // Source code, for the implementation check (`code::write` picks it).
+                (Some("100644" | "100755"), Some("blob"))
+                    if !wanted(rel) && implementation.enabled && code::is_source_file(rel) =>
+                {
+                    if let Some(sha) = sha {
+                        code.push((sha.to_string(), rel.to_string()));
+                    }
+                }
                 _ if ty != Some("commit") && !wanted(rel) => {}
                 (Some("100644" | "100755"), Some("blob")) => {
                     if let (Some(sha), Some(_)) = (sha, size.and_then(|n| n.parse::<u64>().ok())) {
@@ -1022,6 +1036,25 @@ pub fn materialize(pinned: &[Pinned], max_file_size: u64) -> Result<Materialized
         write_blobs(Some(&p.mirror), &blobs, &root, max_file_size).with_context(|| {
             format!("source `{}`: cannot read its files from the cache", s.name)
         })?;
+        let profiles: Vec<(String, String)> = blobs
+            .iter()
+            .filter(|(_, rel)| crate::walk::is_specification_file(Path::new(rel)))
+            .cloned()
+            .collect();
+        code::write(
+            Some(&p.mirror),
+            &profiles,
+            code,
+            &root,
+            implementation,
+            max_file_size,
+        )
+        .with_context(|| {
+            format!(
+                "source `{}`: cannot read its source code from the cache",
+                s.name
+            )
+        })?;
     }
     Ok(Materialized { dir, notes })
 }
@@ -1035,8 +1068,20 @@ pub(crate) fn write_blobs(
     dest: &Path,
     max: u64,
 ) -> Result<()> {
+    write_blobs_where(git_dir, files, dest, max, &|_| true).map(|_| ())
+}
+
+/// [`write_blobs`], of the blobs whose (cut) content `accept` takes; the paths written.
+pub(crate) fn write_blobs_where(
+    git_dir: Option<&Path>,
+    files: &[(String, String)],
+    dest: &Path,
+    max: u64,
+    accept: &dyn Fn(&[u8]) -> bool,
+) -> Result<Vec<String>> {
+    let mut written = Vec::new();
     if files.is_empty() {
-        return Ok(());
+        return Ok(written);
     }
     let mut c = git_command(git_dir);
     c.args(["cat-file", "--batch"])
@@ -1068,17 +1113,21 @@ pub(crate) fn write_blobs(
             std::io::copy(&mut (&mut stdout).take(size - keep), &mut std::io::sink())?;
             let mut newline = [0u8; 1];
             stdout.read_exact(&mut newline)?;
+            if !accept(&body) {
+                continue;
+            }
             let path = dest.join(rel);
             if let Some(parent) = path.parent() {
                 std::fs::create_dir_all(parent)?;
             }
             std::fs::write(&path, &body)?;
+            written.push(rel.clone());
         }
         Ok(())
     })();
     let _ = writer.join();
     let _ = child.wait();
-    result
+    result.map(|_| written)
 }
 
 #[cfg(test)]

@@ -332,6 +332,10 @@ fn code_edits_update_the_implementation_and_the_recovered_components() {
     assert_same_as_clean_build(&ws, &input);
     std::fs::remove_file(&counter).unwrap();
     ws.update(std::slice::from_ref(&counter)).unwrap();
-    assert!(!ws.catalog().components.iter().any(|c| c.recovered.is_some()));
+    assert!(!ws
+        .catalog()
+        .components
+        .iter()
+        .any(|c| c.recovered.is_some()));
     assert_same_as_clean_build(&ws, &input);
 }

@@ -1035,3 +1035,60 @@ fn an_include_is_not_satisfied_by_another_sources_copy() {
     let found = includes(&["--idl-path", &idl_path]);
     assert!(found.is_empty(), "{found:#?}");
 }
+
+/// The code of a `[[source]]` repository is read at its pinned commit as on disk: the
+/// implementation beside a profile (its drift found), and a component with code and no
+/// profile (recovered).
+#[test]
+fn a_sources_code_is_read_at_its_commit() {
+    let p = Project::new();
+    let repo = p.root.join("lab");
+    let fixtures = root().join("tests/fixtures/implementation");
+    let read = |rel: &str| std::fs::read_to_string(fixtures.join(rel)).unwrap();
+    commit(
+        &repo,
+        &[
+            ("Sensor/RTC.xml", read("python-edited/RTC.xml")),
+            ("Sensor/SensorGUI.py", read("python-edited/SensorGUI.py")),
+            (
+                "Gripper/src/Gripper.cpp",
+                read("recovered/Gripper/src/Gripper.cpp"),
+            ),
+            (
+                "Gripper/include/Gripper/Gripper.h",
+                read("recovered/Gripper/include/Gripper/Gripper.h"),
+            ),
+            ("tools/plot.py", "print('not a component')\n".to_string()),
+        ],
+        None,
+    );
+    p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    let c = p.catalog();
+    let comps = c["components"].as_object().unwrap();
+    let sensor = comps
+        .values()
+        .find(|c| c["source"] == "lab/Sensor/RTC.xml")
+        .expect("the profile");
+    assert_eq!(
+        sensor["implementation"]["files"],
+        serde_json::json!(["lab/Sensor/SensorGUI.py"])
+    );
+    assert!(!sensor["implementation"]["drift"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+    let gripper = comps
+        .values()
+        .find(|c| c["source"] == "lab/Gripper/src/Gripper.cpp")
+        .expect("the component recovered from its code");
+    assert_eq!(
+        gripper["recovered"]["unread"][0]["written"],
+        "GRIPPER_VERSION"
+    );
+    // The header was read with it: the ports have their types.
+    assert_eq!(gripper["dataPorts"][0]["type"], "RTC::TimedLong");
+    let (_, err) = p.run(&["check", "--format", "human"]);
+    assert!(err.contains("RTC801") && err.contains("RTC802"), "{err}");
+}
