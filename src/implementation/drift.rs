@@ -517,8 +517,10 @@ fn callbacks(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
     let fsm_or_modes = ["fsm", "multimode", "statemachine"]
         .iter()
         .any(|w| kind_words.to_ascii_lowercase().contains(w));
-    // A base class not read may define any callback.
-    let base_unread = imp.unverified.iter().any(|u| u.of == super::Unread::Base);
+    // A base class not read may define any callback; files that define none at all (a
+    // library header matched by name) say nothing of which ones the component defines.
+    let base_unread =
+        imp.callbacks.is_empty() || imp.unverified.iter().any(|u| u.of == super::Unread::Base);
     for (k, name) in CALLBACKS.iter().enumerate() {
         let kind = ActionKind::ALL.get(k).copied();
         let Some(kind) = kind else { continue };

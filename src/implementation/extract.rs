@@ -65,6 +65,9 @@ pub struct FileFacts {
     /// variable → data type (`InPort<T> var`, `var = new InPort<T>(…)`, Python chains resolved
     /// at the end)
     pub port_types: BTreeMap<String, String>,
+    /// variable → the direction of the port class it is (`InPort<T> m_x`): what the running
+    /// port is, whichever of addInPort / addOutPort registers it
+    pub port_dirs: BTreeMap<String, Direction>,
     /// variable → the first string a constructor call or initializer gives it (`m_xPort("x")`,
     /// `CorbaPort("x")`)
     pub ctor_name: BTreeMap<String, String>,
@@ -179,9 +182,15 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
             }
         }
         w if (w.ends_with("InPort") || w.ends_with("OutPort")) && t.is(i + 1, "<") => {
+            let dir = if w.ends_with("InPort") {
+                Direction::In
+            } else {
+                Direction::Out
+            };
             if let Some((ty, after)) = template_arg(t, i + 1) {
                 // `InPort<T> m_xIn;` / `m_xIn = new InPort<T>(…)`.
                 if t.is_ident(after) {
+                    f.port_dirs.insert(t.src(after).to_string(), dir);
                     f.port_types.insert(t.src(after).to_string(), ty);
                 } else if i >= 3 && t.is(i - 1, "new") && t.is(i - 2, "=") && t.is_ident(i - 3) {
                     let var = t.src(i - 3).to_string();
@@ -201,6 +210,7 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
                             }
                         }
                     }
+                    f.port_dirs.insert(var.clone(), dir);
                     f.port_types.insert(var, ty);
                 }
             }
@@ -716,6 +726,7 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         })
         .collect();
     let mut port_types = BTreeMap::new();
+    let mut port_dirs = BTreeMap::new();
     let mut ctor_name = BTreeMap::new();
     let mut var_types = BTreeMap::new();
     let mut py_assign = BTreeMap::new();
@@ -737,6 +748,7 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             }
         }
         port_types.extend(f.port_types);
+        port_dirs.extend(f.port_dirs);
         for (k, v) in f.ctor_name {
             ctor_name.entry(k).or_insert(v);
         }
@@ -780,8 +792,24 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         };
         Some(ty.replace('.', "::"))
     };
-    for (reg_name, direction, var, at, construct) in port_regs {
+    // `self._xIn = OpenRTM_aist.InPort(…)`: an in-port.
+    let py_dir = |var: &str| -> Option<Direction> {
+        let (callee, _, _) = py_assign.get(var)?;
+        match callee.rsplit('.').next()? {
+            "InPort" => Some(Direction::In),
+            "OutPort" => Some(Direction::Out),
+            _ => None,
+        }
+    };
+    for (reg_name, reg_direction, var, at, construct) in port_regs {
         let data_type = port_types.get(&var).cloned().or_else(|| py_type(&var));
+        // The port object's class says what it is (an InPort given to addOutPort stays an
+        // in-port); the registering call when the class is not seen.
+        let direction = port_dirs
+            .get(&var)
+            .copied()
+            .or_else(|| py_dir(&var))
+            .unwrap_or(reg_direction);
         // The port runs under the name its constructor gives it (`m_xIn("x", m_x)`: OpenRTM's
         // PortBase keeps it; addInPort's name only keys the port's properties), so that one
         // is compared; the registration's name when the constructor is not seen.
