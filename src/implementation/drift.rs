@@ -141,9 +141,10 @@ fn type_family(t: &str) -> Option<&'static str> {
     let t = t.trim().trim_start_matches("std::").replace(' ', "");
     Some(match t.as_str() {
         "short" | "int" | "long" | "longlong" | "unsignedshort" | "unsignedint"
-        | "unsignedlong" | "unsignedlonglong" | "int16_t" | "int32_t" | "int64_t" | "uint16_t"
-        | "uint32_t" | "uint64_t" | "Integer" | "IntegerHolder" | "ShortHolder" | "LongHolder"
-        | "size_t" => "integer",
+        | "unsignedlong" | "unsignedlonglong" | "unsigned" | "signed" | "shortint" | "longint"
+        | "longlongint" | "unsignedlongint" | "unsignedshortint" | "int8_t" | "uint8_t"
+        | "int16_t" | "int32_t" | "int64_t" | "uint16_t" | "uint32_t" | "uint64_t" | "Integer"
+        | "IntegerHolder" | "ShortHolder" | "LongHolder" | "size_t" => "integer",
         "float" | "double" | "longdouble" | "FloatHolder" | "DoubleHolder" | "Double" | "Float" => {
             "real"
         }
@@ -509,9 +510,23 @@ fn parameters(profile: &Profile, imp: &Implementation, acc: &mut Acc, complete: 
 }
 
 fn callbacks(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
+    // onAction (a state machine's) and onModeChanged (a multi-mode component's) are no
+    // callbacks of a data-flow component: RTCBuilder generates neither for one, even when its
+    // profile marks every action implemented, so their mark says nothing of its code.
+    let kind_words = text(&profile.basic_info.component_kind).unwrap_or("");
+    let fsm_or_modes = ["fsm", "multimode", "statemachine"]
+        .iter()
+        .any(|w| kind_words.to_ascii_lowercase().contains(w));
+    // A base class not read may define any callback; files that define none at all (a
+    // library header matched by name) say nothing of which ones the component defines.
+    let base_unread =
+        imp.callbacks.is_empty() || imp.unverified.iter().any(|u| u.of == super::Unread::Base);
     for (k, name) in CALLBACKS.iter().enumerate() {
         let kind = ActionKind::ALL.get(k).copied();
         let Some(kind) = kind else { continue };
+        if matches!(*name, "onAction" | "onModeChanged") && !fsm_or_modes {
+            continue;
+        }
         let action = profile.actions.iter().find(|a| a.kind == kind);
         // An action the profile does not list says nothing.
         let Some(action) = action.filter(|a| a.implemented.is_some()) else {
@@ -533,7 +548,7 @@ fn callbacks(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
             Some(_) => {}
             // onInitialize is the base class's when the class does not define it; RTCBuilder
             // always generates it, so only a missing definition of another action is drift.
-            None if marked && *name != "onInitialize" => acc.push(
+            None if marked && *name != "onInitialize" && !base_unread => acc.push(
                 DriftKind::CallbackMissing,
                 el,
                 Some("implemented=\"true\"".into()),

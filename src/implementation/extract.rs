@@ -65,9 +65,15 @@ pub struct FileFacts {
     /// variable → data type (`InPort<T> var`, `var = new InPort<T>(…)`, Python chains resolved
     /// at the end)
     pub port_types: BTreeMap<String, String>,
+    /// variable → the direction of the port class it is (`InPort<T> m_x`): what the running
+    /// port is, whichever of addInPort / addOutPort registers it
+    pub port_dirs: BTreeMap<String, Direction>,
     /// variable → the first string a constructor call or initializer gives it (`m_xPort("x")`,
     /// `CorbaPort("x")`)
     pub ctor_name: BTreeMap<String, String>,
+    /// Variables a constructor call or initializer gives a name that is not a literal
+    /// (`m_xIn(name.c_str(), m_x)`): the port's name is not known.
+    pub ctor_unread: std::collections::BTreeSet<String>,
     /// (port variable, instance name, type name, direction, where, construct)
     pub iface_regs: Vec<InterfaceReg>,
     /// (name, variable, default, where, construct)
@@ -81,6 +87,14 @@ pub struct FileFacts {
     /// (class name, base names, where)
     pub classes: Vec<(String, Vec<String>, At)>,
     pub macros: Vec<(String, At)>,
+    /// Python: the modules a name may come from (`from M import *`, `from M import B`,
+    /// `import M`), as (module, the names imported; `*` for all, empty for `import M`).
+    pub imports: Vec<(String, Vec<String>)>,
+    /// C++: the files `#include "…"` names (set by [`super::read`], which sees the lines).
+    pub includes: Vec<String>,
+    /// Read because it defines a base class of the component's class, not as one of the
+    /// component's own files.
+    pub base_file: bool,
 }
 
 /// Reads the facts of one file.
@@ -159,19 +173,45 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
                     .push((t.literal(args[0]), var, default, at(i), call_text(t, i)));
             }
         }
-        "class" if t.is_ident(i + 1) => class(t, i, lang, f, at),
+        "class" if t.is_ident(i + 1) && !t.is(i.wrapping_sub(1), "enum") => {
+            class(t, i, lang, f, at);
+        }
         w if CALLBACKS.contains(&w) && call => {
             if let Some(cb) = callback(t, i, lang, at) {
                 f.callbacks.push(cb);
             }
         }
         w if (w.ends_with("InPort") || w.ends_with("OutPort")) && t.is(i + 1, "<") => {
+            let dir = if w.ends_with("InPort") {
+                Direction::In
+            } else {
+                Direction::Out
+            };
             if let Some((ty, after)) = template_arg(t, i + 1) {
                 // `InPort<T> m_xIn;` / `m_xIn = new InPort<T>(…)`.
                 if t.is_ident(after) {
+                    f.port_dirs.insert(t.src(after).to_string(), dir);
                     f.port_types.insert(t.src(after).to_string(), ty);
                 } else if i >= 3 && t.is(i - 1, "new") && t.is(i - 2, "=") && t.is_ident(i - 3) {
-                    f.port_types.insert(t.src(i - 3).to_string(), ty);
+                    let var = t.src(i - 3).to_string();
+                    // `m_xIn = new InPort<T>("x", m_x)`: the name the port runs under.
+                    if let Some(&first) = t
+                        .is_open(after, b'(')
+                        .then(|| t.args(after))
+                        .as_ref()
+                        .and_then(|a| a.first())
+                    {
+                        match t.literal(first) {
+                            Some(name) => {
+                                f.ctor_name.entry(var.clone()).or_insert(name);
+                            }
+                            None => {
+                                f.ctor_unread.insert(var.clone());
+                            }
+                        }
+                    }
+                    f.port_dirs.insert(var.clone(), dir);
+                    f.port_types.insert(var, ty);
                 }
             }
         }
@@ -180,16 +220,25 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
     // `m_xPort("x")` in an initializer list; `m_xPort = new CorbaPort("x")`;
     // `self._xPort = OpenRTM_aist.CorbaPort("x")`.
     if call && !CALLBACKS.contains(&word) {
-        if let Some(name) = t.args(i + 1).first().and_then(|&a| t.literal(a)) {
+        if let Some(&first) = t.args(i + 1).first() {
             let var = if i >= 1 && (t.is(i - 1, ",") || t.is(i - 1, ":")) {
                 Some(word.to_string())
             } else {
                 assigned_var(t, i)
             };
-            if let Some(v) = var {
-                f.ctor_name.entry(v).or_insert(name);
+            match (var, t.literal(first)) {
+                (Some(v), Some(name)) => {
+                    f.ctor_name.entry(v).or_insert(name);
+                }
+                (Some(v), None) => {
+                    f.ctor_unread.insert(v);
+                }
+                _ => {}
             }
         }
+    }
+    if lang == Language::Python && (word == "from" || word == "import") && t.toks[i].line_start {
+        python_import(t, i, f);
     }
     if lang == Language::Python
         && word == "self"
@@ -203,6 +252,62 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
     if lang != Language::Python && (t.is(i + 1, ";") || t.is(i + 1, "=")) && i > 0 {
         if let Some(ty) = declared_type(t, i) {
             f.var_types.entry(word.to_string()).or_insert(ty);
+        }
+    }
+}
+
+/// `from M import *`, `from M import A, B`, `import M, N as O` at `i` (a line's first word).
+fn python_import(t: &Tokens<'_>, i: usize, f: &mut FileFacts) {
+    let dotted = |mut k: usize| -> (String, usize) {
+        let mut s = String::new();
+        while t.is_ident(k) {
+            s.push_str(t.src(k));
+            if t.is(k + 1, ".") && t.is_ident(k + 2) {
+                s.push('.');
+                k += 2;
+            } else {
+                k += 1;
+                break;
+            }
+        }
+        (s, k)
+    };
+    let line = t.toks[i].pos.line;
+    let same_line = |k: usize| t.tok(k).is_some_and(|x| x.pos.line == line);
+    if t.is(i, "from") {
+        let (module, mut k) = dotted(i + 1);
+        if module.is_empty() || !t.is(k, "import") {
+            return;
+        }
+        k += 1;
+        let mut names = Vec::new();
+        while same_line(k) && names.len() < 64 {
+            match t.src(k) {
+                "*" => names.push("*".to_string()),
+                w if t.is_ident(k) && w != "as" && !t.is(k.saturating_sub(1), "as") => {
+                    names.push(w.to_string());
+                }
+                _ => {}
+            }
+            k += 1;
+        }
+        f.imports.push((module, names));
+    } else {
+        let mut k = i + 1;
+        while same_line(k) && f.imports.len() < 256 {
+            let (module, next) = dotted(k);
+            if module.is_empty() {
+                break;
+            }
+            f.imports.push((module, Vec::new()));
+            k = next;
+            if t.is(k, "as") {
+                k += 2;
+            }
+            if !t.is(k, ",") {
+                break;
+            }
+            k += 1;
         }
     }
 }
@@ -243,7 +348,17 @@ fn assigned_var(t: &Tokens<'_>, i: usize) -> Option<String> {
     (k >= 2 && t.is(k - 1, "=") && t.is_ident(k - 2)).then(|| t.src(k - 2).to_string())
 }
 
-/// `<T>` at `lt`: the type as written without spaces, and the index after the `>`.
+/// Appends the token at `k` to a type's text: a space between two words (`unsigned long`,
+/// `long long`), none around punctuation (`std::vector<double>`).
+fn push_type_word(t: &Tokens<'_>, s: &mut String, k: usize) {
+    if k > 0 && t.is_ident(k) && t.is_ident(k - 1) && !s.is_empty() {
+        s.push(' ');
+    }
+    s.push_str(t.src(k));
+}
+
+/// `<T>` at `lt`: the type as written (a space only between words), and the index after the
+/// `>`.
 fn template_arg(t: &Tokens<'_>, lt: usize) -> Option<(String, usize)> {
     let mut depth = 0usize;
     let mut s = String::new();
@@ -263,7 +378,7 @@ fn template_arg(t: &Tokens<'_>, lt: usize) -> Option<(String, usize)> {
                 s.push('>');
             }
             ";" | "{" | "}" | "(" | ")" => return None,
-            x => s.push_str(x),
+            _ => push_type_word(t, &mut s, k),
         }
     }
     None
@@ -286,11 +401,10 @@ fn declared_type(t: &Tokens<'_>, i: usize) -> Option<String> {
             return None;
         }
     }
-    let words: Vec<&str> = (k..i)
-        .map(|j| t.src(j))
-        .filter(|w| {
+    let words: Vec<usize> = (k..i)
+        .filter(|&j| {
             !matches!(
-                *w,
+                t.src(j),
                 "static"
                     | "const"
                     | "mutable"
@@ -306,13 +420,51 @@ fn declared_type(t: &Tokens<'_>, i: usize) -> Option<String> {
     if words.is_empty() || !t.is_ident(k) {
         return None;
     }
-    Some(words.concat())
+    let mut s = String::new();
+    for j in words {
+        // A word after a dropped qualifier (`const unsigned`) starts the text: no space.
+        if s.is_empty() {
+            s.push_str(t.src(j));
+        } else {
+            push_type_word(t, &mut s, j);
+        }
+    }
+    Some(s)
+}
+
+/// The index of a class's name after `class` at `i`: past export macros and attributes
+/// (`class __declspec(dllexport) Foo`, `class DLL_EXPORT Foo : public Base`), which are no
+/// class and no base.
+fn class_name(t: &Tokens<'_>, i: usize) -> usize {
+    let mut n = i + 1;
+    for _ in 0..8 {
+        if matches!(t.src(n), "__declspec" | "__attribute__" | "alignas") && t.is_open(n + 1, b'(')
+        {
+            n = t.close.get(n + 1).copied().unwrap_or(n) + 1;
+        } else if t.is_ident(n)
+            && t.is_ident(n + 1)
+            && !matches!(t.src(n + 1), "final" | "extends" | "implements")
+        {
+            n += 1;
+        } else {
+            break;
+        }
+    }
+    n
 }
 
 fn class(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn Fn(usize) -> At) {
-    let name = t.src(i + 1).to_string();
+    let n = if lang == Language::Cpp {
+        class_name(t, i)
+    } else {
+        i + 1
+    };
+    if !t.is_ident(n) {
+        return;
+    }
+    let name = t.src(n).to_string();
     let mut bases = Vec::new();
-    let mut k = i + 2;
+    let mut k = n + 1;
     let end = (k + 64).min(t.toks.len());
     match lang {
         Language::Python if t.is_open(k, b'(') => {
@@ -552,15 +704,40 @@ fn spec_array(t: &Tokens<'_>, open: usize, file: &str) -> Option<Vec<SpecValue>>
 
 /// Joins the facts of a component's files into its implementation.
 pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implementation {
+    let stems = own_stems(&files, &facts);
+    let pick = pick_class(&facts, &stems);
+    let class = pick.class.map(|(fi, ci)| {
+        let (name, bases, at) = facts[fi].classes[ci].clone();
+        super::CodeClass { name, bases, at }
+    });
+    let missing_bases: Vec<Unverified> = pick
+        .missing
+        .iter()
+        .map(|(fi, b)| Unverified {
+            construct: b.clone(),
+            what: "what the base class registers and defines (its file is not found beside the component)".into(),
+            of: super::Unread::Base,
+            at: facts[*fi]
+                .classes
+                .iter()
+                .find(|c| c.1.contains(b))
+                .map(|c| c.2.clone())
+                .unwrap_or_default(),
+        })
+        .collect();
     let mut port_types = BTreeMap::new();
+    let mut port_dirs = BTreeMap::new();
     let mut ctor_name = BTreeMap::new();
     let mut var_types = BTreeMap::new();
     let mut py_assign = BTreeMap::new();
     let mut imp = Implementation {
         language: lang,
         files,
+        class,
+        unverified: missing_bases,
         ..Default::default()
     };
+    let mut ctor_unread = std::collections::BTreeSet::new();
     let mut port_regs = Vec::new();
     let mut iface_regs = Vec::new();
     let mut param_regs = Vec::new();
@@ -571,9 +748,11 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             }
         }
         port_types.extend(f.port_types);
+        port_dirs.extend(f.port_dirs);
         for (k, v) in f.ctor_name {
             ctor_name.entry(k).or_insert(v);
         }
+        ctor_unread.extend(f.ctor_unread);
         for (k, v) in f.var_types {
             var_types.entry(k).or_insert(v);
         }
@@ -592,13 +771,6 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
                 Some(_) => {}
                 None => imp.callbacks.push(cb),
             }
-        }
-        if imp.class.is_none() {
-            imp.class = f
-                .classes
-                .into_iter()
-                .find(|(_, bases, _)| !bases.is_empty())
-                .map(|(name, bases, at)| super::CodeClass { name, bases, at });
         }
         imp.unverified
             .extend(f.macros.into_iter().map(|(m, at)| Unverified {
@@ -620,8 +792,41 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         };
         Some(ty.replace('.', "::"))
     };
-    for (name, direction, var, at, construct) in port_regs {
+    // `self._xIn = OpenRTM_aist.InPort(…)`: an in-port.
+    let py_dir = |var: &str| -> Option<Direction> {
+        let (callee, _, _) = py_assign.get(var)?;
+        match callee.rsplit('.').next()? {
+            "InPort" => Some(Direction::In),
+            "OutPort" => Some(Direction::Out),
+            _ => None,
+        }
+    };
+    for (reg_name, reg_direction, var, at, construct) in port_regs {
         let data_type = port_types.get(&var).cloned().or_else(|| py_type(&var));
+        // The port object's class says what it is (an InPort given to addOutPort stays an
+        // in-port); the registering call when the class is not seen.
+        let direction = port_dirs
+            .get(&var)
+            .copied()
+            .or_else(|| py_dir(&var))
+            .unwrap_or(reg_direction);
+        // The port runs under the name its constructor gives it (`m_xIn("x", m_x)`: OpenRTM's
+        // PortBase keeps it; addInPort's name only keys the port's properties), so that one
+        // is compared; the registration's name when the constructor is not seen.
+        let name = match ctor_name.get(&var) {
+            Some(n) => Some(n.clone()),
+            None if ctor_unread.contains(&var) => None,
+            None => reg_name,
+        };
+        // A port registered twice (in two branches, in the constructor and onInitialize) is
+        // one port.
+        if name.as_ref().is_some_and(|n| {
+            imp.data_ports
+                .iter()
+                .any(|p| &p.name == n && p.direction == direction)
+        }) {
+            continue;
+        }
         match name {
             Some(name) => imp.data_ports.push(CodeDataPort {
                 name,
@@ -669,6 +874,13 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
                 imp.service_ports.len() - 1
             }
         };
+        let known = imp.service_ports[idx]
+            .interfaces
+            .iter()
+            .any(|i| i.instance_name == instance && i.direction == direction);
+        if known {
+            continue; // registered twice
+        }
         imp.service_ports[idx].interfaces.push(CodeInterface {
             instance_name: instance,
             type_name: ty,
@@ -678,6 +890,12 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
     }
     for (name, var, default, at, construct) in param_regs {
         let type_ = var_types.get(&var).cloned();
+        if name
+            .as_ref()
+            .is_some_and(|n| imp.parameters.iter().any(|p| &p.name == n))
+        {
+            continue; // bound twice
+        }
         match name {
             Some(name) => imp.parameters.push(CodeParameter {
                 name,
@@ -705,4 +923,126 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         }
     }
     imp
+}
+
+/// The last segment of a class name (`RTC::DataFlowComponentBase`,
+/// `OpenRTM_aist.DataFlowComponentBase` → `DataFlowComponentBase`).
+fn last_segment(b: &str) -> &str {
+    let b = b.rsplit("::").next().unwrap_or(b);
+    b.rsplit('.').next().unwrap_or(b)
+}
+
+/// The classes of OpenRTM a component class derives from.
+const RTC_BASES: &[&str] = &[
+    "DataFlowComponentBase",
+    "RTObject_impl",
+    "FiniteStateMachineComponentBase",
+    "MultiModeComponentBase",
+];
+
+/// Bases that register nothing (Python's `object`).
+const INERT_BASES: &[&str] = &["object"];
+
+/// The names a component's own files are named after (`Counter` of `src/CounterImpl.java`,
+/// `SensorGUI` of `SensorGUI.py`): the component's name, which its class usually has.
+pub fn own_stems(files: &[String], facts: &[FileFacts]) -> Vec<String> {
+    files
+        .iter()
+        .zip(
+            facts
+                .iter()
+                .map(|f| f.base_file)
+                .chain(std::iter::repeat(false)),
+        )
+        .filter(|(_, base)| !base)
+        .filter_map(|(f, _)| {
+            let stem = f.rsplit('/').next()?.split('.').next()?;
+            let stem = stem
+                .strip_suffix("Impl")
+                .or_else(|| stem.strip_suffix("Comp"))
+                .unwrap_or(stem);
+            Some(stem.to_string())
+        })
+        .collect()
+}
+
+/// Which class is the component's, and the base classes of its that are not found.
+pub struct ClassPick {
+    /// (file, class) in the facts.
+    pub class: Option<(usize, usize)>,
+    /// (file naming it, base class as written): a base whose file was not read, when the
+    /// class reaches none of OpenRTM's component classes through the bases that were.
+    pub missing: Vec<(usize, String)>,
+}
+
+/// Where a class named `name` (its last segment) is defined among the facts.
+fn find_class(facts: &[FileFacts], name: &str) -> Option<(usize, usize)> {
+    facts.iter().enumerate().find_map(|(fi, f)| {
+        f.classes
+            .iter()
+            .position(|c| c.0 == name)
+            .map(|ci| (fi, ci))
+    })
+}
+
+/// The bases of the class at `start`, followed through the classes the facts define: whether
+/// one of them is OpenRTM's component class, and the bases not found.
+fn walk_bases(facts: &[FileFacts], start: (usize, usize)) -> (bool, Vec<(usize, String)>) {
+    let mut stack = vec![start];
+    let mut seen = vec![start];
+    let mut reaches = false;
+    let mut missing = Vec::new();
+    while let Some((fi, ci)) = stack.pop() {
+        for b in &facts[fi].classes[ci].1 {
+            let last = last_segment(b);
+            if RTC_BASES.contains(&last) {
+                reaches = true;
+            } else if INERT_BASES.contains(&last) {
+            } else if let Some(k) = find_class(facts, last) {
+                if !seen.contains(&k) && seen.len() < 32 {
+                    seen.push(k);
+                    stack.push(k);
+                }
+            } else {
+                missing.push((fi, b.clone()));
+            }
+        }
+    }
+    (reaches, missing)
+}
+
+/// The component's class: among the classes of its own files, one deriving (directly or
+/// through a base the facts define) from OpenRTM's component class, the one named after the
+/// component first; else the one named after the component; else the first with a base.
+/// Helper classes (listeners, a service's servant, the factory of a Java component) are not
+/// it.
+pub fn pick_class(facts: &[FileFacts], stems: &[String]) -> ClassPick {
+    let own: Vec<(usize, usize)> = facts
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| !f.base_file)
+        .flat_map(|(fi, f)| (0..f.classes.len()).map(move |ci| (fi, ci)))
+        .collect();
+    let name = |k: &(usize, usize)| facts[k.0].classes[k.1].0.as_str();
+    let named = |k: &(usize, usize)| stems.iter().any(|s| s.eq_ignore_ascii_case(name(k)));
+    let deriving: Vec<(usize, usize)> = own
+        .iter()
+        .copied()
+        .filter(|&k| walk_bases(facts, k).0)
+        .collect();
+    let class = deriving
+        .iter()
+        .find(|k| named(k))
+        .or_else(|| deriving.first())
+        .or_else(|| own.iter().find(|k| named(k)))
+        .or_else(|| own.iter().find(|k| !facts[k.0].classes[k.1].1.is_empty()))
+        .copied();
+    let missing = match class {
+        Some(k) => match walk_bases(facts, k) {
+            (false, m) => m,
+            (true, _) => Vec::new(),
+        },
+        None => Vec::new(),
+    };
+    ClassPick { class, missing }
 }

@@ -137,6 +137,8 @@ pub enum Unread {
     Parameter,
     /// A macro: any kind.
     Any,
+    /// A base class whose file is not found: any kind, and callbacks.
+    Base,
     /// A spec array value (no element kind).
     SpecValue,
 }
@@ -192,12 +194,12 @@ impl Implementation {
             Unread::DataPort => !self.data_ports.is_empty(),
             Unread::ServicePort => !self.service_ports.is_empty(),
             Unread::Parameter => !self.parameters.is_empty(),
-            Unread::Any | Unread::SpecValue => true,
+            Unread::Any | Unread::Base | Unread::SpecValue => true,
         };
         some && !self
             .unverified
             .iter()
-            .any(|u| u.of == kind || u.of == Unread::Any)
+            .any(|u| u.of == kind || matches!(u.of, Unread::Any | Unread::Base))
     }
 
     /// The spec array's value of `key`, when it is a literal.
@@ -337,9 +339,19 @@ pub fn find(
         .iter()
         .copied()
         .find(|l| found.iter().any(|(fl, _, _)| fl == l))?;
+    // A file named exactly after the component is its own; one equal but for case is taken
+    // only when there is none (a library header `vector.h` beside a component `Vector`).
+    let exact = |p: &std::path::Path| {
+        let f = p
+            .file_name()
+            .map(|f| f.to_string_lossy())
+            .unwrap_or_default();
+        wanted.iter().any(|(l, w)| *l == lang && *w == f)
+    };
+    let any_exact = found.iter().any(|(l, p, _)| *l == lang && exact(p));
     let files: Vec<_> = found
         .into_iter()
-        .filter(|(l, _, _)| *l == lang)
+        .filter(|(l, p, _)| *l == lang && (!any_exact || exact(p)))
         .map(|(_, p, r)| (p, r))
         .take(MAX_FILES)
         .collect();
@@ -384,48 +396,238 @@ pub fn read(
     max_size: u64,
 ) -> (Option<Implementation>, Vec<Diagnostic>) {
     let mut diags = Vec::new();
-    let mut facts = Vec::new();
-    let mut read_files = Vec::new();
+    let mut read = Read::default();
     for (path, shown) in files {
-        let bytes = match crate::walk::read_at_most(path, max_size.saturating_add(1)) {
-            Ok(b) => b,
-            Err(e) => {
-                diags.push(unreadable(
-                    shown,
-                    format!("cannot read the source file: {e}"),
-                    None,
-                ));
-                continue;
-            }
-        };
-        if bytes.len() as u64 > max_size {
+        if let Some(f) = read_one(lang, path, shown, max_size, &mut diags) {
+            read.push(path, shown, f);
+        }
+    }
+    if read.files.is_empty() {
+        return (None, diags);
+    }
+    follow_bases(lang, &mut read, max_size);
+    (Some(extract::join(lang, read.files, read.facts)), diags)
+}
+
+/// The files read so far: where each is, as shown, and its facts.
+#[derive(Default)]
+struct Read {
+    paths: Vec<std::path::PathBuf>,
+    files: Vec<String>,
+    facts: Vec<extract::FileFacts>,
+}
+
+impl Read {
+    fn push(&mut self, path: &Path, shown: &str, f: extract::FileFacts) {
+        self.paths.push(path.to_path_buf());
+        self.files.push(shown.to_string());
+        self.facts.push(f);
+    }
+}
+
+/// Reads and lexes one source file; `None` (and a diagnostic) when it cannot be.
+fn read_one(
+    lang: Language,
+    path: &Path,
+    shown: &str,
+    max_size: u64,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<extract::FileFacts> {
+    let bytes = match crate::walk::read_at_most(path, max_size.saturating_add(1)) {
+        Ok(b) => b,
+        Err(e) => {
             diags.push(unreadable(
                 shown,
-                format!("the source file is larger than {max_size} bytes; it is not read, so the implementation is not verified against it"),
+                format!("cannot read the source file: {e}"),
                 None,
             ));
-            continue;
+            return None;
         }
-        let text = decode(&bytes);
-        let lang = language_of(path).unwrap_or(lang);
-        match lex::lex(&text, lang) {
-            Ok(t) => {
-                let mut f = extract::file_facts(&t, lang, shown);
-                f.macros = macro_registrations(&text, shown);
-                facts.push(f);
-                read_files.push(shown.clone());
+    };
+    if bytes.len() as u64 > max_size {
+        diags.push(unreadable(
+            shown,
+            format!("the source file is larger than {max_size} bytes; it is not read, so the implementation is not verified against it"),
+            None,
+        ));
+        return None;
+    }
+    let text = decode(&bytes);
+    let lang = language_of(path).unwrap_or(lang);
+    match lex::lex(&text, lang) {
+        Ok(t) => {
+            let mut f = extract::file_facts(&t, lang, shown);
+            f.macros = macro_registrations(&text, shown);
+            if lang == Language::Cpp {
+                f.includes = quoted_includes(&text);
             }
-            Err(e) => diags.push(unreadable(
+            Some(f)
+        }
+        Err(e) => {
+            diags.push(unreadable(
                 shown,
                 format!("the source file is not read: {}", e.message),
                 Some(e.pos),
-            )),
+            ));
+            None
         }
     }
-    if read_files.is_empty() {
-        return (None, diags);
+}
+
+/// Follows the component class's bases to the files beside it that define them (Python: the
+/// module in the same folder it is imported from; C++: a header the component includes from
+/// one of its own folders, with the source of the same name; Java: `<Base>.java` in the same
+/// package folder), and reads those too: a base class's registrations and callbacks are the
+/// component's. A base not found stays "could not verify" ([`extract::pick_class`]).
+fn follow_bases(lang: Language, read: &mut Read, max_size: u64) {
+    let mut tried: Vec<std::path::PathBuf> = Vec::new();
+    while read.files.len() < MAX_FILES {
+        let pick = extract::pick_class(&read.facts, &extract::own_stems(&read.files, &read.facts));
+        let mut added = false;
+        for (fi, base) in pick.missing {
+            let last = base.rsplit(['.', ':']).next().unwrap_or(&base).to_string();
+            for c in base_candidates(lang, read, fi, &base) {
+                if read.paths.contains(&c.path)
+                    || tried.contains(&c.path)
+                    || !is_plain_file(&c.path)
+                {
+                    continue;
+                }
+                tried.push(c.path.clone());
+                // A file that fails to read here is no diagnostic: it is not the component's.
+                let Some(mut f) = read_one(lang, &c.path, &c.shown, max_size, &mut Vec::new())
+                else {
+                    continue;
+                };
+                if !f.classes.iter().any(|k| k.0 == last) {
+                    continue; // another module, another header
+                }
+                f.base_file = true;
+                read.push(&c.path, &c.shown, f);
+                added = true;
+                for (p, s) in c.sources {
+                    if read.files.len() >= MAX_FILES {
+                        return;
+                    }
+                    if read.paths.contains(&p) || !is_plain_file(&p) {
+                        continue;
+                    }
+                    if let Some(mut f) = read_one(lang, &p, &s, max_size, &mut Vec::new()) {
+                        f.base_file = true;
+                        read.push(&p, &s, f);
+                    }
+                }
+                if read.files.len() >= MAX_FILES {
+                    return;
+                }
+                break;
+            }
+        }
+        if !added {
+            return;
+        }
     }
-    (Some(extract::join(lang, read_files, facts)), diags)
+}
+
+/// A file that may define a base class, and (C++) the sources of the same name beside the
+/// component's files that define its members.
+struct Candidate {
+    path: std::path::PathBuf,
+    shown: String,
+    sources: Vec<(std::path::PathBuf, String)>,
+}
+
+/// `rel` in the folder of `path` (shown as `shown`).
+fn beside(path: &Path, shown: &str, rel: &str) -> (std::path::PathBuf, String) {
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let s = match shown.rsplit_once('/') {
+        Some((d, _)) => format!("{d}/{rel}"),
+        None => rel.to_string(),
+    };
+    (dir.join(rel), s)
+}
+
+/// The files that may define `base`, named in file `fi`.
+fn base_candidates(lang: Language, read: &Read, fi: usize, base: &str) -> Vec<Candidate> {
+    let (Some(path), Some(shown)) = (read.paths.get(fi), read.files.get(fi)) else {
+        return Vec::new();
+    };
+    let plain = |(path, shown): (std::path::PathBuf, String)| Candidate {
+        path,
+        shown,
+        sources: Vec::new(),
+    };
+    let last = base.rsplit(['.', ':']).next().unwrap_or(base);
+    match lang {
+        Language::Python => {
+            let mut modules: Vec<String> = Vec::new();
+            if let Some((q, _)) = base.rsplit_once('.') {
+                modules.push(q.to_string());
+            } else {
+                for (m, names) in read.facts.iter().flat_map(|f| &f.imports) {
+                    if names.iter().any(|n| n == "*" || n == last) {
+                        modules.push(m.clone());
+                    }
+                }
+            }
+            modules
+                .iter()
+                .map(|m| format!("{}.py", m.replace('.', "/")))
+                .filter(|rel| safe_relative(rel))
+                .map(|rel| plain(beside(path, shown, &rel)))
+                .collect()
+        }
+        Language::Java => vec![plain(beside(path, shown, &format!("{last}.java")))],
+        Language::Cpp => {
+            // The component's own files' folders (`src/`, `include/<Name>/`): a header is
+            // included from one and found in another by the include path.
+            let own: Vec<(&std::path::PathBuf, &String)> = read
+                .paths
+                .iter()
+                .zip(&read.files)
+                .zip(&read.facts)
+                .filter(|(_, f)| !f.base_file)
+                .map(|(pf, _)| pf)
+                .collect();
+            let mut out = Vec::new();
+            let includes = read
+                .facts
+                .iter()
+                .filter(|f| !f.base_file)
+                .flat_map(|f| &f.includes);
+            // Only a header of the component's own folders (no library's `a/b.h`).
+            for inc in includes.filter(|i| safe_relative(i) && !i.contains('/')) {
+                let stem = inc.rsplit_once('.').map_or(inc.as_str(), |(a, _)| a);
+                let sources: Vec<(std::path::PathBuf, String)> = own
+                    .iter()
+                    .flat_map(|(p, s)| {
+                        ["cpp", "cc", "cxx"].map(|ext| beside(p, s, &format!("{stem}.{ext}")))
+                    })
+                    .collect();
+                for (p, s) in &own {
+                    let (path, shown) = beside(p, s, inc);
+                    out.push(Candidate {
+                        path,
+                        shown,
+                        sources: sources.clone(),
+                    });
+                }
+            }
+            out
+        }
+    }
+}
+
+/// The files `#include "…"` names (not `<…>`: a library's).
+fn quoted_includes(text: &str) -> Vec<String> {
+    text.lines()
+        .filter_map(|l| {
+            let l = l.trim_start().strip_prefix('#')?.trim_start();
+            let r = l.strip_prefix("include")?.trim_start().strip_prefix('"')?;
+            r.split_once('"').map(|(f, _)| f.to_string())
+        })
+        .take(256)
+        .collect()
 }
 
 fn unreadable(file: &str, message: String, pos: Option<Pos>) -> Diagnostic {

@@ -199,9 +199,10 @@ fn a_registration_that_can_no_longer_be_read_is_not_a_resolution() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path();
     let code = read("new/SensorGUI/SensorGUI.py");
+    // The port's name is its constructor's (the one OpenRTM's PortBase runs under).
     let dynamic = code.replace(
-        "self.addInPort(\"distance_sensor\", self._ir_sensorIn)",
-        "self.addInPort(self._port_name, self._ir_sensorIn)",
+        "OpenRTM_aist.InPort(\"distance_sensor\", self._d_ir_sensor)",
+        "OpenRTM_aist.InPort(self._port_name, self._d_ir_sensor)",
     );
     assert_ne!(code, dynamic);
     for (side, text) in [("old", &code), ("new", &dynamic)] {

@@ -630,3 +630,90 @@ fn extract_writes_the_profile_the_code_describes_and_check_finds_no_drift() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("no component implementation in"));
 }
+
+/// The implementation read for the component of fixture `false-alarms/<name>`.
+fn implementation_of(name: &str) -> rtcdoc::implementation::Implementation {
+    let loaded =
+        build::load(&fixture("false-alarms").join(name), &LoadOptions::default()).expect("load");
+    *loaded.catalog.components[0]
+        .implementation
+        .clone()
+        .expect("implementation")
+}
+
+/// Hand-edited code that real repositories hold, where the code and the profile agree: no
+/// finding at all, or only "could not verify".
+#[test]
+fn agreeing_hand_edited_code_gives_no_false_alarm() {
+    let drift = |name: &str| {
+        findings(&fixture("false-alarms").join(name))
+            .into_iter()
+            .filter(|f| f.0.starts_with("RTC8"))
+            .collect::<Vec<_>>()
+    };
+    for name in ["Mixer", "SheetView", "Vector", "Timer"] {
+        assert_eq!(drift(name), Vec::new(), "{name}");
+    }
+    // A base class of an installed package: what it registers and defines is not verified
+    // (no "only in profile" for the in-port, no RTC808 for onFinalize).
+    let f = drift("Gauge");
+    assert_eq!(f.len(), 1, "{f:#?}");
+    assert_eq!(f[0].0, "RTC810");
+    assert!(f[0].2.contains("gaugekit.GaugeBase"), "{}", f[0].2);
+}
+
+#[test]
+fn a_data_port_is_named_by_its_constructor_and_registered_once() {
+    // `m_levelIn("level", m_level)` and `addInPort("levelIn", m_levelIn)`: OpenRTM's
+    // PortBase runs the port under its constructor's name; `mixed` is added in two branches.
+    let imp = implementation_of("Mixer");
+    let ports: Vec<(&str, &str)> = imp
+        .data_ports
+        .iter()
+        .map(|p| (p.name.as_str(), p.direction.profile_word()))
+        .collect();
+    assert_eq!(ports, [("level", "DataInPort"), ("mixed", "DataOutPort")]);
+    // A multi-word type keeps its space; an export macro is no class name.
+    assert_eq!(imp.parameters[0].type_.as_deref(), Some("unsigned long"));
+    assert_eq!(imp.class.as_ref().map(|c| c.name.as_str()), Some("Mixer"));
+    // The generated onStateUpdate stub is not "implemented".
+    let su = imp.callbacks.iter().find(|c| c.name == "onStateUpdate");
+    assert_eq!(su.map(|c| c.implemented), Some(false));
+}
+
+#[test]
+fn a_python_base_class_in_a_sibling_module_is_read() {
+    let imp = implementation_of("SheetView");
+    assert_eq!(imp.files, ["SheetView.py", "SheetCore.py"]);
+    // The component's class, not the listener defined before it.
+    assert_eq!(
+        imp.class.as_ref().map(|c| c.name.as_str()),
+        Some("SheetView")
+    );
+    let mut ports: Vec<&str> = imp.data_ports.iter().map(|p| p.name.as_str()).collect();
+    ports.sort();
+    assert_eq!(ports, ["cells", "selected"]);
+    assert!(imp.callbacks.iter().any(|c| c.name == "onActivated"));
+}
+
+#[test]
+fn a_java_component_is_its_impl_class_and_a_library_header_is_not_read() {
+    let imp = implementation_of("Timer");
+    assert_eq!(
+        imp.class.as_ref().map(|c| c.name.as_str()),
+        Some("TimerImpl")
+    );
+    assert!(imp.unverified.is_empty(), "{:#?}", imp.unverified);
+    // `third_party/VECTOR.h` matches `Vector.h` only by case; `code/Vector.cpp` exactly.
+    let imp = implementation_of("Vector");
+    assert_eq!(imp.files, ["code/Vector.cpp"]);
+    assert_eq!(imp.class.as_ref().map(|c| c.name.as_str()), Some("Vector"));
+}
+
+#[test]
+fn the_profile_marks_of_fsm_and_mode_callbacks_say_nothing_of_a_data_flow_component() {
+    // Mixer's profile marks onAction and onModeChanged implemented, as RTCBuilder's "all"
+    // does; it generates neither for a DataFlowComponent.
+    let f = findings(&fixture("false-alarms/Mixer"));
+    assert!(!f.iter().any(|x| x.0 == "RTC808"), "{f:#?}");
+}
