@@ -151,6 +151,7 @@ impl Catalog {
                 let (imp, diags) = implementation::read(lang, &files, settings.max_file_size);
                 let imp = imp.map(|mut i| {
                     i.drift = drift::compare(&c.profile, &i);
+                    i.drift.shrink_to_fit();
                     Box::new(i)
                 });
                 (imp, diags)
