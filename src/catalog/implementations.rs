@@ -152,6 +152,7 @@ impl Catalog {
                 let imp = imp.map(|mut i| {
                     i.drift = drift::compare(&c.profile, &i);
                     i.drift.shrink_to_fit();
+                    i.keep_spec_the_profile_lacks();
                     Box::new(i)
                 });
                 (imp, diags)

@@ -219,6 +219,17 @@ impl Implementation {
         self.drift.shrink_to_fit();
     }
 
+    /// Keeps of the spec array only what the profile does not say alike: the values a drift
+    /// finding names and those that are no literal. The rest is the profile's (and the spec
+    /// array is the largest part of an implementation: a third of the memory code adds to a
+    /// build). A component recovered from its code keeps it all.
+    pub fn keep_spec_the_profile_lacks(&mut self) {
+        let named: Vec<&At> = self.drift.iter().filter_map(|d| d.at.as_ref()).collect();
+        self.spec
+            .retain(|s| s.unresolved.is_some() || named.contains(&&s.at));
+        self.spec.shrink_to_fit();
+    }
+
     /// The spec array's value of `key`, when it is a literal.
     pub fn spec_value(&self, key: &str) -> Option<&SpecValue> {
         self.spec.iter().find(|s| s.key == key)
