@@ -841,10 +841,17 @@ impl ImplementationSection {
             unverified: imp
                 .unverified
                 .iter()
+                // A recovered component lists its spec values not read once, as not read.
+                .filter(|u| {
+                    !(c.recovered.is_some() && u.of == crate::implementation::Unread::SpecValue)
+                })
                 .map(|u| {
                     format!(
                         "{}: {} ({}:{})",
-                        u.what, u.construct, u.at.file, u.at.pos.line
+                        u.what.replace('`', ""),
+                        u.construct,
+                        u.at.file,
+                        u.at.pos.line
                     )
                 })
                 .collect(),

@@ -510,3 +510,32 @@ fn backups_and_empty_configuration_sets_pass_the_audit() {
         assert_audit(&report, &[]);
     }
 }
+
+/// The Implementation section, with its table of differences and as the page of a component
+/// recovered from its code, passes the audit in every mode (axe, light and dark, 1280 and
+/// 390 px).
+#[test]
+fn implementation_sections_pass_the_audit() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for (fixture, page) in [
+        ("python-edited", "components/sensorgui.html"),
+        ("recovered", "components/gripper.html"),
+    ] {
+        let out = dir.path().join(fixture);
+        build_site(
+            &common::root()
+                .join("tests/fixtures/implementation")
+                .join(fixture),
+            &out,
+            SiteOptions::default(),
+        );
+        assert!(out.join(page).is_file(), "{page}");
+        let Some(report) = audit(&out, &[], &[page, "index.html"]) else {
+            return;
+        };
+        assert_audit(&report, &[]);
+    }
+}
