@@ -651,7 +651,7 @@ fn agreeing_hand_edited_code_gives_no_false_alarm() {
             .filter(|f| f.0.starts_with("RTC8"))
             .collect::<Vec<_>>()
     };
-    for name in ["Mixer", "SheetView", "Vector", "Timer"] {
+    for name in ["Mixer", "SheetView", "Vector", "Timer", "Relay"] {
         assert_eq!(drift(name), Vec::new(), "{name}");
     }
     // A base class of an installed package: what it registers and defines is not verified
@@ -716,4 +716,37 @@ fn the_profile_marks_of_fsm_and_mode_callbacks_say_nothing_of_a_data_flow_compon
     // does; it generates neither for a DataFlowComponent.
     let f = findings(&fixture("false-alarms/Mixer"));
     assert!(!f.iter().any(|x| x.0 == "RTC808"), "{f:#?}");
+}
+
+#[test]
+fn every_declarator_of_a_declaration_has_its_type() {
+    // `int m_retries, m_gain;`, `double m_offset = 0.0, *m_scratch, m_ratio;`,
+    // `OutPort<TimedDouble> m_forwardOut, m_mirrorOut;`; `std::map<int, double>` declares
+    // no `int`.
+    let imp = implementation_of("Relay");
+    let params: Vec<(&str, Option<&str>)> = imp
+        .parameters
+        .iter()
+        .map(|p| (p.name.as_str(), p.type_.as_deref()))
+        .collect();
+    assert_eq!(params, [("gain", Some("int")), ("ratio", Some("double"))]);
+    let ports: Vec<(&str, &str, Option<&str>)> = imp
+        .data_ports
+        .iter()
+        .map(|p| {
+            (
+                p.name.as_str(),
+                p.direction.profile_word(),
+                p.data_type.as_deref(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        ports,
+        [
+            ("speed", "DataInPort", Some("RTC::TimedDouble")),
+            ("forward", "DataOutPort", Some("RTC::TimedDouble")),
+            ("mirror", "DataOutPort", Some("RTC::TimedDouble")),
+        ]
+    );
 }
