@@ -222,8 +222,17 @@ fn pair(profile: &[&str], code: &[&str]) -> Pairing {
             case.push((pi, ci));
         }
     }
-    let only_p = (0..profile.len()).filter(|&i| !used_p[i]).collect();
-    let only_c = (0..code.len()).filter(|&i| !used_c[i]).collect();
+    // A second declaration of a name already paired (a profile declaring a configuration
+    // twice, reported by the profile check) is no element the other side lacks.
+    let paired = |names: &[&str], used: &[bool], i: usize| {
+        (0..names.len()).any(|j| j != i && used[j] && names[j] == names[i])
+    };
+    let only_p = (0..profile.len())
+        .filter(|&i| !used_p[i] && !paired(profile, &used_p, i))
+        .collect();
+    let only_c = (0..code.len())
+        .filter(|&i| !used_c[i] && !paired(code, &used_c, i))
+        .collect();
     (exact, case, only_p, only_c)
 }
 
