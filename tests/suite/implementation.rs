@@ -729,7 +729,14 @@ fn every_declarator_of_a_declaration_has_its_type() {
         .iter()
         .map(|p| (p.name.as_str(), p.type_.as_deref()))
         .collect();
-    assert_eq!(params, [("gain", Some("int")), ("ratio", Some("double"))]);
+    assert_eq!(
+        params,
+        [
+            ("gain", Some("int")),
+            ("ratio", Some("double")),
+            ("mode", Some("std::string"))
+        ]
+    );
     let ports: Vec<(&str, &str, Option<&str>)> = imp
         .data_ports
         .iter()
@@ -759,4 +766,20 @@ fn a_name_the_profile_declares_twice_is_no_drift() {
     let codes: Vec<&str> = f.iter().map(|x| x.0.as_str()).collect();
     assert!(codes.contains(&"RTC207"), "{f:#?}");
     assert!(!codes.contains(&"RTC801"), "{f:#?}");
+}
+
+#[test]
+fn a_profile_default_in_quotes_is_the_code_literal_without_them() {
+    // Relay's profile gives `mode` the default `"fast"`; RTCBuilder pastes it into the
+    // literal, whose quotes they are: `"fast"` in the spec array and bindParameter agree.
+    let f = findings(&fixture("false-alarms/Relay"));
+    assert!(!f.iter().any(|x| x.0 == "RTC806"), "{f:#?}");
+    // Any other difference is still one.
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_fixture("false-alarms/Relay", dir.path());
+    let xml = dir.path().join("RTC.xml");
+    let text = std::fs::read_to_string(&xml).expect("read");
+    std::fs::write(&xml, text.replace("&quot;fast&quot;", "&quot;slow&quot;")).expect("write");
+    let f = findings(dir.path());
+    assert_eq!(f.iter().filter(|x| x.0 == "RTC806").count(), 2, "{f:#?}");
 }
