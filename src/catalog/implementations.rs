@@ -151,6 +151,8 @@ impl Catalog {
                 let (imp, diags) = implementation::read(lang, &files, settings.max_file_size);
                 let imp = imp.map(|mut i| {
                     i.drift = drift::compare(&c.profile, &i);
+                    i.drift.shrink_to_fit();
+                    i.keep_spec_the_profile_lacks();
                     Box::new(i)
                 });
                 (imp, diags)

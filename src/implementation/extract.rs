@@ -100,8 +100,9 @@ pub struct FileFacts {
 /// Reads the facts of one file.
 pub fn file_facts(t: &Tokens<'_>, lang: Language, file: &str) -> FileFacts {
     let mut f = FileFacts::default();
+    let shared: std::sync::Arc<str> = file.into();
     let at = |i: usize| At {
-        file: file.to_string(),
+        file: shared.clone(),
         pos: t.toks[i].pos,
     };
     let n = t.toks.len();
@@ -604,7 +605,7 @@ fn callback(
     let name = t.src(i).to_string();
     Some(Callback {
         implemented: !generated_body(t, body_start, body_end.min(t.toks.len()), &name),
-        name,
+        name: name.into(),
         at: at(i),
     })
 }
@@ -720,9 +721,9 @@ fn spec_array(t: &Tokens<'_>, open: usize, file: &str) -> Option<Vec<SpecValue>>
         let key = t.literal(pair[0]);
         let Some(key) = key else {
             out.push(SpecValue {
-                key: t.span_text(pair[0].0, pair[0].1),
+                key: t.span_text(pair[0].0, pair[0].1).into(),
                 value: None,
-                unresolved: Some(t.span_text(pair[0].0, pair[0].1)),
+                unresolved: Some(t.span_text(pair[0].0, pair[0].1).into()),
                 at: At {
                     file: file.into(),
                     pos: t.toks[pair[0].0.min(t.toks.len() - 1)].pos,
@@ -737,9 +738,12 @@ fn spec_array(t: &Tokens<'_>, open: usize, file: &str) -> Option<Vec<SpecValue>>
         let value = t.literal(v);
         let pos = t.toks.get(v.0).map_or(t.toks[pair[0].0].pos, |x| x.pos);
         out.push(SpecValue {
-            unresolved: value.is_none().then(|| t.span_text(v.0, v.1)),
-            key,
-            value,
+            unresolved: value
+                .is_none()
+                .then(|| t.span_text(v.0, v.1))
+                .map(Into::into),
+            key: key.into(),
+            value: value.map(Into::into),
             at: At {
                 file: file.into(),
                 pos,
@@ -870,16 +874,16 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         if name.as_ref().is_some_and(|n| {
             imp.data_ports
                 .iter()
-                .any(|p| &p.name == n && p.direction == direction)
+                .any(|p| p.name == n && p.direction == direction)
         }) {
             continue;
         }
         match name {
             Some(name) => imp.data_ports.push(CodeDataPort {
-                name,
+                name: name.into(),
                 direction,
-                variable: var,
-                data_type,
+                variable: var.into(),
+                data_type: data_type.map(Into::into),
                 at,
             }),
             None => imp.unverified.push(Unverified {
@@ -929,8 +933,8 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
             continue; // registered twice
         }
         imp.service_ports[idx].interfaces.push(CodeInterface {
-            instance_name: instance,
-            type_name: ty,
+            instance_name: instance.into(),
+            type_name: ty.map(Into::into),
             direction,
             at,
         });
@@ -939,16 +943,16 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
         let type_ = var_types.get(&var).cloned();
         if name
             .as_ref()
-            .is_some_and(|n| imp.parameters.iter().any(|p| &p.name == n))
+            .is_some_and(|n| imp.parameters.iter().any(|p| p.name == n))
         {
             continue; // bound twice
         }
         match name {
             Some(name) => imp.parameters.push(CodeParameter {
-                name,
-                variable: var,
-                type_,
-                default,
+                name: name.into(),
+                variable: var.into(),
+                type_: type_.map(Into::into),
+                default: default.map(Into::into),
                 at,
             }),
             None => imp.unverified.push(Unverified {
@@ -962,13 +966,14 @@ pub fn join(lang: Language, files: Vec<String>, facts: Vec<FileFacts>) -> Implem
     for s in &imp.spec {
         if let Some(u) = &s.unresolved {
             imp.unverified.push(Unverified {
-                construct: u.clone(),
+                construct: u.to_string(),
                 what: format!("the spec array's value of `{}`", s.key),
                 of: super::Unread::SpecValue,
                 at: s.at.clone(),
             });
         }
     }
+    imp.shrink();
     imp
 }
 

@@ -9,7 +9,7 @@ pub mod lex;
 pub mod recover;
 
 use crate::diagnostic::Diagnostic;
-use crate::model::Pos;
+use crate::model::{Pos, Text};
 pub use lex::Language;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -25,7 +25,8 @@ pub mod codes {
 /// A place in a source file (the file as shown: relative to the input, forward slashes).
 #[derive(Debug, Clone, Default, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
 pub struct At {
-    pub file: String,
+    /// Shared by every place of the file (thousands of components each keep dozens).
+    pub file: std::sync::Arc<str>,
     pub pos: Pos,
 }
 
@@ -55,32 +56,32 @@ impl Direction {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct SpecValue {
-    pub key: String,
+    pub key: Text,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub value: Option<String>,
+    pub value: Option<Text>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub unresolved: Option<String>,
+    pub unresolved: Option<Text>,
     pub at: At,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct CodeDataPort {
-    pub name: String,
+    pub name: Text,
     pub direction: Direction,
-    pub variable: String,
+    pub variable: Text,
     /// `T` of `InPort<T>`, or the data object's type (Python); `None`: not found.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub data_type: Option<String>,
+    pub data_type: Option<Text>,
     pub at: At,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct CodeInterface {
-    pub instance_name: String,
+    pub instance_name: Text,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub type_name: Option<String>,
+    pub type_name: Option<Text>,
     pub direction: Direction,
     pub at: At,
 }
@@ -99,13 +100,13 @@ pub struct CodeServicePort {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct CodeParameter {
-    pub name: String,
-    pub variable: String,
+    pub name: Text,
+    pub variable: Text,
     /// The declared type of the variable (`int`, `std::string`; Python: the literal's type).
     #[serde(default, rename = "type", skip_serializing_if = "Option::is_none")]
-    pub type_: Option<String>,
+    pub type_: Option<Text>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub default: Option<String>,
+    pub default: Option<Text>,
     pub at: At,
 }
 
@@ -114,7 +115,7 @@ pub struct CodeParameter {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Callback {
-    pub name: String,
+    pub name: Text,
     pub implemented: bool,
     pub at: At,
 }
@@ -200,6 +201,33 @@ impl Implementation {
             .unverified
             .iter()
             .any(|u| u.of == kind || matches!(u.of, Unread::Any | Unread::Base))
+    }
+
+    /// Gives back the room the lists grew into: the catalogue keeps thousands of these for
+    /// the whole build (a spec array of 19 values had room for 32).
+    pub fn shrink(&mut self) {
+        self.files.shrink_to_fit();
+        self.spec.shrink_to_fit();
+        self.data_ports.shrink_to_fit();
+        self.service_ports.shrink_to_fit();
+        for s in &mut self.service_ports {
+            s.interfaces.shrink_to_fit();
+        }
+        self.parameters.shrink_to_fit();
+        self.callbacks.shrink_to_fit();
+        self.unverified.shrink_to_fit();
+        self.drift.shrink_to_fit();
+    }
+
+    /// Keeps of the spec array only what the profile does not say alike: the values a drift
+    /// finding names and those that are no literal. The rest is the profile's (and the spec
+    /// array is the largest part of an implementation: a third of the memory code adds to a
+    /// build). A component recovered from its code keeps it all.
+    pub fn keep_spec_the_profile_lacks(&mut self) {
+        let named: Vec<&At> = self.drift.iter().filter_map(|d| d.at.as_ref()).collect();
+        self.spec
+            .retain(|s| s.unresolved.is_some() || named.contains(&&s.at));
+        self.spec.shrink_to_fit();
     }
 
     /// The spec array's value of `key`, when it is a literal.
@@ -680,7 +708,7 @@ fn macro_registrations(text: &str, file: &str) -> Vec<(String, At)> {
             out.push((
                 name,
                 At {
-                    file: file.to_string(),
+                    file: file.into(),
                     pos: Pos::new(u32::try_from(n + 1).unwrap_or(u32::MAX), 1),
                 },
             ));

@@ -137,11 +137,7 @@ fn one(
         return (None, diags);
     };
     // The spec array must be this file's: a header including another's is not a component.
-    if imp
-        .spec_value("implementation_id")
-        .map(|s| s.at.file.as_str())
-        != Some(rel)
-    {
+    if imp.spec_value("implementation_id").map(|s| &*s.at.file) != Some(rel) {
         return (None, diags);
     }
     let (profile, recovered) = profile(&imp, &stem);
@@ -179,7 +175,7 @@ pub fn profile(imp: &Implementation, fallback: &str) -> (Profile, Recovered) {
         let Some(v) = s.value.as_deref() else {
             unread.push(UnreadValue {
                 field: spec_field(&s.key),
-                written: s.unresolved.clone().unwrap_or_default(),
+                written: s.unresolved.as_deref().unwrap_or_default().to_string(),
                 at: s.at.clone(),
             });
             continue;

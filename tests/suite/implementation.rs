@@ -85,11 +85,20 @@ fn python_registrations_and_types_are_read() {
         .collect();
     // onInitialize holds only registrations: the generated body.
     assert_eq!(cbs, [("onInitialize", false), ("onExecute", true)]);
-    assert_eq!(
-        imp.spec_value("activity_type")
-            .and_then(|s| s.value.as_deref()),
-        Some("PERIODIC")
-    );
+    // The spec array agrees with the profile: the catalogue keeps none of it (the profile
+    // says it); of a hand-edited one, the value that differs.
+    assert!(imp.spec.is_empty(), "{:?}", imp.spec);
+    let edited = build::load(&fixture("python-edited"), &LoadOptions::default()).unwrap();
+    let spec = &edited.catalog.components[0]
+        .implementation
+        .as_ref()
+        .expect("implementation")
+        .spec;
+    let kept: Vec<(&str, Option<&str>)> = spec
+        .iter()
+        .map(|s| (s.key.as_str(), s.value.as_deref()))
+        .collect();
+    assert_eq!(kept, [("activity_type", Some("SPORADIC"))]);
 }
 
 #[test]
