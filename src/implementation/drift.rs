@@ -103,10 +103,20 @@ impl Acc {
 
 /// Whether a value of the code and one of the profile say the same: equal as text (spaces at
 /// the ends ignored), equal as numbers (`0.0` and `0.00`), or equal once the backslashes a
-/// profile value pasted into a literal doubled are read as written (`host\\Comp0`).
+/// profile value pasted into a literal doubled are read as written (`host\\Comp0`), or equal
+/// but for the quotes around the profile's (`"debug"`: RTCBuilder pastes a default into the
+/// code's string literal as typed, so its quotes can only be the literal's own — `""debug""`
+/// does not compile, `"debug"` is what the code says).
 fn same_value(code: &str, profile: &str) -> bool {
     let (c, p) = (code.trim(), profile.trim());
     if c == p || c == p.replace("\\\\", "\\") {
+        return true;
+    }
+    let unquoted = p
+        .strip_prefix('"')
+        .and_then(|r| r.strip_suffix('"'))
+        .filter(|inner| !inner.contains('"'));
+    if unquoted.is_some_and(|u| u.trim() == c) {
         return true;
     }
     matches!((c.parse::<f64>(), p.parse::<f64>()), (Ok(a), Ok(b)) if a == b)
@@ -222,8 +232,17 @@ fn pair(profile: &[&str], code: &[&str]) -> Pairing {
             case.push((pi, ci));
         }
     }
-    let only_p = (0..profile.len()).filter(|&i| !used_p[i]).collect();
-    let only_c = (0..code.len()).filter(|&i| !used_c[i]).collect();
+    // A second declaration of a name already paired (a profile declaring a configuration
+    // twice, reported by the profile check) is no element the other side lacks.
+    let paired = |names: &[&str], used: &[bool], i: usize| {
+        (0..names.len()).any(|j| j != i && used[j] && names[j] == names[i])
+    };
+    let only_p = (0..profile.len())
+        .filter(|&i| !used_p[i] && !paired(profile, &used_p, i))
+        .collect();
+    let only_c = (0..code.len())
+        .filter(|&i| !used_c[i] && !paired(code, &used_c, i))
+        .collect();
     (exact, case, only_p, only_c)
 }
 

@@ -191,8 +191,11 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
             if let Some((ty, after)) = template_arg(t, i + 1) {
                 // `InPort<T> m_xIn;` / `m_xIn = new InPort<T>(…)`.
                 if t.is_ident(after) {
-                    f.port_dirs.insert(t.src(after).to_string(), dir);
-                    f.port_types.insert(t.src(after).to_string(), ty);
+                    // `OutPort<T> m_aOut, m_bOut;`: every declarator is such a port.
+                    for v in std::iter::once(after).chain(declarators_after(t, after)) {
+                        f.port_dirs.insert(t.src(v).to_string(), dir);
+                        f.port_types.insert(t.src(v).to_string(), ty.clone());
+                    }
                 } else if i >= 3 && t.is(i - 1, "new") && t.is(i - 2, "=") && t.is_ident(i - 3) {
                     let var = t.src(i - 3).to_string();
                     // `m_xIn = new InPort<T>("x", m_x)`: the name the port runs under.
@@ -250,10 +253,54 @@ fn ident(t: &Tokens<'_>, i: usize, lang: Language, f: &mut FileFacts, at: &dyn F
     {
         python_assign(t, i, f);
     }
-    if lang != Language::Python && (t.is(i + 1, ";") || t.is(i + 1, "=")) && i > 0 {
-        if let Some(ty) = declared_type(t, i) {
+    if lang != Language::Python
+        && (t.is(i + 1, ";") || t.is(i + 1, "=") || t.is(i + 1, ","))
+        && i > 0
+    {
+        // Before a `,` the words may be a template's first argument (`std::map<int, T>`),
+        // no declaration: only a type whose brackets close is one.
+        let ty = declared_type(t, i)
+            .filter(|ty| !t.is(i + 1, ",") || ty.matches('<').count() == ty.matches('>').count());
+        if let Some(ty) = ty {
+            // `int a, b;`, `double a = 1.0, b;`: every declarator has the type.
+            for v in declarators_after(t, i) {
+                f.var_types
+                    .entry(t.src(v).to_string())
+                    .or_insert_with(|| ty.clone());
+            }
             f.var_types.entry(word.to_string()).or_insert(ty);
         }
+    }
+}
+
+/// The names declared after the declarator at `i` in the same declaration (`int a, *b = 2,
+/// c[3];` from `a`: `b`, `c`): each `,` at the statement's level followed by a name. Empty
+/// unless the statement ends with `;` (a parameter list, a call's arguments are none).
+fn declarators_after(t: &Tokens<'_>, i: usize) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut k = i + 1;
+    loop {
+        // Past this declarator's tail (`[3]`, `= f(x, y)`, `{1, 2}`) to its `,` or `;`.
+        loop {
+            match t.tok(k).map(|x| &x.kind) {
+                None | Some(Kind::Close(_)) => return Vec::new(),
+                Some(Kind::Open(_)) => k = t.close.get(k).copied().unwrap_or(k).max(k) + 1,
+                _ if t.is(k, ",") || t.is(k, ";") => break,
+                _ => k += 1,
+            }
+        }
+        if !t.is(k, ",") || out.len() >= 64 {
+            return if t.is(k, ";") { out } else { Vec::new() };
+        }
+        k += 1;
+        while t.is(k, "*") || t.is(k, "&") {
+            k += 1;
+        }
+        if !t.is_ident(k) {
+            return Vec::new();
+        }
+        out.push(k);
+        k += 1;
     }
 }
 

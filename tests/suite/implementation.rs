@@ -660,7 +660,7 @@ fn agreeing_hand_edited_code_gives_no_false_alarm() {
             .filter(|f| f.0.starts_with("RTC8"))
             .collect::<Vec<_>>()
     };
-    for name in ["Mixer", "SheetView", "Vector", "Timer"] {
+    for name in ["Mixer", "SheetView", "Vector", "Timer", "Relay"] {
         assert_eq!(drift(name), Vec::new(), "{name}");
     }
     // A base class of an installed package: what it registers and defines is not verified
@@ -725,4 +725,70 @@ fn the_profile_marks_of_fsm_and_mode_callbacks_say_nothing_of_a_data_flow_compon
     // does; it generates neither for a DataFlowComponent.
     let f = findings(&fixture("false-alarms/Mixer"));
     assert!(!f.iter().any(|x| x.0 == "RTC808"), "{f:#?}");
+}
+
+#[test]
+fn every_declarator_of_a_declaration_has_its_type() {
+    // `int m_retries, m_gain;`, `double m_offset = 0.0, *m_scratch, m_ratio;`,
+    // `OutPort<TimedDouble> m_forwardOut, m_mirrorOut;`; `std::map<int, double>` declares
+    // no `int`.
+    let imp = implementation_of("Relay");
+    let params: Vec<(&str, Option<&str>)> = imp
+        .parameters
+        .iter()
+        .map(|p| (p.name.as_str(), p.type_.as_deref()))
+        .collect();
+    assert_eq!(
+        params,
+        [
+            ("gain", Some("int")),
+            ("ratio", Some("double")),
+            ("mode", Some("std::string"))
+        ]
+    );
+    let ports: Vec<(&str, &str, Option<&str>)> = imp
+        .data_ports
+        .iter()
+        .map(|p| {
+            (
+                p.name.as_str(),
+                p.direction.profile_word(),
+                p.data_type.as_deref(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        ports,
+        [
+            ("speed", "DataInPort", Some("RTC::TimedDouble")),
+            ("forward", "DataOutPort", Some("RTC::TimedDouble")),
+            ("mirror", "DataOutPort", Some("RTC::TimedDouble")),
+        ]
+    );
+}
+
+#[test]
+fn a_name_the_profile_declares_twice_is_no_drift() {
+    // Relay's profile declares `ratio` twice; the code binds it once. The profile check
+    // reports the duplicate; the code lacks nothing.
+    let f = findings(&fixture("false-alarms/Relay"));
+    let codes: Vec<&str> = f.iter().map(|x| x.0.as_str()).collect();
+    assert!(codes.contains(&"RTC207"), "{f:#?}");
+    assert!(!codes.contains(&"RTC801"), "{f:#?}");
+}
+
+#[test]
+fn a_profile_default_in_quotes_is_the_code_literal_without_them() {
+    // Relay's profile gives `mode` the default `"fast"`; RTCBuilder pastes it into the
+    // literal, whose quotes they are: `"fast"` in the spec array and bindParameter agree.
+    let f = findings(&fixture("false-alarms/Relay"));
+    assert!(!f.iter().any(|x| x.0 == "RTC806"), "{f:#?}");
+    // Any other difference is still one.
+    let dir = tempfile::tempdir().expect("tempdir");
+    copy_fixture("false-alarms/Relay", dir.path());
+    let xml = dir.path().join("RTC.xml");
+    let text = std::fs::read_to_string(&xml).expect("read");
+    std::fs::write(&xml, text.replace("&quot;fast&quot;", "&quot;slow&quot;")).expect("write");
+    let f = findings(dir.path());
+    assert_eq!(f.iter().filter(|x| x.0 == "RTC806").count(), 2, "{f:#?}");
 }
