@@ -133,7 +133,16 @@ fn one(
         }
     }
     let (imp, diags) = super::read(lang, &files, max_size);
-    let Some(imp) = imp.filter(|i| i.spec_value("implementation_id").is_some()) else {
+    // A framework's default profile (`"implementation_id", ""` in OpenRTM's RTObject) names
+    // no component.
+    let names = |i: &Implementation| {
+        i.spec_value("implementation_id").is_some_and(|s| {
+            s.value
+                .as_deref()
+                .map_or(s.unresolved.is_some(), |v| !v.trim().is_empty())
+        })
+    };
+    let Some(imp) = imp.filter(names) else {
         return (None, diags);
     };
     // The spec array must be this file's: a header including another's is not a component.

@@ -469,6 +469,11 @@ fn components_with_code_and_no_profile_are_documented_from_their_code() {
         .components
         .iter()
         .any(|c| c.profile.name() == "GripperTest"));
+    // A framework's default profile (an empty implementation_id) is no component.
+    assert!(!cat
+        .components
+        .iter()
+        .any(|c| c.source.starts_with("framework/")));
     // check: one info per recovered component, no profile rule run on them, no warning.
     let f = findings(&fixture("recovered"));
     let recovered: Vec<&str> = f
