@@ -730,15 +730,7 @@ pub fn rtc_xml(p: &Profile, r: &Recovered, from: &[String], now: u64) -> String 
             ("rtc:updateDate", s(&b.update_date)),
         ])
     ));
-    for prop in &b.properties {
-        x.push_str(&format!(
-            "        <rtcExt:Properties{}/>\n",
-            attrs(&[
-                ("rtcExt:name", s(&prop.name)),
-                ("rtcExt:value", s(&prop.value))
-            ])
-        ));
-    }
+    properties_xml(&mut x, "        ", &b.properties);
     x.push_str("    </rtc:BasicInfo>\n    <rtc:Actions>\n");
     for a in &p.actions {
         x.push_str(&format!(
@@ -788,6 +780,19 @@ pub fn rtc_xml(p: &Profile, r: &Recovered, from: &[String], now: u64) -> String 
     x
 }
 
+/// `<rtcExt:Properties rtcExt:name=… rtcExt:value=…/>` lines, as RTCBuilder writes them.
+fn properties_xml(x: &mut String, indent: &str, props: &[Property]) {
+    for prop in props {
+        x.push_str(&format!(
+            "{indent}<rtcExt:Properties{}/>\n",
+            attrs(&[
+                ("rtcExt:name", s(&prop.name)),
+                ("rtcExt:value", s(&prop.value))
+            ])
+        ));
+    }
+}
+
 fn configuration_xml(x: &mut String, p: &Profile) {
     let Some(set) = &p.configuration_set else {
         return;
@@ -810,15 +815,7 @@ fn configuration_xml(x: &mut String, p: &Profile) {
         }
         x.push_str(&head);
         x.push_str(">\n");
-        for prop in &c.properties {
-            x.push_str(&format!(
-                "            <rtcExt:Properties{}/>\n",
-                attrs(&[
-                    ("rtcExt:name", s(&prop.name)),
-                    ("rtcExt:value", s(&prop.value))
-                ])
-            ));
-        }
+        properties_xml(x, "            ", &c.properties);
         x.push_str("        </rtc:Configuration>\n");
     }
     x.push_str("    </rtc:ConfigurationSet>\n");
