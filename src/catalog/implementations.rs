@@ -121,9 +121,9 @@ impl Catalog {
             .components
             .par_iter()
             .map(|c| {
-                // A component recovered from its code is its code.
+                // A component recovered from its code has its code already (attach_recovered).
                 if c.recovered.is_some() {
-                    return (c.implementation.clone(), Vec::new());
+                    return None;
                 }
                 let dir = c.source.rsplit_once('/').map_or("", |(d, _)| d);
                 let name = c.profile.basic_info.name.as_deref().unwrap_or("").trim();
@@ -139,14 +139,14 @@ impl Catalog {
                 let abs = root.dir_of(&c.source).join(dir);
                 let Some((lang, files)) = implementation::find(&abs, dir, name, &langs, extra)
                 else {
-                    return (None, Vec::new());
+                    return Some((None, Vec::new()));
                 };
                 let files: Vec<_> = files
                     .into_iter()
                     .filter(|(_, rel)| !excluded(rel))
                     .collect();
                 if files.is_empty() {
-                    return (None, Vec::new());
+                    return Some((None, Vec::new()));
                 }
                 let (imp, diags) = implementation::read(lang, &files, settings.max_file_size);
                 let imp = imp.map(|mut i| {
@@ -155,12 +155,14 @@ impl Catalog {
                     i.keep_spec_the_profile_lacks();
                     Box::new(i)
                 });
-                (imp, diags)
+                Some((imp, diags))
             })
             .collect();
-        for (c, (imp, diags)) in self.components.iter_mut().zip(read) {
-            c.implementation = imp;
-            self.diagnostics.extend(diags);
+        for (c, read) in self.components.iter_mut().zip(read) {
+            if let Some((imp, diags)) = read {
+                c.implementation = imp;
+                self.diagnostics.extend(diags);
+            }
         }
         crate::diagnostic::sort(&mut self.diagnostics);
     }

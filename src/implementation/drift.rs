@@ -580,52 +580,50 @@ fn callbacks(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
     }
 }
 
+/// The spec array's keys that are values of the profile's BasicInfo (and its language), with
+/// the element findings and recovered profiles name each by.
+const SPEC_ELEMENTS: &[(&str, &str)] = &[
+    ("implementation_id", "basicInfo/name"),
+    ("version", "basicInfo/version"),
+    ("vendor", "basicInfo/vendor"),
+    ("category", "basicInfo/category"),
+    ("activity_type", "basicInfo/activityType"),
+    ("max_instance", "basicInfo/maxInstances"),
+    ("kind", "basicInfo/componentKind"),
+    ("description", "basicInfo/description"),
+    ("language", "language/kind"),
+];
+
+/// The profile element the spec array's `key` is, when it is one of BasicInfo's.
+pub fn spec_element(key: &str) -> Option<&'static str> {
+    SPEC_ELEMENTS
+        .iter()
+        .find(|(k, _)| *k == key)
+        .map(|(_, e)| *e)
+}
+
 fn spec(profile: &Profile, imp: &Implementation, acc: &mut Acc) {
     let b = &profile.basic_info;
     let lang = profile.language.as_ref().and_then(|l| text(&l.kind));
-    let pairs: [(&str, &str, Option<&str>, crate::model::fields::Field); 7] = {
+    // The keys compared, with the profile's value and its field (for the position).
+    let pairs: [(&str, Option<&str>, crate::model::fields::Field); 7] = {
         use crate::model::fields::Field as F;
         [
-            (
-                "implementation_id",
-                "basicInfo/name",
-                text(&b.name),
-                F::BasicName,
-            ),
-            (
-                "version",
-                "basicInfo/version",
-                text(&b.version),
-                F::BasicVersion,
-            ),
-            (
-                "vendor",
-                "basicInfo/vendor",
-                text(&b.vendor),
-                F::BasicVendor,
-            ),
-            (
-                "category",
-                "basicInfo/category",
-                text(&b.category),
-                F::BasicCategory,
-            ),
+            ("implementation_id", text(&b.name), F::BasicName),
+            ("version", text(&b.version), F::BasicVersion),
+            ("vendor", text(&b.vendor), F::BasicVendor),
+            ("category", text(&b.category), F::BasicCategory),
             (
                 "activity_type",
-                "basicInfo/activityType",
                 text(&b.activity_type),
                 F::BasicActivityType,
             ),
-            (
-                "max_instance",
-                "basicInfo/maxInstances",
-                text(&b.max_instances),
-                F::BasicMaxInstances,
-            ),
-            ("language", "language/kind", lang, F::BasicName),
+            ("max_instance", text(&b.max_instances), F::BasicMaxInstances),
+            ("language", lang, F::BasicName),
         ]
     };
-    for (key, el, pval, field) in pairs {
+    for (key, pval, field) in pairs {
+        let el = spec_element(key).unwrap_or(key);
         let (Some(s), Some(pv)) = (imp.spec_value(key), pval.filter(|v| !v.is_empty())) else {
             continue;
         };

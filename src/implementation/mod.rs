@@ -390,7 +390,8 @@ fn is_plain_file(p: &Path) -> bool {
     std::fs::symlink_metadata(p).is_ok_and(|m| m.file_type().is_file())
 }
 
-fn language_of(p: &Path) -> Option<Language> {
+/// The language of a source file the check reads, by its extension (headers included).
+pub(crate) fn language_of(p: &Path) -> Option<Language> {
     match p.extension()?.to_str()?.to_ascii_lowercase().as_str() {
         "cpp" | "cc" | "cxx" | "h" | "hpp" | "hh" | "hxx" => Some(Language::Cpp),
         "py" => Some(Language::Python),

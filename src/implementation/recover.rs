@@ -284,24 +284,13 @@ pub fn profile(imp: &Implementation, fallback: &str) -> (Profile, Recovered) {
 
 /// The profile field of a spec array key (`version` → `basicInfo/version`).
 fn spec_field(key: &str) -> String {
-    let basic = match key {
-        "implementation_id" => "name",
-        "version" => "version",
-        "vendor" => "vendor",
-        "category" => "category",
-        "activity_type" => "activityType",
-        "kind" => "componentKind",
-        "max_instance" => "maxInstances",
-        "description" => "description",
-        "language" => return "language/kind".into(),
-        _ => {
-            if let Some(n) = key.strip_prefix("conf.default.") {
-                return format!("configurationSet/{n}/defaultValue");
-            }
-            return format!("spec/{key}");
-        }
-    };
-    format!("basicInfo/{basic}")
+    if let Some(el) = super::drift::spec_element(key) {
+        return el.to_string();
+    }
+    match key.strip_prefix("conf.default.") {
+        Some(n) => format!("configurationSet/{n}/defaultValue"),
+        None => format!("spec/{key}"),
+    }
 }
 
 /// `conf.__widget__.x` → (`x`, `__widget__`): the parameter properties RTCBuilder keeps.

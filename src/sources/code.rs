@@ -24,14 +24,8 @@ const SOURCES_PER_FOLDER: usize = 2_000;
 /// path outside hidden folders (the check's walk does not enter them).
 pub(crate) fn is_source_file(rel: &str) -> bool {
     let p = Path::new(rel);
-    let ext = p
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    matches!(
-        ext.as_deref(),
-        Some("cpp" | "cc" | "cxx" | "h" | "hpp" | "hh" | "hxx" | "py" | "java")
-    ) && p.components().all(
+    crate::implementation::language_of(p).is_some()
+        && p.components().all(
         |c| matches!(c, std::path::Component::Normal(n) if !n.to_string_lossy().starts_with('.')),
     )
 }
@@ -43,7 +37,7 @@ pub(crate) fn is_source_file(rel: &str) -> bool {
 /// at any depth. Their size is bounded when they are written.
 pub(crate) fn implementation_files(
     profiles: &[(String, String)],
-    sources: Vec<(String, String)>,
+    sources: &[(String, String)],
     settings: &Selection,
 ) -> Vec<(String, String)> {
     use std::collections::{BTreeMap, BTreeSet};
@@ -88,9 +82,10 @@ pub(crate) fn implementation_files(
         }
     }
     sources
-        .into_iter()
+        .iter()
         .zip(keep)
-        .filter_map(|(s, k)| k.then_some(s))
+        .filter(|(_, k)| *k)
+        .map(|(s, _)| s.clone())
         .collect()
 }
 
@@ -111,7 +106,7 @@ pub(crate) fn write(
         return Ok(());
     }
     use crate::implementation::recover::component_folder;
-    let beside = implementation_files(profiles, code.clone(), settings);
+    let beside = implementation_files(profiles, &code, settings);
     let taken: std::collections::HashSet<&str> = beside.iter().map(|(_, r)| r.as_str()).collect();
     // The files that may hold a spec array (not headers), written only when they do.
     let (spec_like, headers): (Vec<_>, Vec<_>) = code
@@ -175,7 +170,7 @@ mod tests {
             enabled: true,
             named: vec!["x/y/z/w/v/Named.java".into()],
         };
-        let kept: Vec<String> = implementation_files(&profiles, sources, &settings)
+        let kept: Vec<String> = implementation_files(&profiles, &sources, &settings)
             .into_iter()
             .map(|(_, rel)| rel)
             .collect();
