@@ -12,7 +12,7 @@ fn guide_builds_with_mdbook_without_warnings() {
         .output_within(common::COMMAND_LIMIT)
         .is_err()
     {
-        println!("skipped: mdbook not installed");
+        crate::common::missing_tool("mdbook not installed");
         return;
     }
     let dir = tempfile::tempdir().unwrap();

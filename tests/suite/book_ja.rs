@@ -199,7 +199,7 @@ fn japanese_guide_builds_with_mdbook_beside_the_english_one() {
         .output_within(common::COMMAND_LIMIT)
         .is_err()
     {
-        println!("skipped: mdbook not installed");
+        crate::common::missing_tool("mdbook not installed");
         return;
     }
     let dir = tempfile::tempdir().unwrap();

@@ -379,7 +379,7 @@ fn markdown_output_keeps_its_marker_out_of_the_book() {
             .collect();
         assert!(leaked.is_empty(), "{leaked:?}");
     } else {
-        println!("skipped (mdbook part): mdbook not installed");
+        crate::common::missing_tool("(mdbook part) mdbook not installed");
     }
 }
 

@@ -292,7 +292,7 @@ fn neighbourhood_exports(format: &str, dir: &Path) -> Vec<std::path::PathBuf> {
 #[test]
 fn graphviz_dot_accepts_every_dot_export() {
     if !common::tool_available("dot") && !Path::new("/usr/bin/dot").exists() {
-        println!("skipped: Graphviz dot not installed");
+        crate::common::missing_tool("Graphviz dot not installed");
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -355,7 +355,9 @@ fn graphviz_dot_accepts_every_dot_export() {
 fn mermaid_parse(files: &[std::path::PathBuf]) -> Option<serde_json::Value> {
     let dir = common::root().join("tests/browser");
     if !dir.join("node_modules/mermaid").is_dir() || !Path::new("/usr/bin/chromium").exists() {
-        println!("skipped: tests/browser/node_modules/mermaid or chromium missing (npm ci)");
+        crate::common::missing_tool(
+            "tests/browser/node_modules/mermaid or chromium missing (npm ci)",
+        );
         return None;
     }
     let o = common::run_browser_harness(
@@ -439,7 +441,7 @@ fn audit_site(site: &Path) -> Option<serde_json::Value> {
     let dir = common::root().join("tests/browser");
     if !dir.join("node_modules/puppeteer-core").is_dir() || !Path::new("/usr/bin/chromium").exists()
     {
-        println!("skipped: tests/browser/node_modules or chromium missing (npm ci)");
+        crate::common::missing_tool("tests/browser/node_modules or chromium missing (npm ci)");
         return None;
     }
     let o = common::run_browser_harness(

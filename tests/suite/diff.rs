@@ -815,7 +815,7 @@ fn a_git_revision_is_read_without_touching_the_work_tree() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path();
     if !git(d, &["--version"]) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     assert!(git(d, &["init", "-q"]));

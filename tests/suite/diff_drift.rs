@@ -379,7 +379,7 @@ fn a_git_revision_reads_its_source_files() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path();
     if !git(d, &["--version"]) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     assert!(git(d, &["init", "-q"]));

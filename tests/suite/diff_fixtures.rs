@@ -575,7 +575,7 @@ fn copy_tree(from: &Path, to: &Path) {
 fn a_git_revision_brings_its_idl_and_systems() {
     let dir = tempfile::tempdir().expect("tempdir");
     if !git(dir.path(), &["init", "-q"]) {
-        eprintln!("skipped: git is not available");
+        crate::common::missing_tool("git is not available");
         return;
     }
     let work = dir.path().join("components");
@@ -972,7 +972,7 @@ fn connectors_match_by_ends_and_respellings_are_info() {
 fn a_git_revision_compares_its_systems() {
     let dir = tempfile::tempdir().expect("tempdir");
     if !git(dir.path(), &["init", "-q"]) {
-        eprintln!("skipped: git is not available");
+        crate::common::missing_tool("git is not available");
         return;
     }
     let work = dir.path().join("robot");

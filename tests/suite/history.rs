@@ -83,7 +83,7 @@ fn git_history_of_a_work_tree_follows_the_move() {
     let repo = dir.path().join("repo");
     std::fs::create_dir_all(&repo).unwrap();
     if !repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let json = build_json(&repo, &dir.path().join("site"), &[]);
@@ -168,7 +168,7 @@ fn uncommitted_edits_are_a_version_of_their_own() {
     let repo = dir.path().join("repo");
     std::fs::create_dir_all(&repo).unwrap();
     if !repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let (_, last) = versions().pop().unwrap();
@@ -305,7 +305,7 @@ fn the_component_page_has_a_history_section_in_every_output() {
     let repo = dir.path().join("repo");
     std::fs::create_dir_all(&repo).unwrap();
     if !repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     write(
@@ -392,7 +392,7 @@ fn a_source_repository_gives_its_history_up_to_the_pinned_commit() {
     let repo = dir.path().join("repo");
     std::fs::create_dir_all(&repo).unwrap();
     if !repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     // A commit whose profile cannot be read, then the fix.
@@ -484,7 +484,7 @@ fn histories_of_many_profiles_are_those_of_git_log_follow() {
     let repo = dir.path().join("repo");
     std::fs::create_dir_all(&repo).unwrap();
     if !git(&repo, &["init", "-q"], "") {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     assert!(git(&repo, &["config", "user.name", "Tester"], ""));

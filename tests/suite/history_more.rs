@@ -52,7 +52,7 @@ fn a_system_has_its_history_in_every_output() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !system_repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let site = dir.path().join("site");
@@ -147,7 +147,7 @@ fn serve_shows_the_history_and_updates_it_after_an_edit() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !system_repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let arm = common::xml_profile("Arm", &[("DataInPort", "cmd", "RTC::TimedLong")]);
@@ -260,7 +260,7 @@ fn an_idl_file_has_its_history_on_the_pages_of_its_types() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !idl_repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let site = dir.path().join("site");
@@ -322,7 +322,7 @@ fn a_source_repository_links_systems_and_idl_files_at_the_pinned_commit() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !idl_repository(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     write(
@@ -392,7 +392,7 @@ fn a_profile_moved_and_rewritten_is_followed_by_its_component_id() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !init(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
@@ -467,7 +467,7 @@ fn a_profile_copied_then_deleted_later_is_followed_to_the_original() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !init(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
@@ -525,7 +525,7 @@ fn a_copy_whose_original_stays_starts_a_history_of_its_own() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !init(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let ports = [
@@ -564,7 +564,7 @@ fn a_blob_that_is_one_file_and_another_s_older_version_is_read_for_both() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !init(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
@@ -634,7 +634,7 @@ fn history_repo() -> Option<(tempfile::TempDir, std::path::PathBuf)> {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !common::history_repo::history_repo(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return None;
     }
     Some((dir, repo))

@@ -16,7 +16,7 @@ fn chromium() -> bool {
     if Path::new(CHROMIUM).exists() {
         true
     } else {
-        println!("skipped: chromium not installed");
+        crate::common::missing_tool("chromium not installed");
         false
     }
 }
@@ -194,7 +194,9 @@ fn audit_with(
     if !dir.join("node_modules/axe-core").is_dir()
         || !dir.join("node_modules/puppeteer-core").is_dir()
     {
-        println!("skipped: tests/browser/node_modules missing (run `npm ci` in tests/browser)");
+        crate::common::missing_tool(
+            "tests/browser/node_modules missing (run `npm ci` in tests/browser)",
+        );
         return None;
     }
     let mut cmd = std::process::Command::new("node");
@@ -384,7 +386,7 @@ fn the_history_pages_pass_axe_and_fit_a_phone() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     if !common::history_repo::history_repo(&repo) {
-        println!("skipped: git not available");
+        crate::common::missing_tool("git not available");
         return;
     }
     let out = dir.path().join("site");

@@ -564,7 +564,7 @@ fn a_theme_dir_overrides_single_files() {
 #[test]
 fn tidy_reports_no_errors() {
     if !have("tidy") {
-        println!("skipped: tidy not installed");
+        crate::common::missing_tool("tidy not installed");
         return;
     }
     let dir = tempfile::tempdir().unwrap();

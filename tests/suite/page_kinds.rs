@@ -164,7 +164,7 @@ fn every_page_is_written_in_every_output_that_carries_its_kind() {
         "ComponentHistory",
     ] {
         if !with_history && (kind == "WhatsNew" || kind == "ComponentHistory") {
-            println!("skipped {kind}: git not available");
+            crate::common::missing_tool(&format!("{kind}: git not available"));
             continue;
         }
         assert!(kinds_seen.contains(kind), "no {kind} page in the inputs");

@@ -500,7 +500,7 @@ fn markdown_doxygen_and_json_carry_systems() {
 #[test]
 fn doxygen_runs_on_a_system_without_warnings() {
     if !html_support::have("doxygen") {
-        println!("skipped: doxygen is not installed");
+        crate::common::missing_tool("doxygen is not installed");
         return;
     }
     let dir = tempfile::tempdir().unwrap();

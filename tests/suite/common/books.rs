@@ -1,6 +1,7 @@
 //! Running the real tools on the Markdown and Doxygen outputs: `doxygen` (warnings are errors)
 //! and `mdbook` (no warning, no broken link in the built book). A test whose tool is missing
-//! prints `skipped: <tool> not installed` and passes; CI installs both.
+//! prints `skipped: <tool> not installed` and passes, except under CI, where it fails
+//! (`missing_tool`); CI installs both.
 use super::OutputWithin;
 
 use super::root;
@@ -8,7 +9,7 @@ use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// Whether `tool` runs; prints `skipped: <tool> not installed` otherwise.
+/// Whether `tool` runs; otherwise `missing_tool` (skipped, or a failure under CI).
 pub fn have(tool: &str) -> bool {
     let ok = Command::new(tool)
         .arg("--version")
@@ -16,7 +17,7 @@ pub fn have(tool: &str) -> bool {
         .map(|o| o.status.success())
         .unwrap_or(false);
     if !ok {
-        println!("skipped: {tool} not installed");
+        super::missing_tool(&format!("{tool} not installed"));
     }
     ok
 }

@@ -106,7 +106,7 @@ pub fn run_browser_harness(cmd: &mut std::process::Command) -> Option<std::proce
     match cmd.output_within(BROWSER_LIMIT) {
         Ok(o) => Some(o),
         Err(e) => {
-            println!("skipped: cannot run node: {e}");
+            missing_tool(&format!("cannot run node: {e}"));
             None
         }
     }
@@ -310,4 +310,38 @@ pub fn naming_path_system(name: &str) -> String {
 </rts:RtsProfile>
 "#
     )
+}
+
+/// A test that needs a tool this machine lacks (git, doxygen, mdbook, tidy, dot, chromium, the
+/// npm install of tests/browser). With `CI` set (`.ci/run` sets it, as CI services do) the test
+/// fails: CI installs every tool, so a missing one is a broken setup, and a test that did not run
+/// is no evidence. Elsewhere it prints a visible `skipped: …` line and the caller returns.
+pub fn missing_tool(what: &str) {
+    skip_or_fail(in_ci(), what);
+}
+
+fn skip_or_fail(ci: bool, what: &str) {
+    if ci {
+        panic!(
+            "{what}, and CI is set: a test that cannot run is no evidence \
+             (.ci/run installs every tool the tests drive; unset CI to skip it locally)"
+        );
+    }
+    println!("skipped: {what}");
+}
+
+/// Whether `CI` is set to anything but empty, `0` or `false`.
+pub fn in_ci() -> bool {
+    std::env::var("CI").is_ok_and(|v| !matches!(v.trim(), "" | "0" | "false"))
+}
+
+#[test]
+#[should_panic(expected = "mdbook not installed, and CI is set")]
+fn a_missing_tool_fails_under_ci() {
+    skip_or_fail(true, "mdbook not installed");
+}
+
+#[test]
+fn a_missing_tool_is_a_visible_skip_elsewhere() {
+    skip_or_fail(false, "mdbook not installed");
 }
