@@ -60,7 +60,7 @@ pub fn recover(
     std::collections::BTreeMap<String, Recovery>,
     Vec<crate::diagnostic::Diagnostic>,
 ) {
-    use implementation::recover::{component_folder, find_all};
+    use implementation::recover::{find_all, profile_folders};
     let mut loaded = Vec::new();
     let mut by_source = std::collections::BTreeMap::new();
     if !settings.enabled || code.is_empty() {
@@ -68,7 +68,7 @@ pub fn recover(
     }
     let folders: std::collections::HashSet<String> = profiles
         .iter()
-        .map(|p| component_folder(&p.source).to_string())
+        .flat_map(|p| profile_folders(&p.source).map(str::to_string))
         .collect();
     let (found, diags) = find_all(code, &folders, settings.max_file_size);
     for f in found {

@@ -60,6 +60,15 @@ pub fn component_folder(rel: &str) -> &str {
     }
 }
 
+/// The component folders whose code the profile at `rel` documents: its own folder and that
+/// folder's [`component_folder`] (`X/RTC.xml` documents the code of `X/src/`; `X/src/RTC.xml`,
+/// a project kept in a folder named src, the code of `X/src/src/`). Twice the same when
+/// they agree.
+pub fn profile_folders(rel: &str) -> [&str; 2] {
+    let own = rel.rsplit_once('/').map_or("", |(d, _)| d);
+    [own, component_folder(rel)]
+}
+
 /// What to do about a component recovered from the code in `folder` (as the user names it).
 pub fn extract_hint(folder: &str) -> String {
     let folder = if folder.is_empty() { "." } else { folder };
@@ -510,10 +519,14 @@ pub fn extract(input: &Path, max_size: u64) -> anyhow::Result<Vec<Extracted>> {
         for (path, rel) in &c.files {
             let head = crate::walk::read_at_most(path, 64 * 1024).unwrap_or_default();
             if !crate::walk::is_backup(path) && crate::walk::detect(path, &head).is_some() {
-                profiles
-                    .entry(component_folder(rel).to_string())
-                    .or_default()
-                    .push(path.clone());
+                let both = profile_folders(rel);
+                let n = if both[0] == both[1] { 1 } else { 2 };
+                for folder in &both[..n] {
+                    profiles
+                        .entry(folder.to_string())
+                        .or_default()
+                        .push(path.clone());
+                }
             }
         }
         c.code
@@ -821,6 +834,8 @@ mod tests {
         assert_eq!(component_folder("Foo/src/pkg/a/FooImpl.java"), "Foo");
         assert_eq!(component_folder("src/Foo.cpp"), "");
         assert_eq!(component_folder("Foo.py"), "");
+        assert_eq!(profile_folders("Foo/RTC.xml"), ["Foo", "Foo"]);
+        assert_eq!(profile_folders("Foo/src/RTC.xml"), ["Foo/src", "Foo"]);
     }
 
     #[test]

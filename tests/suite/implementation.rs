@@ -465,6 +465,16 @@ fn components_with_code_and_no_profile_are_documented_from_their_code() {
     );
     // A folder with a profile is the profile's; a test copy is no component.
     assert!(by_name("Documented").recovered.is_none());
+    // So is the code below a profile in a folder named src (Nested/src/RTC.xml and
+    // Nested/src/src/Nested.cpp, as a real repository keeps its RTCBuilder project).
+    assert_eq!(
+        cat.components
+            .iter()
+            .filter(|c| c.profile.basic_info.name.as_deref() == Some("Nested"))
+            .count(),
+        1
+    );
+    assert!(by_name("Nested").recovered.is_none());
     assert!(!cat
         .components
         .iter()
@@ -564,7 +574,7 @@ fn extract_writes_the_profile_the_code_describes_and_check_finds_no_drift() {
     }
     assert!(
         err.contains(
-            "left out 1 component(s) a profile documents already (Documented/Documented.py)"
+            "left out 2 component(s) a profile documents already (Documented/Documented.py, Nested/src/src/Nested.cpp)"
         ),
         "{err}"
     );
