@@ -90,6 +90,10 @@ pub(super) struct IdlDiff<'a> {
 /// types that hold the same struct many times over).
 const BUDGET: usize = 20_000;
 
+/// Definitions nested one in another that are followed at most (a chain of structs each holding
+/// the one before would otherwise recurse once per link, past the stack).
+const NESTING: usize = 128;
+
 impl<'a> IdlDiff<'a> {
     pub fn new(old: &'a IdlSet, new: &'a IdlSet) -> Self {
         IdlDiff {
@@ -445,7 +449,14 @@ impl<'s> Cmp<'s> {
         if self.stack.contains(&name) {
             return;
         }
-        if self.budget == 0 {
+        let stop = if self.budget == 0 {
+            Some(format!("more than {BUDGET} nested types"))
+        } else if self.stack.len() >= NESTING {
+            Some(format!("nested more than {NESTING} definitions deep"))
+        } else {
+            None
+        };
+        if let Some(why) = stop {
             if !self
                 .out
                 .findings
@@ -456,8 +467,8 @@ impl<'s> Cmp<'s> {
                     Kind::Other,
                     &p.base,
                     (None, None),
-                    format!("comparison stopped at `{name}`: more than {BUDGET} nested types"),
-                    None,
+                    format!("comparison stopped at `{name}`: {why}"),
+                    at(&n, nd.pos()).loc(),
                 );
             }
             return;
@@ -1735,6 +1746,58 @@ mod tests {
         );
         let out = compare_type(&o, &n, "T");
         assert_eq!(out.one_side, vec![("In".to_string(), false)]);
+    }
+
+    #[test]
+    fn a_long_chain_of_nested_structs_stops_instead_of_overflowing() {
+        // S<i> holds S<i-1>: 1000 links deep, past the stack without a limit.
+        let chain = |first: &str| {
+            let mut text = format!("struct S0 {{ {first} }};");
+            for i in 1..1000 {
+                text.push_str(&format!(" struct S{i} {{ long a; S{} p; }};", i - 1));
+            }
+            text
+        };
+        let (o, n) = (set(&chain("long a;")), set(&chain("long a; long b;")));
+        let out = compare_type(&o, &n, "S999");
+        assert_eq!(out.findings.len(), 1, "{:?}", out.findings);
+        assert_eq!(out.findings[0].kind, Kind::Other);
+        assert!(
+            out.findings[0]
+                .message
+                .contains("nested more than 128 definitions deep"),
+            "{}",
+            out.findings[0].message
+        );
+        // Closer to the change, the change itself.
+        let out = compare_type(&o, &n, "S3");
+        assert_eq!(out.findings[0].kind, Kind::MemberAdded);
+        assert_eq!(out.findings[0].path, "fields/p.p.p.b");
+    }
+
+    #[test]
+    fn idl_files_are_compared_definition_by_definition_with_positions() {
+        let old = "module M {\n  const long N = 1;\n  struct P { long a;\n    long b; };\n};\n";
+        let new = "module M {\n  const long N = 2;\n  struct P { long a; };\n  interface I { void f(); };\n};\n";
+        let changes = compare_idl_files(&set(old), &set(new), "t.idl");
+        let got: Vec<(&str, &str, Option<u32>, Option<u32>)> = changes
+            .iter()
+            .map(|c| (c.code, c.path.as_str(), c.line, c.old_line))
+            .collect();
+        assert_eq!(
+            got,
+            vec![
+                (codes::IDL_TYPE_ADDED, "idl/M::I", Some(4), None),
+                (codes::OTHER_CHANGED, "idl/M::N", Some(2), None),
+                // At the struct in NEW, at the member in OLD.
+                (
+                    codes::IDL_MEMBER_REMOVED,
+                    "idl/M::P/fields/b",
+                    Some(3),
+                    Some(4)
+                ),
+            ]
+        );
     }
 
     #[test]
