@@ -135,7 +135,7 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                     );
                 }
                 bail!(
-                    "{which} `{shown}` does not exist; give a directory, a profile file or REV:PATH (a git revision and a path, e.g. origin/main:components)"
+                    "{which} `{shown}` does not exist; give a directory, a profile or IDL file, or REV:PATH (a git revision and a path, e.g. origin/main:components)"
                 );
             }
             if p.is_file() && is_catalog_json(p) {
