@@ -210,7 +210,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         match outcome {
             Outcome::NotProfile(what) if named => {
                 bail!(
-                    "`{}` {what}; name an RTC component profile (RTC.xml or its YAML form) or an RT System profile",
+                    "`{}` {what}; name an RTC component profile (RTC.xml or its YAML form), an RT System profile or an IDL file (`.idl`)",
                     input.display()
                 )
             }

@@ -51,7 +51,7 @@ enum Command {
     Build(BuildArgs),
     /// Validate profiles (for CI); exits 1 when a profile has an error.
     Check(CheckArgs),
-    /// Compare two versions of a catalogue (directories, profile files or REV:PATH of git) and
+    /// Compare two versions of a catalogue (directories, profile or IDL files, or REV:PATH of git) and
     /// classify every change as breaking, warning or info — also where a component's code starts
     /// or stops disagreeing with its profile; exits 1 when one reaches --fail-on.
     Diff(DiffArgs),
@@ -260,9 +260,9 @@ enum Deny {
 
 #[derive(Args)]
 struct DiffArgs {
-    /// The old side: a directory, a profile file, a catalog.json written by `rtcdoc build
-    /// --format json`, or REV:PATH (a git revision and a path in the current repository, e.g.
-    /// `origin/main:components`).
+    /// The old side: a directory, a profile file, an IDL file (`.idl`), a catalog.json written by
+    /// `rtcdoc build --format json`, or REV:PATH (a git revision and a path in the current
+    /// repository, e.g. `origin/main:components` or `HEAD~1:idl/Lab.idl`).
     #[arg(required_unless_present = "explain")]
     old: Option<String>,
     /// The new side, like OLD.

@@ -85,6 +85,13 @@ pub fn is_document_extension(ext: &str) -> bool {
     matches!(ext, "xml" | "yaml" | "yml" | "rtsys")
 }
 
+/// Whether a file is named as IDL (`.idl`, any case).
+pub fn is_idl_path(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("idl"))
+}
+
 /// Whether a file is one the catalogue may read as a specification: a profile-like file (by
 /// extension or by name, RTCBuilder's backups included) or an IDL file. What it is, is decided
 /// by its content.
@@ -639,9 +646,14 @@ impl<'a> Walker<'a> {
         }
         let path = entry.path();
         let rel = rel_path(&self.root, path);
-        // A file named on the command line is read whatever its name and the patterns.
+        // A file named on the command line is read whatever its name and the patterns: an
+        // `.idl` file as IDL (`rtcdoc diff A.idl B.idl`), any other as a profile.
         if entry.depth() == 0 && self.input.is_file() {
-            out.files.push((path.to_path_buf(), rel));
+            if is_idl_path(path) {
+                out.idl.push((path.to_path_buf(), rel));
+            } else {
+                out.files.push((path.to_path_buf(), rel));
+            }
             return;
         }
         let ext = path

@@ -295,7 +295,7 @@ pub static CODES: &[Code] = &[
         level: Breaking,
         name: "idl-type-removed",
         summary: "a type the IDL files defined is no longer defined",
-        explanation: "A struct, union, enum, typedef, interface or exception one side's IDL files define is defined by none of the other's (by scoped name: a type moved to another module counts as removed and added). Ports, peers and generated code naming it no longer build, and a data port carrying it cannot be connected to an old peer. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332); the history of an IDL file reports it for every type the file stopped defining.",
+        explanation: "A struct, union, enum, typedef, interface, exception or constant one side's IDL files define is defined by none of the other's (by scoped name: a type moved to another module counts as removed and added). Ports, peers and generated code naming it no longer build, and a data port carrying it cannot be connected to an old peer. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332), also when the sides hold IDL alone; the history of an IDL file reports it for every type the file stopped defining.",
     },
     Code {
         code: CONNECTOR_COMPONENT_REMOVED,
@@ -589,7 +589,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "idl-type-added",
         summary: "the IDL files define a new type",
-        explanation: "A struct, union, enum, typedef, interface or exception is defined on the new side only (by scoped name). Nothing that worked before depends on it. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332); the history of an IDL file reports it for every type the file begins to define.",
+        explanation: "A struct, union, enum, typedef, interface, exception or constant is defined on the new side only (by scoped name). Nothing that worked before depends on it. `rtcdoc diff` reports it when both sides have IDL and no port carries the type (a type a port carries is DIFF332), also when the sides hold IDL alone; the history of an IDL file reports it for every type the file begins to define.",
     },
     Code {
         code: OPENRTM_IDL_COPY,

@@ -48,6 +48,17 @@ pub(super) struct Finding {
     pub old: Option<String>,
     pub new: Option<String>,
     pub message: String,
+    /// Where in the IDL files the finding is, when known.
+    pub loc: Option<Loc>,
+}
+
+/// Where a finding is in the IDL files: the file (as the set names it) and the position, in
+/// NEW, or in OLD for an item only OLD has (a removed member).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(super) struct Loc {
+    pub file: String,
+    pub pos: crate::model::Pos,
+    pub in_old: bool,
 }
 
 /// The comparison of one type.
@@ -56,6 +67,9 @@ pub(super) struct Outcome {
     pub findings: Vec<Finding>,
     /// Types met on the way that only one side defines: (scoped name, defined in NEW).
     pub one_side: Vec<(String, bool)>,
+    /// Every definition compared on the way (the type itself and those it holds), by scoped
+    /// name: their changes are reported with this type's.
+    pub visited: BTreeSet<String>,
 }
 
 /// Every comparison of one diff: both IDL sets, the cache and the one-sided types.
@@ -65,11 +79,20 @@ pub(super) struct IdlDiff<'a> {
     cache: HashMap<String, Rc<Outcome>>,
     /// Scoped name → (defined in NEW, components whose ports carry it).
     one_side: BTreeMap<String, (bool, BTreeSet<String>)>,
+    /// Every definition the ports' types led to ([`Outcome::visited`]): their changes are
+    /// reported with the ports, and not again on their own ([`unused_types`]).
+    visited: BTreeSet<String>,
+    /// The types the ports carry whose comparison found a change.
+    changed: BTreeSet<String>,
 }
 
 /// Nested definitions compared for one type at most (a guard against exponential fan-out of
 /// types that hold the same struct many times over).
 const BUDGET: usize = 20_000;
+
+/// Definitions nested one in another that are followed at most (a chain of structs each holding
+/// the one before would otherwise recurse once per link, past the stack).
+const NESTING: usize = 128;
 
 impl<'a> IdlDiff<'a> {
     pub fn new(old: &'a IdlSet, new: &'a IdlSet) -> Self {
@@ -78,6 +101,8 @@ impl<'a> IdlDiff<'a> {
             new,
             cache: HashMap::new(),
             one_side: BTreeMap::new(),
+            visited: BTreeSet::new(),
+            changed: BTreeSet::new(),
         }
     }
 
@@ -94,6 +119,11 @@ impl<'a> IdlDiff<'a> {
             Some(o) => o.clone(),
             None => {
                 let o = Rc::new(compare_type(self.old, self.new, &key));
+                // Once per type (the cache): no pass over the visited set per port.
+                self.visited.extend(o.visited.iter().cloned());
+                if !o.findings.is_empty() {
+                    self.changed.insert(key.clone());
+                }
                 self.cache.insert(key, o.clone());
                 o
             }
@@ -108,8 +138,9 @@ impl<'a> IdlDiff<'a> {
         outcome
     }
 
-    /// DIFF332 for every type found on one side only, once each.
-    pub fn finish(self, out: &mut Vec<Change>) {
+    /// DIFF332 for every type found on one side only, once each; what the ports' types led
+    /// to, for [`unused_types`].
+    pub fn finish(self, out: &mut Vec<Change>) -> Compared {
         for (name, (in_new, users)) in self.one_side {
             let (has, lacks) = if in_new {
                 ("NEW", "OLD")
@@ -129,7 +160,20 @@ impl<'a> IdlDiff<'a> {
                 ),
             ));
         }
+        Compared {
+            visited: self.visited,
+            changed: self.changed,
+        }
     }
+}
+
+/// What the comparison of the ports' types covered ([`IdlDiff::finish`]).
+#[derive(Debug, Default)]
+pub(super) struct Compared {
+    /// Every definition compared through a port, nested ones included.
+    visited: BTreeSet<String>,
+    /// The types carried by ports whose comparison found a change.
+    changed: BTreeSet<String>,
 }
 
 /// A definition that can be compared (forward declarations and skipped ones cannot).
@@ -289,12 +333,42 @@ fn doc_text(d: Option<&crate::idl::IdlDoc>) -> Option<&str> {
     d.map(|d| d.text.trim()).filter(|t| !t.is_empty())
 }
 
-fn at(item: &IdlItem, pos: crate::model::Pos) -> String {
-    if pos.line > 0 {
-        format!(" ({}:{})", item.file.path, pos.line)
-    } else {
-        format!(" ({})", item.file.path)
+/// Where an item of `item`'s file is: shown in a message as ` (file:line)`, kept as the
+/// finding's [`Loc`].
+struct At(Loc);
+
+impl std::fmt::Display for At {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let Loc { file, pos, .. } = &self.0;
+        if pos.line > 0 {
+            write!(f, " ({file}:{})", pos.line)
+        } else {
+            write!(f, " ({file})")
+        }
     }
+}
+
+impl At {
+    fn loc(&self) -> Option<Loc> {
+        Some(self.0.clone())
+    }
+}
+
+/// An item of NEW's `item` at `pos`.
+fn at(item: &IdlItem, pos: crate::model::Pos) -> At {
+    At(Loc {
+        file: item.file.path.clone(),
+        pos,
+        in_old: false,
+    })
+}
+
+/// An item only OLD's `item` has, at `pos`.
+fn at_old(item: &IdlItem, pos: crate::model::Pos) -> At {
+    At(Loc {
+        in_old: true,
+        ..at(item, pos).0
+    })
 }
 
 /// What a member, case or attribute holds: its type, array bounds and doc comment.
@@ -310,14 +384,35 @@ struct Cmp<'s> {
 }
 
 impl<'s> Cmp<'s> {
-    fn push(&mut self, kind: Kind, p: &str, old: Option<String>, new: Option<String>, msg: String) {
+    fn push(
+        &mut self,
+        kind: Kind,
+        p: &str,
+        (old, new): (Option<String>, Option<String>),
+        msg: String,
+        loc: Option<Loc>,
+    ) {
         self.out.findings.push(Finding {
             kind,
             path: p.to_string(),
             old,
             new,
             message: msg,
+            loc,
         });
+    }
+
+    /// Where an operation or attribute at `pos` is: in the file of `from`, the interface that
+    /// declares it (a base may be in another file), of NEW when `in_new`, else of OLD;
+    /// `fallback`'s file when `from` is not found.
+    fn declared(&self, in_new: bool, from: &str, pos: crate::model::Pos, fallback: &IdlItem) -> At {
+        let set = if in_new { self.new } else { self.old };
+        let file = find(set, from).map_or(fallback.file, |i| i.file);
+        At(Loc {
+            file: file.path.clone(),
+            pos,
+            in_old: !in_new,
+        })
     }
 
     fn one_sided(&mut self, name: &str, in_new: bool) {
@@ -333,15 +428,16 @@ impl<'s> Cmp<'s> {
         what: &str,
         o: Option<&crate::idl::IdlDoc>,
         n: Option<&crate::idl::IdlDoc>,
+        loc: Option<Loc>,
     ) {
         let (a, b) = (doc_text(o), doc_text(n));
         if a != b {
             self.push(
                 Kind::Documentation,
                 &p.base,
-                a.map(str::to_string),
-                b.map(str::to_string),
+                (a.map(str::to_string), b.map(str::to_string)),
                 format!("the doc comment of {what} changed"),
+                loc,
             );
         }
     }
@@ -353,7 +449,14 @@ impl<'s> Cmp<'s> {
         if self.stack.contains(&name) {
             return;
         }
-        if self.budget == 0 {
+        let stop = if self.budget == 0 {
+            Some(format!("more than {BUDGET} nested types"))
+        } else if self.stack.len() >= NESTING {
+            Some(format!("nested more than {NESTING} definitions deep"))
+        } else {
+            None
+        };
+        if let Some(why) = stop {
             if !self
                 .out
                 .findings
@@ -363,45 +466,51 @@ impl<'s> Cmp<'s> {
                 self.push(
                     Kind::Other,
                     &p.base,
-                    None,
-                    None,
-                    format!("comparison stopped at `{name}`: more than {BUDGET} nested types"),
+                    (None, None),
+                    format!("comparison stopped at `{name}`: {why}"),
+                    at(&n, nd.pos()).loc(),
                 );
             }
             return;
         }
         self.budget -= 1;
+        self.out.visited.insert(name.clone());
+        let here = at(&n, nd.pos());
         if top && od.repository_id() != nd.repository_id() {
             self.push(
                 Kind::RepositoryId,
                 &p.base,
-                Some(od.repository_id().to_string()),
-                Some(nd.repository_id().to_string()),
+                (
+                    Some(od.repository_id().to_string()),
+                    Some(nd.repository_id().to_string()),
+                ),
                 format!(
-                    "the repository id of `{name}` changed from `{}` to `{}`{}",
+                    "the repository id of `{name}` changed from `{}` to `{}`{here}",
                     od.repository_id(),
                     nd.repository_id(),
-                    at(&n, nd.pos())
                 ),
+                here.loc(),
             );
         }
         if od.kind_word() != nd.kind_word() {
             self.push(
                 Kind::Typedef,
                 &p.base,
-                Some(format!("{} {name}", od.kind_word())),
-                Some(format!("{} {name}", nd.kind_word())),
+                (
+                    Some(format!("{} {name}", od.kind_word())),
+                    Some(format!("{} {name}", nd.kind_word())),
+                ),
                 format!(
-                    "`{name}` was a {} and is now a {}{}",
+                    "`{name}` was a {} and is now a {}{here}",
                     od.kind_word(),
                     nd.kind_word(),
-                    at(&n, nd.pos())
                 ),
+                here.loc(),
             );
             return;
         }
         self.stack.push(name.clone());
-        self.doc(p, &format!("`{name}`"), od.doc(), nd.doc());
+        self.doc(p, &format!("`{name}`"), od.doc(), nd.doc(), here.loc());
         match (od, nd) {
             (IdlDefinition::Struct(a), IdlDefinition::Struct(b)) => {
                 self.members(p, &a.fields, &b.fields, &name, (&o, &n))
@@ -420,6 +529,7 @@ impl<'s> Cmp<'s> {
                             &format!("value `{}` of `{name}`", v.name),
                             ov.doc.as_deref(),
                             v.doc.as_deref(),
+                            here.loc(),
                         );
                     }
                 }
@@ -439,9 +549,9 @@ impl<'s> Cmp<'s> {
                         self.push(
                             Kind::Union,
                             &p.slot(&format!("cases/{}", c.field.name)).base,
-                            Some(case_text(c)),
-                            None,
+                            (Some(case_text(c)), None),
                             format!("case `{}` of union `{name}` was removed", c.field.name),
+                            at_old(&o, c.field.pos).loc(),
                         );
                     }
                 }
@@ -451,13 +561,13 @@ impl<'s> Cmp<'s> {
                         self.push(
                             Kind::Union,
                             &cp.base,
-                            None,
-                            Some(case_text(c)),
+                            (None, Some(case_text(c))),
                             format!(
                                 "case `{}` was added to union `{name}`{}",
                                 c.field.name,
                                 at(&n, c.field.pos)
                             ),
+                            at(&n, c.field.pos).loc(),
                         );
                         continue;
                     };
@@ -478,8 +588,7 @@ impl<'s> Cmp<'s> {
                         self.push(
                             Kind::Union,
                             &cp.base,
-                            Some(labels(oc).join(", ")),
-                            Some(labels(c).join(", ")),
+                            (Some(labels(oc).join(", ")), Some(labels(c).join(", "))),
                             format!(
                                 "case `{}` of union `{name}` is selected by {} instead of {}{}",
                                 c.field.name,
@@ -487,6 +596,7 @@ impl<'s> Cmp<'s> {
                                 labels(oc).join(", "),
                                 at(&n, c.field.pos)
                             ),
+                            at(&n, c.field.pos).loc(),
                         );
                     }
                     let (of, nf) = (&oc.field, &c.field);
@@ -520,9 +630,9 @@ impl<'s> Cmp<'s> {
                 self.push(
                     Kind::Other,
                     &p.base,
-                    Some(a.expr.clone()),
-                    Some(b.expr.clone()),
-                    format!("constant `{name}` changed"),
+                    (Some(a.expr.clone()), Some(b.expr.clone())),
+                    format!("constant `{name}` changed{here}"),
+                    here.loc(),
                 );
             }
             _ => {}
@@ -545,14 +655,14 @@ impl<'s> Cmp<'s> {
             self.push(
                 Kind::MemberRemoved,
                 &p.member(&f.name).base,
-                Some(format!("{} {}", ty(f), f.name)),
-                None,
+                (Some(format!("{} {}", ty(f), f.name)), None),
                 format!(
                     "member `{}` ({}) of `{owner}` was removed{}",
                     f.name,
                     ty(f),
-                    at(o, f.pos)
+                    at_old(o, f.pos)
                 ),
+                at_old(o, f.pos).loc(),
             );
         }
         for (i, f) in nf.iter().enumerate() {
@@ -560,8 +670,7 @@ impl<'s> Cmp<'s> {
                 self.push(
                     Kind::MemberAdded,
                     &p.member(&f.name).base,
-                    None,
-                    Some(format!("{} {}", ty(f), f.name)),
+                    (None, Some(format!("{} {}", ty(f), f.name))),
                     format!(
                         "member `{}` ({}) was added to `{owner}` as member {} of {}{}",
                         f.name,
@@ -570,6 +679,7 @@ impl<'s> Cmp<'s> {
                         nf.len(),
                         at(n, f.pos)
                     ),
+                    at(n, f.pos).loc(),
                 );
             }
         }
@@ -584,14 +694,14 @@ impl<'s> Cmp<'s> {
             self.push(
                 Kind::Reordered,
                 &here,
-                Some(co.join(", ")),
-                Some(cn.join(", ")),
+                (Some(co.join(", ")), Some(cn.join(", "))),
                 format!(
                     "the members of `{owner}` changed their order: {} → {}{}",
                     co.join(", "),
                     cn.join(", "),
                     at(n, n.definition.pos())
                 ),
+                at(n, n.definition.pos()).loc(),
             );
         }
         for f in nf {
@@ -616,9 +726,9 @@ impl<'s> Cmp<'s> {
                 self.push(
                     Kind::EnumRemoved,
                     &p.seg(&format!("values/{v}")).base,
-                    Some(v.to_string()),
-                    None,
+                    (Some(v.to_string()), None),
                     format!("value `{v}` (number {i}) was removed from enum `{owner}`"),
+                    at(n, n.definition.pos()).loc(),
                 );
             }
         }
@@ -636,27 +746,21 @@ impl<'s> Cmp<'s> {
             self.push(
                 Kind::EnumRemoved,
                 &p.seg("values").base,
-                Some(ov.join(", ")),
-                Some(nv.join(", ")),
+                (Some(ov.join(", ")), Some(nv.join(", "))),
                 format!(
                     "values of enum `{owner}` changed their numbers: {}{}",
                     renumbered.join(", "),
                     at(n, n.definition.pos())
                 ),
+                at(n, n.definition.pos()).loc(),
             );
         }
         for (i, v) in nv.iter().enumerate().skip(ov.len()) {
             if !ov.contains(v) {
-                self.push(
-                    Kind::EnumAppended,
-                    &p.seg(&format!("values/{v}")).base,
-                    None,
-                    Some(v.to_string()),
-                    format!(
+                self.push(Kind::EnumAppended, &p.seg(&format!("values/{v}")).base, (None, Some(v.to_string())), format!(
                         "value `{v}` (number {i}) was appended to enum `{owner}`: peers built from the old IDL do not know it{}",
                         at(n, n.definition.pos())
-                    ),
-                );
+                    ), at(n, n.definition.pos()).loc());
             }
         }
     }
@@ -671,7 +775,7 @@ impl<'s> Cmp<'s> {
         (nt, na): (&'s IdlType, &[IdlBound]),
         kind: Kind,
         what: &str,
-        loc: &str,
+        loc: &At,
     ) {
         let wo = format!("{}{}", written(ot), dims(oa));
         let wn = format!("{}{}", written(nt), dims(na));
@@ -684,18 +788,18 @@ impl<'s> Cmp<'s> {
                 self.push(
                     kind,
                     &p.base,
-                    Some(wo.clone()),
-                    Some(wn.clone()),
+                    (Some(wo.clone()), Some(wn.clone())),
                     format!("{what} is now `{wn}` instead of `{wo}`{loc}"),
+                    loc.loc(),
                 );
                 return;
             }
             self.push(
                 Kind::Other,
                 &p.base,
-                Some(wo.clone()),
-                Some(wn.clone()),
+                (Some(wo.clone()), Some(wn.clone())),
                 format!("{what} is written `{wn}` instead of `{wo}`, the same type (`{en}`){loc}"),
+                loc.loc(),
             );
         }
         // An array's members are its elements' (`m[]` like a sequence).
@@ -716,10 +820,10 @@ impl<'s> Cmp<'s> {
         (nt, na, nd): Held<'s, '_>,
         kind: Kind,
         (what, doc_what): (&str, &str),
-        loc: &str,
+        loc: &At,
     ) {
         self.slot(p, (ot, oa), (nt, na), kind, what, loc);
-        self.doc(p, doc_what, od, nd);
+        self.doc(p, doc_what, od, nd, loc.loc());
     }
 
     /// Follows two types of the same shape into the named definitions they hold.
@@ -787,18 +891,13 @@ impl<'s> Cmp<'s> {
         n: &IdlItem,
     ) {
         let bases = |i: &IdlInterface| -> Vec<String> { i.bases.iter().map(written).collect() };
+        let here = at(n, n.definition.pos());
         if bases(a) != bases(b) {
-            self.push(
-                Kind::Other,
-                &p.seg("bases").base,
-                Some(bases(a).join(", ")),
-                Some(bases(b).join(", ")),
-                format!(
+            self.push(Kind::Other, &p.seg("bases").base, (Some(bases(a).join(", ")), Some(bases(b).join(", "))), format!(
                     "interface `{name}` inherits from {} instead of {} (the operations are compared with the inherited ones)",
                     list_or_none(&bases(b)),
                     list_or_none(&bases(a))
-                ),
-            );
+                ), here.loc());
         }
         let (oo, oa) = flatten(self.old, a);
         let (no, na) = flatten(self.new, b);
@@ -807,62 +906,57 @@ impl<'s> Cmp<'s> {
                 self.push(
                     Kind::OperationRemoved,
                     &p.seg(&format!("operations/{}", op.name)).base,
-                    Some(signature(op)),
-                    None,
+                    (Some(signature(op)), None),
                     format!(
                         "operation `{}`{} was removed from interface `{name}`",
                         op.name,
                         inherited(from, name)
                     ),
+                    self.declared(false, from, op.pos, n).loc(),
                 );
             }
         }
         for (op, from) in &no {
             let opath = p.seg(&format!("operations/{}", op.name));
+            let op_at = self.declared(true, from, op.pos, n);
             let Some((old_op, _)) = oo.iter().find(|(x, _)| x.name == op.name) else {
                 self.push(
                     Kind::OperationAdded,
                     &opath.base,
-                    None,
-                    Some(signature(op)),
+                    (None, Some(signature(op))),
                     format!(
                         "operation `{}`{} was added to interface `{name}`{}",
                         op.name,
                         inherited(from, name),
-                        at(n, op.pos)
+                        op_at
                     ),
+                    op_at.loc(),
                 );
                 continue;
             };
-            self.operation(&opath, old_op, op, name, n);
+            self.operation(&opath, old_op, op, name, &op_at);
         }
-        for (at_, _) in &oa {
+        for (at_, from) in &oa {
             if !na.iter().any(|(x, _)| x.name == at_.name) {
-                self.push(
-                    Kind::OperationRemoved,
-                    &p.seg(&format!("attributes/{}", at_.name)).base,
-                    Some(attribute_text(at_)),
-                    None,
-                    format!(
+                self.push(Kind::OperationRemoved, &p.seg(&format!("attributes/{}", at_.name)).base, (Some(attribute_text(at_)), None), format!(
                         "attribute `{}` (its _get_/_set_ operations) was removed from interface `{name}`",
                         at_.name
-                    ),
-                );
+                    ), self.declared(false, from, at_.pos, n).loc());
             }
         }
-        for (nat, _) in &na {
+        for (nat, from) in &na {
             let ap = p.slot(&format!("attributes/{}", nat.name));
+            let nat_at = self.declared(true, from, nat.pos, n);
             let Some((oat, _)) = oa.iter().find(|(x, _)| x.name == nat.name) else {
                 self.push(
                     Kind::OperationAdded,
                     &ap.base,
-                    None,
-                    Some(attribute_text(nat)),
+                    (None, Some(attribute_text(nat))),
                     format!(
                         "attribute `{}` was added to interface `{name}`{}",
-                        nat.name,
-                        at(n, nat.pos)
+                        nat.name, nat_at
                     ),
+                    nat_at.loc(),
                 );
                 continue;
             };
@@ -872,15 +966,15 @@ impl<'s> Cmp<'s> {
                 self.push(
                     Kind::OperationChanged,
                     &ap.base,
-                    Some(attribute_text(oat)),
-                    Some(attribute_text(nat)),
+                    (Some(attribute_text(oat)), Some(attribute_text(nat))),
                     format!(
                         "attribute `{}` of interface `{name}` is now `{}` instead of `{}`{}",
                         nat.name,
                         attribute_text(nat),
                         attribute_text(oat),
-                        at(n, nat.pos)
+                        nat_at
                     ),
+                    nat_at.loc(),
                 );
             } else {
                 let what = format!("attribute `{}` of `{name}`", nat.name);
@@ -890,7 +984,7 @@ impl<'s> Cmp<'s> {
                     (&nat.ty, &[], nat.doc.as_deref()),
                     Kind::OperationChanged,
                     (&what, &what),
-                    &at(n, nat.pos),
+                    &nat_at,
                 );
             }
         }
@@ -902,7 +996,7 @@ impl<'s> Cmp<'s> {
         a: &'s IdlOperation,
         b: &'s IdlOperation,
         iface: &str,
-        n: &IdlItem,
+        here: &At,
     ) {
         let mut what = Vec::new();
         if a.oneway != b.oneway {
@@ -996,7 +1090,7 @@ impl<'s> Cmp<'s> {
                         "the signature of operation `{}` of interface `{iface}` changed: {}{}",
                         b.name,
                         what.join("; "),
-                        at(n, b.pos)
+                        here
                     ),
                 )
             } else {
@@ -1008,7 +1102,7 @@ impl<'s> Cmp<'s> {
                     ),
                 )
             };
-            self.push(kind, &opath.base, Some(sa), Some(sb), message);
+            self.push(kind, &opath.base, (Some(sa), Some(sb)), message, here.loc());
         }
         if on_wire {
             return;
@@ -1018,6 +1112,7 @@ impl<'s> Cmp<'s> {
             &format!("operation `{}` of `{iface}`", b.name),
             a.doc.as_deref(),
             b.doc.as_deref(),
+            here.loc(),
         );
         for (x, y) in a.params.iter().zip(&b.params) {
             let pp = opath.slot(&format!("params/{}", y.name));
@@ -1027,6 +1122,7 @@ impl<'s> Cmp<'s> {
                 &format!("parameter `{}` of `{}`", y.name, b.name),
                 x.doc.as_deref(),
                 y.doc.as_deref(),
+                here.loc(),
             );
         }
         if let (Some(x), Some(y)) = (&a.return_type, &b.return_type) {
@@ -1250,12 +1346,11 @@ pub(super) fn component(
     }
 }
 
-/// The types an IDL set defines, by scoped name (modules walked; constants, forward
-/// declarations, natives and skipped declarations are not types to compare), each with the
-/// file and position of its definition.
-pub(crate) fn defined_types(set: &IdlSet) -> BTreeMap<String, (String, crate::model::Pos)> {
-    type Out = BTreeMap<String, (String, crate::model::Pos)>;
-    fn walk(defs: &[IdlDefinition], file: &str, out: &mut Out) {
+/// The definitions an IDL set defines (types and constants), by scoped name (modules walked;
+/// forward declarations, natives and skipped declarations are not definitions to compare), each
+/// with the file and position of its definition.
+pub(crate) fn defined_types(set: &IdlSet) -> Defined {
+    fn walk(defs: &[IdlDefinition], file: &str, out: &mut Defined) {
         for d in defs {
             match d {
                 IdlDefinition::Module(m) => walk(&m.definitions, file, out),
@@ -1264,12 +1359,12 @@ pub(crate) fn defined_types(set: &IdlSet) -> BTreeMap<String, (String, crate::mo
                 | IdlDefinition::Enum(_)
                 | IdlDefinition::Typedef(_)
                 | IdlDefinition::Interface(_)
-                | IdlDefinition::Exception(_) => {
+                | IdlDefinition::Exception(_)
+                | IdlDefinition::Const(_) => {
                     out.entry(d.scoped_name().to_string())
                         .or_insert_with(|| (file.to_string(), d.pos()));
                 }
-                IdlDefinition::Const(_)
-                | IdlDefinition::Forward(_)
+                IdlDefinition::Forward(_)
                 | IdlDefinition::Native(_)
                 | IdlDefinition::Skipped(_) => {}
             }
@@ -1286,8 +1381,8 @@ pub(crate) fn defined_types(set: &IdlSet) -> BTreeMap<String, (String, crate::mo
 /// definition (files named by `old_name` / `new_name`), unless `skip` says it is reported
 /// already; `component` is `label`, else the file defining the type.
 fn types_on_one_side(
-    (old, old_name): (&BTreeMap<String, (String, crate::model::Pos)>, super::Namer),
-    (new, new_name): (&BTreeMap<String, (String, crate::model::Pos)>, super::Namer),
+    (old, old_name): (&Defined, super::Namer),
+    (new, new_name): (&Defined, super::Namer),
     label: Option<&str>,
     skip: &dyn Fn(&str) -> bool,
     out: &mut Vec<Change>,
@@ -1329,22 +1424,51 @@ fn types_on_one_side(
     }
 }
 
-/// The types `rtcdoc diff` finds defined in one side's IDL only (both sides having IDL), other
-/// than those a port carries (DIFF332 names those, once each, already in `out`).
-pub(super) fn one_sided_types(
+/// The IDL of both sides beyond what the ports' types led to (`compared`): every definition
+/// both define that no port's type led to, compared on its own ([`compare_defined`]), so that
+/// IDL no profile uses (an IDL folder diffed alone) is compared too; then the definitions one
+/// side defines only, other than those a port carries (DIFF332 names those, once each, already
+/// in `out`). Nothing is compared when a side has no IDL at all. The counts of the
+/// definitions of both sides.
+pub(super) fn unused_types(
     (old, old_name): (&IdlSet, super::Namer),
     (new, new_name): (&IdlSet, super::Namer),
+    compared: &Compared,
     out: &mut Vec<Change>,
-) {
+) -> super::Counts {
+    let (o, n) = (defined_types(old), defined_types(new));
+    let mut counts = super::Counts {
+        old: o.len(),
+        new: n.len(),
+        ..Default::default()
+    };
     if old.is_empty() || new.is_empty() {
-        return;
+        return counts;
     }
+    counts.matched = o.keys().filter(|k| n.contains_key(*k)).count();
+    let through_ports = |name: &str| compared.visited.contains(name);
+    let mut changed = compare_defined(
+        (old, &o, old_name),
+        (new, &n, new_name),
+        None,
+        &through_ports,
+        out,
+    );
+    changed.extend(
+        compared
+            .changed
+            .iter()
+            .filter(|t| o.contains_key(*t) && n.contains_key(*t))
+            .cloned(),
+    );
+    counts.changed = changed.len();
+    counts.added = n.keys().filter(|k| !o.contains_key(*k)).count();
+    counts.removed = o.keys().filter(|k| !n.contains_key(*k)).count();
     let mut reported: BTreeSet<String> = out
         .iter()
         .filter(|c| c.code == codes::IDL_TYPE_ON_ONE_SIDE)
         .map(|c| c.path.clone())
         .collect();
-    let (o, n) = (defined_types(old), defined_types(new));
     openrtm_copies((&o, old_name), &n, false, &mut reported, out);
     openrtm_copies((&n, new_name), &o, true, &mut reported, out);
     types_on_one_side(
@@ -1354,14 +1478,15 @@ pub(super) fn one_sided_types(
         &|name| reported.contains(&format!("idl/{name}")),
         out,
     );
+    counts
 }
 
 /// DIFF335 for each copy of one of OpenRTM's own IDL files whose types (other than those
 /// `reported`) `side` defines and `other` does not: one change per file, on the NEW side when
 /// `added`; its types join `reported`.
 fn openrtm_copies(
-    (side, name): (&BTreeMap<String, (String, crate::model::Pos)>, super::Namer),
-    other: &BTreeMap<String, (String, crate::model::Pos)>,
+    (side, name): (&Defined, super::Namer),
+    other: &Defined,
     added: bool,
     reported: &mut BTreeSet<String>,
     out: &mut Vec<Change>,
@@ -1422,27 +1547,84 @@ fn openrtm_copies(
     }
 }
 
-/// Two versions of IDL files compared type by type (an IDL file's history): every type both
-/// define compared as `diff` compares the type of a port (members, enum values, unions,
-/// typedefs, operations, with the types they contain), under `idl/<scoped name>`; a type one
-/// version defines only is DIFF140 (removed) or DIFF334 (added). `label` is each change's
-/// `component` (the file).
-pub fn compare_idl_files(old: &IdlSet, new: &IdlSet, label: &str) -> Vec<Change> {
-    let (o, n) = (defined_types(old), defined_types(new));
-    let mut out = Vec::new();
-    for name in o.keys().filter(|k| n.contains_key(*k)) {
-        for f in &compare_type(old, new, name).findings {
-            out.push(super::change(
+/// The definitions of an IDL set by scoped name, each with its file and position.
+pub(crate) type Defined = BTreeMap<String, (String, crate::model::Pos)>;
+
+/// One side of a definition-by-definition comparison: its IDL, what it defines, and how its
+/// files are named in the changes.
+type DefSide<'a> = (&'a IdlSet, &'a Defined, super::Namer<'a>);
+
+/// Every definition both sides define (but those `skip` names) compared as the type of a port
+/// is ([`compare_type`]: members, enum values, union cases, typedefs, operations, constants,
+/// with the types they hold), its changes under `idl/<scoped name>` with the codes
+/// [`code_of`] gives (as a provided interface's): the one classification of IDL changes, for
+/// `rtcdoc diff` and for the history of IDL files. Each change points at its item in NEW's IDL
+/// (and in OLD's for an item only OLD has), else at the definition. `label` is each change's
+/// `component`, else NEW's file of the definition. The names of the definitions that changed.
+fn compare_defined(
+    (old, od, old_name): DefSide,
+    (new, nd, new_name): DefSide,
+    label: Option<&str>,
+    skip: &dyn Fn(&str) -> bool,
+    out: &mut Vec<Change>,
+) -> BTreeSet<String> {
+    let known = |p: &crate::model::Pos| (!p.is_unknown()).then_some(*p);
+    let mut changed = BTreeSet::new();
+    for (name, (nfile, npos)) in nd {
+        let Some((ofile, _)) = od.get(name) else {
+            continue;
+        };
+        if skip(name) {
+            continue;
+        }
+        let outcome = compare_type(old, new, name);
+        if outcome.findings.is_empty() {
+            continue;
+        }
+        changed.insert(name.clone());
+        let component = label.map_or_else(|| new_name(nfile), str::to_string);
+        for f in &outcome.findings {
+            let mut c = super::change(
                 code_of(f.kind, false),
-                label.to_string(),
+                component.clone(),
                 sub(&format!("idl/{name}"), &f.path),
                 f.old.clone(),
                 f.new.clone(),
                 format!("`{name}`: {}", f.message),
-            ));
+            );
+            let (mut at_new, mut at_old) = ((nfile.as_str(), known(npos)), (ofile.as_str(), None));
+            match &f.loc {
+                Some(l) if l.in_old => at_old = (l.file.as_str(), known(&l.pos)),
+                Some(l) => at_new = (l.file.as_str(), known(&l.pos)),
+                None => {}
+            }
+            c.file = Some(new_name(at_new.0));
+            c.line = at_new.1.map(|p| p.line);
+            c.column = at_new.1.map(|p| p.column);
+            c.old_file = Some(old_name(at_old.0));
+            c.old_line = at_old.1.map(|p| p.line);
+            c.old_column = at_old.1.map(|p| p.column);
+            out.push(c);
         }
     }
+    changed
+}
+
+/// Two versions of IDL files compared definition by definition (an IDL file's history), as
+/// `rtcdoc diff` compares IDL no port uses ([`compare_defined`]); a definition one version
+/// has only is DIFF140 (removed) or DIFF334 (added). `label` is each change's `component`
+/// (the file).
+pub fn compare_idl_files(old: &IdlSet, new: &IdlSet, label: &str) -> Vec<Change> {
+    let (o, n) = (defined_types(old), defined_types(new));
+    let mut out = Vec::new();
     let same = |f: &str| f.to_string();
+    compare_defined(
+        (old, &o, &same),
+        (new, &n, &same),
+        Some(label),
+        &|_| false,
+        &mut out,
+    );
     types_on_one_side((&o, &same), (&n, &same), Some(label), &|_| false, &mut out);
     super::sort(&mut out);
     out
@@ -1564,6 +1746,58 @@ mod tests {
         );
         let out = compare_type(&o, &n, "T");
         assert_eq!(out.one_side, vec![("In".to_string(), false)]);
+    }
+
+    #[test]
+    fn a_long_chain_of_nested_structs_stops_instead_of_overflowing() {
+        // S<i> holds S<i-1>: 1000 links deep, past the stack without a limit.
+        let chain = |first: &str| {
+            let mut text = format!("struct S0 {{ {first} }};");
+            for i in 1..1000 {
+                text.push_str(&format!(" struct S{i} {{ long a; S{} p; }};", i - 1));
+            }
+            text
+        };
+        let (o, n) = (set(&chain("long a;")), set(&chain("long a; long b;")));
+        let out = compare_type(&o, &n, "S999");
+        assert_eq!(out.findings.len(), 1, "{:?}", out.findings);
+        assert_eq!(out.findings[0].kind, Kind::Other);
+        assert!(
+            out.findings[0]
+                .message
+                .contains("nested more than 128 definitions deep"),
+            "{}",
+            out.findings[0].message
+        );
+        // Closer to the change, the change itself.
+        let out = compare_type(&o, &n, "S3");
+        assert_eq!(out.findings[0].kind, Kind::MemberAdded);
+        assert_eq!(out.findings[0].path, "fields/p.p.p.b");
+    }
+
+    #[test]
+    fn idl_files_are_compared_definition_by_definition_with_positions() {
+        let old = "module M {\n  const long N = 1;\n  struct P { long a;\n    long b; };\n};\n";
+        let new = "module M {\n  const long N = 2;\n  struct P { long a; };\n  interface I { void f(); };\n};\n";
+        let changes = compare_idl_files(&set(old), &set(new), "t.idl");
+        let got: Vec<(&str, &str, Option<u32>, Option<u32>)> = changes
+            .iter()
+            .map(|c| (c.code, c.path.as_str(), c.line, c.old_line))
+            .collect();
+        assert_eq!(
+            got,
+            vec![
+                (codes::IDL_TYPE_ADDED, "idl/M::I", Some(4), None),
+                (codes::OTHER_CHANGED, "idl/M::N", Some(2), None),
+                // At the struct in NEW, at the member in OLD.
+                (
+                    codes::IDL_MEMBER_REMOVED,
+                    "idl/M::P/fields/b",
+                    Some(3),
+                    Some(4)
+                ),
+            ]
+        );
     }
 
     #[test]

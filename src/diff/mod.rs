@@ -63,6 +63,9 @@ pub struct Diff {
     pub changes: Vec<Change>,
     pub components: Counts,
     pub systems: Counts,
+    /// The IDL definitions (types and constants, by scoped name) of both sides; `changed`
+    /// counts those found on both with a change, compared through a port or on their own.
+    pub idl: Counts,
 }
 
 /// Counts of a set of changes.
@@ -222,7 +225,8 @@ pub fn compare_profiles(
         &mut idl,
         &mut out,
     );
-    idl.finish(&mut out);
+    // The IDL of the catalogue is not compared beyond the component's ports here.
+    let _ = idl.finish(&mut out);
     sort(&mut out);
     out
 }
@@ -368,8 +372,13 @@ pub fn diff_with_systems(
             out.push(unreadable(side, d, name, ("", then)));
         }
     }
-    idl.finish(&mut out);
-    idl::one_sided_types((&old.idl, old_name), (&new.idl, new_name), &mut out);
+    let compared = idl.finish(&mut out);
+    let idl_counts = idl::unused_types(
+        (&old.idl, old_name),
+        (&new.idl, new_name),
+        &compared,
+        &mut out,
+    );
     systems::unreadable("OLD", &old_systems.unreadable, old_name, &mut out);
     systems::unreadable("NEW", &new_systems.unreadable, new_name, &mut out);
     breaks.connectors(
@@ -391,6 +400,7 @@ pub fn diff_with_systems(
         changes: out,
         components: counts,
         systems: system_counts,
+        idl: idl_counts,
     }
 }
 

@@ -12,6 +12,7 @@
 //!  "summary": {"breaking", "warning", "info", "byCode": {"DIFF104": n, …},
 //!              "components": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "systems": {"old", "new", "matched", "changed", "added", "removed"},
+//!              "idl": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "failOn": "breaking|warning|info|never", "failed": bool}}
 //! ```
 
@@ -43,6 +44,7 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
             "byCode": s.by_code,
             "components": diff.components,
             "systems": diff.systems,
+            "idl": diff.idl,
             "failOn": fail_on_name(fail_on),
             "failed": s.fails(fail_on),
         },
@@ -51,17 +53,32 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
 
 /// The one-line summary: `1 breaking, 2 warnings, 3 infos in 2 of 11 matched component(s); 1
 /// added, 0 removed`, and when a side has RT System profiles `; 1 of 2 matched system(s)
-/// changed, 0 added, 0 removed`.
+/// changed, 0 added, 0 removed`, and when a side has IDL `; 1 of 12 matched IDL definition(s)
+/// changed, 1 added, 0 removed`.
 pub fn one_line(diff: &Diff) -> String {
     let c = &diff.components;
     format!(
-        "{} in {} of {} matched component(s); {} added, {} removed{}",
+        "{} in {} of {} matched component(s); {} added, {} removed{}{}",
         diff.summary().counts(),
         c.changed,
         c.matched,
         c.added,
         c.removed,
-        systems_line(diff)
+        systems_line(diff),
+        idl_line(diff)
+    )
+}
+
+/// `; 1 of 12 matched IDL definition(s) changed, 1 added, 0 removed`, or nothing when neither
+/// side has IDL.
+fn idl_line(diff: &Diff) -> String {
+    let s = &diff.idl;
+    if s.old + s.new == 0 {
+        return String::new();
+    }
+    format!(
+        "; {} of {} matched IDL definition(s) changed, {} added, {} removed",
+        s.changed, s.matched, s.added, s.removed
     )
 }
 
@@ -200,14 +217,15 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
     let c = &diff.components;
     let _ = writeln!(
         out,
-        "Comparing {} → {}: {} of {} matched component(s) changed, {} added, {} removed{}; the check {verdict}.\n",
+        "Comparing {} → {}: {} of {} matched component(s) changed, {} added, {} removed{}{}; the check {verdict}.\n",
         code_span(&single_line(old), false),
         code_span(&single_line(new), false),
         c.changed,
         c.matched,
         c.added,
         c.removed,
-        systems_line(diff)
+        systems_line(diff),
+        idl_line(diff)
     );
     if diff.changes.is_empty() {
         out.push_str("No changes.\n");

@@ -135,7 +135,7 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                     );
                 }
                 bail!(
-                    "{which} `{shown}` does not exist; give a directory, a profile file or REV:PATH (a git revision and a path, e.g. origin/main:components)"
+                    "{which} `{shown}` does not exist; give a directory, a profile or IDL file, or REV:PATH (a git revision and a path, e.g. origin/main:components)"
                 );
             }
             if p.is_file() && is_catalog_json(p) {
@@ -180,6 +180,10 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                 .tempdir()
                 .context("cannot create a temporary directory for the git revision")?;
             let kind = git_checkout(which, &object, temp.path(), opts)?;
+            let blob = match &kind {
+                ObjectKind::Blob(name) => Some(name.clone()),
+                ObjectKind::Tree => None,
+            };
             let (input, root) = match kind {
                 ObjectKind::Tree => (temp.path().to_path_buf(), PathBuf::from(path)),
                 ObjectKind::Blob(name) => {
@@ -221,7 +225,7 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
                             });
                             anyhow::Error::new(n)
                         }
-                        Err(e) => e,
+                        Err(e) => as_typed(&e, temp.path(), &object, blob.as_deref()),
                     }
                 })
                 .with_context(|| format!("{which} `{object}`"))?;
@@ -232,6 +236,25 @@ pub fn load(which: &str, spec: &Spec, opts: &LoadOptions) -> Result<Side> {
             })
         }
     }
+}
+
+/// The message of `e` (its causes included) with the paths of the temporary copy of a
+/// revision (`/tmp/rtcdoc-diff-…/a.xml`) named as the user wrote the side (`REV:path/a.xml`),
+/// `name` being the file a blob was written as: the folder is gone when the message is read,
+/// and its name means nothing to the user.
+fn as_typed(e: &anyhow::Error, temp: &Path, object: &str, name: Option<&str>) -> anyhow::Error {
+    let mut text = format!("{e:#}");
+    let dir = temp.to_string_lossy();
+    if let Some(name) = name {
+        text = text.replace(&temp.join(name).to_string_lossy().to_string(), object);
+    }
+    let inside = if object.ends_with(['/', ':']) {
+        object.to_string()
+    } else {
+        format!("{object}/")
+    };
+    text = text.replace(&format!("{dir}/"), &inside);
+    anyhow::anyhow!(text.replace(dir.as_ref(), object))
 }
 
 enum ObjectKind {
@@ -313,7 +336,9 @@ fn git_checkout(which: &str, object: &str, dest: &Path, opts: &LoadOptions) -> R
             if !out.status.success() {
                 bail!("{which} `{object}`: {}", stderr_line(&out));
             }
-            std::fs::write(dest.join(&name), &out.stdout)?;
+            std::fs::write(dest.join(&name), &out.stdout).with_context(|| {
+                format!("{which} `{object}`: cannot copy it out of git into a temporary folder")
+            })?;
             Ok(ObjectKind::Blob(name))
         }
         "tree" => {
@@ -349,7 +374,8 @@ fn git_checkout(which: &str, object: &str, dest: &Path, opts: &LoadOptions) -> R
                     sources.push((sha.to_string(), rel.to_string()));
                 }
             }
-            crate::sources::write_blobs(None, &files, dest, u64::MAX)?;
+            let copied = || format!("{which} `{object}`: cannot copy its files out of git");
+            crate::sources::write_blobs(None, &files, dest, u64::MAX).with_context(copied)?;
             crate::sources::code::write(
                 None,
                 &files,
@@ -357,7 +383,8 @@ fn git_checkout(which: &str, object: &str, dest: &Path, opts: &LoadOptions) -> R
                 dest,
                 &opts.implementation.selection(),
                 opts.limits.max_file_size,
-            )?;
+            )
+            .with_context(copied)?;
             Ok(ObjectKind::Tree)
         }
         other => bail!("{which} `{object}` is a git {other}, not a directory or a file"),
