@@ -395,10 +395,17 @@ fn read_parsed<D: Send>(
 /// Most deleted profile files looked at for a lost history at one commit.
 const MAX_CANDIDATES: usize = 200;
 
+/// Commits before the one that added a file looked at for a profile of the same component
+/// deleted there (a folder renamed in two commits: the old file deleted, then the new one
+/// added).
+pub const MAX_GAP: usize = 20;
+
 /// Continues `versions` (newest first, up to `limit`) where git's `--follow` stops at a commit
 /// that added the file: when the commit before it held, at a path no longer at `rev`, exactly
 /// one profile of the same component (vendor, category and name of its id, and language when
-/// both say), the history goes on with that file's commits up to there, and so on.
+/// both say), the history goes on with that file's commits up to there; else, when one of the
+/// [`MAX_GAP`] commits before deleted profiles and the newest of them to delete one of the same
+/// component deleted exactly one, with that file's commits up to its deletion; and so on.
 fn follow_by_id(
     repo: &Repo,
     at: usize,
@@ -432,63 +439,99 @@ fn follow_by_id(
                     .collect(),
             ),
         };
+        let lost = |p: &str| {
+            !now.contains(p)
+                && !seen.contains(p)
+                && p.rsplit_once('.').is_some_and(|(_, e)| {
+                    crate::walk::is_document_extension(&e.to_ascii_lowercase())
+                })
+        };
         let candidates: Vec<(String, String)> = before
             .into_iter()
-            .filter(|(_, p)| {
-                !now.contains(p)
-                    && !seen.contains(p)
-                    && p.rsplit_once('.').is_some_and(|(_, e)| {
-                        crate::walk::is_document_extension(&e.to_ascii_lowercase())
-                    })
-            })
+            .filter(|(_, p)| lost(p))
             .take(MAX_CANDIDATES)
             .collect();
-        if candidates.is_empty() {
-            return;
-        }
-        let mut oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
         // The file as that commit added it, too: the id may have changed since (a new vendor
         // or category after the copy), and the deleted original has the id of then.
-        let added = match &oldest.at {
-            Where::Blob { oid, .. } => Some((oid.clone(), oldest.entry.file.clone())),
-            _ => None,
-        };
-        if let Some((oid, _)) = &added {
-            oids.push(oid.clone());
-        }
-        let mut blobs: Vec<Blob> = Vec::with_capacity(oids.len());
-        if cat_file(repo, &oids, &mut |_, b| blobs.push(b)).is_err() {
-            return;
-        }
-        let then = added.and_then(|(_, file)| {
-            let bytes = blobs.pop()?.ok()?;
-            parse(&bytes, &file).ok()
-        });
-        let same: Vec<&String> = candidates
-            .iter()
-            .zip(&blobs)
-            .filter(|((_, path), bytes)| {
-                bytes
-                    .as_ref()
-                    .ok()
-                    .and_then(|b| parse(b, path).ok())
-                    .is_some_and(|p| {
-                        crate::diff::same_component(&p, profile)
-                            || then
-                                .as_ref()
-                                .is_some_and(|t| crate::diff::same_component(&p, t))
-                    })
+        // Read only when some deleted profile is looked at.
+        let then = std::cell::OnceCell::new();
+        let then = || {
+            then.get_or_init(|| match &oldest.at {
+                Where::Blob { oid, .. } => {
+                    let mut blob = None;
+                    let _ = cat_file(repo, std::slice::from_ref(oid), &mut |_, b| blob = Some(b));
+                    blob.and_then(|b| b.ok())
+                        .and_then(|bytes| parse(&bytes, &oldest.entry.file).ok())
+                }
+                _ => None,
             })
-            .map(|((_, path), _)| path)
-            .collect();
-        let [old_path] = same[..] else {
-            return;
+        };
+        let same = |candidates: &[(String, String)]| -> Option<Vec<String>> {
+            let oids: Vec<String> = candidates.iter().map(|(o, _)| o.clone()).collect();
+            let mut blobs: Vec<Blob> = Vec::with_capacity(oids.len());
+            cat_file(repo, &oids, &mut |_, b| blobs.push(b)).ok()?;
+            Some(
+                candidates
+                    .iter()
+                    .zip(&blobs)
+                    .filter(|((_, path), bytes)| {
+                        bytes
+                            .as_ref()
+                            .ok()
+                            .and_then(|b| parse(b, path).ok())
+                            .is_some_and(|p| {
+                                crate::diff::same_component(&p, profile)
+                                    || then()
+                                        .as_ref()
+                                        .is_some_and(|t| crate::diff::same_component(&p, t))
+                            })
+                    })
+                    .map(|((_, path), _)| path.clone())
+                    .collect(),
+            )
+        };
+        let found = if candidates.is_empty() {
+            Vec::new()
+        } else {
+            match same(&candidates) {
+                Some(found) => found,
+                None => return,
+            }
+        };
+        let (old_path, from) = match &found[..] {
+            [one] => (one.clone(), parent),
+            [] => {
+                // Deleted before the commit that added the file: the newest commit of the gap
+                // deleting a profile of the same component.
+                let mut hit = None;
+                for (deleting, deleted) in deletions(repo, &parent, MAX_GAP) {
+                    let deleted: Vec<(String, String)> = deleted
+                        .into_iter()
+                        .filter(|(_, p)| lost(p))
+                        .take(MAX_CANDIDATES)
+                        .collect();
+                    if deleted.is_empty() {
+                        continue;
+                    }
+                    match same(&deleted).as_deref() {
+                        Some([]) => continue,
+                        Some([one]) => hit = Some((one.clone(), format!("{deleting}^"))),
+                        _ => {}
+                    }
+                    break;
+                }
+                match hit {
+                    Some(hit) => hit,
+                    None => return,
+                }
+            }
+            _ => return,
         };
         let more = log(
             repo,
             at,
-            &parent,
-            &pathspec(repo, old_path),
+            &from,
+            &pathspec(repo, &old_path),
             limit - versions.len(),
         )
         .unwrap_or_default();
@@ -497,6 +540,49 @@ fn follow_by_id(
         }
         versions.extend(more);
     }
+}
+
+/// The files deleted by each of the `count` commits up to `rev` (newest first): (commit, the
+/// deleted blobs with their paths from the top of the repository); empty when git cannot say.
+fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, String)>)> {
+    if rev.starts_with('-') {
+        return Vec::new();
+    }
+    let mut c = repo.git();
+    c.args([
+        "log",
+        "--no-renames",
+        "--no-abbrev",
+        "--raw",
+        "-z",
+        "--no-color",
+        "--no-ext-diff",
+        "--format=%x1e%H",
+    ])
+    .arg(format!("--max-count={count}"))
+    .args(["--end-of-options", rev, "--"])
+    .stderr(Stdio::null());
+    let Some(out) = c.output().ok().filter(|o| o.status.success()) else {
+        return Vec::new();
+    };
+    let text = String::from_utf8_lossy(&out.stdout);
+    let mut found = Vec::new();
+    for record in text.split('\u{1e}').filter(|r| !r.is_empty()) {
+        let (commit, raw) = record.split_once('\0').unwrap_or((record, ""));
+        let mut deleted = Vec::new();
+        let mut parts = raw.trim_start_matches('\n').split('\0');
+        while let Some(meta) = parts.next().filter(|m| m.starts_with(':')) {
+            let fields: Vec<&str> = meta.split(' ').collect();
+            let Some(path) = parts.next() else { break };
+            if let (Some(old), Some(status)) = (fields.get(2), fields.get(4)) {
+                if status.starts_with('D') {
+                    deleted.push((old.to_string(), path.to_string()));
+                }
+            }
+        }
+        found.push((commit.trim().to_string(), deleted));
+    }
+    found
 }
 
 /// The files of `rev` (object id, path from the top of the repository), or `None` when git
@@ -1058,6 +1144,15 @@ fn entries<'d, D>(
     let mut entries = Vec::with_capacity(versions.len());
     for (i, v) in versions.iter().enumerate() {
         let mut e = v.entry.clone();
+        // A commit's file at another path than the commit before: moved (folder renamed).
+        if let Where::Blob { .. } = v.at {
+            e.moved_from = versions[i + 1..]
+                .iter()
+                .find(|w| matches!(w.at, Where::Blob { .. }))
+                .map(|w| &w.entry.file)
+                .filter(|f| **f != v.entry.file)
+                .cloned();
+        }
         match &docs[i] {
             Err(why) => e.error = Some(why.clone()),
             Ok(d) => {

@@ -319,6 +319,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("history_intro", "The latest versions of this profile (the commits that changed it, RTCBuilder's backups), newest first, each with what changed from the version before as rtcdoc diff classifies it.", "このプロファイルの最近の版（変更したコミット、RTCBuilder のバックアップ）を新しい順に示します。各版には、一つ前の版からの変更を rtcdoc diff と同じ分類で示します。"),
     ("history_intro_idl", "The latest versions of the IDL file defining this type (the commits that changed it), newest first, each with what changed in its types from the version before as rtcdoc diff classifies it.", "この型を定義する IDL ファイルの最近の版（変更したコミット）を新しい順に示します。各版には、一つ前の版からの型の変更を rtcdoc diff と同じ分類で示します。"),
     ("history_intro_system", "The latest versions of this RT System profile (the commits that changed it), newest first, each with what changed from the version before as rtcdoc diff classifies it.", "この RT システムプロファイルの最近の版（変更したコミット）を新しい順に示します。各版には、一つ前の版からの変更を rtcdoc diff と同じ分類で示します。"),
+    ("history_moved", "moved from {file}", "{file} から移動"),
     ("history_n_breaking", "{n} breaking", "破壊的変更 {n}"),
     ("history_n_breaking_one", "1 breaking", "破壊的変更 1"),
     ("history_n_info", "{n} info", "情報 {n}"),

@@ -37,6 +37,7 @@ pub mod sources;
 pub mod types;
 pub mod value;
 pub mod walk;
+pub mod word_diff;
 
 /// Generated text for the property tests that hold a fast path to its reference.
 #[cfg(test)]

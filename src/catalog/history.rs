@@ -38,6 +38,10 @@ pub struct Entry {
     /// The oldest version read: there is nothing before it to compare it with.
     #[serde(default, skip_serializing_if = "is_false")]
     pub first: bool,
+    /// The file's path at the version before, when this version has it at another path (a
+    /// folder renamed or moved, followed by git or by the component id): "moved from".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moved_from: Option<String>,
     /// Why this version could not be read (it stays in the history, without changes; the next
     /// version is compared with the one before it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -59,9 +63,13 @@ impl Entry {
     }
 
     /// Shown on its own (not folded): the first version, a release, a version that could not
-    /// be read, or one that changed the specification.
+    /// be read, one whose file moved, or one that changed the specification.
     pub fn stands_out(&self) -> bool {
-        self.first || self.release || self.error.is_some() || !self.changes.is_empty()
+        self.first
+            || self.release
+            || self.error.is_some()
+            || self.moved_from.is_some()
+            || !self.changes.is_empty()
     }
 
     /// The file as it is, not a commit or backup: uncommitted edits, or the newest version of

@@ -561,7 +561,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "other-changed",
         summary: "any other value of the profile changed",
-        explanation: "Every value of a profile is compared, so that no change goes unreported; values without a classification of their own (dates, positions on the component box, variable names, properties, values rtcdoc does not know, a type spelled differently) are reported here.",
+        explanation: "Every value of a profile is compared, so that no change goes unreported; values without a classification of their own (positions on the component box, variable names, properties, values rtcdoc does not know, a type spelled differently) are reported here. So is an id that RTCBuilder's placeholders (vendor `VenderName`, category `Category`, name `ModuleName`) gave the component before its wizard was filled in, when a history compares it with the named one: the component named for the first time, not one removed. The save stamps `creationDate` and `updateDate` (RTCBuilder rewrites `updateDate` at every save) are not compared.",
     },
     Code {
         code: IDL_DOCUMENTATION_CHANGED,
@@ -631,7 +631,7 @@ pub static CODES: &[Code] = &[
         level: Info,
         name: "system-other-changed",
         summary: "any other value of an RT System profile changed",
-        explanation: "Every value of a system profile is compared, so that no change goes unreported; values without a classification of their own (the system's version, dates, comments, the boxes' positions in RTSystemEditor, start-up orders, groups, properties, values rtcdoc does not know, a type spelled differently) are reported here. Host data (IORs, host names, CORBA endpoints, naming paths such as `pc1:2809/Cam0.rtc` or `pc1/Cam0.rtc`, which change with every save and are not published) is not compared.",
+        explanation: "Every value of a system profile is compared, so that no change goes unreported; values without a classification of their own (the system's version, comments, the boxes' positions in RTSystemEditor, start-up orders, groups, properties, values rtcdoc does not know, a type spelled differently) are reported here. Host data (IORs, host names, CORBA endpoints, naming paths such as `pc1:2809/Cam0.rtc` or `pc1/Cam0.rtc`, which change with every save and are not published) is not compared, nor are the save stamps `creationDate` and `updateDate`, which RTSystemEditor rewrites at every save.",
     },
     Code {
         code: SYSTEM_CONNECTOR_TYPE_REPAIRED,

@@ -1135,7 +1135,6 @@ fn classify(
 ) {
     let p = &f.path;
     let pos = f.pos;
-    let joined = p.join("/");
     let (at, documentation) = place(p);
     // Any other item removed or added: a documentation change or another change, its text
     // the value.
@@ -1146,7 +1145,7 @@ fn classify(
             codes::OTHER_CHANGED
         };
         let value = Some(plain(node)).as_ref().and_then(text);
-        (code, format!("`{joined}` was {verb}"), value)
+        (code, format!("was {verb}"), value)
     };
     // Documentation left blank and documentation left out say the same: RTCBuilder writes
     // `rtcDoc:description=""` for every field it leaves blank, other writers (and its other
@@ -1154,6 +1153,19 @@ fn classify(
     let blank = |v: &Value| text(v).is_none_or(|s| s.trim().is_empty());
     if let Raw::Changed(a, b) = &f.raw {
         if documentation && blank(a) && blank(b) {
+            return;
+        }
+    }
+    // Save stamps: RTCBuilder rewrites `updateDate` at every save (and `creationDate` when it
+    // re-creates the profile); they date the file, they change nothing of the component.
+    if let Place::Field(Field::BasicCreationDate | Field::BasicUpdateDate) = at {
+        return;
+    }
+    // An action not implemented and an action not listed say the same (RTCBuilder lists
+    // every callback, `implemented="false"` for those left out; other writers list only the
+    // implemented ones): nothing to report when it holds nothing else.
+    if let (Place::Item(Kind::Action), Raw::Added(node) | Raw::Removed(node)) = (at, &f.raw) {
+        if unimplemented_only(node, item_key(s(p, 0))) {
             return;
         }
     }
@@ -1296,6 +1308,41 @@ fn classify(
     }
 }
 
+/// Whether the vendor, category or name of an id changed, and each part that changed was
+/// RTCBuilder's placeholder for it (`VenderName`, `Category`, `ModuleName`, a `$` variable):
+/// the component named for the first time.
+fn named_first(old: &Ident, new: &Ident) -> bool {
+    let parts = [
+        ("vendor", &old.key.0, &new.key.0),
+        ("category", &old.key.1, &new.key.1),
+        ("name", &old.key.2, &new.key.2),
+    ];
+    old.key != new.key
+        && parts
+            .iter()
+            .all(|(field, o, n)| o == n || crate::model::is_placeholder(field, o))
+}
+
+/// An action item that says only that it is not implemented: its kind (`key`), an
+/// `implemented` that is not true, and nothing else but blank values.
+fn unimplemented_only(node: &Node, key: Option<&str>) -> bool {
+    fn blank(n: &Node) -> bool {
+        match n {
+            Node::Leaf(v) => text(v).is_none_or(|s| s.trim().is_empty()),
+            Node::Record(m, _) | Node::Keyed(m) => m.values().all(blank),
+        }
+    }
+    let Node::Record(m, _) = node else {
+        return false;
+    };
+    let implemented = Field::ActionImplemented.json();
+    let not_true =
+        crate::model::parse_bool(field(node, Field::ActionImplemented).as_deref()) != Some(true);
+    not_true
+        && m.iter()
+            .all(|(k, v)| k == implemented || Some(k.as_str()) == key || blank(v))
+}
+
 /// DIFF002 for a file `side` could not read: "{side}: {what}FILE could not be read (…); {then}",
 /// at the file (NEW's) or the old file.
 fn unreadable(
@@ -1338,8 +1385,12 @@ fn quoted(s: Option<&str>) -> String {
 }
 
 /// "{subject} is spelled differently ({o} → {n}) but {same}": a value written another way
-/// with the same meaning (`o` and `n` already [`quoted`]).
+/// with the same meaning (`o` and `n` already [`quoted`]); without a subject (the change's
+/// path names it) "spelled differently …".
 fn respelled_message(subject: &str, o: &str, n: &str, same: &str) -> String {
+    if subject.is_empty() {
+        return format!("spelled differently ({o} → {n}) but {same}");
+    }
     format!("{subject} is spelled differently ({o} → {n}) but {same}")
 }
 
@@ -1358,14 +1409,8 @@ fn changed(
     let last = p.last().map(String::as_str).unwrap_or("");
     let (at, documentation) = place(p);
     let (o, n) = (quoted(old), quoted(new));
-    let spelled = |what: &str| {
-        Some(respelled_message(
-            &format!("`{}`", p.join("/")),
-            &o,
-            &n,
-            what,
-        ))
-    };
+    // The change's path names the value: the messages do not say it again.
+    let spelled = |what: &str| Some(respelled_message("", &o, &n, what));
     // `code` with `message`, unless the two spellings are the `same` (`what` says in what way).
     let same_or = |same: bool, what: &str, code: &'static str, message: String| {
         if same {
@@ -1385,6 +1430,16 @@ fn changed(
                         Some(format!("version {} → {}", oi.version, ni.version)),
                     )
                 }
+            } else if named_first(oi, ni) {
+                // RTCBuilder's first save, before the wizard was filled in: the component
+                // had no name of its own yet, so no one can refer to the old one.
+                (
+                    Some(codes::OTHER_CHANGED),
+                    Some(format!(
+                        "the component is named for the first time: RTCBuilder's placeholder id `{}` → `{}`",
+                        oi.id, ni.id
+                    )),
+                )
             } else if oi.key != ni.key {
                 // Versions paired by their file (a component's history), whose vendor,
                 // category or name changed: the old id names nothing any more, which is what
@@ -1452,7 +1507,10 @@ fn changed(
         }
         Place::Field(Field::ActionImplemented) => {
             let b = |s: Option<&str>| crate::model::parse_bool(s).unwrap_or(false);
-            if b(old) && !b(new) {
+            if !b(old) && !b(new) {
+                // Absent and `false` say the same: not implemented.
+                (None, None)
+            } else if b(old) && !b(new) {
                 (
                     Some(codes::ACTION_NOT_IMPLEMENTED),
                     Some(format!("action `{}` is no longer implemented", p[1])),
@@ -1574,7 +1632,10 @@ fn changed(
         _ if documentation => (Some(codes::DOCUMENTATION_CHANGED), None),
         _ => (Some(codes::OTHER_CHANGED), None),
     };
-    let message = message.unwrap_or_else(|| format!("`{}` changed from {o} to {n}", p.join("/")));
+    // A long text (a description) changed: its words that changed, not both texts in full.
+    let message = message.unwrap_or_else(|| {
+        crate::word_diff::message(old, new).unwrap_or_else(|| format!("changed from {o} to {n}"))
+    });
     (code, message)
 }
 
@@ -1743,6 +1804,84 @@ mod tests {
         places
     }
 
+    /// The codes `compare_profiles` gives from `old` to `new` (compared as one file's versions).
+    fn history_codes(old: &Profile, new: &Profile) -> Vec<(&'static str, String)> {
+        compare_profiles((old, "a.xml"), (new, "a.xml"), &Default::default())
+            .into_iter()
+            .map(|c| (c.code, c.path))
+            .collect()
+    }
+
+    /// An action not implemented and one not listed, and `implemented` absent and `false`, say
+    /// the same; implemented or no longer implemented is a change.
+    #[test]
+    fn an_action_not_implemented_is_an_action_not_listed() {
+        use crate::model::{Action, ActionKind};
+        let action = |kind: ActionKind, implemented: Option<&str>| Action {
+            kind,
+            implemented: implemented.map(Into::into),
+            doc: None,
+            pos: Default::default(),
+            extra: Default::default(),
+        };
+        let none = profile();
+        let mut listed = profile();
+        listed.actions = vec![
+            action(ActionKind::OnFinalize, Some("false")),
+            action(ActionKind::OnStartup, None),
+        ];
+        assert_eq!(history_codes(&none, &listed), []);
+        assert_eq!(history_codes(&listed, &none), []);
+        let mut unsaid = profile();
+        unsaid.actions = vec![
+            action(ActionKind::OnFinalize, None),
+            action(ActionKind::OnStartup, Some("false")),
+        ];
+        assert_eq!(history_codes(&listed, &unsaid), []);
+        let mut implemented = profile();
+        implemented.actions = vec![action(ActionKind::OnFinalize, Some("true"))];
+        assert_eq!(
+            history_codes(&listed, &implemented),
+            [(
+                codes::OTHER_CHANGED,
+                "actions/onFinalize/implemented".to_string()
+            )]
+        );
+        assert_eq!(
+            history_codes(&implemented, &listed),
+            [(
+                codes::ACTION_NOT_IMPLEMENTED,
+                "actions/onFinalize/implemented".to_string()
+            )]
+        );
+    }
+
+    /// RTCBuilder's placeholder id named: information; a vendor of its own changed: breaking.
+    #[test]
+    fn a_placeholder_id_named_is_no_breaking_change() {
+        let with_id = |id: &str| Profile {
+            id: Some(id.into()),
+            ..profile()
+        };
+        let first = with_id("RTC:VenderName:Category:ModuleName:1.0.0");
+        let named = with_id("RTC:Lab:Mobile:Base:1.0.0");
+        let got = compare_profiles((&first, "a.xml"), (&named, "a.xml"), &Default::default());
+        assert_eq!(got.len(), 1, "{got:?}");
+        assert_eq!(
+            (got[0].code, got[0].severity),
+            (codes::OTHER_CHANGED, Level::Info)
+        );
+        assert!(
+            got[0].message.contains("named for the first time"),
+            "{got:?}"
+        );
+        // Only the name was a placeholder; the vendor was the lab's own.
+        let half = with_id("RTC:Lab:Category:ModuleName:1.0.0");
+        let other = with_id("RTC:Other:Mobile:Base:1.0.0");
+        let codes: Vec<&str> = history_codes(&half, &other).iter().map(|c| c.0).collect();
+        assert!(codes.contains(&codes::COMPONENT_REMOVED), "{codes:?}");
+    }
+
     /// Every field of the nodes `diff` classifies is found at its typed place when only it
     /// changes: the path the JSON tree gives resolves through the table to the same field.
     #[test]
@@ -1765,6 +1904,11 @@ mod tests {
                 set(&mut old, d.field, "1");
                 set(&mut new, d.field, "2");
                 let got = classified(&old, &new);
+                // Save stamps date the file: no change of the component.
+                if matches!(d.field, Field::BasicCreationDate | Field::BasicUpdateDate) {
+                    assert_eq!(got, [], "{:?}", d.field);
+                    continue;
+                }
                 assert_eq!(got.len(), 1, "{:?}: {got:?}", d.field);
                 assert_eq!(got[0].0, Place::Field(d.field), "{:?}", d.field);
                 if d.doc {

@@ -412,12 +412,17 @@ pub fn write_human(
             )?;
             write!(out, "  {}[{}]", c.severity, c.code)?;
             out.reset()?;
+            // A message of several lines (a long text's word-level difference) stays indented.
+            let message = c.message.replace('\n', "\n      ");
             if c.path.is_empty() {
-                writeln!(out, ": {}", c.message)?;
+                writeln!(out, ": {message}")?;
             } else {
-                writeln!(out, " {}: {}", c.path, c.message)?;
+                writeln!(out, " {}: {message}", c.path)?;
             }
-            if c.old.is_some() || c.new.is_some() {
+            // A long text's change is its word-level difference: not both texts again in full.
+            let words = crate::word_diff::message(c.old.as_deref(), c.new.as_deref())
+                .is_some_and(|m| m == c.message);
+            if (c.old.is_some() || c.new.is_some()) && !words {
                 let v = |s: &Option<String>| s.clone().unwrap_or_else(|| "(absent)".into());
                 writeln!(out, "      {} → {}", v(&c.old), v(&c.new))?;
             }

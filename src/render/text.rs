@@ -88,12 +88,34 @@ pub trait Markup {
     const OUTPUT: Output;
     /// Escapes plain text for an inline position (a table cell, a heading).
     fn esc(s: &str) -> String;
-    /// Escapes a message of rtcdoc's (a change's): one line (its line breaks become spaces,
-    /// the ends trimmed) escaped by [`Markup::message_line`].
+    /// Escapes a message of rtcdoc's (a change's): each line escaped by
+    /// [`Markup::message_line`], the lines joined by `<br>` (a long text's word-level difference
+    /// breaks its lines where the text does, as the component page shows it); a line break
+    /// inside a code span (a value it quotes) is a space, the ends are trimmed.
     fn message(s: &str) -> String {
-        let line = s.replace(['\r', '\n'], " ");
-        let mut out = String::with_capacity(line.len() + 8);
-        Self::message_line(line.trim(), &mut out);
+        let chars: Vec<char> = s.trim().replace("\r\n", "\n").chars().collect();
+        let spans = code_spans(&chars, true);
+        let mut lines = vec![String::new()];
+        let mut k = 0;
+        for (i, &c) in chars.iter().enumerate() {
+            while spans.get(k).is_some_and(|sp| sp.close < i) {
+                k += 1;
+            }
+            let inside = spans.get(k).is_some_and(|sp| sp.open <= i);
+            let line = lines.last_mut().expect("one line at least");
+            match c {
+                '\r' | '\n' if inside => line.push(' '),
+                '\r' | '\n' => lines.push(String::new()),
+                c => line.push(c),
+            }
+        }
+        let mut out = String::with_capacity(s.len() + 8);
+        for (i, line) in lines.iter().enumerate() {
+            if i > 0 {
+                out.push_str("<br>");
+            }
+            Self::message_line(line.trim(), &mut out);
+        }
         out
     }
     /// Escapes one line of a message of rtcdoc's onto `out`: its code spans (the values it

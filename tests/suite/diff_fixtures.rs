@@ -396,7 +396,7 @@ const CASES: &[Case] = &[
         component: NAV_SYSTEM,
         all: &["DIFF355"],
         file: SYSTEM,
-        says: "`components/Logger0/location/y` changed from `140` to `160`",
+        says: "changed from `140` to `160`",
     },
 ];
 

@@ -324,15 +324,16 @@ fn the_component_page_has_a_history_section_in_every_output() {
         .find("<section id=\"change-history\">")
         .expect("a History section")..];
     let section = &section[..section.find("</section>").unwrap()];
-    // Newest first; the move and the reformatting folded; the release marked; the rename's
-    // breaking changes spelled out; each commit linked to its file at that commit.
+    // Newest first; the move said (not folded), the reformatting folded; the release marked;
+    // the rename's breaking changes spelled out; each commit linked to its file at that commit.
     let rows: Vec<&str> = section.split("<tr>").skip(2).collect();
     assert_eq!(rows.len(), 6, "{section}");
     assert!(
-        rows[0].contains("1 version without changes to the specification"),
+        rows[0].contains("moved from Base/RTC.xml, no change to the specification"),
         "{}",
         rows[0]
     );
+    assert!(rows[0].contains("Move to mobile/"), "{}", rows[0]);
     assert!(rows[1].contains("2.0.0 (release)"), "{}", rows[1]);
     assert!(rows[1].contains("Release 2.0.0"), "{}", rows[1]);
     assert!(rows[2].contains("Rename cmd to velocity"), "{}", rows[2]);

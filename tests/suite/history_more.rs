@@ -779,3 +779,83 @@ fn a_log_git_cannot_give_is_named_with_git_s_words() {
         "{err}"
     );
 }
+
+/// A folder renamed in two commits (the old profile deleted, the new one with the same id
+/// added in the next commit): the history goes on at the old path, as `rtcdoc diff` pairs the
+/// two by id, and the row says the file moved.
+#[test]
+fn a_folder_renamed_in_two_commits_is_followed_by_its_component_id() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !init(&repo) {
+        println!("skipped: git not available");
+        return;
+    }
+    let base = common::xml_profile("Base", &[("DataInPort", "cmd", "RTC::TimedLong")]);
+    write(&repo, "RTC/X/RTC.xml", &base);
+    write(
+        &repo,
+        "RTC/Other/RTC.xml",
+        &common::xml_profile("Other", &[("DataInPort", "in", "RTC::TimedLong")]),
+    );
+    commit(&repo, 1, "First");
+    let edited = with(&base, &[("rtc:name=\"cmd\"", "rtc:name=\"command\"")]);
+    write(&repo, "RTC/X/RTC.xml", &edited);
+    commit(&repo, 2, "Edit");
+    std::fs::remove_dir_all(repo.join("RTC/X")).unwrap();
+    commit(&repo, 3, "Remove the old folder");
+    write(&repo, "RTC/X2.0/RTC.xml", &edited);
+    commit(&repo, 4, "Add the new folder");
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let h = base_history(&site);
+    let found = subjects_and_files(&h);
+    assert_eq!(
+        found,
+        [
+            ("Add the new folder", "RTC/X2.0/RTC.xml"),
+            ("Edit", "RTC/X/RTC.xml"),
+            ("First", "RTC/X/RTC.xml")
+        ],
+        "{h:#?}"
+    );
+    assert_eq!(h[0]["movedFrom"], "RTC/X/RTC.xml", "{h:#?}");
+    assert!(h[0]["changes"].as_array().unwrap().is_empty(), "{h:#?}");
+    assert_eq!(h[1].get("movedFrom"), None, "{h:#?}");
+    assert_eq!(h[2]["first"], true);
+    // The rows say it, and the move is not folded away.
+    let html = dir.path().join("html");
+    build(&repo, &html, &["-f", "html"]);
+    let component = page(&html, "components/base.html");
+    assert!(
+        component.contains("moved from RTC/X/RTC.xml, no change to the specification"),
+        "{component}"
+    );
+    // A deletion further back than the gap looked at is another component's end, not a move.
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    assert!(init(&repo));
+    write(&repo, "RTC/X/RTC.xml", &base);
+    write(
+        &repo,
+        "RTC/Other/RTC.xml",
+        &common::xml_profile("Other", &[]),
+    );
+    commit(&repo, 1, "First");
+    std::fs::remove_dir_all(repo.join("RTC/X")).unwrap();
+    commit(&repo, 2, "Remove");
+    for i in 0..rtcdoc::history::MAX_GAP {
+        write(&repo, "notes.txt", &format!("{i}"));
+        commit(&repo, 3, "Notes");
+    }
+    write(&repo, "RTC/X2.0/RTC.xml", &base);
+    commit(&repo, 4, "Add again");
+    let site = dir.path().join("site");
+    build(&repo, &site, &["-f", "json"]);
+    let h = base_history(&site);
+    assert_eq!(
+        subjects_and_files(&h),
+        [("Add again", "RTC/X2.0/RTC.xml")],
+        "{h:#?}"
+    );
+}

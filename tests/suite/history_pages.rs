@@ -526,10 +526,11 @@ fn a_backup_orders_among_commits_in_their_time_zone() {
     assert!(commit < backup, "the 18:18 commit first:\n{md}");
 }
 
-/// A change's message quotes values as written: a description holding RTCBuilder's `<br/>`
-/// stays one code span in Markdown and Doxygen (it was broken into stray backticks).
+/// A description holding RTCBuilder's `<br/>` breaks the line there in a change's message, as
+/// the component page does (issue #55: it showed raw), in every output, without stray
+/// backticks; the JSON keeps the value as written.
 #[test]
-fn a_quoted_value_with_a_line_break_tag_stays_one_code_span() {
+fn a_line_break_tag_in_a_changed_text_breaks_the_line() {
     let dir = tempfile::tempdir().unwrap();
     let repo = dir.path().join("repo");
     let v1 = history_repo::versions().remove(0).1;
@@ -547,15 +548,17 @@ fn a_quoted_value_with_a_line_break_tag_stays_one_code_span() {
     let site = dir.path().join("site");
     build(&repo, &site, &[]);
     let md = page(&site, "markdown/history/base.md");
-    assert!(md.contains("`line one<br/>line two`"), "{md}");
+    assert!(md.contains("&#123;+line one<br>line two+&#125;"), "{md}");
     assert!(!md.contains("\\`"), "{md}");
+    assert!(!md.contains("br/"), "{md}");
     let dox = page(&site, "doxygen/history/base.dox");
-    assert!(dox.contains("<tt>line one\\<br/\\>line two</tt>"), "{dox}");
+    assert!(dox.contains("{+line one<br>line two+}"), "{dox}");
     let html = page(&site, "html/history/base.html");
-    assert!(
-        html.contains("<code>line one&lt;br/&gt;line two</code>"),
-        "{html}"
-    );
+    assert!(html.contains("<ins>line one<br>line two</ins>"), "{html}");
+    assert!(!html.contains("&lt;br"), "{html}");
+    let json: serde_json::Value = serde_json::from_str(&page(&site, "json/catalog.json")).unwrap();
+    let change = &json["components"]["RTC:Lab:Mobile:Base:1.0.0"]["history"][0]["changes"][0];
+    assert_eq!(change["new"], "line one<br/>line two", "{change:#}");
 }
 
 /// A profile kept outside git beside its RTCBuilder backups: the file itself is the newest

@@ -25,6 +25,7 @@ mod guide_commands;
 mod hints;
 mod history;
 mod history_more;
+mod history_noise;
 mod history_pages;
 mod html_browser;
 mod html_native;

@@ -49,6 +49,9 @@ pub fn compare_systems_as(label: &str, old: &RtSystem, new: &RtSystem) -> Vec<Ch
                 "dataPortConnectors",
                 "servicePortConnectors",
                 "idParts",
+                // Save stamps: RTSystemEditor rewrites them at every save.
+                "creationDate",
+                "updateDate",
             ],
         )
     };
@@ -362,13 +365,16 @@ impl Cx<'_> {
         diff_values(path, &o, &n, &mut found);
         for (p, a, b) in found {
             let message = match (&a, &b) {
-                (None, Some(v)) => format!("`{p}` was added (`{v}`)"),
-                (Some(v), None) => format!("`{p}` was removed (was `{v}`)"),
-                _ => format!(
-                    "`{p}` changed from {} to {}",
-                    quoted(a.as_deref()),
-                    quoted(b.as_deref())
-                ),
+                // The change's path names the value: the message does not say it again.
+                (None, Some(v)) => format!("was added ({})", quoted(Some(v))),
+                (Some(v), None) => format!("was removed (was {})", quoted(Some(v))),
+                _ => crate::word_diff::message(a.as_deref(), b.as_deref()).unwrap_or_else(|| {
+                    format!(
+                        "changed from {} to {}",
+                        quoted(a.as_deref()),
+                        quoted(b.as_deref())
+                    )
+                }),
             };
             self.push(codes::SYSTEM_OTHER, p, (a, b), message, At::New(at));
         }

@@ -129,10 +129,14 @@ pub fn row(
         format!("{}: {why}", lang.t("history_unreadable"))
     } else if e.first {
         lang.t("history_first").to_string()
-    } else if e.changes.is_empty() {
-        lang.t("history_no_spec_change").to_string()
     } else {
         let mut parts = Vec::new();
+        if let Some(from) = &e.moved_from {
+            parts.push(lang.t("history_moved").replace("{file}", from));
+        }
+        if e.changes.is_empty() {
+            parts.push(lang.t("history_no_spec_change").to_string());
+        }
         for (sev, key) in [
             ("breaking", "history_n_breaking"),
             ("warning", "history_n_warning"),

@@ -48,18 +48,59 @@ pub struct ChangeRow {
     pub code: String,
     pub path: String,
     pub message: String,
+    /// The message as HTML when it is a long text's word-level difference
+    /// ([`crate::word_diff`]): the deleted words in `<del>`, the inserted ones in `<ins>`, the
+    /// line breaks as `<br>`; the HTML pages show it instead of `message`.
+    pub html: Option<String>,
 }
 
 impl ChangeRow {
-    fn of(c: &crate::catalog::history::Change, lang: Lang) -> ChangeRow {
+    pub(crate) fn of(c: &crate::catalog::history::Change, lang: Lang) -> ChangeRow {
         ChangeRow {
             severity: c.severity.clone(),
             severity_label: severity_label(&c.severity, lang).to_string(),
             code: c.code.clone(),
             path: c.path.clone(),
             message: c.message.clone(),
+            html: words_html(c),
         }
     }
+}
+
+/// A change's message as HTML, when it is its long text's word-level difference.
+fn words_html(c: &crate::catalog::history::Change) -> Option<String> {
+    use crate::word_diff::{message, pieces, Piece};
+    let (old, new) = (c.old.as_deref(), c.new.as_deref());
+    if message(old, new)? != c.message {
+        return None;
+    }
+    let mut out = String::from("changed: ");
+    let text = |s: &str, out: &mut String| {
+        for (i, line) in s.split('\n').enumerate() {
+            if i > 0 {
+                out.push_str("<br>");
+            }
+            // Writing to a String cannot fail.
+            let _ = crate::render::html::svg::esc_into(out, line);
+        }
+    };
+    for p in pieces(old, new) {
+        match p {
+            Piece::Same(s) => text(&s, &mut out),
+            Piece::Deleted(s) => {
+                out.push_str("<del>");
+                text(&s, &mut out);
+                out.push_str("</del>");
+            }
+            Piece::Inserted(s) => {
+                out.push_str("<ins>");
+                text(&s, &mut out);
+                out.push_str("</ins>");
+            }
+            Piece::Elided => out.push('…'),
+        }
+    }
+    Some(out)
 }
 
 /// One item of a history page: a version shown on its own, or a run of versions that changed
