@@ -23,6 +23,7 @@ mod function_length;
 mod guide_commands;
 mod hints;
 mod history;
+mod history_feed;
 mod history_more;
 mod history_pages;
 mod html_browser;
