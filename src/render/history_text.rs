@@ -131,13 +131,15 @@ pub fn whats_new_page<M: Markup>(
         let items: Vec<String> = rows
             .iter()
             .map(|r| {
-                let mut component = match cat.history_page_of(r.of) {
-                    Some(to) => M::page_link(cat, page, to, Some(&r.anchor), &r.name),
-                    None => M::esc(&r.name),
+                // A system's or IDL file's kind is part of the link, as on the HTML page.
+                let name = match r.kind.is_empty() {
+                    true => r.name.clone(),
+                    false => format!("{} ({})", r.name, r.kind),
                 };
-                if !r.kind.is_empty() {
-                    component = format!("{component} ({})", M::esc(&r.kind));
-                }
+                let component = match cat.history_page_of(r.of) {
+                    Some(to) => M::page_link(cat, page, to, Some(&r.anchor), &name),
+                    None => M::esc(&name),
+                };
                 let path = match r.change.about {
                     Some(t) => M::page_link(cat, page, cat.type_page(t), None, &r.change.path),
                     None => M::esc(&r.change.path),

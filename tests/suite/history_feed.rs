@@ -54,7 +54,7 @@ fn commits(d: &Path) -> Vec<String> {
 
 /// The work tree (see the module's comment) in `d`, dated 2024-01-01 … 16; its commits, newest
 /// first, or `None` without git.
-fn repository(d: &Path) -> Option<Vec<String>> {
+pub(crate) fn repository(d: &Path) -> Option<Vec<String>> {
     if !init(d) {
         return None;
     }
@@ -149,11 +149,11 @@ fn whats_new_and_the_feed_list_system_and_idl_versions_with_the_components() {
             .unwrap_or_else(|| panic!("What's new has no `{needle}`:\n{news}"))
     };
     let newest = at(&format!(
-        "<a href=\"{idl_page}.html#{}\">idl/Nav.idl</a> (IDL file)</th>",
+        "<a href=\"{idl_page}.html#{}\">idl/Nav.idl (IDL file)</a></th>",
         anchor(&ids[0])
     ));
     let system = at(&format!(
-        "<a href=\"{system_page}.html#{}\">NavSystem</a> (RT System)</th>",
+        "<a href=\"{system_page}.html#{}\">NavSystem (RT System)</a></th>",
         anchor(&ids[13])
     ));
     let component = at(&format!(
@@ -184,14 +184,14 @@ fn whats_new_and_the_feed_list_system_and_idl_versions_with_the_components() {
     let md = page(&site, "markdown/whats-new.md");
     assert!(
         md.contains(&format!(
-            "[idl/Nav.idl]({idl_page}.md#{}) (IDL file)",
+            "[idl/Nav.idl (IDL file)]({idl_page}.md#{})",
             anchor(&ids[0])
         )),
         "{md}"
     );
     assert!(
         md.contains(&format!(
-            "[NavSystem]({system_page}.md#{}) (RT System)",
+            "[NavSystem (RT System)]({system_page}.md#{})",
             anchor(&ids[13])
         )),
         "{md}"
