@@ -231,6 +231,10 @@ pub enum HistoryOf {
     Idl(usize),
 }
 
+/// Where the history page of each component (system, IDL file) is in the page list, if it has
+/// one.
+pub(super) type Slots = Vec<Option<usize>>;
+
 impl super::Catalog {
     /// The history of `of`, newest first (empty without one).
     pub fn history_of(&self, of: HistoryOf) -> &[Entry] {
@@ -322,11 +326,7 @@ impl super::Catalog {
     /// Appends the history pages to `pages` (What's new, then a page per component, system and
     /// IDL file with a history: `history/<slug>`, `system-history/<slug>`,
     /// `idl-history/<slug of the path>`); where each one is, per component, system and file.
-    #[allow(clippy::type_complexity)]
-    pub(super) fn history_pages(
-        &self,
-        pages: &mut Vec<super::Page>,
-    ) -> (Vec<Option<usize>>, Vec<Option<usize>>, Vec<Option<usize>>) {
+    pub(super) fn history_pages(&self, pages: &mut Vec<super::Page>) -> (Slots, Slots, Slots) {
         use super::{Page, PageKind};
         let mut at = (
             vec![None; self.components.len()],

@@ -602,7 +602,7 @@ mod tests {
             .unwrap()
             .catalog;
         let json: serde_json::Value = serde_json::from_slice(&written(&catalog, "t")).unwrap();
-        assert_eq!(json["formatVersion"], 2);
+        assert_eq!(json["formatVersion"], 3);
         let types = json["dataTypes"].as_object().unwrap();
         let (name, t) = types
             .iter()
