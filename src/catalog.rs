@@ -930,11 +930,15 @@ pub enum PageKind {
     System,
     /// Which groups of components can feed which ([`dataflow`]).
     DataFlow,
-    /// Every change of every component's history, newest first (only when some component has
-    /// a history).
+    /// Every change of every history (components, RT Systems, IDL files), newest first (only
+    /// when something has a history).
     WhatsNew,
     /// The whole history of one component (only for a component with a history).
     ComponentHistory,
+    /// The whole history of one RT System profile (only for a system with a history).
+    SystemHistory,
+    /// The whole history of one IDL file (only for a file with a history).
+    IdlHistory,
 }
 
 /// One page of the documentation: the same list for every output (HTML, Markdown, Doxygen),
@@ -1047,6 +1051,10 @@ impl Page {
 struct PageStarts {
     /// The history page of each component (its position in the page list), if it has one.
     history: Vec<Option<usize>>,
+    /// The history page of each system, if it has one.
+    system_history: Vec<Option<usize>>,
+    /// The history page of each IDL file ([`crate::idl::IdlSet::files`]), if it has one.
+    idl_history: Vec<Option<usize>>,
     component: usize,
     data_type: usize,
     interface: usize,
@@ -1760,6 +1768,8 @@ impl Catalog {
         let p = &mut pages;
         let mut starts = PageStarts {
             history: Vec::new(),
+            system_history: Vec::new(),
+            idl_history: Vec::new(),
             component: section(
                 p,
                 (K::Component, "components", None),
@@ -1784,38 +1794,20 @@ impl Catalog {
                     .map(|s| (s.source.as_str(), s.slug.as_str(), s.display_name())),
             ),
         };
-        // The history pages: the catalogue's What's new, then one per component with a
-        // history, under `history/` (one folder down, as every entry page).
-        let mut history = vec![None; self.components.len()];
-        if self.components.iter().any(|c| !c.history.is_empty()) {
-            pages.push(site(K::WhatsNew, "whats-new"));
-            for (ci, c) in self.components.iter().enumerate() {
-                if !c.history.is_empty() {
-                    history[ci] = Some(pages.len());
-                    pages.push(Page {
-                        kind: PageKind::ComponentHistory,
-                        id: c.id.to_string(),
-                        stem: format!("history/{}", c.slug),
-                        title: c.display_name().into_owned(),
-                    });
-                }
-            }
-        }
+        // The history pages: the catalogue's What's new, then one per component, system and
+        // IDL file with a history, each kind in its folder one down (as every entry page).
+        let (history, system_history, idl_history) = self.history_pages(&mut pages);
         self.pages = pages;
         starts.history = history;
+        starts.system_history = system_history;
+        starts.idl_history = idl_history;
         self.page_starts = starts;
     }
 
-    /// Recomputes the page list after the components' histories were filled in (the history
-    /// pages exist only for components with a history).
+    /// Recomputes the page list after the histories were filled in (the history pages exist
+    /// only for components, systems and IDL files with a history).
     pub fn index_history_pages(&mut self) {
         self.index_pages();
-    }
-
-    /// The history page of component `ci`, when it has a history.
-    pub fn history_page(&self, ci: ComponentIx) -> Option<&Page> {
-        let at = (*self.page_starts.history.get(ci.get())?)?;
-        self.pages.get(at)
     }
 
     /// Every page of the documentation, in a fixed order: the site's own pages (index, search,

@@ -229,6 +229,177 @@ impl super::Catalog {
     }
 }
 
+/// What a history is of: a component profile, an RT System profile, or an IDL file (its
+/// position in [`crate::idl::IdlSet::files`]). Each with a history has its history page, and
+/// its versions are on What's new and in the feed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum HistoryOf {
+    Component(super::ComponentIx),
+    System(super::SystemIx),
+    Idl(usize),
+}
+
+/// Where the history page of each component (system, IDL file) is in the page list, if it has
+/// one.
+pub(super) type Slots = Vec<Option<usize>>;
+
+impl super::Catalog {
+    /// The history of `of`, newest first (empty without one).
+    pub fn history_of(&self, of: HistoryOf) -> &[Entry] {
+        match of {
+            HistoryOf::Component(ci) => &self[ci].history,
+            HistoryOf::System(si) => self
+                .systems
+                .get(si.get())
+                .map_or(&[][..], |s| s.history.as_slice()),
+            HistoryOf::Idl(fi) => self
+                .idl
+                .files
+                .get(fi)
+                .and_then(|f| self.idl_history.get(&f.path))
+                .map_or(&[][..], Vec::as_slice),
+        }
+    }
+
+    /// Everything with a history, in page order: the components, the systems, the IDL files.
+    pub fn histories(&self) -> impl Iterator<Item = HistoryOf> + '_ {
+        let components = super::Ix::all(self.components.len()).map(HistoryOf::Component);
+        let systems = super::Ix::all(self.systems.len()).map(HistoryOf::System);
+        let idl = (0..self.idl.files.len()).map(HistoryOf::Idl);
+        components
+            .chain(systems)
+            .chain(idl)
+            .filter(|&of| !self.history_of(of).is_empty())
+    }
+
+    /// The history page of component `ci`, when it has a history.
+    pub fn history_page(&self, ci: super::ComponentIx) -> Option<&super::Page> {
+        self.history_page_of(HistoryOf::Component(ci))
+    }
+
+    /// The history page of `of`, when it has a history.
+    pub fn history_page_of(&self, of: HistoryOf) -> Option<&super::Page> {
+        let starts = &self.page_starts;
+        let at = match of {
+            HistoryOf::Component(ci) => starts.history.get(ci.get()),
+            HistoryOf::System(si) => starts.system_history.get(si.get()),
+            HistoryOf::Idl(fi) => starts.idl_history.get(fi),
+        };
+        self.pages.get((*at?)?)
+    }
+
+    /// The position in [`crate::idl::IdlSet::files`] of `file`, a reference into it (as a
+    /// lookup of the set gives it): found from its address, without a scan of the files.
+    pub fn idl_file_index(&self, file: &crate::idl::IdlFile) -> Option<usize> {
+        let files = &self.idl.files;
+        let size = std::mem::size_of::<crate::idl::IdlFile>().max(1);
+        let at = (file as *const crate::idl::IdlFile as usize)
+            .checked_sub(files.as_ptr() as usize)?
+            / size;
+        files
+            .get(at)
+            .is_some_and(|f| std::ptr::eq(f, file))
+            .then_some(at)
+    }
+
+    /// The page of what `of` is the history of: the component's or the system's page; `None`
+    /// for an IDL file, which has no page of its own.
+    pub fn page_of_history(&self, of: HistoryOf) -> Option<&super::Page> {
+        match of {
+            HistoryOf::Component(ci) => Some(self.component_page(ci)),
+            HistoryOf::System(si) => Some(self.system_page(si)),
+            HistoryOf::Idl(_) => None,
+        }
+    }
+
+    /// The name of what `of` is the history of: the component's or the system's display
+    /// name, the IDL file's path.
+    pub fn history_name(&self, of: HistoryOf) -> String {
+        match of {
+            HistoryOf::Component(ci) => self[ci].display_name().into_owned(),
+            HistoryOf::System(si) => self
+                .systems
+                .get(si.get())
+                .map(|s| s.display_name().into_owned())
+                .unwrap_or_default(),
+            HistoryOf::Idl(fi) => self
+                .idl
+                .files
+                .get(fi)
+                .map(|f| f.path.clone())
+                .unwrap_or_default(),
+        }
+    }
+
+    /// Appends the history pages to `pages` (What's new, then a page per component, system and
+    /// IDL file with a history: `history/<slug>`, `system-history/<slug>`,
+    /// `idl-history/<slug of the path>`); where each one is, per component, system and file.
+    pub(super) fn history_pages(&self, pages: &mut Vec<super::Page>) -> (Slots, Slots, Slots) {
+        use super::{Page, PageKind};
+        let mut at = (
+            vec![None; self.components.len()],
+            vec![None; self.systems.len()],
+            vec![None; self.idl.files.len()],
+        );
+        if self.histories().next().is_none() {
+            return at;
+        }
+        pages.push(Page {
+            kind: PageKind::WhatsNew,
+            id: String::new(),
+            stem: "whats-new".into(),
+            title: String::new(),
+        });
+        // The IDL files' slugs, from their paths: unique among them (`-2`, `-3`, … when two
+        // paths slug alike).
+        let mut taken = std::collections::HashSet::new();
+        for of in self.histories() {
+            let (kind, id, stem, slot) = match of {
+                HistoryOf::Component(ci) => {
+                    let c = &self[ci];
+                    let stem = format!("history/{}", c.slug);
+                    (
+                        PageKind::ComponentHistory,
+                        c.id.to_string(),
+                        stem,
+                        &mut at.0[ci.get()],
+                    )
+                }
+                HistoryOf::System(si) => {
+                    let s = &self.systems[si.get()];
+                    let stem = format!("system-history/{}", s.slug);
+                    (
+                        PageKind::SystemHistory,
+                        s.source.clone(),
+                        stem,
+                        &mut at.1[si.get()],
+                    )
+                }
+                HistoryOf::Idl(fi) => {
+                    let path = &self.idl.files[fi].path;
+                    let base = super::slugify(path);
+                    let mut slug = base.clone();
+                    let mut k = 1;
+                    while !taken.insert(slug.clone()) {
+                        k += 1;
+                        slug = format!("{base}-{k}");
+                    }
+                    let stem = format!("idl-history/{slug}");
+                    (PageKind::IdlHistory, path.clone(), stem, &mut at.2[fi])
+                }
+            };
+            *slot = Some(pages.len());
+            pages.push(Page {
+                kind,
+                id,
+                stem,
+                title: self.history_name(of),
+            });
+        }
+        at
+    }
+}
+
 /// The labels `rtcdoc diff` keys the items of a list by (ports, interfaces, parameters): the
 /// trimmed name (`(unnamed)` when blank), and `name#2`, `name#3`, … for a repeated one.
 pub fn item_labels<'a>(names: impl Iterator<Item = Option<&'a str>>) -> Vec<String> {

@@ -63,7 +63,7 @@ impl Page {
     /// The page's Doxygen name (what `\page` declares and `\ref` names): `index` for the
     /// `\mainpage`, `rtc_types` and the like for the index pages, a prefix and the slug for the
     /// entry pages (`rtc_comp_<slug>`, `rtc_type_<slug>`, `rtc_if_<slug>`, `rtc_cat_<slug>`,
-    /// `rtc_vendor_<slug>`, `rtc_sys_<slug>`, `rtc_hist_<slug>`). Labels are globally unique and `[a-z0-9_]` only.
+    /// `rtc_vendor_<slug>`, `rtc_sys_<slug>`, `rtc_hist_<slug>`, `rtc_syshist_<slug>`, `rtc_idlhist_<slug>`). Labels are globally unique and `[a-z0-9_]` only.
     pub fn doxygen_label(&self) -> String {
         let prefix = match self.kind {
             PageKind::Index => return "index".into(),
@@ -78,6 +78,8 @@ impl Page {
             PageKind::DataFlow => return "rtc_dataflow".into(),
             PageKind::WhatsNew => return "rtc_whats_new".into(),
             PageKind::ComponentHistory => "rtc_hist_",
+            PageKind::SystemHistory => "rtc_syshist_",
+            PageKind::IdlHistory => "rtc_idlhist_",
             PageKind::Component => "rtc_comp_",
             PageKind::DataType => "rtc_type_",
             PageKind::Interface => "rtc_if_",

@@ -1,37 +1,45 @@
 //! The history pages for Markdown and Doxygen, from their views
-//! ([`crate::render::view::history_page`]): a component's whole history and What's new. One
-//! `Markup`-generic function per page writes both formats.
+//! ([`crate::render::view::history_page`]): the whole history of a component, an RT System or
+//! an IDL file, and What's new. One `Markup`-generic function per page writes both formats.
 
 use super::text::Markup;
 use super::view::history_page::{
     history_page_view, whats_new_view, HistoryItem, HistoryPageView, WhatsNewView,
 };
 use super::view::Linked;
-use crate::catalog::{Catalog, ComponentIx, Ix, PageKind};
+use crate::catalog::history::HistoryOf;
+use crate::catalog::{Catalog, PageKind};
 use crate::i18n::Lang;
 
-/// The page of every version of component `ci` (`None` when it has no history).
+/// The page of every version of `of` (`None` when it has no history).
 pub fn history_page<M: Markup>(
     cat: &Catalog,
-    ci: ComponentIx,
+    of: HistoryOf,
     source_url: Option<&str>,
     lang: Lang,
 ) -> Option<(String, String)> {
-    let v = history_page_view(cat, ci, source_url, lang)?;
+    let v = history_page_view(cat, of, source_url, lang)?;
     let mut out = String::new();
-    let crumbs = [
-        Linked::new(
-            lang.t("catalogue"),
-            Some(cat.site_page(PageKind::Index)),
-            None,
-        ),
-        Linked::new(&v.name, Some(v.component), None),
-    ];
+    let mut crumbs = vec![Linked::new(
+        lang.t("catalogue"),
+        Some(cat.site_page(PageKind::Index)),
+        None,
+    )];
+    crumbs.extend(v.back.map(|to| Linked::new(&v.name, Some(to), None)));
     let title = lang.t("history_page_title").replace("{name}", &v.name);
     M::page_head(&mut out, cat, v.page, &title, &crumbs);
-    M::paragraph(&mut out, &M::esc(lang.t("history_page_intro")));
+    M::paragraph(&mut out, &M::esc(v.intro));
+    if !v.types.is_empty() {
+        let links: Vec<String> = v
+            .types
+            .iter()
+            .filter_map(|l| Some(M::link(&l.text, &l.target(cat, v.page, M::OUTPUT)?)))
+            .collect();
+        let label = M::esc(lang.t("history_idl_types"));
+        M::paragraph(&mut out, &format!("{label}: {}", links.join(", ")));
+    }
     for item in &v.items {
-        history_item::<M>(&mut out, &v, item, lang);
+        history_item::<M>(&mut out, cat, &v, item, lang);
     }
     Some((v.page.path_in(M::OUTPUT), out))
 }
@@ -39,6 +47,7 @@ pub fn history_page<M: Markup>(
 /// One version (its facts and every change), or a folded run of versions.
 fn history_item<M: Markup>(
     out: &mut String,
+    cat: &Catalog,
     v: &HistoryPageView<'_>,
     item: &HistoryItem,
     lang: Lang,
@@ -76,7 +85,10 @@ fn history_item<M: Markup>(
                 vec![
                     M::esc(&c.severity_label),
                     M::esc(&c.code),
-                    M::esc(&c.path),
+                    match c.about {
+                        Some(t) => M::page_link(cat, v.page, cat.type_page(t), None, &c.path),
+                        None => M::esc(&c.path),
+                    },
                     M::message(&c.message),
                 ]
             })
@@ -119,10 +131,18 @@ pub fn whats_new_page<M: Markup>(
         let items: Vec<String> = rows
             .iter()
             .map(|r| {
-                let hist = cat.history_page(r.ci);
-                let component = match hist {
-                    Some(to) => M::page_link(cat, page, to, Some(&r.anchor), &r.component),
-                    None => M::esc(&r.component),
+                // A system's or IDL file's kind is part of the link, as on the HTML page.
+                let name = match r.kind.is_empty() {
+                    true => r.name.clone(),
+                    false => format!("{} ({})", r.name, r.kind),
+                };
+                let component = match cat.history_page_of(r.of) {
+                    Some(to) => M::page_link(cat, page, to, Some(&r.anchor), &name),
+                    None => M::esc(&name),
+                };
+                let path = match r.change.about {
+                    Some(t) => M::page_link(cat, page, cat.type_page(t), None, &r.change.path),
+                    None => M::esc(&r.change.path),
                 };
                 let commit = match &r.url {
                     Some(url) => M::link(&r.label, url),
@@ -139,7 +159,7 @@ pub fn whats_new_page<M: Markup>(
                     "{head} · {commit} — {} {} {}: {}",
                     M::esc(&r.change.severity_label),
                     M::esc(&r.change.code),
-                    M::esc(&r.change.path),
+                    path,
                     M::message(&r.change.message)
                 )
             })
@@ -155,7 +175,8 @@ pub fn whats_new_page<M: Markup>(
     Some((page.path_in(M::OUTPUT), out))
 }
 
-/// Both kinds of history page for one output: What's new, then each component's history.
+/// Both kinds of history page for one output: What's new, then each history (components,
+/// systems, IDL files).
 pub fn pages<M: Markup>(
     cat: &Catalog,
     source_url: Option<&str>,
@@ -165,11 +186,10 @@ pub fn pages<M: Markup>(
     let mut out: Vec<(String, String)> = whats_new_page::<M>(cat, source_url, lang)
         .into_iter()
         .collect();
+    let all: Vec<HistoryOf> = cat.histories().collect();
     out.par_extend(
-        (0..cat.components.len())
-            .into_par_iter()
-            .map(Ix::new)
-            .filter_map(|ci| history_page::<M>(cat, ci, source_url, lang)),
+        all.into_par_iter()
+            .filter_map(|of| history_page::<M>(cat, of, source_url, lang)),
     );
     out
 }

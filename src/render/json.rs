@@ -21,8 +21,9 @@ use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 
 /// Version of the `catalog.json` shape; bumped on incompatible changes. 1 (before 0.2) listed
-/// entries in arrays and referred to them by position.
-pub const FORMAT_VERSION: u32 = 2;
+/// entries in arrays and referred to them by position; 2 had no history pages of RT Systems
+/// and IDL files in `pages` (kinds `systemHistory`, `idlHistory`).
+pub const FORMAT_VERSION: u32 = 3;
 
 /// An entry of a keyed object: what its key is, and taking it back when read.
 trait KeyedEntry {
@@ -465,6 +466,8 @@ pub fn read_catalog(bytes: &[u8], name: &str) -> anyhow::Result<ReadCatalog> {
         .bound()
         .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     catalog.idl_history = idl_history;
+    // The IDL files' history pages come with their histories.
+    catalog.index_history_pages();
     catalog.detached_backups = doc.backups.into_owned();
     catalog.set_origins(doc.sources.into_owned());
     if page_entries(&catalog) != doc.pages {
@@ -599,7 +602,7 @@ mod tests {
             .unwrap()
             .catalog;
         let json: serde_json::Value = serde_json::from_slice(&written(&catalog, "t")).unwrap();
-        assert_eq!(json["formatVersion"], 2);
+        assert_eq!(json["formatVersion"], 3);
         let types = json["dataTypes"].as_object().unwrap();
         let (name, t) = types
             .iter()

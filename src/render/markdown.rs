@@ -490,11 +490,11 @@ fn summary<'a>(cat: &'a Catalog, title: &str, lang: Lang) -> String {
             summary_item(&mut out, cat, 1, &text, page);
         }
     }
-    // What's new, with each component's history under it.
+    // What's new, with each history (components, systems, IDL files) under it.
     if let Some(news) = cat.pages().iter().find(|p| p.kind == PageKind::WhatsNew) {
         summary_item(&mut out, cat, 0, lang.t("whats_new"), news);
-        for ci in Ix::all(cat.components.len()) {
-            if let Some(page) = cat.history_page(ci) {
+        for of in cat.histories() {
+            if let Some(page) = cat.history_page_of(of) {
                 let text = lang.t("history_page_title").replace("{name}", &page.title);
                 summary_item(&mut out, cat, 1, &text, page);
             }

@@ -140,7 +140,12 @@ pub fn system_body<M: Markup>(
     orders_and_groups::<M>(out, &v, lang, t);
     if !v.history.rows.is_empty() {
         (t.heading)(out, "change-history", lang.t("change_history"));
-        super::text::history_body::<M>(out, &v.history, lang.t("history_intro_system"), lang);
+        let here = cat.page_of_system(s);
+        let full = here
+            .zip(v.history_page.as_ref())
+            .map(|(from, to)| (cat, from, to));
+        let intro = lang.t("history_intro_system");
+        super::text::history_body::<M>(out, &v.history, intro, full, lang);
     }
     (t.heading)(out, "all-values", lang.t("sys_all_values"));
     let pairs = v.all_values.iter().map(|kv| (&kv.key, &kv.value));

@@ -903,7 +903,7 @@ pub fn type_page<M: Markup>(
         M::heading(o, page, 2, a, text)
     });
     if let Some(f) = &v.idl_file {
-        idl_file_section::<M>(&mut out, page, f, lang);
+        idl_file_section::<M>(&mut out, cat, page, f, lang);
     }
     links_section::<M>(
         &mut out,
@@ -1047,21 +1047,17 @@ fn history_section<M: Markup>(
         return;
     }
     M::heading(out, page, 2, "sec-change-history", lang.t("change_history"));
-    history_body::<M>(out, h, lang.t("history_intro"), lang);
-    if let Some(to) = full {
-        M::paragraph(
-            out,
-            &M::page_link(cat, page, to, None, lang.t("history_full")),
-        );
-    }
+    let full = full.map(|to| (cat, page, to));
+    history_body::<M>(out, h, lang.t("history_intro"), full, lang);
 }
 
 /// The IDL file section of a type page: the file (linked into its repository) and its latest
 /// versions.
 fn idl_file_section<M: Markup>(
     out: &mut String,
+    cat: &Catalog,
     page: &Page,
-    f: &crate::render::view::idl_file::IdlFileView,
+    f: &crate::render::view::idl_file::IdlFileView<'_>,
     lang: Lang,
 ) {
     M::heading(out, page, 2, "sec-idl-file", lang.t("idl_file"));
@@ -1071,16 +1067,19 @@ fn idl_file_section<M: Markup>(
     };
     M::paragraph(out, &format!("{}: {file}", M::esc(lang.t("source"))));
     if !f.history.rows.is_empty() {
-        history_body::<M>(out, &f.history, lang.t("history_intro_idl"), lang);
+        let full = f.history_page.map(|to| (cat, page, to));
+        history_body::<M>(out, &f.history, lang.t("history_intro_idl"), full, lang);
     }
 }
 
-/// A History section's text under its heading: `intro`, the table of the latest versions and
-/// the note on older ones (component and system pages).
+/// A History section's text under its heading: `intro`, the table of the latest versions, the
+/// note on older ones and the link to the history page `full` (catalogue, this page, the
+/// history page) when there is one (component, system and type pages).
 pub(super) fn history_body<M: Markup>(
     out: &mut String,
     h: &crate::render::view::history::HistoryView,
     intro: &str,
+    full: Option<(&Catalog, &Page, &Page)>,
     lang: Lang,
 ) {
     M::paragraph(out, &M::esc(intro));
@@ -1094,9 +1093,24 @@ pub(super) fn history_body<M: Markup>(
                 (None, false) => M::code(&r.label),
             };
             let mut changes = M::esc(&r.summary);
-            if !r.breaking.is_empty() {
+            let mut each: Vec<String> = r
+                .changes
+                .iter()
+                .map(|c| {
+                    let mut item = M::esc(&c.severity_label);
+                    if !c.path.is_empty() {
+                        item.push_str(&format!(" {}:", M::esc(&c.path)));
+                    }
+                    format!("{item} {}", M::message(&c.message))
+                })
+                .collect();
+            each.extend(r.more.as_deref().map(|more| match full {
+                Some((cat, from, to)) => M::page_link(cat, from, to, Some(&r.anchor), more),
+                None => M::esc(more),
+            }));
+            if !each.is_empty() {
                 changes.push_str(": ");
-                changes.push_str(&M::esc(&r.breaking.join("; ")));
+                changes.push_str(&each.join("; "));
             }
             vec![
                 M::esc(&r.version),
@@ -1122,5 +1136,11 @@ pub(super) fn history_body<M: Markup>(
     );
     if let Some(note) = h.older_note(lang) {
         M::paragraph(out, &M::esc(&note));
+    }
+    if let Some((cat, from, to)) = full {
+        M::paragraph(
+            out,
+            &M::page_link(cat, from, to, None, lang.t("history_full")),
+        );
     }
 }

@@ -193,7 +193,7 @@ fn json_output_holds_components_sources_and_cross_links() {
     assert!(err.pos.is_some(), "errors carry a position");
 
     let v = json(&out.join("catalog.json"));
-    assert_eq!(v["formatVersion"], 2);
+    assert_eq!(v["formatVersion"], 3);
     let keyed = v["components"].as_object().unwrap();
     let comps: Vec<&serde_json::Value> = keyed.values().collect();
     let sources: Vec<&str> = comps

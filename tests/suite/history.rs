@@ -342,11 +342,24 @@ fn the_component_page_has_a_history_section_in_every_output() {
         "{}",
         rows[2]
     );
-    assert!(rows[2].contains("<li>dataPorts/cmd: "), "{}", rows[2]);
+    let item = |severity: &str, path: &str| {
+        format!("<li><span class=\"sev {severity}\">{severity}</span> <code>{path}</code>: ")
+    };
     assert!(
-        rows[2].contains(
-            "<li>basicInfo/version: <code>Base</code> has breaking changes but keeps version 1.0.0"
-        ),
+        rows[2].contains(&item("breaking", "dataPorts/cmd")),
+        "{}",
+        rows[2]
+    );
+    assert!(
+        rows[2].contains(&format!(
+            "{}<code>Base</code> has breaking changes but keeps version 1.0.0",
+            item("warning", "basicInfo/version")
+        )),
+        "{}",
+        rows[2]
+    );
+    assert!(
+        rows[2].contains(&item("info", "dataPorts/velocity")),
         "{}",
         rows[2]
     );

@@ -307,7 +307,13 @@ fn an_idl_file_has_its_history_on_the_pages_of_its_types() {
     let rows: Vec<&str> = section.split("<tr>").skip(2).collect();
     assert_eq!(rows.len(), 4, "{section}");
     assert!(rows[0].contains("Drop Battery") && rows[0].contains("1 breaking"));
-    assert!(rows[0].contains("<li>idl/Nav::Battery: "), "{}", rows[0]);
+    assert!(
+        rows[0].contains(
+            "<li><span class=\"sev breaking\">breaking</span> <code>idl/Nav::Battery</code>: "
+        ),
+        "{}",
+        rows[0]
+    );
     let iface = type_page(&site, "html/interfaces", "html", "Nav::MapService");
     assert!(iface.contains("<section id=\"idl-file\">"), "{iface}");
     let md = type_page(&site, "markdown/types", "md", "Nav::TimedOdometry");

@@ -439,6 +439,40 @@ fn the_history_pages_pass_axe_and_fit_a_phone() {
     );
 }
 
+/// The history pages of an RT System and an IDL file, What's new with their rows, and the
+/// History sections that spell out each version's changes (system page, type page) pass the
+/// audit in every mode; no link of the site is broken.
+#[test]
+fn system_and_idl_history_pages_pass_axe_and_fit_a_phone() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if crate::history_feed::repository(&repo).is_none() {
+        println!("skipped: git not available");
+        return;
+    }
+    let out = dir.path().join("site");
+    let o = common::rtcdoc(
+        &["build", repo.to_str().unwrap(), "-o", out.to_str().unwrap()],
+        &repo,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(broken_links(&out).is_empty(), "{:?}", broken_links(&out));
+    let pages = [
+        "whats-new.html",
+        "idl-history/idl-nav-idl.html",
+        "system-history/navsystem.html",
+        "systems/navsystem.html",
+        "types/nav-timedodometry.html",
+    ];
+    let Some(report) = audit_filtering(&out, &pages, &["f-nsev=warning", "f-nsev="]) else {
+        return;
+    };
+    assert_audit(&report, &pages);
+}
+
 #[test]
 fn the_corpus_site_passes_axe_and_fits_a_phone() {
     if !chromium() {

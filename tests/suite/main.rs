@@ -24,6 +24,7 @@ mod function_length;
 mod guide_commands;
 mod hints;
 mod history;
+mod history_feed;
 mod history_more;
 mod history_noise;
 mod history_pages;

@@ -27,11 +27,24 @@ fn inputs() -> Vec<PathBuf> {
     ]
 }
 
-/// A git work tree with a component history (`common::history_repo`): the history pages
-/// (What's new, a component's history). `None` without git.
+/// A git work tree with a component history (`common::history_repo`), and an RT System
+/// profile and an IDL file changed in a later commit: the history pages (What's new, a
+/// component's, a system's and an IDL file's history). `None` without git.
 fn history_input(dir: &Path) -> Option<PathBuf> {
+    use common::history_repo::commit;
     let repo = dir.join("repo");
-    common::history_repo::history_repo(&repo).then_some(repo)
+    if !common::history_repo::history_repo(&repo) {
+        return None;
+    }
+    let fixture = |rel: &str| std::fs::read_to_string(root().join("tests/fixtures/diff").join(rel));
+    for (side, day) in [("old", 5), ("new", 6)] {
+        let system = fixture(&format!("DIFF251/{side}/systems/NavSystem.xml")).expect("system");
+        let idl = fixture(&format!("DIFF131/{side}/idl/Nav.idl")).expect("IDL file");
+        common::write(&repo, "systems/NavSystem.xml", &system);
+        common::write(&repo, "idl/Nav.idl", &idl);
+        commit(&repo, day, &format!("System and IDL, {side}"));
+    }
+    Some(repo)
 }
 
 /// The inputs, with the history repository (in `dir`) when git runs.
@@ -162,8 +175,10 @@ fn every_page_is_written_in_every_output_that_carries_its_kind() {
         "DataFlow",
         "WhatsNew",
         "ComponentHistory",
+        "SystemHistory",
+        "IdlHistory",
     ] {
-        if !with_history && (kind == "WhatsNew" || kind == "ComponentHistory") {
+        if !with_history && (kind == "WhatsNew" || kind.ends_with("History")) {
             crate::common::missing_tool(&format!("{kind}: git not available"));
             continue;
         }

@@ -1,9 +1,9 @@
-//! The history pages of the site (`history.html`: a component's whole history;
-//! `whats_new.html`: every change of the catalogue) and the Atom feed `feed.xml`, from the
-//! views of [`crate::render::view::history_page`].
+//! The history pages of the site (`history.html`: the whole history of a component, an RT
+//! System or an IDL file; `whats_new.html`: every change of the catalogue) and the Atom feed
+//! `feed.xml`, from the views of [`crate::render::view::history_page`].
 
 use super::{crumbs_home, ctx, page_title, Job, Link, PageContext, Site, SiteOptions};
-use crate::catalog::{Catalog, Ix, Output, PageKind};
+use crate::catalog::{Catalog, Output, Page, PageKind};
 use crate::render::view::history_page::{
     feed_entries, history_page_view, rfc3339, whats_new_view, WhatsNewRow,
 };
@@ -12,7 +12,7 @@ use serde::Serialize;
 /// The feed's path below the site root.
 pub const FEED: &str = "feed.xml";
 
-/// Some component has a history: the What's new page exists.
+/// Something (a component, a system, an IDL file) has a history: the What's new page exists.
 pub(super) fn has_history(catalog: &Catalog) -> bool {
     catalog.pages().iter().any(|p| p.kind == PageKind::WhatsNew)
 }
@@ -47,7 +47,10 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
         path: here.path_in(Output::Html),
         template: "whats_new.html",
         context: PageContext::Lazy(Box::new(move || {
-            let v = whats_new_view(cat, site.opts.source_url.as_deref(), lang);
+            let mut v = whats_new_view(cat, site.opts.source_url.as_deref(), lang);
+            for r in v.days.iter_mut().flat_map(|(_, rows)| rows) {
+                link_type(cat, here, &mut r.change);
+            }
             let days: Vec<Day<'_>> = v
                 .days
                 .iter()
@@ -60,9 +63,9 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
                             .iter()
                             .map(|r| NewsRow {
                                 link: Link {
-                                    text: r.component.clone(),
+                                    text: r.name.clone(),
                                     href: cat
-                                        .history_page(r.ci)
+                                        .history_page_of(r.of)
                                         .map(|to| cat.href(here, to, Some(&r.anchor), Output::Html))
                                         .unwrap_or_default(),
                                 },
@@ -91,29 +94,47 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
             }
         })),
     }];
-    for ci in Ix::all(cat.components.len()) {
-        let Some(page) = cat.history_page(ci) else {
+    for of in cat.histories() {
+        let Some(page) = cat.history_page_of(of) else {
             continue;
         };
         jobs.push(Job {
             path: page.path_in(Output::Html),
             template: "history.html",
             context: PageContext::Lazy(Box::new(move || {
-                let Some(v) = history_page_view(cat, ci, site.opts.source_url.as_deref(), lang)
+                let Some(mut v) = history_page_view(cat, of, site.opts.source_url.as_deref(), lang)
                 else {
                     return minijinja::Value::UNDEFINED;
                 };
                 let root = "../";
                 let mut crumbs = crumbs_home(lang, root);
-                crumbs.push(Link {
+                crumbs.extend(v.back.map(|to| Link {
                     text: v.name.clone(),
-                    href: cat.href(v.page, v.component, None, Output::Html),
-                });
+                    href: cat.href(v.page, to, None, Output::Html),
+                }));
+                for c in v
+                    .items
+                    .iter_mut()
+                    .filter_map(|it| it.version.as_mut())
+                    .flat_map(|version| &mut version.changes)
+                {
+                    link_type(cat, v.page, c);
+                }
+                let types: Vec<Link> = v
+                    .types
+                    .iter()
+                    .map(|l| Link {
+                        text: l.text.clone(),
+                        href: l.target(cat, v.page, Output::Html).unwrap_or_default(),
+                    })
+                    .collect();
                 let heading = lang.t("history_page_title").replace("{name}", &v.name);
                 minijinja::context! {
                     root => root,
                     title => page_title(site, &heading),
                     heading => heading,
+                    intro => v.intro,
+                    types => ctx(&types),
                     crumbs => ctx(&crumbs),
                     items => ctx(&v.items),
                 }
@@ -121,6 +142,14 @@ pub(super) fn pages<'a>(site: &'a Site<'a>) -> Vec<Job<'a>> {
         });
     }
     jobs
+}
+
+/// Sets the link of change `c` to the page of the type it is to (an IDL file's change), from
+/// page `from`.
+fn link_type(cat: &Catalog, from: &Page, c: &mut crate::render::view::history_page::ChangeRow) {
+    c.href = c
+        .about
+        .map(|t| cat.href(from, cat.type_page(t), None, Output::Html));
 }
 
 /// Escapes text for XML.
@@ -148,9 +177,8 @@ pub(super) fn feed(catalog: &Catalog, opts: &SiteOptions) -> Option<String> {
         .map(|e| e.updated.clone())
         .or_else(|| {
             catalog
-                .components
-                .iter()
-                .flat_map(|c| &c.history)
+                .histories()
+                .flat_map(|of| catalog.history_of(of))
                 .filter_map(|e| e.date.as_deref())
                 .filter_map(|d| Some((crate::render::view::history_page::instant(d)?, d)))
                 .max()

@@ -1393,6 +1393,8 @@ struct IdlFilePage {
     source_url: Option<String>,
     history: Vec<crate::render::view::history::HistoryRow>,
     older: Option<String>,
+    /// The file's history page (every version), from the type's page.
+    history_page: Option<String>,
 }
 
 /// The page of a data type or interface, from its view.
@@ -1434,6 +1436,9 @@ fn type_page(site: &Site<'_>, v: &view::types::TypeView<'_>) -> TypePage {
             source_url: f.source_url.clone(),
             history: f.history.rows.clone(),
             older: f.history.older_note(lang),
+            history_page: f
+                .history_page
+                .map(|to| catalog.href(v.page, to, None, Output::Html)),
         }),
         contained_in: data.then(|| v.contained_in.iter().map(link).collect()),
         producers: data.then(|| uses("sec-producers")),

@@ -101,6 +101,9 @@ impl Site<'_> {
             source_url => v.source_url,
             history => ctx(&v.history.rows),
             history_older => v.history.older_note(lang),
+            history_page => here
+                .zip(v.history_page.as_ref())
+                .map(|(from, to)| cat.href(from, to, None, crate::catalog::Output::Html)),
         }
     }
 }

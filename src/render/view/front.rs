@@ -34,7 +34,7 @@ pub struct FrontView<'a> {
     pub indexes: Vec<IndexLink<'a>>,
     /// The data-flow page.
     pub dataflow: &'a Page,
-    /// What's new (only when some component has a history).
+    /// What's new (only when something has a history: a component, a system, an IDL file).
     pub whats_new: Option<&'a Page>,
     pub categories: Vec<CategoryGroup<'a>>,
     /// The vendors, for the filter: (name as shown, slug).

@@ -10,6 +10,109 @@ use serde::Serialize;
 /// Rows shown on a page; the whole history is in catalog.json.
 pub const ROWS: usize = 10;
 
+/// Changes spelled out in one row (breaking first); the row says how many more there are, on
+/// the history page.
+pub const ROW_CHANGES: usize = 5;
+
+/// One change as the pages list it.
+#[derive(Debug, Clone, Serialize)]
+pub struct ChangeRow {
+    /// `breaking`, `warning` or `info` (the class and the filter value).
+    pub severity: String,
+    /// Its label in the page's language.
+    pub severity_label: String,
+    pub code: String,
+    pub path: String,
+    pub message: String,
+    /// The data type or interface an IDL file's change is to, when it has a page.
+    #[serde(skip)]
+    pub about: Option<crate::catalog::TypeIx>,
+    /// The link to that page, from the page showing the change (set by the HTML writer).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub href: Option<String>,
+    /// The message as HTML when it is a long text's word-level difference
+    /// ([`crate::word_diff`]): the deleted words in `<del>`, the inserted ones in `<ins>`, the
+    /// line breaks as `<br>`; the HTML pages show it instead of `message`.
+    pub html: Option<String>,
+}
+
+impl ChangeRow {
+    /// The row of change `c`, about the type `about` (an IDL file's change).
+    pub fn of(
+        c: &crate::catalog::history::Change,
+        about: Option<crate::catalog::TypeIx>,
+        lang: Lang,
+    ) -> ChangeRow {
+        ChangeRow {
+            severity: c.severity.clone(),
+            severity_label: super::history_page::severity_label(&c.severity, lang).to_string(),
+            code: c.code.clone(),
+            path: c.path.clone(),
+            message: c.message.clone(),
+            about,
+            href: None,
+            html: words_html(c),
+        }
+    }
+}
+
+/// A change's message as HTML, when it is its long text's word-level difference.
+fn words_html(c: &crate::catalog::history::Change) -> Option<String> {
+    use crate::word_diff::{message, pieces, Piece};
+    let (old, new) = (c.old.as_deref(), c.new.as_deref());
+    if message(old, new)? != c.message {
+        return None;
+    }
+    let mut out = String::from("changed: ");
+    let text = |s: &str, out: &mut String| {
+        for (i, line) in s.split('\n').enumerate() {
+            if i > 0 {
+                out.push_str("<br>");
+            }
+            // Writing to a String cannot fail.
+            let _ = crate::render::html::svg::esc_into(out, line);
+        }
+    };
+    for p in pieces(old, new) {
+        match p {
+            Piece::Same(s) => text(&s, &mut out),
+            Piece::Deleted(s) => {
+                out.push_str("<del>");
+                text(&s, &mut out);
+                out.push_str("</del>");
+            }
+            Piece::Inserted(s) => {
+                out.push_str("<ins>");
+                text(&s, &mut out);
+                out.push_str("</ins>");
+            }
+            Piece::Elided => out.push('…'),
+        }
+    }
+    Some(out)
+}
+
+/// The rows of a version's changes: breaking first, then warnings, then the rest, each in the
+/// diff's order (by path), as `rtcdoc diff` lists them; `about` names the type of each
+/// change (an IDL file's).
+pub fn by_severity(
+    changes: &[crate::catalog::history::Change],
+    about: &dyn Fn(&crate::catalog::history::Change) -> Option<crate::catalog::TypeIx>,
+    lang: Lang,
+) -> Vec<ChangeRow> {
+    let rank = |c: &crate::catalog::history::Change| match c.severity.as_str() {
+        "breaking" => 0,
+        "warning" => 1,
+        _ => 2,
+    };
+    let mut sorted: Vec<&crate::catalog::history::Change> = changes.iter().collect();
+    sorted.sort_by_key(|c| rank(c));
+    sorted
+        .into_iter()
+        .map(|c| ChangeRow::of(c, about(c), lang))
+        .collect()
+}
+
 /// One row of the History section.
 #[derive(Debug, Clone, Serialize)]
 pub struct HistoryRow {
@@ -26,9 +129,13 @@ pub struct HistoryRow {
     /// What changed, in counts by severity ("1 breaking, 2 info"), or what the row is (the
     /// first version, versions folded, a version that could not be read).
     pub summary: String,
-    /// The breaking changes, spelled out (`path`: message), and DIFF208 when the version was
-    /// not raised with them.
-    pub breaking: Vec<String>,
+    /// The changes, spelled out, breaking first (at most [`ROW_CHANGES`]).
+    pub changes: Vec<ChangeRow>,
+    /// How many more changes the version has, on the history page ("and 3 more …"), when
+    /// there are more than [`ROW_CHANGES`].
+    pub more: Option<String>,
+    /// The version's anchor on the history page (empty for a folded row).
+    pub anchor: String,
 }
 
 /// The History section: its rows and how many versions are not shown.
@@ -92,7 +199,9 @@ pub fn folded(run: usize, lang: Lang) -> HistoryRow {
                 "history_folded"
             })
             .replace("{n}", &run.to_string()),
-        breaking: Vec::new(),
+        changes: Vec::new(),
+        more: None,
+        anchor: String::new(),
     }
 }
 
@@ -164,18 +273,15 @@ pub fn row(
         subject: e.subject.clone().unwrap_or_default(),
         version,
         summary,
-        breaking: e
-            .changes
-            .iter()
-            // DIFF208: breaking changes without a version bump, flagged beside them.
-            .filter(|c| c.severity == "breaking" || c.code == "DIFF208")
-            .map(|c| {
-                if c.path.is_empty() {
-                    c.message.clone()
-                } else {
-                    format!("{}: {}", c.path, c.message)
-                }
-            })
+        changes: by_severity(&e.changes[..], &|_| None, lang)
+            .into_iter()
+            .take(ROW_CHANGES)
             .collect(),
+        more: match e.changes.len().saturating_sub(ROW_CHANGES) {
+            0 => None,
+            1 => Some(lang.t("history_row_more_one").to_string()),
+            n => Some(lang.t("history_row_more").replace("{n}", &n.to_string())),
+        },
+        anchor: super::history_page::entry_anchor(e),
     }
 }

@@ -1,15 +1,17 @@
-//! The history pages: a component's whole history ([`HistoryPageView`]), the catalogue's
-//! What's new ([`WhatsNewView`]) and the entries of the Atom feed ([`feed_entries`]). Built
-//! once from the catalogue's histories ([`crate::catalog::history`]), shown by every output.
+//! The history pages: the whole history of a component, an RT System or an IDL file
+//! ([`HistoryPageView`]), the catalogue's What's new ([`WhatsNewView`]) and the entries of the
+//! Atom feed ([`feed_entries`]). Built once from the catalogue's histories
+//! ([`crate::catalog::history`]), shown by every output.
 
+pub use super::history::{by_severity, ChangeRow};
 use super::history::{committed, row, HistoryRow};
-use crate::catalog::history::{Change, Entry};
-use crate::catalog::{Catalog, Component, ComponentIx, Ix, Page};
+use crate::catalog::history::{Change, Entry, HistoryOf};
+use crate::catalog::{Catalog, Component, Page, TypeIx};
 use crate::i18n::Lang;
 use serde::Serialize;
 
-/// Changes listed on What's new, newest first; older ones are on the components' history
-/// pages (the page says how many it leaves out).
+/// Changes listed on What's new, newest first; older ones are on the history pages (the page
+/// says how many it leaves out).
 pub const WHATS_NEW_MAX: usize = 2000;
 
 /// Entries in the Atom feed, newest first.
@@ -29,6 +31,46 @@ pub fn commit_url(
     )
 }
 
+/// The `[[source]]` the file of a history was read from (`None`: the input directory).
+fn origin_of(cat: &Catalog, of: HistoryOf) -> Option<&crate::model::Origin> {
+    match of {
+        HistoryOf::Component(ci) => cat[ci].origin.as_ref(),
+        HistoryOf::System(si) => cat.systems.get(si.get())?.origin.as_ref(),
+        HistoryOf::Idl(fi) => cat.idl.files.get(fi)?.origin.as_ref(),
+    }
+}
+
+/// The link of a commit of the file of `of` (commit, path), as [`commit_url`] makes it.
+fn commit_url_of<'c>(
+    cat: &'c Catalog,
+    of: HistoryOf,
+    source_url: Option<&'c str>,
+) -> impl Fn(&str, &str) -> Option<String> + 'c {
+    crate::render::html::repo::history_file_urls(&cat.sources, origin_of(cat, of), source_url)
+}
+
+/// The date of the current file of `of`, which git did not date: a component's or a system's
+/// `updateDate` ([`update_date`]); `None` for an IDL file.
+fn current_date_of(cat: &Catalog, of: HistoryOf) -> Option<String> {
+    match of {
+        HistoryOf::Component(ci) => current_file_date(&cat[ci]),
+        HistoryOf::System(si) => update_date(&cat.systems.get(si.get())?.profile.update_date),
+        HistoryOf::Idl(_) => None,
+    }
+}
+
+/// The type an IDL file's change is to, when it has a page: the change path starts with
+/// `idl/<scoped name>` ([`crate::diff::compare_idl_files`]).
+fn changed_type(cat: &Catalog, of: HistoryOf, c: &Change) -> Option<TypeIx> {
+    if !matches!(of, HistoryOf::Idl(_)) {
+        return None;
+    }
+    let name = c.path.strip_prefix("idl/")?.split('/').next()?;
+    cat.data_type_index(name)
+        .map(TypeIx::Data)
+        .or_else(|| cat.interface_index_of(name).map(TypeIx::Interface))
+}
+
 /// The label of a severity (`breaking`, `warning`, `info`).
 pub fn severity_label(severity: &str, lang: Lang) -> &'static str {
     match severity {
@@ -38,77 +80,12 @@ pub fn severity_label(severity: &str, lang: Lang) -> &'static str {
     }
 }
 
-/// One change as the pages list it.
-#[derive(Debug, Clone, Serialize)]
-pub struct ChangeRow {
-    /// `breaking`, `warning` or `info` (the class and the filter value).
-    pub severity: String,
-    /// Its label in the page's language.
-    pub severity_label: String,
-    pub code: String,
-    pub path: String,
-    pub message: String,
-    /// The message as HTML when it is a long text's word-level difference
-    /// ([`crate::word_diff`]): the deleted words in `<del>`, the inserted ones in `<ins>`, the
-    /// line breaks as `<br>`; the HTML pages show it instead of `message`.
-    pub html: Option<String>,
-}
-
-impl ChangeRow {
-    pub(crate) fn of(c: &crate::catalog::history::Change, lang: Lang) -> ChangeRow {
-        ChangeRow {
-            severity: c.severity.clone(),
-            severity_label: severity_label(&c.severity, lang).to_string(),
-            code: c.code.clone(),
-            path: c.path.clone(),
-            message: c.message.clone(),
-            html: words_html(c),
-        }
-    }
-}
-
-/// A change's message as HTML, when it is its long text's word-level difference.
-fn words_html(c: &crate::catalog::history::Change) -> Option<String> {
-    use crate::word_diff::{message, pieces, Piece};
-    let (old, new) = (c.old.as_deref(), c.new.as_deref());
-    if message(old, new)? != c.message {
-        return None;
-    }
-    let mut out = String::from("changed: ");
-    let text = |s: &str, out: &mut String| {
-        for (i, line) in s.split('\n').enumerate() {
-            if i > 0 {
-                out.push_str("<br>");
-            }
-            // Writing to a String cannot fail.
-            let _ = crate::render::html::svg::esc_into(out, line);
-        }
-    };
-    for p in pieces(old, new) {
-        match p {
-            Piece::Same(s) => text(&s, &mut out),
-            Piece::Deleted(s) => {
-                out.push_str("<del>");
-                text(&s, &mut out);
-                out.push_str("</del>");
-            }
-            Piece::Inserted(s) => {
-                out.push_str("<ins>");
-                text(&s, &mut out);
-                out.push_str("</ins>");
-            }
-            Piece::Elided => out.push('…'),
-        }
-    }
-    Some(out)
-}
-
 /// One item of a history page: a version shown on its own, or a run of versions that changed
 /// nothing of the specification, folded.
 #[derive(Debug, Clone, Serialize)]
 pub struct HistoryItem {
-    /// What the component page's History section shows for it; for a folded run, its summary
-    /// is all the page shows.
+    /// What the History section of the page of the component (system, type) shows for it; for
+    /// a folded run, its summary is all the page shows.
     pub row: HistoryRow,
     /// A version shown on its own; `None` for a folded run.
     pub version: Option<VersionItem>,
@@ -127,27 +104,21 @@ pub struct VersionItem {
     pub changes: Vec<ChangeRow>,
 }
 
-/// The rows of a version's changes: breaking first, then warnings, then the rest, each in the
-/// diff's order (by path), as `rtcdoc diff` lists them.
-fn by_severity(changes: &[Change], lang: Lang) -> Vec<ChangeRow> {
-    let rank = |c: &Change| match c.severity.as_str() {
-        "breaking" => 0,
-        "warning" => 1,
-        _ => 2,
-    };
-    let mut sorted: Vec<&Change> = changes.iter().collect();
-    sorted.sort_by_key(|c| rank(c));
-    sorted.into_iter().map(|c| ChangeRow::of(c, lang)).collect()
-}
-
-/// A component's history page.
+/// The history page of a component, an RT System or an IDL file.
 #[derive(Debug, Clone)]
 pub struct HistoryPageView<'a> {
     pub page: &'a Page,
-    /// The component's page.
-    pub component: &'a Page,
-    pub ci: ComponentIx,
+    /// The page of what it is the history of (the component's, the system's); `None` for an
+    /// IDL file.
+    pub back: Option<&'a Page>,
+    pub of: HistoryOf,
+    /// The component's or system's name, the IDL file's path.
     pub name: String,
+    /// What the page lists (the kind of file and its versions).
+    pub intro: &'static str,
+    /// The pages of the types an IDL file defines (its data types and interfaces with a
+    /// page), in the file's order of definition; empty for the others.
+    pub types: Vec<super::Linked<'a>>,
     pub items: Vec<HistoryItem>,
 }
 
@@ -161,19 +132,45 @@ pub fn entry_anchor(e: &Entry) -> String {
     format!("v-{}", crate::slug::slugify(label))
 }
 
-/// The history page of component `ci` (`None` when it has no history).
+/// The pages of the types IDL file `fi` defines, in its order of definition (nested ones
+/// after their module's).
+fn types_defined<'a>(cat: &'a Catalog, fi: usize) -> Vec<super::Linked<'a>> {
+    let Some(file) = cat.idl.files.get(fi) else {
+        return Vec::new();
+    };
+    let mut names = Vec::new();
+    let mut stack: Vec<&crate::idl::IdlDefinition> = file.definitions.iter().rev().collect();
+    while let Some(d) = stack.pop() {
+        names.push(d.scoped_name().to_string());
+        stack.extend(d.children().iter().rev());
+    }
+    let mut seen = std::collections::HashSet::new();
+    names
+        .into_iter()
+        .filter(|n| seen.insert(n.clone()))
+        .filter_map(|n| {
+            let t = cat
+                .data_type_index(&n)
+                .map(TypeIx::Data)
+                .or_else(|| cat.interface_index_of(&n).map(TypeIx::Interface))?;
+            Some(super::Linked::new(&n, Some(cat.type_page(t)), None))
+        })
+        .collect()
+}
+
+/// The history page of `of` (`None` when it has no history).
 pub fn history_page_view<'a>(
     cat: &'a Catalog,
-    ci: ComponentIx,
+    of: HistoryOf,
     source_url: Option<&str>,
     lang: Lang,
 ) -> Option<HistoryPageView<'a>> {
-    let page = cat.history_page(ci)?;
-    let c = &cat[ci];
-    let url = |commit: &str, path: &str| commit_url(cat, c, source_url, commit, path);
+    let page = cat.history_page_of(of)?;
+    let url = commit_url_of(cat, of, source_url);
     let mut items = Vec::new();
-    let h = &c.history;
-    let current = current_file_date(c);
+    let h = cat.history_of(of);
+    let current = current_date_of(cat, of);
+    let about = |c: &Change| changed_type(cat, of, c);
     let mut i = 0;
     while i < h.len() {
         let e = &h[i];
@@ -188,7 +185,7 @@ pub fn history_page_view<'a>(
                     .collect::<Vec<_>>()
                     .join(" · "),
                 release: e.release && !e.first,
-                changes: by_severity(&e.changes, lang),
+                changes: by_severity(&e.changes, &about, lang),
             };
             items.push(HistoryItem {
                 row,
@@ -204,11 +201,18 @@ pub fn history_page_view<'a>(
         });
         i += run;
     }
+    let (intro, types) = match of {
+        HistoryOf::Component(_) => (lang.t("history_page_intro"), Vec::new()),
+        HistoryOf::System(_) => (lang.t("history_page_intro_system"), Vec::new()),
+        HistoryOf::Idl(fi) => (lang.t("history_page_intro_idl"), types_defined(cat, fi)),
+    };
     Some(HistoryPageView {
         page,
-        component: cat.component_page(ci),
-        ci,
-        name: c.display_name().into_owned(),
+        back: cat.page_of_history(of),
+        of,
+        name: cat.history_name(of),
+        intro,
+        types,
         items,
     })
 }
@@ -253,53 +257,60 @@ pub fn instant(date: &str) -> Option<i64> {
     Some(days * 86400 + hh * 3600 + mm * 60 + ss - offset)
 }
 
-/// Every history entry of the catalogue, newest first: (component, entry position), the
-/// current files first (each is the newest version of its component), then ordered by date
-/// (entries without one last), then component page order, then history order.
-fn entries_newest_first(cat: &Catalog) -> Vec<(ComponentIx, usize)> {
-    let mut all: Vec<((bool, Option<i64>), ComponentIx, usize)> = Ix::enumerate(&cat.components)
-        .flat_map(|(ci, c)| {
-            let zone = local_offset(c);
-            c.history.iter().enumerate().map(move |(ei, e)| {
-                let date = entry_date(c, e, zone);
-                ((e.is_current(), date.as_deref().and_then(instant)), ci, ei)
+/// Every history entry of the catalogue, newest first: (what it is the history of, entry
+/// position), the current files first (each is the newest version of its file), then ordered
+/// by date (entries without one last), then page order (components, systems, IDL files), then
+/// history order.
+fn entries_newest_first(cat: &Catalog) -> Vec<(HistoryOf, usize)> {
+    let mut all: Vec<((bool, Option<i64>), HistoryOf, usize)> = cat
+        .histories()
+        .flat_map(|of| {
+            let zone = local_offset(cat, of);
+            cat.history_of(of).iter().enumerate().map(move |(ei, e)| {
+                let date = entry_date(cat, of, e, zone);
+                ((e.is_current(), date.as_deref().and_then(instant)), of, ei)
             })
         })
         .collect();
     all.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
-    all.into_iter().map(|(_, ci, ei)| (ci, ei)).collect()
+    all.into_iter().map(|(_, of, ei)| (of, ei)).collect()
 }
 
 /// The UTC offset (`+09:00`) of the machine a component's backups were saved on, which their
 /// names do not say: that of its commits (their author dates), else of its profile's dates.
-fn local_offset(c: &crate::catalog::Component) -> Option<&str> {
+/// Systems and IDL files have no backups: their commits' offset.
+fn local_offset(cat: &Catalog, of: HistoryOf) -> Option<&str> {
     fn offset(d: &str) -> Option<&str> {
         zone_of(d.trim())
     }
-    c.history
+    cat.history_of(of)
         .iter()
         .filter(|e| e.backup.is_none())
         .filter_map(|e| e.date.as_deref().and_then(offset))
         .next()
         .or_else(|| {
-            let b = &c.profile.basic_info;
+            let HistoryOf::Component(ci) = of else {
+                return None;
+            };
+            let b = &cat[ci].profile.basic_info;
             [&b.update_date, &b.creation_date]
                 .into_iter()
                 .find_map(|d| d.as_deref().and_then(offset))
         })
 }
 
-/// The date of entry `e` of component `c`: a backup's in the zone of `zone`
+/// The date of entry `e` of the history of `of`: a backup's in the zone of `zone`
 /// ([`zoned_date`]); for the current file, which git did not date, its profile's `updateDate`
 /// (RTCBuilder sets it when it saves).
 fn entry_date<'e>(
-    c: &'e crate::catalog::Component,
-    e: &'e crate::catalog::history::Entry,
+    cat: &Catalog,
+    of: HistoryOf,
+    e: &'e Entry,
     zone: Option<&str>,
 ) -> Option<std::borrow::Cow<'e, str>> {
     zoned_date(e, zone).or_else(|| {
         e.is_current()
-            .then(|| current_file_date(c))
+            .then(|| current_date_of(cat, of))
             .flatten()
             .map(Into::into)
     })
@@ -377,19 +388,24 @@ fn zoned_date<'e>(
 /// One change on What's new.
 #[derive(Debug, Clone, Serialize)]
 pub struct WhatsNewRow {
-    pub ci: ComponentIx,
-    /// The component's name.
-    pub component: String,
-    /// The entry's anchor on the component's history page.
+    /// What changed: a component, an RT System, an IDL file.
+    #[serde(skip)]
+    pub of: HistoryOf,
+    /// The component's or system's name, the IDL file's path.
+    pub name: String,
+    /// What kind of file it is, for a system or an IDL file ("RT System", "IDL file"); empty
+    /// for a component.
+    pub kind: String,
+    /// The entry's anchor on its history page.
     pub anchor: String,
     pub version: String,
     pub date: String,
     /// The commit (12 digits) or backup.
     pub label: String,
     pub url: Option<String>,
-    /// The `[[source]]` the component was read from (empty: the input directory).
+    /// The `[[source]]` the file was read from (empty: the input directory).
     pub source: String,
-    /// The component's category as written.
+    /// The component's category as written (empty for a system or an IDL file).
     pub category: String,
     pub change: ChangeRow,
 }
@@ -406,13 +422,23 @@ pub struct WhatsNewView {
     pub categories: Vec<String>,
 }
 
-/// The catalogue's What's new.
+/// The kind of file `of` is, as What's new and the feed name it beside a system or an IDL
+/// file (empty for a component).
+fn kind_label(of: HistoryOf, lang: Lang) -> &'static str {
+    match of {
+        HistoryOf::Component(_) => "",
+        HistoryOf::System(_) => lang.t("system"),
+        HistoryOf::Idl(_) => lang.t("idl_file"),
+    }
+}
+
+/// The catalogue's What's new: the changes of every history (components, RT Systems, IDL
+/// files), newest first.
 pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> WhatsNewView {
     let mut v = WhatsNewView::default();
     let mut shown = 0;
-    for (ci, ei) in entries_newest_first(cat) {
-        let c = &cat[ci];
-        let e = &c.history[ei];
+    for (of, ei) in entries_newest_first(cat) {
+        let e = &cat.history_of(of)[ei];
         if e.changes.is_empty() {
             continue;
         }
@@ -422,7 +448,7 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
             continue;
         }
         shown += take;
-        let date = entry_date(c, e, None)
+        let date = entry_date(cat, of, e, None)
             .map(|d| d.into_owned())
             .unwrap_or_default();
         let day = if e.is_current() {
@@ -430,30 +456,36 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
         } else {
             date.get(..10).unwrap_or(&date).to_string()
         };
-        let source = c
-            .origin
-            .as_ref()
+        let source = origin_of(cat, of)
             .map(|o| o.source.clone())
             .unwrap_or_default();
-        let category = crate::model::non_empty(&c.profile.basic_info.category)
-            .unwrap_or("")
-            .to_string();
+        let category = match of {
+            HistoryOf::Component(ci) => {
+                crate::model::non_empty(&cat[ci].profile.basic_info.category)
+            }
+            _ => None,
+        }
+        .unwrap_or("")
+        .to_string();
+        let (name, kind) = (cat.history_name(of), kind_label(of, lang).to_string());
+        let url = e
+            .commit
+            .as_deref()
+            .and_then(|commit| commit_url_of(cat, of, source_url)(commit, &e.file));
         let rows: Vec<WhatsNewRow> = e.changes[..take]
             .iter()
             .map(|ch| WhatsNewRow {
-                ci,
-                component: c.display_name().into_owned(),
+                of,
+                name: name.clone(),
+                kind: kind.clone(),
                 anchor: entry_anchor(e),
                 version: e.version.clone().unwrap_or_default(),
                 date: date.clone(),
                 label: e.label().to_string(),
-                url: e
-                    .commit
-                    .as_deref()
-                    .and_then(|commit| commit_url(cat, c, source_url, commit, &e.file)),
+                url: url.clone(),
                 source: source.clone(),
                 category: category.clone(),
-                change: ChangeRow::of(ch, lang),
+                change: ChangeRow::of(ch, changed_type(cat, of, ch), lang),
             })
             .collect();
         match v.days.last_mut() {
@@ -477,10 +509,10 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
 /// One entry of the Atom feed: a version with changes.
 #[derive(Debug, Clone)]
 pub struct FeedEntry<'a> {
-    /// The component's history page and the version's anchor there (the entry's link and id).
+    /// The history page and the version's anchor there (the entry's link and id).
     pub page: &'a Page,
     pub anchor: String,
-    /// `component version: subject`.
+    /// `name version: subject`, the kind of file after a system's or an IDL file's name.
     pub title: String,
     /// RFC 3339 (`2024-01-02T10:00:00+09:00`).
     pub updated: String,
@@ -503,18 +535,19 @@ pub fn rfc3339(date: &str) -> Option<String> {
     })
 }
 
-/// The feed's entries: the latest [`FEED_MAX`] versions with changes and a date, newest first.
+/// The feed's entries: the latest [`FEED_MAX`] versions with changes and a date, newest first,
+/// of every history (components, RT Systems, IDL files).
 pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
     let mut out = Vec::new();
-    for (ci, ei) in entries_newest_first(cat) {
+    for (of, ei) in entries_newest_first(cat) {
         if out.len() == FEED_MAX {
             break;
         }
-        let c = &cat[ci];
-        let e = &c.history[ei];
+        let h = cat.history_of(of);
+        let e = &h[ei];
         let (Some(page), Some(updated)) = (
-            cat.history_page(ci),
-            entry_date(c, e, local_offset(c))
+            cat.history_page_of(of),
+            entry_date(cat, of, e, local_offset(cat, of))
                 .as_deref()
                 .and_then(rfc3339),
         ) else {
@@ -523,8 +556,12 @@ pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
         if e.changes.is_empty() {
             continue;
         }
-        let r = row(e, committed(&c.history), lang, &|_, _| None, None);
-        let mut title = c.display_name().into_owned();
+        let r = row(e, committed(h), lang, &|_, _| None, None);
+        let mut title = cat.history_name(of);
+        let kind = kind_label(of, lang);
+        if !kind.is_empty() {
+            title = format!("{title} ({kind})");
+        }
         if !r.version.is_empty() {
             title = format!("{title} {}", r.version);
         }

@@ -152,6 +152,8 @@ pub struct SystemView {
     pub source_url: Option<String>,
     /// The History section: the latest versions of the file ([`super::history`]).
     pub history: super::history::HistoryView,
+    /// The system's history page (every version), when it has a history.
+    pub history_page: Option<crate::catalog::Page>,
 }
 
 /// Which tables of a system page have a comment in some row: a Comment column empty in every
@@ -670,5 +672,15 @@ pub fn system_view(
             ),
             super::history_page::update_date(&s.profile.update_date).as_deref(),
         ),
+        history_page: cat
+            .systems
+            .iter()
+            .position(|x| x.source == s.source)
+            .and_then(|si| {
+                cat.history_page_of(crate::catalog::history::HistoryOf::System(
+                    crate::catalog::Ix::new(si),
+                ))
+            })
+            .cloned(),
     }
 }

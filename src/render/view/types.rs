@@ -77,7 +77,7 @@ pub struct TypeView<'a> {
     /// The data types whose fields (or typedef) hold this one, linked to their pages.
     pub contained_in: Vec<Linked<'a>>,
     /// The IDL file defining it: its Source link and latest versions ([`super::idl_file`]).
-    pub idl_file: Option<super::idl_file::IdlFileView>,
+    pub idl_file: Option<super::idl_file::IdlFileView<'a>>,
 }
 
 /// A use of a type (a data port, an interface of a service port) as a row of the type's page.

@@ -26,7 +26,7 @@ pub(super) struct Globals<'a> {
     pub site_title: &'a str,
     pub has_diagnostics: bool,
     pub has_systems: bool,
-    /// Some component has a history: the What's new page exists.
+    /// Something has a history (a component, a system, an IDL file): the What's new page exists.
     pub has_history: bool,
     /// The site has an Atom feed (`feed.xml`).
     pub has_feed: bool,
@@ -849,7 +849,12 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
     }
     o.section_start("change-history", false, "change_history");
     o.label_in("<p>", "history_intro", "</p>\n");
-    history_table(o, &p.history, p.history_older.as_deref());
+    history_table(
+        o,
+        &p.history,
+        p.history_older.as_deref(),
+        p.history_page.as_deref(),
+    );
     if let Some(href) = &p.history_page {
         o.raw("<p><a href=\"");
         o.text(href);
@@ -860,8 +865,14 @@ fn history_section(o: &mut Out<'_>, p: &ComponentPage) {
     o.raw("</section>\n\n");
 }
 
-/// The `history_table` macro: a history's latest versions and the note on older ones.
-fn history_table(o: &mut Out<'_>, rows: &[HistoryRow], older: Option<&str>) {
+/// The `history_table` macro: a history's latest versions and the note on older ones;
+/// `full_page` is the history page, which a row's "more changes" links.
+fn history_table(
+    o: &mut Out<'_>,
+    rows: &[HistoryRow],
+    older: Option<&str>,
+    full_page: Option<&str>,
+) {
     o.table_wrap(
         "history-table",
         &[
@@ -894,11 +905,35 @@ fn history_table(o: &mut Out<'_>, rows: &[HistoryRow], older: Option<&str>) {
         o.cell("history_subject", &h.subject, "");
         o.td("history_changes");
         o.text(&h.summary);
-        if !h.breaking.is_empty() {
+        if !h.changes.is_empty() {
             o.raw("<ul>");
-            for b in &h.breaking {
+            for c in &h.changes {
+                o.raw("<li><span class=\"sev ");
+                o.text(&c.severity);
+                o.raw("\">");
+                o.text(&c.severity_label);
+                o.raw("</span> ");
+                if !c.path.is_empty() {
+                    o.code(&c.path);
+                    o.raw(": ");
+                }
+                o.text_with_code(&c.message);
+                o.raw("</li>");
+            }
+            if let Some(more) = h.more.as_deref().filter(|m| !m.is_empty()) {
                 o.raw("<li>");
-                o.text_with_code(b);
+                match full_page.filter(|p| !p.is_empty()) {
+                    Some(page) => {
+                        o.raw("<a href=\"");
+                        o.text(page);
+                        o.raw("#");
+                        o.text(&h.anchor);
+                        o.raw("\">");
+                        o.text(more);
+                        o.raw("</a>");
+                    }
+                    None => o.text(more),
+                }
                 o.raw("</li>");
             }
             o.raw("</ul>");

@@ -179,7 +179,14 @@ fn idl_file_section(o: &mut Out<'_>, f: &IdlFilePage) {
     o.raw("</p>\n");
     if !f.history.is_empty() {
         o.label_in("<p>", "history_intro_idl", "</p>\n");
-        history_table(o, &f.history, f.older.as_deref());
+        history_table(o, &f.history, f.older.as_deref(), f.history_page.as_deref());
+        if let Some(href) = f.history_page.as_deref().filter(|h| !h.is_empty()) {
+            o.raw("<p><a href=\"");
+            o.text(href);
+            o.raw("\">");
+            o.label("history_full");
+            o.raw("</a></p>\n");
+        }
     }
     o.raw("</section>");
 }
