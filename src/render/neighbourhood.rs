@@ -262,7 +262,7 @@ fn closest(bundles: &[Bundle<'_, '_>]) -> (Vec<ComponentIx>, Vec<ComponentIx>) {
     }
     let mut ranked = pairs.clone();
     // A stable sort: equals keep the order met.
-    ranked.sort_by(|a, b| b.1.cmp(&a.1));
+    ranked.sort_by_key(|b| std::cmp::Reverse(b.1));
     ranked.truncate(NEIGHBOURS_DRAWN);
     let drawn: Vec<ComponentIx> = ranked.into_iter().map(|(c, _)| c).collect();
     let left_out = pairs
