@@ -607,6 +607,40 @@ pub struct TypeEntry<U> {
     /// the IDL for data types ([`Catalog::attach_idl`]).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub contained_in: Vec<String>,
+    /// The operations and attributes of the catalogue's interfaces that use this type directly
+    /// (as a parameter, a result, an attribute or an exception raised), interface by interface
+    /// in name order, each in declaration order ([`Catalog::attach_idl`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub used_by: Vec<IdlUse>,
+}
+
+/// A use of a type by an operation or attribute of an interface of the catalogue.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct IdlUse {
+    /// The interface, by canonical name (an entry of [`Catalog::interfaces`]).
+    pub interface: String,
+    /// The operation or attribute, by name.
+    pub member: String,
+    /// How the member uses the type.
+    pub role: IdlUseRole,
+    /// The parameter's name, for [`IdlUseRole::Parameter`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub parameter: Option<String>,
+}
+
+/// How an operation or attribute uses a type ([`IdlUse`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub enum IdlUseRole {
+    /// A parameter of an operation (`in`, `out` or `inout`).
+    Parameter,
+    /// An operation's result.
+    Result,
+    /// An attribute's type.
+    Attribute,
+    /// An exception the operation or attribute raises.
+    Raises,
 }
 
 /// A data type used by some data port in the catalogue.
@@ -1333,6 +1367,7 @@ impl<'a> TypeAcc<'a> {
                 idl_files: sorted_unique(acc.idl_files),
                 uses: U::from_slots(acc.uses.map(&refs)),
                 contained_in: Vec::new(),
+                used_by: Vec::new(),
             })
             .collect()
     }
@@ -2005,21 +2040,15 @@ impl Catalog {
     /// names), and each type learns which types contain it. Their pages join the page list when
     /// it is made ([`Catalog::assemble`]).
     pub fn attach_idl(&mut self, idl: crate::idl::IdlSet) {
-        use crate::idl::{IdlDefinition, IdlType};
+        use crate::idl::IdlDefinition;
         self.idl = idl;
         if self.idl.is_empty() {
             return;
         }
-        // The named types a definition refers to (resolved scoped names).
-        fn named(ty: &IdlType, out: &mut Vec<String>) {
-            match ty {
-                IdlType::Sequence { element, .. } => named(element, out),
-                IdlType::Named { name, resolved } => {
-                    out.push(resolved.clone().unwrap_or_else(|| name.clone()))
-                }
-                _ => {}
-            }
-        }
+        // Every interface the input's own IDL defines has a page, whether a port uses it or
+        // not: a suite's service API is mostly in IDL alone (issue #55).
+        self.add_defined_interfaces();
+        use named_types as named;
         fn refs(d: &IdlDefinition) -> Vec<String> {
             let mut out = Vec::new();
             match d {
@@ -2121,18 +2150,105 @@ impl Catalog {
             }
         }
         self.type_index = handle_map(&self.data_types, |t| t.name.clone());
-        self.add_base_interfaces(bases);
+        self.add_interfaces(bases);
+        self.index_idl_uses();
     }
 
-    /// Interface entries (no port uses them) for `bases`, the base interfaces of interfaces
-    /// with pages ([`Catalog::attach_idl`]).
-    fn add_base_interfaces(&mut self, bases: Vec<String>) {
-        if bases.is_empty() {
+    /// Interface entries (no port uses them) for `names`: the base interfaces of interfaces
+    /// with pages, the interfaces the input's IDL defines ([`Catalog::attach_idl`]).
+    fn add_interfaces(&mut self, names: Vec<String>) {
+        if names.is_empty() {
             return;
         }
         let index = &self.interface_index;
-        add_unused(&mut self.interfaces, bases, |name| index.contains_key(name));
+        add_unused(&mut self.interfaces, names, |name| index.contains_key(name));
         self.interface_index = handle_map(&self.interfaces, |t| t.name.clone());
+    }
+
+    /// Entries for the interfaces declared in the IDL files of the input and the sources (not
+    /// those of the IDL path, an installation's `rtm/idl`, which get one when a port uses them).
+    fn add_defined_interfaces(&mut self) {
+        use crate::idl::IdlDefinition as D;
+        fn walk(defs: &[D], out: &mut Vec<String>) {
+            for d in defs {
+                match d {
+                    D::Module(m) => walk(&m.definitions, out),
+                    D::Interface(i) => out.push(canonical_type(&i.scoped_name)),
+                    _ => {}
+                }
+            }
+        }
+        let mut names = Vec::new();
+        for f in self.idl.files.iter().filter(|f| !f.idl_path) {
+            walk(&f.definitions, &mut names);
+        }
+        names.sort();
+        names.dedup();
+        self.add_interfaces(names);
+    }
+
+    /// Fills each data type's and interface's [`TypeEntry::used_by`]: the operations and
+    /// attributes of the catalogue's interfaces naming it directly (a sequence of it counts; a
+    /// struct holding it is its `contained_in`). One pass over the interfaces' members.
+    fn index_idl_uses(&mut self) {
+        use crate::idl::IdlDefinition;
+        let mut data: Vec<Vec<IdlUse>> = vec![Vec::new(); self.data_types.len()];
+        let mut ifaces: Vec<Vec<IdlUse>> = vec![Vec::new(); self.interfaces.len()];
+        for t in &self.interfaces {
+            let Some(item) = self.idl.find(&t.name) else {
+                continue;
+            };
+            let IdlDefinition::Interface(i) = item.definition else {
+                continue;
+            };
+            let mut add = |member: &str, role: IdlUseRole, parameter: Option<&str>, ty| {
+                let mut names = Vec::new();
+                named_types(ty, &mut names);
+                for n in names {
+                    let Some(target) = self.idl.find(&n) else {
+                        continue;
+                    };
+                    let key = canonical_type(target.definition.scoped_name());
+                    let list = match (self.type_index.get(&key), self.interface_index.get(&key)) {
+                        (Some(ti), _) => &mut data[ti.get()],
+                        (None, Some(ii)) => &mut ifaces[ii.get()],
+                        (None, None) => continue,
+                    };
+                    let u = IdlUse {
+                        interface: t.name.clone(),
+                        member: member.to_string(),
+                        role,
+                        parameter: parameter.map(str::to_string),
+                    };
+                    if list.last() != Some(&u) {
+                        list.push(u);
+                    }
+                }
+            };
+            for o in &i.operations {
+                if let Some(r) = &o.return_type {
+                    add(&o.name, IdlUseRole::Result, None, r);
+                }
+                for p in &o.params {
+                    add(&o.name, IdlUseRole::Parameter, Some(&p.name), &p.ty);
+                }
+                for r in &o.raises {
+                    add(&o.name, IdlUseRole::Raises, None, r);
+                }
+            }
+            for a in &i.attributes {
+                add(&a.name, IdlUseRole::Attribute, None, &a.ty);
+                for r in &a.raises {
+                    add(&a.name, IdlUseRole::Raises, None, r);
+                }
+            }
+        }
+        for (t, u) in self.data_types.iter_mut().zip(data) {
+            t.used_by = u;
+        }
+        for (t, u) in self.interfaces.iter_mut().zip(ifaces) {
+            t.used_by = u;
+        }
     }
 
     /// The data type entry for any spelling of a type name.
@@ -2284,6 +2400,18 @@ impl Catalog {
     }
 }
 
+/// The named types an IDL type refers to (resolved scoped names), through sequences.
+fn named_types(ty: &crate::idl::IdlType, out: &mut Vec<String>) {
+    use crate::idl::IdlType;
+    match ty {
+        IdlType::Sequence { element, .. } => named_types(element, out),
+        IdlType::Named { name, resolved } => {
+            out.push(resolved.clone().unwrap_or_else(|| name.clone()))
+        }
+        _ => {}
+    }
+}
+
 /// Adds to `entries` an entry that no port uses (its IDL definition gives it a page) for each of
 /// `names` that `known` does not hold yet, with a free slug; then sorts the entries by name.
 fn add_unused<U: Default>(
@@ -2304,6 +2432,7 @@ fn add_unused<U: Default>(
             idl_files: Vec::new(),
             uses: U::default(),
             contained_in: Vec::new(),
+            used_by: Vec::new(),
         });
     }
     entries.sort_by(|a, b| a.name.cmp(&b.name));

@@ -2,9 +2,9 @@
 //! fields), RTC507 (enum values), RTC508 (interface operations and attributes) without a doc
 //! comment.
 //!
-//! Only definitions the catalogue's ports reach are counted: every data type entry (port types
-//! and, after [`Catalog::attach_idl`], the types they contain and the types interfaces use)
-//! and every service interface a port names, with its base interfaces. A type defined in
+//! Only definitions with a page are counted: every data type entry (port types and, after
+//! [`Catalog::attach_idl`], the types they contain and the types interfaces use) and every
+//! interface entry (those a port names, every one the input's IDL defines, and their bases). A type defined in
 //! several files (vendored copies) counts once, at the definition lookups return (the first
 //! full definition in file order). OpenRTM's own IDL given through `--idl-path` counts when a
 //! port uses it, like the catalogue's own files: its documentation is what the pages show.

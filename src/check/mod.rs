@@ -275,7 +275,7 @@ pub fn idl_on_no_page_note(names: &[String]) -> Option<String> {
         return None;
     }
     Some(format!(
-        "{} type(s) and interface(s) that the IDL files below the input define are on no page ({}): a page is made for what a port uses (`rtc:type` of a data port or service interface) and the types inside it; catalog.json has them all",
+        "{} type(s) and interface(s) that the IDL files below the input define are on no page ({}): a page is made for every interface they define, for what a port uses (`rtc:type` of a data port or service interface) and for the types inside those; catalog.json has them all",
         names.len(),
         first_names(names)
     ))

@@ -250,6 +250,7 @@ pub fn read(files: &[SourceFile], opts: &IdlOptions) -> IdlSet {
         out.push(IdlFile {
             path: f.path.clone(),
             origin: None,
+            idl_path: f.tree == Tree::SearchPath,
             encoding: pre.encoding.to_string(),
             doc: parsed.doc,
             includes: pre.includes,

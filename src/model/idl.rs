@@ -63,6 +63,11 @@ pub struct IdlFile {
     /// The `[[source]]` repository the file was read from (none: the input directory).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub origin: Option<super::Origin>,
+    /// Read from the IDL search path (`--idl-path`, e.g. an OpenRTM installation's `rtm/idl`),
+    /// not from the input or a source: its interfaces get pages only when a port uses them
+    /// (those of the input's own IDL always do).
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub idl_path: bool,
     /// The encoding the bytes were decoded from: `UTF-8`, `EUC-JP` or `Shift_JIS`.
     pub encoding: String,
     /// The file's own documentation: a doc comment carrying `@file`.

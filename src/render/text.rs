@@ -912,6 +912,10 @@ pub fn type_page<M: Markup>(
         ("contained-in", lang.t("idl_contained_in")),
         &v.contained_in,
     );
+    interface_uses_section::<M>(&mut out, cat, v, lang);
+    if v.kind == TypeKind::Interface && v.uses.is_empty() {
+        M::paragraph(&mut out, &M::esc(lang.t("interface_no_components")));
+    }
     let cols = [lang.t("component"), lang.t("fact_port"), lang.t("type")];
     for g in &v.uses {
         M::heading(&mut out, page, 2, g.anchor, g.label);
@@ -938,6 +942,37 @@ pub fn type_page<M: Markup>(
     out
 }
 
+/// The operations and attributes of interfaces using the type, interface by interface.
+fn interface_uses_section<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    v: &TypeView<'_>,
+    lang: Lang,
+) {
+    if v.used_by.is_empty() {
+        return;
+    }
+    let page = v.page;
+    let title = format!("{} ({})", lang.t("idl_used_by"), v.used_by_interfaces);
+    M::heading(out, page, 2, "used-by-interfaces", &title);
+    let rows: Vec<Vec<String>> = v
+        .used_by
+        .iter()
+        .map(|u| {
+            let interface = match u.page {
+                Some(to) => M::page_link(cat, page, to, None, u.interface),
+                None => M::esc(u.interface),
+            };
+            vec![interface, M::code(u.member), M::esc(&u.how)]
+        })
+        .collect();
+    M::table(
+        out,
+        &[lang.t("interface"), lang.t("idl_member"), lang.t("idl_use")],
+        &rows,
+    );
+}
+
 /// The index of the data types or of the interfaces from its view: each linked, with its
 /// numbers of uses by role; an interface nobody provides is flagged.
 pub fn type_index_page<M: Markup>(
@@ -956,8 +991,10 @@ pub fn type_index_page<M: Markup>(
             if r.unprovided {
                 cell.push_str(&format!(" ({})", M::esc(lang.t("not_provided"))));
             }
+            let interfaces = (v.kind == TypeKind::Data).then(|| r.interfaces.to_string());
             std::iter::once(cell)
                 .chain(r.counts.iter().map(usize::to_string))
+                .chain(interfaces)
                 .collect()
         })
         .collect();
@@ -981,11 +1018,11 @@ pub fn type_index_page<M: Markup>(
             lang.t("requirers"),
         ],
     };
-    M::table(
-        &mut out,
-        &[headers[0], headers[1], headers[2], lang.t("fact_others")],
-        &rows,
-    );
+    let mut heads = vec![headers[0], headers[1], headers[2], lang.t("fact_others")];
+    if v.kind == TypeKind::Data {
+        heads.push(lang.t("idl_used_by"));
+    }
+    M::table(&mut out, &heads, &rows);
     out
 }
 

@@ -60,7 +60,9 @@ function measure() {
         d.details.push(`cut: ${t.textContent}`);
       }
     }
-    if (kind === 'system') {
+    d.widthPx = Math.round(sr.width);
+    // A system's and a neighbourhood's wiring: boxes, names inside them, connectors around them.
+    if (kind !== 'component') {
       const boxes = Array.from(svg.querySelectorAll('g.instance')).map((g) => ({ g, r: g.querySelector('rect.rtc-box').getBBox() }));
       // Names outside their box (SVG user units).
       for (const { g, r } of boxes) {

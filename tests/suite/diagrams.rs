@@ -460,6 +460,7 @@ fn rendered_diagrams_have_no_connector_through_a_box_and_every_name_whole() {
         common::root().join("examples"),
         common::root().join("tests/fixtures/diagrams"),
         common::root().join("tests/fixtures/neighbourhood"),
+        common::root().join("tests/fixtures/neighbourhood-generic"),
     ];
     if let Some(c) = common::corpus() {
         inputs.push(c.join("rts-xml"));
@@ -485,6 +486,10 @@ fn rendered_diagrams_have_no_connector_through_a_box_and_every_name_whole() {
         for d in r["diagrams"].as_array().expect("diagrams") {
             for key in ["through", "outsideBox", "cut", "outsideDrawing"] {
                 assert_eq!(d[key], 0, "{} {key}: {}", d["page"], d["details"]);
+            }
+            if d["kind"] == "neighbourhood" {
+                // Whole in a 1280 px window (one edge per neighbour and direction, #55).
+                assert!(d["widthPx"].as_u64().is_some_and(|w| w <= 1200), "{d}");
             }
             measured += 1;
             neighbourhoods += usize::from(d["kind"] == "neighbourhood");

@@ -158,6 +158,7 @@ fn every_part_of_a_type_page_matches_the_templates() {
         " <code>raises (</code>",
         "<code>oneway </code>",
         "<section id=\"contained-in\">",
+        "<section id=\"used-by-interfaces\">",
         "<section id=\"producers\">",
         "<section id=\"providers\">",
         "class=\"warning flag\"",

@@ -425,7 +425,7 @@ fn idl_types_on_no_page_are_named() {
     common::write(
         d,
         "in/idl/Lab.idl",
-        "module Lab {\n  struct Point2D { double x; double y; };\n  struct Pose { Point2D position; double heading; };\n  interface Ranger { double range(); };\n};\n",
+        "module Lab {\n  struct Point2D { double x; double y; };\n  struct Pose { Point2D position; double heading; };\n  interface Ranger { double range(); };\n  struct Orphan { long a; };\n};\n",
     );
     let note = |args: &[&str]| -> String {
         let o = common::rtcdoc(args, d);
@@ -437,12 +437,14 @@ fn idl_types_on_no_page_are_named() {
     };
     let built = note(&["build", "in", "-o", "site", "-f", "html,json"]);
     assert!(
-        built.starts_with("note: 3 type(s) and interface(s) that the IDL files below the input define are on no page (Lab::Point2D, Lab::Pose, Lab::Ranger)"),
+        built.starts_with("note: 3 type(s) and interface(s) that the IDL files below the input define are on no page (Lab::Point2D, Lab::Pose, Lab::Orphan)"),
         "{built}"
     );
     let json = std::fs::read_to_string(d.join("site/json/catalog.json")).unwrap();
-    assert!(json.contains("Lab::Ranger"), "catalog.json has them");
-    // A port uses Pose: it and the Point2D inside it get pages; Ranger is still named.
+    assert!(json.contains("Lab::Orphan"), "catalog.json has them");
+    // Every interface of the input's IDL has a page, used by a port or not (#55).
+    assert!(d.join("site/html/interfaces/lab-ranger.html").is_file());
+    // A port uses Pose: it and the Point2D inside it get pages; Orphan is still named.
     common::write(
         d,
         "in/Nav/RTC.xml",
@@ -450,7 +452,7 @@ fn idl_types_on_no_page_are_named() {
     );
     let checked = note(&["check", "in"]);
     assert!(
-        checked.starts_with("note: 1 type(s) and interface(s) that the IDL files below the input define are on no page (Lab::Ranger)"),
+        checked.starts_with("note: 1 type(s) and interface(s) that the IDL files below the input define are on no page (Lab::Orphan)"),
         "{checked}"
     );
 }
@@ -716,4 +718,130 @@ fn empty_interface_columns_are_left_out() {
     );
     assert!(md("detection-modelrepository.md")
         .contains("| Operations | Returns | Parameters | Raises | Description |"));
+}
+
+/// Issue #55: the interfaces a suite defines in IDL alone (no port uses them) have pages like
+/// those of service ports, linked from the index and search; a struct used in their operations
+/// lists those operations and is not shown as unused; the IDL path's interfaces get pages only
+/// when used. `tests/fixtures/idl-api`.
+#[test]
+fn interfaces_of_the_input_idl_have_pages_and_types_list_the_interfaces_using_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let input = root().join("tests/fixtures/idl-api");
+    let ext = "module Ext {\n  struct Unit { long a; };\n  interface Installed { void run(in Unit u); };\n};\n";
+    common::write(d, "ext/Ext.idl", ext);
+    let b = rtcdoc(
+        &[
+            "build",
+            input.to_str().unwrap(),
+            "-o",
+            d.join("site").to_str().unwrap(),
+            "-f",
+            "html,markdown,doxygen,json",
+            "--idl-path",
+            d.join("ext").to_str().unwrap(),
+        ],
+        &root(),
+    );
+    assert!(b.status.success(), "{}", stderr(&b));
+    let site = d.join("site/html");
+    // The interface no port uses: a page with its operations, docs, IDL location, and the
+    // sentence that no component provides or requires it.
+    let m = read(&site.join("interfaces/api-motion.html"));
+    assert!(m.contains("Defined in <code>Api.idl:21</code>"), "{m}");
+    assert!(m.contains("<p>Moves the arm.</p>"), "{m}");
+    assert!(
+        m.contains("id=\"op-moveTo\"") && m.contains("id=\"attr-home\""),
+        "{m}"
+    );
+    assert!(
+        m.contains("<p class=\"none\">No component of this catalogue provides or requires it: it is defined in IDL only.</p>"),
+        "{m}"
+    );
+    // The used one says nothing of the kind.
+    let g = read(&site.join("interfaces/api-gripper.html"));
+    assert!(!g.contains("defined in IDL only"), "{g}");
+    // Linked from the index and the search.
+    let index = read(&site.join("interfaces/index.html"));
+    assert!(
+        index.contains("<a href=\"api-motion.html\"><code>Api::Motion</code></a>"),
+        "{index}"
+    );
+    let search = read(&site.join("search-index.js"));
+    assert!(search.contains("interfaces/api-motion.html"));
+    // The IDL path's interface is no page (it is an installation's, not the suite's).
+    assert!(!site.join("interfaces/ext-installed.html").exists());
+    // The struct: the operations and the attribute using it, linked to their rows.
+    let p = read(&site.join("types/api-pose.html"));
+    let s = p
+        .find("<section id=\"used-by-interfaces\">")
+        .expect("section");
+    let sec = &p[s..s + p[s..].find("</section>").unwrap()];
+    assert!(
+        sec.contains("Used by interfaces <span class=\"count\">1</span>"),
+        "{sec}"
+    );
+    for (href, member, how) in [
+        ("op-moveTo", "moveTo", "parameter goal"),
+        ("op-current", "current", "result"),
+        ("attr-home", "home", "attribute"),
+    ] {
+        let row = format!("<td data-label=\"Operation or attribute\"><a href=\"../interfaces/api-motion.html#{href}\"><code>{member}</code></a></td><td data-label=\"Use\">{how}</td>");
+        assert!(sec.contains(&row), "{row}\n{sec}");
+    }
+    // Through a typedef, a struct and an exception: contained in those, which list theirs.
+    assert!(p.contains("<a href=\"../types/api-path.html\"><code>Api::Path</code></a>"));
+    let e = read(&site.join("types/api-unreachable.html"));
+    assert!(
+        e.contains("#op-moveTo\"><code>moveTo</code></a></td><td data-label=\"Use\">raised</td>"),
+        "{e}"
+    );
+    let w = read(&site.join("types/api-waypoint.html"));
+    assert!(w.contains("parameter w"), "{w}");
+    // The index counts the interfaces beside producers and consumers.
+    let types = read(&site.join("types/index.html"));
+    assert!(
+        types.contains("<th scope=\"col\" class=\"num\">Used by interfaces</th>"),
+        "{types}"
+    );
+    assert!(
+        types.contains("<td class=\"num\" data-label=\"Used by interfaces\">1</td>"),
+        "{types}"
+    );
+    // Markdown and Doxygen alike.
+    let md = read(&d.join("site/markdown/types/api-pose.md"));
+    assert!(
+        md.contains("Used by interfaces (1)")
+            && md.contains("`moveTo`")
+            && md.contains("parameter goal"),
+        "{md}"
+    );
+    assert!(
+        md.contains("[Api::Motion](../interfaces/api-motion.md)"),
+        "{md}"
+    );
+    let mm = read(&d.join("site/markdown/interfaces/api-motion.md"));
+    assert!(mm.contains("defined in IDL only"), "{mm}");
+    let dox = read(&d.join("site/doxygen/types/api-pose.dox"));
+    assert!(
+        dox.contains("Used by interfaces (1)") && dox.contains("rtc_if_api_motion"),
+        "{dox}"
+    );
+    // JSON: the uses, and the interface entry.
+    let j: serde_json::Value =
+        serde_json::from_str(&read(&d.join("site/json/catalog.json"))).unwrap();
+    let used = &j["dataTypes"]["Api::Pose"]["usedBy"];
+    assert_eq!(
+        used[0],
+        serde_json::json!({"interface": "Api::Motion", "member": "moveTo", "role": "parameter", "parameter": "goal"})
+    );
+    assert_eq!(used.as_array().map(Vec::len), Some(3), "{used}");
+    assert!(j["interfaces"]["Api::Motion"].is_object());
+    assert!(j["interfaces"].get("Ext::Installed").is_none());
+    assert_eq!(
+        j["idl"]["files"][1]["idlPath"], true,
+        "{}",
+        j["idl"]["files"]
+    );
 }

@@ -188,3 +188,175 @@ fn graph_component_writes_the_neighbourhood_and_names_close_matches() {
     };
     assert_eq!(svg("a.svg"), svg("b.svg"));
 }
+
+/// The neighbourhood of component `ci`, as drawn: the wiring and its layout (the one the
+/// component page draws).
+fn drawn(
+    cat: &rtcdoc::catalog::Catalog,
+    ci: rtcdoc::catalog::ComponentIx,
+) -> (
+    Vec<rtcdoc::render::wiring::WireInstance>,
+    Vec<rtcdoc::render::wiring::WireConnector>,
+    rtcdoc::layout::wiring::WiringLayout,
+) {
+    use rtcdoc::render::neighbourhood as nb;
+    let rows = nb::rows(cat, ci, &nb::neighbourhood(cat, ci));
+    let (inst, conns) = nb::wiring(cat, ci, &rows, rtcdoc::i18n::Lang::En, &|_, _| {
+        String::new()
+    });
+    let nodes: Vec<_> = inst.iter().map(|i| i.node()).collect();
+    let edges: Vec<_> = conns.iter().map(|c| c.edge()).collect();
+    let l =
+        rtcdoc::layout::wiring::layout_with(&nodes, &edges, rtcdoc::layout::wiring::Effort::Quick);
+    (inst, conns, l)
+}
+
+/// The geometry audit the wiring diagrams pass (`tests/suite/diagrams.rs`), for a
+/// neighbourhood drawing: no connector through a box, no name outside its box, no two
+/// connectors on one track, no two boxes overlapping, and narrow enough for a 1280 px window.
+fn audit(
+    what: &str,
+    l: &rtcdoc::layout::wiring::WiringLayout,
+    conns: &[rtcdoc::layout::wiring::Edge],
+) {
+    let p = rtcdoc::layout::wiring::problems(l);
+    assert!(p.is_empty(), "{what}: {p:#?}");
+    let shared = rtcdoc::layout::wiring::shared_tracks(l, conns);
+    assert!(shared.is_empty(), "{what}: {shared:#?}");
+    for (i, a) in l.nodes.iter().enumerate() {
+        for b in &l.nodes[i + 1..] {
+            let apart =
+                a.x + a.w <= b.x || b.x + b.w <= a.x || a.y + a.h <= b.y || b.y + b.h <= a.y;
+            assert!(apart, "{what}: boxes overlap: {a:?} {b:?}");
+        }
+    }
+    assert!(l.width <= 1200.0, "{what}: {} px wide", l.width);
+}
+
+/// Issue #55: a component whose six ports carry the generic `RTC::TimedDoubleSeq`, shared with
+/// twelve components (`tests/fixtures/neighbourhood-generic`), is drawn with one edge per
+/// neighbour and direction, labelled with its number of port pairs; the components that both
+/// feed it and are fed by it on the right, beside it; the eight closest drawn and "+1 more"
+/// for the ninth the list names; the capped lists' "+3 more" boxes; narrow, the component
+/// level with the middle of its neighbours, and every port pair still in the list.
+#[test]
+fn a_generic_type_draws_one_edge_per_neighbour_and_direction() {
+    let input = common::root().join("tests/fixtures/neighbourhood-generic");
+    let loaded = rtcdoc::build::load(&input, &rtcdoc::build::LoadOptions::default()).unwrap();
+    let cat = &loaded.catalog;
+    let ci = rtcdoc::catalog::Ix::enumerate(&cat.components)
+        .find(|(_, c)| c.profile.name() == "Filter")
+        .expect("component")
+        .0;
+    let (inst, conns, l) = drawn(cat, ci);
+    let edges: Vec<_> = conns.iter().map(|c| c.edge()).collect();
+    audit("Filter", &l, &edges);
+    let names: Vec<&str> = inst.iter().map(|i| i.name.as_str()).collect();
+    // F1–F4, S1–S3 and B1 (the closest eight), "+1 more" (S4), two "+3 more" (X1–X3).
+    assert_eq!(
+        names,
+        [
+            "Filter", "F1", "F2", "F3", "F4", "S1", "S2", "S3", "B1", "+1 more", "+3 more",
+            "+3 more"
+        ]
+    );
+    // One edge per neighbour and direction: B1 has two, every other box one.
+    assert_eq!(
+        conns.len(),
+        12,
+        "{:?}",
+        conns.iter().map(|c| &c.label).collect::<Vec<_>>()
+    );
+    let label = |l: &str| conns.iter().any(|c| c.label == l);
+    assert!(label("F1 → Filter: 6 port pairs (RTC::TimedDoubleSeq)"));
+    assert!(label("B1 → Filter: 3 port pairs (RTC::TimedDoubleSeq)"));
+    assert!(label("Filter → B1: 3 port pairs (RTC::TimedDoubleSeq)"));
+    assert!(label("+3 more → Filter (RTC::TimedDoubleSeq)"));
+    assert!(label("Filter → +1 more"));
+    let caption = conns.iter().find(|c| c.label.starts_with("F1 ")).unwrap();
+    assert_eq!(
+        caption.caption.as_deref(),
+        Some("6 port pairs (RTC::TimedDoubleSeq)")
+    );
+    // The component's ends name their number of ports; F1's its number of pairs.
+    assert!(inst[0]
+        .ports
+        .iter()
+        .any(|p| p.name == "3 ports" && p.class == "in"));
+    assert!(inst[1].ports.iter().all(|p| p.name == "6 port pairs"));
+    // B1, fed and feeding, is right of the component, both its ports facing it; the feeders
+    // left of it; the component level with the middle of the drawing.
+    let (me, b1, f1) = (&l.nodes[0], &l.nodes[8], &l.nodes[1]);
+    assert!(b1.x > me.x + me.w && f1.x + f1.w < me.x, "{l:?}");
+    assert!(b1
+        .ports
+        .iter()
+        .all(|p| p.side == rtcdoc::layout::wiring::Side::Left));
+    let centre = me.y + me.h / 2.0;
+    assert!(
+        centre > l.height / 3.0 && centre < 2.0 * l.height / 3.0,
+        "component at {centre} of {}",
+        l.height
+    );
+    // On the page: the drawing and the list, which still names S4 and every port pair.
+    let dir = tempfile::tempdir().unwrap();
+    let site = dir.path().join("site");
+    let o = run(&[
+        "build",
+        &input.display().to_string(),
+        "-o",
+        &site.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let page = std::fs::read_to_string(site.join("components/filter.html")).unwrap();
+    let s = page.find("<section id=\"neighbourhood\">").unwrap();
+    let sec = &page[s..s + page[s..].find("</section>").unwrap()];
+    assert_eq!(sec.matches("<path class=\"connector").count(), 12, "{sec}");
+    assert!(sec.contains("> see the list below</tspan>"), "{sec}");
+    let list = &sec[sec.find("<ul class=\"neighbourhood\">").unwrap()..];
+    assert!(list.contains("../components/s4.html#port-a"), "{list}");
+    assert!(list.contains(">F1 · a, b</a>"), "F1's two ports: {list}");
+    assert_eq!(
+        list.matches("<li><a href=\"#").count(),
+        6,
+        "one line per port: {list}"
+    );
+}
+
+/// Every neighbourhood drawing of the examples and the neighbourhood fixtures (and the corpus,
+/// when present) passes the geometry audit.
+#[test]
+fn every_neighbourhood_drawing_passes_the_geometry_audit() {
+    let mut inputs = vec![
+        common::root().join("examples"),
+        common::root().join("tests/fixtures/neighbourhood"),
+        common::root().join("tests/fixtures/neighbourhood-generic"),
+    ];
+    if let Some(c) = common::corpus() {
+        inputs.push(c.join("rtc-xml"));
+    }
+    let (mut audited, mut widest) = (0, 0.0f32);
+    for input in &inputs {
+        let loaded = rtcdoc::build::load(input, &rtcdoc::build::LoadOptions::default()).unwrap();
+        let cat = &loaded.catalog;
+        for (ci, c) in rtcdoc::catalog::Ix::enumerate(&cat.components) {
+            let name = c.profile.name();
+            let (inst, conns, l) = drawn(cat, ci);
+            if inst.len() < 2 {
+                continue;
+            }
+            let edges: Vec<_> = conns.iter().map(|c| c.edge()).collect();
+            audit(&format!("{} {name}", input.display()), &l, &edges);
+            widest = widest.max(l.width);
+            // At most the closest eight, two "+N more" for the list and one per capped list.
+            assert!(
+                inst.len() <= 1 + 8 + 2 + 4 * 2,
+                "{name}: {} boxes",
+                inst.len()
+            );
+            audited += 1;
+        }
+    }
+    println!("{audited} neighbourhood drawings audited, the widest {widest} px");
+    assert!(audited > 10, "{audited} drawings audited");
+}

@@ -1384,6 +1384,17 @@ struct TypePage {
     providers: Option<Vec<PortUse>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     requirers: Option<Vec<PortUse>>,
+    /// The operations and attributes of interfaces using it, and how many interfaces.
+    used_by: Vec<InterfaceUse>,
+    used_by_count: usize,
+}
+
+/// An operation or attribute of an interface using a type, on the type's page.
+#[derive(Serialize)]
+struct InterfaceUse {
+    interface: Link,
+    member: Link,
+    how: String,
 }
 
 /// The IDL file section of a type's page.
@@ -1447,6 +1458,28 @@ fn type_page(site: &Site<'_>, v: &view::types::TypeView<'_>) -> TypePage {
         unprovided: (!data).then_some(v.unprovided),
         providers: (!data).then(|| uses("sec-providers")),
         requirers: (!data).then(|| uses("sec-requirers")),
+        used_by: v
+            .used_by
+            .iter()
+            .map(|u| {
+                let page = u.page.map(|p| catalog.href(v.page, p, None, Output::Html));
+                let member = u
+                    .page
+                    .map(|p| catalog.href(v.page, p, Some(&u.anchor), Output::Html));
+                InterfaceUse {
+                    interface: Link {
+                        text: u.interface.to_string(),
+                        href: page.unwrap_or_default(),
+                    },
+                    member: Link {
+                        text: u.member.to_string(),
+                        href: member.unwrap_or_default(),
+                    },
+                    how: u.how.clone(),
+                }
+            })
+            .collect(),
+        used_by_count: v.used_by_interfaces,
     }
 }
 
@@ -1467,6 +1500,7 @@ fn type_index_job<'a>(site: &'a Site<'a>, kind: TypeKind) -> Job<'a> {
                 TypeKind::Data => minijinja::context! {
                     name, href, spellings => r.other_spellings.clone(),
                     producers => first, consumers => second, others,
+                    interfaces => r.interfaces,
                 },
                 TypeKind::Interface => minijinja::context! {
                     name, href, providers => first, requirers => second,

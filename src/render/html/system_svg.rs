@@ -300,6 +300,11 @@ fn instance(s: &mut String, it: &WireInstance, b: &NodeBox) {
             attr_num(s, "y", pl.y - 6.0);
             s.push_str(r#" width="12" height="12"/>"#);
         }
+        // A nameless port (a "+N more" box's) has no text to draw.
+        if pl.lines.iter().all(|l| l.is_empty()) {
+            s.push_str("</a>");
+            continue;
+        }
         s.push_str(r#"<text class="port-name""#);
         attr_num(s, "x", pl.text_x);
         attr_num(s, "y", pl.text_y);

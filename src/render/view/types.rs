@@ -59,6 +59,69 @@ pub struct UseGroup<'a> {
     pub rows: Vec<UseRow<'a>>,
 }
 
+/// An operation or attribute of an interface that uses the type ([`crate::catalog::IdlUse`]).
+pub struct InterfaceUseRow<'a> {
+    /// The interface's name, and its page.
+    pub interface: &'a str,
+    pub page: Option<&'a Page>,
+    /// The operation or attribute, and its anchor on the interface's page (`op-…`, `attr-…`).
+    pub member: &'a str,
+    pub anchor: String,
+    /// How it uses the type: `parameter goal`, `result`, `attribute`, `raised`.
+    pub how: String,
+}
+
+/// The rows of a type's [`TypeEntry::used_by`], and how many interfaces they name.
+fn interface_uses<'a>(
+    cat: &'a Catalog,
+    uses: &'a [crate::catalog::IdlUse],
+    lang: Lang,
+) -> (Vec<InterfaceUseRow<'a>>, usize) {
+    use crate::catalog::IdlUseRole as R;
+    let rows: Vec<InterfaceUseRow<'a>> = uses
+        .iter()
+        .map(|u| {
+            let attribute = u.role == R::Attribute
+                || (u.role == R::Raises && !is_operation(cat, &u.interface, &u.member));
+            let how = match (u.role, &u.parameter) {
+                (R::Parameter, Some(p)) => format!("{} {p}", lang.t("idl_use_parameter")),
+                (R::Parameter, None) => lang.t("idl_use_parameter").to_string(),
+                (R::Result, _) => lang.t("idl_use_result").to_string(),
+                (R::Attribute, _) => lang.t("idl_use_attribute").to_string(),
+                (R::Raises, _) => lang.t("idl_use_raises").to_string(),
+            };
+            InterfaceUseRow {
+                interface: &u.interface,
+                page: cat
+                    .interface_index_of(&u.interface)
+                    .map(|i| cat.interface_page(i)),
+                member: &u.member,
+                anchor: format!("{}{}", if attribute { "attr-" } else { "op-" }, u.member),
+                how,
+            }
+        })
+        .collect();
+    (rows, distinct_interfaces(uses))
+}
+
+/// How many interfaces `uses` names (they come interface by interface).
+fn distinct_interfaces(uses: &[crate::catalog::IdlUse]) -> usize {
+    uses.iter()
+        .enumerate()
+        .filter(|(k, u)| *k == 0 || uses[k - 1].interface != u.interface)
+        .count()
+}
+
+/// Whether `member` of interface `interface` is an operation (else an attribute).
+fn is_operation(cat: &Catalog, interface: &str, member: &str) -> bool {
+    match cat.idl.find(interface).map(|i| i.definition) {
+        Some(crate::idl::IdlDefinition::Interface(i)) => {
+            i.operations.iter().any(|o| o.name == member)
+        }
+        _ => true,
+    }
+}
+
 /// Everything a type page says.
 pub struct TypeView<'a> {
     pub kind: TypeKind,
@@ -78,6 +141,10 @@ pub struct TypeView<'a> {
     pub contained_in: Vec<Linked<'a>>,
     /// The IDL file defining it: its Source link and latest versions ([`super::idl_file`]).
     pub idl_file: Option<super::idl_file::IdlFileView<'a>>,
+    /// The operations and attributes of interfaces that use it, and how many interfaces
+    /// those are.
+    pub used_by: Vec<InterfaceUseRow<'a>>,
+    pub used_by_interfaces: usize,
 }
 
 /// A use of a type (a data port, an interface of a service port) as a row of the type's page.
@@ -163,6 +230,7 @@ where
             .collect(),
         TypeKind::Interface => Vec::new(),
     };
+    let (used_by, used_by_interfaces) = interface_uses(cat, &t.used_by, lang);
     TypeView {
         kind,
         page,
@@ -198,6 +266,8 @@ where
             })
             .collect(),
         idl_file: super::idl_file::idl_file_view(cat, &t.name, lang, source_url),
+        used_by,
+        used_by_interfaces,
     }
 }
 
@@ -226,6 +296,8 @@ pub struct TypeIndexRow<'a> {
     pub name: &'a str,
     pub other_spellings: Vec<&'a str>,
     pub counts: [usize; 3],
+    /// How many interfaces use it in their operations and attributes.
+    pub interfaces: usize,
     pub unprovided: bool,
 }
 
@@ -252,6 +324,7 @@ fn index_row<'a, U: Uses>(page: &'a Page, t: &'a TypeEntry<U>) -> TypeIndexRow<'
         name: &t.name,
         other_spellings: other_spellings(&t.name, &t.spellings),
         counts: t.uses.by_role().map(|(_, refs)| refs.len()),
+        interfaces: distinct_interfaces(&t.used_by),
         unprovided: t.is_unprovided(),
     }
 }

@@ -2,7 +2,7 @@
 //! `uses_table`, `idl_definition` and `idl_file_section` of `macros.html`) as Rust code.
 
 use super::{base_bottom, base_top, history_table, Globals, Head, Out};
-use crate::render::html::{IdlFilePage, Link, PortUse, TypePage};
+use crate::render::html::{IdlFilePage, InterfaceUse, Link, PortUse, TypePage};
 use crate::render::idl_view::{DefinitionView, OperationView, TypeRef};
 use crate::render::view::types::TypeKind;
 
@@ -60,6 +60,15 @@ pub(in crate::render::html) fn type_page(page: &TypePage, g: &Globals<'_>) -> St
     if data {
         data_uses(&mut o, page);
     } else {
+        if !page.used_by.is_empty() {
+            interface_uses(&mut o, &page.used_by, page.used_by_count);
+            o.raw("\n");
+        }
+        let providers = none_or(&page.providers);
+        let requirers = none_or(&page.requirers);
+        if providers.is_empty() && requirers.is_empty() && page.others.is_empty() {
+            o.label_in("<p class=\"none\">", "interface_no_components", "</p>\n");
+        }
         uses_section(&mut o, "providers", "providers", none_or(&page.providers));
         o.raw("\n");
         uses_section(&mut o, "requirers", "requirers", none_or(&page.requirers));
@@ -87,6 +96,10 @@ fn data_uses(o: &mut Out<'_>, page: &TypePage) {
         link_section(o, "contained-in", "idl_contained_in", contained_in, true);
     }
     o.raw("\n");
+    if !page.used_by.is_empty() {
+        interface_uses(o, &page.used_by, page.used_by_count);
+        o.raw("\n");
+    }
     uses_section(o, "producers", "producers", none_or(&page.producers));
     o.raw("\n");
     uses_section(o, "consumers", "consumers", none_or(&page.consumers));
@@ -166,6 +179,22 @@ fn uses_table(o: &mut Out<'_>, list: &[PortUse]) {
         o.raw("</td></tr>\n");
     }
     o.raw("</tbody>\n</table>\n</div>");
+}
+
+/// The `interface_uses` macro: the operations and attributes of interfaces using the type.
+fn interface_uses(o: &mut Out<'_>, list: &[InterfaceUse], count_: usize) {
+    counted_section(o, "used-by-interfaces", "idl_used_by", count_);
+    o.table_wrap("idl-uses", &["interface", "idl_member", "idl_use"]);
+    for u in list {
+        o.raw("<tr><th scope=\"row\">");
+        o.code_link(Some(&u.interface.href), &u.interface.text);
+        o.raw("</th>");
+        o.td("idl_member");
+        o.code_link(Some(&u.member.href), &u.member.text);
+        o.raw("</td>");
+        o.cell("idl_use", &u.how, "</tr>\n");
+    }
+    o.raw("</tbody>\n</table>\n</div>\n</section>");
 }
 
 /// The `idl_file_section` macro.
