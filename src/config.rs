@@ -61,6 +61,9 @@ pub struct Config {
     /// `[implementation]`: how each component's code is found and compared with its profile
     /// ([`crate::implementation`]).
     pub implementation: Option<ImplementationConfig>,
+    /// `[diff]`: the policy of `rtcdoc diff` (changes ignored, severities overridden;
+    /// [`crate::diff::policy`]).
+    pub diff: Option<crate::diff::policy::DiffConfig>,
 }
 
 /// `[implementation]` settings.
@@ -166,10 +169,25 @@ pub fn parse(text: &str, file: &Path) -> Result<Config> {
         let pos = e.span().map_or(crate::model::Pos::new(1, 1), |s| {
             crate::model::Pos::at_offset(text, s.start)
         });
-        anyhow::anyhow!("{}:{pos}: {}", file.display(), e.message().trim_end())
+        let message = e.message().trim_end();
+        anyhow::anyhow!(
+            "{}:{pos}: {message}{}",
+            file.display(),
+            crate::diagnostic::unknown_field_hint(message)
+        )
     })?;
     if let Some(i) = &c.implementation {
         i.settings(file)?;
+    }
+    if let Some(d) = &c.diff {
+        let at = |span: std::ops::Range<usize>| {
+            format!(
+                "{}:{}",
+                file.display(),
+                crate::model::Pos::at_offset(text, span.start)
+            )
+        };
+        crate::diff::policy::Policy::new(d, &at)?;
     }
     Ok(c)
 }

@@ -57,6 +57,50 @@ pub fn registry_entry<T>(
     })
 }
 
+/// The Levenshtein distance between two strings, by characters.
+pub fn distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// The candidate nearest to `word` (in any case) when it is near enough to be a typo of it: at
+/// most a third of its characters (at least one) differ. The first of equally near ones.
+pub fn nearest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let w = word.trim().to_lowercase();
+    let limit = (w.chars().count() / 3).max(1);
+    candidates
+        .into_iter()
+        .map(|c| (distance(&w, &c.to_lowercase()), c))
+        .filter(|(d, _)| *d <= limit)
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, c)| c)
+}
+
+/// For serde's `unknown field `titel`, expected one of `title`, …`: `; did you mean `title`?`
+/// when one of the keys is near the unknown one, else nothing.
+pub fn unknown_field_hint(message: &str) -> String {
+    let Some(rest) = message.strip_prefix("unknown field `") else {
+        return String::new();
+    };
+    let Some((unknown, expected)) = rest.split_once('`') else {
+        return String::new();
+    };
+    let keys = expected.split('`').skip(1).step_by(2);
+    crate::diagnostic::nearest(unknown, keys)
+        .map(|k| format!("; did you mean `{k}`?"))
+        .unwrap_or_default()
+}
+
 /// `--explain` text of a registry entry: `CODE (name) — summary`, then each part as a paragraph.
 pub fn explanation(code: &str, name: &str, summary: &str, parts: &[&str]) -> String {
     let mut s = format!("{code} ({name}) — {summary}\n");
