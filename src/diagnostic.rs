@@ -57,20 +57,25 @@ pub fn registry_entry<T>(
     })
 }
 
-/// The Levenshtein distance between two strings, by characters.
+/// The edit distance between two strings, by characters: insertions, deletions, substitutions
+/// and swaps of two neighbours (`prot` is one edit from `port`) each count one.
 pub fn distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    // Three rows of the table: two back (for swaps), the last one and the current one.
+    let mut two: Vec<usize> = vec![0; b.len() + 1];
+    let mut last: Vec<usize> = (0..=b.len()).collect();
+    for i in 1..=a.len() {
+        let mut cur = vec![i; b.len() + 1];
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (last[j - 1] + cost).min(last[j] + 1).min(cur[j - 1] + 1);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                cur[j] = cur[j].min(two[j - 2] + 1);
+            }
         }
+        two = std::mem::replace(&mut last, cur);
     }
-    row[b.len()]
+    last[b.len()]
 }
 
 /// The candidate nearest to `word` (in any case) when it is near enough to be a typo of it: at
@@ -344,4 +349,25 @@ pub mod codes {
     pub const IDL_REDEFINITION: &str = "RTC028";
     /// A type name that no IDL file read defines.
     pub const IDL_UNRESOLVED: &str = "RTC029";
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distances_count_swaps_as_one_edit() {
+        assert_eq!(distance("prot", "port"), 1);
+        assert_eq!(distance("kitten", "sitting"), 3);
+        assert_eq!(distance("", "abc"), 3);
+        assert_eq!(distance("abc", ""), 3);
+        assert_eq!(distance("ignroe", "ignore"), 1);
+        assert_eq!(nearest("prot", ["port", "open"]), Some("port"));
+        assert_eq!(nearest("xyz", ["port", "open"]), None);
+        assert_eq!(
+            unknown_field_hint("unknown field `prot`, expected `port` or `open`"),
+            "; did you mean `port`?"
+        );
+        assert_eq!(unknown_field_hint("invalid type: integer"), "");
+    }
 }

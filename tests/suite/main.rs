@@ -19,6 +19,7 @@ mod dialects;
 mod diff;
 mod diff_drift;
 mod diff_fixtures;
+mod diff_gate;
 mod function_length;
 mod guide_commands;
 mod hints;
