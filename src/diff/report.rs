@@ -324,6 +324,13 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
         return out;
     }
     let groups = by_component(diff, false);
+    if groups.is_empty() {
+        let _ = writeln!(
+            out,
+            "No changes but the {} the `[diff]` policy ignores.",
+            s.ignored
+        );
+    }
     for (i, (component, changes)) in groups.iter().enumerate() {
         let section = markdown_section(component, changes);
         if out.len() + section.len() + stale.len() > MARKDOWN_LIMIT {

@@ -298,6 +298,23 @@ fn every_format_shows_the_accepted_and_ignored_counts() {
     );
     assert!(!github.contains("DIFF208"), "{github}");
     assert_eq!(github.matches("::error ").count(), 2, "{github}");
+    // Everything accepted or ignored: the check passes.
+    let out = rtcdoc(
+        &[
+            "diff",
+            "old",
+            "new",
+            "--config",
+            "policy/ignore.toml",
+            "--baseline",
+            "baseline/accepts.toml",
+            "--format",
+            "markdown",
+        ],
+        &fixture(),
+    );
+    let all_ignored = String::from_utf8_lossy(&out.stdout);
+    assert!(all_ignored.contains("the check passes"), "{all_ignored}");
     // --verbose lists the ignored changes too, marked.
     let out = rtcdoc(&[&args[..], &["--verbose"]].concat(), &fixture());
     let verbose = String::from_utf8_lossy(&out.stdout);
