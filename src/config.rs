@@ -61,6 +61,9 @@ pub struct Config {
     /// `[implementation]`: how each component's code is found and compared with its profile
     /// ([`crate::implementation`]).
     pub implementation: Option<ImplementationConfig>,
+    /// `[diff]`: the policy of `rtcdoc diff` (changes ignored, severities overridden;
+    /// [`crate::diff::policy`]).
+    pub diff: Option<crate::diff::policy::DiffConfig>,
 }
 
 /// `[implementation]` settings.
@@ -166,10 +169,25 @@ pub fn parse(text: &str, file: &Path) -> Result<Config> {
         let pos = e.span().map_or(crate::model::Pos::new(1, 1), |s| {
             crate::model::Pos::at_offset(text, s.start)
         });
-        anyhow::anyhow!("{}:{pos}: {}", file.display(), e.message().trim_end())
+        let message = e.message().trim_end();
+        anyhow::anyhow!(
+            "{}:{pos}: {message}{}",
+            file.display(),
+            crate::diagnostic::unknown_field_hint(message)
+        )
     })?;
     if let Some(i) = &c.implementation {
         i.settings(file)?;
+    }
+    if let Some(d) = &c.diff {
+        let at = |span: std::ops::Range<usize>| {
+            format!(
+                "{}:{}",
+                file.display(),
+                crate::model::Pos::at_offset(text, span.start)
+            )
+        };
+        crate::diff::policy::Policy::new(d, &at)?;
     }
     Ok(c)
 }
@@ -314,6 +332,15 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # port = 3000
 # open = false
 
+# rtcdoc diff: changes that never fail it (codes, names or categories such as DIFF3xx: see
+# `rtcdoc diff --explain CODE`), codes taken back out of an ignored category, codes ignored in
+# some files only (globs relative to the input), and other severities for codes.
+# [diff]
+# ignore = ["DIFF3xx"]
+# except = ["DIFF304"]
+# ignore-only = {{ "DIFF103" = ["components/Legacy/**"] }}
+# severity = {{ "DIFF201" = "breaking" }}
+
 # Git repositories to document besides (or, without `input`, instead of) the input directory,
 # each pinned at a commit in rtcdoc.lock (`rtcdoc update` moves them). One table per repository.
 # git: https://, ssh://, git@host:path, file:// or a local path. rev: a branch, tag or commit
@@ -414,6 +441,15 @@ language = "ja"
 # port = 3000
 # open = false
 
+# rtcdoc diff: 失敗の理由にしない変更 (コード、名前、または DIFF3xx のような分類。`rtcdoc diff --explain CODE`
+# を参照)、無視した分類から外すコード、一部のファイルでだけ無視するコード (入力からの相対パスの glob)、
+# コードごとの重大度の変更。
+# [diff]
+# ignore = ["DIFF3xx"]
+# except = ["DIFF304"]
+# ignore-only = {{ "DIFF103" = ["components/Legacy/**"] }}
+# severity = {{ "DIFF201" = "breaking" }}
+
 # 入力ディレクトリに加えて (`input` がなければその代わりに) ドキュメントにする git リポジトリ。
 # それぞれ rtcdoc.lock のコミットに固定します (`rtcdoc update` で進めます)。リポジトリごとに 1 つの表を書きます。
 # git: https://、ssh://、git@host:path、file:// またはローカルのパス。rev: ブランチ、タグまたはコミット
@@ -503,6 +539,9 @@ mod tests {
         assert_eq!(c.formats, Some(vec![Format::Html]));
         assert_eq!(c.language, Some(Lang::En));
         assert_eq!(c.serve.as_ref().and_then(|s| s.port), Some(3000));
+        let d = c.diff.as_ref().expect("[diff]");
+        assert_eq!(d.ignore.as_ref().map(Vec::len), Some(1));
+        assert_eq!(d.severity.as_ref().map(|s| s.len()), Some(1));
         // A setting with a default shows it (the others show an example): uncommented, the
         // build's options are the defaults.
         let file = Loaded {

@@ -263,11 +263,26 @@ struct DiffArgs {
     /// The old side: a directory, a profile file, an IDL file (`.idl`), a catalog.json written by
     /// `rtcdoc build --format json`, or REV:PATH (a git revision and a path in the current
     /// repository, e.g. `origin/main:components` or `HEAD~1:idl/Lab.idl`).
-    #[arg(required_unless_present = "explain")]
+    #[arg(required_unless_present_any = ["explain", "since"])]
     old: Option<String>,
-    /// The new side, like OLD.
-    #[arg(required_unless_present = "explain")]
+    /// The new side, like OLD (with --since, the one path given is NEW).
+    #[arg(required_unless_present_any = ["explain", "since"])]
     new: Option<String>,
+    /// Compare with the git revision REV (a tag, branch or commit, e.g. `v1.0.0`): OLD is
+    /// `REV:` with NEW's path, and NEW is the one path given [default: the config's `input`,
+    /// else the config file's folder, else `.`].
+    #[arg(long, value_name = "REV")]
+    since: Option<String>,
+    /// Accept the changes the baseline FILE names (each entry with its reason; see
+    /// --write-baseline): they are listed as accepted and do not fail; its entries whose change
+    /// is gone are reported as stale.
+    #[arg(long, value_name = "FILE")]
+    baseline: Option<PathBuf>,
+    /// Write every change that reaches --fail-on (breaking with `never`) to FILE as a baseline,
+    /// keeping the reasons FILE (or --baseline) already gives, and accept them; each new entry's
+    /// reason is a "TODO:" to replace before --baseline takes the file.
+    #[arg(long, value_name = "FILE")]
+    write_baseline: Option<PathBuf>,
     /// Output format: human (coloured), json, markdown (a pull-request comment) or github
     /// (workflow annotations); all on stdout.
     #[arg(long, value_enum, default_value = "human")]
@@ -1172,7 +1187,7 @@ fn find_component(
                     let d = if l.contains(&want_l) || want_l.contains(&l) {
                         0
                     } else {
-                        strsim_distance(&l, &want_l)
+                        rtcdoc::diagnostic::distance(&l, &want_l)
                     };
                     (d, n)
                 })
@@ -1195,22 +1210,6 @@ fn find_component(
                 .join(", ")
         ),
     }
-}
-
-/// The Levenshtein distance between two strings, by characters.
-fn strsim_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
 }
 
 /// Writes a graph (a system's wiring, the data flow, a neighbourhood) in the chosen format:
@@ -1449,17 +1448,9 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
             }
         });
     }
-    let (Some(old_arg), Some(new_arg)) = (&args.old, &args.new) else {
-        anyhow::bail!("give OLD and NEW (or --explain CODE)");
-    };
+    let (old_arg, new_arg, file) = diff_sides(cli, args)?;
+    let (old_arg, new_arg) = (&old_arg, &new_arg);
     let (old_spec, new_spec) = (side::Spec::parse(old_arg), side::Spec::parse(new_arg));
-    // Input options as `check` takes them: rtcdoc.toml (of NEW when it is a directory on disk,
-    // else of the current directory), then the command line; both sides alike.
-    let config_dir = match &new_spec {
-        side::Spec::Local(p) => Some(p.as_path()),
-        side::Spec::Git { .. } | side::Spec::Source(_) => None,
-    };
-    let file = config_for(cli, config_dir, &args.read.input)?;
     let mut opts = load_options(&file, &args.read.input);
     opts.sources_only = false;
     // `NAME` or `NAME@REV` of a `[[source]]` (not a path on disk): that source alone, at its
@@ -1470,7 +1461,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     );
     let old = side::load("OLD", &old_spec, &opts)?;
     let new = side::load("NEW", &new_spec, &opts)?;
-    let result = diff::diff_with_systems(
+    let mut result = diff::diff_with_systems(
         &old.loaded.catalog,
         &new.loaded.catalog,
         &|f| old.display(f),
@@ -1478,6 +1469,7 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
         (&old.systems(), &new.systems()),
     );
     let fail_on = args.fail_on.level();
+    gate(&file, args, (fail_on, cli.quiet), (&old, &new), &mut result)?;
     match args.format {
         report::OutputFormat::Json => print_stdout(&serde_json::to_string_pretty(
             &report::to_json(&result, old_arg, new_arg, fail_on),
@@ -1491,6 +1483,8 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
             let mut stream = BufferedStandardStream::stdout(choice);
             let verbosity = if cli.quiet {
                 report::Verbosity::Quiet
+            } else if cli.verbose {
+                report::Verbosity::Verbose
             } else {
                 report::Verbosity::Normal
             };
@@ -1508,6 +1502,146 @@ fn diff(cli: &Cli, args: &DiffArgs) -> anyhow::Result<ExitCode> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// The sides of `rtcdoc diff` as given (OLD and NEW, or `--since REV` and NEW) and the
+/// configuration: rtcdoc.toml of NEW when it is a directory on disk, else of the current
+/// directory. With `--since REV`, OLD is `REV:./NEW` (NEW relative to the current directory),
+/// NEW the one path given, else the configuration's input.
+fn diff_sides(cli: &Cli, args: &DiffArgs) -> anyhow::Result<(String, String, config::Loaded)> {
+    use rtcdoc::diff::side::Spec;
+    let config_of = |new: &str| {
+        let spec = Spec::parse(new);
+        let dir = match &spec {
+            Spec::Local(p) => Some(p.as_path()),
+            Spec::Git { .. } | Spec::Source(_) => None,
+        };
+        config_for(cli, dir, &args.read.input)
+    };
+    let Some(rev) = &args.since else {
+        let (Some(old), Some(new)) = (&args.old, &args.new) else {
+            anyhow::bail!("give OLD and NEW (or --since REV, or --explain CODE)");
+        };
+        return Ok((old.clone(), new.clone(), config_of(new)?));
+    };
+    if rev.starts_with('-') {
+        anyhow::bail!(
+            "--since `{rev}` starts with `-`: a git revision never does, and rtcdoc does not pass options to git; name a tag, branch or commit (`--since v1.0.0`)"
+        );
+    }
+    if rev.trim().is_empty() || rev.contains(':') {
+        anyhow::bail!(
+            "--since takes a revision alone (a tag, branch or commit: `--since v1.0.0`, `--since origin/main`), not REV:PATH: the path is NEW's; to compare other paths, give OLD and NEW"
+        );
+    }
+    if args.new.is_some() {
+        anyhow::bail!(
+            "--since REV is OLD: give only NEW (`rtcdoc diff --since {rev} components`), or OLD and NEW without --since"
+        );
+    }
+    let (new, file) = match &args.old {
+        Some(new) => (new.clone(), config_of(new)?),
+        None => {
+            let file = config_for(cli, None, &args.read.input)?;
+            let input = config::default_input(&file);
+            (input.to_string_lossy().into_owned(), file)
+        }
+    };
+    let path = Path::new(&new);
+    if !path.exists() {
+        anyhow::bail!(
+            "NEW `{new}` does not exist: with --since REV, NEW is a directory or profile file of the working tree, compared with the same path at REV"
+        );
+    }
+    let relative = if path.is_absolute() {
+        let cwd = std::env::current_dir()?;
+        path.strip_prefix(&cwd)
+            .map_err(|_| {
+                anyhow::anyhow!(
+                    "NEW `{new}` is outside the current directory: with --since REV, run rtcdoc diff inside the repository, or give OLD as REV:PATH"
+                )
+            })?
+            .to_path_buf()
+    } else {
+        path.to_path_buf()
+    };
+    let parts: Vec<String> = relative
+        .components()
+        .filter(|c| !matches!(c, std::path::Component::CurDir))
+        .map(|c| c.as_os_str().to_string_lossy().into_owned())
+        .collect();
+    Ok((format!("{rev}:./{}", parts.join("/")), new, file))
+}
+
+/// Applies the `[diff]` policy of the configuration and the baseline (`--baseline`, or the
+/// one `--write-baseline` writes) to a finished comparison.
+fn gate(
+    file: &config::Loaded,
+    args: &DiffArgs,
+    (fail_on, quiet): (Option<rtcdoc::diff::Level>, bool),
+    (old, new): (&rtcdoc::diff::side::Side, &rtcdoc::diff::side::Side),
+    result: &mut rtcdoc::diff::Diff,
+) -> anyhow::Result<()> {
+    use anyhow::Context;
+    use rtcdoc::diff::{baseline, policy};
+    if let Some(d) = &file.config.diff {
+        let shown = file
+            .path
+            .as_deref()
+            .unwrap_or(Path::new(config::FILE_NAME))
+            .display()
+            .to_string();
+        let p = policy::Policy::new(d, &|_| shown.clone())?;
+        // The globs of `ignore-only` are written relative to the input, as `exclude`'s are.
+        let relative = |side: &rtcdoc::diff::side::Side, shown: &str| {
+            let root = side.root.to_string_lossy().replace('\\', "/");
+            let root = root.trim_start_matches("./").trim_end_matches('/');
+            if root.is_empty() || root == "." {
+                shown.to_string()
+            } else {
+                shown
+                    .strip_prefix(root)
+                    .and_then(|r| r.strip_prefix('/'))
+                    .unwrap_or(shown)
+                    .to_string()
+            }
+        };
+        p.apply(result, &|c| {
+            let mut files = Vec::new();
+            files.extend(c.file.as_deref().map(|f| relative(new, f)));
+            files.extend(c.old_file.as_deref().map(|f| relative(old, f)));
+            files
+        });
+    }
+    let shown = |p: &Path| p.display().to_string();
+    if let Some(out) = &args.write_baseline {
+        let keep = match (&args.baseline, out.exists()) {
+            (Some(b), _) => Some(baseline::read(b, &shown(b), false)?),
+            (None, true) => Some(baseline::read(out, &shown(out), false).with_context(|| {
+                format!(
+                    "--write-baseline `{}` exists and is not a baseline: nothing was written; name another file, or remove it",
+                    out.display()
+                )
+            })?),
+            (None, false) => None,
+        };
+        let level = fail_on.unwrap_or(rtcdoc::diff::Level::Breaking);
+        let (text, entries, kept) = baseline::write(result, level, keep.as_ref());
+        std::fs::write(out, &text)
+            .with_context(|| format!("cannot write the baseline `{}`", out.display()))?;
+        if !quiet {
+            eprintln!(
+                "note: wrote {entries} baseline entr{} to {} ({kept} with the reason it had); write in each `reason` still starting with \"TODO:\" why the change is accepted, then run with --baseline {}",
+                if entries == 1 { "y" } else { "ies" },
+                out.display(),
+                out.display()
+            );
+        }
+        baseline::apply(result, &baseline::parse(&text, &shown(out), false)?);
+    } else if let Some(b) = &args.baseline {
+        baseline::apply(result, &baseline::read(b, &shown(b), true)?);
+    }
+    Ok(())
 }
 
 /// A side of `rtcdoc diff` named `NAME` or `NAME@REV` of a `[[source]]` of the configuration

@@ -203,15 +203,20 @@ pub fn detect(path: &Path, bytes: &[u8]) -> Option<SourceFormat> {
     }
 }
 
-/// The `kind` (`include` or `exclude`) patterns as one set: `*` and `?` stay within one folder,
-/// `**` crosses folders, and a pattern without `/` matches a name in any folder (`*.yml`, as in
-/// `.gitignore`).
+/// The `kind` (`include` or `exclude`) patterns as one set ([`glob_set`]).
 fn build_globs(kind: &'static str, patterns: &[String]) -> Result<GlobSet, WalkError> {
-    let bad = |pattern: String, e: globset::Error| WalkError::BadGlob {
+    glob_set(patterns).map_err(|(pattern, e)| WalkError::BadGlob {
         kind,
         pattern,
         message: e.to_string(),
-    };
+    })
+}
+
+/// Globs over input-relative paths as one set: `*` and `?` stay within one folder, `**` crosses
+/// folders, and a pattern without `/` matches a name in any folder (`*.yml`, as in
+/// `.gitignore`). An invalid pattern is returned with its error (all of them when the set
+/// cannot be built).
+pub(crate) fn glob_set(patterns: &[String]) -> Result<GlobSet, (String, globset::Error)> {
     let mut b = GlobSetBuilder::new();
     for p in patterns {
         let anywhere;
@@ -224,10 +229,10 @@ fn build_globs(kind: &'static str, patterns: &[String]) -> Result<GlobSet, WalkE
         let g = globset::GlobBuilder::new(pattern)
             .literal_separator(true)
             .build()
-            .map_err(|e| bad(p.clone(), e))?;
+            .map_err(|e| (p.clone(), e))?;
         b.add(g);
     }
-    b.build().map_err(|e| bad(patterns.join(", "), e))
+    b.build().map_err(|e| (patterns.join(", "), e))
 }
 
 /// Whether an input-relative path is left out by the `--exclude` patterns `patterns` (for files

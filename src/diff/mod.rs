@@ -19,16 +19,19 @@
 //! reported ([`systems`]). Where each side's code and profile disagree (the implementation
 //! check's drift), a finding on one side only is a change too ([`drift`]).
 
+pub mod baseline;
 pub mod codes;
 mod constraint;
 mod drift;
 mod idl;
+pub mod policy;
 pub mod report;
 pub mod side;
 pub mod systems;
 
 pub use codes::{Code, Level, CODES};
 pub use idl::compare_idl_files;
+pub use policy::{Standing, Status};
 
 use crate::catalog::{Catalog, Component};
 use crate::model::fields::{self, Field, Holds, Node as Kind};
@@ -66,6 +69,16 @@ pub struct Diff {
     /// The IDL definitions (types and constants, by scoped name) of both sides; `changed`
     /// counts those found on both with a change, compared through a port or on their own.
     pub idl: Counts,
+    /// What the `[diff]` policy and the baseline made of each change, in the order of
+    /// `changes` (empty: every change counts; see [`Diff::status`]).
+    #[serde(skip)]
+    pub gate: Vec<Standing>,
+    /// The entries of the baseline that no change matches.
+    #[serde(skip)]
+    pub stale: Vec<baseline::Stale>,
+    /// The baseline file applied, as the user named it.
+    #[serde(skip)]
+    pub baseline: Option<String>,
 }
 
 /// Counts of a set of changes.
@@ -76,29 +89,54 @@ pub struct Summary {
     pub warning: usize,
     pub info: usize,
     pub by_code: BTreeMap<String, usize>,
+    /// Changes a baseline entry accepts (not in the counts above).
+    pub accepted: usize,
+    /// Changes the `[diff]` policy ignores (not in the counts above).
+    pub ignored: usize,
+    /// Baseline entries no change matches.
+    pub stale: usize,
 }
 
 impl Summary {
+    /// The counts of `changes`, all of which count.
     pub fn of(changes: &[Change]) -> Summary {
+        Summary::of_counting(changes.iter())
+    }
+
+    fn of_counting<'a>(changes: impl Iterator<Item = &'a Change>) -> Summary {
+        let changes: Vec<&Change> = changes.collect();
         let ([breaking, warning, info], by_code) =
-            crate::diagnostic::tally(changes, |c| c.severity as usize, |c| c.code);
+            crate::diagnostic::tally(&changes, |c| c.severity as usize, |c| c.code);
         Summary {
             breaking,
             warning,
             info,
             by_code,
+            ..Summary::default()
         }
     }
 
-    /// `2 breaking, 1 warning, 3 infos`.
+    /// `2 breaking, 1 warning, 3 infos`, and when there are any `, 1 accepted (baseline), 2
+    /// ignored (policy), 1 stale baseline entry`.
     pub fn counts(&self) -> String {
         use crate::diagnostic::counted;
-        format!(
+        let mut s = format!(
             "{} breaking, {}, {}",
             self.breaking,
             counted(self.warning, "warning"),
             counted(self.info, "info")
-        )
+        );
+        if self.accepted > 0 {
+            s.push_str(&format!(", {} accepted (baseline)", self.accepted));
+        }
+        if self.ignored > 0 {
+            s.push_str(&format!(", {} ignored (policy)", self.ignored));
+        }
+        if self.stale > 0 {
+            let entries = if self.stale == 1 { "entry" } else { "entries" };
+            s.push_str(&format!(", {} stale baseline {entries}", self.stale));
+        }
+        s
     }
 
     /// Whether a change reaches `fail_on` (`None`: never fail).
@@ -113,8 +151,30 @@ impl Summary {
 }
 
 impl Diff {
+    /// The counts of the changes that count, and of those accepted or ignored.
     pub fn summary(&self) -> Summary {
-        Summary::of(&self.changes)
+        let counting = (0..self.changes.len()).filter(|&i| *self.status(i) == Status::Counts);
+        let mut s = Summary::of_counting(counting.map(|i| &self.changes[i]));
+        for g in &self.gate {
+            match g.status {
+                Status::Counts => {}
+                Status::Ignored => s.ignored += 1,
+                Status::Accepted(_) => s.accepted += 1,
+            }
+        }
+        s.stale = self.stale.len();
+        s
+    }
+
+    /// What the policy and the baseline made of the `i`-th change.
+    pub fn status(&self, i: usize) -> &Status {
+        static COUNTS: Status = Status::Counts;
+        self.gate.get(i).map_or(&COUNTS, |g| &g.status)
+    }
+
+    /// The registry severity of the `i`-th change, when `[diff] severity` gave it another.
+    pub fn default_severity(&self, i: usize) -> Option<Level> {
+        self.gate.get(i).and_then(|g| g.default_severity)
     }
 }
 
@@ -401,6 +461,7 @@ pub fn diff_with_systems(
         components: counts,
         systems: system_counts,
         idl: idl_counts,
+        ..Diff::default()
     }
 }
 

@@ -8,15 +8,23 @@
 //!  "changes": [{"severity": "breaking|warning|info", "code", "name", "component", "path",
 //!               "old": s|null, "new": s|null, "message",
 //!               "file": s|null, "line": n|null, "column": n|null, "oldFile": s|null,
-//!               "oldLine"?: n, "oldColumn"?: n}],
+//!               "oldLine"?: n, "oldColumn"?: n,
+//!               "status"?: "accepted|ignored", "reason"?: s, "defaultSeverity"?: s}],
+//!  "baseline": s|null,
+//!  "stale": [{"code", "component", "element", "old"?, "new"?, "file"?, "message"?, "reason",
+//!             "at", "line", "column"}],
 //!  "summary": {"breaking", "warning", "info", "byCode": {"DIFF104": n, …},
+//!              "accepted", "ignored", "stale",
 //!              "components": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "systems": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "idl": {"old", "new", "matched", "changed", "added", "removed"},
 //!              "failOn": "breaking|warning|info|never", "failed": bool}}
 //! ```
+//!
+//! The counts of the summary (and `byCode`) are of the changes that count: a change a baseline
+//! accepts or the `[diff]` policy ignores is listed with its `status`, and counted apart.
 
-use super::{Change, Diff, Level};
+use super::{Change, Diff, Level, Status};
 use codespan_reporting::term::termcolor::{Color, ColorSpec, WriteColor};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -32,16 +40,74 @@ fn fail_on_name(fail_on: Option<Level>) -> String {
 /// The JSON document of a comparison of `old` and `new` (the sides as given).
 pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Value {
     let s = diff.summary();
+    let changes: Vec<Value> = diff
+        .changes
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let mut v = json!(c);
+            if let Some(o) = v.as_object_mut() {
+                match diff.status(i) {
+                    Status::Counts => {}
+                    Status::Ignored => {
+                        o.insert("status".into(), json!("ignored"));
+                    }
+                    Status::Accepted(reason) => {
+                        o.insert("status".into(), json!("accepted"));
+                        o.insert("reason".into(), json!(reason));
+                    }
+                }
+                if let Some(d) = diff.default_severity(i) {
+                    o.insert("defaultSeverity".into(), json!(d));
+                }
+            }
+            v
+        })
+        .collect();
+    let stale: Vec<Value> = diff
+        .stale
+        .iter()
+        .map(|st| {
+            let e = &st.entry;
+            let mut v = json!({
+                "code": e.code,
+                "component": e.component,
+                "element": e.element,
+                "reason": e.reason,
+                "at": st.at,
+                "line": st.line,
+                "column": st.column,
+            });
+            if let Some(o) = v.as_object_mut() {
+                for (k, x) in [
+                    ("old", &e.old),
+                    ("new", &e.new),
+                    ("file", &e.file),
+                    ("message", &e.message),
+                ] {
+                    if let Some(x) = x {
+                        o.insert(k.into(), json!(x));
+                    }
+                }
+            }
+            v
+        })
+        .collect();
     json!({
         "formatVersion": FORMAT_VERSION,
         "old": old,
         "new": new,
-        "changes": diff.changes,
+        "changes": changes,
+        "baseline": diff.baseline,
+        "stale": stale,
         "summary": {
             "breaking": s.breaking,
             "warning": s.warning,
             "info": s.info,
             "byCode": s.by_code,
+            "accepted": s.accepted,
+            "ignored": s.ignored,
+            "stale": s.stale,
             "components": diff.components,
             "systems": diff.systems,
             "idl": diff.idl,
@@ -96,20 +162,61 @@ fn systems_line(diff: &Diff) -> String {
 
 /// Changes grouped by component: components with breaking changes first, then those with
 /// warnings, then the rest, each group by id; inside a component by severity, then path.
-fn by_component(changes: &[Change]) -> Vec<(&str, Vec<&Change>)> {
-    let mut groups: BTreeMap<&str, Vec<&Change>> = BTreeMap::new();
-    for c in changes {
-        groups.entry(c.component.as_str()).or_default().push(c);
+/// Each change with its [`Status`]; the changes the policy ignores only when `ignored`. A
+/// component's worst severity is of the changes that count.
+fn by_component(diff: &Diff, ignored: bool) -> Vec<(&str, Vec<Shown<'_>>)> {
+    let mut groups: BTreeMap<&str, Vec<Shown>> = BTreeMap::new();
+    for (i, c) in diff.changes.iter().enumerate() {
+        let status = diff.status(i);
+        if ignored || *status != Status::Ignored {
+            groups
+                .entry(c.component.as_str())
+                .or_default()
+                .push((c, status));
+        }
     }
-    let mut out: Vec<(&str, Vec<&Change>)> = groups.into_iter().collect();
+    let mut out: Vec<(&str, Vec<Shown>)> = groups.into_iter().collect();
     for (_, v) in &mut out {
-        v.sort_by(|a, b| (a.severity, &a.path, a.code).cmp(&(b.severity, &b.path, b.code)));
+        v.sort_by(|(a, _), (b, _)| {
+            (a.severity, &a.path, a.code).cmp(&(b.severity, &b.path, b.code))
+        });
     }
     out.sort_by(|a, b| {
-        let worst = |v: &[&Change]| v.iter().map(|c| c.severity).min();
+        let worst = |v: &[Shown]| {
+            v.iter()
+                .filter(|(_, s)| **s == Status::Counts)
+                .map(|(c, _)| c.severity)
+                .min()
+        };
+        let worst = |v: &[Shown]| worst(v).map_or((1, Level::Info), |l| (0, l));
         (worst(&a.1), a.0).cmp(&(worst(&b.1), b.0))
     });
     out
+}
+
+type Shown<'a> = (&'a Change, &'a Status);
+
+/// `accepted (baseline): REASON` or `ignored (policy)` for a change that does not count.
+fn standing_note(status: &Status) -> Option<String> {
+    match status {
+        Status::Counts => None,
+        Status::Ignored => Some("ignored (policy)".into()),
+        Status::Accepted(reason) => Some(format!("accepted (baseline): {reason}")),
+    }
+}
+
+/// The sentence of a stale baseline entry.
+fn stale_message(st: &super::baseline::Stale) -> String {
+    let e = &st.entry;
+    let what = if e.element.is_empty() {
+        String::new()
+    } else {
+        format!(" `{}`", e.element)
+    };
+    format!(
+        "stale baseline entry: {} on `{}`{what} is no longer a change; remove the entry (or write the file again with --write-baseline, which keeps the other reasons)",
+        e.code, e.component
+    )
 }
 
 /// One line of at most [`CELL_CHARS`] characters.
@@ -204,7 +311,8 @@ fn icon(l: Level) -> &'static str {
 
 /// The Markdown report, for a pull-request comment: a summary line, then one section per
 /// component (breaking first) with a table of its breaking changes and warnings and a folded
-/// list of its informational changes.
+/// list of its informational changes; a change a baseline accepts is marked with its reason,
+/// one the policy ignores is only counted; then the stale baseline entries.
 pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> String {
     let s = diff.summary();
     let mut out = String::new();
@@ -227,76 +335,23 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
         systems_line(diff),
         idl_line(diff)
     );
+    let stale = markdown_stale(diff);
     if diff.changes.is_empty() {
         out.push_str("No changes.\n");
+        out.push_str(&stale);
         return out;
     }
-    let groups = by_component(&diff.changes);
-    for (i, (component, changes)) in groups.iter().enumerate() {
-        let mut section = String::new();
-        let title = if component.is_empty() {
-            "Inputs".to_string()
-        } else {
-            code_span(&single_line(component), false)
-        };
-        let count = |l: Level| changes.iter().filter(|c| c.severity == l).count();
+    let groups = by_component(diff, false);
+    if groups.is_empty() {
         let _ = writeln!(
-            section,
-            "### {title}\n\n{} breaking, {} warning(s), {} info(s)\n",
-            count(Level::Breaking),
-            count(Level::Warning),
-            count(Level::Info)
+            out,
+            "No changes but the {} the `[diff]` policy ignores.",
+            s.ignored
         );
-        let serious: Vec<&&Change> = changes
-            .iter()
-            .filter(|c| c.severity != Level::Info)
-            .collect();
-        if !serious.is_empty() {
-            section.push_str("| | Code | Path | Old | New | What |\n|---|---|---|---|---|---|\n");
-            for ch in serious {
-                let _ = writeln!(
-                    section,
-                    "| {} {} | {} `{}` | {} | {} | {} | {} |",
-                    icon(ch.severity),
-                    ch.severity,
-                    ch.code,
-                    ch.name,
-                    code_cell(&Some(ch.path.clone()).filter(|p| !p.is_empty())),
-                    code_cell(&ch.old),
-                    code_cell(&ch.new),
-                    cell(&ch.message)
-                );
-            }
-            section.push('\n');
-        }
-        let infos: Vec<&&Change> = changes
-            .iter()
-            .filter(|c| c.severity == Level::Info)
-            .collect();
-        if !infos.is_empty() {
-            let _ = writeln!(
-                section,
-                "<details><summary>{} informational change(s)</summary>\n",
-                infos.len()
-            );
-            for ch in infos {
-                let path = if ch.path.is_empty() {
-                    String::new()
-                } else {
-                    format!("{} ", code_span(&single_line(&ch.path), false))
-                };
-                let _ = writeln!(
-                    section,
-                    "- {} {}{} — {}",
-                    ch.code,
-                    path,
-                    ch.name,
-                    item(&ch.message)
-                );
-            }
-            section.push_str("\n</details>\n\n");
-        }
-        if out.len() + section.len() > MARKDOWN_LIMIT {
+    }
+    for (i, (component, changes)) in groups.iter().enumerate() {
+        let section = markdown_section(component, changes);
+        if out.len() + section.len() + stale.len() > MARKDOWN_LIMIT {
             let _ = writeln!(
                 out,
                 "… and {} more component(s): run `rtcdoc diff` locally for the whole list.",
@@ -306,6 +361,133 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
         }
         out.push_str(&section);
     }
+    out.push_str(&stale);
+    out
+}
+
+/// The section of one component in the Markdown report.
+fn markdown_section(component: &str, changes: &[Shown]) -> String {
+    let mut section = String::new();
+    let title = if component.is_empty() {
+        "Inputs".to_string()
+    } else {
+        code_span(&single_line(component), false)
+    };
+    let count = |l: Level| {
+        changes
+            .iter()
+            .filter(|(c, s)| c.severity == l && **s == Status::Counts)
+            .count()
+    };
+    let accepted = changes
+        .iter()
+        .filter(|(_, s)| matches!(s, Status::Accepted(_)))
+        .count();
+    let _ = writeln!(
+        section,
+        "### {title}\n\n{} breaking, {} warning(s), {} info(s){}\n",
+        count(Level::Breaking),
+        count(Level::Warning),
+        count(Level::Info),
+        if accepted > 0 {
+            format!(", {accepted} accepted (baseline)")
+        } else {
+            String::new()
+        }
+    );
+    let serious: Vec<&Shown> = changes
+        .iter()
+        .filter(|(c, _)| c.severity != Level::Info)
+        .collect();
+    if !serious.is_empty() {
+        section.push_str("| | Code | Path | Old | New | What |\n|---|---|---|---|---|---|\n");
+        for (ch, status) in serious {
+            let (mark, what) = match standing_note(status) {
+                Some(note) => (
+                    format!("✅ {} (accepted)", ch.severity),
+                    format!("{} — {note}", ch.message),
+                ),
+                None => (
+                    format!("{} {}", icon(ch.severity), ch.severity),
+                    ch.message.clone(),
+                ),
+            };
+            let _ = writeln!(
+                section,
+                "| {mark} | {} `{}` | {} | {} | {} | {} |",
+                ch.code,
+                ch.name,
+                code_cell(&Some(ch.path.clone()).filter(|p| !p.is_empty())),
+                code_cell(&ch.old),
+                code_cell(&ch.new),
+                cell(&what)
+            );
+        }
+        section.push('\n');
+    }
+    let infos: Vec<&Shown> = changes
+        .iter()
+        .filter(|(c, _)| c.severity == Level::Info)
+        .collect();
+    if !infos.is_empty() {
+        let _ = writeln!(
+            section,
+            "<details><summary>{} informational change(s)</summary>\n",
+            infos.len()
+        );
+        for (ch, status) in infos {
+            let path = if ch.path.is_empty() {
+                String::new()
+            } else {
+                format!("{} ", code_span(&single_line(&ch.path), false))
+            };
+            let note = standing_note(status)
+                .map(|n| format!(" ({n})"))
+                .unwrap_or_default();
+            let _ = writeln!(
+                section,
+                "- {} {}{} — {}",
+                ch.code,
+                path,
+                ch.name,
+                item(&format!("{}{note}", ch.message))
+            );
+        }
+        section.push_str("\n</details>\n\n");
+    }
+    section
+}
+
+/// The stale baseline entries, as a Markdown section (nothing when there are none).
+fn markdown_stale(diff: &Diff) -> String {
+    if diff.stale.is_empty() {
+        return String::new();
+    }
+    let mut out = format!(
+        "### Stale baseline entries\n\n{} entr{} of {} accept{} a change that is gone: remove {} (or write the file again with `--write-baseline`, which keeps the other reasons).\n\n",
+        diff.stale.len(),
+        if diff.stale.len() == 1 { "y" } else { "ies" },
+        code_span(diff.baseline.as_deref().unwrap_or("the baseline"), false),
+        if diff.stale.len() == 1 { "s" } else { "" },
+        if diff.stale.len() == 1 { "it" } else { "them" },
+    );
+    for st in &diff.stale {
+        let e = &st.entry;
+        let element = if e.element.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", code_span(&single_line(&e.element), false))
+        };
+        let _ = writeln!(
+            out,
+            "- {} {} {}{element} — {}",
+            code_span(&st.at, false),
+            e.code,
+            code_span(&single_line(&e.component), false),
+            item(&e.reason)
+        );
+    }
+    out.push('\n');
     out
 }
 
@@ -322,14 +504,18 @@ fn gh_prop(s: &str) -> String {
 }
 
 /// GitHub workflow annotations: `::error` for breaking changes, `::warning` for warnings,
-/// `::notice` for infos, at the NEW side's file and line where there is one; then the summary.
+/// `::notice` for infos and for the changes a baseline accepts (with the reason), at the NEW
+/// side's file and line where there is one; `::warning` at the baseline's line for a stale
+/// entry; then the summary. The changes the policy ignores are only counted.
 pub fn to_github(diff: &Diff) -> String {
     let mut out = String::new();
-    for c in &diff.changes {
-        let cmd = match c.severity {
-            Level::Breaking => "error",
-            Level::Warning => "warning",
-            Level::Info => "notice",
+    for (i, c) in diff.changes.iter().enumerate() {
+        let status = diff.status(i);
+        let cmd = match (status, c.severity) {
+            (Status::Ignored, _) => continue,
+            (Status::Accepted(_), _) | (_, Level::Info) => "notice",
+            (_, Level::Breaking) => "error",
+            (_, Level::Warning) => "warning",
         };
         let mut props = Vec::new();
         if let Some(f) = &c.file {
@@ -341,20 +527,40 @@ pub fn to_github(diff: &Diff) -> String {
                 }
             }
         }
+        let accepted = if matches!(status, Status::Accepted(_)) {
+            " (accepted)"
+        } else {
+            ""
+        };
         props.push(format!(
             "title={}",
-            gh_prop(&format!("{} {}", c.code, c.name))
+            gh_prop(&format!("{} {}{accepted}", c.code, c.name))
         ));
         let what = if c.path.is_empty() {
             c.component.clone()
         } else {
             format!("{} {}", c.component, c.path)
         };
+        let note = standing_note(status)
+            .map(|n| format!(" ({n})"))
+            .unwrap_or_default();
         let _ = writeln!(
             out,
             "::{cmd} {}::{}",
             props.join(","),
-            gh_data(&format!("{what}: {}", c.message))
+            gh_data(&format!("{what}: {}{note}", c.message))
+        );
+    }
+    for st in &diff.stale {
+        let file = diff.baseline.as_deref().unwrap_or("");
+        let _ = writeln!(
+            out,
+            "::warning file={},line={},col={},title={}::{}",
+            gh_prop(file),
+            st.line,
+            st.column,
+            gh_prop("stale baseline entry"),
+            gh_data(&stale_message(st))
         );
     }
     let _ = writeln!(out, "rtcdoc diff: {}", one_line(diff));
@@ -366,29 +572,30 @@ pub fn to_github(diff: &Diff) -> String {
 pub enum Verbosity {
     /// Breaking changes only, no summary.
     Quiet,
-    /// Everything.
+    /// Everything but the changes the policy ignores.
     Normal,
+    /// Everything, the changes the policy ignores too.
+    Verbose,
 }
 
 /// The human report: `severity[CODE] component: path: message` in the colours of `check`
 /// (breaking red, warning yellow, info blue), with `old → new` and the file, then the summary.
+/// A change a baseline accepts is marked `accepted (baseline): REASON` (in green), one the
+/// policy ignores `ignored (policy)` (only with [`Verbosity::Verbose`]); the stale baseline
+/// entries are warnings before the summary.
 pub fn write_human(
     out: &mut dyn WriteColor,
     diff: &Diff,
     verbosity: Verbosity,
     revs: [&str; 2],
 ) -> std::io::Result<()> {
-    // A side read at a git revision names its files `REV:path`, as `git show` opens them.
-    let [old_rev, new_rev] = revs;
-    let colour = |l: Level| match l {
-        Level::Breaking => Color::Red,
-        Level::Warning => Color::Yellow,
-        Level::Info => Color::Blue,
-    };
-    for (component, changes) in by_component(&diff.changes) {
-        let shown: Vec<&&Change> = changes
+    for (component, changes) in by_component(diff, verbosity == Verbosity::Verbose) {
+        let shown: Vec<&Shown> = changes
             .iter()
-            .filter(|c| verbosity == Verbosity::Normal || c.severity == Level::Breaking)
+            .filter(|(c, s)| {
+                verbosity != Verbosity::Quiet
+                    || (c.severity == Level::Breaking && **s == Status::Counts)
+            })
             .collect();
         if shown.is_empty() {
             continue;
@@ -404,57 +611,82 @@ pub fn write_human(
             }
         )?;
         out.reset()?;
-        for c in shown {
-            out.set_color(
-                ColorSpec::new()
-                    .set_fg(Some(colour(c.severity)))
-                    .set_bold(true),
-            )?;
-            write!(out, "  {}[{}]", c.severity, c.code)?;
-            out.reset()?;
-            // A message of several lines (a long text's word-level difference) stays indented.
-            let message = c.message.replace('\n', "\n      ");
-            if c.path.is_empty() {
-                writeln!(out, ": {message}")?;
-            } else {
-                writeln!(out, " {}: {message}", c.path)?;
-            }
-            // A long text's change is its word-level difference: not both texts again in full.
-            let words = crate::word_diff::message(c.old.as_deref(), c.new.as_deref())
-                .is_some_and(|m| m == c.message);
-            if (c.old.is_some() || c.new.is_some()) && !words {
-                let v = |s: &Option<String>| s.clone().unwrap_or_else(|| "(absent)".into());
-                writeln!(out, "      {} → {}", v(&c.old), v(&c.new))?;
-            }
-            // An item that exists only in OLD is shown where it is there.
-            let in_old = match (&c.old_file, c.old_line) {
-                (Some(f), Some(l)) => Some((f, l)),
-                _ => None,
-            };
-            if let Some((f, l)) = in_old {
-                out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
-                writeln!(
-                    out,
-                    "      --> {old_rev}{f}:{l}:{}",
-                    c.old_column.unwrap_or(1)
-                )?;
-                out.reset()?;
-            } else if let Some(f) = &c.file {
-                out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
-                match c.line {
-                    Some(l) => {
-                        writeln!(out, "      --> {new_rev}{f}:{l}:{}", c.column.unwrap_or(1))?
-                    }
-                    None => writeln!(out, "      --> {new_rev}{f}")?,
-                }
-                out.reset()?;
-            } else if let Some(f) = &c.old_file {
-                writeln!(out, "      (was {old_rev}{f})")?;
-            }
+        for (c, status) in shown {
+            write_human_change(out, c, status, revs)?;
         }
     }
-    if verbosity == Verbosity::Normal {
+    if verbosity != Verbosity::Quiet {
+        for st in &diff.stale {
+            out.set_color(ColorSpec::new().set_fg(Some(Color::Yellow)).set_bold(true))?;
+            write!(out, "warning")?;
+            out.reset()?;
+            writeln!(out, ": {}: {}", st.at, stale_message(st))?;
+        }
         writeln!(out, "rtcdoc diff: {}", one_line(diff))?;
+    }
+    Ok(())
+}
+
+/// One change of the human report.
+fn write_human_change(
+    out: &mut dyn WriteColor,
+    c: &Change,
+    status: &Status,
+    revs: [&str; 2],
+) -> std::io::Result<()> {
+    // A side read at a git revision names its files `REV:path`, as `git show` opens them.
+    let [old_rev, new_rev] = revs;
+    let colour = match (status, c.severity) {
+        (Status::Counts, Level::Breaking) => Color::Red,
+        (Status::Counts, Level::Warning) => Color::Yellow,
+        (Status::Counts, Level::Info) => Color::Blue,
+        (Status::Accepted(_), _) => Color::Green,
+        (Status::Ignored, _) => Color::White,
+    };
+    out.set_color(ColorSpec::new().set_fg(Some(colour)).set_bold(true))?;
+    write!(out, "  {}[{}]", c.severity, c.code)?;
+    out.reset()?;
+    // A message of several lines (a long text's word-level difference) stays indented.
+    let message = c.message.replace('\n', "\n      ");
+    if c.path.is_empty() {
+        writeln!(out, ": {message}")?;
+    } else {
+        writeln!(out, " {}: {message}", c.path)?;
+    }
+    // A long text's change is its word-level difference: not both texts again in full.
+    let words = crate::word_diff::message(c.old.as_deref(), c.new.as_deref())
+        .is_some_and(|m| m == c.message);
+    if (c.old.is_some() || c.new.is_some()) && !words {
+        let v = |s: &Option<String>| s.clone().unwrap_or_else(|| "(absent)".into());
+        writeln!(out, "      {} → {}", v(&c.old), v(&c.new))?;
+    }
+    if let Some(note) = standing_note(status) {
+        out.set_color(ColorSpec::new().set_fg(Some(colour)))?;
+        writeln!(out, "      {note}")?;
+        out.reset()?;
+    }
+    // An item that exists only in OLD is shown where it is there.
+    let in_old = match (&c.old_file, c.old_line) {
+        (Some(f), Some(l)) => Some((f, l)),
+        _ => None,
+    };
+    if let Some((f, l)) = in_old {
+        out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
+        writeln!(
+            out,
+            "      --> {old_rev}{f}:{l}:{}",
+            c.old_column.unwrap_or(1)
+        )?;
+        out.reset()?;
+    } else if let Some(f) = &c.file {
+        out.set_color(ColorSpec::new().set_fg(Some(Color::Cyan)))?;
+        match c.line {
+            Some(l) => writeln!(out, "      --> {new_rev}{f}:{l}:{}", c.column.unwrap_or(1))?,
+            None => writeln!(out, "      --> {new_rev}{f}")?,
+        }
+        out.reset()?;
+    } else if let Some(f) = &c.old_file {
+        writeln!(out, "      (was {old_rev}{f})")?;
     }
     Ok(())
 }

@@ -3,6 +3,7 @@
 //! claims of the quick start hold for the example.
 
 use crate::common;
+use common::OutputWithin;
 use common::*;
 use std::path::Path;
 
@@ -35,11 +36,15 @@ fn words(line: &str) -> Vec<String> {
     out
 }
 
-/// Every `rtcdoc …` command of the guide's code blocks that can run here: (page, line, words).
-/// A redirection, pipe or `||` ends the command; comments are dropped. Lines with placeholders
-/// (`DIR`, `OLD`, `…`, `$VARIABLE`) and `serve` (which runs until stopped) are left out.
-fn commands() -> Vec<(String, String, Vec<String>)> {
-    let mut out = Vec::new();
+/// A command of the guide: (page, line, words).
+type Command = (String, String, Vec<String>);
+
+/// Every `rtcdoc …` command of the guide's code blocks that can run here, by code block (a
+/// block's commands run in order in one workspace, as a reader types them). A redirection, pipe
+/// or `||` ends the command; comments are dropped. Lines with placeholders (`DIR`, `OLD`, `…`,
+/// `$VARIABLE`) and `serve` (which runs until stopped) are left out.
+fn blocks() -> Vec<Vec<Command>> {
+    let mut out: Vec<Vec<Command>> = Vec::new();
     let mut pages: Vec<_> = std::fs::read_dir(root().join("book/src"))
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -53,6 +58,9 @@ fn commands() -> Vec<(String, String, Vec<String>)> {
         for line in text.lines() {
             if line.trim_start().starts_with("```") {
                 in_block = !in_block;
+                if in_block {
+                    out.push(Vec::new());
+                }
                 continue;
             }
             if !in_block {
@@ -87,10 +95,40 @@ fn commands() -> Vec<(String, String, Vec<String>)> {
             if placeholder || w.get(1).map(String::as_str) == Some("serve") {
                 continue;
             }
-            out.push((name.clone(), line.to_string(), w[1..].to_vec()));
+            if let Some(block) = out.last_mut() {
+                block.push((name.clone(), line.to_string(), w[1..].to_vec()));
+            }
         }
     }
+    out.retain(|b| !b.is_empty());
     out
+}
+
+fn git(dir: &Path, args: &[&str]) -> bool {
+    std::process::Command::new("git")
+        .args(args)
+        .current_dir(dir)
+        .env("GIT_CONFIG_NOSYSTEM", "1")
+        .env("HOME", dir)
+        .output_within(common::COMMAND_LIMIT)
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
+/// The workspace as a git repository whose one commit holds it, tagged `v1.0.0` and known as
+/// `origin/main` too: the revisions the guide's `--since` commands name.
+fn commit_workspace(ws: &Path) {
+    for args in [
+        &["init", "-q"][..],
+        &["config", "user.name", "Guide"],
+        &["config", "user.email", "guide@example.org"],
+        &["add", "-A"],
+        &["commit", "-q", "-m", "guide"],
+        &["tag", "v1.0.0"],
+        &["update-ref", "refs/remotes/origin/main", "HEAD"],
+    ] {
+        assert!(git(ws, args), "git {args:?}");
+    }
 }
 
 fn copy_examples(to: &Path) {
@@ -103,10 +141,18 @@ fn copy_examples(to: &Path) {
 
 #[test]
 fn every_command_of_the_guide_runs_as_written() {
-    let cmds = commands();
-    assert!(cmds.len() >= 15, "{cmds:#?}");
+    let blocks = blocks();
+    let count: usize = blocks.iter().map(Vec::len).sum();
+    assert!(count >= 15, "{blocks:#?}");
+    // The gate of ci.md and diff.md: `--since`, the baseline written, then read.
+    let since = blocks
+        .iter()
+        .flatten()
+        .filter(|(page, _, w)| page == "ci.md" && w.iter().any(|a| a == "--since"))
+        .count();
+    assert!(since >= 4, "ci.md's gate is run: {blocks:#?}");
     let mut failed = Vec::new();
-    for (page, line, args) in &cmds {
+    for block in &blocks {
         let dir = tempfile::tempdir().unwrap();
         let ws = dir.path();
         // The paths the guide's commands name hold the example catalogue.
@@ -119,16 +165,28 @@ fn every_command_of_the_guide_runs_as_written() {
         ] {
             copy_examples(&ws.join(d));
         }
-        let args: Vec<&str> = args.iter().map(String::as_str).collect();
-        let o = rtcdoc(&args, ws);
-        let err = String::from_utf8_lossy(&o.stderr);
-        let ok = match args[0] {
-            // check and diff exit 1 for findings and changes, which is what they are for.
-            "check" | "diff" => matches!(o.status.code(), Some(0 | 1)),
-            _ => o.status.success(),
-        };
-        if !ok || err.contains("unexpected argument") {
-            failed.push(format!("{page}: `{}` → {:?}\n{err}", line.trim(), o.status));
+        if block
+            .iter()
+            .any(|(_, _, w)| w.iter().any(|a| a == "--since"))
+        {
+            if !git(ws, &["--version"]) {
+                common::missing_tool("git not available");
+                continue;
+            }
+            commit_workspace(ws);
+        }
+        for (page, line, args) in block {
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            let o = rtcdoc(&args, ws);
+            let err = String::from_utf8_lossy(&o.stderr);
+            let ok = match args[0] {
+                // check and diff exit 1 for findings and changes, which is what they are for.
+                "check" | "diff" => matches!(o.status.code(), Some(0 | 1)),
+                _ => o.status.success(),
+            };
+            if !ok || err.contains("unexpected argument") {
+                failed.push(format!("{page}: `{}` → {:?}\n{err}", line.trim(), o.status));
+            }
         }
     }
     assert!(failed.is_empty(), "{}", failed.join("\n"));

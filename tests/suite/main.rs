@@ -20,6 +20,7 @@ mod diff;
 mod diff_drift;
 mod diff_fixtures;
 mod diff_idl;
+mod diff_gate;
 mod function_length;
 mod guide_commands;
 mod hints;
