@@ -1608,9 +1608,11 @@ impl Catalog {
         let ((data_types, interfaces), (categories, vendors)) = rayon::join(
             || type_indexes(&components, canonical),
             || {
+                // RTCBuilder's placeholders (`Category`, `VenderName`) name no group: their
+                // components are uncategorised (the value stays in the profile and its page).
                 rayon::join(
-                    || facet(&|p| p.basic_info.category.as_deref()),
-                    || facet(&|p| p.basic_info.vendor.as_deref()),
+                    || facet(&|p| crate::model::documented("category", &p.basic_info.category)),
+                    || facet(&|p| crate::model::documented("vendor", &p.basic_info.vendor)),
                 )
             },
         );
