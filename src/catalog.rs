@@ -1574,8 +1574,7 @@ impl Catalog {
                     .or_default()
                     .push(i);
             }
-            // Named by the most frequent spelling (the first in sort order on a tie); listed
-            // in the order of those names, as before merging.
+            // Named by the most frequent spelling (the first in sort order on a tie).
             let mut m: BTreeMap<String, (Vec<ComponentId>, Vec<String>)> = BTreeMap::new();
             for spellings in groups.into_values() {
                 let name = spellings
@@ -1592,7 +1591,12 @@ impl Catalog {
                     .collect();
                 m.insert(name, (members, variants));
             }
-            let names: Vec<(String, String)> = m.keys().map(|k| (k.clone(), k.clone())).collect();
+            // Listed case-insensitively (`camera` beside `Camera…`, not after `Z…`), the name
+            // as written breaking ties.
+            let mut m: Vec<(String, (Vec<ComponentId>, Vec<String>))> = m.into_iter().collect();
+            m.sort_by_cached_key(|(name, _)| (name.to_lowercase(), name.clone()));
+            let names: Vec<(String, String)> =
+                m.iter().map(|(k, _)| (k.clone(), k.clone())).collect();
             m.into_iter()
                 .zip(unique_slugs(&names))
                 .map(|((name, (components, variants)), slug)| Facet {

@@ -447,6 +447,31 @@ fn rtcbuilder_placeholders_are_no_lead_and_no_group() {
 }
 
 #[test]
+fn category_groups_sort_case_insensitively() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let profiles = ["Zeta", "camera", "Arm", "actuator", "Base"]
+        .iter()
+        .enumerate()
+        .map(|(i, c)| component(&format!("C{i}"), c))
+        .collect();
+    let cat = render_catalog(profiles, &out, &SiteOptions::default());
+    let names: Vec<&str> = cat.categories.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(names, ["actuator", "Arm", "Base", "camera", "Zeta"]);
+    // The front page's group headings in that order.
+    let index = read(&out.join("index.html"));
+    let at = |name: &str| {
+        index
+            .find(&format!(
+                ".html\">{name}</a> <span class=\"count\">1</span></h2>"
+            ))
+            .unwrap_or_else(|| panic!("{name} on the front page: {index}"))
+    };
+    let order: Vec<usize> = names.iter().map(|n| at(n)).collect();
+    assert!(order.windows(2).all(|w| w[0] < w[1]), "{order:?}");
+}
+
+#[test]
 fn labels_follow_the_site_language() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("site");
