@@ -404,7 +404,7 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
                 component: c.display_name().into_owned(),
                 anchor: entry_anchor(e),
                 version: e.version.clone().unwrap_or_default(),
-                date: date.clone(),
+                date: super::history::shown_date(&date),
                 label: e.label().to_string(),
                 url: e
                     .commit
