@@ -1617,8 +1617,7 @@ impl Catalog {
                     .or_default()
                     .push(i);
             }
-            // Named by the most frequent spelling (the first in sort order on a tie); listed
-            // in the order of those names, as before merging.
+            // Named by the most frequent spelling (the first in sort order on a tie).
             let mut m: BTreeMap<String, (Vec<ComponentId>, Vec<String>)> = BTreeMap::new();
             for spellings in groups.into_values() {
                 let name = spellings
@@ -1635,7 +1634,12 @@ impl Catalog {
                     .collect();
                 m.insert(name, (members, variants));
             }
-            let names: Vec<(String, String)> = m.keys().map(|k| (k.clone(), k.clone())).collect();
+            // Listed case-insensitively (`camera` beside `Camera…`, not after `Z…`), the name
+            // as written breaking ties.
+            let mut m: Vec<(String, (Vec<ComponentId>, Vec<String>))> = m.into_iter().collect();
+            m.sort_by_cached_key(|(name, _)| (name.to_lowercase(), name.clone()));
+            let names: Vec<(String, String)> =
+                m.iter().map(|(k, _)| (k.clone(), k.clone())).collect();
             m.into_iter()
                 .zip(unique_slugs(&names))
                 .map(|((name, (components, variants)), slug)| Facet {
@@ -1651,9 +1655,11 @@ impl Catalog {
         let ((data_types, interfaces), (categories, vendors)) = rayon::join(
             || type_indexes(&components, canonical),
             || {
+                // RTCBuilder's placeholders (`Category`, `VenderName`) name no group: their
+                // components are uncategorised (the value stays in the profile and its page).
                 rayon::join(
-                    || facet(&|p| p.basic_info.category.as_deref()),
-                    || facet(&|p| p.basic_info.vendor.as_deref()),
+                    || facet(&|p| crate::model::documented("category", &p.basic_info.category)),
+                    || facet(&|p| crate::model::documented("vendor", &p.basic_info.vendor)),
                 )
             },
         );

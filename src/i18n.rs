@@ -269,6 +269,11 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("fact_other", "Other", "その他"),
     ("fact_others", "Other ports", "その他のポート"),
     ("fact_path", "IDL search path", "IDLパス"),
+    (
+        "fact_placeholder",
+        "RTCBuilder's placeholder, not filled in",
+        "RTCBuilder の初期値のまま（未記入）",
+    ),
     ("fact_port", "Port", "ポート"),
     ("fact_position", "Position", "位置"),
     ("fact_profile_version", "Profile format version", "プロファイル形式バージョン"),

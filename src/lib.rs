@@ -33,6 +33,7 @@ pub mod render;
 pub mod serve;
 pub mod slug;
 pub mod sources;
+pub mod suggest;
 
 pub mod types;
 pub mod value;

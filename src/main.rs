@@ -1177,28 +1177,22 @@ fn find_component(
             anyhow::bail!("no component profile in {}", input.display())
         }
         [] => {
-            let want_l = want.to_lowercase();
-            let mut near: Vec<(usize, String)> = cat
-                .components
-                .iter()
-                .map(|c| {
-                    let n = c.display_name().into_owned();
-                    let l = n.to_lowercase();
-                    let d = if l.contains(&want_l) || want_l.contains(&l) {
-                        0
-                    } else {
-                        rtcdoc::diagnostic::distance(&l, &want_l)
-                    };
-                    (d, n)
-                })
-                .collect();
-            near.sort();
-            near.dedup_by(|a, b| a.1 == b.1);
-            let names: Vec<String> = near.into_iter().take(5).map(|(_, n)| n).collect();
+            // Only names like the one given (`rtcdoc::suggest`): the five least far of
+            // unrelated names would send the reader after the wrong component.
+            let names: Vec<std::borrow::Cow<'_, str>> =
+                cat.components.iter().map(|c| c.display_name()).collect();
+            let near = rtcdoc::suggest::nearest(want, names.iter().map(|n| n.as_ref()), 5);
+            if near.is_empty() {
+                anyhow::bail!(
+                    "no component named {want:?} in {}, nor one of a similar name; give the name, id or page slug of one of its {} components (the index page of `rtcdoc build` lists them)",
+                    input.display(),
+                    cat.components.len()
+                )
+            }
             anyhow::bail!(
-                "no component named {want:?} in {}; the closest names are: {} (give a name, an id or a page slug)",
+                "no component named {want:?} in {}; did you mean: {}? (give a name, an id or a page slug)",
                 input.display(),
-                names.join(", ")
+                near.join(", ")
             )
         }
         many => anyhow::bail!(

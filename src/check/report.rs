@@ -286,15 +286,59 @@ pub fn write_human(
             notes.push(format!("help: {h}"));
         }
         cs = cs.with_notes(notes);
-        term::emit_to_write_style(out, &config, &files, &cs)
-            .map_err(|e| std::io::Error::other(e.to_string()))?;
+        if d.severity == Severity::Info {
+            // codespan calls its lowest severity `note`; rtcdoc's is `info`, as in the
+            // summary line (`3 infos`), the JSON, `--explain` and `diff`: the header is
+            // written aside and renamed (it comes first, before any text of the finding).
+            let mut buf = if out.supports_color() {
+                term::termcolor::Buffer::ansi()
+            } else {
+                term::termcolor::Buffer::no_color()
+            };
+            term::emit_to_write_style(&mut buf, &config, &files, &cs)
+                .map_err(|e| std::io::Error::other(e.to_string()))?;
+            out.write_all(&info_header(buf.into_inner()))?;
+        } else {
+            term::emit_to_write_style(out, &config, &files, &cs)
+                .map_err(|e| std::io::Error::other(e.to_string()))?;
+        }
     }
     Ok(())
+}
+
+/// A finding written by codespan as a `note[CODE]`, its header renamed `info[CODE]`.
+fn info_header(mut text: Vec<u8>) -> Vec<u8> {
+    if let Some(at) = text.windows(5).position(|w| w == b"note[") {
+        text[at..at + 4].copy_from_slice(b"info");
+    }
+    text
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn infos_are_called_info_in_their_header() {
+        let d = Diagnostic::info("RTC505", "a.xml", "action `onExecute` has no description");
+        for color in [false, true] {
+            let mut buf = if color {
+                term::termcolor::Buffer::ansi()
+            } else {
+                term::termcolor::Buffer::no_color()
+            };
+            write_human(
+                &mut buf,
+                std::slice::from_ref(&d),
+                Verbosity::Verbose,
+                &mut |_| None,
+            )
+            .unwrap();
+            let text = String::from_utf8(buf.into_inner()).unwrap();
+            assert!(text.contains("info[RTC505]"), "{text:?}");
+            assert!(!text.contains("note["), "{text:?}");
+        }
+    }
 
     #[test]
     fn long_lines_get_no_snippet() {

@@ -1168,6 +1168,8 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         }
     }
     let mut reported: std::collections::HashSet<&str> = Default::default();
+    // Made once, when some type is missing.
+    let near_names = std::cell::OnceCell::new();
     for (name, idl_file, file, pos, port) in &uses {
         let mut s = Findings {
             file,
@@ -1181,6 +1183,17 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
                     *pos,
                     format!("type `{name}` of `{port}` is defined in no IDL file read"),
                 );
+                // A type of that name in another module, or of a near name, is the first
+                // thing to try.
+                let near = near_names.get_or_init(|| cat.idl.near_names()).of(name, 3);
+                if let (Some(d), false) = (s.out.last_mut(), near.is_empty()) {
+                    let listed: Vec<String> = near.iter().map(|n| format!("`{n}`")).collect();
+                    d.hint = Some(format!(
+                        "did you mean {}? (defined in the IDL read); else {}",
+                        listed.join(" or "),
+                        d.hint.as_deref().unwrap_or("")
+                    ));
+                }
                 // A warning when the IDL read declares the type's module (the type is missing
                 // from its own files); an info when its module is elsewhere (its IDL, often
                 // OpenRTM's own, was not given) or the type is one of OpenRTM's own (a

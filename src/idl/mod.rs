@@ -414,6 +414,29 @@ impl IdlSet {
             .copied()
     }
 
+    /// What [`NearNames::of`] looks through: the last names of the types (no modules) this
+    /// set defines, made once for every name looked up.
+    pub fn near_names(&self) -> NearNames {
+        let mut names: Vec<(crate::suggest::Lowered, String, Vec<String>)> = self
+            .by_simple
+            .iter()
+            .map(|(simple, scoped)| {
+                let types: Vec<String> = scoped
+                    .iter()
+                    .filter(|s| {
+                        self.find(s)
+                            .is_some_and(|i| !matches!(i.definition, IdlDefinition::Module(_)))
+                    })
+                    .cloned()
+                    .collect();
+                (crate::suggest::Lowered::new(simple), simple.clone(), types)
+            })
+            .filter(|(_, _, types)| !types.is_empty())
+            .collect();
+        names.sort_unstable();
+        NearNames { names }
+    }
+
     /// The scoped names a lookup would return (for callers that only need the key).
     pub fn scoped_name_of(&self, name: &str) -> Option<String> {
         self.find(name)
@@ -468,6 +491,48 @@ impl IdlSet {
             [one] => self.by_scoped.get(*one).cloned().unwrap_or_default(),
             _ => Vec::new(),
         }
+    }
+}
+
+/// The last names of an [`IdlSet`]'s types, to find near matches of a name it does not
+/// define ([`IdlSet::near_names`]).
+#[derive(Debug, Clone, Default)]
+pub struct NearNames {
+    /// (the last name in lower case, as written, the scoped names of the types that have it)
+    names: Vec<(crate::suggest::Lowered, String, Vec<String>)>,
+}
+
+impl NearNames {
+    /// The scoped names of the types a reader who wrote `name`, which names none, may have
+    /// meant: those of the same last name in other modules (`Img::CameraCaptureService` for
+    /// `OpenHRP::CameraCaptureService`), then those whose last name is a few edits from it
+    /// ([`crate::suggest::Lowered::edits`]: case ignored), nearest first; at most `max`.
+    pub fn of(&self, name: &str, max: usize) -> Vec<String> {
+        let name = name.trim();
+        let simple = match name.strip_prefix("IDL:") {
+            Some(rest) => rest
+                .rsplit_once(':')
+                .map_or(rest, |(b, _)| b)
+                .rsplit('/')
+                .next()
+                .unwrap_or(rest),
+            None => name.rsplit("::").next().unwrap_or(name),
+        };
+        let want = crate::suggest::Lowered::new(simple);
+        // (0: the same last name, 1 + distance: a near one; scoped name)
+        let mut near: Vec<(usize, &String)> = Vec::new();
+        for (lower, written, scoped) in &self.names {
+            let rank = if written == simple {
+                0
+            } else if let Some(d) = want.edits(lower) {
+                1 + d
+            } else {
+                continue;
+            };
+            near.extend(scoped.iter().map(|s| (rank, s)));
+        }
+        near.sort_unstable();
+        near.into_iter().map(|(_, s)| s.clone()).take(max).collect()
     }
 }
 

@@ -70,6 +70,27 @@ impl Facts {
             out: Vec::new(),
         }
     }
+    /// Like [`Facts::opt`] for a Basic Profile value RTCBuilder may leave as its placeholder
+    /// ([`model::is_placeholder`] of `field`): such a value is shown as written, said to be
+    /// the placeholder. With `only_placeholder`, a value that is not one is left out (the
+    /// description, which pages show as their lead text).
+    fn basic(
+        &mut self,
+        (key, field): (&'static str, &str),
+        v: &Option<crate::model::Text>,
+        only_placeholder: bool,
+    ) -> &mut Self {
+        match model::non_empty(v) {
+            Some(s) if model::is_placeholder(field, s) => {
+                let note = self.lang.t("fact_placeholder");
+                self.out
+                    .push(Fact::new(self.lang.t(key), format!("{s} ({note})")));
+                self
+            }
+            Some(_) if only_placeholder => self,
+            _ => self.opt(key, v),
+        }
+    }
     fn opt(&mut self, key: &'static str, v: &Option<crate::model::Text>) -> &mut Self {
         if let Some(s) = model::non_empty(v) {
             self.out.push(Fact::new(self.lang.t(key), s));
@@ -192,14 +213,17 @@ fn hertz(rate: &str) -> String {
 }
 
 /// Header fields of a component page (Basic Profile, spec 2.3.2, and its extended part), in a
-/// fixed order. Name and description are left out: pages show them as title and lead text.
+/// fixed order. Name and description are left out: pages show them as title and lead text
+/// (a description that is RTCBuilder's placeholder is no lead: it is listed here, as the
+/// placeholder it is).
 pub fn basic_info(c: &Component, lang: Lang) -> Vec<Fact> {
     let p = &c.profile;
     let b = &p.basic_info;
     Facts::new(lang)
         .opt("fact_id", &p.id)
-        .opt("category", &b.category)
-        .opt("vendor", &b.vendor)
+        .basic(("description", "description"), &b.description, true)
+        .basic(("category", "category"), &b.category, false)
+        .basic(("vendor", "vendor"), &b.vendor, false)
         .opt("version", &b.version)
         .opt("component_type", &b.component_type)
         .opt("activity_type", &b.activity_type)

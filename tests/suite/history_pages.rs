@@ -526,6 +526,46 @@ fn a_backup_orders_among_commits_in_their_time_zone() {
     assert!(commit < backup, "the 18:18 commit first:\n{md}");
 }
 
+/// git writes a UTC author date with `Z` and any other with its offset: the pages show every
+/// commit's date in one form, its own offset, UTC as `+00:00` (they mixed `Z` and `+09:00`).
+#[test]
+fn commit_dates_are_shown_in_one_form() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    if !history_repo::init(&repo) {
+        crate::common::missing_tool("git not available");
+        return;
+    }
+    let v = history_repo::versions();
+    for (i, (text, date)) in [
+        (&v[0].1, "2024-01-01T10:00:00+0900"),
+        (&v[1].1, "2024-01-02T01:00:00+0000"),
+        (&v[3].1, "2024-01-03T10:00:00+0900"),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        write(&repo, "Base/RTC.xml", text);
+        assert!(history_repo::git(&repo, &["add", "Base/RTC.xml"], date));
+        let subject = format!("version {i}");
+        assert!(history_repo::git(
+            &repo,
+            &["commit", "-q", "-m", &subject],
+            date
+        ));
+    }
+    let site = dir.path().join("site");
+    build(&repo, &site, &[]);
+    let html = page(&site, "html/history/base.html");
+    let md = page(&site, "markdown/history/base.md");
+    let news = page(&site, "markdown/whats-new.md");
+    for (name, text) in [("html", &html), ("md", &md), ("whats-new", &news)] {
+        assert!(text.contains("2024-01-03T10:00:00+09:00"), "{name}: {text}");
+        assert!(text.contains("2024-01-02T01:00:00+00:00"), "{name}: {text}");
+        assert!(!text.contains("2024-01-02T01:00:00Z"), "{name}: {text}");
+    }
+}
+
 /// A description holding RTCBuilder's `<br/>` breaks the line there in a change's message, as
 /// the component page does (issue #55: it showed raw), in every output, without stray
 /// backticks; the JSON keeps the value as written.

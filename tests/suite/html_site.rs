@@ -405,6 +405,73 @@ fn big_components_grow_the_diagram_and_cap_peer_lists() {
 }
 
 #[test]
+fn rtcbuilder_placeholders_are_no_lead_and_no_group() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    // As RTCBuilder leaves a profile nobody filled in, beside a documented one.
+    let mut ph = component("Wizard", "Category");
+    ph.basic_info.description = s("ModuleDescription");
+    ph.basic_info.vendor = s("VenderName");
+    let cat = render_catalog(
+        vec![ph, component("Cam", "Sensor")],
+        &out,
+        &SiteOptions::default(),
+    );
+    // The placeholder category is the uncategorised group, the vendor no vendor.
+    let names: Vec<&str> = cat.categories.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(names, ["", "Sensor"]);
+    let vendors: Vec<&str> = cat.vendors.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(vendors, ["", "Test"]);
+    let w = cat
+        .components
+        .iter()
+        .find(|c| c.profile.name() == "Wizard")
+        .unwrap();
+    let html = read(&out.join(format!("components/{}.html", w.slug)));
+    // No lead text …
+    assert!(!html.contains("class=\"summary\""), "no lead");
+    // … but nothing lost: the basic facts keep every value, said to be the placeholder.
+    for v in ["ModuleDescription", "Category", "VenderName"] {
+        assert!(
+            html.contains(&format!(
+                "{v} (RTCBuilder&#39;s placeholder, not filled in)"
+            )) || html.contains(&format!("{v} (RTCBuilder's placeholder, not filled in)")),
+            "{v} in the basic facts"
+        );
+    }
+    // The index lists the component without the placeholder as its description.
+    let index = read(&out.join("index.html"));
+    assert!(index.contains("Wizard") && !index.contains("ModuleDescription"));
+    let groups = read(&out.join("categories/index.html"));
+    assert!(groups.contains("(no category)") && !groups.contains(">Category<"));
+}
+
+#[test]
+fn category_groups_sort_case_insensitively() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    let profiles = ["Zeta", "camera", "Arm", "actuator", "Base"]
+        .iter()
+        .enumerate()
+        .map(|(i, c)| component(&format!("C{i}"), c))
+        .collect();
+    let cat = render_catalog(profiles, &out, &SiteOptions::default());
+    let names: Vec<&str> = cat.categories.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(names, ["actuator", "Arm", "Base", "camera", "Zeta"]);
+    // The front page's group headings in that order.
+    let index = read(&out.join("index.html"));
+    let at = |name: &str| {
+        index
+            .find(&format!(
+                ".html\">{name}</a> <span class=\"count\">1</span></h2>"
+            ))
+            .unwrap_or_else(|| panic!("{name} on the front page: {index}"))
+    };
+    let order: Vec<usize> = names.iter().map(|n| at(n)).collect();
+    assert!(order.windows(2).all(|w| w[0] < w[1]), "{order:?}");
+}
+
+#[test]
 fn labels_follow_the_site_language() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("site");

@@ -415,6 +415,56 @@ fn openrtm_s_own_types_missing_beside_a_project_s_module_rtc_are_an_info() {
     assert_eq!(severity("RTC::PlanMisspelt"), "warning");
 }
 
+/// RTC403 names what the author may have meant: the type of the same last name in another
+/// module (`Img::CameraCaptureService` for `OpenHRP::CameraCaptureService`), or a near
+/// spelling; a name like none of the IDL's gets the usual hint only.
+#[test]
+fn a_type_not_in_the_idl_is_given_its_near_matches() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let profile = xml_profile(
+        "c",
+        &[
+            ("DataInPort", "pose", "Lab::Pse"),
+            ("DataOutPort", "other", "Lab::Unrelated"),
+        ],
+    )
+    .replace(
+        "</rtc:RtcProfile>",
+        r#"  <rtc:ServicePorts xsi:type="rtcExt:serviceport_ext" rtc:name="cam" rtcExt:position="LEFT">
+    <rtc:ServiceInterface xsi:type="rtcExt:serviceinterface_ext" rtc:name="capture" rtc:type="OpenHRP::CameraCaptureService" rtc:direction="Required" rtc:idlFile="CameraCaptureService.idl"/>
+  </rtc:ServicePorts>
+</rtc:RtcProfile>"#,
+    );
+    write(&input, "c/RTC.xml", &profile);
+    write(
+        &input,
+        "c/idl/Lab.idl",
+        "module Lab { struct Pose { double x; }; };\nmodule Img { interface CameraCaptureService { void take(); }; };\nmodule OpenHRP { struct Other { long a; }; };\n",
+    );
+    let o = rtcdoc(&["check", "in", "--format", "json"], dir.path());
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let hint = |ty: &str| -> String {
+        json["diagnostics"]
+            .as_array()
+            .expect("diagnostics")
+            .iter()
+            .find(|d| d["code"] == "RTC403" && d["message"].as_str().unwrap_or("").contains(ty))
+            .map(|d| d["hint"].as_str().unwrap_or("").to_string())
+            .unwrap_or_else(|| panic!("no RTC403 for {ty}: {json:#}"))
+    };
+    let cam = hint("OpenHRP::CameraCaptureService");
+    assert!(
+        cam.starts_with("did you mean `Img::CameraCaptureService`?"),
+        "{cam}"
+    );
+    let pose = hint("Lab::Pse");
+    assert!(pose.starts_with("did you mean `Lab::Pose`?"), "{pose}");
+    let other = hint("Lab::Unrelated");
+    assert!(!other.contains("did you mean"), "{other}");
+    assert!(other.contains("--idl-path"), "{other}");
+}
+
 /// An IDL file's types that no port uses have no page: the build and `check` say so, naming
 /// them (an input of IDL alone built an empty site without a word), and catalog.json has them.
 /// A type a port uses, and the types inside it, are not named.

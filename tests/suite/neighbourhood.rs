@@ -162,14 +162,23 @@ fn graph_component_writes_the_neighbourhood_and_names_close_matches() {
         d.contains("[label=\"value → in (RTC::TimedLong)\", tooltip="),
         "{d}"
     );
-    // A name that is no component: exit 2 and the closest names.
+    // A name that is no component: exit 2 and the similar names, only those.
     let o = run(&["graph", &input, "--component", "hubb"]);
     assert_eq!(o.status.code(), Some(2));
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
-        e.contains("no component named \"hubb\"") && e.contains("closest names are: Hub"),
+        e.contains("no component named \"hubb\"") && e.contains("did you mean: Hub?"),
         "{e}"
     );
+    // A name like none of them names none (not the least far of unrelated names).
+    let o = run(&["graph", &input, "--component", "NoSuch"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("no component named \"NoSuch\"") && e.contains("nor one of a similar name"),
+        "{e}"
+    );
+    assert!(!e.contains("did you mean") && !e.contains("Hub"), "{e}");
     // Same input, same bytes.
     let svg = |f: &str| {
         let p = dir.path().join(f);

@@ -586,7 +586,7 @@ fn rtcbuilder2_readmes_are_recognised_by_their_structure() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
         err.contains(
-            "note[RTC701]: the README was generated from the profile (RTCBuilder 2.x's template"
+            "info[RTC701]: the README was generated from the profile (RTCBuilder 2.x's template"
         ),
         "{err}"
     );

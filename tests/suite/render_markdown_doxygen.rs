@@ -317,6 +317,78 @@ fn doxygen_titles_show_names_as_written() {
     }
 }
 
+/// Vendors and categories are free text: a double space (`Kyohei Iwane  Osaka.Univ`, as a
+/// real lab's code wrote it), trailing and full-width spaces, a tab, Japanese, names that
+/// differ only in punctuation (one slug base), RTCBuilder's placeholder. Each facet gets a
+/// Doxygen page of its own, the pages link it by the label it declares, and Doxygen says
+/// nothing.
+#[test]
+fn doxygen_has_a_page_for_every_free_text_facet() {
+    if !have("doxygen") {
+        return;
+    }
+    let d = tempfile::tempdir().expect("tempdir");
+    let input = d.path().join("in");
+    let vendors = [
+        "Kyohei Iwane  Osaka.Univ",
+        "Trailing ",
+        "産総研　知能",
+        "Tab&#9;Here",
+        "A.B",
+        "A B",
+        "VenderName",
+        "__init__",
+        "ｒｔｍ",
+    ];
+    for (i, v) in vendors.iter().enumerate() {
+        let xml = common::xml_profile(&format!("C{i}"), &[])
+            .replace("rtc:vendor=\"Test\"", &format!("rtc:vendor=\"{v}\""))
+            .replace("rtc:category=\"Cat\"", &format!("rtc:category=\"{v} cat\""))
+            .replace("RTC:Test:Cat:", &format!("RTC:V{i}:Cat{i}:"));
+        common::write(&input, &format!("c{i}/RTC.xml"), &xml);
+    }
+    let cat = catalog(&input);
+    // `VenderName` is no vendor: its component is under "(no vendor)", a facet too.
+    assert_eq!(cat.vendors.len(), vendors.len(), "{:?}", cat.vendors);
+    let (_t, out) = render(&input, Format::Doxygen, Lang::En);
+    run_doxygen(&out);
+    let html = out.join("html");
+    let mut labels = HashSet::new();
+    for (fi, f) in cat.vendors.iter().enumerate() {
+        let label = cat.vendor_page(fi).doxygen_label();
+        assert!(
+            label
+                .bytes()
+                .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_'),
+            "{label}"
+        );
+        assert!(labels.insert(label.clone()), "{label} twice");
+        let page = std::fs::read_to_string(html.join(format!("{label}.html")))
+            .unwrap_or_else(|e| panic!("no Doxygen page for vendor {:?} ({label}): {e}", f.name));
+        for c in &f.components {
+            let comp = cat.component(c).expect("member");
+            assert!(
+                page.contains(&format!("rtc_comp_{}.html", doxygen::label(&comp.slug))),
+                "{label} lists {}",
+                comp.slug
+            );
+            // The component page links the vendor page by the same label.
+            let cp = std::fs::read_to_string(
+                html.join(format!("rtc_comp_{}.html", doxygen::label(&comp.slug))),
+            )
+            .expect("component page");
+            if !f.name.is_empty() {
+                assert!(cp.contains(&format!("href=\"{label}.html\"")), "{label}");
+            }
+        }
+    }
+    for fi in 0..cat.categories.len() {
+        let label = cat.category_page(fi).doxygen_label();
+        assert!(html.join(format!("{label}.html")).is_file(), "{label}");
+        assert!(labels.insert(label.clone()), "{label} twice");
+    }
+}
+
 #[test]
 fn doxygen_never_emits_profile_markup() {
     if !have("doxygen") {

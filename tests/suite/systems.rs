@@ -288,6 +288,22 @@ fn system_page_shows_every_instance_and_connector_with_named_links() {
         widget.contains("<th scope=\"col\">Value</th></tr>"),
         "{widget}"
     );
+    // Editor data starts collapsed (it doubled a real system page's length); the sets that
+    // configure the instances stay open.
+    assert!(
+        conf.contains("<details class=\"sys-config-pseudo\">\n<summary><code>__widget__</code> (editor data) <span class=\"count\">"),
+        "{conf}"
+    );
+    assert!(!conf.contains("<details open"), "{conf}");
+    let before_default = conf
+        .split("<caption><code>default</code>")
+        .next()
+        .unwrap_or("");
+    assert_eq!(
+        before_default.matches("<details").count(),
+        before_default.matches("</details>").count(),
+        "the default set is in no <details>: {conf}"
+    );
     // Orders and groups.
     assert!(section(&html, "orders").contains("after Camera0 (timeout 500 ms, SYNC)"));
     assert!(section(&html, "groups").contains("Camera0, Planner0"));

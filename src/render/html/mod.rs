@@ -32,7 +32,7 @@ use crate::catalog::{
     Catalog, Component, ComponentIx, Facet, Ix, Output, Page, PageKind, PerEntry,
 };
 use crate::i18n::Lang;
-use crate::model::{non_empty, ExtraKind};
+use crate::model::{documented, non_empty, ExtraKind};
 use crate::output::Sink;
 
 use anyhow::{Context, Result};
@@ -562,16 +562,18 @@ impl<'a> Site<'a> {
             name: c.display_name().into_owned(),
             path: self.catalog.component_page(ci).path("html"),
             version: non_empty(&b.version).unwrap_or("").to_string(),
-            vendor: non_empty(&b.vendor).unwrap_or("").to_string(),
+            vendor: documented("vendor", &b.vendor).unwrap_or("").to_string(),
             vendor_slug: facet_slug(&self.catalog.vendors, &self.vendor_of),
-            category: non_empty(&b.category).unwrap_or("").to_string(),
+            category: documented("category", &b.category)
+                .unwrap_or("")
+                .to_string(),
             category_slug: facet_slug(&self.catalog.categories, &self.category_of),
             source: c
                 .origin
                 .as_ref()
                 .map(|o| o.source.clone())
                 .unwrap_or_default(),
-            summary: non_empty(&b.description)
+            summary: documented("description", &b.description)
                 .map(|d| markdown::first_line(d, 160))
                 .unwrap_or_default(),
             data_ports: c.profile.data_ports.len(),

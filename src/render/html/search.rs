@@ -11,7 +11,7 @@
 
 use crate::catalog::{Catalog, ComponentIx, Ix};
 use crate::i18n::Lang;
-use crate::model::non_empty;
+use crate::model::{documented, non_empty};
 use crate::types::canonical_type;
 use rayon::prelude::*;
 use std::borrow::Cow;
@@ -410,14 +410,19 @@ fn component_entry(catalog: &Catalog, ci: ComponentIx) -> serde_json::Value {
             .and_then(|doc| non_empty(&doc.description));
         g.item(non_empty(&conf.name), doc);
     }
-    let summary = non_empty(&b.description)
+    // RTCBuilder's placeholders (`ModuleDescription`, `Category`) are no summary or meta.
+    let summary = documented("description", &b.description)
         .map(|d| super::markdown::first_line(d, 90))
         .unwrap_or_default();
-    let meta = [non_empty(&b.category), non_empty(&b.vendor), source]
-        .into_iter()
-        .flatten()
-        .collect::<Vec<_>>()
-        .join(" · ");
+    let meta = [
+        documented("category", &b.category),
+        documented("vendor", &b.vendor),
+        source,
+    ]
+    .into_iter()
+    .flatten()
+    .collect::<Vec<_>>()
+    .join(" · ");
     serde_json::json!([
         "c",
         c.display_name(),

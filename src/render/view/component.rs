@@ -5,7 +5,7 @@
 use super::{Dir, Linked, Peers};
 use crate::catalog::{Catalog, ComponentIx, Ix, Page};
 use crate::i18n::Lang;
-use crate::model::{self, non_empty, ActionKind, Direction, PortDirection};
+use crate::model::{self, documented, non_empty, ActionKind, Direction, PortDirection};
 use crate::readme::Readme;
 use crate::render::facts::{self, BackupRow, Fact};
 use crate::render::neighbourhood::{self as nb, NeighbourRow};
@@ -368,13 +368,15 @@ pub fn component_view<'a>(
         name: c.display_name().into_owned(),
         profile_name: p.name(),
         category: Linked::new(
-            non_empty(&p.basic_info.category).unwrap_or(lang.t("no_category")),
+            // RTCBuilder's placeholder `Category` is in the uncategorised group.
+            documented("category", &p.basic_info.category).unwrap_or(lang.t("no_category")),
             cat.categories
                 .get(category)
                 .map(|_| cat.category_page(category)),
             None,
         ),
-        lead: non_empty(&p.basic_info.description),
+        // RTCBuilder's placeholder `ModuleDescription` is no lead (the basic facts list it).
+        lead: documented("description", &p.basic_info.description),
         basic: facts::basic_info(c, lang),
         vendor: cat.vendors.get(vendor).map(|_| cat.vendor_page(vendor)),
         // A profile of a `[[source]]` repository links into that repository at the pinned

@@ -5,7 +5,7 @@
 use super::Linked;
 use crate::catalog::{Catalog, ComponentIx, Facet, Page, PageKind};
 use crate::i18n::Lang;
-use crate::model::non_empty;
+use crate::model::{documented, non_empty};
 
 /// Which facet a page is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,7 +92,7 @@ pub fn component_rows(
             ComponentRow {
                 ci,
                 name: Linked::new(&c.display_name(), Some(cat.component_page(ci)), None),
-                description: non_empty(&b.description).unwrap_or(""),
+                description: documented("description", &b.description).unwrap_or(""),
                 vendor: non_empty(&b.vendor).unwrap_or(""),
                 version: non_empty(&b.version).unwrap_or(""),
             }

@@ -263,12 +263,12 @@ pub fn row(
     HistoryRow {
         url: e.commit.as_deref().and_then(|commit| url(commit, &e.file)),
         label,
-        date: e
-            .date
-            .as_deref()
-            .or(current_date.filter(|_| e.is_current()))
-            .unwrap_or_default()
-            .to_string(),
+        date: shown_date(
+            e.date
+                .as_deref()
+                .or(current_date.filter(|_| e.is_current()))
+                .unwrap_or_default(),
+        ),
         author: e.author.clone().unwrap_or_default(),
         subject: e.subject.clone().unwrap_or_default(),
         version,
@@ -283,5 +283,20 @@ pub fn row(
             n => Some(lang.t("history_row_more").replace("{n}", &n.to_string())),
         },
         anchor: super::history_page::entry_anchor(e),
+    }
+}
+
+/// A date as the pages show it: as written, in the zone it was written in, except that UTC is
+/// `+00:00` like every other offset. git writes a commit's author date with its own offset
+/// (`2024-01-02T10:00:00+09:00`) but UTC as `Z` (`2024-01-02T01:00:00Z`), and one history mixed
+/// the two forms. A date without a zone (a backup's local time) is left as it is; the JSON keeps
+/// git's text.
+pub fn shown_date(date: &str) -> String {
+    let d = date.trim();
+    match d.strip_suffix(['Z', 'z']) {
+        Some(rest) if rest.len() >= 19 && rest.as_bytes().get(10) == Some(&b'T') => {
+            format!("{rest}+00:00")
+        }
+        _ => d.to_string(),
     }
 }

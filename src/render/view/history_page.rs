@@ -480,7 +480,7 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
                 kind: kind.clone(),
                 anchor: entry_anchor(e),
                 version: e.version.clone().unwrap_or_default(),
-                date: date.clone(),
+                date: super::history::shown_date(&date),
                 label: e.label().to_string(),
                 url: url.clone(),
                 source: source.clone(),
