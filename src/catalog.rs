@@ -1636,7 +1636,8 @@ impl Catalog {
             }
             // Listed case-insensitively (`camera` beside `Camera…`, not after `Z…`), the name
             // as written breaking ties.
-            let mut m: Vec<(String, (Vec<ComponentId>, Vec<String>))> = m.into_iter().collect();
+            type Group = (Vec<ComponentId>, Vec<String>);
+            let mut m: Vec<(String, Group)> = m.into_iter().collect();
             m.sort_by_cached_key(|(name, _)| (name.to_lowercase(), name.clone()));
             let names: Vec<(String, String)> =
                 m.iter().map(|(k, _)| (k.clone(), k.clone())).collect();
