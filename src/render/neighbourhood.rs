@@ -413,11 +413,17 @@ fn own_box(
             let count = lang.count(names.len() as u64, "nb_port_count");
             (count, href(page, Some(section)), None)
         };
+        // The accessible name holds the visible text (`3 ports`), then the ports (WCAG 2.5.3).
+        let label = if single.is_some() {
+            format!("{kind} {me}: {name}")
+        } else {
+            format!("{kind} {me}: {name} ({})", list.join(", "))
+        };
         inst.ports.push(WirePort {
             name,
             class,
             href: link,
-            label: format!("{kind} {me}: {}", list.join(", ")),
+            label,
             unknown: false,
         });
         out.push((*end, inst.ports.len() - 1, single));
