@@ -338,7 +338,7 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # [diff]
 # ignore = ["DIFF3xx"]
 # except = ["DIFF304"]
-# ignore-only = {{ "DIFF103" = ["components/Legacy/**"] }}
+# ignore-only = {{ "DIFF103" = ["Legacy/**"] }}
 # severity = {{ "DIFF201" = "breaking" }}
 
 # Git repositories to document besides (or, without `input`, instead of) the input directory,
@@ -447,7 +447,7 @@ language = "ja"
 # [diff]
 # ignore = ["DIFF3xx"]
 # except = ["DIFF304"]
-# ignore-only = {{ "DIFF103" = ["components/Legacy/**"] }}
+# ignore-only = {{ "DIFF103" = ["Legacy/**"] }}
 # severity = {{ "DIFF201" = "breaking" }}
 
 # 入力ディレクトリに加えて (`input` がなければその代わりに) ドキュメントにする git リポジトリ。
