@@ -57,40 +57,6 @@ pub fn registry_entry<T>(
     })
 }
 
-/// The edit distance between two strings, by characters: insertions, deletions, substitutions
-/// and swaps of two neighbours (`prot` is one edit from `port`) each count one.
-pub fn distance(a: &str, b: &str) -> usize {
-    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
-    // Three rows of the table: two back (for swaps), the last one and the current one.
-    let mut two: Vec<usize> = vec![0; b.len() + 1];
-    let mut last: Vec<usize> = (0..=b.len()).collect();
-    for i in 1..=a.len() {
-        let mut cur = vec![i; b.len() + 1];
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            cur[j] = (last[j - 1] + cost).min(last[j] + 1).min(cur[j - 1] + 1);
-            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
-                cur[j] = cur[j].min(two[j - 2] + 1);
-            }
-        }
-        two = std::mem::replace(&mut last, cur);
-    }
-    last[b.len()]
-}
-
-/// The candidate nearest to `word` (in any case) when it is near enough to be a typo of it: at
-/// most a third of its characters (at least one) differ. The first of equally near ones.
-pub fn nearest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    let w = word.trim().to_lowercase();
-    let limit = (w.chars().count() / 3).max(1);
-    candidates
-        .into_iter()
-        .map(|c| (distance(&w, &c.to_lowercase()), c))
-        .filter(|(d, _)| *d <= limit)
-        .min_by_key(|(d, _)| *d)
-        .map(|(_, c)| c)
-}
-
 /// For serde's `unknown field `titel`, expected one of `title`, …`: `; did you mean `title`?`
 /// when one of the keys is near the unknown one, else nothing.
 pub fn unknown_field_hint(message: &str) -> String {
@@ -101,7 +67,7 @@ pub fn unknown_field_hint(message: &str) -> String {
         return String::new();
     };
     let keys = expected.split('`').skip(1).step_by(2);
-    crate::diagnostic::nearest(unknown, keys)
+    crate::suggest::typo(unknown, keys)
         .map(|k| format!("; did you mean `{k}`?"))
         .unwrap_or_default()
 }
@@ -356,14 +322,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn distances_count_swaps_as_one_edit() {
-        assert_eq!(distance("prot", "port"), 1);
-        assert_eq!(distance("kitten", "sitting"), 3);
-        assert_eq!(distance("", "abc"), 3);
-        assert_eq!(distance("abc", ""), 3);
-        assert_eq!(distance("ignroe", "ignore"), 1);
-        assert_eq!(nearest("prot", ["port", "open"]), Some("port"));
-        assert_eq!(nearest("xyz", ["port", "open"]), None);
+    fn unknown_fields_are_given_their_typo() {
         assert_eq!(
             unknown_field_hint("unknown field `prot`, expected `port` or `open`"),
             "; did you mean `port`?"

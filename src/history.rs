@@ -542,6 +542,36 @@ fn follow_by_id(
     }
 }
 
+/// One entry of a commit's `git log --raw -z` output: `:mode mode old new status`, then the
+/// path.
+struct RawEntry<'a> {
+    old: &'a str,
+    new: &'a str,
+    status: &'a str,
+    path: &'a str,
+}
+
+/// The entries of one commit's `--raw -z` text (what follows its header); `None` when one is
+/// malformed (fewer fields, or no path).
+fn raw_entries(raw: &str) -> Option<Vec<RawEntry<'_>>> {
+    let mut out = Vec::new();
+    let mut parts = raw.trim_start_matches('\n').split('\0');
+    while let Some(meta) = parts.next().filter(|m| m.starts_with(':')) {
+        let mut fields = meta.split(' ').skip(2);
+        let (Some(old), Some(new), Some(status)) = (fields.next(), fields.next(), fields.next())
+        else {
+            return None;
+        };
+        out.push(RawEntry {
+            old,
+            new,
+            status,
+            path: parts.next()?,
+        });
+    }
+    Some(out)
+}
+
 /// The files deleted by each of the `count` commits up to `rev` (newest first): (commit, the
 /// deleted blobs with their paths from the top of the repository); empty when git cannot say.
 fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, String)>)> {
@@ -569,17 +599,12 @@ fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, 
     let mut found = Vec::new();
     for record in text.split('\u{1e}').filter(|r| !r.is_empty()) {
         let (commit, raw) = record.split_once('\0').unwrap_or((record, ""));
-        let mut deleted = Vec::new();
-        let mut parts = raw.trim_start_matches('\n').split('\0');
-        while let Some(meta) = parts.next().filter(|m| m.starts_with(':')) {
-            let fields: Vec<&str> = meta.split(' ').collect();
-            let Some(path) = parts.next() else { break };
-            if let (Some(old), Some(status)) = (fields.get(2), fields.get(4)) {
-                if status.starts_with('D') {
-                    deleted.push((old.to_string(), path.to_string()));
-                }
-            }
-        }
+        let deleted = raw_entries(raw)
+            .unwrap_or_default()
+            .into_iter()
+            .filter(|e| e.status.starts_with('D'))
+            .map(|e| (e.old.to_string(), e.path.to_string()))
+            .collect();
         found.push((commit.trim().to_string(), deleted));
     }
     found
@@ -780,13 +805,10 @@ fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
             return None; // a merge: per-file history simplification differs
         }
         let at = w.commits.len();
-        let mut parts = raw.trim_start_matches('\n').split('\0');
-        while let Some(meta) = parts.next().filter(|m| m.starts_with(':')) {
-            let fields: Vec<&str> = meta.split(' ').collect();
-            let (Some(new), Some(status)) = (fields.get(3), fields.get(4)) else {
-                return None;
-            };
-            let path = parts.next()?;
+        for RawEntry {
+            new, status, path, ..
+        } in raw_entries(raw)?
+        {
             if !(status.starts_with('A')
                 || status.starts_with('M')
                 || status.starts_with('D')

@@ -3,31 +3,50 @@
 //! written — the same but for case, one containing the other, or a few edits away — never just
 //! because it is the least far of unrelated names.
 
-/// The Levenshtein distance between two strings, by characters.
+/// The edit distance between two strings, by characters: insertions, deletions, substitutions
+/// and swaps of two neighbours (`prot` is one edit from `port`) each count one.
 pub fn distance(a: &str, b: &str) -> usize {
     within(a, b, usize::MAX).unwrap_or(usize::MAX)
 }
 
-/// The Levenshtein distance between two strings when it is at most `limit`: a row of the
-/// table whose least value is over the limit ends the computation.
+/// [`distance`] when it is at most `limit`: two rows of the table whose least values are over
+/// the limit (a swap reaches two rows back) end the computation.
 fn within(a: &str, b: &str, limit: usize) -> Option<usize> {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        let mut least = row[0];
-        for (j, cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
-            least = least.min(row[j + 1]);
-            prev = cur;
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    // Three rows of the table: two back (for swaps), the last one and the current one.
+    let mut two: Vec<usize> = vec![0; b.len() + 1];
+    let mut last: Vec<usize> = (0..=b.len()).collect();
+    let mut last_least = 0;
+    for i in 1..=a.len() {
+        let mut cur = vec![i; b.len() + 1];
+        let mut least = i;
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (last[j - 1] + cost).min(last[j] + 1).min(cur[j - 1] + 1);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                cur[j] = cur[j].min(two[j - 2] + 1);
+            }
+            least = least.min(cur[j]);
         }
-        if least > limit {
+        if least > limit && last_least >= limit {
             return None;
         }
+        last_least = least;
+        two = std::mem::replace(&mut last, cur);
     }
-    Some(row[b.len()]).filter(|&d| d <= limit)
+    Some(last[b.len()]).filter(|&d| d <= limit)
+}
+
+/// The candidate nearest to `word` when it is a typo of it ([`Lowered::edits`]: case ignored,
+/// at most a third of its characters, at least one, differ); the first of equally near ones.
+/// What a key or a code of a configuration file is checked against.
+pub fn typo<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let w = Lowered::new(word.trim());
+    candidates
+        .into_iter()
+        .filter_map(|c| w.edits(&Lowered::new(c)).map(|d| (d, c)))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, c)| c)
 }
 
 /// How far `candidate` is from `want` when it is near (case ignored), `None` when it is not:
@@ -102,6 +121,11 @@ mod tests {
     #[test]
     fn distances() {
         assert_eq!(distance("", "abc"), 3);
+        assert_eq!(distance("abc", ""), 3);
+        assert_eq!(distance("prot", "port"), 1);
+        assert_eq!(distance("ignroe", "ignore"), 1);
+        assert_eq!(typo("prot", ["port", "open"]), Some("port"));
+        assert_eq!(typo("xyz", ["port", "open"]), None);
         assert_eq!(distance("kitten", "sitting"), 3);
         assert_eq!(distance("カメラ", "カメラ"), 0);
     }

@@ -118,7 +118,7 @@ pub fn parse(text: &str, shown: &str, reviewed: bool) -> Result<Baseline> {
         let pos = at(spanned.span().start);
         let mut e = spanned.into_inner();
         let Some(c) = codes::code(&e.code) else {
-            let near = crate::diagnostic::nearest(&e.code, codes::CODES.iter().map(|c| c.code))
+            let near = crate::suggest::typo(&e.code, codes::CODES.iter().map(|c| c.code))
                 .map(|n| format!("did you mean `{n}`?"))
                 .unwrap_or_else(|| "`rtcdoc diff --explain CODE` lists them".into());
             bail!("{shown}:{pos}: no change has the code `{}`; {near}", e.code);

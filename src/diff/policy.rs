@@ -88,7 +88,7 @@ impl Selector {
             }
         }
         let candidates = codes::CODES.iter().flat_map(|c| [c.code, c.name]);
-        let hint = match crate::diagnostic::nearest(s, candidates) {
+        let hint = match crate::suggest::typo(s, candidates) {
             Some(near) => format!("did you mean `{near}`?"),
             None => "write a code (`DIFF104`), its name (`data-port-type-changed`) or a category (`DIFF1xx`, `DIFF13x`)".to_string(),
         };
@@ -177,10 +177,9 @@ impl Policy {
         for (key, value) in c.severity.iter().flatten() {
             let sel = selector("severity", key, value.span())?;
             let Some(l) = level(value.get_ref().trim()) else {
-                let near =
-                    crate::diagnostic::nearest(value.get_ref(), ["breaking", "warning", "info"])
-                        .map(|n| format!(" (did you mean `{n}`?)"))
-                        .unwrap_or_default();
+                let near = crate::suggest::typo(value.get_ref(), ["breaking", "warning", "info"])
+                    .map(|n| format!(" (did you mean `{n}`?)"))
+                    .unwrap_or_default();
                 bail!(
                     "{}: [diff] severity: `{key}` = `{}` is no severity{near}; write \"breaking\", \"warning\" or \"info\"",
                     at(value.span()),
