@@ -1609,18 +1609,22 @@ fn gate(
     }
     let shown = |p: &Path| p.display().to_string();
     if let Some(out) = &args.write_baseline {
-        let keep = match (&args.baseline, out.exists()) {
-            (Some(b), _) => Some(baseline::read(b, &shown(b), false)?),
-            (None, true) => Some(baseline::read(out, &shown(out), false).with_context(|| {
+        // The reasons already reviewed are kept: those of --baseline first, then those of the
+        // file being rewritten (a re-run after `git pull` or on a new base keeps them both).
+        let mut keep = Vec::new();
+        if let Some(b) = &args.baseline {
+            keep.push(baseline::read(b, &shown(b), false)?);
+        }
+        if out.exists() && args.baseline.as_deref() != Some(out.as_path()) {
+            keep.push(baseline::read(out, &shown(out), false).with_context(|| {
                 format!(
                     "--write-baseline `{}` exists and is not a baseline: nothing was written; name another file, or remove it",
                     out.display()
                 )
-            })?),
-            (None, false) => None,
-        };
+            })?);
+        }
         let level = fail_on.unwrap_or(rtcdoc::diff::Level::Breaking);
-        let (text, entries, kept) = baseline::write(result, level, keep.as_ref());
+        let (text, entries, kept) = baseline::write(result, level, &keep);
         std::fs::write(out, &text)
             .with_context(|| format!("cannot write the baseline `{}`", out.display()))?;
         if !quiet {

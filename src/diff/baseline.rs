@@ -249,17 +249,15 @@ pub fn apply(diff: &mut Diff, baseline: &Baseline) {
 
 /// The text of a baseline accepting every change of `diff` that counts (or is accepted) and
 /// reaches `level`, sorted; the reason of an entry of `keep` that names the same change is
-/// kept, the others get [`PLACEHOLDER`]. Also the number of entries and of reasons kept.
-pub fn write(diff: &Diff, level: Level, keep: Option<&Baseline>) -> (String, usize, usize) {
-    let reasons: BTreeMap<Key, &str> = keep
-        .map(|b| {
-            b.entries
-                .iter()
-                .filter(|(e, _)| !is_placeholder(&e.reason))
-                .map(|(e, _)| (key_of_entry(e), e.reason.as_str()))
-                .collect()
-        })
-        .unwrap_or_default();
+/// kept (the first baseline of `keep` that gives one wins), the others get [`PLACEHOLDER`].
+/// Also the number of entries and of reasons kept.
+pub fn write(diff: &Diff, level: Level, keep: &[Baseline]) -> (String, usize, usize) {
+    let mut reasons: BTreeMap<Key, &str> = BTreeMap::new();
+    for (e, _) in keep.iter().flat_map(|b| &b.entries) {
+        if !is_placeholder(&e.reason) {
+            reasons.entry(key_of_entry(e)).or_insert(e.reason.as_str());
+        }
+    }
     let mut chosen: BTreeMap<(String, String, String, Key), (&Change, &str)> = BTreeMap::new();
     for (i, c) in diff.changes.iter().enumerate() {
         if c.severity > level || diff.status(i) == &Status::Ignored {

@@ -432,6 +432,46 @@ fn write_baseline_writes_the_failing_changes_sorted_and_keeps_reasons() {
     assert_eq!(std::fs::read_to_string(&other).unwrap(), "title = \"x\"\n");
 }
 
+#[test]
+fn write_baseline_keeps_the_reasons_of_both_the_baseline_and_the_file_it_rewrites() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("baseline.toml");
+    let file_s = file.to_str().unwrap();
+    run(&["--write-baseline", file_s]);
+    let first = std::fs::read_to_string(&file).unwrap();
+    let todo = "reason = \"TODO: why this change is accepted\"";
+    // The released baseline explains the first change; the file being rewritten (a branch's
+    // copy) explains the second. Rewriting the branch's copy against the release keeps both.
+    let released = dir.path().join("released.toml");
+    std::fs::write(&released, first.replacen(todo, "reason = \"from the release\"", 1)).unwrap();
+    let nth = |text: &str, n: usize| text.match_indices(todo).nth(n).unwrap().0;
+    let mut branch = first.clone();
+    branch.replace_range(
+        nth(&first, 1)..nth(&first, 1) + todo.len(),
+        "reason = \"from the branch\"",
+    );
+    std::fs::write(&file, &branch).unwrap();
+    let out = rtcdoc(
+        &[
+            "diff",
+            "old",
+            "new",
+            "--baseline",
+            released.to_str().unwrap(),
+            "--write-baseline",
+            file_s,
+        ],
+        &fixture(),
+    );
+    assert_eq!(out.status.code(), Some(0));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("(2 with the reason it had)"), "{err}");
+    let again = std::fs::read_to_string(&file).unwrap();
+    assert!(again.contains("reason = \"from the release\""), "{again}");
+    assert!(again.contains("reason = \"from the branch\""), "{again}");
+    assert_eq!(again.matches(todo).count(), 1, "{again}");
+}
+
 fn git(dir: &Path, args: &[&str]) -> bool {
     std::process::Command::new("git")
         .args(args)
