@@ -148,6 +148,29 @@ try {
             }
           }
         }
+        // Names in table cells break between their words (`<wbr>` after `::` and `_`, before a
+        // capital that starts a word), never inside one: a run of letters and digits laid out
+        // on two lines although it fits in its cell's width is broken mid-word ("TimedDou /
+        // bleSeq"). A run wider than the cell has to break somewhere.
+        const midword = [];
+        for (const code of document.querySelectorAll('td code, th code')) {
+          const cell = code.closest('td, th');
+          const cs = getComputedStyle(cell);
+          const room = cell.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight);
+          if (room < 2) continue;
+          const walker = document.createTreeWalker(code, NodeFilter.SHOW_TEXT);
+          for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+            for (const m of node.data.matchAll(/[A-Za-z0-9]{2,}/g)) {
+              const range = document.createRange();
+              range.setStart(node, m.index);
+              range.setEnd(node, m.index + m[0].length);
+              const rects = Array.from(range.getClientRects()).filter((r) => r.width > 0);
+              const tops = new Set(rects.map((r) => Math.round(r.top)));
+              const wide = rects.reduce((w, r) => w + r.width, 0);
+              if (tops.size > 1 && wide <= room) midword.push(code.textContent.slice(0, 80));
+            }
+          }
+        }
         // A stacked row (card) labels each cell from data-label: a cell whose content starts
         // with the same label (a description cell's field list) shows it once, not twice.
         const twice = [];
@@ -159,9 +182,9 @@ try {
             twice.push(td.dataset.label);
           }
         }
-        return { width, scrollers, clipped, broken, twice };
+        return { width, scrollers, clipped, broken, midword, twice };
       });
-      report.pages.push({ page: rel, mode: m.name, viewport: m.width, violations: res, width: layout.width, scrollers: m.width < 1000 ? layout.scrollers : [], clipped: layout.clipped, broken: layout.broken, twice: layout.twice });
+      report.pages.push({ page: rel, mode: m.name, viewport: m.width, violations: res, width: layout.width, scrollers: m.width < 1000 ? layout.scrollers : [], clipped: layout.clipped, broken: layout.broken, midword: layout.midword, twice: layout.twice });
     }
   }
   // Search: type QUERY into the search page, wait for results; check ?q= and Enter.

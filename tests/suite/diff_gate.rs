@@ -443,7 +443,11 @@ fn write_baseline_keeps_the_reasons_of_both_the_baseline_and_the_file_it_rewrite
     // The released baseline explains the first change; the file being rewritten (a branch's
     // copy) explains the second. Rewriting the branch's copy against the release keeps both.
     let released = dir.path().join("released.toml");
-    std::fs::write(&released, first.replacen(todo, "reason = \"from the release\"", 1)).unwrap();
+    std::fs::write(
+        &released,
+        first.replacen(todo, "reason = \"from the release\"", 1),
+    )
+    .unwrap();
     let nth = |text: &str, n: usize| text.match_indices(todo).nth(n).unwrap().0;
     let mut branch = first.clone();
     branch.replace_range(

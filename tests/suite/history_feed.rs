@@ -379,7 +379,7 @@ fn systems_and_idl_files_have_history_pages_that_the_pages_link() {
 /// The HTML page of data type `name` below `site`.
 fn type_page(site: &Path, name: &str) -> String {
     for e in std::fs::read_dir(site.join("html/types")).unwrap() {
-        let text = std::fs::read_to_string(e.unwrap().path()).unwrap();
+        let text = common::read_page(&e.unwrap().path());
         if text.contains(&format!("<code>{name}</code></h1>")) {
             return text;
         }
@@ -397,7 +397,7 @@ fn history_promises_are_links(dir: &Path, ext: &str) -> usize {
         if path.extension().and_then(|x| x.to_str()) != Some(ext) {
             continue;
         }
-        let text = std::fs::read_to_string(path).unwrap();
+        let text = common::read_page(path);
         let (open, close) = match ext {
             "html" => ("<section", "</section>"),
             _ => ("\n## ", "\n## "),

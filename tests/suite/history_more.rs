@@ -192,7 +192,7 @@ fn serve_shows_the_history_and_updates_it_after_an_edit() {
     // Only the edited profile's history is read again: a commit to the system file (which
     // this update is not told of) does not show until the system is reloaded.
     let system = repo.join("systems/NavSystem.xml");
-    let text = std::fs::read_to_string(&system).unwrap();
+    let text = common::read_page(&system);
     std::fs::write(&system, format!("{text}\n")).unwrap();
     write(&repo, "Arm/RTC.xml", &edited); // back as committed
     commit(&repo, 7, "Touch the system");
@@ -242,7 +242,7 @@ fn type_page(site: &Path, dir: &str, ext: &str, name: &str) -> String {
     for e in std::fs::read_dir(site.join(dir)).unwrap() {
         let p = e.unwrap().path();
         if p.extension().and_then(|e| e.to_str()) == Some(ext) {
-            let text = std::fs::read_to_string(&p).unwrap();
+            let text = common::read_page(&p);
             if text.contains(&format!("<code>{name}</code></h1>"))
                 || text.contains(&format!("# {name}\n"))
                 || text.contains(&format!("# `{name}`\n"))

@@ -220,7 +220,8 @@ fn audit_with(
 }
 
 /// Every page kind × {light, dark, 390 px, 800 px, 900 px dark}: no axe-core violation (WCAG
-/// 2.0–2.2 A/AA and best practice), no column header with a word broken across lines, at the
+/// 2.0–2.2 A/AA and best practice), no column header with a word broken across lines, no name
+/// in a table cell broken inside one of its words (it breaks at `::`, `_`, camelCase), at the
 /// three narrow widths no page wider than the screen and no region that scrolls sideways (but a
 /// diagram's), and no stacked row (card) that labels a cell twice;
 /// each search's first result is the expected page, shows its kind, `?q=` follows the box and
@@ -254,6 +255,9 @@ fn assert_audit(report: &serde_json::Value, kinds: &[&str]) {
         }
         for w in p["broken"].as_array().into_iter().flatten() {
             problems.push(format!("{page} {mode}: column header word broken: {w}"));
+        }
+        for w in p["midword"].as_array().into_iter().flatten() {
+            problems.push(format!("{page} {mode}: a name broken inside a word: {w}"));
         }
         for l in p["twice"].as_array().into_iter().flatten() {
             problems.push(format!("{page} {mode}: a card labels a cell {l} twice"));

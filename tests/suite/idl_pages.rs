@@ -8,7 +8,7 @@ use common::*;
 use std::path::Path;
 
 fn read(p: &Path) -> String {
-    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+    common::read_page(p)
 }
 
 fn stderr(o: &std::process::Output) -> String {

@@ -14,7 +14,7 @@ use rtcdoc::render::SiteOptions;
 use std::path::PathBuf;
 
 fn read(p: &std::path::Path) -> String {
-    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+    common::read_page(p)
 }
 
 /// The part of `html` from the element with `id` to the end of its section.

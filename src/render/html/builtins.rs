@@ -24,6 +24,18 @@ fn put(out: &mut String, v: &Value) {
 }
 
 /// Appends a value as `{{ v|safe }}` would print it.
+/// `{{ v|wbr }}`: `v` escaped with `<wbr>` between the words of a name.
+fn put_wbr(out: &mut String, v: &Value) {
+    if v.is_undefined() {
+        return;
+    }
+    // Writing to a String cannot fail.
+    let _ = match v.as_str() {
+        Some(s) => crate::render::html::svg::esc_wbr_into(out, s),
+        None => crate::render::html::svg::esc_wbr_into(out, &v.to_string()),
+    };
+}
+
 fn put_raw(out: &mut String, v: &Value) {
     match v.as_str() {
         Some(s) => out.push_str(s),
@@ -64,11 +76,11 @@ pub fn type_link(r: Value) -> Result<Value, Error> {
             out.push_str("<a href=\"");
             put(&mut out, &href);
             out.push_str("\"><code>");
-            put(&mut out, &r.get_attr("text")?);
+            put_wbr(&mut out, &r.get_attr("text")?);
             out.push_str("</code></a>");
         } else {
             out.push_str("<code>");
-            put(&mut out, &r.get_attr("text")?);
+            put_wbr(&mut out, &r.get_attr("text")?);
             out.push_str("</code>");
         }
     }
@@ -113,7 +125,7 @@ mod tests {
     const MACROS: &str = r#"{% macro m_fields(list) %}{% if list %}<dl class="fields">
 {% for f in list %}<dt>{{ f.label }}</dt><dd>{% if f.html %}{{ f.html|safe }}{% else %}{{ f.text }}{% endif %}</dd>
 {% endfor %}</dl>{% endif %}{% endmacro %}
-{%- macro m_type_link(r) %}{% if r %}{% if r.href %}<a href="{{ r.href }}"><code>{{ r.text }}</code></a>{% else %}<code>{{ r.text }}</code>{% endif %}{% endif %}{% endmacro %}
+{%- macro m_type_link(r) %}{% if r %}{% if r.href %}<a href="{{ r.href }}"><code>{{ r.text|wbr }}</code></a>{% else %}<code>{{ r.text|wbr }}</code>{% endif %}{% endif %}{% endmacro %}
 {%- macro m_peers(p) %}{% if p.peers %}<ul class="peers">
 {% for l in p.peers %}<li><a href="{{ l.href }}">{{ l.text }}</a></li>
 {% endfor %}{% if p.peers_more %}<li class="more"><a href="{{ p.peers_more.href }}">{{ p.peers_more.text }}</a></li>
@@ -123,6 +135,7 @@ mod tests {
         let mut env = Environment::new();
         env.set_formatter(super::super::formatter);
         env.add_function("fields", fields);
+        env.add_filter("wbr", super::super::wbr);
         env.add_function("type_link", type_link);
         env.add_function("peers", peers);
         env.add_template("m.html", MACROS).unwrap();

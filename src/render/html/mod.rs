@@ -981,6 +981,7 @@ impl HtmlRenderer {
         env.add_function("type_link", builtins::type_link);
         env.add_function("peers", builtins::peers);
         env.add_filter("code_spans", code_spans);
+        env.add_filter("wbr", wbr);
         env
     }
 }
@@ -1026,6 +1027,19 @@ fn code_spans(s: &str) -> Value {
     let mut out = String::with_capacity(s.len() + 16);
     // Writing to a String cannot fail.
     let _ = svg::esc_code_into(&mut out, s);
+    Value::from_safe_string(out)
+}
+
+/// `{{ name|wbr }}`: the name escaped, with `<wbr>` between its words ([`svg::esc_wbr_into`]);
+/// nothing for an undefined or none value, as `{{ … }}` prints them.
+fn wbr(v: &Value) -> Value {
+    let mut out = String::new();
+    if let Some(s) = v.as_str() {
+        // Writing to a String cannot fail.
+        let _ = svg::esc_wbr_into(&mut out, s);
+    } else if !(v.is_undefined() || v.is_none()) {
+        let _ = svg::esc_wbr_into(&mut out, &v.to_string());
+    }
     Value::from_safe_string(out)
 }
 

@@ -66,6 +66,38 @@ pub fn esc_code_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::
     esc_into(out, &piece)
 }
 
+/// `s` escaped as [`esc_into`] does, with `<wbr>` where a name may break between its words:
+/// after a run of `:` `_` `.` `/` `-` `<` before a letter (`RTC::<wbr>TimedLong`,
+/// `max_<wbr>speed`, `vector<<wbr>double>`), after a comma (`0.1,<wbr>0.2`), before a version after `:` (`Long:<wbr>1.0`), and before a capital that starts a word (`Timed<wbr>Double<wbr>Seq`,
+/// `IOR<wbr>String`). A narrow column then breaks `RTC::TimedDoubleSeq` between words, never
+/// inside one (the cell's `overflow-wrap: break-word` breaks a word only where nothing else
+/// fits). Text, `title` and copied text are unchanged: `<wbr>` is no character.
+pub fn esc_wbr_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
+    let b = s.as_bytes();
+    let sep = |c: u8| matches!(c, b':' | b'_' | b'.' | b'/' | b'-' | b'<');
+    let mut start = 0;
+    for i in 1..b.len() {
+        let (p, c) = (b[i - 1], b[i]);
+        let word_start = if c.is_ascii_uppercase() {
+            p.is_ascii_lowercase()
+                || p.is_ascii_digit()
+                || (p.is_ascii_uppercase() && b.get(i + 1).is_some_and(u8::is_ascii_lowercase))
+                || (sep(p) && i > 1)
+        } else {
+            (c.is_ascii_lowercase() && sep(p) && i > 1)
+                || (p == b',' && c.is_ascii_alphanumeric())
+                || (p == b':' && c.is_ascii_digit() && i > 1)
+        };
+        if word_start {
+            // `i` is at an ASCII byte: both slices end on character boundaries.
+            esc_into(out, &s[start..i])?;
+            out.write_str("<wbr>")?;
+            start = i;
+        }
+    }
+    esc_into(out, &s[start..])
+}
+
 pub fn esc_into<W: std::fmt::Write + ?Sized>(out: &mut W, s: &str) -> std::fmt::Result {
     let b = s.as_bytes();
     let mut start = 0;
@@ -747,6 +779,38 @@ mod tests {
             "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt; \n\t"
         );
         assert_eq!(esc("画<像"), "画&lt;像");
+    }
+
+    #[test]
+    fn names_break_between_their_words() {
+        let w = |s: &str| {
+            let mut out = String::new();
+            esc_wbr_into(&mut out, s).unwrap();
+            out
+        };
+        assert_eq!(
+            w("RTC::TimedDoubleSeq"),
+            "RTC::<wbr>Timed<wbr>Double<wbr>Seq"
+        );
+        assert_eq!(w("IORString"), "IOR<wbr>String");
+        assert_eq!(w("max_speed"), "max_<wbr>speed");
+        assert_eq!(
+            w("Img::CameraCaptureService"),
+            "Img::<wbr>Camera<wbr>Capture<wbr>Service"
+        );
+        assert_eq!(
+            w("IDL:RTC/TimedLong:1.0"),
+            "IDL:<wbr>RTC/<wbr>Timed<wbr>Long:<wbr>1.0"
+        );
+        // Numbers, all-capital and one-word names, and text that is not Latin stay whole.
+        assert_eq!(w("0.5"), "0.5");
+        assert_eq!(w("0.1,0.2"), "0.1,<wbr>0.2");
+        assert_eq!(w("vector<double>"), "vector&lt;<wbr>double&gt;");
+        assert_eq!(w("RTC"), "RTC");
+        assert_eq!(w("velocity"), "velocity");
+        assert_eq!(w("画像_入力"), "画像_入力");
+        assert_eq!(w("<b>&"), "&lt;b&gt;&amp;");
+        assert_eq!(w("_x"), "_x");
     }
 
     #[test]

@@ -140,7 +140,7 @@ pub fn build_source_project(dir: &Path, formats: &str) -> std::path::PathBuf {
 
 /// The text of output file `rel` of `dir`.
 pub fn page(dir: &Path, rel: &str) -> String {
-    std::fs::read_to_string(dir.join(rel)).unwrap_or_else(|e| panic!("{rel}: {e}"))
+    super::read_page(&dir.join(rel))
 }
 
 /// The change codes of a history entry of catalog.json.

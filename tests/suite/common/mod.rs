@@ -139,6 +139,16 @@ pub fn xml_profile(name: &str, ports: &[(&str, &str, &str)]) -> String {
 }
 
 /// Writes `content` to `dir/rel`, creating parents.
+/// A written page as the tests read what it says: its `<wbr>` (the break opportunities the
+/// HTML puts inside names, `RTC::<wbr>Timed<wbr>Long`) are markup, not text, and are left out,
+/// so that an assertion names `<code>RTC::TimedLong</code>` as a reader sees it. The audit of
+/// the browser tests checks the breaks themselves.
+pub fn read_page(p: &Path) -> String {
+    std::fs::read_to_string(p)
+        .unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+        .replace("<wbr>", "")
+}
+
 pub fn write(dir: &Path, rel: &str, content: &str) {
     let p = dir.join(rel);
     std::fs::create_dir_all(p.parent().expect("parent")).expect("mkdir");

@@ -58,6 +58,11 @@ impl Out<'_> {
         }
     }
 
+    /// `{{ s|wbr }}`: escaped, `<wbr>` between the words of a name.
+    fn name(&mut self, s: &str) {
+        let _ = super::svg::esc_wbr_into(&mut self.buf, s);
+    }
+
     /// `{{ s|code_spans }}`: escaped, code spans as `<code>`.
     fn text_with_code(&mut self, s: &str) {
         let _ = super::svg::esc_code_into(&mut self.buf, s);
@@ -112,7 +117,7 @@ impl Out<'_> {
             self.raw("<a href=\"");
             self.text(href);
             self.raw("\"><code>");
-            self.text(text);
+            self.name(text);
             self.raw("</code></a>");
         } else {
             self.code(text);
@@ -131,7 +136,7 @@ impl Out<'_> {
     /// `<code>text</code>`.
     fn code(&mut self, text: &str) {
         self.raw("<code>");
-        self.text(text);
+        self.name(text);
         self.raw("</code>");
     }
 
@@ -178,7 +183,7 @@ impl Out<'_> {
     /// badge, `</th>` and a line break.
     fn name_cell(&mut self, name: &str, since: &Option<String>) {
         self.raw("<th scope=\"row\"><code>");
-        self.text(name);
+        self.name(name);
         self.raw("</code>");
         self.since(since);
         self.raw("</th>\n");
@@ -187,7 +192,7 @@ impl Out<'_> {
     /// `<tr><th scope="row"><code>key</code></th>`: a row of a key-value table opened.
     fn key_row_start(&mut self, key: &str) {
         self.raw("<tr><th scope=\"row\"><code>");
-        self.text(key);
+        self.name(key);
         self.raw("</code></th>");
     }
 
@@ -673,7 +678,7 @@ fn neighbourhood(o: &mut Out<'_>, p: &ComponentPage) {
         o.raw("<li><a href=\"");
         o.text(&r.port.href);
         o.raw("\"><code>");
-        o.text(&r.port.text);
+        o.name(&r.port.text);
         o.raw("</code></a> (");
         o.type_link(&r.type_ref);
         o.raw(") ");
@@ -733,7 +738,7 @@ fn lifecycle(o: &mut Out<'_>, p: &ComponentPage) {
         } else {
             "\" class=\"not-impl\">\n<th scope=\"row\"><code>"
         });
-        o.text(a.name);
+        o.name(a.name);
         o.raw("</code></th>\n");
         o.td("implemented");
         if a.implemented {

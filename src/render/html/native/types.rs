@@ -228,7 +228,7 @@ fn idl_type(o: &mut Out<'_>, ty: &TypeRef, root: &str) {
             o.text(root);
             o.text(page);
             o.raw("\"><code>");
-            o.text(&ty.text);
+            o.name(&ty.text);
             o.raw("</code></a>");
         }
         None => o.code(&ty.text),
@@ -264,7 +264,7 @@ fn idl_definition(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
     o.raw("</span></h2>\n<p class=\"defined-in\">");
     o.label("idl_defined_in");
     o.raw(" <code>");
-    o.text(&def.file);
+    o.name(&def.file);
     o.raw(":");
     o.raw(itoa::Buffer::new().format(def.line));
     o.raw("</code>");
@@ -316,7 +316,7 @@ fn idl_fields(o: &mut Out<'_>, def: &DefinitionView, root: &str) {
             }
             o.td("idl_field");
             o.raw("<code>");
-            o.text(&f.name);
+            o.name(&f.name);
             o.text(&f.array);
             o.raw("</code></td>");
             type_and_doc(o, &f.ty, &f.doc, root);
@@ -420,7 +420,7 @@ fn inherited_item(o: &mut Out<'_>, root: &str, page: Option<&str>, anchor: &str,
             o.raw(anchor);
             o.text(name);
             o.raw("\"><code>");
-            o.text(name);
+            o.name(name);
             o.raw("</code></a>");
         }
         None => o.code(name),
@@ -437,7 +437,7 @@ fn idl_operation(o: &mut Out<'_>, op: &OperationView, root: &str) {
     }
     idl_type(o, &op.returns, root);
     o.raw(" <code><strong>");
-    o.text(&op.name);
+    o.name(&op.name);
     o.raw("</strong>(</code>");
     for (i, p) in op.params.iter().enumerate() {
         o.raw("<code>");
