@@ -29,7 +29,7 @@ fn html_page_draws_and_lists_the_neighbourhood_with_caps_stated() {
         &site.display().to_string(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let page = std::fs::read_to_string(site.join("components/hub.html")).unwrap();
+    let page = common::read_page(&site.join("components/hub.html"));
     let s = page
         .find("<section id=\"neighbourhood\">")
         .expect("section");
@@ -76,7 +76,7 @@ fn html_page_draws_and_lists_the_neighbourhood_with_caps_stated() {
     assert_eq!(boxes, 1 + named.len() + 1, "{sec}");
     assert!(!list.contains("hub.html"), "never its own neighbour");
     // Nobody connects to Lonely: no drawing, a sentence.
-    let lonely = std::fs::read_to_string(site.join("components/lonely.html")).unwrap();
+    let lonely = common::read_page(&site.join("components/lonely.html"));
     let s = lonely.find("<section id=\"neighbourhood\">").unwrap();
     let sec = &lonely[s..s + lonely[s..].find("</section>").unwrap()];
     assert!(!sec.contains("<svg"));
@@ -109,11 +109,11 @@ fn markdown_and_doxygen_have_the_same_table_and_japanese_labels() {
             &out.display().to_string(),
         ]);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        let text = std::fs::read_to_string(out.join(file)).unwrap();
+        let text = common::read_page(&out.join(file));
         assert!(text.contains("Neighbourhood"), "{text}");
         assert!(text.contains(more), "{format}: {text}");
         assert!(text.contains("fed by") && text.contains("feeds"), "{text}");
-        let lonely = std::fs::read_to_string(out.join(file.replace("hub", "lonely"))).unwrap();
+        let lonely = common::read_page(&out.join(file.replace("hub", "lonely")));
         assert!(lonely.contains("No other component in this catalogue connects to it."));
     }
     let cfg = dir.path().join("rtcdoc.toml");
@@ -317,7 +317,7 @@ fn a_generic_type_draws_one_edge_per_neighbour_and_direction() {
         &site.display().to_string(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let page = std::fs::read_to_string(site.join("components/filter.html")).unwrap();
+    let page = common::read_page(&site.join("components/filter.html"));
     let s = page.find("<section id=\"neighbourhood\">").unwrap();
     let sec = &page[s..s + page[s..].find("</section>").unwrap()];
     assert_eq!(sec.matches("<path class=\"connector").count(), 12, "{sec}");

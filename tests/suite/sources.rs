@@ -191,7 +191,7 @@ fn sources_are_pinned_in_the_lock_and_linked_at_their_commit() {
         "https://git.example.org/cam/blob/{commit}/{path}"
     );
     // The Source link of a component points into its own repository at the pinned commit.
-    let page = std::fs::read_to_string(p.proj.join("site/html/components/camera.html")).unwrap();
+    let page = common::read_page(&p.proj.join("site/html/components/camera.html"));
     assert!(
         page.contains(&format!(
             "<a href=\"https://git.example.org/cam/blob/{c1}/Camera/RTC.xml\"><code>camera/Camera/RTC.xml</code></a>"
@@ -206,7 +206,7 @@ fn sources_are_pinned_in_the_lock_and_linked_at_their_commit() {
         "{page}"
     );
     // The index can be filtered by source; the search finds a source's components by its name.
-    let index = std::fs::read_to_string(p.proj.join("site/html/index.html")).unwrap();
+    let index = common::read_page(&p.proj.join("site/html/index.html"));
     assert!(
         index.contains("<option value=\"nav\">nav</option>"),
         "{index}"
@@ -922,7 +922,7 @@ fn whats_new_filters_by_source() {
     ));
     let (code, err) = p.run(&["build", "-f", "html"]);
     assert_eq!(code, 0, "{err}");
-    let page = std::fs::read_to_string(p.proj.join("site/whats-new.html")).unwrap();
+    let page = common::read_page(&p.proj.join("site/whats-new.html"));
     // The filter lists both sources, and each change's row carries its own.
     assert!(page.contains("<select id=\"f-nsource\">"), "{page}");
     for s in ["nav", "camera"] {
