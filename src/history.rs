@@ -230,6 +230,11 @@ struct Repos<'a> {
     /// The work tree around the input directory, if it is in one.
     local: Option<Repo>,
     sources: &'a [crate::sources::Pinned],
+    /// The input directory: a folder below it holding a `.git` of its own (a clone of a
+    /// component's repository among others) is the work tree of the files below it.
+    root: PathBuf,
+    /// The nearest folder below the input with a `.git`, by folder of a file (`None`: none).
+    nested: HashMap<String, Option<String>>,
     /// Why the work tree's histories are cut short (a shallow clone) or missing (a repository
     /// git refuses), for [`Catalog::history_notes`].
     note: Option<String>,
@@ -248,6 +253,8 @@ impl<'a> Repos<'a> {
             list: Vec::new(),
             local: inside.then(|| Repo::WorkTree(roots.local.clone())),
             sources,
+            root: roots.local.clone(),
+            nested: HashMap::new(),
             note,
             failed: Default::default(),
         }
@@ -256,7 +263,10 @@ impl<'a> Repos<'a> {
     /// Git could not give the log of `path` at `rev` of `repo`: `error`.
     fn failed(&self, repo: &Repo, rev: &str, path: &str, error: String) {
         let command = match repo {
-            Repo::WorkTree(_) => format!("`git log --follow -- {path}` in the input directory"),
+            Repo::WorkTree(d) if *d == self.root => {
+                format!("`git log --follow -- {path}` in the input directory")
+            }
+            Repo::WorkTree(d) => format!("`git log --follow -- {path}` in `{}`", d.display()),
             Repo::Mirror(m) => format!(
                 "`git --git-dir {} log --follow {rev} -- {path}`",
                 m.display()
@@ -286,6 +296,33 @@ impl<'a> Repos<'a> {
         catalog.history_notes = notes.into_iter().collect();
     }
 
+    /// The nearest folder of `source` (a path in the input directory) below the input that
+    /// holds a `.git` (a folder, or the file of a linked work tree; never a symbolic link), and
+    /// `source`'s path from it: a folder of clones keeps each clone's history, whether or not
+    /// the input is itself in a work tree.
+    fn nested_repo(&mut self, source: &str) -> Option<(String, String)> {
+        let parts: Vec<&str> = source.split('/').collect();
+        for i in (1..parts.len()).rev() {
+            let folder = parts[..i].join("/");
+            let root = &self.root;
+            let found = self
+                .nested
+                .entry(folder.clone())
+                .or_insert_with(|| {
+                    let dot = root.join(&folder).join(".git");
+                    std::fs::symlink_metadata(&dot)
+                        .ok()
+                        .filter(|m| m.is_dir() || m.is_file())
+                        .map(|_| folder.clone())
+                })
+                .clone();
+            if let Some(dir) = found {
+                return Some((dir, parts[i..].join("/")));
+            }
+        }
+        None
+    }
+
     /// The repository, revision and path of a document read from `origin` (a `[[source]]`) or
     /// from `source` of the input directory; `None` when no repository holds it.
     fn locate(&mut self, origin: Option<&crate::model::Origin>, source: &str) -> Option<Located> {
@@ -298,7 +335,10 @@ impl<'a> Repos<'a> {
                     o.path.clone(),
                 )
             }
-            None => (self.local.clone()?, "HEAD".to_string(), source.to_string()),
+            None => match self.nested_repo(source) {
+                Some((dir, path)) => (Repo::WorkTree(self.root.join(dir)), "HEAD".into(), path),
+                None => (self.local.clone()?, "HEAD".to_string(), source.to_string()),
+            },
         };
         let at = match self.list.iter().position(|r| *r == repo) {
             Some(i) => i,

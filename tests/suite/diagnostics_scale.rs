@@ -40,7 +40,9 @@ fn ten_thousand_profiles_with_findings_make_small_diagnostics_pages() {
         .count();
     assert!(warnings >= 10_000, "{warnings}");
 
-    let bytes = std::fs::metadata(out.join("diagnostics.html")).unwrap().len();
+    let bytes = std::fs::metadata(out.join("diagnostics.html"))
+        .unwrap()
+        .len();
     assert!(bytes < 1_000_000, "diagnostics.html is {bytes} bytes");
     let first = common::read_page(&out.join("diagnostics.html"));
     // Errors first: the broken profile's section is the first one on the first page.

@@ -865,3 +865,78 @@ fn a_folder_renamed_in_two_commits_is_followed_by_its_component_id() {
         "{h:#?}"
     );
 }
+
+/// A lab's folder of clones: the folder is no work tree (or one whose `.gitignore` leaves the
+/// clones out), each clone has a `.git` of its own. Each profile has the history of the clone
+/// holding it, and the IDL file beside it too; before, the folder's histories were empty.
+#[test]
+fn a_folder_of_clones_has_the_history_of_each_clone() {
+    use common::history_repo::{commit_versions, versions};
+    let dir = tempfile::tempdir().unwrap();
+    let lab = dir.path().join("lab");
+    if !commit_versions(&lab.join("base-rtc"), versions()) {
+        crate::common::missing_tool("git not available");
+        return;
+    }
+    let arm: Vec<(&str, String)> = versions()
+        .into_iter()
+        .map(|(s, t)| {
+            (
+                s,
+                with(
+                    &t,
+                    &[
+                        ("rtc:name=\"Base\"", "rtc:name=\"Arm\""),
+                        (":Base:", ":Arm:"),
+                    ],
+                ),
+            )
+        })
+        .collect();
+    let arm_dir = lab.join("clones/arm-rtc");
+    assert!(commit_versions(&arm_dir, arm));
+    write(
+        &arm_dir,
+        "idl/Arm.idl",
+        "module Lab { struct Pose { double x; }; };\n",
+    );
+    commit(&arm_dir, 9, "Add the IDL");
+    write(
+        &arm_dir,
+        "idl/Arm.idl",
+        "module Lab { struct Pose { double x; double y; }; };\n",
+    );
+    commit(&arm_dir, 10, "Pose gains y");
+    let json_of = |input: &Path, out: &Path| -> Value {
+        build(input, out, &["-f", "html,json"]);
+        serde_json::from_slice(&std::fs::read(out.join("json/catalog.json")).unwrap()).unwrap()
+    };
+    let entry_count = |json: &Value, name: &str| {
+        json["components"]
+            .as_object()
+            .unwrap()
+            .values()
+            .find(|c| c["basicInfo"]["name"] == name)
+            .map(|c| c["history"].as_array().map_or(0, Vec::len))
+            .unwrap_or_else(|| panic!("{name} in catalog.json"))
+    };
+    let out = dir.path().join("site");
+    let json = json_of(&lab, &out);
+    assert_eq!(entry_count(&json, "Base"), 4, "{}", json["components"]);
+    assert_eq!(entry_count(&json, "Arm"), 4);
+    let arm_page = page(&out, "html/history/arm.html");
+    assert!(
+        arm_page.contains("Rename cmd") && arm_page.contains("First version"),
+        "{arm_page}"
+    );
+    let idl = serde_json::to_string(&json["idl"]["files"]).unwrap();
+    assert!(idl.contains("Pose gains y"), "{idl}");
+    // The folder itself a work tree that ignores the clones: still each clone's own history.
+    assert!(init(&lab));
+    write(&lab, ".gitignore", "base-rtc/\nclones/\n");
+    write(&lab, "README.md", "The lab's components.\n");
+    commit(&lab, 20, "The catalogue");
+    let json = json_of(&lab, &dir.path().join("site2"));
+    assert_eq!(entry_count(&json, "Base"), 4);
+    assert_eq!(entry_count(&json, "Arm"), 4);
+}
