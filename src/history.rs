@@ -235,6 +235,8 @@ struct Repos<'a> {
     root: PathBuf,
     /// The nearest folder below the input with a `.git`, by folder of a file (`None`: none).
     nested: HashMap<String, Option<String>>,
+    /// The shallow clones among them (`.git/shallow`): their histories are cut short.
+    shallow: std::collections::BTreeSet<String>,
     /// Why the work tree's histories are cut short (a shallow clone) or missing (a repository
     /// git refuses), for [`Catalog::history_notes`].
     note: Option<String>,
@@ -255,6 +257,7 @@ impl<'a> Repos<'a> {
             sources,
             root: roots.local.clone(),
             nested: HashMap::new(),
+            shallow: Default::default(),
             note,
             failed: Default::default(),
         }
@@ -281,6 +284,14 @@ impl<'a> Repos<'a> {
     /// Hands the notes to the catalogue: one for all the files whose log git could not give.
     fn finish(self, catalog: &mut Catalog) {
         let mut notes: std::collections::BTreeSet<String> = self.note.into_iter().collect();
+        if let Some(first) = self.shallow.iter().next() {
+            let at = self.root.join(first);
+            let at = at.display();
+            notes.insert(match self.shallow.len() {
+                1 => format!("the clone `{first}` is a shallow clone: its histories start at its oldest commit, not where the file began; fetch its whole history (`git -C {at} fetch --unshallow`)"),
+                n => format!("{n} clones (the first, `{first}`) are shallow clones: their histories start at their oldest commit, not where the file began; fetch the whole history of each (`git -C {at} fetch --unshallow`)"),
+            });
+        }
         let failed = self.failed.into_inner().unwrap_or_else(|e| e.into_inner());
         if let Some((path, (command, error))) = failed.iter().next() {
             notes.insert(match failed.len() {
@@ -304,16 +315,17 @@ impl<'a> Repos<'a> {
         let parts: Vec<&str> = source.split('/').collect();
         for i in (1..parts.len()).rev() {
             let folder = parts[..i].join("/");
-            let root = &self.root;
+            let (root, shallow) = (&self.root, &mut self.shallow);
             let found = self
                 .nested
                 .entry(folder.clone())
                 .or_insert_with(|| {
                     let dot = root.join(&folder).join(".git");
-                    std::fs::symlink_metadata(&dot)
-                        .ok()
-                        .filter(|m| m.is_dir() || m.is_file())
-                        .map(|_| folder.clone())
+                    let meta = std::fs::symlink_metadata(&dot).ok()?;
+                    if meta.is_dir() && dot.join("shallow").is_file() {
+                        shallow.insert(folder.clone());
+                    }
+                    (meta.is_dir() || meta.is_file()).then(|| folder.clone())
                 })
                 .clone();
             if let Some(dir) = found {

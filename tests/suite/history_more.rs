@@ -939,4 +939,66 @@ fn a_folder_of_clones_has_the_history_of_each_clone() {
     let json = json_of(&lab, &dir.path().join("site2"));
     assert_eq!(entry_count(&json, "Base"), 4);
     assert_eq!(entry_count(&json, "Arm"), 4);
+    // A shallow clone among them: its history is cut short, and the warning's command mends it.
+    let base = lab.join("base-rtc");
+    let url = format!("file://{}", base.display());
+    let shallow = lab.join("shallow-rtc");
+    let cloned = std::process::Command::new("git")
+        .args(["clone", "-q", "--depth", "1", &url])
+        .arg(&shallow)
+        .status()
+        .unwrap();
+    assert!(cloned.success());
+    write(&lab, ".gitignore", "base-rtc/\nclones/\nshallow-rtc/\n");
+    let _ = std::fs::remove_dir_all(base.join("Base"));
+    assert!(std::process::Command::new("git")
+        .args(["rm", "-q", "-r", "Base"])
+        .current_dir(&base)
+        .status()
+        .unwrap()
+        .success());
+    commit(&base, 21, "Moved to shallow-rtc");
+    let site3 = dir.path().join("site3");
+    let o = common::rtcdoc(
+        &["build", ".", "-o", site3.to_str().unwrap(), "-f", "json"],
+        &lab,
+    );
+    assert!(o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("the clone `shallow-rtc` is a shallow clone"),
+        "{err}"
+    );
+    let json: Value =
+        serde_json::from_slice(&std::fs::read(site3.join("catalog.json")).unwrap()).unwrap();
+    assert_eq!(
+        entry_count(&json, "Base"),
+        1,
+        "one commit in the shallow clone"
+    );
+    // The command the warning gives, run as written where rtcdoc ran.
+    let hint = err
+        .split("(`git ")
+        .nth(1)
+        .and_then(|r| r.split("`)").next())
+        .unwrap_or_else(|| panic!("a git command in {err}"));
+    assert!(hint.ends_with("fetch --unshallow"), "{hint}");
+    assert!(std::process::Command::new("git")
+        .args(hint.split(' '))
+        .current_dir(&lab)
+        .status()
+        .unwrap()
+        .success());
+    let o = common::rtcdoc(
+        &["build", ".", "-o", site3.to_str().unwrap(), "-f", "json"],
+        &lab,
+    );
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("shallow clone"));
+    let json: Value =
+        serde_json::from_slice(&std::fs::read(site3.join("catalog.json")).unwrap()).unwrap();
+    assert_eq!(
+        entry_count(&json, "Base"),
+        4,
+        "the whole history after the hint"
+    );
 }
