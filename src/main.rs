@@ -232,7 +232,7 @@ struct CheckArgs {
     /// folder, else `.`].
     paths: Vec<PathBuf>,
     /// Output format: human (rustc-like, on stderr), json or sarif (on stdout).
-    #[arg(long, value_enum, default_value = "human")]
+    #[arg(short, long, value_enum, default_value = "human")]
     format: CheckFormat,
     /// Treat a class of findings as errors for the exit status (`--deny warnings`).
     #[arg(long, value_enum, value_name = "WHAT")]
@@ -285,7 +285,7 @@ struct DiffArgs {
     write_baseline: Option<PathBuf>,
     /// Output format: human (coloured), json, markdown (a pull-request comment) or github
     /// (workflow annotations); all on stdout.
-    #[arg(long, value_enum, default_value = "human")]
+    #[arg(short, long, value_enum, default_value = "human")]
     format: rtcdoc::diff::report::OutputFormat,
     /// The least severe change that makes the exit status 1.
     #[arg(long, value_enum, value_name = "LEVEL", default_value = "breaking")]

@@ -341,3 +341,19 @@ fn a_command_that_hangs_fails_its_test() {
         .arg("30")
         .output_within(std::time::Duration::from_secs(1));
 }
+
+/// `-f` names the output format of every command that has one, as `build -f json` does: a
+/// newcomer's `rtcdoc check -f json` and `rtcdoc diff A B -f json` were refused before.
+#[test]
+fn f_is_the_format_of_check_and_diff_too() {
+    let examples = root().join("examples");
+    let out = rtcdoc(&["check", "examples", "-f", "json"], &root());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
+    assert!(json["diagnostics"].is_array(), "{json}");
+    let e = examples.to_str().unwrap();
+    let out = rtcdoc(&["diff", e, e, "-f", "json"], &root());
+    assert_eq!(out.status.code(), Some(0));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["summary"]["breaking"], 0, "{json}");
+}
