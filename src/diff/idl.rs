@@ -187,10 +187,24 @@ fn find<'s>(set: &'s IdlSet, name: &str) -> Option<IdlItem<'s>> {
 }
 
 fn compare_type(old: &IdlSet, new: &IdlSet, name: &str) -> Outcome {
+    compare_type_past(old, new, name, &BTreeSet::new())
+}
+
+/// [`compare_type`], with the definitions of `reported` (compared already, their changes
+/// reported where they were met: through a port) not compared again inside `name`.
+fn compare_type_past(
+    old: &IdlSet,
+    new: &IdlSet,
+    name: &str,
+    reported: &BTreeSet<String>,
+) -> Outcome {
     let mut cmp = Cmp {
         old,
         new,
-        out: Outcome::default(),
+        out: Outcome {
+            visited: reported.clone(),
+            ..Outcome::default()
+        },
         stack: Vec::new(),
         budget: BUDGET,
     };
@@ -446,7 +460,10 @@ impl<'s> Cmp<'s> {
     fn def(&mut self, p: &P, o: IdlItem<'s>, n: IdlItem<'s>, top: bool) {
         let (od, nd) = (o.definition, n.definition);
         let name = nd.scoped_name().to_string();
-        if self.stack.contains(&name) {
+        // A definition met again inside the same type (an enum every operation returns, a
+        // struct two members hold) was compared where it was first met: its changes are
+        // reported once, there, not once per use.
+        if self.stack.contains(&name) || (!top && self.out.visited.contains(&name)) {
             return;
         }
         let stop = if self.budget == 0 {
@@ -1446,12 +1463,11 @@ pub(super) fn unused_types(
         return counts;
     }
     counts.matched = o.keys().filter(|k| n.contains_key(*k)).count();
-    let through_ports = |name: &str| compared.visited.contains(name);
     let mut changed = compare_defined(
         (old, &o, old_name),
         (new, &n, new_name),
         None,
-        &through_ports,
+        &compared.visited,
         out,
     );
     changed.extend(
@@ -1565,19 +1581,24 @@ fn compare_defined(
     (old, od, old_name): DefSide,
     (new, nd, new_name): DefSide,
     label: Option<&str>,
-    skip: &dyn Fn(&str) -> bool,
+    through_ports: &BTreeSet<String>,
     out: &mut Vec<Change>,
 ) -> BTreeSet<String> {
     let known = |p: &crate::model::Pos| (!p.is_unknown()).then_some(*p);
     let mut changed = BTreeSet::new();
+    // Each definition's changes are reported once, at its own path: those compared through a
+    // port there, the others here on their own, never again inside the definitions using them
+    // (an enum every operation of three interfaces returns).
+    let mut own = through_ports.clone();
+    own.extend(nd.keys().filter(|k| od.contains_key(*k)).cloned());
     for (name, (nfile, npos)) in nd {
         let Some((ofile, _)) = od.get(name) else {
             continue;
         };
-        if skip(name) {
+        if through_ports.contains(name) {
             continue;
         }
-        let outcome = compare_type(old, new, name);
+        let outcome = compare_type_past(old, new, name, &own);
         if outcome.findings.is_empty() {
             continue;
         }
@@ -1622,7 +1643,7 @@ pub fn compare_idl_files(old: &IdlSet, new: &IdlSet, label: &str) -> Vec<Change>
         (old, &o, &same),
         (new, &n, &same),
         Some(label),
-        &|_| false,
+        &BTreeSet::new(),
         &mut out,
     );
     types_on_one_side((&o, &same), (&n, &same), Some(label), &|_| false, &mut out);

@@ -96,10 +96,9 @@ const CASES: &[Case] = &[
         code: "DIFF134",
         path: "dataPorts/odometry/type/fields/pose.heading",
         component: NAV,
-        // odometry's pose and history[], setOrigin's origin, plan's goal and path[].
-        all: &[
-            "DIFF134", "DIFF134", "DIFF134", "DIFF134", "DIFF134", "DIFF208",
-        ],
+        // Once per port or interface, where the type is first met: odometry's pose (not
+        // again in history[]), setOrigin's origin, plan's goal (not again in path[]).
+        all: &["DIFF134", "DIFF134", "DIFF134", "DIFF208"],
         file: NAV_RTC,
         says: "member `heading` of `Nav::Pose2D` is now `float` instead of `double`",
     },
