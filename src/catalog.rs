@@ -27,6 +27,7 @@ pub mod history;
 pub mod implementations;
 pub mod neighbourhood;
 pub mod pages;
+pub mod reach;
 pub mod readmes;
 pub mod sources;
 pub mod systems;

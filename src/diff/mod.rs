@@ -24,6 +24,7 @@ pub mod codes;
 mod constraint;
 mod drift;
 mod idl;
+pub mod impact;
 pub mod policy;
 pub mod report;
 pub mod side;
@@ -79,6 +80,9 @@ pub struct Diff {
     /// The baseline file applied, as the user named it.
     #[serde(skip)]
     pub baseline: Option<String>,
+    /// What the catalogues say the changes reach ([`impact`]; [`Diff::impact`] sums it up).
+    #[serde(skip)]
+    pub facts: impact::Facts,
 }
 
 /// Counts of a set of changes.
@@ -320,6 +324,7 @@ pub fn diff_with_systems(
     }
     pair_renamed(&mut groups, (old, new));
     let mut out = Vec::new();
+    let mut labels = impact::Labels::new();
     let mut counts = Counts {
         old: old.components.len(),
         new: new.components.len(),
@@ -351,6 +356,7 @@ pub fn diff_with_systems(
                     let (oc, nc) = (&old.components[o], &new.components[n]);
                     let before = out.len();
                     let component = label(&new_ids[n], nc);
+                    labels.insert(component.clone(), (Some(o), Some(n)));
                     compare(
                         &component,
                         (&oc.profile, &old_ids[o], &old_name(&oc.source)),
@@ -374,6 +380,7 @@ pub fn diff_with_systems(
                     counts.removed += 1;
                     let c = &old.components[o];
                     breaks.note_removed(&old_ids[o].key, &label(&old_ids[o], c));
+                    labels.insert(label(&old_ids[o], c), (Some(o), None));
                     let at = Some(c.profile.pos).filter(|p| !p.is_unknown());
                     out.push(Change {
                         old_file: Some(old_name(&c.source)),
@@ -392,6 +399,7 @@ pub fn diff_with_systems(
                 (None, Some(n)) => {
                     counts.added += 1;
                     let c = &new.components[n];
+                    labels.insert(label(&new_ids[n], c), (None, Some(n)));
                     out.push(Change {
                         file: Some(new_name(&c.source)),
                         line: Some(c.profile.pos.line).filter(|l| *l > 0),
@@ -457,6 +465,7 @@ pub fn diff_with_systems(
     );
     sort(&mut out);
     Diff {
+        facts: impact::Facts::of(old, new, &out, &labels),
         changes: out,
         components: counts,
         systems: system_counts,

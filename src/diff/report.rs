@@ -9,7 +9,11 @@
 //!               "old": s|null, "new": s|null, "message",
 //!               "file": s|null, "line": n|null, "column": n|null, "oldFile": s|null,
 //!               "oldLine"?: n, "oldColumn"?: n,
-//!               "status"?: "accepted|ignored", "reason"?: s, "defaultSeverity"?: s}],
+//!               "status"?: "accepted|ignored", "reason"?: s, "defaultSeverity"?: s,
+//!               "reach"?: [{"component", "role": "producer|consumer|provider|requirer|other"}]}],
+//!  "impact": {"connectors": n, "systems": [{"system", "connectors"}],
+//!             "lostProducers": [{"type", "components": [id]}], "lostProviders": [same],
+//!             "reached": [id], "summary": s|null},
 //!  "baseline": s|null,
 //!  "stale": [{"code", "component", "element", "old"?, "new"?, "file"?, "message"?, "reason",
 //!             "at", "line", "column"}],
@@ -22,7 +26,8 @@
 //! ```
 //!
 //! The counts of the summary (and `byCode`) are of the changes that count: a change a baseline
-//! accepts or the `[diff]` policy ignores is listed with its `status`, and counted apart.
+//! accepts or the `[diff]` policy ignores is listed with its `status`, and counted apart; so is
+//! the `impact` (a change's `reach` is given whatever its standing; see [`super::impact`]).
 
 use super::{Change, Diff, Level, Status};
 use codespan_reporting::term::termcolor::{Color, ColorSpec, WriteColor};
@@ -59,6 +64,10 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
                 }
                 if let Some(d) = diff.default_severity(i) {
                     o.insert("defaultSeverity".into(), json!(d));
+                }
+                let reach = diff.reach(i);
+                if !reach.is_empty() {
+                    o.insert("reach".into(), json!(reach));
                 }
             }
             v
@@ -98,6 +107,7 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
         "old": old,
         "new": new,
         "changes": changes,
+        "impact": diff.impact(),
         "baseline": diff.baseline,
         "stale": stale,
         "summary": {
@@ -172,20 +182,20 @@ fn by_component(diff: &Diff, ignored: bool) -> Vec<(&str, Vec<Shown<'_>>)> {
             groups
                 .entry(c.component.as_str())
                 .or_default()
-                .push((c, status));
+                .push((c, status, i));
         }
     }
     let mut out: Vec<(&str, Vec<Shown>)> = groups.into_iter().collect();
     for (_, v) in &mut out {
-        v.sort_by(|(a, _), (b, _)| {
+        v.sort_by(|(a, _, _), (b, _, _)| {
             (a.severity, &a.path, a.code).cmp(&(b.severity, &b.path, b.code))
         });
     }
     out.sort_by(|a, b| {
         let worst = |v: &[Shown]| {
             v.iter()
-                .filter(|(_, s)| **s == Status::Counts)
-                .map(|(c, _)| c.severity)
+                .filter(|(_, s, _)| **s == Status::Counts)
+                .map(|(c, _, _)| c.severity)
                 .min()
         };
         let worst = |v: &[Shown]| worst(v).map_or((1, Level::Info), |l| (0, l));
@@ -194,7 +204,8 @@ fn by_component(diff: &Diff, ignored: bool) -> Vec<(&str, Vec<Shown<'_>>)> {
     out
 }
 
-type Shown<'a> = (&'a Change, &'a Status);
+/// A change shown, its standing and its position in the changes.
+type Shown<'a> = (&'a Change, &'a Status, usize);
 
 /// `accepted (baseline): REASON` or `ignored (policy)` for a change that does not count.
 fn standing_note(status: &Status) -> Option<String> {
@@ -335,6 +346,7 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
         systems_line(diff),
         idl_line(diff)
     );
+    out.push_str(&markdown_impact(diff));
     let stale = markdown_stale(diff);
     if diff.changes.is_empty() {
         out.push_str("No changes.\n");
@@ -350,7 +362,7 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
         );
     }
     for (i, (component, changes)) in groups.iter().enumerate() {
-        let section = markdown_section(component, changes);
+        let section = markdown_section(component, changes, diff);
         if out.len() + section.len() + stale.len() > MARKDOWN_LIMIT {
             let _ = writeln!(
                 out,
@@ -365,8 +377,55 @@ pub fn to_markdown(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) ->
     out
 }
 
+/// The impact of the changes that count, as a list (nothing when they reach nothing), and the
+/// reach of each change, folded.
+fn markdown_impact(diff: &Diff) -> String {
+    let impact = diff.impact();
+    let parts = impact.parts();
+    if parts.is_empty() {
+        return String::new();
+    }
+    let mut out = String::from("**Impact:**\n\n");
+    for p in &parts {
+        let _ = writeln!(out, "- {}", item(p));
+    }
+    out.push('\n');
+    let reaching: Vec<(usize, &Change)> = diff
+        .changes
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !diff.reach(*i).is_empty())
+        .collect();
+    if !reaching.is_empty() {
+        let _ = writeln!(
+            out,
+            "<details><summary>What each change reaches</summary>\n"
+        );
+        for (i, c) in reaching {
+            let line = super::impact::reach_line(diff.reach(i), true).unwrap_or_default();
+            let _ = writeln!(
+                out,
+                "- {} {} {} — {}",
+                c.code,
+                code_span(&single_line(&c.component), false),
+                code_span(&single_line(&c.path), false),
+                item(&line)
+            );
+        }
+        out.push_str("\n</details>\n\n");
+    }
+    out
+}
+
+/// ` — reaches 2 components` after the message of the `i`-th change in the Markdown report, or nothing.
+fn reach_note(diff: &Diff, i: usize) -> String {
+    super::impact::reach_line(diff.reach(i), false)
+        .map(|l| format!(" — {l}"))
+        .unwrap_or_default()
+}
+
 /// The section of one component in the Markdown report.
-fn markdown_section(component: &str, changes: &[Shown]) -> String {
+fn markdown_section(component: &str, changes: &[Shown], diff: &Diff) -> String {
     let mut section = String::new();
     let title = if component.is_empty() {
         "Inputs".to_string()
@@ -376,12 +435,12 @@ fn markdown_section(component: &str, changes: &[Shown]) -> String {
     let count = |l: Level| {
         changes
             .iter()
-            .filter(|(c, s)| c.severity == l && **s == Status::Counts)
+            .filter(|(c, s, _)| c.severity == l && **s == Status::Counts)
             .count()
     };
     let accepted = changes
         .iter()
-        .filter(|(_, s)| matches!(s, Status::Accepted(_)))
+        .filter(|(_, s, _)| matches!(s, Status::Accepted(_)))
         .count();
     let _ = writeln!(
         section,
@@ -397,19 +456,20 @@ fn markdown_section(component: &str, changes: &[Shown]) -> String {
     );
     let serious: Vec<&Shown> = changes
         .iter()
-        .filter(|(c, _)| c.severity != Level::Info)
+        .filter(|(c, _, _)| c.severity != Level::Info)
         .collect();
     if !serious.is_empty() {
         section.push_str("| | Code | Path | Old | New | What |\n|---|---|---|---|---|---|\n");
-        for (ch, status) in serious {
+        for (ch, status, i) in serious {
+            let reach = reach_note(diff, *i);
             let (mark, what) = match standing_note(status) {
                 Some(note) => (
                     format!("✅ {} (accepted)", ch.severity),
-                    format!("{} — {note}", ch.message),
+                    format!("{}{reach} — {note}", ch.message),
                 ),
                 None => (
                     format!("{} {}", icon(ch.severity), ch.severity),
-                    ch.message.clone(),
+                    format!("{}{reach}", ch.message),
                 ),
             };
             let _ = writeln!(
@@ -427,7 +487,7 @@ fn markdown_section(component: &str, changes: &[Shown]) -> String {
     }
     let infos: Vec<&Shown> = changes
         .iter()
-        .filter(|(c, _)| c.severity == Level::Info)
+        .filter(|(c, _, _)| c.severity == Level::Info)
         .collect();
     if !infos.is_empty() {
         let _ = writeln!(
@@ -435,7 +495,7 @@ fn markdown_section(component: &str, changes: &[Shown]) -> String {
             "<details><summary>{} informational change(s)</summary>\n",
             infos.len()
         );
-        for (ch, status) in infos {
+        for (ch, status, i) in infos {
             let path = if ch.path.is_empty() {
                 String::new()
             } else {
@@ -450,7 +510,7 @@ fn markdown_section(component: &str, changes: &[Shown]) -> String {
                 ch.code,
                 path,
                 ch.name,
-                item(&format!("{}{note}", ch.message))
+                item(&format!("{}{}{note}", ch.message, reach_note(diff, *i)))
             );
         }
         section.push_str("\n</details>\n\n");
@@ -509,6 +569,14 @@ fn gh_prop(s: &str) -> String {
 /// entry; then the summary. The changes the policy ignores are only counted.
 pub fn to_github(diff: &Diff) -> String {
     let mut out = String::new();
+    if let Some(summary) = diff.impact().summary {
+        let _ = writeln!(
+            out,
+            "::notice title={}::{}",
+            gh_prop("rtcdoc diff impact"),
+            gh_data(&summary)
+        );
+    }
     for (i, c) in diff.changes.iter().enumerate() {
         let status = diff.status(i);
         let cmd = match (status, c.severity) {
@@ -589,10 +657,13 @@ pub fn write_human(
     verbosity: Verbosity,
     revs: [&str; 2],
 ) -> std::io::Result<()> {
+    if verbosity != Verbosity::Quiet {
+        write_human_impact(out, diff, verbosity)?;
+    }
     for (component, changes) in by_component(diff, verbosity == Verbosity::Verbose) {
         let shown: Vec<&Shown> = changes
             .iter()
-            .filter(|(c, s)| {
+            .filter(|(c, s, _)| {
                 verbosity != Verbosity::Quiet
                     || (c.severity == Level::Breaking && **s == Status::Counts)
             })
@@ -611,8 +682,12 @@ pub fn write_human(
             }
         )?;
         out.reset()?;
-        for (c, status) in shown {
+        for (c, status, i) in shown {
             write_human_change(out, c, status, revs)?;
+            let names = verbosity == Verbosity::Verbose;
+            if let Some(line) = super::impact::reach_line(diff.reach(*i), names) {
+                writeln!(out, "      {line}")?;
+            }
         }
     }
     if verbosity != Verbosity::Quiet {
@@ -625,6 +700,39 @@ pub fn write_human(
         writeln!(out, "rtcdoc diff: {}", one_line(diff))?;
     }
     Ok(())
+}
+
+/// `Impact: …` (bold), the summary of [`Diff::impact`], before the list (nothing when the
+/// changes reach nothing); with [`Verbosity::Verbose`], the components of each lost type.
+fn write_human_impact(
+    out: &mut dyn WriteColor,
+    diff: &Diff,
+    verbosity: Verbosity,
+) -> std::io::Result<()> {
+    let impact = diff.impact();
+    let Some(summary) = &impact.summary else {
+        return Ok(());
+    };
+    out.set_color(ColorSpec::new().set_bold(true))?;
+    write!(out, "Impact:")?;
+    out.reset()?;
+    writeln!(out, " {summary}")?;
+    if verbosity == Verbosity::Verbose {
+        for (lost, what) in [
+            (&impact.lost_producers, "consumed"),
+            (&impact.lost_providers, "required"),
+        ] {
+            for l in lost {
+                writeln!(
+                    out,
+                    "  {} is still {what} by {}",
+                    l.type_name,
+                    l.components.join(", ")
+                )?;
+            }
+        }
+    }
+    writeln!(out)
 }
 
 /// One change of the human report.

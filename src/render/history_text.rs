@@ -89,7 +89,10 @@ fn history_item<M: Markup>(
                         Some(t) => M::page_link(cat, v.page, cat.type_page(t), None, &c.path),
                         None => M::esc(&c.path),
                     },
-                    M::message(&c.message),
+                    match &c.reach {
+                        Some(reach) => format!("{} — {}", M::message(&c.message), M::esc(reach)),
+                        None => M::message(&c.message),
+                    },
                 ]
             })
             .collect();

@@ -21,6 +21,7 @@ mod diff_drift;
 mod diff_fixtures;
 mod diff_gate;
 mod diff_idl;
+mod diff_impact;
 mod function_length;
 mod guide_commands;
 mod hints;

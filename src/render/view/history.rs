@@ -27,6 +27,11 @@ pub struct ChangeRow {
     /// The data type or interface an IDL file's change is to, when it has a page.
     #[serde(skip)]
     pub about: Option<crate::catalog::TypeIx>,
+    /// The other components of the catalogue that the change reaches (they use the port's
+    /// type, the interface or the IDL definition it is to), as the history page says it
+    /// ([`reach_text`]); `None` on the other pages and for a change that reaches none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reach: Option<String>,
     /// The link to that page, from the page showing the change (set by the HTML writer).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub href: Option<String>,
@@ -37,10 +42,10 @@ pub struct ChangeRow {
 }
 
 impl ChangeRow {
-    /// The row of change `c`, about the type `about` (an IDL file's change).
+    /// The row of change `c`, about the type `about` (an IDL file's change), reaching `reach`.
     pub fn of(
         c: &crate::catalog::history::Change,
-        about: Option<crate::catalog::TypeIx>,
+        (about, reach): (Option<crate::catalog::TypeIx>, Option<String>),
         lang: Lang,
     ) -> ChangeRow {
         ChangeRow {
@@ -50,6 +55,7 @@ impl ChangeRow {
             path: c.path.clone(),
             message: c.message.clone(),
             about,
+            reach,
             href: None,
             html: words_html(c),
         }
@@ -92,12 +98,18 @@ fn words_html(c: &crate::catalog::history::Change) -> Option<String> {
     Some(out)
 }
 
+/// What a history page says of each change beside its message: the type it is to (an IDL
+/// file's change) and what it reaches ([`reach_text`]).
+pub type Annotate<'a> = &'a dyn Fn(
+    &crate::catalog::history::Change,
+) -> (Option<crate::catalog::TypeIx>, Option<String>);
+
 /// The rows of a version's changes: breaking first, then warnings, then the rest, each in the
-/// diff's order (by path), as `rtcdoc diff` lists them; `about` names the type of each
-/// change (an IDL file's).
+/// diff's order (by path), as `rtcdoc diff` lists them; `annotate` names the type of each
+/// change (an IDL file's) and its reach.
 pub fn by_severity(
     changes: &[crate::catalog::history::Change],
-    about: &dyn Fn(&crate::catalog::history::Change) -> Option<crate::catalog::TypeIx>,
+    annotate: Annotate,
     lang: Lang,
 ) -> Vec<ChangeRow> {
     let rank = |c: &crate::catalog::history::Change| match c.severity.as_str() {
@@ -109,7 +121,7 @@ pub fn by_severity(
     sorted.sort_by_key(|c| rank(c));
     sorted
         .into_iter()
-        .map(|c| ChangeRow::of(c, about(c), lang))
+        .map(|c| ChangeRow::of(c, annotate(c), lang))
         .collect()
 }
 
@@ -273,7 +285,7 @@ pub fn row(
         subject: e.subject.clone().unwrap_or_default(),
         version,
         summary,
-        changes: by_severity(&e.changes[..], &|_| None, lang)
+        changes: by_severity(&e.changes[..], &|_| (None, None), lang)
             .into_iter()
             .take(ROW_CHANGES)
             .collect(),
@@ -284,6 +296,60 @@ pub fn row(
         },
         anchor: super::history_page::entry_anchor(e),
     }
+}
+
+/// The reach of change `c` of the history of `of` in the catalogue of the build, as the
+/// history pages say it: `Reaches 2 other components: Mapper (consumer), Avoider (consumer)`
+/// (the components that use the port's type, the interface or the IDL definition the change
+/// is to, today: [`crate::catalog::reach`]); `None` when it reaches none.
+pub fn reach_text(
+    cat: &crate::catalog::Catalog,
+    of: crate::catalog::history::HistoryOf,
+    c: &crate::catalog::history::Change,
+    lang: Lang,
+) -> Option<String> {
+    use crate::catalog::history::HistoryOf;
+    use crate::catalog::reach::{profile_lookup, subject_of};
+    let (subjects, own) = match of {
+        HistoryOf::Component(ci) => {
+            let p = &cat[ci].profile;
+            let lookup = |port: &str, i: Option<&str>| profile_lookup(p, port, i);
+            let s = subject_of(&c.path, c.old.as_deref(), c.new.as_deref(), &lookup);
+            (s, Some(&cat[ci].id))
+        }
+        HistoryOf::Idl(_) => (
+            subject_of(&c.path, c.old.as_deref(), c.new.as_deref(), &|_, _| {
+                Vec::new()
+            }),
+            None,
+        ),
+        HistoryOf::System(_) => return None,
+    };
+    let reach = cat.reach(&subjects, &|x| own.is_some_and(|id| x.id == *id));
+    if reach.is_empty() {
+        return None;
+    }
+    let each: Vec<String> = reach
+        .iter()
+        .map(|r| {
+            let name = cat
+                .component(&r.component)
+                .map_or(r.component.clone(), |x| x.display_name().into_owned());
+            let role = lang.t(&format!("history_reach_{}", r.role));
+            format!("{name} ({role})")
+        })
+        .collect();
+    let n: std::collections::BTreeSet<&str> = reach.iter().map(|r| r.component.as_str()).collect();
+    let key = if n.len() == 1 {
+        "history_reach_one"
+    } else {
+        "history_reach"
+    };
+    Some(
+        lang.t(key)
+            .replace("{n}", &n.len().to_string())
+            .replace("{list}", &each.join(lang.t("history_separator"))),
+    )
 }
 
 /// A date as the pages show it: as written, in the zone it was written in, except that UTC is

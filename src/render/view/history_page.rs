@@ -170,7 +170,12 @@ pub fn history_page_view<'a>(
     let mut items = Vec::new();
     let h = cat.history_of(of);
     let current = current_date_of(cat, of);
-    let about = |c: &Change| changed_type(cat, of, c);
+    let about = |c: &Change| {
+        (
+            changed_type(cat, of, c),
+            super::history::reach_text(cat, of, c, lang),
+        )
+    };
     let mut i = 0;
     while i < h.len() {
         let e = &h[i];
@@ -485,7 +490,7 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
                 url: url.clone(),
                 source: source.clone(),
                 category: category.clone(),
-                change: ChangeRow::of(ch, changed_type(cat, of, ch), lang),
+                change: ChangeRow::of(ch, (changed_type(cat, of, ch), None), lang),
             })
             .collect();
         match v.days.last_mut() {
