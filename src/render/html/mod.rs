@@ -12,6 +12,8 @@ mod builtins;
 mod dataflow;
 mod diagnostics;
 mod history;
+mod manual;
+pub use manual::ManualRenderer;
 use history::{has_feed, has_history};
 pub mod markdown;
 mod native;
@@ -99,6 +101,14 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
     (
         "interfaces.html",
         include_str!("../../../themes/default/interfaces.html"),
+    ),
+    (
+        "manual.css",
+        include_str!("../../../themes/default/manual.css"),
+    ),
+    (
+        "manual.html",
+        include_str!("../../../themes/default/manual.html"),
     ),
     (
         "macros.html",
