@@ -1000,6 +1000,10 @@ pub enum Output {
     Markdown,
     /// Doxygen `.dox` input.
     Doxygen,
+    /// A system manual (`-f manual`): one HTML file per RT System in which the pages it
+    /// holds (the system, its components, their types) are sections, and every link an
+    /// anchor of that file ([`Page::section_id`]).
+    Manual,
 }
 
 impl Page {
@@ -1035,7 +1039,7 @@ impl Page {
         ];
         let &(_, md, dox) = FIXED.iter().find(|(k, _, _)| *k == self.kind)?;
         match out {
-            Output::Html => None,
+            Output::Html | Output::Manual => None,
             Output::Markdown => md,
             Output::Doxygen => Some(dox),
         }
@@ -1059,7 +1063,7 @@ impl Page {
             None => {
                 s.push_str(&self.stem);
                 s.push_str(match out {
-                    Output::Html => ".html",
+                    Output::Html | Output::Manual => ".html",
                     Output::Markdown => ".md",
                     Output::Doxygen => ".dox",
                 });

@@ -293,7 +293,7 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # Output directory. It is replaced on every successful build.
 # output = "site"
 
-# Output formats: "html", "markdown", "doxygen", "json". Several at once go to output/<format>/.
+# Output formats: "html", "markdown", "doxygen", "json", "manual". Several at once go to output/<format>/.
 # formats = ["html"]
 
 # A theme directory; any file in it replaces the built-in template or asset of the same name.
@@ -401,7 +401,7 @@ fn template_ja(idl: Option<&crate::init::Detected>) -> String {
 # 出力ディレクトリ。ビルドが成功するたびに置き換えられます。
 # output = "site"
 
-# 出力形式: "html"、"markdown"、"doxygen"、"json"。複数指定すると output/<形式>/ に出力します。
+# 出力形式: "html"、"markdown"、"doxygen"、"json"、"manual"。複数指定すると output/<形式>/ に出力します。
 # formats = ["html"]
 
 # テーマのディレクトリ。ここにあるファイルが、同じ名前の組み込みテンプレート・アセットを置き換えます。

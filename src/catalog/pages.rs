@@ -25,6 +25,7 @@ impl Output {
             Output::Html => "html",
             Output::Markdown => "markdown",
             Output::Doxygen => "doxygen",
+            Output::Manual => "manual",
         }
     }
 
@@ -32,9 +33,14 @@ impl Output {
     /// and Doxygen leave out the site's own machinery (the search page, the page a server shows
     /// for a missing path) and, for now, the diagnostics page and the categories index: their
     /// category pages hang from the front page (mdBook's `SUMMARY.md`, Doxygen's `\mainpage`).
+    /// A system manual holds a system, components and their types, as sections of one file.
     pub fn carries(self, kind: PageKind) -> bool {
         match self {
             Output::Html => true,
+            Output::Manual => matches!(
+                kind,
+                PageKind::System | PageKind::Component | PageKind::DataType | PageKind::Interface
+            ),
             Output::Markdown | Output::Doxygen => !matches!(
                 kind,
                 PageKind::Search
@@ -58,6 +64,12 @@ impl Page {
     /// The last part of the stem: the slug of an entry page.
     fn slug(&self) -> &str {
         self.stem.rsplit('/').next().unwrap_or(&self.stem)
+    }
+
+    /// The id of the page's section in a system manual ([`Output::Manual`]): its stem with
+    /// `-` for `/` (`components-camera`), unique as the stems are.
+    pub fn section_id(&self) -> String {
+        self.stem.replace('/', "-")
     }
 
     /// The page's Doxygen name (what `\page` declares and `\ref` names): `index` for the
@@ -94,9 +106,13 @@ impl Page {
     /// under in `out`: as is in HTML and Markdown; `<page label>__<anchor label>` in Doxygen,
     /// whose labels are global (a double underscore, which no slug holds, so a row anchor can
     /// never equal another page's label). The `\mainpage`'s sections are `rtc_main__<anchor>`.
+    /// In a system manual, `<section id>--<anchor>` (no slug holds a double dash), but as is
+    /// on the system's own page: a manual holds one system, whose rows keep their anchors.
     pub fn anchor_in(&self, anchor: &str, out: Output) -> String {
         match out {
             Output::Html | Output::Markdown => anchor.to_string(),
+            Output::Manual if self.kind == PageKind::System => anchor.to_string(),
+            Output::Manual => format!("{}--{anchor}", self.section_id()),
             Output::Doxygen => {
                 let page = match self.kind {
                     PageKind::Index => "rtc_main".to_string(),
@@ -113,7 +129,7 @@ impl Catalog {
     /// down, nothing from a page at the root (Doxygen, whose links are labels, has none).
     pub fn root_from(&self, from: &Page, out: Output) -> String {
         match out {
-            Output::Doxygen => String::new(),
+            Output::Doxygen | Output::Manual => String::new(),
             Output::Html | Output::Markdown => "../".repeat(from.depth_in(out)),
         }
     }
@@ -123,7 +139,7 @@ impl Catalog {
     pub fn href_from_root(&self, to: &Page, anchor: Option<&str>, out: Output) -> String {
         let root = self.site_page(PageKind::Index);
         match out {
-            Output::Doxygen => self.href(root, to, anchor, out),
+            Output::Doxygen | Output::Manual => self.href(root, to, anchor, out),
             Output::Html | Output::Markdown => {
                 let mut href =
                     String::with_capacity(to.stem.len() + 6 + anchor.map_or(0, |a| a.len() + 1));
@@ -139,9 +155,15 @@ impl Catalog {
 
     /// The target of a link on page `from` to page `to` (to its `anchor` if given) in output
     /// `out`: a relative path in HTML and Markdown (`../vendors/acme.md#x`), a label for
-    /// Doxygen's `\ref` (`rtc_vendor_acme`, `rtc_comp_camera__port_image`).
+    /// Doxygen's `\ref` (`rtc_vendor_acme`, `rtc_comp_camera__port_image`), an anchor of the
+    /// same file in a system manual (`#components-camera--port-image`: the manual leaves out
+    /// the links to what it does not hold).
     pub fn href(&self, from: &Page, to: &Page, anchor: Option<&str>, out: Output) -> String {
         match out {
+            Output::Manual => match anchor {
+                Some(a) => format!("#{}", to.anchor_in(a, out)),
+                None => format!("#{}", to.section_id()),
+            },
             Output::Doxygen => match anchor {
                 Some(a) => to.anchor_in(a, out),
                 None => to.doxygen_label(),

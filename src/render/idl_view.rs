@@ -96,6 +96,34 @@ pub struct DefinitionView {
     pub inherited: Vec<InheritedView>,
 }
 
+impl DefinitionView {
+    /// Every type the definition names (fields, values' types, a union's switch, what a
+    /// typedef names, operations' returns, parameters and exceptions, attributes, bases and
+    /// what the bases give), for a renderer that links them its own way (a system manual).
+    pub fn type_refs_mut(&mut self) -> Vec<&mut TypeRef> {
+        fn ops<'a>(out: &mut Vec<&'a mut TypeRef>, o: &'a mut [OperationView]) {
+            for op in o {
+                out.push(&mut op.returns);
+                out.extend(op.params.iter_mut().map(|p| &mut p.ty));
+                out.extend(op.raises.iter_mut());
+            }
+        }
+        let mut out: Vec<&mut TypeRef> = Vec::new();
+        out.extend(self.fields.iter_mut().map(|f| &mut f.ty));
+        out.extend(self.switch.iter_mut());
+        out.extend(self.aliases.iter_mut());
+        ops(&mut out, &mut self.operations);
+        out.extend(self.attributes.iter_mut().map(|a| &mut a.ty));
+        out.extend(self.bases.iter_mut());
+        for g in &mut self.inherited {
+            out.push(&mut g.base);
+            ops(&mut out, &mut g.operations);
+            out.extend(g.attributes.iter_mut().map(|a| &mut a.ty));
+        }
+        out
+    }
+}
+
 /// The operations and attributes an interface inherits from one base, each shown on the base's
 /// page.
 #[derive(Debug, Clone, Serialize)]

@@ -123,6 +123,8 @@ pub enum Format {
     Markdown,
     Doxygen,
     Json,
+    /// A system manual: one self-contained HTML file per RT System, to print.
+    Manual,
 }
 
 impl Format {
@@ -132,6 +134,7 @@ impl Format {
             Format::Markdown => "markdown",
             Format::Doxygen => "doxygen",
             Format::Json => "json",
+            Format::Manual => "manual",
         }
     }
 
@@ -142,6 +145,7 @@ impl Format {
             Format::Json => Box::new(json::JsonRenderer),
             Format::Markdown => Box::new(markdown::MarkdownRenderer),
             Format::Doxygen => Box::new(doxygen::DoxygenRenderer),
+            Format::Manual => Box::new(html::ManualRenderer),
         }
     }
 }

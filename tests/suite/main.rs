@@ -37,6 +37,7 @@ mod idl_pages;
 mod idl_reader;
 mod implementation;
 mod layers;
+mod manual;
 mod neighbourhood;
 mod page_kinds;
 mod page_paths;

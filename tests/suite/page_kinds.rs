@@ -83,6 +83,8 @@ fn folder(o: Output) -> &'static str {
         Output::Html => "html",
         Output::Markdown => "markdown",
         Output::Doxygen => "doxygen",
+        // Not in `Output::ALL`: its pages are sections of a system's file (tests/suite/manual.rs).
+        Output::Manual => "manual",
     }
 }
 

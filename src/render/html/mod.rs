@@ -12,7 +12,9 @@ mod builtins;
 mod dataflow;
 mod diagnostics;
 mod history;
+mod manual;
 use history::{has_feed, has_history};
+pub use manual::ManualRenderer;
 pub mod markdown;
 mod native;
 pub mod readme;
@@ -99,6 +101,14 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
     (
         "interfaces.html",
         include_str!("../../../themes/default/interfaces.html"),
+    ),
+    (
+        "manual.css",
+        include_str!("../../../themes/default/manual.css"),
+    ),
+    (
+        "manual.html",
+        include_str!("../../../themes/default/manual.html"),
     ),
     (
         "macros.html",
@@ -470,6 +480,8 @@ struct Site<'a> {
     catalog: &'a Catalog,
     opts: &'a SiteOptions,
     lang: Lang,
+    /// The output the links are made for: the HTML site, or a system manual.
+    out: Output,
     summaries: Vec<ComponentSummary>,
     /// The category facet of each component ([`Catalog::category_of_each`]).
     category_of: PerEntry<Component, usize>,
@@ -482,6 +494,44 @@ struct Site<'a> {
 }
 
 impl<'a> Site<'a> {
+    /// The site of `catalog` for output `out` (the HTML site, or a system manual), without
+    /// the component summaries (the lists' rows, made in parallel by the site).
+    fn new(catalog: &'a Catalog, opts: &'a SiteOptions, out: Output) -> Site<'a> {
+        let lang = opts.language;
+        Site {
+            catalog,
+            opts,
+            lang,
+            out,
+            summaries: Vec::new(),
+            category_of: catalog.category_of_each(),
+            vendor_of: catalog.vendor_of_each(),
+            readme_targets: std::sync::Arc::new(readme::Targets::new(
+                catalog,
+                opts.source_url.as_deref(),
+                "../",
+                |ci| catalog.component_page(ci).path("html"),
+            )),
+            lifecycle: svg::LifecycleDiagram::new(&svg::LifecycleLabels {
+                title: lang.t("lifecycle_diagram"),
+                created: lang.t("state_created"),
+                inactive: lang.t("state_inactive"),
+                active: lang.t("state_active"),
+                error: lang.t("state_error"),
+                finalized: lang.t("state_finalized"),
+                ec_events: lang.t("ec_events"),
+                fsm: lang.t("fsm_actions"),
+                implemented: lang.t("legend_implemented"),
+                not_implemented: lang.t("legend_not_implemented"),
+            }),
+        }
+    }
+
+    /// The id an anchor of page `page` is defined under in this output ([`Page::anchor_in`]).
+    fn anchor(&self, page: &Page, anchor: &str) -> String {
+        page.anchor_in(anchor, self.out)
+    }
+
     fn t(&self, key: &str) -> &'static str {
         self.lang.t(key)
     }
@@ -604,7 +654,7 @@ impl<'a> Site<'a> {
     fn link(&self, from: &Page, l: &Linked<'_>) -> Option<Link> {
         Some(Link {
             text: l.text.clone(),
-            href: l.target(self.catalog, from, Output::Html)?,
+            href: l.target(self.catalog, from, self.out)?,
         })
     }
 
@@ -618,7 +668,7 @@ impl<'a> Site<'a> {
     fn type_ref(&self, from: &Page, t: &Option<Linked<'_>>) -> Option<PortTypeRef> {
         t.as_ref().map(|t| PortTypeRef {
             text: t.text.clone(),
-            href: t.target(self.catalog, from, Output::Html),
+            href: t.target(self.catalog, from, self.out),
         })
     }
 
@@ -844,7 +894,7 @@ impl<'a> Site<'a> {
                 name: dp.port.name.to_string(),
                 type_label: dp.port.type_short.clone(),
                 class: dp.port.direction.class,
-                anchor: dp.port.anchor.to_string(),
+                anchor: self.anchor(v.page, dp.port.anchor),
             })
             .collect();
         let service: Vec<svg::DiagramServicePort> = v
@@ -853,7 +903,7 @@ impl<'a> Site<'a> {
             .map(|sp| svg::DiagramServicePort {
                 side: sp.side,
                 name: sp.name.to_string(),
-                anchor: sp.anchor.to_string(),
+                anchor: self.anchor(v.page, sp.anchor),
                 interfaces: sp
                     .interfaces
                     .iter()
@@ -861,7 +911,7 @@ impl<'a> Site<'a> {
                         provided: i.provided,
                         label: i.port.name.to_string(),
                         type_label: i.port.type_short.clone(),
-                        anchor: i.port.anchor.to_string(),
+                        anchor: self.anchor(v.page, i.port.anchor),
                     })
                     .collect(),
             })
@@ -1093,32 +1143,7 @@ impl HtmlRenderer {
         let opts = ctx.site;
         let lang = opts.language;
         let env = Self::environment(opts, catalog);
-        let mut site = Site {
-            catalog,
-            opts,
-            lang,
-            summaries: Vec::new(),
-            category_of: catalog.category_of_each(),
-            vendor_of: catalog.vendor_of_each(),
-            readme_targets: std::sync::Arc::new(readme::Targets::new(
-                catalog,
-                opts.source_url.as_deref(),
-                "../",
-                |ci| catalog.component_page(ci).path("html"),
-            )),
-            lifecycle: svg::LifecycleDiagram::new(&svg::LifecycleLabels {
-                title: lang.t("lifecycle_diagram"),
-                created: lang.t("state_created"),
-                inactive: lang.t("state_inactive"),
-                active: lang.t("state_active"),
-                error: lang.t("state_error"),
-                finalized: lang.t("state_finalized"),
-                ec_events: lang.t("ec_events"),
-                fsm: lang.t("fsm_actions"),
-                implemented: lang.t("legend_implemented"),
-                not_implemented: lang.t("legend_not_implemented"),
-            }),
-        };
+        let mut site = Site::new(catalog, opts, Output::Html);
         // The summaries are made on every core while every template is compiled once, up
         // front (errors surface before any page is written).
         let (summaries, compiled) = rayon::join(

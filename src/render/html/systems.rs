@@ -36,7 +36,9 @@ struct SystemRow {
 }
 
 impl Site<'_> {
-    fn system_page(&self, s: &System) -> minijinja::Value {
+    /// The template context of a system's page (`system.html`), also the system part of its
+    /// manual (links for [`Site::out`]).
+    pub(super) fn system_page(&self, s: &System) -> minijinja::Value {
         let lang = self.lang;
         let show_host = self.opts.show_host_data;
         let p: &RtSystem = &s.profile;
@@ -45,7 +47,7 @@ impl Site<'_> {
             s,
             lang,
             (show_host, self.opts.source_url.as_deref()),
-            crate::catalog::Output::Html,
+            self.out,
         );
         let name = v.name.clone();
 
@@ -53,7 +55,7 @@ impl Site<'_> {
         let cat = self.catalog;
         let here = cat.page_of_system(s);
         let link = |to: &crate::catalog::Page, a: &str| match here {
-            Some(from) => cat.href(from, to, Some(a), crate::catalog::Output::Html),
+            Some(from) => cat.href(from, to, Some(a), self.out),
             None => String::new(),
         };
         let w = crate::render::wiring::system_wiring(cat, s, lang, &link);
@@ -103,7 +105,7 @@ impl Site<'_> {
             history_older => v.history.older_note(lang),
             history_page => here
                 .zip(v.history_page.as_ref())
-                .map(|(from, to)| cat.href(from, to, None, crate::catalog::Output::Html)),
+                .map(|(from, to)| cat.href(from, to, None, self.out)),
         }
     }
 }

@@ -605,7 +605,7 @@ pub fn system_view(
     // An instance's row of this page: only the HTML page has row anchors.
     let local = |anchor: &str| -> String {
         match out {
-            Output::Html => format!("#{anchor}"),
+            Output::Html | Output::Manual => format!("#{anchor}"),
             Output::Markdown | Output::Doxygen => String::new(),
         }
     };
