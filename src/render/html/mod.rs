@@ -135,6 +135,10 @@ pub const DEFAULT_THEME: &[(&str, &str)] = &[
         include_str!("../../../themes/default/system.html"),
     ),
     (
+        "system_sections.html",
+        include_str!("../../../themes/default/system_sections.html"),
+    ),
+    (
         "systems.html",
         include_str!("../../../themes/default/systems.html"),
     ),
