@@ -64,6 +64,76 @@ pub struct Config {
     /// `[diff]`: the policy of `rtcdoc diff` (changes ignored, severities overridden;
     /// [`crate::diff::policy`]).
     pub diff: Option<crate::diff::policy::DiffConfig>,
+    /// `[stability]`: marks of components, data types and interfaces by id, name or scoped
+    /// name, over the profiles' `rtcdoc.stability` properties ([`crate::catalog::stability`]).
+    pub stability: Option<std::collections::BTreeMap<String, toml::Spanned<StabilityConfig>>>,
+    /// `stability` checked, with the place of each key (made by [`parse`]).
+    #[serde(skip)]
+    pub stability_marks: crate::catalog::stability::Settings,
+}
+
+/// One `[stability."KEY"]` table.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct StabilityConfig {
+    /// `experimental`, `stable` or `deprecated`.
+    pub status: toml::Spanned<String>,
+    /// The version since which it is so.
+    pub since: Option<String>,
+    /// What to use instead.
+    pub replacement: Option<String>,
+    /// A free note.
+    pub note: Option<String>,
+}
+
+/// `[stability]` checked: each status known, each key with its place in `text`.
+fn stability_marks(
+    table: &std::collections::BTreeMap<String, toml::Spanned<StabilityConfig>>,
+    text: &str,
+    file: &Path,
+) -> Result<crate::catalog::stability::Settings> {
+    use crate::model::stability::{Origin, Stability, Status};
+    let at = |offset: usize| crate::model::Pos::at_offset(text, offset);
+    let filled = |v: &Option<String>| {
+        v.as_deref()
+            .map(str::trim)
+            .filter(|v| !v.is_empty())
+            .map(str::to_string)
+    };
+    let mut marks = Vec::new();
+    for (key, entry) in table {
+        let e = entry.get_ref();
+        let Some(status) = Status::parse(e.status.get_ref()) else {
+            anyhow::bail!(
+                "{}:{}: [stability] `{key}`: {}",
+                file.display(),
+                at(e.status.span().start),
+                Status::unknown(e.status.get_ref())
+            );
+        };
+        if key.trim().is_empty() {
+            anyhow::bail!(
+                "{}:{}: [stability]: an empty key names nothing; write a component id or name, or a type's scoped name (`[stability.\"RTC::OldService\"]`)",
+                file.display(),
+                at(entry.span().start)
+            );
+        }
+        marks.push(crate::catalog::stability::Mark {
+            key: key.trim().to_string(),
+            pos: Some(at(entry.span().start)),
+            stability: Stability {
+                status,
+                since: filled(&e.since),
+                replacement: filled(&e.replacement),
+                note: filled(&e.note),
+                origin: Origin::Config,
+            },
+        });
+    }
+    Ok(crate::catalog::stability::Settings {
+        file: file.display().to_string(),
+        marks,
+    })
 }
 
 /// `[implementation]` settings.
@@ -165,7 +235,7 @@ impl Loaded {
 
 /// Parses configuration text. Errors name the file, the line and column, and the key.
 pub fn parse(text: &str, file: &Path) -> Result<Config> {
-    let c = toml::from_str::<Config>(text).map_err(|e| {
+    let mut c = toml::from_str::<Config>(text).map_err(|e| {
         let pos = e.span().map_or(crate::model::Pos::new(1, 1), |s| {
             crate::model::Pos::at_offset(text, s.start)
         });
@@ -188,6 +258,9 @@ pub fn parse(text: &str, file: &Path) -> Result<Config> {
             )
         };
         crate::diff::policy::Policy::new(d, &at)?;
+    }
+    if let Some(table) = &c.stability {
+        c.stability_marks = stability_marks(table, text, file)?;
     }
     Ok(c)
 }
@@ -751,6 +824,7 @@ pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::Buil
                         .ok()
                 })
                 .unwrap_or_default(),
+            stability: c.stability_marks.clone(),
             idl_path: match &cli.idl_path {
                 Some(paths) => paths.clone(),
                 None => c
