@@ -60,6 +60,10 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
                 if let Some(d) = diff.default_severity(i) {
                     o.insert("defaultSeverity".into(), json!(d));
                 }
+                if let Some(item) = diff.relaxed(i) {
+                    o.insert("relaxed".into(), json!("experimental"));
+                    o.insert("relaxedFor".into(), json!(item));
+                }
             }
             v
         })
