@@ -767,11 +767,29 @@ pub fn default_input(file: &Loaded) -> PathBuf {
         .unwrap_or_else(|| PathBuf::from("."))
 }
 
+/// The `[stability]` marks of a build of `input`: their findings name the file relative to the
+/// input's root (as every finding's file is), or by its absolute path when it is outside.
+fn stability_for(file: &Loaded, input: &Path) -> crate::catalog::stability::Settings {
+    let mut s = file.config.stability_marks.clone();
+    if let Some(path) = &file.path {
+        let root = crate::build::input_root(input);
+        s.file = match path.strip_prefix(&root) {
+            Ok(rel) => rel.to_string_lossy().replace('\\', "/"),
+            Err(_) => std::path::absolute(path)
+                .unwrap_or_else(|_| path.clone())
+                .to_string_lossy()
+                .into_owned(),
+        };
+    }
+    s
+}
+
 /// Combines defaults, the configuration file and command-line overrides (in rising order of
 /// precedence) into the options of a build.
 pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::BuildOptions {
     let (c, cli) = (&file.config, &overrides.settings);
     let input = cli.input.clone().unwrap_or_else(|| default_input(file));
+    let stability = stability_for(file, &input);
     let output = cli
         .output
         .clone()
@@ -824,7 +842,7 @@ pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::Buil
                         .ok()
                 })
                 .unwrap_or_default(),
-            stability: c.stability_marks.clone(),
+            stability,
             idl_path: match &cli.idl_path {
                 Some(paths) => paths.clone(),
                 None => c
