@@ -414,6 +414,16 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # ignore-only = {{ "DIFF103" = ["Legacy/**"] }}
 # severity = {{ "DIFF201" = "breaking" }}
 
+# Stability marks: a component (its id or name), a data type or a service interface (its scoped
+# name) experimental, stable or deprecated. Pages show it, `rtcdoc diff` reports the breaking
+# changes of experimental items as warnings, `rtcdoc check` warns where a deprecated type is
+# used (RTC407). Wins over a profile's own `rtcdoc.stability` property.
+# [stability."RTC::OldService"]
+# status = "deprecated"
+# since = "2.0"
+# replacement = "RTC::NewService"
+# note = "Removed in 3.0."
+
 # Git repositories to document besides (or, without `input`, instead of) the input directory,
 # each pinned at a commit in rtcdoc.lock (`rtcdoc update` moves them). One table per repository.
 # git: https://, ssh://, git@host:path, file:// or a local path. rev: a branch, tag or commit
@@ -522,6 +532,16 @@ language = "ja"
 # except = ["DIFF304"]
 # ignore-only = {{ "DIFF103" = ["Legacy/**"] }}
 # severity = {{ "DIFF201" = "breaking" }}
+
+# 安定性の指定: コンポーネント (ID または名前)、データ型、サービスインタフェース (スコープ付きの名前) を
+# experimental (実験的)、stable (安定)、deprecated (非推奨) と指定します。ページに表示し、`rtcdoc diff` は
+# 実験的な項目の破壊的変更を警告として報告し、`rtcdoc check` は非推奨の型を使う箇所で警告します (RTC407)。
+# プロファイル自身の `rtcdoc.stability` プロパティより優先します。
+# [stability."RTC::OldService"]
+# status = "deprecated"
+# since = "2.0"
+# replacement = "RTC::NewService"
+# note = "Removed in 3.0."
 
 # 入力ディレクトリに加えて (`input` がなければその代わりに) ドキュメントにする git リポジトリ。
 # それぞれ rtcdoc.lock のコミットに固定します (`rtcdoc update` で進めます)。リポジトリごとに 1 つの表を書きます。
