@@ -108,7 +108,7 @@ fn stability_marks(
                 "{}:{}: [stability] `{key}`: {}",
                 file.display(),
                 at(e.status.span().start),
-                Status::unknown(e.status.get_ref())
+                crate::catalog::stability::unknown_status(e.status.get_ref())
             );
         };
         if key.trim().is_empty() {

@@ -12,6 +12,16 @@ use crate::model::Pos;
 /// `[stability]` key naming nothing).
 pub const MARK_INVALID: &str = "RTC408";
 
+/// The message part of an unknown status: what it is not, the nearest status, the choices.
+pub fn unknown_status(written: &str) -> String {
+    let near = crate::suggest::typo(written, stability::STATUSES)
+        .map(|n| format!(" (did you mean `{n}`?)"))
+        .unwrap_or_default();
+    format!(
+        "`{written}` is no stability status{near}; write \"experimental\", \"stable\" or \"deprecated\""
+    )
+}
+
 /// `[stability]` of `rtcdoc.toml`, checked (`crate::config`).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Settings {
@@ -48,7 +58,8 @@ impl Catalog {
             match stability::from_properties(&c.profile.basic_info.properties) {
                 FromProperties::None => {}
                 FromProperties::Marked(s) => c.stability = Some(s),
-                FromProperties::Unknown(p, message) => {
+                FromProperties::Unknown(p, written) => {
+                    let message = unknown_status(written);
                     let d = Diagnostic::warning(
                         MARK_INVALID,
                         &c.source,

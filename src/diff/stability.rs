@@ -84,7 +84,7 @@ fn experimental_item(
     }
     let ci = labels
         .iter()
-        .find(|(_, l)| l.iter().any(|l| *l == c.component))
+        .find(|(_, l)| l.contains(&c.component))
         .map(|(ci, _)| *ci)?;
     let comp = &cat[ci];
     if experimental(&comp.stability) {

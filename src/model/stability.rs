@@ -52,16 +52,6 @@ impl Status {
             Status::Deprecated => "deprecated",
         }
     }
-
-    /// The message part of an unknown status: what it is not, the nearest status, the choices.
-    pub fn unknown(written: &str) -> String {
-        let near = crate::suggest::typo(written, STATUSES)
-            .map(|n| format!(" (did you mean `{n}`?)"))
-            .unwrap_or_default();
-        format!(
-            "`{written}` is no stability status{near}; write \"experimental\", \"stable\" or \"deprecated\""
-        )
-    }
 }
 
 /// Where a mark was read.
@@ -93,11 +83,11 @@ pub struct Stability {
 }
 
 /// What the stability properties of a component's profile say: its mark, or the property whose
-/// status is no status (with the message part of [`Status::unknown`]).
+/// status is no status (with the status as written).
 pub enum FromProperties<'a> {
     None,
     Marked(Stability),
-    Unknown(&'a Property, String),
+    Unknown(&'a Property, &'a str),
 }
 
 /// The mark the BasicInfo properties `props` give (their first [`STATUS_KEY`]).
@@ -123,7 +113,7 @@ pub fn from_properties(props: &[Property]) -> FromProperties<'_> {
             note: value(NOTE_KEY),
             origin: Origin::Profile,
         }),
-        None => FromProperties::Unknown(p, Status::unknown(written)),
+        None => FromProperties::Unknown(p, written),
     }
 }
 
@@ -155,10 +145,10 @@ mod tests {
         assert_eq!(s.replacement.as_deref(), Some("NewCamera"));
         assert_eq!(s.note, None);
         let props = [prop(STATUS_KEY, "deprecatd")];
-        let FromProperties::Unknown(_, m) = from_properties(&props) else {
+        let FromProperties::Unknown(_, written) = from_properties(&props) else {
             panic!("not unknown")
         };
-        assert!(m.contains("did you mean `deprecated`?"), "{m}");
+        assert_eq!(written, "deprecatd");
         assert!(matches!(
             from_properties(&[prop("FSM", "YES")]),
             FromProperties::None
