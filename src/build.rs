@@ -39,6 +39,8 @@ pub struct LoadOptions {
     /// Whether and where each component's implementation is read (`[implementation]` of
     /// `rtcdoc.toml`; its size limit is `limits.max_file_size`).
     pub implementation: crate::catalog::implementations::Settings,
+    /// The stability marks of `rtcdoc.toml`'s `[stability]` ([`crate::catalog::stability`]).
+    pub stability: crate::catalog::stability::Settings,
 }
 
 /// Fills in the components' history of a loaded catalogue (see [`LoadOptions::history`]).
@@ -321,6 +323,7 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
         readme_dirs: (!named).then_some(found.readme_dirs),
         implementation,
         recovered,
+        stability: opts.stability.clone(),
     };
     let catalog = Catalog::assemble(docs, &roots, &walk::exclude_matcher(&opts.exclude));
     failed_systems.sort();

@@ -30,6 +30,7 @@ pub mod pages;
 pub mod reach;
 pub mod readmes;
 pub mod sources;
+pub mod stability;
 pub mod systems;
 
 use crate::diagnostic::{codes, Diagnostic, Severity};
@@ -91,6 +92,10 @@ pub struct Component {
     /// diff` change names (`dataPorts/status`), the version (else the date) that added it.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub since: BTreeMap<String, String>,
+    /// Its stability mark: `rtcdoc.toml`'s `[stability]` entry, else its profile's
+    /// `rtcdoc.stability` properties ([`stability`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stability: Option<crate::model::stability::Stability>,
     #[serde(flatten)]
     pub profile: Box<Profile>,
 }
@@ -613,6 +618,9 @@ pub struct TypeEntry<U> {
     /// in name order, each in declaration order ([`Catalog::attach_idl`]).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub used_by: Vec<IdlUse>,
+    /// Its stability mark, from `rtcdoc.toml`'s `[stability]` ([`stability`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stability: Option<crate::model::stability::Stability>,
 }
 
 /// A use of a type by an operation or attribute of an interface of the catalogue.
@@ -1373,6 +1381,7 @@ impl<'a> TypeAcc<'a> {
                 uses: U::from_slots(acc.uses.map(&refs)),
                 contained_in: Vec::new(),
                 used_by: Vec::new(),
+                stability: None,
             })
             .collect()
     }
@@ -1400,6 +1409,8 @@ pub struct Documents {
     /// The components found in code alone ([`crate::implementation::recover::find_all`]),
     /// by source; their profiles are among `profiles`.
     pub recovered: BTreeMap<String, implementations::Recovery>,
+    /// The `[stability]` marks of `rtcdoc.toml` ([`stability`]).
+    pub stability: stability::Settings,
 }
 
 impl Catalog {
@@ -1417,6 +1428,7 @@ impl Catalog {
         catalog.attach_idl(docs.idl);
         catalog.attach_systems(docs.systems);
         catalog.index();
+        catalog.attach_stability(&docs.stability);
         catalog.attach_backups(docs.backups, &|rel| root.dir_of(rel).join(rel).is_file());
         catalog.attach_readmes(root, excluded, docs.readme_dirs.as_ref());
         catalog.attach_recovered(docs.recovered);
@@ -1528,6 +1540,7 @@ impl Catalog {
                 backups: Vec::new(),
                 history: Vec::new(),
                 since: BTreeMap::new(),
+                stability: None,
                 origin: None,
                 source: l.source,
                 format: l.format,
@@ -2445,6 +2458,7 @@ fn add_unused<U: Default>(
             uses: U::default(),
             contained_in: Vec::new(),
             used_by: Vec::new(),
+            stability: None,
         });
     }
     entries.sort_by(|a, b| a.name.cmp(&b.name));

@@ -64,6 +64,76 @@ pub struct Config {
     /// `[diff]`: the policy of `rtcdoc diff` (changes ignored, severities overridden;
     /// [`crate::diff::policy`]).
     pub diff: Option<crate::diff::policy::DiffConfig>,
+    /// `[stability]`: marks of components, data types and interfaces by id, name or scoped
+    /// name, over the profiles' `rtcdoc.stability` properties ([`crate::catalog::stability`]).
+    pub stability: Option<std::collections::BTreeMap<String, toml::Spanned<StabilityConfig>>>,
+    /// `stability` checked, with the place of each key (made by [`parse`]).
+    #[serde(skip)]
+    pub stability_marks: crate::catalog::stability::Settings,
+}
+
+/// One `[stability."KEY"]` table.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct StabilityConfig {
+    /// `experimental`, `stable` or `deprecated`.
+    pub status: toml::Spanned<String>,
+    /// The version since which it is so.
+    pub since: Option<String>,
+    /// What to use instead.
+    pub replacement: Option<String>,
+    /// A free note.
+    pub note: Option<String>,
+}
+
+/// `[stability]` checked: each status known, each key with its place in `text`.
+fn stability_marks(
+    table: &std::collections::BTreeMap<String, toml::Spanned<StabilityConfig>>,
+    text: &str,
+    file: &Path,
+) -> Result<crate::catalog::stability::Settings> {
+    use crate::model::stability::{Origin, Stability, Status};
+    let at = |offset: usize| crate::model::Pos::at_offset(text, offset);
+    let filled = |v: &Option<String>| {
+        v.as_deref()
+            .map(str::trim)
+            .filter(|v| !v.is_empty())
+            .map(str::to_string)
+    };
+    let mut marks = Vec::new();
+    for (key, entry) in table {
+        let e = entry.get_ref();
+        let Some(status) = Status::parse(e.status.get_ref()) else {
+            anyhow::bail!(
+                "{}:{}: [stability] `{key}`: {}",
+                file.display(),
+                at(e.status.span().start),
+                crate::catalog::stability::unknown_status(e.status.get_ref())
+            );
+        };
+        if key.trim().is_empty() {
+            anyhow::bail!(
+                "{}:{}: [stability]: an empty key names nothing; write a component id or name, or a type's scoped name (`[stability.\"RTC::OldService\"]`)",
+                file.display(),
+                at(entry.span().start)
+            );
+        }
+        marks.push(crate::catalog::stability::Mark {
+            key: key.trim().to_string(),
+            pos: Some(at(entry.span().start)),
+            stability: Stability {
+                status,
+                since: filled(&e.since),
+                replacement: filled(&e.replacement),
+                note: filled(&e.note),
+                origin: Origin::Config,
+            },
+        });
+    }
+    Ok(crate::catalog::stability::Settings {
+        file: file.display().to_string(),
+        marks,
+    })
 }
 
 /// `[implementation]` settings.
@@ -165,7 +235,7 @@ impl Loaded {
 
 /// Parses configuration text. Errors name the file, the line and column, and the key.
 pub fn parse(text: &str, file: &Path) -> Result<Config> {
-    let c = toml::from_str::<Config>(text).map_err(|e| {
+    let mut c = toml::from_str::<Config>(text).map_err(|e| {
         let pos = e.span().map_or(crate::model::Pos::new(1, 1), |s| {
             crate::model::Pos::at_offset(text, s.start)
         });
@@ -188,6 +258,9 @@ pub fn parse(text: &str, file: &Path) -> Result<Config> {
             )
         };
         crate::diff::policy::Policy::new(d, &at)?;
+    }
+    if let Some(table) = &c.stability {
+        c.stability_marks = stability_marks(table, text, file)?;
     }
     Ok(c)
 }
@@ -341,6 +414,16 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # ignore-only = {{ "DIFF103" = ["Legacy/**"] }}
 # severity = {{ "DIFF201" = "breaking" }}
 
+# Stability marks: a component (its id or name), a data type or a service interface (its scoped
+# name) experimental, stable or deprecated. Pages show it, `rtcdoc diff` reports the breaking
+# changes of experimental items as warnings, `rtcdoc check` warns where a deprecated type is
+# used (RTC407). Wins over a profile's own `rtcdoc.stability` property.
+# [stability."RTC::OldService"]
+# status = "deprecated"
+# since = "2.0"
+# replacement = "RTC::NewService"
+# note = "Removed in 3.0."
+
 # Git repositories to document besides (or, without `input`, instead of) the input directory,
 # each pinned at a commit in rtcdoc.lock (`rtcdoc update` moves them). One table per repository.
 # git: https://, ssh://, git@host:path, file:// or a local path. rev: a branch, tag or commit
@@ -449,6 +532,16 @@ language = "ja"
 # except = ["DIFF304"]
 # ignore-only = {{ "DIFF103" = ["Legacy/**"] }}
 # severity = {{ "DIFF201" = "breaking" }}
+
+# 安定性の指定: コンポーネント (ID または名前)、データ型、サービスインタフェース (スコープ付きの名前) を
+# experimental (実験的)、stable (安定)、deprecated (非推奨) と指定します。ページに表示し、`rtcdoc diff` は
+# 実験的な項目の破壊的変更を警告として報告し、`rtcdoc check` は非推奨の型を使う箇所で警告します (RTC407)。
+# プロファイル自身の `rtcdoc.stability` プロパティより優先します。
+# [stability."RTC::OldService"]
+# status = "deprecated"
+# since = "2.0"
+# replacement = "RTC::NewService"
+# note = "Removed in 3.0."
 
 # 入力ディレクトリに加えて (`input` がなければその代わりに) ドキュメントにする git リポジトリ。
 # それぞれ rtcdoc.lock のコミットに固定します (`rtcdoc update` で進めます)。リポジトリごとに 1 つの表を書きます。
@@ -694,11 +787,29 @@ pub fn default_input(file: &Loaded) -> PathBuf {
         .unwrap_or_else(|| PathBuf::from("."))
 }
 
+/// The `[stability]` marks of a build of `input`: their findings name the file relative to the
+/// input's root (as every finding's file is), or by its absolute path when it is outside.
+fn stability_for(file: &Loaded, input: &Path) -> crate::catalog::stability::Settings {
+    let mut s = file.config.stability_marks.clone();
+    if let Some(path) = &file.path {
+        let root = crate::build::input_root(input);
+        s.file = match path.strip_prefix(&root) {
+            Ok(rel) => rel.to_string_lossy().replace('\\', "/"),
+            Err(_) => std::path::absolute(path)
+                .unwrap_or_else(|_| path.clone())
+                .to_string_lossy()
+                .into_owned(),
+        };
+    }
+    s
+}
+
 /// Combines defaults, the configuration file and command-line overrides (in rising order of
 /// precedence) into the options of a build.
 pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::BuildOptions {
     let (c, cli) = (&file.config, &overrides.settings);
     let input = cli.input.clone().unwrap_or_else(|| default_input(file));
+    let stability = stability_for(file, &input);
     let output = cli
         .output
         .clone()
@@ -751,6 +862,7 @@ pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::Buil
                         .ok()
                 })
                 .unwrap_or_default(),
+            stability,
             idl_path: match &cli.idl_path {
                 Some(paths) => paths.clone(),
                 None => c

@@ -418,6 +418,7 @@ impl Workspace {
                 ..self.opts.load.implementation.clone()
             },
             recovered,
+            stability: self.opts.load.stability.clone(),
         };
         let mut catalog = Catalog::assemble(
             docs,

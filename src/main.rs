@@ -1607,6 +1607,9 @@ fn gate(
             files
         });
     }
+    // After the policy's severities, before the baseline: a breaking change of an item
+    // experimental on the NEW side is a warning.
+    rtcdoc::diff::stability::relax(result, &new.loaded.catalog);
     let shown = |p: &Path| p.display().to_string();
     if let Some(out) = &args.write_baseline {
         // The reasons already reviewed are kept: those of --baseline first, then those of the

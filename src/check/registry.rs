@@ -70,6 +70,8 @@ pub const TYPE_NOT_IN_IDL: &str = "RTC403";
 pub const IDL_FILE_NOT_FOUND: &str = "RTC404";
 pub const IDL_FILE_MISMATCH: &str = "RTC405";
 pub const IDL_DEFINITIONS_DIFFER: &str = "RTC406";
+pub const USES_DEPRECATED: &str = "RTC407";
+pub const STABILITY_MARK_INVALID: &str = crate::catalog::stability::MARK_INVALID;
 // Document coverage.
 pub const DOC_COMPONENT: &str = "RTC501";
 pub const DOC_PORT: &str = "RTC502";
@@ -614,6 +616,24 @@ pub static RULES: &[Rule] = &[
         explanation: "Repositories often carry their own copies of OpenRTM's IDL files. Equal copies are one type; copies whose definitions of a type differ (a field added, retyped or reordered) describe incompatible data under one name, since CDR is positional. Reported at the second definition, naming the first.",
         spec: "OMG IDL 3.5 §7.19 (names and scoping)",
         hint: "keep one definition (delete or update the stale copy), or rename one of the types",
+    },
+    Rule {
+        code: USES_DEPRECATED,
+        severity: Warning,
+        name: "uses-deprecated",
+        summary: "a port uses a deprecated data type or service interface",
+        explanation: "A data type or service interface can be marked deprecated in rtcdoc.toml (`[stability.\"Img::OldImage\"] status = \"deprecated\"`, with `since`, `replacement` and `note`). Each data port carrying a deprecated data type and each service interface (provided or required) of a deprecated interface type is reported at the port or interface, with the version it is deprecated since, its replacement and the note. A component that is itself deprecated is shown so on its page; it is no finding.",
+        spec: "rtcdoc (stability marks; not in the RTC Profile spec)",
+        hint: "change the type to the replacement the stability mark names, or keep it knowingly until it is removed",
+    },
+    Rule {
+        code: STABILITY_MARK_INVALID,
+        severity: Warning,
+        name: "stability-mark-invalid",
+        summary: "a stability mark that marks nothing: an unknown status, or a key naming nothing",
+        explanation: "A component's profile marks it with the BasicInfo property `rtcdoc.stability` (`experimental`, `stable` or `deprecated`, any case); another value is reported at the property and the component has no mark. A `[stability]` key of rtcdoc.toml names a component (its id or name), a data type or a service interface (its scoped name, any spelling the profiles use, or a definition of the IDL files read); a key that names none of them is reported at the key, with the nearest name. An unknown status in rtcdoc.toml is an error when the file is read.",
+        spec: "rtcdoc (stability marks; not in the RTC Profile spec)",
+        hint: "write the status as experimental, stable or deprecated, and name an entry of the catalogue",
     },
     Rule {
         code: DOC_COMPONENT,

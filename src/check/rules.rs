@@ -1298,10 +1298,78 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     }
 }
 
-/// RTC401–RTC406: rules over the whole catalogue.
+/// RTC407: each data port carrying a deprecated data type and each service interface of a
+/// deprecated interface type, naming the replacement.
+fn deprecated_uses(cat: &Catalog, out: &mut Vec<Diagnostic>) {
+    use crate::model::stability::{Stability, Status};
+    let deprecated = |s: &Option<Stability>| {
+        s.as_ref()
+            .filter(|s| s.status == Status::Deprecated)
+            .cloned()
+    };
+    let finding = |c: &Component, pos: Pos, what: String, ty: &str, s: &Stability| {
+        let since = s
+            .since
+            .as_deref()
+            .map(|v| format!(" since {v}"))
+            .unwrap_or_default();
+        let instead = match &s.replacement {
+            Some(r) => format!("; use {} instead", Code(r)),
+            None => String::new(),
+        };
+        let note = s
+            .note
+            .as_deref()
+            .map(|n| format!(" ({n})"))
+            .unwrap_or_default();
+        let hint = match &s.replacement {
+            Some(r) => format!(
+                "change the type to {} (the replacement the stability mark names), or keep it knowingly until it is removed",
+                Code(r)
+            ),
+            None => "the stability mark names no replacement: ask the type's owners what replaces it (and add `replacement` to the mark)".to_string(),
+        };
+        Diagnostic::warning(
+            r::USES_DEPRECATED,
+            &c.source,
+            format!("{what} uses {}, deprecated{since}{instead}{note}", Code(ty)),
+        )
+        .at(pos)
+        .with_hint(hint)
+    };
+    for t in &cat.data_types {
+        let Some(s) = deprecated(&t.stability) else {
+            continue;
+        };
+        for pr in t.all_uses() {
+            if let Some((c, p)) = cat.port_of(pr) {
+                let what = format!("data port {}", Code(p.name.as_deref().unwrap_or("")));
+                out.push(finding(c, p.pos, what, &t.name, &s));
+            }
+        }
+    }
+    for t in &cat.interfaces {
+        let Some(s) = deprecated(&t.stability) else {
+            continue;
+        };
+        for ir in t.all_uses() {
+            if let Some((c, sp, i)) = cat.interface_of(ir) {
+                let what = format!(
+                    "service interface {} of port {}",
+                    Code(i.name.as_deref().unwrap_or("")),
+                    Code(sp.name.as_deref().unwrap_or(""))
+                );
+                out.push(finding(c, i.pos, what, &t.name, &s));
+            }
+        }
+    }
+}
+
+/// RTC401–RTC407: rules over the whole catalogue.
 pub(crate) fn catalogue(cat: &Catalog) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     idl_rules(cat, &mut out);
+    deprecated_uses(cat, &mut out);
     for t in cat.interfaces.iter().filter(|t| t.is_unprovided()) {
         for req in &t.uses.requirers {
             let Some((c, _, i)) = cat.interface_of(req) else {

@@ -28,6 +28,7 @@ pub mod impact;
 pub mod policy;
 pub mod report;
 pub mod side;
+pub mod stability;
 pub mod systems;
 
 pub use codes::{Code, Level, CODES};
@@ -176,9 +177,15 @@ impl Diff {
         self.gate.get(i).map_or(&COUNTS, |g| &g.status)
     }
 
-    /// The registry severity of the `i`-th change, when `[diff] severity` gave it another.
+    /// The registry severity of the `i`-th change, when `[diff] severity` gave it another (or
+    /// its severity before an experimental item relaxed it).
     pub fn default_severity(&self, i: usize) -> Option<Level> {
         self.gate.get(i).and_then(|g| g.default_severity)
+    }
+
+    /// The experimental item the `i`-th change was relaxed for ([`stability`]).
+    pub fn relaxed(&self, i: usize) -> Option<&str> {
+        self.gate.get(i).and_then(|g| g.relaxed.as_deref())
     }
 }
 

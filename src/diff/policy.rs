@@ -57,6 +57,9 @@ pub enum Status {
 pub struct Standing {
     pub status: Status,
     pub default_severity: Option<Level>,
+    /// The experimental item a breaking change was relaxed to a warning for
+    /// ([`super::stability`]: `` component `X` ``).
+    pub relaxed: Option<String>,
 }
 
 /// A code, or the codes of a category.

@@ -69,6 +69,10 @@ pub fn to_json(diff: &Diff, old: &str, new: &str, fail_on: Option<Level>) -> Val
                 if !reach.is_empty() {
                     o.insert("reach".into(), json!(reach));
                 }
+                if let Some(item) = diff.relaxed(i) {
+                    o.insert("relaxed".into(), json!("experimental"));
+                    o.insert("relaxedFor".into(), json!(item));
+                }
             }
             v
         })

@@ -54,6 +54,7 @@ pub type Extras = thin_vec::ThinVec<Extra>;
 pub mod component;
 pub mod fields;
 pub mod idl;
+pub mod stability;
 pub mod system;
 
 pub use component::*;

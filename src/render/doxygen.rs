@@ -260,6 +260,15 @@ impl Markup for Dox {
     fn paragraph(out: &mut String, escaped: &str) {
         d!(out, "<p>{escaped}</p>");
     }
+    fn stability(out: &mut String, escaped: &str, deprecated: bool) {
+        if deprecated {
+            // Doxygen's own mark: a "Deprecated" paragraph, and the page in its Deprecated List.
+            d!(out, "\\deprecated {escaped}");
+            d!(out);
+        } else {
+            Self::paragraph(out, escaped);
+        }
+    }
     fn linked_list(out: &mut String, items: &[String]) {
         d!(out, "<ul>");
         for l in items {
@@ -377,6 +386,7 @@ fn component_page(
         super::text::linked::<Dox>(cat, page, &v.category)
     );
     d!(out);
+    super::text::stability_line::<Dox>(&mut out, cat, page, v.stability.as_ref());
     if let Some(desc) = v.lead {
         paragraphs(&mut out, desc);
     }

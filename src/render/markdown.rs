@@ -304,6 +304,7 @@ fn component_page(
         super::text::linked::<Md>(cat, page, &v.category)
     );
     w!(out);
+    super::text::stability_line::<Md>(&mut out, cat, page, v.stability.as_ref());
     if let Some(d) = v.lead {
         w!(out, "{}", block(d));
         w!(out);

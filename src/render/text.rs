@@ -148,6 +148,12 @@ pub trait Markup {
     fn note(out: &mut String, text: &str) {
         Self::paragraph(out, &Self::bold(&Self::esc(text)));
     }
+    /// The stability line of a page ([`stability_line`]), already escaped; `deprecated` for a
+    /// deprecated entry (Doxygen's `\deprecated`).
+    fn stability(out: &mut String, escaped: &str, deprecated: bool) {
+        let _ = deprecated;
+        Self::paragraph(out, escaped);
+    }
     /// A link on page `from` to page `to` (a data type's or interface's), as a table cell.
     fn page_ref(cat: &Catalog, from: &Page, to: &Page) -> String;
     /// A link with `text` on page `from` to page `to` (to its `anchor` if given).
@@ -886,6 +892,42 @@ fn configuration_section<M: Markup>(out: &mut String, v: &ComponentView<'_>, lan
 /// A data type's or interface's page from its view: title and crumbs, spellings and IDL
 /// files, the IDL definition, the ports using it by role, and the system connectors carrying
 /// it. One function for both kinds and for Markdown and Doxygen.
+/// The stability mark under a page's title: `**Deprecated since 2.0** — use X. Note`, the
+/// replacement linked when the catalogue has it.
+pub fn stability_line<M: Markup>(
+    out: &mut String,
+    cat: &Catalog,
+    page: &Page,
+    s: Option<&crate::render::view::StabilityView<'_>>,
+) {
+    let Some(s) = s else {
+        return;
+    };
+    let mut line = M::bold(&M::esc(&s.headline));
+    if let Some((before, after, r)) = &s.replacement {
+        // The spaces around the replacement kept, which escaping a piece alone would trim.
+        let spaced = |words: &str| {
+            let lead = if words.starts_with(' ') { " " } else { "" };
+            let trail = if words.ends_with(' ') { " " } else { "" };
+            let inner = words.trim();
+            if inner.is_empty() {
+                lead.to_string()
+            } else {
+                format!("{lead}{}{trail}", M::esc(inner))
+            }
+        };
+        line.push_str(" — ");
+        line.push_str(&spaced(before));
+        line.push_str(&linked::<M>(cat, page, r));
+        line.push_str(&spaced(after));
+    }
+    if let Some(n) = s.note {
+        line.push_str(". ");
+        line.push_str(&M::esc(n));
+    }
+    M::stability(out, &line, s.deprecated);
+}
+
 pub fn type_page<M: Markup>(
     cat: &Catalog,
     v: &TypeView<'_>,
@@ -895,6 +937,7 @@ pub fn type_page<M: Markup>(
     let page = v.page;
     let index = (v.index, lang.t(v.kind.index_key()));
     let mut out = head::<M>(cat, (page, v.name), site_title, Some(index));
+    stability_line::<M>(&mut out, cat, page, v.stability.as_ref());
     if v.unprovided {
         M::note(&mut out, lang.t("not_provided"));
     }

@@ -15,8 +15,14 @@ fn fixture(name: &str) -> PathBuf {
     common::root().join("tests/fixtures/check").join(name)
 }
 
+/// The report of a fixture; a directory fixture's own `rtcdoc.toml` gives its stability marks.
 fn report(path: &Path) -> Report {
-    let loaded = build::load(path, &LoadOptions::default()).expect("load");
+    let mut opts = LoadOptions::default();
+    if path.join(rtcdoc::config::FILE_NAME).is_file() {
+        let file = rtcdoc::config::load(None, &[path]).expect("rtcdoc.toml");
+        opts.stability = file.config.stability_marks;
+    }
+    let loaded = build::load(path, &opts).expect("load");
     check::check(&loaded.catalog)
 }
 
@@ -50,6 +56,7 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC306", "", 11, 7),
     ("RTC307", "", 14, 7),
     ("RTC401", "", 11, 5),
+    ("RTC408", "", 5, 5),
     ("RTC501", "", 3, 3),
     ("RTC502", "", 9, 3),
     ("RTC503", "", 11, 5),
@@ -61,6 +68,8 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC404", "A.xml", 9, 3),
     ("RTC405", "A.xml", 9, 3),
     ("RTC406", "vendor/Lab.idl", 3, 3),
+    // A deprecated interface of rtcdoc.toml's [stability], at the service interface using it.
+    ("RTC407", "A.xml", 11, 5),
     ("RTC506", "idl/Lab.idl", 6, 12),
     ("RTC507", "idl/Lab.idl", 6, 5),
     ("RTC508", "idl/Lab.idl", 7, 12),

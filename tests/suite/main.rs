@@ -48,6 +48,7 @@ mod rts_reader;
 mod serve;
 mod sources;
 mod spec_sample;
+mod stability;
 mod systems;
 mod xml_reader;
 mod yaml_reader;

@@ -188,6 +188,40 @@ pub struct Link {
     pub href: String,
 }
 
+/// A stability mark under a page's title (the macro `stability_line` of `macros.html`), from
+/// its view; the replacement's `href` is empty when the catalogue does not have it.
+#[derive(Debug, Clone, Serialize)]
+struct StabilityLine {
+    class: &'static str,
+    headline: String,
+    use_before: &'static str,
+    use_after: &'static str,
+    replacement: Option<Link>,
+    note: Option<String>,
+}
+
+impl StabilityLine {
+    fn of(
+        cat: &Catalog,
+        from: &crate::catalog::Page,
+        v: Option<&view::StabilityView<'_>>,
+    ) -> Option<StabilityLine> {
+        let v = v?;
+        let (use_before, use_after) = v.replacement.as_ref().map_or(("", ""), |r| (r.0, r.1));
+        Some(StabilityLine {
+            class: v.class,
+            headline: v.headline.clone(),
+            use_before,
+            use_after,
+            replacement: v.replacement.as_ref().map(|(_, _, r)| Link {
+                text: r.text.clone(),
+                href: r.target(cat, from, Output::Html).unwrap_or_default(),
+            }),
+            note: v.note.map(str::to_string),
+        })
+    }
+}
+
 /// One labelled value; exactly one of `text` (escaped by the template) or `html` (sanitised).
 #[derive(Debug, Clone, Serialize)]
 pub struct Field {
@@ -425,6 +459,7 @@ struct ComponentPage {
     description: String,
     crumbs: Vec<Link>,
     name: String,
+    stability: Option<StabilityLine>,
     summary_html: Option<String>,
     header: Vec<Field>,
     document: Vec<Field>,
@@ -807,6 +842,7 @@ impl<'a> Site<'a> {
             description,
             crumbs,
             summary_html: v.lead.map(markdown::to_html),
+            stability: StabilityLine::of(self.catalog, v.page, v.stability.as_ref()),
             name: v.name.clone(),
             header,
             document: fields(lang, None, v.document.clone()),
@@ -1410,6 +1446,7 @@ struct TypePage {
     title: String,
     name: String,
     crumbs: Vec<Link>,
+    stability: Option<StabilityLine>,
     spellings: Vec<String>,
     idl_files: Vec<String>,
     def: Option<crate::render::idl_view::DefinitionView>,
@@ -1483,6 +1520,7 @@ fn type_page(site: &Site<'_>, v: &view::types::TypeView<'_>) -> TypePage {
         title: page_title(site, &format!("{} {}", v.name, lang.t(key))),
         name: v.name.to_string(),
         crumbs: crumbs_section(lang, root, crumbs_key),
+        stability: StabilityLine::of(catalog, v.page, v.stability.as_ref()),
         spellings: v.spellings.to_vec(),
         idl_files: crate::catalog::idl_file_names(v.idl_files),
         def: crate::render::idl_view::definition(catalog, v.name, lang),

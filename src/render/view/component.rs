@@ -94,6 +94,8 @@ pub struct ComponentView<'a> {
     pub category: Linked<'a>,
     /// The description: the page's lead text (free text).
     pub lead: Option<&'a str>,
+    /// Its stability mark, shown under the title.
+    pub stability: Option<super::StabilityView<'a>>,
     /// Basic information; the vendor's fact links to [`ComponentView::vendor`], the source's
     /// to [`ComponentView::source_url`].
     pub basic: Vec<Fact>,
@@ -377,6 +379,7 @@ pub fn component_view<'a>(
         ),
         // RTCBuilder's placeholder `ModuleDescription` is no lead (the basic facts list it).
         lead: documented("description", &p.basic_info.description),
+        stability: super::stability_view(cat, c.stability.as_ref(), lang),
         basic: facts::basic_info(c, lang),
         vendor: cat.vendors.get(vendor).map(|_| cat.vendor_page(vendor)),
         // A profile of a `[[source]]` repository links into that repository at the pinned

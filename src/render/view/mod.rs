@@ -108,3 +108,66 @@ impl<'a> Peers<'a> {
         Peers { shown, more }
     }
 }
+
+/// A stability mark as a page shows it, under its title: "Deprecated since 2.0 — use X" (X
+/// linked when the catalogue has it), "Experimental", then the note. The one wording of every
+/// output.
+#[derive(Debug, Clone)]
+pub struct StabilityView<'a> {
+    /// `experimental`, `stable` or `deprecated` (a class for styles).
+    pub class: &'static str,
+    pub deprecated: bool,
+    /// `Deprecated since 2.0`, `Experimental`.
+    pub headline: String,
+    /// The words before and after the replacement (`use `, ``), and the replacement.
+    pub replacement: Option<(&'static str, &'static str, Linked<'a>)>,
+    pub note: Option<&'a str>,
+}
+
+impl StabilityView<'_> {
+    /// The line as plain text: `Deprecated since 2.0 — use X. Note`.
+    pub fn plain(&self) -> String {
+        let mut s = self.headline.clone();
+        if let Some((before, after, r)) = &self.replacement {
+            s.push_str(&format!(" — {before}{}{after}", r.text));
+        }
+        if let Some(n) = self.note {
+            s.push_str(&format!(". {n}"));
+        }
+        s
+    }
+}
+
+/// The view of an entry's stability mark, if it has one.
+pub fn stability_view<'a>(
+    cat: &'a Catalog,
+    mark: Option<&'a crate::model::stability::Stability>,
+    lang: crate::i18n::Lang,
+) -> Option<StabilityView<'a>> {
+    use crate::model::stability::Status;
+    let s = mark?;
+    let status = match s.status {
+        Status::Experimental => lang.t("stability_experimental"),
+        Status::Stable => lang.t("stability_stable"),
+        Status::Deprecated => lang.t("stability_deprecated"),
+    };
+    let headline = match &s.since {
+        Some(v) => lang
+            .t("stability_since")
+            .replace("{since}", v)
+            .replace("{status}", status),
+        None => status.to_string(),
+    };
+    let replacement = s.replacement.as_deref().map(|r| {
+        let words = lang.t("stability_use");
+        let (before, after) = words.split_once("{}").unwrap_or((words, ""));
+        (before, after, Linked::new(r, cat.replacement_page(r), None))
+    });
+    Some(StabilityView {
+        class: s.status.as_str(),
+        deprecated: s.status == Status::Deprecated,
+        headline,
+        replacement,
+        note: s.note.as_deref(),
+    })
+}

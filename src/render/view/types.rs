@@ -131,6 +131,8 @@ pub struct TypeView<'a> {
     pub name: &'a str,
     /// An interface some component requires and none provides.
     pub unprovided: bool,
+    /// Its stability mark, shown under the title.
+    pub stability: Option<super::StabilityView<'a>>,
     pub spellings: &'a [String],
     pub idl_files: &'a [String],
     /// The non-empty role groups, in order.
@@ -237,6 +239,7 @@ where
         index,
         name: &t.name,
         unprovided: t.is_unprovided(),
+        stability: super::stability_view(cat, t.stability.as_ref(), lang),
         spellings: &t.spellings,
         idl_files: &t.idl_files,
         uses: t

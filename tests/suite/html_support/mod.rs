@@ -7,13 +7,20 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// Builds the HTML site of `input` into `out` with `site` options.
+/// The stability marks of the input's own `rtcdoc.toml` are applied (the other settings are
+/// the tests' to give).
 pub fn build_site(input: &Path, out: &Path, site: SiteOptions) -> build::Loaded {
+    let mut load = LoadOptions::default();
+    if input.join(rtcdoc::config::FILE_NAME).is_file() {
+        let file = rtcdoc::config::load(None, &[input]).expect("rtcdoc.toml");
+        load.stability = file.config.stability_marks;
+    }
     let (loaded, _report) = build::build(&BuildOptions {
         input: input.to_path_buf(),
         output: out.to_path_buf(),
         formats: vec![Format::Html],
         strict: false,
-        load: LoadOptions::default(),
+        load,
         site,
     })
     .expect("build succeeds");

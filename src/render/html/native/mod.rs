@@ -496,11 +496,43 @@ fn base_bottom(o: &mut Out<'_>) {
     o.raw("</p>\n</footer>\n</body>\n</html>");
 }
 
+/// `{% if stability %}{{ stability_line(stability) }}{% endif %}` (the macro of `macros.html`).
+fn stability_line(o: &mut Out<'_>, s: Option<&super::StabilityLine>) {
+    let Some(s) = s else {
+        return;
+    };
+    o.raw("<p class=\"stability ");
+    o.text(s.class);
+    o.raw("\" role=\"note\"><strong>");
+    o.text(&s.headline);
+    o.raw("</strong>");
+    if let Some(r) = &s.replacement {
+        o.raw(" — ");
+        o.text(s.use_before);
+        if r.href.is_empty() {
+            o.code(&r.text);
+        } else {
+            o.raw("<a href=\"");
+            o.text(&r.href);
+            o.raw("\">");
+            o.code(&r.text);
+            o.raw("</a>");
+        }
+        o.text(s.use_after);
+    }
+    if let Some(n) = s.note.as_deref().filter(|n| !n.is_empty()) {
+        o.raw(". ");
+        o.text(n);
+    }
+    o.raw("</p>\n");
+}
+
 /// `component.html`'s `{% block main %}`.
 fn main_block(o: &mut Out<'_>, p: &ComponentPage) {
     o.raw("\n<article class=\"component\">\n<h1>");
     o.text(&p.name);
     o.raw("</h1>\n");
+    stability_line(o, p.stability.as_ref());
     if p.implementation.as_ref().is_some_and(|i| i.recovered) {
         o.raw("<p class=\"note\"><a href=\"#implementation\">");
         o.label("impl_recovered_note");

@@ -31,6 +31,7 @@ pub(in crate::render::html) fn type_page(page: &TypePage, g: &Globals<'_>) -> St
     );
     o.code(&page.name);
     o.raw("</h1>\n");
+    super::stability_line(&mut o, page.stability.as_ref());
     if !data {
         if page.unprovided == Some(true) {
             o.label_in(
