@@ -624,12 +624,9 @@ fn raw_entries(raw: &str) -> Option<Vec<RawEntry<'_>>> {
     Some(out)
 }
 
-/// The files deleted by each of the `count` commits up to `rev` (newest first): (commit, the
-/// deleted blobs with their paths from the top of the repository); empty when git cannot say.
-fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, String)>)> {
-    if rev.starts_with('-') {
-        return Vec::new();
-    }
+/// `git log` of every file each commit touched, as [`raw_entries`] reads it: no renames, whole
+/// ids, `--raw -z`, no colour, no external diff (the format and range are the caller's).
+fn raw_log(repo: &Repo) -> Command {
     let mut c = repo.git();
     c.args([
         "log",
@@ -639,11 +636,21 @@ fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, 
         "-z",
         "--no-color",
         "--no-ext-diff",
-        "--format=%x1e%H",
-    ])
-    .arg(format!("--max-count={count}"))
-    .args(["--end-of-options", rev, "--"])
-    .stderr(Stdio::null());
+    ]);
+    c
+}
+
+/// The files deleted by each of the `count` commits up to `rev` (newest first): (commit, the
+/// deleted blobs with their paths from the top of the repository); empty when git cannot say.
+fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, String)>)> {
+    if rev.starts_with('-') {
+        return Vec::new();
+    }
+    let mut c = raw_log(repo);
+    c.arg("--format=%x1e%H")
+        .arg(format!("--max-count={count}"))
+        .args(["--end-of-options", rev, "--"])
+        .stderr(Stdio::null());
     let Some(out) = c.output().ok().filter(|o| o.status.success()) else {
         return Vec::new();
     };
@@ -817,15 +824,8 @@ fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
             .to_string(),
         Repo::Mirror(_) => String::new(),
     };
-    let mut c = repo.git();
+    let mut c = raw_log(repo);
     c.args([
-        "log",
-        "--no-renames",
-        "--no-abbrev",
-        "--raw",
-        "-z",
-        "--no-color",
-        "--no-ext-diff",
         "--format=%x1e%H%x1f%P%x1f%aI%x1f%an%x1f%s",
         "--end-of-options",
         rev,

@@ -201,12 +201,10 @@ fn compare_type_past(
     let mut cmp = Cmp {
         old,
         new,
-        out: Outcome {
-            visited: reported.clone(),
-            ..Outcome::default()
-        },
+        out: Outcome::default(),
         stack: Vec::new(),
         budget: BUDGET,
+        reported,
     };
     match (find(old, name), find(new, name)) {
         (Some(o), Some(n)) => cmp.def(&P::root(), o, n, true),
@@ -395,6 +393,9 @@ struct Cmp<'s> {
     /// Scoped names being compared (a recursive type is not entered twice).
     stack: Vec<String>,
     budget: usize,
+    /// Definitions whose changes are reported elsewhere (through a port, or on their own):
+    /// not compared inside this type.
+    reported: &'s BTreeSet<String>,
 }
 
 impl<'s> Cmp<'s> {
@@ -463,7 +464,8 @@ impl<'s> Cmp<'s> {
         // A definition met again inside the same type (an enum every operation returns, a
         // struct two members hold) was compared where it was first met: its changes are
         // reported once, there, not once per use.
-        if self.stack.contains(&name) || (!top && self.out.visited.contains(&name)) {
+        let seen = |n: &String| self.out.visited.contains(n) || self.reported.contains(n);
+        if self.stack.contains(&name) || (!top && seen(&name)) {
             return;
         }
         let stop = if self.budget == 0 {

@@ -3,6 +3,7 @@
 //! a git revision of a temporary repository, every output format and every `--fail-on` level.
 
 use crate::common;
+use common::git;
 use common::OutputWithin;
 use common::{root, rtcdoc, write};
 use serde_json::Value;
@@ -797,17 +798,6 @@ fn first_commit(d: &Path, file: &str) {
     write(d, file, BASE);
     assert!(git(d, &["add", "-A"]));
     assert!(git(d, &["commit", "-q", "-m", "first"]));
-}
-
-fn git(dir: &Path, args: &[&str]) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .output_within(common::COMMAND_LIMIT)
-        .map(|o| o.status.success())
-        .unwrap_or(false)
 }
 
 #[test]

@@ -5,7 +5,7 @@
 //! and a git revision whose source files are read at that revision.
 
 use crate::common;
-use common::OutputWithin;
+use common::git;
 use common::{root, rtcdoc, write};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -358,17 +358,6 @@ fn every_format_carries_drift() {
             "{e}"
         );
     }
-}
-
-fn git(dir: &Path, args: &[&str]) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .output_within(common::COMMAND_LIMIT)
-        .map(|o| o.status.success())
-        .unwrap_or(false)
 }
 
 /// A `REV:PATH` side reads the source files at that revision: the code-only edit of the

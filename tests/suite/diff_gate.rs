@@ -8,7 +8,7 @@
 //! (DIFF201) and its description (DIFF307); neither raises its version (DIFF208 twice).
 
 use crate::common;
-use common::OutputWithin;
+use common::git;
 use common::{root, rtcdoc, write};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -474,17 +474,6 @@ fn write_baseline_keeps_the_reasons_of_both_the_baseline_and_the_file_it_rewrite
     assert!(again.contains("reason = \"from the release\""), "{again}");
     assert!(again.contains("reason = \"from the branch\""), "{again}");
     assert_eq!(again.matches(todo).count(), 1, "{again}");
-}
-
-fn git(dir: &Path, args: &[&str]) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .output_within(common::COMMAND_LIMIT)
-        .map(|o| o.status.success())
-        .unwrap_or(false)
 }
 
 fn copy(from: &Path, to: &Path) {

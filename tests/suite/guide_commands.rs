@@ -3,7 +3,6 @@
 //! claims of the quick start hold for the example.
 
 use crate::common;
-use common::OutputWithin;
 use common::*;
 use std::path::Path;
 
@@ -102,17 +101,6 @@ fn blocks() -> Vec<Vec<Command>> {
     }
     out.retain(|b| !b.is_empty());
     out
-}
-
-fn git(dir: &Path, args: &[&str]) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .output_within(common::COMMAND_LIMIT)
-        .map(|o| o.status.success())
-        .unwrap_or(false)
 }
 
 /// The workspace as a git repository whose one commit holds it, tagged `v1.0.0` and known as

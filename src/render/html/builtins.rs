@@ -24,9 +24,10 @@ fn put(out: &mut String, v: &Value) {
 }
 
 /// Appends a value as `{{ v|safe }}` would print it.
-/// `{{ v|wbr }}`: `v` escaped with `<wbr>` between the words of a name.
-fn put_wbr(out: &mut String, v: &Value) {
-    if v.is_undefined() {
+/// `{{ v|wbr }}`: `v` escaped with `<wbr>` between the words of a name; nothing for an
+/// undefined or none value, as `{{ … }}` prints them.
+pub(super) fn put_wbr(out: &mut String, v: &Value) {
+    if v.is_undefined() || v.is_none() {
         return;
     }
     // Writing to a String cannot fail.

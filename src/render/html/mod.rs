@@ -1120,16 +1120,10 @@ fn code_spans(s: &str) -> Value {
     Value::from_safe_string(out)
 }
 
-/// `{{ name|wbr }}`: the name escaped, with `<wbr>` between its words ([`svg::esc_wbr_into`]);
-/// nothing for an undefined or none value, as `{{ … }}` prints them.
+/// `{{ name|wbr }}`: the name escaped, with `<wbr>` between its words ([`svg::esc_wbr_into`]).
 fn wbr(v: &Value) -> Value {
     let mut out = String::new();
-    if let Some(s) = v.as_str() {
-        // Writing to a String cannot fail.
-        let _ = svg::esc_wbr_into(&mut out, s);
-    } else if !(v.is_undefined() || v.is_none()) {
-        let _ = svg::esc_wbr_into(&mut out, &v.to_string());
-    }
+    builtins::put_wbr(&mut out, v);
     Value::from_safe_string(out)
 }
 

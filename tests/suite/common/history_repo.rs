@@ -2,7 +2,6 @@
 //! show: a first version, a release that adds a data port, a service port with its interface
 //! and a configuration parameter, a commit that changes nothing of the specification, and a
 //! breaking rename without a version bump (DIFF208). Commits are dated 2024-01-01 … 04.
-use super::OutputWithin;
 
 use std::path::Path;
 
@@ -57,16 +56,11 @@ pub fn versions() -> Vec<(&'static str, String)> {
 /// `git ARGS` in `dir` with author and committer date `date`, without the user's or the
 /// system's configuration; whether it succeeded.
 pub fn git(dir: &Path, args: &[&str], date: &str) -> bool {
-    std::process::Command::new("git")
-        .args(args)
-        .current_dir(dir)
-        .env("GIT_CONFIG_NOSYSTEM", "1")
-        .env("HOME", dir)
-        .env("GIT_AUTHOR_DATE", date)
-        .env("GIT_COMMITTER_DATE", date)
-        .output_within(super::COMMAND_LIMIT)
-        .map(|o| o.status.success())
-        .unwrap_or(false)
+    super::git_with(
+        dir,
+        args,
+        &[("GIT_AUTHOR_DATE", date), ("GIT_COMMITTER_DATE", date)],
+    )
 }
 
 /// A fresh repository in `d`, or `false` when git does not run.

@@ -139,6 +139,25 @@ pub fn xml_profile(name: &str, ports: &[(&str, &str, &str)]) -> String {
 }
 
 /// Writes `content` to `dir/rel`, creating parents.
+/// `git ARGS` in `dir` without the user's or the system's configuration (`HOME` is `dir`);
+/// whether it succeeded within [`COMMAND_LIMIT`].
+pub fn git(dir: &Path, args: &[&str]) -> bool {
+    git_with(dir, args, &[])
+}
+
+/// [`git`] with extra environment variables (a commit's dates).
+pub fn git_with(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> bool {
+    std::process::Command::new("git")
+        .args(args)
+        .current_dir(dir)
+        .env("GIT_CONFIG_NOSYSTEM", "1")
+        .env("HOME", dir)
+        .envs(env.iter().copied())
+        .output_within(COMMAND_LIMIT)
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
 /// A written page as the tests read what it says: its `<wbr>` (the break opportunities the
 /// HTML puts inside names, `RTC::<wbr>Timed<wbr>Long`) are markup, not text, and are left out,
 /// so that an assertion names `<code>RTC::TimedLong</code>` as a reader sees it. The audit of
