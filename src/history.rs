@@ -178,14 +178,14 @@ fn attach_components(
         };
         read_parsed(list, &logs, &parse, &mut keep)
     };
-    let idl = &catalog.idl;
+    let (idl, cat) = (&catalog.idl, &*catalog);
     let histories: Vec<Option<Vec<Entry>>> = catalog
         .components
         .par_iter()
         .zip(logs)
         .zip(current)
         .map(|((c, commits), current)| {
-            wanted(c).then(|| history_of(c, commits, &parsed, current, idl))
+            wanted(c).then(|| history_of(c, commits, &parsed, current, (idl, cat)))
         })
         .collect();
     for (c, h) in catalog.components.iter_mut().zip(histories) {
@@ -1106,7 +1106,7 @@ fn history_of(
     commits: Vec<Version>,
     parsed: &Parsed<Profile>,
     current: Option<(usize, String)>,
-    idl: &crate::idl::IdlSet,
+    (idl, cat): (&crate::idl::IdlSet, &Catalog),
 ) -> Vec<Entry> {
     // Backups, newest first, merged into the commits by date; one whose name holds no date
     // has no place among them and is left out ([`undated_backups_note`] says so).
@@ -1157,13 +1157,38 @@ fn history_of(
         (&*c.profile, &c.source),
         &profile_of,
         &|old, new| {
-            crate::diff::compare_profiles(old, new, idl)
-                .iter()
-                .map(to_entry_change)
-                .collect()
+            let mut changes = crate::diff::compare_profiles(old, new, idl);
+            relax_experimental(&mut changes, (c, new.0), cat);
+            changes.iter().map(to_entry_change).collect()
         },
         &version_of,
     )
+}
+
+/// Relaxes the breaking changes of a version of component `c` (`new`: that version's profile)
+/// as `rtcdoc diff` does ([`crate::diff::stability`]): experimental by the catalogue's mark
+/// for the profile as it is, by the version's own `rtcdoc.stability` properties for an older
+/// one; the data types' and interfaces' marks are the catalogue's.
+fn relax_experimental(
+    changes: &mut [crate::diff::Change],
+    (c, new): (&Component, &Profile),
+    cat: &Catalog,
+) {
+    use crate::model::stability::{from_properties, FromProperties};
+    if changes.is_empty() {
+        return;
+    }
+    let own;
+    let mark = if std::ptr::eq(new, &*c.profile) {
+        c.stability.as_ref()
+    } else {
+        own = match from_properties(&new.basic_info.properties) {
+            FromProperties::Marked(s) => Some(s),
+            _ => None,
+        };
+        own.as_ref()
+    };
+    crate::diff::stability::relax_version(changes, cat, new, mark);
 }
 
 /// The parsed document of blob `oid` of repository `repo`.

@@ -11,18 +11,18 @@ use crate::model::stability::{Stability, Status};
 
 /// Relaxes the breaking changes of experimental items of `new` to warnings: each keeps its
 /// earlier severity as its standing's `default_severity`, names the item in `relaxed` and says
-/// so at the end of its message.
+/// so at the end of its message. A component's DIFF208 (breaking changes under the same
+/// version) whose breaking changes were all relaxed becomes information, saying so.
 pub fn relax(diff: &mut Diff, new: &Catalog) {
     let labels: Vec<(ComponentIx, [String; 3])> = labels(new);
-    let mut relaxed = Vec::new();
-    for (i, c) in diff.changes.iter().enumerate() {
-        if c.severity != Level::Breaking {
-            continue;
-        }
-        if let Some(item) = experimental_item(new, &labels, c) {
-            relaxed.push((i, item));
-        }
-    }
+    let relaxed = relaxed_of(&diff.changes, &|c| {
+        let ci = labels
+            .iter()
+            .find(|(_, l)| l.contains(&c.component))
+            .map(|(ci, _)| *ci);
+        let comp = ci.map(|ci| &new[ci]);
+        experimental_item(new, comp.map(|c| (&*c.profile, c.stability.as_ref())), c)
+    });
     if relaxed.is_empty() {
         return;
     }
@@ -30,11 +30,81 @@ pub fn relax(diff: &mut Diff, new: &Catalog) {
     for (i, item) in relaxed {
         let c = &mut diff.changes[i];
         diff.gate[i].default_severity.get_or_insert(c.severity);
-        c.severity = Level::Warning;
+        relax_one(c, &item);
+        diff.gate[i].relaxed = Some(item);
+    }
+}
+
+/// [`relax`] for the changes between two versions of one component's history: `new` the
+/// newer version's profile, `mark` its stability (the catalogue's mark for the profile as it
+/// is, else the version's own `rtcdoc.stability` properties), `cat` the catalogue of the build
+/// (its data types' and interfaces' marks).
+pub fn relax_version(
+    changes: &mut [Change],
+    cat: &Catalog,
+    new: &crate::model::Profile,
+    mark: Option<&Stability>,
+) {
+    for (i, item) in relaxed_of(changes, &|c| experimental_item(cat, Some((new, mark)), c)) {
+        relax_one(&mut changes[i], &item);
+    }
+}
+
+/// The changes to relax, by index, with the item each is relaxed for: each breaking change
+/// `item_of` names an experimental item for, then each breaking-without-version-bump
+/// (DIFF208) whose component has breaking changes left none.
+fn relaxed_of(
+    changes: &[Change],
+    item_of: &dyn Fn(&Change) -> Option<String>,
+) -> Vec<(usize, String)> {
+    let mut relaxed: Vec<(usize, String)> = changes
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| c.severity == Level::Breaking)
+        .filter_map(|(i, c)| item_of(c).map(|item| (i, item)))
+        .collect();
+    let breaking_left = |component: &str| {
+        changes.iter().enumerate().any(|(i, c)| {
+            c.severity == Level::Breaking
+                && c.component == component
+                && !relaxed.iter().any(|(r, _)| *r == i)
+        })
+    };
+    let bumps: Vec<(usize, String)> = changes
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| c.code == super::codes::BREAKING_WITHOUT_BUMP)
+        .filter(|(i, _)| !relaxed.iter().any(|(r, _)| r == i))
+        .filter(|(_, c)| !breaking_left(&c.component))
+        .map(|(i, c)| {
+            (
+                i,
+                format!(
+                    "every breaking change of {}",
+                    crate::quote::Code(&c.component)
+                ),
+            )
+        })
+        .collect();
+    relaxed.extend(bumps);
+    relaxed
+}
+
+/// Change `c` relaxed for `item`: a breaking change becomes a warning, a warning (DIFF208)
+/// information.
+fn relax_one(c: &mut Change, item: &str) {
+    c.severity = if c.severity == Level::Breaking {
+        Level::Warning
+    } else {
+        Level::Info
+    };
+    if c.code == super::codes::BREAKING_WITHOUT_BUMP {
+        c.message
+            .push_str(&format!(" (relaxed: experimental — {item} is relaxed)"));
+    } else {
         c.message.push_str(&format!(
             " (relaxed: experimental — {item} is experimental)"
         ));
-        diff.gate[i].relaxed = Some(item);
     }
 }
 
@@ -60,11 +130,12 @@ fn experimental(s: &Option<Stability>) -> bool {
 }
 
 /// The experimental item a change is about, quoted (`` component `X` ``), if any: its
-/// component, else the data type of the data port or the interface type of the service
-/// interface its path names, else the IDL type of an `idl/NAME` path.
+/// component (`comp`: its profile and mark), else the data type of the data port or the
+/// interface type of the service interface its path names, else the IDL type of an
+/// `idl/NAME` path.
 fn experimental_item(
     cat: &Catalog,
-    labels: &[(ComponentIx, [String; 3])],
+    comp: Option<(&crate::model::Profile, Option<&Stability>)>,
     c: &Change,
 ) -> Option<String> {
     use crate::quote::Code;
@@ -82,16 +153,11 @@ fn experimental_item(
             return Some(item);
         }
     }
-    let ci = labels
-        .iter()
-        .find(|(_, l)| l.contains(&c.component))
-        .map(|(ci, _)| *ci)?;
-    let comp = &cat[ci];
-    if experimental(&comp.stability) {
-        return Some(format!("component {}", Code(comp.profile.name())));
+    let (p, mark) = comp?;
+    if mark.is_some_and(|s| s.status == Status::Experimental) {
+        return Some(format!("component {}", Code(p.name())));
     }
     let parts: Vec<&str> = c.path.split('/').collect();
-    let p = &comp.profile;
     let type_name = match parts.as_slice() {
         ["dataPorts", port, ..] => {
             let pi = member_at(p.data_ports.iter().map(|d| name(&d.name)), port)?;

@@ -288,3 +288,96 @@ fn bad_configuration_is_an_error_or_a_warning_with_a_hint() {
         "{found:#?}"
     );
 }
+
+#[test]
+fn diff_208_becomes_information_when_every_breaking_change_is_relaxed() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    common::write(d, "old/A.xml", &profile("Svc::One", ""));
+    common::write(d, "new/A.xml", &profile("Svc::Two", ""));
+    // Without the mark: a breaking change under the same version, so DIFF208 warns.
+    let o = diff(d, "new", &["--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let bump = |json: &serde_json::Value| {
+        json["changes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["code"] == "DIFF208")
+            .cloned()
+            .expect("a DIFF208")
+    };
+    assert_eq!(bump(&json)["severity"], "warning");
+    // The changed interface experimental: its change is a warning, and DIFF208 information.
+    common::write(
+        d,
+        "new/rtcdoc.toml",
+        "[stability.\"Svc::Two\"]\nstatus = \"experimental\"\n",
+    );
+    let o = diff(d, "new", &["--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let b = bump(&json);
+    assert_eq!(b["severity"], "info", "{b}");
+    assert_eq!(b["defaultSeverity"], "warning", "{b}");
+    assert_eq!(b["relaxedFor"], "every breaking change of `RTC:Test:Cat:Comp:1.0.0`", "{b}");
+    let o = diff(d, "new", &["--fail-on", "warning"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    // DIFF107 is still a warning, so --fail-on warning fails; DIFF208 is information.
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(out.contains("info[DIFF208]"), "{out}");
+    assert!(
+        out.contains("(relaxed: experimental — every breaking change of `RTC:Test:Cat:Comp:1.0.0` is relaxed)"),
+        "{out}"
+    );
+}
+
+#[test]
+fn history_relaxes_the_versions_of_an_experimental_component() {
+    let dir = tempfile::tempdir().unwrap();
+    let repo = dir.path().join("repo");
+    let experimental =
+        "    <rtcExt:Properties rtcExt:name=\"rtcdoc.stability\" rtcExt:value=\"experimental\"/>\n";
+    let versions = vec![
+        ("first", profile("Svc::One", "")),
+        // Marked experimental in the same commit that changes the interface's type.
+        ("experimental", profile("Svc::Two", experimental)),
+        // The mark removed: the next breaking change is breaking again.
+        ("stable", profile("Svc::Three", "")),
+    ];
+    if !common::history_repo::commit_versions(&repo, versions) {
+        common::missing_tool("git");
+        return;
+    }
+    let out = dir.path().join("site");
+    common::history_repo::build(&repo, &out, &["-f", "json,html"]);
+    let cat: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("json/catalog.json")).unwrap())
+            .unwrap();
+    let history = cat["components"]["RTC:Test:Cat:Comp:1.0.0"]["history"]
+        .as_array()
+        .expect("a history");
+    let change = |entry: &serde_json::Value, code: &str| {
+        entry["changes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["code"] == code)
+            .cloned()
+            .unwrap_or_else(|| panic!("{code} in {entry}"))
+    };
+    // Newest first: "stable", then "experimental".
+    assert_eq!(history[0]["subject"], "stable");
+    assert_eq!(change(&history[0], "DIFF107")["severity"], "breaking");
+    assert_eq!(history[1]["subject"], "experimental");
+    let relaxed = change(&history[1], "DIFF107");
+    assert_eq!(relaxed["severity"], "warning", "{relaxed}");
+    assert!(
+        relaxed["message"]
+            .as_str()
+            .unwrap()
+            .ends_with("(relaxed: experimental — component `Comp` is experimental)"),
+        "{relaxed}"
+    );
+    let html = common::read_page(&out.join("html/history/comp.html"));
+    assert!(html.contains("component <code>Comp</code> is experimental"), "{html}");
+}
