@@ -91,6 +91,7 @@ pub const SYSTEM_CONFIG_INVALID: &str = "RTC606";
 pub const SYSTEM_CONFIG_UNDECLARED: &str = "RTC607";
 pub const SYSTEM_UNKNOWN_INSTANCE: &str = "RTC608";
 pub const SYSTEM_DUPLICATE_CONNECTOR_ID: &str = "RTC609";
+pub const SYSTEM_USES_DEPRECATED: &str = "RTC610";
 // Component folders (issue 17).
 pub const README_GENERATED: &str = crate::readme::GENERATED;
 pub const README_UNREADABLE: &str = crate::readme::UNREADABLE;
@@ -622,7 +623,7 @@ pub static RULES: &[Rule] = &[
         severity: Warning,
         name: "uses-deprecated",
         summary: "a port uses a deprecated data type or service interface",
-        explanation: "A data type or service interface can be marked deprecated in rtcdoc.toml (`[stability.\"Img::OldImage\"] status = \"deprecated\"`, with `since`, `replacement` and `note`). Each data port carrying a deprecated data type and each service interface (provided or required) of a deprecated interface type is reported at the port or interface, with the version it is deprecated since, its replacement and the note. A component that is itself deprecated is shown so on its page; it is no finding.",
+        explanation: "A data type or service interface can be marked deprecated in rtcdoc.toml (`[stability.\"Img::OldImage\"] status = \"deprecated\"`, with `since`, `replacement` and `note`). Each data port carrying a deprecated data type and each service interface (provided or required) of a deprecated interface type is reported at the port or interface, with the version it is deprecated since, its replacement and the note. A component that is itself deprecated is shown so on its page; an RT System instance of it is RTC610.",
         spec: "rtcdoc (stability marks; not in the RTC Profile spec)",
         hint: "change the type to the replacement the stability mark names, or keep it knowingly until it is removed",
     },
@@ -787,6 +788,15 @@ pub static RULES: &[Rule] = &[
         explanation: "A port keeps its connections by connector id: OpenRTM refuses to connect a port that already has a connector of the id given (RTSystemEditor's copy and paste leaves such twins), and tools that key connectors by id (`rtcdoc diff` among them) must tell the twins apart by their ends.",
         spec: "RtsProfile schema (DataPortConnectors, ServicePortConnectors connectorId)",
         hint: "give each connector its own connectorId (RTSystemEditor makes a new one when the connector is drawn again)",
+    },
+    Rule {
+        code: SYSTEM_USES_DEPRECATED,
+        severity: Warning,
+        name: "system-uses-deprecated-component",
+        summary: "an RT System instance is of a deprecated component",
+        explanation: "A component can be marked deprecated by its profile (`rtcdoc.stability` properties) or in rtcdoc.toml (`[stability.\"RTC:Lab:Sensor:Camera:1.0.0\"] status = \"deprecated\"`, with `since`, `replacement` and `note`). Each instance of an RT System whose component is deprecated is reported at the instance, with the version it is deprecated since, its replacement and the note: the system still runs, but it is built on a component its owners mean to remove.",
+        spec: "rtcdoc (stability marks; not in the RTC Profile or RtsProfile spec)",
+        hint: "replace the instance by one of the replacement the stability mark names (in RTSystemEditor, then save the system again), or keep it knowingly until it is removed",
     },
     Rule {
         code: README_GENERATED,

@@ -1298,6 +1298,25 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     }
 }
 
+/// What a deprecation mark says, for a finding: "deprecated since 2.0; use `X` instead (note)".
+pub(crate) fn deprecated_text(s: &crate::model::stability::Stability) -> String {
+    let since = s
+        .since
+        .as_deref()
+        .map(|v| format!(" since {v}"))
+        .unwrap_or_default();
+    let instead = match &s.replacement {
+        Some(r) => format!("; use {} instead", Code(r)),
+        None => String::new(),
+    };
+    let note = s
+        .note
+        .as_deref()
+        .map(|n| format!(" ({n})"))
+        .unwrap_or_default();
+    format!("deprecated{since}{instead}{note}")
+}
+
 /// RTC407: each data port carrying a deprecated data type and each service interface of a
 /// deprecated interface type, naming the replacement.
 fn deprecated_uses(cat: &Catalog, out: &mut Vec<Diagnostic>) {
@@ -1308,20 +1327,6 @@ fn deprecated_uses(cat: &Catalog, out: &mut Vec<Diagnostic>) {
             .cloned()
     };
     let finding = |c: &Component, pos: Pos, what: String, ty: &str, s: &Stability| {
-        let since = s
-            .since
-            .as_deref()
-            .map(|v| format!(" since {v}"))
-            .unwrap_or_default();
-        let instead = match &s.replacement {
-            Some(r) => format!("; use {} instead", Code(r)),
-            None => String::new(),
-        };
-        let note = s
-            .note
-            .as_deref()
-            .map(|n| format!(" ({n})"))
-            .unwrap_or_default();
         let hint = match &s.replacement {
             Some(r) => format!(
                 "change the type to {} (the replacement the stability mark names), or keep it knowingly until it is removed",
@@ -1332,7 +1337,7 @@ fn deprecated_uses(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         Diagnostic::warning(
             r::USES_DEPRECATED,
             &c.source,
-            format!("{what} uses {}, deprecated{since}{instead}{note}", Code(ty)),
+            format!("{what} uses {}, {}", Code(ty), deprecated_text(s)),
         )
         .at(pos)
         .with_hint(hint)

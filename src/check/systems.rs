@@ -106,6 +106,7 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
                 ),
             );
         }
+        deprecated_instance(comp, (name, c.pos), sink);
         for set in c.configuration_sets.iter().filter(|x| !x.pseudo) {
             let set_id = non_empty(&set.id).unwrap_or("");
             for d in &set.configuration_data {
@@ -267,6 +268,38 @@ fn end(
 /// saves it (`RTC:AIST:Controller:RobotController0:1.0.0` for an instance `RobotController0`):
 /// the component of that vendor and category whose name is the id's name without its trailing
 /// number, when the input has one.
+/// RTC610: an instance (`name` at `pos`) of component `comp` that is deprecated, naming its
+/// replacement.
+fn deprecated_instance(
+    comp: &crate::catalog::Component,
+    (name, pos): (&str, crate::model::Pos),
+    sink: &mut Findings<'_>,
+) {
+    use crate::model::stability::Status;
+    let Some(s) = comp
+        .stability
+        .as_ref()
+        .filter(|s| s.status == Status::Deprecated)
+    else {
+        return;
+    };
+    sink.emit(
+        r::SYSTEM_USES_DEPRECATED,
+        pos,
+        format!(
+            "instance `{name}` is of `{}`, {}",
+            comp.profile.name(),
+            super::rules::deprecated_text(s)
+        ),
+    );
+    if let (Some(r), Some(d)) = (&s.replacement, sink.out.last_mut()) {
+        d.hint = Some(format!(
+            "replace instance `{name}` by one of {} (the replacement the stability mark names; in RTSystemEditor, then save the system again), or keep it knowingly until it is removed",
+            crate::quote::Code(r)
+        ));
+    }
+}
+
 fn instance_named_id(cat: &Catalog, c: &crate::model::system::SystemComponent) -> Option<String> {
     use crate::catalog::facet_key;
     let parts = c.id_parts.as_ref()?;

@@ -82,6 +82,8 @@ const CASES: &[(&str, &str, u32, u32)] = &[
     ("RTC607", "System.xml", 5, 7),
     ("RTC608", "System.xml", 9, 5),
     ("RTC609", "System.xml", 14, 3),
+    // An instance of a component deprecated in rtcdoc.toml, at the instance.
+    ("RTC610", "System.xml", 3, 3),
     ("RTC701", "README.md", 2, 1),
     // A folder named README.md: a finding about the whole file, without a position.
     ("RTC702", "README.md", 0, 0),

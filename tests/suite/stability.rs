@@ -319,7 +319,10 @@ fn diff_208_becomes_information_when_every_breaking_change_is_relaxed() {
     let b = bump(&json);
     assert_eq!(b["severity"], "info", "{b}");
     assert_eq!(b["defaultSeverity"], "warning", "{b}");
-    assert_eq!(b["relaxedFor"], "every breaking change of `RTC:Test:Cat:Comp:1.0.0`", "{b}");
+    assert_eq!(
+        b["relaxedFor"], "every breaking change of `RTC:Test:Cat:Comp:1.0.0`",
+        "{b}"
+    );
     let o = diff(d, "new", &["--fail-on", "warning"]);
     let out = String::from_utf8_lossy(&o.stdout);
     // DIFF107 is still a warning, so --fail-on warning fails; DIFF208 is information.
@@ -379,5 +382,8 @@ fn history_relaxes_the_versions_of_an_experimental_component() {
         "{relaxed}"
     );
     let html = common::read_page(&out.join("html/history/comp.html"));
-    assert!(html.contains("component <code>Comp</code> is experimental"), "{html}");
+    assert!(
+        html.contains("component <code>Comp</code> is experimental"),
+        "{html}"
+    );
 }
