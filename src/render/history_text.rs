@@ -89,10 +89,7 @@ fn history_item<M: Markup>(
                         Some(t) => M::page_link(cat, v.page, cat.type_page(t), None, &c.path),
                         None => M::esc(&c.path),
                     },
-                    match &c.reach {
-                        Some(reach) => format!("{} — {}", M::message(&c.message), M::esc(reach)),
-                        None => M::message(&c.message),
-                    },
+                    super::text::message_and_reach::<M>(c),
                 ]
             })
             .collect();
@@ -163,7 +160,7 @@ pub fn whats_new_page<M: Markup>(
                     M::esc(&r.change.severity_label),
                     M::esc(&r.change.code),
                     path,
-                    M::message(&r.change.message)
+                    super::text::message_and_reach::<M>(&r.change)
                 )
             })
             .collect();

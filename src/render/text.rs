@@ -1181,7 +1181,7 @@ pub(super) fn history_body<M: Markup>(
                     if !c.path.is_empty() {
                         item.push_str(&format!(" {}:", M::esc(&c.path)));
                     }
-                    format!("{item} {}", M::message(&c.message))
+                    format!("{item} {}", message_and_reach::<M>(c))
                 })
                 .collect();
             each.extend(r.more.as_deref().map(|more| match full {
@@ -1222,5 +1222,13 @@ pub(super) fn history_body<M: Markup>(
             out,
             &M::page_link(cat, from, to, None, lang.t("history_full")),
         );
+    }
+}
+
+/// A change's message, and what it reaches after a dash when it reaches other components.
+pub(crate) fn message_and_reach<M: Markup>(c: &crate::render::view::history::ChangeRow) -> String {
+    match &c.reach {
+        Some(reach) => format!("{} — {}", M::message(&c.message), M::esc(reach)),
+        None => M::message(&c.message),
     }
 }

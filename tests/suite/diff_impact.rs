@@ -216,4 +216,94 @@ fn the_history_page_shows_the_reach_of_a_versions_changes() {
     assert!(dox.contains(line), "{dox}");
     // The version change reaches nothing: its row says nothing more.
     assert_eq!(md.matches("Reaches").count(), 1, "{md}");
+    // The same reach on the History section of the component page and on What's new.
+    let row = format!(
+        "data port <code>range</code> was removed <span class=\"reach\">{line}</span></li>"
+    );
+    let component = page(&site, "html/components/laser.html");
+    assert!(component.contains(&row), "{component}");
+    let whats_new = page(&site, "html/whats-new.html");
+    assert!(
+        whats_new.contains(&format!(
+            "data port <code>range</code> was removed<br><span class=\"reach\">{line}</span></td>"
+        )),
+        "{whats_new}"
+    );
+    let component_md = page(&site, "markdown/components/laser.md");
+    assert!(
+        component_md.contains(&format!("data port `range` was removed — {line}")),
+        "{component_md}"
+    );
+    let whats_new_md = page(&site, "markdown/whats-new.md");
+    assert!(whats_new_md.contains(line), "{whats_new_md}");
+}
+
+/// A change inside an IDL definition reaches every component that produces or consumes the
+/// type: in `diff`'s report (at each port) and, as `idl/Lab::Pose/…`, on the type page's and
+/// the IDL file's history.
+#[test]
+fn a_change_to_an_idl_definition_reaches_its_producers_and_consumers() {
+    let d = tempfile::tempdir().expect("tempdir");
+    let repo = d.path().join("new");
+    if !init(&repo) {
+        return common::missing_tool("git");
+    }
+    let idl = |field: &str| {
+        format!("module Lab {{\n  struct Pose {{\n    double x;\n    {field}\n  }};\n}};\n")
+    };
+    common::write(&repo, "idl/Lab.idl", &idl("double y;"));
+    for (name, dir, port) in [
+        ("Localizer", "DataOutPort", "pose"),
+        ("Planner", "DataInPort", "pose"),
+        ("Viewer", "DataInPort", "pose"),
+    ] {
+        common::write(
+            &repo,
+            &format!("{name}/RTC.xml"),
+            &common::xml_profile(name, &[(dir, port, "Lab::Pose")]),
+        );
+    }
+    commit(&repo, 1, "Pose");
+    let old = d.path().join("old");
+    copy_tree(&repo, &old);
+    std::fs::remove_dir_all(old.join(".git")).expect("rm .git");
+    // `y` becomes a float: a breaking change of the definition, not of any profile.
+    common::write(&repo, "idl/Lab.idl", &idl("float y;"));
+    commit(&repo, 2, "Pose: float y");
+    let json = json_of(&diff_in(d.path(), &["--format", "json"]));
+    // `diff` reports the definition's change at each port carrying it, reaching the others.
+    let change = json["changes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["code"] == "DIFF134" && c["component"] == "RTC:Test:Cat:Localizer:1.0.0")
+        .cloned()
+        .unwrap_or_else(|| panic!("no DIFF134 of Localizer: {json}"));
+    assert_eq!(
+        change["reach"],
+        serde_json::json!([{"component": "RTC:Test:Cat:Planner:1.0.0", "role": "consumer"}, {"component": "RTC:Test:Cat:Viewer:1.0.0", "role": "consumer"}]),
+        "{change}"
+    );
+    // The IDL file's history compares the definitions themselves (`idl/Lab::Pose/…`): the
+    // change reaches every component carrying the type, on the type page and the IDL file's
+    // history page.
+    let site = d.path().join("site");
+    build(&repo, &site, &["-f", "html,markdown"]);
+    let line =
+        "Reaches 3 other components: Localizer (producer), Planner (consumer), Viewer (consumer)";
+    let type_page = page(&site, "html/types/lab-pose.html");
+    assert!(type_page.contains(line), "{type_page}");
+    let idl_history = std::fs::read_dir(site.join("html/idl-history"))
+        .expect("IDL history pages")
+        .map(|e| {
+            page(
+                &site,
+                &format!(
+                    "html/idl-history/{}",
+                    e.unwrap().file_name().to_string_lossy()
+                ),
+            )
+        })
+        .collect::<String>();
+    assert!(idl_history.contains(line), "{idl_history}");
 }

@@ -433,7 +433,13 @@ pub fn component_view<'a>(
             &c.history,
             lang,
             &|commit, path| super::history_page::commit_url(cat, c, source_url, commit, path),
-            super::history_page::current_file_date(c).as_deref(),
+            (
+                super::history_page::current_file_date(c).as_deref(),
+                &|ch| {
+                    let of = crate::catalog::history::HistoryOf::Component(ci);
+                    (None, super::history::reach_text(cat, of, ch, lang))
+                },
+            ),
         ),
         neighbourhood: nb::rows(cat, ci, &nb::neighbourhood(cat, ci)),
     }

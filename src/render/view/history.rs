@@ -161,18 +161,25 @@ pub struct HistoryView {
 impl HistoryView {
     /// The section of the history `h` (a component's, a system's); `url` makes the link of a
     /// commit's file (commit, path); `current_date` dates the current file's row, which git
-    /// did not date (a component's profile's `updateDate`).
+    /// did not date (a component's profile's `updateDate`); `annotate` gives each change's
+    /// type and reach.
     pub fn of(
         h: &[Entry],
         lang: Lang,
         url: &dyn Fn(&str, &str) -> Option<String>,
-        current_date: Option<&str>,
+        (current_date, annotate): (Option<&str>, Annotate),
     ) -> Self {
         let mut rows = Vec::new();
         let mut i = 0;
         while i < h.len() && rows.len() < ROWS {
             if h[i].stands_out() {
-                rows.push(row(&h[i], committed(h), lang, url, current_date));
+                rows.push(row(
+                    &h[i],
+                    committed(h),
+                    lang,
+                    url,
+                    (current_date, annotate),
+                ));
                 i += 1;
                 continue;
             }
@@ -230,7 +237,7 @@ pub fn row(
     committed: bool,
     lang: Lang,
     url: &dyn Fn(&str, &str) -> Option<String>,
-    current_date: Option<&str>,
+    (current_date, annotate): (Option<&str>, Annotate),
 ) -> HistoryRow {
     let label = if e.is_current() {
         lang.t(if committed {
@@ -285,7 +292,7 @@ pub fn row(
         subject: e.subject.clone().unwrap_or_default(),
         version,
         summary,
-        changes: by_severity(&e.changes[..], &|_| (None, None), lang)
+        changes: by_severity(&e.changes[..], annotate, lang)
             .into_iter()
             .take(ROW_CHANGES)
             .collect(),

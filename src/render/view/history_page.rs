@@ -180,7 +180,7 @@ pub fn history_page_view<'a>(
     while i < h.len() {
         let e = &h[i];
         if e.stands_out() {
-            let row = row(e, committed(h), lang, &url, current.as_deref());
+            let row = row(e, committed(h), lang, &url, (current.as_deref(), &about));
             let version = VersionItem {
                 anchor: entry_anchor(e),
                 heading: [e.version.as_deref().unwrap_or(""), row.label.as_str()]
@@ -490,7 +490,14 @@ pub fn whats_new_view(cat: &Catalog, source_url: Option<&str>, lang: Lang) -> Wh
                 url: url.clone(),
                 source: source.clone(),
                 category: category.clone(),
-                change: ChangeRow::of(ch, (changed_type(cat, of, ch), None), lang),
+                change: ChangeRow::of(
+                    ch,
+                    (
+                        changed_type(cat, of, ch),
+                        super::history::reach_text(cat, of, ch, lang),
+                    ),
+                    lang,
+                ),
             })
             .collect();
         match v.days.last_mut() {
@@ -561,7 +568,13 @@ pub fn feed_entries(cat: &Catalog, lang: Lang) -> Vec<FeedEntry<'_>> {
         if e.changes.is_empty() {
             continue;
         }
-        let r = row(e, committed(h), lang, &|_, _| None, None);
+        let r = row(
+            e,
+            committed(h),
+            lang,
+            &|_, _| None,
+            (None, &|_| (None, None)),
+        );
         let mut title = cat.history_name(of);
         let kind = kind_label(of, lang);
         if !kind.is_empty() {

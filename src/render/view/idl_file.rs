@@ -42,7 +42,18 @@ pub fn idl_file_view<'a>(
     let history = cat
         .idl_history
         .get(&file.path)
-        .map(|h| HistoryView::of(h, lang, &url, None))
+        .map(|h| {
+            let of = cat
+                .idl_file_index(file)
+                .map(crate::catalog::history::HistoryOf::Idl);
+            let reach = |ch: &crate::catalog::history::Change| {
+                (
+                    None,
+                    of.and_then(|of| super::history::reach_text(cat, of, ch, lang)),
+                )
+            };
+            HistoryView::of(h, lang, &url, (None, &reach))
+        })
         .unwrap_or_default();
     let source_url = crate::render::html::repo::document_source_url(
         &cat.sources,

@@ -670,7 +670,10 @@ pub fn system_view(
                 s.origin.as_ref(),
                 source_url,
             ),
-            super::history_page::update_date(&s.profile.update_date).as_deref(),
+            (
+                super::history_page::update_date(&s.profile.update_date).as_deref(),
+                &|_| (None, None),
+            ),
         ),
         history_page: cat
             .systems

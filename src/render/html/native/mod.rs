@@ -955,6 +955,11 @@ fn history_table(
                     o.raw(": ");
                 }
                 o.text_with_code(&c.message);
+                if let Some(reach) = &c.reach {
+                    o.raw(" <span class=\"reach\">");
+                    o.text(reach);
+                    o.raw("</span>");
+                }
                 o.raw("</li>");
             }
             if let Some(more) = h.more.as_deref().filter(|m| !m.is_empty()) {
