@@ -461,6 +461,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("manual_appendix", "Appendix: data types and interfaces", "付録: データ型とインターフェース"),
     ("manual_contents", "Contents", "目次"),
     ("manual_list", "System manuals", "システムマニュアル一覧"),
+    ("manual_no_definition", "Its IDL definition was not available when this manual was made.", "この手引きを作ったとき、その IDL の定義は読み込めませんでした。"),
     ("manual_no_systems", "The catalogue has no RT System.", "カタログに RT システムはありません。"),
     ("manual_runs_as", "Runs in this system as", "このシステムでのインスタンス"),
     ("max_instances", "Max instances", "最大インスタンス数"),

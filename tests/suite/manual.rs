@@ -263,3 +263,40 @@ fn the_japanese_manual_prints_in_a_noto_sans_cjk_font() {
         "the PDF embeds no Noto Sans CJK JP face:\n{fonts}"
     );
 }
+
+/// A deprecated component's chapter says so under its title, its replacement linked inside the
+/// file; a type without its IDL definition says so without advice meant for the tool's user.
+#[test]
+fn the_manual_shows_stability_and_says_plainly_what_it_lacks() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let input = dir.path().join("in");
+    for (rel, bytes) in common::tree(&root().join("examples")) {
+        let to = input.join(&rel);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::write(to, bytes).unwrap();
+    }
+    common::write(
+        &input,
+        "rtcdoc.toml",
+        "[stability.\"RTC:ExampleRobotics:Sensor:UrgRangeSensor:2.1.0\"]\nstatus = \"deprecated\"\nsince = \"2.1\"\nreplacement = \"SafetyMonitor\"\n",
+    );
+    let out = dir.path().join("out");
+    let o = common::rtcdoc(
+        &["build", "in", "-o", out.to_str().unwrap(), "-f", "manual"],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let html = read_page(&out.join("patrolrobot.html"));
+    let chapter = &html[html
+        .find("<h1><span class=\"kind\">Component</span> UrgRangeSensor</h1>")
+        .expect("the chapter")..];
+    assert!(
+        chapter.starts_with("<h1><span class=\"kind\">Component</span> UrgRangeSensor</h1>\n<p class=\"stability deprecated\" role=\"note\"><strong>Deprecated since 2.1</strong> — use <a href=\"#components-safetymonitor\"><code>SafetyMonitor</code></a></p>"),
+        "{}",
+        &chapter[..400.min(chapter.len())]
+    );
+    let ids = attr_values(&html, "id");
+    assert!(ids.contains(&"components-safetymonitor"));
+    assert!(html.contains("<p class=\"no-definition\">Its IDL definition was not available when this manual was made.</p>"));
+    assert!(!html.contains("--idl-path") && !html.contains("rtcdoc init"));
+}

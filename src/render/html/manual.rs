@@ -50,6 +50,7 @@ struct TypeSection {
     spellings: Vec<String>,
     idl_files: Vec<String>,
     def: Option<DefinitionView>,
+    stability: Option<super::StabilityLine>,
 }
 
 impl Renderer for ManualRenderer {
@@ -259,6 +260,7 @@ fn type_section(
         spellings: v.spellings.to_vec(),
         idl_files: crate::catalog::idl_file_names(v.idl_files),
         def,
+        stability: super::StabilityLine::of(cat, v.page, v.stability.as_ref(), site.out),
     }
 }
 

@@ -191,7 +191,7 @@ pub struct Link {
 /// A stability mark under a page's title (the macro `stability_line` of `macros.html`), from
 /// its view; the replacement's `href` is empty when the catalogue does not have it.
 #[derive(Debug, Clone, Serialize)]
-struct StabilityLine {
+pub(super) struct StabilityLine {
     class: &'static str,
     headline: String,
     use_before: &'static str,
@@ -201,10 +201,11 @@ struct StabilityLine {
 }
 
 impl StabilityLine {
-    fn of(
+    pub(super) fn of(
         cat: &Catalog,
         from: &crate::catalog::Page,
         v: Option<&view::StabilityView<'_>>,
+        out: Output,
     ) -> Option<StabilityLine> {
         let v = v?;
         let (use_before, use_after) = v.replacement.as_ref().map_or(("", ""), |r| (r.0, r.1));
@@ -215,7 +216,7 @@ impl StabilityLine {
             use_after,
             replacement: v.replacement.as_ref().map(|(_, _, r)| Link {
                 text: r.text.clone(),
-                href: r.target(cat, from, Output::Html).unwrap_or_default(),
+                href: r.target(cat, from, out).unwrap_or_default(),
             }),
             note: v.note.map(str::to_string),
         })
@@ -842,7 +843,7 @@ impl<'a> Site<'a> {
             description,
             crumbs,
             summary_html: v.lead.map(markdown::to_html),
-            stability: StabilityLine::of(self.catalog, v.page, v.stability.as_ref()),
+            stability: StabilityLine::of(self.catalog, v.page, v.stability.as_ref(), self.out),
             name: v.name.clone(),
             header,
             document: fields(lang, None, v.document.clone()),
@@ -1514,7 +1515,7 @@ fn type_page(site: &Site<'_>, v: &view::types::TypeView<'_>) -> TypePage {
         title: page_title(site, &format!("{} {}", v.name, lang.t(key))),
         name: v.name.to_string(),
         crumbs: crumbs_section(lang, root, crumbs_key),
-        stability: StabilityLine::of(catalog, v.page, v.stability.as_ref()),
+        stability: StabilityLine::of(catalog, v.page, v.stability.as_ref(), Output::Html),
         spellings: v.spellings.to_vec(),
         idl_files: crate::catalog::idl_file_names(v.idl_files),
         def: crate::render::idl_view::definition(catalog, v.name, lang),
