@@ -29,6 +29,14 @@ pub fn run(cat: &Catalog) -> Vec<Diagnostic> {
 }
 
 fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
+    duplicate_names(s, sink);
+    instances(cat, s, sink);
+    connector_ends(cat, s, sink);
+    connector_types(cat, s, sink);
+}
+
+/// RTC605 and RTC609: an instance name, or a connector id, used twice.
+fn duplicate_names(s: &System, sink: &mut Findings<'_>) {
     let p = &s.profile;
     // Instance names.
     let mut first: HashMap<&str, usize> = HashMap::new();
@@ -71,8 +79,12 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             );
         }
     }
-    // Instances against the catalogue; their configuration.
-    for (i, c) in p.components.iter().enumerate() {
+}
+
+/// RTC603, RTC604, RTC610 and the configuration (RTC606, RTC607): each instance against the
+/// catalogue.
+fn instances(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
+    for (i, c) in s.profile.components.iter().enumerate() {
         let name = non_empty(&c.instance_name).unwrap_or("");
         let id = non_empty(&c.id).unwrap_or("");
         let Some(comp) = cat.instance_component(s, i) else {
@@ -107,34 +119,48 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             );
         }
         deprecated_instance(comp, (name, c.pos), sink);
-        for set in c.configuration_sets.iter().filter(|x| !x.pseudo) {
-            let set_id = non_empty(&set.id).unwrap_or("");
-            for d in &set.configuration_data {
-                let n = non_empty(&d.name).unwrap_or("");
-                let v = d.data.as_deref().unwrap_or("");
-                match check_configuration(comp, n, v) {
-                    ConfigCheck::Ok => {}
-                    ConfigCheck::Undeclared => sink.emit(
-                        r::SYSTEM_CONFIG_UNDECLARED,
-                        d.pos,
-                        format!(
-                            "instance `{name}`, set `{set_id}`: `{}` declares no parameter `{n}`",
-                            comp.profile.name()
-                        ),
+        configuration(comp, c, name, sink);
+    }
+}
+
+/// RTC606 and RTC607: the configuration sets instance `name` (`c`, of component `comp`) has.
+fn configuration(
+    comp: &crate::catalog::Component,
+    c: &crate::model::system::SystemComponent,
+    name: &str,
+    sink: &mut Findings<'_>,
+) {
+    for set in c.configuration_sets.iter().filter(|x| !x.pseudo) {
+        let set_id = non_empty(&set.id).unwrap_or("");
+        for d in &set.configuration_data {
+            let n = non_empty(&d.name).unwrap_or("");
+            let v = d.data.as_deref().unwrap_or("");
+            match check_configuration(comp, n, v) {
+                ConfigCheck::Ok => {}
+                ConfigCheck::Undeclared => sink.emit(
+                    r::SYSTEM_CONFIG_UNDECLARED,
+                    d.pos,
+                    format!(
+                        "instance `{name}`, set `{set_id}`: `{}` declares no parameter `{n}`",
+                        comp.profile.name()
                     ),
-                    ConfigCheck::BadType(why) | ConfigCheck::Violated(why) => sink.emit(
-                        r::SYSTEM_CONFIG_INVALID,
-                        d.pos,
-                        format!(
-                            "instance `{name}`, set `{set_id}`: `{n}` = {} is {why}",
-                            Code(v)
-                        ),
+                ),
+                ConfigCheck::BadType(why) | ConfigCheck::Violated(why) => sink.emit(
+                    r::SYSTEM_CONFIG_INVALID,
+                    d.pos,
+                    format!(
+                        "instance `{name}`, set `{set_id}`: `{n}` = {} is {why}",
+                        Code(v)
                     ),
-                }
+                ),
             }
         }
     }
-    // Connector ends.
+}
+
+/// The findings of each connector's ends ([`end`]).
+fn connector_ends(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
+    let p = &s.profile;
     let ends = p
         .data_port_connectors
         .iter()
@@ -152,8 +178,12 @@ fn system(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
             end(cat, s, (e, service), el, sink);
         }
     }
-    // Connector types against port types, each spelling read as the IDL defines it (a
-    // repository id with a `#pragma prefix` names the type defined under it).
+}
+
+/// RTC602: connector types against port types, each spelling read as the IDL defines it (a
+/// repository id with a `#pragma prefix` names the type defined under it).
+fn connector_types(cat: &Catalog, s: &System, sink: &mut Findings<'_>) {
+    let p = &s.profile;
     let canonical = |t: &str| cat.idl.canonical_name(t);
     for (c, l) in p.data_port_connectors.iter().zip(&s.data_connectors) {
         let port_type = |el: &crate::catalog::systems::EndLink| -> Option<(String, String)> {
