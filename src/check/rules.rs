@@ -64,21 +64,25 @@ pub(crate) fn component(c: &Component) -> Vec<Diagnostic> {
 
 /// RTC101: required attributes (XSD `use="required"`).
 fn required(p: &Profile, s: &mut Findings) {
-    // An empty attribute is pointed at; a missing one at its element. `what` is put in words
-    // only when something is missing.
-    let miss = |s: &mut Findings,
-                what: &dyn std::fmt::Display,
-                v: &Option<crate::model::Text>,
-                pos: Pos| {
-        if blank(v) {
-            let how = if v.is_some() {
-                "is empty"
-            } else {
-                "is missing"
-            };
-            s.emit(r::MISSING_REQUIRED, pos, format!("required {what} {how}"));
-        }
-    };
+    required_basic(p, s);
+    required_nodes(p, s);
+}
+
+/// A required value `what` that is blank: an empty attribute is pointed at, a missing one at
+/// its element (`pos` is either). `what` is put in words only when something is missing.
+fn miss(s: &mut Findings, what: &dyn std::fmt::Display, v: &Option<crate::model::Text>, pos: Pos) {
+    if blank(v) {
+        let how = if v.is_some() {
+            "is empty"
+        } else {
+            "is missing"
+        };
+        s.emit(r::MISSING_REQUIRED, pos, format!("required {what} {how}"));
+    }
+}
+
+/// RTC101 of the profile's own attributes, its BasicInfo and its actions.
+fn required_basic(p: &Profile, s: &mut Findings) {
     miss(
         s,
         &"rtc_profile attribute `id`",
@@ -131,6 +135,10 @@ fn required(p: &Profile, s: &mut Findings) {
             );
         }
     }
+}
+
+/// RTC101 of the configuration parameters, ports, interfaces, parameters and language.
+fn required_nodes(p: &Profile, s: &mut Findings) {
     // A node's `name`, then its other required attributes, each labelled with that name.
     let node = |s: &mut Findings,
                 (element, what): (&str, &str),
@@ -1138,6 +1146,13 @@ fn shown_file_name(path: &str) -> &str {
 
 /// RTC403–RTC406: port types against the IDL read.
 fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
+    port_types_in_idl(cat, out);
+    differing_definitions(cat, out);
+}
+
+/// RTC402–RTC405: each port's type against the IDL read (defined, in the file its `idlFile`
+/// names).
+fn port_types_in_idl(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     let have_idl = !cat.idl.is_empty();
     let idl_names: std::collections::HashSet<String> = cat
         .idl
@@ -1240,7 +1255,10 @@ fn idl_rules(cat: &Catalog, out: &mut Vec<Diagnostic>) {
         }
         out.extend(s.out);
     }
-    // Different definitions of one type (vendored copies that drifted apart).
+}
+
+/// RTC406: different definitions of one type (vendored copies that drifted apart).
+fn differing_definitions(cat: &Catalog, out: &mut Vec<Diagnostic>) {
     let strip = |d: &crate::idl::IdlDefinition| -> serde_json::Value {
         fn clean(v: &mut serde_json::Value) {
             match v {
