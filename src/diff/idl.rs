@@ -457,6 +457,36 @@ impl<'s> Cmp<'s> {
         }
     }
 
+    /// Whether the comparison stops at `name` (item `n`): past the budget of nested types or
+    /// the nesting limit, said once for the whole comparison.
+    fn stopped(&mut self, p: &P, name: &str, n: &IdlItem<'s>) -> bool {
+        let stop = if self.budget == 0 {
+            Some(format!("more than {BUDGET} nested types"))
+        } else if self.stack.len() >= NESTING {
+            Some(format!("nested more than {NESTING} definitions deep"))
+        } else {
+            None
+        };
+        let Some(why) = stop else {
+            return false;
+        };
+        if !self
+            .out
+            .findings
+            .iter()
+            .any(|f| f.kind == Kind::Other && f.message.starts_with("comparison stopped"))
+        {
+            self.push(
+                Kind::Other,
+                &p.base,
+                (None, None),
+                format!("comparison stopped at `{name}`: {why}"),
+                at(n, n.definition.pos()).loc(),
+            );
+        }
+        true
+    }
+
     /// Compares two definitions of one name. `top`: the type a port or interface names.
     fn def(&mut self, p: &P, o: IdlItem<'s>, n: IdlItem<'s>, top: bool) {
         let (od, nd) = (o.definition, n.definition);
@@ -468,28 +498,7 @@ impl<'s> Cmp<'s> {
         if self.stack.contains(&name) || (!top && seen(&name)) {
             return;
         }
-        let stop = if self.budget == 0 {
-            Some(format!("more than {BUDGET} nested types"))
-        } else if self.stack.len() >= NESTING {
-            Some(format!("nested more than {NESTING} definitions deep"))
-        } else {
-            None
-        };
-        if let Some(why) = stop {
-            if !self
-                .out
-                .findings
-                .iter()
-                .any(|f| f.kind == Kind::Other && f.message.starts_with("comparison stopped"))
-            {
-                self.push(
-                    Kind::Other,
-                    &p.base,
-                    (None, None),
-                    format!("comparison stopped at `{name}`: {why}"),
-                    at(&n, nd.pos()).loc(),
-                );
-            }
+        if self.stopped(p, &name, &n) {
             return;
         }
         self.budget -= 1;
@@ -554,83 +563,7 @@ impl<'s> Cmp<'s> {
                 }
             }
             (IdlDefinition::Union(a), IdlDefinition::Union(b)) => {
-                self.slot(
-                    &p.seg("switch"),
-                    (&a.switch_type, &[]),
-                    (&b.switch_type, &[]),
-                    Kind::Union,
-                    &format!("the discriminator of union `{name}`"),
-                    &at(&n, nd.pos()),
-                );
-                let case_name = |c: &crate::idl::IdlUnionCase| c.field.name.clone();
-                for c in &a.cases {
-                    if !b.cases.iter().any(|x| case_name(x) == case_name(c)) {
-                        self.push(
-                            Kind::Union,
-                            &p.slot(&format!("cases/{}", c.field.name)).base,
-                            (Some(case_text(c)), None),
-                            format!("case `{}` of union `{name}` was removed", c.field.name),
-                            at_old(&o, c.field.pos).loc(),
-                        );
-                    }
-                }
-                for c in &b.cases {
-                    let cp = p.slot(&format!("cases/{}", c.field.name));
-                    let Some(oc) = a.cases.iter().find(|x| case_name(x) == case_name(c)) else {
-                        self.push(
-                            Kind::Union,
-                            &cp.base,
-                            (None, Some(case_text(c))),
-                            format!(
-                                "case `{}` was added to union `{name}`{}",
-                                c.field.name,
-                                at(&n, c.field.pos)
-                            ),
-                            at(&n, c.field.pos).loc(),
-                        );
-                        continue;
-                    };
-                    let labels = |c: &crate::idl::IdlUnionCase| {
-                        let mut l: Vec<String> = c
-                            .labels
-                            .iter()
-                            .map(|s| s.split_whitespace().collect())
-                            .collect();
-                        if c.is_default {
-                            l.push("default".into());
-                        }
-                        l.sort();
-                        l.dedup();
-                        l
-                    };
-                    if labels(oc) != labels(c) {
-                        self.push(
-                            Kind::Union,
-                            &cp.base,
-                            (Some(labels(oc).join(", ")), Some(labels(c).join(", "))),
-                            format!(
-                                "case `{}` of union `{name}` is selected by {} instead of {}{}",
-                                c.field.name,
-                                labels(c).join(", "),
-                                labels(oc).join(", "),
-                                at(&n, c.field.pos)
-                            ),
-                            at(&n, c.field.pos).loc(),
-                        );
-                    }
-                    let (of, nf) = (&oc.field, &c.field);
-                    self.held(
-                        &cp,
-                        (&of.ty, &of.array, of.doc.as_deref()),
-                        (&nf.ty, &nf.array, nf.doc.as_deref()),
-                        Kind::Union,
-                        (
-                            &format!("case `{}` of union `{name}`", nf.name),
-                            &format!("case `{}` of `{name}`", nf.name),
-                        ),
-                        &at(&n, nf.pos),
-                    );
-                }
+                self.union(p, (a, b), &name, (&o, &n))
             }
             (IdlDefinition::Typedef(a), IdlDefinition::Typedef(b)) => self.slot(
                 p,
@@ -657,6 +590,95 @@ impl<'s> Cmp<'s> {
             _ => {}
         }
         self.stack.pop();
+    }
+
+    /// The changes of union `name` (`a` of item `o` before, `b` of `n` after): its
+    /// discriminator, and each case removed, added, selected otherwise or holding another type.
+    fn union(
+        &mut self,
+        p: &P,
+        (a, b): (&'s crate::idl::IdlUnion, &'s crate::idl::IdlUnion),
+        name: &str,
+        (o, n): (&IdlItem<'s>, &IdlItem<'s>),
+    ) {
+        let nd = n.definition;
+        self.slot(
+            &p.seg("switch"),
+            (&a.switch_type, &[]),
+            (&b.switch_type, &[]),
+            Kind::Union,
+            &format!("the discriminator of union `{name}`"),
+            &at(n, nd.pos()),
+        );
+        let case_name = |c: &crate::idl::IdlUnionCase| c.field.name.clone();
+        for c in &a.cases {
+            if !b.cases.iter().any(|x| case_name(x) == case_name(c)) {
+                self.push(
+                    Kind::Union,
+                    &p.slot(&format!("cases/{}", c.field.name)).base,
+                    (Some(case_text(c)), None),
+                    format!("case `{}` of union `{name}` was removed", c.field.name),
+                    at_old(o, c.field.pos).loc(),
+                );
+            }
+        }
+        for c in &b.cases {
+            let cp = p.slot(&format!("cases/{}", c.field.name));
+            let Some(oc) = a.cases.iter().find(|x| case_name(x) == case_name(c)) else {
+                self.push(
+                    Kind::Union,
+                    &cp.base,
+                    (None, Some(case_text(c))),
+                    format!(
+                        "case `{}` was added to union `{name}`{}",
+                        c.field.name,
+                        at(n, c.field.pos)
+                    ),
+                    at(n, c.field.pos).loc(),
+                );
+                continue;
+            };
+            let labels = |c: &crate::idl::IdlUnionCase| {
+                let mut l: Vec<String> = c
+                    .labels
+                    .iter()
+                    .map(|s| s.split_whitespace().collect())
+                    .collect();
+                if c.is_default {
+                    l.push("default".into());
+                }
+                l.sort();
+                l.dedup();
+                l
+            };
+            if labels(oc) != labels(c) {
+                self.push(
+                    Kind::Union,
+                    &cp.base,
+                    (Some(labels(oc).join(", ")), Some(labels(c).join(", "))),
+                    format!(
+                        "case `{}` of union `{name}` is selected by {} instead of {}{}",
+                        c.field.name,
+                        labels(c).join(", "),
+                        labels(oc).join(", "),
+                        at(n, c.field.pos)
+                    ),
+                    at(n, c.field.pos).loc(),
+                );
+            }
+            let (of, nf) = (&oc.field, &c.field);
+            self.held(
+                &cp,
+                (&of.ty, &of.array, of.doc.as_deref()),
+                (&nf.ty, &nf.array, nf.doc.as_deref()),
+                Kind::Union,
+                (
+                    &format!("case `{}` of union `{name}`", nf.name),
+                    &format!("case `{}` of `{name}`", nf.name),
+                ),
+                &at(n, nf.pos),
+            );
+        }
     }
 
     fn members(

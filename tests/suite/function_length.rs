@@ -14,7 +14,6 @@ const STILL_LONG: &[(&str, &str)] = &[
     ("src/build.rs", "load_with"),
     ("src/catalog.rs", "build_entries"),
     ("src/diff/idl.rs", "operation"),
-    ("src/diff/idl.rs", "def"),
     ("src/diff/mod.rs", "classify"),
     ("src/diff/mod.rs", "changed"),
     ("src/diff/mod.rs", "diff_with_systems"),
