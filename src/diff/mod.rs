@@ -322,13 +322,7 @@ pub fn diff_with_systems(
     let mut breaks = systems::Breaks::default();
     let old_ids: Vec<Ident> = old.components.iter().map(ident).collect();
     let new_ids: Vec<Ident> = new.components.iter().map(ident).collect();
-    let mut groups: BTreeMap<&Key, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
-    for (i, id) in old_ids.iter().enumerate() {
-        groups.entry(&id.key).or_default().0.push(i);
-    }
-    for (i, id) in new_ids.iter().enumerate() {
-        groups.entry(&id.key).or_default().1.push(i);
-    }
+    let mut groups = groups_by_key(&old_ids, &new_ids);
     pair_renamed(&mut groups, (old, new));
     let mut out = Vec::new();
     let mut labels = impact::Labels::new();
@@ -388,48 +382,63 @@ pub fn diff_with_systems(
                     let c = &old.components[o];
                     breaks.note_removed(&old_ids[o].key, &label(&old_ids[o], c));
                     labels.insert(label(&old_ids[o], c), (Some(o), None));
-                    let at = Some(c.profile.pos).filter(|p| !p.is_unknown());
-                    out.push(Change {
-                        old_file: Some(old_name(&c.source)),
-                        old_line: at.map(|p| p.line),
-                        old_column: at.map(|p| p.column),
-                        ..change(
-                            codes::COMPONENT_REMOVED,
-                            label(&old_ids[o], c),
-                            String::new(),
-                            Some(old_ids[o].id.clone()),
-                            None,
-                            format!("component `{}` was removed", c.profile.name()),
-                        )
-                    });
+                    out.push(component_gone_or_new(
+                        (codes::COMPONENT_REMOVED, true),
+                        label(&old_ids[o], c),
+                        (c, &old_ids[o].id, old_name(&c.source)),
+                    ));
                 }
                 (None, Some(n)) => {
                     counts.added += 1;
                     let c = &new.components[n];
                     labels.insert(label(&new_ids[n], c), (None, Some(n)));
-                    out.push(Change {
-                        file: Some(new_name(&c.source)),
-                        line: Some(c.profile.pos.line).filter(|l| *l > 0),
-                        column: Some(c.profile.pos.column).filter(|_| c.profile.pos.line > 0),
-                        ..change(
-                            codes::COMPONENT_ADDED,
-                            label(&new_ids[n], c),
-                            String::new(),
-                            None,
-                            Some(new_ids[n].id.clone()),
-                            format!("component `{}` was added", c.profile.name()),
-                        )
-                    });
+                    out.push(component_gone_or_new(
+                        (codes::COMPONENT_ADDED, false),
+                        label(&new_ids[n], c),
+                        (c, &new_ids[n].id, new_name(&c.source)),
+                    ));
                 }
                 (None, None) => {}
             }
         }
     }
-    for (side, cat, sys, name) in [
-        ("OLD", old, old_systems, old_name),
-        ("NEW", new, new_systems, new_name),
-    ] {
-        // RT System profiles that could not be read are reported with the systems.
+    unreadable_files(
+        (old, old_systems, old_name),
+        (new, new_systems, new_name),
+        &mut out,
+    );
+    let compared = idl.finish(&mut out);
+    let idl_counts = idl::unused_types(
+        (&old.idl, old_name),
+        (&new.idl, new_name),
+        &compared,
+        &mut out,
+    );
+    let system_counts = systems_changes(
+        &breaks,
+        (old_systems, old_name),
+        (new_systems, new_name),
+        &mut out,
+    );
+    sort(&mut out);
+    Diff {
+        facts: impact::Facts::of(old, new, &out, &labels),
+        changes: out,
+        components: counts,
+        systems: system_counts,
+        idl: idl_counts,
+        ..Diff::default()
+    }
+}
+
+/// The files of either side that could not be read (the readers' errors), each a change that
+/// says what the comparison misses; RT System profiles are reported with the systems.
+fn unreadable_files(
+    old: (&Catalog, &systems::Systems, Namer),
+    new: (&Catalog, &systems::Systems, Namer),
+    out: &mut Vec<Change>,
+) {
+    for (side, (cat, sys, name)) in [("OLD", old), ("NEW", new)] {
         let is_system =
             |d: &crate::diagnostic::Diagnostic| sys.unreadable.iter().any(|u| u.file == d.file);
         // Only the readers' errors mean a file could not be read: a catalog.json side also
@@ -447,38 +456,86 @@ pub fn diff_with_systems(
             out.push(unreadable(side, d, name, ("", then)));
         }
     }
-    let compared = idl.finish(&mut out);
-    let idl_counts = idl::unused_types(
-        (&old.idl, old_name),
-        (&new.idl, new_name),
-        &compared,
-        &mut out,
+}
+
+/// DIFF101 / DIFF304: component `c` (labelled `label`, id `id`) removed
+/// (`removed`) or added, at the profile in its file `file`.
+fn component_gone_or_new(
+    (code, removed): (&'static str, bool),
+    label: String,
+    (c, id, file): (&Component, &str, String),
+) -> Change {
+    let at = Some(c.profile.pos).filter(|p| !p.is_unknown());
+    let (what, old, new) = if removed {
+        ("removed", Some(id.to_string()), None)
+    } else {
+        ("added", None, Some(id.to_string()))
+    };
+    let base = change(
+        code,
+        label,
+        String::new(),
+        old,
+        new,
+        format!("component `{}` was {what}", c.profile.name()),
     );
-    systems::unreadable("OLD", &old_systems.unreadable, old_name, &mut out);
-    systems::unreadable("NEW", &new_systems.unreadable, new_name, &mut out);
+    if removed {
+        Change {
+            old_file: Some(file),
+            old_line: at.map(|p| p.line),
+            old_column: at.map(|p| p.column),
+            ..base
+        }
+    } else {
+        Change {
+            file: Some(file),
+            line: at.map(|p| p.line),
+            column: at.map(|p| p.column),
+            ..base
+        }
+    }
+}
+
+/// The changes of the RT Systems of both sides: those that could not be read, the connectors
+/// the components' changes break (`breaks`), and each pair of systems compared; their counts.
+fn systems_changes(
+    breaks: &systems::Breaks,
+    (old_systems, old_name): (&systems::Systems, Namer),
+    (new_systems, new_name): (&systems::Systems, Namer),
+    out: &mut Vec<Change>,
+) -> Counts {
+    systems::unreadable("OLD", &old_systems.unreadable, old_name, out);
+    systems::unreadable("NEW", &new_systems.unreadable, new_name, out);
     breaks.connectors(
         &old_systems.systems,
         &new_systems.systems,
         old_name,
         new_name,
-        &mut out,
+        out,
     );
-    let system_counts = systems::compare_all(
+    systems::compare_all(
         &old_systems.systems,
         &new_systems.systems,
         old_name,
         new_name,
-        &mut out,
-    );
-    sort(&mut out);
-    Diff {
-        facts: impact::Facts::of(old, new, &out, &labels),
-        changes: out,
-        components: counts,
-        systems: system_counts,
-        idl: idl_counts,
-        ..Diff::default()
+        out,
+    )
+}
+
+/// The components of both sides by key (vendor, category, name): the indexes of the old and
+/// the new ones of each.
+fn groups_by_key<'k>(
+    old_ids: &'k [Ident],
+    new_ids: &'k [Ident],
+) -> BTreeMap<&'k Key, (Vec<usize>, Vec<usize>)> {
+    let mut groups: BTreeMap<&Key, (Vec<usize>, Vec<usize>)> = BTreeMap::new();
+    for (i, id) in old_ids.iter().enumerate() {
+        groups.entry(&id.key).or_default().0.push(i);
     }
+    for (i, id) in new_ids.iter().enumerate() {
+        groups.entry(&id.key).or_default().1.push(i);
+    }
+    groups
 }
 
 /// An IDL file (its errors leave types undefined rather than components absent).
