@@ -324,6 +324,53 @@ fn data_ports(profile: &Profile, imp: &Implementation, acc: &mut Acc, complete: 
     }
 }
 
+/// The drift of service interface `iel` paired by name (`names`: the profile's, the code's):
+/// the name's case, the direction, the type.
+fn interface(
+    acc: &mut Acc,
+    iel: String,
+    (pi_, ci_): (&crate::model::ServiceInterface, &super::CodeInterface),
+    (pname, cname): (&str, &str),
+) {
+    if pname != cname {
+        acc.push(
+            DriftKind::NameCase,
+            iel.clone(),
+            Some(pname.into()),
+            Some(cname.into()),
+            Some(ci_.at.clone()),
+            Some(pi_.pos),
+        );
+    }
+    let pdir = text(&pi_.direction).unwrap_or("");
+    let cdir = ci_.direction.profile_word();
+    if matches!(pdir, "Provided" | "Required") && pdir != cdir {
+        acc.push(
+            DriftKind::Direction,
+            iel.clone(),
+            Some(pdir.into()),
+            Some(cdir.into()),
+            Some(ci_.at.clone()),
+            Some(pi_.pos),
+        );
+    }
+    if let (Some(pt), Some(ct)) = (
+        text(&pi_.type_).filter(|t| !t.is_empty()),
+        ci_.type_name.as_deref().filter(|t| !t.is_empty()),
+    ) {
+        if !same_type(pt, ct) {
+            acc.push(
+                DriftKind::DataType,
+                format!("{iel}/type"),
+                Some(pt.into()),
+                Some(ct.into()),
+                Some(ci_.at.clone()),
+                Some(pi_.pos),
+            );
+        }
+    }
+}
+
 fn service_ports(profile: &Profile, imp: &Implementation, acc: &mut Acc, complete: bool) {
     let pnames: Vec<&str> = profile
         .service_ports
@@ -363,45 +410,9 @@ fn service_ports(profile: &Profile, imp: &Implementation, acc: &mut Acc, complet
             .collect();
         let (iexact, icase, ionly_p, ionly_c) = pair(&inames, &cinames);
         for &(a, b) in iexact.iter().chain(&icase) {
-            let (pi_, ci_) = (&p.interfaces[a], &c.interfaces[b]);
             let iel = format!("{el}/{}", inames[a]);
-            if inames[a] != cinames[b] {
-                acc.push(
-                    DriftKind::NameCase,
-                    iel.clone(),
-                    Some(inames[a].into()),
-                    Some(cinames[b].into()),
-                    Some(ci_.at.clone()),
-                    Some(pi_.pos),
-                );
-            }
-            let pdir = text(&pi_.direction).unwrap_or("");
-            let cdir = ci_.direction.profile_word();
-            if matches!(pdir, "Provided" | "Required") && pdir != cdir {
-                acc.push(
-                    DriftKind::Direction,
-                    iel.clone(),
-                    Some(pdir.into()),
-                    Some(cdir.into()),
-                    Some(ci_.at.clone()),
-                    Some(pi_.pos),
-                );
-            }
-            if let (Some(pt), Some(ct)) = (
-                text(&pi_.type_).filter(|t| !t.is_empty()),
-                ci_.type_name.as_deref().filter(|t| !t.is_empty()),
-            ) {
-                if !same_type(pt, ct) {
-                    acc.push(
-                        DriftKind::DataType,
-                        format!("{iel}/type"),
-                        Some(pt.into()),
-                        Some(ct.into()),
-                        Some(ci_.at.clone()),
-                        Some(pi_.pos),
-                    );
-                }
-            }
+            let names = (inames[a], cinames[b]);
+            interface(acc, iel, (&p.interfaces[a], &c.interfaces[b]), names);
         }
         for a in ionly_p {
             let i = &p.interfaces[a];

@@ -19,7 +19,6 @@ const STILL_LONG: &[(&str, &str)] = &[
     ("src/diff/systems.rs", "compare_all"),
     ("src/diff/systems/compare.rs", "data_connector"),
     ("src/history.rs", "follow_by_id"),
-    ("src/implementation/drift.rs", "service_ports"),
     ("src/implementation/extract.rs", "ident"),
     ("src/implementation/extract.rs", "join"),
     ("src/implementation/lex.rs", "run"),
