@@ -208,10 +208,13 @@
         if (!e || (keep && !keep.has(ci))) { return; }
         // Every term must find a port of this component.
         if (!found.every(function (l) { return l.some(function (o) { return o[1][0] === ci; }); })) { return; }
-        var key = ci + ' ' + h[1][2];
+        // The anchor, when the index leaves it out, is made from the name (search.rs port_js).
+        var anchor = h[1][2] || (h[2] === 'in' || h[2] === 'out' ? 'port-' : 'if-') +
+          String(h[1][1]).toLowerCase().replace(/[_.]/g, '-');
+        var key = ci + ' ' + anchor;
         if (seen.has(key)) { return; }
         seen.add(key);
-        hits.push({ kind: kinds[h[2]] || '', name: e.name + '.' + h[1][1], href: e.href + '#' + h[1][2],
+        hits.push({ kind: kinds[h[2]] || '', name: e.name + '.' + h[1][1], href: e.href + '#' + anchor,
           meta: String(h[0][0]), summary: e.summary, rank: e.rank, port: String(h[1][1]) });
       });
     });

@@ -334,6 +334,29 @@ fn write_index(
     w.write_all(b"};\n")
 }
 
+/// A port of the index's `ports` part: `[component, name]` when its anchor is the one
+/// `search.js` makes from the name (`prefix`, then the name lower-cased with `_` and `.` as
+/// `-`: `person_count` → `port-person-count`), else `[component, name, anchor]`.
+fn port_js(component: usize, name: &str, prefix: &str, anchor: &str) -> serde_json::Value {
+    let plain = name
+        .bytes()
+        .all(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'.');
+    let derived = anchor.strip_prefix(prefix).is_some_and(|rest| {
+        rest.len() == name.len()
+            && rest.bytes().zip(name.bytes()).all(|(a, n)| {
+                a == match n {
+                    b'_' | b'.' => b'-',
+                    n => n.to_ascii_lowercase(),
+                }
+            })
+    });
+    if plain && derived {
+        serde_json::json!([component, name])
+    } else {
+        serde_json::json!([component, name, anchor])
+    }
+}
+
 /// The port part of the index (`ports`), for `in:`, `out:`, `provides:`, `requires:` and
 /// `feeds:` queries: `{"d": [type…], "i": [interface…], "kinds": {…}}`. Each type is
 /// `[name, [spelling…], [out-port…], [in-port…]]` and each interface
@@ -343,14 +366,16 @@ fn write_index(
 /// rule of the type pages (two spellings, or a repository id and a scoped name, that the
 /// catalogue keys as one type are one entry; [`crate::idl::IdlSet::canonical_name`]). The
 /// port lists are the entry's producers and consumers (providers and requirers), each port
-/// `[component, name, anchor]`: `component` is the component's position in `e` (component
-/// entries come first, in catalogue order), `name` the port's (`port.interface` for a service
-/// interface) and `anchor` its row on the component page ([`crate::catalog::Anchors`]). The
-/// spellings are those met in the profiles plus the IDL repository id of the definition, when
-/// the catalogue has it.
+/// `[component, name, anchor]` ([`port_js`]: the anchor left out when `search.js` can make
+/// it): `component` is the component's position in `e` (component entries come first, in
+/// catalogue order), `name` the port's (`port.interface` for a service interface) and `anchor`
+/// its row on the component page ([`crate::catalog::Anchors`]). The spellings are those met in
+/// the profiles other than the name, plus the IDL repository id of the definition when the
+/// catalogue has it.
 fn ports_json(catalog: &Catalog, lang: Lang) -> serde_json::Value {
+    // The name itself is matched as a spelling by `search.js`: not repeated.
     let spellings = |name: &str, met: &[String]| {
-        let mut all: Vec<String> = met.to_vec();
+        let mut all: Vec<String> = met.iter().filter(|s| *s != name).cloned().collect();
         if let Some(item) = catalog.idl.find(name) {
             let id = item.definition.repository_id();
             if !id.is_empty() && !all.iter().any(|s| s == id) {
@@ -370,11 +395,7 @@ fn ports_json(catalog: &Catalog, lang: Lang) -> serde_json::Value {
                 let (ci, pi) = catalog.resolve_port(r)?;
                 let c = &catalog[ci];
                 let name = c.profile.data_ports[pi].name.as_deref().unwrap_or("");
-                Some(serde_json::json!([
-                    ci.get(),
-                    name,
-                    c.anchors.data_ports[pi]
-                ]))
+                Some(port_js(ci.get(), name, "port-", &c.anchors.data_ports[pi]))
             };
             let ports = |l: &[crate::catalog::PortRef]| -> Vec<serde_json::Value> {
                 l.iter().filter_map(port).collect()
@@ -402,11 +423,12 @@ fn ports_json(catalog: &Catalog, lang: Lang) -> serde_json::Value {
                     sp.name.as_deref().unwrap_or(""),
                     sp.interfaces[ii].name.as_deref().unwrap_or("")
                 );
-                Some(serde_json::json!([
+                Some(port_js(
                     ci.get(),
-                    name,
-                    c.anchors.interfaces[pi][ii]
-                ]))
+                    &name,
+                    "if-",
+                    &c.anchors.interfaces[pi][ii],
+                ))
             };
             let ports = |l: &[crate::catalog::InterfaceRef]| -> Vec<serde_json::Value> {
                 l.iter().filter_map(port).collect()
