@@ -1,6 +1,6 @@
 /* rtcdoc search: offline, no libraries. The index (search-index.js) assigns
    window.RTCDOC_INDEX = {kinds: {c: label, ...}, e: [[kind, name, href, meta, summary,
-   "name|ids|text"], ...]}; it is loaded with a <script> tag on first use, which works from
+   "name|ids|text"], ...], ports: {...}} (ports: see PORT_OPS below); it is loaded with a <script> tag on first use, which works from
    file:// too. Entries are components, data types and interfaces. Queries are tokenized like
    the index: lower-case words, and overlapping bigrams for CJK text. Every query token must be
    a prefix of some token of an entry; a match in the name ranks before one in an identifier
