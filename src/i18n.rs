@@ -522,7 +522,7 @@ pub const LABELS: &[(&str, &str, &str)] = &[
     ("rtc_type", "RTC type", "RTC型"),
     ("save_project", "Project", "プロジェクト"),
     ("search", "Search", "検索"),
-    ("search_help", "Type to search. ↓/↑ move through the results, Enter opens one, / jumps to the search box.", "入力すると検索します。↓/↑で結果を移動、Enterで開く、/で検索欄へ。"),
+    ("search_help", "Type to search. ↓/↑ move through the results, Enter opens one, / jumps to the search box. Ports by type: in:TYPE, out:TYPE, provides:TYPE, requires:TYPE; what can feed an in-port: feeds:COMPONENT.PORT.", "入力すると検索します。↓/↑で結果を移動、Enterで開く、/で検索欄へ。型でポートを探す: in:型、out:型、provides:型、requires:型。入力ポートにつなげる出力ポート: feeds:コンポーネント.ポート。"),
     ("search_placeholder", "Search components, ports, types…", "コンポーネント・ポート・型を検索…"),
     ("semantics", "Semantics", "意味"),
     ("service_ports", "Service ports", "サービスポート"),

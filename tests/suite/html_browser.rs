@@ -579,3 +579,81 @@ fn implementation_sections_pass_the_audit() {
         assert_audit(&report, &[]);
     }
 }
+
+/// The result links (`href`s) of the search page's results.
+fn result_links(dom: &str) -> Vec<String> {
+    let Some(list) = dom.split("id=\"search-results\"").nth(1) else {
+        return Vec::new();
+    };
+    list.split("href=\"")
+        .skip(1)
+        .filter_map(|s| s.split('"').next())
+        .map(str::to_string)
+        .collect()
+}
+
+/// Port compatibility queries on the search page: `in:`, `out:`, `provides:`, `requires:`
+/// and `feeds:` list ports linked to their rows; plain words filter them; an unknown type
+/// finds nothing.
+#[test]
+fn search_finds_ports_by_type_and_by_what_feeds_an_in_port() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let prof = dir.path().join("chromium");
+    let search = |q: &str| {
+        let dom = dump_dom(
+            &format!("{}?q={q}", file_url(&out.join("search.html"))),
+            &prof,
+        );
+        (result_names(&dom), result_links(&dom))
+    };
+    let (names, links) = search("in:RTC::TimedLong");
+    assert_eq!(names, ["SafetyMonitor.person_count"]);
+    assert_eq!(links, ["components/safetymonitor.html#port-person-count"]);
+    // The scoped name's last part, any case.
+    let (names, links) = search("out:timedlong");
+    assert_eq!(names, ["ObjectDetector.count", "UrgRangeSensor.status"]);
+    assert_eq!(
+        links,
+        [
+            "components/objectdetector.html#port-count",
+            "components/urgrangesensor.html#port-status"
+        ]
+    );
+    // What can feed SafetyMonitor's person_count: the producers of its type.
+    let (names, _) = search("feeds:SafetyMonitor.person_count");
+    assert_eq!(names, ["ObjectDetector.count", "UrgRangeSensor.status"]);
+    // A repository id names the type too; a plain word keeps the components it finds.
+    let (names, _) = search("out:IDL:RTC/TimedPose2D:1.0");
+    assert_eq!(names.len(), 3, "{names:?}");
+    let (names, _) = search("out:IDL:RTC/TimedPose2D:1.0%20navigator");
+    assert_eq!(names, ["Navigator.goal"]);
+    let (names, links) = search("requires:RTC::OGMapServer");
+    assert_eq!(
+        names,
+        [
+            "Localization.MapService.map_server",
+            "PathPlanner.MapService.map_server"
+        ]
+    );
+    assert_eq!(
+        links[0],
+        "components/localization.html#if-mapservice-map-server"
+    );
+    let (names, _) = search("provides:OGMapServer");
+    assert_eq!(names, ["MapServer.MapService.map_server"]);
+    // No such type: the no-result message, no result.
+    let dom = dump_dom(
+        &format!(
+            "{}?q=in:RTC::NoSuchType",
+            file_url(&out.join("search.html"))
+        ),
+        &prof,
+    );
+    assert!(result_names(&dom).is_empty());
+    assert!(dom.contains("No results"), "no-result message");
+}

@@ -1,6 +1,6 @@
 /* rtcdoc search: offline, no libraries. The index (search-index.js) assigns
    window.RTCDOC_INDEX = {kinds: {c: label, ...}, e: [[kind, name, href, meta, summary,
-   "name|ids|text"], ...]}; it is loaded with a <script> tag on first use, which works from
+   "name|ids|text"], ...], ports: {...}} (ports: see PORT_OPS below); it is loaded with a <script> tag on first use, which works from
    file:// too. Entries are components, data types and interfaces. Queries are tokenized like
    the index: lower-case words, and overlapping bigrams for CJK text. Every query token must be
    a prefix of some token of an entry; a match in the name ranks before one in an identifier
@@ -72,7 +72,7 @@
         }
         var name = String(e[1]);
         var lname = name.toLowerCase();
-        return { kind: kinds[e[0]] || '', name: name, href: e[2], meta: e[3], summary: e[4],
+        return { n: n, kind: kinds[e[0]] || '', name: name, href: e[2], meta: e[3], summary: e[4],
           lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1) };
       });
       keys = Array.from(map.keys()).sort();
@@ -134,6 +134,99 @@
     return hits.map(function (n) { return all[n]; });
   }
 
+  // Port queries (the index's `ports` part): `in:TYPE`, `out:TYPE`, `provides:TYPE`,
+  // `requires:TYPE` list the ports of that type and direction; `feeds:COMPONENT.PORT` the
+  // out-ports of the in-port's type (its type page's producers). A TYPE matches an entry when
+  // it is, ignoring case and a leading `::`, the entry's scoped name, one of its spellings
+  // (repository id included) or the last `::` part of one. Several port terms keep the
+  // components that have every one; the other words of the query keep the components whose
+  // own entry they find. Results are ports, linked to their row on the component page.
+  var PORT_OPS = { 'in': ['d', 3], 'out': ['d', 2], 'provides': ['i', 2], 'requires': ['i', 3] };
+
+  function parsePortQuery(q) {
+    var terms = [];
+    var words = [];
+    q.trim().split(/\s+/).forEach(function (w) {
+      var m = /^(in|out|provides|requires|feeds):(.+)$/i.exec(w);
+      if (m) { terms.push([m[1].toLowerCase(), m[2]]); } else if (w) { words.push(w); }
+    });
+    return terms.length ? { terms: terms, words: words.join(' ') } : null;
+  }
+
+  function typeMatches(t, v) {
+    v = v.toLowerCase().replace(/^::/, '');
+    var names = [t[0]].concat(t[1] || []);
+    for (var i = 0; i < names.length; i++) {
+      var n = String(names[i]).toLowerCase().replace(/^::/, '');
+      if (n === v || n.slice(n.lastIndexOf(':') + 1) === v) { return true; }
+    }
+    return false;
+  }
+
+  /** The ports of one term, as [type, port, kind] triples. */
+  function termPorts(ports, term, all) {
+    var out = [];
+    var op = PORT_OPS[term[0]];
+    if (op) {
+      (ports[op[0]] || []).forEach(function (t) {
+        if (!typeMatches(t, term[1])) { return; }
+        (t[op[1]] || []).forEach(function (p) { out.push([t, p, term[0]]); });
+      });
+      return out;
+    }
+    // feeds:COMPONENT.PORT: the in-port's type, by the component's name and the port's.
+    var v = term[1].toLowerCase();
+    var dot = v.lastIndexOf('.');
+    if (dot < 1) { return out; }
+    var comp = v.slice(0, dot);
+    var port = v.slice(dot + 1);
+    (ports.d || []).forEach(function (t) {
+      var fed = (t[3] || []).some(function (p) {
+        var e = all[p[0]];
+        return e && (e.lname === comp || e.short === comp) && String(p[1]).toLowerCase() === port;
+      });
+      if (fed) { (t[2] || []).forEach(function (p) { out.push([t, p, 'out']); }); }
+    });
+    return out;
+  }
+
+  function portSearch(pq) {
+    var all = entries();
+    var ports = (window.RTCDOC_INDEX || {}).ports || {};
+    var kinds = ports.kinds || {};
+    var keep = null;
+    if (pq.words) {
+      keep = new Set(search(pq.words).map(function (e) { return e.n; }));
+    }
+    var found = pq.terms.map(function (term) { return termPorts(ports, term, all); });
+    var hits = [];
+    var seen = new Set();
+    found.forEach(function (list) {
+      list.forEach(function (h) {
+        var ci = h[1][0];
+        var e = all[ci];
+        if (!e || (keep && !keep.has(ci))) { return; }
+        // Every term must find a port of this component.
+        if (!found.every(function (l) { return l.some(function (o) { return o[1][0] === ci; }); })) { return; }
+        // The anchor, when the index leaves it out, is made from the name (search.rs port_js).
+        var anchor = h[1][2] || (h[2] === 'in' || h[2] === 'out' ? 'port-' : 'if-') +
+          String(h[1][1]).toLowerCase().replace(/[_.]/g, '-');
+        var key = ci + ' ' + anchor;
+        if (seen.has(key)) { return; }
+        seen.add(key);
+        hits.push({ kind: kinds[h[2]] || '', name: e.name + '.' + h[1][1], href: e.href + '#' + anchor,
+          meta: String(h[0][0]), summary: e.summary, rank: e.rank, port: String(h[1][1]) });
+      });
+    });
+    hits.sort(function (a, b) { return a.rank - b.rank || (a.port < b.port ? -1 : a.port > b.port ? 1 : 0); });
+    return hits;
+  }
+
+  function query(q) {
+    var pq = parsePortQuery(q);
+    return pq ? portSearch(pq) : search(q);
+  }
+
   function ensureIndex(then) {
     if (window.RTCDOC_INDEX) { then(); return; }
     pending = then;
@@ -177,7 +270,7 @@
 
   function render() {
     var q = input.value;
-    var results = q.trim() ? search(q) : [];
+    var results = q.trim() ? query(q) : [];
     last = results;
     var target = page || popup;
     if (!target) { return; }

@@ -325,10 +325,132 @@ fn write_index(
         "i": lang.t("interface"),
         "s": lang.t("system"),
     });
-    // `{"e":[…],"kinds":{…}}`: the object serde_json writes for these two keys (sorted).
+    // `{"e":[…],"kinds":{…},"ports":{…}}`: the object serde_json writes for these keys (sorted).
     w.write_all(b"],\"kinds\":")?;
     w.write_all(js_safe_json(&serde_json::to_string(&kinds).unwrap_or_default()).as_bytes())?;
+    // The port part: its own key, so that it can be moved (to a shard of its own) as a whole.
+    w.write_all(b",\"ports\":")?;
+    w.write_all(entry_js(&ports_json(catalog, lang)).as_bytes())?;
     w.write_all(b"};\n")
+}
+
+/// A port of the index's `ports` part: `[component, name]` when its anchor is the one
+/// `search.js` makes from the name (`prefix`, then the name lower-cased with `_` and `.` as
+/// `-`: `person_count` → `port-person-count`), else `[component, name, anchor]`.
+fn port_js(component: usize, name: &str, prefix: &str, anchor: &str) -> serde_json::Value {
+    let plain = name
+        .bytes()
+        .all(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'.');
+    let derived = anchor.strip_prefix(prefix).is_some_and(|rest| {
+        rest.len() == name.len()
+            && rest.bytes().zip(name.bytes()).all(|(a, n)| {
+                a == match n {
+                    b'_' | b'.' => b'-',
+                    n => n.to_ascii_lowercase(),
+                }
+            })
+    });
+    if plain && derived {
+        serde_json::json!([component, name])
+    } else {
+        serde_json::json!([component, name, anchor])
+    }
+}
+
+/// The port part of the index (`ports`), for `in:`, `out:`, `provides:`, `requires:` and
+/// `feeds:` queries: `{"d": [type…], "i": [interface…], "kinds": {…}}`. Each type is
+/// `[name, [spelling…], [out-port…], [in-port…]]` and each interface
+/// `[name, [spelling…], [provided…], [required…]]`, in [`Catalog::data_types`] /
+/// [`Catalog::interfaces`] order, those with a port (an IDL-only type has none to list): one
+/// entry per catalogue type, which already is the matching
+/// rule of the type pages (two spellings, or a repository id and a scoped name, that the
+/// catalogue keys as one type are one entry; [`crate::idl::IdlSet::canonical_name`]). The
+/// port lists are the entry's producers and consumers (providers and requirers), each port
+/// `[component, name, anchor]` ([`port_js`]: the anchor left out when `search.js` can make
+/// it): `component` is the component's position in `e` (component entries come first, in
+/// catalogue order), `name` the port's (`port.interface` for a service interface) and `anchor`
+/// its row on the component page ([`crate::catalog::Anchors`]). The spellings are those met in
+/// the profiles other than the name, plus the IDL repository id of the definition when the
+/// catalogue has it.
+fn ports_json(catalog: &Catalog, lang: Lang) -> serde_json::Value {
+    // The name itself is matched as a spelling by `search.js`: not repeated.
+    let spellings = |name: &str, met: &[String]| {
+        let mut all: Vec<String> = met.iter().filter(|s| *s != name).cloned().collect();
+        if let Some(item) = catalog.idl.find(name) {
+            let id = item.definition.repository_id();
+            if !id.is_empty() && !all.iter().any(|s| s == id) {
+                all.push(id.to_string());
+            }
+        }
+        all.sort();
+        all
+    };
+    let data: Vec<serde_json::Value> = catalog
+        .data_types
+        .iter()
+        .filter(|t| !t.uses.producers.is_empty() || !t.uses.consumers.is_empty())
+        .map(|t| {
+            let (out, inp) = (&t.uses.producers, &t.uses.consumers);
+            let port = |r: &crate::catalog::PortRef| {
+                let (ci, pi) = catalog.resolve_port(r)?;
+                let c = &catalog[ci];
+                let name = c.profile.data_ports[pi].name.as_deref().unwrap_or("");
+                Some(port_js(ci.get(), name, "port-", &c.anchors.data_ports[pi]))
+            };
+            let ports = |l: &[crate::catalog::PortRef]| -> Vec<serde_json::Value> {
+                l.iter().filter_map(port).collect()
+            };
+            serde_json::json!([
+                t.name,
+                spellings(&t.name, &t.spellings),
+                ports(out),
+                ports(inp)
+            ])
+        })
+        .collect();
+    let interfaces: Vec<serde_json::Value> = catalog
+        .interfaces
+        .iter()
+        .filter(|t| !t.uses.providers.is_empty() || !t.uses.requirers.is_empty())
+        .map(|t| {
+            let (provided, required) = (&t.uses.providers, &t.uses.requirers);
+            let port = |r: &crate::catalog::InterfaceRef| {
+                let (ci, pi, ii) = catalog.resolve_interface(r)?;
+                let c = &catalog[ci];
+                let sp = &c.profile.service_ports[pi];
+                let name = format!(
+                    "{}.{}",
+                    sp.name.as_deref().unwrap_or(""),
+                    sp.interfaces[ii].name.as_deref().unwrap_or("")
+                );
+                Some(port_js(
+                    ci.get(),
+                    &name,
+                    "if-",
+                    &c.anchors.interfaces[pi][ii],
+                ))
+            };
+            let ports = |l: &[crate::catalog::InterfaceRef]| -> Vec<serde_json::Value> {
+                l.iter().filter_map(port).collect()
+            };
+            serde_json::json!([
+                t.name,
+                spellings(&t.name, &t.spellings),
+                ports(provided),
+                ports(required)
+            ])
+        })
+        .collect();
+    serde_json::json!({
+        "d": data,
+        "i": interfaces,
+        "kinds": {
+            "in": lang.t("in"),
+            "out": lang.t("out"),
+            "provides": lang.t("provided"),
+            "requires": lang.t("required"),
+        },
+    })
 }
 
 /// Component entries of the search index made and written per batch by [`index_js`].
