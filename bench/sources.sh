@@ -72,9 +72,9 @@ run() {
   done
   local gits=-
   if command -v strace >/dev/null; then
-    strace -f -qq -e trace=execve -o "$work/strace" "$b" build $extra -q --cache-dir "$d/cache" \
+    strace -f -qq -z -e trace=execve -o "$work/strace" "$b" build $extra -q --cache-dir "$d/cache" \
       --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json >/dev/null 2>&1 || true
-    gits=$(grep -c 'execve(".*/git"' "$work/strace" || true)
+    gits=$(grep -c 'execve("[^"]*/git"' "$work/strace" || true)
   fi
   echo "$(printf '%s\n' "${cold[@]}" | median) $(printf '%s\n' "${warm[@]}" | median) $(printf '%s\n' "${one[@]}" | median) $gits"
 }
