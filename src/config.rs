@@ -393,7 +393,7 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # Commits read per profile for its history (git, with RTCBuilder's backups); 0 turns it off.
 # history = 100
 
-# [[source]] repositories fetched and read at once (--jobs); default: the number of cores.
+# How many sources ([[source]]) are fetched and read at once (--jobs); default: the number of cores.
 # jobs = 4
 
 # RT System profiles carry the host names, IORs and CORBA endpoints of the machine they were
@@ -515,7 +515,7 @@ language = "ja"
 # プロファイルごとに履歴として読むコミットの数 (git と RTCBuilder のバックアップ)。0 で履歴を作りません。
 # history = 100
 
-# 同時に取得して読む [[source]] のリポジトリの数 (--jobs)。省略時はコア数です。
+# 同時に取得して読むソース ([[source]]) の数 (--jobs)。省略時はコア数です。
 # jobs = 4
 
 # RTシステムのプロファイルには、保存したマシンのホスト名、IOR、CORBA のエンドポイントが含まれます。
