@@ -30,6 +30,8 @@ pub struct LoadOptions {
     pub sources: Vec<crate::sources::Pinned>,
     /// Read only the sources, not the input directory (sources configured, no `input`).
     pub sources_only: bool,
+    /// Sources read at once (`--jobs`, `jobs`); `None`: the number of cores.
+    pub jobs: Option<usize>,
     /// Commits read per profile for its history (`history`, `--history`; 0: no history, the
     /// default of these options, as `check` and `diff` need none). Only `build` reads it.
     pub history: usize,
@@ -127,11 +129,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
     }
     let mut source_notes = Vec::new();
     if !opts.sources.is_empty() {
-        progress.stage("reading sources", 0);
         let m = crate::sources::materialize(
             &opts.sources,
             opts.limits.max_file_size,
             &opts.implementation.selection(),
+            opts.jobs,
+            progress,
         )?;
         let names: Vec<&str> = opts
             .sources

@@ -42,6 +42,8 @@ pub struct Config {
     pub strict: Option<bool>,
     /// Commits read per profile for its history (0: no history).
     pub history: Option<usize>,
+    /// `[[source]]` repositories fetched and read at once (default: the number of cores).
+    pub jobs: Option<usize>,
     /// Largest profile file accepted, in bytes.
     pub max_file_size: Option<u64>,
     /// Deepest nesting accepted.
@@ -391,6 +393,9 @@ pub fn template_for(idl: Option<&crate::init::Detected>) -> String {
 # Commits read per profile for its history (git, with RTCBuilder's backups); 0 turns it off.
 # history = 100
 
+# How many sources ([[source]]) are fetched and read at once (--jobs); default: the number of cores.
+# jobs = 4
+
 # RT System profiles carry the host names, IORs and CORBA endpoints of the machine they were
 # saved on; system pages and catalog.json leave them out unless this is true (an internal site).
 # show-host-data = false
@@ -509,6 +514,9 @@ language = "ja"
 
 # プロファイルごとに履歴として読むコミットの数 (git と RTCBuilder のバックアップ)。0 で履歴を作りません。
 # history = 100
+
+# 同時に取得して読むソース ([[source]]) の数 (--jobs)。省略時はコア数です。
+# jobs = 4
 
 # RTシステムのプロファイルには、保存したマシンのホスト名、IOR、CORBA のエンドポイントが含まれます。
 # システムのページと catalog.json は、これを true にしない限りそれらを公開しません (社内向けサイトなどで使用)。
@@ -715,6 +723,7 @@ pub fn pin_sources(
     file: &Loaded,
     mode: &crate::sources::Mode,
     update: Option<&[String]>,
+    progress: &dyn crate::build::Progress,
 ) -> Result<(Vec<crate::sources::Pinned>, crate::sources::lock::Changes)> {
     let configs = file.config.source.as_deref().unwrap_or_default();
     let base = file.dir.clone().unwrap_or_else(|| PathBuf::from("."));
@@ -748,6 +757,7 @@ pub fn pin_sources(
     };
     let mode = crate::sources::Mode {
         config: file.path.clone().filter(|p| !in_cwd(p)),
+        jobs: mode.jobs.or(file.config.jobs),
         ..mode.clone()
     };
     crate::sources::prepare(
@@ -755,6 +765,7 @@ pub fn pin_sources(
         &base.join(crate::sources::lock::FILE_NAME),
         &mode,
         update,
+        progress,
     )
 }
 
@@ -848,6 +859,8 @@ pub fn build_options(file: &Loaded, overrides: &Overrides) -> crate::build::Buil
             sources_only: c.source.as_ref().is_some_and(|s| !s.is_empty())
                 && cli.input.is_none()
                 && c.input.is_none(),
+            // `--jobs` is set with the sources ([`pin_sources`]'s caller).
+            jobs: c.jobs,
             history: cli
                 .history
                 .or(c.history)

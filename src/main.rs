@@ -121,6 +121,9 @@ struct SourceArgs {
     /// Never fetch: use the cached repositories only.
     #[arg(long)]
     offline: bool,
+    /// Fetch and read N [[source]] repositories at once [default: the number of cores].
+    #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    jobs: Option<u64>,
 }
 
 impl SourceArgs {
@@ -131,6 +134,7 @@ impl SourceArgs {
             offline: self.offline,
             // Filled by `config::pin_sources`, which knows the file read.
             config: None,
+            jobs: self.jobs.and_then(|j| usize::try_from(j).ok()),
         }
     }
 }
@@ -166,6 +170,9 @@ struct UpdateArgs {
     /// Where the repositories are cached [default: rtcdoc/ in the user's cache directory].
     #[arg(long, value_name = "DIR")]
     cache_dir: Option<PathBuf>,
+    /// Fetch N [[source]] repositories at once [default: the number of cores].
+    #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    jobs: Option<u64>,
 }
 
 /// What is read and how: the input's filters and limits, and how the `[[source]]` repositories
@@ -536,13 +543,28 @@ fn pin(
     load: &mut build::LoadOptions,
     quiet: bool,
 ) -> anyhow::Result<()> {
-    let (pinned, changes) = config::pin_sources(file, &s.mode(), None)?;
+    let (pinned, changes) = pin_with_bar(file, &s.mode(), None, quiet)?;
+    load.jobs = s.mode().jobs.or(file.config.jobs);
     if !changes.is_empty() && !quiet {
         eprintln!("rtcdoc.lock: {}", changes.describe());
     }
     let _ = SOURCE_NAMES.set(pinned.iter().map(|p| p.source.name.clone()).collect());
     load.sources = pinned;
     Ok(())
+}
+
+/// [`config::pin_sources`] with a progress line "fetching sources k/N" on a terminal (none
+/// when `quiet`).
+fn pin_with_bar(
+    file: &config::Loaded,
+    mode: &rtcdoc::sources::Mode,
+    update: Option<&[String]>,
+    quiet: bool,
+) -> anyhow::Result<(Vec<rtcdoc::sources::Pinned>, rtcdoc::sources::lock::Changes)> {
+    let bar = Bar::new(!quiet);
+    let pinned = config::pin_sources(file, mode, update, &bar);
+    bar.0.finish_and_clear();
+    pinned
 }
 
 /// [`load_config`] for a command: with `--verbose`, the file used is named.
@@ -955,9 +977,10 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
             let file = load_config(None, args.config.as_deref())?;
             let mode = rtcdoc::sources::Mode {
                 cache_dir: args.cache_dir.clone(),
+                jobs: args.jobs.and_then(|j| usize::try_from(j).ok()),
                 ..Default::default()
             };
-            let (pinned, changes) = config::pin_sources(&file, &mode, Some(&args.names))?;
+            let (pinned, changes) = pin_with_bar(&file, &mode, Some(&args.names), cli.quiet)?;
             if !cli.quiet {
                 if changes.is_empty() {
                     eprintln!("rtcdoc.lock is up to date ({} source(s))", pinned.len());
@@ -1670,7 +1693,7 @@ fn source_spec(
     let pinned = match rev {
         Some(rev) => rtcdoc::sources::pin_rev(source, rev, &s.mode())?,
         None => {
-            let (all, _) = config::pin_sources(file, &s.mode(), None)?;
+            let (all, _) = config::pin_sources(file, &s.mode(), None, &rtcdoc::build::Quiet)?;
             all.into_iter()
                 .find(|p| p.source.name == name)
                 .ok_or_else(|| anyhow::anyhow!("source `{name}` was not pinned"))?

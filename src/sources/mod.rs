@@ -71,6 +71,9 @@ pub struct Pinned {
     pub commit: String,
     /// The bare mirror holding the commit.
     pub mirror: PathBuf,
+    /// `git ls-tree -r -z --long` of the commit below `path`, when pinning listed it already
+    /// (then [`materialize`] runs no `ls-tree` of its own).
+    pub listing: Option<Vec<u8>>,
 }
 
 impl Pinned {
@@ -100,6 +103,8 @@ pub struct Mode {
     /// The configuration file, when `rtcdoc update` would not find it by itself (it is not
     /// `rtcdoc.toml` in the current directory): named in the commands the errors suggest.
     pub config: Option<PathBuf>,
+    /// Sources fetched and read at once (`--jobs`, `jobs`); `None`: the number of cores.
+    pub jobs: Option<usize>,
 }
 
 impl Mode {
@@ -551,15 +556,6 @@ fn rev_parse(mirror: &Path, what: &str) -> Result<Option<String>> {
         .filter(|s| s.len() == 40 && s.bytes().all(|b| b.is_ascii_hexdigit())))
 }
 
-/// Whether `path` is a folder at `commit` in the mirror.
-fn has_folder(mirror: &Path, commit: &str, path: &str) -> Result<bool> {
-    // `commit` is the 40 hex digits resolved from the mirror: never read as an option.
-    let mut c = git_command(Some(mirror));
-    c.args(["cat-file", "-t"]).arg(format!("{commit}:{path}"));
-    let out = run(c)?;
-    Ok(out.status.success() && String::from_utf8_lossy(&out.stdout).trim() == "tree")
-}
-
 /// The error for a source whose `path` is no folder at `commit`.
 fn no_folder(s: &Source, commit: &str) -> anyhow::Error {
     anyhow::anyhow!(
@@ -714,38 +710,25 @@ fn shallow_note(mirror: &Path) -> &'static str {
 /// commit of `rev` for the others (and every source named in `update`, all when it is
 /// `Some(&[])`); fetches what the cache lacks (never with `--offline`) and writes the lock when
 /// it changed (refused with `--locked`). `lock_path` is `rtcdoc.lock` beside the configuration.
+/// The sources are pinned on `mode.jobs` threads (sources sharing a mirror one after another);
+/// the results and the first error are those of the configuration's order.
 pub fn prepare(
     sources: &[Source],
     lock_path: &Path,
     mode: &Mode,
     update: Option<&[String]>,
+    progress: &dyn crate::build::Progress,
 ) -> Result<(Vec<Pinned>, lock::Changes)> {
     let old = lock::read(lock_path, &mode.update_command(None))?;
-    if let Some(names) = update {
-        for n in names {
-            if !sources.iter().any(|s| &s.name == n) {
-                let all: Vec<&str> = sources.iter().map(|s| s.name.as_str()).collect();
-                bail!(
-                    "no source is named `{n}`; the sources are: {}",
-                    if all.is_empty() {
-                        "(none)".to_string()
-                    } else {
-                        all.join(", ")
-                    }
-                );
-            }
-        }
-    }
+    check_update_names(sources, update)?;
     let wanted_update = |s: &Source| match update {
         None => false,
         Some([]) => true,
         Some(names) => names.contains(&s.name),
     };
-    let cache = cache_dir(mode)?;
-    let mut pinned = Vec::with_capacity(sources.len());
-    let mut new_lock = lock::Lock::default();
+    let mut locked = Vec::with_capacity(sources.len());
     for s in sources {
-        let locked = old
+        let l = old
             .as_ref()
             .and_then(|l| l.find(&s.name))
             .filter(|e| e.git == s.git && e.rev == s.rev)
@@ -758,7 +741,7 @@ pub fn prepare(
                     mode.update_command(None)
                 );
             }
-            if locked.is_none() || update.is_some() {
+            if l.is_none() || update.is_some() {
                 bail!(
                     "--locked: `{}` would have to change: the source `{}` is new or its `git` or `rev` was edited; run `{}` and commit the lock",
                     lock_path.display(),
@@ -767,75 +750,26 @@ pub fn prepare(
                 );
             }
         }
-        let mirror = mirror_path(&cache, s);
-        let commit = match locked.filter(|_| !wanted_update(s)) {
-            Some(commit) => {
-                if rev_parse(&mirror, &commit)?.is_none() {
-                    if mode.offline {
-                        bail!(
-                            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `{}`) to fill the cache",
-                            s.name,
-                            mirror.display(),
-                            mode.update_command(None)
-                        );
-                    }
-                    fetch(s, &mirror, Some(&commit))?;
-                    if rev_parse(&mirror, &commit)?.is_none() {
-                        bail!(
-                            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `{}` to move to the current `{}`",
-                            s.name,
-                            s.git,
-                            lock_path.display(),
-                            shallow_note(&mirror),
-                            mode.update_command(Some(&s.name)),
-                            s.rev.as_deref().unwrap_or("default branch")
-                        );
-                    }
-                }
-                commit
-            }
-            None => {
-                refresh(
-                    s,
-                    &mirror,
-                    mode,
-                    &format!(" (or `{}`)", mode.update_command(None)),
-                )?;
-                match resolve(&mirror, s.rev.as_deref())? {
-                    Some(c) => c,
-                    None => match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
-                        Some(rev) => bail!(
-                            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `{}` and fix `rev` in rtcdoc.toml",
-                            s.name,
-                            s.git,
-                            shallow_note(&mirror),
-                            if mode.offline { " (as cached: run without --offline to fetch)" } else { "" },
-                            ls_remote(s)
-                        ),
-                        None => bail!(
-                            "source `{}`: `{}` has no default branch (an empty repository?); push a commit or set `rev`",
-                            s.name,
-                            s.git
-                        ),
-                    },
-                }
-            }
-        };
-        // A `path` the commit lacks fails here, before the lock is written.
-        if !s.path.is_empty() && !has_folder(&mirror, &commit, &s.path)? {
-            return Err(no_folder(s, &commit));
-        }
+        locked.push(l.filter(|_| !wanted_update(s)));
+    }
+    let cache = cache_dir(mode)?;
+    progress.stage("fetching sources", sources.len());
+    let results = in_parallel(sources, &cache, mode.jobs, |i, s, mirror| {
+        let r = pin_one(s, locked[i].clone(), mirror, mode, lock_path);
+        progress.advance(1);
+        r
+    })?;
+    let mut pinned = Vec::with_capacity(sources.len());
+    let mut new_lock = lock::Lock::default();
+    for r in results {
+        let p = r?;
         new_lock.sources.push(lock::Entry {
-            name: s.name.clone(),
-            git: s.git.clone(),
-            rev: s.rev.clone(),
-            commit: commit.clone(),
+            name: p.source.name.clone(),
+            git: p.source.git.clone(),
+            rev: p.source.rev.clone(),
+            commit: p.commit.clone(),
         });
-        pinned.push(Pinned {
-            source: s.clone(),
-            commit,
-            mirror,
-        });
+        pinned.push(p);
     }
     new_lock.sort();
     let changes = lock::changes(old.as_ref(), &new_lock);
@@ -851,6 +785,201 @@ pub fn prepare(
         lock::write(lock_path, &new_lock)?;
     }
     Ok((pinned, changes))
+}
+
+/// Every name of `update` is a source's.
+fn check_update_names(sources: &[Source], update: Option<&[String]>) -> Result<()> {
+    for n in update.unwrap_or_default() {
+        if !sources.iter().any(|s| &s.name == n) {
+            let all: Vec<&str> = sources.iter().map(|s| s.name.as_str()).collect();
+            bail!(
+                "no source is named `{n}`; the sources are: {}",
+                if all.is_empty() {
+                    "(none)".to_string()
+                } else {
+                    all.join(", ")
+                }
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The number of threads `jobs` asks for: the number of cores when `None`.
+pub fn threads(jobs: Option<usize>) -> usize {
+    jobs.filter(|&j| j > 0).unwrap_or_else(|| {
+        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+    })
+}
+
+/// `f(index, source, mirror)` of every source on `jobs` threads, the sources that share a
+/// mirror one after another on one thread (git does not share a repository being fetched
+/// into); the results in the order of `sources`.
+fn in_parallel<T: Send>(
+    sources: &[Source],
+    cache: &Path,
+    jobs: Option<usize>,
+    f: impl Fn(usize, &Source, PathBuf) -> T + Sync,
+) -> Result<Vec<T>> {
+    use rayon::prelude::*;
+    let mut groups: Vec<(PathBuf, Vec<usize>)> = Vec::new();
+    for (i, s) in sources.iter().enumerate() {
+        let m = mirror_path(cache, s);
+        match groups.iter_mut().find(|(g, _)| *g == m) {
+            Some((_, members)) => members.push(i),
+            None => groups.push((m, vec![i])),
+        }
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads(jobs))
+        .build()
+        .context("cannot start the threads that fetch the sources; try --jobs 1")?;
+    let done: Vec<Vec<(usize, T)>> = pool.install(|| {
+        groups
+            .par_iter()
+            .map(|(m, members)| {
+                members
+                    .iter()
+                    .map(|&i| (i, f(i, &sources[i], m.clone())))
+                    .collect()
+            })
+            .collect()
+    });
+    let mut all: Vec<(usize, T)> = done.into_iter().flatten().collect();
+    all.sort_by_key(|(i, _)| *i);
+    Ok(all.into_iter().map(|(_, t)| t).collect())
+}
+
+/// One source pinned: at its `locked` commit (fetched if the cache lacks it), else at the
+/// current commit of its `rev`; its files listed (the listing answers whether the commit is
+/// cached and whether `path` is a folder of it, without another git process).
+fn pin_one(
+    s: &Source,
+    locked: Option<String>,
+    mirror: PathBuf,
+    mode: &Mode,
+    lock_path: &Path,
+) -> Result<Pinned> {
+    let (commit, listing) = match locked {
+        Some(commit) => match list(&mirror, &commit, &s.path) {
+            Ok(l) => (commit, Some(l)),
+            Err(_) => {
+                fetch_locked(s, &commit, &mirror, mode, lock_path)?;
+                (commit, None)
+            }
+        },
+        None => {
+            refresh(
+                s,
+                &mirror,
+                mode,
+                &format!(" (or `{}`)", mode.update_command(None)),
+            )?;
+            (resolve_or_fail(s, &mirror, mode)?, None)
+        }
+    };
+    let listing = match listing {
+        Some(l) => l,
+        None => list(&mirror, &commit, &s.path).map_err(|_| no_folder(s, &commit))?,
+    };
+    // A `path` the commit lacks fails here, before the lock is written.
+    if !s.path.is_empty() && !lists_folder(&listing, &s.path) {
+        return Err(no_folder(s, &commit));
+    }
+    Ok(Pinned {
+        source: s.clone(),
+        commit,
+        mirror,
+        listing: Some(listing),
+    })
+}
+
+/// The locked commit of a source the cache lacks, fetched (refused with `--offline`).
+fn fetch_locked(
+    s: &Source,
+    commit: &str,
+    mirror: &Path,
+    mode: &Mode,
+    lock_path: &Path,
+) -> Result<()> {
+    if rev_parse(mirror, commit)?.is_some() {
+        return Ok(());
+    }
+    if mode.offline {
+        bail!(
+            "source `{}`: the locked commit {commit} is not in the cache (`{}`) and --offline forbids fetching; run once without --offline (or `{}`) to fill the cache",
+            s.name,
+            mirror.display(),
+            mode.update_command(None)
+        );
+    }
+    fetch(s, mirror, Some(commit))?;
+    if rev_parse(mirror, commit)?.is_none() {
+        bail!(
+            "source `{}`: `{}` no longer has the commit {commit} that `{}` names{}; run `{}` to move to the current `{}`",
+            s.name,
+            s.git,
+            lock_path.display(),
+            shallow_note(mirror),
+            mode.update_command(Some(&s.name)),
+            s.rev.as_deref().unwrap_or("default branch")
+        );
+    }
+    Ok(())
+}
+
+/// The commit of a source's `rev` in its (refreshed) mirror, or why there is none.
+fn resolve_or_fail(s: &Source, mirror: &Path, mode: &Mode) -> Result<String> {
+    if let Some(c) = resolve(mirror, s.rev.as_deref())? {
+        return Ok(c);
+    }
+    match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
+        Some(rev) => bail!(
+            "source `{}`: no branch, tag or commit `{rev}` in `{}`{}{}; list them with `{}` and fix `rev` in rtcdoc.toml",
+            s.name,
+            s.git,
+            shallow_note(mirror),
+            if mode.offline { " (as cached: run without --offline to fetch)" } else { "" },
+            ls_remote(s)
+        ),
+        None => bail!(
+            "source `{}`: `{}` has no default branch (an empty repository?); push a commit or set `rev`",
+            s.name,
+            s.git
+        ),
+    }
+}
+
+/// `git ls-tree -r -z --long` of `commit` (below `path` when not empty) in `mirror`: fails
+/// when the mirror lacks the commit (or it is no commit).
+fn list(mirror: &Path, commit: &str, path: &str) -> Result<Vec<u8>> {
+    if !is_mirror(mirror) {
+        bail!("no mirror");
+    }
+    // `commit` is 40 hex digits (the lock's are checked, the others resolved): never an option.
+    let mut c = git_command(Some(mirror));
+    c.args([
+        "ls-tree",
+        "-r",
+        "-z",
+        "--long",
+        "--full-tree",
+        "--end-of-options",
+    ])
+    .arg(format!("{commit}^{{commit}}"));
+    if !path.is_empty() {
+        c.arg("--").arg(path);
+    }
+    Ok(run_ok(c, |why| why)?.stdout)
+}
+
+/// Whether a listing of [`list`] below `path` holds anything inside the folder `path` (not
+/// only a file named `path`).
+fn lists_folder(listing: &[u8], path: &str) -> bool {
+    let prefix = format!("\t{path}/");
+    listing
+        .split(|b| *b == 0)
+        .any(|e| String::from_utf8_lossy(e).contains(&prefix))
 }
 
 /// Fetches a source into its mirror; with `--offline`, only checks that the mirror is cached
@@ -891,6 +1020,7 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
         source: s,
         commit,
         mirror,
+        listing: None,
     })
 }
 
@@ -939,41 +1069,73 @@ pub fn materialize(
     pinned: &[Pinned],
     max_file_size: u64,
     implementation: &code::Selection,
+    jobs: Option<usize>,
+    progress: &dyn crate::build::Progress,
 ) -> Result<Materialized> {
+    use rayon::prelude::*;
     let dir = tempfile::Builder::new()
         .prefix("rtcdoc-sources-")
         .tempdir()
         .context("cannot create a temporary directory for the sources")?;
+    progress.stage("reading sources", pinned.len());
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads(jobs))
+        .build()
+        .context("cannot start the threads that read the sources; try --jobs 1")?;
+    // Each source below a folder of its own (the names are unique): in parallel, the notes and
+    // the first error in the sources' order.
+    let each: Vec<Result<Vec<Diagnostic>>> = pool.install(|| {
+        pinned
+            .par_iter()
+            .map(|p| {
+                let r = materialize_one(p, dir.path(), max_file_size, implementation);
+                progress.advance(1);
+                r
+            })
+            .collect()
+    });
     let mut notes = Vec::new();
-    for p in pinned {
-        let s = &p.source;
-        let root = dir.path().join(&s.name);
-        std::fs::create_dir_all(&root)?;
-        let mut c = git_command(Some(&p.mirror));
-        c.args([
-            "ls-tree",
-            "-r",
-            "-z",
-            "--long",
-            "--full-tree",
-            "--end-of-options",
-        ])
-        .arg(&p.commit);
-        if !s.path.is_empty() {
-            c.arg("--").arg(&s.path);
-        }
-        let out = run_ok(c, |why| {
-            format!(
+    for r in each {
+        notes.extend(r?);
+    }
+    Ok(Materialized { dir, notes })
+}
+
+/// `git ls-tree` of a pinned source, unless pinning listed it already.
+fn listing_of(p: &Pinned) -> Result<std::borrow::Cow<'_, [u8]>> {
+    if let Some(l) = &p.listing {
+        return Ok(std::borrow::Cow::Borrowed(l));
+    }
+    let s = &p.source;
+    list(&p.mirror, &p.commit, &s.path)
+        .map(std::borrow::Cow::Owned)
+        .map_err(|why| {
+            anyhow::anyhow!(
                 "source `{}`: cannot list commit {} ({why}); delete the cache `{}` and build again",
                 s.name,
                 p.commit,
                 p.mirror.display()
             )
-        })?;
+        })
+}
+
+/// The files of one pinned source written below `dir/<name>`; the notes on what was not read.
+fn materialize_one(
+    p: &Pinned,
+    dir: &Path,
+    max_file_size: u64,
+    implementation: &code::Selection,
+) -> Result<Vec<Diagnostic>> {
+    let mut notes = Vec::new();
+    {
+        let s = &p.source;
+        let root = dir.join(&s.name);
+        std::fs::create_dir_all(&root)?;
+        let listing = listing_of(p)?;
         let mut blobs = Vec::new();
         let mut code = Vec::new();
         let mut any = false;
-        for entry in out.stdout.split(|b| *b == 0).filter(|e| !e.is_empty()) {
+        for entry in listing.split(|b| *b == 0).filter(|e| !e.is_empty()) {
             let entry = String::from_utf8_lossy(entry);
             let Some((meta, rel)) = entry.split_once('\t') else {
                 continue;
@@ -1056,7 +1218,7 @@ pub fn materialize(
             )
         })?;
     }
-    Ok(Materialized { dir, notes })
+    Ok(notes)
 }
 
 /// Writes the blobs `(sha, path)` of the repository at `git_dir` (the current one when `None`)

@@ -1092,3 +1092,71 @@ fn a_sources_code_is_read_at_its_commit() {
     let (_, err) = p.run(&["check", "--format", "human"]);
     assert!(err.contains("RTC801") && err.contains("RTC802"), "{err}");
 }
+
+/// Every file below `dir`, by its path relative to `dir`.
+fn tree(dir: &Path) -> std::collections::BTreeMap<String, Vec<u8>> {
+    let mut out = std::collections::BTreeMap::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                let rel = p.strip_prefix(dir).unwrap().display().to_string();
+                out.insert(rel, std::fs::read(&p).unwrap());
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn jobs_change_nothing_of_the_output_or_the_lock() {
+    let p = Project::new();
+    let mut config = String::new();
+    for i in 0..6 {
+        let r = p.root.join(format!("r{i}"));
+        commit(
+            &r,
+            &[
+                (&format!("C{i}/RTC.xml"), xml_profile(&format!("C{i}"), &[])),
+                ("Extra/RTC.xml", xml_profile(&format!("Extra{i}"), &[])),
+            ],
+            None,
+        );
+        config.push_str(&format!("[[source]]\ngit = \"{}\"\n\n", url(&r)));
+    }
+    // Two sources of one repository share its mirror (fetched one after the other).
+    let r0 = url(&p.root.join("r0"));
+    config.push_str(&format!(
+        "[[source]]\ngit = \"{r0}\"\nname = \"again\"\npath = \"Extra\"\n"
+    ));
+    p.config(&config);
+    let mut sites = Vec::new();
+    for jobs in ["1", "4"] {
+        let _ = std::fs::remove_dir_all(&p.cache);
+        let _ = std::fs::remove_file(p.proj.join("rtcdoc.lock"));
+        let site = format!("site{jobs}");
+        let (code, err) = p.run(&["build", "-q", "-j", jobs, "-o", &site]);
+        assert_eq!(code, 0, "{err}");
+        let lock = p.lock();
+        assert_eq!(lock.matches("\n[[source]]\n").count(), 7, "{lock}");
+        // Warm: the same from the cache and the lock.
+        let (code, err) = p.run(&["build", "-q", "--jobs", jobs, "-o", &site]);
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(p.lock(), lock);
+        sites.push((lock, tree(&p.proj.join(&site))));
+    }
+    assert!(sites[0].1.len() > 5, "{:?}", sites[0].1.keys());
+    assert_eq!(sites[0].0, sites[1].0, "the lock depends on --jobs");
+    assert_eq!(
+        sites[0].1.keys().collect::<Vec<_>>(),
+        sites[1].1.keys().collect::<Vec<_>>()
+    );
+    for (k, v) in &sites[0].1 {
+        assert!(sites[1].1[k] == *v, "{k} differs between -j1 and -j4");
+    }
+    let (code, err) = p.run(&["build", "-q", "-j", "0"]);
+    assert_eq!(code, 2, "{err}");
+}
