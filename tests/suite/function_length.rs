@@ -32,8 +32,6 @@ const STILL_LONG: &[(&str, &str)] = &[
     ("src/parse/xml/tree.rs", "build_any_tree"),
     ("src/serve.rs", "start"),
     ("src/serve.rs", "handle"),
-    ("src/sources/mod.rs", "prepare"),
-    ("src/sources/mod.rs", "materialize"),
 ];
 
 fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
