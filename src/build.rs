@@ -90,17 +90,7 @@ pub struct Loaded {
     pub idl_on_no_page: Vec<String>,
 }
 
-/// Receives progress reports of a long build (the CLI draws a progress bar from them).
-pub trait Progress: Sync {
-    /// A new stage starts with `total` steps (0 = unknown).
-    fn stage(&self, _name: &str, _total: usize) {}
-    /// `n` more steps of the current stage are done.
-    fn advance(&self, _n: usize) {}
-}
-
-/// Reports nothing.
-pub struct Quiet;
-impl Progress for Quiet {}
+pub use crate::progress::{Progress, Quiet};
 
 /// Finds and reads every profile below `input` (a directory or one file) and builds the
 /// catalogue. A file that cannot be read is reported and left out; the others still load.

@@ -723,7 +723,7 @@ pub fn pin_sources(
     file: &Loaded,
     mode: &crate::sources::Mode,
     update: Option<&[String]>,
-    progress: &dyn crate::build::Progress,
+    progress: &dyn crate::progress::Progress,
 ) -> Result<(Vec<crate::sources::Pinned>, crate::sources::lock::Changes)> {
     let configs = file.config.source.as_deref().unwrap_or_default();
     let base = file.dir.clone().unwrap_or_else(|| PathBuf::from("."));

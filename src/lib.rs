@@ -27,6 +27,7 @@ pub mod layout;
 pub mod model;
 pub mod output;
 pub mod parse;
+pub mod progress;
 pub mod quote;
 pub mod readme;
 pub mod render;

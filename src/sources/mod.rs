@@ -717,7 +717,7 @@ pub fn prepare(
     lock_path: &Path,
     mode: &Mode,
     update: Option<&[String]>,
-    progress: &dyn crate::build::Progress,
+    progress: &dyn crate::progress::Progress,
 ) -> Result<(Vec<Pinned>, lock::Changes)> {
     let old = lock::read(lock_path, &mode.update_command(None))?;
     check_update_names(sources, update)?;
@@ -1070,7 +1070,7 @@ pub fn materialize(
     max_file_size: u64,
     implementation: &code::Selection,
     jobs: Option<usize>,
-    progress: &dyn crate::build::Progress,
+    progress: &dyn crate::progress::Progress,
 ) -> Result<Materialized> {
     use rayon::prelude::*;
     let dir = tempfile::Builder::new()
