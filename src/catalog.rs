@@ -737,17 +737,25 @@ pub enum Role {
 pub trait UseRef {
     /// Points the reference at the element `at` of the component entry with id `id`.
     fn bind(&mut self, id: ComponentId, at: RefHandle);
+    /// The id of the component the port or interface is of.
+    fn component(&self) -> &ComponentId;
 }
 
 impl UseRef for PortRef {
     fn bind(&mut self, id: ComponentId, at: RefHandle) {
         (self.component, self.at) = (id, at);
     }
+    fn component(&self) -> &ComponentId {
+        &self.component
+    }
 }
 
 impl UseRef for InterfaceRef {
     fn bind(&mut self, id: ComponentId, at: RefHandle) {
         (self.component, self.at) = (id, at);
+    }
+    fn component(&self) -> &ComponentId {
+        &self.component
     }
 }
 

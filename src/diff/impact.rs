@@ -164,50 +164,32 @@ fn note_cause(
     }
 }
 
+/// Each type of `new` by name: whether its entry in OLD (`old`) had a supplier (a producer or
+/// provider), how many suppliers it has now, and the components using it now (consumers or
+/// requirers).
+fn supplies<'a, U: crate::catalog::Uses + 'a>(
+    new: &[crate::catalog::TypeEntry<U>],
+    old: &dyn Fn(&str) -> Option<&'a U>,
+) -> Vec<(String, bool, usize, Vec<String>)> {
+    use crate::catalog::UseRef;
+    new.iter()
+        .map(|t| {
+            let [(_, suppliers), (_, users), _] = t.uses.by_role();
+            let before = old(&t.name).is_some_and(|o| !o.by_role()[0].1.is_empty());
+            let users = users.iter().map(|r| r.component().as_str().to_string());
+            (t.name.clone(), before, suppliers.len(), users.collect())
+        })
+        .collect()
+}
+
 /// The types OLD produced (`data`) or provided, that NEW still consumes (requires) and no
 /// longer produces (provides), by name, with the changes to them.
 fn lost([old, new]: [&Catalog; 2], causes: &Causes, data: bool) -> Vec<Lost> {
     // (name, whether OLD supplied it, NEW's suppliers, NEW's users)
-    let entries: Vec<(String, bool, usize, Vec<String>)> = if data {
-        new.data_types
-            .iter()
-            .map(|t| {
-                let before = old
-                    .data_type(&t.name)
-                    .is_some_and(|o| !o.uses.producers.is_empty());
-                let users = t
-                    .uses
-                    .consumers
-                    .iter()
-                    .map(|r| r.component.as_str().to_string());
-                (
-                    t.name.clone(),
-                    before,
-                    t.uses.producers.len(),
-                    users.collect(),
-                )
-            })
-            .collect()
+    let entries = if data {
+        supplies(&new.data_types, &|n| old.data_type(n).map(|t| &t.uses))
     } else {
-        new.interfaces
-            .iter()
-            .map(|t| {
-                let before = old
-                    .interface(&t.name)
-                    .is_some_and(|o| !o.uses.providers.is_empty());
-                let users = t
-                    .uses
-                    .requirers
-                    .iter()
-                    .map(|r| r.component.as_str().to_string());
-                (
-                    t.name.clone(),
-                    before,
-                    t.uses.providers.len(),
-                    users.collect(),
-                )
-            })
-            .collect()
+        supplies(&new.interfaces, &|n| old.interface(n).map(|t| &t.uses))
     };
     let mut out: Vec<Lost> = entries
         .into_iter()
