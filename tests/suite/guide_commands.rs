@@ -230,9 +230,7 @@ fn the_quick_start_is_true_of_the_example() {
     assert!(quick.contains("get a page each"));
     assert!(std::fs::read_dir(site.join("systems")).unwrap().count() >= 2);
     // The searches it suggests find something: `laser`, `TimedPose2D`, `カメラ`.
-    let index = std::fs::read_to_string(site.join("search-index.js"))
-        .unwrap()
-        .to_lowercase();
+    let index = common::search_index::read(&site).text().to_lowercase();
     for q in ["laser", "timedpose2d", "カメ"] {
         assert!(quick.to_lowercase().contains(q) || q == "カメ");
         assert!(index.contains(q), "{q} is not in the search index");

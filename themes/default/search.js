@@ -1,7 +1,7 @@
-/* rtcdoc search: offline, no libraries. The index (search-index.js) assigns
-   window.RTCDOC_INDEX = {kinds: {c: label, ...}, e: [[kind, name, href, meta, summary,
-   "name|ids|text"], ...], ports: {...}} (ports: see PORT_OPS below); it is loaded with a <script> tag on first use, which works from
-   file:// too. Entries are components, data types and interfaces. Queries are tokenized like
+/* rtcdoc search: offline, no libraries. The index is split in files loaded with <script>
+   tags, which works from file:// too: search-index.js (window.RTCDOC_INDEX: each entry's
+   kind, name and page, and which file holds what), loaded on first use, and the files of
+   search/ that a query needs (see `files` below; ports: PORT_OPS). Entries are components, data types and interfaces. Queries are tokenized like
    the index: lower-case words, and overlapping bigrams for CJK text. Every query token must be
    a prefix of some token of an entry; a match in the name ranks before one in an identifier
    (port, field, type), before one in prose. Results are built with DOM APIs (textContent),
@@ -18,7 +18,7 @@
   var loading = false;
   var pending = null;
   var cache = null;
-  var last = [];
+  var opening = false;
 
   function isCjk(n) {
     return (n >= 0x3040 && n <= 0x30FF) || (n >= 0x3400 && n <= 0x4DBF) ||
@@ -48,35 +48,111 @@
     return out;
   }
 
-  // On first use the entries are read into an inverted index: the sorted distinct tokens
-  // (`keys`) and for each the postings `entry * 3 + group`. A query token's matches are the
-  // keys it is a prefix of, found by binary search: 10,000 components answer in a few ms.
-  var keys = null;
-  var postings = null;
+  // The index is split (search.rs write_index): search-index.js, loaded on first use, holds
+  // each entry's kind, name and page, and says which file holds what. The rest is loaded by
+  // <script> tags when a query needs it, each file calling RTCDOC_SHARD(kind, n, data): the
+  // token files `t<n>` (sorted keys, each followed by its postings `entry * 3 + group` as
+  // differences), the
+  // files of the short prefixes `b<n>` (a prefix whose keys span token files: its best match
+  // per entry, `entry * 6 + class`), the details `e<n>` (meta line and summary of `d` entries)
+  // and the port part `p0`. A query whose files are still loading is answered when they come.
+  var ix = null;
+  var files = {};
+  var LOADING = {};
+  var awaiting = false;
+  var details = {};
+
+  function undelta(list) {
+    var out = new Array(list.length);
+    var v = 0;
+    for (var i = 0; i < list.length; i++) { v += list[i]; out[i] = v; }
+    return out;
+  }
+
+  window.RTCDOC_SHARD = function (kind, n, data) {
+    if (kind === 't') {
+      // [key, posting…, key, posting…]: a string starts the next key.
+      var keys = [];
+      var lists = [];
+      for (var i = 0; i < data.length; i++) {
+        if (typeof data[i] === 'string') { keys.push(data[i]); lists.push([]); } else { lists[lists.length - 1].push(data[i]); }
+      }
+      files['t' + n] = { keys: keys, lists: lists.map(undelta) };
+    } else if (kind === 'b') {
+      files['b' + n] = undelta(data);
+    } else {
+      files[kind + n] = data;
+    }
+  };
+
+  function arrived(name) {
+    if (files[name] === LOADING) { files[name] = null; }
+    if (name.charAt(0) === 'e') {
+      var block = files[name] || [];
+      var base = Number(name.slice(1)) * (ix.d || 1);
+      (details[name] || []).forEach(function (w) { fill(w[0], w[1], block[w[2] - base]); });
+      delete details[name];
+    }
+    if (awaiting) { awaiting = false; render(); }
+  }
+
+  /** Loads file `name` of search/ unless it is loaded or loading. */
+  function load(name) {
+    if (name in files) { return; }
+    files[name] = LOADING;
+    var s = document.createElement('script');
+    s.src = root + 'search/' + (name === 'p0' ? 'ports' : name) + '.js';
+    s.onload = function () { arrived(name); };
+    // A file that cannot be read counts as empty: the query is answered from the others.
+    s.onerror = function () { files[name] = null; arrived(name); };
+    document.head.appendChild(s);
+  }
+
+  /** Whether every file of `names` is here; starts loading the others. */
+  function ready(names) {
+    var ok = true;
+    names.forEach(function (n) { load(n); if (files[n] === LOADING) { ok = false; } });
+    return ok;
+  }
+
+  /** The last position in sorted `list` whose item passes `below` (-1: none). */
+  function lastBelow(list, below) {
+    var lo = 0;
+    var hi = list.length;
+    while (lo < hi) {
+      var mid = (lo + hi) >> 1;
+      if (below(list[mid])) { lo = mid + 1; } else { hi = mid; }
+    }
+    return lo - 1;
+  }
+
+  /** The files that answer query token `q`: its prefix file, or the token files of its keys. */
+  function filesFor(q) {
+    var b = ix.b || [];
+    var at = lastBelow(b, function (p) { return p <= q; });
+    if (at >= 0 && b[at] === q) { return ['b' + at]; }
+    var s = ix.s || [''];
+    var lo = Math.max(0, lastBelow(s, function (t) { return t <= q; }));
+    var hi = Math.max(lo, lastBelow(s, function (t) { return t < q || t.lastIndexOf(q, 0) === 0; }));
+    var out = [];
+    for (var i = lo; i <= hi; i++) { out.push('t' + i); }
+    return out;
+  }
 
   function entries() {
     if (!cache) {
-      var ix = window.RTCDOC_INDEX || {};
+      ix = window.RTCDOC_INDEX || {};
       var kinds = ix.kinds || {};
-      var map = new Map();
+      var dirs = ix.h || {};
       cache = (ix.e || []).map(function (e, n) {
-        var g = String(e[5]).split('|');
-        for (var gi = 0; gi < 3; gi++) {
-          if (!g[gi]) { continue; }
-          var toks = g[gi].split(' ');
-          for (var j = 0; j < toks.length; j++) {
-            var list = map.get(toks[j]);
-            if (!list) { list = []; map.set(toks[j], list); }
-            list.push(n * 3 + gi);
-          }
-        }
         var name = String(e[1]);
         var lname = name.toLowerCase();
-        return { n: n, kind: kinds[e[0]] || '', name: name, href: e[2], meta: e[3], summary: e[4],
+        // `x` is the kind's folder's `x.html`; `/path` the whole path (search.rs short_href).
+        var h = String(e[2]);
+        var href = h.charAt(0) === '/' ? h.slice(1) : (dirs[e[0]] || '') + h + '.html';
+        return { n: n, kind: kinds[e[0]] || '', name: name, href: href,
           lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1) };
       });
-      keys = Array.from(map.keys()).sort();
-      postings = keys.map(function (k) { return map.get(k); });
       // Ties are broken by name: the rank of each entry in name order, an integer compare.
       cache.map(function (e, n) { return n; })
         .sort(function (a, b) { return cache[a].lname < cache[b].lname ? -1 : cache[a].lname > cache[b].lname ? 1 : a - b; })
@@ -88,24 +164,37 @@
   // Score of a query token by where it matched: [exact, prefix] for name, identifiers, prose.
   var WEIGHT = [[30, 20], [10, 7], [3, 2]];
 
-  /** The best score of query token `q` per entry (0: no match), in `best`. */
+  // The same weights by class (`group * 2`, plus one for a prefix match), as prefix files hold.
+  var CLASS = [30, 20, 10, 7, 3, 2];
+
+  /** The best score of query token `q` per entry (0: no match), in `best`; its files are here. */
   function tokenScores(q, best) {
-    var lo = 0;
-    var hi = keys.length;
-    while (lo < hi) {
-      var mid = (lo + hi) >> 1;
-      if (keys[mid] < q) { lo = mid + 1; } else { hi = mid; }
-    }
-    for (var k = lo; k < keys.length && keys[k].lastIndexOf(q, 0) === 0; k++) {
-      var exact = keys[k].length === q.length ? 0 : 1;
-      var list = postings[k];
-      for (var j = 0; j < list.length; j++) {
-        var p = list[j];
-        var n = (p / 3) | 0;
-        var s = WEIGHT[p - n * 3][exact];
-        if (s > best[n]) { best[n] = s; }
+    var names = filesFor(q);
+    if (names[0].charAt(0) === 'b') {
+      var agg = files[names[0]] || [];
+      for (var a = 0; a < agg.length; a++) {
+        var e = (agg[a] / 6) | 0;
+        var c = CLASS[agg[a] - e * 6];
+        if (c > best[e]) { best[e] = c; }
       }
+      return;
     }
+    names.forEach(function (name) {
+      var f = files[name];
+      if (!f) { return; }
+      var keys = f.keys;
+      var lo = lastBelow(keys, function (k) { return k < q; }) + 1;
+      for (var k = lo; k < keys.length && keys[k].lastIndexOf(q, 0) === 0; k++) {
+        var exact = keys[k].length === q.length ? 0 : 1;
+        var list = f.lists[k];
+        for (var j = 0; j < list.length; j++) {
+          var p = list[j];
+          var n = (p / 3) | 0;
+          var s = WEIGHT[p - n * 3][exact];
+          if (s > best[n]) { best[n] = s; }
+        }
+      }
+    });
   }
 
   function search(q) {
@@ -113,6 +202,9 @@
     if (!qt.length) { return []; }
     var lq = q.trim().toLowerCase();
     var all = entries();
+    var need = [];
+    qt.forEach(function (t) { need = need.concat(filesFor(t)); });
+    if (!ready(need)) { return null; }
     var total = null;
     for (var i = 0; i < qt.length; i++) {
       var best = new Int32Array(all.length);
@@ -192,11 +284,14 @@
 
   function portSearch(pq) {
     var all = entries();
-    var ports = (window.RTCDOC_INDEX || {}).ports || {};
+    if (!ready(['p0'])) { return null; }
+    var ports = files.p0 || {};
     var kinds = ports.kinds || {};
     var keep = null;
     if (pq.words) {
-      keep = new Set(search(pq.words).map(function (e) { return e.n; }));
+      var kept = search(pq.words);
+      if (!kept) { return null; }
+      keep = new Set(kept.map(function (e) { return e.n; }));
     }
     var found = pq.terms.map(function (term) { return termPorts(ports, term, all); });
     var hits = [];
@@ -214,8 +309,8 @@
         var key = ci + ' ' + anchor;
         if (seen.has(key)) { return; }
         seen.add(key);
-        hits.push({ kind: kinds[h[2]] || '', name: e.name + '.' + h[1][1], href: e.href + '#' + anchor,
-          meta: String(h[0][0]), summary: e.summary, rank: e.rank, port: String(h[1][1]) });
+        hits.push({ n: ci, kind: kinds[h[2]] || '', name: e.name + '.' + h[1][1], href: e.href + '#' + anchor,
+          meta: String(h[0][0]), rank: e.rank, port: String(h[1][1]) });
       });
     });
     hits.sort(function (a, b) { return a.rank - b.rank || (a.port < b.port ? -1 : a.port > b.port ? 1 : 0); });
@@ -225,6 +320,13 @@
   function query(q) {
     var pq = parsePortQuery(q);
     return pq ? portSearch(pq) : search(q);
+  }
+
+  /** Adds the meta line (unless the result has its own) and summary `det` to result link `a`. */
+  function fill(a, e, det) {
+    var meta = e.meta !== undefined ? e.meta : det && det[0];
+    if (meta && !a.querySelector('.r-meta')) { a.appendChild(el('span', 'r-meta', meta)); }
+    if (det && det[1]) { a.appendChild(el('span', 'r-summary', det[1])); }
   }
 
   function ensureIndex(then) {
@@ -261,7 +363,14 @@
       if (e.kind) { head.appendChild(el('span', 'r-kind', e.kind)); }
       a.appendChild(head);
       if (e.meta) { a.appendChild(el('span', 'r-meta', e.meta)); }
-      if (e.summary) { a.appendChild(el('span', 'r-summary', e.summary)); }
+      // The meta line and summary come with the entry's details file, now or when it loads.
+      var name = 'e' + ((e.n / (ix.d || 1)) | 0);
+      load(name);
+      if (files[name] === LOADING) {
+        (details[name] = details[name] || []).push([a, e, e.n]);
+      } else {
+        fill(a, e, (files[name] || [])[e.n % (ix.d || 1)]);
+      }
       li.appendChild(a);
       ul.appendChild(li);
     });
@@ -271,7 +380,12 @@
   function render() {
     var q = input.value;
     var results = q.trim() ? query(q) : [];
-    last = results;
+    // Files the query needs are loading: it is answered when they come (arrived).
+    if (!results) { awaiting = true; return; }
+    if (opening) {
+      opening = false;
+      if (results.length) { window.location.href = root + results[0].href; return; }
+    }
     var target = page || popup;
     if (!target) { return; }
     if (page) {
@@ -321,10 +435,7 @@
     // Enter on the search page opens the first result.
     form.addEventListener('submit', function (ev) {
       ev.preventDefault();
-      ensureIndex(function () {
-        render();
-        if (last.length) { window.location.href = root + last[0].href; }
-      });
+      ensureIndex(function () { opening = true; render(); });
     });
   }
   document.addEventListener('keydown', function (ev) {

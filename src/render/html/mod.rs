@@ -1203,7 +1203,6 @@ impl HtmlRenderer {
         let mut all_paths: Vec<String> = Vec::new();
         let mut written = 0usize;
         written += write_files(&site, out, wanted, &mut all_paths)?;
-        all_paths.push("search-index.js".into());
         // Component pages: the bulk of the work, rendered and written in parallel; the search
         // index is built alongside (its JSON serialisation is serial).
         let tmpl = env.get_template("component.html")?;
@@ -1225,15 +1224,19 @@ impl HtmlRenderer {
         let ((search_written, pages_written), others) = rayon::join(
             || {
                 rayon::join(
-                    || -> Result<usize> {
-                        if !wanted("search-index.js") {
-                            return Ok(0);
-                        }
-                        // Streamed: the index is never held whole beside the pages.
-                        out.write_with("search-index.js", &mut |w| {
-                            Ok(search::index_js(catalog, lang, w)?)
+                    || -> Result<Vec<String>> {
+                        // The index's files ([`search::write_index`]) are written or left as
+                        // one (`search-index.js` names them all), and listed either way.
+                        let mut paths = Vec::new();
+                        let write = wanted("search-index.js");
+                        search::write_index(catalog, lang, &mut |path, bytes| {
+                            paths.push(path.to_string());
+                            if write {
+                                out.write_owned(path, bytes)?;
+                            }
+                            Ok(())
                         })?;
-                        Ok(1)
+                        Ok(paths)
                     },
                     || {
                         render_component_pages(
@@ -1249,7 +1252,9 @@ impl HtmlRenderer {
             || render_other_pages(&site, &env, &globals, out, wanted),
         );
         let (other_paths, others_written) = others?;
-        written += search_written? + pages_written? + others_written;
+        let search_paths = search_written?;
+        written += search_paths.len() + pages_written? + others_written;
+        all_paths.extend(search_paths);
         all_paths.extend(other_paths);
 
         written += write_feeds(catalog, opts, out, wanted, &mut all_paths)?;

@@ -266,72 +266,331 @@ fn merge_sorted<'s>(a: &[&'s str], b: &[&'s str]) -> Vec<&'s str> {
     out
 }
 
-/// Writes the contents of `search-index.js` to `w`: `window.RTCDOC_INDEX = {kinds, e}` where `kinds`
-/// maps a kind letter to its label and each entry of `e` is
-/// `[kind, name, href, meta, summary, "name|ids|text"]` (see [`Groups::encode`]). Entries are
-/// components (`c`), data types (`t`), interfaces (`i`) and RT Systems (`s`); `href` is the
-/// page's path from [`Catalog::pages`]. The JSON is escaped so that no
-/// `<`, `>` or `&` appears literally (a `</script>` in a profile cannot end a script element).
-pub fn index_js(catalog: &Catalog, lang: Lang, w: &mut dyn std::io::Write) -> std::io::Result<()> {
-    write_index(catalog, lang, INDEX_BATCH, w)
+/// One entry of the search index: what a result shows (kind letter, name, page, the meta line
+/// and the summary) and its tokens (`name|ids|text`, [`Groups::encode`]).
+struct Entry {
+    kind: &'static str,
+    name: String,
+    href: String,
+    meta: String,
+    summary: String,
+    groups: String,
 }
 
-/// [`index_js`] with the component entries made `batch` at a time.
-fn write_index(
+/// Entries per details file (`search/e<N>.js`: the meta line and summary of entries
+/// `N * DETAILS_BLOCK ..`), fetched for the results shown.
+const DETAILS_BLOCK: usize = 64;
+
+/// A token file (`search/t<N>.js`) is closed once it holds this many bytes.
+const SHARD_BYTES: usize = 24 * 1024;
+
+/// Writes the search index, split so that a query downloads only what it needs (see
+/// `search.js`), each file through `emit(path, bytes)`:
+/// - `search-index.js`, loaded on first use: `window.RTCDOC_INDEX = {b, d, e, h, kinds, s, v}`;
+///   `e` holds each entry's `[kind, name, href]` (`href` short: [`short_href`], with `h` the
+///   folder of each kind; components first, in catalogue order, then
+///   data types, interfaces and RT Systems), `kinds` a label per kind letter, `s` the first
+///   token of each token file, `b` the prefixes that have a file of their own (below), `d`
+///   [`DETAILS_BLOCK`], `v` the format (2).
+/// - `search/t<N>.js`, the token files: the inverted index, tokens in UTF-16 order (the order
+///   of JavaScript's `<`), cut in files of about [`SHARD_BYTES`]; each token
+///   followed by its postings, `[token, posting…, token, posting…]`, each posting
+///   `entry * 3 + group` (group 0 the name, 1 the identifiers, 2 the prose) as the difference
+///   from the one before (a string starts the next token). A query token reads the
+///   keys it is a prefix of, which lie in one file, or two.
+/// - `search/b<N>.js`, one per prefix of `b`: a prefix whose keys lie in more than one token
+///   file (`c`, `ti`: what one typed letter asks) has its best match per entry precomputed,
+///   `entry * 6 + class` (class `group * 2`, plus one unless a key is the prefix itself) as
+///   differences, so that a short query never downloads every token file it spans.
+/// - `search/e<N>.js`: the meta line and summary of [`DETAILS_BLOCK`] entries.
+/// - `search/ports.js`: the port part ([`ports_json`]), for `in:`, `out:`, `provides:`,
+///   `requires:` and `feeds:` queries.
+///
+/// Every file but the first is `RTCDOC_SHARD(kind, N, data);` (a `<script>` can load it from
+/// `file://`, where `fetch()` is forbidden). The JSON is escaped so that no `<`, `>` or `&`
+/// appears literally (a `</script>` in a profile cannot end a script element).
+pub fn write_index(
+    catalog: &Catalog,
+    lang: Lang,
+    emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    write_index_with(catalog, lang, INDEX_BATCH, emit)
+}
+
+/// [`write_index`] with the component entries made `batch` at a time.
+fn write_index_with(
     catalog: &Catalog,
     lang: Lang,
     batch: usize,
-    w: &mut dyn std::io::Write,
-) -> std::io::Result<()> {
-    w.write_all(b"window.RTCDOC_INDEX={\"e\":[")?;
-    let mut first = true;
-    let mut put = |w: &mut dyn std::io::Write, entry: &str| {
-        if !std::mem::take(&mut first) {
-            w.write_all(b",")?;
+    emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    let mut inv = Inverted::default();
+    let mut heads: Vec<serde_json::Value> = Vec::new();
+    let mut details: Vec<serde_json::Value> = Vec::new();
+    let mut block = 0usize;
+    let mut add_entry = |e: Entry, emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>| {
+        let n = heads.len() as u32;
+        inv.add(n, &e.groups);
+        heads.push(serde_json::json!([
+            e.kind,
+            e.name,
+            short_href(e.kind, &e.href)
+        ]));
+        details.push(serde_json::json!([e.meta, e.summary]));
+        if details.len() == DETAILS_BLOCK {
+            emit(
+                &format!("search/e{block}.js"),
+                shard_js(
+                    "e",
+                    block,
+                    &serde_json::Value::Array(std::mem::take(&mut details)),
+                ),
+            )?;
+            block += 1;
         }
-        w.write_all(entry.as_bytes())
+        anyhow::Ok(())
     };
-    // The component entries are built and escaped in parallel, a batch at a time, and written
-    // out in catalogue order; only one batch's text is held, never the whole index (at 10,000
-    // profiles 12 MB, which the component pages rendering beside it would otherwise add to the
-    // peak memory).
+    // The component entries are built in parallel, a batch at a time, and added in catalogue
+    // order; only one batch's text is held, never every entry's.
     let n = catalog.components.len();
     for start in (0..n).step_by(batch.max(1)) {
-        let batch: Vec<String> = (start..n.min(start.saturating_add(batch)))
+        let made: Vec<Entry> = (start..n.min(start.saturating_add(batch)))
             .into_par_iter()
-            .map(Ix::new)
-            .map(|ci| entry_js(&component_entry(catalog, ci)))
+            .map(|ci| component_entry(catalog, Ix::new(ci)))
             .collect();
-        for e in &batch {
-            put(w, e)?;
+        for e in made {
+            add_entry(e, emit)?;
         }
     }
     for (ti, t) in Ix::enumerate(&catalog.data_types) {
         let page = catalog.data_type_page(ti).path("html");
-        let entry = idl_entry(catalog, "t", &page, (&t.name, &t.spellings), lang);
-        put(w, &entry_js(&entry))?;
+        add_entry(
+            idl_entry(catalog, "t", page, (&t.name, &t.spellings), lang),
+            emit,
+        )?;
     }
     for (ii, t) in Ix::enumerate(&catalog.interfaces) {
         let page = catalog.interface_page(ii).path("html");
-        let entry = idl_entry(catalog, "i", &page, (&t.name, &t.spellings), lang);
-        put(w, &entry_js(&entry))?;
+        add_entry(
+            idl_entry(catalog, "i", page, (&t.name, &t.spellings), lang),
+            emit,
+        )?;
     }
     for e in system_entries(catalog) {
-        put(w, &entry_js(&e))?;
+        add_entry(e, emit)?;
     }
+    if !details.is_empty() {
+        emit(
+            &format!("search/e{block}.js"),
+            shard_js("e", block, &serde_json::Value::Array(details)),
+        )?;
+    }
+    let (starts, prefixes) = inv.write(emit)?;
+    emit(
+        "search/ports.js",
+        shard_js("p", 0, &ports_json(catalog, lang)),
+    )?;
     let kinds = serde_json::json!({
         "c": lang.t("component"),
         "t": lang.t("data_type"),
         "i": lang.t("interface"),
         "s": lang.t("system"),
     });
-    // `{"e":[…],"kinds":{…},"ports":{…}}`: the object serde_json writes for these keys (sorted).
-    w.write_all(b"],\"kinds\":")?;
-    w.write_all(js_safe_json(&serde_json::to_string(&kinds).unwrap_or_default()).as_bytes())?;
-    // The port part: its own key, so that it can be moved (to a shard of its own) as a whole.
-    w.write_all(b",\"ports\":")?;
-    w.write_all(entry_js(&ports_json(catalog, lang)).as_bytes())?;
-    w.write_all(b"};\n")
+    let first = serde_json::json!({
+        "v": 2,
+        "e": heads,
+        "kinds": kinds,
+        "s": starts,
+        "b": prefixes,
+        "d": DETAILS_BLOCK,
+        "h": KIND_DIRS.iter().map(|(k, d)| (k.to_string(), serde_json::Value::from(*d))).collect::<serde_json::Map<_, _>>(),
+    });
+    let mut js = b"window.RTCDOC_INDEX=".to_vec();
+    js.extend_from_slice(entry_js(&first).as_bytes());
+    js.extend_from_slice(b";\n");
+    emit("search-index.js", js)
+}
+
+/// The folder of each kind's pages: an entry's `href` is written without it and without
+/// `.html` ([`short_href`]).
+const KIND_DIRS: [(&str, &str); 4] = [
+    ("c", "components/"),
+    ("i", "interfaces/"),
+    ("s", "systems/"),
+    ("t", "types/"),
+];
+
+/// `href` as the first file holds it: `x` for `DIR/x.html` (DIR the kind's folder, `x`
+/// without `/`), else `/` and the whole `href` (never the start of a relative one).
+fn short_href<'a>(kind: &str, href: &'a str) -> Cow<'a, str> {
+    let dir = KIND_DIRS.iter().find(|(k, _)| *k == kind).map(|(_, d)| *d);
+    match dir
+        .and_then(|d| href.strip_prefix(d))
+        .and_then(|h| h.strip_suffix(".html"))
+    {
+        Some(h) if !h.contains('/') && !h.is_empty() => Cow::Borrowed(h),
+        _ => Cow::Owned(format!("/{href}")),
+    }
+}
+
+/// `RTCDOC_SHARD("kind",n,data);` with `data` escaped ([`entry_js`]).
+fn shard_js(kind: &str, n: usize, data: &serde_json::Value) -> Vec<u8> {
+    format!("RTCDOC_SHARD(\"{kind}\",{n},{});\n", entry_js(data)).into_bytes()
+}
+
+/// The inverted index: each distinct token and its postings (`entry * 3 + group`, ascending:
+/// entries are added in order, groups in order within an entry).
+#[derive(Default)]
+struct Inverted {
+    ids: std::collections::HashMap<String, u32>,
+    tokens: Vec<String>,
+    postings: Vec<Vec<u32>>,
+}
+
+impl Inverted {
+    /// Adds entry `n`'s tokens, `name|ids|text` ([`Groups::encode`]).
+    fn add(&mut self, n: u32, groups: &str) {
+        for (g, group) in groups.split('|').enumerate().take(3) {
+            for t in group.split(' ').filter(|t| !t.is_empty()) {
+                let id = match self.ids.get(t) {
+                    Some(&id) => id,
+                    None => {
+                        let id = self.tokens.len() as u32;
+                        self.ids.insert(t.to_string(), id);
+                        self.tokens.push(t.to_string());
+                        self.postings.push(Vec::new());
+                        id
+                    }
+                };
+                let p = n * 3 + g as u32;
+                let list = &mut self.postings[id as usize];
+                if list.last() != Some(&p) {
+                    list.push(p);
+                }
+            }
+        }
+    }
+
+    /// Writes the token files and the prefix files; returns the first token of each token
+    /// file and the prefixes that have a file.
+    fn write(
+        self,
+        emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
+    ) -> anyhow::Result<(Vec<String>, Vec<String>)> {
+        let mut order: Vec<u32> = (0..self.tokens.len() as u32).collect();
+        order.sort_unstable_by(|&a, &b| {
+            utf16_cmp(&self.tokens[a as usize], &self.tokens[b as usize])
+        });
+        let sorted: Vec<&str> = order
+            .iter()
+            .map(|&i| self.tokens[i as usize].as_str())
+            .collect();
+        // Token files: consecutive tokens until one holds SHARD_BYTES.
+        let mut starts: Vec<String> = Vec::new();
+        let mut cut: Vec<usize> = Vec::new();
+        let mut buf: Vec<serde_json::Value> = Vec::new();
+        let mut size = 0usize;
+        for (k, &i) in order.iter().enumerate() {
+            if buf.is_empty() {
+                starts.push(if k == 0 {
+                    String::new()
+                } else {
+                    sorted[k].to_string()
+                });
+                cut.push(k);
+            }
+            let token = serde_json::Value::from(sorted[k]);
+            size += token.to_string().len() + 1;
+            buf.push(token);
+            for d in deltas(&self.postings[i as usize]) {
+                size += d.checked_ilog10().unwrap_or(0) as usize + 2;
+                buf.push(d.into());
+            }
+            if size >= SHARD_BYTES {
+                let n = starts.len() - 1;
+                emit(
+                    &format!("search/t{n}.js"),
+                    shard_js("t", n, &serde_json::Value::Array(std::mem::take(&mut buf))),
+                )?;
+                size = 0;
+            }
+        }
+        if !buf.is_empty() || starts.is_empty() {
+            if starts.is_empty() {
+                starts.push(String::new());
+                cut.push(0);
+            }
+            let n = starts.len() - 1;
+            emit(
+                &format!("search/t{n}.js"),
+                shard_js("t", n, &serde_json::Value::Array(buf)),
+            )?;
+        }
+        // Prefixes whose keys lie in two files or more: the prefixes of the longest common
+        // prefix of the tokens either side of each cut.
+        let mut prefixes: Vec<&str> = Vec::new();
+        for &k in cut.iter().skip(1) {
+            let (a, b) = (sorted[k - 1], sorted[k]);
+            let common: usize = a
+                .chars()
+                .zip(b.chars())
+                .take_while(|(x, y)| x == y)
+                .map(|(x, _)| x.len_utf8())
+                .sum();
+            let p = &b[..common];
+            prefixes.extend(p.char_indices().map(|(i, c)| &p[..i + c.len_utf8()]));
+        }
+        prefixes.sort_unstable_by(|a, b| utf16_cmp(a, b));
+        prefixes.dedup();
+        let mut best: Vec<u8> = Vec::new();
+        for (n, p) in prefixes.iter().enumerate() {
+            let lo = sorted.partition_point(|t| utf16_cmp(t, p).is_lt());
+            let hi = lo + sorted[lo..].partition_point(|t| t.starts_with(p));
+            best.clear();
+            for k in lo..hi {
+                let exact = sorted[k].len() == p.len();
+                for &post in &self.postings[order[k] as usize] {
+                    let (e, g) = ((post / 3) as usize, (post % 3) as u8);
+                    let class = g * 2 + u8::from(!exact);
+                    if best.len() <= e {
+                        best.resize(e + 1, u8::MAX);
+                    }
+                    best[e] = best[e].min(class);
+                }
+            }
+            let list: Vec<u32> = best
+                .iter()
+                .enumerate()
+                .filter(|(_, &c)| c != u8::MAX)
+                .map(|(e, &c)| e as u32 * 6 + u32::from(c))
+                .collect();
+            emit(
+                &format!("search/b{n}.js"),
+                shard_js("b", n, &serde_json::json!(deltas(&list))),
+            )?;
+        }
+        Ok((starts, prefixes.into_iter().map(String::from).collect()))
+    }
+}
+
+/// Ascending numbers as the first and the differences from each to the next.
+fn deltas(list: &[u32]) -> Vec<u32> {
+    let mut prev = 0;
+    list.iter()
+        .map(|&p| {
+            let d = p - prev;
+            prev = p;
+            d
+        })
+        .collect()
+}
+
+/// `a` and `b` compared as JavaScript compares strings: by UTF-16 code units.
+fn utf16_cmp(a: &str, b: &str) -> std::cmp::Ordering {
+    if a.is_ascii() && b.is_ascii() {
+        return a.cmp(b);
+    }
+    a.encode_utf16().cmp(b.encode_utf16())
 }
 
 /// A port of the index's `ports` part: `[component, name]` when its anchor is the one
@@ -466,7 +725,7 @@ fn entry_js(entry: &serde_json::Value) -> String {
 }
 
 /// The search entry of component `ci`.
-fn component_entry(catalog: &Catalog, ci: ComponentIx) -> serde_json::Value {
+fn component_entry(catalog: &Catalog, ci: ComponentIx) -> Entry {
     let c = &catalog[ci];
     let p = &c.profile;
     let b = &p.basic_info;
@@ -545,14 +804,14 @@ fn component_entry(catalog: &Catalog, ci: ComponentIx) -> serde_json::Value {
     .flatten()
     .collect::<Vec<_>>()
     .join(" · ");
-    serde_json::json!([
-        "c",
-        c.display_name(),
-        catalog.component_page(ci).path("html"),
+    Entry {
+        kind: "c",
+        name: c.display_name().into_owned(),
+        href: catalog.component_page(ci).path("html"),
         meta,
         summary,
-        g.encode(),
-    ])
+        groups: g.encode(),
+    }
 }
 
 /// The search entry of a data type (`kind` `t`) or interface (`i`): its spellings, and from
@@ -560,11 +819,11 @@ fn component_entry(catalog: &Catalog, ci: ComponentIx) -> serde_json::Value {
 /// attribute names and their documentation.
 fn idl_entry(
     catalog: &Catalog,
-    kind: &str,
-    page: &str,
+    kind: &'static str,
+    href: String,
     (name, spellings): (&str, &[String]),
     lang: Lang,
-) -> serde_json::Value {
+) -> Entry {
     let def = crate::render::idl_view::definition(catalog, name, lang);
     let mut g = Groups::default();
     add(&mut g.name, Some(name));
@@ -596,12 +855,19 @@ fn idl_entry(
         .as_ref()
         .map(|d| format!("{} · {}", d.kind, d.file))
         .unwrap_or_default();
-    serde_json::json!([kind, name, page, meta, summary, g.encode(),])
+    Entry {
+        kind,
+        name: name.to_string(),
+        href,
+        meta,
+        summary,
+        groups: g.encode(),
+    }
 }
 
 /// One entry per RT System (`kind` `s`): its name; the instance and component names, the
 /// connected ports and their data types; the vendor, comment and abstract as text.
-fn system_entries(catalog: &Catalog) -> Vec<serde_json::Value> {
+fn system_entries(catalog: &Catalog) -> Vec<Entry> {
     Ix::enumerate(&catalog.systems)
         .map(|(si, s)| {
             let p = &s.profile;
@@ -639,14 +905,14 @@ fn system_entries(catalog: &Catalog) -> Vec<serde_json::Value> {
                 .or_else(|| non_empty(&p.abstract_))
                 .map(|d| super::markdown::first_line(d, 90))
                 .unwrap_or_default();
-            serde_json::json!([
-                "s",
-                p.name(),
-                catalog.system_page(si).path("html"),
-                vendor,
+            Entry {
+                kind: "s",
+                name: p.name().to_string(),
+                href: catalog.system_page(si).path("html"),
+                meta: vendor.to_string(),
                 summary,
-                g.encode(),
-            ])
+                groups: g.encode(),
+            }
         })
         .collect()
 }
@@ -845,6 +1111,31 @@ mod tests {
         assert_eq!(toks("カメラ画像"), ["カメ", "メラ", "ラ画", "画像"]);
     }
 
+    /// The index's files, by path.
+    fn index_files(cat: &Catalog, batch: usize) -> std::collections::BTreeMap<String, String> {
+        let mut files = std::collections::BTreeMap::new();
+        write_index_with(cat, Lang::En, batch, &mut |path, bytes| {
+            let text = String::from_utf8(bytes)?;
+            assert!(
+                files.insert(path.to_string(), text).is_none(),
+                "{path} twice"
+            );
+            Ok(())
+        })
+        .unwrap();
+        files
+    }
+
+    /// The data of `RTCDOC_SHARD(kind, n, data);`.
+    fn shard_data(text: &str) -> serde_json::Value {
+        let json = text
+            .strip_prefix("RTCDOC_SHARD(")
+            .and_then(|t| t.strip_suffix(");\n"))
+            .and_then(|t| t.splitn(3, ',').nth(2))
+            .unwrap();
+        serde_json::from_str(json).unwrap()
+    }
+
     #[test]
     fn the_index_is_the_same_whatever_the_batch() {
         let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
@@ -854,32 +1145,90 @@ mod tests {
             .catalog;
         let n = cat.components.len();
         assert!(n > 3, "examples/ has {n} components");
-        let index = |batch: usize| {
-            let mut out = Vec::new();
-            write_index(&cat, Lang::En, batch, &mut out).unwrap();
-            String::from_utf8(out).unwrap()
-        };
         // One batch holding every entry: the index as it was made before it was streamed.
-        let whole = index(usize::MAX);
+        let whole = index_files(&cat, usize::MAX);
         for batch in [1, 2, 3, n - 1, INDEX_BATCH] {
-            assert_eq!(index(batch), whole, "batches of {batch}");
+            assert_eq!(index_files(&cat, batch), whole, "batches of {batch}");
         }
-        let json = whole
+        let json = whole["search-index.js"]
             .strip_prefix("window.RTCDOC_INDEX=")
             .and_then(|j| j.strip_suffix(";\n"))
             .unwrap();
         let v: serde_json::Value = serde_json::from_str(json).unwrap();
         let e = v["e"].as_array().unwrap();
-        assert_eq!(
-            e.len(),
-            n + cat.data_types.len() + cat.interfaces.len() + cat.systems.len()
-        );
+        let entries = n + cat.data_types.len() + cat.interfaces.len() + cat.systems.len();
+        assert_eq!(e.len(), entries);
         // Component entries first, in catalogue order.
         for (ci, c) in cat.components.iter().enumerate() {
             assert_eq!(e[ci][0], "c");
             assert_eq!(e[ci][1], c.display_name().as_ref(), "entry {ci}");
         }
         assert_eq!(v["kinds"]["c"], Lang::En.t("component"));
+        // One details file per DETAILS_BLOCK entries, each with its meta and summary.
+        let blocks = entries.div_ceil(DETAILS_BLOCK);
+        let details: Vec<&String> = whole
+            .iter()
+            .filter(|(p, _)| p.starts_with("search/e"))
+            .map(|(_, t)| t)
+            .collect();
+        assert_eq!(details.len(), blocks);
+        let first = shard_data(&whole["search/e0.js"]);
+        assert_eq!(first.as_array().unwrap().len(), entries.min(DETAILS_BLOCK));
+        // A token file per entry of `s`; every posting names an entry.
+        let starts = v["s"].as_array().unwrap();
+        for i in 0..starts.len() {
+            let t = shard_data(&whole[&format!("search/t{i}.js")]);
+            let mut post = 0;
+            for item in t.as_array().unwrap() {
+                match item.as_u64() {
+                    Some(d) => {
+                        post += d;
+                        assert!((post as usize) / 3 < entries, "{item}");
+                    }
+                    None => post = 0,
+                }
+            }
+        }
+        assert!(whole.contains_key("search/ports.js"));
+    }
+
+    /// Postings of the small token files: the keys of a short prefix span several files, so it
+    /// has a file of its own, whose best match per entry is the best of its keys'.
+    #[test]
+    fn a_prefix_whose_keys_span_files_has_its_own() {
+        let mut inv = Inverted::default();
+        // 3,000 entries with tokens under `ca`, enough to fill several token files.
+        for n in 0..3000u32 {
+            inv.add(n, &format!("cat{n:04}|camera{n:04} ca|"));
+        }
+        inv.add(3000, "ca|dog|");
+        let mut files = std::collections::BTreeMap::new();
+        let (starts, prefixes) = inv
+            .write(&mut |path, bytes| {
+                files.insert(path.to_string(), String::from_utf8(bytes)?);
+                Ok(())
+            })
+            .unwrap();
+        assert!(starts.len() > 2, "{starts:?}");
+        for p in ["c", "ca"] {
+            assert!(prefixes.iter().any(|x| x == p), "{p} in {prefixes:?}");
+        }
+        let at = prefixes.iter().position(|x| x == "ca").unwrap();
+        let list: Vec<u64> = shard_data(&files[&format!("search/b{at}.js")])
+            .as_array()
+            .unwrap()
+            .iter()
+            .scan(0, |s, d| {
+                *s += d.as_u64().unwrap();
+                Some(*s)
+            })
+            .collect();
+        // Every entry once: 0..3000 by a prefix of their name (class 1), 3000 by its exact name
+        // (class 0); the exact `ca` among the identifiers of 0..3000 ranks below a name prefix.
+        assert_eq!(list.len(), 3001);
+        assert_eq!(list[0], 1);
+        assert_eq!(list[1], 6 + 1);
+        assert_eq!(list[3000], 3000 * 6);
     }
 
     proptest::proptest! {

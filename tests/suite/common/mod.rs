@@ -3,6 +3,7 @@
 
 pub mod books;
 pub mod history_repo;
+pub mod search_index;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
