@@ -328,13 +328,20 @@ fn write_index_with(
     let mut heads: Vec<serde_json::Value> = Vec::new();
     let mut details: Vec<serde_json::Value> = Vec::new();
     let mut block = 0usize;
+    let mut dirs: std::collections::BTreeMap<&'static str, String> = Default::default();
     let mut add_entry = |e: Entry, emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>| {
         let n = heads.len() as u32;
         inv.add(n, &e.groups);
+        // Each kind's folder is its first entry's (the pages of a kind share one).
+        let dir = dirs.entry(e.kind).or_insert_with(|| {
+            e.href
+                .rsplit_once('/')
+                .map_or(String::new(), |(d, _)| format!("{d}/"))
+        });
         heads.push(serde_json::json!([
             e.kind,
             e.name,
-            short_href(e.kind, &e.href)
+            short_href(dir, &e.href)
         ]));
         details.push(serde_json::json!([e.meta, e.summary]));
         if details.len() == DETAILS_BLOCK {
@@ -403,7 +410,7 @@ fn write_index_with(
         "s": starts,
         "b": prefixes,
         "d": DETAILS_BLOCK,
-        "h": KIND_DIRS.iter().map(|(k, d)| (k.to_string(), serde_json::Value::from(*d))).collect::<serde_json::Map<_, _>>(),
+        "h": dirs,
     });
     let mut js = b"window.RTCDOC_INDEX=".to_vec();
     js.extend_from_slice(entry_js(&first).as_bytes());
@@ -411,24 +418,12 @@ fn write_index_with(
     emit("search-index.js", js)
 }
 
-/// The folder of each kind's pages: an entry's `href` is written without it and without
-/// `.html` ([`short_href`]).
-const KIND_DIRS: [(&str, &str); 4] = [
-    ("c", "components/"),
-    ("i", "interfaces/"),
-    ("s", "systems/"),
-    ("t", "types/"),
-];
-
-/// `href` as the first file holds it: `x` for `DIR/x.html` (DIR the kind's folder, `x`
-/// without `/`), else `/` and the whole `href` (never the start of a relative one).
-fn short_href<'a>(kind: &str, href: &'a str) -> Cow<'a, str> {
-    let dir = KIND_DIRS.iter().find(|(k, _)| *k == kind).map(|(_, d)| *d);
-    match dir
-        .and_then(|d| href.strip_prefix(d))
-        .and_then(|h| h.strip_suffix(".html"))
-    {
-        Some(h) if !h.contains('/') && !h.is_empty() => Cow::Borrowed(h),
+/// `href` as the first file holds it: `x` for `DIR/x.html` where `DIR/` is `dir` (the
+/// folder of the kind's pages, `h` in the first file) and `x` has no `/`; else `/` and the whole
+/// `href` (never the start of a relative one).
+fn short_href<'a>(dir: &str, href: &'a str) -> Cow<'a, str> {
+    match href.strip_prefix(dir).and_then(|h| h.strip_suffix(".html")) {
+        Some(h) if !dir.is_empty() && !h.contains('/') && !h.is_empty() => Cow::Borrowed(h),
         _ => Cow::Owned(format!("/{href}")),
     }
 }
