@@ -55,7 +55,7 @@
   // differences), the
   // files of the short prefixes `b<n>` (a prefix whose keys span token files: its best match
   // per entry, `entry * 6 + class`), the details `e<n>` (meta line and summary of `d` entries)
-  // and the port part `p0`. A query whose files are still loading is answered when they come.
+  // and the port part `p0`. Every file of search/ is `<kind><n>.js`. A query whose files are still loading is answered when they come.
   var ix = null;
   var files = {};
   var LOADING = {};
@@ -89,8 +89,7 @@
     if (files[name] === LOADING) { files[name] = null; }
     if (name.charAt(0) === 'e') {
       var block = files[name] || [];
-      var base = Number(name.slice(1)) * (ix.d || 1);
-      (details[name] || []).forEach(function (w) { fill(w[0], w[1], block[w[2] - base]); });
+      (details[name] || []).forEach(function (w) { fill(w[0], w[1], block[w[1].n % (ix.d || 1)]); });
       delete details[name];
     }
     if (awaiting) { awaiting = false; render(); }
@@ -101,7 +100,7 @@
     if (name in files) { return; }
     files[name] = LOADING;
     var s = document.createElement('script');
-    s.src = root + 'search/' + (name === 'p0' ? 'ports' : name) + '.js';
+    s.src = root + 'search/' + name + '.js';
     s.onload = function () { arrived(name); };
     // A file that cannot be read counts as empty: the query is answered from the others.
     s.onerror = function () { files[name] = null; arrived(name); };
@@ -161,15 +160,13 @@
     return cache;
   }
 
-  // Score of a query token by where it matched: [exact, prefix] for name, identifiers, prose.
-  var WEIGHT = [[30, 20], [10, 7], [3, 2]];
-
-  // The same weights by class (`group * 2`, plus one for a prefix match), as prefix files hold.
+  // Score of a query token by where it matched, by class: `group * 2` (name, identifiers,
+  // prose), plus one for a prefix match (not the whole key); prefix files hold the class.
   var CLASS = [30, 20, 10, 7, 3, 2];
 
-  /** The best score of query token `q` per entry (0: no match), in `best`; its files are here. */
-  function tokenScores(q, best) {
-    var names = filesFor(q);
+  /** The best score of query token `q` per entry (0: no match), in `best`, from `names`, its
+      files (filesFor), which are here. */
+  function tokenScores(q, names, best) {
     if (names[0].charAt(0) === 'b') {
       var agg = files[names[0]] || [];
       for (var a = 0; a < agg.length; a++) {
@@ -185,12 +182,12 @@
       var keys = f.keys;
       var lo = lastBelow(keys, function (k) { return k < q; }) + 1;
       for (var k = lo; k < keys.length && keys[k].lastIndexOf(q, 0) === 0; k++) {
-        var exact = keys[k].length === q.length ? 0 : 1;
+        var prefix = keys[k].length === q.length ? 0 : 1;
         var list = f.lists[k];
         for (var j = 0; j < list.length; j++) {
           var p = list[j];
           var n = (p / 3) | 0;
-          var s = WEIGHT[p - n * 3][exact];
+          var s = CLASS[(p - n * 3) * 2 + prefix];
           if (s > best[n]) { best[n] = s; }
         }
       }
@@ -202,13 +199,12 @@
     if (!qt.length) { return []; }
     var lq = q.trim().toLowerCase();
     var all = entries();
-    var need = [];
-    qt.forEach(function (t) { need = need.concat(filesFor(t)); });
-    if (!ready(need)) { return null; }
+    var plan = qt.map(filesFor);
+    if (!ready([].concat.apply([], plan))) { return null; }
     var total = null;
     for (var i = 0; i < qt.length; i++) {
       var best = new Int32Array(all.length);
-      tokenScores(qt[i], best);
+      tokenScores(qt[i], plan[i], best);
       if (!total) { total = best; continue; }
       // Every query token must match: an entry without this one drops out.
       for (var n = 0; n < all.length; n++) { total[n] = best[n] && total[n] ? total[n] + best[n] : 0; }
@@ -367,7 +363,7 @@
       var name = 'e' + ((e.n / (ix.d || 1)) | 0);
       load(name);
       if (files[name] === LOADING) {
-        (details[name] = details[name] || []).push([a, e, e.n]);
+        (details[name] = details[name] || []).push([a, e]);
       } else {
         fill(a, e, (files[name] || [])[e.n % (ix.d || 1)]);
       }

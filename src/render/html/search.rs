@@ -303,7 +303,7 @@ const SHARD_BYTES: usize = 24 * 1024;
 ///   `entry * 6 + class` (class `group * 2`, plus one unless a key is the prefix itself) as
 ///   differences, so that a short query never downloads every token file it spans.
 /// - `search/e<N>.js`: the meta line and summary of [`DETAILS_BLOCK`] entries.
-/// - `search/ports.js`: the port part ([`ports_json`]), for `in:`, `out:`, `provides:`,
+/// - `search/p0.js`: the port part ([`ports_json`]), for `in:`, `out:`, `provides:`,
 ///   `requires:` and `feeds:` queries.
 ///
 /// Every file but the first is `RTCDOC_SHARD(kind, N, data);` (a `<script>` can load it from
@@ -393,10 +393,7 @@ fn write_index_with(
         )?;
     }
     let (starts, prefixes) = inv.write(emit)?;
-    emit(
-        "search/ports.js",
-        shard_js("p", 0, &ports_json(catalog, lang)),
-    )?;
+    emit("search/p0.js", shard_js("p", 0, &ports_json(catalog, lang)))?;
     let kinds = serde_json::json!({
         "c": lang.t("component"),
         "t": lang.t("data_type"),
@@ -431,6 +428,14 @@ fn short_href<'a>(dir: &str, href: &'a str) -> Cow<'a, str> {
 /// `RTCDOC_SHARD("kind",n,data);` with `data` escaped ([`entry_js`]).
 fn shard_js(kind: &str, n: usize, data: &serde_json::Value) -> Vec<u8> {
     format!("RTCDOC_SHARD(\"{kind}\",{n},{});\n", entry_js(data)).into_bytes()
+}
+
+/// [`shard_js`] of the JSON array whose items' text is `items` (comma-separated), escaped.
+fn shard_text(kind: &str, n: usize, items: &str) -> Vec<u8> {
+    let mut out = format!("RTCDOC_SHARD(\"{kind}\",{n},[");
+    push_js_safe_json(&mut out, items);
+    out.push_str("]);\n");
+    out.into_bytes()
 }
 
 /// The inverted index: each distinct token and its postings (`entry * 3 + group`, ascending:
@@ -480,46 +485,40 @@ impl Inverted {
             .iter()
             .map(|&i| self.tokens[i as usize].as_str())
             .collect();
-        // Token files: consecutive tokens until one holds SHARD_BYTES.
+        // Token files: consecutive tokens until one holds SHARD_BYTES, written as the JSON
+        // array's text (`"token",d,d,"token",d`: a token is a JSON string, the rest numbers).
         let mut starts: Vec<String> = Vec::new();
         let mut cut: Vec<usize> = Vec::new();
-        let mut buf: Vec<serde_json::Value> = Vec::new();
-        let mut size = 0usize;
+        let mut body = String::new();
         for (k, &i) in order.iter().enumerate() {
-            if buf.is_empty() {
+            if body.is_empty() {
                 starts.push(if k == 0 {
                     String::new()
                 } else {
                     sorted[k].to_string()
                 });
                 cut.push(k);
+            } else {
+                body.push(',');
             }
-            let token = serde_json::Value::from(sorted[k]);
-            size += token.to_string().len() + 1;
-            buf.push(token);
+            body.push_str(&serde_json::Value::from(sorted[k]).to_string());
             for d in deltas(&self.postings[i as usize]) {
-                size += d.checked_ilog10().unwrap_or(0) as usize + 2;
-                buf.push(d.into());
+                body.push(',');
+                body.push_str(&d.to_string());
             }
-            if size >= SHARD_BYTES {
+            if body.len() >= SHARD_BYTES {
                 let n = starts.len() - 1;
-                emit(
-                    &format!("search/t{n}.js"),
-                    shard_js("t", n, &serde_json::Value::Array(std::mem::take(&mut buf))),
-                )?;
-                size = 0;
+                emit(&format!("search/t{n}.js"), shard_text("t", n, &body))?;
+                body.clear();
             }
         }
-        if !buf.is_empty() || starts.is_empty() {
+        if !body.is_empty() || starts.is_empty() {
             if starts.is_empty() {
                 starts.push(String::new());
                 cut.push(0);
             }
             let n = starts.len() - 1;
-            emit(
-                &format!("search/t{n}.js"),
-                shard_js("t", n, &serde_json::Value::Array(buf)),
-            )?;
+            emit(&format!("search/t{n}.js"), shard_text("t", n, &body))?;
         }
         // Prefixes whose keys lie in two files or more: the prefixes of the longest common
         // prefix of the tokens either side of each cut.
@@ -1184,7 +1183,7 @@ mod tests {
                 }
             }
         }
-        assert!(whole.contains_key("search/ports.js"));
+        assert!(whole.contains_key("search/p0.js"));
     }
 
     /// Postings of the small token files: the keys of a short prefix span several files, so it

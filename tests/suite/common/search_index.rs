@@ -18,7 +18,7 @@ pub struct Index {
     /// The first file, parsed: `e`, `kinds`, `s`, `b`, `d`, `v`.
     pub first: serde_json::Value,
     pub entries: Vec<Entry>,
-    /// The port part (`search/ports.js`).
+    /// The port part (`search/p0.js`).
     pub ports: serde_json::Value,
     /// Every file's text, by path below the site.
     pub files: Vec<(String, String)>,
@@ -132,7 +132,7 @@ pub fn read(site: &Path) -> Index {
             g.sort();
         }
     }
-    let ports = get("search/ports.js");
+    let ports = get("search/p0.js");
     Index {
         first,
         entries,
