@@ -662,3 +662,171 @@ fn search_finds_ports_by_type_and_by_what_feeds_an_in_port() {
     assert!(result_names(&dom).is_empty());
     assert!(dom.contains("No results"), "no-result message");
 }
+
+/// While a query's token files are on their way (held back by the harness), the search page
+/// answers from the names its first file holds: those results are marked partial (`N+ · q …`,
+/// the list `aria-busy`), each is a result of the full answer, in the full answer's order, and
+/// the full answer replaces them when the files come. `pose` is a camelCase part of a name
+/// (`TimedPose2D`), `camera` a whole word of some names and a part of others (`UsbCamera`).
+#[test]
+fn search_answers_from_the_names_while_its_files_load() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
+    if !dir.join("node_modules/puppeteer-core").is_dir() {
+        crate::common::missing_tool(
+            "tests/browser/node_modules missing (run `npm ci` in tests/browser)",
+        );
+        return;
+    }
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(dir.join("search_partial.mjs"))
+        .arg(&out)
+        .args(["camera", "pose", "timedpose2d"]);
+    let Some(o) = common::run_browser_harness(&mut cmd) else {
+        return;
+    };
+    assert!(
+        o.status.success(),
+        "search_partial.mjs failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let report: serde_json::Value =
+        serde_json::from_slice(&o.stdout).expect("search_partial.mjs prints one JSON array");
+    let hrefs = |v: &serde_json::Value| -> Vec<String> {
+        v["results"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(|h| h.as_str().map(str::to_string))
+            .collect()
+    };
+    for r in report.as_array().expect("an array") {
+        let q = r["q"].as_str().unwrap_or("");
+        let (partial, full) = (&r["partial"], &r["final"]);
+        assert!(r["held"].as_u64() > Some(0), "no file was held back: {r}");
+        let (p, f) = (hrefs(partial), hrefs(full));
+        assert!(!p.is_empty(), "{q}: no result from the names: {r}");
+        assert_eq!(
+            partial["status"],
+            format!("{}+ · {q} …", p.len()),
+            "partial marked: {r}"
+        );
+        assert_eq!(partial["busy"], true, "partial list aria-busy: {r}");
+        assert_eq!(full["status"], format!("{} · {q}", f.len()), "{r}");
+        assert_eq!(full["busy"], false, "{r}");
+        // Each partial result is in the full answer, in the same order.
+        let mut at = f.iter();
+        for h in &p {
+            assert!(
+                at.any(|x| x == h),
+                "{q}: partial result {h} not in the full answer in order: {r}"
+            );
+        }
+        assert!(
+            f.len() > p.len(),
+            "{q}: the full answer adds the other matches: {r}"
+        );
+    }
+    // The camelCase part finds the type by its name before any file came.
+    let pose = &report[1];
+    assert!(
+        hrefs(&pose["partial"])
+            .iter()
+            .any(|h| h.contains("types/rtc-timedpose2d")),
+        "{pose}"
+    );
+}
+
+/// A catalogue whose ports fill many port files (each type is in the file its key names, and
+/// `feeds:` reads the in-port's file first): `in:`, `out:` (by scoped name, by last part, by
+/// repository id) and `feeds:` answer from whichever file holds the type. Component `C{i}` has
+/// out-ports `o{j}` of type `Lab::Sensors::Reading{i}x{j}` and in-ports `i{j}` of
+/// `Reading{i-1}x{j}`.
+#[test]
+fn port_queries_find_their_type_in_any_port_file() {
+    if !chromium() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in");
+    let ty = |i: usize, j: usize| format!("Lab::Sensors::LongEnoughTypeName::Reading{i}x{j}");
+    for i in 0..240 {
+        let mut ports: Vec<(String, String, String)> = (0..4)
+            .map(|j| ("DataOutPort".into(), format!("o{j}"), ty(i, j)))
+            .collect();
+        if i > 0 {
+            ports.extend((0..4).map(|j| ("DataInPort".into(), format!("i{j}"), ty(i - 1, j))));
+        }
+        let ports: Vec<(&str, &str, &str)> = ports
+            .iter()
+            .map(|(a, b, c)| (a.as_str(), b.as_str(), c.as_str()))
+            .collect();
+        common::write(
+            &input,
+            &format!("C{i}/RTC.xml"),
+            &common::xml_profile(&format!("C{i}"), &ports),
+        );
+    }
+    let out = dir.path().join("site");
+    build_site(&input, &out, SiteOptions::default());
+    let idx = common::search_index::read(&out);
+    let files = idx.first["p"].as_u64().unwrap();
+    assert!(files >= 4, "{files} port files");
+    let prof = dir.path().join("chromium");
+    let search = |q: &str| {
+        let dom = dump_dom(
+            &format!("{}?q={q}", file_url(&out.join("search.html"))),
+            &prof,
+        );
+        result_names(&dom)
+    };
+    // Types of four different port files.
+    let mut used = std::collections::BTreeSet::new();
+    let picked: Vec<(usize, usize)> = (0..239)
+        .step_by(7)
+        .map(|i| (i, i % 4))
+        .filter(|&(i, j)| used.insert(port_file(&out, &ty(i, j))))
+        .take(4)
+        .collect();
+    assert_eq!(picked.len(), 4, "{used:?}");
+    for (i, j) in picked {
+        assert_eq!(
+            search(&format!("in:{}", ty(i, j))),
+            [format!("C{}.i{j}", i + 1)]
+        );
+        assert_eq!(
+            search(&format!("out:Reading{i}x{j}")),
+            [format!("C{i}.o{j}")]
+        );
+        assert_eq!(
+            search(&format!(
+                "out:IDL:Lab/Sensors/LongEnoughTypeName/Reading{i}x{j}:1.0"
+            )),
+            Vec::<String>::new(),
+            "no such repository id in the catalogue (no IDL): nothing"
+        );
+        assert_eq!(
+            search(&format!("feeds:C{}.i{j}", i + 1)),
+            [format!("C{i}.o{j}")]
+        );
+    }
+}
+
+/// The port file holding the type named `name` (the one whose types list it).
+fn port_file(site: &Path, name: &str) -> String {
+    let dir = site.join("search");
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        let f = p.file_name().unwrap().to_string_lossy().into_owned();
+        if f.starts_with('p')
+            && std::fs::read_to_string(&p)
+                .unwrap()
+                .contains(&format!("\"{name}\""))
+        {
+            return f;
+        }
+    }
+    panic!("{name} in no port file");
+}

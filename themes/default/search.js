@@ -28,12 +28,18 @@
   var wordChar = /[\p{L}\p{N}_]/u;
 
   // NFKC, as the index: full-width `Ｋｏｂｕｋｉ` is `Kobuki`, half-width `ｶﾒﾗ` is `カメラ`.
-  function tokenize(text) {
+  // `parts`: also each word's camelCase and digit parts, as the index has them (names).
+  function tokenize(text, parts) {
     text = text.normalize('NFKC');
     var out = [];
     var word = '';
     var cjk = [];
-    function flushWord() { if (word) { out.push(word.toLowerCase()); word = ''; } }
+    function flushWord() {
+      if (!word) { return; }
+      out.push(word.toLowerCase());
+      if (parts) { camelParts(word, out); }
+      word = '';
+    }
     function flushCjk() {
       if (cjk.length === 1) { out.push(cjk[0]); }
       for (var i = 0; i + 1 < cjk.length; i++) { out.push(cjk[i] + cjk[i + 1]); }
@@ -55,7 +61,7 @@
   // differences), the
   // files of the short prefixes `b<n>` (a prefix whose keys span token files: its best match
   // per entry, `entry * 6 + class`), the details `e<n>` (meta line and summary of `d` entries)
-  // and the port part `p0`. Every file of search/ is `<kind><n>.js`. A query whose files are still loading is answered when they come.
+  // and the port files `p<n>`, `f<n>` (PORT_OPS). Every file of search/ is `<kind><n>.js`. A query whose files are still loading is answered when they come.
   var ix = null;
   var files = {};
   var LOADING = {};
@@ -149,7 +155,7 @@
         // `x` is the kind's folder's `x.html`; `/path` the whole path (search.rs short_href).
         var h = String(e[2]);
         var href = h.charAt(0) === '/' ? h.slice(1) : (dirs[e[0]] || '') + h + '.html';
-        return { n: n, kind: kinds[e[0]] || '', name: name, href: href,
+        return { n: n, k: e[0], kind: kinds[e[0]] || '', name: name, href: href,
           lname: lname, short: lname.slice(lname.lastIndexOf(':') + 1) };
       });
       // Ties are broken by name: the rank of each entry in name order, an integer compare.
@@ -194,6 +200,62 @@
     });
   }
 
+  var LOWER = /\p{Ll}/u;
+  var UPPER = /\p{Lu}/u;
+  var ALPHA = /\p{L}/u;
+  var DIGIT = /[0-9]/;
+
+  /** Pushes the camelCase and digit parts of `word` (`UsbCamera2` → usb, camera, 2) onto
+      `out`, when it has two or more (search.rs push_parts). */
+  function camelParts(word, out) {
+    var chars = Array.from(word);
+    var start = 0;
+    for (var i = 1; i < chars.length; i++) {
+      var p = chars[i - 1];
+      var c = chars[i];
+      if ((LOWER.test(p) && UPPER.test(c)) || (ALPHA.test(p) && DIGIT.test(c)) || (DIGIT.test(p) && ALPHA.test(c))) {
+        out.push(chars.slice(start, i).join('').toLowerCase());
+        start = i;
+      }
+    }
+    if (start > 0) { out.push(chars.slice(start).join('').toLowerCase()); }
+  }
+
+  /** The results the names alone give (the first file holds them), while the files of the
+      query load: the entries each of whose query tokens begins a token of the name, scored as
+      `search` scores them (a match in the name is the best class), so they come in the order
+      of the full answer, which adds the matches in identifiers and prose when it is here. */
+  function byName(q) {
+    var qt = tokenize(q);
+    if (!qt.length) { return []; }
+    var lq = q.trim().toLowerCase();
+    var all = entries();
+    var hits = [];
+    var score = {};
+    for (var m = 0; m < all.length; m++) {
+      var e = all[m];
+      // A token that begins a token of the name is in the name: most entries end here.
+      if (!qt.every(function (t) { return e.lname.indexOf(t) >= 0; })) { continue; }
+      var toks = e.toks || (e.toks = tokenize(e.name, true));
+      var total = 0;
+      for (var i = 0; i < qt.length; i++) {
+        var best = 0;
+        for (var k = 0; k < toks.length; k++) {
+          if (toks[k] === qt[i]) { best = CLASS[0]; break; }
+          if (toks[k].lastIndexOf(qt[i], 0) === 0) { best = CLASS[1]; }
+        }
+        if (!best) { total = 0; break; }
+        total += best;
+      }
+      if (!total) { continue; }
+      if (e.lname === lq || e.short === lq) { total += 100; } else if (e.lname.indexOf(lq) >= 0) { total += 40; }
+      score[m] = total;
+      hits.push(m);
+    }
+    hits.sort(function (a, b) { return score[b] - score[a] || all[a].rank - all[b].rank; });
+    return hits.map(function (n) { return all[n]; });
+  }
+
   function search(q) {
     var qt = tokenize(q);
     if (!qt.length) { return []; }
@@ -222,13 +284,16 @@
     return hits.map(function (n) { return all[n]; });
   }
 
-  // Port queries (the index's `ports` part): `in:TYPE`, `out:TYPE`, `provides:TYPE`,
-  // `requires:TYPE` list the ports of that type and direction; `feeds:COMPONENT.PORT` the
-  // out-ports of the in-port's type (its type page's producers). A TYPE matches an entry when
-  // it is, ignoring case and a leading `::`, the entry's scoped name, one of its spellings
-  // (repository id included) or the last `::` part of one. Several port terms keep the
-  // components that have every one; the other words of the query keep the components whose
-  // own entry they find. Results are ports, linked to their row on the component page.
+  // Port queries (the port files, search.rs write_ports): `in:TYPE`, `out:TYPE`,
+  // `provides:TYPE`, `requires:TYPE` list the ports of that type and direction;
+  // `feeds:COMPONENT.PORT` the out-ports of the in-port's type (its type page's producers). A
+  // TYPE matches an entry when it is, ignoring case and a leading `::`, the entry's scoped
+  // name, one of its spellings (repository id included) or the key of one (portKey: the last
+  // identifier). A type is in the file of each of its keys (portFile), so the query's key
+  // names the one file to read; `feeds:` first reads the component's in-ports (`f` files).
+  // Several port terms keep the components that have every one; the other words of the query
+  // keep the components whose own entry they find. Results are ports, linked to their row on
+  // the component page.
   var PORT_OPS = { 'in': ['d', 3], 'out': ['d', 2], 'provides': ['i', 2], 'requires': ['i', 3] };
 
   function parsePortQuery(q) {
@@ -241,55 +306,111 @@
     return terms.length ? { terms: terms, words: words.join(' ') } : null;
   }
 
+  /** Lower-cased, without a leading `::`: how names are compared. */
+  function portName(v) { return String(v).toLowerCase().replace(/^::/, ''); }
+
+  /** The last identifier of a type's name (search.rs port_key): after the last `:`, or of a
+      repository id `IDL:a/b/Name:1.0`, after the last `/` and before the version. */
+  function portKey(v) {
+    var k = portName(v);
+    if (k.lastIndexOf('idl:', 0) === 0) {
+      k = k.slice(4);
+      var colon = k.lastIndexOf(':');
+      if (colon >= 0) { k = k.slice(0, colon); }
+      return k.slice(k.lastIndexOf('/') + 1);
+    }
+    return k.slice(k.lastIndexOf(':') + 1);
+  }
+
+  /** The port file of a key: FNV-1a of its UTF-16 code units (search.rs port_bucket). */
+  function portFile(key) {
+    var h = 0x811c9dc5;
+    for (var i = 0; i < key.length; i++) { h = Math.imul(h ^ key.charCodeAt(i), 0x01000193) >>> 0; }
+    return 'p' + (h % (ix.p || 1));
+  }
+
   function typeMatches(t, v) {
-    v = v.toLowerCase().replace(/^::/, '');
+    v = portName(v);
     var names = [t[0]].concat(t[1] || []);
     for (var i = 0; i < names.length; i++) {
-      var n = String(names[i]).toLowerCase().replace(/^::/, '');
-      if (n === v || n.slice(n.lastIndexOf(':') + 1) === v) { return true; }
+      if (portName(names[i]) === v || portKey(names[i]) === v) { return true; }
     }
     return false;
   }
 
-  /** The ports of one term, as [type, port, kind] triples. */
-  function termPorts(ports, term, all) {
+  /** The types of port file `name` of kind `kind` (`d` data types, `i` interfaces). */
+  function portTypes(name, kind) { return (files[name] || {})[kind] || []; }
+
+  /** The component entries named `comp` (lower case, or its last `::` part). */
+  function named(all, comp) {
+    return all.filter(function (e) { return e.k === 'c' && (e.lname === comp || e.short === comp); });
+  }
+
+  /** The files term `term` needs (one step: `feeds:` needs its in-ports' first). */
+  function termFiles(term, all) {
+    if (PORT_OPS[term[0]]) { return [portFile(portKey(term[1]))]; }
+    var f = feedsTarget(term[1]);
+    if (!f) { return []; }
+    var fb = ix.f || 1;
+    var need = named(all, f.comp).map(function (e) { return 'f' + ((e.n / fb) | 0); });
+    if (!ready(need)) { return need; }
+    named(all, f.comp).forEach(function (e) {
+      ((files['f' + ((e.n / fb) | 0)] || [])[e.n % fb] || []).forEach(function (p) {
+        if (String(p[0]).toLowerCase() === f.port) { need.push('p' + p[1]); }
+      });
+    });
+    return need;
+  }
+
+  /** `COMPONENT.PORT` of `feeds:`, lower case; null without a dot. */
+  function feedsTarget(v) {
+    v = v.toLowerCase();
+    var dot = v.lastIndexOf('.');
+    return dot < 1 ? null : { comp: v.slice(0, dot), port: v.slice(dot + 1) };
+  }
+
+  /** The ports of one term, as [type, port, kind] triples, from its files (here). */
+  function termPorts(term, names, all) {
     var out = [];
     var op = PORT_OPS[term[0]];
     if (op) {
-      (ports[op[0]] || []).forEach(function (t) {
-        if (!typeMatches(t, term[1])) { return; }
-        (t[op[1]] || []).forEach(function (p) { out.push([t, p, term[0]]); });
+      names.forEach(function (name) {
+        portTypes(name, op[0]).forEach(function (t) {
+          if (!typeMatches(t, term[1])) { return; }
+          (t[op[1]] || []).forEach(function (p) { out.push([t, p, term[0]]); });
+        });
       });
       return out;
     }
-    // feeds:COMPONENT.PORT: the in-port's type, by the component's name and the port's.
-    var v = term[1].toLowerCase();
-    var dot = v.lastIndexOf('.');
-    if (dot < 1) { return out; }
-    var comp = v.slice(0, dot);
-    var port = v.slice(dot + 1);
-    (ports.d || []).forEach(function (t) {
-      var fed = (t[3] || []).some(function (p) {
-        var e = all[p[0]];
-        return e && (e.lname === comp || e.short === comp) && String(p[1]).toLowerCase() === port;
+    // feeds:COMPONENT.PORT: the types whose in-ports hold that port, their out-ports.
+    var f = feedsTarget(term[1]);
+    if (!f) { return out; }
+    var seen = new Set();
+    names.filter(function (n) { return n.charAt(0) === 'p'; }).forEach(function (name) {
+      portTypes(name, 'd').forEach(function (t) {
+        if (seen.has(t)) { return; }
+        var fed = (t[3] || []).some(function (p) {
+          var e = all[p[0]];
+          return e && (e.lname === f.comp || e.short === f.comp) && String(p[1]).toLowerCase() === f.port;
+        });
+        if (fed) { seen.add(t); (t[2] || []).forEach(function (p) { out.push([t, p, 'out']); }); }
       });
-      if (fed) { (t[2] || []).forEach(function (p) { out.push([t, p, 'out']); }); }
     });
     return out;
   }
 
   function portSearch(pq) {
     var all = entries();
-    if (!ready(['p0'])) { return null; }
-    var ports = files.p0 || {};
-    var kinds = ports.kinds || {};
+    var plan = pq.terms.map(function (term) { return termFiles(term, all); });
+    if (!ready([].concat.apply([], plan))) { return null; }
+    var kinds = ix.kinds || {};
     var keep = null;
     if (pq.words) {
       var kept = search(pq.words);
       if (!kept) { return null; }
       keep = new Set(kept.map(function (e) { return e.n; }));
     }
-    var found = pq.terms.map(function (term) { return termPorts(ports, term, all); });
+    var found = pq.terms.map(function (term, i) { return termPorts(term, plan[i], all); });
     var hits = [];
     var seen = new Set();
     found.forEach(function (list) {
@@ -347,9 +468,13 @@
     return n;
   }
 
-  function resultList(list, limit) {
+  /** How many results, `N+` when more may come (partial). */
+  function count(results, partial) { return results.length + (partial ? '+' : ''); }
+
+  function resultList(list, limit, partial) {
     var ul = el('ul', 'results');
     ul.id = page ? 'search-results' : 'search-popup-list';
+    if (partial) { ul.setAttribute('aria-busy', 'true'); }
     list.slice(0, limit).forEach(function (e) {
       var li = el('li');
       var a = el('a');
@@ -376,8 +501,15 @@
   function render() {
     var q = input.value;
     var results = q.trim() ? query(q) : [];
-    // Files the query needs are loading: it is answered when they come (arrived).
-    if (!results) { awaiting = true; return; }
+    // Files the query needs are loading: it is answered when they come (arrived). Meanwhile
+    // the names answer (byName), marked partial: `N+ · query …`, the list aria-busy.
+    var partial = false;
+    if (!results) {
+      awaiting = true;
+      results = opening || parsePortQuery(q) ? null : byName(q);
+      if (!results || !results.length) { return; }
+      partial = true;
+    }
     if (opening) {
       opening = false;
       if (results.length) { window.location.href = root + results[0].href; return; }
@@ -393,19 +525,19 @@
       while (page.children.length > 1) { page.removeChild(page.lastChild); }
       var status = el('p', 'status');
       status.id = 'search-status';
-      status.textContent = q.trim() ? (results.length ? results.length + ' · ' + q : page.getAttribute('data-no-results')) : '—';
+      status.textContent = q.trim() ? (results.length ? count(results, partial) + ' · ' + q + (partial ? ' …' : '') : page.getAttribute('data-no-results')) : '—';
       page.appendChild(status);
-      if (results.length) { page.appendChild(resultList(results, 100)); }
+      if (results.length) { page.appendChild(resultList(results, 100, partial)); }
       return;
     }
     popup.textContent = '';
     if (!q.trim()) { popup.hidden = true; return; }
     if (results.length) {
-      popup.appendChild(resultList(results, 8));
+      popup.appendChild(resultList(results, 8, partial));
     } else {
       popup.appendChild(el('p', 'none', '—'));
     }
-    var all = el('a', 'all-results', '→ ' + (results.length) + ' · ' + q);
+    var all = el('a', 'all-results', '→ ' + count(results, partial) + ' · ' + q);
     all.href = root + 'search.html?q=' + encodeURIComponent(q);
     popup.appendChild(all);
     popup.hidden = false;

@@ -303,8 +303,9 @@ const SHARD_BYTES: usize = 24 * 1024;
 ///   `entry * 6 + class` (class `group * 2`, plus one unless a key is the prefix itself) as
 ///   differences, so that a short query never downloads every token file it spans.
 /// - `search/e<N>.js`: the meta line and summary of [`DETAILS_BLOCK`] entries.
-/// - `search/p0.js`: the port part ([`ports_json`]), for `in:`, `out:`, `provides:`,
-///   `requires:` and `feeds:` queries.
+/// - `search/p<N>.js` and `search/f<N>.js`: the port part ([`write_ports`]), for `in:`,
+///   `out:`, `provides:`, `requires:` and `feeds:` queries: the types by the file of their
+///   key, and each component's in-ports; `p` in the first file says how many `p` files.
 ///
 /// Every file but the first is `RTCDOC_SHARD(kind, N, data);` (a `<script>` can load it from
 /// `file://`, where `fetch()` is forbidden). The JSON is escaped so that no `<`, `>` or `&`
@@ -393,12 +394,16 @@ fn write_index_with(
         )?;
     }
     let (starts, prefixes) = inv.write(emit)?;
-    emit("search/p0.js", shard_js("p", 0, &ports_json(catalog, lang)))?;
+    let port_files = write_ports(catalog, emit)?;
     let kinds = serde_json::json!({
         "c": lang.t("component"),
         "t": lang.t("data_type"),
         "i": lang.t("interface"),
         "s": lang.t("system"),
+        "in": lang.t("in"),
+        "out": lang.t("out"),
+        "provides": lang.t("provided"),
+        "requires": lang.t("required"),
     });
     let first = serde_json::json!({
         "v": 2,
@@ -408,6 +413,8 @@ fn write_index_with(
         "b": prefixes,
         "d": DETAILS_BLOCK,
         "h": dirs,
+        "p": port_files,
+        "f": FEEDS_BLOCK,
     });
     let mut js = b"window.RTCDOC_INDEX=".to_vec();
     js.extend_from_slice(entry_js(&first).as_bytes());
@@ -610,22 +617,72 @@ fn port_js(component: usize, name: &str, prefix: &str, anchor: &str) -> serde_js
     }
 }
 
-/// The port part of the index (`ports`), for `in:`, `out:`, `provides:`, `requires:` and
-/// `feeds:` queries: `{"d": [type…], "i": [interface…], "kinds": {…}}`. Each type is
-/// `[name, [spelling…], [out-port…], [in-port…]]` and each interface
-/// `[name, [spelling…], [provided…], [required…]]`, in [`Catalog::data_types`] /
-/// [`Catalog::interfaces`] order, those with a port (an IDL-only type has none to list): one
-/// entry per catalogue type, which already is the matching
-/// rule of the type pages (two spellings, or a repository id and a scoped name, that the
-/// catalogue keys as one type are one entry; [`crate::idl::IdlSet::canonical_name`]). The
-/// port lists are the entry's producers and consumers (providers and requirers), each port
-/// `[component, name, anchor]` ([`port_js`]: the anchor left out when `search.js` can make
-/// it): `component` is the component's position in `e` (component entries come first, in
-/// catalogue order), `name` the port's (`port.interface` for a service interface) and `anchor`
-/// its row on the component page ([`crate::catalog::Anchors`]). The spellings are those met in
-/// the profiles other than the name, plus the IDL repository id of the definition when the
-/// catalogue has it.
-fn ports_json(catalog: &Catalog, lang: Lang) -> serde_json::Value {
+/// The key a type is found by in port queries, as `search.js` `portKey` makes it from a
+/// query: lower-cased, without a leading `::`, the identifier after the last `:` (`RTC::TimedLong`
+/// → `timedlong`), or, of a repository id, after the last `/` and before the version
+/// (`IDL:RTC/TimedLong:1.0` → `timedlong`).
+fn port_key(name: &str) -> String {
+    let k = name.to_lowercase();
+    let k = k.strip_prefix("::").unwrap_or(&k);
+    let last = match k.strip_prefix("idl:") {
+        Some(id) => {
+            let id = id.rsplit_once(':').map_or(id, |(id, _version)| id);
+            id.rsplit('/').next().unwrap_or(id)
+        }
+        None => k.rsplit(':').next().unwrap_or(k),
+    };
+    last.to_string()
+}
+
+/// The port file of `key`, of `files` (FNV-1a of its UTF-16 code units, as `search.js`
+/// `portFile`).
+fn port_bucket(key: &str, files: usize) -> usize {
+    let mut h: u32 = 0x811c_9dc5;
+    for u in key.encode_utf16() {
+        h ^= u32::from(u);
+        h = h.wrapping_mul(0x0100_0193);
+    }
+    h as usize % files.max(1)
+}
+
+/// Components per file of `search/f<N>.js` (`feeds:`): each component's in-ports.
+const FEEDS_BLOCK: usize = 512;
+
+/// Writes the port part of the index, for `in:`, `out:`, `provides:`, `requires:` and
+/// `feeds:` queries; returns how many port files there are (`p` in the first file).
+///
+/// - `search/p<N>.js`: `{"d": [type…], "i": [interface…]}`, the types whose keys
+///   ([`port_key`] of the name and of each spelling) [`port_bucket`] puts in file `N` (a type
+///   in as many files as its keys have; about [`SHARD_BYTES`] per file). Each type is
+///   `[name, [spelling…], [out-port…], [in-port…]]` and each interface
+///   `[name, [spelling…], [provided…], [required…]]`, in [`Catalog::data_types`] /
+///   [`Catalog::interfaces`] order, those with a port (an IDL-only type has none to list): one
+///   entry per catalogue type, which already is the matching rule of the type pages (two
+///   spellings, or a repository id and a scoped name, that the catalogue keys as one type are
+///   one entry; [`crate::idl::IdlSet::canonical_name`]). The port lists are the entry's
+///   producers and consumers (providers and requirers), each port `[component, name, anchor]`
+///   ([`port_js`]: the anchor left out when `search.js` can make it): `component` is the
+///   component's position in `e` (component entries come first, in catalogue order), `name`
+///   the port's (`port.interface` for a service interface) and `anchor` its row on the
+///   component page ([`crate::catalog::Anchors`]). The spellings are those met in the profiles
+///   other than the name, plus the IDL repository id of the definition when the catalogue has
+///   it.
+/// - `search/f<N>.js`: for the [`FEEDS_BLOCK`] components from `N * FEEDS_BLOCK`, each one's
+///   in-ports that have a type, `[name, port file of the type's name]`: `feeds:C.port` reads
+///   the in-port's file, then its type's.
+fn write_ports(
+    catalog: &Catalog,
+    emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
+) -> anyhow::Result<usize> {
+    write_ports_with(catalog, SHARD_BYTES, emit)
+}
+
+/// [`write_ports`] with about `shard` bytes per port file.
+fn write_ports_with(
+    catalog: &Catalog,
+    shard: usize,
+    emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
+) -> anyhow::Result<usize> {
     // The name itself is matched as a spelling by `search.js`: not repeated.
     let spellings = |name: &str, met: &[String]| {
         let mut all: Vec<String> = met.iter().filter(|s| *s != name).cloned().collect();
@@ -638,72 +695,118 @@ fn ports_json(catalog: &Catalog, lang: Lang) -> serde_json::Value {
         all.sort();
         all
     };
-    let data: Vec<serde_json::Value> = catalog
+    // Each type as its JSON text and its keys; the in-ports of each data type, to list them
+    // per component for `feeds:`.
+    let mut items: Vec<(bool, String, Vec<String>)> = Vec::new();
+    let mut fed: Vec<(ComponentIx, usize, usize)> = Vec::new();
+    for t in catalog
         .data_types
         .iter()
         .filter(|t| !t.uses.producers.is_empty() || !t.uses.consumers.is_empty())
-        .map(|t| {
-            let (out, inp) = (&t.uses.producers, &t.uses.consumers);
-            let port = |r: &crate::catalog::PortRef| {
-                let (ci, pi) = catalog.resolve_port(r)?;
-                let c = &catalog[ci];
-                let name = c.profile.data_ports[pi].name.as_deref().unwrap_or("");
-                Some(port_js(ci.get(), name, "port-", &c.anchors.data_ports[pi]))
-            };
-            let ports = |l: &[crate::catalog::PortRef]| -> Vec<serde_json::Value> {
-                l.iter().filter_map(port).collect()
-            };
-            serde_json::json!([
-                t.name,
-                spellings(&t.name, &t.spellings),
-                ports(out),
-                ports(inp)
-            ])
-        })
-        .collect();
-    let interfaces: Vec<serde_json::Value> = catalog
+    {
+        let names = spellings(&t.name, &t.spellings);
+        let port = |r: &crate::catalog::PortRef| {
+            let (ci, pi) = catalog.resolve_port(r)?;
+            let c = &catalog[ci];
+            let name = c.profile.data_ports[pi].name.as_deref().unwrap_or("");
+            Some(port_js(ci.get(), name, "port-", &c.anchors.data_ports[pi]))
+        };
+        let ports = |l: &[crate::catalog::PortRef]| -> Vec<serde_json::Value> {
+            l.iter().filter_map(port).collect()
+        };
+        for r in &t.uses.consumers {
+            if let Some((ci, pi)) = catalog.resolve_port(r) {
+                fed.push((ci, pi, items.len()));
+            }
+        }
+        let json = entry_js(&serde_json::json!([
+            t.name,
+            names,
+            ports(&t.uses.producers),
+            ports(&t.uses.consumers)
+        ]));
+        let keys = std::iter::once(&t.name)
+            .chain(&names)
+            .map(|n| port_key(n))
+            .collect();
+        items.push((true, json, keys));
+    }
+    for t in catalog
         .interfaces
         .iter()
         .filter(|t| !t.uses.providers.is_empty() || !t.uses.requirers.is_empty())
-        .map(|t| {
-            let (provided, required) = (&t.uses.providers, &t.uses.requirers);
-            let port = |r: &crate::catalog::InterfaceRef| {
-                let (ci, pi, ii) = catalog.resolve_interface(r)?;
-                let c = &catalog[ci];
-                let sp = &c.profile.service_ports[pi];
-                let name = format!(
-                    "{}.{}",
-                    sp.name.as_deref().unwrap_or(""),
-                    sp.interfaces[ii].name.as_deref().unwrap_or("")
-                );
-                Some(port_js(
-                    ci.get(),
-                    &name,
-                    "if-",
-                    &c.anchors.interfaces[pi][ii],
-                ))
-            };
-            let ports = |l: &[crate::catalog::InterfaceRef]| -> Vec<serde_json::Value> {
-                l.iter().filter_map(port).collect()
-            };
-            serde_json::json!([
-                t.name,
-                spellings(&t.name, &t.spellings),
-                ports(provided),
-                ports(required)
-            ])
-        })
-        .collect();
-    serde_json::json!({
-        "d": data,
-        "i": interfaces,
-        "kinds": {
-            "in": lang.t("in"),
-            "out": lang.t("out"),
-            "provides": lang.t("provided"),
-            "requires": lang.t("required"),
-        },
-    })
+    {
+        let names = spellings(&t.name, &t.spellings);
+        let port = |r: &crate::catalog::InterfaceRef| {
+            let (ci, pi, ii) = catalog.resolve_interface(r)?;
+            let c = &catalog[ci];
+            let sp = &c.profile.service_ports[pi];
+            let name = format!(
+                "{}.{}",
+                sp.name.as_deref().unwrap_or(""),
+                sp.interfaces[ii].name.as_deref().unwrap_or("")
+            );
+            Some(port_js(
+                ci.get(),
+                &name,
+                "if-",
+                &c.anchors.interfaces[pi][ii],
+            ))
+        };
+        let ports = |l: &[crate::catalog::InterfaceRef]| -> Vec<serde_json::Value> {
+            l.iter().filter_map(port).collect()
+        };
+        let json = entry_js(&serde_json::json!([
+            t.name,
+            names,
+            ports(&t.uses.providers),
+            ports(&t.uses.requirers)
+        ]));
+        let keys = std::iter::once(&t.name)
+            .chain(&names)
+            .map(|n| port_key(n))
+            .collect();
+        items.push((false, json, keys));
+    }
+    let total: usize = items.iter().map(|(_, j, _)| j.len() + 1).sum();
+    let files = total.div_ceil(shard.max(1)).max(1);
+    let mut buckets: Vec<[String; 2]> = vec![Default::default(); files];
+    for (data, json, keys) in &items {
+        let mut at: Vec<usize> = keys.iter().map(|k| port_bucket(k, files)).collect();
+        at.sort_unstable();
+        at.dedup();
+        for b in at {
+            let list = &mut buckets[b][usize::from(!data)];
+            if !list.is_empty() {
+                list.push(',');
+            }
+            list.push_str(json);
+        }
+    }
+    for (n, [d, i]) in buckets.iter().enumerate() {
+        let text = format!("RTCDOC_SHARD(\"p\",{n},{{\"d\":[{d}],\"i\":[{i}]}});\n");
+        emit(&format!("search/p{n}.js"), text.into_bytes())?;
+    }
+    // feeds: each component's typed in-ports, in port order, a block of components per file.
+    fed.sort_unstable();
+    let mut per: Vec<Vec<serde_json::Value>> = vec![Vec::new(); catalog.components.len()];
+    for (ci, pi, item) in fed {
+        let name = catalog[ci].profile.data_ports[pi]
+            .name
+            .as_deref()
+            .unwrap_or("");
+        per[ci.get()].push(serde_json::json!([
+            name,
+            port_bucket(&items[item].2[0], files)
+        ]));
+    }
+    for (n, block) in per.chunks(FEEDS_BLOCK).enumerate() {
+        emit(
+            &format!("search/f{n}.js"),
+            shard_js("f", n, &serde_json::json!(block)),
+        )?;
+    }
+    Ok(files)
 }
 
 /// Component entries of the search index made and written per batch by [`index_js`].
@@ -1183,7 +1286,97 @@ mod tests {
                 }
             }
         }
-        assert!(whole.contains_key("search/p0.js"));
+        assert!(whole.contains_key("search/p0.js") && whole.contains_key("search/f0.js"));
+        assert_eq!(v["p"], 1, "the example's ports fit one file");
+    }
+
+    #[test]
+    fn port_keys_are_the_last_identifier() {
+        for (name, key) in [
+            ("RTC::TimedLong", "timedlong"),
+            ("::RTC::TimedLong", "timedlong"),
+            ("TimedLong", "timedlong"),
+            ("IDL:RTC/TimedLong:1.0", "timedlong"),
+            ("IDL:omg.org/RTC/TimedLong:1.0", "timedlong"),
+            ("IDL:TimedLong:1.0", "timedlong"),
+            ("IDL:RTC/TimedLong", "timedlong"),
+            ("", ""),
+        ] {
+            assert_eq!(port_key(name), key, "{name}");
+        }
+        // FNV-1a 32 of the UTF-16 code units ("a": 0xe40c292c, as search.js computes it).
+        assert_eq!(port_bucket("a", usize::MAX), 0xe40c_292c);
+        assert_eq!(port_bucket("", 7), 0x811c_9dc5 % 7);
+        assert_eq!(port_bucket("x", 0), 0);
+    }
+
+    /// With small port files: each type is in the file of each of its keys, and once in it;
+    /// each component's in-ports in `f` name a port file holding a type that lists the port.
+    #[test]
+    fn each_type_is_in_the_port_file_of_each_key() {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let opts = crate::build::LoadOptions::default();
+        let cat = crate::build::load(&root.join("examples"), &opts)
+            .unwrap()
+            .catalog;
+        let mut files = std::collections::BTreeMap::new();
+        let n = write_ports_with(&cat, 256, &mut |path, bytes| {
+            files.insert(path.to_string(), shard_data(&String::from_utf8(bytes)?));
+            Ok(())
+        })
+        .unwrap();
+        assert!(n > 3, "{n} port files");
+        let mut seen = 0;
+        for (b, part) in (0..n).map(|b| (b, &files[&format!("search/p{b}.js")])) {
+            for t in part["d"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .chain(part["i"].as_array().unwrap())
+            {
+                let names = std::iter::once(&t[0]).chain(t[1].as_array().unwrap());
+                let keys: Vec<usize> = names
+                    .map(|s| port_bucket(&port_key(s.as_str().unwrap()), n))
+                    .collect();
+                assert!(keys.contains(&b), "{t} in p{b}, not a file of its keys");
+                for k in keys {
+                    let other = &files[&format!("search/p{k}.js")];
+                    let kind = if part["d"].as_array().unwrap().contains(t) {
+                        "d"
+                    } else {
+                        "i"
+                    };
+                    let here = other[kind].as_array().unwrap().iter().filter(|o| *o == t);
+                    assert_eq!(here.count(), 1, "{t} once in p{k}");
+                }
+                seen += 1;
+            }
+        }
+        assert!(
+            seen >= cat
+                .data_types
+                .iter()
+                .filter(|t| !t.uses.consumers.is_empty())
+                .count()
+        );
+        let feeds = &files["search/f0.js"];
+        let mut typed = 0;
+        for (ci, ports) in feeds.as_array().unwrap().iter().enumerate() {
+            for p in ports.as_array().unwrap() {
+                let (name, b) = (p[0].clone(), p[1].as_u64().unwrap());
+                let part = &files[&format!("search/p{b}.js")];
+                let lists = part["d"].as_array().unwrap().iter().any(|t| {
+                    t[3].as_array()
+                        .unwrap()
+                        .iter()
+                        .any(|q| q[0] == ci && q[1] == name)
+                });
+                assert!(lists, "component {ci} in-port {name}: not in p{b}");
+                typed += 1;
+            }
+        }
+        assert!(typed > 3, "{typed} typed in-ports");
+        assert_eq!(feeds.as_array().unwrap().len(), cat.components.len());
     }
 
     /// Postings of the small token files: the keys of a short prefix span several files, so it

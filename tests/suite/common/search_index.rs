@@ -18,7 +18,7 @@ pub struct Index {
     /// The first file, parsed: `e`, `kinds`, `s`, `b`, `d`, `v`.
     pub first: serde_json::Value,
     pub entries: Vec<Entry>,
-    /// The port part (`search/p0.js`).
+    /// The port files (`search/p<N>.js`) merged: `{d: [type…], i: [interface…]}`.
     pub ports: serde_json::Value,
     /// Every file's text, by path below the site.
     pub files: Vec<(String, String)>,
@@ -132,7 +132,19 @@ pub fn read(site: &Path) -> Index {
             g.sort();
         }
     }
-    let ports = get("search/p0.js");
+    // The port files, merged: a type is in the file of each of its keys, listed once here.
+    let mut ports = serde_json::json!({"d": [], "i": []});
+    for n in 0..first["p"].as_u64().expect("p") {
+        let part = get(&format!("search/p{n}.js"));
+        for kind in ["d", "i"] {
+            for t in part[kind].as_array().expect("types") {
+                let list = ports[kind].as_array_mut().expect("a list");
+                if !list.iter().any(|o| o[0] == t[0]) {
+                    list.push(t.clone());
+                }
+            }
+        }
+    }
     Index {
         first,
         entries,
