@@ -830,3 +830,45 @@ fn port_file(site: &Path, name: &str) -> String {
     }
     panic!("{name} in no port file");
 }
+
+/// `bench/port_queries.mjs` on the example: every type and interface page's producers and
+/// consumers (providers and requirers) are exactly what `out:`/`in:` (`provides:`/`requires:`)
+/// of its scoped name find, and `feeds:` of its first consumer finds its producers. (The same
+/// script checks a 10,000-profile site; see the guide's performance page.)
+#[test]
+fn port_queries_agree_with_every_type_page() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    if !dir
+        .join("tests/browser/node_modules/puppeteer-core")
+        .is_dir()
+    {
+        crate::common::missing_tool(
+            "tests/browser/node_modules missing (run `npm ci` in tests/browser)",
+        );
+        return;
+    }
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("site");
+    build_site(&examples(), &out, SiteOptions::default());
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(dir.join("bench/port_queries.mjs"))
+        .arg(&out)
+        .arg("1000");
+    let Some(o) = common::run_browser_harness(&mut cmd) else {
+        return;
+    };
+    let said = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{said}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let checked: usize = said
+        .split(" port queries compared")
+        .next()
+        .and_then(|s| s.rsplit('\n').next())
+        .and_then(|n| n.trim().parse().ok())
+        .unwrap_or(0);
+    assert!(checked >= 20, "{said}");
+    assert!(said.contains(", 0 mismatches"), "{said}");
+}
