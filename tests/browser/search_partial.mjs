@@ -6,9 +6,14 @@
 //
 //   node tests/browser/search_partial.mjs SITE_DIR QUERY ...
 //
+// Then it notes the details files (`e<n>.js`) loaded so far and the results whose meta line is
+// filled in, scrolls through the results a screen at a time and notes them again (`details`, `scrolled`).
+//
 // Prints one JSON array on stdout, one object per query: {q, held, partial: {status, busy,
-// results}, final: {status, busy, results}} (results: the hrefs in order; busy: the list's
-// aria-busy); the Rust test (tests/suite/html_browser.rs) asserts on it.
+// results}, final: {status, busy, results, details, filled}, scrolled: {details, filled}}
+// (results: the hrefs in order; busy: the list's aria-busy; details: how many details files
+// were asked for; filled: how many results have their meta line); the Rust test
+// (tests/suite/html_browser.rs) asserts on it.
 import { launchChromium } from './launch.mjs';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -22,12 +27,14 @@ const TYPES = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '
 let held = [];
 let holding = true;
 let heldCount = 0;
+const asked = new Set();
 const server = http.createServer((req, res) => {
   const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname).replace(/^\/+/, '');
   const file = path.join(site, path.normalize(rel));
   if (!file.startsWith(site) || !fs.existsSync(file) || !fs.statSync(file).isFile()) {
     res.writeHead(404); res.end(); return;
   }
+  if (/^search\/e\d+\.js$/.test(rel)) { asked.add(rel); }
   const send = () => {
     res.writeHead(200, { 'content-type': TYPES[path.extname(file)] || 'application/octet-stream', 'cache-control': 'no-store' });
     res.end(fs.readFileSync(file));
@@ -51,6 +58,7 @@ const state = () => {
     status: (st && st.textContent) || '',
     busy: !!(list && list.getAttribute('aria-busy') === 'true'),
     results: Array.from(document.querySelectorAll('#search-results a')).map((a) => a.getAttribute('href')),
+    filled: document.querySelectorAll('#search-results a .r-meta').length,
   };
 };
 
@@ -63,6 +71,8 @@ try {
     await page.setCacheEnabled(false);
     holding = true;
     heldCount = 0;
+    asked.clear();
+    await page.setViewport({ width: 1280, height: 900 });
     await page.goto(origin + 'search.html', { waitUntil: 'load' });
     await page.focus('#search-input');
     await page.waitForFunction(() => !!window.RTCDOC_INDEX, { timeout: 10000 });
@@ -74,8 +84,23 @@ try {
     release();
     await page.waitForFunction((typed) => document.getElementById('search-status')
       && document.getElementById('search-status').textContent.endsWith(' · ' + typed), { timeout: 10000 }, q).catch(() => {});
+    // The details of the results on the screen (and a little below) load; not the others.
+    await new Promise((r) => setTimeout(r, 500));
     const final = await page.evaluate(state);
-    out.push({ q, held: count, partial, final });
+    final.details = asked.size;
+    // Scrolled through, a screen at a time, as a reader would.
+    for (let y = 0; y < 40; y++) {
+      const more = await page.evaluate(() => {
+        window.scrollBy(0, window.innerHeight);
+        return window.scrollY + window.innerHeight < document.documentElement.scrollHeight;
+      });
+      await new Promise((r) => setTimeout(r, 100));
+      if (!more) { break; }
+    }
+    await new Promise((r) => setTimeout(r, 300));
+    const after = await page.evaluate(state);
+    const scrolled = { details: asked.size, filled: after.filled };
+    out.push({ q, held: count, partial, final, scrolled });
     await context.close();
   }
 } finally {

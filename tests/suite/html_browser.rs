@@ -750,27 +750,8 @@ fn port_queries_find_their_type_in_any_port_file() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("in");
-    let ty = |i: usize, j: usize| format!("Lab::Sensors::LongEnoughTypeName::Reading{i}x{j}");
-    for i in 0..240 {
-        let mut ports: Vec<(String, String, String)> = (0..4)
-            .map(|j| ("DataOutPort".into(), format!("o{j}"), ty(i, j)))
-            .collect();
-        if i > 0 {
-            ports.extend((0..4).map(|j| ("DataInPort".into(), format!("i{j}"), ty(i - 1, j))));
-        }
-        let ports: Vec<(&str, &str, &str)> = ports
-            .iter()
-            .map(|(a, b, c)| (a.as_str(), b.as_str(), c.as_str()))
-            .collect();
-        common::write(
-            &input,
-            &format!("C{i}/RTC.xml"),
-            &common::xml_profile(&format!("C{i}"), &ports),
-        );
-    }
-    let out = dir.path().join("site");
-    build_site(&input, &out, SiteOptions::default());
+    let out = many_ports_site(dir.path());
+    let ty = many_ports_type;
     let idx = common::search_index::read(&out);
     let files = idx.first["p"].as_u64().unwrap();
     assert!(files >= 4, "{files} port files");
@@ -871,4 +852,75 @@ fn port_queries_agree_with_every_type_page() {
         .unwrap_or(0);
     assert!(checked >= 20, "{said}");
     assert!(said.contains(", 0 mismatches"), "{said}");
+}
+
+/// The type of out-port `o{j}` of component `C{i}` in [`many_ports_site`].
+fn many_ports_type(i: usize, j: usize) -> String {
+    format!("Lab::Sensors::LongEnoughTypeName::Reading{i}x{j}")
+}
+
+/// A site of 240 components whose ports fill many port files: `C{i}` has out-ports `o{j}` of
+/// type [`many_ports_type`]`(i, j)` and in-ports `i{j}` of `(i - 1, j)`. Built below `dir`.
+fn many_ports_site(dir: &Path) -> std::path::PathBuf {
+    let input = dir.join("in");
+    let ty = many_ports_type;
+    for i in 0..240 {
+        let mut ports: Vec<(String, String, String)> = (0..4)
+            .map(|j| ("DataOutPort".into(), format!("o{j}"), ty(i, j)))
+            .collect();
+        if i > 0 {
+            ports.extend((0..4).map(|j| ("DataInPort".into(), format!("i{j}"), ty(i - 1, j))));
+        }
+        let ports: Vec<(&str, &str, &str)> = ports
+            .iter()
+            .map(|(a, b, c)| (a.as_str(), b.as_str(), c.as_str()))
+            .collect();
+        common::write(
+            &input,
+            &format!("C{i}/RTC.xml"),
+            &common::xml_profile(&format!("C{i}"), &ports),
+        );
+    }
+    let out = dir.join("site");
+    build_site(&input, &out, SiteOptions::default());
+    out
+}
+
+/// The search page loads the details (meta line, summary) of the results near the screen,
+/// not of all 100 it lists: scrolling to the last one loads the rest.
+#[test]
+fn search_page_loads_details_near_the_screen() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
+    if !dir.join("node_modules/puppeteer-core").is_dir() {
+        crate::common::missing_tool(
+            "tests/browser/node_modules missing (run `npm ci` in tests/browser)",
+        );
+        return;
+    }
+    let tmp = tempfile::tempdir().unwrap();
+    let out = many_ports_site(tmp.path());
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(dir.join("search_partial.mjs")).arg(&out).arg("c");
+    let Some(o) = common::run_browser_harness(&mut cmd) else {
+        return;
+    };
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let report: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let r = &report[0];
+    let shown = r["final"]["results"].as_array().map_or(0, Vec::len);
+    assert_eq!(shown, 100, "{r}");
+    let (before, after) = (&r["final"], &r["scrolled"]);
+    let filled = before["filled"].as_u64().unwrap();
+    assert!(
+        filled > 0 && filled < 60,
+        "details near the screen only: {r}"
+    );
+    assert_eq!(
+        after["filled"], 100,
+        "every result filled in after scrolling: {r}"
+    );
+    assert!(
+        after["details"].as_u64() > before["details"].as_u64(),
+        "scrolling loaded more details files: {r}"
+    );
 }

@@ -66,7 +66,7 @@
   var files = {};
   var LOADING = {};
   var awaiting = false;
-  var details = {};
+  var waiting = {};
 
   function undelta(list) {
     var out = new Array(list.length);
@@ -95,8 +95,8 @@
     if (files[name] === LOADING) { files[name] = null; }
     if (name.charAt(0) === 'e') {
       var block = files[name] || [];
-      (details[name] || []).forEach(function (w) { fill(w[0], w[1], block[w[1].n % (ix.d || 1)]); });
-      delete details[name];
+      (waiting[name] || []).forEach(function (w) { fill(w[0], w[1], block[w[1].n % (ix.d || 1)]); });
+      delete waiting[name];
     }
     if (awaiting) { awaiting = false; render(); }
   }
@@ -484,19 +484,36 @@
       if (e.kind) { head.appendChild(el('span', 'r-kind', e.kind)); }
       a.appendChild(head);
       if (e.meta) { a.appendChild(el('span', 'r-meta', e.meta)); }
-      // The meta line and summary come with the entry's details file, now or when it loads.
-      var name = 'e' + ((e.n / (ix.d || 1)) | 0);
-      load(name);
-      if (files[name] === LOADING) {
-        (details[name] = details[name] || []).push([a, e]);
-      } else {
-        fill(a, e, (files[name] || [])[e.n % (ix.d || 1)]);
-      }
       li.appendChild(a);
       ul.appendChild(li);
+      // The meta line and summary come with the entry's details file: on the search page when
+      // the result comes near the screen (a broad query lists 100), in the popup at once.
+      if (seen && page) { seen.observe(a); pendingDetails.set(a, e); } else { details(a, e); }
     });
     return ul;
   }
+
+  /** Fills in result link `a` of entry `e` from its details file, now or when it loads. */
+  function details(a, e) {
+    var name = 'e' + ((e.n / (ix.d || 1)) | 0);
+    load(name);
+    if (files[name] === LOADING) {
+      (waiting[name] = waiting[name] || []).push([a, e]);
+    } else {
+      fill(a, e, (files[name] || [])[e.n % (ix.d || 1)]);
+    }
+  }
+
+  var pendingDetails = new Map();
+  var seen = typeof IntersectionObserver === 'function' ? new IntersectionObserver(function (list) {
+    list.forEach(function (o) {
+      if (!o.isIntersecting || !pendingDetails.has(o.target)) { return; }
+      seen.unobserve(o.target);
+      var e = pendingDetails.get(o.target);
+      pendingDetails.delete(o.target);
+      details(o.target, e);
+    });
+  }, { rootMargin: '400px 0px' }) : null;
 
   function render() {
     var q = input.value;
@@ -522,6 +539,7 @@
         if (q.trim()) { u.searchParams.set('q', q); } else { u.searchParams.delete('q'); }
         try { window.history.replaceState(null, '', u.href); } catch (err) { /* file:// in some browsers */ }
       }
+      if (seen) { seen.disconnect(); pendingDetails.clear(); }
       while (page.children.length > 1) { page.removeChild(page.lastChild); }
       var status = el('p', 'status');
       status.id = 'search-status';
