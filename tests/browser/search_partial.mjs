@@ -12,7 +12,8 @@
 // Prints one JSON array on stdout, one object per query: {q, held, partial: {status, busy,
 // results}, final: {status, busy, results, details, filled}, scrolled: {details, filled}}
 // (results: the hrefs in order; busy: the list's aria-busy; details: how many details files
-// were asked for; filled: how many results have their meta line); the Rust test
+// were asked for; filled: how many results have their meta line; files: every file of search/
+// asked for until then); the Rust test
 // (tests/suite/html_browser.rs) asserts on it.
 import { launchChromium } from './launch.mjs';
 import fs from 'node:fs';
@@ -28,6 +29,7 @@ let held = [];
 let holding = true;
 let heldCount = 0;
 const asked = new Set();
+const requested = [];
 const server = http.createServer((req, res) => {
   const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname).replace(/^\/+/, '');
   const file = path.join(site, path.normalize(rel));
@@ -35,6 +37,7 @@ const server = http.createServer((req, res) => {
     res.writeHead(404); res.end(); return;
   }
   if (/^search\/e\d+\.js$/.test(rel)) { asked.add(rel); }
+  if (rel.startsWith('search/')) { requested.push(rel); }
   const send = () => {
     res.writeHead(200, { 'content-type': TYPES[path.extname(file)] || 'application/octet-stream', 'cache-control': 'no-store' });
     res.end(fs.readFileSync(file));
@@ -72,13 +75,18 @@ try {
     holding = true;
     heldCount = 0;
     asked.clear();
+    requested.length = 0;
     await page.setViewport({ width: 1280, height: 900 });
     await page.goto(origin + 'search.html', { waitUntil: 'load' });
     await page.focus('#search-input');
     await page.waitForFunction(() => !!window.RTCDOC_INDEX, { timeout: 10000 });
-    await page.keyboard.type(q);
-    await page.waitForFunction((typed) => document.getElementById('search-status')
-      && document.getElementById('search-status').textContent.endsWith(' · ' + typed + ' …'), { timeout: 10000 }, q).catch(() => {});
+    // A key every 40 ms (a fast typist), so that a file asked for by one key can come before the next.
+    await page.keyboard.type(q, { delay: 40 });
+    // A port query (`in:…`) has no partial answer: not waited for.
+    if (!/^(in|out|provides|requires|feeds):/i.test(q)) {
+      await page.waitForFunction((typed) => document.getElementById('search-status')
+        && document.getElementById('search-status').textContent.endsWith(' · ' + typed + ' …'), { timeout: 10000 }, q).catch(() => {});
+    }
     const partial = await page.evaluate(state);
     const count = heldCount;
     release();
@@ -88,6 +96,7 @@ try {
     await new Promise((r) => setTimeout(r, 500));
     const final = await page.evaluate(state);
     final.details = asked.size;
+    final.files = requested.slice().sort();
     // Scrolled through, a screen at a time, as a reader would.
     for (let y = 0; y < 40; y++) {
       const more = await page.evaluate(() => {

@@ -923,4 +923,24 @@ fn search_page_loads_details_near_the_screen() {
         after["details"].as_u64() > before["details"].as_u64(),
         "scrolling loaded more details files: {r}"
     );
+    // A port query typed a key at a time asks for a port file only for a key the catalogue
+    // has (`search/k0.js` lists them), not one per prefix of the type's name.
+    let q = format!("in:{}", many_ports_type(57, 2));
+    let mut cmd = std::process::Command::new("node");
+    cmd.arg(dir.join("search_partial.mjs")).arg(&out).arg(&q);
+    let Some(o) = common::run_browser_harness(&mut cmd) else {
+        return;
+    };
+    let report: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let r = &report[0];
+    assert_eq!(r["final"]["status"], format!("1 · {q}"), "{r}");
+    let files: Vec<&str> = r["final"]["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|f| f.as_str())
+        .collect();
+    let port_files = files.iter().filter(|f| f.starts_with("search/p")).count();
+    assert!(files.contains(&"search/k0.js"), "{files:?}");
+    assert!(port_files <= 2, "{port_files} port files for one query typed: {files:?}");
 }

@@ -290,7 +290,7 @@
   // TYPE matches an entry when it is, ignoring case and a leading `::`, the entry's scoped
   // name, one of its spellings (repository id included) or the key of one (portKey: the last
   // identifier). A type is in the file of each of its keys (portFile), so the query's key
-  // names the one file to read; `feeds:` first reads the component's in-ports (`f` files).
+  // names the one file to read (when `k0`, the list of keys, has it); `feeds:` first reads the component's in-ports (`f` files).
   // Several port terms keep the components that have every one; the other words of the query
   // keep the components whose own entry they find. Results are ports, linked to their row on
   // the component page.
@@ -338,6 +338,8 @@
     return false;
   }
 
+  var keys = null;
+
   /** The types of port file `name` of kind `kind` (`d` data types, `i` interfaces). */
   function portTypes(name, kind) { return (files[name] || {})[kind] || []; }
 
@@ -348,7 +350,15 @@
 
   /** The files term `term` needs (one step: `feeds:` needs its in-ports' first). */
   function termFiles(term, all) {
-    if (PORT_OPS[term[0]]) { return [portFile(portKey(term[1]))]; }
+    if (PORT_OPS[term[0]]) {
+      // The port file only for a key the catalogue has (`k0`, every key): a type name being
+      // typed asks for nothing until it is one. Until `k0` is here, the file is asked for too.
+      var key = portKey(term[1]);
+      load('k0');
+      if (files.k0 === LOADING || !files.k0) { return ['k0', portFile(key)]; }
+      if (!keys) { keys = new Set(files.k0); }
+      return keys.has(key) ? [portFile(key)] : [];
+    }
     var f = feedsTarget(term[1]);
     if (!f) { return []; }
     var fb = ix.f || 1;

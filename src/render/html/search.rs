@@ -667,6 +667,8 @@ const FEEDS_BLOCK: usize = 512;
 ///   component page ([`crate::catalog::Anchors`]). The spellings are those met in the profiles
 ///   other than the name, plus the IDL repository id of the definition when the catalogue has
 ///   it.
+/// - `search/k0.js`: every key, sorted: a query typed a key at a time reads a port file only
+///   for a key the catalogue has.
 /// - `search/f<N>.js`: for the [`FEEDS_BLOCK`] components from `N * FEEDS_BLOCK`, each one's
 ///   in-ports that have a type, `[name, port file of the type's name]`: `feeds:C.port` reads
 ///   the in-port's file, then its type's.
@@ -783,6 +785,14 @@ fn write_ports_with(
             list.push_str(json);
         }
     }
+    // Every key, once: a query whose key is none of them needs no port file.
+    let mut all_keys: Vec<&str> = items
+        .iter()
+        .flat_map(|(_, _, keys)| keys.iter().map(String::as_str))
+        .collect();
+    all_keys.sort_unstable_by(|a, b| utf16_cmp(a, b));
+    all_keys.dedup();
+    emit("search/k0.js", shard_js("k", 0, &serde_json::json!(all_keys)))?;
     for (n, [d, i]) in buckets.iter().enumerate() {
         let text = format!("RTCDOC_SHARD(\"p\",{n},{{\"d\":[{d}],\"i\":[{i}]}});\n");
         emit(&format!("search/p{n}.js"), text.into_bytes())?;
@@ -1339,6 +1349,11 @@ mod tests {
                     .map(|s| port_bucket(&port_key(s.as_str().unwrap()), n))
                     .collect();
                 assert!(keys.contains(&b), "{t} in p{b}, not a file of its keys");
+                let listed = files["search/k0.js"].as_array().unwrap();
+                for name in std::iter::once(&t[0]).chain(t[1].as_array().unwrap()) {
+                    let key = serde_json::json!(port_key(name.as_str().unwrap()));
+                    assert!(listed.contains(&key), "{key} in k0");
+                }
                 for k in keys {
                     let other = &files[&format!("search/p{k}.js")];
                     let kind = if part["d"].as_array().unwrap().contains(t) {
