@@ -942,5 +942,8 @@ fn search_page_loads_details_near_the_screen() {
         .collect();
     let port_files = files.iter().filter(|f| f.starts_with("search/p")).count();
     assert!(files.contains(&"search/k0.js"), "{files:?}");
-    assert!(port_files <= 2, "{port_files} port files for one query typed: {files:?}");
+    assert!(
+        port_files <= 2,
+        "{port_files} port files for one query typed: {files:?}"
+    );
 }

@@ -697,6 +697,15 @@ fn write_ports_with(
         all.sort();
         all
     };
+    // A type as its JSON text, `[name, [spelling…], [port…], [port…]]`, and its keys.
+    let item = |name: &String, names: Vec<String>, ports: [Vec<serde_json::Value>; 2]| {
+        let keys: Vec<String> = std::iter::once(name)
+            .chain(&names)
+            .map(|n| port_key(n))
+            .collect();
+        let [a, b] = ports;
+        (entry_js(&serde_json::json!([name, names, a, b])), keys)
+    };
     // Each type as its JSON text and its keys; the in-ports of each data type, to list them
     // per component for `feeds:`.
     let mut items: Vec<(bool, String, Vec<String>)> = Vec::new();
@@ -721,16 +730,11 @@ fn write_ports_with(
                 fed.push((ci, pi, items.len()));
             }
         }
-        let json = entry_js(&serde_json::json!([
-            t.name,
+        let (json, keys) = item(
+            &t.name,
             names,
-            ports(&t.uses.producers),
-            ports(&t.uses.consumers)
-        ]));
-        let keys = std::iter::once(&t.name)
-            .chain(&names)
-            .map(|n| port_key(n))
-            .collect();
+            [ports(&t.uses.producers), ports(&t.uses.consumers)],
+        );
         items.push((true, json, keys));
     }
     for t in catalog
@@ -758,16 +762,11 @@ fn write_ports_with(
         let ports = |l: &[crate::catalog::InterfaceRef]| -> Vec<serde_json::Value> {
             l.iter().filter_map(port).collect()
         };
-        let json = entry_js(&serde_json::json!([
-            t.name,
+        let (json, keys) = item(
+            &t.name,
             names,
-            ports(&t.uses.providers),
-            ports(&t.uses.requirers)
-        ]));
-        let keys = std::iter::once(&t.name)
-            .chain(&names)
-            .map(|n| port_key(n))
-            .collect();
+            [ports(&t.uses.providers), ports(&t.uses.requirers)],
+        );
         items.push((false, json, keys));
     }
     let total: usize = items.iter().map(|(_, j, _)| j.len() + 1).sum();
@@ -792,7 +791,10 @@ fn write_ports_with(
         .collect();
     all_keys.sort_unstable_by(|a, b| utf16_cmp(a, b));
     all_keys.dedup();
-    emit("search/k0.js", shard_js("k", 0, &serde_json::json!(all_keys)))?;
+    emit(
+        "search/k0.js",
+        shard_js("k", 0, &serde_json::json!(all_keys)),
+    )?;
     for (n, [d, i]) in buckets.iter().enumerate() {
         let text = format!("RTCDOC_SHARD(\"p\",{n},{{\"d\":[{d}],\"i\":[{i}]}});\n");
         emit(&format!("search/p{n}.js"), text.into_bytes())?;
