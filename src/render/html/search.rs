@@ -451,7 +451,62 @@ fn shard_text(kind: &str, n: usize, items: &str) -> Vec<u8> {
 struct Inverted {
     ids: std::collections::HashMap<String, u32>,
     tokens: Vec<String>,
-    postings: Vec<Vec<u32>>,
+    postings: Vec<Postings>,
+}
+
+/// One token's postings, ascending, held as the differences from each to the next in LEB128
+/// (most take one byte: at 10,000 profiles 1.5 million postings in about 2 MB instead of 6 MB
+/// of `u32`s and as much again of spare capacity).
+#[derive(Default)]
+struct Postings {
+    bytes: Vec<u8>,
+    last: Option<u32>,
+}
+
+impl Postings {
+    /// Adds `p`, not below the last one; the last one again is not added.
+    fn push(&mut self, p: u32) {
+        if self.last == Some(p) {
+            return;
+        }
+        let mut d = p - self.last.unwrap_or(0);
+        self.last = Some(p);
+        loop {
+            let low = (d & 0x7f) as u8;
+            d >>= 7;
+            if d == 0 {
+                self.bytes.push(low);
+                return;
+            }
+            self.bytes.push(low | 0x80);
+        }
+    }
+
+    /// The differences: the first posting, then from each to the next.
+    fn deltas(&self) -> impl Iterator<Item = u32> + '_ {
+        let mut at = 0;
+        std::iter::from_fn(move || {
+            let mut v = 0u32;
+            let mut shift = 0;
+            loop {
+                let b = *self.bytes.get(at)?;
+                at += 1;
+                v |= u32::from(b & 0x7f) << shift;
+                shift += 7;
+                if b & 0x80 == 0 {
+                    return Some(v);
+                }
+            }
+        })
+    }
+
+    /// The postings.
+    fn values(&self) -> impl Iterator<Item = u32> + '_ {
+        self.deltas().scan(0u32, |sum, d| {
+            *sum += d;
+            Some(*sum)
+        })
+    }
 }
 
 impl Inverted {
@@ -465,15 +520,11 @@ impl Inverted {
                         let id = self.tokens.len() as u32;
                         self.ids.insert(t.to_string(), id);
                         self.tokens.push(t.to_string());
-                        self.postings.push(Vec::new());
+                        self.postings.push(Postings::default());
                         id
                     }
                 };
-                let p = n * 3 + g as u32;
-                let list = &mut self.postings[id as usize];
-                if list.last() != Some(&p) {
-                    list.push(p);
-                }
+                self.postings[id as usize].push(n * 3 + g as u32);
             }
         }
     }
@@ -509,7 +560,7 @@ impl Inverted {
                 body.push(',');
             }
             body.push_str(&serde_json::Value::from(sorted[k]).to_string());
-            for d in deltas(&self.postings[i as usize]) {
+            for d in self.postings[i as usize].deltas() {
                 body.push(',');
                 body.push_str(&d.to_string());
             }
@@ -550,7 +601,7 @@ impl Inverted {
             best.clear();
             for k in lo..hi {
                 let exact = sorted[k].len() == p.len();
-                for &post in &self.postings[order[k] as usize] {
+                for post in self.postings[order[k] as usize].values() {
                     let (e, g) = ((post / 3) as usize, (post % 3) as u8);
                     let class = g * 2 + u8::from(!exact);
                     if best.len() <= e {
@@ -1436,6 +1487,20 @@ mod tests {
     }
 
     proptest::proptest! {
+        /// Postings read back are those added, ascending, each once, whatever their size.
+        #[test]
+        fn postings_read_back(mut list in proptest::collection::vec(0u32..=u32::MAX, 0..64)) {
+            list.sort_unstable();
+            let mut p = Postings::default();
+            for &v in &list {
+                p.push(v);
+                p.push(v);
+            }
+            list.dedup();
+            proptest::prop_assert_eq!(p.values().collect::<Vec<_>>(), list.clone());
+            proptest::prop_assert_eq!(p.deltas().collect::<Vec<_>>(), deltas(&list));
+        }
+
         /// Escaping byte runs gives what escaping character by character gives (E2 starts
         /// U+2028 and U+2029, and also `…` and `→`, which stay).
         #[test]
