@@ -15,7 +15,6 @@ use crate::model::{non_empty, Profile};
 use crate::parse::{self, Limits};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
-use std::io::{BufRead, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -1043,47 +1042,30 @@ fn blob_format(bytes: &[u8], file: &str) -> Option<parse::SourceFormat> {
 /// in order as it arrives (the blobs a caller does not keep are never all in memory at once).
 /// An error: git could not be run.
 fn cat_file(repo: &Repo, oids: &[String], visit: &mut dyn FnMut(&str, Blob)) -> Result<(), String> {
-    let mut c = repo.git();
-    c.args(["cat-file", "--batch"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null());
-    let mut child = c.spawn().map_err(|e| format!("cannot run git: {e}"))?;
-    let mut stdin = child.stdin.take().ok_or("no pipe to git")?;
-    let stdout = child.stdout.take().ok_or("no pipe from git")?;
-    let input: String = oids.iter().map(|o| format!("{o}\n")).collect();
-    // Written from a thread: git answers while it reads.
-    let writer = std::thread::spawn(move || {
-        let _ = stdin.write_all(input.as_bytes());
-    });
-    let mut out = std::io::BufReader::with_capacity(1 << 16, stdout);
-    let mut head = Vec::new();
-    for oid in oids {
-        head.clear();
-        if !matches!(out.read_until(b'\n', &mut head), Ok(n) if n > 0 && head.ends_with(b"\n")) {
-            visit(oid, Err("git gave no answer for it".to_string()));
-            continue;
-        }
-        let head = String::from_utf8_lossy(&head[..head.len() - 1]).to_string();
-        let f: Vec<&str> = head.split(' ').collect();
-        let blob = match (f.get(1), f.get(2).and_then(|n| n.parse::<usize>().ok())) {
-            (Some(&"blob"), Some(n)) => {
-                let mut bytes = vec![0; n + 1];
-                out.read_exact(&mut bytes).ok().map(|()| {
-                    bytes.truncate(n);
-                    bytes
-                })
-            }
-            _ => None,
-        };
+    let mut reader = crate::sources::objects::ObjectReader::spawn(repo.git())
+        .map_err(|e| format!("cannot run git: {e:#}"))?;
+    let names: Vec<&str> = oids.iter().map(String::as_str).collect();
+    let mut done = 0;
+    let read = reader.read_each(&names, u64::MAX, &mut |i, o| {
+        done = i + 1;
         visit(
-            oid,
-            blob.ok_or_else(|| format!("git cannot read the object ({head})")),
+            &oids[i],
+            match o {
+                Some(o) if o.kind == "blob" => Ok(o.data),
+                Some(o) => Err(format!(
+                    "git cannot read the object ({} {})",
+                    o.kind, o.size
+                )),
+                None => Err("git cannot read the object (missing)".to_string()),
+            },
         );
+        Ok(())
+    });
+    if let Err(e) = read {
+        for oid in &oids[done..] {
+            visit(oid, Err(format!("git gave no answer for it ({e:#})")));
+        }
     }
-    drop(out);
-    let _ = writer.join();
-    let _ = child.wait();
     Ok(())
 }
 
