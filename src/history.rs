@@ -58,7 +58,68 @@ enum Repo {
     Mirror(PathBuf),
 }
 
+/// What git answered: whether it succeeded, its output and its error output.
+struct Answer {
+    ok: bool,
+    stdout: Vec<u8>,
+    stderr: Vec<u8>,
+}
+
 impl Repo {
+    /// `c` (a command of this repository) run, or, for a mirror, its answer kept in the cache
+    /// ([`crate::sources::memo`]): the revisions asked about are the pinned commits and their
+    /// ancestors, so the answer cannot change while git's configuration does not (it is part
+    /// of the key). `None`: git does not run.
+    fn answer(&self, mut c: Command) -> Option<Answer> {
+        use crate::sources::memo;
+        let kept = match self {
+            Repo::Mirror(m) => memo::folder(m, "answers").map(|d| {
+                let mut key = format!(
+                    "answer {}\0{:016x}",
+                    env!("CARGO_PKG_VERSION"),
+                    memo::config_stamp(m)
+                );
+                for a in c.get_args() {
+                    key.push('\0');
+                    key.push_str(&a.to_string_lossy());
+                }
+                (d, key)
+            }),
+            Repo::WorkTree(_) => None,
+        };
+        if let Some((d, key)) = &kept {
+            if let Some(v) = memo::recall(d, key) {
+                let mut rest = &v[..];
+                if let (Some(&[ok]), Some(stdout), Some(stderr)) = (
+                    memo::take_field(&mut rest),
+                    memo::take_field(&mut rest),
+                    memo::take_field(&mut rest),
+                ) {
+                    return Some(Answer {
+                        ok: ok == 1,
+                        stdout: stdout.to_vec(),
+                        stderr: stderr.to_vec(),
+                    });
+                }
+            }
+        }
+        let out = c.output().ok()?;
+        let a = Answer {
+            ok: out.status.success(),
+            stdout: out.stdout,
+            stderr: out.stderr,
+        };
+        // A git killed by a signal answered nothing that can be kept.
+        if let Some((d, key)) = kept.filter(|_| out.status.code().is_some()) {
+            let mut v = Vec::with_capacity(a.stdout.len() + a.stderr.len() + 32);
+            memo::put_field(&mut v, &[u8::from(a.ok)]);
+            memo::put_field(&mut v, &a.stdout);
+            memo::put_field(&mut v, &a.stderr);
+            memo::remember(&d, &key, &v);
+        }
+        Some(a)
+    }
+
     fn git(&self) -> Command {
         let mut c = match self {
             Repo::WorkTree(dir) => crate::sources::work_tree_git(dir),
@@ -650,7 +711,7 @@ fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, 
         .arg(format!("--max-count={count}"))
         .args(["--end-of-options", rev, "--"])
         .stderr(Stdio::null());
-    let Some(out) = c.output().ok().filter(|o| o.status.success()) else {
+    let Some(out) = repo.answer(c).filter(|o| o.ok) else {
         return Vec::new();
     };
     let text = String::from_utf8_lossy(&out.stdout);
@@ -684,7 +745,7 @@ fn ls_tree(repo: &Repo, rev: &str) -> Option<Vec<(String, String)>> {
         rev,
     ]);
     c.stderr(Stdio::null());
-    let out = c.output().ok().filter(|o| o.status.success())?;
+    let out = repo.answer(c).filter(|o| o.ok)?;
     let text = String::from_utf8_lossy(&out.stdout);
     Some(
         text.split('\0')
@@ -744,9 +805,9 @@ fn log(
     ])
     .arg(format!("--max-count={limit}"))
     .args(["--end-of-options", rev, "--", path]);
-    let out = c.output().map_err(|e| format!("git: {e}"))?;
-    if !out.status.success() {
-        return Err(crate::sources::first_error_line(&out));
+    let out = repo.answer(c).ok_or("git does not run")?;
+    if !out.ok {
+        return Err(crate::sources::first_error_line_of(&out.stderr));
     }
     Ok(parse_log(&String::from_utf8_lossy(&out.stdout), at))
 }
@@ -808,7 +869,7 @@ fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
     let git = |args: &[&str]| -> Option<Vec<u8>> {
         let mut c = repo.git();
         c.args(args).stderr(Stdio::null());
-        c.output().ok().map(|o| o.stdout)
+        repo.answer(c).map(|o| o.stdout)
     };
     // Relative paths would hide the files outside the input directory: a log per file then.
     let config = git(&["config", "--get", "diff.relative"])?;
@@ -831,8 +892,8 @@ fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
         "--",
     ])
     .stderr(Stdio::null());
-    let out = c.output().ok()?;
-    if !out.status.success() {
+    let out = repo.answer(c)?;
+    if !out.ok {
         return None;
     }
     let text = String::from_utf8_lossy(&out.stdout);
@@ -1042,32 +1103,71 @@ fn blob_format(bytes: &[u8], file: &str) -> Option<parse::SourceFormat> {
 /// in order as it arrives (the blobs a caller does not keep are never all in memory at once).
 /// An error: git could not be run.
 fn cat_file(repo: &Repo, oids: &[String], visit: &mut dyn FnMut(&str, Blob)) -> Result<(), String> {
-    let mut reader = crate::sources::objects::ObjectReader::spawn(repo.git())
-        .map_err(|e| format!("cannot run git: {e:#}"))?;
-    let names: Vec<&str> = oids.iter().map(String::as_str).collect();
-    let mut done = 0;
-    let read = reader.read_each(&names, u64::MAX, &mut |i, o| {
-        done = i + 1;
-        visit(
-            &oids[i],
-            match o {
+    use crate::sources::memo;
+    let kept = match repo {
+        Repo::Mirror(m) => memo::folder(m, "blobs"),
+        Repo::WorkTree(_) => None,
+    };
+    let key = |oid: &str| format!("blob\0{oid}");
+    let mut reader: Option<crate::sources::objects::ObjectReader> = None;
+    let mut at = 0;
+    while at < oids.len() {
+        // A run of blobs kept in the cache (a mirror's), then a run of the others from git.
+        if let Some(d) = &kept {
+            if let Some(bytes) = memo::recall(d, &key(&oids[at])) {
+                visit(&oids[at], Ok(bytes));
+                at += 1;
+                continue;
+            }
+        }
+        let end = match &kept {
+            Some(d) => (at + 1..oids.len())
+                .find(|&i| memo::has(d, &key(&oids[i])))
+                .unwrap_or(oids.len()),
+            None => oids.len(),
+        };
+        let r = match &mut reader {
+            Some(r) => r,
+            None => reader.insert(
+                crate::sources::objects::ObjectReader::spawn(repo.git())
+                    .map_err(|e| format!("cannot run git: {e:#}"))?,
+            ),
+        };
+        let names: Vec<&str> = oids[at..end].iter().map(String::as_str).collect();
+        let mut done = at;
+        let read = r.read_each(&names, u64::MAX, &mut |i, o| {
+            let oid = &oids[at + i];
+            done = at + i + 1;
+            let blob = match o {
                 Some(o) if o.kind == "blob" => Ok(o.data),
                 Some(o) => Err(format!(
                     "git cannot read the object ({} {})",
                     o.kind, o.size
                 )),
                 None => Err("git cannot read the object (missing)".to_string()),
-            },
-        );
-        Ok(())
-    });
-    if let Err(e) = read {
-        for oid in &oids[done..] {
-            visit(oid, Err(format!("git gave no answer for it ({e:#})")));
+            };
+            if let (Some(d), Ok(bytes)) = (&kept, &blob) {
+                if bytes.len() <= MAX_KEPT_BLOB {
+                    memo::remember(d, &key(oid), bytes);
+                }
+            }
+            visit(oid, blob);
+            Ok(())
+        });
+        if let Err(e) = read {
+            for oid in &oids[done..] {
+                visit(oid, Err(format!("git gave no answer for it ({e:#})")));
+            }
+            return Ok(());
         }
+        at = end;
     }
     Ok(())
 }
+
+/// Largest blob of a mirror kept in the cache for its history (a larger one is read from git
+/// each build).
+const MAX_KEPT_BLOB: usize = 16 << 20;
 
 /// The version string of a profile: BasicInfo's, else the id's last part.
 fn version_of(p: &Profile) -> Option<String> {

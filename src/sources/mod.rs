@@ -24,6 +24,7 @@
 
 pub mod code;
 pub mod lock;
+pub mod memo;
 pub mod objects;
 
 use crate::diagnostic::{codes, Diagnostic};
@@ -534,7 +535,12 @@ fn run_ok(c: Command, fail: impl FnOnce(String) -> String) -> Result<std::proces
 
 /// Git's first `fatal:`/`error:` line of `out`, else its first line.
 pub(crate) fn first_error_line(out: &std::process::Output) -> String {
-    let text = String::from_utf8_lossy(&out.stderr);
+    first_error_line_of(&out.stderr)
+}
+
+/// Git's first `fatal:`/`error:` line of its error output `stderr`, else its first line.
+pub(crate) fn first_error_line_of(stderr: &[u8]) -> String {
+    let text = String::from_utf8_lossy(stderr);
     text.lines()
         .map(str::trim)
         .find(|l| l.starts_with("fatal:") || l.starts_with("error:"))
@@ -861,6 +867,16 @@ fn pin_one(
     lock_path: &Path,
 ) -> Result<Pinned> {
     let (commit, listing) = match locked {
+        // Walked before: the commit is in the mirror and `path` a folder of it (neither can
+        // change), and its files are read from the cache or by `materialize`.
+        Some(commit) if pinned_before(&mirror, &commit, &s.path) => {
+            return Ok(Pinned {
+                source: s.clone(),
+                commit,
+                mirror,
+                listing: None,
+            });
+        }
         Some(commit) => match walk(s, &mirror, &commit)? {
             Some(l) => (commit, Some(l)),
             None => {
@@ -883,12 +899,25 @@ fn pin_one(
         Some(l) => l,
         None => walk(s, &mirror, &commit)?.ok_or_else(|| no_folder(s, &commit))?,
     };
+    if let Some(d) = memo::folder(&mirror, "pinned") {
+        memo::remember(&d, &pinned_key(&commit, &s.path), b"");
+    }
     Ok(Pinned {
         source: s.clone(),
         commit,
         mirror,
         listing: Some(listing),
     })
+}
+
+/// The key of the record that `commit` is in a mirror with the folder `path`.
+fn pinned_key(commit: &str, path: &str) -> String {
+    format!("pinned\0{commit}\0{path}")
+}
+
+/// Whether a walk found `commit` in `mirror` with the folder `path` before (no git runs).
+fn pinned_before(mirror: &Path, commit: &str, path: &str) -> bool {
+    memo::folder(mirror, "pinned").is_some_and(|d| memo::has(&d, &pinned_key(commit, path)))
 }
 
 /// The files of `commit` below the source's `path`, walked in `mirror` with one
@@ -1078,9 +1107,28 @@ pub fn materialize(
     Ok(Materialized { dir, notes })
 }
 
+/// The version of what [`materialize_one`] keeps of a source in the cache.
+const FILES_FORMAT: u32 = 1;
+
+/// The key of a source's files kept in the cache: its commit and everything else that changes
+/// what is read of it (its name and `path`, the size limit, the code selection, rtcdoc's
+/// version).
+fn files_key(p: &Pinned, max_file_size: u64, implementation: &code::Selection) -> String {
+    format!(
+        "files {FILES_FORMAT} {}\0{}\0{}\0{}\0{max_file_size}\0{}\0{}",
+        env!("CARGO_PKG_VERSION"),
+        p.commit,
+        p.source.name,
+        p.source.path,
+        implementation.enabled,
+        implementation.named.join("\0")
+    )
+}
+
 /// The files of one pinned source written below `dir/<name>`; the notes on what was not read.
-/// One [`objects::ObjectReader`] of its mirror walks the tree (unless pinning did) and reads
-/// the files and the source code.
+/// Taken from the cache when an earlier build read them at this commit with these settings (no
+/// git runs); else one [`objects::ObjectReader`] of its mirror walks the tree (unless pinning
+/// did) and reads the files and the source code, and they are kept in the cache.
 fn materialize_one(
     p: &Pinned,
     dir: &Path,
@@ -1090,6 +1138,13 @@ fn materialize_one(
     let s = &p.source;
     let root = dir.join(&s.name);
     std::fs::create_dir_all(&root)?;
+    let kept = memo::folder(&p.mirror, "files");
+    let key = files_key(p, max_file_size, implementation);
+    if let Some(notes) = kept.as_deref().and_then(|d| memo::recall(d, &key)) {
+        if let Some(notes) = unpack(&notes, &root)? {
+            return Ok(notes);
+        }
+    }
     let mut reader = objects::ObjectReader::open(Some(&p.mirror))?;
     let walked;
     let listing = match &p.listing {
@@ -1098,12 +1153,23 @@ fn materialize_one(
             walked = reader
                 .walk(&p.commit, &s.path)
                 .with_context(|| format!("source `{}` at commit {}", s.name, p.commit))?
-                .ok_or_else(|| no_folder(s, &p.commit))?;
+                .ok_or_else(|| {
+                    anyhow::anyhow!(
+                        "source `{}`: the cache lacks commit {} or its folder `{}`; delete the cache `{}` and build again",
+                        s.name,
+                        p.commit,
+                        s.path,
+                        p.mirror.display()
+                    )
+                })?;
             &walked
         }
     };
     let (blobs, code, notes) = select(s, listing, implementation);
-    let mut sink = Dir(&root);
+    let mut sink = Keeping {
+        dir: Dir(&root),
+        memo: kept.as_deref().and_then(|d| memo::Writer::new(d, &key)),
+    };
     write_blobs(&mut reader, &blobs, &mut sink, max_file_size)
         .with_context(|| format!("source `{}`: cannot read its files from the cache", s.name))?;
     let profiles: Vec<(String, String)> = blobs
@@ -1125,7 +1191,77 @@ fn materialize_one(
             s.name
         )
     })?;
+    if let Some(mut m) = sink.memo {
+        for n in &notes {
+            m.write(b"N");
+            for f in [&n.file, &n.message, n.hint.as_deref().unwrap_or_default()] {
+                m.write(&(f.len() as u64).to_le_bytes());
+                m.write(f.as_bytes());
+            }
+        }
+        m.finish();
+    }
     Ok(notes)
+}
+
+/// A source's files kept in the cache ([`materialize_one`]) written below `root`: their notes,
+/// or `None` when the entry does not read as one (it is then read from git again).
+fn unpack(kept: &[u8], root: &Path) -> Result<Option<Vec<Diagnostic>>> {
+    let mut files = Vec::new();
+    let mut notes = Vec::new();
+    let mut rest = kept;
+    while let Some((&tag, after)) = rest.split_first() {
+        rest = after;
+        let mut field = || memo::take_field(&mut rest);
+        match tag {
+            b'F' => {
+                let (Some(rel), Some(bytes)) = (field(), field()) else {
+                    return Ok(None);
+                };
+                match std::str::from_utf8(rel) {
+                    Ok(rel) if safe(rel) => files.push((rel, bytes)),
+                    _ => return Ok(None),
+                }
+            }
+            b'N' => {
+                let (Some(file), Some(message), Some(hint)) = (field(), field(), field()) else {
+                    return Ok(None);
+                };
+                let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+                let mut d = Diagnostic::info(codes::SOURCE_SKIPPED, &text(file), &text(message));
+                if !hint.is_empty() {
+                    d = d.with_hint(&text(hint));
+                }
+                notes.push(d);
+            }
+            _ => return Ok(None),
+        }
+    }
+    let mut dir = Dir(root);
+    for (rel, bytes) in files {
+        dir.put(rel, bytes)?;
+    }
+    Ok(Some(notes))
+}
+
+/// A folder that the files go to, and the cache entry they are kept in too.
+struct Keeping<'a> {
+    dir: Dir<'a>,
+    memo: Option<memo::Writer>,
+}
+
+impl Sink for Keeping<'_> {
+    fn put(&mut self, rel: &str, bytes: &[u8]) -> Result<()> {
+        self.dir.put(rel, bytes)?;
+        if let Some(m) = &mut self.memo {
+            m.write(b"F");
+            for f in [rel.as_bytes(), bytes] {
+                m.write(&(f.len() as u64).to_le_bytes());
+                m.write(f);
+            }
+        }
+        Ok(())
+    }
 }
 
 /// What to read of a source's files: the blobs rtcdoc reads `(oid, path)`, the source code for
