@@ -15,7 +15,8 @@
 # configuration lists them as file:// URLs. Measured per binary: "cold" (empty cache, no lock:
 # every repository fetched), "warm" (cache and lock filled: nothing fetched) and "one dir" (the
 # N profiles copied into one directory, no source). Also the git processes a warm build runs
-# (strace, when installed). Prints a Markdown table of median wall times.
+# (strace, when installed) and the warm build's peak RSS (median, MB). Prints a Markdown table of
+# median wall times.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-3}
@@ -52,22 +53,25 @@ generate() {
 }
 
 # wall CMD...: the wall time of one run of CMD, in seconds.
+# (The peak RSS of that run, in kB, is left in $work/rss.)
 wall() {
-  /usr/bin/time -f "%e" -o "$work/time" "$@" >/dev/null 2>"$work/err" || {
+  /usr/bin/time -f "%e %M" -o "$work/time" "$@" >/dev/null 2>"$work/err" || {
     echo "failed: $*" >&2; tail -5 "$work/err" >&2; return 1
   }
-  cat "$work/time"
+  cut -d' ' -f2 "$work/time" >"$work/rss"
+  cut -d' ' -f1 "$work/time"
 }
 median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
-# run BIN EXTRA N: prints "cold warm onedir gits" for one binary.
+# run BIN EXTRA N: prints "cold warm onedir gits rss" for one binary.
 run() {
   local b=$1 extra=$2 d=$work/n$3
-  local cold=() warm=() one=()
+  local cold=() warm=() one=() rss=()
   for _ in $(seq "$runs"); do
     rm -rf "$d/cache" "$d/proj/rtcdoc.lock"
     cold+=("$(wall "$b" build $extra -q --cache-dir "$d/cache" --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json)")
     warm+=("$(wall "$b" build $extra -q --cache-dir "$d/cache" --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json)")
+    rss+=("$(cat "$work/rss")")
     one+=("$(wall "$b" build -q "$d/flat" -o "$d/out1" -f json)")
   done
   local gits=-
@@ -76,21 +80,21 @@ run() {
       --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json >/dev/null 2>&1 || true
     gits=$(grep -c 'execve("[^"]*/git"' "$work/strace" || true)
   fi
-  echo "$(printf '%s\n' "${cold[@]}" | median) $(printf '%s\n' "${warm[@]}" | median) $(printf '%s\n' "${one[@]}" | median) $gits"
+  echo "$(printf '%s\n' "${cold[@]}" | median) $(printf '%s\n' "${warm[@]}" | median) $(printf '%s\n' "${one[@]}" | median) $gits $(printf '%s\n' "${rss[@]}" | median)"
 }
 
-echo "| sources | binary | cold s | warm s | one dir s | warm/one dir | cold/warm | git processes (warm) |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| sources | binary | cold s | warm s | one dir s | warm/one dir | cold/warm | git processes (warm) | warm peak RSS MB |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for n in "${counts[@]}"; do
   generate "$n"
   for which in baseline this; do
     if [ "$which" = baseline ]; then
       [ -n "${BASELINE:-}" ] || continue
-      read -r c w o g < <(run "$BASELINE" "" "$n")
+      read -r c w o g r < <(run "$BASELINE" "" "$n")
     else
-      read -r c w o g < <(run "$bin" "${JOBS:+--jobs $JOBS}" "$n")
+      read -r c w o g r < <(run "$bin" "${JOBS:+--jobs $JOBS}" "$n")
     fi
-    awk -v n="$n" -v b="$which" -v c="$c" -v w="$w" -v o="$o" -v g="$g" \
-      'BEGIN { printf "| %s | %s | %.2f | %.2f | %.2f | %.1f× | %.1f× | %s |\n", n, b, c, w, o, w / o, c / w, g }'
+    awk -v n="$n" -v b="$which" -v c="$c" -v w="$w" -v o="$o" -v g="$g" -v r="$r" \
+      'BEGIN { printf "| %s | %s | %.2f | %.2f | %.2f | %.1f× | %.1f× | %s | %.1f |\n", n, b, c, w, o, w / o, c / w, g, r / 1024 }'
   done
 done
