@@ -9,12 +9,17 @@
 //! - **Lock** ([`lock`]): `rtcdoc.lock` beside `rtcdoc.toml`, every source's URL, rev and
 //!   commit; [`prepare`] uses the locked commits, resolves the new or edited sources and writes
 //!   the lock; `--locked` refuses to change it; `--offline` never fetches.
-//! - **Reading** ([`materialize`]): `git ls-tree -r -z --long` of the pinned commit and one
-//!   `git cat-file --batch` for the blobs rtcdoc can read (profiles, IDL, READMEs and their
-//!   images), written below a temporary folder as `<name>/<path in the repository>`. Git
-//!   objects only: no checkout, so no hooks, filters or submodules run; symbolic links and
-//!   submodules are reported, not followed; a file above the size limit is cut at the limit
-//!   plus one byte, so that it is reported as too large like one on disk.
+//! - **Reading** ([`materialize`]): one `git cat-file --batch` per source
+//!   ([`objects::ObjectReader`]) walks the pinned commit's tree (bounded: files and depth) and
+//!   reads the blobs rtcdoc can read (profiles, IDL, READMEs and their images, the code of the
+//!   implementation check), written below a temporary folder as `<name>/<path in the
+//!   repository>`. Git objects only: no checkout, so no hooks, filters or submodules run;
+//!   symbolic links and submodules are reported, not followed; a file above the size limit is
+//!   cut at the limit plus one byte, so that it is reported as too large like one on disk.
+//! - **Kept answers** ([`memo`]): a commit never changes, so what is read of it is kept below
+//!   its mirror (the files of a source per commit and settings, that the walk found the commit
+//!   and `path`, a mirror's history answers) and a warm build whose lock pins the same commits
+//!   runs no git at all.
 //!
 //! The `git` command is used (as `rtcdoc diff REV:PATH` does) rather than a Rust git library:
 //! it is the reference implementation of every transport and of the user's credentials (ssh
