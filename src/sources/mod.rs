@@ -583,19 +583,19 @@ fn default_branch(rev: Option<&str>) -> bool {
     rev.is_none_or(|r| r == "HEAD")
 }
 
-/// The commit `rev` names in the mirror: a branch, else a tag, else a commit (full or
-/// abbreviated hex); `None` or `HEAD`: the remote's default branch.
-fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
+/// The commit `rev` names in the mirror `reader` reads: a branch, else a tag, else a commit
+/// (full or abbreviated hex); `None` or `HEAD`: the remote's default branch.
+fn resolve(reader: &mut objects::ObjectReader, rev: Option<&str>) -> Result<Option<String>> {
     let Some(rev) = rev.filter(|r| !default_branch(Some(r))) else {
-        return rev_parse(mirror, DEFAULT_REF);
+        return reader.commit_of(DEFAULT_REF);
     };
     for r in [format!("refs/heads/{rev}"), format!("refs/tags/{rev}")] {
-        if let Some(c) = rev_parse(mirror, &r)? {
+        if let Some(c) = reader.commit_of(&r)? {
             return Ok(Some(c));
         }
     }
     if rev.len() >= 7 && rev.bytes().all(|b| b.is_ascii_hexdigit()) {
-        return rev_parse(mirror, rev);
+        return reader.commit_of(rev);
     }
     Ok(None)
 }
@@ -896,7 +896,14 @@ fn pin_one(
                 mode,
                 &format!(" (or `{}`)", mode.update_command(None)),
             )?;
-            (resolve_or_fail(s, &mirror, mode)?, None)
+            // One reader resolves the rev and walks its tree.
+            let mut reader = objects::ObjectReader::open(Some(&mirror))?;
+            let commit = resolve_or_fail(s, &mirror, mode, &mut reader)?;
+            let listing = reader
+                .walk(&commit, &s.path)
+                .with_context(|| format!("source `{}` at commit {commit}", s.name))?
+                .ok_or_else(|| no_folder(s, &commit))?;
+            (commit, Some(listing))
         }
     };
     // A `path` the commit lacks fails here, before the lock is written.
@@ -972,8 +979,13 @@ fn fetch_locked(
 }
 
 /// The commit of a source's `rev` in its (refreshed) mirror, or why there is none.
-fn resolve_or_fail(s: &Source, mirror: &Path, mode: &Mode) -> Result<String> {
-    if let Some(c) = resolve(mirror, s.rev.as_deref())? {
+fn resolve_or_fail(
+    s: &Source,
+    mirror: &Path,
+    mode: &Mode,
+    reader: &mut objects::ObjectReader,
+) -> Result<String> {
+    if let Some(c) = resolve(reader, s.rev.as_deref())? {
         return Ok(c);
     }
     match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
@@ -1018,7 +1030,8 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
     s.rev = Some(rev.to_string());
     let mirror = mirror_path(&cache_dir(mode)?, &s);
     refresh(&s, &mirror, mode, "")?;
-    let Some(commit) = resolve(&mirror, Some(rev))? else {
+    let mut reader = objects::ObjectReader::open(Some(&mirror))?;
+    let Some(commit) = resolve(&mut reader, Some(rev))? else {
         bail!(
             "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `{}`",
             s.name,

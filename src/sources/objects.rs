@@ -24,6 +24,8 @@ const REQUEST_CHUNK: usize = 8 << 10;
 /// An object as git gave it: its type, its whole size, and its bytes (cut at the read's bound).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Object {
+    /// The object's id (what a name such as `refs/heads/main^{commit}` resolved to).
+    pub oid: String,
     pub kind: String,
     pub size: u64,
     pub data: Vec<u8>,
@@ -160,7 +162,21 @@ impl ObjectReader {
         if u64::try_from(data.len()).ok() != Some(keep) {
             bail!("git cat-file gave {name} short");
         }
-        Ok(Some(Object { kind, size, data }))
+        Ok(Some(Object {
+            oid: f[0].to_string(),
+            kind,
+            size,
+            data,
+        }))
+    }
+
+    /// The commit `what` names (a ref, a tag, a full or abbreviated id), as `git rev-parse
+    /// --verify 'what^{commit}'` resolves it; `None` when it names none.
+    pub fn commit_of(&mut self, what: &str) -> Result<Option<String>> {
+        let o = self.read(&format!("{what}^{{commit}}"), 0)?;
+        Ok(o.filter(|o| o.kind == "commit")
+            .map(|o| o.oid)
+            .filter(|c| matches!(c.len(), 40 | 64) && c.bytes().all(|b| b.is_ascii_hexdigit())))
     }
 
     /// The files of `commit` below the folder `path` (`""`: all), as `git ls-tree -r
