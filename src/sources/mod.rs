@@ -1246,9 +1246,9 @@ fn unpack(kept: &[u8], root: &Path) -> Result<Option<Vec<Diagnostic>>> {
                     return Ok(None);
                 };
                 let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
-                let mut d = Diagnostic::info(codes::SOURCE_SKIPPED, &text(file), &text(message));
+                let mut d = Diagnostic::info(codes::SOURCE_SKIPPED, &text(file), text(message));
                 if !hint.is_empty() {
-                    d = d.with_hint(&text(hint));
+                    d = d.with_hint(text(hint));
                 }
                 notes.push(d);
             }
