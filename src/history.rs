@@ -79,7 +79,14 @@ impl Repo {
                     env!("CARGO_PKG_VERSION"),
                     memo::config_stamp(m)
                 );
-                for a in c.get_args() {
+                // Without the mirror's path: the answers are kept in the mirror, and a cache
+                // named another way (relative, through a link) is the same.
+                let mut args = c.get_args();
+                while let Some(a) = args.next() {
+                    if a == "--git-dir" {
+                        args.next();
+                        continue;
+                    }
                     key.push('\0');
                     key.push_str(&a.to_string_lossy());
                 }

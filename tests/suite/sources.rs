@@ -1170,13 +1170,19 @@ fn jobs_change_nothing_of_the_output_or_the_lock() {
 /// there stands for the real one).
 #[cfg(unix)]
 fn run_with_path(p: &Project, bin: &Path, args: &[&str]) -> (i32, String) {
+    run_with_path_and_cache(p, bin, args, &p.cache)
+}
+
+/// [`run_with_path`] with `--cache-dir cache` (relative to the project, say).
+#[cfg(unix)]
+fn run_with_path_and_cache(p: &Project, bin: &Path, args: &[&str], cache: &str) -> (i32, String) {
     let path = format!(
         "{}:{}",
         bin.display(),
         std::env::var("PATH").unwrap_or_default()
     );
     let mut all: Vec<&str> = args.to_vec();
-    all.extend(["--cache-dir", &p.cache]);
+    all.extend(["--cache-dir", cache]);
     let o = Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
         .args(&all)
         .current_dir(&p.proj)
@@ -1298,6 +1304,11 @@ fn a_warm_build_runs_no_git_on_the_cache_and_a_damaged_entry_is_read_again() {
     let (code, err) = run_with_path(&p, &bin, &["build", "-q", "-o", "warm2"]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(cache_commands(&p, &log), Vec::<String>::new());
+    // The same cache named another way (relative to the project): the same answers.
+    let (code, err) = run_with_path_and_cache(&p, &bin, &["build", "-q", "-o", "rel"], "../cache");
+    assert_eq!(code, 0, "{err}");
+    let lines = std::fs::read_to_string(&log).unwrap_or_default();
+    assert!(!lines.contains("--git-dir"), "{lines}");
     // A setting that changes what is read (the size limit) is read from git again.
     let (code, err) = run_with_path(
         &p,
