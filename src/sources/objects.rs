@@ -333,6 +333,57 @@ mod tests {
     }
 
     #[test]
+    fn a_reader_refuses_odd_names_and_goes_on_reading() {
+        let tmp = tempfile::tempdir().unwrap();
+        let git = |args: &[&str]| {
+            let ok = std::process::Command::new("git")
+                .args(["-c", "user.name=t", "-c", "user.email=t@example.org"])
+                .args(args)
+                .current_dir(tmp.path())
+                .env("GIT_CONFIG_NOSYSTEM", "1")
+                .env("GIT_CONFIG_GLOBAL", "/dev/null")
+                .output()
+                .unwrap();
+            assert!(ok.status.success(), "{args:?}");
+            String::from_utf8(ok.stdout).unwrap()
+        };
+        git(&["init", "-q"]);
+        std::fs::create_dir_all(tmp.path().join("a/b")).unwrap();
+        std::fs::write(tmp.path().join("a/b/RTC.xml"), "<x/>").unwrap();
+        std::fs::write(tmp.path().join("top.txt"), "0123456789").unwrap();
+        git(&["add", "-A"]);
+        git(&["commit", "-q", "-m", "one"]);
+        let head = git(&["rev-parse", "HEAD"]).trim().to_string();
+        let mut r = ObjectReader::open(Some(&tmp.path().join(".git"))).unwrap();
+        for bad in ["HEAD\nHEAD", "-h", "HEAD\0x", ""] {
+            assert!(r.read(bad, 10).is_err(), "{bad:?}");
+        }
+        assert!(r.walk("HEAD", "").is_err(), "a commit that is no full id");
+        assert_eq!(r.commit_of("HEAD").unwrap().as_deref(), Some(head.as_str()));
+        assert_eq!(r.commit_of("refs/heads/nothing").unwrap(), None);
+        let all = r.walk(&head, "").unwrap().unwrap();
+        let paths: Vec<&str> = all.iter().map(|e| e.path.as_str()).collect();
+        assert_eq!(paths, ["a/b/RTC.xml", "top.txt"]);
+        let below = r.walk(&head, "a").unwrap().unwrap();
+        assert_eq!(below.len(), 1);
+        assert_eq!(
+            r.walk(&head, "top.txt").unwrap(),
+            None,
+            "a file is no folder"
+        );
+        assert_eq!(r.walk(&head, "nope").unwrap(), None);
+        assert_eq!(
+            r.walk(&"0".repeat(40), "").unwrap(),
+            None,
+            "a missing commit"
+        );
+        // Cut at the bound plus one byte.
+        let top = &all[1].oid;
+        let o = r.read(top, 3).unwrap().unwrap();
+        assert_eq!((o.size, o.data.as_slice()), (10, &b"0123"[..]));
+    }
+
+    #[test]
     fn tree_objects_parse_and_malformed_ones_are_named() {
         let mut t = b"100644 a.txt\0".to_vec();
         t.extend([0xab; 20]);
