@@ -116,8 +116,15 @@ impl Repo {
             stdout: out.stdout,
             stderr: out.stderr,
         };
-        // A git killed by a signal answered nothing that can be kept.
-        if let Some((d, key)) = kept.filter(|_| out.status.code().is_some()) {
+        // A git killed by a signal answered nothing that can be kept; nor did one that failed,
+        // but for the parent of a commit (`C^`: a root commit's parent never appears) and for
+        // `git config --get` (a setting not set; the configuration is in the key): a failure
+        // for anything else may pass (the history then says that git could not give it).
+        let expected = c
+            .get_args()
+            .any(|a| a == "config" || a.to_string_lossy().ends_with('^'));
+        let keep = out.status.code().is_some() && (a.ok || expected);
+        if let Some((d, key)) = kept.filter(|_| keep) {
             let mut v = Vec::with_capacity(a.stdout.len() + a.stderr.len() + 32);
             memo::put_field(&mut v, &[u8::from(a.ok)]);
             memo::put_field(&mut v, &a.stdout);
