@@ -15,7 +15,9 @@
 # configuration lists them as file:// URLs. Measured per binary: "cold" (empty cache, no lock:
 # every repository fetched), "warm" (cache and lock filled: nothing fetched) and "one dir" (the
 # N profiles copied into one directory, no source). Also the git processes a warm build runs
-# (strace, when installed). Prints a Markdown table of median wall times.
+# (strace, when installed) and the warm build's peak RSS (median, MB). With BASELINE, the two
+# binaries run in alternation (run 1 of each, then run 2 …), so that the load of a shared
+# machine falls on both alike. Prints a Markdown table of median wall times.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-3}
@@ -52,45 +54,61 @@ generate() {
 }
 
 # wall CMD...: the wall time of one run of CMD, in seconds.
+# (The peak RSS of that run, in kB, is left in $work/rss.)
 wall() {
-  /usr/bin/time -f "%e" -o "$work/time" "$@" >/dev/null 2>"$work/err" || {
+  /usr/bin/time -f "%e %M" -o "$work/time" "$@" >/dev/null 2>"$work/err" || {
     echo "failed: $*" >&2; tail -5 "$work/err" >&2; return 1
   }
-  cat "$work/time"
+  cut -d' ' -f2 "$work/time" >"$work/rss"
+  cut -d' ' -f1 "$work/time"
 }
 median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
-# run BIN EXTRA N: prints "cold warm onedir gits" for one binary.
-run() {
-  local b=$1 extra=$2 d=$work/n$3
-  local cold=() warm=() one=()
-  for _ in $(seq "$runs"); do
-    rm -rf "$d/cache" "$d/proj/rtcdoc.lock"
-    cold+=("$(wall "$b" build $extra -q --cache-dir "$d/cache" --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json)")
-    warm+=("$(wall "$b" build $extra -q --cache-dir "$d/cache" --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json)")
-    one+=("$(wall "$b" build -q "$d/flat" -o "$d/out1" -f json)")
-  done
-  local gits=-
-  if command -v strace >/dev/null; then
-    strace -f -qq -z -e trace=execve -o "$work/strace" "$b" build $extra -q --cache-dir "$d/cache" \
-      --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json >/dev/null 2>&1 || true
-    gits=$(grep -c 'execve("[^"]*/git"' "$work/strace" || true)
-  fi
-  echo "$(printf '%s\n' "${cold[@]}" | median) $(printf '%s\n' "${warm[@]}" | median) $(printf '%s\n' "${one[@]}" | median) $gits"
+# once BIN EXTRA N: prints "cold warm onedir rss" of one run of one binary.
+once() {
+  local b=$1 extra=$2 d=$work/n$3 c w o
+  rm -rf "$d/cache" "$d/proj/rtcdoc.lock"
+  c=$(wall "$b" build $extra -q --cache-dir "$d/cache" --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json)
+  w=$(wall "$b" build $extra -q --cache-dir "$d/cache" --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json)
+  local r; r=$(cat "$work/rss")
+  o=$(wall "$b" build -q "$d/flat" -o "$d/out1" -f json)
+  echo "$c $w $o $r"
 }
 
-echo "| sources | binary | cold s | warm s | one dir s | warm/one dir | cold/warm | git processes (warm) |"
-echo "|---|---|---|---|---|---|---|---|"
+# gits BIN EXTRA N: the git processes of a warm build (strace, when installed; the cache and
+# lock are those `once` left).
+gits() {
+  local b=$1 extra=$2 d=$work/n$3
+  command -v strace >/dev/null || { echo -; return; }
+  strace -f -qq -z -e trace=execve -o "$work/strace" "$b" build $extra -q --cache-dir "$d/cache" \
+    --config "$d/proj/rtcdoc.toml" -o "$d/out" -f json >/dev/null 2>&1 || true
+  grep -c 'execve("[^"]*/git"' "$work/strace" || true
+}
+
+# The binaries measured: the baseline (if any) and this one, run in alternation (run 1 of
+# each, then run 2 of each, …) so that the load of a shared machine falls on both alike.
+names=(); bins=(); extras=()
+if [ -n "${BASELINE:-}" ]; then names+=(baseline); bins+=("$BASELINE"); extras+=(""); fi
+names+=(this); bins+=("$bin"); extras+=("${JOBS:+--jobs $JOBS}")
+
+echo "| sources | binary | cold s | warm s | one dir s | warm/one dir | cold/warm | git processes (warm) | warm peak RSS MB |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for n in "${counts[@]}"; do
   generate "$n"
-  for which in baseline this; do
-    if [ "$which" = baseline ]; then
-      [ -n "${BASELINE:-}" ] || continue
-      read -r c w o g < <(run "$BASELINE" "" "$n")
-    else
-      read -r c w o g < <(run "$bin" "${JOBS:+--jobs $JOBS}" "$n")
-    fi
-    awk -v n="$n" -v b="$which" -v c="$c" -v w="$w" -v o="$o" -v g="$g" \
-      'BEGIN { printf "| %s | %s | %.2f | %.2f | %.2f | %.1f× | %.1f× | %s |\n", n, b, c, w, o, w / o, c / w, g }'
+  declare -A all=() git=()
+  for k in $(seq "$runs"); do
+    for i in "${!bins[@]}"; do
+      all[$i]+="$(once "${bins[$i]}" "${extras[$i]}" "$n")"$'\n'
+      # Counted once, on the cache and lock this binary just left.
+      [ "$k" = 1 ] && git[$i]=$(gits "${bins[$i]}" "${extras[$i]}" "$n")
+    done
   done
+  for i in "${!bins[@]}"; do
+    g=${git[$i]}
+    col() { printf '%s' "${all[$i]}" | awk -v k="$1" 'NF { print $k }' | median; }
+    c=$(col 1) w=$(col 2) o=$(col 3) r=$(col 4)
+    awk -v n="$n" -v b="${names[$i]}" -v c="$c" -v w="$w" -v o="$o" -v g="$g" -v r="$r" \
+      'BEGIN { printf "| %s | %s | %.2f | %.2f | %.2f | %.1f× | %.1f× | %s | %.1f |\n", n, b, c, w, o, w / o, c / w, g, r / 1024 }'
+  done
+  unset all git
 done

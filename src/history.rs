@@ -15,7 +15,6 @@ use crate::model::{non_empty, Profile};
 use crate::parse::{self, Limits};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
-use std::io::{BufRead, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -59,7 +58,82 @@ enum Repo {
     Mirror(PathBuf),
 }
 
+/// What git answered: whether it succeeded, its output and its error output.
+struct Answer {
+    ok: bool,
+    stdout: Vec<u8>,
+    stderr: Vec<u8>,
+}
+
 impl Repo {
+    /// `c` (a command of this repository) run, or, for a mirror, its answer kept in the cache
+    /// ([`crate::sources::memo`]): the revisions asked about are the pinned commits and their
+    /// ancestors, so the answer cannot change while git's configuration does not (it is part
+    /// of the key). `None`: git does not run.
+    fn answer(&self, mut c: Command) -> Option<Answer> {
+        use crate::sources::memo;
+        let kept = match self {
+            Repo::Mirror(m) => memo::folder(m, "answers").map(|d| {
+                let mut key = format!(
+                    "answer {}\0{:016x}",
+                    env!("CARGO_PKG_VERSION"),
+                    memo::config_stamp(m)
+                );
+                // Without the mirror's path: the answers are kept in the mirror, and a cache
+                // named another way (relative, through a link) is the same.
+                let mut args = c.get_args();
+                while let Some(a) = args.next() {
+                    if a == "--git-dir" {
+                        args.next();
+                        continue;
+                    }
+                    key.push('\0');
+                    key.push_str(&a.to_string_lossy());
+                }
+                (d, key)
+            }),
+            Repo::WorkTree(_) => None,
+        };
+        if let Some((d, key)) = &kept {
+            if let Some(v) = memo::recall(d, key) {
+                let mut rest = &v[..];
+                if let (Some(&[ok]), Some(stdout), Some(stderr)) = (
+                    memo::take_field(&mut rest),
+                    memo::take_field(&mut rest),
+                    memo::take_field(&mut rest),
+                ) {
+                    return Some(Answer {
+                        ok: ok == 1,
+                        stdout: stdout.to_vec(),
+                        stderr: stderr.to_vec(),
+                    });
+                }
+            }
+        }
+        let out = c.output().ok()?;
+        let a = Answer {
+            ok: out.status.success(),
+            stdout: out.stdout,
+            stderr: out.stderr,
+        };
+        // A git killed by a signal answered nothing that can be kept; nor did one that failed,
+        // but for the parent of a commit (`C^`: a root commit's parent never appears) and for
+        // `git config --get` (a setting not set; the configuration is in the key): a failure
+        // for anything else may pass (the history then says that git could not give it).
+        let expected = c
+            .get_args()
+            .any(|a| a == "config" || a.to_string_lossy().ends_with('^'));
+        let keep = out.status.code().is_some() && (a.ok || expected);
+        if let Some((d, key)) = kept.filter(|_| keep) {
+            let mut v = Vec::with_capacity(a.stdout.len() + a.stderr.len() + 32);
+            memo::put_field(&mut v, &[u8::from(a.ok)]);
+            memo::put_field(&mut v, &a.stdout);
+            memo::put_field(&mut v, &a.stderr);
+            memo::remember(&d, &key, &v);
+        }
+        Some(a)
+    }
+
     fn git(&self) -> Command {
         let mut c = match self {
             Repo::WorkTree(dir) => crate::sources::work_tree_git(dir),
@@ -651,7 +725,7 @@ fn deletions(repo: &Repo, rev: &str, count: usize) -> Vec<(String, Vec<(String, 
         .arg(format!("--max-count={count}"))
         .args(["--end-of-options", rev, "--"])
         .stderr(Stdio::null());
-    let Some(out) = c.output().ok().filter(|o| o.status.success()) else {
+    let Some(out) = repo.answer(c).filter(|o| o.ok) else {
         return Vec::new();
     };
     let text = String::from_utf8_lossy(&out.stdout);
@@ -685,7 +759,7 @@ fn ls_tree(repo: &Repo, rev: &str) -> Option<Vec<(String, String)>> {
         rev,
     ]);
     c.stderr(Stdio::null());
-    let out = c.output().ok().filter(|o| o.status.success())?;
+    let out = repo.answer(c).filter(|o| o.ok)?;
     let text = String::from_utf8_lossy(&out.stdout);
     Some(
         text.split('\0')
@@ -745,9 +819,9 @@ fn log(
     ])
     .arg(format!("--max-count={limit}"))
     .args(["--end-of-options", rev, "--", path]);
-    let out = c.output().map_err(|e| format!("git: {e}"))?;
-    if !out.status.success() {
-        return Err(crate::sources::first_error_line(&out));
+    let out = repo.answer(c).ok_or("git does not run")?;
+    if !out.ok {
+        return Err(crate::sources::first_error_line_of(&out.stderr));
     }
     Ok(parse_log(&String::from_utf8_lossy(&out.stdout), at))
 }
@@ -809,7 +883,7 @@ fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
     let git = |args: &[&str]| -> Option<Vec<u8>> {
         let mut c = repo.git();
         c.args(args).stderr(Stdio::null());
-        c.output().ok().map(|o| o.stdout)
+        repo.answer(c).map(|o| o.stdout)
     };
     // Relative paths would hide the files outside the input directory: a log per file then.
     let config = git(&["config", "--get", "diff.relative"])?;
@@ -832,8 +906,8 @@ fn whole_log(repo: &Repo, rev: &str, paths: &[&str]) -> Option<WholeLog> {
         "--",
     ])
     .stderr(Stdio::null());
-    let out = c.output().ok()?;
-    if !out.status.success() {
+    let out = repo.answer(c)?;
+    if !out.ok {
         return None;
     }
     let text = String::from_utf8_lossy(&out.stdout);
@@ -1043,49 +1117,71 @@ fn blob_format(bytes: &[u8], file: &str) -> Option<parse::SourceFormat> {
 /// in order as it arrives (the blobs a caller does not keep are never all in memory at once).
 /// An error: git could not be run.
 fn cat_file(repo: &Repo, oids: &[String], visit: &mut dyn FnMut(&str, Blob)) -> Result<(), String> {
-    let mut c = repo.git();
-    c.args(["cat-file", "--batch"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null());
-    let mut child = c.spawn().map_err(|e| format!("cannot run git: {e}"))?;
-    let mut stdin = child.stdin.take().ok_or("no pipe to git")?;
-    let stdout = child.stdout.take().ok_or("no pipe from git")?;
-    let input: String = oids.iter().map(|o| format!("{o}\n")).collect();
-    // Written from a thread: git answers while it reads.
-    let writer = std::thread::spawn(move || {
-        let _ = stdin.write_all(input.as_bytes());
-    });
-    let mut out = std::io::BufReader::with_capacity(1 << 16, stdout);
-    let mut head = Vec::new();
-    for oid in oids {
-        head.clear();
-        if !matches!(out.read_until(b'\n', &mut head), Ok(n) if n > 0 && head.ends_with(b"\n")) {
-            visit(oid, Err("git gave no answer for it".to_string()));
-            continue;
-        }
-        let head = String::from_utf8_lossy(&head[..head.len() - 1]).to_string();
-        let f: Vec<&str> = head.split(' ').collect();
-        let blob = match (f.get(1), f.get(2).and_then(|n| n.parse::<usize>().ok())) {
-            (Some(&"blob"), Some(n)) => {
-                let mut bytes = vec![0; n + 1];
-                out.read_exact(&mut bytes).ok().map(|()| {
-                    bytes.truncate(n);
-                    bytes
-                })
+    use crate::sources::memo;
+    let kept = match repo {
+        Repo::Mirror(m) => memo::folder(m, "blobs"),
+        Repo::WorkTree(_) => None,
+    };
+    let key = |oid: &str| format!("blob\0{oid}");
+    let mut reader: Option<crate::sources::objects::ObjectReader> = None;
+    let mut at = 0;
+    while at < oids.len() {
+        // A run of blobs kept in the cache (a mirror's), then a run of the others from git.
+        if let Some(d) = &kept {
+            if let Some(bytes) = memo::recall(d, &key(&oids[at])) {
+                visit(&oids[at], Ok(bytes));
+                at += 1;
+                continue;
             }
-            _ => None,
+        }
+        let end = match &kept {
+            Some(d) => (at + 1..oids.len())
+                .find(|&i| memo::has(d, &key(&oids[i])))
+                .unwrap_or(oids.len()),
+            None => oids.len(),
         };
-        visit(
-            oid,
-            blob.ok_or_else(|| format!("git cannot read the object ({head})")),
-        );
+        let r = match &mut reader {
+            Some(r) => r,
+            None => reader.insert(
+                crate::sources::objects::ObjectReader::spawn(repo.git())
+                    .map_err(|e| format!("cannot run git: {e:#}"))?,
+            ),
+        };
+        let names: Vec<&str> = oids[at..end].iter().map(String::as_str).collect();
+        let mut done = at;
+        let read = r.read_each(&names, u64::MAX, &mut |i, o| {
+            let oid = &oids[at + i];
+            done = at + i + 1;
+            let blob = match o {
+                Some(o) if o.kind == "blob" => Ok(o.data),
+                Some(o) => Err(format!(
+                    "git cannot read the object ({} {})",
+                    o.kind, o.size
+                )),
+                None => Err("git cannot read the object (missing)".to_string()),
+            };
+            if let (Some(d), Ok(bytes)) = (&kept, &blob) {
+                if bytes.len() <= MAX_KEPT_BLOB {
+                    memo::remember(d, &key(oid), bytes);
+                }
+            }
+            visit(oid, blob);
+            Ok(())
+        });
+        if let Err(e) = read {
+            for oid in &oids[done..] {
+                visit(oid, Err(format!("git gave no answer for it ({e:#})")));
+            }
+            return Ok(());
+        }
+        at = end;
     }
-    drop(out);
-    let _ = writer.join();
-    let _ = child.wait();
     Ok(())
 }
+
+/// Largest blob of a mirror kept in the cache for its history (a larger one is read from git
+/// each build).
+const MAX_KEPT_BLOB: usize = 16 << 20;
 
 /// The version string of a profile: BasicInfo's, else the id's last part.
 fn version_of(p: &Profile) -> Option<String> {

@@ -375,12 +375,15 @@ fn git_checkout(which: &str, object: &str, dest: &Path, opts: &LoadOptions) -> R
                 }
             }
             let copied = || format!("{which} `{object}`: cannot copy its files out of git");
-            crate::sources::write_blobs(None, &files, dest, u64::MAX).with_context(copied)?;
+            let mut reader = crate::sources::objects::ObjectReader::open(None)?;
+            let mut sink = crate::sources::Dir(dest);
+            crate::sources::write_blobs(&mut reader, &files, &mut sink, u64::MAX)
+                .with_context(copied)?;
             crate::sources::code::write(
-                None,
+                &mut reader,
                 &files,
                 sources,
-                dest,
+                &mut sink,
                 &opts.implementation.selection(),
                 opts.limits.max_file_size,
             )

@@ -95,10 +95,10 @@ pub(crate) fn implementation_files(
 /// (`implementation_id`) with the headers of their component folder. Each is cut at `max`
 /// (one byte more, so that the check reports a larger file as not read, RTC811, as on disk).
 pub(crate) fn write(
-    git_dir: Option<&Path>,
+    reader: &mut super::objects::ObjectReader,
     profiles: &[(String, String)],
     code: Vec<(String, String)>,
-    dest: &Path,
+    dest: &mut dyn super::Sink,
     settings: &Selection,
     max: u64,
 ) -> Result<()> {
@@ -114,8 +114,8 @@ pub(crate) fn write(
         .filter(|(_, r)| !taken.contains(r.as_str()))
         .cloned()
         .partition(|(_, r)| crate::walk::is_code_file(Path::new(r)));
-    super::write_blobs(git_dir, &beside, dest, max)?;
-    let with_spec = super::write_blobs_where(git_dir, &spec_like, dest, max, &|body| {
+    super::write_blobs(reader, &beside, dest, max)?;
+    let with_spec = super::write_blobs_where(reader, &spec_like, dest, max, &|body| {
         memchr::memmem::find(body, b"implementation_id").is_some()
     })?;
     let folders: std::collections::HashSet<&str> =
@@ -144,7 +144,7 @@ pub(crate) fn write(
         .take(SOURCES_PER_FOLDER)
         .map(|(_, h)| h)
         .collect();
-    super::write_blobs(git_dir, &companions, dest, max)
+    super::write_blobs(reader, &companions, dest, max)
 }
 
 #[cfg(test)]

@@ -9,12 +9,17 @@
 //! - **Lock** ([`lock`]): `rtcdoc.lock` beside `rtcdoc.toml`, every source's URL, rev and
 //!   commit; [`prepare`] uses the locked commits, resolves the new or edited sources and writes
 //!   the lock; `--locked` refuses to change it; `--offline` never fetches.
-//! - **Reading** ([`materialize`]): `git ls-tree -r -z --long` of the pinned commit and one
-//!   `git cat-file --batch` for the blobs rtcdoc can read (profiles, IDL, READMEs and their
-//!   images), written below a temporary folder as `<name>/<path in the repository>`. Git
-//!   objects only: no checkout, so no hooks, filters or submodules run; symbolic links and
-//!   submodules are reported, not followed; a file above the size limit is cut at the limit
-//!   plus one byte, so that it is reported as too large like one on disk.
+//! - **Reading** ([`materialize`]): one `git cat-file --batch` per source
+//!   ([`objects::ObjectReader`]) walks the pinned commit's tree (bounded: files and depth) and
+//!   reads the blobs rtcdoc can read (profiles, IDL, READMEs and their images, the code of the
+//!   implementation check), written below a temporary folder as `<name>/<path in the
+//!   repository>`. Git objects only: no checkout, so no hooks, filters or submodules run;
+//!   symbolic links and submodules are reported, not followed; a file above the size limit is
+//!   cut at the limit plus one byte, so that it is reported as too large like one on disk.
+//! - **Kept answers** ([`memo`]): a commit never changes, so what is read of it is kept below
+//!   its mirror (the files of a source per commit and settings, that the walk found the commit
+//!   and `path`, a mirror's history answers) and a warm build whose lock pins the same commits
+//!   runs no git at all.
 //!
 //! The `git` command is used (as `rtcdoc diff REV:PATH` does) rather than a Rust git library:
 //! it is the reference implementation of every transport and of the user's credentials (ssh
@@ -24,12 +29,13 @@
 
 pub mod code;
 pub mod lock;
+pub mod memo;
+pub mod objects;
 
 use crate::diagnostic::{codes, Diagnostic};
 use crate::model::SourceInfo;
 use anyhow::{bail, Context, Result};
 use serde::Deserialize;
-use std::io::{BufRead, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -71,9 +77,9 @@ pub struct Pinned {
     pub commit: String,
     /// The bare mirror holding the commit.
     pub mirror: PathBuf,
-    /// `git ls-tree -r -z --long` of the commit below `path`, when pinning listed it already
-    /// (then [`materialize`] runs no `ls-tree` of its own).
-    pub listing: Option<Vec<u8>>,
+    /// The files of the commit below `path`, when pinning walked its tree already (then
+    /// [`materialize`] does not walk it again).
+    pub listing: Option<Vec<objects::TreeEntry>>,
 }
 
 impl Pinned {
@@ -534,7 +540,12 @@ fn run_ok(c: Command, fail: impl FnOnce(String) -> String) -> Result<std::proces
 
 /// Git's first `fatal:`/`error:` line of `out`, else its first line.
 pub(crate) fn first_error_line(out: &std::process::Output) -> String {
-    let text = String::from_utf8_lossy(&out.stderr);
+    first_error_line_of(&out.stderr)
+}
+
+/// Git's first `fatal:`/`error:` line of its error output `stderr`, else its first line.
+pub(crate) fn first_error_line_of(stderr: &[u8]) -> String {
+    let text = String::from_utf8_lossy(stderr);
     text.lines()
         .map(str::trim)
         .find(|l| l.starts_with("fatal:") || l.starts_with("error:"))
@@ -572,19 +583,19 @@ fn default_branch(rev: Option<&str>) -> bool {
     rev.is_none_or(|r| r == "HEAD")
 }
 
-/// The commit `rev` names in the mirror: a branch, else a tag, else a commit (full or
-/// abbreviated hex); `None` or `HEAD`: the remote's default branch.
-fn resolve(mirror: &Path, rev: Option<&str>) -> Result<Option<String>> {
+/// The commit `rev` names in the mirror `reader` reads: a branch, else a tag, else a commit
+/// (full or abbreviated hex); `None` or `HEAD`: the remote's default branch.
+fn resolve(reader: &mut objects::ObjectReader, rev: Option<&str>) -> Result<Option<String>> {
     let Some(rev) = rev.filter(|r| !default_branch(Some(r))) else {
-        return rev_parse(mirror, DEFAULT_REF);
+        return reader.commit_of(DEFAULT_REF);
     };
     for r in [format!("refs/heads/{rev}"), format!("refs/tags/{rev}")] {
-        if let Some(c) = rev_parse(mirror, &r)? {
+        if let Some(c) = reader.commit_of(&r)? {
             return Ok(Some(c));
         }
     }
     if rev.len() >= 7 && rev.bytes().all(|b| b.is_ascii_hexdigit()) {
-        return rev_parse(mirror, rev);
+        return reader.commit_of(rev);
     }
     Ok(None)
 }
@@ -851,8 +862,8 @@ fn in_parallel<T: Send>(
 }
 
 /// One source pinned: at its `locked` commit (fetched if the cache lacks it), else at the
-/// current commit of its `rev`; its files listed (the listing answers whether the commit is
-/// cached and whether `path` is a folder of it, without another git process).
+/// current commit of its `rev`; its files listed (the walk of its tree answers whether the
+/// commit is cached and whether `path` is a folder of it, without another git process).
 fn pin_one(
     s: &Source,
     locked: Option<String>,
@@ -861,9 +872,19 @@ fn pin_one(
     lock_path: &Path,
 ) -> Result<Pinned> {
     let (commit, listing) = match locked {
-        Some(commit) => match list(&mirror, &commit, &s.path) {
-            Ok(l) => (commit, Some(l)),
-            Err(_) => {
+        // Walked before: the commit is in the mirror and `path` a folder of it (neither can
+        // change), and its files are read from the cache or by `materialize`.
+        Some(commit) if pinned_before(&mirror, &commit, &s.path) => {
+            return Ok(Pinned {
+                source: s.clone(),
+                commit,
+                mirror,
+                listing: None,
+            });
+        }
+        Some(commit) => match walk(s, &mirror, &commit)? {
+            Some(l) => (commit, Some(l)),
+            None => {
                 fetch_locked(s, &commit, &mirror, mode, lock_path)?;
                 (commit, None)
             }
@@ -875,16 +896,23 @@ fn pin_one(
                 mode,
                 &format!(" (or `{}`)", mode.update_command(None)),
             )?;
-            (resolve_or_fail(s, &mirror, mode)?, None)
+            // One reader resolves the rev and walks its tree.
+            let mut reader = objects::ObjectReader::open(Some(&mirror))?;
+            let commit = resolve_or_fail(s, &mirror, mode, &mut reader)?;
+            let listing = reader
+                .walk(&commit, &s.path)
+                .with_context(|| format!("source `{}` at commit {commit}", s.name))?
+                .ok_or_else(|| no_folder(s, &commit))?;
+            (commit, Some(listing))
         }
     };
+    // A `path` the commit lacks fails here, before the lock is written.
     let listing = match listing {
         Some(l) => l,
-        None => list(&mirror, &commit, &s.path).map_err(|_| no_folder(s, &commit))?,
+        None => walk(s, &mirror, &commit)?.ok_or_else(|| no_folder(s, &commit))?,
     };
-    // A `path` the commit lacks fails here, before the lock is written.
-    if !s.path.is_empty() && !lists_folder(&listing, &s.path) {
-        return Err(no_folder(s, &commit));
+    if let Some(d) = memo::folder(&mirror, "pinned") {
+        memo::remember(&d, &pinned_key(&commit, &s.path), b"");
     }
     Ok(Pinned {
         source: s.clone(),
@@ -892,6 +920,28 @@ fn pin_one(
         mirror,
         listing: Some(listing),
     })
+}
+
+/// The key of the record that `commit` is in a mirror with the folder `path`.
+fn pinned_key(commit: &str, path: &str) -> String {
+    format!("pinned\0{commit}\0{path}")
+}
+
+/// Whether a walk found `commit` in `mirror` with the folder `path` before (no git runs).
+fn pinned_before(mirror: &Path, commit: &str, path: &str) -> bool {
+    memo::folder(mirror, "pinned").is_some_and(|d| memo::has(&d, &pinned_key(commit, path)))
+}
+
+/// The files of `commit` below the source's `path`, walked in `mirror` with one
+/// [`objects::ObjectReader`]; `None` when the mirror lacks the commit or `path` is no folder
+/// of it; an error when the tree is past the walk's bounds.
+fn walk(s: &Source, mirror: &Path, commit: &str) -> Result<Option<Vec<objects::TreeEntry>>> {
+    if !is_mirror(mirror) {
+        return Ok(None);
+    }
+    objects::ObjectReader::open(Some(mirror))?
+        .walk(commit, &s.path)
+        .with_context(|| format!("source `{}` at commit {commit}", s.name))
 }
 
 /// The locked commit of a source the cache lacks, fetched (refused with `--offline`).
@@ -929,8 +979,13 @@ fn fetch_locked(
 }
 
 /// The commit of a source's `rev` in its (refreshed) mirror, or why there is none.
-fn resolve_or_fail(s: &Source, mirror: &Path, mode: &Mode) -> Result<String> {
-    if let Some(c) = resolve(mirror, s.rev.as_deref())? {
+fn resolve_or_fail(
+    s: &Source,
+    mirror: &Path,
+    mode: &Mode,
+    reader: &mut objects::ObjectReader,
+) -> Result<String> {
+    if let Some(c) = resolve(reader, s.rev.as_deref())? {
         return Ok(c);
     }
     match s.rev.as_ref().filter(|r| !default_branch(Some(r))) {
@@ -948,38 +1003,6 @@ fn resolve_or_fail(s: &Source, mirror: &Path, mode: &Mode) -> Result<String> {
             s.git
         ),
     }
-}
-
-/// `git ls-tree -r -z --long` of `commit` (below `path` when not empty) in `mirror`: fails
-/// when the mirror lacks the commit (or it is no commit).
-fn list(mirror: &Path, commit: &str, path: &str) -> Result<Vec<u8>> {
-    if !is_mirror(mirror) {
-        bail!("no mirror");
-    }
-    // `commit` is 40 hex digits (the lock's are checked, the others resolved): never an option.
-    let mut c = git_command(Some(mirror));
-    c.args([
-        "ls-tree",
-        "-r",
-        "-z",
-        "--long",
-        "--full-tree",
-        "--end-of-options",
-    ])
-    .arg(format!("{commit}^{{commit}}"));
-    if !path.is_empty() {
-        c.arg("--").arg(path);
-    }
-    Ok(run_ok(c, |why| why)?.stdout)
-}
-
-/// Whether a listing of [`list`] below `path` holds anything inside the folder `path` (not
-/// only a file named `path`).
-fn lists_folder(listing: &[u8], path: &str) -> bool {
-    let prefix = format!("\t{path}/");
-    listing
-        .split(|b| *b == 0)
-        .any(|e| String::from_utf8_lossy(e).contains(&prefix))
 }
 
 /// Fetches a source into its mirror; with `--offline`, only checks that the mirror is cached
@@ -1007,7 +1030,8 @@ pub fn pin_rev(s: &Source, rev: &str, mode: &Mode) -> Result<Pinned> {
     s.rev = Some(rev.to_string());
     let mirror = mirror_path(&cache_dir(mode)?, &s);
     refresh(&s, &mirror, mode, "")?;
-    let Some(commit) = resolve(&mirror, Some(rev))? else {
+    let mut reader = objects::ObjectReader::open(Some(&mirror))?;
+    let Some(commit) = resolve(&mut reader, Some(rev))? else {
         bail!(
             "source `{}`: no branch, tag or commit `{rev}` in `{}`{}; list them with `{}`",
             s.name,
@@ -1101,195 +1125,279 @@ pub fn materialize(
     Ok(Materialized { dir, notes })
 }
 
-/// `git ls-tree` of a pinned source, unless pinning listed it already.
-fn listing_of(p: &Pinned) -> Result<std::borrow::Cow<'_, [u8]>> {
-    if let Some(l) = &p.listing {
-        return Ok(std::borrow::Cow::Borrowed(l));
-    }
-    let s = &p.source;
-    list(&p.mirror, &p.commit, &s.path)
-        .map(std::borrow::Cow::Owned)
-        .map_err(|why| {
-            anyhow::anyhow!(
-                "source `{}`: cannot list commit {} ({why}); delete the cache `{}` and build again",
-                s.name,
-                p.commit,
-                p.mirror.display()
-            )
-        })
+/// The version of what [`materialize_one`] keeps of a source in the cache.
+const FILES_FORMAT: u32 = 1;
+
+/// The key of a source's files kept in the cache: its commit and everything else that changes
+/// what is read of it (its name and `path`, the size limit, the code selection, rtcdoc's
+/// version).
+fn files_key(p: &Pinned, max_file_size: u64, implementation: &code::Selection) -> String {
+    format!(
+        "files {FILES_FORMAT} {}\0{}\0{}\0{}\0{max_file_size}\0{}\0{}",
+        env!("CARGO_PKG_VERSION"),
+        p.commit,
+        p.source.name,
+        p.source.path,
+        implementation.enabled,
+        implementation.named.join("\0")
+    )
 }
 
 /// The files of one pinned source written below `dir/<name>`; the notes on what was not read.
+/// Taken from the cache when an earlier build read them at this commit with these settings (no
+/// git runs); else one [`objects::ObjectReader`] of its mirror walks the tree (unless pinning
+/// did) and reads the files and the source code, and they are kept in the cache.
 fn materialize_one(
     p: &Pinned,
     dir: &Path,
     max_file_size: u64,
     implementation: &code::Selection,
 ) -> Result<Vec<Diagnostic>> {
-    let mut notes = Vec::new();
-    {
-        let s = &p.source;
-        let root = dir.join(&s.name);
-        std::fs::create_dir_all(&root)?;
-        let listing = listing_of(p)?;
-        let mut blobs = Vec::new();
-        let mut code = Vec::new();
-        let mut any = false;
-        for entry in listing.split(|b| *b == 0).filter(|e| !e.is_empty()) {
-            let entry = String::from_utf8_lossy(entry);
-            let Some((meta, rel)) = entry.split_once('\t') else {
-                continue;
-            };
-            any = true;
-            let mut meta = meta.split_whitespace();
-            let (mode, ty, sha, size) = (meta.next(), meta.next(), meta.next(), meta.next());
-            let shown = format!("{}/{rel}", s.name);
-            if !safe(rel) {
-                continue;
-            }
-            // A submodule is noted whatever its name (a folder of another repository); a link
-            // when rtcdoc would read a file of its name or when its name has no extension (it
-            // may stand for a folder of profiles); a file only when rtcdoc reads its name.
-            match (mode, ty) {
-                (Some("120000"), _) if !wanted(rel) && folder_shaped(rel) => notes.push(
-                    Diagnostic::info(
-                        codes::SOURCE_SKIPPED,
-                        &shown,
-                        "a symbolic link without an extension (it may stand for a folder); not followed, nothing behind it is read (as in a directory)",
-                    )
-                    .with_hint("commit the folder itself instead of a link, or add the repository it belongs to as a [[source]] of its own"),
-                ),
-                // Source code, for the implementation check (`code::write` picks it).
-                (Some("100644" | "100755"), Some("blob"))
-                    if !wanted(rel) && implementation.enabled && code::is_source_file(rel) =>
-                {
-                    if let Some(sha) = sha {
-                        code.push((sha.to_string(), rel.to_string()));
-                    }
-                }
-                _ if ty != Some("commit") && !wanted(rel) => {}
-                (Some("100644" | "100755"), Some("blob")) => {
-                    if let (Some(sha), Some(_)) = (sha, size.and_then(|n| n.parse::<u64>().ok())) {
-                        blobs.push((sha.to_string(), rel.to_string()));
-                    }
-                }
-                (Some("120000"), _) => notes.push(
-                    Diagnostic::info(
-                        codes::SOURCE_SKIPPED,
-                        &shown,
-                        "a symbolic link in the repository; not followed (as in a directory)",
-                    )
-                    .with_hint("commit the file itself instead of a link"),
-                ),
-                (_, Some("commit")) => notes.push(
-                    Diagnostic::info(
-                        codes::SOURCE_SKIPPED,
-                        &shown,
-                        "a submodule; its files are not read",
-                    )
-                    .with_hint("add the submodule's repository as a [[source]] of its own"),
-                ),
-                _ => {}
-            }
+    let s = &p.source;
+    let root = dir.join(&s.name);
+    std::fs::create_dir_all(&root)?;
+    let kept = memo::folder(&p.mirror, "files");
+    let key = files_key(p, max_file_size, implementation);
+    if let Some(notes) = kept.as_deref().and_then(|d| memo::recall(d, &key)) {
+        if let Some(notes) = unpack(&notes, &root)? {
+            return Ok(notes);
         }
-        if !any && !s.path.is_empty() {
-            return Err(no_folder(s, &p.commit));
+    }
+    let mut reader = objects::ObjectReader::open(Some(&p.mirror))?;
+    let walked;
+    let listing = match &p.listing {
+        Some(l) => l,
+        None => {
+            walked = reader
+                .walk(&p.commit, &s.path)
+                .with_context(|| format!("source `{}` at commit {}", s.name, p.commit))?
+                .ok_or_else(|| {
+                    anyhow::anyhow!(
+                        "source `{}`: the cache lacks commit {} or its folder `{}`; delete the cache `{}` and build again",
+                        s.name,
+                        p.commit,
+                        s.path,
+                        p.mirror.display()
+                    )
+                })?;
+            &walked
         }
-        write_blobs(Some(&p.mirror), &blobs, &root, max_file_size).with_context(|| {
-            format!("source `{}`: cannot read its files from the cache", s.name)
-        })?;
-        let profiles: Vec<(String, String)> = blobs
-            .iter()
-            .filter(|(_, rel)| crate::walk::is_specification_file(Path::new(rel)))
-            .cloned()
-            .collect();
-        code::write(
-            Some(&p.mirror),
-            &profiles,
-            code,
-            &root,
-            implementation,
-            max_file_size,
+    };
+    let (blobs, code, notes) = select(s, listing, implementation);
+    let mut sink = Keeping {
+        dir: Dir(&root),
+        memo: kept.as_deref().and_then(|d| memo::Writer::new(d, &key)),
+    };
+    write_blobs(&mut reader, &blobs, &mut sink, max_file_size)
+        .with_context(|| format!("source `{}`: cannot read its files from the cache", s.name))?;
+    let profiles: Vec<(String, String)> = blobs
+        .iter()
+        .filter(|(_, rel)| crate::walk::is_specification_file(Path::new(rel)))
+        .cloned()
+        .collect();
+    code::write(
+        &mut reader,
+        &profiles,
+        code,
+        &mut sink,
+        implementation,
+        max_file_size,
+    )
+    .with_context(|| {
+        format!(
+            "source `{}`: cannot read its source code from the cache",
+            s.name
         )
-        .with_context(|| {
-            format!(
-                "source `{}`: cannot read its source code from the cache",
-                s.name
-            )
-        })?;
+    })?;
+    if let Some(mut m) = sink.memo {
+        for n in &notes {
+            m.write(b"N");
+            for f in [&n.file, &n.message, n.hint.as_deref().unwrap_or_default()] {
+                m.write(&(f.len() as u64).to_le_bytes());
+                m.write(f.as_bytes());
+            }
+        }
+        m.finish();
     }
     Ok(notes)
 }
 
-/// Writes the blobs `(sha, path)` of the repository at `git_dir` (the current one when `None`)
-/// below `dest` with one `git cat-file --batch`, each cut at `max + 1` bytes (the walk then
-/// reports a file over its limit as too large). Used for sources and for `diff REV:PATH`.
+/// A source's files kept in the cache ([`materialize_one`]) written below `root`: their notes,
+/// or `None` when the entry does not read as one (it is then read from git again).
+fn unpack(kept: &[u8], root: &Path) -> Result<Option<Vec<Diagnostic>>> {
+    let mut files = Vec::new();
+    let mut notes = Vec::new();
+    let mut rest = kept;
+    while let Some((&tag, after)) = rest.split_first() {
+        rest = after;
+        let mut field = || memo::take_field(&mut rest);
+        match tag {
+            b'F' => {
+                let (Some(rel), Some(bytes)) = (field(), field()) else {
+                    return Ok(None);
+                };
+                match std::str::from_utf8(rel) {
+                    Ok(rel) if safe(rel) => files.push((rel, bytes)),
+                    _ => return Ok(None),
+                }
+            }
+            b'N' => {
+                let (Some(file), Some(message), Some(hint)) = (field(), field(), field()) else {
+                    return Ok(None);
+                };
+                let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+                let mut d = Diagnostic::info(codes::SOURCE_SKIPPED, &text(file), text(message));
+                if !hint.is_empty() {
+                    d = d.with_hint(text(hint));
+                }
+                notes.push(d);
+            }
+            _ => return Ok(None),
+        }
+    }
+    let mut dir = Dir(root);
+    for (rel, bytes) in files {
+        dir.put(rel, bytes)?;
+    }
+    Ok(Some(notes))
+}
+
+/// A folder that the files go to, and the cache entry they are kept in too.
+struct Keeping<'a> {
+    dir: Dir<'a>,
+    memo: Option<memo::Writer>,
+}
+
+impl Sink for Keeping<'_> {
+    fn put(&mut self, rel: &str, bytes: &[u8]) -> Result<()> {
+        self.dir.put(rel, bytes)?;
+        if let Some(m) = &mut self.memo {
+            m.write(b"F");
+            for f in [rel.as_bytes(), bytes] {
+                m.write(&(f.len() as u64).to_le_bytes());
+                m.write(f);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What to read of a source's files: the blobs rtcdoc reads `(oid, path)`, the source code for
+/// the implementation check, and the notes on the links and submodules not followed.
+#[allow(clippy::type_complexity)]
+fn select(
+    s: &Source,
+    listing: &[objects::TreeEntry],
+    implementation: &code::Selection,
+) -> (
+    Vec<(String, String)>,
+    Vec<(String, String)>,
+    Vec<Diagnostic>,
+) {
+    let (mut blobs, mut code, mut notes) = (Vec::new(), Vec::new(), Vec::new());
+    for e in listing {
+        let rel = e.path.as_str();
+        let (mode, ty) = (e.mode.as_str(), e.kind);
+        let shown = format!("{}/{rel}", s.name);
+        if !safe(rel) {
+            continue;
+        }
+        // A submodule is noted whatever its name (a folder of another repository); a link
+        // when rtcdoc would read a file of its name or when its name has no extension (it
+        // may stand for a folder of profiles); a file only when rtcdoc reads its name.
+        match (mode, ty) {
+            ("120000", _) if !wanted(rel) && folder_shaped(rel) => notes.push(
+                Diagnostic::info(
+                    codes::SOURCE_SKIPPED,
+                    &shown,
+                    "a symbolic link without an extension (it may stand for a folder); not followed, nothing behind it is read (as in a directory)",
+                )
+                .with_hint("commit the folder itself instead of a link, or add the repository it belongs to as a [[source]] of its own"),
+            ),
+            // Source code, for the implementation check (`code::write` picks it).
+            ("100644" | "100755", "blob")
+                if !wanted(rel) && implementation.enabled && code::is_source_file(rel) =>
+            {
+                code.push((e.oid.clone(), rel.to_string()));
+            }
+            _ if ty != "commit" && !wanted(rel) => {}
+            ("100644" | "100755", "blob") => blobs.push((e.oid.clone(), rel.to_string())),
+            ("120000", _) => notes.push(
+                Diagnostic::info(
+                    codes::SOURCE_SKIPPED,
+                    &shown,
+                    "a symbolic link in the repository; not followed (as in a directory)",
+                )
+                .with_hint("commit the file itself instead of a link"),
+            ),
+            (_, "commit") => notes.push(
+                Diagnostic::info(
+                    codes::SOURCE_SKIPPED,
+                    &shown,
+                    "a submodule; its files are not read",
+                )
+                .with_hint("add the submodule's repository as a [[source]] of its own"),
+            ),
+            _ => {}
+        }
+    }
+    (blobs, code, notes)
+}
+
+/// Where the files read out of git go: a folder, or a folder and a cache entry.
+pub(crate) trait Sink {
+    /// Keeps the file `rel` (a safe relative path) with `bytes`.
+    fn put(&mut self, rel: &str, bytes: &[u8]) -> Result<()>;
+}
+
+/// The files written below a folder.
+pub(crate) struct Dir<'a>(pub &'a Path);
+
+impl Sink for Dir<'_> {
+    fn put(&mut self, rel: &str, bytes: &[u8]) -> Result<()> {
+        let path = self.0.join(rel);
+        if let Some(parent) = path.parent() {
+            std::fs::create_dir_all(parent)?;
+        }
+        std::fs::write(&path, bytes)?;
+        Ok(())
+    }
+}
+
+/// Writes the blobs `(oid, path)` that `reader` reads into `sink`, each cut at `max + 1` bytes
+/// (the walk then reports a file over its limit as too large). Used for sources and for
+/// `diff REV:PATH`.
 pub(crate) fn write_blobs(
-    git_dir: Option<&Path>,
+    reader: &mut objects::ObjectReader,
     files: &[(String, String)],
-    dest: &Path,
+    sink: &mut dyn Sink,
     max: u64,
 ) -> Result<()> {
-    write_blobs_where(git_dir, files, dest, max, &|_| true).map(|_| ())
+    write_blobs_where(reader, files, sink, max, &|_| true).map(|_| ())
 }
 
 /// [`write_blobs`], of the blobs whose (cut) content `accept` takes; the paths written.
 pub(crate) fn write_blobs_where(
-    git_dir: Option<&Path>,
+    reader: &mut objects::ObjectReader,
     files: &[(String, String)],
-    dest: &Path,
+    sink: &mut dyn Sink,
     max: u64,
     accept: &dyn Fn(&[u8]) -> bool,
 ) -> Result<Vec<String>> {
     let mut written = Vec::new();
-    if files.is_empty() {
-        return Ok(written);
-    }
-    let mut c = git_command(git_dir);
-    c.args(["cat-file", "--batch"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null());
-    let mut child = c.spawn().context("cannot run `git cat-file`")?;
-    let mut stdin = child.stdin.take().context("git cat-file: no stdin")?;
-    let request: String = files.iter().map(|(sha, _)| format!("{sha}\n")).collect();
-    // Written from another thread: git answers while it reads.
-    let writer = std::thread::spawn(move || stdin.write_all(request.as_bytes()));
-    let mut stdout =
-        std::io::BufReader::new(child.stdout.take().context("git cat-file: no stdout")?);
-    let result = (|| -> Result<()> {
-        for (sha, rel) in files {
-            let mut header = String::new();
-            stdout.read_line(&mut header)?;
-            let mut parts = header.split_whitespace();
-            let (got, size) = (
-                parts.next(),
-                parts.nth(1).and_then(|s| s.parse::<u64>().ok()),
-            );
-            let Some(size) = size.filter(|_| got == Some(sha.as_str())) else {
-                bail!("git cat-file answered `{}` for {rel}", header.trim());
-            };
-            let keep = size.min(max.saturating_add(1));
-            let mut body = Vec::with_capacity(usize::try_from(keep.min(1 << 24)).unwrap_or(0));
-            (&mut stdout).take(keep).read_to_end(&mut body)?;
-            std::io::copy(&mut (&mut stdout).take(size - keep), &mut std::io::sink())?;
-            let mut newline = [0u8; 1];
-            stdout.read_exact(&mut newline)?;
-            if !accept(&body) {
-                continue;
-            }
-            let path = dest.join(rel);
-            if let Some(parent) = path.parent() {
-                std::fs::create_dir_all(parent)?;
-            }
-            std::fs::write(&path, &body)?;
+    let names: Vec<&str> = files.iter().map(|(oid, _)| oid.as_str()).collect();
+    reader.read_each(&names, max, &mut |i, o| {
+        let rel = &files[i].1;
+        let Some(o) = o.filter(|o| o.kind == "blob") else {
+            bail!("git cat-file has no blob {} for {rel}", files[i].0);
+        };
+        if accept(&o.data) {
+            sink.put(rel, &o.data)?;
             written.push(rel.clone());
         }
         Ok(())
-    })();
-    let _ = writer.join();
-    let _ = child.wait();
-    result.map(|_| written)
+    })?;
+    Ok(written)
 }
 
 #[cfg(test)]

@@ -1165,3 +1165,210 @@ fn jobs_change_nothing_of_the_output_or_the_lock() {
     let (code, err) = p.run(&["build", "-q", "-j", "0"]);
     assert_eq!(code, 2, "{err}");
 }
+
+/// `rtcdoc ARGS --cache-dir CACHE` in the project, with `PATH` starting with `bin` (a `git`
+/// there stands for the real one).
+#[cfg(unix)]
+fn run_with_path(p: &Project, bin: &Path, args: &[&str]) -> (i32, String) {
+    run_with_path_and_cache(p, bin, args, &p.cache)
+}
+
+/// [`run_with_path`] with `--cache-dir cache` (relative to the project, say).
+#[cfg(unix)]
+fn run_with_path_and_cache(p: &Project, bin: &Path, args: &[&str], cache: &str) -> (i32, String) {
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let mut all: Vec<&str> = args.to_vec();
+    all.extend(["--cache-dir", cache]);
+    let o = Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args(&all)
+        .current_dir(&p.proj)
+        .env("NO_COLOR", "1")
+        .env("GIT_CEILING_DIRECTORIES", &p.root)
+        .env("PATH", path)
+        .output_within(common::COMMAND_LIMIT)
+        .expect("run rtcdoc");
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// A folder with a `git` that records its arguments in `log` and then runs the real git.
+#[cfg(unix)]
+fn counting_git(root: &Path, log: &Path) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let real = String::from_utf8(
+        Command::new("sh")
+            .args(["-c", "command -v git"])
+            .output()
+            .unwrap()
+            .stdout,
+    )
+    .unwrap();
+    let bin = root.join("bin");
+    std::fs::create_dir_all(&bin).unwrap();
+    let script = bin.join("git");
+    std::fs::write(
+        &script,
+        format!(
+            "#!/bin/sh\necho \"$*\" >> '{}'\nexec '{}' \"$@\"\n",
+            log.display(),
+            real.trim()
+        ),
+    )
+    .unwrap();
+    std::fs::set_permissions(&script, std::fs::Permissions::from_mode(0o755)).unwrap();
+    bin
+}
+
+/// The git commands of `log` (one a line) that read a mirror of the cache.
+#[cfg(unix)]
+fn cache_commands(p: &Project, log: &Path) -> Vec<String> {
+    std::fs::read_to_string(log)
+        .unwrap_or_default()
+        .lines()
+        .filter(|l| l.contains(&p.cache))
+        .map(str::to_string)
+        .collect()
+}
+
+#[test]
+#[cfg(unix)]
+fn a_warm_build_runs_no_git_on_the_cache_and_a_damaged_entry_is_read_again() {
+    let p = Project::new();
+    let (nav, _, cam, _) = two_repos(&p);
+    // A second commit of a profile: a history of two versions.
+    commit(
+        &cam,
+        &[(
+            "Camera/RTC.xml",
+            xml_profile("Camera", &[("DataInPort", "in", "RTC::TimedLong")]),
+        )],
+        None,
+    );
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\npath = \"comps\"\n\n[[source]]\ngit = \"{}\"\n",
+        url(&nav),
+        url(&cam)
+    ));
+    let log = p.root.join("git.log");
+    let bin = counting_git(&p.root, &log);
+    let (code, err) = run_with_path(&p, &bin, &["build", "-q", "-o", "cold"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        !cache_commands(&p, &log).is_empty(),
+        "the cold build reads the mirrors"
+    );
+    let cold = tree(&p.proj.join("cold"));
+    let _ = std::fs::remove_file(&log);
+    let (code, err) = run_with_path(&p, &bin, &["build", "-q", "-o", "warm"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(cache_commands(&p, &log), Vec::<String>::new());
+    assert!(cold == tree(&p.proj.join("warm")), "the warm site differs");
+    // Every kept answer damaged (cut, or a byte flipped): not trusted, read from git again,
+    // the same site, and kept whole again.
+    let mut damaged = 0;
+    for m in std::fs::read_dir(&p.cache).unwrap() {
+        let kept = m.unwrap().path().join("rtcdoc");
+        for kind in ["files", "answers", "blobs", "pinned"] {
+            for f in std::fs::read_dir(kept.join(kind)).into_iter().flatten() {
+                let f = f.unwrap().path();
+                let mut bytes = std::fs::read(&f).unwrap();
+                if damaged % 2 == 0 {
+                    bytes.truncate(bytes.len() / 2);
+                } else if let Some(b) = bytes.get_mut(20) {
+                    *b ^= 0x20;
+                }
+                std::fs::write(&f, bytes).unwrap();
+                damaged += 1;
+            }
+        }
+    }
+    assert!(damaged >= 4, "{damaged} entries");
+    let _ = std::fs::remove_file(&log);
+    let (code, err) = run_with_path(&p, &bin, &["build", "-q", "-o", "again"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        !cache_commands(&p, &log).is_empty(),
+        "damaged entries are read again"
+    );
+    assert!(
+        cold == tree(&p.proj.join("again")),
+        "a damaged entry changed the site"
+    );
+    let _ = std::fs::remove_file(&log);
+    let (code, err) = run_with_path(&p, &bin, &["build", "-q", "-o", "warm2"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(cache_commands(&p, &log), Vec::<String>::new());
+    // The same cache named another way (relative to the project): the same answers.
+    let (code, err) = run_with_path_and_cache(&p, &bin, &["build", "-q", "-o", "rel"], "../cache");
+    assert_eq!(code, 0, "{err}");
+    let lines = std::fs::read_to_string(&log).unwrap_or_default();
+    assert!(!lines.contains("--git-dir"), "{lines}");
+    // A setting that changes what is read (the size limit) is read from git again.
+    let (code, err) = run_with_path(
+        &p,
+        &bin,
+        &["build", "-q", "-o", "small", "--max-file-size", "100"],
+    );
+    assert_ne!(
+        cache_commands(&p, &log),
+        Vec::<String>::new(),
+        "{code} {err}"
+    );
+    // No git at all on the PATH: the warm build needs none.
+    let empty = p.root.join("nogit");
+    std::fs::create_dir_all(&empty).unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_rtcdoc"))
+        .args([
+            "build",
+            "-q",
+            "-o",
+            "nogit",
+            "--offline",
+            "--cache-dir",
+            &p.cache,
+        ])
+        .current_dir(&p.proj)
+        .env("NO_COLOR", "1")
+        .env("PATH", &empty)
+        .output_within(common::COMMAND_LIMIT)
+        .expect("run rtcdoc");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        cold == tree(&p.proj.join("nogit")),
+        "the site without git differs"
+    );
+}
+
+#[test]
+fn a_tree_deeper_than_the_walk_reads_is_named() {
+    let p = Project::new();
+    let repo = p.root.join("deep");
+    let deep = vec!["d"; 258].join("/");
+    commit(
+        &repo,
+        &[
+            ("A/RTC.xml", xml_profile("A", &[])),
+            (&format!("{deep}/RTC.xml"), xml_profile("Deep", &[])),
+        ],
+        None,
+    );
+    p.config(&format!("[[source]]\ngit = \"{}\"\n", url(&repo)));
+    let (code, err) = p.run(&["build", "-q"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("source `deep`"), "{err}");
+    assert!(err.contains("deeper than 256 levels"), "{err}");
+    assert!(!p.proj.join("rtcdoc.lock").exists(), "a lock was written");
+    // Its folder of profiles as `path`: read.
+    p.config(&format!(
+        "[[source]]\ngit = \"{}\"\npath = \"A\"\n",
+        url(&repo)
+    ));
+    let (code, err) = p.run(&["build", "-q"]);
+    assert_eq!(code, 0, "{err}");
+}
