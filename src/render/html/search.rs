@@ -736,6 +736,47 @@ fn write_ports_with(
     shard: usize,
     emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
 ) -> anyhow::Result<usize> {
+    let (items, fed) = port_items(catalog);
+    let total: usize = items.iter().map(|(_, j, _)| j.len() + 1).sum();
+    let files = total.div_ceil(shard.max(1)).max(1);
+    let mut buckets: Vec<[String; 2]> = vec![Default::default(); files];
+    for (data, json, keys) in &items {
+        let mut at: Vec<usize> = keys.iter().map(|k| port_bucket(k, files)).collect();
+        at.sort_unstable();
+        at.dedup();
+        for b in at {
+            let list = &mut buckets[b][usize::from(!data)];
+            if !list.is_empty() {
+                list.push(',');
+            }
+            list.push_str(json);
+        }
+    }
+    // Every key, once: a query whose key is none of them needs no port file.
+    let mut all_keys: Vec<&str> = items
+        .iter()
+        .flat_map(|(_, _, keys)| keys.iter().map(String::as_str))
+        .collect();
+    all_keys.sort_unstable_by(|a, b| utf16_cmp(a, b));
+    all_keys.dedup();
+    emit(
+        "search/k0.js",
+        shard_js("k", 0, &serde_json::json!(all_keys)),
+    )?;
+    for (n, [d, i]) in buckets.iter().enumerate() {
+        let text = format!("RTCDOC_SHARD(\"p\",{n},{{\"d\":[{d}],\"i\":[{i}]}});\n");
+        emit(&format!("search/p{n}.js"), text.into_bytes())?;
+    }
+    write_feeds(catalog, &items, fed, files, emit)?;
+    Ok(files)
+}
+
+/// A type of the port files: whether it is a data type, its JSON text, its keys.
+type PortItem = (bool, String, Vec<String>);
+
+/// Each type with ports (data types, then interfaces), and each typed in-port `(component,
+/// port, its type's item)`.
+fn port_items(catalog: &Catalog) -> (Vec<PortItem>, Vec<(ComponentIx, usize, usize)>) {
     // The name itself is matched as a spelling by `search.js`: not repeated.
     let spellings = |name: &str, met: &[String]| {
         let mut all: Vec<String> = met.iter().filter(|s| *s != name).cloned().collect();
@@ -759,7 +800,7 @@ fn write_ports_with(
     };
     // Each type as its JSON text and its keys; the in-ports of each data type, to list them
     // per component for `feeds:`.
-    let mut items: Vec<(bool, String, Vec<String>)> = Vec::new();
+    let mut items: Vec<PortItem> = Vec::new();
     let mut fed: Vec<(ComponentIx, usize, usize)> = Vec::new();
     for t in catalog
         .data_types
@@ -820,36 +861,18 @@ fn write_ports_with(
         );
         items.push((false, json, keys));
     }
-    let total: usize = items.iter().map(|(_, j, _)| j.len() + 1).sum();
-    let files = total.div_ceil(shard.max(1)).max(1);
-    let mut buckets: Vec<[String; 2]> = vec![Default::default(); files];
-    for (data, json, keys) in &items {
-        let mut at: Vec<usize> = keys.iter().map(|k| port_bucket(k, files)).collect();
-        at.sort_unstable();
-        at.dedup();
-        for b in at {
-            let list = &mut buckets[b][usize::from(!data)];
-            if !list.is_empty() {
-                list.push(',');
-            }
-            list.push_str(json);
-        }
-    }
-    // Every key, once: a query whose key is none of them needs no port file.
-    let mut all_keys: Vec<&str> = items
-        .iter()
-        .flat_map(|(_, _, keys)| keys.iter().map(String::as_str))
-        .collect();
-    all_keys.sort_unstable_by(|a, b| utf16_cmp(a, b));
-    all_keys.dedup();
-    emit(
-        "search/k0.js",
-        shard_js("k", 0, &serde_json::json!(all_keys)),
-    )?;
-    for (n, [d, i]) in buckets.iter().enumerate() {
-        let text = format!("RTCDOC_SHARD(\"p\",{n},{{\"d\":[{d}],\"i\":[{i}]}});\n");
-        emit(&format!("search/p{n}.js"), text.into_bytes())?;
-    }
+    (items, fed)
+}
+
+/// `search/f<N>.js`: each component's typed in-ports (`fed`, from [`port_items`]), in port
+/// order, [`FEEDS_BLOCK`] components per file, each port with the port file of its type's name.
+fn write_feeds(
+    catalog: &Catalog,
+    items: &[PortItem],
+    mut fed: Vec<(ComponentIx, usize, usize)>,
+    files: usize,
+    emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
     // feeds: each component's typed in-ports, in port order, a block of components per file.
     fed.sort_unstable();
     let mut per: Vec<Vec<serde_json::Value>> = vec![Vec::new(); catalog.components.len()];
@@ -869,7 +892,7 @@ fn write_ports_with(
             shard_js("f", n, &serde_json::json!(block)),
         )?;
     }
-    Ok(files)
+    Ok(())
 }
 
 /// Component entries of the search index made and written per batch by [`index_js`].
