@@ -1590,15 +1590,7 @@ impl Catalog {
                     if others.is_empty() {
                         continue;
                     }
-                    let mut list = others
-                        .iter()
-                        .take(3)
-                        .copied()
-                        .collect::<Vec<_>>()
-                        .join(", ");
-                    if others.len() > 3 {
-                        list.push_str(&format!(" and {} more", others.len() - 3));
-                    }
+                    let list = crate::diagnostic::a_few(&others);
                     diagnostics.push(
                         Diagnostic::warning(
                             codes::DUPLICATE_ID,

@@ -317,8 +317,46 @@ pub mod codes {
     pub const IDL_UNRESOLVED: &str = "RTC029";
 }
 
+/// How many names a message lists before `and N more` ([`a_few`]).
+pub const A_FEW: usize = 3;
+
+/// `a, b, c and N more`: the first [`A_FEW`] of `names`, and how many others there are (a
+/// message naming the other copies of something copied hundreds of times stays short).
+pub fn a_few<S: AsRef<str>>(names: &[S]) -> String {
+    a_few_of(names, names.len())
+}
+
+/// [`a_few`] of a list of `total` names of which `names` are the first.
+pub fn a_few_of<S: AsRef<str>>(names: &[S], total: usize) -> String {
+    let shown = names.len().min(A_FEW);
+    let mut list = names[..shown]
+        .iter()
+        .map(AsRef::as_ref)
+        .collect::<Vec<_>>()
+        .join(", ");
+    if total > shown {
+        list.push_str(&format!(" and {} more", total - shown));
+    }
+    list
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_few_names_and_how_many_more() {
+        assert_eq!(super::a_few::<&str>(&[]), "");
+        assert_eq!(super::a_few(&["a", "b"]), "a, b");
+        assert_eq!(super::a_few(&["a", "b", "c"]), "a, b, c");
+        assert_eq!(
+            super::a_few(&["a", "b", "c", "d", "e"]),
+            "a, b, c and 2 more"
+        );
+        assert_eq!(
+            super::a_few_of(&["a", "b", "c", "d"], 999),
+            "a, b, c and 996 more"
+        );
+    }
+
     use super::*;
 
     #[test]

@@ -138,11 +138,15 @@ impl Catalog {
             }
             for &i in idx {
                 let c = &self.components[i];
+                // A few of the others, not all: a component copied into hundreds of sources
+                // would make hundreds of messages each naming hundreds.
                 let others: Vec<String> = idx
                     .iter()
                     .filter(|&&j| j != i)
+                    .take(crate::diagnostic::A_FEW + 1)
                     .map(|&j| label(&self.components[j]))
                     .collect();
+                let more = (idx.len() - 1).saturating_sub(others.len());
                 recoded.push(&c.source);
                 found.push(
                     Diagnostic::warning(
@@ -151,7 +155,7 @@ impl Catalog {
                         format!(
                             "component id `{id}` of {} is also declared by {}",
                             label(c),
-                            others.join(", ")
+                            crate::diagnostic::a_few_of(&others, others.len() + more)
                         ),
                     )
                     .at(c.profile.pos)

@@ -842,6 +842,31 @@ fn the_same_component_id_in_two_sources_names_both_and_keeps_both() {
     assert!(!err.contains("RTC010"), "{err}");
 }
 
+/// A component copied into many sources: each finding names three of the others and counts
+/// the rest (it named every other, so the findings grew with the square of the copies).
+#[test]
+fn a_component_id_in_many_sources_names_a_few_of_the_others() {
+    let p = Project::new();
+    let mut config = String::new();
+    for n in ["a", "b", "c", "d", "e", "f"] {
+        let repo = p.root.join(n);
+        commit(&repo, &[("X/RTC.xml", xml_profile("Same", &[]))], None);
+        config.push_str(&format!("[[source]]\ngit = \"{}\"\n\n", url(&repo)));
+    }
+    p.config(&config);
+    let (code, err) = p.run(&["build", "-f", "json"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("a/X/RTC.xml:2:1: warning[RTC014]: component id `RTC:Test:Cat:Same:1.0.0` of source `a` (`a/X/RTC.xml`) is also declared by source `b` (`b/X/RTC.xml`), source `c` (`c/X/RTC.xml`), source `d` (`d/X/RTC.xml`) and 2 more"),
+        "{err}"
+    );
+    assert!(
+        err.contains("f/X/RTC.xml:2:1: warning[RTC014]: component id `RTC:Test:Cat:Same:1.0.0` of source `f` (`f/X/RTC.xml`) is also declared by source `a` (`a/X/RTC.xml`), source `b` (`b/X/RTC.xml`), source `c` (`c/X/RTC.xml`) and 2 more"),
+        "{err}"
+    );
+    assert_eq!(err.matches("warning[RTC014]").count(), 6, "{err}");
+}
+
 #[test]
 fn diff_compares_a_source_at_two_revs() {
     let p = Project::new();
