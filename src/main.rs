@@ -1276,29 +1276,172 @@ fn input_root(input: &std::path::Path) -> PathBuf {
 
 /// `rtcdoc check`: exit 0 when clean, 1 on errors (or warnings with `--deny warnings`), 2 on
 /// usage or I/O problems.
+/// `check`'s human report on stderr: each finding with its snippet (a source's file read from
+/// `source_dirs`), then the one-line summary with the documentation coverage.
+fn write_check_human(
+    cli: &Cli,
+    report: &rtcdoc::check::Report,
+    counts: (usize, usize, usize),
+    source_dirs: &[std::sync::Arc<tempfile::TempDir>],
+) -> anyhow::Result<()> {
+    use rtcdoc::check::report;
+    use std::io::IsTerminal;
+    // Buffered: codespan writes a snippet in many small pieces.
+    let choice = colour_choice(std::io::stderr().is_terminal());
+    let mut stream = BufferedStandardStream::stderr(choice);
+    let verbosity = if cli.quiet {
+        report::Verbosity::Quiet
+    } else if cli.verbose {
+        report::Verbosity::Verbose
+    } else {
+        report::Verbosity::Normal
+    };
+    report::write_human(&mut stream, &report.diagnostics, verbosity, &mut |f| {
+        let first = f.split('/').next().unwrap_or_default();
+        let bytes = if SOURCE_NAMES
+            .get()
+            .is_some_and(|n| n.iter().any(|n| n == first))
+        {
+            source_dirs
+                .iter()
+                .find_map(|d| std::fs::read(d.path().join(f)).ok())?
+        } else {
+            std::fs::read(f).ok()?
+        };
+        String::from_utf8(bytes).ok()
+    })?;
+    std::io::Write::flush(&mut stream)?;
+    if !cli.quiet {
+        let s = &report.summary;
+        let hidden = if verbosity == report::Verbosity::Verbose || s.infos == 0 {
+            String::new()
+        } else {
+            " (infos shown with --verbose)".to_string()
+        };
+        // The IDL members' share, when IDL definitions were counted (RTC506–RTC508).
+        let idl = match report.coverage.idl_counts() {
+            (_, 0) => String::new(),
+            (d, t) => format!("; IDL {d}/{t}"),
+        };
+        let documented = rtcdoc::catalog::documented(counts.0, counts.1, counts.2);
+        let coverage = if report.coverage.total == 0 {
+            String::new()
+        } else {
+            format!(
+                ", documentation coverage {:.1}% ({}/{}{idl})",
+                report.coverage.percent, report.coverage.documented, report.coverage.total
+            )
+        };
+        eprintln!("{}{hidden}; {documented}{coverage}", s.one_line());
+    }
+    Ok(())
+}
+
+/// `rtcdoc check --explain CODE`: the rule's text, or what to run for a code of `diff`.
+fn explain_rule(code: &str) -> ExitCode {
+    use rtcdoc::check;
+    match check::rule(code) {
+        Some(r) => {
+            print!("{}", check::explain(r));
+            ExitCode::SUCCESS
+        }
+        None if rtcdoc::diff::codes::code(code).is_some() => {
+            eprintln!(
+                "error: `{code}` is a code of rtcdoc diff: run `rtcdoc diff --explain {code}`"
+            );
+            ExitCode::from(2)
+        }
+        None => {
+            let codes: Vec<&str> = check::RULES.iter().map(|r| r.code).collect();
+            eprintln!(
+                "error: no rule has the code or name `{code}`; the codes are {}",
+                codes.join(", ")
+            );
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// What `check` found in one path.
+struct Checked {
+    /// The findings, files named as the user can open them.
+    report: rtcdoc::check::Report,
+    /// The components, RT Systems and IDL files read.
+    counts: (usize, usize, usize),
+    /// The folder of its sources' files (for the snippets of the human report).
+    sources_dir: Option<std::sync::Arc<tempfile::TempDir>>,
+}
+
+/// `check` of one path.
+fn check_path(
+    cli: &Cli,
+    args: &CheckArgs,
+    file: &config::Loaded,
+    opts: &build::LoadOptions,
+    p: &Path,
+) -> anyhow::Result<Checked> {
+    use rtcdoc::check;
+    let loaded = build::load(p, opts)?;
+    if let (Some(note), false) = (loaded.catalog.backup_note(), cli.quiet) {
+        eprintln!("note: {note}");
+    }
+    let human = matches!(args.format, CheckFormat::Human);
+    if let (Some(note), true) = (
+        rtcdoc::check::undefined_types_note(&loaded.catalog, file.path.as_deref()),
+        human && !cli.quiet,
+    ) {
+        eprintln!("note: {note}");
+    }
+    if let (Some(note), true) = (
+        rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page),
+        human && !cli.quiet,
+    ) {
+        eprintln!("note: {note}");
+    }
+    let mut r = check::check(&loaded.catalog);
+    // Name files as the user can open them: relative to the current directory.
+    let root = input_root(p);
+    for d in &mut r.diagnostics {
+        // The folder `rtcdoc extract` is to be run on, as the user names it.
+        if d.code == rtcdoc::implementation::codes::RECOVERED {
+            let folder = rtcdoc::implementation::recover::component_folder(&d.file);
+            d.hint = Some(rtcdoc::implementation::recover::extract_hint(
+                &display_path(&root, folder),
+            ));
+        }
+        d.file = display_path(&root, &d.file);
+        if let Some(rel) = &mut d.related {
+            rel.file = display_path(&root, &rel.file);
+        }
+    }
+    for c in &mut r.coverage.components {
+        c.source = display_path(&root, &c.source);
+    }
+    for c in &mut r.coverage.idl {
+        c.file = display_path(&root, &c.file);
+    }
+    if cli.verbose {
+        print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
+    }
+    let counts = (
+        loaded.catalog.components.len(),
+        loaded.catalog.systems.len(),
+        loaded.catalog.idl.files.len(),
+    );
+    let dir = loaded.roots.sources_dir.clone();
+    // Not freed one allocation at a time: the process ends soon (see `Command::Build`).
+    std::mem::forget(loaded);
+    Ok(Checked {
+        report: r,
+        counts,
+        sources_dir: dir,
+    })
+}
+
 fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     use rtcdoc::check::{self, report};
     if let Some(code) = &args.explain {
-        return Ok(match check::rule(code) {
-            Some(r) => {
-                print!("{}", check::explain(r));
-                ExitCode::SUCCESS
-            }
-            None if rtcdoc::diff::codes::code(code).is_some() => {
-                eprintln!(
-                    "error: `{code}` is a code of rtcdoc diff: run `rtcdoc diff --explain {code}`"
-                );
-                ExitCode::from(2)
-            }
-            None => {
-                let codes: Vec<&str> = check::RULES.iter().map(|r| r.code).collect();
-                eprintln!(
-                    "error: no rule has the code or name `{code}`; the codes are {}",
-                    codes.join(", ")
-                );
-                ExitCode::from(2)
-            }
-        });
+        return Ok(explain_rule(code));
     }
     // Same input options as `build`: rtcdoc.toml, then the command line.
     let file = config_for(
@@ -1323,55 +1466,12 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     // The sources' files, kept for the snippets of the human report.
     let mut source_dirs = Vec::new();
     for p in &paths {
-        let loaded = build::load(p, &opts)?;
-        source_dirs.extend(loaded.roots.sources_dir.clone());
-        counts.0 += loaded.catalog.components.len();
-        counts.1 += loaded.catalog.systems.len();
-        counts.2 += loaded.catalog.idl.files.len();
-        if let (Some(note), false) = (loaded.catalog.backup_note(), cli.quiet) {
-            eprintln!("note: {note}");
-        }
-        let human = matches!(args.format, CheckFormat::Human);
-        if let (Some(note), true) = (
-            rtcdoc::check::undefined_types_note(&loaded.catalog, file.path.as_deref()),
-            human && !cli.quiet,
-        ) {
-            eprintln!("note: {note}");
-        }
-        if let (Some(note), true) = (
-            rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page),
-            human && !cli.quiet,
-        ) {
-            eprintln!("note: {note}");
-        }
-        let mut r = check::check(&loaded.catalog);
-        // Name files as the user can open them: relative to the current directory.
-        let root = input_root(p);
-        for d in &mut r.diagnostics {
-            // The folder `rtcdoc extract` is to be run on, as the user names it.
-            if d.code == rtcdoc::implementation::codes::RECOVERED {
-                let folder = rtcdoc::implementation::recover::component_folder(&d.file);
-                d.hint = Some(rtcdoc::implementation::recover::extract_hint(
-                    &display_path(&root, folder),
-                ));
-            }
-            d.file = display_path(&root, &d.file);
-            if let Some(rel) = &mut d.related {
-                rel.file = display_path(&root, &rel.file);
-            }
-        }
-        for c in &mut r.coverage.components {
-            c.source = display_path(&root, &c.source);
-        }
-        for c in &mut r.coverage.idl {
-            c.file = display_path(&root, &c.file);
-        }
-        if cli.verbose {
-            print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
-        }
-        reports.push(r);
-        // Not freed one allocation at a time: the process ends soon (see `Command::Build`).
-        std::mem::forget(loaded);
+        let c = check_path(cli, args, &file, &opts, p)?;
+        source_dirs.extend(c.sources_dir);
+        counts.0 += c.counts.0;
+        counts.1 += c.counts.1;
+        counts.2 += c.counts.2;
+        reports.push(c.report);
     }
     let report = check::Report::merge(reports);
     let deny_warnings = args.deny.contains(&Deny::Warnings);
@@ -1383,55 +1483,7 @@ fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
             print_stdout(&serde_json::to_string_pretty(&report::to_sarif(&report))?)?
         }
         CheckFormat::Human => {
-            use std::io::IsTerminal;
-            // Buffered: codespan writes a snippet in many small pieces.
-            let choice = colour_choice(std::io::stderr().is_terminal());
-            let mut stream = BufferedStandardStream::stderr(choice);
-            let verbosity = if cli.quiet {
-                report::Verbosity::Quiet
-            } else if cli.verbose {
-                report::Verbosity::Verbose
-            } else {
-                report::Verbosity::Normal
-            };
-            report::write_human(&mut stream, &report.diagnostics, verbosity, &mut |f| {
-                let first = f.split('/').next().unwrap_or_default();
-                let bytes = if SOURCE_NAMES
-                    .get()
-                    .is_some_and(|n| n.iter().any(|n| n == first))
-                {
-                    source_dirs
-                        .iter()
-                        .find_map(|d| std::fs::read(d.path().join(f)).ok())?
-                } else {
-                    std::fs::read(f).ok()?
-                };
-                String::from_utf8(bytes).ok()
-            })?;
-            std::io::Write::flush(&mut stream)?;
-            if !cli.quiet {
-                let s = &report.summary;
-                let hidden = if verbosity == report::Verbosity::Verbose || s.infos == 0 {
-                    String::new()
-                } else {
-                    " (infos shown with --verbose)".to_string()
-                };
-                // The IDL members' share, when IDL definitions were counted (RTC506–RTC508).
-                let idl = match report.coverage.idl_counts() {
-                    (_, 0) => String::new(),
-                    (d, t) => format!("; IDL {d}/{t}"),
-                };
-                let documented = rtcdoc::catalog::documented(counts.0, counts.1, counts.2);
-                let coverage = if report.coverage.total == 0 {
-                    String::new()
-                } else {
-                    format!(
-                        ", documentation coverage {:.1}% ({}/{}{idl})",
-                        report.coverage.percent, report.coverage.documented, report.coverage.total
-                    )
-                };
-                eprintln!("{}{hidden}; {documented}{coverage}", s.one_line());
-            }
+            write_check_human(cli, &report, counts, &source_dirs)?;
         }
     }
     Ok(if report.failed(deny_warnings) {
