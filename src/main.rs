@@ -1038,6 +1038,79 @@ fn man_page(out: &mut dyn std::io::Write) -> std::io::Result<()> {
 }
 
 /// `rtcdoc graph`: the wiring of one system of the input as DOT, Mermaid or SVG.
+/// The RT System `graph` draws: the one `--system` names (its name, name as the pages show
+/// it, slug or file), or the only one; else an error that lists them, or says what `graph`
+/// draws without one.
+fn choose_system<'a>(
+    catalog: &'a rtcdoc::catalog::Catalog,
+    args: &GraphArgs,
+    input: &Path,
+) -> anyhow::Result<&'a rtcdoc::catalog::systems::System> {
+    let systems = &catalog.systems;
+    // A file path as the shell completes it (from the current directory, not the input).
+    let want_file = args
+        .system
+        .as_deref()
+        .and_then(|w| std::fs::canonicalize(w).ok());
+    let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
+        Some(want) => systems
+            .iter()
+            .filter(|s| {
+                s.profile.name() == want
+                    || s.display_name() == want.as_str()
+                    || &s.slug == want
+                    || &s.source == want
+                    || want_file.is_some()
+                        && std::fs::canonicalize(input.join(&s.source)).ok() == want_file
+            })
+            .collect(),
+        None => systems.iter().collect(),
+    };
+    let listed = |list: &[&rtcdoc::catalog::systems::System]| {
+        list.iter()
+            .map(|s| format!("{} — {}", s.display_name(), s.source))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let names = || listed(&systems.iter().collect::<Vec<_>>());
+    Ok(match chosen.as_slice() {
+        [one] => *one,
+        [] if systems.is_empty() => {
+            // What graph can draw from components alone, with a name that works.
+            let example = catalog
+                .components
+                .first()
+                .map(|c| shell_word(&c.display_name()))
+                .unwrap_or_else(|| "NAME".into());
+            anyhow::bail!(
+                "no RT System profile in {}; graph draws a component's neighbourhood (--component={example}) or the data flow between categories (--dataflow category) without one",
+                input.display()
+            )
+        }
+        [] => anyhow::bail!(
+            "no system named {:?} in {}; the systems are: {}",
+            args.system.as_deref().unwrap_or(""),
+            input.display(),
+            names()
+        ),
+        many => match &args.system {
+            // Several systems of that name: only a file path tells them apart.
+            Some(want) => anyhow::bail!(
+                "{} systems in {} are named {want:?}; choose one by its name as the pages show it or by its file, with --system: {}",
+                many.len(),
+                input.display(),
+                listed(many)
+            ),
+            None => anyhow::bail!(
+                "{} holds {} systems; choose one with --system NAME (its name as the pages show it, or its file path): {}",
+                input.display(),
+                many.len(),
+                listed(many)
+            ),
+        },
+    })
+}
+
 fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
     let file = config_for(cli, args.input.as_deref(), &args.input_args)?;
     let input = args
@@ -1081,70 +1154,7 @@ fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
         let title = format!("{} {name}", lang.t("neighbourhood_of"));
         return write_graph(args, &title, &title, (&inst, &conns, (&[], None)));
     }
-    let systems = &loaded.catalog.systems;
-    // A file path as the shell completes it (from the current directory, not the input).
-    let want_file = args
-        .system
-        .as_deref()
-        .and_then(|w| std::fs::canonicalize(w).ok());
-    let chosen: Vec<&rtcdoc::catalog::systems::System> = match &args.system {
-        Some(want) => systems
-            .iter()
-            .filter(|s| {
-                s.profile.name() == want
-                    || s.display_name() == want.as_str()
-                    || &s.slug == want
-                    || &s.source == want
-                    || want_file.is_some()
-                        && std::fs::canonicalize(input.join(&s.source)).ok() == want_file
-            })
-            .collect(),
-        None => systems.iter().collect(),
-    };
-    let listed = |list: &[&rtcdoc::catalog::systems::System]| {
-        list.iter()
-            .map(|s| format!("{} — {}", s.display_name(), s.source))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let names = || listed(&systems.iter().collect::<Vec<_>>());
-    let s = match chosen.as_slice() {
-        [one] => *one,
-        [] if systems.is_empty() => {
-            // What graph can draw from components alone, with a name that works.
-            let example = loaded
-                .catalog
-                .components
-                .first()
-                .map(|c| shell_word(&c.display_name()))
-                .unwrap_or_else(|| "NAME".into());
-            anyhow::bail!(
-                "no RT System profile in {}; graph draws a component's neighbourhood (--component={example}) or the data flow between categories (--dataflow category) without one",
-                input.display()
-            )
-        }
-        [] => anyhow::bail!(
-            "no system named {:?} in {}; the systems are: {}",
-            args.system.as_deref().unwrap_or(""),
-            input.display(),
-            names()
-        ),
-        many => match &args.system {
-            // Several systems of that name: only a file path tells them apart.
-            Some(want) => anyhow::bail!(
-                "{} systems in {} are named {want:?}; choose one by its name as the pages show it or by its file, with --system: {}",
-                many.len(),
-                input.display(),
-                listed(many)
-            ),
-            None => anyhow::bail!(
-                "{} holds {} systems; choose one with --system NAME (its name as the pages show it, or its file path): {}",
-                input.display(),
-                many.len(),
-                listed(many)
-            ),
-        },
-    };
+    let s = choose_system(&loaded.catalog, args, &input)?;
     // Links as from the site's root (the drawing stands on its own).
     let cat = &loaded.catalog;
     let w = rtcdoc::render::wiring::system_wiring(cat, s, lang, &|to, a| {
@@ -1274,8 +1284,6 @@ fn input_root(input: &std::path::Path) -> PathBuf {
     }
 }
 
-/// `rtcdoc check`: exit 0 when clean, 1 on errors (or warnings with `--deny warnings`), 2 on
-/// usage or I/O problems.
 /// `check`'s human report on stderr: each finding with its snippet (a source's file read from
 /// `source_dirs`), then the one-line summary with the documentation coverage.
 fn write_check_human(
@@ -1438,6 +1446,8 @@ fn check_path(
     })
 }
 
+/// `rtcdoc check`: exit 0 when clean, 1 on errors (or warnings with `--deny warnings`), 2 on
+/// usage or I/O problems.
 fn check(cli: &Cli, args: &CheckArgs) -> anyhow::Result<ExitCode> {
     use rtcdoc::check::{self, report};
     if let Some(code) = &args.explain {
