@@ -794,170 +794,11 @@ fn print_skipped(
 
 fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
     match &cli.command {
-        Command::Build(args) => {
-            let file = config_for(cli, args.input.as_deref(), &args.read.input)?;
-            let mut opts = config::build_options(&file, &build_overrides(args));
-            pin(&file, &args.read.sources, &mut opts.load, cli.quiet)?;
-            let root = input_root(&opts.input);
-            let check_cmd = if opts.load.sources_only {
-                check_command_sources(&file, &args.read)
-            } else {
-                check_command(&opts.input, &args.read)
-            };
-            let bar = Bar::new(!cli.quiet);
-            let result = build::build_with(&opts, &bar);
-            bar.0.finish_and_clear();
-            let (loaded, report) = match result {
-                Ok(r) => r,
-                Err(e) => {
-                    if let Some(f) = e.downcast_ref::<build::StrictFailure>() {
-                        print_findings(&f.diagnostics, &root, cli.verbose, cli.quiet, &check_cmd);
-                        eprintln!("error: {e}");
-                        return Ok(ExitCode::from(1));
-                    }
-                    return Err(e);
-                }
-            };
-            if cli.verbose {
-                print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
-            }
-            print_findings(
-                &loaded.catalog.diagnostics,
-                &root,
-                cli.verbose,
-                cli.quiet,
-                &check_cmd,
-            );
-            if !cli.quiet {
-                print_history_notes(&loaded.catalog.history_notes);
-                let html = opts.formats.is_empty() || opts.formats.contains(&Format::Html);
-                if html && opts.site.base_url.is_none() {
-                    eprintln!("note: no sitemap.xml: it needs absolute URLs; pass --base-url URL (or set base-url in rtcdoc.toml)");
-                }
-                if let Some(note) = loaded.catalog.backup_note() {
-                    eprintln!("note: {note}");
-                }
-                if let Some(note) =
-                    rtcdoc::check::undefined_types_note(&loaded.catalog, file.path.as_deref())
-                {
-                    eprintln!("note: {note}");
-                }
-                if let Some(note) = rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page) {
-                    eprintln!("note: {note}");
-                }
-                eprintln!(
-                    "{} (details: {check_cmd})",
-                    rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
-                );
-                eprintln!(
-                    "built {} into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
-                    loaded.catalog.documented(),
-                    opts.output.display(),
-                    report.files_written,
-                    report.errors,
-                    report.warnings,
-                    report.seconds
-                );
-            }
-            // The process ends next: freeing a large catalogue one allocation at a time only
-            // delays the exit (about 40 ms for 10,000 profiles); the OS takes the memory back.
-            std::mem::forget(loaded);
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Build(args) => build_command(cli, args),
         Command::Check(args) => check(cli, args),
         Command::Diff(args) => diff(cli, args),
-        Command::Serve(args) => {
-            let file = config_for(cli, args.input.as_deref(), &args.read.input)?;
-            let cli_over = overrides(&args.input, &args.site, &args.read.input, None);
-            let mut build = config::build_options(&file, &cli_over);
-            build.formats = vec![Format::Html];
-            pin(&file, &args.read.sources, &mut build.load, cli.quiet)?;
-            let serve_cfg = file.config.serve.clone().unwrap_or_default();
-            let mut watch = Vec::new();
-            if let Some(t) = &build.site.theme_dir {
-                watch.push(t.clone());
-            }
-            if let Some(p) = &file.path {
-                watch.push(p.clone());
-            }
-            let quiet = cli.quiet;
-            let root = input_root(&build.input);
-            let check_cmd = check_command(&build.input, &args.read);
-            let (input, explicit) = (args.input.clone(), args.read.input.config.clone());
-            let source_args = args.read.sources.clone();
-            let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
-                let file = load_config(input.as_deref(), explicit.as_deref())?;
-                let mut b = config::build_options(&file, &cli_over);
-                b.formats = vec![Format::Html];
-                pin(&file, &source_args, &mut b.load, quiet)?;
-                Ok(b)
-            });
-            let handle = rtcdoc::serve::start(
-                rtcdoc::serve::ServeOptions {
-                    build,
-                    port: args.port.or(serve_cfg.port).unwrap_or(3000),
-                    watch,
-                    reconfigure: Some(reconfigure),
-                    file_name: Some({
-                        let root = root.clone();
-                        std::sync::Arc::new(move |f: &str| display_path(&root, f))
-                    }),
-                },
-                std::sync::Arc::new(move |line: &str| {
-                    if !quiet || line.starts_with("error") {
-                        eprintln!("{line}");
-                    }
-                }),
-            )?;
-            print_findings(
-                handle.first_diagnostics(),
-                &root,
-                cli.verbose,
-                cli.quiet,
-                &check_cmd,
-            );
-            if !cli.quiet {
-                print_history_notes(handle.first_history_notes());
-            }
-            eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
-            if args.open || (!args.no_open && serve_cfg.open.unwrap_or(false)) {
-                rtcdoc::serve::open_browser(&handle.url());
-            }
-            handle.wait();
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Init(args) => {
-            let path = args.dir.join(config::FILE_NAME);
-            if path.exists() && !args.force {
-                anyhow::bail!(
-                    "`{}` already exists (use --force to overwrite it)",
-                    path.display()
-                );
-            }
-            std::fs::create_dir_all(&args.dir)?;
-            // An OpenRTM installation's IDL, suggested (commented out) in the file.
-            let idl = rtcdoc::init::detect(&|k| std::env::var_os(k));
-            let lang = args.language.unwrap_or_default();
-            std::fs::write(&path, config::template_in(lang, idl.as_ref()))?;
-            if !cli.quiet {
-                eprintln!("wrote {}", path.display());
-                match &idl {
-                    Some(found) => eprintln!(
-                        "found OpenRTM's IDL in {} ({}); uncomment `idl-path` in {} to use it",
-                        found.dir.display(),
-                        found.via,
-                        config::FILE_NAME
-                    ),
-                    // Said, so that the hint that sent the user here ends somewhere.
-                    None => eprintln!(
-                        "found no OpenRTM installation's IDL (looked at $RTM_ROOT, $OPENRTM_DIR and the usual install prefixes, or those in ${}); if you have one elsewhere, set `idl-path` in {} to its rtm/idl directory",
-                        rtcdoc::init::PREFIXES_VAR,
-                        config::FILE_NAME
-                    ),
-                }
-            }
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Serve(args) => serve_command(cli, args),
+        Command::Init(args) => init_command(cli, args),
         Command::Completions { shell } => {
             clap_complete::generate(
                 *shell,
@@ -973,24 +814,195 @@ fn run(cli: &Cli) -> anyhow::Result<ExitCode> {
         }
         Command::Graph(args) => graph(cli, args),
         Command::Extract(args) => extract(cli, args),
-        Command::Update(args) => {
-            let file = load_config(None, args.config.as_deref())?;
-            let mode = rtcdoc::sources::Mode {
-                cache_dir: args.cache_dir.clone(),
-                jobs: args.jobs.and_then(|j| usize::try_from(j).ok()),
-                ..Default::default()
-            };
-            let (pinned, changes) = pin_with_bar(&file, &mode, Some(&args.names), cli.quiet)?;
-            if !cli.quiet {
-                if changes.is_empty() {
-                    eprintln!("rtcdoc.lock is up to date ({} source(s))", pinned.len());
-                } else {
-                    eprintln!("rtcdoc.lock: {}", changes.describe());
-                }
+        Command::Update(args) => update_command(cli, args),
+    }
+}
+
+/// `rtcdoc build`: the catalogue read, checked and rendered, then the findings and a summary.
+fn build_command(cli: &Cli, args: &BuildArgs) -> anyhow::Result<ExitCode> {
+    let file = config_for(cli, args.input.as_deref(), &args.read.input)?;
+    let mut opts = config::build_options(&file, &build_overrides(args));
+    pin(&file, &args.read.sources, &mut opts.load, cli.quiet)?;
+    let root = input_root(&opts.input);
+    let check_cmd = if opts.load.sources_only {
+        check_command_sources(&file, &args.read)
+    } else {
+        check_command(&opts.input, &args.read)
+    };
+    let bar = Bar::new(!cli.quiet);
+    let result = build::build_with(&opts, &bar);
+    bar.0.finish_and_clear();
+    let (loaded, report) = match result {
+        Ok(r) => r,
+        Err(e) => {
+            if let Some(f) = e.downcast_ref::<build::StrictFailure>() {
+                print_findings(&f.diagnostics, &root, cli.verbose, cli.quiet, &check_cmd);
+                eprintln!("error: {e}");
+                return Ok(ExitCode::from(1));
             }
-            Ok(ExitCode::SUCCESS)
+            return Err(e);
+        }
+    };
+    if cli.verbose {
+        print_skipped(&loaded.skipped, &root, &shown_files(&loaded.catalog));
+    }
+    print_findings(
+        &loaded.catalog.diagnostics,
+        &root,
+        cli.verbose,
+        cli.quiet,
+        &check_cmd,
+    );
+    if !cli.quiet {
+        print_history_notes(&loaded.catalog.history_notes);
+        let html = opts.formats.is_empty() || opts.formats.contains(&Format::Html);
+        if html && opts.site.base_url.is_none() {
+            eprintln!("note: no sitemap.xml: it needs absolute URLs; pass --base-url URL (or set base-url in rtcdoc.toml)");
+        }
+        if let Some(note) = loaded.catalog.backup_note() {
+            eprintln!("note: {note}");
+        }
+        if let Some(note) =
+            rtcdoc::check::undefined_types_note(&loaded.catalog, file.path.as_deref())
+        {
+            eprintln!("note: {note}");
+        }
+        if let Some(note) = rtcdoc::check::idl_on_no_page_note(&loaded.idl_on_no_page) {
+            eprintln!("note: {note}");
+        }
+        eprintln!(
+            "{} (details: {check_cmd})",
+            rtcdoc::check::Summary::of(&loaded.catalog.diagnostics).one_line(),
+        );
+        eprintln!(
+            "built {} into {}: {} file(s), {} error(s), {} warning(s) in {:.2}s",
+            loaded.catalog.documented(),
+            opts.output.display(),
+            report.files_written,
+            report.errors,
+            report.warnings,
+            report.seconds
+        );
+    }
+    // The process ends next: freeing a large catalogue one allocation at a time only
+    // delays the exit (about 40 ms for 10,000 profiles); the OS takes the memory back.
+    std::mem::forget(loaded);
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `rtcdoc serve`: the site served with live reload until Ctrl-C.
+fn serve_command(cli: &Cli, args: &ServeArgs) -> anyhow::Result<ExitCode> {
+    let file = config_for(cli, args.input.as_deref(), &args.read.input)?;
+    let cli_over = overrides(&args.input, &args.site, &args.read.input, None);
+    let mut build = config::build_options(&file, &cli_over);
+    build.formats = vec![Format::Html];
+    pin(&file, &args.read.sources, &mut build.load, cli.quiet)?;
+    let serve_cfg = file.config.serve.clone().unwrap_or_default();
+    let mut watch = Vec::new();
+    if let Some(t) = &build.site.theme_dir {
+        watch.push(t.clone());
+    }
+    if let Some(p) = &file.path {
+        watch.push(p.clone());
+    }
+    let quiet = cli.quiet;
+    let root = input_root(&build.input);
+    let check_cmd = check_command(&build.input, &args.read);
+    let (input, explicit) = (args.input.clone(), args.read.input.config.clone());
+    let source_args = args.read.sources.clone();
+    let reconfigure: rtcdoc::serve::Reconfigure = std::sync::Arc::new(move || {
+        let file = load_config(input.as_deref(), explicit.as_deref())?;
+        let mut b = config::build_options(&file, &cli_over);
+        b.formats = vec![Format::Html];
+        pin(&file, &source_args, &mut b.load, quiet)?;
+        Ok(b)
+    });
+    let handle = rtcdoc::serve::start(
+        rtcdoc::serve::ServeOptions {
+            build,
+            port: args.port.or(serve_cfg.port).unwrap_or(3000),
+            watch,
+            reconfigure: Some(reconfigure),
+            file_name: Some({
+                let root = root.clone();
+                std::sync::Arc::new(move |f: &str| display_path(&root, f))
+            }),
+        },
+        std::sync::Arc::new(move |line: &str| {
+            if !quiet || line.starts_with("error") {
+                eprintln!("{line}");
+            }
+        }),
+    )?;
+    print_findings(
+        handle.first_diagnostics(),
+        &root,
+        cli.verbose,
+        cli.quiet,
+        &check_cmd,
+    );
+    if !cli.quiet {
+        print_history_notes(handle.first_history_notes());
+    }
+    eprintln!("serving at {} (Ctrl-C to stop)", handle.url());
+    if args.open || (!args.no_open && serve_cfg.open.unwrap_or(false)) {
+        rtcdoc::serve::open_browser(&handle.url());
+    }
+    handle.wait();
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `rtcdoc init`: a commented rtcdoc.toml, with an OpenRTM installation's IDL when one is found.
+fn init_command(cli: &Cli, args: &InitArgs) -> anyhow::Result<ExitCode> {
+    let path = args.dir.join(config::FILE_NAME);
+    if path.exists() && !args.force {
+        anyhow::bail!(
+            "`{}` already exists (use --force to overwrite it)",
+            path.display()
+        );
+    }
+    std::fs::create_dir_all(&args.dir)?;
+    // An OpenRTM installation's IDL, suggested (commented out) in the file.
+    let idl = rtcdoc::init::detect(&|k| std::env::var_os(k));
+    let lang = args.language.unwrap_or_default();
+    std::fs::write(&path, config::template_in(lang, idl.as_ref()))?;
+    if !cli.quiet {
+        eprintln!("wrote {}", path.display());
+        match &idl {
+            Some(found) => eprintln!(
+                "found OpenRTM's IDL in {} ({}); uncomment `idl-path` in {} to use it",
+                found.dir.display(),
+                found.via,
+                config::FILE_NAME
+            ),
+            // Said, so that the hint that sent the user here ends somewhere.
+            None => eprintln!(
+                "found no OpenRTM installation's IDL (looked at $RTM_ROOT, $OPENRTM_DIR and the usual install prefixes, or those in ${}); if you have one elsewhere, set `idl-path` in {} to its rtm/idl directory",
+                rtcdoc::init::PREFIXES_VAR,
+                config::FILE_NAME
+            ),
         }
     }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `rtcdoc update`: the `[[source]]` repositories moved to their branches' newest commits in rtcdoc.lock.
+fn update_command(cli: &Cli, args: &UpdateArgs) -> anyhow::Result<ExitCode> {
+    let file = load_config(None, args.config.as_deref())?;
+    let mode = rtcdoc::sources::Mode {
+        cache_dir: args.cache_dir.clone(),
+        jobs: args.jobs.and_then(|j| usize::try_from(j).ok()),
+        ..Default::default()
+    };
+    let (pinned, changes) = pin_with_bar(&file, &mode, Some(&args.names), cli.quiet)?;
+    if !cli.quiet {
+        if changes.is_empty() {
+            eprintln!("rtcdoc.lock is up to date ({} source(s))", pinned.len());
+        } else {
+            eprintln!("rtcdoc.lock: {}", changes.describe());
+        }
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 /// The man page: name, synopsis, description and global options, then every command with its
