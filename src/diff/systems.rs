@@ -321,47 +321,57 @@ pub(super) fn compare_all(
         counts.removed += 1;
         let s = &old[o];
         let file = old_name(&s.source);
-        let at = Some(s.system.pos).filter(|p| p.line > 0);
-        let mut c = super::change(
-            codes::SYSTEM_REMOVED,
-            label(s, &file),
-            String::new(),
-            non_empty(&s.system.id).map(str::to_string),
-            None,
-            format!(
-                "RT System `{}` ({file}, {} instance(s), {} connector(s)) was removed: it can no longer be restored",
-                s.system.name(),
-                s.system.components.len(),
-                s.system.data_port_connectors.len() + s.system.service_port_connectors.len()
-            ),
-        );
-        c.old_file = Some(file);
-        c.old_line = at.map(|p| p.line);
-        c.old_column = at.map(|p| p.column);
-        out.push(c);
+        out.push(removed_system(s, label(s, &file), file));
     }
     for n in added {
         counts.added += 1;
         let s = &new[n];
         let file = new_name(&s.source);
-        let mut c = super::change(
-            codes::SYSTEM_ADDED,
-            label(s, &file),
-            String::new(),
-            None,
-            non_empty(&s.system.id).map(str::to_string),
-            format!(
-                "RT System `{}` ({file}, {} instance(s)) was added",
-                s.system.name(),
-                s.system.components.len()
-            ),
-        );
-        c.file = Some(file);
-        c.line = Some(s.system.pos.line).filter(|l| *l > 0);
-        c.column = Some(s.system.pos.column).filter(|_| s.system.pos.line > 0);
-        out.push(c);
+        out.push(added_system(s, label(s, &file), file));
     }
     counts
+}
+
+/// SYSTEM_REMOVED of system `s` of OLD (`file`), named `label`.
+fn removed_system(s: &LoadedSystem, label: String, file: String) -> Change {
+    let at = Some(s.system.pos).filter(|p| p.line > 0);
+    let mut c = super::change(
+        codes::SYSTEM_REMOVED,
+        label,
+        String::new(),
+        non_empty(&s.system.id).map(str::to_string),
+        None,
+        format!(
+            "RT System `{}` ({file}, {} instance(s), {} connector(s)) was removed: it can no longer be restored",
+            s.system.name(),
+            s.system.components.len(),
+            s.system.data_port_connectors.len() + s.system.service_port_connectors.len()
+        ),
+    );
+    c.old_file = Some(file);
+    c.old_line = at.map(|p| p.line);
+    c.old_column = at.map(|p| p.column);
+    c
+}
+
+/// SYSTEM_ADDED of system `s` of NEW (`file`), named `label`.
+fn added_system(s: &LoadedSystem, label: String, file: String) -> Change {
+    let mut c = super::change(
+        codes::SYSTEM_ADDED,
+        label,
+        String::new(),
+        None,
+        non_empty(&s.system.id).map(str::to_string),
+        format!(
+            "RT System `{}` ({file}, {} instance(s)) was added",
+            s.system.name(),
+            s.system.components.len()
+        ),
+    );
+    c.file = Some(file);
+    c.line = Some(s.system.pos.line).filter(|l| *l > 0);
+    c.column = Some(s.system.pos.column).filter(|_| s.system.pos.line > 0);
+    c
 }
 
 /// Pairs the systems of one key ([`system_key`]) into `pairs`: one on each side, else by

@@ -16,7 +16,6 @@ const STILL_LONG: &[(&str, &str)] = &[
     ("src/diff/idl.rs", "operation"),
     ("src/diff/mod.rs", "classify"),
     ("src/diff/mod.rs", "changed"),
-    ("src/diff/systems.rs", "compare_all"),
     ("src/diff/systems/compare.rs", "data_connector"),
     ("src/history.rs", "follow_by_id"),
     ("src/implementation/extract.rs", "ident"),
