@@ -1296,6 +1296,18 @@ fn input_root(input: &std::path::Path) -> PathBuf {
     }
 }
 
+/// How much `check`'s human report says: `-q`, `-v`, or the default.
+fn verbosity(cli: &Cli) -> rtcdoc::check::report::Verbosity {
+    use rtcdoc::check::report::Verbosity;
+    if cli.quiet {
+        Verbosity::Quiet
+    } else if cli.verbose {
+        Verbosity::Verbose
+    } else {
+        Verbosity::Normal
+    }
+}
+
 /// `check`'s human report on stderr: each finding with its snippet (a source's file read from
 /// `source_dirs`), then the one-line summary with the documentation coverage.
 fn write_check_human(
@@ -1309,13 +1321,7 @@ fn write_check_human(
     // Buffered: codespan writes a snippet in many small pieces.
     let choice = colour_choice(std::io::stderr().is_terminal());
     let mut stream = BufferedStandardStream::stderr(choice);
-    let verbosity = if cli.quiet {
-        report::Verbosity::Quiet
-    } else if cli.verbose {
-        report::Verbosity::Verbose
-    } else {
-        report::Verbosity::Normal
-    };
+    let verbosity = verbosity(cli);
     report::write_human(&mut stream, &report.diagnostics, verbosity, &mut |f| {
         let first = f.split('/').next().unwrap_or_default();
         let bytes = if SOURCE_NAMES
