@@ -9,13 +9,11 @@
 //   node bench/port_queries.mjs /tmp/site10k [SAMPLE]     (SAMPLE pages of each kind, default 40)
 //
 // Prints one line per mismatch and a summary; exits 1 on any mismatch.
-import { createRequire } from 'node:module';
+import { launchChromium } from '../tests/browser/launch.mjs';
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 
-const require = createRequire(new URL('../tests/browser/package.json', import.meta.url));
-const puppeteer = require('puppeteer-core');
 const site = path.resolve(process.argv[2] || '/tmp/site10k');
 const sample = Number(process.argv[3] || 40);
 
@@ -28,7 +26,7 @@ const server = http.createServer((req, res) => {
 });
 await new Promise((r) => server.listen(0, '127.0.0.1', r));
 const base = `http://127.0.0.1:${server.address().port}/`;
-const browser = await puppeteer.launch({ executablePath: process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium', headless: true, args: ['--no-sandbox', '--disable-gpu'] });
+const browser = await launchChromium([]);
 const page = await browser.newPage();
 
 const text = (html) => html.replace(/<wbr>/g, '').replace(/<[^>]*>/g, '').replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&quot;/g, '"').replace(/&#39;/g, "'").replace(/&amp;/g, '&').trim();

@@ -20,6 +20,7 @@
 // Target (issue #53, at 10,000 profiles): <= 1 MB downloaded and <= 200 ms until the first
 // result.
 import { createRequire } from 'node:module';
+import { launchChromium } from '../tests/browser/launch.mjs';
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
@@ -47,11 +48,7 @@ const server = http.createServer((req, res) => {
 await new Promise((r) => server.listen(0, '127.0.0.1', r));
 const base = `http://127.0.0.1:${server.address().port}/`;
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.RTCDOC_CHROMIUM || '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu'],
-});
+const browser = await launchChromium([]);
 
 async function measure(q) {
   const context = await browser.createBrowserContext();
