@@ -24,7 +24,6 @@ const STILL_LONG: &[(&str, &str)] = &[
     ("src/incremental.rs", "update"),
     ("src/layout/wiring.rs", "place_vertically"),
     ("src/layout/wiring.rs", "layout_with"),
-    ("src/parse/xml/map.rs", "map_condition"),
     ("src/parse/xml/tree.rs", "build_any_tree"),
     ("src/serve.rs", "start"),
     ("src/serve.rs", "handle"),

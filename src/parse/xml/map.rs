@@ -713,32 +713,7 @@ pub(super) fn map_condition(
     let on = format!("`{}`", n.qname);
     let cond = match k {
         // spec 2.3.23 Not: exactly one operand.
-        "not" => {
-            let mut ops = constraint_children(m, n, &on, extra).into_iter();
-            let operand = ops.next().unwrap_or(Constraint {
-                kind: ConstraintKind::Empty,
-                pos: n.pos,
-                extra: crate::model::Extras::new(),
-            });
-            for more in ops {
-                m.warn(
-                    more.pos,
-                    format!(
-                        "`{}` takes one constraint; this extra one is kept as an extra property",
-                        n.qname
-                    ),
-                );
-                extra.push(Extra {
-                    kind: ExtraKind::Element,
-                    name: "Constraint".into(),
-                    namespace: None,
-                    value: None,
-                    children: crate::model::Extras::new(),
-                    pos: more.pos,
-                });
-            }
-            Condition::Not { operand }
-        }
+        "not" => map_not(m, n, &on, extra),
         // spec 2.3.24/25 And/Or: the XSD says two operands, samples and real files use more.
         "and" => Condition::And {
             operands: constraint_children(m, n, &on, extra),
@@ -773,45 +748,9 @@ pub(super) fn map_condition(
             }
         }
         // spec 2.3.38 propertyIsLike: wildCard (XSD) / wildChar (PIM) / wildcard (YAML).
-        "propertyislike" => {
-            let (mut wild_card, mut single_char, mut escape_char) = (None, None, None);
-            for a in &n.attrs {
-                let slot = match a.key().map(str::to_ascii_lowercase).as_deref() {
-                    Some("wildcard" | "wildchar") => &mut wild_card,
-                    Some("singlechar") => &mut single_char,
-                    Some("escapechar") => &mut escape_char,
-                    _ => {
-                        m.unknown_attr(a, &on, extra);
-                        continue;
-                    }
-                };
-                m.set(slot, a, &on, extra);
-            }
-            Condition::Like {
-                literal: literal_child(m, n, &on, extra),
-                wild_card,
-                single_char,
-                escape_char,
-            }
-        }
+        "propertyislike" => map_like(m, n, &on, extra),
         // spec 2.3.40 propertyIsBetween: both boundaries inclusive.
-        "propertyisbetween" => {
-            m.no_attrs(n, &on, extra);
-            let (mut lower, mut upper) = (None, None);
-            for c in &n.children {
-                match c.key_lower().as_deref() {
-                    Some("lowerboundary") if lower.is_none() => {
-                        lower = Some(m.text_of(c, &on, extra))
-                    }
-                    Some("upperboundary") if upper.is_none() => {
-                        upper = Some(m.text_of(c, &on, extra))
-                    }
-                    _ => m.unknown_elem(c, &on, extra),
-                }
-            }
-            m.stray_text(n, &on, extra);
-            Condition::Between { lower, upper }
-        }
+        "propertyisbetween" => map_between(m, n, &on, extra),
         // spec 2.3.27–2.3.37 comparisons: `Literal` + `matchCase` (often absent).
         _ => {
             let comparison = k
@@ -832,6 +771,72 @@ pub(super) fn map_condition(
         }
     };
     Some(cond)
+}
+
+/// spec 2.3.23 Not: exactly one operand; the others are kept as extra properties.
+fn map_not(m: &mut Mapper, n: &Node, on: &str, extra: &mut Extras) -> Condition {
+    let mut ops = constraint_children(m, n, on, extra).into_iter();
+    let operand = ops.next().unwrap_or(Constraint {
+        kind: ConstraintKind::Empty,
+        pos: n.pos,
+        extra: crate::model::Extras::new(),
+    });
+    for more in ops {
+        m.warn(
+            more.pos,
+            format!(
+                "`{}` takes one constraint; this extra one is kept as an extra property",
+                n.qname
+            ),
+        );
+        extra.push(Extra {
+            kind: ExtraKind::Element,
+            name: "Constraint".into(),
+            namespace: None,
+            value: None,
+            children: crate::model::Extras::new(),
+            pos: more.pos,
+        });
+    }
+    Condition::Not { operand }
+}
+
+/// spec 2.3.38 propertyIsLike: wildCard (XSD) / wildChar (PIM) / wildcard (YAML).
+fn map_like(m: &mut Mapper, n: &Node, on: &str, extra: &mut Extras) -> Condition {
+    let (mut wild_card, mut single_char, mut escape_char) = (None, None, None);
+    for a in &n.attrs {
+        let slot = match a.key().map(str::to_ascii_lowercase).as_deref() {
+            Some("wildcard" | "wildchar") => &mut wild_card,
+            Some("singlechar") => &mut single_char,
+            Some("escapechar") => &mut escape_char,
+            _ => {
+                m.unknown_attr(a, on, extra);
+                continue;
+            }
+        };
+        m.set(slot, a, on, extra);
+    }
+    Condition::Like {
+        literal: literal_child(m, n, on, extra),
+        wild_card,
+        single_char,
+        escape_char,
+    }
+}
+
+/// spec 2.3.40 propertyIsBetween: both boundaries inclusive.
+fn map_between(m: &mut Mapper, n: &Node, on: &str, extra: &mut Extras) -> Condition {
+    m.no_attrs(n, on, extra);
+    let (mut lower, mut upper) = (None, None);
+    for c in &n.children {
+        match c.key_lower().as_deref() {
+            Some("lowerboundary") if lower.is_none() => lower = Some(m.text_of(c, on, extra)),
+            Some("upperboundary") if upper.is_none() => upper = Some(m.text_of(c, on, extra)),
+            _ => m.unknown_elem(c, on, extra),
+        }
+    }
+    m.stray_text(n, on, extra);
+    Condition::Between { lower, upper }
 }
 
 /// The text of the `Literal` child; other children and stray text go to `extra`.
