@@ -98,89 +98,92 @@ pub fn load(input: &Path, opts: &LoadOptions) -> Result<Loaded> {
     load_with(input, opts, &Quiet)
 }
 
-/// [`load`] with progress reports.
-pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> Result<Loaded> {
-    progress.stage("finding profiles", 0);
-    let walk_opts = WalkOptions {
-        include: opts.include.clone(),
-        exclude: opts.exclude.clone(),
-        skip_dirs: opts.skip_dirs.clone(),
-    };
-    let mut found = if opts.sources_only {
-        walk::Candidates::default()
-    } else {
-        walk::candidates(input, &walk_opts)?
-    };
-    let mut roots = crate::catalog::sources::Roots::local(&input_root(input));
-    // The history asks git whether the input is in a work tree: asked now, so that git's
-    // start-up overlaps the reading of the profiles.
-    if opts.history > 0 && opts.history_reader.is_some() {
-        roots.start_work_tree_probe();
+/// The `[[source]]` repositories' files (read into a temporary folder) added to the
+/// candidates `found` and recorded in `roots`; the notes on what was not read.
+fn add_sources(
+    input: &Path,
+    opts: &LoadOptions,
+    walk_opts: &WalkOptions,
+    found: &mut walk::Candidates,
+    roots: &mut crate::catalog::sources::Roots,
+    progress: &dyn Progress,
+) -> Result<Vec<Diagnostic>> {
+    if opts.sources.is_empty() {
+        return Ok(Vec::new());
     }
-    let mut source_notes = Vec::new();
-    if !opts.sources.is_empty() {
-        let m = crate::sources::materialize(
-            &opts.sources,
-            opts.limits.max_file_size,
-            &opts.implementation.selection(),
-            opts.jobs,
-            progress,
-        )?;
-        let names: Vec<&str> = opts
-            .sources
-            .iter()
-            .map(|p| p.source.name.as_str())
-            .collect();
-        if let Some((_, rel)) = found
-            .files
-            .iter()
-            .chain(&found.idl)
-            .find(|(_, rel)| rel.split('/').next().is_some_and(|f| names.contains(&f)))
-        {
-            // Not "exclude the folder": the source's files are named `<name>/…` too, and an
-            // exclude pattern matching the folder leaves them out as well.
-            let folder = rel.split('/').next().unwrap_or_default();
-            bail!(
-                "`{rel}` of the input directory `{}` is in a folder named like a source (`{folder}`): the source's files are named `{folder}/…` too; give that [[source]] another name (`name = \"{folder}-source\"`) or move the folder out of the input directory (an `exclude` pattern for it would leave out the source's files as well)",
-                input.display(),
-            );
-        }
-        let mut from_sources = walk::candidates(
-            m.dir.path(),
-            &WalkOptions {
-                skip_dirs: Vec::new(),
-                ..walk_opts
-            },
-        )?;
-        found.files.append(&mut from_sources.files);
-        found.idl.append(&mut from_sources.idl);
-        found.idl.sort_by(|a, b| a.1.cmp(&b.1));
-        found.code.append(&mut from_sources.code);
-        found.skipped.append(&mut from_sources.skipped);
-        found.readme_dirs.append(&mut from_sources.readme_dirs);
-        source_notes = m.notes;
-        roots.sources = opts.sources.iter().map(|p| p.info()).collect();
-        roots.sources_dir = Some(std::sync::Arc::new(m.dir));
+    let mut m = crate::sources::materialize(
+        &opts.sources,
+        opts.limits.max_file_size,
+        &opts.implementation.selection(),
+        opts.jobs,
+        progress,
+    )?;
+    let names: Vec<&str> = opts
+        .sources
+        .iter()
+        .map(|p| p.source.name.as_str())
+        .collect();
+    if let Some((_, rel)) = found
+        .files
+        .iter()
+        .chain(&found.idl)
+        .find(|(_, rel)| rel.split('/').next().is_some_and(|f| names.contains(&f)))
+    {
+        // Not "exclude the folder": the source's files are named `<name>/…` too, and an
+        // exclude pattern matching the folder leaves them out as well.
+        let folder = rel.split('/').next().unwrap_or_default();
+        bail!(
+            "`{rel}` of the input directory `{}` is in a folder named like a source (`{folder}`): the source's files are named `{folder}/…` too; give that [[source]] another name (`name = \"{folder}-source\"`) or move the folder out of the input directory (an `exclude` pattern for it would leave out the source's files as well)",
+            input.display(),
+        );
     }
-    // Each candidate is read once: its head tells whether it is a profile (as `walk::walk`
-    // decides), and a profile is parsed from the same bytes.
-    progress.stage("reading profiles", found.files.len());
-    // A file named on the command line is read as a profile whatever its name.
-    let named = !opts.sources_only && input.is_file();
-    // The IDL files are read beside the profiles (their reading is mostly serial).
-    let (outcomes, idl) = rayon::join(
-        || read_outcomes(&found.files, opts, named, progress),
-        || read_idl(&found.idl, opts),
-    );
-    progress.stage("cross-referencing", 0);
-    let mut skipped = found.skipped;
+    let mut from_sources = walk::candidates(
+        m.dir.path(),
+        &WalkOptions {
+            skip_dirs: Vec::new(),
+            ..walk_opts.clone()
+        },
+    )?;
+    found.files.append(&mut from_sources.files);
+    found.idl.append(&mut from_sources.idl);
+    found.idl.sort_by(|a, b| a.1.cmp(&b.1));
+    found.code.append(&mut from_sources.code);
+    found.skipped.append(&mut from_sources.skipped);
+    found.readme_dirs.append(&mut from_sources.readme_dirs);
+    roots.sources = opts.sources.iter().map(|p| p.info()).collect();
+    let notes = std::mem::take(&mut m.notes);
+    roots.sources_dir = Some(std::sync::Arc::new(m.dir));
+    Ok(notes)
+}
+
+/// What the candidates read to, sorted: the profiles, RT Systems and RTCBuilder backups; the
+/// files that are not profiles added to `skipped`.
+struct Sorted {
+    diagnostics: Vec<Diagnostic>,
+    profiles: Vec<LoadedProfile>,
+    /// Component profiles read or failed.
+    files: usize,
+    systems: Vec<crate::catalog::systems::LoadedSystem>,
+    failed_systems: Vec<String>,
+    backups: Vec<Backup>,
+}
+
+/// Sorts what each candidate of `files` read to (`outcomes`, in their order); `named`: one
+/// file named on the command line (`input`), which must be something rtcdoc reads.
+fn sort_outcomes(
+    input: &Path,
+    files: Vec<(PathBuf, String)>,
+    outcomes: Vec<Outcome>,
+    named: bool,
+    skipped: &mut Vec<Skipped>,
+) -> Result<Sorted> {
     let mut diagnostics = Vec::new();
     let mut profiles = Vec::with_capacity(outcomes.len());
-    let mut files = 0;
+    let mut count = 0;
     let mut systems = Vec::new();
     let mut failed_systems = Vec::new();
     let mut backups = Vec::new();
-    for ((path, rel), outcome) in found.files.into_iter().zip(outcomes) {
+    for ((path, rel), outcome) in files.into_iter().zip(outcomes) {
         // RTCBuilder's backups are older versions of the profile beside them, not components:
         // kept apart, whatever they hold (a file named on the command line is read as is).
         let outcome = if !named && walk::is_backup(&path) {
@@ -234,12 +237,12 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
                 kind: walk::SkipKind::NotAProfile,
             }),
             Outcome::Loaded(p, d) => {
-                files += 1;
+                count += 1;
                 profiles.push(p);
                 diagnostics.extend(d);
             }
             Outcome::Failed(d) => {
-                files += 1;
+                count += 1;
                 diagnostics.push(d);
             }
             Outcome::System(s, d) => {
@@ -252,6 +255,56 @@ pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> R
             }
         }
     }
+    Ok(Sorted {
+        diagnostics,
+        profiles,
+        files: count,
+        systems,
+        failed_systems,
+        backups,
+    })
+}
+
+/// [`load`] with progress reports.
+pub fn load_with(input: &Path, opts: &LoadOptions, progress: &dyn Progress) -> Result<Loaded> {
+    progress.stage("finding profiles", 0);
+    let walk_opts = WalkOptions {
+        include: opts.include.clone(),
+        exclude: opts.exclude.clone(),
+        skip_dirs: opts.skip_dirs.clone(),
+    };
+    let mut found = if opts.sources_only {
+        walk::Candidates::default()
+    } else {
+        walk::candidates(input, &walk_opts)?
+    };
+    let mut roots = crate::catalog::sources::Roots::local(&input_root(input));
+    // The history asks git whether the input is in a work tree: asked now, so that git's
+    // start-up overlaps the reading of the profiles.
+    if opts.history > 0 && opts.history_reader.is_some() {
+        roots.start_work_tree_probe();
+    }
+    let source_notes = add_sources(input, opts, &walk_opts, &mut found, &mut roots, progress)?;
+    // Each candidate is read once: its head tells whether it is a profile (as `walk::walk`
+    // decides), and a profile is parsed from the same bytes.
+    progress.stage("reading profiles", found.files.len());
+    // A file named on the command line is read as a profile whatever its name.
+    let named = !opts.sources_only && input.is_file();
+    // The IDL files are read beside the profiles (their reading is mostly serial).
+    let (outcomes, idl) = rayon::join(
+        || read_outcomes(&found.files, opts, named, progress),
+        || read_idl(&found.idl, opts),
+    );
+    progress.stage("cross-referencing", 0);
+    let mut skipped = found.skipped;
+    let Sorted {
+        mut diagnostics,
+        mut profiles,
+        files,
+        systems,
+        mut failed_systems,
+        backups,
+    } = sort_outcomes(input, found.files, outcomes, named, &mut skipped)?;
     let idl = idl?;
     let implementation = crate::catalog::implementations::Settings {
         max_file_size: opts.limits.max_file_size,

@@ -1049,7 +1049,6 @@ fn man_page(out: &mut dyn std::io::Write) -> std::io::Result<()> {
     man.render_version_section(out)
 }
 
-/// `rtcdoc graph`: the wiring of one system of the input as DOT, Mermaid or SVG.
 /// The RT System `graph` draws: the one `--system` names (its name, name as the pages show
 /// it, slug or file), or the only one; else an error that lists them, or says what `graph`
 /// draws without one.
@@ -1123,6 +1122,7 @@ fn choose_system<'a>(
     })
 }
 
+/// `rtcdoc graph`: the wiring of one system of the input as DOT, Mermaid or SVG.
 fn graph(cli: &Cli, args: &GraphArgs) -> anyhow::Result<ExitCode> {
     let file = config_for(cli, args.input.as_deref(), &args.input_args)?;
     let input = args
