@@ -899,6 +899,20 @@ pub struct Catalog {
     /// name ([`Catalog::index_peers`]).
     #[serde(skip)]
     peer_runs: PeerRuns,
+    /// Each component's data ports' types and service interfaces' types, resolved once when
+    /// the catalogue is made ([`Catalog::index_port_types`]): pages ask by handle, not by name.
+    #[serde(skip)]
+    port_types: PortTypes,
+}
+
+/// The type of each port of each component, by position ([`Catalog::port_type`],
+/// [`Catalog::interface_type`]).
+#[derive(Debug, Clone, Default)]
+struct PortTypes {
+    /// `data[component][port]`.
+    data: Vec<Vec<Option<DataTypeIx>>>,
+    /// `interfaces[component][service port][interface]`.
+    interfaces: Vec<Vec<Vec<Option<InterfaceIx>>>>,
 }
 
 /// For each data type and interface, for its two directions: the length of the list of uses
@@ -1709,6 +1723,82 @@ impl Catalog {
     fn index(&mut self) {
         self.index_pages();
         self.index_peers();
+        self.index_port_types();
+    }
+
+    /// Resolves the type of every data port and service interface once ([`PortTypes`]).
+    fn index_port_types(&mut self) {
+        self.port_types = PortTypes {
+            data: self
+                .components
+                .iter()
+                .map(|c| {
+                    let ports = &c.profile.data_ports;
+                    ports
+                        .iter()
+                        .map(|p| p.type_.as_deref().and_then(|n| self.data_type_index(n)))
+                        .collect()
+                })
+                .collect(),
+            interfaces: self
+                .components
+                .iter()
+                .map(|c| {
+                    let ports = &c.profile.service_ports;
+                    ports
+                        .iter()
+                        .map(|sp| {
+                            sp.interfaces
+                                .iter()
+                                .map(|i| {
+                                    i.type_.as_deref().and_then(|n| self.interface_index_of(n))
+                                })
+                                .collect()
+                        })
+                        .collect()
+                })
+                .collect(),
+        };
+    }
+
+    /// The data type of data port `port` of `component` (none: no type, or not in the
+    /// catalogue); resolved when the catalogue was made, looked up by name in one that was
+    /// not indexed.
+    pub fn port_type(&self, component: ComponentIx, port: usize) -> Option<DataTypeIx> {
+        match self.port_types.data.get(component.get()) {
+            Some(ports) => ports.get(port).copied().flatten(),
+            None => {
+                let p = self
+                    .components
+                    .get(component.get())?
+                    .profile
+                    .data_ports
+                    .get(port)?;
+                self.data_type_index(p.type_.as_deref()?)
+            }
+        }
+    }
+
+    /// The interface type of interface `interface` of service port `port` of `component`, as
+    /// [`Catalog::port_type`].
+    pub fn interface_type(
+        &self,
+        component: ComponentIx,
+        port: usize,
+        interface: usize,
+    ) -> Option<InterfaceIx> {
+        match self.port_types.interfaces.get(component.get()) {
+            Some(ports) => ports.get(port)?.get(interface).copied().flatten(),
+            None => {
+                let sp = self
+                    .components
+                    .get(component.get())?
+                    .profile
+                    .service_ports
+                    .get(port)?;
+                self.interface_index_of(sp.interfaces.get(interface)?.type_.as_deref()?)
+            }
+        }
     }
 
     /// This catalogue, made by [`Catalog::with_lookups`] of its entries as `catalog.json`
@@ -2302,7 +2392,7 @@ impl Catalog {
     /// out → in ports of the same type, in → out ports of the same type.
     pub fn data_port_peers(&self, component: ComponentIx, port: usize) -> PeerRefs<'_, PortRef> {
         let p = &self[component].profile.data_ports[port];
-        let t = p.type_.as_deref().and_then(|t| self.data_type_index(t));
+        let t = self.port_type(component, port);
         peers(&self.data_types, &self.peer_runs.data, t, port_slot(p))
     }
 
@@ -2315,7 +2405,7 @@ impl Catalog {
         interface: usize,
     ) -> PeerRefs<'_, InterfaceRef> {
         let i = &self[component].profile.service_ports[port].interfaces[interface];
-        let t = i.type_.as_deref().and_then(|t| self.interface_index_of(t));
+        let t = self.interface_type(component, port, interface);
         peers(
             &self.interfaces,
             &self.peer_runs.interfaces,
@@ -2491,6 +2581,49 @@ fn claim(taken: &mut std::collections::HashSet<String>, base: String) -> String 
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+
+    /// The port types resolved when the catalogue is made are those the names give, on the
+    /// example and (when present) the corpus; a catalogue not indexed answers by name too.
+    #[test]
+    fn resolved_port_types_are_those_of_the_names() {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let opts = crate::build::LoadOptions::default();
+        let mut typed = 0;
+        for dir in [root.join("examples"), root.join("../shared/corpus")] {
+            if !dir.is_dir() {
+                continue;
+            }
+            let cat = crate::build::load(&dir, &opts).unwrap().catalog;
+            let unindexed = Catalog {
+                components: cat.components.clone(),
+                data_types: cat.data_types.clone(),
+                interfaces: cat.interfaces.clone(),
+                idl: cat.idl.clone(),
+                ..Catalog::default()
+            }
+            .with_lookups();
+            for (ci, c) in Ix::enumerate(&cat.components) {
+                for (pi, p) in c.profile.data_ports.iter().enumerate() {
+                    let by_name =
+                        crate::model::non_empty(&p.type_).and_then(|t| cat.data_type_index(t));
+                    assert_eq!(cat.port_type(ci, pi), by_name, "{} {pi}", c.source);
+                    assert_eq!(unindexed.port_type(ci, pi), by_name);
+                    typed += usize::from(by_name.is_some());
+                }
+                for (si, sp) in c.profile.service_ports.iter().enumerate() {
+                    for (ii, i) in sp.interfaces.iter().enumerate() {
+                        let by_name = crate::model::non_empty(&i.type_)
+                            .and_then(|t| cat.interface_index_of(t));
+                        assert_eq!(cat.interface_type(ci, si, ii), by_name, "{}", c.source);
+                        assert_eq!(unindexed.interface_type(ci, si, ii), by_name);
+                        typed += usize::from(by_name.is_some());
+                    }
+                }
+                assert_eq!(cat.port_type(ci, c.profile.data_ports.len()), None);
+            }
+        }
+        assert!(typed > 20, "{typed} typed ports");
+    }
 
     #[test]
     fn facet_keys_of_ascii_text_are_those_of_the_general_path() {

@@ -175,7 +175,7 @@ impl Catalog {
                 PortDirection::Out => false,
                 PortDirection::Event => return None,
             };
-            let ti = self.data_type_index(port.type_.as_deref()?)?;
+            let ti = self.port_type(ci, pi)?;
             let refs = self.data_port_peers(ci, pi);
             let (shown, total) = neighbours(
                 (ci, refs, cap),
@@ -196,7 +196,7 @@ impl Catalog {
                     Direction::Provided => true,
                     Direction::Required => false,
                 };
-                let ti = self.interface_index_of(i.type_.as_deref()?)?;
+                let ti = self.interface_type(ci, si, ii)?;
                 let refs = self.interface_peers(ci, si, ii);
                 let (shown, total) = neighbours(
                     (ci, refs, cap),

@@ -187,7 +187,7 @@ fn data_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<DataPortVi
         (&c.anchors.data_ports, &keys.data_ports),
     )
     .map(|(pi, dp, anchor, since)| {
-        let ti = non_empty(&dp.type_).and_then(|t| cat.data_type_index(t));
+        let ti = cat.port_type(ci, pi);
         let type_page = ti.map(|ti| cat.data_type_page(ti));
         let peers = Peers::of(
             ci,
@@ -256,8 +256,8 @@ fn service_port_views(cat: &Catalog, ci: ComponentIx, lang: Lang) -> Vec<Service
                 ),
             )
             .map(|(ii, i, anchor, since)| {
-                let it = non_empty(&i.type_)
-                    .and_then(|t| cat.interface_index_of(t))
+                let it = cat
+                    .interface_type(ci, si, ii)
                     .map(|x| cat.interface_page(x));
                 let peers = Peers::of(
                     ci,
