@@ -139,8 +139,8 @@ pub fn system_wiring(
                     InstancePortKind::Data(Some(PortDirection::Out)) => "out",
                     InstancePortKind::Data(_) => "other",
                 };
-                let page = comp
-                    .and_then(|k| catalog.component_index(&k.id))
+                let page = s.instances[i]
+                    .component_index
                     .map(|ci| catalog.component_page(ci));
                 let href = match (comp, page, &pt.link) {
                     (Some(k), Some(to), Some(PortLink::Data { index, .. })) => {

@@ -15,7 +15,7 @@
 
 use super::{ctx, Link, Site};
 use crate::catalog::systems::System;
-use crate::catalog::{Catalog, ComponentIx, Output, Page, TypeIx};
+use crate::catalog::{ComponentIx, Output, Page, TypeIx};
 use crate::render::idl_view::{self, DefinitionView};
 use crate::render::view::system::system_view;
 use crate::render::view::types::{entry_view, TypeKind};
@@ -106,7 +106,7 @@ fn style(site: &Site<'_>) -> Result<String> {
 /// The template context of system `s`'s manual: the system page's, and its chapters and
 /// appendix.
 fn manual_context(site: &Site<'_>, s: &System, page: &Page, css: &str) -> minijinja::Value {
-    let components = components_used(site.catalog, s);
+    let components = components_used(s);
     let chapters: Vec<Chapter> = components
         .iter()
         .map(|(ci, instances)| chapter(site, s, *ci, instances))
@@ -125,11 +125,10 @@ fn manual_context(site: &Site<'_>, s: &System, page: &Page, css: &str) -> miniji
 
 /// The components the instances of `s` are, in the order of their first instance, each with
 /// the indexes of its instances.
-fn components_used(cat: &Catalog, s: &System) -> Vec<(ComponentIx, Vec<usize>)> {
+fn components_used(s: &System) -> Vec<(ComponentIx, Vec<usize>)> {
     let mut used: Vec<(ComponentIx, Vec<usize>)> = Vec::new();
     for i in 0..s.instances.len() {
-        let found = cat.instance_component(s, i);
-        let Some(ci) = found.and_then(|c| cat.component_index(c.id.as_str())) else {
+        let Some(ci) = s.instances[i].component_index else {
             continue;
         };
         match used.iter_mut().find(|(c, _)| *c == ci) {

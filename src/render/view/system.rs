@@ -213,8 +213,8 @@ fn end_view(links: &Links<'_>, e: &Option<PortEnd>, link: &EndLink) -> EndView {
     let anchor = &s.instances[i].anchor;
     let name = txt(&s.profile.components[i].instance_name);
     let comp = cat.instance_component(s, i);
-    let to = comp
-        .and_then(|c| cat.component_index(&c.id))
+    let to = s.instances[i]
+        .component_index
         .map(|ci| cat.component_page(ci));
     let port_href = match (comp, to, &link.port) {
         (Some(c), Some(to), Some(PortLink::Data { index, .. })) => {
@@ -330,8 +330,8 @@ fn instance_rows(
                 name: txt(&c.instance_name),
                 component: comp.map(|k| Link {
                     text: k.display_name().into_owned(),
-                    href: cat
-                        .component_index(&k.id)
+                    href: s.instances[i]
+                        .component_index
                         .map(|ci| href(cat.component_page(ci), None))
                         .unwrap_or_default(),
                 }),
