@@ -1728,37 +1728,37 @@ impl Catalog {
 
     /// Resolves the type of every data port and service interface once ([`PortTypes`]).
     fn index_port_types(&mut self) {
+        let components = self.components.iter();
         self.port_types = PortTypes {
-            data: self
-                .components
-                .iter()
+            data: components
+                .clone()
                 .map(|c| {
-                    let ports = &c.profile.data_ports;
-                    ports
-                        .iter()
-                        .map(|p| p.type_.as_deref().and_then(|n| self.data_type_index(n)))
-                        .collect()
+                    let ports = c.profile.data_ports.iter();
+                    ports.map(|p| self.data_port_type_by_name(p)).collect()
                 })
                 .collect(),
-            interfaces: self
-                .components
-                .iter()
+            interfaces: components
                 .map(|c| {
-                    let ports = &c.profile.service_ports;
+                    let ports = c.profile.service_ports.iter();
                     ports
-                        .iter()
                         .map(|sp| {
-                            sp.interfaces
-                                .iter()
-                                .map(|i| {
-                                    i.type_.as_deref().and_then(|n| self.interface_index_of(n))
-                                })
-                                .collect()
+                            let all = sp.interfaces.iter();
+                            all.map(|i| self.interface_type_by_name(i)).collect()
                         })
                         .collect()
                 })
                 .collect(),
         };
+    }
+
+    /// The data type data port `p` names.
+    fn data_port_type_by_name(&self, p: &crate::model::DataPort) -> Option<DataTypeIx> {
+        self.data_type_index(p.type_.as_deref()?)
+    }
+
+    /// The interface type service interface `i` names.
+    fn interface_type_by_name(&self, i: &crate::model::ServiceInterface) -> Option<InterfaceIx> {
+        self.interface_index_of(i.type_.as_deref()?)
     }
 
     /// The data type of data port `port` of `component` (none: no type, or not in the
@@ -1768,13 +1768,8 @@ impl Catalog {
         match self.port_types.data.get(component.get()) {
             Some(ports) => ports.get(port).copied().flatten(),
             None => {
-                let p = self
-                    .components
-                    .get(component.get())?
-                    .profile
-                    .data_ports
-                    .get(port)?;
-                self.data_type_index(p.type_.as_deref()?)
+                let c = self.components.get(component.get())?;
+                self.data_port_type_by_name(c.profile.data_ports.get(port)?)
             }
         }
     }
@@ -1790,13 +1785,9 @@ impl Catalog {
         match self.port_types.interfaces.get(component.get()) {
             Some(ports) => ports.get(port)?.get(interface).copied().flatten(),
             None => {
-                let sp = self
-                    .components
-                    .get(component.get())?
-                    .profile
-                    .service_ports
-                    .get(port)?;
-                self.interface_index_of(sp.interfaces.get(interface)?.type_.as_deref()?)
+                let c = self.components.get(component.get())?;
+                let sp = c.profile.service_ports.get(port)?;
+                self.interface_type_by_name(sp.interfaces.get(interface)?)
             }
         }
     }

@@ -33,12 +33,20 @@ pub fn slugify(text: &str) -> String {
     out
 }
 
-/// 64-bit FNV-1a: a tiny, stable hash for deterministic slugs (not for security).
+/// 64-bit FNV-1a: a tiny, stable hash for deterministic slugs, cache names and checksums (not
+/// for security).
 pub fn fnv1a(bytes: &[u8]) -> u64 {
-    let mut h: u64 = 0xcbf29ce484222325;
+    fnv1a_from(FNV1A_START, bytes)
+}
+
+/// The start of [`fnv1a`] (its offset basis), for [`fnv1a_from`].
+pub const FNV1A_START: u64 = 0xcbf2_9ce4_8422_2325;
+
+/// [`fnv1a`] continued from `h` over `bytes` (a hash of several pieces, or of a stream).
+pub fn fnv1a_from(mut h: u64, bytes: &[u8]) -> u64 {
     for b in bytes {
         h ^= u64::from(*b);
-        h = h.wrapping_mul(0x100000001b3);
+        h = h.wrapping_mul(0x0100_0000_01b3);
     }
     h
 }

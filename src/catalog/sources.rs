@@ -143,10 +143,9 @@ impl Catalog {
                 let others: Vec<String> = idx
                     .iter()
                     .filter(|&&j| j != i)
-                    .take(crate::diagnostic::A_FEW + 1)
+                    .take(crate::diagnostic::A_FEW)
                     .map(|&j| label(&self.components[j]))
                     .collect();
-                let more = (idx.len() - 1).saturating_sub(others.len());
                 recoded.push(&c.source);
                 found.push(
                     Diagnostic::warning(
@@ -155,7 +154,7 @@ impl Catalog {
                         format!(
                             "component id `{id}` of {} is also declared by {}",
                             label(c),
-                            crate::diagnostic::a_few_of(&others, others.len() + more)
+                            crate::diagnostic::a_few_of(&others, idx.len() - 1)
                         ),
                     )
                     .at(c.profile.pos)

@@ -15,16 +15,7 @@ use std::path::{Path, PathBuf};
 
 const MAGIC: &[u8] = b"rtcdoc-memo 1\n";
 
-/// FNV-1a, 64 bits, continued from `h`.
-fn fnv_from(mut h: u64, bytes: &[u8]) -> u64 {
-    for &b in bytes {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0100_0000_01b3);
-    }
-    h
-}
-
-const FNV_START: u64 = 0xcbf2_9ce4_8422_2325;
+use crate::slug::{fnv1a_from as fnv_from, FNV1A_START as FNV_START};
 
 /// A hash of git's configuration outside the system one (which rtcdoc's git never reads): the
 /// global files, the `GIT_CONFIG_*` settings of the environment, and `mirror`'s own `config`.

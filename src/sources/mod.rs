@@ -363,22 +363,12 @@ pub fn cache_dir(mode: &Mode) -> Result<PathBuf> {
     }
 }
 
-/// FNV-1a, 64 bits: a stable name for a URL's mirror (not a security boundary).
-fn fnv(s: &str) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for b in s.bytes() {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0100_0000_01b3);
-    }
-    h
-}
-
 /// The bare mirror of a source below `cache`.
 pub fn mirror_path(cache: &Path, s: &Source) -> PathBuf {
     cache.join(format!(
         "{}-{:016x}.git",
         name_from_url(&s.git),
-        fnv(&s.url)
+        crate::slug::fnv1a(s.url.as_bytes())
     ))
 }
 

@@ -248,12 +248,10 @@
         total += best;
       }
       if (!total) { continue; }
-      if (e.lname === lq || e.short === lq) { total += 100; } else if (e.lname.indexOf(lq) >= 0) { total += 40; }
       score[m] = total;
       hits.push(m);
     }
-    hits.sort(function (a, b) { return score[b] - score[a] || all[a].rank - all[b].rank; });
-    return hits.map(function (n) { return all[n]; });
+    return ranked(hits, score, lq, all);
   }
 
   function search(q) {
@@ -273,13 +271,18 @@
     }
     var hits = [];
     for (var m = 0; m < all.length; m++) {
-      if (!total[m]) { continue; }
-      var e = all[m];
-      var score = total[m];
-      if (e.lname === lq || e.short === lq) { score += 100; } else if (e.lname.indexOf(lq) >= 0) { score += 40; }
-      hits.push(m);
-      total[m] = score;
+      if (total[m]) { hits.push(m); }
     }
+    return ranked(hits, total, lq, all);
+  }
+
+  /** The entries `hits` (positions in `all`) by score, best first: each one's token score
+      `total[n]` with the bonus of a name that is the query, or holds it; ties by name. */
+  function ranked(hits, total, lq, all) {
+    hits.forEach(function (m) {
+      var e = all[m];
+      if (e.lname === lq || e.short === lq) { total[m] += 100; } else if (e.lname.indexOf(lq) >= 0) { total[m] += 40; }
+    });
     hits.sort(function (a, b) { return total[b] - total[a] || all[a].rank - all[b].rank; });
     return hits.map(function (n) { return all[n]; });
   }
@@ -362,9 +365,10 @@
     var f = feedsTarget(term[1]);
     if (!f) { return []; }
     var fb = ix.f || 1;
-    var need = named(all, f.comp).map(function (e) { return 'f' + ((e.n / fb) | 0); });
+    var comps = named(all, f.comp);
+    var need = comps.map(function (e) { return 'f' + ((e.n / fb) | 0); });
     if (!ready(need)) { return need; }
-    named(all, f.comp).forEach(function (e) {
+    comps.forEach(function (e) {
       ((files['f' + ((e.n / fb) | 0)] || [])[e.n % fb] || []).forEach(function (p) {
         if (String(p[0]).toLowerCase() === f.port) { need.push('p' + p[1]); }
       });
@@ -396,12 +400,12 @@
     var f = feedsTarget(term[1]);
     if (!f) { return out; }
     var seen = new Set();
+    var comps = new Set(named(all, f.comp).map(function (e) { return e.n; }));
     names.filter(function (n) { return n.charAt(0) === 'p'; }).forEach(function (name) {
       portTypes(name, 'd').forEach(function (t) {
         if (seen.has(t)) { return; }
         var fed = (t[3] || []).some(function (p) {
-          var e = all[p[0]];
-          return e && (e.lname === f.comp || e.short === f.comp) && String(p[1]).toLowerCase() === f.port;
+          return comps.has(p[0]) && String(p[1]).toLowerCase() === f.port;
         });
         if (fed) { seen.add(t); (t[2] || []).forEach(function (p) { out.push([t, p, 'out']); }); }
       });

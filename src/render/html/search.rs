@@ -449,8 +449,8 @@ fn shard_text(kind: &str, n: usize, items: &str) -> Vec<u8> {
 /// entries are added in order, groups in order within an entry).
 #[derive(Default)]
 struct Inverted {
-    ids: std::collections::HashMap<String, u32>,
-    tokens: Vec<String>,
+    /// Each distinct token and its position in `postings`.
+    ids: std::collections::HashMap<Box<str>, u32>,
     postings: Vec<Postings>,
 }
 
@@ -517,9 +517,8 @@ impl Inverted {
                 let id = match self.ids.get(t) {
                     Some(&id) => id,
                     None => {
-                        let id = self.tokens.len() as u32;
-                        self.ids.insert(t.to_string(), id);
-                        self.tokens.push(t.to_string());
+                        let id = self.postings.len() as u32;
+                        self.ids.insert(t.into(), id);
                         self.postings.push(Postings::default());
                         id
                     }
@@ -535,14 +534,10 @@ impl Inverted {
         self,
         emit: &mut dyn FnMut(&str, Vec<u8>) -> anyhow::Result<()>,
     ) -> anyhow::Result<(Vec<String>, Vec<String>)> {
-        let mut order: Vec<u32> = (0..self.tokens.len() as u32).collect();
-        order.sort_unstable_by(|&a, &b| {
-            utf16_cmp(&self.tokens[a as usize], &self.tokens[b as usize])
-        });
-        let sorted: Vec<&str> = order
-            .iter()
-            .map(|&i| self.tokens[i as usize].as_str())
-            .collect();
+        // The tokens sorted as the browser compares them, each with its postings' position.
+        let mut by_token: Vec<(&str, u32)> = self.ids.iter().map(|(t, &i)| (&**t, i)).collect();
+        by_token.sort_unstable_by(|a, b| utf16_cmp(a.0, b.0));
+        let (sorted, order): (Vec<&str>, Vec<u32>) = by_token.into_iter().unzip();
         // Token files: consecutive tokens until one holds SHARD_BYTES, written as the JSON
         // array's text (`"token",d,d,"token",d`: a token is a JSON string, the rest numbers).
         let mut starts: Vec<String> = Vec::new();
@@ -1295,6 +1290,15 @@ mod tests {
     }
 
     /// The index's files, by path.
+    /// The catalogue of `examples/`.
+    fn example_catalog() -> Catalog {
+        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let opts = crate::build::LoadOptions::default();
+        crate::build::load(&root.join("examples"), &opts)
+            .unwrap()
+            .catalog
+    }
+
     fn index_files(cat: &Catalog, batch: usize) -> std::collections::BTreeMap<String, String> {
         let mut files = std::collections::BTreeMap::new();
         write_index_with(cat, Lang::En, batch, &mut |path, bytes| {
@@ -1321,11 +1325,7 @@ mod tests {
 
     #[test]
     fn the_index_is_the_same_whatever_the_batch() {
-        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-        let opts = crate::build::LoadOptions::default();
-        let cat = crate::build::load(&root.join("examples"), &opts)
-            .unwrap()
-            .catalog;
+        let cat = example_catalog();
         let n = cat.components.len();
         assert!(n > 3, "examples/ has {n} components");
         // One batch holding every entry: the index as it was made before it was streamed.
@@ -1400,11 +1400,7 @@ mod tests {
     /// each component's in-ports in `f` name a port file holding a type that lists the port.
     #[test]
     fn each_type_is_in_the_port_file_of_each_key() {
-        let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-        let opts = crate::build::LoadOptions::default();
-        let cat = crate::build::load(&root.join("examples"), &opts)
-            .unwrap()
-            .catalog;
+        let cat = example_catalog();
         let mut files = std::collections::BTreeMap::new();
         let n = write_ports_with(&cat, 256, &mut |path, bytes| {
             files.insert(path.to_string(), shard_data(&String::from_utf8(bytes)?));
